@@ -1,0 +1,65 @@
+#pragma once
+/// \file
+/// The interface every simulation engine offers (event-driven classic and fast, time-driven):
+/// advance exactly to a frame time, then hand out a snapshot and measurements.
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "collide/scene.hpp"
+#include "collide/sim/measurements.hpp"
+#include "collide/snapshot.hpp"
+
+namespace collide {
+
+/// Kinds of collision, as written in `--events-log` (`pair`, `xwall`, `ywall`).
+enum class CollisionKind : std::uint8_t { pair, xwall, ywall };
+
+/// One resolved collision. For walls b is unused (written empty in the CSV).
+struct CollisionRecord {
+    double t = 0.0;
+    CollisionKind kind = CollisionKind::pair;
+    std::uint32_t a = 0;
+    std::uint32_t b = 0;
+};
+
+using CollisionListener = std::function<void(const CollisionRecord&)>;
+
+class Engine {
+public:
+    virtual ~Engine() = default;
+    Engine() = default;
+    Engine(const Engine&) = delete;
+    Engine& operator=(const Engine&) = delete;
+
+    /// Runs the simulation up to exactly time t (>= time()); throws Error if t < time().
+    virtual void advance_to(double t) = 0;
+    /// Current simulation time.
+    [[nodiscard]] virtual double time() const noexcept = 0;
+    /// Every disc at time(), in scene order.
+    [[nodiscard]] virtual Snapshot snapshot() const = 0;
+    /// Observables and cost so far.
+    [[nodiscard]] virtual Measurements measurements() const = 0;
+    /// Called once per resolved collision, in order (events log, determinism tests).
+    virtual void set_collision_listener(CollisionListener listener) = 0;
+};
+
+/// Options shared by the engine factory and the CLI; validate() names the bad field.
+struct EngineOptions {
+    std::string engine = "fast";  ///< "fast", "classic" or "time"
+    std::string pq = "binary";    ///< classic engine's queue: unordered|ordered|binary|dary:D|indexed
+    double dt = 0.01;             ///< time-driven quantum
+    std::string td_detect = "all-pairs";  ///< time-driven overlap checks: "all-pairs" or "grid"
+};
+
+}  // namespace collide
+
+namespace collide {
+
+/// Builds the engine named by options.engine for the scene (validated by the caller).
+/// Throws Error(input) naming the option for an unknown engine or queue kind.
+[[nodiscard]] std::unique_ptr<Engine> make_engine(const Scene& scene, const EngineOptions& options);
+
+}  // namespace collide

@@ -1,0 +1,106 @@
+#pragma once
+/// \file
+/// A d-ary heap in a 0-based array: children of i are d*i+1 ... d*i+d, parent (i-1)/d.
+/// d = 2 is the lecture's binary heap. push and pop are O(log_d N) (pop does d compares a level).
+
+#include <cstddef>
+#include <functional>
+#include <utility>
+#include <vector>
+
+#include "collide/sim/pq/order.hpp"
+
+namespace collide::pq {
+
+template <class T, Orientation O = Orientation::max, unsigned D = 2, class Less = std::less<T>>
+class DaryHeap {
+    static_assert(D >= 2, "a heap needs at least two children per node");
+
+public:
+    using value_type = T;
+    static constexpr unsigned arity = D;
+
+    DaryHeap() = default;
+    explicit DaryHeap(Less less) : less_(std::move(less)) {}
+
+    [[nodiscard]] bool empty() const noexcept { return a_.empty(); }
+    [[nodiscard]] std::size_t size() const noexcept { return a_.size(); }
+    void reserve(std::size_t n) { a_.reserve(n); }
+    void clear() noexcept { a_.clear(); }
+
+    /// The item that comes out next. Precondition: !empty().
+    [[nodiscard]] const T& top() const { return a_.front(); }
+
+    /// Inserts x. O(log_d N).
+    void push(T x) {
+        a_.push_back(std::move(x));
+        swim(a_.size() - 1);
+        validate();
+    }
+
+    /// Removes and returns the item that comes out next. Precondition: !empty(). O(d log_d N).
+    T pop() {
+        T out = std::move(a_.front());
+        if (a_.size() > 1) {
+            a_.front() = std::move(a_.back());
+            a_.pop_back();
+            sink(0);
+        } else {
+            a_.pop_back();
+        }
+        validate();
+        return out;
+    }
+
+    /// The heap array, for teaching traces and tests.
+    [[nodiscard]] const std::vector<T>& array() const noexcept { return a_; }
+
+    /// Heap order: no child comes out before its parent. O(N).
+    [[nodiscard]] bool is_heap() const {
+        for (std::size_t i = 1; i < a_.size(); ++i) {
+            if (first(a_[i], a_[(i - 1) / D])) return false;
+        }
+        return true;
+    }
+
+private:
+    [[nodiscard]] bool first(const T& a, const T& b) const { return comes_first<O>(less_, a, b); }
+
+    void swim(std::size_t i) {
+        T x = std::move(a_[i]);
+        while (i > 0) {
+            const std::size_t parent = (i - 1) / D;
+            if (!first(x, a_[parent])) break;
+            a_[i] = std::move(a_[parent]);
+            i = parent;
+        }
+        a_[i] = std::move(x);
+    }
+
+    void sink(std::size_t i) {
+        const std::size_t n = a_.size();
+        T x = std::move(a_[i]);
+        for (;;) {
+            const std::size_t c0 = D * i + 1;
+            if (c0 >= n) break;
+            const std::size_t c_end = c0 + D < n ? c0 + D : n;
+            std::size_t best = c0;
+            for (std::size_t c = c0 + 1; c < c_end; ++c) {
+                if (first(a_[c], a_[best])) best = c;
+            }
+            if (!first(a_[best], x)) break;
+            a_[i] = std::move(a_[best]);
+            i = best;
+        }
+        a_[i] = std::move(x);
+    }
+
+    void validate() const {
+        if constexpr (validate_heaps) require_invariant(is_heap(), "d-ary heap order");
+    }
+
+    std::vector<T> a_;
+    [[no_unique_address]] Less less_{};
+};
+
+}  // namespace collide::pq

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages collide needs, only those that are missing (silent and fast
+# when everything is there). Usage: scripts/setup.sh [--test]   (--test adds ffmpeg and xvfb)
+set -euo pipefail
+
+packages=(
+    build-essential cmake ninja-build pkg-config python3-glad
+    libosmesa6-dev libglfw3-dev libstb-dev fonts-dejavu-core
+    libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libavfilter-dev
+    libcli11-dev libtomlplusplus-dev libfmt-dev doctest-dev libbenchmark-dev
+)
+if [[ "${1:-}" == "--test" ]]; then
+    packages+=(ffmpeg xvfb xauth)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+    if [[ "$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null)" != "installed" ]]; then
+        missing+=("$p")
+    fi
+done
+[[ ${#missing[@]} -eq 0 ]] && exit 0
+
+sudo=()
+if [[ "$(id -u)" -ne 0 ]]; then
+    if ! command -v sudo >/dev/null; then
+        echo "setup: need root or sudo to install: ${missing[*]}" >&2
+        exit 1
+    fi
+    sudo=(sudo)
+fi
+echo "==> installing missing Debian packages: ${missing[*]}"
+"${sudo[@]}" apt-get update -qq
+"${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"

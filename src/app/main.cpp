@@ -1,0 +1,45 @@
+/// The `collide` command line: parses arguments, runs one subcommand, and is the only place where
+/// errors become messages and exit codes (0 success, 2 bad input or usage, 1 anything else).
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include "collide/error.hpp"
+#include "commands.hpp"
+
+namespace {
+
+constexpr int exit_usage = 2;
+constexpr int exit_failure = 1;
+
+void print_error(const std::string& message) { std::fprintf(stderr, "collide: error: %s\n", message.c_str()); }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App root{"collide: event-driven vs time-driven hard-disc simulation, rendered to video",
+                  "collide"};
+    root.set_version_flag("--version", std::string("collide ") + COLLIDE_VERSION);
+    root.require_subcommand(0, 1);
+    root.footer("Exit codes: 0 success, 2 bad input or usage, 1 other failure.");
+
+    try {
+        root.parse(argc, argv);
+        if (argc == 1) {
+            std::fputs(root.help().c_str(), stdout);
+        }
+        return 0;
+    } catch (const CLI::ParseError& e) {
+        // --help and --version arrive here as "errors" with exit code 0.
+        const int code = root.exit(e);
+        return code == 0 ? 0 : exit_usage;
+    } catch (const collide::Error& e) {
+        print_error(e.what());
+        return e.exit_code();
+    } catch (const std::exception& e) {
+        print_error(e.what());
+        return exit_failure;
+    }
+}

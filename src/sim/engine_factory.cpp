@@ -1,0 +1,11 @@
+#include "collide/error.hpp"
+#include "collide/sim/engine.hpp"
+
+namespace collide {
+
+std::unique_ptr<Engine> make_engine(const Scene& /*scene*/, const EngineOptions& options) {
+    // Each engine adds its branch here as it lands.
+    throw_input_error("--engine", 0, "", "unknown engine '" + options.engine + "'");
+}
+
+}  // namespace collide
