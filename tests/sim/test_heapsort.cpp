@@ -43,7 +43,7 @@ std::vector<int> random_ints(std::size_t n, int range, std::uint64_t seed) {
 }  // namespace
 
 TEST_CASE("heapsort sorts random, sorted, reversed and all-equal input within 2 N lg N compares") {
-    for (std::size_t n : {0u, 1u, 2u, 3u, 4u, 5u, 7u, 8u, 9u, 16u, 17u, 100u, 1000u, 4096u, 20000u}) {
+    for (std::size_t n : {0u, 1u, 2u, 3u, 4u, 5u, 7u, 8u, 9u, 16u, 17u, 100u, 1000u, 4096u, 8191u}) {
         CAPTURE(n);
         const std::vector<int> random = random_ints(n, 1 << 30, n);
         std::vector<int> sorted = random;
@@ -70,10 +70,10 @@ TEST_CASE("heapsort takes any comparator, e.g. descending strings") {
 }
 
 TEST_CASE("top-M of a stream equals the first M of a full sort") {
-    const std::vector<int> stream = random_ints(5000, 300, 5);  // many duplicates
+    const std::vector<int> stream = random_ints(2000, 200, 5);  // many duplicates
     std::vector<int> sorted = stream;
     std::sort(sorted.begin(), sorted.end(), std::greater<>{});
-    for (std::size_t m : {0u, 1u, 2u, 10u, 999u, 5000u, 6000u}) {
+    for (std::size_t m : {0u, 1u, 2u, 10u, 999u, 2000u, 3000u}) {
         CAPTURE(m);
         const std::vector<int> top = top_m(stream.begin(), stream.end(), m);
         const std::size_t kept = std::min(m, stream.size());
