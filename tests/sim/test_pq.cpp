@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <initializer_list>
@@ -12,6 +13,7 @@
 #include <random>
 #include <set>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -335,19 +337,19 @@ namespace {
 
 /// The lecture's heap, written as plainly as possible: pop moves the last item to the root and
 /// sinks it while a child comes out before it (first of tying children).
-template <unsigned D>
+template <unsigned D, class T = int>
 struct TextbookMaxHeap {
-    std::vector<int> a;
+    std::vector<T> a;
 
-    void push(int x) {
+    void push(T x) {
         a.push_back(x);
         for (std::size_t i = a.size() - 1; i > 0 && a[(i - 1) / D] < a[i]; i = (i - 1) / D) {
             std::swap(a[i], a[(i - 1) / D]);
         }
     }
 
-    int pop() {
-        const int out = a.front();
+    T pop() {
+        const T out = a.front();
         a.front() = a.back();
         a.pop_back();
         std::size_t i = 0;
@@ -365,27 +367,46 @@ struct TextbookMaxHeap {
     }
 };
 
-template <unsigned D>
-void check_same_arrays_as_textbook() {
+/// An item of 1 KiB, so that a heap of a thousand passes DaryHeap's branch_free_bytes and
+/// takes its branching path.
+struct FatItem {
+    int key = 0;
+    std::array<char, 1020> payload{};
+    friend bool operator<(const FatItem& a, const FatItem& b) { return a.key < b.key; }
+    friend bool operator==(const FatItem& a, const FatItem& b) { return a.key == b.key; }
+};
+
+/// Returns the largest heap's size in bytes.
+template <unsigned D, class T = int>
+std::size_t check_same_arrays_as_textbook(int ops = 6000) {
     CAPTURE(D);
-    DaryHeap<int, Orientation::max, D> fast;
-    TextbookMaxHeap<D> plain;
+    CAPTURE(sizeof(T));
+    DaryHeap<T, Orientation::max, D> fast;
+    TextbookMaxHeap<D, T> plain;
     std::mt19937_64 rng(D);
     std::uniform_int_distribution<int> key(0, 9);  // mostly ties
     std::bernoulli_distribution push(0.55);
     std::size_t differing = 0;
-    for (int op = 0; op < 6000; ++op) {
+    std::size_t largest = 0;
+    for (int op = 0; op < ops; ++op) {
         if (plain.a.empty() || push(rng)) {
-            const int k = key(rng);
+            T k{};
+            if constexpr (std::is_same_v<T, int>) {
+                k = key(rng);
+            } else {
+                k.key = key(rng);
+            }
             fast.push(k);
             plain.push(k);
         } else {
             differing += fast.pop() != plain.pop();
         }
         differing += fast.array() != plain.a;
+        largest = std::max(largest, plain.a.size());
     }
     CHECK(differing == 0);
     CHECK(plain.a.size() > 100);
+    return largest * sizeof(T);
 }
 
 }  // namespace
@@ -395,4 +416,10 @@ TEST_CASE("DaryHeap's bottom-up pop leaves the same array as the lecture's sink,
     check_same_arrays_as_textbook<3>();
     check_same_arrays_as_textbook<4>();
     check_same_arrays_as_textbook<8>();
+}
+
+TEST_CASE("heaps larger than the caches (the branching child choice) match the lecture's sink too") {
+    constexpr std::size_t limit = DaryHeap<FatItem, Orientation::max, 2>::branch_free_bytes;
+    CHECK(check_same_arrays_as_textbook<2, FatItem>(16000) > limit);
+    CHECK(check_same_arrays_as_textbook<4, FatItem>(16000) > limit);
 }
