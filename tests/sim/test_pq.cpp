@@ -421,5 +421,6 @@ TEST_CASE("DaryHeap's bottom-up pop leaves the same array as the lecture's sink,
 TEST_CASE("heaps larger than the caches (the branching child choice) match the lecture's sink too") {
     constexpr std::size_t limit = DaryHeap<FatItem, Orientation::max, 2>::branch_free_bytes;
     CHECK(check_same_arrays_as_textbook<2, FatItem>(16000) > limit);
+    CHECK(check_same_arrays_as_textbook<3, FatItem>(16000) > limit);
     CHECK(check_same_arrays_as_textbook<4, FatItem>(16000) > limit);
 }

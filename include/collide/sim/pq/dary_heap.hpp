@@ -29,7 +29,9 @@ public:
     /// pop: heaps up to this many bytes pick the best child without branches (they sit in the
     /// processor's caches, where a mispredicted branch costs more than a select); larger ones
     /// branch, so the processor can guess the path and load the next level ahead of the compare
-    /// instead of waiting for each level's cache miss in turn (measured in bench/bench_pq.cpp).
+    /// instead of waiting for each level's cache miss in turn. On the hold model at N = 10^6
+    /// doubles the branch-free binary heap took twice as long as std::priority_queue, the
+    /// branching one about as long (bench/bench_pq.cpp, docs/benchmarks.md).
     static constexpr std::size_t branch_free_bytes = std::size_t{1} << 20;
 
     /// An empty heap (a run-time-arity heap built this way is binary).
@@ -122,19 +124,35 @@ private:
     [[nodiscard]] std::size_t best_child(std::size_t i) const {
         const std::size_t c0 = d() * i + 1;
         const std::size_t n = a_.size();
-        if constexpr (D != 0 && BranchFree) {
-            if (c0 + D <= n) return best_of<D>(c0);
+        if constexpr (D != 0) {
+            if (c0 + D <= n) {
+                if constexpr (BranchFree) {
+                    return best_of<D>(c0);
+                } else {
+                    // Halves without branches, the final between them with a real branch.
+                    const std::size_t left = best_of<D / 2>(c0);
+                    const std::size_t right = best_of<D - D / 2>(c0 + D / 2);
+                    if (first(a_[right], a_[left])) {
+                        keep_branch();
+                        return right;
+                    }
+                    return left;
+                }
+            }
         }
         const std::size_t c_end = c0 + d() < n ? c0 + d() : n;
         std::size_t best = c0;
-        for (std::size_t c = c0 + 1; c < c_end; ++c) {
-            if constexpr (BranchFree) {
-                best = pick(c, best);
-            } else if (first(a_[c], a_[best])) {
-                best = c;
-            }
-        }
+        for (std::size_t c = c0 + 1; c < c_end; ++c) best = pick(c, best);
         return best;
+    }
+
+    /// An empty statement the compiler must keep, so it cannot turn the branch around it into a
+    /// conditional move: the point of the branch is that the processor guesses it and starts
+    /// loading the next level before the compare is done.
+    static void keep_branch() noexcept {
+#if defined(__GNUC__)
+        asm volatile("");
+#endif
     }
 
     /// The first-coming of the K items from index c on, as a knock-out tournament in which the
