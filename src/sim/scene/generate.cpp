@@ -82,7 +82,8 @@ std::size_t resolve_count(const GenerateSpec& spec, const Placement& where, cons
              std::to_string(max_generated_discs) + ")");
     }
     const double eta = count * disc_area / where.region_area;
-    if (eta > max_generated_packing_fraction + 1e-9) {
+    // A count derived from a valid packing fraction may round up by half a disc: let it.
+    if (spec.count != 0 && eta > max_generated_packing_fraction + 1e-9) {
         fail(prefix, spec.count ? "count" : "packing_fraction",
              std::to_string(static_cast<std::size_t>(count)) + " discs of radius " + num(spec.radius) +
                  " give packing fraction " + num(eta) + " in the region, above the maximum " +
@@ -205,14 +206,6 @@ Lattice rectangle_lattice(const Placement& where, double spacing) {
     return l;
 }
 
-// Periodic whole box: whole numbers of columns and (even) rows so the lattice tiles the torus.
-Lattice periodic_lattice(const Box& box, std::size_t rows) {
-    Lattice l;
-    l.rows = rows;
-    l.ay = box.height / static_cast<double>(rows);
-    return l;
-}
-
 class LatticePlacer {
 public:
     LatticePlacer(Scene& scene, const GenerateSpec& spec, const Placement& where, std::size_t count, Rng& rng,
@@ -220,9 +213,8 @@ public:
         : scene_(scene), spec_(spec), where_(where), count_(count), rng_(rng), prefix_(prefix) {}
 
     void run() {
-        const Lattice lattice = where_.wraps ? choose_periodic() : choose_rectangle();
+        const Lattice lattice = choose();
         const std::vector<Vec2> free = free_sites(lattice);
-        if (free.size() < count_) too_dense(free.size());
         const double jitter = 0.5 * (lattice.neighbour_distance() - 2.0 * spec_.radius) * (1.0 - 1e-6);
         place(pick(free.size()), free, jitter);
     }
@@ -245,62 +237,68 @@ private:
         return sites;
     }
 
+    [[nodiscard]] bool roomy(const Lattice& lattice) const {
+        return lattice.neighbour_distance() >= 2.0 * spec_.radius * (1.0 + min_lattice_gap);
+    }
+
     std::size_t free_count(const Lattice& lattice) const {
-        if (lattice.neighbour_distance() < 2.0 * spec_.radius * (1.0 + min_lattice_gap)) return 0;
         if (scene_.discs.empty()) return lattice.sites();
-        if (lattice.sites() < count_) return lattice.sites();
         return free_sites(lattice).size();
     }
 
-    Lattice choose_rectangle() const {
+    // The widest lattice with at least `target` sites; then, if discs already there block too
+    // many sites, ask for proportionally more sites until enough are free.
+    Lattice choose() const {
+        std::size_t target = count_;
+        constexpr int max_rounds = 40;
+        for (int round = 0; round < max_rounds; ++round) {
+            const Lattice lattice = where_.wraps ? periodic_for(target) : rectangle_for(target);
+            if (!roomy(lattice)) break;
+            const std::size_t free = free_count(lattice);
+            if (free >= count_) return lattice;
+            const double grow = free == 0 ? 2.0 : 1.02 * static_cast<double>(count_) / static_cast<double>(free);
+            target = std::max(target + 1, static_cast<std::size_t>(std::ceil(static_cast<double>(target) * grow)));
+        }
+        too_dense();
+    }
+
+    // Sites per spacing fall as the spacing grows: bisect for the widest with `target` sites.
+    Lattice rectangle_for(std::size_t target) const {
         const double lx = where_.hi.x - where_.lo.x;
         const double ly = where_.hi.y - where_.lo.y;
         // Start a hair above the accepted minimum so rounding in hypot cannot reject it.
         double lo = 2.0 * spec_.radius * (1.0 + 2.0 * min_lattice_gap);
-        if (free_count(rectangle_lattice(where_, lo)) < count_) too_dense(free_count(rectangle_lattice(where_, lo)));
+        if (rectangle_lattice(where_, lo).sites() < target) return rectangle_lattice(where_, 0.0 + 2.0 * spec_.radius);
         double hi = 2.0 * std::max(lx, ly) + 4.0 * spec_.radius;
-        for (int i = 0; i < 60 && hi - lo > 1e-12 * lo; ++i) {
+        for (int i = 0; i < 100 && hi - lo > 1e-12 * lo; ++i) {
             const double mid = 0.5 * (lo + hi);
-            (free_count(rectangle_lattice(where_, mid)) >= count_ ? lo : hi) = mid;
+            (rectangle_lattice(where_, mid).sites() >= target ? lo : hi) = mid;
         }
         return rectangle_lattice(where_, lo);
     }
 
-    // Tries every even row count; for each, the fewest columns that give enough sites. Keeps
-    // the lattice with the largest neighbour distance that has enough free sites.
-    Lattice choose_periodic() const {
+    // Periodic whole box: whole numbers of columns and (even) rows so the lattice tiles the
+    // torus. Tries every even row count with the fewest columns that give `target` sites.
+    Lattice periodic_for(std::size_t target) const {
         const Box& box = scene_.box;
-        std::vector<Lattice> candidates;
-        const std::size_t max_rows = 2 * (count_ + 1);
-        for (std::size_t rows = 2; rows <= max_rows; rows += 2) {
-            Lattice l = periodic_lattice(box, rows);
-            l.cols = l.odd_cols = (count_ + rows - 1) / rows;
+        Lattice best;
+        for (std::size_t rows = 2; rows <= 2 * (target + 1); rows += 2) {
+            Lattice l;
+            l.rows = rows;
+            l.ay = box.height / static_cast<double>(rows);
+            l.cols = l.odd_cols = (target + rows - 1) / rows;
             l.ax = box.width / static_cast<double>(l.cols);
             l.origin = {0.25 * l.ax, 0.5 * l.ay};
-            if (l.neighbour_distance() >= 2.0 * spec_.radius * (1.0 + min_lattice_gap)) candidates.push_back(l);
-            if (l.ay < 2.0 * spec_.radius * 0.5) break;  // rows closer than a radius never fit
+            if (best.rows == 0 || l.neighbour_distance() > best.neighbour_distance()) best = l;
+            if (l.ay < spec_.radius) break;  // rows closer than a radius: only worse from here
         }
-        std::stable_sort(candidates.begin(), candidates.end(), [](const Lattice& a, const Lattice& b) {
-            return a.neighbour_distance() > b.neighbour_distance();
-        });
-        for (Lattice& l : candidates) {
-            // With discs already there, add columns until enough sites are free (or give up).
-            for (std::size_t extra = 0; extra < 4; ++extra) {
-                if (free_count(l) >= count_) return l;
-                l.cols = l.odd_cols = l.cols + 1;
-                l.ax = box.width / static_cast<double>(l.cols);
-                l.origin.x = 0.25 * l.ax;
-                if (l.neighbour_distance() < 2.0 * spec_.radius * (1.0 + min_lattice_gap)) break;
-            }
-        }
-        too_dense(0);
+        return best;
     }
 
-    [[noreturn]] void too_dense(std::size_t fit) const {
+    [[noreturn]] void too_dense() const {
         fail(prefix_, spec_.count ? "count" : "packing_fraction",
              "cannot place " + std::to_string(count_) + " discs of radius " + num(spec_.radius) +
-                 " in the region without overlaps" + (fit ? " (a lattice holds " + std::to_string(fit) + ")" : "") +
-                 "; lower the count or packing fraction, or the radius");
+                 " in the region without overlaps; lower the count or packing fraction, or the radius");
     }
 
     // `count_` distinct site indices out of n, in increasing order (spatial order: good for the
