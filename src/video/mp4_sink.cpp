@@ -118,6 +118,8 @@ private:
         c.color_trc = AVCOL_TRC_BT709;
         c.colorspace = AVCOL_SPC_BT709;
         c.color_range = AVCOL_RANGE_MPEG;
+        // rgba_to_yuv420 averages each 2x2 block, so chroma samples sit at the block centres.
+        c.chroma_sample_location = AVCHROMA_LOC_CENTER;
         if ((format_->oformat->flags & AVFMT_GLOBALHEADER) != 0) {
             c.flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
         }
