@@ -91,7 +91,12 @@ void BM_TimeEngineMisses(benchmark::State& state) {
     state.counters["energy_drift"] = last.energy_drift;
 }
 BENCHMARK(BM_TimeEngineMisses)
-    ->Arg(1)->Arg(10)->Arg(50)->Arg(100)->Arg(250)->Arg(500)
+    ->Arg(1)
+    ->Arg(10)
+    ->Arg(50)
+    ->Arg(100)
+    ->Arg(250)
+    ->Arg(500)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 

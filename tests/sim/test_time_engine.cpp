@@ -62,11 +62,19 @@ Scene random_gas(std::size_t side, double r, double speed, std::uint64_t seed, B
 }
 
 bool same_snapshots(const Snapshot& a, const Snapshot& b) {
-    if (a.time != b.time || a.discs.size() != b.discs.size()) return false;
+    if (a.time != b.time || a.discs.size() != b.discs.size()) {
+        return false;
+    }
     for (std::size_t i = 0; i < a.discs.size(); ++i) {
-        if (a.discs[i].position != b.discs[i].position) return false;
-        if (a.discs[i].velocity != b.discs[i].velocity) return false;
-        if (a.discs[i].escaped != b.discs[i].escaped) return false;
+        if (a.discs[i].position != b.discs[i].position) {
+            return false;
+        }
+        if (a.discs[i].velocity != b.discs[i].velocity) {
+            return false;
+        }
+        if (a.discs[i].escaped != b.discs[i].escaped) {
+            return false;
+        }
     }
     return a.overlapping_pairs == b.overlapping_pairs && a.missed_collisions == b.missed_collisions;
 }
@@ -123,7 +131,8 @@ TEST_CASE("head-on collision of unequal masses matches the analytic result") {
     // Gap 0.4 closes at 1.5: contact at t_c = 0.4/1.5. 1D elastic: v1' = -1.25, v2' = 0.25.
     const double r = 0.05;
     const Scene scene = make_scene(
-        2.0, 1.0, {make_disc({0.25, 0.5}, {1.0, 0.0}, r, 1.0), make_disc({0.75, 0.5}, {-0.5, 0.0}, r, 3.0)});
+        2.0, 1.0,
+        {make_disc({0.25, 0.5}, {1.0, 0.0}, r, 1.0), make_disc({0.75, 0.5}, {-0.5, 0.0}, r, 3.0)});
     const double t_c = 0.4 / 1.5;
     const double t_end = 0.35;
     const double x1 = 0.25 + t_c - 1.25 * (t_end - t_c);
@@ -154,11 +163,13 @@ TEST_CASE("head-on collision of unequal masses matches the analytic result") {
 }
 
 TEST_CASE("Newton's cradle: the motion passes down a row of resting discs") {
-    // Disc 0 (v = 1) hits 1 at t = 0.16, 1 hits 2 at 0.22, 2 hits 3 at 0.28 (gaps 0.16, 0.06, 0.06).
+    // Disc 0 (v = 1) hits 1 at t = 0.16, 1 hits 2 at 0.22, 2 hits 3 at 0.28 (gaps 0.16, 0.06,
+    // 0.06).
     const double r = 0.02;
-    const Scene scene = make_scene(2.0, 1.0,
-                                   {make_disc({0.2, 0.5}, {1.0, 0.0}, r), make_disc({0.4, 0.5}, {}, r),
-                                    make_disc({0.5, 0.5}, {}, r), make_disc({0.6, 0.5}, {}, r)});
+    const Scene scene =
+        make_scene(2.0, 1.0,
+                   {make_disc({0.2, 0.5}, {1.0, 0.0}, r), make_disc({0.4, 0.5}, {}, r),
+                    make_disc({0.5, 0.5}, {}, r), make_disc({0.6, 0.5}, {}, r)});
     const std::vector<double> expected_x{0.36, 0.46, 0.56, 0.6 + (0.5 - 0.28)};
     for (double dt : {0.0005, 0.004}) {
         CAPTURE(dt);
@@ -203,8 +214,9 @@ TEST_CASE("the event-driven classic engine agrees with the time-driven one for s
 TEST_CASE("rollback puts a detected pair back at contact: no residual overlap") {
     // sigma = 0.1, closing speed 2, contact at 0.15: with dt = 0.04 the check at 0.12 sees a gap
     // of 0.06 and the one at 0.16 an overlap of 0.02.
-    const Scene scene = make_scene(1.0, 1.0, {make_disc({0.3, 0.5}, {1.0, 0.0}, 0.05),
-                                              make_disc({0.7, 0.5}, {-1.0, 0.0}, 0.05)});
+    const Scene scene = make_scene(
+        1.0, 1.0,
+        {make_disc({0.3, 0.5}, {1.0, 0.0}, 0.05), make_disc({0.7, 0.5}, {-1.0, 0.0}, 0.05)});
     TimeEngine engine(scene, time_options(0.04));
     std::vector<CollisionRecord> records;
     engine.set_collision_listener([&](const CollisionRecord& c) { records.push_back(c); });
@@ -218,13 +230,15 @@ TEST_CASE("rollback puts a detected pair back at contact: no residual overlap") 
     const Snapshot s = engine.snapshot();
     CHECK(s.overlapping_pairs.empty());
     // back to contact at 0.15, then apart for 0.01 at closing speed 2
-    CHECK(s.discs[1].position.x - s.discs[0].position.x == doctest::Approx(0.1 + 0.02).epsilon(1e-12));
+    CHECK(s.discs[1].position.x - s.discs[0].position.x ==
+          doctest::Approx(0.1 + 0.02).epsilon(1e-12));
 }
 
 TEST_CASE("tunnelling: discs passing through each other in one step are a missed collision") {
     // v dt = 0.1 each way > 2 sigma: the pair swaps sides between two checks.
-    const Scene scene = make_scene(1.0, 1.0, {make_disc({0.45, 0.5}, {1.0, 0.0}, 0.01),
-                                              make_disc({0.55, 0.5}, {-1.0, 0.0}, 0.01)});
+    const Scene scene = make_scene(
+        1.0, 1.0,
+        {make_disc({0.45, 0.5}, {1.0, 0.0}, 0.01), make_disc({0.55, 0.5}, {-1.0, 0.0}, 0.01)});
     TimeEngine engine(scene, time_options(0.1));
     std::vector<CollisionRecord> records;
     engine.set_collision_listener([&](const CollisionRecord& c) { records.push_back(c); });
@@ -306,7 +320,9 @@ TEST_CASE("grid and all-pairs give identical results on a random gas") {
             CHECK(a.missed_collisions == g.missed_collisions);
             CHECK(a.overlapping_pairs == g.overlapping_pairs);
             CHECK(g.overlap_checks < a.overlap_checks);
-            if (dt == 0.05) CHECK(a.missed_collisions > 0);
+            if (dt == 0.05) {
+                CHECK(a.missed_collisions > 0);
+            }
         }
     }
 }

@@ -65,7 +65,7 @@ void validate_time_driven_options(const EngineOptions& options);
 /// same snapshots and the same collision records. Cost per step: all-pairs O(N^2), grid about
 /// O(N) for a gas (cells are at least 2 r_max + 2 v_max h wide, so fast discs make them large).
 class TimeEngine final : public Engine {
-public:
+  public:
     /// Relative tolerance on the contact distance sigma under which two discs count as touching,
     /// not overlapping, in the census: rollback leaves a pair at contact up to rounding (~1e-16).
     static constexpr double contact_slack = 1e-9;
@@ -92,7 +92,7 @@ public:
     /// step (for walls, b = 0).
     void set_collision_listener(CollisionListener listener) override;
 
-private:
+  private:
     /// A contact found by the overlap checks of one step, waiting to be resolved.
     struct Contact {
         double t_estimate = 0.0;  ///< contact time within the step, from the detection state
@@ -111,6 +111,9 @@ private:
     void resolve_wall_contact(const Contact& contact, double h);
     void wrap_positions();
     void take_census();
+    /// COLLIDE_VALIDATE builds, after every step: finite state, kinetic energy conserved (every
+    /// resolution is elastic). Throws Error(runtime) naming the broken invariant. O(N).
+    void validate_state() const;
     void move(std::uint32_t i, Vec2 delta);
     void record(CollisionKind kind, std::uint32_t a, std::uint32_t b, double t);
     [[nodiscard]] double max_speed() const noexcept;

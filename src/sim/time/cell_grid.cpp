@@ -12,17 +12,25 @@ namespace {
 constexpr std::size_t max_cells_per_axis = 2048;
 
 std::size_t cells_along(double extent, double reach, std::size_t cap) {
-    if (!(reach > 0.0) || !std::isfinite(reach)) return reach > 0.0 ? 1 : cap;
+    if (!(reach > 0.0) || !std::isfinite(reach)) {
+        return reach > 0.0 ? 1 : cap;
+    }
     const double fit = std::floor(extent / reach);
-    if (!(fit >= 1.0)) return 1;
+    if (!(fit >= 1.0)) {
+        return 1;
+    }
     return std::min(cap, static_cast<std::size_t>(std::min(fit, static_cast<double>(cap))));
 }
 
 /// Index of coordinate x in n cells of width w, clamped to the grid (escaped discs, x == extent).
 std::size_t clamped_index(double x, double w, std::size_t n) {
     const double k = std::floor(x / w);
-    if (!(k >= 0.0)) return 0;
-    if (k >= static_cast<double>(n - 1)) return n - 1;
+    if (!(k >= 0.0)) {
+        return 0;
+    }
+    if (k >= static_cast<double>(n - 1)) {
+        return n - 1;
+    }
     return static_cast<std::size_t>(k);
 }
 
@@ -37,7 +45,9 @@ bool CellGrid::build(const Box& box, const std::vector<Vec2>& positions, double 
         max_cells_per_axis);
     nx_ = cells_along(box.width, reach, per_axis_cap);
     ny_ = cells_along(box.height, reach, per_axis_cap);
-    if (periodic_ && (nx_ < 3 || ny_ < 3)) return false;
+    if (periodic_ && (nx_ < 3 || ny_ < 3)) {
+        return false;
+    }
     cell_w_ = box.width / static_cast<double>(nx_);
     cell_h_ = box.height / static_cast<double>(ny_);
 
@@ -49,7 +59,9 @@ bool CellGrid::build(const Box& box, const std::vector<Vec2>& positions, double 
         cell_id_[i] = static_cast<std::uint32_t>(cell_of(positions[i]));
         ++cell_start_[cell_id_[i] + 1];
     }
-    for (std::size_t c = 0; c < cells; ++c) cell_start_[c + 1] += cell_start_[c];
+    for (std::size_t c = 0; c < cells; ++c) {
+        cell_start_[c + 1] += cell_start_[c];
+    }
     sorted_.resize(positions.size());
     std::vector<std::uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
     for (std::size_t i = 0; i < positions.size(); ++i) {
@@ -72,13 +84,17 @@ bool CellGrid::neighbour(std::size_t cx, std::size_t cy, int ox, int oy,
             result = static_cast<std::size_t>(moved);
             return true;
         }
-        if (!periodic_) return false;
+        if (!periodic_) {
+            return false;
+        }
         result = static_cast<std::size_t>((moved + count) % count);
         return true;
     };
     std::size_t nx = 0;
     std::size_t ny = 0;
-    if (!shift(cx, ox, nx_, nx) || !shift(cy, oy, ny_, ny)) return false;
+    if (!shift(cx, ox, nx_, nx) || !shift(cy, oy, ny_, ny)) {
+        return false;
+    }
     out = nx + nx_ * ny;
     return true;
 }

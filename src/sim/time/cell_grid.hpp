@@ -14,7 +14,7 @@
 namespace collide::detail {
 
 class CellGrid {
-public:
+  public:
     /// Sorts the discs into cells at least `reach` wide (box units). Discs outside a walled box
     /// (escaped) go to the nearest border cell, which keeps neighbours neighbours. Returns false
     /// when a periodic box is too small for three cells per axis (neighbour cells would repeat):
@@ -33,13 +33,15 @@ public:
                 constexpr int offsets[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
                 for (const auto& off : offsets) {
                     std::size_t other = 0;
-                    if (neighbour(cx, cy, off[0], off[1], other)) visit_across(home, other, visit);
+                    if (neighbour(cx, cy, off[0], off[1], other)) {
+                        visit_across(home, other, visit);
+                    }
                 }
             }
         }
     }
 
-private:
+  private:
     [[nodiscard]] std::size_t cell_of(Vec2 p) const noexcept;
     [[nodiscard]] bool neighbour(std::size_t cx, std::size_t cy, int ox, int oy,
                                  std::size_t& out) const noexcept;

@@ -26,7 +26,9 @@ constexpr double cell_margin = 1.0 + 1e-9;
 
 /// Clamps a contact time solved in a step of length h to [0, h]: `never` (grazing pairs where
 /// rounding makes the discriminant negative) and tiny overshoots mean "at the end of the step".
-double within_step(double t_contact, double h) noexcept { return std::clamp(t_contact, 0.0, h); }
+double within_step(double t_contact, double h) noexcept {
+    return std::clamp(t_contact, 0.0, h);
+}
 
 }  // namespace
 
@@ -75,8 +77,8 @@ void TimeEngine::set_collision_listener(CollisionListener listener) {
 
 void TimeEngine::advance_to(double t) {
     if (!std::isfinite(t) || t < time_) {
-        throw_runtime_error("time-driven engine: cannot advance from t = " +
-                            std::to_string(time_) + " to t = " + std::to_string(t));
+        throw_runtime_error("time-driven engine: cannot advance from t = " + std::to_string(time_) +
+                            " to t = " + std::to_string(t));
     }
     const auto started = std::chrono::steady_clock::now();
     missed_markers_.clear();  // markers are "missed since the previous frame"
@@ -86,14 +88,18 @@ void TimeEngine::advance_to(double t) {
     while (time_ < t) {
         ++k;
         double next = base + static_cast<double>(k) * dt_;
-        if (next > t - landing_tolerance * dt_) next = t;  // the final, possibly partial, step
-        if (next <= time_) continue;  // dt below the resolution of time_: try the next multiple
+        if (next > t - landing_tolerance * dt_) {
+            next = t;  // the final, possibly partial, step
+        }
+        if (next <= time_) {
+            continue;  // dt below the resolution of time_: try the next multiple
+        }
         step(next - time_);
         time_ = next;
     }
     take_census();
-    wall_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - started)
-                         .count();
+    wall_seconds_ +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 }
 
 // One quantum, as the lecture lists it: move everyone, check for overlaps, roll back, resolve.
@@ -106,10 +112,15 @@ void TimeEngine::step(double h) {
     resolve_contacts(h);
     wrap_positions();
     ++steps_;
+#ifdef COLLIDE_VALIDATE
+    validate_state();
+#endif
 }
 
 void TimeEngine::drift(double h) {
-    for (std::uint32_t i = 0; i < position_.size(); ++i) move(i, h * velocity_[i]);
+    for (std::uint32_t i = 0; i < position_.size(); ++i) {
+        move(i, h * velocity_[i]);
+    }
 }
 
 void TimeEngine::move(std::uint32_t i, Vec2 delta) {
@@ -120,7 +131,9 @@ void TimeEngine::move(std::uint32_t i, Vec2 delta) {
 template <typename PairVisitor>
 void TimeEngine::for_each_candidate_pair(double reach, bool count_checks, PairVisitor&& visit) {
     auto checked = [&](std::uint32_t i, std::uint32_t j) {
-        if (count_checks) ++overlap_checks_;
+        if (count_checks) {
+            ++overlap_checks_;
+        }
         visit(i, j);
     };
     if (use_grid_ && grid_->build(box_, position_, reach * cell_margin)) {
@@ -130,7 +143,9 @@ void TimeEngine::for_each_candidate_pair(double reach, bool count_checks, PairVi
     // The lecture's all-pairs loop: N(N-1)/2 checks.
     const auto n = static_cast<std::uint32_t>(position_.size());
     for (std::uint32_t i = 0; i < n; ++i) {
-        for (std::uint32_t j = i + 1; j < n; ++j) checked(i, j);
+        for (std::uint32_t j = i + 1; j < n; ++j) {
+            checked(i, j);
+        }
     }
 }
 
@@ -153,7 +168,8 @@ void TimeEngine::detect_pair_contacts(double h) {
             max_overlap_seen_ = std::max(max_overlap_seen_, sigma - std::sqrt(dist2));
             if (dot(dv, dr) < 0.0) {
                 ++predictions_;
-                const double t_contact = within_step(kinematics::time_to_hit(dr - h * dv, dv, sigma), h);
+                const double t_contact =
+                    within_step(kinematics::time_to_hit(dr - h * dv, dv, sigma), h);
                 contacts_.push_back({t_contact, CollisionKind::pair, i, j});
             }
             return;
@@ -161,7 +177,9 @@ void TimeEngine::detect_pair_contacts(double h) {
         // Reporting only: did the straight paths of this step touch although the check cannot see
         // it? They did if contact falls inside the step and the pair now separates (it went
         // through); a pair touching exactly at the end still approaches and is seen next step.
-        if (dot(dv, dr) < 0.0) return;
+        if (dot(dv, dr) < 0.0) {
+            return;
+        }
         const Vec2 dr0 = dr - h * dv;
         const double t_contact = kinematics::time_to_hit(dr0, dv, sigma);
         if (t_contact < h) {
@@ -175,12 +193,16 @@ void TimeEngine::detect_pair_contacts(double h) {
               [](const Miss& a, const Miss& b) { return std::tie(a.i, a.j) < std::tie(b.i, b.j); });
     missed_ += misses.size();
     for (const Miss& miss : misses) {
-        if (missed_markers_.size() < max_markers_per_frame) missed_markers_.push_back(miss.where);
+        if (missed_markers_.size() < max_markers_per_frame) {
+            missed_markers_.push_back(miss.where);
+        }
     }
 }
 
 void TimeEngine::detect_wall_contacts(double h) {
-    if (box_.boundary != Boundary::walls) return;
+    if (box_.boundary != Boundary::walls) {
+        return;
+    }
     // A disc touches a wall when it straddles the wall's segment; one entirely past it does not.
     auto straddles = [](double p, double line, double r) { return p > line - r && p < line + r; };
     auto alongside = [](double q, double extent, double r) { return q > -r && q < extent + r; };
@@ -188,12 +210,12 @@ void TimeEngine::detect_wall_contacts(double h) {
         const Vec2 p = position_[i];
         const Vec2 v = velocity_[i];
         const double r = radius_[i];
-        const bool hits_x = alongside(p.y, box_.height, r) &&
-                            ((v.x < 0.0 && straddles(p.x, 0.0, r)) ||
-                             (v.x > 0.0 && straddles(p.x, box_.width, r)));
-        const bool hits_y = alongside(p.x, box_.width, r) &&
-                            ((v.y < 0.0 && straddles(p.y, 0.0, r)) ||
-                             (v.y > 0.0 && straddles(p.y, box_.height, r)));
+        const bool hits_x =
+            alongside(p.y, box_.height, r) &&
+            ((v.x < 0.0 && straddles(p.x, 0.0, r)) || (v.x > 0.0 && straddles(p.x, box_.width, r)));
+        const bool hits_y =
+            alongside(p.x, box_.width, r) && ((v.y < 0.0 && straddles(p.y, 0.0, r)) ||
+                                              (v.y > 0.0 && straddles(p.y, box_.height, r)));
         if (hits_x) {
             ++predictions_;
             const double t_contact =
@@ -229,7 +251,9 @@ void TimeEngine::resolve_pair_contact(const Contact& contact, double h) {
     const Vec2 dv = velocity_[b] - velocity_[a];
     const double sigma = radius_[a] + radius_[b];
     // An earlier contact of this step may have separated the pair already.
-    if (norm2(dr) >= sigma * sigma || dot(dv, dr) >= 0.0) return;
+    if (norm2(dr) >= sigma * sigma || dot(dv, dr) >= 0.0) {
+        return;
+    }
     ++predictions_;
     const double t_contact = within_step(kinematics::time_to_hit(dr - h * dv, dv, sigma), h);
     const double back = h - t_contact;
@@ -253,8 +277,11 @@ void TimeEngine::resolve_wall_contact(const Contact& contact, double h) {
     const double extent = x_axis ? box_.width : box_.height;
     const double r = radius_[i];
     // Still touching the wall it moves towards? (a pair collision may have turned it round)
-    const bool towards_wall = (v < 0.0 && p < r && p > -r) || (v > 0.0 && p > extent - r && p < extent + r);
-    if (!towards_wall) return;
+    const bool towards_wall =
+        (v < 0.0 && p < r && p > -r) || (v > 0.0 && p > extent - r && p < extent + r);
+    if (!towards_wall) {
+        return;
+    }
     ++predictions_;
     const double t_contact = within_step(kinematics::time_to_wall(p - h * v, v, r, extent), h);
     const double back = h - t_contact;
@@ -267,12 +294,18 @@ void TimeEngine::resolve_wall_contact(const Contact& contact, double h) {
 }
 
 void TimeEngine::wrap_positions() {
-    if (box_.boundary != Boundary::periodic) return;
-    for (Vec2& p : position_) p = box_.wrap(p);
+    if (box_.boundary != Boundary::periodic) {
+        return;
+    }
+    for (Vec2& p : position_) {
+        p = box_.wrap(p);
+    }
 }
 
 void TimeEngine::record(CollisionKind kind, std::uint32_t a, std::uint32_t b, double t) {
-    if (listener_) listener_(CollisionRecord{t, kind, a, b});
+    if (listener_) {
+        listener_(CollisionRecord{t, kind, a, b});
+    }
 }
 
 // After each advance_to: which pairs overlap now, how deep, and which discs are out of the box.
@@ -294,19 +327,46 @@ void TimeEngine::take_census() {
         const Vec2 p = position_[i];
         escaped_[i] = box_.boundary == Boundary::walls &&
                       !(p.x >= 0.0 && p.x <= box_.width && p.y >= 0.0 && p.y <= box_.height);
-        if (escaped_[i]) ++escaped_count_;
+        if (escaped_[i]) {
+            ++escaped_count_;
+        }
+    }
+}
+
+void TimeEngine::validate_state() const {
+    for (std::size_t i = 0; i < position_.size(); ++i) {
+        const Vec2 p = position_[i];
+        const Vec2 v = velocity_[i];
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(v.x) ||
+            !std::isfinite(v.y)) {
+            throw_runtime_error("time-driven engine: disc " + std::to_string(i) +
+                                " has a non-finite state at t = " + std::to_string(time_));
+        }
+    }
+    // Elastic resolutions conserve energy up to rounding (~1e-16 per collision); 1e-9 leaves
+    // room for millions of collisions and still catches a wrong impulse at once.
+    constexpr double energy_tolerance = 1e-9;
+    const double energy = kinetic_energy();
+    if (std::fabs(energy - initial_energy_) > energy_tolerance * initial_energy_) {
+        throw_runtime_error("time-driven engine: kinetic energy " + std::to_string(energy) +
+                            " departs from " + std::to_string(initial_energy_) +
+                            " at t = " + std::to_string(time_));
     }
 }
 
 double TimeEngine::max_speed() const noexcept {
     double v2 = 0.0;
-    for (const Vec2& v : velocity_) v2 = std::max(v2, norm2(v));
+    for (const Vec2& v : velocity_) {
+        v2 = std::max(v2, norm2(v));
+    }
     return std::sqrt(v2);
 }
 
 double TimeEngine::kinetic_energy() const noexcept {
     double e = 0.0;
-    for (std::size_t i = 0; i < velocity_.size(); ++i) e += 0.5 * mass_[i] * norm2(velocity_[i]);
+    for (std::size_t i = 0; i < velocity_.size(); ++i) {
+        e += 0.5 * mass_[i] * norm2(velocity_[i]);
+    }
     return e;
 }
 
@@ -342,10 +402,14 @@ Measurements TimeEngine::measurements() const {
     m.predictions = predictions_;
 
     m.kinetic_energy = kinetic_energy();
-    for (std::size_t i = 0; i < velocity_.size(); ++i) m.momentum += mass_[i] * velocity_[i];
+    for (std::size_t i = 0; i < velocity_.size(); ++i) {
+        m.momentum += mass_[i] * velocity_[i];
+    }
     m.temperature = n > 0 ? m.kinetic_energy / n : 0.0;
     double disc_area = 0.0;
-    for (double r : radius_) disc_area += std::numbers::pi * r * r;
+    for (double r : radius_) {
+        disc_area += std::numbers::pi * r * r;
+    }
     m.packing_fraction = disc_area / box_.area();
     if (time_ > 0.0 && m.temperature > 0.0) {
         const double nkt = n * m.temperature;
@@ -364,7 +428,9 @@ Measurements TimeEngine::measurements() const {
     double msd_sum = 0.0;
     double msd_count = 0.0;
     for (std::size_t i = 0; i < displacement_.size(); ++i) {
-        if (any_tagged_ && !tagged_[i]) continue;
+        if (any_tagged_ && !tagged_[i]) {
+            continue;
+        }
         msd_sum += norm2(displacement_[i]);
         msd_count += 1.0;
     }
