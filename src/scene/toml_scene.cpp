@@ -55,7 +55,13 @@ public:
         if (const toml::node* n = doc.get("render")) read_render(*n);
         if (const toml::node* n = doc.get("include")) read_includes(*n);
         if (const toml::node* n = doc.get("disc")) read_discs(*n);
-        if (const toml::node* n = doc.get("generate")) read_generators(*n);
+        // Periodic boxes accept any position: keep them in the box, as the engines expect.
+        for (Disc& d : scene_.discs) d.position = scene_.box.wrap(d.position);
+        if (const toml::node* n = doc.get("generate")) {
+            // The generators build grids from the discs already there: those must be sane.
+            validate_scene(scene_, origin_);
+            read_generators(*n);
+        }
         if (speed_colored_ && !scene_.render.color_mode) scene_.render.color_mode = "speed";
         validate_scene(scene_, origin_);
         return std::move(scene_);
@@ -249,7 +255,7 @@ private:
             const std::string field = "generate[" + std::to_string(i) + "]";
             const toml::table& t = table_at(*a->get(i), field);
             check_keys(t, field, generate_keys);
-            const GenerateSpec spec = read_spec(t, field);
+            const GenerateSpec spec = read_spec(t, field, i);
             const std::size_t first = scene_.discs.size();
             const int line = static_cast<int>(t.source().begin.line);
             try {
@@ -262,8 +268,10 @@ private:
         }
     }
 
-    GenerateSpec read_spec(const toml::table& t, const std::string& prefix) {
+    GenerateSpec read_spec(const toml::table& t, const std::string& prefix, std::size_t index) {
         GenerateSpec g;
+        // Blocks without a seed still get different streams (same stream = same pattern twice).
+        g.seed = index + 1;
         const auto key = [&](const char* name) { return prefix + "." + name; };
         if (const toml::node* v = t.get("count")) g.count = static_cast<std::size_t>(integer(*v, key("count"), 1));
         if (const toml::node* v = t.get("packing_fraction")) g.packing_fraction = positive(*v, key("packing_fraction"));

@@ -230,3 +230,29 @@ TEST_CASE("nearest_name suggests plausible typos only") {
     CHECK(nearest_name("mas", keys) == "mass");
     CHECK(nearest_name("frobnicate", keys).empty());
 }
+
+TEST_CASE("toml: periodic positions are wrapped into the box") {
+    const Scene s = parse("[box]\nboundary = \"periodic\"\n[[disc]]\nposition = [1.25, -0.25]\nradius = 0.1\n");
+    CHECK(s.discs[0].position == Vec2{0.25, 0.75});
+}
+
+TEST_CASE("toml: bad explicit discs are reported before any generator runs") {
+    CHECK(contains(toml_error("[[disc]]\nposition = [0.5, 0.5]\nradius = 0.1\nvelocity = [0, nan]\n[[generate]]\ncount = 3\nradius = 0.01\n"),
+                   "s.toml:4: disc[0].velocity[1]: not a finite number"));
+}
+
+TEST_CASE("toml: generator blocks without a seed get different streams") {
+    const Scene s = parse(R"(
+[[generate]]
+count = 1
+radius = 0.01
+region = [[0.0, 0.0], [0.5, 1.0]]
+[[generate]]
+count = 1
+radius = 0.01
+region = [[0.5, 0.0], [1.0, 1.0]]
+)");
+    REQUIRE(s.discs.size() == 2);
+    // same relative position in each half would mean the same random stream
+    CHECK(s.discs[1].position.y != s.discs[0].position.y);
+}
