@@ -16,4 +16,7 @@ void add_check_command(CLI::App& root);
 /// `collide scenes`: list the built-in scenes with a one-line description each.
 void add_scenes_command(CLI::App& root);
 
+/// `collide pq`: the lecture's priority-queue trace table (text, CSV or Markdown).
+void add_pq_command(CLI::App& root);
+
 }  // namespace collide::app

@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
     root.footer("Exit codes: 0 success, 2 bad input or usage, 1 other failure.");
     collide::app::add_check_command(root);
     collide::app::add_scenes_command(root);
+    collide::app::add_pq_command(root);
 
     try {
         root.parse(argc, argv);
