@@ -9,6 +9,7 @@
 
 #include "collide/error.hpp"
 #include "collide/scene/load.hpp"
+#include "collide/sim/engine.hpp"
 #include "collide/sim/scene_check.hpp"
 
 using namespace collide;
@@ -90,4 +91,33 @@ TEST_CASE("built-in library: the tunnelling demo is built to make the time-drive
 TEST_CASE("built-in library: the dense fluid is dense and the gas is not") {
     CHECK(packing_fraction(load_scene("dense-fluid", COLLIDE_ASSETS_DIR)) == doctest::Approx(0.7).epsilon(0.03));
     CHECK(packing_fraction(load_scene("gas", COLLIDE_ASSETS_DIR)) < 0.1);
+}
+
+namespace {
+
+// Projectiles (radius 0.008) outside the chamber between the barriers at x = 0.3 and x = 0.7.
+int escaped_from_chamber(const collide::Snapshot& snapshot) {
+    int out = 0;
+    for (const collide::DiscState& d : snapshot.discs) {
+        if (d.radius > 0.006 && (d.position.x < 0.3 || d.position.x > 0.7)) ++out;
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("built-in library: in the tunnelling demo the time-driven method fails at the scene's dt only") {
+    const Scene s = load_scene("tunnelling", COLLIDE_ASSETS_DIR);
+    EngineOptions options;
+    options.engine = "time";
+    options.td_detect = "grid";
+    options.dt = *s.render.dt;
+    auto coarse = make_engine(s, options);
+    coarse->advance_to(1.0);  // 5 s of video at the scene's speed
+    CHECK(escaped_from_chamber(coarse->snapshot()) >= 3);
+    CHECK(coarse->measurements().missed_collisions > 0);
+    options.dt = 1e-3;
+    auto fine = make_engine(s, options);
+    fine->advance_to(1.0);
+    CHECK(escaped_from_chamber(fine->snapshot()) == 0);
 }
