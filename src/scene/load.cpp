@@ -61,6 +61,7 @@ std::filesystem::path scene_assets_dir() {
 Scene load_scene(const std::string& path_or_name) { return load_scene(path_or_name, scene_assets_dir()); }
 
 Scene load_scene(const std::string& path_or_name, const std::filesystem::path& assets_dir) {
+    if (path_or_name.empty()) throw_input_error("empty scene path (give a file or a built-in scene name)");
     const std::filesystem::path path(path_or_name);
     std::error_code ec;
     const bool exists = std::filesystem::exists(path, ec);

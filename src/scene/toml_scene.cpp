@@ -208,6 +208,7 @@ private:
 
     void read_include(const toml::node& n, const std::string& field) {
         const std::filesystem::path path = base_dir_ / text_value(n, field);
+        if (path.extension() != ".txt") fail(n, field, "only algs4 .txt files can be included (got '" + path.filename().string() + "')");
         std::ifstream in(path, std::ios::binary);
         if (!in) fail(n, field, "cannot open '" + path.string() + "'");
         ParsedScene part = parse_algs4(in, path.string());

@@ -46,6 +46,7 @@ TEST_CASE("load_scene: algs4 .txt and .toml files by path, named after the file"
     CHECK(contains(load_error((dir / "notes.csv").string()), "unknown scene format '.csv'"));
     CHECK(contains(load_error(dir.string()), "is a directory"));
     CHECK(contains(load_error((dir / "absent.txt").string()), "cannot open"));
+    CHECK(contains(load_error(""), "empty scene path"));
     std::filesystem::remove_all(dir);
 }
 

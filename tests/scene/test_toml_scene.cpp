@@ -219,6 +219,7 @@ TEST_CASE("toml: include pulls algs4 files in, relative to the scene, with their
     CHECK(s.discs[2].radius == 0.1);
     CHECK(contains(toml_error("include = \"bad.txt\"\n", dir.path), "bad.txt:2: expected 9 columns"));
     CHECK(contains(toml_error("include = [\"none.txt\"]\n", dir.path), "s.toml:1: include[0]: cannot open"));
+    CHECK(contains(toml_error("include = [\"two.txt\", \"other.toml\"]\n", dir.path), "s.toml:1: include[1]: only algs4 .txt files"));
     CHECK(contains(toml_error("include = \"clash.txt\"\n[[disc]]\nposition = [0.5, 0.5]\nradius = 0.1\n", dir.path),
                    "s.toml:2: disc[0]: overlaps "));
 }
