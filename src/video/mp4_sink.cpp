@@ -7,6 +7,7 @@ extern "C" {
 }
 
 #include <string>
+#include <string_view>
 
 #include "av_handles.hpp"
 #include "frame_sink.hpp"
@@ -67,10 +68,12 @@ public:
     }
 
     // libsvtav1 (1.4.1 in Debian 12) deadlocks when closed without ever receiving a frame; the
-    // encoder is therefore only opened by the first frame, and an opened one is drained before it
-    // is freed (best effort, errors ignored: this is the abort path).
+    // encoder is therefore only opened by the first frame, and an abandoned SVT-AV1 encoder is
+    // also sent its end of stream and drained before it is freed (best effort, errors ignored:
+    // this is the abort path). Other encoders are freed at once: draining x264's look-ahead
+    // would only delay the exit after Ctrl-C.
     ~Mp4Sink() override {
-        if (opened_ && !finished_) {
+        if (opened_ && !finished_ && std::string_view(encoder_->name) == "libsvtav1") {
             if (avcodec_send_frame(codec_.get(), nullptr) >= 0) {
                 while (avcodec_receive_packet(codec_.get(), packet_.get()) >= 0) {
                     av_packet_unref(packet_.get());
