@@ -47,6 +47,9 @@ struct Measurements {
     std::uint64_t escaped = 0;            ///< discs whose centre is outside a walled box
     std::uint64_t overlapping_pairs = 0;  ///< pairs overlapping now
     double energy_drift = 0.0;            ///< (KE - KE0) / KE0
+    std::uint64_t steps = 0;              ///< time quanta taken (the final partial ones included)
+    double max_overlap_seen = 0.0;        ///< deepest overlap any check found before rollback
+    double seconds_per_time_unit = 0.0;   ///< wall_seconds / t: cost of one simulated time unit
 };
 
 }  // namespace collide
