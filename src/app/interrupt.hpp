@@ -10,6 +10,7 @@
 namespace collide::app {
 
 /// Installs SIGINT and SIGTERM handlers for its lifetime (restoring the previous ones after).
+/// Each handler fires once: a second Ctrl-C gets the default action and ends the process at once.
 /// Only one may be alive at a time (a second one throws Error(runtime)): a signal handler can only
 /// reach static storage, so the flag behind it is the one process-wide variable of the program.
 class InterruptGuard {

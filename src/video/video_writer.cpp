@@ -136,8 +136,8 @@ private:
             notices_.push_back("GIF frame rate reduced from " + std::to_string(options_.fps) +
                                " to " + std::to_string(options_.fps / geometry_.frame_step) +
                                (options_.fps % geometry_.frame_step != 0 ? ".5" : "") +
-                               " fps (keeping every " + std::to_string(geometry_.frame_step) +
-                               " frame; GIF viewers do not play faster than " +
+                               " fps (keeping 1 frame in " + std::to_string(geometry_.frame_step) +
+                               "; GIF viewers do not play faster than " +
                                std::to_string(max_gif_fps) + " fps)");
         }
     }

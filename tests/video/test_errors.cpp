@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -231,5 +232,47 @@ TEST_CASE("SIGINT and SIGTERM during an encode: exit non-zero, no partial file, 
         CHECK(WEXITSTATUS(status) == 1);
         CHECK(read_bytes(output) == "previous video");
         CHECK(dir.entries() == std::vector<std::string>{"out.mp4"});
+    }
+}
+
+TEST_CASE("a full disk is a clear runtime error, not a crash, and leaves no partial file") {
+    // A file size limit (RLIMIT_FSIZE) makes writes fail like a full disk (EFBIG instead of
+    // ENOSPC) without needing a small filesystem; in a child process, so the limit stays there.
+    for (const VideoFormat format : {VideoFormat::mp4, VideoFormat::gif, VideoFormat::png_sequence}) {
+        CAPTURE(to_string(format));
+        ScratchDirectory dir;
+        const auto path = dir / (format == VideoFormat::png_sequence ? "seq" : "out.bin");
+        write_bytes(dir / "keep.txt", "unrelated");
+        const pid_t child = fork();
+        REQUIRE(child >= 0);
+        if (child == 0) {
+            signal(SIGXFSZ, SIG_IGN);  // get EFBIG from write(2) instead of being killed
+            const rlimit limit{1024, 1024};  // below one frame of any format
+            setrlimit(RLIMIT_FSIZE, &limit);
+            int code = 3;  // no error at all
+            try {
+                VideoOptions options = small_options(path);
+                options.format = format;
+                options.crf = 0;  // lossless: big packets
+                VideoWriter writer(options);
+                for (int i = 0; i < 40; ++i) writer.write(test_pattern(160, 90, i));
+                writer.finish();
+            } catch (const collide::Error& e) {
+                const std::string message = e.what();
+                code = e.kind() == collide::ErrorKind::runtime &&
+                               message.find("File too large") != std::string::npos
+                           ? 0
+                           : 4;
+                if (code != 0) std::fprintf(stderr, "unexpected message: %s\n", e.what());
+            } catch (...) {
+                code = 5;
+            }
+            _exit(code);
+        }
+        int status = 0;
+        waitpid(child, &status, 0);
+        REQUIRE(WIFEXITED(status));
+        CHECK(WEXITSTATUS(status) == 0);
+        CHECK(dir.entries() == std::vector<std::string>{"keep.txt"});
     }
 }

@@ -2,6 +2,8 @@
 
 #include <doctest/doctest.h>
 
+#include <sys/stat.h>
+
 #include "collide/error.hpp"
 #include "collide/video/png.hpp"
 #include "collide/video/video_writer.hpp"
@@ -123,4 +125,25 @@ TEST_CASE("GIF at a low frame rate keeps every frame and says nothing") {
     for (int i = 0; i < 3; ++i) writer.write(test_pattern(64, 48, i));
     writer.finish();
     CHECK(decode_file(options.path).frames.size() == 3);
+}
+
+TEST_CASE("finished outputs get ordinary permissions (umask), not the temporaries' private ones") {
+    const mode_t previous = umask(022);
+    ScratchDirectory dir;
+    write_png(test_pattern(4, 4, 0), dir / "thumb.png");
+    VideoOptions options;
+    options.path = dir / "seq";
+    options.format = VideoFormat::png_sequence;
+    options.width = 4;
+    options.height = 4;
+    VideoWriter writer(options);
+    writer.write(test_pattern(4, 4, 0));
+    writer.finish();
+    umask(previous);
+    using std::filesystem::perms;
+    CHECK((std::filesystem::status(dir / "thumb.png").permissions() & perms::all) ==
+          (perms::owner_read | perms::owner_write | perms::group_read | perms::others_read));
+    CHECK((std::filesystem::status(dir / "seq").permissions() & perms::all) ==
+          (perms::owner_all | perms::group_read | perms::group_exec | perms::others_read |
+           perms::others_exec));
 }

@@ -63,9 +63,9 @@ struct VideoOptions {
     std::string encoder;
     /// Encoder speed/size trade-off; empty = the codec's default below. x264/x265 names
     /// (ultrafast superfast veryfast faster fast medium slow slower veryslow) or, for AV1,
-    /// an SVT-AV1 preset number "0".."13". Default per codec: h264 "veryfast" (about 3x the
-    /// frames per second of "medium" for ~10% more bytes at equal CRF on our flat-coloured
-    /// scenes, see docs/benchmarks.md), hevc "fast", av1 "10".
+    /// an SVT-AV1 preset number "0".."13". Default per codec: h264 "veryfast" (1.6-2x the
+    /// frames per second of "medium" for ~5% more bytes at CRF 20 on disc scenes; "ultrafast"
+    /// is faster still but 4x bigger; docs/benchmarks.md), hevc "fast", av1 "10".
     std::string preset;
     /// Constant rate factor (quality; lower = better and bigger); -1 = the codec's default below.
     /// h264/hevc 0..51 (default h264 20, hevc 24), av1 0..63 (default 35).
