@@ -10,4 +10,7 @@ namespace collide::app {
 // Subcommands register here as their issues land, e.g.
 // void add_pq_command(CLI::App& root);
 
+/// `collide pq`: the lecture's priority-queue trace table (text, CSV or Markdown).
+void add_pq_command(CLI::App& root);
+
 }  // namespace collide::app

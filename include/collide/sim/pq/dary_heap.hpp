@@ -2,9 +2,12 @@
 /// \file
 /// A d-ary heap in a 0-based array: children of i are d*i+1 ... d*i+d, parent (i-1)/d.
 /// d = 2 is the lecture's binary heap. push and pop are O(log_d N) (pop does d compares a level).
+/// D = 0 selects an arity chosen at run time (constructor argument); a compile-time D lets the
+/// compiler turn the index arithmetic into shifts and unroll the child scan, so prefer it.
 
 #include <cstddef>
 #include <functional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -14,14 +17,38 @@ namespace collide::pq {
 
 template <class T, Orientation O = Orientation::max, unsigned D = 2, class Less = std::less<T>>
 class DaryHeap {
-    static_assert(D >= 2, "a heap needs at least two children per node");
+    static_assert(D != 1, "a heap needs at least two children per node (D = 0: chosen at run time)");
 
 public:
     using value_type = T;
+    /// Children per node fixed at compile time, or 0 when chosen at run time (see d()).
     static constexpr unsigned arity = D;
+    /// Largest run-time arity accepted; wider nodes only cost compares.
+    static constexpr unsigned max_runtime_arity = 64;
 
+    /// An empty heap (a run-time-arity heap built this way is binary).
     DaryHeap() = default;
     explicit DaryHeap(Less less) : less_(std::move(less)) {}
+
+    /// An empty heap with d children per node; only for D = 0. Throws Error(runtime) unless
+    /// 2 <= d <= max_runtime_arity.
+    explicit DaryHeap(unsigned d, Less less = Less{})
+        requires(D == 0)
+        : d_(d), less_(std::move(less)) {
+        if (d < 2 || d > max_runtime_arity) {
+            throw_runtime_error("d-ary heap: arity " + std::to_string(d) + " out of range (2.." +
+                              std::to_string(max_runtime_arity) + ")");
+        }
+    }
+
+    /// Children per node.
+    [[nodiscard]] std::size_t d() const noexcept {
+        if constexpr (D == 0) {
+            return d_;
+        } else {
+            return D;
+        }
+    }
 
     [[nodiscard]] bool empty() const noexcept { return a_.empty(); }
     [[nodiscard]] std::size_t size() const noexcept { return a_.size(); }
@@ -52,13 +79,22 @@ public:
         return out;
     }
 
-    /// The heap array, for teaching traces and tests.
+    /// Replaces the item that comes out next by x and returns the old one: a pop and a push with
+    /// one sink instead of a sink and a swim. Precondition: !empty(). O(d log_d N).
+    T replace_top(T x) {
+        T out = std::exchange(a_.front(), std::move(x));
+        sink(0);
+        validate();
+        return out;
+    }
+
+    /// The heap array, for teaching traces and tests (index 0 comes out next).
     [[nodiscard]] const std::vector<T>& array() const noexcept { return a_; }
 
     /// Heap order: no child comes out before its parent. O(N).
     [[nodiscard]] bool is_heap() const {
         for (std::size_t i = 1; i < a_.size(); ++i) {
-            if (first(a_[i], a_[(i - 1) / D])) return false;
+            if (first(a_[i], a_[(i - 1) / d()])) return false;
         }
         return true;
     }
@@ -69,7 +105,7 @@ private:
     void swim(std::size_t i) {
         T x = std::move(a_[i]);
         while (i > 0) {
-            const std::size_t parent = (i - 1) / D;
+            const std::size_t parent = (i - 1) / d();
             if (!first(x, a_[parent])) break;
             a_[i] = std::move(a_[parent]);
             i = parent;
@@ -81,9 +117,9 @@ private:
         const std::size_t n = a_.size();
         T x = std::move(a_[i]);
         for (;;) {
-            const std::size_t c0 = D * i + 1;
+            const std::size_t c0 = d() * i + 1;
             if (c0 >= n) break;
-            const std::size_t c_end = c0 + D < n ? c0 + D : n;
+            const std::size_t c_end = c0 + d() < n ? c0 + d() : n;
             std::size_t best = c0;
             for (std::size_t c = c0 + 1; c < c_end; ++c) {
                 if (first(a_[c], a_[best])) best = c;
@@ -100,6 +136,7 @@ private:
     }
 
     std::vector<T> a_;
+    std::size_t d_ = D == 0 ? 2 : D;  ///< read only when D == 0
     [[no_unique_address]] Less less_{};
 };
 

@@ -1,0 +1,327 @@
+// Every queue of the lecture against a reference model (std::multiset) on long random operation
+// sequences with many duplicate keys, with the queue's invariant checked after every operation;
+// the indexed heap's handle operations; agreement of all queues under a strict total order.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <functional>
+#include <initializer_list>
+#include <iterator>
+#include <map>
+#include <random>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "collide/error.hpp"
+#include "collide/sim/pq/indexed_heap.hpp"
+#include "collide/sim/pq/queue_kind.hpp"
+
+using namespace collide::pq;
+
+namespace {
+
+constexpr int ops_per_sequence = 100'000;
+
+/// The structural invariant of each queue (an unordered array has none).
+template <class Q>
+bool holds_invariant(const Q& q) {
+    if constexpr (requires { q.is_heap(); }) {
+        return q.is_heap();
+    } else if constexpr (requires { q.is_sorted(); }) {
+        return q.is_sorted();
+    } else if constexpr (requires { q.heap().check_invariants(); }) {
+        return q.heap().check_invariants();
+    } else {
+        return true;
+    }
+}
+
+/// The item the reference model says comes out next.
+template <Orientation O>
+int model_top(const std::multiset<int>& model) {
+    if constexpr (O == Orientation::max) {
+        return *model.rbegin();
+    } else {
+        return *model.begin();
+    }
+}
+
+/// Random pushes and pops (keys from a small range, so many duplicates), with the push
+/// probability switching between 0.65 and 0.35 every `swing` operations so the queue repeatedly
+/// grows to about 0.3 * swing items and drains, often to empty. Compares every top and pop with
+/// the model and checks the invariant after every operation. Returns the sequence popped.
+template <Orientation O, Queue Q>
+std::vector<int> check_against_model(Q q, std::uint64_t seed, int swing, int key_range,
+                                     int ops = ops_per_sequence) {
+    std::mt19937_64 rng(seed);
+    std::uniform_int_distribution<int> key(0, key_range - 1);
+    std::bernoulli_distribution grow(0.65);
+    std::bernoulli_distribution shrink(0.35);
+    std::multiset<int> model;
+    std::vector<int> popped;
+    std::size_t mismatches = 0;
+    std::size_t broken = 0;
+    std::size_t largest = 0;
+    for (int op = 0; op < ops; ++op) {
+        const bool growing = (op / swing) % 2 == 0;
+        const bool push = model.empty() || (growing ? grow(rng) : shrink(rng));
+        if (push) {
+            const int k = key(rng);
+            q.push(k);
+            model.insert(k);
+        } else {
+            const int expected = model_top<O>(model);
+            mismatches += (q.top() != expected);
+            const int got = q.pop();
+            mismatches += (got != expected);
+            model.erase(model.find(expected));
+            popped.push_back(got);
+        }
+        mismatches += (q.size() != model.size()) + (q.empty() != model.empty());
+        // Validating builds check inside every mutation (and throw); don't pay for it twice.
+        if constexpr (!validate_heaps) broken += !holds_invariant(q);
+        largest = std::max(largest, model.size());
+    }
+    CHECK(mismatches == 0);
+    CHECK(broken == 0);
+    CHECK(largest >= static_cast<std::size_t>(swing) / 5);  // the sequence did exercise depth
+    CHECK(popped.size() > static_cast<std::size_t>(ops) / 3);
+    return popped;
+}
+
+/// Small queues (about 15 items at most) keep the O(N) implementations and the O(N) validators
+/// of COLLIDE_VALIDATE builds fast; the key range is narrow so most keys are duplicates.
+template <Orientation O>
+void check_kinds_against_model(std::initializer_list<const char*> kinds) {
+    constexpr int swing = 50;
+    constexpr int key_range = 20;
+    for (const char* text : kinds) {
+        CAPTURE(text);
+        const std::uint64_t seed = 20261121;
+        with_queue<int, O, std::less<int>>(parse_queue_kind(text), [&](auto q) {
+            (void)check_against_model<O>(std::move(q), seed, swing, key_range);
+        });
+    }
+}
+
+}  // namespace
+
+// Every implementation and every compiled arity, each in one orientation (both orientations are
+// covered for arrays, heaps and the indexed heap).
+TEST_CASE("max-queues match a multiset over 10^5 random operations with duplicates") {
+    check_kinds_against_model<Orientation::max>({"unordered", "binary", "dary:4", "dary:5", "indexed:4"});
+}
+
+TEST_CASE("min-queues match a multiset over 10^5 random operations with duplicates") {
+    check_kinds_against_model<Orientation::min>({"ordered", "dary:3", "dary:8", "indexed:2", "indexed:8"});
+}
+
+TEST_CASE("heaps match a multiset when they grow deep (thousands of items)") {
+    // The heaps only: the array queues are O(N) per operation. In validating builds the O(N)
+    // checker runs after every mutation, so the sequences are shorter there.
+    const int swing = validate_heaps ? 1000 : 12000;
+    const int ops = validate_heaps ? 12'000 : ops_per_sequence;
+    const int keys = 1 << 20;
+    check_against_model<Orientation::min>(BinaryHeap<int, Orientation::min>{}, 7, swing, keys, ops);
+    check_against_model<Orientation::max>(BinaryHeap<int, Orientation::max>{}, 7, swing, keys, ops);
+    check_against_model<Orientation::min>(DaryHeap<int, Orientation::min, 3>{}, 8, swing, keys, ops);
+    check_against_model<Orientation::max>(DaryHeap<int, Orientation::max, 8>{}, 9, swing, keys, ops);
+    check_against_model<Orientation::max>(DaryHeap<int, Orientation::max, 0>(6), 10, swing, keys, ops);
+    check_against_model<Orientation::min>(IndexedHeapQueue<int, Orientation::min, 4>{}, 11, swing, keys, ops);
+}
+
+namespace {
+
+using TimedId = std::pair<int, int>;  ///< (time, id): an event key in miniature
+
+/// Orders by time only: many distinct keys tie.
+struct TimeOnlyLess {
+    bool operator()(const TimedId& a, const TimedId& b) const { return a.first < b.first; }
+};
+
+/// A fixed random sequence of pushes (true) and pops over keys with many equal times.
+struct TieWorkload {
+    std::vector<bool> push;
+    std::vector<TimedId> keys;
+
+    TieWorkload() {
+        std::mt19937_64 rng(42);
+        std::uniform_int_distribution<int> time(0, 30);
+        std::bernoulli_distribution grow(0.55);
+        for (int i = 0; i < 4000; ++i) {
+            push.push_back(grow(rng));
+            keys.emplace_back(time(rng), i);
+        }
+    }
+
+    /// Runs the workload on a queue of kind `text`, then drains it; returns everything popped.
+    template <class Less>
+    std::vector<TimedId> run(const char* text) const {
+        return with_queue<TimedId, Orientation::min, Less>(parse_queue_kind(text), [&](auto q) {
+            std::vector<TimedId> out;
+            for (std::size_t i = 0; i < push.size(); ++i) {
+                if (push[i] || q.empty()) {
+                    q.push(keys[i]);
+                } else {
+                    out.push_back(q.pop());
+                }
+            }
+            while (!q.empty()) out.push_back(q.pop());
+            return out;
+        });
+    }
+
+    /// The same workload on an ordered set, the reference.
+    [[nodiscard]] std::vector<TimedId> run_model() const {
+        std::set<TimedId> model;
+        std::vector<TimedId> out;
+        for (std::size_t i = 0; i < push.size(); ++i) {
+            if (push[i] || model.empty()) {
+                model.insert(keys[i]);
+            } else {
+                out.push_back(*model.begin());
+                model.erase(model.begin());
+            }
+        }
+        out.insert(out.end(), model.begin(), model.end());
+        return out;
+    }
+};
+
+constexpr const char* all_kinds[] = {"unordered", "ordered", "binary", "dary:3", "dary:4",
+                                     "dary:8", "dary:6", "indexed:2", "indexed:4", "indexed:8"};
+
+}  // namespace
+
+TEST_CASE("under a strict total order every queue hands out the same sequence") {
+    // (time, id) compared lexicographically: the id breaks every time tie, as an engine's event
+    // key must, so all implementations agree item for item.
+    const TieWorkload work;
+    const auto reference = work.run<std::less<TimedId>>("binary");
+    REQUIRE(reference.size() > work.keys.size() / 2);  // everything pushed, then drained
+    CHECK(reference == work.run_model());
+    for (const char* text : all_kinds) {
+        CAPTURE(text);
+        CHECK(work.run<std::less<TimedId>>(text) == reference);
+    }
+}
+
+TEST_CASE("with ties under Less the implementations may disagree (why event keys break ties)") {
+    const TieWorkload work;
+    const auto reference = work.run<TimeOnlyLess>("binary");
+    int disagreeing = 0;
+    for (const char* text : all_kinds) {
+        const auto out = work.run<TimeOnlyLess>(text);
+        REQUIRE(out.size() == reference.size());
+        for (std::size_t i = 0; i < out.size(); ++i) REQUIRE(out[i].first == reference[i].first);
+        disagreeing += (out != reference);
+    }
+    CHECK(disagreeing > 0);  // same times in the same order, but not the same ids
+}
+
+// ---- the indexed heap's handle operations against a model ------------------------------------
+
+TEST_CASE("IndexedDaryHeap matches a model over 10^5 random handle operations") {
+    constexpr unsigned handles = 300;
+    IndexedDaryHeap<int, Orientation::min, 3> heap(handles);
+    std::map<unsigned, int> key_of;          // model: handle -> key
+    std::set<std::pair<int, unsigned>> order;  // model: (key, handle); ties of keys allowed
+    std::mt19937_64 rng(99);
+    std::uniform_int_distribution<unsigned> handle(0, handles - 1);
+    std::uniform_int_distribution<int> key(0, 400);
+    std::uniform_int_distribution<int> what(0, 5);
+    std::size_t mismatches = 0;
+    std::size_t broken = 0;
+    for (int op = 0; op < ops_per_sequence; ++op) {
+        const unsigned h = handle(rng);
+        const int k = key(rng);
+        const bool present = key_of.count(h) > 0;
+        mismatches += (heap.contains(h) != present);
+        switch (what(rng)) {
+            case 0:  // push or change
+                heap.push_or_change(h, k);
+                if (present) order.erase({key_of[h], h});
+                key_of[h] = k;
+                order.insert({k, h});
+                break;
+            case 1:  // pop: the top key must be the model's smallest (the handle may be any tie)
+                if (order.empty()) break;
+                mismatches += (heap.top_key() != order.begin()->first);
+                {
+                    const unsigned got = heap.pop();
+                    mismatches += (key_of.count(got) == 0 || key_of[got] != order.begin()->first);
+                    order.erase({key_of[got], got});
+                    key_of.erase(got);
+                }
+                break;
+            case 2:  // erase
+                if (!present) {
+                    CHECK_THROWS_AS(heap.erase(h), collide::Error);
+                    break;
+                }
+                heap.erase(h);
+                order.erase({key_of[h], h});
+                key_of.erase(h);
+                break;
+            case 3:  // decrease_key, which must refuse a larger key
+                if (!present) break;
+                if (k > key_of[h]) {
+                    CHECK_THROWS_AS(heap.decrease_key(h, k), collide::Error);
+                    break;
+                }
+                heap.decrease_key(h, k);
+                order.erase({key_of[h], h});
+                key_of[h] = k;
+                order.insert({k, h});
+                break;
+            case 4:  // increase_key, which must refuse a smaller key
+                if (!present) break;
+                if (k < key_of[h]) {
+                    CHECK_THROWS_AS(heap.increase_key(h, k), collide::Error);
+                    break;
+                }
+                heap.increase_key(h, k);
+                order.erase({key_of[h], h});
+                key_of[h] = k;
+                order.insert({k, h});
+                break;
+            default:  // key lookup
+                if (present) {
+                    mismatches += (heap.key(h) != key_of[h]);
+                } else {
+                    CHECK_THROWS_AS((void)heap.key(h), collide::Error);
+                }
+                break;
+        }
+        mismatches += (heap.size() != key_of.size());
+        if constexpr (!validate_heaps) broken += !heap.check_invariants();
+    }
+    CHECK(mismatches == 0);
+    CHECK(broken == 0);
+}
+
+TEST_CASE("IndexedDaryHeap refuses misuse with an Error and stays intact") {
+    IndexedDaryHeap<double, Orientation::max, 4> heap(4);
+    heap.push(0, 1.0);
+    heap.push(2, 5.0);
+    CHECK_THROWS_AS(heap.push(4, 1.0), collide::Error);           // handle out of range
+    CHECK_THROWS_AS(heap.push(2, 1.0), collide::Error);           // already present
+    CHECK_THROWS_AS(heap.change_key(1, 1.0), collide::Error);     // not in the heap
+    CHECK_THROWS_AS(heap.change_key(99, 1.0), collide::Error);    // beyond the handle range
+    CHECK_THROWS_AS(heap.increase_key(0, 0.5), collide::Error);   // wrong direction
+    CHECK_THROWS_AS(heap.decrease_key(2, 6.0), collide::Error);   // wrong direction
+    CHECK(heap.check_invariants());
+    CHECK(heap.top() == 2);
+    heap.increase_key(0, 9.0);  // max-oriented: a larger key moves up
+    CHECK(heap.top() == 0);
+    heap.reserve_handles(10);
+    heap.push(9, 7.0);
+    CHECK(heap.pop() == 0);
+    CHECK(heap.pop() == 9);
+    CHECK(heap.pop() == 2);
+    CHECK(heap.empty());
+    CHECK(heap.check_invariants());
+}
