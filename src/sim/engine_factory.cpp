@@ -1,26 +1,34 @@
+#include <type_traits>
+
 #include "collide/error.hpp"
 #include "collide/sim/classic_engine.hpp"
 #include "collide/sim/engine.hpp"
 #include "collide/sim/event.hpp"
 #include "collide/sim/fast_engine.hpp"
-#include "collide/sim/pq/dary_heap.hpp"
+#include "collide/sim/pq/queue_kind.hpp"
 
 namespace collide {
 
 namespace {
 
+/// The classic loop on the queue named by --pq (every queue kind is compiled in).
 std::unique_ptr<Engine> make_classic_engine(const Scene& scene, const EngineOptions& options) {
-    if (options.pq != "binary") {
-        throw_input_error("--pq", 0, "", "unknown queue kind '" + options.pq + "'");
-    }
-    using Queue = pq::DaryHeap<sim::Event, pq::Orientation::min, 2, sim::EventLess>;
-    return std::make_unique<sim::ClassicEngine<Queue>>(scene);
+    const pq::QueueKind kind = pq::parse_queue_kind(options.pq, "--pq");
+    return pq::with_queue<sim::Event, pq::Orientation::min, sim::EventLess>(
+        kind, [&](auto&& queue) -> std::unique_ptr<Engine> {
+            using Queue = std::decay_t<decltype(queue)>;
+            return std::make_unique<sim::ClassicEngine<Queue>>(scene, std::move(queue));
+        });
 }
 
 }  // namespace
 
 std::unique_ptr<Engine> make_engine(const Scene& scene, const EngineOptions& options) {
-    if (options.engine == "fast") return std::make_unique<sim::FastEngine>(scene);
+    if (options.engine == "fast") {
+        // Tiny periodic boxes (under three diameters) have no 3 x 3 grid: the O(N) loop is exact there.
+        if (!sim::FastEngine::can_simulate(scene)) return make_classic_engine(scene, EngineOptions{});
+        return std::make_unique<sim::FastEngine>(scene);
+    }
     if (options.engine == "classic") return make_classic_engine(scene, options);
     // Each engine adds its branch here as it lands.
     throw_input_error("--engine", 0, "", "unknown engine '" + options.engine + "'");

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <tuple>
+#include <utility>
 
 #include "collide/error.hpp"
 #include "collide/sim/kinematics.hpp"
@@ -39,15 +41,31 @@ FastEngine::FastEngine(const Scene& scene)
     for (std::uint32_t i = 0; i < p_.size(); ++i) predict(i);
 }
 
-void FastEngine::choose_grid(const Scene& scene) {
+namespace {
+
+/// The big-disc threshold and the largest small radius of a scene.
+std::pair<double, double> split_radii(const Scene& scene) {
     std::vector<double> radii;
     radii.reserve(scene.discs.size());
     for (const Disc& d : scene.discs) radii.push_back(d.radius);
-    big_threshold_ = big_radius_threshold(radii);
-    small_radius_max_ = 0.0;
+    const double big = big_radius_threshold(radii);
+    double small_max = 0.0;
     for (double r : radii) {
-        if (r <= big_threshold_) small_radius_max_ = std::max(small_radius_max_, r);
+        if (r <= big) small_max = std::max(small_max, r);
     }
+    return {big, small_max};
+}
+
+}  // namespace
+
+bool FastEngine::can_simulate(const Scene& scene) {
+    if (scene.box.boundary != Boundary::periodic) return true;
+    const double min_cell = 2.0 * split_radii(scene).second * (1.0 + cell_margin);
+    return fit_cells(scene.box.width, min_cell) >= 3 && fit_cells(scene.box.height, min_cell) >= 3;
+}
+
+void FastEngine::choose_grid(const Scene& scene) {
+    std::tie(big_threshold_, small_radius_max_) = split_radii(scene);
     const double min_cell = 2.0 * small_radius_max_ * (1.0 + cell_margin);
     std::uint32_t nx = fit_cells(box_.width, min_cell);
     std::uint32_t ny = fit_cells(box_.height, min_cell);

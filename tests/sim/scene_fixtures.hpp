@@ -5,13 +5,13 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <numbers>
 #include <optional>
 #include <random>
 #include <string>
 
 #include "collide/scene.hpp"
+#include "collide/sim/algs4.hpp"
 
 namespace collide::test {
 
@@ -66,25 +66,12 @@ inline Scene head_on() {
 
 inline std::filesystem::path algs4_dir() { return std::filesystem::path(COLLIDE_SHARED_DIR) / "data" / "algs4"; }
 
-/// Reads an algs4 CollisionSystem file (N, then rx ry vx vy radius mass r g b per line) into a
-/// unit walled box; std::nullopt when the file is absent (tests then skip).
+/// Reads and validates an algs4 file from ../shared/data/algs4; std::nullopt when it is absent
+/// (tests then skip).
 inline std::optional<Scene> read_algs4(const std::string& name) {
-    std::ifstream in(algs4_dir() / name);
-    if (!in) return std::nullopt;
-    Scene s;
-    s.name = name;
-    s.box = Box{1.0, 1.0, Boundary::walls};
-    std::size_t n = 0;
-    in >> n;
-    for (std::size_t i = 0; i < n; ++i) {
-        Disc d;
-        int r = 0, g = 0, b = 0;
-        in >> d.position.x >> d.position.y >> d.velocity.x >> d.velocity.y >> d.radius >> d.mass >> r >> g >> b;
-        d.color = {static_cast<std::uint8_t>(r), static_cast<std::uint8_t>(g), static_cast<std::uint8_t>(b)};
-        s.discs.push_back(d);
-    }
-    if (!in) return std::nullopt;
-    return s;
+    const std::filesystem::path path = algs4_dir() / name;
+    if (!std::filesystem::exists(path)) return std::nullopt;
+    return read_algs4_file(path).scene;
 }
 
 }  // namespace collide::test

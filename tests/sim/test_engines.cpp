@@ -23,7 +23,6 @@ using collide::test::lattice_fluid;
 namespace {
 
 using BinaryQueue = pq::DaryHeap<sim::Event, pq::Orientation::min, 2, sim::EventLess>;
-using QuaternaryQueue = pq::DaryHeap<sim::Event, pq::Orientation::min, 4, sim::EventLess>;
 
 std::unique_ptr<Engine> engine_named(const std::string& name, const Scene& scene) {
     EngineOptions options;
@@ -212,12 +211,32 @@ TEST_CASE("classic and fast agree with one big disc among small ones (the big-di
 TEST_CASE("the classic engine pops the identical event sequence whatever the queue") {
     const Scene scene = lattice_fluid(6, 0.5, Boundary::walls, 3);
     sim::ClassicEngine<BinaryQueue> binary(scene);
-    sim::ClassicEngine<QuaternaryQueue> quaternary(scene);
-    const auto a = first_collisions(binary, 1000, 0.01, 100.0);
-    const auto b = first_collisions(quaternary, 1000, 0.01, 100.0);
-    REQUIRE(a.size() == 1000);
-    require_same_events(a, b, 0.0);
-    CHECK(binary.measurements().queue.pops == quaternary.measurements().queue.pops);
+    const auto reference = first_collisions(binary, 1000, 0.01, 100.0);
+    REQUIRE(reference.size() == 1000);
+    const Measurements reference_m = binary.measurements();
+    for (const char* kind : {"unordered", "ordered", "binary", "dary:3", "dary:4", "dary:8", "dary:5",
+                             "indexed", "indexed:2", "indexed:8"}) {
+        CAPTURE(kind);
+        EngineOptions options;
+        options.engine = "classic";
+        options.pq = kind;
+        auto engine = make_engine(scene, options);
+        const auto events = first_collisions(*engine, 1000, 0.01, 100.0);
+        require_same_events(reference, events, 0.0);
+        const Measurements m = engine->measurements();
+        CHECK(m.queue.pops == reference_m.queue.pops);
+        CHECK(m.queue.stale_pops == reference_m.queue.stale_pops);
+        CHECK(m.queue.max_size == reference_m.queue.max_size);
+    }
+}
+
+TEST_CASE("make_engine names the bad option") {
+    EngineOptions options;
+    options.engine = "warp";
+    CHECK_THROWS_WITH_AS(make_engine(head_on(), options), doctest::Contains("--engine"), Error);
+    options.engine = "classic";
+    options.pq = "fibonacci";
+    CHECK_THROWS_WITH_AS(make_engine(head_on(), options), doctest::Contains("--pq"), Error);
 }
 
 TEST_CASE("fast engine: energy and momentum conserved, no overlap, one queue entry per disc") {

@@ -42,6 +42,10 @@ public:
     /// Throws Error(input) when a periodic box is too small for a 3 x 3 grid.
     explicit FastEngine(const Scene& scene);
 
+    /// False when the fast engine's grid cannot hold the scene (a periodic box narrower or lower
+    /// than three small-disc diameters); make_engine then falls back to the classic loop.
+    [[nodiscard]] static bool can_simulate(const Scene& scene);
+
     void advance_to(double t) override;
     [[nodiscard]] double time() const noexcept override { return now_; }
     [[nodiscard]] Snapshot snapshot() const override;
