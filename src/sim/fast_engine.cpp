@@ -34,6 +34,17 @@ std::uint32_t fit_cells(double extent, double min_cell) {
 
 }  // namespace
 
+bool FastEngine::KeyLess::tie_break(const Key& x, const Key& y) const noexcept {
+    if (x.kind() != y.kind()) return x.kind() < y.kind();
+    const auto ids = [this](const Key& k) {
+        const std::uint32_t a = (*scene_index)[k.a];
+        if (k.kind() != EventKind::pair) return std::pair{a, k.b()};
+        const std::uint32_t b = (*scene_index)[k.b()];
+        return std::pair{std::min(a, b), std::max(a, b)};
+    };
+    return ids(x) < ids(y);
+}
+
 FastEngine::FastEngine(const Scene& scene)
     : box_(scene.box), periodic_(scene.box.boundary == Boundary::periodic), appearance_(scene) {
     choose_grid(scene);
@@ -99,9 +110,42 @@ std::uint32_t FastEngine::cell_of(double x, double y) const noexcept {
     return clamp_index(y / ch_, ny_) * nx_ + clamp_index(x / cw_, nx_);
 }
 
+namespace {
+
+/// Interleaves the bits of x and y (Z-order / Morton code).
+std::uint64_t morton(std::uint32_t x, std::uint32_t y) noexcept {
+    const auto spread = [](std::uint64_t v) {
+        v &= 0xffffffffULL;
+        v = (v | (v << 16)) & 0x0000ffff0000ffffULL;
+        v = (v | (v << 8)) & 0x00ff00ff00ff00ffULL;
+        v = (v | (v << 4)) & 0x0f0f0f0f0f0f0f0fULL;
+        v = (v | (v << 2)) & 0x3333333333333333ULL;
+        v = (v | (v << 1)) & 0x5555555555555555ULL;
+        return v;
+    };
+    return spread(x) | (spread(y) << 1);
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> FastEngine::locality_order(const Scene& scene) const {
+    const std::size_t n = scene.discs.size();
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
+    for (std::uint32_t k = 0; k < n; ++k) {
+        const Vec2 pos = box_.wrap(scene.discs[k].position);
+        const std::uint32_t cell = cell_of(pos.x, pos.y);
+        keyed[k] = {morton(cell % nx_, cell / nx_), k};
+    }
+    std::sort(keyed.begin(), keyed.end());
+    std::vector<std::uint32_t> order(n);
+    for (std::size_t i = 0; i < n; ++i) order[i] = keyed[i].second;
+    return order;
+}
+
 void FastEngine::place_discs(const Scene& scene) {
     const std::size_t n = scene.discs.size();
-    if (n >= no_disc) throw_input_error("", 0, "discs", "too many discs (at most 2^32 - 2)");
+    if (n >= Key::index_mask) throw_input_error("", 0, "discs", "too many discs for the fast engine (at most 2^30 - 2)");
+    scene_index_ = locality_order(scene);
     p_.resize(n);
     prev_.assign(n, no_disc);
     count_.assign(n, 0);
@@ -111,7 +155,7 @@ void FastEngine::place_discs(const Scene& scene) {
     start_.resize(n);
     heap_.reserve_handles(n);
     for (std::uint32_t i = 0; i < n; ++i) {
-        const Disc& d = scene.discs[i];
+        const Disc& d = scene.discs[scene_index_[i]];
         const Vec2 pos = box_.wrap(d.position);
         p_[i] = Particle{pos.x, pos.y, d.velocity.x, d.velocity.y, 0.0, d.radius, d.mass, no_disc, 0};
         start_[i] = d.position;
@@ -147,9 +191,9 @@ void FastEngine::advance_to(double t) {
 }
 
 void FastEngine::process(std::uint32_t i, const Key& key) {
-    switch (key.kind) {
+    switch (key.kind()) {
         case EventKind::pair: {
-            const std::uint32_t j = key.a == i ? key.b : key.a;
+            const std::uint32_t j = key.a == i ? key.b() : key.a;
             if (count_[j] != partner_count_[i]) {
                 // j collided after i predicted this; i's trajectory is unchanged, predict it anew.
                 ++stats_.stale_pops;
@@ -161,10 +205,10 @@ void FastEngine::process(std::uint32_t i, const Key& key) {
         }
         case EventKind::xwall:
         case EventKind::ywall:
-            process_wall(i, key.kind, key.t);
+            process_wall(i, key.kind(), key.t);
             return;
         case EventKind::cell:
-            process_cell(i, key.b);
+            process_cell(i, key.b());
             return;
     }
 }
@@ -189,7 +233,7 @@ void FastEngine::process_pair(std::uint32_t i, std::uint32_t j, double t) {
     last_partner_[i] = j;
     last_partner_[j] = i;
     ++collisions_pair_;
-    if (listener_) listener_(to_record(t, EventKind::pair, i, j));
+    if (listener_) listener_(to_record(t, EventKind::pair, scene_index_[i], scene_index_[j]));
     predict(i);
     predict(j);
 }
@@ -208,7 +252,7 @@ void FastEngine::process_wall(std::uint32_t i, EventKind kind, double t) {
     }
     ++count_[i];
     last_partner_[i] = no_disc;
-    if (listener_) listener_(to_record(t, kind, i, no_disc));
+    if (listener_) listener_(to_record(t, kind, scene_index_[i], no_disc));
     predict(i);
 }
 
@@ -259,7 +303,7 @@ void FastEngine::predict(std::uint32_t i) {
     const double dt = now_ - pi.t;
     const double xi = pi.x + pi.vx * dt;
     const double yi = pi.y + pi.vy * dt;
-    Key best{never, i, no_disc, EventKind::cell};
+    Key best = Key::make(never, i, no_disc, EventKind::cell);
     consider_walls_and_cells(i, pi, xi, yi, best);
     if (is_big(i)) {
         scan_ring(i, pi, xi, yi, best);
@@ -273,7 +317,7 @@ void FastEngine::predict(std::uint32_t i) {
         if (heap_.contains(i)) heap_.erase(i);
         return;
     }
-    if (best.kind == EventKind::pair) partner_count_[i] = count_[best.a == i ? best.b : best.a];
+    if (best.kind() == EventKind::pair) partner_count_[i] = count_[best.a == i ? best.b() : best.a];
     if (!heap_.contains(i)) {
         ++stats_.pushes;
     }
@@ -285,7 +329,7 @@ void FastEngine::consider_walls_and_cells(std::uint32_t i, const Particle& pi, d
                                           Key& best) {
     const auto offer = [&](double dt, EventKind kind, std::uint32_t b) {
         if (dt == never) return;
-        const Key k{now_ + dt, i, b, kind};
+        const Key k = Key::make(now_ + dt, i, b, kind);
         if (KeyLess{}(k, best)) best = k;
     };
     if (!periodic_) {
@@ -324,7 +368,7 @@ inline void FastEngine::consider_pair(std::uint32_t i, const Particle& pi, doubl
     if (dt == never) return;
     const double t = now_ + dt;
     if (t > best.t) return;
-    const Key k{t, std::min(i, j), std::max(i, j), EventKind::pair};
+    const Key k = Key::make(t, std::min(i, j), std::max(i, j), EventKind::pair);
     if (KeyLess{}(k, best)) best = k;
 }
 
@@ -456,16 +500,16 @@ Snapshot FastEngine::snapshot() const {
     Snapshot s;
     s.time = now_;
     s.box = box_;
-    s.discs.reserve(p_.size());
+    s.discs.resize(p_.size());
     for (std::uint32_t i = 0; i < p_.size(); ++i) {
-        DiscState d;
+        const std::uint32_t k = scene_index_[i];
+        DiscState& d = s.discs[k];
         d.position = box_.wrap(position_at_now(i));
         d.velocity = {p_[i].vx, p_[i].vy};
         d.radius = p_[i].r;
         d.mass = p_[i].m;
-        d.color = appearance_.colors[i];
-        d.tagged = appearance_.tagged[i] != 0;
-        s.discs.push_back(d);
+        d.color = appearance_.colors[k];
+        d.tagged = appearance_.tagged[k] != 0;
     }
     return s;
 }
@@ -494,7 +538,7 @@ Measurements FastEngine::measurements() const {
         velocities[i] = {p_[i].vx, p_[i].vy};
         masses[i] = p_[i].m;
         radii[i] = p_[i].r;
-        if (appearance_.in_msd(i)) {
+        if (appearance_.in_msd(scene_index_[i])) {
             const Vec2 unwrapped{positions[i].x + image_[i].x * box_.width,
                                  positions[i].y + image_[i].y * box_.height};
             msd_sum += norm2(unwrapped - start_[i]);
@@ -516,10 +560,9 @@ std::uint64_t FastEngine::bytes() const noexcept {
     constexpr std::size_t u32 = sizeof(std::uint32_t);
     std::size_t total = p_.capacity() * sizeof(Particle);
     total += (prev_.capacity() + count_.capacity() + partner_count_.capacity() + last_partner_.capacity() +
-              big_.capacity() + head_.capacity()) * u32;
+              big_.capacity() + head_.capacity() + scene_index_.capacity()) * u32;
     total += image_.capacity() * sizeof(Image) + start_.capacity() * sizeof(Vec2);
-    // Indexed heap: heap array and position map (u32 per handle) and one key per handle.
-    total += heap_.capacity() * (2 * u32 + sizeof(Key));
+    total += heap_.bytes();
     total += appearance_.bytes();
     return total;
 }
