@@ -330,7 +330,7 @@ void FastEngine::consider_walls_and_cells(std::uint32_t i, const Particle& pi, d
     const auto offer = [&](double dt, EventKind kind, std::uint32_t b) {
         if (dt == never) return;
         const Key k = Key::make(now_ + dt, i, b, kind);
-        if (KeyLess{}(k, best)) best = k;
+        if (key_less_(k, best)) best = k;
     };
     if (!periodic_) {
         offer(kinematics::time_to_wall(xi, pi.vx, pi.r, box_.width), EventKind::xwall, no_disc);
@@ -369,7 +369,7 @@ inline void FastEngine::consider_pair(std::uint32_t i, const Particle& pi, doubl
     const double t = now_ + dt;
     if (t > best.t) return;
     const Key k = Key::make(t, std::min(i, j), std::max(i, j), EventKind::pair);
-    if (KeyLess{}(k, best)) best = k;
+    if (key_less_(k, best)) best = k;
 }
 
 void FastEngine::consider_pair_images(std::uint32_t i, const Particle& pi, double xi, double yi,

@@ -165,7 +165,8 @@ private:
     std::vector<std::uint32_t> scene_index_;
     std::vector<std::uint32_t> big_;            ///< indices of big discs
 
-    Heap heap_{0, KeyLess{&scene_index_}};
+    KeyLess key_less_{&scene_index_};
+    Heap heap_{0, key_less_};
     QueueStats stats_;
     ImpulseTally tally_;
     std::uint64_t collisions_pair_ = 0;
