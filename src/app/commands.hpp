@@ -19,4 +19,10 @@ void add_scenes_command(CLI::App& root);
 /// `collide pq`: the lecture's priority-queue trace table (text, CSV or Markdown).
 void add_pq_command(CLI::App& root);
 
+/// `collide simulate`: run an engine to a time, print measurements, optionally log collisions.
+void add_simulate_command(CLI::App& root);
+
+/// `collide bench`: engine throughput and memory on a random periodic fluid or a scene.
+void add_bench_command(CLI::App& root);
+
 }  // namespace collide::app
