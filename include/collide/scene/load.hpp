@@ -1,10 +1,12 @@
 #pragma once
 /// \file
 /// Loading scenes for the CLI (library collide_scene: links collide_sim and toml++).
-/// Implemented with the scenes issue.
+/// Every loader validates (collide/sim/scene_check.hpp) before it returns: a scene that comes out
+/// of here is safe to hand to any engine.
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "collide/scene.hpp"
@@ -15,7 +17,36 @@ namespace collide {
 /// scene (assets/scenes/<name>.toml). Throws Error(input) naming file:line (or TOML key) and field.
 [[nodiscard]] Scene load_scene(const std::string& path_or_name);
 
+/// Same, looking built-in names up in `assets_dir`/scenes instead of scene_assets_dir().
+[[nodiscard]] Scene load_scene(const std::string& path_or_name, const std::filesystem::path& assets_dir);
+
 /// Names of the built-in scenes, sorted.
 [[nodiscard]] std::vector<std::string> builtin_scene_names();
+
+/// A built-in scene and its one-line description (the TOML `description` key).
+struct BuiltinScene {
+    std::string name;
+    std::string description;
+};
+
+/// The built-in scenes of `assets_dir`/scenes, sorted by name. Throws Error(input) if a
+/// scene file cannot be read.
+[[nodiscard]] std::vector<BuiltinScene> builtin_scenes(const std::filesystem::path& assets_dir);
+
+/// The assets directory: $COLLIDE_ASSETS_DIR when set and not empty, else the source tree's
+/// assets/ directory compiled into collide_scene (COLLIDE_SOURCE_ASSETS_DIR).
+[[nodiscard]] std::filesystem::path scene_assets_dir();
+
+/// Parses and validates a TOML scene given as text. `file_label` names it in messages;
+/// `include` paths are resolved against `base_dir`. Throws Error(input) "file:line: key: reason".
+[[nodiscard]] Scene parse_toml_scene(std::string_view text, const std::string& file_label,
+                                     const std::filesystem::path& base_dir);
+
+/// Reads, parses and validates a TOML scene file (named after its stem).
+[[nodiscard]] Scene load_toml_scene(const std::filesystem::path& path);
+
+/// The candidate closest to `word` by edit distance, or "" when none is close enough to be a
+/// plausible typo ("radus" -> "radius"). Used for "unknown key ... (did you mean ...?)".
+[[nodiscard]] std::string nearest_name(std::string_view word, const std::vector<std::string>& candidates);
 
 }  // namespace collide

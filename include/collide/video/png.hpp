@@ -1,0 +1,22 @@
+#pragma once
+/// \file
+/// Single PNG files (thumbnails, PNG sequences, test fixtures) through stb_image(_write).
+
+#include <filesystem>
+
+#include "collide/image.hpp"
+
+namespace collide::video {
+
+/// Writes `image` as an RGBA PNG at `path`, atomically: the bytes go to a temporary file beside
+/// `path` that is renamed over it only once complete, so `path` holds either its old content or
+/// the whole new image. Cost: O(width * height) (zlib at stb's default level).
+/// Throws Error(input) naming the path if its directory does not exist or is not writable,
+/// Error(runtime) if the image is empty/inconsistent or the write fails (e.g. a full disk).
+void write_png(const Image& image, const std::filesystem::path& path);
+
+/// Reads a PNG (any bit depth / channel count stb understands) as RGBA8, rows top-down.
+/// Throws Error(input) naming the path if it cannot be opened or decoded.
+[[nodiscard]] Image read_png(const std::filesystem::path& path);
+
+}  // namespace collide::video

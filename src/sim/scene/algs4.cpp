@@ -1,0 +1,178 @@
+// The algs4 text format: line-based parsing that tolerates layout (CRLF, blank lines, leading
+// spaces, missing final newline) and rejects content it cannot read, naming file:line:column.
+
+#include "collide/sim/algs4.hpp"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <istream>
+#include <ostream>
+#include <string_view>
+#include <vector>
+
+#include "collide/error.hpp"
+
+namespace collide {
+
+namespace {
+
+constexpr std::array<const char*, 9> column_names = {"rx", "ry", "vx", "vy", "radius", "mass", "r", "g", "b"};
+
+// Never reserve more than this up front: N comes from the file and may be absurd.
+constexpr std::size_t max_reserve = std::size_t{1} << 20;
+
+std::vector<std::string_view> split_whitespace(std::string_view line) {
+    std::vector<std::string_view> out;
+    std::size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r' || line[i] == '\f' || line[i] == '\v')) ++i;
+        const std::size_t start = i;
+        while (i < line.size() && !(line[i] == ' ' || line[i] == '\t' || line[i] == '\r' || line[i] == '\f' || line[i] == '\v')) ++i;
+        if (i > start) out.push_back(line.substr(start, i - start));
+    }
+    return out;
+}
+
+// Java's Double.parseDouble forms that matter here: "1.9E-4", ".05", "-0.0", "+3", "1e5".
+// NaN and infinities parse (so the message can say "not finite" rather than "not a number").
+bool parse_double(std::string_view token, double& value) {
+    if (!token.empty() && token.front() == '+') {
+        token.remove_prefix(1);
+        if (!token.empty() && (token.front() == '-' || token.front() == '+')) return false;
+    }
+    const char* end = token.data() + token.size();
+    const auto [ptr, ec] = std::from_chars(token.data(), end, value);
+    return ec == std::errc() && ptr == end;
+}
+
+bool parse_count(std::string_view token, unsigned long long& value) {
+    if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+    const char* end = token.data() + token.size();
+    const auto [ptr, ec] = std::from_chars(token.data(), end, value);
+    return ec == std::errc() && ptr == end && !token.empty();
+}
+
+std::string quoted(std::string_view s) {
+    constexpr std::size_t shown = 40;
+    std::string q(s.substr(0, shown));
+    if (s.size() > shown) q += "...";
+    return "'" + q + "'";
+}
+
+struct Reader {
+    const std::string& file;
+    ParsedScene parsed;
+    std::vector<int> lines;
+    unsigned long long expected = 0;
+    int count_line = 0;
+
+    void read_count(std::string_view text, int line) {
+        const auto tokens = split_whitespace(text);
+        if (tokens.size() != 1 || !parse_count(tokens[0], expected)) {
+            throw_input_error(file, line, "N", "expected the number of discs alone on the first line, got " + quoted(text));
+        }
+        count_line = line;
+        parsed.scene.discs.reserve(static_cast<std::size_t>(std::min<unsigned long long>(expected, max_reserve)));
+    }
+
+    double number(std::string_view token, int line, std::size_t column) const {
+        double v = 0.0;
+        if (!parse_double(token, v)) {
+            throw_input_error(file, line, column_names[column], quoted(token) + " is not a number");
+        }
+        if (!std::isfinite(v)) throw_input_error(file, line, column_names[column], "not a finite number (" + std::string(token) + ")");
+        return v;
+    }
+
+    std::uint8_t channel(std::string_view token, int line, std::size_t column) const {
+        const double v = number(token, line, column);
+        if (v < 0.0 || v > 255.0 || v != std::floor(v)) {
+            throw_input_error(file, line, column_names[column], "colour must be an integer 0..255, got " + std::string(token));
+        }
+        return static_cast<std::uint8_t>(v);
+    }
+
+    void read_disc(std::string_view text, int line) {
+        const auto t = split_whitespace(text);
+        if (t.size() != column_names.size()) {
+            throw_input_error(file, line, "", "expected 9 columns (rx ry vx vy radius mass r g b), got " + std::to_string(t.size()));
+        }
+        if (parsed.scene.discs.size() >= expected) {
+            throw_input_error(file, line, "N", "more disc lines than N = " + std::to_string(expected) + " (line " + std::to_string(count_line) + ")");
+        }
+        Disc d;
+        d.position = {number(t[0], line, 0), number(t[1], line, 1)};
+        d.velocity = {number(t[2], line, 2), number(t[3], line, 3)};
+        d.radius = number(t[4], line, 4);
+        d.mass = number(t[5], line, 5);
+        d.color = {channel(t[6], line, 6), channel(t[7], line, 7), channel(t[8], line, 8)};
+        parsed.scene.discs.push_back(std::move(d));
+        lines.push_back(line);
+    }
+
+    void finish() {
+        if (count_line == 0) throw_input_error(file, 0, "N", "empty file: expected the number of discs on the first line");
+        if (parsed.scene.discs.size() != expected) {
+            throw_input_error(file, count_line, "N", "N = " + std::to_string(expected) + " but " +
+                              std::to_string(parsed.scene.discs.size()) + " disc lines follow");
+        }
+        DiscSource run;
+        run.first = 0;
+        run.count = parsed.scene.discs.size();
+        run.file = file;
+        run.lines = std::move(lines);
+        run.field = "disc";
+        parsed.origin.add(std::move(run));
+    }
+};
+
+bool blank(std::string_view s) {
+    return std::all_of(s.begin(), s.end(), [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; });
+}
+
+}  // namespace
+
+ParsedScene parse_algs4(std::istream& in, const std::string& file_label) {
+    Reader reader{file_label, {}, {}, 0, 0};
+    reader.parsed.scene.box = Box{1.0, 1.0, Boundary::walls};  // algs4's unit box
+    std::string text;
+    int line = 0;
+    while (std::getline(in, text)) {
+        ++line;
+        if (blank(text)) continue;
+        if (reader.count_line == 0) {
+            reader.read_count(text, line);
+        } else {
+            reader.read_disc(text, line);
+        }
+    }
+    if (in.bad()) throw_input_error(file_label, line, "", "read error");
+    reader.finish();
+    return std::move(reader.parsed);
+}
+
+ParsedScene read_algs4_file(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw_input_error(path.string(), 0, "", "cannot open the scene file");
+    ParsedScene parsed = parse_algs4(in, path.string());
+    parsed.scene.name = path.stem().string();
+    parsed.scene.title = parsed.scene.name;
+    validate_scene(parsed.scene, parsed.origin);
+    return parsed;
+}
+
+void write_algs4(std::ostream& out, const Scene& scene) {
+    out << scene.discs.size() << '\n';
+    std::array<char, 512> buf{};
+    for (const Disc& d : scene.discs) {
+        std::snprintf(buf.data(), buf.size(), "%.17g %.17g %.17g %.17g %.17g %.17g %d %d %d\n", d.position.x,
+                      d.position.y, d.velocity.x, d.velocity.y, d.radius, d.mass, d.color.r, d.color.g, d.color.b);
+        out << buf.data();
+    }
+}
+
+}  // namespace collide

@@ -1,0 +1,53 @@
+#pragma once
+/// \file
+/// The format-specific back ends behind VideoWriter (MP4 through libavcodec, GIF through
+/// libavfilter's palette filters, PNG sequences through stb). Internal to collide_video.
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "collide/image.hpp"
+#include "collide/video/video_writer.hpp"
+
+namespace collide::video::detail {
+
+/// Receives frames on the writer's encoder thread and writes them to a temporary path.
+class FrameSink {
+public:
+    virtual ~FrameSink() = default;
+    /// Encodes one frame of exactly the writer's input size. Throws Error(runtime).
+    virtual void consume(const Image& frame) = 0;
+    /// Flushes everything and closes the output; the caller then renames it. Throws Error.
+    virtual void finish() = 0;
+};
+
+/// Sizes and rates the writer settles on before creating a sink.
+struct SinkGeometry {
+    int input_width = 0;    ///< size of the frames given to write()
+    int input_height = 0;
+    int output_width = 0;   ///< encoded size (even for yuv420p)
+    int output_height = 0;
+    int fps = 0;            ///< requested frames per second
+    int frame_step = 1;     ///< keep every frame_step-th frame (GIF rate cap)
+};
+
+/// MP4 via libavformat + the codec's encoder. Throws Error(runtime) naming a missing encoder.
+std::unique_ptr<FrameSink> make_mp4_sink(const VideoOptions& options, const SinkGeometry& geometry,
+                                         const std::filesystem::path& temporary);
+/// GIF with a palette generated from all frames (palettegen + paletteuse).
+std::unique_ptr<FrameSink> make_gif_sink(const SinkGeometry& geometry,
+                                         const std::filesystem::path& temporary);
+/// PNG files `<stem>_00000.png`... inside the (temporary) directory.
+std::unique_ptr<FrameSink> make_png_sequence_sink(const std::string& stem,
+                                                  const std::filesystem::path& directory);
+
+/// Writes a PNG at `path` directly (no temporary; callers provide atomicity). Throws Error.
+void write_png_file(const Image& image, const std::filesystem::path& path,
+                    const std::filesystem::path& shown_as);
+
+/// `image` grown to `width` x `height` (>= its size) by repeating the last column and row.
+Image pad_by_edge_replication(const Image& image, int width, int height);
+
+}  // namespace collide::video::detail

@@ -1,0 +1,149 @@
+// GIF (palette per clip, rate cap) and PNG (single files, sequences) round trips.
+
+#include <doctest/doctest.h>
+
+#include <sys/stat.h>
+
+#include "collide/error.hpp"
+#include "collide/video/png.hpp"
+#include "collide/video/video_writer.hpp"
+#include "video_test_support.hpp"
+
+using namespace collide::video;
+using namespace collide::video::testing;
+
+TEST_CASE("write_png/read_png round trip is exact and leaves no temporary") {
+    ScratchDirectory dir;
+    const collide::Image image = test_pattern(33, 17, 2);
+    write_png(image, dir / "thumb.png");
+    const collide::Image back = read_png(dir / "thumb.png");
+    CHECK(back.width == 33);
+    CHECK(back.height == 17);
+    CHECK(back.rgba == image.rgba);
+    CHECK(dir.entries() == std::vector<std::string>{"thumb.png"});
+}
+
+TEST_CASE("write_png replaces an existing file, and a failed write keeps it") {
+    ScratchDirectory dir;
+    const auto path = dir / "thumb.png";
+    write_bytes(path, "old content");
+    CHECK_THROWS_AS(write_png(collide::Image{}, path), collide::Error);  // empty image
+    CHECK(read_bytes(path) == "old content");
+    write_png(test_pattern(8, 8, 0), path);
+    CHECK(read_png(path).rgba == test_pattern(8, 8, 0).rgba);
+}
+
+TEST_CASE("read_png of a missing or corrupt file is an input error naming it") {
+    ScratchDirectory dir;
+    write_bytes(dir / "bad.png", "not a png");
+    for (const char* name : {"missing.png", "bad.png"}) {
+        try {
+            (void)read_png(dir / name);
+            FAIL("no error");
+        } catch (const collide::Error& e) {
+            CHECK(e.kind() == collide::ErrorKind::input);
+            CHECK(std::string(e.what()).find(name) != std::string::npos);
+        }
+    }
+}
+
+TEST_CASE("PNG sequence: zero-padded names in a directory, exact pixels, old directory replaced") {
+    ScratchDirectory dir;
+    const auto path = dir / "frames";
+    std::filesystem::create_directory(path);
+    write_bytes(path / "stale.txt", "from an older run");
+
+    VideoOptions options;
+    options.path = path;
+    options.format = VideoFormat::png_sequence;
+    options.width = 40;
+    options.height = 30;
+    VideoWriter writer(options);
+    for (int i = 0; i < 3; ++i) writer.write(test_pattern(40, 30, i));
+    // Until finish() the old directory stays as it was.
+    CHECK(std::filesystem::exists(path / "stale.txt"));
+    writer.finish();
+
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(path)) {
+        names.push_back(entry.path().filename().string());
+    }
+    std::sort(names.begin(), names.end());
+    CHECK(names == std::vector<std::string>{"frames_00000.png", "frames_00001.png",
+                                            "frames_00002.png"});
+    for (int i = 0; i < 3; ++i) {
+        CHECK(read_png(path / names[i]).rgba == test_pattern(40, 30, i).rgba);
+    }
+    CHECK(dir.entries() == std::vector<std::string>{"frames"});
+}
+
+TEST_CASE("GIF: generated palette, frame rate capped by dropping frames evenly") {
+    set_libav_verbose(false);
+    ScratchDirectory dir;
+    VideoOptions options;
+    options.path = dir / "slide.gif";
+    options.format = VideoFormat::gif;
+    options.width = 160;
+    options.height = 90;
+    options.fps = 50;  // above the cap: every 2nd frame is kept, 25 fps
+    VideoWriter writer(options);
+    CHECK(writer.output_fps() == doctest::Approx(25.0));
+    REQUIRE(writer.notices().size() == 1);
+    CHECK(writer.notices()[0].find("50 to 25 fps") != std::string::npos);
+    constexpr int frames = 10;
+    for (int i = 0; i < frames; ++i) writer.write(test_pattern(160, 90, i));
+    writer.finish();
+
+    const Decoded decoded = decode_file(options.path);
+    CHECK(decoded.codec == "gif");
+    CHECK(decoded.width == 160);
+    CHECK(decoded.height == 90);
+    REQUIRE(decoded.frames.size() == frames / 2);
+    // Kept frames are the even ones; 4/100 s apart.
+    for (std::size_t i = 0; i < decoded.frames.size(); ++i) {
+        const double quality = psnr_rgb(test_pattern(160, 90, 2 * int(i)), decoded.frames[i]);
+        CHECK(quality >= 28.0);
+    }
+    for (std::size_t i = 1; i < decoded.pts.size(); ++i) {
+        CHECK(double(decoded.pts[i] - decoded.pts[i - 1]) * av_q2d(decoded.time_base) ==
+              doctest::Approx(0.04));
+    }
+    CHECK(dir.entries() == std::vector<std::string>{"slide.gif"});
+}
+
+TEST_CASE("GIF at a low frame rate keeps every frame and says nothing") {
+    set_libav_verbose(false);
+    ScratchDirectory dir;
+    VideoOptions options;
+    options.path = dir / "slow.gif";
+    options.format = VideoFormat::gif;
+    options.width = 64;
+    options.height = 48;
+    options.fps = 10;
+    VideoWriter writer(options);
+    CHECK(writer.notices().empty());
+    for (int i = 0; i < 3; ++i) writer.write(test_pattern(64, 48, i));
+    writer.finish();
+    CHECK(decode_file(options.path).frames.size() == 3);
+}
+
+TEST_CASE("finished outputs get ordinary permissions (umask), not the temporaries' private ones") {
+    const mode_t previous = umask(022);
+    ScratchDirectory dir;
+    write_png(test_pattern(4, 4, 0), dir / "thumb.png");
+    VideoOptions options;
+    options.path = dir / "seq";
+    options.format = VideoFormat::png_sequence;
+    options.width = 4;
+    options.height = 4;
+    VideoWriter writer(options);
+    writer.write(test_pattern(4, 4, 0));
+    writer.finish();
+    umask(previous);
+    using std::filesystem::perms;
+    CHECK((std::filesystem::status(dir / "thumb.png").permissions() & perms::all) ==
+          (perms::owner_read | perms::owner_write | perms::group_read | perms::others_read));
+    CHECK((std::filesystem::status(dir / "seq").permissions() & perms::all) ==
+          (perms::owner_all | perms::group_read | perms::group_exec | perms::others_read |
+           perms::others_exec));
+}

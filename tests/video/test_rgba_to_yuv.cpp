@@ -1,0 +1,125 @@
+// The hand-written BT.709 RGBA -> yuv420p converter against the standard's formula, and its
+// banded (threaded) form against the single-threaded one.
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <random>
+
+#include "rgba_to_yuv.hpp"
+#include "video_test_support.hpp"
+
+using namespace collide::video::detail;
+
+namespace {
+
+struct Planes {
+    int width;
+    int height;
+    std::vector<std::uint8_t> y, u, v;
+    Planes(int w, int h)
+        : width(w), height(h), y(std::size_t(w) * h), u(std::size_t(w / 2) * (h / 2)),
+          v(std::size_t(w / 2) * (h / 2)) {}
+    Yuv420View view() {
+        return {y.data(), u.data(), v.data(), width, width / 2, width / 2};
+    }
+};
+
+Planes convert(const collide::Image& image, int threads) {
+    Planes planes(image.width, image.height);
+    rgba_to_yuv420_bt709(image.rgba.data(), std::ptrdiff_t(image.stride()), image.width,
+                         image.height, planes.view(), threads);
+    return planes;
+}
+
+collide::Image solid(int r, int g, int b) {
+    collide::Image image(4, 2);
+    for (int y = 0; y < 2; ++y) {
+        for (int x = 0; x < 4; ++x) {
+            std::uint8_t* p = image.pixel(x, y);
+            p[0] = std::uint8_t(r);
+            p[1] = std::uint8_t(g);
+            p[2] = std::uint8_t(b);
+            p[3] = 255;
+        }
+    }
+    return image;
+}
+
+}  // namespace
+
+TEST_CASE("primaries, white and black land on the BT.709 limited-range code values") {
+    struct Case {
+        int r, g, b, y, u, v;
+    };
+    // The 100% colour bar values of BT.709 in 8 bits.
+    for (const Case c : {Case{255, 255, 255, 235, 128, 128}, Case{0, 0, 0, 16, 128, 128},
+                         Case{255, 0, 0, 63, 102, 240}, Case{0, 255, 0, 173, 42, 26},
+                         Case{0, 0, 255, 32, 240, 118}}) {
+        CAPTURE(c.r);
+        CAPTURE(c.g);
+        CAPTURE(c.b);
+        const Planes planes = convert(solid(c.r, c.g, c.b), 1);
+        CHECK(int(planes.y[0]) == c.y);
+        CHECK(int(planes.y[5]) == c.y);
+        CHECK(int(planes.u[1]) == c.u);
+        CHECK(int(planes.v[1]) == c.v);
+    }
+}
+
+TEST_CASE("random pixels: within 1 code value of the exact formula") {
+    std::mt19937 rng(7);
+    std::uniform_int_distribution<int> byte(0, 255);
+    collide::Image image(64, 32);
+    for (auto& value : image.rgba) value = std::uint8_t(byte(rng));
+    const Planes planes = convert(image, 1);
+    int worst = 0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const std::uint8_t* p = image.pixel(x, y);
+            const double expected = collide::video::testing::bt709_y(p[0], p[1], p[2]);
+            worst = std::max(worst, int(std::lround(std::abs(planes.y[y * 64 + x] - expected) + 0.49)));
+        }
+    }
+    for (int cy = 0; cy < image.height / 2; ++cy) {
+        for (int cx = 0; cx < image.width / 2; ++cx) {
+            double r = 0, g = 0, b = 0;
+            for (int dy = 0; dy < 2; ++dy) {
+                for (int dx = 0; dx < 2; ++dx) {
+                    const std::uint8_t* p = image.pixel(2 * cx + dx, 2 * cy + dy);
+                    r += p[0] / 4.0;
+                    g += p[1] / 4.0;
+                    b += p[2] / 4.0;
+                }
+            }
+            const std::size_t i = std::size_t(cy) * 32 + cx;
+            worst = std::max(worst, int(std::ceil(std::abs(planes.u[i] - collide::video::testing::bt709_u(r, g, b)) - 0.5)));
+            worst = std::max(worst, int(std::ceil(std::abs(planes.v[i] - collide::video::testing::bt709_v(r, g, b)) - 0.5)));
+        }
+    }
+    CHECK(worst <= 1);
+}
+
+TEST_CASE("banded conversion on several threads equals the single-threaded result") {
+    const collide::Image image = collide::video::testing::test_pattern(96, 54, 3);
+    const Planes one = convert(image, 1);
+    for (const int threads : {2, 3, 4}) {
+        const Planes many = convert(image, threads);
+        CHECK(many.y == one.y);
+        CHECK(many.u == one.u);
+        CHECK(many.v == one.v);
+    }
+}
+
+TEST_CASE("libswscale with BT.709 details agrees with the hand-written converter on luma") {
+    const collide::Image image = collide::video::testing::test_pattern(96, 54, 3);
+    const Planes hand = convert(image, 1);
+    Planes sws(96, 54);
+    SwsConverter converter(96, 54, SWS_BICUBIC | SWS_ACCURATE_RND, 2);
+    converter.convert(image.rgba.data(), std::ptrdiff_t(image.stride()), sws.view());
+    int worst = 0;
+    for (std::size_t i = 0; i < hand.y.size(); ++i) {
+        worst = std::max(worst, std::abs(int(hand.y[i]) - int(sws.y[i])));
+    }
+    CHECK(worst <= 1);  // a BT.601 matrix would be off by up to ~17 on the saturated discs
+}
