@@ -37,8 +37,8 @@ bool holds_invariant(const Q& q) {
         return q.is_heap();
     } else if constexpr (requires { q.is_sorted(); }) {
         return q.is_sorted();
-    } else if constexpr (requires { q.heap().check_invariants(); }) {
-        return q.heap().check_invariants();
+    } else if constexpr (requires { q.check_invariants(); }) {
+        return q.check_invariants();
     } else {
         return true;
     }
