@@ -41,7 +41,7 @@ enum class VideoFormat {
 /// Video codec for MP4 output (ignored for GIF and PNG).
 enum class VideoCodec {
     h264,  ///< libx264: plays everywhere (browsers, phones, PowerPoint, VLC). The default.
-    hevc,  ///< libx265: ~half the size at equal quality, slower, not every player has it
+    hevc,  ///< libx265: smaller files at equal quality, slower; not every player has it
     av1,   ///< libsvtav1: smallest files, slowest, newest players only
 };
 
