@@ -26,12 +26,22 @@ bool looks_like_name(const std::string& s) {
     return !s.empty() && s.find('/') == std::string::npos && !std::filesystem::path(s).has_extension();
 }
 
+std::vector<std::string> scene_names_in(const std::filesystem::path& assets_dir) {
+    std::vector<std::string> names;
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(scenes_dir(assets_dir), ec)) {
+        if (entry.path().extension() == ".toml") names.push_back(entry.path().stem().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
 Scene load_builtin(const std::string& name, const std::filesystem::path& assets_dir) {
     const std::filesystem::path file = scenes_dir(assets_dir) / (name + ".toml");
     std::error_code ec;
     if (!std::filesystem::is_regular_file(file, ec)) {
         std::string reason = "not a scene file and not a built-in scene";
-        const std::string guess = nearest_name(name, builtin_scene_names());
+        const std::string guess = nearest_name(name, scene_names_in(assets_dir));
         reason += guess.empty() ? " (`collide scenes` lists them)" : " (did you mean '" + guess + "'?)";
         throw_input_error("'" + name + "': " + reason);
     }
@@ -51,6 +61,7 @@ std::filesystem::path scene_assets_dir() {
 Scene load_scene(const std::string& path_or_name) { return load_scene(path_or_name, scene_assets_dir()); }
 
 Scene load_scene(const std::string& path_or_name, const std::filesystem::path& assets_dir) {
+    if (path_or_name.empty()) throw_input_error("empty scene path (give a file or a built-in scene name)");
     const std::filesystem::path path(path_or_name);
     std::error_code ec;
     const bool exists = std::filesystem::exists(path, ec);
@@ -63,15 +74,7 @@ Scene load_scene(const std::string& path_or_name, const std::filesystem::path& a
                                                "' (expected an algs4 .txt file or a .toml scene)");
 }
 
-std::vector<std::string> builtin_scene_names() {
-    std::vector<std::string> names;
-    std::error_code ec;
-    for (const auto& entry : std::filesystem::directory_iterator(scenes_dir(scene_assets_dir()), ec)) {
-        if (entry.path().extension() == ".toml") names.push_back(entry.path().stem().string());
-    }
-    std::sort(names.begin(), names.end());
-    return names;
-}
+std::vector<std::string> builtin_scene_names() { return scene_names_in(scene_assets_dir()); }
 
 std::vector<BuiltinScene> builtin_scenes(const std::filesystem::path& assets_dir) {
     std::vector<BuiltinScene> scenes;

@@ -55,7 +55,13 @@ public:
         if (const toml::node* n = doc.get("render")) read_render(*n);
         if (const toml::node* n = doc.get("include")) read_includes(*n);
         if (const toml::node* n = doc.get("disc")) read_discs(*n);
-        if (const toml::node* n = doc.get("generate")) read_generators(*n);
+        // Periodic boxes accept any position: keep them in the box, as the engines expect.
+        for (Disc& d : scene_.discs) d.position = scene_.box.wrap(d.position);
+        if (const toml::node* n = doc.get("generate")) {
+            // The generators build grids from the discs already there: those must be sane.
+            validate_scene(scene_, origin_);
+            read_generators(*n);
+        }
         if (speed_colored_ && !scene_.render.color_mode) scene_.render.color_mode = "speed";
         validate_scene(scene_, origin_);
         return std::move(scene_);
@@ -202,6 +208,7 @@ private:
 
     void read_include(const toml::node& n, const std::string& field) {
         const std::filesystem::path path = base_dir_ / text_value(n, field);
+        if (path.extension() != ".txt") fail(n, field, "only algs4 .txt files can be included (got '" + path.filename().string() + "')");
         std::ifstream in(path, std::ios::binary);
         if (!in) fail(n, field, "cannot open '" + path.string() + "'");
         ParsedScene part = parse_algs4(in, path.string());
@@ -249,7 +256,7 @@ private:
             const std::string field = "generate[" + std::to_string(i) + "]";
             const toml::table& t = table_at(*a->get(i), field);
             check_keys(t, field, generate_keys);
-            const GenerateSpec spec = read_spec(t, field);
+            const GenerateSpec spec = read_spec(t, field, i);
             const std::size_t first = scene_.discs.size();
             const int line = static_cast<int>(t.source().begin.line);
             try {
@@ -262,8 +269,10 @@ private:
         }
     }
 
-    GenerateSpec read_spec(const toml::table& t, const std::string& prefix) {
+    GenerateSpec read_spec(const toml::table& t, const std::string& prefix, std::size_t index) {
         GenerateSpec g;
+        // Blocks without a seed still get different streams (same stream = same pattern twice).
+        g.seed = index + 1;
         const auto key = [&](const char* name) { return prefix + "." + name; };
         if (const toml::node* v = t.get("count")) g.count = static_cast<std::size_t>(integer(*v, key("count"), 1));
         if (const toml::node* v = t.get("packing_fraction")) g.packing_fraction = positive(*v, key("packing_fraction"));
@@ -308,19 +317,22 @@ private:
     bool speed_colored_ = false;
 };
 
+// Optimal string alignment distance: insertions, deletions, substitutions and swaps of two
+// neighbouring letters ("titel" -> "title") each cost 1.
 std::size_t edit_distance(std::string_view a, std::string_view b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    const std::size_t w = b.size() + 1;
+    std::vector<std::size_t> d((a.size() + 1) * w);
+    for (std::size_t i = 0; i <= a.size(); ++i) d[i * w] = i;
+    for (std::size_t j = 0; j <= b.size(); ++j) d[j] = j;
     for (std::size_t i = 1; i <= a.size(); ++i) {
-        std::size_t diagonal = row[0];
-        row[0] = i;
         for (std::size_t j = 1; j <= b.size(); ++j) {
-            const std::size_t up = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-            diagonal = up;
+            const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+            std::size_t best = std::min({d[(i - 1) * w + j] + 1, d[i * w + j - 1] + 1, d[(i - 1) * w + j - 1] + cost});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) best = std::min(best, d[(i - 2) * w + j - 2] + 1);
+            d[i * w + j] = best;
         }
     }
-    return row[b.size()];
+    return d[a.size() * w + b.size()];
 }
 
 }  // namespace

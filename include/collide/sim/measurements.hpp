@@ -25,6 +25,9 @@ struct Measurements {
     std::uint64_t collisions_pair = 0;  ///< disc-disc collisions resolved
     std::uint64_t collisions_wall = 0;  ///< disc-wall collisions resolved (x and y walls)
     std::uint64_t predictions = 0;      ///< collision-time computations (pair + wall)
+    std::uint64_t collisions_xwall = 0; ///< of collisions_wall: left/right walls
+    std::uint64_t collisions_ywall = 0; ///< of collisions_wall: bottom/top walls
+    std::uint64_t cell_crossings = 0;   ///< fast engine: cell-crossing events (part of `events`)
     QueueStats queue;
 
     // --- physics (k_B = 1)
@@ -40,6 +43,7 @@ struct Measurements {
     // --- cost
     double wall_seconds = 0.0;           ///< wall-clock time spent inside the engine
     double collisions_per_second = 0.0;  ///< (pair + wall collisions) / wall_seconds
+    std::uint64_t engine_bytes = 0;      ///< heap memory held by the engine's containers (capacity)
 
     // --- time-driven comparison figures
     std::uint64_t overlap_checks = 0;     ///< pair overlap tests performed

@@ -31,11 +31,14 @@ DiscGrid::DiscGrid(const Box& box, double cell_size, std::size_t max_cells)
 }
 
 DiscGrid::CellRange DiscGrid::range(double c, double r, double cell, int n) const noexcept {
+    // Callers validate first; still, never turn a NaN or infinity into an int.
+    if (!std::isfinite(c) || !std::isfinite(r)) return {0, n - 1};
     const double lo = std::floor((c - r) / cell);
     const double hi = std::floor((c + r) / cell);
     if (periodic_) {
-        // A square wider than the box touches every column once; wrap_index maps the rest.
-        if (hi - lo + 1.0 >= n) return {0, n - 1};
+        // A square wider than the box touches every column once; wrap_index maps the rest
+        // (positions arrive wrapped, so lo and hi are within a cell or so of the box).
+        if (hi - lo + 1.0 >= n || !(std::abs(lo) < 1e9)) return {0, n - 1};
         return {static_cast<int>(lo), static_cast<int>(hi)};
     }
     // Walls: positions outside the box (rejected elsewhere) clamp to the border cells.

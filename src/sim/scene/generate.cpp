@@ -8,6 +8,7 @@
 #include <limits>
 #include <numbers>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include "collide/error.hpp"
@@ -138,6 +139,16 @@ Disc new_disc(const GenerateSpec& spec, Vec2 position) {
     return d;
 }
 
+// Orders discs [first, end) by rows of cells of side `cell`: neighbours in space become
+// neighbours in memory, which the engines' caches (and validation) like. Deterministic.
+void sort_spatially(std::vector<Disc>& discs, std::size_t first, double cell) {
+    auto key = [cell](const Disc& d) {
+        return std::pair{std::floor(d.position.y / cell), std::floor(d.position.x / cell)};
+    };
+    std::stable_sort(discs.begin() + static_cast<std::ptrdiff_t>(first), discs.end(),
+                     [&](const Disc& a, const Disc& b) { return key(a) < key(b); });
+}
+
 // Random sequential addition; false (and scene unchanged) when the attempt budget runs out.
 bool place_randomly(Scene& scene, const GenerateSpec& spec, const Placement& where, std::size_t count, Rng& rng) {
     const std::size_t first = scene.discs.size();
@@ -155,6 +166,7 @@ bool place_randomly(Scene& scene, const GenerateSpec& spec, const Placement& whe
         scene.discs.push_back(new_disc(spec, q));
         occupancy.file(static_cast<std::uint32_t>(scene.discs.size() - 1));
     }
+    sort_spatially(scene.discs, first, 4.0 * spec.radius);
     return true;
 }
 

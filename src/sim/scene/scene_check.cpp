@@ -169,6 +169,7 @@ SourceLocation SceneOrigin::locate(std::size_t index) const {
         const std::string name = run.field.empty() ? "disc" : run.field;
         return {run.file, run.lines[k], name + " " + std::to_string(k + 1)};
     }
+    if (run.count == 1) return {run.file, run.line, run.field};  // a [[disc]] table
     return {run.file, run.line, run.field + " disc " + std::to_string(k + 1)};
 }
 

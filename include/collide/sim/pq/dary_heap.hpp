@@ -68,13 +68,9 @@ public:
     /// Removes and returns the item that comes out next. Precondition: !empty(). O(d log_d N).
     T pop() {
         T out = std::move(a_.front());
-        if (a_.size() > 1) {
-            a_.front() = std::move(a_.back());
-            a_.pop_back();
-            sink(0);
-        } else {
-            a_.pop_back();
-        }
+        T last = std::move(a_.back());
+        a_.pop_back();
+        if (!a_.empty()) sink_from_root(std::move(last));
         validate();
         return out;
     }
@@ -113,22 +109,60 @@ private:
         a_[i] = std::move(x);
     }
 
+    /// The child of i that comes out first (the first of tying children). Precondition: i has
+    /// a child. A node with all d children scans a fixed count, which a compile-time D unrolls.
+    [[nodiscard]] std::size_t best_child(std::size_t i) const {
+        const std::size_t c0 = d() * i + 1;
+        const std::size_t n = a_.size();
+        const std::size_t count = c0 + d() <= n ? d() : n - c0;
+        const T* children = a_.data() + c0;
+        std::size_t best = 0;
+        if (count == d()) {
+            for (std::size_t k = 1; k < d(); ++k) {
+                if (first(children[k], children[best])) best = k;
+            }
+        } else {
+            for (std::size_t k = 1; k < count; ++k) {
+                if (first(children[k], children[best])) best = k;
+            }
+        }
+        return c0 + best;
+    }
+
+    /// The lecture's sink: move the item at i down while a child comes out before it.
     void sink(std::size_t i) {
         const std::size_t n = a_.size();
         T x = std::move(a_[i]);
-        for (;;) {
-            const std::size_t c0 = d() * i + 1;
-            if (c0 >= n) break;
-            const std::size_t c_end = c0 + d() < n ? c0 + d() : n;
-            std::size_t best = c0;
-            for (std::size_t c = c0 + 1; c < c_end; ++c) {
-                if (first(a_[c], a_[best])) best = c;
-            }
+        while (d() * i + 1 < n) {
+            const std::size_t best = best_child(i);
             if (!first(a_[best], x)) break;
             a_[i] = std::move(a_[best]);
             i = best;
         }
         a_[i] = std::move(x);
+    }
+
+    /// pop's sink of x (the former last item) from the empty root, bottom-up (Floyd): move the
+    /// hole down the path of best children to a leaf without comparing against x, then let x
+    /// rise from there while its parent does not come out before it. The last item nearly always
+    /// belongs near the bottom, so this saves a compare and an unpredictable branch per level.
+    /// Rising past ties (non-strict) makes the result identical to the lecture's sink, which
+    /// stops above the first child that does not come out before x, so traces match the lecture.
+    void sink_from_root(T x) {
+        const std::size_t n = a_.size();
+        std::size_t hole = 0;
+        while (d() * hole + 1 < n) {
+            const std::size_t best = best_child(hole);
+            a_[hole] = std::move(a_[best]);
+            hole = best;
+        }
+        while (hole > 0) {
+            const std::size_t parent = (hole - 1) / d();
+            if (first(a_[parent], x)) break;
+            a_[hole] = std::move(a_[parent]);
+            hole = parent;
+        }
+        a_[hole] = std::move(x);
     }
 
     void validate() const {
