@@ -324,11 +324,14 @@ void TimeEngine::take_census() {
         }
     });
     std::sort(overlapping_pairs_.begin(), overlapping_pairs_.end());
+    // Escaped = entirely past a wall line. A disc whose centre is outside by less than r still
+    // touches the wall and is reflected at the next check, so it is not (yet) an escape.
     escaped_count_ = 0;
     for (std::size_t i = 0; i < position_.size(); ++i) {
         const Vec2 p = position_[i];
+        const double r = radius_[i];
         escaped_[i] = box_.boundary == Boundary::walls &&
-                      !(p.x >= 0.0 && p.x <= box_.width && p.y >= 0.0 && p.y <= box_.height);
+                      (p.x <= -r || p.x >= box_.width + r || p.y <= -r || p.y >= box_.height + r);
         if (escaped_[i]) {
             ++escaped_count_;
         }
