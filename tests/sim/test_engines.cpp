@@ -3,6 +3,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -184,7 +185,9 @@ TEST_CASE("classic and fast agree event by event in a walled box") {
 }
 
 TEST_CASE("classic and fast agree with one big disc among small ones (the big-disc list)") {
-    Scene scene = lattice_fluid(10, 0.3, Boundary::walls, 5, 0.005);
+  for (Boundary boundary : {Boundary::walls, Boundary::periodic}) {
+    CAPTURE(static_cast<int>(boundary));
+    Scene scene = lattice_fluid(10, 0.3, boundary, 5, 0.005);
     // Turn the central disc into a heavy big one and clear the discs it would overlap.
     const Vec2 centre{scene.box.width / 2, scene.box.height / 2};
     std::vector<Disc> kept;
@@ -201,11 +204,16 @@ TEST_CASE("classic and fast agree with one big disc among small ones (the big-di
     sim::FastEngine fast(scene);
     CHECK(fast.big_disc_count() == 1);
     sim::ClassicEngine<BinaryQueue> classic(scene);
-    const auto a = first_collisions(classic, 600, 0.01, 100.0);
-    const auto b = first_collisions(fast, 600, 0.01, 100.0);
-    REQUIRE(a.size() == 600);
+    const auto a = first_collisions(classic, 400, 0.01, 100.0);
+    const auto b = first_collisions(fast, 400, 0.01, 100.0);
+    REQUIRE(a.size() == 400);
     require_same_events(a, b, 1e-9);
     CHECK(fast.check_invariants());
+    // the big disc took part
+    CHECK(std::any_of(a.begin(), a.end(), [&](const CollisionRecord& r) {
+        return r.kind == CollisionKind::pair && r.b == scene.discs.size() - 1;
+    }));
+  }
 }
 
 TEST_CASE("the classic engine pops the identical event sequence whatever the queue") {
