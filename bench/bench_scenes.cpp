@@ -28,14 +28,16 @@ Scene generated(std::size_t n, double eta, Boundary boundary) {
 // Lattice path (eta = 0.5, above the random-placement limit): the event-engine benchmarks' fluid.
 void BM_GenerateLattice(benchmark::State& state) {
     const auto n = static_cast<std::size_t>(state.range(0));
-    for (auto _ : state) benchmark::DoNotOptimize(generated(n, 0.5, Boundary::periodic));
+    for (auto _ : state)
+        benchmark::DoNotOptimize(generated(n, 0.5, Boundary::periodic));
     state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
 // Random sequential addition (eta = 0.3).
 void BM_GenerateRandom(benchmark::State& state) {
     const auto n = static_cast<std::size_t>(state.range(0));
-    for (auto _ : state) benchmark::DoNotOptimize(generated(n, 0.3, Boundary::periodic));
+    for (auto _ : state)
+        benchmark::DoNotOptimize(generated(n, 0.3, Boundary::periodic));
     state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
@@ -43,7 +45,8 @@ void BM_GenerateRandom(benchmark::State& state) {
 void BM_Validate(benchmark::State& state) {
     const auto n = static_cast<std::size_t>(state.range(0));
     const Scene s = generated(n, 0.7, Boundary::walls);
-    for (auto _ : state) validate_scene(s);
+    for (auto _ : state)
+        validate_scene(s);
     state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
@@ -66,9 +69,18 @@ void BM_ValidateBruteForcePairs(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(BM_GenerateLattice)->RangeMultiplier(10)->Range(1000, 1000000)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_GenerateRandom)->RangeMultiplier(10)->Range(1000, 1000000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GenerateLattice)
+    ->RangeMultiplier(10)
+    ->Range(1000, 1000000)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GenerateRandom)
+    ->RangeMultiplier(10)
+    ->Range(1000, 1000000)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Validate)->RangeMultiplier(10)->Range(1000, 1000000)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_ValidateBruteForcePairs)->RangeMultiplier(10)->Range(1000, 10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ValidateBruteForcePairs)
+    ->RangeMultiplier(10)
+    ->Range(1000, 10000)
+    ->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

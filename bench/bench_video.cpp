@@ -3,13 +3,12 @@
 //   cmake --build build/release --target bench_video && build/release/bench/bench_video
 
 #include <benchmark/benchmark.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
-
-#include <unistd.h>
 
 #include "collide/image.hpp"
 #include "collide/video/video_writer.hpp"
@@ -37,11 +36,14 @@ Image disc_frame(int width, int height, int index) {
         const std::uint8_t r = static_cast<std::uint8_t>(80 + (disc * 37) % 170);
         const std::uint8_t g = static_cast<std::uint8_t>(80 + (disc * 71) % 170);
         const std::uint8_t b = static_cast<std::uint8_t>(80 + (disc * 13) % 170);
-        for (int y = std::max(0, int(cy - radius - 1)); y < std::min(height, int(cy + radius + 2)); ++y) {
-            for (int x = std::max(0, int(cx - radius - 1)); x < std::min(width, int(cx + radius + 2)); ++x) {
+        for (int y = std::max(0, int(cy - radius - 1)); y < std::min(height, int(cy + radius + 2));
+             ++y) {
+            for (int x = std::max(0, int(cx - radius - 1));
+                 x < std::min(width, int(cx + radius + 2)); ++x) {
                 const double d = std::hypot(x + 0.5 - cx, y + 0.5 - cy);
                 const double coverage = std::clamp(radius + 0.5 - d, 0.0, 1.0);
-                if (coverage <= 0.0) continue;
+                if (coverage <= 0.0)
+                    continue;
                 std::uint8_t* p = image.pixel(x, y);
                 p[0] = static_cast<std::uint8_t>(p[0] + coverage * (r - p[0]));
                 p[1] = static_cast<std::uint8_t>(p[1] + coverage * (g - p[1]));
@@ -60,7 +62,9 @@ struct Planes {
     }
 };
 
-int width_for(int height) { return height * 16 / 9; }
+int width_for(int height) {
+    return height * 16 / 9;
+}
 
 void BM_ConvertHand(benchmark::State& state) {
     const int height = int(state.range(0));
@@ -75,7 +79,9 @@ void BM_ConvertHand(benchmark::State& state) {
     }
     state.SetLabel("hand-written, " + std::to_string(threads) + " thread(s)");
 }
-BENCHMARK(BM_ConvertHand)->ArgsProduct({{720, 1080}, {1, 2}})->Unit(benchmark::kMillisecond)
+BENCHMARK(BM_ConvertHand)
+    ->ArgsProduct({{720, 1080}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
 void BM_ConvertSws(benchmark::State& state) {
@@ -90,16 +96,18 @@ void BM_ConvertSws(benchmark::State& state) {
         converter.convert(frame.rgba.data(), std::ptrdiff_t(frame.stride()), planes.view);
         benchmark::DoNotOptimize(planes.y.data());
     }
-    const std::string name = flags == SWS_BICUBIC                          ? "bicubic (default)"
-                             : flags == SWS_FAST_BILINEAR                  ? "fast_bilinear"
-                             : flags == (SWS_FAST_BILINEAR | SWS_ACCURATE_RND) ? "fast_bilinear|accurate_rnd"
-                             : flags == SWS_POINT                          ? "point"
-                                                                           : "other";
+    const std::string name = flags == SWS_BICUBIC         ? "bicubic (default)"
+                             : flags == SWS_FAST_BILINEAR ? "fast_bilinear"
+                             : flags == (SWS_FAST_BILINEAR | SWS_ACCURATE_RND)
+                                 ? "fast_bilinear|accurate_rnd"
+                             : flags == SWS_POINT ? "point"
+                                                  : "other";
     state.SetLabel("sws " + name + ", " + std::to_string(bands) + " band(s)");
 }
 BENCHMARK(BM_ConvertSws)
     ->ArgsProduct({{720, 1080},
-                   {SWS_BICUBIC, SWS_FAST_BILINEAR, SWS_FAST_BILINEAR | SWS_ACCURATE_RND, SWS_POINT},
+                   {SWS_BICUBIC, SWS_FAST_BILINEAR, SWS_FAST_BILINEAR | SWS_ACCURATE_RND,
+                    SWS_POINT},
                    {1, 2}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
@@ -110,7 +118,8 @@ void BM_EncodeX264(benchmark::State& state, const char* preset) {
     constexpr int height = 720;
     constexpr int frames = 60;
     std::vector<Image> clip;
-    for (int i = 0; i < frames; ++i) clip.push_back(disc_frame(width, height, i));
+    for (int i = 0; i < frames; ++i)
+        clip.push_back(disc_frame(width, height, i));
     set_libav_verbose(false);
     const auto path = std::filesystem::temp_directory_path() /
                       ("collide-bench-" + std::to_string(::getpid()) + ".mp4");
@@ -123,7 +132,8 @@ void BM_EncodeX264(benchmark::State& state, const char* preset) {
         options.fps = 30;
         options.preset = preset;
         VideoWriter writer(options);
-        for (const Image& frame : clip) writer.write(frame);
+        for (const Image& frame : clip)
+            writer.write(frame);
         writer.finish();
         bytes = std::filesystem::file_size(path);
     }
@@ -132,9 +142,18 @@ void BM_EncodeX264(benchmark::State& state, const char* preset) {
     state.counters["kB_per_s_of_video"] = double(bytes) / 1000.0 / (frames / 30.0);
     state.SetLabel(std::string("libx264 ") + preset + ", crf 20, 720p30, 60 frames");
 }
-BENCHMARK_CAPTURE(BM_EncodeX264, ultrafast, "ultrafast")->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2);
-BENCHMARK_CAPTURE(BM_EncodeX264, veryfast, "veryfast")->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2);
-BENCHMARK_CAPTURE(BM_EncodeX264, medium, "medium")->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2);
+BENCHMARK_CAPTURE(BM_EncodeX264, ultrafast, "ultrafast")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(2);
+BENCHMARK_CAPTURE(BM_EncodeX264, veryfast, "veryfast")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(2);
+BENCHMARK_CAPTURE(BM_EncodeX264, medium, "medium")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(2);
 
 }  // namespace
 

@@ -12,7 +12,8 @@
 namespace collide::app {
 
 void add_scenes_command(CLI::App& root) {
-    CLI::App* cmd = root.add_subcommand("scenes", "List the built-in scenes (use a name wherever a scene path goes)");
+    CLI::App* cmd = root.add_subcommand(
+        "scenes", "List the built-in scenes (use a name wherever a scene path goes)");
     cmd->callback([] {
         const std::filesystem::path assets = scene_assets_dir();
         const std::vector<BuiltinScene> scenes = builtin_scenes(assets);
@@ -21,9 +22,11 @@ void add_scenes_command(CLI::App& root) {
                               " (set COLLIDE_ASSETS_DIR to the assets directory)");
         }
         std::size_t width = 0;
-        for (const BuiltinScene& s : scenes) width = std::max(width, s.name.size());
+        for (const BuiltinScene& s : scenes)
+            width = std::max(width, s.name.size());
         for (const BuiltinScene& s : scenes) {
-            std::printf("%-*s  %s\n", static_cast<int>(width), s.name.c_str(), s.description.c_str());
+            std::printf("%-*s  %s\n", static_cast<int>(width), s.name.c_str(),
+                        s.description.c_str());
         }
     });
 }

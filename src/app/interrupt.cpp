@@ -57,14 +57,21 @@ InterruptGuard::~InterruptGuard() {
     guard_alive.store(false);
 }
 
-const std::atomic<bool>& InterruptGuard::flag() const noexcept { return interrupt_requested; }
+const std::atomic<bool>& InterruptGuard::flag() const noexcept {
+    return interrupt_requested;
+}
 
-bool InterruptGuard::requested() const noexcept { return interrupt_requested.load(); }
+bool InterruptGuard::requested() const noexcept {
+    return interrupt_requested.load();
+}
 
-int InterruptGuard::signal_number() const noexcept { return interrupt_signal.load(); }
+int InterruptGuard::signal_number() const noexcept {
+    return interrupt_signal.load();
+}
 
 void InterruptGuard::throw_if_requested() const {
-    if (!requested()) return;
+    if (!requested())
+        return;
     const int number = signal_number();
     const char* name = number == SIGINT ? "SIGINT" : number == SIGTERM ? "SIGTERM" : "a signal";
     throw_runtime_error(std::string("interrupted by ") + name + "; partial output removed");

@@ -1,4 +1,3 @@
-#include <cmath>
 #include <type_traits>
 
 #include "collide/error.hpp"
@@ -30,12 +29,7 @@ void EngineOptions::validate() const {
         throw_input_error("--engine", 0, "", "unknown engine '" + engine + "' (expected fast|classic|time)");
     }
     (void)pq::parse_queue_kind(pq, "--pq");
-    if (!(dt > 0.0) || !std::isfinite(dt)) {
-        throw_input_error("--dt", 0, "", "the time step must be a positive finite number");
-    }
-    if (td_detect != "all-pairs" && td_detect != "grid") {
-        throw_input_error("--td-detect", 0, "", "unknown detection '" + td_detect + "' (expected all-pairs|grid)");
-    }
+    validate_time_driven_options(*this);  // --dt, --td-detect: one rule, shared with the engine
 }
 
 std::unique_ptr<Engine> make_engine(const Scene& scene, const EngineOptions& options) {

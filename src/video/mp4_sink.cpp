@@ -31,9 +31,12 @@ struct CodecDefaults {
 // (docs/benchmarks.md, section Video): visually lossless at 720p/1080p, a fraction of real time.
 CodecDefaults defaults_for(VideoCodec codec) {
     switch (codec) {
-        case VideoCodec::h264: return {"veryfast", 20};
-        case VideoCodec::hevc: return {"fast", 24};
-        case VideoCodec::av1: return {"10", 35};
+        case VideoCodec::h264:
+            return {"veryfast", 20};
+        case VideoCodec::hevc:
+            return {"fast", 24};
+        case VideoCodec::av1:
+            return {"10", 35};
     }
     return {"", -1};
 }
@@ -54,7 +57,7 @@ const AVCodec* find_encoder(const VideoOptions& options) {
 }
 
 class Mp4Sink final : public FrameSink {
-public:
+  public:
     Mp4Sink(const VideoOptions& options, const SinkGeometry& geometry,
             const std::filesystem::path& temporary)
         : options_(options), geometry_(geometry), temporary_(temporary) {
@@ -83,12 +86,13 @@ public:
     }
 
     void consume(const Image& input) override {
-        if (!opened_) open();
-        const Image& frame = input.width == geometry_.output_width &&
-                                     input.height == geometry_.output_height
-                                 ? input
-                                 : (padded_ = pad_by_edge_replication(input, geometry_.output_width,
-                                                                      geometry_.output_height));
+        if (!opened_)
+            open();
+        const Image& frame =
+            input.width == geometry_.output_width && input.height == geometry_.output_height
+                ? input
+                : (padded_ = pad_by_edge_replication(input, geometry_.output_width,
+                                                     geometry_.output_height));
         // The encoder may still hold a reference to the previous frame's buffers.
         check_av(av_frame_make_writable(frame_.get()), "cannot reuse the video frame buffer");
         const Yuv420View planes{frame_->data[0],     frame_->data[1],     frame_->data[2],
@@ -100,14 +104,15 @@ public:
     }
 
     void finish() override {
-        if (!opened_) throw_runtime_error("no frames were written to '" + shown() + "'");
+        if (!opened_)
+            throw_runtime_error("no frames were written to '" + shown() + "'");
         encode(nullptr);  // flush: the encoder holds look-ahead frames
         finished_ = true;
         check_av(av_write_trailer(format_.get()), "cannot finish '" + shown() + "'");
         check_av(avio_closep(&format_->pb), "cannot close '" + shown() + "'");
     }
 
-private:
+  private:
     std::string shown() const { return options_.path.string(); }
 
     void configure_encoder() {
@@ -133,15 +138,19 @@ private:
         const int crf = options_.crf < 0 ? defaults.crf : options_.crf;
         // Options the chosen encoder lacks are ignored (AV_OPT_SEARCH_CHILDREN not needed:
         // priv_data holds them); av_opt_set only fails for unknown names or bad values.
-        if (!preset.empty()) set_private_option("preset", preset);
+        if (!preset.empty())
+            set_private_option("preset", preset);
         set_private_option("crf", std::to_string(crf));
-        if (options_.codec == VideoCodec::hevc) set_private_option("x265-params", "log-level=error");
+        if (options_.codec == VideoCodec::hevc)
+            set_private_option("x265-params", "log-level=error");
     }
 
     void set_private_option(const char* name, const std::string& value) {
-        if (codec_->priv_data == nullptr) return;
+        if (codec_->priv_data == nullptr)
+            return;
         const int result = av_opt_set(codec_->priv_data, name, value.c_str(), 0);
-        if (result == AVERROR_OPTION_NOT_FOUND) return;  // e.g. a user-chosen encoder without CRF
+        if (result == AVERROR_OPTION_NOT_FOUND)
+            return;  // e.g. a user-chosen encoder without CRF
         check_av(result, std::string("encoder option ") + name + "=" + value);
     }
 
@@ -178,7 +187,8 @@ private:
         check_av(avcodec_send_frame(codec_.get(), frame), "encoding failed");
         while (true) {
             const int received = avcodec_receive_packet(codec_.get(), packet_.get());
-            if (received == AVERROR(EAGAIN) || received == AVERROR_EOF) return;
+            if (received == AVERROR(EAGAIN) || received == AVERROR_EOF)
+                return;
             check_av(received, "encoding failed");
             av_packet_rescale_ts(packet_.get(), codec_->time_base, stream_->time_base);
             packet_->stream_index = stream_->index;

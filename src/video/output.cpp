@@ -45,11 +45,13 @@ std::vector<char> temporary_template(const fs::path& destination) {
 /// would race with other threads creating files). Linux >= 4.7 reports it in /proc; 022 otherwise.
 mode_t current_umask() {
     std::FILE* status = std::fopen("/proc/self/status", "r");
-    if (status == nullptr) return 022;
+    if (status == nullptr)
+        return 022;
     char line[256];
     unsigned int mask = 022;
     while (std::fgets(line, sizeof line, status) != nullptr) {
-        if (std::sscanf(line, "Umask: %o", &mask) == 1) break;
+        if (std::sscanf(line, "Umask: %o", &mask) == 1)
+            break;
     }
     std::fclose(status);
     return static_cast<mode_t>(mask);
@@ -65,7 +67,8 @@ void give_ordinary_permissions(const fs::path& path, bool directory) {
 }  // namespace
 
 void check_output_writable(const fs::path& path, bool directory_output) {
-    if (path.empty()) throw_input_error("output path is empty");
+    if (path.empty())
+        throw_input_error("output path is empty");
     if (!path.has_filename()) {
         throw_input_error("output path " + quoted(path) + " names no file (it ends with a '/')");
     }
@@ -111,7 +114,9 @@ TemporaryOutput::TemporaryOutput(const fs::path& destination, Kind kind)
     owned_ = true;
 }
 
-TemporaryOutput::~TemporaryOutput() { discard(); }
+TemporaryOutput::~TemporaryOutput() {
+    discard();
+}
 
 TemporaryOutput::TemporaryOutput(TemporaryOutput&& other) noexcept
     : destination_(std::move(other.destination_)),
@@ -131,7 +136,8 @@ TemporaryOutput& TemporaryOutput::operator=(TemporaryOutput&& other) noexcept {
 }
 
 void TemporaryOutput::commit() {
-    if (!owned_) throw_runtime_error("output " + quoted(destination_) + ": nothing to commit");
+    if (!owned_)
+        throw_runtime_error("output " + quoted(destination_) + ": nothing to commit");
     std::error_code error;
     give_ordinary_permissions(temporary_, kind_ == Kind::directory);
     if (kind_ == Kind::file) {
@@ -151,23 +157,26 @@ void TemporaryOutput::commit() {
         aside += ".old";
         fs::rename(destination_, aside, error);
         if (error) {
-            throw_runtime_error("cannot move the old " + quoted(destination_) + " aside: " +
-                                error.message());
+            throw_runtime_error("cannot move the old " + quoted(destination_) +
+                                " aside: " + error.message());
         }
     }
     fs::rename(temporary_, destination_, error);
     if (error) {
         std::error_code ignored;
-        if (!aside.empty()) fs::rename(aside, destination_, ignored);
+        if (!aside.empty())
+            fs::rename(aside, destination_, ignored);
         throw_runtime_error("cannot rename " + quoted(temporary_) + " to " + quoted(destination_) +
                             ": " + error.message());
     }
     owned_ = false;
-    if (!aside.empty()) fs::remove_all(aside, error);  // best effort: the new output is in place
+    if (!aside.empty())
+        fs::remove_all(aside, error);  // best effort: the new output is in place
 }
 
 void TemporaryOutput::discard() noexcept {
-    if (!owned_) return;
+    if (!owned_)
+        return;
     owned_ = false;
     std::error_code ignored;
     fs::remove_all(temporary_, ignored);

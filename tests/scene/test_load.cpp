@@ -26,7 +26,9 @@ std::string load_error(const std::string& what) {
     return "";
 }
 
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+bool contains(const std::string& s, const std::string& part) {
+    return s.find(part) != std::string::npos;
+}
 
 }  // namespace
 
@@ -51,16 +53,19 @@ TEST_CASE("load_scene: algs4 .txt and .toml files by path, named after the file"
 }
 
 TEST_CASE("load_scene: unknown names suggest a built-in scene") {
-    CHECK(contains(load_error("brownain"), "'brownain': not a scene file and not a built-in scene (did you mean 'brownian'?)"));
+    CHECK(contains(
+        load_error("brownain"),
+        "'brownain': not a scene file and not a built-in scene (did you mean 'brownian'?)"));
     CHECK(contains(load_error("zzzzzzzz"), "`collide scenes` lists them"));
 }
 
 TEST_CASE("built-in library: the required scenes exist, each described and valid") {
     const std::vector<BuiltinScene> scenes = builtin_scenes(COLLIDE_ASSETS_DIR);
     std::vector<std::string> names;
-    for (const BuiltinScene& s : scenes) names.push_back(s.name);
-    for (const char* required : {"gas", "brownian", "diffusion", "billiards", "newtons-cradle", "maxwell-boltzmann",
-                                 "tunnelling", "dense-fluid"}) {
+    for (const BuiltinScene& s : scenes)
+        names.push_back(s.name);
+    for (const char* required : {"gas", "brownian", "diffusion", "billiards", "newtons-cradle",
+                                 "maxwell-boltzmann", "tunnelling", "dense-fluid"}) {
         CAPTURE(required);
         CHECK(std::find(names.begin(), names.end(), required) != names.end());
     }
@@ -90,7 +95,8 @@ TEST_CASE("built-in library: the tunnelling demo is built to make the time-drive
 }
 
 TEST_CASE("built-in library: the dense fluid is dense and the gas is not") {
-    CHECK(packing_fraction(load_scene("dense-fluid", COLLIDE_ASSETS_DIR)) == doctest::Approx(0.7).epsilon(0.03));
+    CHECK(packing_fraction(load_scene("dense-fluid", COLLIDE_ASSETS_DIR)) ==
+          doctest::Approx(0.7).epsilon(0.03));
     CHECK(packing_fraction(load_scene("gas", COLLIDE_ASSETS_DIR)) < 0.1);
 }
 
@@ -100,14 +106,17 @@ namespace {
 int escaped_from_chamber(const collide::Snapshot& snapshot) {
     int out = 0;
     for (const collide::DiscState& d : snapshot.discs) {
-        if (d.radius > 0.006 && (d.position.x < 0.3 || d.position.x > 0.7)) ++out;
+        if (d.radius > 0.006 && (d.position.x < 0.3 || d.position.x > 0.7))
+            ++out;
     }
     return out;
 }
 
 }  // namespace
 
-TEST_CASE("built-in library: in the tunnelling demo the time-driven method fails at the scene's dt only") {
+TEST_CASE(
+    "built-in library: in the tunnelling demo the time-driven method fails at the scene's dt "
+    "only") {
     const Scene s = load_scene("tunnelling", COLLIDE_ASSETS_DIR);
     EngineOptions options;
     options.engine = "time";

@@ -1,7 +1,6 @@
 // GIF (palette per clip, rate cap) and PNG (single files, sequences) round trips.
 
 #include <doctest/doctest.h>
-
 #include <sys/stat.h>
 
 #include "collide/error.hpp"
@@ -59,7 +58,8 @@ TEST_CASE("PNG sequence: zero-padded names in a directory, exact pixels, old dir
     options.width = 40;
     options.height = 30;
     VideoWriter writer(options);
-    for (int i = 0; i < 3; ++i) writer.write(test_pattern(40, 30, i));
+    for (int i = 0; i < 3; ++i)
+        writer.write(test_pattern(40, 30, i));
     // Until finish() the old directory stays as it was.
     CHECK(std::filesystem::exists(path / "stale.txt"));
     writer.finish();
@@ -69,8 +69,8 @@ TEST_CASE("PNG sequence: zero-padded names in a directory, exact pixels, old dir
         names.push_back(entry.path().filename().string());
     }
     std::sort(names.begin(), names.end());
-    CHECK(names == std::vector<std::string>{"frames_00000.png", "frames_00001.png",
-                                            "frames_00002.png"});
+    CHECK(names ==
+          std::vector<std::string>{"frames_00000.png", "frames_00001.png", "frames_00002.png"});
     for (int i = 0; i < 3; ++i) {
         CHECK(read_png(path / names[i]).rgba == test_pattern(40, 30, i).rgba);
     }
@@ -91,7 +91,8 @@ TEST_CASE("GIF: generated palette, frame rate capped by dropping frames evenly")
     REQUIRE(writer.notices().size() == 1);
     CHECK(writer.notices()[0].find("50 to 25 fps") != std::string::npos);
     constexpr int frames = 10;
-    for (int i = 0; i < frames; ++i) writer.write(test_pattern(160, 90, i));
+    for (int i = 0; i < frames; ++i)
+        writer.write(test_pattern(160, 90, i));
     writer.finish();
 
     const Decoded decoded = decode_file(options.path);
@@ -122,7 +123,8 @@ TEST_CASE("GIF at a low frame rate keeps every frame and says nothing") {
     options.fps = 10;
     VideoWriter writer(options);
     CHECK(writer.notices().empty());
-    for (int i = 0; i < 3; ++i) writer.write(test_pattern(64, 48, i));
+    for (int i = 0; i < 3; ++i)
+        writer.write(test_pattern(64, 48, i));
     writer.finish();
     CHECK(decode_file(options.path).frames.size() == 3);
 }

@@ -138,21 +138,53 @@ private:
     /// Predicts disc i against the walls and against discs first..N-1 (except itself).
     void predict(std::uint32_t i, std::uint32_t first) {
         const auto n = static_cast<std::uint32_t>(position_.size());
-        for (std::uint32_t j = first; j < n; ++j) {
-            if (j == i) continue;
-            const double dt = time_to_hit(i, j);
-            ++predictions_;
-            if (dt == kinematics::never) continue;
-            const std::uint32_t a = std::min(i, j);
-            const std::uint32_t b = std::max(i, j);
-            push(Event{now_ + dt, EventKind::pair, a, b, count_[a], count_[b]});
+        const Vec2 pi = position_[i];
+        const Vec2 vi = velocity_[i];
+        const double ri = radius_[i];
+        const bool periodic = box_.boundary == Boundary::periodic;
+        predictions_ += n - first - (first <= i ? 1 : 0);
+        if (periodic) {
+            for (std::uint32_t j = first; j < n; ++j) {
+                if (j != i) offer_pair(i, j, time_to_hit(i, j));
+            }
+        } else {
+            // Pass 1, branch-free so the compiler vectorises it: which pairs can meet at all
+            // (approaching, and either overlapping or with d >= 0). Most pairs cannot; pass 2
+            // runs the lecture's kernel on the few that can, so the times are exactly the kernel's.
+            may_hit_.resize(n);
+            for (std::uint32_t j = first; j < n; ++j) {
+                const double dx = position_[j].x - pi.x;
+                const double dy = position_[j].y - pi.y;
+                const double dvx = velocity_[j].x - vi.x;
+                const double dvy = velocity_[j].y - vi.y;
+                const double b = dx * dvx + dy * dvy;
+                const double sigma = ri + radius_[j];
+                const double c = dx * dx + dy * dy - sigma * sigma;
+                const double d = b * b - (dvx * dvx + dvy * dvy) * c;
+                may_hit_[j] = static_cast<std::uint8_t>((b < 0.0) & ((c <= 0.0) | (d >= 0.0)));
+            }
+            may_hit_[i] = 0;
+            for (std::uint32_t j = first; j < n; ++j) {
+                if (may_hit_[j] == 0) continue;
+                const Vec2 dr = position_[j] - pi;
+                const double sigma = ri + radius_[j];
+                if (just_collided(i, j, dr, sigma)) continue;
+                offer_pair(i, j, kinematics::time_to_hit(dr, velocity_[j] - vi, sigma));
+            }
         }
-        if (box_.boundary != Boundary::walls) return;
-        const double tx = kinematics::time_to_wall(position_[i].x, velocity_[i].x, radius_[i], box_.width);
-        const double ty = kinematics::time_to_wall(position_[i].y, velocity_[i].y, radius_[i], box_.height);
+        if (periodic) return;
+        const double tx = kinematics::time_to_wall(pi.x, vi.x, ri, box_.width);
+        const double ty = kinematics::time_to_wall(pi.y, vi.y, ri, box_.height);
         predictions_ += 2;
         if (tx != kinematics::never) push(Event{now_ + tx, EventKind::xwall, i, no_disc, count_[i], 0});
         if (ty != kinematics::never) push(Event{now_ + ty, EventKind::ywall, i, no_disc, count_[i], 0});
+    }
+
+    void offer_pair(std::uint32_t i, std::uint32_t j, double dt) {
+        if (dt == kinematics::never) return;
+        const std::uint32_t a = std::min(i, j);
+        const std::uint32_t b = std::max(i, j);
+        push(Event{now_ + dt, EventKind::pair, a, b, count_[a], count_[b]});
     }
 
     /// Time until i and j touch. Periodic boxes try the nine nearest images of j, so a pair
@@ -243,6 +275,7 @@ private:
     std::vector<Vec2> start_;                  ///< positions at t = 0 (mean squared displacement)
     std::vector<std::uint32_t> count_;         ///< collisions per disc (lazy invalidation)
     std::vector<std::uint32_t> last_partner_;  ///< see just_collided
+    std::vector<std::uint8_t> may_hit_;        ///< scratch of predict (no allocation per event)
     QueueStats stats_;
     ImpulseTally tally_;
     std::uint64_t collisions_pair_ = 0;
