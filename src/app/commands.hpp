@@ -10,6 +10,12 @@ namespace collide::app {
 // Subcommands register here as their issues land, e.g.
 // void add_pq_command(CLI::App& root);
 
+/// `collide check SCENE`: validate a scene; exit 0 with a one-line summary, 2 with the problem.
+void add_check_command(CLI::App& root);
+
+/// `collide scenes`: list the built-in scenes with a one-line description each.
+void add_scenes_command(CLI::App& root);
+
 /// `collide pq`: the lecture's priority-queue trace table (text, CSV or Markdown).
 void add_pq_command(CLI::App& root);
 

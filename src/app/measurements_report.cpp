@@ -38,6 +38,9 @@ std::vector<ReportField> report_fields(const Measurements& m) {
         {"escaped", m.escaped},
         {"overlapping_pairs", m.overlapping_pairs},
         {"energy_drift", m.energy_drift},
+        {"steps", m.steps},
+        {"max_overlap_seen", m.max_overlap_seen},
+        {"seconds_per_time_unit", m.seconds_per_time_unit},
     };
 }
 

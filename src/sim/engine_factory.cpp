@@ -1,4 +1,3 @@
-#include <cmath>
 #include <type_traits>
 
 #include "collide/error.hpp"
@@ -7,6 +6,7 @@
 #include "collide/sim/event.hpp"
 #include "collide/sim/fast_engine.hpp"
 #include "collide/sim/pq/queue_kind.hpp"
+#include "collide/sim/time_engine.hpp"
 
 namespace collide {
 
@@ -29,12 +29,7 @@ void EngineOptions::validate() const {
         throw_input_error("--engine", 0, "", "unknown engine '" + engine + "' (expected fast|classic|time)");
     }
     (void)pq::parse_queue_kind(pq, "--pq");
-    if (!(dt > 0.0) || !std::isfinite(dt)) {
-        throw_input_error("--dt", 0, "", "the time step must be a positive finite number");
-    }
-    if (td_detect != "all-pairs" && td_detect != "grid") {
-        throw_input_error("--td-detect", 0, "", "unknown detection '" + td_detect + "' (expected all-pairs|grid)");
-    }
+    validate_time_driven_options(*this);  // --dt, --td-detect: one rule, shared with the engine
 }
 
 std::unique_ptr<Engine> make_engine(const Scene& scene, const EngineOptions& options) {
@@ -44,7 +39,7 @@ std::unique_ptr<Engine> make_engine(const Scene& scene, const EngineOptions& opt
         return std::make_unique<sim::FastEngine>(scene);
     }
     if (options.engine == "classic") return make_classic_engine(scene, options);
-    // Each engine adds its branch here as it lands.
+    if (options.engine == "time") return std::make_unique<TimeEngine>(scene, options);
     throw_input_error("--engine", 0, "", "unknown engine '" + options.engine + "'");
 }
 

@@ -48,9 +48,12 @@ struct Measurements {
     // --- time-driven comparison figures
     std::uint64_t overlap_checks = 0;     ///< pair overlap tests performed
     std::uint64_t missed_collisions = 0;  ///< contacts inside a step that went undetected
-    std::uint64_t escaped = 0;            ///< discs whose centre is outside a walled box
+    std::uint64_t escaped = 0;            ///< discs entirely outside a walled box (tunnelled)
     std::uint64_t overlapping_pairs = 0;  ///< pairs overlapping now
     double energy_drift = 0.0;            ///< (KE - KE0) / KE0
+    std::uint64_t steps = 0;              ///< time quanta taken (the final partial ones included)
+    double max_overlap_seen = 0.0;        ///< deepest overlap any check found before rollback
+    double seconds_per_time_unit = 0.0;   ///< wall_seconds / t: cost of one simulated time unit
 };
 
 }  // namespace collide

@@ -31,14 +31,14 @@ struct DiscSource {
 
 /// The origin of every disc of a scene, for error messages. An empty origin names discs by index.
 class SceneOrigin {
-public:
+  public:
     /// Appends a run; runs must be added in disc order.
     void add(DiscSource run) { runs_.push_back(std::move(run)); }
     /// Where disc `index` came from; O(log runs).
     [[nodiscard]] SourceLocation locate(std::size_t index) const;
     [[nodiscard]] const std::vector<DiscSource>& runs() const noexcept { return runs_; }
 
-private:
+  private:
     std::vector<DiscSource> runs_;
 };
 

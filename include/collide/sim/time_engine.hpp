@@ -1,0 +1,172 @@
+#pragma once
+/// \file
+/// The lecture's naive, time-driven method, built faithfully so that its failures are real and
+/// visible: discretise time in quanta dt, move every disc, check pairs for overlap, roll colliding
+/// pairs back to contact, resolve, continue. Collisions that happen entirely inside one quantum
+/// (fast discs passing through each other, or through a wall) are not fixed: they are measured.
+///
+/// One step of length h (h = dt, or less for the final step that lands exactly on a frame time):
+///  1. drift    every disc moves in a straight line for h.
+///  2. detect   every pair is tested once for overlap (all-pairs: N(N-1)/2 tests, counted in
+///              Measurements::overlap_checks; `grid`: only pairs in neighbouring cells, with the
+///              same outcome). A pair that overlaps and approaches (dv.dr < 0) becomes a contact.
+///              A disc that straddles a wall line of a walled box and moves outwards becomes a wall
+///              contact. A disc entirely past a wall is not touching it: it is not reflected and
+///              keeps flying (it has escaped; Measurements::escaped, DiscState::escaped).
+///  3. resolve  contacts are processed one at a time in a deterministic order: by the contact
+///              time estimated at detection, then kind (pair, x wall, y wall), then disc ids.
+///              "Roll back to contact" means, for a pair, with the discs' *current* positions p
+///              and velocities v at the end of the step: reconstruct where their straight paths
+///              were at the start of the step (p - h v), solve the pair's quadratic from there
+///              with kinematics::time_to_hit to get the contact time t_c in [0, h] (clamped; a pair
+///              already overlapping at the start of the step is rolled back the whole step), move
+///              both discs back by s = h - t_c along their current velocities, resolve with
+///              kinematics::resolve_pair, and move both forward by s with the new velocities.
+///              Walls likewise with kinematics::time_to_wall and a reflected velocity component.
+///              A disc in several contacts is handled pair by pair in that order, each time with
+///              its velocity as updated by the earlier ones (so its reconstructed history is only
+///              approximate: that is the naive method). A contact that no longer overlaps or no
+///              longer approaches when its turn comes is skipped. Overlaps created by a
+///              resolution are seen only at the next step.
+///  4. wrap     positions are folded back into a periodic box.
+///
+/// Reporting only (it changes nothing): a pair that does not overlap at the end of a step but whose
+/// straight paths from the start of the step touch at a time in [0, h) (kinematics::time_to_hit on
+/// the step's start positions and velocities) is a missed collision. It is counted in
+/// Measurements::missed_collisions and its contact point is kept as a marker in
+/// Snapshot::missed_collisions. Wall tunnelling is reported through `escaped` instead.
+///
+/// After each advance_to() a census finds the pairs overlapping now (by more than
+/// TimeEngine::contact_slack of their contact distance) and the deepest overlap; snapshot() and
+/// measurements() report them. Missed-collision markers accumulate during one advance_to() call
+/// and are cleared when the next call starts, so each snapshot (one per frame) carries the misses
+/// since the previous frame.
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "collide/scene.hpp"
+#include "collide/sim/engine.hpp"
+#include "collide/sim/observables.hpp"
+
+namespace collide {
+
+namespace detail {
+class CellGrid;
+}  // namespace detail
+
+/// Throws Error(input) unless options.dt is finite and > 0 (names `--dt`) and options.td_detect
+/// is "all-pairs" or "grid" (names `--td-detect`). The time-driven engine calls it on construction.
+void validate_time_driven_options(const EngineOptions& options);
+
+/// The time-driven engine (`--engine time`). Deterministic: the same scene and options give the
+/// same snapshots and the same collision records. Cost per step: all-pairs O(N^2), grid about
+/// O(N) for a gas (cells are at least 2 r_max + 2 v_max h wide, so fast discs make them large).
+class TimeEngine final : public Engine {
+  public:
+    /// Relative tolerance on the contact distance sigma under which two discs count as touching,
+    /// not overlapping, in the census: rollback leaves a pair at contact up to rounding (~1e-16).
+    static constexpr double contact_slack = 1e-9;
+    /// At most this many missed-collision markers are kept per advance_to() call, so that a
+    /// silly dt cannot exhaust memory; the count in Measurements stays exact.
+    static constexpr std::size_t max_markers_per_frame = 100000;
+
+    /// The scene must be valid (positive radii and masses, finite values). Throws Error(input)
+    /// naming `--dt` or `--td-detect` for bad options (validate_time_driven_options).
+    TimeEngine(const Scene& scene, const EngineOptions& options);
+    ~TimeEngine() override;
+
+    /// Runs steps of dt until exactly time t; when t is not a multiple of dt away, the final step
+    /// is shorter and lands exactly on t (a step that would end within 1e-9 dt of t ends on t).
+    /// The next call starts its steps from t. Throws Error(runtime) if t < time() or t is NaN.
+    void advance_to(double t) override;
+    [[nodiscard]] double time() const noexcept override { return time_; }
+    /// Discs at time(), with the escaped flags, the pairs overlapping now and the markers of the
+    /// collisions missed during the last advance_to() call.
+    [[nodiscard]] Snapshot snapshot() const override;
+    /// Everything measured so far; O(N).
+    [[nodiscard]] Measurements measurements() const override;
+    /// Called for every resolved contact, in processing order, with the contact time solved in the
+    /// step (for walls, b = 0).
+    void set_collision_listener(CollisionListener listener) override;
+
+  private:
+    /// A contact found by the overlap checks of one step, waiting to be resolved.
+    struct Contact {
+        double t_estimate = 0.0;  ///< contact time within the step, from the detection state
+        CollisionKind kind = CollisionKind::pair;
+        std::uint32_t a = 0;
+        std::uint32_t b = 0;  ///< pairs only
+    };
+
+    void step(double h);
+    void drift(double h);
+    void detect_pair_contacts(double h);
+    void check_pair(std::uint32_t i, std::uint32_t j, double h);
+    void detect_wall_contacts(double h);
+    void resolve_contacts(double h);
+    void resolve_pair_contact(const Contact& contact, double h);
+    void resolve_wall_contact(const Contact& contact, double h);
+    void wrap_positions();
+    void take_census();
+    /// COLLIDE_VALIDATE builds, after every step: finite state, kinetic energy conserved (every
+    /// resolution is elastic). Throws Error(runtime) naming the broken invariant. O(N).
+    void validate_state() const;
+    void move(std::uint32_t i, Vec2 delta);
+    void record(CollisionKind kind, std::uint32_t a, std::uint32_t b, double t);
+    [[nodiscard]] double max_speed() const noexcept;
+    [[nodiscard]] double kinetic_energy() const noexcept;
+    /// Heap memory held by the engine's containers (capacity), for Measurements::engine_bytes.
+    [[nodiscard]] std::uint64_t bytes() const noexcept;
+
+    template <typename PairVisitor>
+    void for_each_candidate_pair(double reach, bool count_checks, PairVisitor&& visit);
+
+    Box box_;
+    double dt_;
+    bool use_grid_;
+    double max_radius_ = 0.0;
+    double initial_energy_ = 0.0;
+
+    // Per-disc state, in scene order.
+    std::vector<Vec2> position_;
+    std::vector<Vec2> velocity_;
+    std::vector<Vec2> displacement_;  ///< unwrapped displacement since t = 0 (mean squared displ.)
+    std::vector<double> radius_;
+    std::vector<double> mass_;
+    std::vector<Rgb8> color_;
+    std::vector<bool> tagged_;
+    std::vector<bool> escaped_;
+    bool any_tagged_ = false;
+
+    double time_ = 0.0;
+    double step_start_ = 0.0;  ///< simulation time at which the current step began
+    std::vector<Contact> contacts_;
+    std::unique_ptr<detail::CellGrid> grid_;
+
+    // Failure markers and census (recomputed after each advance_to).
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> overlapping_pairs_;
+    std::vector<Vec2> missed_markers_;
+    double max_overlap_ = 0.0;
+    std::uint64_t escaped_count_ = 0;
+
+    // Counters.
+    std::uint64_t steps_ = 0;
+    std::uint64_t overlap_checks_ = 0;
+    std::uint64_t predictions_ = 0;
+    std::uint64_t collisions_pair_ = 0;
+    std::uint64_t collisions_wall_ = 0;
+    std::uint64_t missed_ = 0;
+    double max_overlap_seen_ = 0.0;
+    std::uint64_t collisions_xwall_ = 0;
+    std::uint64_t collisions_ywall_ = 0;
+    sim::ImpulseTally impulses_;  ///< for pressure: virial (periodic) and wall impulse (walls)
+    double wall_seconds_ = 0.0;
+
+    CollisionListener listener_;
+};
+
+}  // namespace collide

@@ -1,0 +1,451 @@
+#include "collide/sim/time_engine.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <tuple>
+#include <type_traits>
+
+#include "collide/error.hpp"
+#include "collide/sim/kinematics.hpp"
+#include "collide/sim/observables.hpp"
+#include "time/cell_grid.hpp"
+
+namespace collide {
+
+namespace {
+
+/// A step that would end within this fraction of dt before the target time ends on it instead:
+/// frame times (multiples of 1/30, say) are not exact multiples of dt in floating point, and a
+/// sliver step of 1e-17 would only add rounding.
+constexpr double landing_tolerance = 1e-9;
+
+/// Grid cells are widened by this factor over the reach they must cover, so that a pair exactly
+/// `reach` apart cannot land two cells apart through rounding.
+constexpr double cell_margin = 1.0 + 1e-9;
+
+/// Clamps a contact time solved in a step of length h to [0, h]: `never` (grazing pairs where
+/// rounding makes the discriminant negative) and tiny overshoots mean "at the end of the step".
+double within_step(double t_contact, double h) noexcept {
+    return std::clamp(t_contact, 0.0, h);
+}
+
+}  // namespace
+
+void validate_time_driven_options(const EngineOptions& options) {
+    if (!std::isfinite(options.dt) || options.dt <= 0.0) {
+        throw_input_error("", 0, "--dt",
+                          "must be a finite number > 0 (got " + std::to_string(options.dt) + ")");
+    }
+    if (options.td_detect != "all-pairs" && options.td_detect != "grid") {
+        throw_input_error("", 0, "--td-detect",
+                          "unknown method '" + options.td_detect + "' (use all-pairs or grid)");
+    }
+}
+
+TimeEngine::TimeEngine(const Scene& scene, const EngineOptions& options)
+    : box_(scene.box), dt_(options.dt), use_grid_(options.td_detect == "grid") {
+    validate_time_driven_options(options);
+    const std::size_t n = scene.discs.size();
+    position_.reserve(n);
+    velocity_.reserve(n);
+    radius_.reserve(n);
+    mass_.reserve(n);
+    color_.reserve(n);
+    for (const Disc& disc : scene.discs) {
+        position_.push_back(box_.wrap(disc.position));
+        velocity_.push_back(disc.velocity);
+        radius_.push_back(disc.radius);
+        mass_.push_back(disc.mass);
+        color_.push_back(disc.color);
+        tagged_.push_back(!disc.tag.empty());
+        max_radius_ = std::max(max_radius_, disc.radius);
+    }
+    any_tagged_ = std::find(tagged_.begin(), tagged_.end(), true) != tagged_.end();
+    displacement_.assign(n, Vec2{});
+    escaped_.assign(n, false);
+    grid_ = std::make_unique<detail::CellGrid>();
+    initial_energy_ = kinetic_energy();
+    take_census();
+}
+
+TimeEngine::~TimeEngine() = default;
+
+void TimeEngine::set_collision_listener(CollisionListener listener) {
+    listener_ = std::move(listener);
+}
+
+void TimeEngine::advance_to(double t) {
+    if (!std::isfinite(t) || t < time_) {
+        throw_runtime_error("time-driven engine: cannot advance from t = " + std::to_string(time_) +
+                            " to t = " + std::to_string(t));
+    }
+    const auto started = std::chrono::steady_clock::now();
+    missed_markers_.clear();  // markers are "missed since the previous frame"
+    // Step ends are base + k dt (not a running sum), so rounding does not accumulate.
+    const double base = time_;
+    std::uint64_t k = 0;
+    while (time_ < t) {
+        ++k;
+        double next = base + static_cast<double>(k) * dt_;
+        if (next > t - landing_tolerance * dt_) {
+            next = t;  // the final, possibly partial, step
+        }
+        if (next <= time_) {
+            continue;  // dt below the resolution of time_: try the next multiple
+        }
+        step(next - time_);
+        time_ = next;
+    }
+    take_census();
+    wall_seconds_ +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+}
+
+// One quantum, as the lecture lists it: move everyone, check for overlaps, roll back, resolve.
+void TimeEngine::step(double h) {
+    step_start_ = time_;
+    drift(h);
+    contacts_.clear();
+    detect_pair_contacts(h);
+    detect_wall_contacts(h);
+    resolve_contacts(h);
+    wrap_positions();
+    ++steps_;
+#ifdef COLLIDE_VALIDATE
+    validate_state();
+#endif
+}
+
+void TimeEngine::drift(double h) {
+    for (std::uint32_t i = 0; i < position_.size(); ++i) {
+        move(i, h * velocity_[i]);
+    }
+}
+
+void TimeEngine::move(std::uint32_t i, Vec2 delta) {
+    position_[i] += delta;
+    displacement_[i] += delta;
+}
+
+template <typename PairVisitor>
+void TimeEngine::for_each_candidate_pair(double reach, bool count_checks, PairVisitor&& visit) {
+    auto checked = [&](std::uint32_t i, std::uint32_t j) {
+        if (count_checks) {
+            ++overlap_checks_;
+        }
+        visit(i, j);
+    };
+    if (use_grid_ && grid_->build(box_, position_, reach * cell_margin)) {
+        grid_->for_each_pair(checked);
+        return;
+    }
+    // The lecture's all-pairs loop: N(N-1)/2 checks.
+    const auto n = static_cast<std::uint32_t>(position_.size());
+    for (std::uint32_t i = 0; i < n; ++i) {
+        for (std::uint32_t j = i + 1; j < n; ++j) {
+            checked(i, j);
+        }
+    }
+}
+
+void TimeEngine::detect_pair_contacts(double h) {
+    // A pair that touches at any moment of the step ends at most 2 r_max + 2 v_max h apart, so a
+    // grid with that reach sees every overlap and every miss.
+    const double reach = 2.0 * max_radius_ + 2.0 * max_speed() * h;
+    struct Miss {
+        std::uint32_t i;
+        std::uint32_t j;
+        Vec2 where;
+    };
+    std::vector<Miss> misses;
+    for_each_candidate_pair(reach, true, [&](std::uint32_t i, std::uint32_t j) {
+        const Vec2 dr = box_.displacement(position_[i], position_[j]);
+        const Vec2 dv = velocity_[j] - velocity_[i];
+        const double sigma = radius_[i] + radius_[j];
+        const double dist2 = norm2(dr);
+        if (dist2 < sigma * sigma) {
+            max_overlap_seen_ = std::max(max_overlap_seen_, sigma - std::sqrt(dist2));
+            if (dot(dv, dr) < 0.0) {
+                ++predictions_;
+                const double t_contact =
+                    within_step(kinematics::time_to_hit(dr - h * dv, dv, sigma), h);
+                contacts_.push_back({t_contact, CollisionKind::pair, i, j});
+            }
+            return;
+        }
+        // Reporting only: did the straight paths of this step touch although the check cannot see
+        // it? They did if contact falls inside the step and the pair now separates (it went
+        // through); a pair touching exactly at the end still approaches and is seen next step.
+        if (dot(dv, dr) < 0.0) {
+            return;
+        }
+        const Vec2 dr0 = dr - h * dv;
+        const double t_contact = kinematics::time_to_hit(dr0, dv, sigma);
+        if (t_contact < h) {
+            const Vec2 pi = position_[i] - (h - t_contact) * velocity_[i];
+            const Vec2 where = pi + (radius_[i] / sigma) * (dr0 + t_contact * dv);
+            misses.push_back({i, j, box_.wrap(where)});
+        }
+    });
+    // Grid and all-pairs visit pairs in different orders; report misses in id order either way.
+    std::sort(misses.begin(), misses.end(),
+              [](const Miss& a, const Miss& b) { return std::tie(a.i, a.j) < std::tie(b.i, b.j); });
+    missed_ += misses.size();
+    for (const Miss& miss : misses) {
+        if (missed_markers_.size() < max_markers_per_frame) {
+            missed_markers_.push_back(miss.where);
+        }
+    }
+}
+
+void TimeEngine::detect_wall_contacts(double h) {
+    if (box_.boundary != Boundary::walls) {
+        return;
+    }
+    // A disc touches a wall when it straddles the wall's segment; one entirely past it does not.
+    auto straddles = [](double p, double line, double r) { return p > line - r && p < line + r; };
+    auto alongside = [](double q, double extent, double r) { return q > -r && q < extent + r; };
+    for (std::uint32_t i = 0; i < position_.size(); ++i) {
+        const Vec2 p = position_[i];
+        const Vec2 v = velocity_[i];
+        const double r = radius_[i];
+        const bool hits_x =
+            alongside(p.y, box_.height, r) &&
+            ((v.x < 0.0 && straddles(p.x, 0.0, r)) || (v.x > 0.0 && straddles(p.x, box_.width, r)));
+        const bool hits_y =
+            alongside(p.x, box_.width, r) && ((v.y < 0.0 && straddles(p.y, 0.0, r)) ||
+                                              (v.y > 0.0 && straddles(p.y, box_.height, r)));
+        if (hits_x) {
+            ++predictions_;
+            const double t_contact =
+                within_step(kinematics::time_to_wall(p.x - h * v.x, v.x, r, box_.width), h);
+            contacts_.push_back({t_contact, CollisionKind::xwall, i, 0});
+        }
+        if (hits_y) {
+            ++predictions_;
+            const double t_contact =
+                within_step(kinematics::time_to_wall(p.y - h * v.y, v.y, r, box_.height), h);
+            contacts_.push_back({t_contact, CollisionKind::ywall, i, 0});
+        }
+    }
+}
+
+void TimeEngine::resolve_contacts(double h) {
+    std::sort(contacts_.begin(), contacts_.end(), [](const Contact& x, const Contact& y) {
+        return std::tie(x.t_estimate, x.kind, x.a, x.b) < std::tie(y.t_estimate, y.kind, y.a, y.b);
+    });
+    for (const Contact& contact : contacts_) {
+        if (contact.kind == CollisionKind::pair) {
+            resolve_pair_contact(contact, h);
+        } else {
+            resolve_wall_contact(contact, h);
+        }
+    }
+}
+
+void TimeEngine::resolve_pair_contact(const Contact& contact, double h) {
+    const std::uint32_t a = contact.a;
+    const std::uint32_t b = contact.b;
+    const Vec2 dr = box_.displacement(position_[a], position_[b]);
+    const Vec2 dv = velocity_[b] - velocity_[a];
+    const double sigma = radius_[a] + radius_[b];
+    // An earlier contact of this step may have separated the pair already.
+    if (norm2(dr) >= sigma * sigma || dot(dv, dr) >= 0.0) {
+        return;
+    }
+    ++predictions_;
+    const double t_contact = within_step(kinematics::time_to_hit(dr - h * dv, dv, sigma), h);
+    const double back = h - t_contact;
+    move(a, -back * velocity_[a]);
+    move(b, -back * velocity_[b]);
+    const Vec2 contact_dr = box_.displacement(position_[a], position_[b]);
+    const Vec2 impulse =
+        kinematics::resolve_pair(velocity_[a], velocity_[b], mass_[a], mass_[b], contact_dr);
+    impulses_.virial += std::fabs(dot(contact_dr, impulse));
+    move(a, back * velocity_[a]);
+    move(b, back * velocity_[b]);
+    ++collisions_pair_;
+    record(CollisionKind::pair, a, b, step_start_ + t_contact);
+}
+
+void TimeEngine::resolve_wall_contact(const Contact& contact, double h) {
+    const std::uint32_t i = contact.a;
+    const bool x_axis = contact.kind == CollisionKind::xwall;
+    const double p = x_axis ? position_[i].x : position_[i].y;
+    double& v = x_axis ? velocity_[i].x : velocity_[i].y;
+    const double extent = x_axis ? box_.width : box_.height;
+    const double r = radius_[i];
+    // Still touching the wall it moves towards? (a pair collision may have turned it round)
+    const bool towards_wall =
+        (v < 0.0 && p < r && p > -r) || (v > 0.0 && p > extent - r && p < extent + r);
+    if (!towards_wall) {
+        return;
+    }
+    ++predictions_;
+    const double t_contact = within_step(kinematics::time_to_wall(p - h * v, v, r, extent), h);
+    const double back = h - t_contact;
+    move(i, -back * velocity_[i]);
+    impulses_.wall_impulse += 2.0 * mass_[i] * std::fabs(v);
+    v = -v;
+    move(i, back * velocity_[i]);
+    ++collisions_wall_;
+    ++(x_axis ? collisions_xwall_ : collisions_ywall_);
+    record(contact.kind, i, 0, step_start_ + t_contact);
+}
+
+void TimeEngine::wrap_positions() {
+    if (box_.boundary != Boundary::periodic) {
+        return;
+    }
+    for (Vec2& p : position_) {
+        p = box_.wrap(p);
+    }
+}
+
+void TimeEngine::record(CollisionKind kind, std::uint32_t a, std::uint32_t b, double t) {
+    if (listener_) {
+        listener_(CollisionRecord{t, kind, a, b});
+    }
+}
+
+// After each advance_to: which pairs overlap now, how deep, and which discs are out of the box.
+// Reporting only, so its pair tests are not counted in overlap_checks.
+void TimeEngine::take_census() {
+    overlapping_pairs_.clear();
+    max_overlap_ = 0.0;
+    for_each_candidate_pair(2.0 * max_radius_, false, [&](std::uint32_t i, std::uint32_t j) {
+        const double sigma = radius_[i] + radius_[j];
+        const double depth = sigma - norm(box_.displacement(position_[i], position_[j]));
+        if (depth > contact_slack * sigma) {
+            overlapping_pairs_.emplace_back(i, j);
+            max_overlap_ = std::max(max_overlap_, depth);
+        }
+    });
+    std::sort(overlapping_pairs_.begin(), overlapping_pairs_.end());
+    // Escaped = entirely past a wall line. A disc whose centre is outside by less than r still
+    // touches the wall and is reflected at the next check, so it is not (yet) an escape.
+    escaped_count_ = 0;
+    for (std::size_t i = 0; i < position_.size(); ++i) {
+        const Vec2 p = position_[i];
+        const double r = radius_[i];
+        escaped_[i] = box_.boundary == Boundary::walls &&
+                      (p.x <= -r || p.x >= box_.width + r || p.y <= -r || p.y >= box_.height + r);
+        if (escaped_[i]) {
+            ++escaped_count_;
+        }
+    }
+}
+
+void TimeEngine::validate_state() const {
+    for (std::size_t i = 0; i < position_.size(); ++i) {
+        const Vec2 p = position_[i];
+        const Vec2 v = velocity_[i];
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(v.x) ||
+            !std::isfinite(v.y)) {
+            throw_runtime_error("time-driven engine: disc " + std::to_string(i) +
+                                " has a non-finite state at t = " + std::to_string(time_));
+        }
+    }
+    // Elastic resolutions conserve energy up to rounding (~1e-16 per collision); 1e-9 leaves
+    // room for millions of collisions and still catches a wrong impulse at once.
+    constexpr double energy_tolerance = 1e-9;
+    const double energy = kinetic_energy();
+    if (std::fabs(energy - initial_energy_) > energy_tolerance * initial_energy_) {
+        throw_runtime_error("time-driven engine: kinetic energy " + std::to_string(energy) +
+                            " departs from " + std::to_string(initial_energy_) +
+                            " at t = " + std::to_string(time_));
+    }
+}
+
+double TimeEngine::max_speed() const noexcept {
+    double v2 = 0.0;
+    for (const Vec2& v : velocity_) {
+        v2 = std::max(v2, norm2(v));
+    }
+    return std::sqrt(v2);
+}
+
+std::uint64_t TimeEngine::bytes() const noexcept {
+    auto held = [](const auto& v) {
+        return static_cast<std::uint64_t>(v.capacity() *
+                                          sizeof(typename std::decay_t<decltype(v)>::value_type));
+    };
+    return held(position_) + held(velocity_) + held(displacement_) + held(radius_) + held(mass_) +
+           held(color_) + (tagged_.capacity() + escaped_.capacity()) / 8 + held(contacts_) +
+           held(overlapping_pairs_) + held(missed_markers_) + grid_->bytes();
+}
+
+double TimeEngine::kinetic_energy() const noexcept {
+    double e = 0.0;
+    for (std::size_t i = 0; i < velocity_.size(); ++i) {
+        e += 0.5 * mass_[i] * norm2(velocity_[i]);
+    }
+    return e;
+}
+
+Snapshot TimeEngine::snapshot() const {
+    Snapshot snap;
+    snap.time = time_;
+    snap.box = box_;
+    snap.discs.reserve(position_.size());
+    for (std::size_t i = 0; i < position_.size(); ++i) {
+        DiscState d;
+        d.position = position_[i];
+        d.velocity = velocity_[i];
+        d.radius = radius_[i];
+        d.mass = mass_[i];
+        d.color = color_[i];
+        d.tagged = tagged_[i];
+        d.escaped = escaped_[i];
+        snap.discs.push_back(d);
+    }
+    snap.overlapping_pairs = overlapping_pairs_;
+    snap.missed_collisions = missed_markers_;
+    return snap;
+}
+
+Measurements TimeEngine::measurements() const {
+    Measurements m;
+    m.t = time_;
+    m.steps = steps_;
+    m.collisions_pair = collisions_pair_;
+    m.collisions_wall = collisions_wall_;
+    m.collisions_xwall = collisions_xwall_;
+    m.collisions_ywall = collisions_ywall_;
+    m.events = collisions_pair_ + collisions_wall_;
+    m.predictions = predictions_;
+
+    // The same formulas as the event-driven engines, from the same code.
+    sim::fill_thermodynamics(m, velocity_, mass_, radius_, box_, impulses_);
+    m.max_overlap = max_overlap_;
+    m.max_overlap_seen = max_overlap_seen_;
+
+    double msd_sum = 0.0;
+    double msd_count = 0.0;
+    for (std::size_t i = 0; i < displacement_.size(); ++i) {
+        if (any_tagged_ && !tagged_[i]) {
+            continue;
+        }
+        msd_sum += norm2(displacement_[i]);
+        msd_count += 1.0;
+    }
+    m.msd = msd_count > 0 ? msd_sum / msd_count : 0.0;
+
+    m.wall_seconds = wall_seconds_;
+    m.engine_bytes = bytes();
+    const auto collisions = static_cast<double>(collisions_pair_ + collisions_wall_);
+    m.collisions_per_second = wall_seconds_ > 0.0 ? collisions / wall_seconds_ : 0.0;
+    m.seconds_per_time_unit = time_ > 0.0 ? wall_seconds_ / time_ : 0.0;
+
+    m.overlap_checks = overlap_checks_;
+    m.missed_collisions = missed_;
+    m.escaped = escaped_count_;
+    m.overlapping_pairs = overlapping_pairs_.size();
+    m.energy_drift =
+        initial_energy_ > 0.0 ? (m.kinetic_energy - initial_energy_) / initial_energy_ : 0.0;
+    return m;
+}
+
+}  // namespace collide
