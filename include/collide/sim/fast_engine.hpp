@@ -122,6 +122,8 @@ private:
 
     // --- prediction
     void predict(std::uint32_t i);
+    /// True when the pair cannot have an event before best_t (cheap bound, no sqrt or division).
+    [[nodiscard]] bool cannot_beat(Vec2 dr, Vec2 dv, double sigma, double best_t) const noexcept;
     void consider_pair(std::uint32_t i, const Particle& pi, double xi, double yi, std::uint32_t j,
                        double shift_x, double shift_y, Key& best);
     void consider_pair_images(std::uint32_t i, const Particle& pi, double xi, double yi, std::uint32_t j,
