@@ -96,8 +96,9 @@ private:
         const std::vector<std::uint32_t>* scene_index = nullptr;
 
         [[nodiscard]] bool operator()(const Key& x, const Key& y) const noexcept {
-            if (x.t != y.t) return x.t < y.t;
-            return tie_break(x, y);
+            // Same order as "times differ: earlier first; else tie_break", written so that the
+            // common case is one compare the compiler can turn into a conditional move.
+            return x.t < y.t || (x.t == y.t && tie_break(x, y));
         }
         [[nodiscard]] bool tie_break(const Key& x, const Key& y) const noexcept;
     };
