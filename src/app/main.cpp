@@ -25,6 +25,8 @@ int main(int argc, char** argv) {
     root.require_subcommand(0, 1);
     root.footer("Exit codes: 0 success, 2 bad input or usage, 1 other failure.");
     collide::app::add_pq_command(root);
+    collide::app::add_render_command(root);
+    collide::app::add_thumbnail_command(root);
 
     try {
         root.parse(argc, argv);
