@@ -20,7 +20,7 @@ struct DiscState {
     double mass = 0.0;
     Rgb8 color;
     bool tagged = false;   ///< the scene gave it a tag (trails are drawn for tagged discs)
-    bool escaped = false;  ///< time-driven only: the centre left a walled box (tunnelled out)
+    bool escaped = false;  ///< time-driven only: entirely outside a walled box (tunnelled out)
 };
 
 struct Snapshot {

@@ -10,14 +10,20 @@ namespace collide::app {
 // Subcommands register here as their issues land, e.g.
 // void add_pq_command(CLI::App& root);
 
-/// `collide render SCENE`: a side-by-side teaching video (time-driven | event-driven) to MP4/GIF/PNG.
-void add_render_command(CLI::App& root);
+/// `collide check SCENE`: validate a scene; exit 0 with a one-line summary, 2 with the problem.
+void add_check_command(CLI::App& root);
 
-/// `collide thumbnail SCENE --at T`: one frame of that video as a PNG, without encoding a video.
-void add_thumbnail_command(CLI::App& root);
+/// `collide scenes`: list the built-in scenes with a one-line description each.
+void add_scenes_command(CLI::App& root);
 
 /// `collide pq`: the lecture's priority-queue trace table (text, CSV or Markdown).
 void add_pq_command(CLI::App& root);
+
+/// `collide simulate`: run an engine to a time, print measurements, optionally log collisions.
+void add_simulate_command(CLI::App& root);
+
+/// `collide bench`: engine throughput and memory on a random periodic fluid or a scene.
+void add_bench_command(CLI::App& root);
 
 /// `collide render SCENE`: a side-by-side teaching video (time-driven | event-driven) to MP4/GIF/PNG.
 void add_render_command(CLI::App& root);

@@ -25,7 +25,9 @@ void install(int signal_number, struct sigaction* previous) {
     struct sigaction action {};
     action.sa_handler = on_interrupt;
     sigemptyset(&action.sa_mask);
-    action.sa_flags = 0;  // no SA_RESTART: let blocking calls return EINTR and the loop poll the flag
+    // SA_RESETHAND: the first Ctrl-C asks for a clean stop, a second one kills at once (the default
+    // action) should the clean stop hang. No SA_RESTART: blocking calls return EINTR.
+    action.sa_flags = SA_RESETHAND;
     if (sigaction(signal_number, &action, previous) != 0) {
         throw_runtime_error(std::string("cannot install signal handler: ") + std::strerror(errno));
     }
@@ -55,14 +57,21 @@ InterruptGuard::~InterruptGuard() {
     guard_alive.store(false);
 }
 
-const std::atomic<bool>& InterruptGuard::flag() const noexcept { return interrupt_requested; }
+const std::atomic<bool>& InterruptGuard::flag() const noexcept {
+    return interrupt_requested;
+}
 
-bool InterruptGuard::requested() const noexcept { return interrupt_requested.load(); }
+bool InterruptGuard::requested() const noexcept {
+    return interrupt_requested.load();
+}
 
-int InterruptGuard::signal_number() const noexcept { return interrupt_signal.load(); }
+int InterruptGuard::signal_number() const noexcept {
+    return interrupt_signal.load();
+}
 
 void InterruptGuard::throw_if_requested() const {
-    if (!requested()) return;
+    if (!requested())
+        return;
     const int number = signal_number();
     const char* name = number == SIGINT ? "SIGINT" : number == SIGTERM ? "SIGTERM" : "a signal";
     throw_runtime_error(std::string("interrupted by ") + name + "; partial output removed");

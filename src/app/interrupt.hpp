@@ -10,10 +10,11 @@
 namespace collide::app {
 
 /// Installs SIGINT and SIGTERM handlers for its lifetime (restoring the previous ones after).
+/// Each handler fires once: a second Ctrl-C gets the default action and ends the process at once.
 /// Only one may be alive at a time (a second one throws Error(runtime)): a signal handler can only
 /// reach static storage, so the flag behind it is the one process-wide variable of the program.
 class InterruptGuard {
-public:
+  public:
     InterruptGuard();
     ~InterruptGuard();
     InterruptGuard(const InterruptGuard&) = delete;
@@ -28,7 +29,7 @@ public:
     /// Throws Error(runtime, "interrupted by SIGINT") when a signal arrived.
     void throw_if_requested() const;
 
-private:
+  private:
     struct sigaction previous_int_ {};
     struct sigaction previous_term_ {};
 };

@@ -24,9 +24,14 @@ int main(int argc, char** argv) {
     root.set_version_flag("--version", std::string("collide ") + COLLIDE_VERSION);
     root.require_subcommand(0, 1);
     root.footer("Exit codes: 0 success, 2 bad input or usage, 1 other failure.");
+    collide::app::add_check_command(root);
+    collide::app::add_scenes_command(root);
     collide::app::add_pq_command(root);
     collide::app::add_render_command(root);
     collide::app::add_thumbnail_command(root);
+
+    collide::app::add_simulate_command(root);
+    collide::app::add_bench_command(root);
 
     try {
         root.parse(argc, argv);

@@ -3,12 +3,12 @@
 
 #include "collide/scene/load.hpp"
 
+#include <toml++/toml.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <system_error>
-
-#include <toml++/toml.h>
 
 #include "collide/error.hpp"
 #include "collide/sim/algs4.hpp"
@@ -17,13 +17,29 @@ namespace collide {
 
 namespace {
 
-std::filesystem::path scenes_dir(const std::filesystem::path& assets_dir) { return assets_dir / "scenes"; }
+std::filesystem::path scenes_dir(const std::filesystem::path& assets_dir) {
+    return assets_dir / "scenes";
+}
 
-bool has_extension(const std::filesystem::path& p, const char* ext) { return p.extension() == ext; }
+bool has_extension(const std::filesystem::path& p, const char* ext) {
+    return p.extension() == ext;
+}
 
 // A bare word ("brownian") that is not an existing file names a built-in scene.
 bool looks_like_name(const std::string& s) {
-    return !s.empty() && s.find('/') == std::string::npos && !std::filesystem::path(s).has_extension();
+    return !s.empty() && s.find('/') == std::string::npos &&
+           !std::filesystem::path(s).has_extension();
+}
+
+std::vector<std::string> scene_names_in(const std::filesystem::path& assets_dir) {
+    std::vector<std::string> names;
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(scenes_dir(assets_dir), ec)) {
+        if (entry.path().extension() == ".toml")
+            names.push_back(entry.path().stem().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
 }
 
 Scene load_builtin(const std::string& name, const std::filesystem::path& assets_dir) {
@@ -31,8 +47,9 @@ Scene load_builtin(const std::string& name, const std::filesystem::path& assets_
     std::error_code ec;
     if (!std::filesystem::is_regular_file(file, ec)) {
         std::string reason = "not a scene file and not a built-in scene";
-        const std::string guess = nearest_name(name, builtin_scene_names());
-        reason += guess.empty() ? " (`collide scenes` lists them)" : " (did you mean '" + guess + "'?)";
+        const std::string guess = nearest_name(name, scene_names_in(assets_dir));
+        reason +=
+            guess.empty() ? " (`collide scenes` lists them)" : " (did you mean '" + guess + "'?)";
         throw_input_error("'" + name + "': " + reason);
     }
     Scene scene = load_toml_scene(file);
@@ -44,40 +61,46 @@ Scene load_builtin(const std::string& name, const std::filesystem::path& assets_
 
 std::filesystem::path scene_assets_dir() {
     const char* env = std::getenv("COLLIDE_ASSETS_DIR");
-    if (env != nullptr && *env != '\0') return env;
+    if (env != nullptr && *env != '\0')
+        return env;
     return COLLIDE_SOURCE_ASSETS_DIR;
 }
 
-Scene load_scene(const std::string& path_or_name) { return load_scene(path_or_name, scene_assets_dir()); }
+Scene load_scene(const std::string& path_or_name) {
+    return load_scene(path_or_name, scene_assets_dir());
+}
 
 Scene load_scene(const std::string& path_or_name, const std::filesystem::path& assets_dir) {
+    if (path_or_name.empty())
+        throw_input_error("empty scene path (give a file or a built-in scene name)");
     const std::filesystem::path path(path_or_name);
     std::error_code ec;
     const bool exists = std::filesystem::exists(path, ec);
-    if (!exists && looks_like_name(path_or_name)) return load_builtin(path_or_name, assets_dir);
-    if (exists && std::filesystem::is_directory(path, ec)) throw_input_error(path_or_name, 0, "", "is a directory, not a scene file");
-    if (has_extension(path, ".txt")) return read_algs4_file(path).scene;
-    if (has_extension(path, ".toml")) return load_toml_scene(path);
-    if (!exists) throw_input_error(path_or_name, 0, "", "no such file");
-    throw_input_error(path_or_name, 0, "", "unknown scene format '" + path.extension().string() +
-                                               "' (expected an algs4 .txt file or a .toml scene)");
+    if (!exists && looks_like_name(path_or_name))
+        return load_builtin(path_or_name, assets_dir);
+    if (exists && std::filesystem::is_directory(path, ec))
+        throw_input_error(path_or_name, 0, "", "is a directory, not a scene file");
+    if (has_extension(path, ".txt"))
+        return read_algs4_file(path).scene;
+    if (has_extension(path, ".toml"))
+        return load_toml_scene(path);
+    if (!exists)
+        throw_input_error(path_or_name, 0, "", "no such file");
+    throw_input_error(path_or_name, 0, "",
+                      "unknown scene format '" + path.extension().string() +
+                          "' (expected an algs4 .txt file or a .toml scene)");
 }
 
 std::vector<std::string> builtin_scene_names() {
-    std::vector<std::string> names;
-    std::error_code ec;
-    for (const auto& entry : std::filesystem::directory_iterator(scenes_dir(scene_assets_dir()), ec)) {
-        if (entry.path().extension() == ".toml") names.push_back(entry.path().stem().string());
-    }
-    std::sort(names.begin(), names.end());
-    return names;
+    return scene_names_in(scene_assets_dir());
 }
 
 std::vector<BuiltinScene> builtin_scenes(const std::filesystem::path& assets_dir) {
     std::vector<BuiltinScene> scenes;
     std::error_code ec;
     for (const auto& entry : std::filesystem::directory_iterator(scenes_dir(assets_dir), ec)) {
-        if (entry.path().extension() != ".toml") continue;
+        if (entry.path().extension() != ".toml")
+            continue;
         BuiltinScene s;
         s.name = entry.path().stem().string();
         try {
@@ -89,7 +112,8 @@ std::vector<BuiltinScene> builtin_scenes(const std::filesystem::path& assets_dir
         }
         scenes.push_back(std::move(s));
     }
-    std::sort(scenes.begin(), scenes.end(), [](const BuiltinScene& a, const BuiltinScene& b) { return a.name < b.name; });
+    std::sort(scenes.begin(), scenes.end(),
+              [](const BuiltinScene& a, const BuiltinScene& b) { return a.name < b.name; });
     return scenes;
 }
 

@@ -23,8 +23,8 @@ using Keys = std::vector<std::string>;
 const Keys top_keys = {"title", "description", "include", "box", "disc", "generate", "render"};
 const Keys box_keys = {"width", "height", "boundary"};
 const Keys disc_keys = {"position", "velocity", "radius", "mass", "color", "tag"};
-const Keys generate_keys = {"count", "packing_fraction", "radius", "mass", "temperature", "speed",
-                            "region", "color", "seed", "tag"};
+const Keys generate_keys = {"count", "packing_fraction", "radius", "mass", "temperature",
+                            "speed", "region",           "color",  "seed", "tag"};
 const Keys render_keys = {"color_mode", "trails", "overlays", "duration", "speed", "dt"};
 const Keys color_modes = {"scene", "speed", "mass", "tag"};
 
@@ -37,31 +37,46 @@ std::string num(double v) {
 
 std::string joined(const Keys& keys) {
     std::string s;
-    for (const std::string& k : keys) s += (s.empty() ? "" : ", ") + k;
+    for (const std::string& k : keys)
+        s += (s.empty() ? "" : ", ") + k;
     return s;
 }
 
 class TomlReader {
-public:
+  public:
     TomlReader(std::string file, std::filesystem::path base_dir)
         : file_(std::move(file)), base_dir_(std::move(base_dir)) {}
 
     Scene read(std::string_view text) {
         toml::table doc = parse(text);
         check_keys(doc, "", top_keys);
-        if (const toml::node* n = doc.get("title")) scene_.title = text_value(*n, "title");
-        if (const toml::node* n = doc.get("description")) (void)text_value(*n, "description");
-        if (const toml::node* n = doc.get("box")) read_box(*n);
-        if (const toml::node* n = doc.get("render")) read_render(*n);
-        if (const toml::node* n = doc.get("include")) read_includes(*n);
-        if (const toml::node* n = doc.get("disc")) read_discs(*n);
-        if (const toml::node* n = doc.get("generate")) read_generators(*n);
-        if (speed_colored_ && !scene_.render.color_mode) scene_.render.color_mode = "speed";
+        if (const toml::node* n = doc.get("title"))
+            scene_.title = text_value(*n, "title");
+        if (const toml::node* n = doc.get("description"))
+            (void)text_value(*n, "description");
+        if (const toml::node* n = doc.get("box"))
+            read_box(*n);
+        if (const toml::node* n = doc.get("render"))
+            read_render(*n);
+        if (const toml::node* n = doc.get("include"))
+            read_includes(*n);
+        if (const toml::node* n = doc.get("disc"))
+            read_discs(*n);
+        // Periodic boxes accept any position: keep them in the box, as the engines expect.
+        for (Disc& d : scene_.discs)
+            d.position = scene_.box.wrap(d.position);
+        if (const toml::node* n = doc.get("generate")) {
+            // The generators build grids from the discs already there: those must be sane.
+            validate_scene(scene_, origin_);
+            read_generators(*n);
+        }
+        if (speed_colored_ && !scene_.render.color_mode)
+            scene_.render.color_mode = "speed";
         validate_scene(scene_, origin_);
         return std::move(scene_);
     }
 
-private:
+  private:
     toml::table parse(std::string_view text) const {
         try {
             return toml::parse(text, file_);
@@ -71,24 +86,29 @@ private:
         }
     }
 
-    [[noreturn]] void fail(const toml::node& at, const std::string& field, const std::string& reason) const {
+    [[noreturn]] void fail(const toml::node& at, const std::string& field,
+                           const std::string& reason) const {
         throw_input_error(file_, static_cast<int>(at.source().begin.line), field, reason);
     }
 
-    void check_keys(const toml::table& table, const std::string& prefix, const Keys& allowed) const {
+    void check_keys(const toml::table& table, const std::string& prefix,
+                    const Keys& allowed) const {
         for (auto&& [key, value] : table) {
             const std::string name(key.str());
-            if (std::find(allowed.begin(), allowed.end(), name) != allowed.end()) continue;
+            if (std::find(allowed.begin(), allowed.end(), name) != allowed.end())
+                continue;
             std::string reason = "unknown key '" + name + "'";
             const std::string guess = nearest_name(name, allowed);
-            reason += guess.empty() ? " (valid keys: " + joined(allowed) + ")" : " (did you mean '" + guess + "'?)";
+            reason += guess.empty() ? " (valid keys: " + joined(allowed) + ")"
+                                    : " (did you mean '" + guess + "'?)";
             throw_input_error(file_, static_cast<int>(key.source().begin.line), prefix, reason);
         }
     }
 
     const toml::table& table_at(const toml::node& n, const std::string& field) const {
         const toml::table* t = n.as_table();
-        if (t == nullptr) fail(n, field, "expected a table");
+        if (t == nullptr)
+            fail(n, field, "expected a table");
         return *t;
     }
 
@@ -101,65 +121,84 @@ private:
         } else {
             fail(n, field, "expected a number");
         }
-        if (!std::isfinite(v)) fail(n, field, "not a finite number (" + num(v) + ")");
+        if (!std::isfinite(v))
+            fail(n, field, "not a finite number (" + num(v) + ")");
         return v;
     }
 
     double positive(const toml::node& n, const std::string& field) const {
         const double v = number(n, field);
-        if (!(v > 0.0)) fail(n, field, "must be > 0 (got " + num(v) + ")");
+        if (!(v > 0.0))
+            fail(n, field, "must be > 0 (got " + num(v) + ")");
         return v;
     }
 
     std::int64_t integer(const toml::node& n, const std::string& field, std::int64_t min) const {
         const auto* i = n.as_integer();
-        if (i == nullptr) fail(n, field, "expected an integer");
-        if (i->get() < min) fail(n, field, "must be >= " + std::to_string(min) + " (got " + std::to_string(i->get()) + ")");
+        if (i == nullptr)
+            fail(n, field, "expected an integer");
+        if (i->get() < min)
+            fail(n, field,
+                 "must be >= " + std::to_string(min) + " (got " + std::to_string(i->get()) + ")");
         return i->get();
     }
 
     std::string text_value(const toml::node& n, const std::string& field) const {
         const auto* s = n.as_string();
-        if (s == nullptr) fail(n, field, "expected a string");
+        if (s == nullptr)
+            fail(n, field, "expected a string");
         return s->get();
     }
 
     bool boolean(const toml::node& n, const std::string& field) const {
         const auto* b = n.as_boolean();
-        if (b == nullptr) fail(n, field, "expected true or false");
+        if (b == nullptr)
+            fail(n, field, "expected true or false");
         return b->get();
     }
 
     Vec2 pair(const toml::node& n, const std::string& field) const {
         const toml::array* a = n.as_array();
-        if (a == nullptr || a->size() != 2) fail(n, field, "expected [x, y]");
+        if (a == nullptr || a->size() != 2)
+            fail(n, field, "expected [x, y]");
         return {number(*a->get(0), field + "[0]"), number(*a->get(1), field + "[1]")};
     }
 
     Rgb8 rgb(const toml::node& n, const std::string& field) const {
         if (const toml::array* a = n.as_array()) {
-            if (a->size() != 3) fail(n, field, "expected \"#rrggbb\" or [r, g, b] with integers 0..255");
+            if (a->size() != 3)
+                fail(n, field, "expected \"#rrggbb\" or [r, g, b] with integers 0..255");
             const auto channel = [&](std::size_t k) {
-                const std::int64_t c = integer(*a->get(k), field + "[" + std::to_string(k) + "]", 0);
-                if (c > 255) fail(*a->get(k), field, "colour channels are 0..255 (got " + std::to_string(c) + ")");
+                const std::int64_t c =
+                    integer(*a->get(k), field + "[" + std::to_string(k) + "]", 0);
+                if (c > 255)
+                    fail(*a->get(k), field,
+                         "colour channels are 0..255 (got " + std::to_string(c) + ")");
                 return static_cast<std::uint8_t>(c);
             };
             return {channel(0), channel(1), channel(2)};
         }
         const auto* s = n.as_string();
         const std::string hex = s ? s->get() : std::string();
-        const bool ok = hex.size() == 7 && hex[0] == '#' &&
-                        std::all_of(hex.begin() + 1, hex.end(), [](char c) { return std::isxdigit(static_cast<unsigned char>(c)) != 0; });
-        if (!ok) fail(n, field, "expected \"#rrggbb\" or [r, g, b] with integers 0..255");
-        const auto byte = [&](std::size_t at) { return static_cast<std::uint8_t>(std::stoi(hex.substr(at, 2), nullptr, 16)); };
+        const bool ok =
+            hex.size() == 7 && hex[0] == '#' && std::all_of(hex.begin() + 1, hex.end(), [](char c) {
+                return std::isxdigit(static_cast<unsigned char>(c)) != 0;
+            });
+        if (!ok)
+            fail(n, field, "expected \"#rrggbb\" or [r, g, b] with integers 0..255");
+        const auto byte = [&](std::size_t at) {
+            return static_cast<std::uint8_t>(std::stoi(hex.substr(at, 2), nullptr, 16));
+        };
         return {byte(1), byte(3), byte(5)};
     }
 
     void read_box(const toml::node& n) {
         const toml::table& t = table_at(n, "box");
         check_keys(t, "box", box_keys);
-        if (const toml::node* v = t.get("width")) scene_.box.width = positive(*v, "box.width");
-        if (const toml::node* v = t.get("height")) scene_.box.height = positive(*v, "box.height");
+        if (const toml::node* v = t.get("width"))
+            scene_.box.width = positive(*v, "box.width");
+        if (const toml::node* v = t.get("height"))
+            scene_.box.height = positive(*v, "box.height");
         if (const toml::node* v = t.get("boundary")) {
             const std::string b = text_value(*v, "box.boundary");
             if (b == "walls") {
@@ -179,15 +218,21 @@ private:
         if (const toml::node* v = t.get("color_mode")) {
             const std::string mode = text_value(*v, "render.color_mode");
             if (std::find(color_modes.begin(), color_modes.end(), mode) == color_modes.end()) {
-                fail(*v, "render.color_mode", "expected one of " + joined(color_modes) + " (got \"" + mode + "\")");
+                fail(*v, "render.color_mode",
+                     "expected one of " + joined(color_modes) + " (got \"" + mode + "\")");
             }
             r.color_mode = mode;
         }
-        if (const toml::node* v = t.get("trails")) r.trails = boolean(*v, "render.trails");
-        if (const toml::node* v = t.get("overlays")) r.overlays = boolean(*v, "render.overlays");
-        if (const toml::node* v = t.get("duration")) r.duration = positive(*v, "render.duration");
-        if (const toml::node* v = t.get("speed")) r.speed = positive(*v, "render.speed");
-        if (const toml::node* v = t.get("dt")) r.dt = positive(*v, "render.dt");
+        if (const toml::node* v = t.get("trails"))
+            r.trails = boolean(*v, "render.trails");
+        if (const toml::node* v = t.get("overlays"))
+            r.overlays = boolean(*v, "render.overlays");
+        if (const toml::node* v = t.get("duration"))
+            r.duration = positive(*v, "render.duration");
+        if (const toml::node* v = t.get("speed"))
+            r.speed = positive(*v, "render.speed");
+        if (const toml::node* v = t.get("dt"))
+            r.dt = positive(*v, "render.dt");
     }
 
     void read_includes(const toml::node& n) {
@@ -196,17 +241,24 @@ private:
             return;
         }
         const toml::array* a = n.as_array();
-        if (a == nullptr) fail(n, "include", "expected a file name or a list of file names");
-        for (std::size_t i = 0; i < a->size(); ++i) read_include(*a->get(i), "include[" + std::to_string(i) + "]");
+        if (a == nullptr)
+            fail(n, "include", "expected a file name or a list of file names");
+        for (std::size_t i = 0; i < a->size(); ++i)
+            read_include(*a->get(i), "include[" + std::to_string(i) + "]");
     }
 
     void read_include(const toml::node& n, const std::string& field) {
         const std::filesystem::path path = base_dir_ / text_value(n, field);
+        if (path.extension() != ".txt")
+            fail(n, field,
+                 "only algs4 .txt files can be included (got '" + path.filename().string() + "')");
         std::ifstream in(path, std::ios::binary);
-        if (!in) fail(n, field, "cannot open '" + path.string() + "'");
+        if (!in)
+            fail(n, field, "cannot open '" + path.string() + "'");
         ParsedScene part = parse_algs4(in, path.string());
         const std::size_t first = scene_.discs.size();
-        for (Disc& d : part.scene.discs) scene_.discs.push_back(std::move(d));
+        for (Disc& d : part.scene.discs)
+            scene_.discs.push_back(std::move(d));
         for (DiscSource run : part.origin.runs()) {
             run.first += first;
             origin_.add(std::move(run));
@@ -215,41 +267,55 @@ private:
 
     void read_discs(const toml::node& n) {
         const toml::array* a = n.as_array();
-        if (a == nullptr) fail(n, "disc", "expected [[disc]] tables");
+        if (a == nullptr)
+            fail(n, "disc", "expected [[disc]] tables");
         for (std::size_t i = 0; i < a->size(); ++i) {
             const std::string field = "disc[" + std::to_string(i) + "]";
             const toml::table& t = table_at(*a->get(i), field);
             check_keys(t, field, disc_keys);
             scene_.discs.push_back(read_disc(t, field));
-            origin_.add({scene_.discs.size() - 1, 1, file_, {}, static_cast<int>(t.source().begin.line), field});
+            origin_.add({scene_.discs.size() - 1,
+                         1,
+                         file_,
+                         {},
+                         static_cast<int>(t.source().begin.line),
+                         field});
         }
     }
 
-    const toml::node& required(const toml::table& t, const std::string& key, const std::string& prefix) const {
+    const toml::node& required(const toml::table& t, const std::string& key,
+                               const std::string& prefix) const {
         const toml::node* v = t.get(key);
-        if (v == nullptr) throw_input_error(file_, static_cast<int>(t.source().begin.line), prefix + "." + key, "missing (required)");
+        if (v == nullptr)
+            throw_input_error(file_, static_cast<int>(t.source().begin.line), prefix + "." + key,
+                              "missing (required)");
         return *v;
     }
 
     Disc read_disc(const toml::table& t, const std::string& prefix) const {
         Disc d;
         d.position = pair(required(t, "position", prefix), prefix + ".position");
-        if (const toml::node* v = t.get("velocity")) d.velocity = pair(*v, prefix + ".velocity");
+        if (const toml::node* v = t.get("velocity"))
+            d.velocity = pair(*v, prefix + ".velocity");
         d.radius = positive(required(t, "radius", prefix), prefix + ".radius");
-        if (const toml::node* v = t.get("mass")) d.mass = positive(*v, prefix + ".mass");
-        if (const toml::node* v = t.get("color")) d.color = rgb(*v, prefix + ".color");
-        if (const toml::node* v = t.get("tag")) d.tag = text_value(*v, prefix + ".tag");
+        if (const toml::node* v = t.get("mass"))
+            d.mass = positive(*v, prefix + ".mass");
+        if (const toml::node* v = t.get("color"))
+            d.color = rgb(*v, prefix + ".color");
+        if (const toml::node* v = t.get("tag"))
+            d.tag = text_value(*v, prefix + ".tag");
         return d;
     }
 
     void read_generators(const toml::node& n) {
         const toml::array* a = n.as_array();
-        if (a == nullptr) fail(n, "generate", "expected [[generate]] tables");
+        if (a == nullptr)
+            fail(n, "generate", "expected [[generate]] tables");
         for (std::size_t i = 0; i < a->size(); ++i) {
             const std::string field = "generate[" + std::to_string(i) + "]";
             const toml::table& t = table_at(*a->get(i), field);
             check_keys(t, field, generate_keys);
-            const GenerateSpec spec = read_spec(t, field);
+            const GenerateSpec spec = read_spec(t, field, i);
             const std::size_t first = scene_.discs.size();
             const int line = static_cast<int>(t.source().begin.line);
             try {
@@ -262,20 +328,30 @@ private:
         }
     }
 
-    GenerateSpec read_spec(const toml::table& t, const std::string& prefix) {
+    GenerateSpec read_spec(const toml::table& t, const std::string& prefix, std::size_t index) {
         GenerateSpec g;
+        // Blocks without a seed still get different streams (same stream = same pattern twice).
+        g.seed = index + 1;
         const auto key = [&](const char* name) { return prefix + "." + name; };
-        if (const toml::node* v = t.get("count")) g.count = static_cast<std::size_t>(integer(*v, key("count"), 1));
-        if (const toml::node* v = t.get("packing_fraction")) g.packing_fraction = positive(*v, key("packing_fraction"));
+        if (const toml::node* v = t.get("count"))
+            g.count = static_cast<std::size_t>(integer(*v, key("count"), 1));
+        if (const toml::node* v = t.get("packing_fraction"))
+            g.packing_fraction = positive(*v, key("packing_fraction"));
         if (t.get("count") == nullptr && t.get("packing_fraction") == nullptr) {
-            throw_input_error(file_, static_cast<int>(t.source().begin.line), prefix, "give count or packing_fraction");
+            throw_input_error(file_, static_cast<int>(t.source().begin.line), prefix,
+                              "give count or packing_fraction");
         }
         g.radius = positive(required(t, "radius", prefix), key("radius"));
-        if (const toml::node* v = t.get("mass")) g.mass = positive(*v, key("mass"));
-        if (const toml::node* v = t.get("temperature")) g.temperature = number(*v, key("temperature"));
-        if (const toml::node* v = t.get("speed")) g.speed = number(*v, key("speed"));
-        if (t.get("temperature") != nullptr && g.speed) fail(*t.get("speed"), key("speed"), "give temperature or speed, not both");
-        if (const toml::node* v = t.get("region")) read_region(*v, key("region"), g);
+        if (const toml::node* v = t.get("mass"))
+            g.mass = positive(*v, key("mass"));
+        if (const toml::node* v = t.get("temperature"))
+            g.temperature = number(*v, key("temperature"));
+        if (const toml::node* v = t.get("speed"))
+            g.speed = number(*v, key("speed"));
+        if (t.get("temperature") != nullptr && g.speed)
+            fail(*t.get("speed"), key("speed"), "give temperature or speed, not both");
+        if (const toml::node* v = t.get("region"))
+            read_region(*v, key("region"), g);
         if (const toml::node* v = t.get("color")) {
             if (v->is_string() && v->as_string()->get() == "speed") {
                 g.color_by_speed = true;
@@ -284,8 +360,10 @@ private:
                 g.color = rgb(*v, key("color"));
             }
         }
-        if (const toml::node* v = t.get("seed")) g.seed = static_cast<std::uint64_t>(integer(*v, key("seed"), 0));
-        if (const toml::node* v = t.get("tag")) g.tag = text_value(*v, key("tag"));
+        if (const toml::node* v = t.get("seed"))
+            g.seed = static_cast<std::uint64_t>(integer(*v, key("seed"), 0));
+        if (const toml::node* v = t.get("tag"))
+            g.tag = text_value(*v, key("tag"));
         try {
             g.validate(prefix);
         } catch (const Error& e) {
@@ -296,7 +374,8 @@ private:
 
     void read_region(const toml::node& n, const std::string& field, GenerateSpec& g) const {
         const toml::array* a = n.as_array();
-        if (a == nullptr || a->size() != 2) fail(n, field, "expected [[x0, y0], [x1, y1]]");
+        if (a == nullptr || a->size() != 2)
+            fail(n, field, "expected [[x0, y0], [x1, y1]]");
         g.region_min = pair(*a->get(0), field + "[0]");
         g.region_max = pair(*a->get(1), field + "[1]");
     }
@@ -308,19 +387,26 @@ private:
     bool speed_colored_ = false;
 };
 
+// Optimal string alignment distance: insertions, deletions, substitutions and swaps of two
+// neighbouring letters ("titel" -> "title") each cost 1.
 std::size_t edit_distance(std::string_view a, std::string_view b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    const std::size_t w = b.size() + 1;
+    std::vector<std::size_t> d((a.size() + 1) * w);
+    for (std::size_t i = 0; i <= a.size(); ++i)
+        d[i * w] = i;
+    for (std::size_t j = 0; j <= b.size(); ++j)
+        d[j] = j;
     for (std::size_t i = 1; i <= a.size(); ++i) {
-        std::size_t diagonal = row[0];
-        row[0] = i;
         for (std::size_t j = 1; j <= b.size(); ++j) {
-            const std::size_t up = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-            diagonal = up;
+            const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+            std::size_t best = std::min(
+                {d[(i - 1) * w + j] + 1, d[i * w + j - 1] + 1, d[(i - 1) * w + j - 1] + cost});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+                best = std::min(best, d[(i - 2) * w + j - 2] + 1);
+            d[i * w + j] = best;
         }
     }
-    return row[b.size()];
+    return d[a.size() * w + b.size()];
 }
 
 }  // namespace
@@ -340,19 +426,22 @@ std::string nearest_name(std::string_view word, const std::vector<std::string>& 
     return best_distance <= allowed ? best : std::string();
 }
 
-Scene parse_toml_scene(std::string_view text, const std::string& file_label, const std::filesystem::path& base_dir) {
+Scene parse_toml_scene(std::string_view text, const std::string& file_label,
+                       const std::filesystem::path& base_dir) {
     TomlReader reader(file_label, base_dir);
     return reader.read(text);
 }
 
 Scene load_toml_scene(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw_input_error(path.string(), 0, "", "cannot open the scene file");
+    if (!in)
+        throw_input_error(path.string(), 0, "", "cannot open the scene file");
     std::ostringstream text;
     text << in.rdbuf();
     Scene scene = parse_toml_scene(text.str(), path.string(), path.parent_path());
     scene.name = path.stem().string();
-    if (scene.title.empty()) scene.title = scene.name;
+    if (scene.title.empty())
+        scene.title = scene.name;
     return scene;
 }
 

@@ -15,7 +15,7 @@ namespace collide::video::detail {
 
 /// Receives frames on the writer's encoder thread and writes them to a temporary path.
 class FrameSink {
-public:
+  public:
     virtual ~FrameSink() = default;
     /// Encodes one frame of exactly the writer's input size. Throws Error(runtime).
     virtual void consume(const Image& frame) = 0;
@@ -25,12 +25,12 @@ public:
 
 /// Sizes and rates the writer settles on before creating a sink.
 struct SinkGeometry {
-    int input_width = 0;    ///< size of the frames given to write()
+    int input_width = 0;  ///< size of the frames given to write()
     int input_height = 0;
-    int output_width = 0;   ///< encoded size (even for yuv420p)
+    int output_width = 0;  ///< encoded size (even for yuv420p)
     int output_height = 0;
-    int fps = 0;            ///< requested frames per second
-    int frame_step = 1;     ///< keep every frame_step-th frame (GIF rate cap)
+    int fps = 0;         ///< requested frames per second
+    int frame_step = 1;  ///< keep every frame_step-th frame (GIF rate cap)
 };
 
 /// MP4 via libavformat + the codec's encoder. Throws Error(runtime) naming a missing encoder.

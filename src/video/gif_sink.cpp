@@ -1,18 +1,25 @@
-// GIF through libavfilter: all frames go through one graph
-//   buffer -> split -> palettegen ---------> paletteuse -> buffersink -> gif encoder -> gif muxer
-//                   \-------------------------^
-// palettegen emits its palette only at end of stream, so paletteuse holds the frames until then:
-// a palette computed from the whole clip (no banding from a generic 256-colour palette), at the
-// price of keeping the clip in memory (about width * height * 4 bytes per frame). GIFs are for
-// short slide clips, where this is a few hundred MB at most.
+// GIF through libavfilter, two passes so that one palette fits the whole clip:
+//   pass 1 (while frames arrive): buffer -> palettegen -> buffersink   (a 16x16 palette at EOF)
+//   pass 2 (in finish):           buffer (frames re-read) + buffer (palette) -> paletteuse
+//                                 -> buffersink -> gif encoder -> gif muxer
+// Between the passes the kept frames wait in an unnamed spill file beside the output (raw RGBA,
+// unlinked at creation so nothing is left behind even after a crash), not in memory: a 720p GIF
+// of 10 s would otherwise hold ~1 GB.
 
 extern "C" {
 #include <libavfilter/buffersink.h>
 #include <libavfilter/buffersrc.h>
+#include <libavutil/pixdesc.h>
 }
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstring>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "av_handles.hpp"
 #include "frame_sink.hpp"
@@ -20,74 +27,184 @@ extern "C" {
 namespace collide::video::detail {
 namespace {
 
+/// Raw frames of one size appended to an unlinked temporary file and read back by index.
+class SpillFile {
+  public:
+    SpillFile(const std::filesystem::path& beside, std::size_t frame_bytes)
+        : frame_bytes_(frame_bytes) {
+        std::string name = beside.string() + ".frames.XXXXXX";
+        fd_ = ::mkstemp(name.data());
+        if (fd_ < 0)
+            throw_runtime_error("cannot create the GIF frame store: " + errno_text());
+        ::unlink(name.c_str());  // unnamed from now on: the kernel frees it when fd_ closes
+    }
+    ~SpillFile() {
+        if (fd_ >= 0)
+            ::close(fd_);
+    }
+    SpillFile(const SpillFile&) = delete;
+    SpillFile& operator=(const SpillFile&) = delete;
+
+    void append(const std::uint8_t* data) {
+        const auto offset = static_cast<off_t>(frames_ * frame_bytes_);
+        transfer(data, offset, ::pwrite, "write");
+        ++frames_;
+    }
+    void read(std::size_t index, std::uint8_t* data) {
+        transfer(data, static_cast<off_t>(index * frame_bytes_), ::pread, "read");
+    }
+    [[nodiscard]] std::size_t frames() const noexcept { return frames_; }
+
+  private:
+    static std::string errno_text() { return std::strerror(errno); }
+
+    /// Moves one frame between memory and the file at `offset`, retrying short transfers.
+    template <typename Buffer, typename Io>
+    void transfer(Buffer* data, off_t offset, Io io, const char* what) {
+        std::size_t done = 0;
+        while (done < frame_bytes_) {
+            const ssize_t n =
+                io(fd_, data + done, frame_bytes_ - done, offset + static_cast<off_t>(done));
+            if (n < 0 && errno == EINTR)
+                continue;
+            if (n <= 0) {
+                throw_runtime_error(std::string("GIF frame store: cannot ") + what + ": " +
+                                    (n < 0 ? errno_text() : std::string("unexpected end")));
+            }
+            done += static_cast<std::size_t>(n);
+        }
+    }
+
+    int fd_ = -1;
+    std::size_t frame_bytes_ = 0;
+    std::size_t frames_ = 0;
+};
+
+/// A configured filter graph with its named source(s) and sink.
+struct FilterChain {
+    FilterGraphPtr graph;
+    AVFilterContext* source = nullptr;   ///< "buffer@in", owned by graph
+    AVFilterContext* palette = nullptr;  ///< "buffer@palette" (pass 2 only), owned by graph
+    AVFilterContext* sink = nullptr;     ///< "buffersink@out", owned by graph
+};
+
+FilterChain build_chain(const std::string& description) {
+    FilterChain chain;
+    chain.graph.reset(check_alloc(avfilter_graph_alloc(), "AVFilterGraph"));
+    chain.graph->nb_threads = 1;  // palette filters are cheap; leave the cores to x264 & co.
+    AVFilterInOut* inputs = nullptr;
+    AVFilterInOut* outputs = nullptr;
+    const int parsed =
+        avfilter_graph_parse2(chain.graph.get(), description.c_str(), &inputs, &outputs);
+    avfilter_inout_free(&inputs);
+    avfilter_inout_free(&outputs);
+    check_av(parsed, "cannot build the GIF palette filters");
+    check_av(avfilter_graph_config(chain.graph.get(), nullptr), "cannot configure the GIF filters");
+    chain.source = avfilter_graph_get_filter(chain.graph.get(), "buffer@in");
+    chain.palette = avfilter_graph_get_filter(chain.graph.get(), "buffer@palette");
+    chain.sink = avfilter_graph_get_filter(chain.graph.get(), "buffersink@out");
+    if (chain.source == nullptr || chain.sink == nullptr) {
+        throw_runtime_error("GIF filter graph lacks its source or sink");
+    }
+    return chain;
+}
+
+std::string buffer_arguments(int width, int height, int pix_fmt, AVRational time_base) {
+    return "video_size=" + std::to_string(width) + "x" + std::to_string(height) +
+           ":pix_fmt=" + std::to_string(pix_fmt) + ":time_base=" + std::to_string(time_base.num) +
+           "/" + std::to_string(time_base.den) + ":pixel_aspect=1/1";
+}
+
 class GifSink final : public FrameSink {
-public:
+  public:
     GifSink(const SinkGeometry& geometry, const std::filesystem::path& temporary)
-        : geometry_(geometry), temporary_(temporary) {
+        : geometry_(geometry),
+          temporary_(temporary),
+          spill_(temporary, static_cast<std::size_t>(geometry.input_width) *
+                                static_cast<std::size_t>(geometry.input_height) * 4) {
         // Each kept frame lasts frame_step input frames.
         time_base_ = AVRational{geometry.frame_step, geometry.fps};
-        build_graph();
-        open_encoder_and_muxer();
+        // reserve_transparent=0: our frames are opaque, so all 256 entries hold colours.
+        statistics_ = build_chain("buffer@in=" + input_arguments() +
+                                  ",palettegen=reserve_transparent=0:stats_mode=full"
+                                  ",buffersink@out");
         packet_.reset(check_alloc(av_packet_alloc(), "AVPacket"));
         filtered_.reset(check_alloc(av_frame_alloc(), "AVFrame"));
     }
 
     void consume(const Image& frame) override {
         const std::int64_t index = input_index_++;
-        if (index % geometry_.frame_step != 0) return;  // even frame dropping for the rate cap
-        FramePtr rgba(check_alloc(av_frame_alloc(), "AVFrame"));
-        rgba->format = AV_PIX_FMT_RGBA;
-        rgba->width = frame.width;
-        rgba->height = frame.height;
-        check_av(av_frame_get_buffer(rgba.get(), 0), "cannot allocate a GIF frame");
-        for (int row = 0; row < frame.height; ++row) {
-            std::memcpy(rgba->data[0] + row * rgba->linesize[0], frame.pixel(0, row),
-                        frame.stride());
-        }
-        rgba->pts = index / geometry_.frame_step;
-        check_av(av_buffersrc_add_frame(source_, rgba.get()), "GIF palette filter failed");
-        drain_filter();
+        if (index % geometry_.frame_step != 0)
+            return;  // even frame dropping for the rate cap
+        spill_.append(frame.rgba.data());
+        add_frame(statistics_.source, frame.rgba.data(),
+                  static_cast<std::int64_t>(spill_.frames() - 1));
     }
 
     void finish() override {
-        if (input_index_ == 0) throw_runtime_error("no frames were written to the GIF");
-        check_av(av_buffersrc_add_frame(source_, nullptr), "GIF palette filter failed");
-        drain_filter();
+        if (spill_.frames() == 0)
+            throw_runtime_error("no frames were written to the GIF");
+        FramePtr palette = compute_palette();
+        dither_ = build_chain(
+            "buffer@in=" + input_arguments() + "[main];buffer@palette=" +
+            buffer_arguments(palette->width, palette->height, palette->format, time_base_) +
+            "[palette];[main][palette]paletteuse=dither=sierra2_4a:diff_mode=rectangle"
+            ",buffersink@out");
+        // diff_mode=rectangle: only re-dither the changed part, keeping static areas stable.
+        palette->pts = 0;
+        check_av(av_buffersrc_add_frame(dither_.palette, palette.get()), "GIF palette failed");
+        check_av(av_buffersrc_add_frame(dither_.palette, nullptr), "GIF palette failed");
+        open_encoder_and_muxer();
+        std::vector<std::uint8_t> pixels(static_cast<std::size_t>(geometry_.input_width) *
+                                         static_cast<std::size_t>(geometry_.input_height) * 4);
+        for (std::size_t i = 0; i < spill_.frames(); ++i) {
+            spill_.read(i, pixels.data());
+            add_frame(dither_.source, pixels.data(), static_cast<std::int64_t>(i));
+            encode_filtered();
+        }
+        check_av(av_buffersrc_add_frame(dither_.source, nullptr), "GIF dithering failed");
+        encode_filtered();
         encode(nullptr);
         check_av(av_write_trailer(format_.get()), "cannot finish the GIF");
         check_av(avio_closep(&format_->pb), "cannot close the GIF");
     }
 
-private:
-    void build_graph() {
-        graph_.reset(check_alloc(avfilter_graph_alloc(), "AVFilterGraph"));
-        // reserve_transparent=0: our frames are opaque, so all 256 entries hold colours.
-        // diff_mode=rectangle: only re-dither the changed part, keeping static areas stable.
-        const std::string description =
-            "buffer@in=video_size=" + std::to_string(geometry_.input_width) + "x" +
-            std::to_string(geometry_.input_height) + ":pix_fmt=" +
-            std::to_string(static_cast<int>(AV_PIX_FMT_RGBA)) +
-            ":time_base=" + std::to_string(time_base_.num) + "/" + std::to_string(time_base_.den) +
-            ":pixel_aspect=1/1,split[a][b];[a]palettegen=reserve_transparent=0:stats_mode=full[p];"
-            "[b][p]paletteuse=dither=sierra2_4a:diff_mode=rectangle,buffersink@out";
-        AVFilterInOut* inputs = nullptr;
-        AVFilterInOut* outputs = nullptr;
-        const int parsed =
-            avfilter_graph_parse2(graph_.get(), description.c_str(), &inputs, &outputs);
-        avfilter_inout_free(&inputs);
-        avfilter_inout_free(&outputs);
-        check_av(parsed, "cannot build the GIF palette filters");
-        check_av(avfilter_graph_config(graph_.get(), nullptr), "cannot configure the GIF filters");
-        source_ = avfilter_graph_get_filter(graph_.get(), "buffer@in");
-        sink_ = avfilter_graph_get_filter(graph_.get(), "buffersink@out");
-        if (source_ == nullptr || sink_ == nullptr) {
-            throw_runtime_error("GIF filter graph lacks its source or sink");
+  private:
+    std::string input_arguments() const {
+        return buffer_arguments(geometry_.input_width, geometry_.input_height, AV_PIX_FMT_RGBA,
+                                time_base_);
+    }
+
+    /// Copies RGBA pixels into a new frame with timestamp `pts` and hands it to `source`.
+    void add_frame(AVFilterContext* source, const std::uint8_t* rgba, std::int64_t pts) {
+        FramePtr frame(check_alloc(av_frame_alloc(), "AVFrame"));
+        frame->format = AV_PIX_FMT_RGBA;
+        frame->width = geometry_.input_width;
+        frame->height = geometry_.input_height;
+        check_av(av_frame_get_buffer(frame.get(), 0), "cannot allocate a GIF frame");
+        const std::size_t row_bytes = static_cast<std::size_t>(geometry_.input_width) * 4;
+        for (int row = 0; row < geometry_.input_height; ++row) {
+            std::memcpy(frame->data[0] + row * frame->linesize[0], rgba + row * row_bytes,
+                        row_bytes);
         }
+        frame->pts = pts;
+        check_av(av_buffersrc_add_frame(source, frame.get()), "GIF palette filter failed");
+    }
+
+    /// Ends pass 1 and returns palettegen's single output frame.
+    FramePtr compute_palette() {
+        check_av(av_buffersrc_add_frame(statistics_.source, nullptr), "GIF palette failed");
+        FramePtr palette(check_alloc(av_frame_alloc(), "AVFrame"));
+        check_av(av_buffersink_get_frame(statistics_.sink, palette.get()),
+                 "GIF palette generation failed");
+        statistics_ = FilterChain{};  // pass 1 done: free its graph
+        return palette;
     }
 
     void open_encoder_and_muxer() {
         const AVCodec* gif = avcodec_find_encoder(AV_CODEC_ID_GIF);
-        if (gif == nullptr) throw_runtime_error("the GIF encoder is not available in this FFmpeg");
+        if (gif == nullptr)
+            throw_runtime_error("the GIF encoder is not available in this FFmpeg");
         AVFormatContext* format = nullptr;
         check_av(avformat_alloc_output_context2(&format, nullptr, "gif", temporary_.c_str()),
                  "cannot create a GIF muxer");
@@ -107,12 +224,13 @@ private:
         check_av(avformat_write_header(format_.get(), nullptr), "cannot write the GIF header");
     }
 
-    /// Encodes every frame paletteuse has ready (none until palettegen saw the end of stream).
-    void drain_filter() {
+    /// Encodes every frame paletteuse has ready.
+    void encode_filtered() {
         while (true) {
-            const int got = av_buffersink_get_frame(sink_, filtered_.get());
-            if (got == AVERROR(EAGAIN) || got == AVERROR_EOF) return;
-            check_av(got, "GIF palette filter failed");
+            const int got = av_buffersink_get_frame(dither_.sink, filtered_.get());
+            if (got == AVERROR(EAGAIN) || got == AVERROR_EOF)
+                return;
+            check_av(got, "GIF dithering failed");
             filtered_->pict_type = AV_PICTURE_TYPE_NONE;
             const int sent = avcodec_send_frame(codec_.get(), filtered_.get());
             av_frame_unref(filtered_.get());
@@ -129,7 +247,8 @@ private:
     void receive_packets() {
         while (true) {
             const int received = avcodec_receive_packet(codec_.get(), packet_.get());
-            if (received == AVERROR(EAGAIN) || received == AVERROR_EOF) return;
+            if (received == AVERROR(EAGAIN) || received == AVERROR_EOF)
+                return;
             check_av(received, "GIF encoding failed");
             av_packet_rescale_ts(packet_.get(), codec_->time_base, stream_->time_base);
             packet_->stream_index = stream_->index;
@@ -140,10 +259,10 @@ private:
 
     SinkGeometry geometry_;
     std::filesystem::path temporary_;
+    SpillFile spill_;
     AVRational time_base_{1, 25};
-    FilterGraphPtr graph_;
-    AVFilterContext* source_ = nullptr;  ///< owned by graph_
-    AVFilterContext* sink_ = nullptr;    ///< owned by graph_
+    FilterChain statistics_;  ///< pass 1: palettegen
+    FilterChain dither_;      ///< pass 2: paletteuse
     FormatContextPtr format_;
     CodecContextPtr codec_;
     AVStream* stream_ = nullptr;  ///< owned by format_

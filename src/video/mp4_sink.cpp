@@ -7,6 +7,7 @@ extern "C" {
 }
 
 #include <string>
+#include <string_view>
 
 #include "av_handles.hpp"
 #include "frame_sink.hpp"
@@ -15,9 +16,11 @@ extern "C" {
 namespace collide::video::detail {
 namespace {
 
-// RGBA -> yuv420p bands converted in parallel: 2 = the machine's cores; x264's own threads
-// overlap with the next frame's conversion anyway.
-constexpr int conversion_threads = 2;
+// RGBA -> yuv420p on the encoder thread alone: it takes ~2 ms CPU per 1080p frame, and while the
+// pipeline runs, simulation, rendering and x264's threads keep every core busy, so splitting it
+// into bands only adds waiting (bench_video on the loaded 2-core machine: 2 bands 4.1 ms wall vs
+// 3.2 ms for 1). rgba_to_yuv420_bt709 supports bands for machines with cores to spare.
+constexpr int conversion_threads = 1;
 
 struct CodecDefaults {
     const char* preset;
@@ -28,9 +31,12 @@ struct CodecDefaults {
 // (docs/benchmarks.md, section Video): visually lossless at 720p/1080p, a fraction of real time.
 CodecDefaults defaults_for(VideoCodec codec) {
     switch (codec) {
-        case VideoCodec::h264: return {"veryfast", 20};
-        case VideoCodec::hevc: return {"fast", 24};
-        case VideoCodec::av1: return {"10", 35};
+        case VideoCodec::h264:
+            return {"veryfast", 20};
+        case VideoCodec::hevc:
+            return {"fast", 24};
+        case VideoCodec::av1:
+            return {"10", 35};
     }
     return {"", -1};
 }
@@ -51,7 +57,7 @@ const AVCodec* find_encoder(const VideoOptions& options) {
 }
 
 class Mp4Sink final : public FrameSink {
-public:
+  public:
     Mp4Sink(const VideoOptions& options, const SinkGeometry& geometry,
             const std::filesystem::path& temporary)
         : options_(options), geometry_(geometry), temporary_(temporary) {
@@ -65,10 +71,12 @@ public:
     }
 
     // libsvtav1 (1.4.1 in Debian 12) deadlocks when closed without ever receiving a frame; the
-    // encoder is therefore only opened by the first frame, and an opened one is drained before it
-    // is freed (best effort, errors ignored: this is the abort path).
+    // encoder is therefore only opened by the first frame, and an abandoned SVT-AV1 encoder is
+    // also sent its end of stream and drained before it is freed (best effort, errors ignored:
+    // this is the abort path). Other encoders are freed at once: draining x264's look-ahead
+    // would only delay the exit after Ctrl-C.
     ~Mp4Sink() override {
-        if (opened_ && !finished_) {
+        if (opened_ && !finished_ && std::string_view(encoder_->name) == "libsvtav1") {
             if (avcodec_send_frame(codec_.get(), nullptr) >= 0) {
                 while (avcodec_receive_packet(codec_.get(), packet_.get()) >= 0) {
                     av_packet_unref(packet_.get());
@@ -78,12 +86,13 @@ public:
     }
 
     void consume(const Image& input) override {
-        if (!opened_) open();
-        const Image& frame = input.width == geometry_.output_width &&
-                                     input.height == geometry_.output_height
-                                 ? input
-                                 : (padded_ = pad_by_edge_replication(input, geometry_.output_width,
-                                                                      geometry_.output_height));
+        if (!opened_)
+            open();
+        const Image& frame =
+            input.width == geometry_.output_width && input.height == geometry_.output_height
+                ? input
+                : (padded_ = pad_by_edge_replication(input, geometry_.output_width,
+                                                     geometry_.output_height));
         // The encoder may still hold a reference to the previous frame's buffers.
         check_av(av_frame_make_writable(frame_.get()), "cannot reuse the video frame buffer");
         const Yuv420View planes{frame_->data[0],     frame_->data[1],     frame_->data[2],
@@ -95,14 +104,15 @@ public:
     }
 
     void finish() override {
-        if (!opened_) throw_runtime_error("no frames were written to '" + shown() + "'");
+        if (!opened_)
+            throw_runtime_error("no frames were written to '" + shown() + "'");
         encode(nullptr);  // flush: the encoder holds look-ahead frames
         finished_ = true;
         check_av(av_write_trailer(format_.get()), "cannot finish '" + shown() + "'");
         check_av(avio_closep(&format_->pb), "cannot close '" + shown() + "'");
     }
 
-private:
+  private:
     std::string shown() const { return options_.path.string(); }
 
     void configure_encoder() {
@@ -128,15 +138,19 @@ private:
         const int crf = options_.crf < 0 ? defaults.crf : options_.crf;
         // Options the chosen encoder lacks are ignored (AV_OPT_SEARCH_CHILDREN not needed:
         // priv_data holds them); av_opt_set only fails for unknown names or bad values.
-        if (!preset.empty()) set_private_option("preset", preset);
+        if (!preset.empty())
+            set_private_option("preset", preset);
         set_private_option("crf", std::to_string(crf));
-        if (options_.codec == VideoCodec::hevc) set_private_option("x265-params", "log-level=error");
+        if (options_.codec == VideoCodec::hevc)
+            set_private_option("x265-params", "log-level=error");
     }
 
     void set_private_option(const char* name, const std::string& value) {
-        if (codec_->priv_data == nullptr) return;
+        if (codec_->priv_data == nullptr)
+            return;
         const int result = av_opt_set(codec_->priv_data, name, value.c_str(), 0);
-        if (result == AVERROR_OPTION_NOT_FOUND) return;  // e.g. a user-chosen encoder without CRF
+        if (result == AVERROR_OPTION_NOT_FOUND)
+            return;  // e.g. a user-chosen encoder without CRF
         check_av(result, std::string("encoder option ") + name + "=" + value);
     }
 
@@ -173,7 +187,8 @@ private:
         check_av(avcodec_send_frame(codec_.get(), frame), "encoding failed");
         while (true) {
             const int received = avcodec_receive_packet(codec_.get(), packet_.get());
-            if (received == AVERROR(EAGAIN) || received == AVERROR_EOF) return;
+            if (received == AVERROR(EAGAIN) || received == AVERROR_EOF)
+                return;
             check_av(received, "encoding failed");
             av_packet_rescale_ts(packet_.get(), codec_->time_base, stream_->time_base);
             packet_->stream_index = stream_->index;

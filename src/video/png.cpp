@@ -5,12 +5,12 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <vector>
-#include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "collide/error.hpp"
 #include "collide/video/output.hpp"
@@ -30,14 +30,15 @@ void write_all(const std::filesystem::path& file, const std::vector<unsigned cha
                const std::filesystem::path& shown_as) {
     std::FILE* stream = std::fopen(file.c_str(), "wb");
     if (stream == nullptr) {
-        throw_runtime_error("cannot write PNG '" + shown_as.string() + "': " + std::strerror(errno));
+        throw_runtime_error("cannot write PNG '" + shown_as.string() +
+                            "': " + std::strerror(errno));
     }
     const std::size_t written = std::fwrite(bytes.data(), 1, bytes.size(), stream);
     const int write_errno = errno;
     const bool closed = std::fclose(stream) == 0;
     if (written != bytes.size() || !closed) {
-        throw_runtime_error("cannot write PNG '" + shown_as.string() + "': " +
-                            std::strerror(written != bytes.size() ? write_errno : errno));
+        throw_runtime_error("cannot write PNG '" + shown_as.string() +
+                            "': " + std::strerror(written != bytes.size() ? write_errno : errno));
     }
 }
 
@@ -52,7 +53,8 @@ void write_png_file(const Image& image, const std::filesystem::path& path,
     std::vector<unsigned char> bytes;
     const int ok = stbi_write_png_to_func(append_bytes, &bytes, image.width, image.height, 4,
                                           image.rgba.data(), static_cast<int>(image.stride()));
-    if (ok == 0) throw_runtime_error("cannot encode PNG '" + shown_as.string() + "'");
+    if (ok == 0)
+        throw_runtime_error("cannot encode PNG '" + shown_as.string() + "'");
     write_all(path, bytes, shown_as);
 }
 
@@ -60,7 +62,7 @@ namespace {
 
 /// Writes each frame as its own PNG inside the writer's temporary directory.
 class PngSequenceSink final : public FrameSink {
-public:
+  public:
     PngSequenceSink(std::string stem, std::filesystem::path directory)
         : stem_(std::move(stem)), directory_(std::move(directory)) {}
 
@@ -73,7 +75,7 @@ public:
     }
     void finish() override {}  // every file is complete when consume() returns
 
-private:
+  private:
     std::string stem_;
     std::filesystem::path directory_;
     std::int64_t index_ = 0;
@@ -107,8 +109,8 @@ Image read_png(const std::filesystem::path& path) {
         stbi_load(path.c_str(), &width, &height, &channels_in_file, 4), stbi_image_free);
     if (!pixels) {
         const char* reason = stbi_failure_reason();
-        throw_input_error("cannot read PNG '" + path.string() + "': " +
-                          (reason != nullptr ? reason : "unknown error"));
+        throw_input_error("cannot read PNG '" + path.string() +
+                          "': " + (reason != nullptr ? reason : "unknown error"));
     }
     Image image(width, height);
     std::copy_n(pixels.get(), image.rgba.size(), image.rgba.begin());

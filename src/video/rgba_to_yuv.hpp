@@ -36,12 +36,12 @@ void rgba_to_yuv420_bt709(const std::uint8_t* rgba, std::ptrdiff_t rgba_stride, 
 /// sws_setColorspaceDetails; the default would be BT.601), optionally in `bands` horizontal bands
 /// with one SwsContext each, converted on `bands` threads. Move-only.
 class SwsConverter {
-public:
+  public:
     /// `flags`: SWS_BICUBIC (libswscale's default), SWS_FAST_BILINEAR, ... Throws Error(runtime).
     SwsConverter(int width, int height, int flags, int bands);
     void convert(const std::uint8_t* rgba, std::ptrdiff_t rgba_stride, Yuv420View out);
 
-private:
+  private:
     int width_ = 0;
     int height_ = 0;
     int band_rows_ = 0;  ///< rows per band (even); the last band takes the remainder

@@ -23,7 +23,8 @@ Image pad_by_edge_replication(const Image& image, int width, int height) {
         std::uint8_t* out = padded.pixel(0, row);
         std::memcpy(out, image.pixel(0, source_row), image.stride());
         const std::uint8_t* last = image.pixel(image.width - 1, source_row);
-        for (int x = image.width; x < width; ++x) std::memcpy(padded.pixel(x, row), last, 4);
+        for (int x = image.width; x < width; ++x)
+            std::memcpy(padded.pixel(x, row), last, 4);
     }
     return padded;
 }
@@ -36,7 +37,9 @@ std::string size_text(int width, int height) {
     return std::to_string(width) + "x" + std::to_string(height);
 }
 
-[[noreturn]] void throw_interrupted() { throw_runtime_error("interrupted; partial output removed"); }
+[[noreturn]] void throw_interrupted() {
+    throw_runtime_error("interrupted; partial output removed");
+}
 
 }  // namespace
 
@@ -44,7 +47,7 @@ std::string size_text(int width, int height) {
 /// bounded queue. Member order matters: the thread is joined (in ~Impl) before the sink dies, and
 /// the sink (which closes its files) dies before the temporary is removed.
 class VideoWriter::Impl {
-public:
+  public:
     explicit Impl(VideoOptions options) : options_(std::move(options)) {
         options_.validate();
         const bool sequence = options_.format == VideoFormat::png_sequence;
@@ -62,14 +65,17 @@ public:
             abort_ = true;
         }
         changed_.notify_all();
-        if (worker_.joinable()) worker_.join();
+        if (worker_.joinable())
+            worker_.join();
         sink_.reset();  // closes files before the temporary is removed
         temporary_.discard();
     }
 
     void write(Image frame) {
-        if (finished_) throw_runtime_error("VideoWriter::write after finish()");
-        if (cancelled()) throw_interrupted();
+        if (finished_)
+            throw_runtime_error("VideoWriter::write after finish()");
+        if (cancelled())
+            throw_interrupted();
         if (frame.width != geometry_.input_width || frame.height != geometry_.input_height ||
             frame.rgba.size() != frame.stride() * static_cast<std::size_t>(frame.height)) {
             throw_runtime_error("video frame is " + size_text(frame.width, frame.height) +
@@ -80,7 +86,8 @@ public:
         changed_.wait(lock, [&] {
             return failure_ || queue_.size() < static_cast<std::size_t>(options_.queue_frames);
         });
-        if (failure_) std::rethrow_exception(failure_);
+        if (failure_)
+            std::rethrow_exception(failure_);
         queue_.push_back(std::move(frame));
         ++frames_written_;
         lock.unlock();
@@ -88,7 +95,8 @@ public:
     }
 
     void finish() {
-        if (finished_) throw_runtime_error("VideoWriter::finish called twice");
+        if (finished_)
+            throw_runtime_error("VideoWriter::finish called twice");
         finished_ = true;  // whatever happens next, no more frames
         {
             std::lock_guard lock(mutex_);
@@ -96,8 +104,10 @@ public:
         }
         changed_.notify_all();
         worker_.join();
-        if (failure_) std::rethrow_exception(failure_);
-        if (cancelled()) throw_interrupted();
+        if (failure_)
+            std::rethrow_exception(failure_);
+        if (cancelled())
+            throw_interrupted();
         if (frames_written_ == 0) {
             throw_runtime_error("no frames were written to '" + options_.path.string() + "'");
         }
@@ -109,8 +119,10 @@ public:
     const detail::SinkGeometry& geometry() const noexcept { return geometry_; }
     std::int64_t frames_written() const noexcept { return frames_written_; }
 
-private:
-    bool cancelled() const noexcept { return options_.cancel != nullptr && options_.cancel->load(); }
+  private:
+    bool cancelled() const noexcept {
+        return options_.cancel != nullptr && options_.cancel->load();
+    }
 
     void settle_geometry() {
         geometry_.input_width = options_.width;
@@ -136,8 +148,8 @@ private:
             notices_.push_back("GIF frame rate reduced from " + std::to_string(options_.fps) +
                                " to " + std::to_string(options_.fps / geometry_.frame_step) +
                                (options_.fps % geometry_.frame_step != 0 ? ".5" : "") +
-                               " fps (keeping every " + std::to_string(geometry_.frame_step) +
-                               " frame; GIF viewers do not play faster than " +
+                               " fps (keeping 1 frame in " + std::to_string(geometry_.frame_step) +
+                               "; GIF viewers do not play faster than " +
                                std::to_string(max_gif_fps) + " fps)");
         }
     }
@@ -146,7 +158,8 @@ private:
         switch (options_.format) {
             case VideoFormat::mp4:
                 return detail::make_mp4_sink(options_, geometry_, temporary_.path());
-            case VideoFormat::gif: return detail::make_gif_sink(geometry_, temporary_.path());
+            case VideoFormat::gif:
+                return detail::make_gif_sink(geometry_, temporary_.path());
             case VideoFormat::png_sequence:
                 return detail::make_png_sequence_sink(options_.path.stem().string(),
                                                       temporary_.path());
@@ -163,12 +176,14 @@ private:
                 {
                     std::unique_lock lock(mutex_);
                     changed_.wait(lock, [&] { return abort_ || closing_ || !queue_.empty(); });
-                    if (abort_ || queue_.empty()) return;  // aborted, or closed and drained
+                    if (abort_ || queue_.empty())
+                        return;  // aborted, or closed and drained
                     frame = std::move(queue_.front());
                     queue_.pop_front();
                 }
                 changed_.notify_all();
-                if (cancelled()) throw_interrupted();
+                if (cancelled())
+                    throw_interrupted();
                 sink_->consume(frame);
             }
         } catch (...) {
@@ -199,26 +214,41 @@ private:
     bool finished_ = false;
 };
 
-VideoWriter::VideoWriter(VideoOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {}
+VideoWriter::VideoWriter(VideoOptions options)
+    : impl_(std::make_unique<Impl>(std::move(options))) {}
 VideoWriter::~VideoWriter() = default;
 VideoWriter::VideoWriter(VideoWriter&&) noexcept = default;
 VideoWriter& VideoWriter::operator=(VideoWriter&&) noexcept = default;
 
-void VideoWriter::write(Image frame) { impl_->write(std::move(frame)); }
-void VideoWriter::finish() { impl_->finish(); }
-const std::vector<std::string>& VideoWriter::notices() const noexcept { return impl_->notices(); }
-int VideoWriter::output_width() const noexcept { return impl_->geometry().output_width; }
-int VideoWriter::output_height() const noexcept { return impl_->geometry().output_height; }
+void VideoWriter::write(Image frame) {
+    impl_->write(std::move(frame));
+}
+void VideoWriter::finish() {
+    impl_->finish();
+}
+const std::vector<std::string>& VideoWriter::notices() const noexcept {
+    return impl_->notices();
+}
+int VideoWriter::output_width() const noexcept {
+    return impl_->geometry().output_width;
+}
+int VideoWriter::output_height() const noexcept {
+    return impl_->geometry().output_height;
+}
 double VideoWriter::output_fps() const noexcept {
     const detail::SinkGeometry& geometry = impl_->geometry();
     return static_cast<double>(geometry.fps) / geometry.frame_step;
 }
-std::int64_t VideoWriter::frames_written() const noexcept { return impl_->frames_written(); }
+std::int64_t VideoWriter::frames_written() const noexcept {
+    return impl_->frames_written();
+}
 
 bool has_encoder(std::string_view name) {
     return avcodec_find_encoder_by_name(std::string(name).c_str()) != nullptr;
 }
 
-void set_libav_verbose(bool verbose) { av_log_set_level(verbose ? AV_LOG_INFO : AV_LOG_ERROR); }
+void set_libav_verbose(bool verbose) {
+    av_log_set_level(verbose ? AV_LOG_INFO : AV_LOG_ERROR);
+}
 
 }  // namespace collide::video

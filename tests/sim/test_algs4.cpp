@@ -37,7 +37,8 @@ bool contains(const std::string& haystack, const std::string& needle) {
 }  // namespace
 
 TEST_CASE("algs4: reads every column, in the unit box with walls") {
-    const ParsedScene p = parse("2\n0.25 0.5 0.01 -0.02 0.05 2.5 10 20 30\n0.75 0.5 0 0 0.05 1 255 0 7\n");
+    const ParsedScene p =
+        parse("2\n0.25 0.5 0.01 -0.02 0.05 2.5 10 20 30\n0.75 0.5 0 0 0.05 1 255 0 7\n");
     REQUIRE(p.scene.discs.size() == 2);
     const Disc& d = p.scene.discs[0];
     CHECK(d.position == Vec2{0.25, 0.5});
@@ -53,8 +54,9 @@ TEST_CASE("algs4: reads every column, in the unit box with walls") {
 }
 
 TEST_CASE("algs4: untidy layout is accepted (CRLF, blank lines, indentation, no final newline)") {
-    const std::string text = "\r\n  3\r\n   .5 .5 1.933140129359508E-4 -1.8E+2 .01 1e5 0 0 0\r\n\r\n"
-                             "\t0.1\t0.1 +0.5 -0.0 0.01 1.0 1 2 3   \n\n0.9 0.9 0 0 0.01 1 4 5 6";
+    const std::string text =
+        "\r\n  3\r\n   .5 .5 1.933140129359508E-4 -1.8E+2 .01 1e5 0 0 0\r\n\r\n"
+        "\t0.1\t0.1 +0.5 -0.0 0.01 1.0 1 2 3   \n\n0.9 0.9 0 0 0.01 1 4 5 6";
     const ParsedScene p = parse(text);
     REQUIRE(p.scene.discs.size() == 3);
     CHECK(p.scene.discs[0].velocity.x == doctest::Approx(1.933140129359508e-4));
@@ -73,14 +75,22 @@ TEST_CASE("algs4: content errors name file, line and field") {
     CHECK(contains(parse_error("two\n"), "t.txt:1: N: expected the number of discs"));
     CHECK(contains(parse_error("-1\n"), "t.txt:1: N"));
     CHECK(contains(parse_error("1 2\n"), "t.txt:1: N"));
-    CHECK(contains(parse_error("1\n0.5 0.5 0 0 0.1 1 0 0\n"), "t.txt:2: expected 9 columns (rx ry vx vy radius mass r g b), got 8"));
+    CHECK(contains(parse_error("\x01\xff\xfe binary\n"), "got '??? binary'"));
+    CHECK(contains(parse_error("1\n0.5 0.5 0 0 0.1 1 0 0\n"),
+                   "t.txt:2: expected 9 columns (rx ry vx vy radius mass r g b), got 8"));
     CHECK(contains(parse_error("1\n0.5 0.5 0 0 0.1 1 0 0 0 0\n"), "got 10"));
-    CHECK(contains(parse_error("1\n0.5 0.5 0 0 abc 1 0 0 0\n"), "t.txt:2: radius: 'abc' is not a number"));
-    CHECK(contains(parse_error("1\n0.5 0.5 0 0 0.1 1,5 0 0 0\n"), "t.txt:2: mass: '1,5' is not a number"));
-    CHECK(contains(parse_error("1\n0.5 NaN 0 0 0.1 1 0 0 0\n"), "t.txt:2: ry: not a finite number"));
-    CHECK(contains(parse_error("1\n0.5 0.5 inf 0 0.1 1 0 0 0\n"), "t.txt:2: vx: not a finite number"));
-    CHECK(contains(parse_error("1\n0.5 0.5 0 0 0.1 1 0 300 0\n"), "t.txt:2: g: colour must be an integer 0..255"));
-    CHECK(contains(parse_error("1\n0.5 0.5 0 0 0.1 1 0 0 1.5\n"), "t.txt:2: b: colour must be an integer 0..255"));
+    CHECK(contains(parse_error("1\n0.5 0.5 0 0 abc 1 0 0 0\n"),
+                   "t.txt:2: radius: 'abc' is not a number"));
+    CHECK(contains(parse_error("1\n0.5 0.5 0 0 0.1 1,5 0 0 0\n"),
+                   "t.txt:2: mass: '1,5' is not a number"));
+    CHECK(
+        contains(parse_error("1\n0.5 NaN 0 0 0.1 1 0 0 0\n"), "t.txt:2: ry: not a finite number"));
+    CHECK(contains(parse_error("1\n0.5 0.5 inf 0 0.1 1 0 0 0\n"),
+                   "t.txt:2: vx: not a finite number"));
+    CHECK(contains(parse_error("1\n0.5 0.5 0 0 0.1 1 0 300 0\n"),
+                   "t.txt:2: g: colour must be an integer 0..255"));
+    CHECK(contains(parse_error("1\n0.5 0.5 0 0 0.1 1 0 0 1.5\n"),
+                   "t.txt:2: b: colour must be an integer 0..255"));
     CHECK(contains(parse_error("1\n0.5 0.5 0 0 0.1 1 0 0 -1\n"), "t.txt:2: b"));
     CHECK(contains(parse_error("1\n0.5 0.5 0 0 0.1 +-1 0 0 0\n"), "t.txt:2: mass"));
 }
@@ -94,13 +104,19 @@ TEST_CASE("algs4: N must agree with the disc lines") {
 }
 
 TEST_CASE("algs4: an absurd N does not allocate before the lines disagree") {
-    CHECK(contains(parse_error("1000000000000\n0.5 0.5 0 0 0.1 1 0 0 0\n"), "N = 1000000000000 but 1 disc lines follow"));
+    CHECK(contains(parse_error("1000000000000\n0.5 0.5 0 0 0.1 1 0 0 0\n"),
+                   "N = 1000000000000 but 1 disc lines follow"));
     CHECK(contains(parse_error("99999999999999999999999\n"), "t.txt:1: N"));
 }
 
 TEST_CASE("algs4: write then read gives the same scene bit for bit") {
     Scene scene;
-    scene.discs.push_back({{0.1 + 1e-17, 1.0 / 3.0}, {-2.5e-7, 1.933140129359508e-4}, 0.0123456789012345, 13800.0, {1, 2, 3}, ""});
+    scene.discs.push_back({{0.1 + 1e-17, 1.0 / 3.0},
+                           {-2.5e-7, 1.933140129359508e-4},
+                           0.0123456789012345,
+                           13800.0,
+                           {1, 2, 3},
+                           ""});
     scene.discs.push_back({{0.7, 0.7}, {0.0, -0.0}, 0.2, 1e5, {255, 254, 0}, ""});
     std::stringstream s;
     write_algs4(s, scene);
@@ -116,7 +132,8 @@ TEST_CASE("algs4: write then read gives the same scene bit for bit") {
 }
 
 TEST_CASE("algs4: read_algs4_file validates and names the scene after the file") {
-    const std::filesystem::path path = std::filesystem::temp_directory_path() / "collide_test_algs4_overlap.txt";
+    const std::filesystem::path path =
+        std::filesystem::temp_directory_path() / "collide_test_algs4_overlap.txt";
     {
         std::ofstream out(path);
         out << "2\n0.5 0.5 0 0 0.1 1 0 0 0\n0.6 0.5 0 0 0.1 1 0 0 0\n";
@@ -148,7 +165,8 @@ TEST_CASE("algs4: the course's 25 files load, or are rejected for the right reas
     int rejected = 0;
     for (const auto& entry : std::filesystem::directory_iterator(dir)) {
         const std::string name = entry.path().filename().string();
-        if (entry.path().extension() != ".txt" || name == "PROVENANCE.txt") continue;
+        if (entry.path().extension() != ".txt" || name == "PROVENANCE.txt")
+            continue;
         CAPTURE(name);
         std::string error;
         try {

@@ -123,6 +123,6 @@ TEST_CASE("IndexedHeapQueue recycles handles and keeps the position map consiste
         CHECK(q.pop() == 100 + i);
     }
     CHECK(q.heap().capacity() == 64);  // freed handles were reused
-    CHECK(q.heap().check_invariants());
+    CHECK(q.check_invariants());
     CHECK(q.array().size() == 30);
 }

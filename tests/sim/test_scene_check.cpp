@@ -33,7 +33,9 @@ std::string validation_error(const Scene& scene, const SceneOrigin& origin = {})
     return "";
 }
 
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+bool contains(const std::string& s, const std::string& part) {
+    return s.find(part) != std::string::npos;
+}
 
 bool brute_force_overlap(const Scene& scene) {
     for (std::size_t i = 0; i < scene.discs.size(); ++i) {
@@ -41,7 +43,8 @@ bool brute_force_overlap(const Scene& scene) {
             const Disc& a = scene.discs[i];
             const Disc& b = scene.discs[j];
             const double limit = (a.radius + b.radius) * (1.0 - contact_tolerance);
-            if (norm2(scene.box.displacement(a.position, b.position)) < limit * limit) return true;
+            if (norm2(scene.box.displacement(a.position, b.position)) < limit * limit)
+                return true;
         }
     }
     return false;
@@ -95,7 +98,8 @@ TEST_CASE("validation: every disc outside a walled box is listed with its origin
     origin.add({0, 3, "f.txt", {2, 3, 4}, 0, "disc"});
     const std::string msg = validation_error(s, origin);
     CHECK(contains(msg, "2 discs lie outside the box [0, 1] x [0, 1]"));
-    CHECK(contains(msg, "f.txt:3: disc 2: centre (0.95, 0.5), radius 0.1: right edge at x = 1.05 > 1"));
+    CHECK(contains(msg,
+                   "f.txt:3: disc 2: centre (0.95, 0.5), radius 0.1: right edge at x = 1.05 > 1"));
     CHECK(contains(msg, "f.txt:4: disc 3"));
     CHECK(!contains(msg, "f.txt:2:"));
     // a periodic box has no outside
@@ -106,7 +110,8 @@ TEST_CASE("validation: every disc outside a walled box is listed with its origin
 
 TEST_CASE("validation: long lists of problems are cut short") {
     Scene s;
-    for (int i = 0; i < 20; ++i) s.discs.push_back(disc(2.0 + i, 0.5, 0.1));
+    for (int i = 0; i < 20; ++i)
+        s.discs.push_back(disc(2.0 + i, 0.5, 0.1));
     const std::string msg = validation_error(s);
     CHECK(contains(msg, "20 discs lie outside"));
     CHECK(contains(msg, "and 15 more"));
@@ -148,7 +153,8 @@ TEST_CASE("validation: a big disc among many small ones (one tracer) is checked 
             const double x = 0.0125 + 0.025 * i;
             const double y = 0.0125 + 0.025 * j;
             const double distance = std::hypot(x - 0.5, y - 0.5);
-            if (distance < 0.25) continue;
+            if (distance < 0.25)
+                continue;
             nearest = std::min(nearest, distance);
             s.discs.push_back(disc(x, y, 0.005));
         }
@@ -170,7 +176,8 @@ TEST_CASE("validation: the grid agrees with the brute-force pair check on random
         const int n = 5 + trial;
         for (int i = 0; i < n; ++i) {
             const double r = 0.005 + 0.05 * u(rng) * u(rng);  // mostly small, a few big
-            Disc d = disc(r + (s.box.width - 2 * r) * u(rng), r + (s.box.height - 2 * r) * u(rng), r);
+            Disc d =
+                disc(r + (s.box.width - 2 * r) * u(rng), r + (s.box.height - 2 * r) * u(rng), r);
             s.discs.push_back(d);
         }
         CAPTURE(trial);

@@ -3,8 +3,8 @@
 // output and keeping what was at the destination before.
 
 #include <doctest/doctest.h>
-
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -153,7 +153,8 @@ TEST_CASE("a writer destroyed without finish() deletes its temporary and keeps t
     write_bytes(dir / "out.mp4", "previous video");
     {
         VideoWriter writer(small_options(dir / "out.mp4"));
-        for (int i = 0; i < 3; ++i) writer.write(test_pattern(160, 90, i));
+        for (int i = 0; i < 3; ++i)
+            writer.write(test_pattern(160, 90, i));
         CHECK(dir.entries().size() == 2);  // the destination and our hidden temporary
     }
     CHECK(read_bytes(dir / "out.mp4") == "previous video");
@@ -185,8 +186,10 @@ TEST_CASE("the cancel hook stops write() and finish() with an error, leaving no 
             check_error([&] { writer.finish(); }, collide::ErrorKind::runtime, "interrupted");
         }
         CHECK(dir.entries().size() == 1);
-        if (format != VideoFormat::png_sequence) CHECK(read_bytes(path) == "previous");
-        if (format == VideoFormat::png_sequence) CHECK(std::filesystem::is_empty(path));
+        if (format != VideoFormat::png_sequence)
+            CHECK(read_bytes(path) == "previous");
+        if (format == VideoFormat::png_sequence)
+            CHECK(std::filesystem::is_empty(path));
     }
 }
 
@@ -207,8 +210,10 @@ int interrupt_helper_run(const std::filesystem::path& output, int signal_number,
     // encode for a while, so the signal lands in the middle of an encode.
     bool started = false;
     for (int attempt = 0; attempt < 2000 && !started; ++attempt) {
-        for (const auto& name : dir.entries()) started = started || name.front() == '.';
-        if (!started) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        for (const auto& name : dir.entries())
+            started = started || name.front() == '.';
+        if (!started)
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
     CHECK(started);
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
@@ -231,5 +236,50 @@ TEST_CASE("SIGINT and SIGTERM during an encode: exit non-zero, no partial file, 
         CHECK(WEXITSTATUS(status) == 1);
         CHECK(read_bytes(output) == "previous video");
         CHECK(dir.entries() == std::vector<std::string>{"out.mp4"});
+    }
+}
+
+TEST_CASE("a full disk is a clear runtime error, not a crash, and leaves no partial file") {
+    // A file size limit (RLIMIT_FSIZE) makes writes fail like a full disk (EFBIG instead of
+    // ENOSPC) without needing a small filesystem; in a child process, so the limit stays there.
+    for (const VideoFormat format :
+         {VideoFormat::mp4, VideoFormat::gif, VideoFormat::png_sequence}) {
+        CAPTURE(to_string(format));
+        ScratchDirectory dir;
+        const auto path = dir / (format == VideoFormat::png_sequence ? "seq" : "out.bin");
+        write_bytes(dir / "keep.txt", "unrelated");
+        const pid_t child = fork();
+        REQUIRE(child >= 0);
+        if (child == 0) {
+            signal(SIGXFSZ, SIG_IGN);        // get EFBIG from write(2) instead of being killed
+            const rlimit limit{1024, 1024};  // below one frame of any format
+            setrlimit(RLIMIT_FSIZE, &limit);
+            int code = 3;  // no error at all
+            try {
+                VideoOptions options = small_options(path);
+                options.format = format;
+                options.crf = 0;  // lossless: big packets
+                VideoWriter writer(options);
+                for (int i = 0; i < 40; ++i)
+                    writer.write(test_pattern(160, 90, i));
+                writer.finish();
+            } catch (const collide::Error& e) {
+                const std::string message = e.what();
+                code = e.kind() == collide::ErrorKind::runtime &&
+                               message.find("File too large") != std::string::npos
+                           ? 0
+                           : 4;
+                if (code != 0)
+                    std::fprintf(stderr, "unexpected message: %s\n", e.what());
+            } catch (...) {
+                code = 5;
+            }
+            _exit(code);
+        }
+        int status = 0;
+        waitpid(child, &status, 0);
+        REQUIRE(WIFEXITED(status));
+        CHECK(WEXITSTATUS(status) == 0);
+        CHECK(dir.entries() == std::vector<std::string>{"keep.txt"});
     }
 }

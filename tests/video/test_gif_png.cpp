@@ -1,6 +1,7 @@
 // GIF (palette per clip, rate cap) and PNG (single files, sequences) round trips.
 
 #include <doctest/doctest.h>
+#include <sys/stat.h>
 
 #include "collide/error.hpp"
 #include "collide/video/png.hpp"
@@ -57,7 +58,8 @@ TEST_CASE("PNG sequence: zero-padded names in a directory, exact pixels, old dir
     options.width = 40;
     options.height = 30;
     VideoWriter writer(options);
-    for (int i = 0; i < 3; ++i) writer.write(test_pattern(40, 30, i));
+    for (int i = 0; i < 3; ++i)
+        writer.write(test_pattern(40, 30, i));
     // Until finish() the old directory stays as it was.
     CHECK(std::filesystem::exists(path / "stale.txt"));
     writer.finish();
@@ -67,8 +69,8 @@ TEST_CASE("PNG sequence: zero-padded names in a directory, exact pixels, old dir
         names.push_back(entry.path().filename().string());
     }
     std::sort(names.begin(), names.end());
-    CHECK(names == std::vector<std::string>{"frames_00000.png", "frames_00001.png",
-                                            "frames_00002.png"});
+    CHECK(names ==
+          std::vector<std::string>{"frames_00000.png", "frames_00001.png", "frames_00002.png"});
     for (int i = 0; i < 3; ++i) {
         CHECK(read_png(path / names[i]).rgba == test_pattern(40, 30, i).rgba);
     }
@@ -89,7 +91,8 @@ TEST_CASE("GIF: generated palette, frame rate capped by dropping frames evenly")
     REQUIRE(writer.notices().size() == 1);
     CHECK(writer.notices()[0].find("50 to 25 fps") != std::string::npos);
     constexpr int frames = 10;
-    for (int i = 0; i < frames; ++i) writer.write(test_pattern(160, 90, i));
+    for (int i = 0; i < frames; ++i)
+        writer.write(test_pattern(160, 90, i));
     writer.finish();
 
     const Decoded decoded = decode_file(options.path);
@@ -120,7 +123,29 @@ TEST_CASE("GIF at a low frame rate keeps every frame and says nothing") {
     options.fps = 10;
     VideoWriter writer(options);
     CHECK(writer.notices().empty());
-    for (int i = 0; i < 3; ++i) writer.write(test_pattern(64, 48, i));
+    for (int i = 0; i < 3; ++i)
+        writer.write(test_pattern(64, 48, i));
     writer.finish();
     CHECK(decode_file(options.path).frames.size() == 3);
+}
+
+TEST_CASE("finished outputs get ordinary permissions (umask), not the temporaries' private ones") {
+    const mode_t previous = umask(022);
+    ScratchDirectory dir;
+    write_png(test_pattern(4, 4, 0), dir / "thumb.png");
+    VideoOptions options;
+    options.path = dir / "seq";
+    options.format = VideoFormat::png_sequence;
+    options.width = 4;
+    options.height = 4;
+    VideoWriter writer(options);
+    writer.write(test_pattern(4, 4, 0));
+    writer.finish();
+    umask(previous);
+    using std::filesystem::perms;
+    CHECK((std::filesystem::status(dir / "thumb.png").permissions() & perms::all) ==
+          (perms::owner_read | perms::owner_write | perms::group_read | perms::others_read));
+    CHECK((std::filesystem::status(dir / "seq").permissions() & perms::all) ==
+          (perms::owner_all | perms::group_read | perms::group_exec | perms::others_read |
+           perms::others_exec));
 }

@@ -45,3 +45,13 @@ TEST_CASE("only one guard at a time; the previous handler comes back afterwards"
     const bool same_handler = after.sa_handler == before.sa_handler;
     CHECK(same_handler);
 }
+
+TEST_CASE("each handler fires once: a second signal would get the default action") {
+    InterruptGuard guard;
+    std::raise(SIGINT);
+    CHECK(guard.requested());
+    struct sigaction now {};
+    sigaction(SIGINT, nullptr, &now);
+    const bool default_action = now.sa_handler == SIG_DFL;
+    CHECK(default_action);
+}

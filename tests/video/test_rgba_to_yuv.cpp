@@ -18,11 +18,12 @@ struct Planes {
     int height;
     std::vector<std::uint8_t> y, u, v;
     Planes(int w, int h)
-        : width(w), height(h), y(std::size_t(w) * h), u(std::size_t(w / 2) * (h / 2)),
+        : width(w),
+          height(h),
+          y(std::size_t(w) * h),
+          u(std::size_t(w / 2) * (h / 2)),
           v(std::size_t(w / 2) * (h / 2)) {}
-    Yuv420View view() {
-        return {y.data(), u.data(), v.data(), width, width / 2, width / 2};
-    }
+    Yuv420View view() { return {y.data(), u.data(), v.data(), width, width / 2, width / 2}; }
 };
 
 Planes convert(const collide::Image& image, int threads) {
@@ -71,14 +72,16 @@ TEST_CASE("random pixels: within 1 code value of the exact formula") {
     std::mt19937 rng(7);
     std::uniform_int_distribution<int> byte(0, 255);
     collide::Image image(64, 32);
-    for (auto& value : image.rgba) value = std::uint8_t(byte(rng));
+    for (auto& value : image.rgba)
+        value = std::uint8_t(byte(rng));
     const Planes planes = convert(image, 1);
     int worst = 0;
     for (int y = 0; y < image.height; ++y) {
         for (int x = 0; x < image.width; ++x) {
             const std::uint8_t* p = image.pixel(x, y);
             const double expected = collide::video::testing::bt709_y(p[0], p[1], p[2]);
-            worst = std::max(worst, int(std::lround(std::abs(planes.y[y * 64 + x] - expected) + 0.49)));
+            worst =
+                std::max(worst, int(std::lround(std::abs(planes.y[y * 64 + x] - expected) + 0.49)));
         }
     }
     for (int cy = 0; cy < image.height / 2; ++cy) {
@@ -93,8 +96,14 @@ TEST_CASE("random pixels: within 1 code value of the exact formula") {
                 }
             }
             const std::size_t i = std::size_t(cy) * 32 + cx;
-            worst = std::max(worst, int(std::ceil(std::abs(planes.u[i] - collide::video::testing::bt709_u(r, g, b)) - 0.5)));
-            worst = std::max(worst, int(std::ceil(std::abs(planes.v[i] - collide::video::testing::bt709_v(r, g, b)) - 0.5)));
+            worst = std::max(
+                worst,
+                int(std::ceil(std::abs(planes.u[i] - collide::video::testing::bt709_u(r, g, b)) -
+                              0.5)));
+            worst = std::max(
+                worst,
+                int(std::ceil(std::abs(planes.v[i] - collide::video::testing::bt709_v(r, g, b)) -
+                              0.5)));
         }
     }
     CHECK(worst <= 1);

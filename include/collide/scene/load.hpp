@@ -18,7 +18,8 @@ namespace collide {
 [[nodiscard]] Scene load_scene(const std::string& path_or_name);
 
 /// Same, looking built-in names up in `assets_dir`/scenes instead of scene_assets_dir().
-[[nodiscard]] Scene load_scene(const std::string& path_or_name, const std::filesystem::path& assets_dir);
+[[nodiscard]] Scene load_scene(const std::string& path_or_name,
+                               const std::filesystem::path& assets_dir);
 
 /// Names of the built-in scenes, sorted.
 [[nodiscard]] std::vector<std::string> builtin_scene_names();
@@ -47,6 +48,7 @@ struct BuiltinScene {
 
 /// The candidate closest to `word` by edit distance, or "" when none is close enough to be a
 /// plausible typo ("radus" -> "radius"). Used for "unknown key ... (did you mean ...?)".
-[[nodiscard]] std::string nearest_name(std::string_view word, const std::vector<std::string>& candidates);
+[[nodiscard]] std::string nearest_name(std::string_view word,
+                                       const std::vector<std::string>& candidates);
 
 }  // namespace collide

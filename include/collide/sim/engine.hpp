@@ -52,6 +52,9 @@ struct EngineOptions {
     std::string pq = "binary";    ///< classic engine's queue: unordered|ordered|binary|dary:D|indexed
     double dt = 0.01;             ///< time-driven quantum
     std::string td_detect = "all-pairs";  ///< time-driven overlap checks: "all-pairs" or "grid"
+
+    /// Throws Error(input) naming the option (--engine, --pq, --dt, --td-detect) that is wrong.
+    void validate() const;
 };
 
 }  // namespace collide

@@ -23,12 +23,12 @@ struct GenerateSpec {
     /// Maxwell-Boltzmann velocities (pairs move in opposite directions: zero total momentum for
     /// an even count). Used to show the relaxation to Maxwell-Boltzmann.
     std::optional<double> speed;
-    Vec2 region_min{0.0, 0.0};      ///< region corners; default = the whole box
-    std::optional<Vec2> region_max; ///< unset => (box.width, box.height)
-    Rgb8 color{48, 96, 224};        ///< colour of the generated discs
-    bool color_by_speed = false;    ///< colour = "speed": renderer colours these by speed
-    std::string tag;                ///< tag given to every generated disc (may be empty)
-    std::uint64_t seed = 1;         ///< same seed, same discs
+    Vec2 region_min{0.0, 0.0};       ///< region corners; default = the whole box
+    std::optional<Vec2> region_max;  ///< unset => (box.width, box.height)
+    Rgb8 color{48, 96, 224};         ///< colour of the generated discs
+    bool color_by_speed = false;     ///< colour = "speed": renderer colours these by speed
+    std::string tag;                 ///< tag given to every generated disc (may be empty)
+    std::uint64_t seed = 1;          ///< same seed, same discs
 
     /// Throws Error(input) naming the bad field (`field_prefix` + name, e.g. "generate[0].radius").
     void validate(const std::string& field_prefix = "generate") const;
@@ -55,6 +55,7 @@ inline constexpr std::size_t max_generated_discs = 20'000'000;
 /// Complexity O(N) expected (cell grid) for N = existing + generated discs.
 /// Throws Error(input) naming `field_prefix` for a bad spec, a region outside the box, or a
 /// request that cannot fit.
-void generate_discs(Scene& scene, const GenerateSpec& spec, const std::string& field_prefix = "generate");
+void generate_discs(Scene& scene, const GenerateSpec& spec,
+                    const std::string& field_prefix = "generate");
 
 }  // namespace collide

@@ -25,6 +25,9 @@ struct Measurements {
     std::uint64_t collisions_pair = 0;  ///< disc-disc collisions resolved
     std::uint64_t collisions_wall = 0;  ///< disc-wall collisions resolved (x and y walls)
     std::uint64_t predictions = 0;      ///< collision-time computations (pair + wall)
+    std::uint64_t collisions_xwall = 0; ///< of collisions_wall: left/right walls
+    std::uint64_t collisions_ywall = 0; ///< of collisions_wall: bottom/top walls
+    std::uint64_t cell_crossings = 0;   ///< fast engine: cell-crossing events (part of `events`)
     QueueStats queue;
 
     // --- physics (k_B = 1)
@@ -40,11 +43,12 @@ struct Measurements {
     // --- cost
     double wall_seconds = 0.0;           ///< wall-clock time spent inside the engine
     double collisions_per_second = 0.0;  ///< (pair + wall collisions) / wall_seconds
+    std::uint64_t engine_bytes = 0;      ///< heap memory held by the engine's containers (capacity)
 
     // --- time-driven comparison figures
     std::uint64_t overlap_checks = 0;     ///< pair overlap tests performed
     std::uint64_t missed_collisions = 0;  ///< contacts inside a step that went undetected
-    std::uint64_t escaped = 0;            ///< discs whose centre is outside a walled box
+    std::uint64_t escaped = 0;            ///< discs entirely outside a walled box (tunnelled)
     std::uint64_t overlapping_pairs = 0;  ///< pairs overlapping now
     double energy_drift = 0.0;            ///< (KE - KE0) / KE0
     std::uint64_t steps = 0;              ///< time quanta taken (the final partial ones included)

@@ -50,6 +50,7 @@
 
 #include "collide/scene.hpp"
 #include "collide/sim/engine.hpp"
+#include "collide/sim/observables.hpp"
 
 namespace collide {
 
@@ -118,6 +119,8 @@ class TimeEngine final : public Engine {
     void record(CollisionKind kind, std::uint32_t a, std::uint32_t b, double t);
     [[nodiscard]] double max_speed() const noexcept;
     [[nodiscard]] double kinetic_energy() const noexcept;
+    /// Heap memory held by the engine's containers (capacity), for Measurements::engine_bytes.
+    [[nodiscard]] std::uint64_t bytes() const noexcept;
 
     template <typename PairVisitor>
     void for_each_candidate_pair(double reach, bool count_checks, PairVisitor&& visit);
@@ -158,8 +161,9 @@ class TimeEngine final : public Engine {
     std::uint64_t collisions_wall_ = 0;
     std::uint64_t missed_ = 0;
     double max_overlap_seen_ = 0.0;
-    double virial_sum_ = 0.0;        ///< sum over pair collisions of |r_ij . dp_i|
-    double wall_impulse_sum_ = 0.0;  ///< sum over wall collisions of |dp| (pressure on walls)
+    std::uint64_t collisions_xwall_ = 0;
+    std::uint64_t collisions_ywall_ = 0;
+    sim::ImpulseTally impulses_;  ///< for pressure: virial (periodic) and wall impulse (walls)
     double wall_seconds_ = 0.0;
 
     CollisionListener listener_;

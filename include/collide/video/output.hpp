@@ -19,7 +19,7 @@ void check_output_writable(const std::filesystem::path& path, bool directory_out
 /// destructor unless `commit()` renamed it onto the destination. Move-only.
 /// Beside, not in /tmp: rename(2) is only atomic within one filesystem.
 class TemporaryOutput {
-public:
+  public:
     enum class Kind { file, directory };
 
     /// An empty placeholder owning nothing (assign a real one later).
@@ -46,7 +46,7 @@ public:
     /// Removes the temporary now (idempotent, never throws).
     void discard() noexcept;
 
-private:
+  private:
     std::filesystem::path destination_;
     std::filesystem::path temporary_;
     Kind kind_ = Kind::file;

@@ -41,7 +41,7 @@ enum class VideoFormat {
 /// Video codec for MP4 output (ignored for GIF and PNG).
 enum class VideoCodec {
     h264,  ///< libx264: plays everywhere (browsers, phones, PowerPoint, VLC). The default.
-    hevc,  ///< libx265: ~half the size at equal quality, slower, not every player has it
+    hevc,  ///< libx265: smaller files at equal quality, slower; not every player has it
     av1,   ///< libsvtav1: smallest files, slowest, newest players only
 };
 
@@ -51,21 +51,21 @@ inline constexpr int max_gif_fps = 25;
 
 /// What to write and how. Defaults produce a 720p30 H.264 MP4 that plays everywhere.
 struct VideoOptions {
-    std::filesystem::path path;           ///< destination file (mp4/gif) or directory (png)
+    std::filesystem::path path;  ///< destination file (mp4/gif) or directory (png)
     VideoFormat format = VideoFormat::mp4;
-    int width = 1280;                     ///< pixels, 1..8192; frames must have this size.
-                                          ///< Odd sizes are rounded up for yuv420p (see notices)
-    int height = 720;                     ///< pixels, 1..8192, as `width`
-    int fps = 30;                         ///< frames per second, 1..240 (constant frame rate)
+    int width = 1280;  ///< pixels, 1..8192; frames must have this size.
+                       ///< Odd sizes are rounded up for yuv420p (see notices)
+    int height = 720;  ///< pixels, 1..8192, as `width`
+    int fps = 30;      ///< frames per second, 1..240 (constant frame rate)
     VideoCodec codec = VideoCodec::h264;
     /// libav encoder name overriding encoder_name(codec) (e.g. "libopenh264"); empty = default.
     /// Must encode `codec`'s format family into MP4; a name this FFmpeg lacks is an Error.
     std::string encoder;
     /// Encoder speed/size trade-off; empty = the codec's default below. x264/x265 names
     /// (ultrafast superfast veryfast faster fast medium slow slower veryslow) or, for AV1,
-    /// an SVT-AV1 preset number "0".."13". Default per codec: h264 "veryfast" (about 3x the
-    /// frames per second of "medium" for ~10% more bytes at equal CRF on our flat-coloured
-    /// scenes, see docs/benchmarks.md), hevc "fast", av1 "10".
+    /// an SVT-AV1 preset number "0".."13". Default per codec: h264 "veryfast" (1.6-2x the
+    /// frames per second of "medium" for ~5% more bytes at CRF 20 on disc scenes; "ultrafast"
+    /// is faster still but 4x bigger; docs/benchmarks.md), hevc "fast", av1 "10".
     std::string preset;
     /// Constant rate factor (quality; lower = better and bigger); -1 = the codec's default below.
     /// h264/hevc 0..51 (default h264 20, hevc 24), av1 0..63 (default 35).
@@ -83,7 +83,8 @@ struct VideoOptions {
 };
 
 /// "mp4" / "gif" / "png" -> format; throws Error(input) naming `field` and the accepted values.
-[[nodiscard]] VideoFormat parse_video_format(std::string_view text, std::string_view field = "format");
+[[nodiscard]] VideoFormat parse_video_format(std::string_view text,
+                                             std::string_view field = "format");
 /// "h264" / "hevc" (or "h265") / "av1" -> codec; throws Error(input) naming `field`.
 [[nodiscard]] VideoCodec parse_video_codec(std::string_view text, std::string_view field = "codec");
 /// Format implied by the path's extension: .gif -> gif, .mp4 (or none of the others) -> mp4,
@@ -105,7 +106,7 @@ void set_libav_verbose(bool verbose);
 /// writer's own thread (libx264 adds its own worker threads), so the caller can simulate and
 /// render the next frame meanwhile. Use a writer from one thread at a time. Move-only.
 class VideoWriter {
-public:
+  public:
     /// Validates the options, checks the destination is writable, finds the encoder and creates
     /// the temporary output. Throws Error(input) for bad options or an unwritable path,
     /// Error(runtime) naming the encoder when it is not available in this FFmpeg build.
@@ -139,7 +140,7 @@ public:
 
     class Impl;  ///< the format-specific machinery (src/video)
 
-private:
+  private:
     std::unique_ptr<Impl> impl_;
 };
 

@@ -20,7 +20,8 @@ namespace collide {
 
 namespace {
 
-constexpr std::array<const char*, 9> column_names = {"rx", "ry", "vx", "vy", "radius", "mass", "r", "g", "b"};
+constexpr std::array<const char*, 9> column_names = {"rx",   "ry", "vx", "vy", "radius",
+                                                     "mass", "r",  "g",  "b"};
 
 // Never reserve more than this up front: N comes from the file and may be absurd.
 constexpr std::size_t max_reserve = std::size_t{1} << 20;
@@ -29,10 +30,15 @@ std::vector<std::string_view> split_whitespace(std::string_view line) {
     std::vector<std::string_view> out;
     std::size_t i = 0;
     while (i < line.size()) {
-        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r' || line[i] == '\f' || line[i] == '\v')) ++i;
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r' ||
+                                   line[i] == '\f' || line[i] == '\v'))
+            ++i;
         const std::size_t start = i;
-        while (i < line.size() && !(line[i] == ' ' || line[i] == '\t' || line[i] == '\r' || line[i] == '\f' || line[i] == '\v')) ++i;
-        if (i > start) out.push_back(line.substr(start, i - start));
+        while (i < line.size() && !(line[i] == ' ' || line[i] == '\t' || line[i] == '\r' ||
+                                    line[i] == '\f' || line[i] == '\v'))
+            ++i;
+        if (i > start)
+            out.push_back(line.substr(start, i - start));
     }
     return out;
 }
@@ -42,7 +48,8 @@ std::vector<std::string_view> split_whitespace(std::string_view line) {
 bool parse_double(std::string_view token, double& value) {
     if (!token.empty() && token.front() == '+') {
         token.remove_prefix(1);
-        if (!token.empty() && (token.front() == '-' || token.front() == '+')) return false;
+        if (!token.empty() && (token.front() == '-' || token.front() == '+'))
+            return false;
     }
     const char* end = token.data() + token.size();
     const auto [ptr, ec] = std::from_chars(token.data(), end, value);
@@ -50,7 +57,8 @@ bool parse_double(std::string_view token, double& value) {
 }
 
 bool parse_count(std::string_view token, unsigned long long& value) {
-    if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+    if (!token.empty() && token.front() == '+')
+        token.remove_prefix(1);
     const char* end = token.data() + token.size();
     const auto [ptr, ec] = std::from_chars(token.data(), end, value);
     return ec == std::errc() && ptr == end && !token.empty();
@@ -58,9 +66,15 @@ bool parse_count(std::string_view token, unsigned long long& value) {
 
 std::string quoted(std::string_view s) {
     constexpr std::size_t shown = 40;
-    std::string q(s.substr(0, shown));
-    if (s.size() > shown) q += "...";
-    return "'" + q + "'";
+    std::string q = "'";
+    for (const char c : s.substr(0, shown)) {
+        // A binary file must not put control characters or broken UTF-8 on the terminal.
+        const auto u = static_cast<unsigned char>(c);
+        q += (u < 0x20 || u >= 0x7f) ? '?' : c;
+    }
+    if (s.size() > shown)
+        q += "...";
+    return q + "'";
 }
 
 struct Reader {
@@ -73,10 +87,13 @@ struct Reader {
     void read_count(std::string_view text, int line) {
         const auto tokens = split_whitespace(text);
         if (tokens.size() != 1 || !parse_count(tokens[0], expected)) {
-            throw_input_error(file, line, "N", "expected the number of discs alone on the first line, got " + quoted(text));
+            throw_input_error(
+                file, line, "N",
+                "expected the number of discs alone on the first line, got " + quoted(text));
         }
         count_line = line;
-        parsed.scene.discs.reserve(static_cast<std::size_t>(std::min<unsigned long long>(expected, max_reserve)));
+        parsed.scene.discs.reserve(
+            static_cast<std::size_t>(std::min<unsigned long long>(expected, max_reserve)));
     }
 
     double number(std::string_view token, int line, std::size_t column) const {
@@ -84,14 +101,17 @@ struct Reader {
         if (!parse_double(token, v)) {
             throw_input_error(file, line, column_names[column], quoted(token) + " is not a number");
         }
-        if (!std::isfinite(v)) throw_input_error(file, line, column_names[column], "not a finite number (" + std::string(token) + ")");
+        if (!std::isfinite(v))
+            throw_input_error(file, line, column_names[column],
+                              "not a finite number (" + std::string(token) + ")");
         return v;
     }
 
     std::uint8_t channel(std::string_view token, int line, std::size_t column) const {
         const double v = number(token, line, column);
         if (v < 0.0 || v > 255.0 || v != std::floor(v)) {
-            throw_input_error(file, line, column_names[column], "colour must be an integer 0..255, got " + std::string(token));
+            throw_input_error(file, line, column_names[column],
+                              "colour must be an integer 0..255, got " + std::string(token));
         }
         return static_cast<std::uint8_t>(v);
     }
@@ -99,10 +119,14 @@ struct Reader {
     void read_disc(std::string_view text, int line) {
         const auto t = split_whitespace(text);
         if (t.size() != column_names.size()) {
-            throw_input_error(file, line, "", "expected 9 columns (rx ry vx vy radius mass r g b), got " + std::to_string(t.size()));
+            throw_input_error(file, line, "",
+                              "expected 9 columns (rx ry vx vy radius mass r g b), got " +
+                                  std::to_string(t.size()));
         }
         if (parsed.scene.discs.size() >= expected) {
-            throw_input_error(file, line, "N", "more disc lines than N = " + std::to_string(expected) + " (line " + std::to_string(count_line) + ")");
+            throw_input_error(file, line, "N",
+                              "more disc lines than N = " + std::to_string(expected) + " (line " +
+                                  std::to_string(count_line) + ")");
         }
         Disc d;
         d.position = {number(t[0], line, 0), number(t[1], line, 1)};
@@ -115,10 +139,13 @@ struct Reader {
     }
 
     void finish() {
-        if (count_line == 0) throw_input_error(file, 0, "N", "empty file: expected the number of discs on the first line");
+        if (count_line == 0)
+            throw_input_error(file, 0, "N",
+                              "empty file: expected the number of discs on the first line");
         if (parsed.scene.discs.size() != expected) {
-            throw_input_error(file, count_line, "N", "N = " + std::to_string(expected) + " but " +
-                              std::to_string(parsed.scene.discs.size()) + " disc lines follow");
+            throw_input_error(file, count_line, "N",
+                              "N = " + std::to_string(expected) + " but " +
+                                  std::to_string(parsed.scene.discs.size()) + " disc lines follow");
         }
         DiscSource run;
         run.first = 0;
@@ -131,7 +158,9 @@ struct Reader {
 };
 
 bool blank(std::string_view s) {
-    return std::all_of(s.begin(), s.end(), [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; });
+    return std::all_of(s.begin(), s.end(), [](char c) {
+        return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
+    });
 }
 
 }  // namespace
@@ -143,21 +172,24 @@ ParsedScene parse_algs4(std::istream& in, const std::string& file_label) {
     int line = 0;
     while (std::getline(in, text)) {
         ++line;
-        if (blank(text)) continue;
+        if (blank(text))
+            continue;
         if (reader.count_line == 0) {
             reader.read_count(text, line);
         } else {
             reader.read_disc(text, line);
         }
     }
-    if (in.bad()) throw_input_error(file_label, line, "", "read error");
+    if (in.bad())
+        throw_input_error(file_label, line, "", "read error");
     reader.finish();
     return std::move(reader.parsed);
 }
 
 ParsedScene read_algs4_file(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw_input_error(path.string(), 0, "", "cannot open the scene file");
+    if (!in)
+        throw_input_error(path.string(), 0, "", "cannot open the scene file");
     ParsedScene parsed = parse_algs4(in, path.string());
     parsed.scene.name = path.stem().string();
     parsed.scene.title = parsed.scene.name;
@@ -169,8 +201,9 @@ void write_algs4(std::ostream& out, const Scene& scene) {
     out << scene.discs.size() << '\n';
     std::array<char, 512> buf{};
     for (const Disc& d : scene.discs) {
-        std::snprintf(buf.data(), buf.size(), "%.17g %.17g %.17g %.17g %.17g %.17g %d %d %d\n", d.position.x,
-                      d.position.y, d.velocity.x, d.velocity.y, d.radius, d.mass, d.color.r, d.color.g, d.color.b);
+        std::snprintf(buf.data(), buf.size(), "%.17g %.17g %.17g %.17g %.17g %.17g %d %d %d\n",
+                      d.position.x, d.position.y, d.velocity.x, d.velocity.y, d.radius, d.mass,
+                      d.color.r, d.color.g, d.color.b);
         out << buf.data();
     }
 }

@@ -14,7 +14,7 @@
 namespace collide::detail {
 
 class DiscGrid {
-public:
+  public:
     /// A grid over `box` with cells of about `cell_size` (enlarged so there are at most
     /// about `max_cells` cells; periodic boxes get an exact number of cells per side).
     DiscGrid(const Box& box, double cell_size, std::size_t max_cells);
@@ -33,7 +33,8 @@ public:
             for (int ix = xs.lo; ix <= xs.hi; ++ix) {
                 const std::size_t cell = row + static_cast<std::size_t>(wrap_index(ix, nx_));
                 for (std::uint32_t e = head_[cell]; e != none; e = entries_[e].next) {
-                    if (visit(entries_[e].id)) return true;
+                    if (visit(entries_[e].id))
+                        return true;
                 }
             }
         }
@@ -43,7 +44,7 @@ public:
     /// Number of (disc, cell) entries filed so far: insertion cost, for sizing decisions.
     [[nodiscard]] std::size_t entry_count() const noexcept { return entries_.size(); }
 
-private:
+  private:
     static constexpr std::uint32_t none = 0xffffffffu;
     struct Entry {
         std::uint32_t id;
@@ -54,11 +55,16 @@ private:
         int hi;
     };
 
-    [[nodiscard]] CellRange range_x(double x, double r) const noexcept { return range(x, r, cell_w_, nx_); }
-    [[nodiscard]] CellRange range_y(double y, double r) const noexcept { return range(y, r, cell_h_, ny_); }
+    [[nodiscard]] CellRange range_x(double x, double r) const noexcept {
+        return range(x, r, cell_w_, nx_);
+    }
+    [[nodiscard]] CellRange range_y(double y, double r) const noexcept {
+        return range(y, r, cell_h_, ny_);
+    }
     [[nodiscard]] CellRange range(double c, double r, double cell, int n) const noexcept;
     [[nodiscard]] int wrap_index(int i, int n) const noexcept {
-        if (!periodic_) return i;
+        if (!periodic_)
+            return i;
         const int m = i % n;
         return m < 0 ? m + n : m;
     }

@@ -8,6 +8,7 @@
 #include <limits>
 #include <numbers>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include "collide/error.hpp"
@@ -35,26 +36,30 @@ std::string num(double v) {
     return s.str();
 }
 
-[[noreturn]] void fail(const std::string& prefix, const std::string& field, const std::string& reason) {
+[[noreturn]] void fail(const std::string& prefix, const std::string& field,
+                       const std::string& reason) {
     throw_input_error("", 0, prefix + (field.empty() ? "" : "." + field), reason);
 }
 
 // Where generated centres may go.
 struct Placement {
-    Vec2 lo;              // centre rectangle (walls or sub-region)
+    Vec2 lo;  // centre rectangle (walls or sub-region)
     Vec2 hi;
-    bool wraps = false;   // the region is the whole periodic box: centres anywhere, wrapped
+    bool wraps = false;  // the region is the whole periodic box: centres anywhere, wrapped
     double region_area = 0.0;
 };
 
 Placement resolve_region(const Box& box, const GenerateSpec& spec, const std::string& prefix) {
     const Vec2 lo = spec.region_min;
     const Vec2 hi = spec.region_max.value_or(Vec2{box.width, box.height});
-    if (!(hi.x > lo.x) || !(hi.y > lo.y)) fail(prefix, "region", "the second corner must lie above and right of the first");
+    if (!(hi.x > lo.x) || !(hi.y > lo.y))
+        fail(prefix, "region", "the second corner must lie above and right of the first");
     const double slack = 1e-12 * std::max(box.width, box.height);
     if (lo.x < -slack || lo.y < -slack || hi.x > box.width + slack || hi.y > box.height + slack) {
-        fail(prefix, "region", "[[" + num(lo.x) + ", " + num(lo.y) + "], [" + num(hi.x) + ", " + num(hi.y) +
-                                   "]] extends outside the box [0, " + num(box.width) + "] x [0, " + num(box.height) + "]");
+        fail(prefix, "region",
+             "[[" + num(lo.x) + ", " + num(lo.y) + "], [" + num(hi.x) + ", " + num(hi.y) +
+                 "]] extends outside the box [0, " + num(box.width) + "] x [0, " + num(box.height) +
+                 "]");
     }
     Placement p;
     p.region_area = (hi.x - lo.x) * (hi.y - lo.y);
@@ -67,63 +72,82 @@ Placement resolve_region(const Box& box, const GenerateSpec& spec, const std::st
         const double r = spec.radius;
         p.lo = {lo.x + r, lo.y + r};
         p.hi = {hi.x - r, hi.y - r};
-        if (p.hi.x < p.lo.x || p.hi.y < p.lo.y) fail(prefix, "radius", "discs of radius " + num(r) + " do not fit in the region");
+        if (p.hi.x < p.lo.x || p.hi.y < p.lo.y)
+            fail(prefix, "radius", "discs of radius " + num(r) + " do not fit in the region");
     }
     return p;
 }
 
-std::size_t resolve_count(const GenerateSpec& spec, const Placement& where, const std::string& prefix) {
+std::size_t resolve_count(const GenerateSpec& spec, const Placement& where,
+                          const std::string& prefix) {
     const double disc_area = std::numbers::pi * spec.radius * spec.radius;
     double count = static_cast<double>(spec.count);
-    if (spec.count == 0) count = std::round(spec.packing_fraction * where.region_area / disc_area);
-    if (count < 1.0) fail(prefix, "packing_fraction", "gives no disc at all in the region (radius " + num(spec.radius) + ")");
+    if (spec.count == 0)
+        count = std::round(spec.packing_fraction * where.region_area / disc_area);
+    if (count < 1.0)
+        fail(prefix, "packing_fraction",
+             "gives no disc at all in the region (radius " + num(spec.radius) + ")");
     if (count > static_cast<double>(max_generated_discs)) {
-        fail(prefix, spec.count ? "count" : "packing_fraction", "asks for " + num(count) + " discs (at most " +
-             std::to_string(max_generated_discs) + ")");
+        fail(prefix, spec.count ? "count" : "packing_fraction",
+             "asks for " + num(count) + " discs (at most " + std::to_string(max_generated_discs) +
+                 ")");
     }
     const double eta = count * disc_area / where.region_area;
     // A count derived from a valid packing fraction may round up by half a disc: let it.
     if (spec.count != 0 && eta > max_generated_packing_fraction + 1e-9) {
         fail(prefix, spec.count ? "count" : "packing_fraction",
-             std::to_string(static_cast<std::size_t>(count)) + " discs of radius " + num(spec.radius) +
-                 " give packing fraction " + num(eta) + " in the region, above the maximum " +
-                 num(max_generated_packing_fraction) + " the generator can reach (close packing is 0.9069)");
+             std::to_string(static_cast<std::size_t>(count)) + " discs of radius " +
+                 num(spec.radius) + " give packing fraction " + num(eta) +
+                 " in the region, above the maximum " + num(max_generated_packing_fraction) +
+                 " the generator can reach (close packing is 0.9069)");
     }
     return static_cast<std::size_t>(count);
 }
 
-// The discs already in the scene, filed in a grid sized for the new discs.
+// The discs already in the scene, filed in a grid sized for the new discs. Keeps its own
+// compact copy of centres and radii: a Disc (with its tag string) is ~90 bytes, and at 10^6
+// discs each candidate test would otherwise miss the cache on it.
 class Occupancy {
-public:
+  public:
     Occupancy(const Scene& scene, double radius, std::size_t expected_new)
         : box_(scene.box),
-          discs_(scene.discs),
           grid_(scene.box, 2.0 * radius, 4 * (scene.discs.size() + expected_new) + 64) {
-        for (std::size_t i = 0; i < discs_.size(); ++i) file(static_cast<std::uint32_t>(i));
+        placed_.reserve(scene.discs.size() + expected_new);
+        for (const Disc& d : scene.discs)
+            add(d.position, d.radius);
     }
 
-    // Would a disc at p with radius r overlap anything filed so far (existing or new)?
+    // Would a disc at p with radius r overlap anything added so far?
     [[nodiscard]] bool blocked(Vec2 p, double r) const {
         return grid_.any_near(p, r, [&](std::uint32_t j) {
-            const Disc& d = discs_[j];
+            const Placed& d = placed_[j];
             const double sum = d.radius + r;
-            return norm2(box_.displacement(d.position, p)) < sum * sum;
+            return norm2(box_.displacement(d.centre, p)) < sum * sum;
         });
     }
 
-    void file(std::uint32_t index) { grid_.insert(index, box_.wrap(discs_[index].position), discs_[index].radius); }
+    void add(Vec2 centre, double radius) {
+        const Vec2 c = box_.wrap(centre);
+        grid_.insert(static_cast<std::uint32_t>(placed_.size()), c, radius);
+        placed_.push_back({c, radius});
+    }
 
-private:
-    const Box& box_;
-    const std::vector<Disc>& discs_;
+  private:
+    struct Placed {
+        Vec2 centre;
+        double radius;
+    };
+    Box box_;
     DiscGrid grid_;
+    std::vector<Placed> placed_;
 };
 
 double existing_area_in(const Scene& scene, Vec2 lo, Vec2 hi) {
     double area = 0.0;
     for (const Disc& d : scene.discs) {
         const Vec2 p = d.position;
-        if (p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y) area += std::numbers::pi * d.radius * d.radius;
+        if (p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y)
+            area += std::numbers::pi * d.radius * d.radius;
     }
     return area;
 }
@@ -138,8 +162,19 @@ Disc new_disc(const GenerateSpec& spec, Vec2 position) {
     return d;
 }
 
+// Orders discs [first, end) by rows of cells of side `cell`: neighbours in space become
+// neighbours in memory, which the engines' caches (and validation) like. Deterministic.
+void sort_spatially(std::vector<Disc>& discs, std::size_t first, double cell) {
+    auto key = [cell](const Disc& d) {
+        return std::pair{std::floor(d.position.y / cell), std::floor(d.position.x / cell)};
+    };
+    std::stable_sort(discs.begin() + static_cast<std::ptrdiff_t>(first), discs.end(),
+                     [&](const Disc& a, const Disc& b) { return key(a) < key(b); });
+}
+
 // Random sequential addition; false (and scene unchanged) when the attempt budget runs out.
-bool place_randomly(Scene& scene, const GenerateSpec& spec, const Placement& where, std::size_t count, Rng& rng) {
+bool place_randomly(Scene& scene, const GenerateSpec& spec, const Placement& where,
+                    std::size_t count, Rng& rng) {
     const std::size_t first = scene.discs.size();
     scene.discs.reserve(first + count);
     Occupancy occupancy(scene, spec.radius, count);
@@ -151,10 +186,12 @@ bool place_randomly(Scene& scene, const GenerateSpec& spec, const Placement& whe
         }
         const Vec2 p{rng.uniform(where.lo.x, where.hi.x), rng.uniform(where.lo.y, where.hi.y)};
         const Vec2 q = scene.box.wrap(p);
-        if (occupancy.blocked(q, spec.radius)) continue;
+        if (occupancy.blocked(q, spec.radius))
+            continue;
         scene.discs.push_back(new_disc(spec, q));
-        occupancy.file(static_cast<std::uint32_t>(scene.discs.size() - 1));
+        occupancy.add(q, spec.radius);
     }
+    sort_spatially(scene.discs, first, 4.0 * spec.radius);
     return true;
 }
 
@@ -167,7 +204,9 @@ struct Lattice {
     std::size_t odd_cols = 0;
     std::size_t rows = 0;
 
-    [[nodiscard]] std::size_t sites() const noexcept { return (rows + 1) / 2 * cols + rows / 2 * odd_cols; }
+    [[nodiscard]] std::size_t sites() const noexcept {
+        return (rows + 1) / 2 * cols + rows / 2 * odd_cols;
+    }
     [[nodiscard]] double neighbour_distance() const noexcept {
         // Along a row, to the next row, and to the same column two rows on (short when rows are
         // squeezed together in a periodic box).
@@ -197,34 +236,38 @@ Lattice rectangle_lattice(const Placement& where, double spacing) {
     l.ax = spacing;
     l.ay = spacing * std::numbers::sqrt3 / 2.0;
     l.cols = static_cast<std::size_t>(std::floor(lx / l.ax)) + 1;
-    l.odd_cols = lx >= 0.5 * l.ax ? static_cast<std::size_t>(std::floor((lx - 0.5 * l.ax) / l.ax)) + 1 : 0;
+    l.odd_cols =
+        lx >= 0.5 * l.ax ? static_cast<std::size_t>(std::floor((lx - 0.5 * l.ax) / l.ax)) + 1 : 0;
     l.rows = static_cast<std::size_t>(std::floor(ly / l.ay)) + 1;
     const double used_x = static_cast<double>(l.cols - 1) * l.ax;
     const double used_y = static_cast<double>(l.rows - 1) * l.ay;
     l.origin = {where.lo.x + 0.5 * (lx - used_x), where.lo.y + 0.5 * (ly - used_y)};
-    if (l.odd_cols > 0 && l.odd_cols == l.cols) l.origin.x = where.lo.x + 0.5 * (lx - used_x - 0.5 * l.ax);
+    if (l.odd_cols > 0 && l.odd_cols == l.cols)
+        l.origin.x = where.lo.x + 0.5 * (lx - used_x - 0.5 * l.ax);
     return l;
 }
 
 class LatticePlacer {
-public:
-    LatticePlacer(Scene& scene, const GenerateSpec& spec, const Placement& where, std::size_t count, Rng& rng,
-                  const std::string& prefix)
+  public:
+    LatticePlacer(Scene& scene, const GenerateSpec& spec, const Placement& where, std::size_t count,
+                  Rng& rng, const std::string& prefix)
         : scene_(scene), spec_(spec), where_(where), count_(count), rng_(rng), prefix_(prefix) {}
 
     void run() {
         const Lattice lattice = choose();
         const std::vector<Vec2> free = free_sites(lattice);
-        const double jitter = 0.5 * (lattice.neighbour_distance() - 2.0 * spec_.radius) * (1.0 - 1e-6);
+        const double jitter =
+            0.5 * (lattice.neighbour_distance() - 2.0 * spec_.radius) * (1.0 - 1e-6);
         place(pick(free.size()), free, jitter);
     }
 
-private:
+  private:
     // Sites of `lattice` where a disc (with room to jitter) does not touch an existing disc.
     std::vector<Vec2> free_sites(const Lattice& lattice) const {
         std::vector<Vec2> sites;
         sites.reserve(lattice.sites());
-        const double jitter = 0.5 * std::max(0.0, lattice.neighbour_distance() - 2.0 * spec_.radius);
+        const double jitter =
+            0.5 * std::max(0.0, lattice.neighbour_distance() - 2.0 * spec_.radius);
         if (scene_.discs.empty()) {
             lattice.for_each_site([&](Vec2 p) { sites.push_back(scene_.box.wrap(p)); });
             return sites;
@@ -232,7 +275,8 @@ private:
         const Occupancy occupancy(scene_, spec_.radius + jitter, lattice.sites());
         lattice.for_each_site([&](Vec2 p) {
             const Vec2 q = scene_.box.wrap(p);
-            if (!occupancy.blocked(q, spec_.radius + jitter)) sites.push_back(q);
+            if (!occupancy.blocked(q, spec_.radius + jitter))
+                sites.push_back(q);
         });
         return sites;
     }
@@ -242,7 +286,8 @@ private:
     }
 
     std::size_t free_count(const Lattice& lattice) const {
-        if (scene_.discs.empty()) return lattice.sites();
+        if (scene_.discs.empty())
+            return lattice.sites();
         return free_sites(lattice).size();
     }
 
@@ -253,11 +298,16 @@ private:
         constexpr int max_rounds = 40;
         for (int round = 0; round < max_rounds; ++round) {
             const Lattice lattice = where_.wraps ? periodic_for(target) : rectangle_for(target);
-            if (!roomy(lattice)) break;
+            if (!roomy(lattice))
+                break;
             const std::size_t free = free_count(lattice);
-            if (free >= count_) return lattice;
-            const double grow = free == 0 ? 2.0 : 1.02 * static_cast<double>(count_) / static_cast<double>(free);
-            target = std::max(target + 1, static_cast<std::size_t>(std::ceil(static_cast<double>(target) * grow)));
+            if (free >= count_)
+                return lattice;
+            const double grow =
+                free == 0 ? 2.0 : 1.02 * static_cast<double>(count_) / static_cast<double>(free);
+            target =
+                std::max(target + 1,
+                         static_cast<std::size_t>(std::ceil(static_cast<double>(target) * grow)));
         }
         too_dense();
     }
@@ -268,7 +318,8 @@ private:
         const double ly = where_.hi.y - where_.lo.y;
         // Start a hair above the accepted minimum so rounding in hypot cannot reject it.
         double lo = 2.0 * spec_.radius * (1.0 + 2.0 * min_lattice_gap);
-        if (rectangle_lattice(where_, lo).sites() < target) return rectangle_lattice(where_, 0.0 + 2.0 * spec_.radius);
+        if (rectangle_lattice(where_, lo).sites() < target)
+            return rectangle_lattice(where_, 0.0 + 2.0 * spec_.radius);
         double hi = 2.0 * std::max(lx, ly) + 4.0 * spec_.radius;
         for (int i = 0; i < 100 && hi - lo > 1e-12 * lo; ++i) {
             const double mid = 0.5 * (lo + hi);
@@ -289,8 +340,10 @@ private:
             l.cols = l.odd_cols = (target + rows - 1) / rows;
             l.ax = box.width / static_cast<double>(l.cols);
             l.origin = {0.25 * l.ax, 0.5 * l.ay};
-            if (best.rows == 0 || l.neighbour_distance() > best.neighbour_distance()) best = l;
-            if (l.ay < spec_.radius) break;  // rows closer than a radius: only worse from here
+            if (best.rows == 0 || l.neighbour_distance() > best.neighbour_distance())
+                best = l;
+            if (l.ay < spec_.radius)
+                break;  // rows closer than a radius: only worse from here
         }
         return best;
     }
@@ -298,21 +351,25 @@ private:
     [[noreturn]] void too_dense() const {
         fail(prefix_, spec_.count ? "count" : "packing_fraction",
              "cannot place " + std::to_string(count_) + " discs of radius " + num(spec_.radius) +
-                 " in the region without overlaps; lower the count or packing fraction, or the radius");
+                 " in the region without overlaps; lower the count or packing fraction, or the "
+                 "radius");
     }
 
     // `count_` distinct site indices out of n, in increasing order (spatial order: good for the
     // engines' caches); random vacancies help the lattice melt.
     std::vector<std::size_t> pick(std::size_t n) {
         std::vector<std::size_t> index(n);
-        for (std::size_t i = 0; i < n; ++i) index[i] = i;
-        for (std::size_t i = 0; i < count_; ++i) std::swap(index[i], index[i + rng_.below(n - i)]);
+        for (std::size_t i = 0; i < n; ++i)
+            index[i] = i;
+        for (std::size_t i = 0; i < count_; ++i)
+            std::swap(index[i], index[i + rng_.below(n - i)]);
         index.resize(count_);
         std::sort(index.begin(), index.end());
         return index;
     }
 
-    void place(const std::vector<std::size_t>& chosen, const std::vector<Vec2>& sites, double jitter) {
+    void place(const std::vector<std::size_t>& chosen, const std::vector<Vec2>& sites,
+               double jitter) {
         scene_.discs.reserve(scene_.discs.size() + chosen.size());
         for (std::size_t i : chosen) {
             Vec2 p = sites[i];
@@ -322,7 +379,8 @@ private:
             const Vec2 q = p + Vec2{rho * std::cos(phi), rho * std::sin(phi)};
             if (where_.wraps) {
                 p = scene_.box.wrap(q);
-            } else if (q.x >= where_.lo.x && q.x <= where_.hi.x && q.y >= where_.lo.y && q.y <= where_.hi.y) {
+            } else if (q.x >= where_.lo.x && q.x <= where_.hi.x && q.y >= where_.lo.y &&
+                       q.y <= where_.hi.y) {
                 p = q;
             }
             scene_.discs.push_back(new_disc(spec_, p));
@@ -354,7 +412,8 @@ void thermal_velocities(std::vector<Disc>& discs, std::size_t first, double kT, 
     }
     const double target = static_cast<double>(n) * kT;
     const double scale = energy > 0.0 ? std::sqrt(target / energy) : 0.0;
-    for (std::size_t i = first; i < discs.size(); ++i) discs[i].velocity *= scale;
+    for (std::size_t i = first; i < discs.size(); ++i)
+        discs[i].velocity *= scale;
 }
 
 // Every disc at the same speed; consecutive pairs fly in opposite directions.
@@ -362,47 +421,61 @@ void fixed_speed_velocities(std::vector<Disc>& discs, std::size_t first, double 
     for (std::size_t i = first; i < discs.size(); i += 2) {
         const double phi = 2.0 * std::numbers::pi * rng.uniform();
         discs[i].velocity = {speed * std::cos(phi), speed * std::sin(phi)};
-        if (i + 1 < discs.size()) discs[i + 1].velocity = -discs[i].velocity;
+        if (i + 1 < discs.size())
+            discs[i + 1].velocity = -discs[i].velocity;
     }
 }
 
 }  // namespace
 
 void GenerateSpec::validate(const std::string& field_prefix) const {
-    auto bad = [&](const std::string& field, const std::string& reason) { fail(field_prefix, field, reason); };
-    if (!std::isfinite(radius) || !(radius > 0.0)) bad("radius", "must be a finite number > 0 (got " + num(radius) + ")");
-    if (!std::isfinite(mass) || !(mass > 0.0)) bad("mass", "must be a finite number > 0 (got " + num(mass) + ")");
-    if (!std::isfinite(temperature) || temperature < 0.0) bad("temperature", "must be a finite number >= 0 (got " + num(temperature) + ")");
-    if (speed && (!std::isfinite(*speed) || *speed < 0.0)) bad("speed", "must be a finite number >= 0 (got " + num(*speed) + ")");
+    auto bad = [&](const std::string& field, const std::string& reason) {
+        fail(field_prefix, field, reason);
+    };
+    if (!std::isfinite(radius) || !(radius > 0.0))
+        bad("radius", "must be a finite number > 0 (got " + num(radius) + ")");
+    if (!std::isfinite(mass) || !(mass > 0.0))
+        bad("mass", "must be a finite number > 0 (got " + num(mass) + ")");
+    if (!std::isfinite(temperature) || temperature < 0.0)
+        bad("temperature", "must be a finite number >= 0 (got " + num(temperature) + ")");
+    if (speed && (!std::isfinite(*speed) || *speed < 0.0))
+        bad("speed", "must be a finite number >= 0 (got " + num(*speed) + ")");
     if (count == 0) {
         if (!std::isfinite(packing_fraction) || !(packing_fraction > 0.0)) {
             bad("count", "give count > 0 or packing_fraction > 0");
         }
         if (packing_fraction > max_generated_packing_fraction) {
-            bad("packing_fraction", num(packing_fraction) + " is above the maximum " + num(max_generated_packing_fraction) +
+            bad("packing_fraction", num(packing_fraction) + " is above the maximum " +
+                                        num(max_generated_packing_fraction) +
                                         " the generator can reach (close packing is 0.9069)");
         }
     } else if (packing_fraction != 0.0) {
         bad("packing_fraction", "give either count or packing_fraction, not both");
     }
-    if (!std::isfinite(region_min.x) || !std::isfinite(region_min.y)) bad("region", "corners must be finite numbers");
-    if (region_max && (!std::isfinite(region_max->x) || !std::isfinite(region_max->y))) bad("region", "corners must be finite numbers");
+    if (!std::isfinite(region_min.x) || !std::isfinite(region_min.y))
+        bad("region", "corners must be finite numbers");
+    if (region_max && (!std::isfinite(region_max->x) || !std::isfinite(region_max->y)))
+        bad("region", "corners must be finite numbers");
 }
 
 void generate_discs(Scene& scene, const GenerateSpec& spec, const std::string& field_prefix) {
     spec.validate(field_prefix);
     const Placement where = resolve_region(scene.box, spec, field_prefix);
     const std::size_t count = resolve_count(spec, where, field_prefix);
-    if (scene.discs.size() + count >= std::numeric_limits<std::uint32_t>::max()) fail(field_prefix, "count", "too many discs");
+    if (scene.discs.size() + count >= std::numeric_limits<std::uint32_t>::max())
+        fail(field_prefix, "count", "too many discs");
     Rng rng(spec.seed);
     const std::size_t first = scene.discs.size();
 
     const Vec2 region_lo = spec.region_min;
     const Vec2 region_hi = spec.region_max.value_or(Vec2{scene.box.width, scene.box.height});
     const double eta = (static_cast<double>(count) * std::numbers::pi * spec.radius * spec.radius +
-                        existing_area_in(scene, region_lo, region_hi)) / where.region_area;
-    const bool random_done = eta <= random_placement_limit && place_randomly(scene, spec, where, count, rng);
-    if (!random_done) LatticePlacer(scene, spec, where, count, rng, field_prefix).run();
+                        existing_area_in(scene, region_lo, region_hi)) /
+                       where.region_area;
+    const bool random_done =
+        eta <= random_placement_limit && place_randomly(scene, spec, where, count, rng);
+    if (!random_done)
+        LatticePlacer(scene, spec, where, count, rng, field_prefix).run();
 
     if (spec.speed) {
         fixed_speed_velocities(scene.discs, first, *spec.speed, rng);

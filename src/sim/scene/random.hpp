@@ -10,7 +10,7 @@
 namespace collide::detail {
 
 class Rng {
-public:
+  public:
     explicit Rng(std::uint64_t seed) : engine_(seed) {}
 
     /// Uniform in [0, 1) with 53 random bits.
@@ -23,7 +23,8 @@ public:
     std::uint64_t below(std::uint64_t n) {
         const std::uint64_t limit = UINT64_MAX - UINT64_MAX % n;
         std::uint64_t x = engine_();
-        while (x >= limit) x = engine_();
+        while (x >= limit)
+            x = engine_();
         return x % n;
     }
 
@@ -34,7 +35,7 @@ public:
         return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
     }
 
-private:
+  private:
     std::mt19937_64 engine_;
 };
 

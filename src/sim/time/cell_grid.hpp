@@ -41,6 +41,12 @@ class CellGrid {
         }
     }
 
+    /// Heap memory held (capacity), bytes.
+    [[nodiscard]] std::size_t bytes() const noexcept {
+        return (cell_start_.capacity() + sorted_.capacity() + cell_id_.capacity()) *
+               sizeof(std::uint32_t);
+    }
+
   private:
     [[nodiscard]] std::size_t cell_of(Vec2 p) const noexcept;
     [[nodiscard]] bool neighbour(std::size_t cx, std::size_t cy, int ox, int oy,

@@ -3,12 +3,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <numbers>
 #include <string>
 #include <tuple>
+#include <type_traits>
 
 #include "collide/error.hpp"
 #include "collide/sim/kinematics.hpp"
+#include "collide/sim/observables.hpp"
 #include "time/cell_grid.hpp"
 
 namespace collide {
@@ -262,7 +263,7 @@ void TimeEngine::resolve_pair_contact(const Contact& contact, double h) {
     const Vec2 contact_dr = box_.displacement(position_[a], position_[b]);
     const Vec2 impulse =
         kinematics::resolve_pair(velocity_[a], velocity_[b], mass_[a], mass_[b], contact_dr);
-    virial_sum_ += std::fabs(dot(contact_dr, impulse));
+    impulses_.virial += std::fabs(dot(contact_dr, impulse));
     move(a, back * velocity_[a]);
     move(b, back * velocity_[b]);
     ++collisions_pair_;
@@ -286,10 +287,11 @@ void TimeEngine::resolve_wall_contact(const Contact& contact, double h) {
     const double t_contact = within_step(kinematics::time_to_wall(p - h * v, v, r, extent), h);
     const double back = h - t_contact;
     move(i, -back * velocity_[i]);
-    wall_impulse_sum_ += 2.0 * mass_[i] * std::fabs(v);
+    impulses_.wall_impulse += 2.0 * mass_[i] * std::fabs(v);
     v = -v;
     move(i, back * velocity_[i]);
     ++collisions_wall_;
+    ++(x_axis ? collisions_xwall_ : collisions_ywall_);
     record(contact.kind, i, 0, step_start_ + t_contact);
 }
 
@@ -322,11 +324,14 @@ void TimeEngine::take_census() {
         }
     });
     std::sort(overlapping_pairs_.begin(), overlapping_pairs_.end());
+    // Escaped = entirely past a wall line. A disc whose centre is outside by less than r still
+    // touches the wall and is reflected at the next check, so it is not (yet) an escape.
     escaped_count_ = 0;
     for (std::size_t i = 0; i < position_.size(); ++i) {
         const Vec2 p = position_[i];
+        const double r = radius_[i];
         escaped_[i] = box_.boundary == Boundary::walls &&
-                      !(p.x >= 0.0 && p.x <= box_.width && p.y >= 0.0 && p.y <= box_.height);
+                      (p.x <= -r || p.x >= box_.width + r || p.y <= -r || p.y >= box_.height + r);
         if (escaped_[i]) {
             ++escaped_count_;
         }
@@ -362,6 +367,16 @@ double TimeEngine::max_speed() const noexcept {
     return std::sqrt(v2);
 }
 
+std::uint64_t TimeEngine::bytes() const noexcept {
+    auto held = [](const auto& v) {
+        return static_cast<std::uint64_t>(v.capacity() *
+                                          sizeof(typename std::decay_t<decltype(v)>::value_type));
+    };
+    return held(position_) + held(velocity_) + held(displacement_) + held(radius_) + held(mass_) +
+           held(color_) + (tagged_.capacity() + escaped_.capacity()) / 8 + held(contacts_) +
+           held(overlapping_pairs_) + held(missed_markers_) + grid_->bytes();
+}
+
 double TimeEngine::kinetic_energy() const noexcept {
     double e = 0.0;
     for (std::size_t i = 0; i < velocity_.size(); ++i) {
@@ -393,35 +408,17 @@ Snapshot TimeEngine::snapshot() const {
 
 Measurements TimeEngine::measurements() const {
     Measurements m;
-    const auto n = static_cast<double>(position_.size());
     m.t = time_;
     m.steps = steps_;
     m.collisions_pair = collisions_pair_;
     m.collisions_wall = collisions_wall_;
+    m.collisions_xwall = collisions_xwall_;
+    m.collisions_ywall = collisions_ywall_;
     m.events = collisions_pair_ + collisions_wall_;
     m.predictions = predictions_;
 
-    m.kinetic_energy = kinetic_energy();
-    for (std::size_t i = 0; i < velocity_.size(); ++i) {
-        m.momentum += mass_[i] * velocity_[i];
-    }
-    m.temperature = n > 0 ? m.kinetic_energy / n : 0.0;
-    double disc_area = 0.0;
-    for (double r : radius_) {
-        disc_area += std::numbers::pi * r * r;
-    }
-    m.packing_fraction = disc_area / box_.area();
-    if (time_ > 0.0 && m.temperature > 0.0) {
-        const double nkt = n * m.temperature;
-        if (box_.boundary == Boundary::periodic) {
-            m.compressibility = 1.0 + virial_sum_ / (2.0 * nkt * time_);
-            m.pressure = m.compressibility * nkt / box_.area();
-        } else {
-            const double perimeter = 2.0 * (box_.width + box_.height);
-            m.pressure = wall_impulse_sum_ / (perimeter * time_);
-            m.compressibility = m.pressure * box_.area() / nkt;
-        }
-    }
+    // The same formulas as the event-driven engines, from the same code.
+    sim::fill_thermodynamics(m, velocity_, mass_, radius_, box_, impulses_);
     m.max_overlap = max_overlap_;
     m.max_overlap_seen = max_overlap_seen_;
 
@@ -437,6 +434,7 @@ Measurements TimeEngine::measurements() const {
     m.msd = msd_count > 0 ? msd_sum / msd_count : 0.0;
 
     m.wall_seconds = wall_seconds_;
+    m.engine_bytes = bytes();
     const auto collisions = static_cast<double>(collisions_pair_ + collisions_wall_);
     m.collisions_per_second = wall_seconds_ > 0.0 ? collisions / wall_seconds_ : 0.0;
     m.seconds_per_time_unit = time_ > 0.0 ? wall_seconds_ / time_ : 0.0;

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// A d-ary heap in a 0-based array: children of i are d*i+1 ... d*i+d, parent (i-1)/d.
-/// d = 2 is the lecture's binary heap. push and pop are O(log_d N) (pop does d compares a level).
+/// d = 2 is the lecture's binary heap. push and pop are O(log_d N): pop makes d - 1 compares a
+/// level on its way down, then a short rise (see sink_from_root).
 /// D = 0 selects an arity chosen at run time (constructor argument); a compile-time D lets the
 /// compiler turn the index arithmetic into shifts and unroll the child scan, so prefer it.
 
@@ -26,6 +27,14 @@ public:
     /// Largest run-time arity accepted; wider nodes only cost compares.
     static constexpr unsigned max_runtime_arity = 64;
 
+    /// pop: heaps up to this many bytes pick the best child without branches (they sit in the
+    /// processor's caches, where a mispredicted branch costs more than a select); larger ones
+    /// branch, so the processor can guess the path and load the next level ahead of the compare
+    /// instead of waiting for each level's cache miss in turn. On the hold model at N = 10^6
+    /// doubles the branch-free binary heap took 1.7 to 2.6 times as long as std::priority_queue,
+    /// the branching one about as long (bench/bench_pq.cpp, docs/benchmarks.md).
+    static constexpr std::size_t branch_free_bytes = std::size_t{1} << 20;
+
     /// An empty heap (a run-time-arity heap built this way is binary).
     DaryHeap() = default;
     explicit DaryHeap(Less less) : less_(std::move(less)) {}
@@ -37,7 +46,7 @@ public:
         : d_(d), less_(std::move(less)) {
         if (d < 2 || d > max_runtime_arity) {
             throw_runtime_error("d-ary heap: arity " + std::to_string(d) + " out of range (2.." +
-                              std::to_string(max_runtime_arity) + ")");
+                                std::to_string(max_runtime_arity) + ")");
         }
     }
 
@@ -68,13 +77,9 @@ public:
     /// Removes and returns the item that comes out next. Precondition: !empty(). O(d log_d N).
     T pop() {
         T out = std::move(a_.front());
-        if (a_.size() > 1) {
-            a_.front() = std::move(a_.back());
-            a_.pop_back();
-            sink(0);
-        } else {
-            a_.pop_back();
-        }
+        T last = std::move(a_.back());
+        a_.pop_back();
+        if (!a_.empty()) sink_from_root(std::move(last));
         validate();
         return out;
     }
@@ -113,22 +118,110 @@ private:
         a_[i] = std::move(x);
     }
 
+
+    /// The child of i that comes out first (the first of tying children). Precondition: i has
+    /// a child.
+    template <bool BranchFree>
+    [[nodiscard]] std::size_t best_child(std::size_t i) const {
+        const std::size_t c0 = d() * i + 1;
+        const std::size_t n = a_.size();
+        if constexpr (D != 0) {
+            if (c0 + D <= n) {
+                if constexpr (BranchFree) {
+                    return best_of<D>(c0);
+                } else {
+                    // Halves without branches, the final between them with a real branch.
+                    const std::size_t left = best_of<D / 2>(c0);
+                    const std::size_t right = best_of<D - D / 2>(c0 + D / 2);
+                    if (first(a_[right], a_[left])) {
+                        keep_branch();
+                        return right;
+                    }
+                    return left;
+                }
+            }
+        }
+        const std::size_t c_end = c0 + d() < n ? c0 + d() : n;
+        std::size_t best = c0;
+        for (std::size_t c = c0 + 1; c < c_end; ++c) best = pick(c, best);
+        return best;
+    }
+
+    /// An empty statement the compiler must keep, so it cannot turn the branch around it into a
+    /// conditional move: the point of the branch is that the processor guesses it and starts
+    /// loading the next level before the compare is done.
+    static void keep_branch() noexcept {
+#if defined(__GNUC__)
+        asm volatile("");
+#endif
+    }
+
+    /// The first-coming of the K items from index c on, as a knock-out tournament in which the
+    /// left item wins ties (so the first of tying items wins, as in a left-to-right scan). Each
+    /// round's compares are independent, so a full node costs about log2 K dependent steps.
+    template <unsigned K>
+    [[nodiscard]] std::size_t best_of(std::size_t c) const {
+        if constexpr (K == 1) {
+            return c;
+        } else {
+            return pick(best_of<K - K / 2>(c + K / 2), best_of<K / 2>(c));
+        }
+    }
+
+    /// `challenger` if it comes out before `holder`, else `holder`, computed without a branch.
+    [[nodiscard]] std::size_t pick(std::size_t challenger, std::size_t holder) const {
+        const auto take = static_cast<std::size_t>(first(a_[challenger], a_[holder]));
+        return holder + ((challenger - holder) & (std::size_t{0} - take));
+    }
+
+    /// The lecture's sink: move the item at i down while a child comes out before it.
     void sink(std::size_t i) {
         const std::size_t n = a_.size();
         T x = std::move(a_[i]);
-        for (;;) {
-            const std::size_t c0 = d() * i + 1;
-            if (c0 >= n) break;
-            const std::size_t c_end = c0 + d() < n ? c0 + d() : n;
-            std::size_t best = c0;
-            for (std::size_t c = c0 + 1; c < c_end; ++c) {
-                if (first(a_[c], a_[best])) best = c;
-            }
+        while (d() * i + 1 < n) {
+            const std::size_t best = best_child<true>(i);
             if (!first(a_[best], x)) break;
             a_[i] = std::move(a_[best]);
             i = best;
         }
         a_[i] = std::move(x);
+    }
+
+    /// pop's sink of x (the former last item) from the empty root, bottom-up (Floyd): move the
+    /// hole down the path of best children to a leaf without comparing against x, then let x
+    /// rise from there while its parent does not come out before it. The last item nearly always
+    /// belongs near the bottom, so this saves a compare and an unpredictable branch per level.
+    /// Rising past ties (non-strict) makes the result identical to the lecture's sink, which
+    /// stops above the first child that does not come out before x, so traces match the lecture.
+    void sink_from_root(T x) {
+        const std::size_t hole = n_bytes() <= branch_free_bytes ? hole_to_leaf<true>() : hole_to_leaf<false>();
+        rise_from(hole, std::move(x));
+    }
+
+    [[nodiscard]] std::size_t n_bytes() const noexcept { return a_.size() * sizeof(T); }
+
+    /// Moves the hole at the root down the path of best children to a leaf; returns the leaf.
+    template <bool BranchFree>
+    std::size_t hole_to_leaf() {
+        const std::size_t n = a_.size();
+        std::size_t hole = 0;
+        while (d() * hole + 1 < n) {
+            const std::size_t best = best_child<BranchFree>(hole);
+            a_[hole] = std::move(a_[best]);
+            hole = best;
+        }
+        return hole;
+    }
+
+    /// Puts x in the hole and lets it rise while its parent does not come out before it.
+    void rise_from(std::size_t hole, T x) {
+        while (hole > 0) {
+            const std::size_t parent = (hole - 1) / d();
+            if (first(a_[parent], x)) break;
+            a_[hole] = std::move(a_[parent]);
+            hole = parent;
+        }
+        a_[hole] = std::move(x);
     }
 
     void validate() const {

@@ -39,12 +39,14 @@ public:
         const handle_type h = free_.back();
         free_.pop_back();
         heap_.push(h, std::move(x));
+        validate();
     }
 
     /// Removes and returns the item that comes out next. Precondition: !empty(). O(d log_d N).
     T pop() {
         T out = heap_.top_key();
         free_.push_back(heap_.pop());
+        validate();
         return out;
     }
 
@@ -54,6 +56,16 @@ public:
         keys.reserve(heap_.size());
         for (handle_type h : heap_.array()) keys.push_back(heap_.key(h));
         return keys;
+    }
+
+    /// The heap's invariants (heap order, position map) and the free list's: every handle is
+    /// either in the heap or free, never both. O(capacity).
+    [[nodiscard]] bool check_invariants() const {
+        if (!heap_.check_invariants() || free_.size() + heap_.size() != heap_.capacity()) return false;
+        for (handle_type h : free_) {
+            if (h >= heap_.capacity() || heap_.contains(h)) return false;
+        }
+        return true;
     }
 
     /// The underlying indexed heap (handles, position map), read-only.
@@ -67,6 +79,10 @@ private:
         if (capacity <= old) return;
         heap_.reserve_handles(capacity);
         for (std::size_t h = capacity; h-- > old;) free_.push_back(static_cast<handle_type>(h));
+    }
+
+    void validate() const {
+        if constexpr (validate_heaps) require_invariant(check_invariants(), "indexed queue free list");
     }
 
     heap_type heap_;

@@ -1,0 +1,168 @@
+/// `collide bench engine`: throughput and memory of an event-driven engine, on a random periodic
+/// fluid (N discs at packing fraction eta, melted by the dynamics before timing) or on a scene.
+/// Figures for docs/benchmarks.md; not a test.
+
+#include <fmt/core.h>
+#include <sys/resource.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <numbers>
+#include <string>
+
+#include "collide/error.hpp"
+#include "collide/scene/load.hpp"
+#include "collide/sim/engine.hpp"
+#include "collide/sim/generate.hpp"
+#include "commands.hpp"
+#include "measurements_report.hpp"
+
+namespace collide::app {
+
+namespace {
+
+struct BenchOptions {
+    std::string scene;  ///< empty: random periodic fluid
+    std::size_t n = 100000;
+    double eta = 0.5;
+    double collisions = 5e6;      ///< collisions timed
+    double warmup = -1.0;         ///< collisions before timing; < 0: two per disc
+    std::uint64_t seed = 1;
+    EngineOptions engine;
+    bool json = false;
+
+    void validate() const {
+        if (scene.empty()) {
+            if (n < 2) throw_input_error("--n", 0, "", "needs at least 2 discs");
+            if (!(eta > 0.0 && eta <= 0.85)) throw_input_error("--eta", 0, "", "packing fraction must lie in (0, 0.85]");
+        }
+        if (!(collisions >= 1.0) || !std::isfinite(collisions)) {
+            throw_input_error("--collisions", 0, "", "must be a finite number >= 1");
+        }
+        if (!std::isfinite(warmup)) throw_input_error("--warmup", 0, "", "must be finite");
+        engine.validate();
+        if (engine.engine == "time") throw_input_error("--engine", 0, "", "bench engine measures event-driven engines");
+    }
+};
+
+/// CPU seconds used by this process so far (user + system): the machine is shared, so wall time
+/// includes time other processes had the core.
+double cpu_seconds() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    const auto seconds = [](const timeval& tv) { return static_cast<double>(tv.tv_sec) + 1e-6 * static_cast<double>(tv.tv_usec); };
+    return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
+/// Peak resident set size of this process, bytes (Linux reports kilobytes).
+std::uint64_t max_rss_bytes() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<std::uint64_t>(usage.ru_maxrss) * 1024U;
+}
+
+Scene random_fluid(const BenchOptions& options) {
+    Scene scene;
+    scene.name = fmt::format("fluid-n{}-eta{}", options.n, options.eta);
+    scene.box = Box{1.0, 1.0, Boundary::periodic};
+    GenerateSpec spec;
+    spec.count = options.n;
+    spec.radius = std::sqrt(options.eta / (std::numbers::pi * static_cast<double>(options.n)));
+    spec.temperature = 1.0;
+    spec.seed = options.seed;
+    spec.validate();
+    generate_discs(scene, spec);
+    return scene;
+}
+
+/// Advances until `target` more collisions have happened (counted by the listener), in steps
+/// sized from the observed collision rate.
+void run_collisions(Engine& engine, const std::uint64_t& counter, double target) {
+    const std::uint64_t goal = counter + static_cast<std::uint64_t>(target);
+    double step = 1e-6;
+    while (counter < goal) {
+        const std::uint64_t before = counter;
+        const double t0 = engine.time();
+        engine.advance_to(t0 + step);
+        const double done = static_cast<double>(counter - before);
+        const double wanted = std::max(1.0, std::min(static_cast<double>(goal - counter), target / 8.0));
+        // Aim each step at ~1/8 of the goal; grow fast while nothing happens.
+        step = done > 0.0 ? std::min(step * 8.0, step * wanted / done) : step * 8.0;
+    }
+}
+
+void run_bench(const BenchOptions& options) {
+    options.validate();
+    const Scene scene = options.scene.empty() ? random_fluid(options) : load_scene(options.scene);
+    const double n = static_cast<double>(scene.discs.size());
+    const std::uint64_t rss_before = max_rss_bytes();
+    std::unique_ptr<Engine> engine = make_engine(scene, options.engine);
+    std::uint64_t collisions = 0;
+    engine->set_collision_listener([&collisions](const CollisionRecord&) { ++collisions; });
+    run_collisions(*engine, collisions, options.warmup >= 0.0 ? options.warmup : 2.0 * n);
+    // Before the first measurements() call, whose temporaries would count as engine memory.
+    const std::uint64_t rss_after = max_rss_bytes();
+    const Measurements m0 = engine->measurements();
+    const double cpu0 = cpu_seconds();
+    run_collisions(*engine, collisions, options.collisions);
+    const double cpu_timed = cpu_seconds() - cpu0;
+    const Measurements m1 = engine->measurements();
+
+    const double seconds = m1.wall_seconds - m0.wall_seconds;
+    const auto delta = [](std::uint64_t a, std::uint64_t b) { return static_cast<double>(a - b); };
+    const double timed_collisions = delta(m1.collisions_pair + m1.collisions_wall, m0.collisions_pair + m0.collisions_wall);
+    const double timed_events = delta(m1.events, m0.events);
+    const double pops = delta(m1.queue.pops, m0.queue.pops);
+    const double window = m1.t - m0.t;
+    // Z over the timed window only (the tally runs from t = 0, through the melting).
+    const double z_window = 1.0 + ((m1.compressibility - 1.0) * m1.t - (m0.compressibility - 1.0) * m0.t) / window;
+
+    std::vector<ReportField> fields{
+        {"scene", scene.name},
+        {"engine", options.engine.engine},
+        {"discs", static_cast<std::uint64_t>(scene.discs.size())},
+        {"packing_fraction", m1.packing_fraction},
+        {"timed_collisions", static_cast<std::uint64_t>(timed_collisions)},
+        {"seconds", seconds},
+        {"cpu_seconds", cpu_timed},
+        {"collisions_per_second", timed_collisions / seconds},
+        {"collisions_per_cpu_second", timed_collisions / cpu_timed},
+        {"events_per_cpu_second", timed_events / cpu_timed},
+        {"stale_fraction", pops > 0 ? delta(m1.queue.stale_pops, m0.queue.stale_pops) / pops : 0.0},
+        {"cell_crossings_per_collision", delta(m1.cell_crossings, m0.cell_crossings) / timed_collisions},
+        {"pq_max_size", m1.queue.max_size},
+        {"engine_bytes_per_disc", static_cast<double>(m1.engine_bytes) / n},
+        {"rss_delta_bytes_per_disc", static_cast<double>(rss_after - rss_before) / n},
+        {"compressibility_window", options.scene.empty() || scene.box.boundary == Boundary::periodic
+                                       ? z_window
+                                       : m1.compressibility},
+        {"energy_relative_change", (m1.kinetic_energy - m0.kinetic_energy) / m0.kinetic_energy},
+        {"max_overlap", m1.max_overlap},
+    };
+    if (options.engine.engine == "classic") fields.insert(fields.begin() + 2, {"pq", options.engine.pq});
+    const std::string out = options.json ? format_json(fields) : format_text(fields);
+    std::fputs(out.c_str(), stdout);
+}
+
+}  // namespace
+
+void add_bench_command(CLI::App& root) {
+    CLI::App* bench = root.add_subcommand("bench", "Benchmarks (figures for docs/benchmarks.md)");
+    bench->require_subcommand(1);
+    auto options = std::make_shared<BenchOptions>();
+    CLI::App* cmd = bench->add_subcommand("engine", "Collisions per second and bytes per disc of an engine");
+    cmd->add_option("--scene", options->scene, "Scene to run instead of the random periodic fluid");
+    cmd->add_option("--n", options->n, "Discs in the random fluid (default 100000)");
+    cmd->add_option("--eta", options->eta, "Packing fraction of the random fluid (default 0.5)");
+    cmd->add_option("--collisions", options->collisions, "Collisions timed (default 5e6)");
+    cmd->add_option("--warmup", options->warmup, "Collisions before timing (default: 2 per disc)");
+    cmd->add_option("--seed", options->seed, "Seed of the random fluid");
+    cmd->add_option("--engine", options->engine.engine, "fast (default) or classic");
+    cmd->add_option("--pq", options->engine.pq, "Classic engine's queue");
+    cmd->add_flag("--json", options->json, "Print JSON");
+    cmd->callback([options] { run_bench(*options); });
+}
+
+}  // namespace collide::app

@@ -1,0 +1,150 @@
+/// `collide simulate SCENE --until T`: runs one engine without rendering and prints its
+/// measurements (text or JSON), optionally logging every collision as CSV `t,kind,a,b`.
+
+#include <fmt/core.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <system_error>
+#include <unistd.h>
+
+#include "collide/error.hpp"
+#include "collide/scene/load.hpp"
+#include "collide/sim/engine.hpp"
+#include "commands.hpp"
+#include "measurements_report.hpp"
+
+namespace collide::app {
+
+namespace {
+
+struct SimulateOptions {
+    std::string scene;
+    double until = 0.0;
+    EngineOptions engine;
+    std::string events_log;  ///< empty: no log
+    bool json = false;
+
+    /// Throws Error(input) naming the bad option.
+    void validate() const {
+        if (!(until >= 0.0) || !std::isfinite(until)) {
+            throw_input_error("--until", 0, "", "the end time must be a finite number >= 0");
+        }
+        engine.validate();
+    }
+};
+
+/// A file that appears at its destination only when finished: lines go to a temporary file
+/// beside it, finish() flushes, closes and renames. Dropped unfinished (an error on the way), the
+/// temporary is removed and the destination is untouched.
+class AtomicTextFile {
+public:
+    /// Opens the temporary file. Throws Error(input) naming `option` when it cannot be created.
+    AtomicTextFile(std::filesystem::path destination, const std::string& option)
+        : destination_(std::move(destination)), temporary_(destination_) {
+        // The process id keeps two runs (or a user's own *.tmp file) from sharing the temporary.
+        temporary_ += ".tmp-" + std::to_string(getpid());
+        if (std::filesystem::is_directory(destination_)) {
+            throw_input_error(option, 0, "", "'" + destination_.string() + "' is a directory");
+        }
+        file_ = std::fopen(temporary_.c_str(), "wb");
+        if (file_ == nullptr) {
+            throw_input_error(option, 0, "", "cannot write '" + destination_.string() + "': " +
+                                                 std::error_code(errno, std::generic_category()).message());
+        }
+    }
+    AtomicTextFile(const AtomicTextFile&) = delete;
+    AtomicTextFile& operator=(const AtomicTextFile&) = delete;
+    ~AtomicTextFile() {
+        if (file_ != nullptr) {
+            std::fclose(file_);
+            std::error_code ignored;
+            std::filesystem::remove(temporary_, ignored);
+        }
+    }
+
+    void write(const std::string& text) { std::fwrite(text.data(), 1, text.size(), file_); }
+
+    /// Flushes, closes and moves the file into place. Throws Error(runtime) on a write failure.
+    void finish() {
+        const bool write_failed = std::ferror(file_) != 0;
+        const bool close_failed = std::fclose(file_) != 0;
+        file_ = nullptr;
+        std::error_code ec;
+        if (write_failed || close_failed) {
+            std::filesystem::remove(temporary_, ec);
+            throw_runtime_error("writing '" + destination_.string() + "' failed (disk full?)");
+        }
+        std::filesystem::rename(temporary_, destination_, ec);
+        if (ec) {
+            std::filesystem::remove(temporary_, ec);
+            throw_runtime_error("cannot move the events log into place at '" + destination_.string() + "'");
+        }
+    }
+
+private:
+    std::filesystem::path destination_;
+    std::filesystem::path temporary_;
+    std::FILE* file_ = nullptr;
+};
+
+const char* kind_name(CollisionKind kind) {
+    switch (kind) {
+        case CollisionKind::pair: return "pair";
+        case CollisionKind::xwall: return "xwall";
+        case CollisionKind::ywall: return "ywall";
+    }
+    return "?";
+}
+
+void run_simulate(const SimulateOptions& options) {
+    options.validate();
+    const Scene scene = load_scene(options.scene);
+    // Open the log before simulating: an unwritable path fails fast, with nothing half written.
+    std::unique_ptr<AtomicTextFile> log;
+    if (!options.events_log.empty()) {
+        log = std::make_unique<AtomicTextFile>(options.events_log, "--events-log");
+        log->write("t,kind,a,b\n");
+    }
+    std::unique_ptr<Engine> engine = make_engine(scene, options.engine);
+    if (log) {
+        engine->set_collision_listener([&log](const CollisionRecord& r) {
+            if (r.kind == CollisionKind::pair) {
+                log->write(fmt::format("{},{},{},{}\n", r.t, kind_name(r.kind), r.a, r.b));
+            } else {
+                log->write(fmt::format("{},{},{},\n", r.t, kind_name(r.kind), r.a));
+            }
+        });
+    }
+    engine->advance_to(options.until);
+    if (log) log->finish();
+    std::vector<ReportField> fields{{"scene", scene.name}, {"engine", options.engine.engine}};
+    if (options.engine.engine == "classic") fields.push_back({"pq", options.engine.pq});
+    fields.push_back({"discs", static_cast<std::uint64_t>(scene.discs.size())});
+    for (ReportField& f : report_fields(engine->measurements())) fields.push_back(std::move(f));
+    const std::string out = options.json ? format_json(fields) : format_text(fields);
+    std::fputs(out.c_str(), stdout);
+}
+
+}  // namespace
+
+void add_simulate_command(CLI::App& root) {
+    auto options = std::make_shared<SimulateOptions>();
+    CLI::App* cmd = root.add_subcommand("simulate", "Run an engine to a time and print its measurements");
+    cmd->add_option("scene", options->scene, "Scene: algs4 .txt, .toml, or a built-in name")->required();
+    cmd->add_option("--until", options->until, "Simulation time to stop at")->required();
+    cmd->add_option("--engine", options->engine.engine, "fast (default), classic or time");
+    cmd->add_option("--pq", options->engine.pq,
+                    "Classic engine's queue: unordered|ordered|binary|dary:D|indexed[:D]");
+    cmd->add_option("--dt", options->engine.dt, "Time-driven step");
+    cmd->add_option("--td-detect", options->engine.td_detect, "Time-driven overlap checks: all-pairs|grid");
+    cmd->add_option("--events-log", options->events_log, "Write every collision as CSV t,kind,a,b");
+    cmd->add_flag("--json", options->json, "Print the measurements as JSON");
+    cmd->callback([options] { run_simulate(*options); });
+}
+
+}  // namespace collide::app

@@ -1,0 +1,117 @@
+#include "font.hpp"
+
+#include <stb_truetype.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+
+#include "collide/error.hpp"
+
+namespace collide::render {
+namespace {
+
+constexpr std::uint32_t first_code_point = 32;
+constexpr std::uint32_t code_point_count = 224;  // 32..255: ASCII and Latin-1 (×, ², ±, ·)
+
+std::vector<unsigned char> read_font_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        throw_runtime_error("font: cannot open '" + path +
+                            "' (install fonts-dejavu-core, or set the font path)");
+    }
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> decode_utf8(std::string_view text) {
+    std::vector<std::uint32_t> out;
+    out.reserve(text.size());
+    for (std::size_t i = 0; i < text.size();) {
+        const auto byte = static_cast<unsigned char>(text[i]);
+        int extra = 0;
+        std::uint32_t cp = 0;
+        if (byte < 0x80) { cp = byte; }
+        else if ((byte & 0xE0) == 0xC0) { cp = byte & 0x1F; extra = 1; }
+        else if ((byte & 0xF0) == 0xE0) { cp = byte & 0x0F; extra = 2; }
+        else if ((byte & 0xF8) == 0xF0) { cp = byte & 0x07; extra = 3; }
+        else { out.push_back(0xFFFD); ++i; continue; }
+        if (i + static_cast<std::size_t>(extra) >= text.size() && extra > 0) {
+            out.push_back(0xFFFD);  // truncated sequence at the end
+            break;
+        }
+        bool valid = true;
+        for (int k = 1; k <= extra; ++k) {
+            const auto next = static_cast<unsigned char>(text[i + static_cast<std::size_t>(k)]);
+            if ((next & 0xC0) != 0x80) { valid = false; break; }
+            cp = (cp << 6) | (next & 0x3F);
+        }
+        if (!valid) { out.push_back(0xFFFD); ++i; continue; }
+        out.push_back(cp);
+        i += static_cast<std::size_t>(extra) + 1;
+    }
+    return out;
+}
+
+FontAtlas::FontAtlas(const std::string& path, float pixel_height) : pixel_height_(pixel_height) {
+    const std::vector<unsigned char> data = read_font_file(path);
+    stbtt_fontinfo info;
+    if (data.empty() || stbtt_InitFont(&info, data.data(), stbtt_GetFontOffsetForIndex(data.data(), 0)) == 0) {
+        throw_runtime_error("font: '" + path + "' is not a usable TrueType font");
+    }
+    int ascent = 0, descent = 0, gap = 0;
+    stbtt_GetFontVMetrics(&info, &ascent, &descent, &gap);
+    ascent_ = static_cast<float>(ascent) * stbtt_ScaleForPixelHeight(&info, pixel_height);
+
+    // 224 glyphs fit 256x256 up to ~20 px, 512x512 up to ~48 px.
+    atlas_size_ = pixel_height <= 20.0F ? 256 : (pixel_height <= 48.0F ? 512 : 1024);
+    bitmap_.assign(static_cast<std::size_t>(atlas_size_) * atlas_size_, 0);
+    std::vector<stbtt_bakedchar> baked(code_point_count);
+    const int rows_used =
+        stbtt_BakeFontBitmap(data.data(), 0, pixel_height, bitmap_.data(), atlas_size_,
+                             atlas_size_, static_cast<int>(first_code_point),
+                             static_cast<int>(code_point_count), baked.data());
+    if (rows_used <= 0) {
+        throw_runtime_error("font: glyphs of '" + path + "' do not fit the atlas at this size");
+    }
+    const float inv = 1.0F / static_cast<float>(atlas_size_);
+    glyphs_.reserve(code_point_count);
+    for (const stbtt_bakedchar& b : baked) {
+        glyphs_.push_back({b.xoff, b.yoff, b.xoff + static_cast<float>(b.x1 - b.x0),
+                           b.yoff + static_cast<float>(b.y1 - b.y0), b.x0 * inv, b.y0 * inv,
+                           b.x1 * inv, b.y1 * inv, b.xadvance});
+    }
+}
+
+const FontAtlas::Glyph& FontAtlas::glyph(std::uint32_t code_point) const noexcept {
+    if (code_point < first_code_point || code_point >= first_code_point + code_point_count) {
+        code_point = '?';
+    }
+    return glyphs_[code_point - first_code_point];
+}
+
+float FontAtlas::add_text(OverlayBatch& batch, float x, float baseline_y, std::string_view text,
+                          Rgba8 color) const {
+    // Snap the pen to whole pixels: glyphs were rasterised on the pixel grid.
+    float pen = std::round(x);
+    const float base = std::round(baseline_y);
+    for (const std::uint32_t cp : decode_utf8(text)) {
+        const Glyph& g = glyph(cp);
+        if (g.x1 > g.x0) {
+            batch.add_glyph({pen + g.x0, base + g.y0, pen + g.x1, base + g.y1},
+                            {g.u0, g.v0, g.u1, g.v1}, color);
+        }
+        pen += g.advance;
+    }
+    return pen;
+}
+
+float FontAtlas::text_width(std::string_view text) const {
+    float width = 0.0F;
+    for (const std::uint32_t cp : decode_utf8(text)) width += glyph(cp).advance;
+    return width;
+}
+
+}  // namespace collide::render

@@ -1,0 +1,178 @@
+#include "plots.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
+
+namespace collide::render {
+namespace {
+
+constexpr Rgba8 axis_color{150, 150, 160, 255};
+constexpr Rgba8 label_color{210, 210, 215, 255};
+constexpr Rgba8 curve_color{250, 250, 250, 255};
+// Beyond this many distinct masses, one curve at the mean mass is a fair summary.
+constexpr std::size_t max_mass_groups = 16;
+
+std::string format_number(const char* format, double value) {
+    char text[48];
+    std::snprintf(text, sizeof text, format, value);
+    return text;
+}
+
+struct PlotFrame {
+    RectF plot;  // the data area
+    float line_width;
+};
+
+// Title line above, axes along the bottom and left.
+PlotFrame draw_axes(OverlayBatch& batch, const FontAtlas& font, RectF area, const std::string& title) {
+    const float line = std::max(1.0F, std::round(font.pixel_height() / 12.0F));
+    font.add_text(batch, area.x0, area.y0 + font.ascent(), title, label_color);
+    RectF plot{area.x0, area.y0 + font.line_height(), area.x1, area.y1};
+    if (plot.y1 <= plot.y0 + 2.0F) plot.y0 = plot.y1 - 2.0F;
+    batch.add_rect({plot.x0, plot.y1 - line, plot.x1, plot.y1}, axis_color);
+    batch.add_rect({plot.x0, plot.y0, plot.x0 + line, plot.y1}, axis_color);
+    return {plot, line};
+}
+
+}  // namespace
+
+std::vector<double> speed_density(const Snapshot& snapshot, double v_min, double v_max, int bins) {
+    std::vector<double> density(static_cast<std::size_t>(std::max(bins, 1)), 0.0);
+    if (snapshot.discs.empty() || !(v_max > v_min)) return density;
+    const double width = (v_max - v_min) / static_cast<double>(density.size());
+    for (const DiscState& d : snapshot.discs) {
+        const double bin = std::floor((norm(d.velocity) - v_min) / width);
+        if (bin >= 0.0 && bin < static_cast<double>(density.size())) {
+            density[static_cast<std::size_t>(bin)] += 1.0;
+        }
+    }
+    const double scale = 1.0 / (static_cast<double>(snapshot.discs.size()) * width);
+    for (double& value : density) value *= scale;
+    return density;
+}
+
+MaxwellBoltzmann::MaxwellBoltzmann(const Snapshot& snapshot) {
+    if (snapshot.discs.empty()) return;
+    std::map<double, double> counts;
+    double kinetic = 0.0;
+    double mass_sum = 0.0;
+    for (const DiscState& d : snapshot.discs) {
+        kinetic += 0.5 * d.mass * norm2(d.velocity);
+        mass_sum += d.mass;
+        counts[d.mass] += 1.0;
+    }
+    const auto n = static_cast<double>(snapshot.discs.size());
+    kT_ = kinetic / n;
+    if (counts.size() > max_mass_groups) {
+        groups_.push_back({mass_sum / n, 1.0});
+    } else {
+        for (const auto& [mass, count] : counts) groups_.push_back({mass, count / n});
+    }
+}
+
+double MaxwellBoltzmann::density(double speed) const noexcept {
+    if (!(kT_ > 0.0) || speed < 0.0) return 0.0;
+    double f = 0.0;
+    for (const Group& g : groups_) {
+        f += g.weight * (g.mass * speed / kT_) * std::exp(-g.mass * speed * speed / (2.0 * kT_));
+    }
+    return f;
+}
+
+Rgb8 panel_color(std::size_t panel) noexcept {
+    return panel == 0 ? Rgb8{240, 150, 60} : Rgb8{90, 175, 245};
+}
+
+void draw_speed_plot(OverlayBatch& batch, const FontAtlas& font, RectF area,
+                     const std::vector<const Snapshot*>& snapshots, double v_min, double v_max) {
+    const PlotFrame frame = draw_axes(batch, font, area, "speed distribution vs Maxwell-Boltzmann");
+    const RectF plot = frame.plot;
+    if (snapshots.empty() || plot.width() < 4.0F) return;
+    const int bins = std::clamp(static_cast<int>(plot.width() / 6.0F), 8, 40);
+    std::vector<std::vector<double>> histograms;
+    double peak = 0.0;
+    for (const Snapshot* s : snapshots) {
+        histograms.push_back(speed_density(*s, v_min, v_max, bins));
+        peak = std::max(peak, *std::max_element(histograms.back().begin(), histograms.back().end()));
+    }
+    const MaxwellBoltzmann curve(*snapshots.back());
+    constexpr int curve_samples = 64;
+    std::vector<double> curve_values(curve_samples + 1);
+    for (int i = 0; i <= curve_samples; ++i) {
+        curve_values[static_cast<std::size_t>(i)] =
+            curve.density(v_min + (v_max - v_min) * i / curve_samples);
+        peak = std::max(peak, curve_values[static_cast<std::size_t>(i)]);
+    }
+    if (!(peak > 0.0)) return;
+    const double y_scale = static_cast<double>(plot.height() - frame.line_width) / (peak * 1.1);
+    const auto to_y = [&](double value) {
+        return plot.y1 - frame.line_width - static_cast<float>(value * y_scale);
+    };
+    const float bin_width = plot.width() / static_cast<float>(bins);
+    for (std::size_t p = 0; p < histograms.size(); ++p) {
+        const Rgba8 color = with_alpha(panel_color(p), 230);
+        float previous_y = to_y(0.0);
+        for (int b = 0; b < bins; ++b) {
+            const float x0 = plot.x0 + bin_width * static_cast<float>(b);
+            const float y = to_y(histograms[p][static_cast<std::size_t>(b)]);
+            batch.add_line({x0, previous_y}, {x0, y}, frame.line_width, color);
+            batch.add_line({x0, y}, {x0 + bin_width, y}, frame.line_width, color);
+            previous_y = y;
+        }
+    }
+    for (int i = 0; i < curve_samples; ++i) {
+        const float x0 = plot.x0 + plot.width() * static_cast<float>(i) / curve_samples;
+        const float x1 = plot.x0 + plot.width() * static_cast<float>(i + 1) / curve_samples;
+        batch.add_line({x0, to_y(curve_values[static_cast<std::size_t>(i)])},
+                       {x1, to_y(curve_values[static_cast<std::size_t>(i) + 1])},
+                       frame.line_width * 1.5F, curve_color);
+    }
+    const std::string range = format_number("v max %.3g", v_max);
+    font.add_text(batch, plot.x1 - font.text_width(range), area.y0 + font.ascent(), range,
+                  axis_color);
+}
+
+void draw_drift_plot(OverlayBatch& batch, const FontAtlas& font, RectF area,
+                     const std::vector<std::vector<DriftPoint>>& series) {
+    double t_min = 0.0;
+    double t_max = 0.0;
+    double largest = 0.0;
+    bool any = false;
+    for (const auto& s : series) {
+        for (const DriftPoint& p : s) {
+            if (!std::isfinite(p.drift) || !std::isfinite(p.time)) continue;
+            t_min = any ? std::min(t_min, p.time) : p.time;
+            t_max = any ? std::max(t_max, p.time) : p.time;
+            largest = std::max(largest, std::abs(p.drift));
+            any = true;
+        }
+    }
+    // A floor on the scale: round-off drift must not fill the plot.
+    constexpr double smallest_scale = 1e-12;
+    const double scale = std::max(largest, smallest_scale);
+    const PlotFrame frame =
+        draw_axes(batch, font, area, "energy drift  " + format_number("\xC2\xB1%.2g", scale));
+    const RectF plot = frame.plot;
+    const float mid = 0.5F * (plot.y0 + plot.y1 - frame.line_width);
+    batch.add_rect({plot.x0, mid, plot.x1, mid + 1.0F}, Rgba8{90, 90, 100, 255});
+    if (!any || !(t_max > t_min)) return;
+    const auto to_x = [&](double t) {
+        return plot.x0 + static_cast<float>((t - t_min) / (t_max - t_min)) * plot.width();
+    };
+    const float half = 0.5F * (plot.height() - frame.line_width) * 0.9F;
+    const auto to_y = [&](double d) { return mid - static_cast<float>(d / scale) * half; };
+    for (std::size_t p = 0; p < series.size(); ++p) {
+        const Rgba8 color = with_alpha(panel_color(p), 255);
+        const auto& s = series[p];
+        for (std::size_t i = 1; i < s.size(); ++i) {
+            if (!std::isfinite(s[i].drift) || !std::isfinite(s[i - 1].drift)) continue;
+            batch.add_line({to_x(s[i - 1].time), to_y(s[i - 1].drift)},
+                           {to_x(s[i].time), to_y(s[i].drift)}, frame.line_width * 1.5F, color);
+        }
+    }
+}
+
+}  // namespace collide::render

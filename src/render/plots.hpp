@@ -1,0 +1,50 @@
+#pragma once
+// Internal: the strip's small plots (speed histogram vs 2D Maxwell-Boltzmann, energy drift),
+// built as overlay triangles, and the statistics behind them (pure, tested directly).
+
+#include <vector>
+
+#include "collide/render/renderer.hpp"
+#include "collide/snapshot.hpp"
+#include "font.hpp"
+#include "overlay_geometry.hpp"
+
+namespace collide::render {
+
+/// Histogram of |v| as a probability density over [v_min, v_max] with `bins` bins (speeds
+/// outside the range are counted in no bin, so the area is the fraction inside). O(N).
+[[nodiscard]] std::vector<double> speed_density(const Snapshot& snapshot, double v_min,
+                                                double v_max, int bins);
+
+/// The 2D Maxwell-Boltzmann speed density of a snapshot's temperature, kT = mean kinetic
+/// energy per disc (k_B = 1): with several masses a mixture, one term per mass weighted by its
+/// share of discs: f(v) = sum_g (n_g/N) (m_g v / kT) exp(-m_g v^2 / 2kT).
+class MaxwellBoltzmann {
+public:
+    explicit MaxwellBoltzmann(const Snapshot& snapshot);
+    [[nodiscard]] double kT() const noexcept { return kT_; }
+    [[nodiscard]] double density(double speed) const noexcept;
+
+private:
+    struct Group {
+        double mass;
+        double weight;  // share of discs with this mass
+    };
+    double kT_ = 0.0;
+    std::vector<Group> groups_;
+};
+
+/// Per-panel series colours (time-driven left, event-driven right).
+[[nodiscard]] Rgb8 panel_color(std::size_t panel) noexcept;
+
+/// Draws the histograms of every snapshot (step outlines in panel colours) and the
+/// Maxwell-Boltzmann curve of the last one (white) inside `area`.
+void draw_speed_plot(OverlayBatch& batch, const FontAtlas& font, RectF area,
+                     const std::vector<const Snapshot*>& snapshots, double v_min, double v_max);
+
+/// Draws relative energy drift against time, one polyline per series, scaled to the largest
+/// |drift| (labelled), with the zero line.
+void draw_drift_plot(OverlayBatch& batch, const FontAtlas& font, RectF area,
+                     const std::vector<std::vector<DriftPoint>>& series);
+
+}  // namespace collide::render

@@ -1,0 +1,46 @@
+#pragma once
+// Internal: per-panel history of tagged discs' positions across frames, drawn as fading
+// polylines; the line is broken where a disc wraps around a periodic box.
+
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <vector>
+
+#include "collide/snapshot.hpp"
+#include "overlay_geometry.hpp"
+
+namespace collide::render {
+
+class TrailHistory {
+public:
+    /// Keeps up to `length` positions per tagged disc (>= 2).
+    explicit TrailHistory(int length) : length_(static_cast<std::size_t>(length)) {}
+
+    /// Records the tagged discs' positions. Starts over when the disc count changes or time
+    /// goes backwards (a new video or a seek). O(tagged discs).
+    void update(const Snapshot& snapshot);
+    void reset() noexcept;
+
+    /// Appends every trail: oldest point transparent, newest `max_alpha`. `to_pixels` maps box
+    /// coordinates to frame pixels; colours are indexed like the snapshot's discs.
+    void draw(OverlayBatch& batch, const Box& box, const std::function<PointF(Vec2)>& to_pixels,
+              const std::vector<Rgb8>& colors, float width) const;
+
+    /// The recorded positions of disc `index` (oldest first); empty when it is not tagged.
+    [[nodiscard]] std::vector<Vec2> points(std::uint32_t index) const;
+
+private:
+    std::size_t length_;
+    std::size_t disc_count_ = 0;
+    double last_time_ = 0.0;
+    bool started_ = false;
+    std::vector<std::uint32_t> tagged_;    // indices of tagged discs
+    std::vector<std::deque<Vec2>> paths_;  // parallel to tagged_
+};
+
+/// True when the step a -> b is a jump across a periodic box (not motion): longer than half the
+/// box in x or y.
+[[nodiscard]] bool wraps_between(const Box& box, Vec2 a, Vec2 b) noexcept;
+
+}  // namespace collide::render

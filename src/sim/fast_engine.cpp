@@ -1,0 +1,596 @@
+#include "collide/sim/fast_engine.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <tuple>
+#include <utility>
+
+#include "collide/error.hpp"
+#include "collide/sim/kinematics.hpp"
+
+namespace collide::sim {
+
+namespace {
+
+using kinematics::never;
+
+/// Cells are this much wider than the largest small-disc diameter, so that a disc sitting a
+/// rounding error outside its cell still only reaches the neighbouring cells.
+constexpr double cell_margin = 1e-9;
+
+/// Upper bound on grid cells per disc: enough for dense fluids (pi / (4 eta) cells per disc at
+/// cells one diameter wide), and it stops dilute scenes from allocating millions of empty cells.
+constexpr double max_cells_per_disc = 2.0;
+
+/// Cells along one axis: as many as fit with cells at least `min_cell` wide.
+std::uint32_t fit_cells(double extent, double min_cell) {
+    if (!(min_cell > 0.0)) return 1;
+    const double n = std::floor(extent / min_cell);
+    if (!(n >= 1.0)) return 1;
+    return static_cast<std::uint32_t>(std::min(n, 65536.0));
+}
+
+}  // namespace
+
+bool FastEngine::KeyLess::tie_break(const Key& x, const Key& y) const noexcept {
+    if (x.kind() != y.kind()) return x.kind() < y.kind();
+    const auto ids = [this](const Key& k) {
+        const std::uint32_t a = (*scene_index)[k.a];
+        if (k.kind() != EventKind::pair) return std::pair{a, k.b()};
+        const std::uint32_t b = (*scene_index)[k.b()];
+        return std::pair{std::min(a, b), std::max(a, b)};
+    };
+    return ids(x) < ids(y);
+}
+
+FastEngine::FastEngine(const Scene& scene)
+    : box_(scene.box), periodic_(scene.box.boundary == Boundary::periodic), appearance_(scene) {
+    choose_grid(scene);
+    place_discs(scene);
+    for (std::uint32_t i = 0; i < p_.size(); ++i) predict(i);
+}
+
+namespace {
+
+/// The big-disc threshold and the largest small radius of a scene.
+std::pair<double, double> split_radii(const Scene& scene) {
+    std::vector<double> radii;
+    radii.reserve(scene.discs.size());
+    for (const Disc& d : scene.discs) radii.push_back(d.radius);
+    const double big = big_radius_threshold(radii);
+    double small_max = 0.0;
+    for (double r : radii) {
+        if (r <= big) small_max = std::max(small_max, r);
+    }
+    return {big, small_max};
+}
+
+}  // namespace
+
+bool FastEngine::can_simulate(const Scene& scene) {
+    if (scene.box.boundary != Boundary::periodic) return true;
+    const double min_cell = 2.0 * split_radii(scene).second * (1.0 + cell_margin);
+    return fit_cells(scene.box.width, min_cell) >= 3 && fit_cells(scene.box.height, min_cell) >= 3;
+}
+
+void FastEngine::choose_grid(const Scene& scene) {
+    std::tie(big_threshold_, small_radius_max_) = split_radii(scene);
+    const double min_cell = 2.0 * small_radius_max_ * (1.0 + cell_margin);
+    std::uint32_t nx = fit_cells(box_.width, min_cell);
+    std::uint32_t ny = fit_cells(box_.height, min_cell);
+    if (periodic_ && (nx < 3 || ny < 3)) {
+        throw_input_error("", 0, nx < 3 ? "box.width" : "box.height",
+                          "a periodic box must be at least three disc diameters wide and tall for "
+                          "the fast engine (use --engine classic)");
+    }
+    // Dilute scenes: fewer, larger cells (each must stay at least min_cell wide, so only shrink).
+    const double cap = std::max(9.0, max_cells_per_disc * static_cast<double>(scene.discs.size()));
+    const double cells = static_cast<double>(nx) * static_cast<double>(ny);
+    if (cells > cap) {
+        const double shrink = std::sqrt(cap / cells);
+        const std::uint32_t floor_n = periodic_ ? 3U : 1U;
+        nx = std::max(floor_n, static_cast<std::uint32_t>(static_cast<double>(nx) * shrink));
+        ny = std::max(floor_n, static_cast<std::uint32_t>(static_cast<double>(ny) * shrink));
+    }
+    nx_ = nx;
+    ny_ = ny;
+    cw_ = box_.width / nx_;
+    ch_ = box_.height / ny_;
+    head_.assign(static_cast<std::size_t>(nx_) * ny_, no_disc);
+}
+
+std::uint32_t FastEngine::cell_of(double x, double y) const noexcept {
+    const auto clamp_index = [](double v, std::uint32_t n) {
+        if (!(v > 0.0)) return 0U;
+        const auto k = static_cast<std::uint32_t>(std::min(v, static_cast<double>(n - 1)));
+        return k;
+    };
+    return clamp_index(y / ch_, ny_) * nx_ + clamp_index(x / cw_, nx_);
+}
+
+namespace {
+
+/// Interleaves the bits of x and y (Z-order / Morton code).
+std::uint64_t morton(std::uint32_t x, std::uint32_t y) noexcept {
+    const auto spread = [](std::uint64_t v) {
+        v &= 0xffffffffULL;
+        v = (v | (v << 16)) & 0x0000ffff0000ffffULL;
+        v = (v | (v << 8)) & 0x00ff00ff00ff00ffULL;
+        v = (v | (v << 4)) & 0x0f0f0f0f0f0f0f0fULL;
+        v = (v | (v << 2)) & 0x3333333333333333ULL;
+        v = (v | (v << 1)) & 0x5555555555555555ULL;
+        return v;
+    };
+    return spread(x) | (spread(y) << 1);
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> FastEngine::locality_order(const Scene& scene) const {
+    const std::size_t n = scene.discs.size();
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
+    for (std::uint32_t k = 0; k < n; ++k) {
+        const Vec2 pos = box_.wrap(scene.discs[k].position);
+        const std::uint32_t cell = cell_of(pos.x, pos.y);
+        keyed[k] = {morton(cell % nx_, cell / nx_), k};
+    }
+    std::sort(keyed.begin(), keyed.end());
+    std::vector<std::uint32_t> order(n);
+    for (std::size_t i = 0; i < n; ++i) order[i] = keyed[i].second;
+    return order;
+}
+
+void FastEngine::place_discs(const Scene& scene) {
+    const std::size_t n = scene.discs.size();
+    if (n >= Key::index_mask) throw_input_error("", 0, "discs", "too many discs for the fast engine (at most 2^30 - 2)");
+    scene_index_ = locality_order(scene);
+    p_.resize(n);
+    prev_.assign(n, no_disc);
+    count_.assign(n, 0);
+    partner_count_.assign(n, 0);
+    last_partner_.assign(n, no_disc);
+    image_.assign(n, Image{});
+    start_.resize(n);
+    heap_.reserve_handles(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const Disc& d = scene.discs[scene_index_[i]];
+        const Vec2 pos = box_.wrap(d.position);
+        p_[i] = Particle{pos.x, pos.y, d.velocity.x, d.velocity.y, 0.0, d.radius, d.mass, no_disc, 0};
+        start_[i] = d.position;
+        if (periodic_) {
+            // Keep the unwrapped start: image counts measure wrapping from the wrapped position.
+            image_[i].x = static_cast<std::int32_t>(std::floor(d.position.x / box_.width));
+            image_[i].y = static_cast<std::int32_t>(std::floor(d.position.y / box_.height));
+        }
+        const std::uint32_t cell = cell_of(pos.x, pos.y);
+        p_[i].cell = cell;
+        if (is_big(i)) {
+            big_.push_back(i);
+        } else {
+            link(i, cell);
+        }
+    }
+}
+
+// ------------------------------------------------------------------------------------------
+// The main loop: pop the earliest pending event, check it, resolve it, predict again.
+
+void FastEngine::advance_to(double t) {
+    require_forward(now_, t);
+    WallClock clock(wall_seconds_);
+    while (!heap_.empty() && heap_.top_key().t <= t) {
+        const std::uint32_t i = heap_.top();
+        const Key key = heap_.top_key();
+        ++stats_.pops;
+        now_ = key.t;
+        process(i, key);
+    }
+    now_ = t;
+}
+
+void FastEngine::process(std::uint32_t i, const Key& key) {
+    switch (key.kind()) {
+        case EventKind::pair: {
+            const std::uint32_t j = key.a == i ? key.b() : key.a;
+            if (count_[j] != partner_count_[i]) {
+                // j collided after i predicted this; i's trajectory is unchanged, predict it anew.
+                ++stats_.stale_pops;
+                predict(i);
+                return;
+            }
+            process_pair(i, j, key.t);
+            return;
+        }
+        case EventKind::xwall:
+        case EventKind::ywall:
+            process_wall(i, key.kind(), key.t);
+            return;
+        case EventKind::cell:
+            process_cell(i, key.b());
+            return;
+    }
+}
+
+void FastEngine::process_pair(std::uint32_t i, std::uint32_t j, double t) {
+    advance_disc(i);
+    advance_disc(j);
+    Particle& pi = p_[i];
+    Particle& pj = p_[j];
+    // At contact the true image is the nearest one (boxes are wider than 2 sigma).
+    const Vec2 dr = box_.displacement({pi.x, pi.y}, {pj.x, pj.y});
+    Vec2 vi{pi.vx, pi.vy};
+    Vec2 vj{pj.vx, pj.vy};
+    const Vec2 impulse = kinematics::resolve_pair(vi, vj, pi.m, pj.m, dr);
+    pi.vx = vi.x;
+    pi.vy = vi.y;
+    pj.vx = vj.x;
+    pj.vy = vj.y;
+    tally_.virial += std::abs(dot(dr, impulse));
+    ++count_[i];
+    ++count_[j];
+    last_partner_[i] = j;
+    last_partner_[j] = i;
+    ++collisions_pair_;
+    if (listener_) listener_(to_record(t, EventKind::pair, scene_index_[i], scene_index_[j]));
+    predict(i);
+    predict(j);
+}
+
+void FastEngine::process_wall(std::uint32_t i, EventKind kind, double t) {
+    advance_disc(i);
+    Particle& pi = p_[i];
+    if (kind == EventKind::xwall) {
+        tally_.wall_impulse += 2.0 * pi.m * std::abs(pi.vx);
+        pi.vx = -pi.vx;
+        ++collisions_xwall_;
+    } else {
+        tally_.wall_impulse += 2.0 * pi.m * std::abs(pi.vy);
+        pi.vy = -pi.vy;
+        ++collisions_ywall_;
+    }
+    ++count_[i];
+    last_partner_[i] = no_disc;
+    if (listener_) listener_(to_record(t, kind, scene_index_[i], no_disc));
+    predict(i);
+}
+
+void FastEngine::process_cell(std::uint32_t i, std::uint32_t axis) {
+    advance_disc(i);
+    Particle& pi = p_[i];
+    auto cx = static_cast<std::int64_t>(pi.cell % nx_);
+    auto cy = static_cast<std::int64_t>(pi.cell / nx_);
+    if (axis == 0) {
+        cx += pi.vx > 0.0 ? 1 : -1;
+        if (cx == nx_) {
+            cx = 0;
+            pi.x -= box_.width;
+            ++image_[i].x;
+        } else if (cx < 0) {
+            cx = nx_ - 1;
+            pi.x += box_.width;
+            --image_[i].x;
+        }
+    } else {
+        cy += pi.vy > 0.0 ? 1 : -1;
+        if (cy == ny_) {
+            cy = 0;
+            pi.y -= box_.height;
+            ++image_[i].y;
+        } else if (cy < 0) {
+            cy = ny_ - 1;
+            pi.y += box_.height;
+            --image_[i].y;
+        }
+    }
+    const auto cell = static_cast<std::uint32_t>(cy * nx_ + cx);
+    if (is_big(i)) {
+        pi.cell = cell;
+    } else {
+        unlink(i);
+        link(i, cell);
+    }
+    ++cell_crossings_;
+    predict(i);
+}
+
+// ------------------------------------------------------------------------------------------
+// Prediction: the earliest of i's wall, cell-crossing and pair events, as i's one heap entry.
+
+void FastEngine::predict(std::uint32_t i) {
+    const Particle& pi = p_[i];
+    const double dt = now_ - pi.t;
+    const double xi = pi.x + pi.vx * dt;
+    const double yi = pi.y + pi.vy * dt;
+    Key best = Key::make(never, i, no_disc, EventKind::cell);
+    consider_walls_and_cells(i, pi, xi, yi, best);
+    if (is_big(i)) {
+        scan_ring(i, pi, xi, yi, best);
+    } else {
+        scan_small_neighbours(i, pi, xi, yi, best);
+    }
+    for (std::uint32_t b : big_) {
+        if (b != i) consider_pair_images(i, pi, xi, yi, b, best);
+    }
+    if (best.t == never) {
+        if (heap_.contains(i)) heap_.erase(i);
+        return;
+    }
+    if (best.kind() == EventKind::pair) partner_count_[i] = count_[best.a == i ? best.b() : best.a];
+    if (!heap_.contains(i)) {
+        ++stats_.pushes;
+    }
+    heap_.push_or_change(i, best);
+    stats_.max_size = std::max<std::uint64_t>(stats_.max_size, heap_.size());
+}
+
+void FastEngine::consider_walls_and_cells(std::uint32_t i, const Particle& pi, double xi, double yi,
+                                          Key& best) {
+    const auto offer = [&](double dt, EventKind kind, std::uint32_t b) {
+        if (dt == never) return;
+        const Key k = Key::make(now_ + dt, i, b, kind);
+        if (key_less_(k, best)) best = k;
+    };
+    if (!periodic_) {
+        offer(kinematics::time_to_wall(xi, pi.vx, pi.r, box_.width), EventKind::xwall, no_disc);
+        offer(kinematics::time_to_wall(yi, pi.vy, pi.r, box_.height), EventKind::ywall, no_disc);
+        predictions_ += 2;
+    }
+    const std::uint32_t cx = pi.cell % nx_;
+    const std::uint32_t cy = pi.cell / nx_;
+    // Walled boxes have no crossing out of the outer cells (the wall comes first).
+    if (pi.vx > 0.0 && (periodic_ || cx + 1 < nx_)) {
+        offer(std::max(0.0, ((cx + 1) * cw_ - xi) / pi.vx), EventKind::cell, 0);
+    } else if (pi.vx < 0.0 && (periodic_ || cx > 0)) {
+        offer(std::max(0.0, (cx * cw_ - xi) / pi.vx), EventKind::cell, 0);
+    }
+    if (pi.vy > 0.0 && (periodic_ || cy + 1 < ny_)) {
+        offer(std::max(0.0, ((cy + 1) * ch_ - yi) / pi.vy), EventKind::cell, 1);
+    } else if (pi.vy < 0.0 && (periodic_ || cy > 0)) {
+        offer(std::max(0.0, (cy * ch_ - yi) / pi.vy), EventKind::cell, 1);
+    }
+}
+
+inline void FastEngine::consider_pair(std::uint32_t i, const Particle& pi, double xi, double yi,
+                                      std::uint32_t j, double shift_x, double shift_y, Key& best) {
+    const Particle& pj = p_[j];
+    const double dtj = now_ - pj.t;
+    const Vec2 dr{pj.x + pj.vx * dtj + shift_x - xi, pj.y + pj.vy * dtj + shift_y - yi};
+    const Vec2 dv{pj.vx - pi.vx, pj.vy - pi.vy};
+    const double sigma = pi.r + pj.r;
+    ++predictions_;
+    if (last_partner_[i] == j && last_partner_[j] == i) {
+        const double reach = sigma * (1.0 + just_collided_slack);
+        if (norm2(dr) < reach * reach) return;
+    }
+    const double dt = kinematics::time_to_hit(dr, dv, sigma);
+    if (dt == never) return;
+    const double t = now_ + dt;
+    if (t > best.t) return;
+    const Key k = Key::make(t, std::min(i, j), std::max(i, j), EventKind::pair);
+    if (key_less_(k, best)) best = k;
+}
+
+void FastEngine::consider_pair_images(std::uint32_t i, const Particle& pi, double xi, double yi,
+                                      std::uint32_t j, Key& best) {
+    if (!periodic_) {
+        consider_pair(i, pi, xi, yi, j, 0.0, 0.0, best);
+        return;
+    }
+    // Pairs with a big disc are not tied to neighbouring cells: try the nine nearest images.
+    const Particle& pj = p_[j];
+    const double dtj = now_ - pj.t;
+    const Vec2 base = box_.displacement({xi, yi}, {pj.x + pj.vx * dtj, pj.y + pj.vy * dtj});
+    const double sx = base.x - (pj.x + pj.vx * dtj - xi);
+    const double sy = base.y - (pj.y + pj.vy * dtj - yi);
+    for (int ky = -1; ky <= 1; ++ky) {
+        for (int kx = -1; kx <= 1; ++kx) {
+            consider_pair(i, pi, xi, yi, j, sx + kx * box_.width, sy + ky * box_.height, best);
+        }
+    }
+}
+
+void FastEngine::scan_small_neighbours(std::uint32_t i, const Particle& pi, double xi, double yi, Key& best) {
+    const auto cx = static_cast<std::int64_t>(pi.cell % nx_);
+    const auto cy = static_cast<std::int64_t>(pi.cell / nx_);
+    for (std::int64_t oy = -1; oy <= 1; ++oy) {
+        std::int64_t y = cy + oy;
+        double shift_y = 0.0;
+        if (y < 0 || y >= ny_) {
+            if (!periodic_) continue;
+            shift_y = y < 0 ? -box_.height : box_.height;
+            y = y < 0 ? y + ny_ : y - ny_;
+        }
+        for (std::int64_t ox = -1; ox <= 1; ++ox) {
+            std::int64_t x = cx + ox;
+            double shift_x = 0.0;
+            if (x < 0 || x >= nx_) {
+                if (!periodic_) continue;
+                shift_x = x < 0 ? -box_.width : box_.width;
+                x = x < 0 ? x + nx_ : x - nx_;
+            }
+            for (std::uint32_t j = head_[static_cast<std::size_t>(y * nx_ + x)]; j != no_disc; j = p_[j].next) {
+                if (j != i) consider_pair(i, pi, xi, yi, j, shift_x, shift_y, best);
+            }
+        }
+    }
+}
+
+void FastEngine::scan_ring(std::uint32_t i, const Particle& pi, double xi, double yi, Key& best) {
+    // Small discs that can touch big disc i before either leaves its cell lie within
+    // 1 + (R + r_small) / cell cells of i's centre cell.
+    const double reach = (pi.r + small_radius_max_) * (1.0 + cell_margin);
+    const auto kx = static_cast<std::int64_t>(1 + std::ceil(reach / cw_));
+    const auto ky = static_cast<std::int64_t>(1 + std::ceil(reach / ch_));
+    if (periodic_ && (2 * kx + 1 > nx_ || 2 * ky + 1 > ny_)) {
+        // The ring wraps onto itself: check every small disc (nine images each).
+        for (std::uint32_t j = 0; j < p_.size(); ++j) {
+            if (j != i && !is_big(j)) consider_pair_images(i, pi, xi, yi, j, best);
+        }
+        return;
+    }
+    const auto cx = static_cast<std::int64_t>(pi.cell % nx_);
+    const auto cy = static_cast<std::int64_t>(pi.cell / nx_);
+    for (std::int64_t y0 = cy - ky; y0 <= cy + ky; ++y0) {
+        std::int64_t y = y0;
+        double shift_y = 0.0;
+        if (y < 0 || y >= ny_) {
+            if (!periodic_) continue;
+            shift_y = y < 0 ? -box_.height : box_.height;
+            y = y < 0 ? y + ny_ : y - ny_;
+        }
+        for (std::int64_t x0 = cx - kx; x0 <= cx + kx; ++x0) {
+            std::int64_t x = x0;
+            double shift_x = 0.0;
+            if (x < 0 || x >= nx_) {
+                if (!periodic_) continue;
+                shift_x = x < 0 ? -box_.width : box_.width;
+                x = x < 0 ? x + nx_ : x - nx_;
+            }
+            for (std::uint32_t j = head_[static_cast<std::size_t>(y * nx_ + x)]; j != no_disc; j = p_[j].next) {
+                consider_pair(i, pi, xi, yi, j, shift_x, shift_y, best);
+            }
+        }
+    }
+}
+
+// ------------------------------------------------------------------------------------------
+// Bookkeeping.
+
+void FastEngine::advance_disc(std::uint32_t i) noexcept {
+    Particle& pi = p_[i];
+    const double dt = now_ - pi.t;
+    pi.x += pi.vx * dt;
+    pi.y += pi.vy * dt;
+    pi.t = now_;
+}
+
+void FastEngine::link(std::uint32_t i, std::uint32_t cell) noexcept {
+    Particle& pi = p_[i];
+    pi.cell = cell;
+    pi.next = head_[cell];
+    prev_[i] = no_disc;
+    if (pi.next != no_disc) prev_[pi.next] = i;
+    head_[cell] = i;
+}
+
+void FastEngine::unlink(std::uint32_t i) noexcept {
+    Particle& pi = p_[i];
+    if (prev_[i] == no_disc) {
+        head_[pi.cell] = pi.next;
+    } else {
+        p_[prev_[i]].next = pi.next;
+    }
+    if (pi.next != no_disc) prev_[pi.next] = prev_[i];
+    pi.next = no_disc;
+    prev_[i] = no_disc;
+}
+
+Vec2 FastEngine::position_at_now(std::uint32_t i) const noexcept {
+    const Particle& pi = p_[i];
+    const double dt = now_ - pi.t;
+    return {pi.x + pi.vx * dt, pi.y + pi.vy * dt};
+}
+
+// ------------------------------------------------------------------------------------------
+// Outputs.
+
+Snapshot FastEngine::snapshot() const {
+    Snapshot s;
+    s.time = now_;
+    s.box = box_;
+    s.discs.resize(p_.size());
+    for (std::uint32_t i = 0; i < p_.size(); ++i) {
+        const std::uint32_t k = scene_index_[i];
+        DiscState& d = s.discs[k];
+        d.position = box_.wrap(position_at_now(i));
+        d.velocity = {p_[i].vx, p_[i].vy};
+        d.radius = p_[i].r;
+        d.mass = p_[i].m;
+        d.color = appearance_.colors[k];
+        d.tagged = appearance_.tagged[k] != 0;
+    }
+    return s;
+}
+
+Measurements FastEngine::measurements() const {
+    Measurements m;
+    m.t = now_;
+    m.collisions_pair = collisions_pair_;
+    m.collisions_xwall = collisions_xwall_;
+    m.collisions_ywall = collisions_ywall_;
+    m.collisions_wall = collisions_xwall_ + collisions_ywall_;
+    m.cell_crossings = cell_crossings_;
+    m.events = m.collisions_pair + m.collisions_wall + cell_crossings_;
+    m.predictions = predictions_;
+    m.queue = stats_;
+
+    const std::size_t n = p_.size();
+    std::vector<Vec2> positions(n);
+    std::vector<Vec2> velocities(n);
+    std::vector<double> masses(n);
+    std::vector<double> radii(n);
+    double msd_sum = 0.0;
+    std::size_t msd_count = 0;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        positions[i] = position_at_now(i);
+        velocities[i] = {p_[i].vx, p_[i].vy};
+        masses[i] = p_[i].m;
+        radii[i] = p_[i].r;
+        if (appearance_.in_msd(scene_index_[i])) {
+            const Vec2 unwrapped{positions[i].x + image_[i].x * box_.width,
+                                 positions[i].y + image_[i].y * box_.height};
+            msd_sum += norm2(unwrapped - start_[i]);
+            ++msd_count;
+        }
+    }
+    fill_thermodynamics(m, velocities, masses, radii, box_, tally_);
+    m.max_overlap = max_overlap(positions, radii, box_);
+    m.msd = msd_count > 0 ? msd_sum / static_cast<double>(msd_count) : 0.0;
+    m.wall_seconds = wall_seconds_;
+    if (wall_seconds_ > 0.0) {
+        m.collisions_per_second = static_cast<double>(m.collisions_pair + m.collisions_wall) / wall_seconds_;
+    }
+    m.engine_bytes = bytes();
+    return m;
+}
+
+std::uint64_t FastEngine::bytes() const noexcept {
+    constexpr std::size_t u32 = sizeof(std::uint32_t);
+    std::size_t total = p_.capacity() * sizeof(Particle);
+    total += (prev_.capacity() + count_.capacity() + partner_count_.capacity() + last_partner_.capacity() +
+              big_.capacity() + head_.capacity() + scene_index_.capacity()) * u32;
+    total += image_.capacity() * sizeof(Image) + start_.capacity() * sizeof(Vec2);
+    total += heap_.bytes();
+    total += appearance_.bytes();
+    return total;
+}
+
+bool FastEngine::check_invariants() const {
+    if (!heap_.check_invariants()) return false;
+    std::vector<std::uint8_t> seen(p_.size(), 0);
+    for (std::size_t c = 0; c < head_.size(); ++c) {
+        std::uint32_t before = no_disc;
+        for (std::uint32_t j = head_[c]; j != no_disc; j = p_[j].next) {
+            if (j >= p_.size() || seen[j] || p_[j].cell != c || prev_[j] != before || is_big(j)) return false;
+            seen[j] = 1;
+            before = j;
+        }
+    }
+    for (std::uint32_t i = 0; i < p_.size(); ++i) {
+        if (!is_big(i) && !seen[i]) return false;
+        if (p_[i].t > now_) return false;
+        if (heap_.contains(i) && heap_.key(i).t < now_) return false;
+        // The centre lies in its cell, up to the rounding of the crossing times.
+        const Vec2 pos = position_at_now(i);
+        const double cx = static_cast<double>(p_[i].cell % nx_);
+        const double cy = static_cast<double>(p_[i].cell / nx_);
+        const double slack = 1e-9 * (cw_ + ch_);
+        if (pos.x < cx * cw_ - slack || pos.x > (cx + 1) * cw_ + slack) return false;
+        if (pos.y < cy * ch_ - slack || pos.y > (cy + 1) * ch_ + slack) return false;
+    }
+    return true;
+}
+
+}  // namespace collide::sim

@@ -1,0 +1,113 @@
+// End-to-end: `collide check` on good and bad scenes (exit codes 0/2 and the messages).
+
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "run_collide.hpp"
+
+using collide::test::run_collide;
+
+namespace {
+
+bool contains(const std::string& s, const std::string& part) {
+    return s.find(part) != std::string::npos;
+}
+
+// Writes `text` to a temporary file and returns its path (quoted for the shell).
+std::string temp_scene(const std::string& name, const std::string& text) {
+    const std::filesystem::path path =
+        std::filesystem::temp_directory_path() / ("collide_e2e_" + name);
+    std::ofstream(path) << text;
+    return "'" + path.string() + "'";
+}
+
+}  // namespace
+
+TEST_CASE("collide check: a good algs4 file gives exit 0 and a one-line summary") {
+    const auto r = run_collide(
+        "check " +
+        temp_scene("good.txt", "2\n0.25 0.5 0.1 0 0.05 1 0 0 0\n0.75 0.5 0 0 0.05 1 0 0 0\n"));
+    CHECK(r.exit_code == 0);
+    CHECK(contains(r.output, "ok: "));
+    CHECK(contains(r.output, "N = 2, eta = 0.0157"));
+    CHECK(contains(r.output, "walls 1 x 1"));
+    CHECK(contains(r.output, "E = 0.005"));
+}
+
+TEST_CASE("collide check: a built-in scene by name") {
+    const auto r = run_collide("check tunnelling");
+    CHECK(r.exit_code == 0);
+    CHECK(contains(r.output, "ok: tunnelling: N = "));
+}
+
+TEST_CASE("collide check: bad scenes exit 2 naming file, line and reason") {
+    auto r =
+        run_collide("check " + temp_scene("overlap.txt",
+                                          "2\n0.5 0.5 0 0 0.1 1 0 0 0\n0.6 0.5 0 0 0.1 1 0 0 0\n"));
+    CHECK(r.exit_code == 2);
+    CHECK(contains(r.output, "collide: error: "));
+    CHECK(contains(r.output, "overlap.txt:3: disc 2: overlaps "));
+
+    r = run_collide("check " + temp_scene("columns.txt", "1\n0.5 0.5 0 0 0.1 1 0 0\n"));
+    CHECK(r.exit_code == 2);
+    CHECK(contains(r.output, "columns.txt:2: expected 9 columns"));
+
+    r = run_collide("check " +
+                    temp_scene("typo.toml", "[[disc]]\nposition = [0.5, 0.5]\nradus = 0.1\n"));
+    CHECK(r.exit_code == 2);
+    CHECK(contains(r.output, "typo.toml:3: disc[0]: unknown key 'radus' (did you mean 'radius'?)"));
+
+    r = run_collide(
+        "check " +
+        temp_scene("dense.toml", "[[generate]]\npacking_fraction = 0.95\nradius = 0.01\n"));
+    CHECK(r.exit_code == 2);
+    CHECK(contains(r.output,
+                   "dense.toml:1: generate[0].packing_fraction: 0.95 is above the maximum"));
+
+    r = run_collide("check no-such-scene");
+    CHECK(r.exit_code == 2);
+    CHECK(contains(r.output, "'no-such-scene': not a scene file and not a built-in scene"));
+}
+
+TEST_CASE("collide check: the course's billiards-overflow.txt is rejected, naming each line") {
+    const std::filesystem::path file =
+        std::filesystem::path(COLLIDE_SHARED_DIR) / "data/algs4/billiards-overflow.txt";
+    if (!std::filesystem::exists(file)) {
+        MESSAGE("skipped: " << file << " is absent");
+        return;
+    }
+    const auto r = run_collide("check '" + file.string() + "'");
+    CHECK(r.exit_code == 2);
+    CHECK(contains(r.output, "billiards-overflow.txt:5: disc 4"));
+    CHECK(contains(r.output, "billiards-overflow.txt:6: disc 5"));
+}
+
+TEST_CASE("collide check: a missing argument is a usage error") {
+    const auto r = run_collide("check");
+    CHECK(r.exit_code == 2);
+    CHECK(contains(r.output, "scene is required"));
+}
+
+TEST_CASE("collide check --export freezes a generated scene that checks the same") {
+    const std::filesystem::path out =
+        std::filesystem::temp_directory_path() / "collide_e2e_export.toml";
+    std::filesystem::remove(out);
+    const auto first = run_collide("check brownian --export '" + out.string() + "'");
+    CHECK(first.exit_code == 0);
+    CHECK(contains(first.output, "wrote "));
+    const auto again = run_collide("check '" + out.string() + "'");
+    CHECK(again.exit_code == 0);
+    // same N, eta, boundary and energy in the one-line summary
+    const auto summary = [](const std::string& s) {
+        return s.substr(s.find("N = "), s.find('\n', s.find("N = ")) - s.find("N = "));
+    };
+    CHECK(summary(first.output) == summary(again.output));
+    std::filesystem::remove(out);
+
+    const auto bad = run_collide("check gas --export /nonexistent-dir/x.toml");
+    CHECK(bad.exit_code == 2);
+    CHECK(contains(bad.output, "cannot write here"));
+}

@@ -1,0 +1,120 @@
+// `collide simulate` and `collide bench engine` end to end: exit codes, JSON keys, the events
+// log (CSV, atomic, unwritable path = exit 2 before simulating).
+
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "run_collide.hpp"
+
+using collide::test::run_collide;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+bool contains(const std::string& haystack, const std::string& needle) {
+    return haystack.find(needle) != std::string::npos;
+}
+
+/// A fresh directory under the system temp dir, removed at the end of the test.
+struct TempDir {
+    fs::path path;
+    explicit TempDir(const std::string& name) : path(fs::temp_directory_path() / name) {
+        fs::remove_all(path);
+        fs::create_directories(path);
+    }
+    ~TempDir() {
+        std::error_code ignored;
+        fs::remove_all(path, ignored);
+    }
+};
+
+/// Two discs head-on in the unit box: a pair collision at t = 2, both walls at t = 5.
+fs::path write_head_on(const fs::path& dir) {
+    const fs::path file = dir / "headon.txt";
+    std::ofstream(file) << "2\n0.2 0.5 0.1 0 0.1 1 255 0 0\n0.8 0.5 -0.1 0 0.1 1 0 0 255\n";
+    return file;
+}
+
+std::vector<std::string> lines_of(const fs::path& file) {
+    std::ifstream in(file);
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
+}  // namespace
+
+TEST_CASE("collide simulate --json prints every measurement key") {
+    TempDir dir("collide_test_simulate_json");
+    const fs::path scene = write_head_on(dir.path);
+    for (const char* engine : {"fast", "classic"}) {
+        CAPTURE(engine);
+        const auto r = run_collide("simulate \"" + scene.string() + "\" --until 5.5 --json --engine " + engine);
+        REQUIRE(r.exit_code == 0);
+        for (const char* key : {"\"t\": 5.5", "\"events\"", "\"collisions_pair\": 1", "\"collisions_wall\": 2",
+                                "\"kinetic_energy\"", "\"pressure\"", "\"compressibility\"", "\"packing_fraction\"",
+                                "\"max_overlap\": 0", "\"collisions_per_second\"", "\"pq_max_size\"",
+                                "\"stale_events\"", "\"overlap_checks\"", "\"missed_collisions\"", "\"escaped\"",
+                                "\"energy_drift\"", "\"msd\"", "\"temperature\""}) {
+            CHECK_MESSAGE(contains(r.output, key), key);
+        }
+    }
+}
+
+TEST_CASE("collide simulate --events-log writes one CSV line per collision") {
+    TempDir dir("collide_test_simulate_log");
+    const fs::path scene = write_head_on(dir.path);
+    const fs::path log = dir.path / "events.csv";
+    const auto r = run_collide("simulate \"" + scene.string() + "\" --until 5.5 --pq ordered --engine classic"
+                               " --events-log \"" + log.string() + "\"");
+    REQUIRE(r.exit_code == 0);
+    const auto lines = lines_of(log);
+    REQUIRE(lines.size() == 4);
+    CHECK(lines[0] == "t,kind,a,b");
+    CHECK(lines[1].rfind("2", 0) == 0);  // t = 2 up to rounding
+    CHECK(contains(lines[1], ",pair,0,1"));
+    CHECK(contains(lines[2], ",xwall,"));
+    CHECK(lines[2].back() == ',');  // b is empty for walls
+    // nothing but the log itself is left in the directory (no temporary)
+    std::size_t files = 0;
+    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir.path)) ++files;
+    CHECK(files == 2);  // headon.txt and events.csv
+}
+
+TEST_CASE("collide simulate: bad options and unwritable logs exit 2 without output files") {
+    TempDir dir("collide_test_simulate_bad");
+    const fs::path scene = write_head_on(dir.path);
+    const std::string base = "simulate \"" + scene.string() + "\" --until 1";
+    const auto unwritable = run_collide(base + " --events-log /nonexistent-dir/x/events.csv");
+    CHECK(unwritable.exit_code == 2);
+    CHECK(contains(unwritable.output, "--events-log"));
+    CHECK_FALSE(fs::exists("/nonexistent-dir/x/events.csv"));
+
+    const auto engine = run_collide(base + " --engine warp");
+    CHECK(engine.exit_code == 2);
+    CHECK(contains(engine.output, "--engine"));
+    const auto queue = run_collide(base + " --engine classic --pq fibonacci");
+    CHECK(queue.exit_code == 2);
+    CHECK(contains(queue.output, "--pq"));
+    const auto until = run_collide("simulate \"" + scene.string() + "\" --until -1");
+    CHECK(until.exit_code == 2);
+    CHECK(contains(until.output, "--until"));
+    const auto missing = run_collide("simulate \"" + (dir.path / "none.txt").string() + "\" --until 1");
+    CHECK(missing.exit_code == 2);
+}
+
+TEST_CASE("collide bench engine reports throughput and memory on a small fluid") {
+    const auto r = run_collide("bench engine --n 400 --eta 0.4 --collisions 20000 --json");
+    REQUIRE(r.exit_code == 0);
+    for (const char* key : {"\"collisions_per_second\"", "\"events_per_cpu_second\"", "\"engine_bytes_per_disc\"",
+                            "\"rss_delta_bytes_per_disc\"", "\"pq_max_size\": 400", "\"stale_fraction\""}) {
+        CHECK_MESSAGE(contains(r.output, key), key);
+    }
+    CHECK(run_collide("bench engine --n 1 --collisions 10").exit_code == 2);
+}

@@ -1,0 +1,148 @@
+// load_scene: dispatch on .txt / .toml / built-in names, and the built-in library itself.
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "collide/error.hpp"
+#include "collide/scene/load.hpp"
+#include "collide/sim/engine.hpp"
+#include "collide/sim/scene_check.hpp"
+
+using namespace collide;
+
+namespace {
+
+std::string load_error(const std::string& what) {
+    try {
+        (void)load_scene(what, COLLIDE_ASSETS_DIR);
+    } catch (const Error& e) {
+        CHECK(e.kind() == ErrorKind::input);
+        return e.what();
+    }
+    return "";
+}
+
+bool contains(const std::string& s, const std::string& part) {
+    return s.find(part) != std::string::npos;
+}
+
+}  // namespace
+
+TEST_CASE("load_scene: algs4 .txt and .toml files by path, named after the file") {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "collide_test_load";
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "pair.txt") << "2\n0.2 0.2 0 0 0.05 1 0 0 0\n0.8 0.8 0 0 0.05 1 0 0 0\n";
+    std::ofstream(dir / "one.toml") << "[[disc]]\nposition = [0.5, 0.5]\nradius = 0.1\n";
+    std::ofstream(dir / "notes.csv") << "x\n";
+    const Scene a = load_scene((dir / "pair.txt").string());
+    CHECK(a.name == "pair");
+    CHECK(a.discs.size() == 2);
+    const Scene b = load_scene((dir / "one.toml").string());
+    CHECK(b.name == "one");
+    CHECK(b.title == "one");
+    CHECK(b.discs.size() == 1);
+    CHECK(contains(load_error((dir / "notes.csv").string()), "unknown scene format '.csv'"));
+    CHECK(contains(load_error(dir.string()), "is a directory"));
+    CHECK(contains(load_error((dir / "absent.txt").string()), "cannot open"));
+    CHECK(contains(load_error(""), "empty scene path"));
+    std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("load_scene: unknown names suggest a built-in scene") {
+    CHECK(contains(
+        load_error("brownain"),
+        "'brownain': not a scene file and not a built-in scene (did you mean 'brownian'?)"));
+    CHECK(contains(load_error("zzzzzzzz"), "`collide scenes` lists them"));
+}
+
+TEST_CASE("built-in library: the required scenes exist, each described and valid") {
+    const std::vector<BuiltinScene> scenes = builtin_scenes(COLLIDE_ASSETS_DIR);
+    std::vector<std::string> names;
+    for (const BuiltinScene& s : scenes)
+        names.push_back(s.name);
+    for (const char* required : {"gas", "brownian", "diffusion", "billiards", "newtons-cradle",
+                                 "maxwell-boltzmann", "tunnelling", "dense-fluid"}) {
+        CAPTURE(required);
+        CHECK(std::find(names.begin(), names.end(), required) != names.end());
+    }
+    for (const BuiltinScene& b : scenes) {
+        CAPTURE(b.name);
+        CHECK(!b.description.empty());
+        CHECK(b.description.find('\n') == std::string::npos);
+        const Scene s = load_scene(b.name, COLLIDE_ASSETS_DIR);  // throws if invalid
+        CHECK(s.name == b.name);
+        CHECK(!s.title.empty());
+        CHECK(!s.discs.empty());
+    }
+}
+
+TEST_CASE("built-in library: the tunnelling demo is built to make the time-driven method fail") {
+    const Scene s = load_scene("tunnelling", COLLIDE_ASSETS_DIR);
+    REQUIRE(s.render.dt.has_value());
+    CHECK(s.discs.size() <= 400);
+    // some disc moves more than a barrier disc's diameter per time step
+    double fastest = 0.0;
+    double smallest = 1e300;
+    for (const Disc& d : s.discs) {
+        fastest = std::max(fastest, norm(d.velocity));
+        smallest = std::min(smallest, d.radius);
+    }
+    CHECK(fastest * *s.render.dt > 2.0 * smallest);
+}
+
+TEST_CASE("built-in library: the dense fluid is dense and the gas is not") {
+    CHECK(packing_fraction(load_scene("dense-fluid", COLLIDE_ASSETS_DIR)) ==
+          doctest::Approx(0.7).epsilon(0.03));
+    CHECK(packing_fraction(load_scene("gas", COLLIDE_ASSETS_DIR)) < 0.1);
+}
+
+namespace {
+
+// Projectiles (radius 0.008) outside the chamber between the barriers at x = 0.3 and x = 0.7.
+int escaped_from_chamber(const collide::Snapshot& snapshot) {
+    int out = 0;
+    for (const collide::DiscState& d : snapshot.discs) {
+        if (d.radius > 0.006 && (d.position.x < 0.3 || d.position.x > 0.7))
+            ++out;
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "built-in library: in the tunnelling demo the time-driven method fails at the scene's dt "
+    "only") {
+    const Scene s = load_scene("tunnelling", COLLIDE_ASSETS_DIR);
+    EngineOptions options;
+    options.engine = "time";
+    options.td_detect = "grid";
+    options.dt = *s.render.dt;
+    auto coarse = make_engine(s, options);
+    coarse->advance_to(1.0);  // 5 s of video at the scene's speed
+    CHECK(escaped_from_chamber(coarse->snapshot()) >= 3);
+    CHECK(coarse->measurements().missed_collisions > 0);
+    options.dt = 1e-3;
+    auto fine = make_engine(s, options);
+    fine->advance_to(1.0);
+    CHECK(escaped_from_chamber(fine->snapshot()) == 0);
+    options.engine = "fast";
+    auto exact = make_engine(s, options);
+    exact->advance_to(1.0);
+    CHECK(escaped_from_chamber(exact->snapshot()) == 0);
+}
+
+TEST_CASE("built-in library: the dense fluid overwhelms the time-driven method at the scene's dt") {
+    const Scene s = load_scene("dense-fluid", COLLIDE_ASSETS_DIR);
+    EngineOptions options;
+    options.engine = "time";
+    options.td_detect = "grid";
+    options.dt = *s.render.dt;
+    auto coarse = make_engine(s, options);
+    coarse->advance_to(0.2);
+    CHECK(coarse->snapshot().overlapping_pairs.size() > 100);  // of 2228 discs
+}

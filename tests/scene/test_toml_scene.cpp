@@ -1,0 +1,301 @@
+// TOML scenes: every key, every error with file:line and key, includes, generators, render hints.
+
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "collide/error.hpp"
+#include "collide/scene/load.hpp"
+#include "collide/sim/scene_check.hpp"
+
+using namespace collide;
+
+namespace {
+
+Scene parse(const std::string& text, const std::filesystem::path& base = ".") {
+    return parse_toml_scene(text, "s.toml", base);
+}
+
+std::string toml_error(const std::string& text, const std::filesystem::path& base = ".") {
+    try {
+        (void)parse(text, base);
+    } catch (const Error& e) {
+        CHECK(e.kind() == ErrorKind::input);
+        return e.what();
+    }
+    return "";
+}
+
+bool contains(const std::string& s, const std::string& part) {
+    return s.find(part) != std::string::npos;
+}
+
+// A temporary directory removed at the end of the test.
+struct TempDir {
+    std::filesystem::path path;
+    explicit TempDir(const std::string& name)
+        : path(std::filesystem::temp_directory_path() / name) {
+        std::filesystem::remove_all(path);
+        std::filesystem::create_directories(path);
+    }
+    ~TempDir() { std::filesystem::remove_all(path); }
+    void write(const std::string& file, const std::string& text) const {
+        std::ofstream(path / file) << text;
+    }
+};
+
+}  // namespace
+
+TEST_CASE("toml: explicit discs with every key") {
+    const Scene s = parse(R"(
+title = "Two discs"
+description = "for a test"
+[box]
+width = 2.0
+height = 1
+boundary = "periodic"
+[[disc]]
+position = [0.5, 0.5]
+velocity = [0.1, -0.2]
+radius = 0.1
+mass = 3
+color = "#e03010"
+tag = "tracer"
+[[disc]]
+position = [1.5, 0.5]
+radius = 0.05
+color = [1, 2, 3]
+)");
+    CHECK(s.title == "Two discs");
+    CHECK(s.box.width == 2.0);
+    CHECK(s.box.height == 1.0);
+    CHECK(s.box.boundary == Boundary::periodic);
+    REQUIRE(s.discs.size() == 2);
+    CHECK(s.discs[0].position == Vec2{0.5, 0.5});
+    CHECK(s.discs[0].velocity == Vec2{0.1, -0.2});
+    CHECK(s.discs[0].radius == 0.1);
+    CHECK(s.discs[0].mass == 3.0);
+    CHECK(s.discs[0].color == Rgb8{0xe0, 0x30, 0x10});
+    CHECK(s.discs[0].tag == "tracer");
+    CHECK(s.discs[1].velocity == Vec2{0.0, 0.0});
+    CHECK(s.discs[1].mass == 1.0);
+    CHECK(s.discs[1].color == Rgb8{1, 2, 3});
+    CHECK(s.discs[1].tag.empty());
+}
+
+TEST_CASE("toml: defaults are the unit box with walls") {
+    const Scene s = parse("[[disc]]\nposition = [0.5, 0.5]\nradius = 0.1\n");
+    CHECK(s.box.width == 1.0);
+    CHECK(s.box.boundary == Boundary::walls);
+    CHECK(s.discs.size() == 1);
+}
+
+TEST_CASE("toml: render hints") {
+    const Scene s = parse(R"(
+[render]
+color_mode = "mass"
+trails = true
+overlays = false
+duration = 12
+speed = 0.5
+dt = 0.25
+)");
+    CHECK(s.render.color_mode == "mass");
+    CHECK(s.render.trails == true);
+    CHECK(s.render.overlays == false);
+    CHECK(s.render.duration == 12.0);
+    CHECK(s.render.speed == 0.5);
+    CHECK(s.render.dt == 0.25);
+    CHECK(contains(toml_error("[render]\ncolor_mode = \"rainbow\"\n"),
+                   "s.toml:2: render.color_mode: expected one of scene, speed, mass, tag"));
+    CHECK(contains(toml_error("[render]\ndt = 0\n"), "s.toml:2: render.dt: must be > 0"));
+    CHECK(contains(toml_error("[render]\ntrails = 1\n"),
+                   "s.toml:2: render.trails: expected true or false"));
+}
+
+TEST_CASE("toml: generators, with colour by speed and discs placed before them avoided") {
+    const Scene s = parse(R"(
+[[disc]]
+position = [0.5, 0.5]
+radius = 0.2
+mass = 10
+tag = "tracer"
+[[generate]]
+packing_fraction = 0.3
+radius = 0.01
+mass = 1.0
+temperature = 2.0
+region = [[0.0, 0.0], [1.0, 1.0]]
+color = "speed"
+seed = 7
+tag = "gas"
+[[generate]]
+count = 5
+radius = 0.002
+speed = 0.5
+color = "#3060e0"
+)");
+    CHECK(s.discs.size() == 1 + 955 + 5);
+    CHECK(s.discs[1].tag == "gas");
+    CHECK(s.render.color_mode == "speed");
+    CHECK(norm(s.discs.back().velocity) == doctest::Approx(0.5));
+    CHECK(s.discs.back().color == Rgb8{0x30, 0x60, 0xe0});
+    // the same text gives the same scene
+    const Scene again = parse(R"(
+[[disc]]
+position = [0.5, 0.5]
+radius = 0.2
+mass = 10
+tag = "tracer"
+[[generate]]
+packing_fraction = 0.3
+radius = 0.01
+mass = 1.0
+temperature = 2.0
+region = [[0.0, 0.0], [1.0, 1.0]]
+color = "speed"
+seed = 7
+tag = "gas"
+[[generate]]
+count = 5
+radius = 0.002
+speed = 0.5
+color = "#3060e0"
+)");
+    REQUIRE(again.discs.size() == s.discs.size());
+    for (std::size_t i = 0; i < s.discs.size(); ++i)
+        CHECK(again.discs[i].position == s.discs[i].position);
+}
+
+TEST_CASE("toml: unknown keys are refused with the nearest valid one") {
+    CHECK(contains(toml_error("[[disc]]\nposition = [0.5, 0.5]\nradus = 0.1\n"),
+                   "s.toml:3: disc[0]: unknown key 'radus' (did you mean 'radius'?)"));
+    CHECK(contains(toml_error("titel = \"x\"\n"),
+                   "s.toml:1: unknown key 'titel' (did you mean 'title'?)"));
+    CHECK(contains(toml_error("[box]\nboundry = \"walls\"\n"),
+                   "s.toml:2: box: unknown key 'boundry' (did you mean 'boundary'?)"));
+    CHECK(contains(toml_error("[[generate]]\ncount = 3\nradius = 0.01\ntemprature = 1\n"),
+                   "generate[0]: unknown key 'temprature' (did you mean 'temperature'?)"));
+    CHECK(contains(toml_error("[render]\nfps = 30\n"),
+                   "s.toml:2: render: unknown key 'fps' (valid keys: color_mode"));
+}
+
+TEST_CASE("toml: bad values name the key and its line") {
+    CHECK(contains(toml_error("[[disc]]\nposition = [0.5, 0.5]\nradius = -0.1\n"),
+                   "s.toml:3: disc[0].radius: must be > 0 (got -0.1)"));
+    CHECK(contains(toml_error("[[disc]]\nposition = [0.5, 0.5]\nradius = 0.1\nmass = 0\n"),
+                   "s.toml:4: disc[0].mass: must be > 0"));
+    CHECK(contains(toml_error("[[disc]]\nposition = [0.5, nan]\nradius = 0.1\n"),
+                   "s.toml:2: disc[0].position[1]: not a finite number"));
+    CHECK(
+        contains(toml_error("[[disc]]\nposition = [0.5, 0.5]\nvelocity = [inf, 0]\nradius = 0.1\n"),
+                 "disc[0].velocity[0]: not a finite number"));
+    CHECK(contains(toml_error("[[disc]]\nposition = [0.5]\nradius = 0.1\n"),
+                   "s.toml:2: disc[0].position: expected [x, y]"));
+    CHECK(contains(toml_error("[[disc]]\nposition = [0.5, 0.5]\nradius = \"big\"\n"),
+                   "disc[0].radius: expected a number"));
+    CHECK(contains(toml_error("[[disc]]\nradius = 0.1\n"),
+                   "s.toml:1: disc[0].position: missing (required)"));
+    CHECK(contains(toml_error("[[disc]]\nposition = [0.5, 0.5]\nradius = 0.1\ncolor = \"red\"\n"),
+                   "disc[0].color: expected \"#rrggbb\""));
+    CHECK(
+        contains(toml_error("[[disc]]\nposition = [0.5, 0.5]\nradius = 0.1\ncolor = [0, 256, 0]\n"),
+                 "colour channels are 0..255"));
+    CHECK(contains(toml_error("[box]\nwidth = -1\n"), "s.toml:2: box.width: must be > 0"));
+    CHECK(contains(toml_error("[box]\nboundary = \"torus\"\n"),
+                   "s.toml:2: box.boundary: expected \"walls\" or \"periodic\""));
+    CHECK(contains(toml_error("box = 3\n"), "s.toml:1: box: expected a table"));
+    CHECK(
+        contains(toml_error("[disc]\nposition = [0.5, 0.5]\n"), "disc: expected [[disc]] tables"));
+}
+
+TEST_CASE("toml: physical problems found by validation name the [[disc]] and its line") {
+    CHECK(contains(toml_error("[[disc]]\nposition = [0.95, 0.5]\nradius = 0.1\n"),
+                   "s.toml:1: disc[0]: centre (0.95, 0.5), radius 0.1: right edge"));
+    CHECK(contains(toml_error("[[disc]]\nposition = [0.5, 0.5]\nradius = 0.1\n\n[[disc]]\nposition "
+                              "= [0.6, 0.5]\nradius = 0.1\n"),
+                   "s.toml:5: disc[1]: overlaps s.toml:1: disc[0] at t = 0"));
+}
+
+TEST_CASE("toml: generator errors carry the block's line and key") {
+    CHECK(contains(toml_error("\n[[generate]]\npacking_fraction = 0.95\nradius = 0.01\n"),
+                   "s.toml:2: generate[0].packing_fraction: 0.95 is above the maximum 0.85"));
+    CHECK(contains(toml_error("[[generate]]\ncount = 5000\nradius = 0.01\n"),
+                   "generate[0].count: 5000 discs of radius 0.01 give packing fraction"));
+    CHECK(contains(toml_error("[[generate]]\nradius = 0.01\n"),
+                   "s.toml:1: generate[0]: give count or packing_fraction"));
+    CHECK(contains(toml_error("[[generate]]\ncount = 0\nradius = 0.01\n"),
+                   "generate[0].count: must be >= 1"));
+    CHECK(
+        contains(toml_error("[[generate]]\ncount = 3\nradius = 0.01\ntemperature = 1\nspeed = 1\n"),
+                 "not both"));
+    CHECK(
+        contains(toml_error("[[generate]]\ncount = 3\nradius = 0.01\nregion = [[0, 0], [2, 1]]\n"),
+                 "generate[0].region"));
+    CHECK(contains(toml_error("[[generate]]\ncount = 3\nradius = 0.01\nseed = -1\n"),
+                   "generate[0].seed: must be >= 0"));
+}
+
+TEST_CASE("toml: syntax errors give the line") {
+    CHECK(contains(toml_error("title = \"x\"\n[box\nwidth = 1\n"), "s.toml:2: TOML syntax error"));
+}
+
+TEST_CASE("toml: include pulls algs4 files in, relative to the scene, with their own lines") {
+    const TempDir dir("collide_test_toml_include");
+    dir.write("two.txt", "2\n0.2 0.2 0 0 0.05 1 0 0 0\n0.8 0.8 0 0 0.05 1 0 0 0\n");
+    dir.write("bad.txt", "1\n0.2 0.2 0 0 0.05 1 0 0\n");
+    dir.write("clash.txt", "1\n0.55 0.5 0 0 0.05 1 0 0 0\n");
+    const Scene s =
+        parse("include = [\"two.txt\"]\n[[disc]]\nposition = [0.5, 0.5]\nradius = 0.1\n", dir.path);
+    CHECK(s.discs.size() == 3);
+    CHECK(s.discs[0].position == Vec2{0.2, 0.2});
+    CHECK(s.discs[2].radius == 0.1);
+    CHECK(
+        contains(toml_error("include = \"bad.txt\"\n", dir.path), "bad.txt:2: expected 9 columns"));
+    CHECK(contains(toml_error("include = [\"none.txt\"]\n", dir.path),
+                   "s.toml:1: include[0]: cannot open"));
+    CHECK(contains(toml_error("include = [\"two.txt\", \"other.toml\"]\n", dir.path),
+                   "s.toml:1: include[1]: only algs4 .txt files"));
+    CHECK(contains(
+        toml_error("include = \"clash.txt\"\n[[disc]]\nposition = [0.5, 0.5]\nradius = 0.1\n",
+                   dir.path),
+        "s.toml:2: disc[0]: overlaps "));
+}
+
+TEST_CASE("nearest_name suggests plausible typos only") {
+    const std::vector<std::string> keys = {"radius", "mass", "position", "velocity"};
+    CHECK(nearest_name("radus", keys) == "radius");
+    CHECK(nearest_name("postion", keys) == "position");
+    CHECK(nearest_name("mas", keys) == "mass");
+    CHECK(nearest_name("frobnicate", keys).empty());
+}
+
+TEST_CASE("toml: periodic positions are wrapped into the box") {
+    const Scene s =
+        parse("[box]\nboundary = \"periodic\"\n[[disc]]\nposition = [1.25, -0.25]\nradius = 0.1\n");
+    CHECK(s.discs[0].position == Vec2{0.25, 0.75});
+}
+
+TEST_CASE("toml: bad explicit discs are reported before any generator runs") {
+    CHECK(contains(toml_error("[[disc]]\nposition = [0.5, 0.5]\nradius = 0.1\nvelocity = [0, "
+                              "nan]\n[[generate]]\ncount = 3\nradius = 0.01\n"),
+                   "s.toml:4: disc[0].velocity[1]: not a finite number"));
+}
+
+TEST_CASE("toml: generator blocks without a seed get different streams") {
+    const Scene s = parse(R"(
+[[generate]]
+count = 1
+radius = 0.01
+region = [[0.0, 0.0], [0.5, 1.0]]
+[[generate]]
+count = 1
+radius = 0.01
+region = [[0.5, 0.0], [1.0, 1.0]]
+)");
+    REQUIRE(s.discs.size() == 2);
+    // same relative position in each half would mean the same random stream
+    CHECK(s.discs[1].position.y != s.discs[0].position.y);
+}
