@@ -24,13 +24,6 @@ constexpr std::size_t sim_queue_frames = 4;
 
 double relative_drift(double energy, double initial) { return initial > 0.0 ? (energy - initial) / initial : 0.0; }
 
-/// Work per simulated time unit: a deterministic stand-in for wall-clock cost (wall time would
-/// make the frames, hence the file, differ from run to run).
-std::string cost_line(double work, double t, const char* unit) {
-    if (t <= 0.0) return fmt::format("cost  - {} / time unit", unit);
-    return fmt::format("cost  {} {} / time unit", short_count(work / t), unit);
-}
-
 void check_interrupt(const PipelineHooks& hooks) {
     if (hooks.interrupts != nullptr) hooks.interrupts->throw_if_requested();
 }
@@ -114,17 +107,18 @@ std::string_view title_of(const RenderPlan& plan) {
 // ------------------------------------------------------------------------------------------------
 // Simulation side
 
-std::vector<std::string> time_driven_counters(const Measurements& m, double dt, double energy_drift) {
+std::vector<std::string> time_driven_counters(const Measurements& m, double /*dt*/, double energy_drift) {
+    // Short "label  value" pairs: the renderer lays them out in a grid of narrow columns.
     return {
-        fmt::format("dt  {:.3g}   ({} steps)", dt, short_count(static_cast<double>(m.steps))),
-        fmt::format("overlap checks  {}", short_count(static_cast<double>(m.overlap_checks))),
-        fmt::format("collisions handled  {}", m.collisions_pair + m.collisions_wall),
-        fmt::format("overlapping pairs now  {}", m.overlapping_pairs),
-        fmt::format("deepest overlap  {:.3g} now, {:.3g} seen", m.max_overlap, m.max_overlap_seen),
-        fmt::format("missed collisions  {}", m.missed_collisions),
+        fmt::format("steps  {}", short_count(static_cast<double>(m.steps))),
+        fmt::format("checks  {}", short_count(static_cast<double>(m.overlap_checks))),
+        fmt::format("collisions  {}", short_count(static_cast<double>(m.collisions_pair + m.collisions_wall))),
+        fmt::format("overlaps now  {}", m.overlapping_pairs),
+        fmt::format("deepest  {:.2g}", m.max_overlap),
+        fmt::format("missed  {}", m.missed_collisions),
         fmt::format("escaped  {}", m.escaped),
-        fmt::format("energy drift  {:+.2e}", energy_drift),
-        cost_line(static_cast<double>(m.overlap_checks), m.t, "checks"),
+        fmt::format("energy drift  {:+.1e}", energy_drift),
+        fmt::format("checks/time  {}", m.t > 0.0 ? short_count(static_cast<double>(m.overlap_checks) / m.t) : "-"),
     };
 }
 
@@ -132,24 +126,23 @@ std::vector<std::string> event_driven_counters(const Measurements& m, double ene
     const std::uint64_t queue_ops = m.queue.pushes + m.queue.pops;
     const double stale_share =
         m.queue.pops > 0 ? 100.0 * static_cast<double>(m.queue.stale_pops) / static_cast<double>(m.queue.pops) : 0.0;
+    const double work = static_cast<double>(m.predictions + queue_ops);
     return {
-        fmt::format("events  {}", m.events),
-        fmt::format("collisions  {}", m.collisions_pair + m.collisions_wall),
+        fmt::format("events  {}", short_count(static_cast<double>(m.events))),
+        fmt::format("collisions  {}", short_count(static_cast<double>(m.collisions_pair + m.collisions_wall))),
         fmt::format("predictions  {}", short_count(static_cast<double>(m.predictions))),
-        fmt::format("queue ops  {}   (max size {})", short_count(static_cast<double>(queue_ops)), m.queue.max_size),
-        fmt::format("stale pops  {}   ({:.0f}%)", m.queue.stale_pops, stale_share),
-        fmt::format("energy drift  {:+.2e}", energy_drift),
-        cost_line(static_cast<double>(m.predictions + queue_ops), m.t, "ops"),
+        fmt::format("queue ops  {}", short_count(static_cast<double>(queue_ops))),
+        fmt::format("queue max  {}", m.queue.max_size),
+        fmt::format("stale pops  {:.0f}%", stale_share),
+        fmt::format("overlaps now  {}", m.max_overlap > 0.0 ? "yes" : "0"),
+        fmt::format("energy drift  {:+.1e}", energy_drift),
+        fmt::format("ops/time  {}", m.t > 0.0 ? short_count(work / m.t) : "-"),
     };
 }
 
 std::vector<std::string> comparison_notes(RenderMode mode) {
     if (mode != RenderMode::both) return {};
-    return {
-        "The panels drift apart even when both are right: collisions are chaotic, so tiny differences grow.",
-        "Compare the figures, not the positions: missed collisions, overlaps, escapes and energy drift are the "
-        "time-driven errors.",
-    };
+    return {"The panels drift apart even when both are right (chaos): compare the figures, not the positions."};
 }
 
 FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan) : plan_(plan) {
@@ -171,7 +164,8 @@ SimFrame FrameSource::frame(std::int64_t k) {
     out.time = plan_.clock.time(k);
     out.panels.reserve(panels_.size());
     for (Panel& panel : panels_) {
-        panel.engine->advance_to(out.time);
+        const double target = panel.time_driven ? last_step_time(out.time, plan_.time_engine.dt) : out.time;
+        panel.engine->advance_to(std::max(target, panel.engine->time()));
         out.panels.push_back(describe(panel));
     }
     return out;
@@ -208,8 +202,7 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
         content_.panels[i] = {&panel.snapshot, panel.title, panel.counters};
         content_.energy_drift[i].push_back(panel.drift);
     }
-    content_.time_text = fmt::format("t = {:.4g}    ({:.3g} time units per second of video)", frame.time,
-                                     plan_.speed.speed);
+    content_.time_text = fmt::format("t = {:.3f}   ({:.3g}/s)", frame.time, plan_.speed.speed);
     return content_;
 }
 

@@ -86,11 +86,11 @@ EngineOptions time_engine_options(const RenderRequest& request, const Scene& sce
     require_positive(options.dt, from_cli ? "--dt" : "scene [render] dt", "time step");
     if (options.dt > interval * (1.0 + divide_tolerance)) {
         notices.push_back(fmt::format("dt = {:g} is longer than the frame interval {:g}: the time-driven "
-                                      "engine steps at most one frame interval at a time",
-                                      options.dt, interval));
+                                      "panel shows its latest step and changes every {:.3g} frames",
+                                      options.dt, interval, options.dt / interval));
     } else if (!divides(options.dt, interval)) {
-        notices.push_back(fmt::format("warning: dt = {:g} does not divide the frame interval {:g}: each frame "
-                                      "ends with a shorter time-driven step",
+        notices.push_back(fmt::format("warning: dt = {:g} does not divide the frame interval {:g}: the "
+                                      "time-driven panel shows its latest step, up to dt behind the frame time",
                                       options.dt, interval));
     }
     return options;
@@ -271,6 +271,15 @@ FrameClock still_clock(double at, double speed, int fps, std::string_view option
         clock.last_time = at;
     }
     return clock;
+}
+
+double last_step_time(double t, double dt) noexcept {
+    if (!positive_finite(dt) || !(t > 0.0)) return t > 0.0 ? t : 0.0;
+    const double steps = std::floor(t / dt * (1.0 + divide_tolerance));
+    const double step_time = steps * dt;
+    // A frame time that is a whole number of steps (within rounding) is returned exactly.
+    if (std::abs(step_time - t) <= divide_tolerance * dt) return t;
+    return std::min(step_time, t);
 }
 
 bool divides(double dt, double interval) noexcept {

@@ -280,8 +280,9 @@ struct Renderer::Impl {
     void build_frame(const FrameContent& frame) {
         std::vector<Box> boxes;
         for (const PanelContent& panel : frame.panels) boxes.push_back(panel.snapshot->box);
+        const int rows = counter_rows(frame);
         const FrameLayout layout =
-            compute_layout(config, boxes, font ? font->line_height() : 0.0F);
+            compute_layout(config, boxes, font ? font->line_height() : 0.0F, rows);
         instances.clear();
         panel_instance_end.clear();
         under.clear();
@@ -290,14 +291,15 @@ struct Renderer::Impl {
             trails.assign(frame.panels.size(), TrailHistory(config.trail_length));
         }
         for (std::size_t i = 0; i < frame.panels.size(); ++i) {
-            build_panel(frame.panels[i], layout.panels[i], trails[i]);
+            build_panel(frame.panels[i], layout.panels[i], trails[i], frame.panels.size());
             panel_instance_end.push_back(instances.size());
         }
         if (font) build_strip(frame, layout);
         current_layout = layout;
     }
 
-    void build_panel(const PanelContent& content, const PanelLayout& panel, TrailHistory& trail) {
+    void build_panel(const PanelContent& content, const PanelLayout& panel, TrailHistory& trail,
+                     std::size_t panels) {
         const Snapshot& snapshot = *content.snapshot;
         const Box& box = snapshot.box;
         const float wall = font ? std::max(1.0F, std::round(font->pixel_height() / 10.0F)) : 1.0F;
@@ -318,7 +320,7 @@ struct Renderer::Impl {
         }
         add_disc_instances(snapshot, panel);
         add_failure_markers(snapshot, panel, wall);
-        if (font) add_header(content, panel);
+        if (font) add_header(content, panel, panels);
     }
 
     void add_disc_instances(const Snapshot& snapshot, const PanelLayout& panel) {
@@ -391,11 +393,32 @@ struct Renderer::Impl {
         }
     }
 
-    void add_header(const PanelContent& content, const PanelLayout& panel) {
+    [[nodiscard]] int panel_counter_columns(std::size_t panels) const {
+        const float panel_width = static_cast<float>(config.width) / static_cast<float>(std::max<std::size_t>(panels, 1));
+        return counter_columns(panel_width, font ? font->pixel_height() : 1.0F);
+    }
+
+    /// Rows of the counter grid: enough for the panel with the most counters.
+    [[nodiscard]] int counter_rows(const FrameContent& frame) const {
+        const auto columns = static_cast<std::size_t>(panel_counter_columns(frame.panels.size()));
+        std::size_t rows = 0;
+        for (const PanelContent& panel : frame.panels) {
+            rows = std::max(rows, (panel.counters.size() + columns - 1) / columns);
+        }
+        return static_cast<int>(rows);
+    }
+
+    void add_header(const PanelContent& content, const PanelLayout& panel, std::size_t panels) {
         const float baseline = panel.header.y0 + font->ascent();
         font->add_text(over, panel.header.x0, baseline, content.title, title_color);
-        font->add_text(over, panel.header.x0, baseline + font->line_height(),
-                       join(content.counters, "   "), counter_color);
+        const int columns = panel_counter_columns(panels);
+        const float column_width = (panel.header.x1 - panel.header.x0) / static_cast<float>(columns);
+        for (std::size_t k = 0; k < content.counters.size(); ++k) {
+            const auto column = static_cast<float>(k % static_cast<std::size_t>(columns));
+            const auto row = static_cast<float>(1 + k / static_cast<std::size_t>(columns));
+            font->add_text(over, panel.header.x0 + column * column_width, baseline + row * font->line_height(),
+                           content.counters[k], counter_color);
+        }
     }
 
     void build_strip(const FrameContent& frame, const FrameLayout& layout) {
