@@ -277,10 +277,13 @@ struct Renderer::Impl {
         }
     }
 
+    int counter_rows_ = 0;  ///< rows of the counter grid in the frame being built
+
     void build_frame(const FrameContent& frame) {
         std::vector<Box> boxes;
         for (const PanelContent& panel : frame.panels) boxes.push_back(panel.snapshot->box);
         const int rows = counter_rows(frame);
+        counter_rows_ = rows;
         const FrameLayout layout =
             compute_layout(config, boxes, font ? font->line_height() : 0.0F, rows);
         instances.clear();
@@ -398,14 +401,18 @@ struct Renderer::Impl {
         return counter_columns(panel_width, font ? font->pixel_height() : 1.0F);
     }
 
-    /// Rows of the counter grid: enough for the panel with the most counters.
+    /// Rows of the counter grid: enough for the panel with the most counters, but the header
+    /// never takes more than about 30% of the frame height (small frames keep room for the box;
+    /// counters come most important first, so the ones that do not fit are the least important).
     [[nodiscard]] int counter_rows(const FrameContent& frame) const {
         const auto columns = static_cast<std::size_t>(panel_counter_columns(frame.panels.size()));
         std::size_t rows = 0;
         for (const PanelContent& panel : frame.panels) {
             rows = std::max(rows, (panel.counters.size() + columns - 1) / columns);
         }
-        return static_cast<int>(rows);
+        const float line = font ? font->line_height() : 1.0F;
+        const auto fit = static_cast<std::size_t>(std::max(0.0F, std::floor(0.30F * static_cast<float>(config.height) / line) - 1.0F));
+        return static_cast<int>(std::min(rows, fit));
     }
 
     void add_header(const PanelContent& content, const PanelLayout& panel, std::size_t panels) {
@@ -413,7 +420,9 @@ struct Renderer::Impl {
         font->add_text(over, panel.header.x0, baseline, content.title, title_color);
         const int columns = panel_counter_columns(panels);
         const float column_width = (panel.header.x1 - panel.header.x0) / static_cast<float>(columns);
-        for (std::size_t k = 0; k < content.counters.size(); ++k) {
+        const std::size_t shown = std::min(content.counters.size(), static_cast<std::size_t>(columns) *
+                                                                       static_cast<std::size_t>(counter_rows_));
+        for (std::size_t k = 0; k < shown; ++k) {
             const auto column = static_cast<float>(k % static_cast<std::size_t>(columns));
             const auto row = static_cast<float>(1 + k / static_cast<std::size_t>(columns));
             font->add_text(over, panel.header.x0 + column * column_width, baseline + row * font->line_height(),
