@@ -88,7 +88,16 @@ Rgb8 panel_color(std::size_t panel) noexcept {
 
 void draw_speed_plot(OverlayBatch& batch, const FontAtlas& font, RectF area,
                      const std::vector<const Snapshot*>& snapshots, double v_min, double v_max) {
-    const PlotFrame frame = draw_axes(batch, font, area, "speed distribution vs Maxwell-Boltzmann");
+    // The longest title that leaves room for the range label (narrow frames get the short one).
+    const std::string range = format_number("v max %.3g", v_max);
+    const float room = area.width() - font.text_width(range) - font.pixel_height();
+    std::string title = "speed distribution vs Maxwell-Boltzmann";
+    for (const char* shorter : {"speeds vs Maxwell-Boltzmann", "speeds vs MB"}) {
+        if (font.text_width(title) <= room) break;
+        title = shorter;
+    }
+    const bool show_range = font.text_width(title) <= room;
+    const PlotFrame frame = draw_axes(batch, font, area, title);
     const RectF plot = frame.plot;
     if (snapshots.empty() || plot.width() < 4.0F) return;
     const int bins = std::clamp(static_cast<int>(plot.width() / 6.0F), 8, 40);
@@ -130,9 +139,10 @@ void draw_speed_plot(OverlayBatch& batch, const FontAtlas& font, RectF area,
                        {x1, to_y(curve_values[static_cast<std::size_t>(i) + 1])},
                        frame.line_width * 1.5F, curve_color);
     }
-    const std::string range = format_number("v max %.3g", v_max);
-    font.add_text(batch, plot.x1 - font.text_width(range), area.y0 + font.ascent(), range,
-                  axis_color);
+    if (show_range) {
+        font.add_text(batch, plot.x1 - font.text_width(range), area.y0 + font.ascent(), range,
+                      axis_color);
+    }
 }
 
 void draw_drift_plot(OverlayBatch& batch, const FontAtlas& font, RectF area,

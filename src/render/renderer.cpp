@@ -149,6 +149,7 @@ struct Renderer::Impl {
     // Per-frame scratch, kept to avoid allocating every frame.
     std::vector<DiscInstance> instances;
     std::vector<std::size_t> panel_instance_end;
+    std::vector<RectF> panel_clip;  // scissor of each panel's discs
     OverlayBatch under;  // box fills, walls, trails: drawn before the discs
     OverlayBatch over;   // text, legend, plots: drawn after
     std::vector<Rgb8> colors;
@@ -284,6 +285,7 @@ struct Renderer::Impl {
             compute_layout(config, boxes, font ? font->line_height() : 0.0F);
         instances.clear();
         panel_instance_end.clear();
+        panel_clip.clear();
         under.clear();
         over.clear();
         if (trails.size() != frame.panels.size()) {
@@ -292,6 +294,10 @@ struct Renderer::Impl {
         for (std::size_t i = 0; i < frame.panels.size(); ++i) {
             build_panel(frame.panels[i], layout.panels[i], trails[i]);
             panel_instance_end.push_back(instances.size());
+            // Periodic images must not spill past the seam; in a walled box escaped discs must
+            // show outside it, so those panels clip to the whole panel instead.
+            const bool periodic = frame.panels[i].snapshot->box.boundary == Boundary::periodic;
+            panel_clip.push_back(periodic ? layout.panels[i].box : layout.panels[i].area);
         }
         if (font) build_strip(frame, layout);
         current_layout = layout;
@@ -512,7 +518,7 @@ struct Renderer::Impl {
         for (std::size_t p = 0; p < panel_instance_end.size(); ++p) {
             const std::size_t end = panel_instance_end[p];
             if (end > first) {
-                scissor_to(current_layout.panels[p].area);
+                scissor_to(panel_clip[p]);
                 point_disc_attributes(first);
                 gl.DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4,
                                        static_cast<GLsizei>(end - first));
@@ -523,9 +529,12 @@ struct Renderer::Impl {
     }
 
     // Rows are top-down in our pixel coordinates and in GL's (see disc.vert), so no flip.
+    // Whole pixels covering r.
     void scissor_to(RectF r) {
-        gl.Scissor(static_cast<GLint>(r.x0), static_cast<GLint>(r.y0),
-                   static_cast<GLsizei>(r.width()), static_cast<GLsizei>(r.height()));
+        const auto x0 = static_cast<GLint>(std::floor(r.x0));
+        const auto y0 = static_cast<GLint>(std::floor(r.y0));
+        gl.Scissor(x0, y0, static_cast<GLsizei>(std::ceil(r.x1)) - x0,
+                   static_cast<GLsizei>(std::ceil(r.y1)) - y0);
     }
 
     void draw(const FrameContent& frame) {

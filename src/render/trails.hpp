@@ -1,10 +1,13 @@
 #pragma once
 // Internal: per-panel history of tagged discs' positions across frames, drawn as fading
-// polylines; the line is broken where a disc wraps around a periodic box.
+// polylines; where a disc wraps around a periodic box the step is drawn on both sides of the
+// seam, cut at the box edges.
 
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "collide/snapshot.hpp"
@@ -42,5 +45,9 @@ private:
 /// True when the step a -> b is a jump across a periodic box (not motion): longer than half the
 /// box in x or y.
 [[nodiscard]] bool wraps_between(const Box& box, Vec2 a, Vec2 b) noexcept;
+
+/// The part of segment a-b inside [0, width] x [0, height] (box units), none if it misses.
+[[nodiscard]] std::optional<std::pair<Vec2, Vec2>> clip_to_box(const Box& box, Vec2 a,
+                                                               Vec2 b) noexcept;
 
 }  // namespace collide::render
