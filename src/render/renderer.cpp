@@ -95,6 +95,7 @@ struct DiscInstance {
     Rgba8 color;
 };
 static_assert(sizeof(DiscInstance) == 20);
+constexpr std::size_t vertices_per_disc = 6;  // a quad's two triangles (disc.vert)
 static_assert(sizeof(OverlayVertex) == 20);
 
 Rgb8 disc_color(const DiscState& disc, const RenderConfig& config) noexcept {
@@ -142,12 +143,24 @@ struct Renderer::Impl {
     GlObject overlay_buffer;
     GlObject glyph_texture;
     GLint disc_frame_size = -1;
+    GLint disc_as_points = -1;
     GLint overlay_frame_size = -1;
     std::optional<FontAtlas> font;
     std::vector<TrailHistory> trails;
 
     // Per-frame scratch, kept to avoid allocating every frame.
     std::vector<DiscInstance> instances;
+    // Upload order per panel: that panel's point sprites, then its quads (6 vertices each).
+    std::vector<DiscInstance> disc_vertices;
+    struct PanelDraws {
+        std::size_t first_point = 0;
+        std::size_t point_count = 0;
+        std::size_t first_quad_vertex = 0;
+        std::size_t quad_vertex_count = 0;
+    };
+    std::vector<PanelDraws> panel_draws;
+    std::vector<DiscInstance> quad_scratch;
+    float max_point_size = 0.0F;  // largest point sprite the implementation draws (px)
     std::vector<std::size_t> panel_instance_end;
     std::vector<RectF> panel_clip;  // scissor of each panel's discs
     OverlayBatch under;  // box fills, walls, trails: drawn before the discs
@@ -202,6 +215,10 @@ struct Renderer::Impl {
         overlay_program =
             make_program(gl, shaders::overlay_vert, shaders::overlay_frag, "overlay shader");
         disc_frame_size = gl.GetUniformLocation(disc_program.get(), "frame_size");
+        disc_as_points = gl.GetUniformLocation(disc_program.get(), "as_points");
+        GLfloat point_range[2] = {0.0F, 0.0F};
+        gl.GetFloatv(GL_POINT_SIZE_RANGE, point_range);
+        max_point_size = point_range[1];
         overlay_frame_size = gl.GetUniformLocation(overlay_program.get(), "frame_size");
         gl.UseProgram(overlay_program.get());
         gl.Uniform1i(gl.GetUniformLocation(overlay_program.get(), "glyph_atlas"), 0);
@@ -212,11 +229,16 @@ struct Renderer::Impl {
         disc_buffer = make_buffer(gl);
         gl.BindVertexArray(disc_vertex_array.get());
         gl.BindBuffer(GL_ARRAY_BUFFER, disc_buffer.get());
-        point_disc_attributes(0);
-        for (GLuint location = 0; location < 4; ++location) {
-            gl.EnableVertexAttribArray(location);
-            gl.VertexAttribDivisor(location, 1);
-        }
+        constexpr auto disc_stride = static_cast<GLsizei>(sizeof(DiscInstance));
+        const auto at = [](std::size_t offset) { return reinterpret_cast<const void*>(offset); };
+        gl.VertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, disc_stride, at(offsetof(DiscInstance, x)));
+        gl.VertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, disc_stride,
+                               at(offsetof(DiscInstance, radius)));
+        gl.VertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, disc_stride,
+                               at(offsetof(DiscInstance, style)));
+        gl.VertexAttribPointer(3, 4, GL_UNSIGNED_BYTE, GL_TRUE, disc_stride,
+                               at(offsetof(DiscInstance, color)));
+        for (GLuint location = 0; location < 4; ++location) gl.EnableVertexAttribArray(location);
 
         overlay_vertex_array = make_vertex_array(gl);
         overlay_buffer = make_buffer(gl);
@@ -231,23 +253,6 @@ struct Renderer::Impl {
                                reinterpret_cast<const void*>(offsetof(OverlayVertex, color)));
         for (GLuint location = 0; location < 3; ++location) gl.EnableVertexAttribArray(location);
         gl.BindVertexArray(0);
-    }
-
-    // Points the (bound) disc VAO at the instances starting at `first` (GL 3.3 has no base
-    // instance, so each panel's draw re-points the attributes instead).
-    void point_disc_attributes(std::size_t first) {
-        constexpr auto stride = static_cast<GLsizei>(sizeof(DiscInstance));
-        const std::size_t base = first * sizeof(DiscInstance);
-        const auto at = [base](std::size_t offset) {
-            return reinterpret_cast<const void*>(base + offset);
-        };
-        gl.VertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, stride, at(offsetof(DiscInstance, x)));
-        gl.VertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, stride,
-                               at(offsetof(DiscInstance, radius)));
-        gl.VertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride,
-                               at(offsetof(DiscInstance, style)));
-        gl.VertexAttribPointer(3, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
-                               at(offsetof(DiscInstance, color)));
     }
 
     void create_glyph_texture() {
@@ -504,31 +509,74 @@ struct Renderer::Impl {
         check_gl(gl, "drawing a frame");
     }
 
+    // Splits each panel's discs into point sprites and quads (see disc.vert) in upload order.
+    void build_disc_vertices() {
+        disc_vertices.clear();
+        panel_draws.clear();
+        quad_scratch.clear();
+        std::size_t first = 0;
+        for (const std::size_t end : panel_instance_end) {
+            PanelDraws draws;
+            draws.first_point = disc_vertices.size();
+            quad_scratch.clear();
+            for (std::size_t i = first; i < end; ++i) {
+                if (fits_point_sprite(instances[i])) {
+                    disc_vertices.push_back(instances[i]);
+                } else {
+                    quad_scratch.push_back(instances[i]);
+                }
+            }
+            draws.point_count = disc_vertices.size() - draws.first_point;
+            draws.first_quad_vertex = disc_vertices.size();
+            for (const DiscInstance& quad : quad_scratch) {
+                disc_vertices.insert(disc_vertices.end(), vertices_per_disc, quad);
+            }
+            draws.quad_vertex_count = disc_vertices.size() - draws.first_quad_vertex;
+            panel_draws.push_back(draws);
+            first = end;
+        }
+    }
+
+    // Mirrors disc.vert's square: side 2 * (max(radius, min_radius) + aa_margin).
+    [[nodiscard]] bool fits_point_sprite(const DiscInstance& disc) const noexcept {
+        constexpr float min_radius = 0.75F;
+        constexpr float aa_margin = 1.0F;
+        const float half = std::max(disc.radius, min_radius) + aa_margin;
+        return 2.0F * half <= max_point_size && disc.x - half >= 0.0F && disc.y - half >= 0.0F &&
+               disc.x + half <= static_cast<float>(config.width) &&
+               disc.y + half <= static_cast<float>(config.height);
+    }
+
+    // Per panel, scissored: one draw of point sprites, one of quads (each skipped when empty).
     void submit_discs(float frame_w, float frame_h) {
         if (instances.empty()) return;
+        build_disc_vertices();
         gl.UseProgram(disc_program.get());
         gl.Uniform2f(disc_frame_size, frame_w, frame_h);
         gl.BindVertexArray(disc_vertex_array.get());
         gl.BindBuffer(GL_ARRAY_BUFFER, disc_buffer.get());
         gl.BufferData(GL_ARRAY_BUFFER,
-                      static_cast<GLsizeiptr>(instances.size() * sizeof(DiscInstance)),
-                      instances.data(), GL_STREAM_DRAW);
+                      static_cast<GLsizeiptr>(disc_vertices.size() * sizeof(DiscInstance)),
+                      disc_vertices.data(), GL_STREAM_DRAW);
+        gl.Enable(GL_PROGRAM_POINT_SIZE);
         gl.Enable(GL_SCISSOR_TEST);
-        std::size_t first = 0;
-        for (std::size_t p = 0; p < panel_instance_end.size(); ++p) {
-            const std::size_t end = panel_instance_end[p];
-            if (end > first) {
-                scissor_to(panel_clip[p]);
-                point_disc_attributes(first);
-                gl.DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4,
-                                       static_cast<GLsizei>(end - first));
+        for (std::size_t p = 0; p < panel_draws.size(); ++p) {
+            const PanelDraws& draws = panel_draws[p];
+            scissor_to(panel_clip[p]);
+            if (draws.point_count > 0) {
+                gl.Uniform1i(disc_as_points, 1);
+                gl.DrawArrays(GL_POINTS, static_cast<GLint>(draws.first_point),
+                              static_cast<GLsizei>(draws.point_count));
             }
-            first = end;
+            if (draws.quad_vertex_count > 0) {
+                gl.Uniform1i(disc_as_points, 0);
+                gl.DrawArrays(GL_TRIANGLES, static_cast<GLint>(draws.first_quad_vertex),
+                              static_cast<GLsizei>(draws.quad_vertex_count));
+            }
         }
         gl.Disable(GL_SCISSOR_TEST);
     }
 
-    // Rows are top-down in our pixel coordinates and in GL's (see disc.vert), so no flip.
     // Whole pixels covering r.
     void scissor_to(RectF r) {
         const auto x0 = static_cast<GLint>(std::floor(r.x0));

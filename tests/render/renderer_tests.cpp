@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "collide/error.hpp"
 #include "layout.hpp"
@@ -104,14 +105,13 @@ TEST_CASE("a disc one pixel across is still visible") {
     CHECK(coverage == doctest::Approx(std::numbers::pi * 0.25).epsilon(0.3));
 }
 
-TEST_CASE("a disc half the frame high is crisp: a one-pixel antialiased rim") {
+/// Renders one disc of `radius_px` at the centre of a frame and checks its rim and area.
+void check_crisp_disc(RenderConfig config, double radius_px, const std::string& name) {
     Snapshot s = empty_snapshot({16.0, 9.0, Boundary::walls});
-    RenderConfig config = test::small_config(false);
     const double scale = compute_layout(config, {s.box}, 0.0F).panels[0].scale;
-    const double radius_px = 0.25 * config.height;  // diameter = half the frame
     s.discs = {disc_at({8.0, 4.5}, radius_px / scale, red)};
     const OnePanel r = render_one(s, config);
-    test::dump_if_requested(r.image, "pixel_half_frame_disc");
+    test::dump_if_requested(r.image, name);
     const PointF c = r.layout.to_pixels({8.0, 4.5}, s.box);
     const int row = static_cast<int>(c.y);
     int rim = 0;  // pixels on the centre row that are neither the disc nor the box
@@ -126,6 +126,31 @@ TEST_CASE("a disc half the frame high is crisp: a one-pixel antialiased rim") {
     }
     CHECK(rim <= 4);  // at most two blended pixels per edge
     CHECK(std::abs(inside - 2.0 * radius_px) <= 2.0);
+    const double area = std::numbers::pi * radius_px * radius_px;
+    CHECK(std::abs(count_near(r.image, red, 100) - area) < 0.02 * area);
+}
+
+TEST_CASE("a disc half the frame high is crisp: a one-pixel antialiased rim") {
+    // 320x180: drawn as a point sprite; 1280x720 (360 px across): too big for one, a quad.
+    check_crisp_disc(test::small_config(false), 45.0, "pixel_half_frame_disc");
+    RenderConfig large = test::small_config(false);
+    large.width = 1280;
+    large.height = 720;
+    check_crisp_disc(large, 180.0, "pixel_half_frame_disc_720p");
+}
+
+TEST_CASE("a disc crossing the frame edge is drawn up to the edge") {
+    // Point sprites vanish when their centre leaves the frame: such discs must go as quads.
+    RenderConfig config = test::small_config(false);
+    Snapshot s = empty_snapshot({1.0, 1.0, Boundary::walls});
+    DiscState gone = disc_at({-0.9, 0.5}, 0.3, green);  // escaped, pinned just left of the box
+    gone.escaped = true;
+    s.discs = {gone};
+    const OnePanel r = render_one(s, config);
+    test::dump_if_requested(r.image, "pixel_frame_edge_disc");
+    // Its red ring reaches past the left edge of the frame: the first column shows it.
+    CHECK(count_near(r.image, {255, 70, 70}, 40, 0, 0, 1, r.image.height) > 10);
+    CHECK(count_near(r.image, green, 40) > 100);
 }
 
 TEST_CASE("in a periodic box a disc straddling an edge shows on both sides") {
