@@ -1,25 +1,39 @@
-/// `collide check SCENE`: load and validate a scene, print a one-line summary (exit 0) or the
-/// first problem with file:line and field (exit 2, via main).
+/// `collide check SCENE [--export FILE]`: load and validate a scene, print a one-line summary
+/// (exit 0) or the first problem with file:line and field (exit 2, via main). --export writes the
+/// scene back out with every disc explicit (generated discs frozen; algs4 <-> TOML conversion).
 
 #include <cstdio>
 #include <memory>
 #include <string>
 
 #include "collide/scene/load.hpp"
+#include "collide/scene/save.hpp"
 #include "collide/sim/scene_check.hpp"
 #include "commands.hpp"
 
 namespace collide::app {
 
 void add_check_command(CLI::App& root) {
-    auto scene_arg = std::make_shared<std::string>();
+    struct CheckOptions {
+        std::string scene;
+        std::string export_path;
+    };
+    auto options = std::make_shared<CheckOptions>();
     CLI::App* cmd = root.add_subcommand(
         "check", "Validate a scene (algs4 .txt, .toml or a built-in name) and summarise it");
-    cmd->add_option("scene", *scene_arg, "Scene file or built-in scene name (see `collide scenes`)")
+    cmd->add_option("scene", options->scene,
+                    "Scene file or built-in scene name (see `collide scenes`)")
         ->required();
-    cmd->callback([scene_arg] {
-        const Scene scene = load_scene(*scene_arg);  // validates; throws Error(input) -> exit 2
-        std::printf("ok: %s: %s\n", scene_arg->c_str(), scene_summary(scene).c_str());
+    cmd->add_option("--export", options->export_path,
+                    "Also write the scene with every disc explicit: .toml, or .txt (algs4, unit "
+                    "box with walls only)");
+    cmd->callback([options] {
+        const Scene scene = load_scene(options->scene);  // validates; throws Error(input) -> exit 2
+        if (!options->export_path.empty())
+            save_scene(scene, options->export_path);
+        std::printf("ok: %s: %s\n", options->scene.c_str(), scene_summary(scene).c_str());
+        if (!options->export_path.empty())
+            std::printf("wrote %s\n", options->export_path.c_str());
     });
 }
 

@@ -10,6 +10,7 @@
 #include <memory>
 #include <string>
 #include <system_error>
+#include <unistd.h>
 
 #include "collide/error.hpp"
 #include "collide/scene/load.hpp"
@@ -45,7 +46,8 @@ public:
     /// Opens the temporary file. Throws Error(input) naming `option` when it cannot be created.
     AtomicTextFile(std::filesystem::path destination, const std::string& option)
         : destination_(std::move(destination)), temporary_(destination_) {
-        temporary_ += ".tmp";
+        // The process id keeps two runs (or a user's own *.tmp file) from sharing the temporary.
+        temporary_ += ".tmp-" + std::to_string(getpid());
         if (std::filesystem::is_directory(destination_)) {
             throw_input_error(option, 0, "", "'" + destination_.string() + "' is a directory");
         }

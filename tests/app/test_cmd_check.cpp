@@ -90,3 +90,24 @@ TEST_CASE("collide check: a missing argument is a usage error") {
     CHECK(r.exit_code == 2);
     CHECK(contains(r.output, "scene is required"));
 }
+
+TEST_CASE("collide check --export freezes a generated scene that checks the same") {
+    const std::filesystem::path out =
+        std::filesystem::temp_directory_path() / "collide_e2e_export.toml";
+    std::filesystem::remove(out);
+    const auto first = run_collide("check brownian --export '" + out.string() + "'");
+    CHECK(first.exit_code == 0);
+    CHECK(contains(first.output, "wrote "));
+    const auto again = run_collide("check '" + out.string() + "'");
+    CHECK(again.exit_code == 0);
+    // same N, eta, boundary and energy in the one-line summary
+    const auto summary = [](const std::string& s) {
+        return s.substr(s.find("N = "), s.find('\n', s.find("N = ")) - s.find("N = "));
+    };
+    CHECK(summary(first.output) == summary(again.output));
+    std::filesystem::remove(out);
+
+    const auto bad = run_collide("check gas --export /nonexistent-dir/x.toml");
+    CHECK(bad.exit_code == 2);
+    CHECK(contains(bad.output, "cannot write here"));
+}

@@ -130,4 +130,19 @@ TEST_CASE(
     auto fine = make_engine(s, options);
     fine->advance_to(1.0);
     CHECK(escaped_from_chamber(fine->snapshot()) == 0);
+    options.engine = "fast";
+    auto exact = make_engine(s, options);
+    exact->advance_to(1.0);
+    CHECK(escaped_from_chamber(exact->snapshot()) == 0);
+}
+
+TEST_CASE("built-in library: the dense fluid overwhelms the time-driven method at the scene's dt") {
+    const Scene s = load_scene("dense-fluid", COLLIDE_ASSETS_DIR);
+    EngineOptions options;
+    options.engine = "time";
+    options.td_detect = "grid";
+    options.dt = *s.render.dt;
+    auto coarse = make_engine(s, options);
+    coarse->advance_to(0.2);
+    CHECK(coarse->snapshot().overlapping_pairs.size() > 100);  // of 2228 discs
 }

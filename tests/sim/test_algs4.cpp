@@ -75,6 +75,7 @@ TEST_CASE("algs4: content errors name file, line and field") {
     CHECK(contains(parse_error("two\n"), "t.txt:1: N: expected the number of discs"));
     CHECK(contains(parse_error("-1\n"), "t.txt:1: N"));
     CHECK(contains(parse_error("1 2\n"), "t.txt:1: N"));
+    CHECK(contains(parse_error("\x01\xff\xfe binary\n"), "got '??? binary'"));
     CHECK(contains(parse_error("1\n0.5 0.5 0 0 0.1 1 0 0\n"),
                    "t.txt:2: expected 9 columns (rx ry vx vy radius mass r g b), got 8"));
     CHECK(contains(parse_error("1\n0.5 0.5 0 0 0.1 1 0 0 0 0\n"), "got 10"));

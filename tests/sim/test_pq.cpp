@@ -367,11 +367,11 @@ struct TextbookMaxHeap {
     }
 };
 
-/// An item of 1 KiB, so that a heap of a thousand passes DaryHeap's branch_free_bytes and
+/// An item of 4 KiB, so that a heap of a few hundred passes DaryHeap's branch_free_bytes and
 /// takes its branching path.
 struct FatItem {
     int key = 0;
-    std::array<char, 1020> payload{};
+    std::array<char, 4092> payload{};
     friend bool operator<(const FatItem& a, const FatItem& b) { return a.key < b.key; }
     friend bool operator==(const FatItem& a, const FatItem& b) { return a.key == b.key; }
 };
@@ -420,7 +420,7 @@ TEST_CASE("DaryHeap's bottom-up pop leaves the same array as the lecture's sink,
 
 TEST_CASE("heaps larger than the caches (the branching child choice) match the lecture's sink too") {
     constexpr std::size_t limit = DaryHeap<FatItem, Orientation::max, 2>::branch_free_bytes;
-    CHECK(check_same_arrays_as_textbook<2, FatItem>(16000) > limit);
-    CHECK(check_same_arrays_as_textbook<3, FatItem>(16000) > limit);
-    CHECK(check_same_arrays_as_textbook<4, FatItem>(16000) > limit);
+    CHECK(check_same_arrays_as_textbook<2, FatItem>(4000) > limit);
+    CHECK(check_same_arrays_as_textbook<3, FatItem>(4000) > limit);
+    CHECK(check_same_arrays_as_textbook<4, FatItem>(4000) > limit);
 }

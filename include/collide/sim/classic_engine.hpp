@@ -32,17 +32,22 @@ public:
     explicit ClassicEngine(const Scene& scene, Queue queue = Queue{})
         : box_(scene.box), appearance_(scene), queue_(std::move(queue)) {
         const std::size_t n = scene.discs.size();
-        position_.reserve(n);
-        velocity_.reserve(n);
+        px_.reserve(n);
+        py_.reserve(n);
+        vx_.reserve(n);
+        vy_.reserve(n);
+        start_.reserve(n);
         radius_.reserve(n);
         mass_.reserve(n);
         for (const Disc& d : scene.discs) {
-            position_.push_back(d.position);
-            velocity_.push_back(d.velocity);
+            px_.push_back(d.position.x);
+            py_.push_back(d.position.y);
+            vx_.push_back(d.velocity.x);
+            vy_.push_back(d.velocity.y);
+            start_.push_back(d.position);
             radius_.push_back(d.radius);
             mass_.push_back(d.mass);
         }
-        start_ = position_;
         count_.assign(n, 0);
         last_partner_.assign(n, no_disc);
         // Each pair once (j > i) at the start; identical keys would be duplicates anyway.
@@ -73,11 +78,11 @@ public:
         Snapshot s;
         s.time = now_;
         s.box = box_;
-        s.discs.reserve(position_.size());
-        for (std::size_t i = 0; i < position_.size(); ++i) {
+        s.discs.reserve(px_.size());
+        for (std::size_t i = 0; i < px_.size(); ++i) {
             DiscState d;
-            d.position = box_.wrap(position_[i]);
-            d.velocity = velocity_[i];
+            d.position = box_.wrap(position(i));
+            d.velocity = velocity(i);
             d.radius = radius_[i];
             d.mass = mass_[i];
             d.color = appearance_.colors[i];
@@ -97,8 +102,14 @@ public:
         m.collisions_wall = collisions_xwall_ + collisions_ywall_;
         m.predictions = predictions_;
         m.queue = stats_;
-        fill_thermodynamics(m, velocity_, mass_, radius_, box_, tally_);
-        m.max_overlap = max_overlap(position_, radius_, box_);
+        std::vector<Vec2> positions(px_.size());
+        std::vector<Vec2> velocities(px_.size());
+        for (std::size_t i = 0; i < px_.size(); ++i) {
+            positions[i] = position(i);
+            velocities[i] = velocity(i);
+        }
+        fill_thermodynamics(m, velocities, mass_, radius_, box_, tally_);
+        m.max_overlap = max_overlap(positions, radius_, box_);
         m.msd = mean_squared_displacement();
         m.wall_seconds = wall_seconds_;
         if (wall_seconds_ > 0.0) {
@@ -114,6 +125,13 @@ public:
     [[nodiscard]] const Queue& queue() const noexcept { return queue_; }
 
 private:
+    [[nodiscard]] Vec2 position(std::size_t i) const noexcept { return {px_[i], py_[i]}; }
+    [[nodiscard]] Vec2 velocity(std::size_t i) const noexcept { return {vx_[i], vy_[i]}; }
+    void set_velocity(std::size_t i, Vec2 v) noexcept {
+        vx_[i] = v.x;
+        vy_[i] = v.y;
+    }
+
     /// Valid when neither disc has collided since the event was predicted.
     [[nodiscard]] bool is_valid(const Event& e) const noexcept {
         if (count_[e.a] != e.count_a) return false;
@@ -124,7 +142,9 @@ private:
     void move_all_to(double t) {
         const double dt = t - now_;
         if (dt > 0.0) {
-            for (std::size_t i = 0; i < position_.size(); ++i) position_[i] += dt * velocity_[i];
+            const std::size_t n = px_.size();
+            for (std::size_t i = 0; i < n; ++i) px_[i] += dt * vx_[i];
+            for (std::size_t i = 0; i < n; ++i) py_[i] += dt * vy_[i];
         }
         now_ = t;
     }
@@ -137,9 +157,9 @@ private:
 
     /// Predicts disc i against the walls and against discs first..N-1 (except itself).
     void predict(std::uint32_t i, std::uint32_t first) {
-        const auto n = static_cast<std::uint32_t>(position_.size());
-        const Vec2 pi = position_[i];
-        const Vec2 vi = velocity_[i];
+        const auto n = static_cast<std::uint32_t>(px_.size());
+        const Vec2 pi = position(i);
+        const Vec2 vi = velocity(i);
         const double ri = radius_[i];
         const bool periodic = box_.boundary == Boundary::periodic;
         predictions_ += n - first - (first <= i ? 1 : 0);
@@ -152,24 +172,32 @@ private:
             // (approaching, and either overlapping or with d >= 0). Most pairs cannot; pass 2
             // runs the lecture's kernel on the few that can, so the times are exactly the kernel's.
             may_hit_.resize(n);
-            for (std::uint32_t j = first; j < n; ++j) {
-                const double dx = position_[j].x - pi.x;
-                const double dy = position_[j].y - pi.y;
-                const double dvx = velocity_[j].x - vi.x;
-                const double dvy = velocity_[j].y - vi.y;
+            // Plain pointers and flags stored as doubles: a byte store could alias the doubles,
+            // and a double select vectorises where a bool-to-integer conversion does not.
+            const double* x = px_.data();
+            const double* y = py_.data();
+            const double* vx = vx_.data();
+            const double* vy = vy_.data();
+            const double* r = radius_.data();
+            double* flag = may_hit_.data();
+            for (std::size_t j = first; j < n; ++j) {
+                const double dx = x[j] - pi.x;
+                const double dy = y[j] - pi.y;
+                const double dvx = vx[j] - vi.x;
+                const double dvy = vy[j] - vi.y;
                 const double b = dx * dvx + dy * dvy;
-                const double sigma = ri + radius_[j];
+                const double sigma = ri + r[j];
                 const double c = dx * dx + dy * dy - sigma * sigma;
                 const double d = b * b - (dvx * dvx + dvy * dvy) * c;
-                may_hit_[j] = static_cast<std::uint8_t>((b < 0.0) & ((c <= 0.0) | (d >= 0.0)));
+                flag[j] = (b < 0.0) & ((c <= 0.0) | (d >= 0.0)) ? 1.0 : 0.0;
             }
-            may_hit_[i] = 0;
+            may_hit_[i] = 0.0;
             for (std::uint32_t j = first; j < n; ++j) {
-                if (may_hit_[j] == 0) continue;
-                const Vec2 dr = position_[j] - pi;
+                if (may_hit_[j] == 0.0) continue;
+                const Vec2 dr = position(j) - pi;
                 const double sigma = ri + radius_[j];
                 if (just_collided(i, j, dr, sigma)) continue;
-                offer_pair(i, j, kinematics::time_to_hit(dr, velocity_[j] - vi, sigma));
+                offer_pair(i, j, kinematics::time_to_hit(dr, velocity(j) - vi, sigma));
             }
         }
         if (periodic) return;
@@ -191,8 +219,8 @@ private:
     /// meeting across the seam is found even when another image is nearer now.
     [[nodiscard]] double time_to_hit(std::uint32_t i, std::uint32_t j) const noexcept {
         const double sigma = radius_[i] + radius_[j];
-        const Vec2 dr = box_.displacement(position_[i], position_[j]);
-        const Vec2 dv = velocity_[j] - velocity_[i];
+        const Vec2 dr = box_.displacement(position(i), position(j));
+        const Vec2 dv = velocity(j) - velocity(i);
         if (just_collided(i, j, dr, sigma)) return kinematics::never;
         if (box_.boundary != Boundary::periodic) return kinematics::time_to_hit(dr, dv, sigma);
         double best = kinematics::never;
@@ -217,8 +245,12 @@ private:
         switch (e.kind) {
             case EventKind::pair: {
                 const std::uint32_t b = e.b;
-                const Vec2 dr = box_.displacement(position_[a], position_[b]);
-                const Vec2 impulse = kinematics::resolve_pair(velocity_[a], velocity_[b], mass_[a], mass_[b], dr);
+                const Vec2 dr = box_.displacement(position(a), position(b));
+                Vec2 va = velocity(a);
+                Vec2 vb = velocity(b);
+                const Vec2 impulse = kinematics::resolve_pair(va, vb, mass_[a], mass_[b], dr);
+                set_velocity(a, va);
+                set_velocity(b, vb);
                 tally_.virial += std::abs(dot(dr, impulse));
                 ++count_[b];
                 last_partner_[a] = b;
@@ -227,14 +259,14 @@ private:
                 break;
             }
             case EventKind::xwall:
-                tally_.wall_impulse += 2.0 * mass_[a] * std::abs(velocity_[a].x);
-                velocity_[a].x = -velocity_[a].x;
+                tally_.wall_impulse += 2.0 * mass_[a] * std::abs(vx_[a]);
+                vx_[a] = -vx_[a];
                 last_partner_[a] = no_disc;
                 ++collisions_xwall_;
                 break;
             case EventKind::ywall:
-                tally_.wall_impulse += 2.0 * mass_[a] * std::abs(velocity_[a].y);
-                velocity_[a].y = -velocity_[a].y;
+                tally_.wall_impulse += 2.0 * mass_[a] * std::abs(vy_[a]);
+                vy_[a] = -vy_[a];
                 last_partner_[a] = no_disc;
                 ++collisions_ywall_;
                 break;
@@ -248,16 +280,17 @@ private:
     [[nodiscard]] double mean_squared_displacement() const {
         double sum = 0.0;
         std::size_t counted = 0;
-        for (std::size_t i = 0; i < position_.size(); ++i) {
+        for (std::size_t i = 0; i < px_.size(); ++i) {
             if (!appearance_.in_msd(i)) continue;
-            sum += norm2(position_[i] - start_[i]);
+            sum += norm2(position(i) - start_[i]);
             ++counted;
         }
         return counted > 0 ? sum / static_cast<double>(counted) : 0.0;
     }
 
     [[nodiscard]] std::uint64_t bytes() const noexcept {
-        const std::size_t vecs = (position_.capacity() + velocity_.capacity() + start_.capacity()) * sizeof(Vec2);
+        const std::size_t vecs = (px_.capacity() + py_.capacity() + vx_.capacity() + vy_.capacity()) * sizeof(double) +
+                                 start_.capacity() * sizeof(Vec2);
         const std::size_t scalars = (radius_.capacity() + mass_.capacity()) * sizeof(double) +
                                     (count_.capacity() + last_partner_.capacity()) * sizeof(std::uint32_t);
         // The queue's own storage is not visible through its interface; count its entries.
@@ -268,14 +301,16 @@ private:
     Appearance appearance_;
     Queue queue_;
     double now_ = 0.0;
-    std::vector<Vec2> position_;  ///< unwrapped in periodic boxes (for the displacement)
-    std::vector<Vec2> velocity_;
+    // Positions (unwrapped in periodic boxes, for the displacement) and velocities, one array
+    // per component so that the O(N) loops over partners vectorise.
+    std::vector<double> px_, py_;
+    std::vector<double> vx_, vy_;
     std::vector<double> radius_;
     std::vector<double> mass_;
     std::vector<Vec2> start_;                  ///< positions at t = 0 (mean squared displacement)
     std::vector<std::uint32_t> count_;         ///< collisions per disc (lazy invalidation)
     std::vector<std::uint32_t> last_partner_;  ///< see just_collided
-    std::vector<std::uint8_t> may_hit_;        ///< scratch of predict (no allocation per event)
+    std::vector<double> may_hit_;              ///< scratch of predict (no allocation per event)
     QueueStats stats_;
     ImpulseTally tally_;
     std::uint64_t collisions_pair_ = 0;

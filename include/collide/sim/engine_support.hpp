@@ -43,7 +43,7 @@ struct Appearance {
 /// Checks a frame time given to Engine::advance_to. Throws Error(input) naming `until` when t is
 /// not finite or lies before the engine's clock (time never runs backwards).
 inline void require_forward(double now, double t) {
-    if (!(t >= now) || t != t) {
+    if (!(t >= now)) {  // also false for NaN
         throw_input_error("", 0, "until",
                           "cannot advance to t = " + std::to_string(t) + ": the simulation is at t = " +
                               std::to_string(now) + " and time never runs backwards");

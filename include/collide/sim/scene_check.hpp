@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "collide/scene.hpp"
@@ -24,9 +25,11 @@ struct DiscSource {
     std::size_t first = 0;   ///< index in Scene::discs of the run's first disc
     std::size_t count = 0;   ///< number of discs in the run
     std::string file;        ///< file the run was read from
-    std::vector<int> lines;  ///< one line per disc (algs4 lines, [[disc]] tables), or empty
-    int line = 0;            ///< line of the whole block when `lines` is empty ([[generate]])
-    std::string field;       ///< block name: "disc" (numbered per disc) or "generate[2]"
+    std::vector<int> lines;  ///< one line per disc (algs4 files), or empty
+    int line = 0;            ///< line of the block when `lines` is empty ([[disc]], [[generate]])
+    /// Name in messages: with `lines`, "disc" => "disc 3" (1-based); a one-disc run ("disc[2]")
+    /// is named as is; a longer run ("generate[0]") => "generate[0] disc 17".
+    std::string field;
 };
 
 /// The origin of every disc of a scene, for error messages. An empty origin names discs by index.

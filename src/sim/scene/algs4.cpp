@@ -66,10 +66,15 @@ bool parse_count(std::string_view token, unsigned long long& value) {
 
 std::string quoted(std::string_view s) {
     constexpr std::size_t shown = 40;
-    std::string q(s.substr(0, shown));
+    std::string q = "'";
+    for (const char c : s.substr(0, shown)) {
+        // A binary file must not put control characters or broken UTF-8 on the terminal.
+        const auto u = static_cast<unsigned char>(c);
+        q += (u < 0x20 || u >= 0x7f) ? '?' : c;
+    }
     if (s.size() > shown)
         q += "...";
-    return "'" + q + "'";
+    return q + "'";
 }
 
 struct Reader {

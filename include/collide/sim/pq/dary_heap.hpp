@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// A d-ary heap in a 0-based array: children of i are d*i+1 ... d*i+d, parent (i-1)/d.
-/// d = 2 is the lecture's binary heap. push and pop are O(log_d N) (pop does d compares a level).
+/// d = 2 is the lecture's binary heap. push and pop are O(log_d N): pop makes d - 1 compares a
+/// level on its way down, then a short rise (see sink_from_root).
 /// D = 0 selects an arity chosen at run time (constructor argument); a compile-time D lets the
 /// compiler turn the index arithmetic into shifts and unroll the child scan, so prefer it.
 
@@ -30,8 +31,8 @@ public:
     /// processor's caches, where a mispredicted branch costs more than a select); larger ones
     /// branch, so the processor can guess the path and load the next level ahead of the compare
     /// instead of waiting for each level's cache miss in turn. On the hold model at N = 10^6
-    /// doubles the branch-free binary heap took twice as long as std::priority_queue, the
-    /// branching one about as long (bench/bench_pq.cpp, docs/benchmarks.md).
+    /// doubles the branch-free binary heap took 1.7 to 2.6 times as long as std::priority_queue,
+    /// the branching one about as long (bench/bench_pq.cpp, docs/benchmarks.md).
     static constexpr std::size_t branch_free_bytes = std::size_t{1} << 20;
 
     /// An empty heap (a run-time-arity heap built this way is binary).
@@ -45,7 +46,7 @@ public:
         : d_(d), less_(std::move(less)) {
         if (d < 2 || d > max_runtime_arity) {
             throw_runtime_error("d-ary heap: arity " + std::to_string(d) + " out of range (2.." +
-                              std::to_string(max_runtime_arity) + ")");
+                                std::to_string(max_runtime_arity) + ")");
         }
     }
 

@@ -1,0 +1,132 @@
+// Writing scenes: TOML (every disc explicit) or algs4 text, through a temporary file and a
+// rename so that a failure never leaves a half-written scene at the destination.
+
+#include "collide/scene/save.hpp"
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <ostream>
+#include <string>
+#include <system_error>
+
+#include "collide/error.hpp"
+#include "collide/sim/algs4.hpp"
+
+namespace collide {
+
+namespace {
+
+// 17 significant digits: every double reads back as itself.
+std::string exact(double v) {
+    std::array<char, 40> buf{};
+    std::snprintf(buf.data(), buf.size(), "%.17g", v);
+    // "1" is a TOML integer, which the reader accepts wherever it wants a number.
+    return buf.data();
+}
+
+// A TOML basic string: quotes, backslashes and control characters escaped.
+std::string quoted(const std::string& s) {
+    std::string q = "\"";
+    for (const char c : s) {
+        const auto u = static_cast<unsigned char>(c);
+        if (c == '"' || c == '\\') {
+            q += '\\';
+            q += c;
+        } else if (u < 0x20 || u == 0x7f) {
+            std::array<char, 8> buf{};
+            std::snprintf(buf.data(), buf.size(), "\\u%04x", u);
+            q += buf.data();
+        } else {
+            q += c;
+        }
+    }
+    return q + "\"";
+}
+
+std::string hex_color(Rgb8 c) {
+    std::array<char, 8> buf{};
+    std::snprintf(buf.data(), buf.size(), "#%02x%02x%02x", c.r, c.g, c.b);
+    return buf.data();
+}
+
+void write_render(std::ostream& out, const RenderHints& r) {
+    if (!r.color_mode && !r.trails && !r.overlays && !r.duration && !r.speed && !r.dt)
+        return;
+    out << "\n[render]\n";
+    if (r.color_mode)
+        out << "color_mode = " << quoted(*r.color_mode) << "\n";
+    if (r.trails)
+        out << "trails = " << (*r.trails ? "true" : "false") << "\n";
+    if (r.overlays)
+        out << "overlays = " << (*r.overlays ? "true" : "false") << "\n";
+    if (r.duration)
+        out << "duration = " << exact(*r.duration) << "\n";
+    if (r.speed)
+        out << "speed = " << exact(*r.speed) << "\n";
+    if (r.dt)
+        out << "dt = " << exact(*r.dt) << "\n";
+}
+
+void write_disc(std::ostream& out, const Disc& d) {
+    out << "\n[[disc]]\nposition = [" << exact(d.position.x) << ", " << exact(d.position.y)
+        << "]\nvelocity = [" << exact(d.velocity.x) << ", " << exact(d.velocity.y)
+        << "]\nradius = " << exact(d.radius) << "\nmass = " << exact(d.mass)
+        << "\ncolor = " << quoted(hex_color(d.color)) << "\n";
+    if (!d.tag.empty())
+        out << "tag = " << quoted(d.tag) << "\n";
+}
+
+}  // namespace
+
+void write_toml_scene(std::ostream& out, const Scene& scene) {
+    if (!scene.title.empty())
+        out << "title = " << quoted(scene.title) << "\n";
+    out << "\n[box]\nwidth = " << exact(scene.box.width) << "\nheight = " << exact(scene.box.height)
+        << "\nboundary = "
+        << (scene.box.boundary == Boundary::periodic ? "\"periodic\"" : "\"walls\"") << "\n";
+    write_render(out, scene.render);
+    for (const Disc& d : scene.discs)
+        write_disc(out, d);
+}
+
+void save_scene(const Scene& scene, const std::filesystem::path& path) {
+    const std::string ext = path.extension().string();
+    if (ext != ".toml" && ext != ".txt") {
+        throw_input_error(path.string(), 0, "",
+                          "cannot write scenes as '" + ext + "' (use .toml or .txt)");
+    }
+    if (ext == ".txt" && (scene.box.width != 1.0 || scene.box.height != 1.0 ||
+                          scene.box.boundary != Boundary::walls)) {
+        throw_input_error(path.string(), 0, "",
+                          "algs4 .txt files describe the unit box with walls only (use .toml)");
+    }
+    std::filesystem::path temp = path;
+    temp += ".partial";
+    {
+        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+        if (!out)
+            throw_input_error(path.string(), 0, "", "cannot write here");
+        if (ext == ".toml") {
+            write_toml_scene(out, scene);
+        } else {
+            write_algs4(out, scene);
+        }
+        out.flush();
+        if (!out) {
+            out.close();
+            std::error_code ignored;
+            std::filesystem::remove(temp, ignored);
+            throw_input_error(path.string(), 0, "", "write failed (disk full?)");
+        }
+    }
+    std::error_code ec;
+    std::filesystem::rename(temp, path, ec);
+    if (ec) {
+        std::error_code ignored;
+        std::filesystem::remove(temp, ignored);
+        throw_input_error(path.string(), 0, "", "cannot write here (" + ec.message() + ")");
+    }
+}
+
+}  // namespace collide
