@@ -27,19 +27,27 @@ namespace collide::render {
 
 std::string_view color_mode_name(ColorMode mode) noexcept {
     switch (mode) {
-        case ColorMode::scene: return "scene";
-        case ColorMode::speed: return "speed";
-        case ColorMode::mass: return "mass";
-        case ColorMode::tag: return "tag";
+        case ColorMode::scene:
+            return "scene";
+        case ColorMode::speed:
+            return "speed";
+        case ColorMode::mass:
+            return "mass";
+        case ColorMode::tag:
+            return "tag";
     }
     return "scene";
 }
 
 ColorMode parse_color_mode(std::string_view text, std::string_view field) {
-    if (text == "scene") return ColorMode::scene;
-    if (text == "speed") return ColorMode::speed;
-    if (text == "mass") return ColorMode::mass;
-    if (text == "tag") return ColorMode::tag;
+    if (text == "scene")
+        return ColorMode::scene;
+    if (text == "speed")
+        return ColorMode::speed;
+    if (text == "mass")
+        return ColorMode::mass;
+    if (text == "tag")
+        return ColorMode::tag;
     throw_input_error(std::string(field) + ": unknown colour mode '" + std::string(text) +
                       "' (expected scene, speed, mass or tag)");
 }
@@ -56,18 +64,21 @@ void RenderConfig::validate() const {
     if (height < min_size || height > max_size) {
         fail("height", "must be in [64, 8192], got " + std::to_string(height));
     }
-    if (!std::isfinite(speed_min) || speed_min < 0.0) fail("speed_min", "must be finite and >= 0");
+    if (!std::isfinite(speed_min) || speed_min < 0.0)
+        fail("speed_min", "must be finite and >= 0");
     if (!std::isfinite(speed_max) || !(speed_max > speed_min)) {
         fail("speed_max", "must be finite and > speed_min");
     }
-    if (!std::isfinite(mass_min) || !(mass_min > 0.0)) fail("mass_min", "must be finite and > 0");
+    if (!std::isfinite(mass_min) || !(mass_min > 0.0))
+        fail("mass_min", "must be finite and > 0");
     if (!std::isfinite(mass_max) || mass_max < mass_min) {
         fail("mass_max", "must be finite and >= mass_min");
     }
     if (trail_length < 2 || trail_length > 1024) {
         fail("trail_length", "must be in [2, 1024], got " + std::to_string(trail_length));
     }
-    if (overlays && font_path.empty()) fail("font_path", "must name a TrueType font");
+    if (overlays && font_path.empty())
+        fail("font_path", "must name a TrueType font");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -100,16 +111,19 @@ static_assert(sizeof(OverlayVertex) == 20);
 
 Rgb8 disc_color(const DiscState& disc, const RenderConfig& config) noexcept {
     switch (config.color_mode) {
-        case ColorMode::scene: return disc.color;
+        case ColorMode::scene:
+            return disc.color;
         case ColorMode::speed:
             return colormap((norm(disc.velocity) - config.speed_min) /
                             (config.speed_max - config.speed_min));
         case ColorMode::mass: {
-            if (!(config.mass_max > config.mass_min)) return colormap(0.5);
+            if (!(config.mass_max > config.mass_min))
+                return colormap(0.5);
             return colormap(std::log(disc.mass / config.mass_min) /
                             std::log(config.mass_max / config.mass_min));
         }
-        case ColorMode::tag: return disc.tagged ? tagged_color : untagged_color;
+        case ColorMode::tag:
+            return disc.tagged ? tagged_color : untagged_color;
     }
     return disc.color;
 }
@@ -117,7 +131,8 @@ Rgb8 disc_color(const DiscState& disc, const RenderConfig& config) noexcept {
 std::string join(const std::vector<std::string>& parts, const char* separator) {
     std::string out;
     for (const std::string& part : parts) {
-        if (!out.empty()) out += separator;
+        if (!out.empty())
+            out += separator;
         out += part;
     }
     return out;
@@ -163,15 +178,16 @@ struct Renderer::Impl {
     float max_point_size = 0.0F;  // largest point sprite the implementation draws (px)
     std::vector<std::size_t> panel_instance_end;
     std::vector<RectF> panel_clip;  // scissor of each panel's discs
-    OverlayBatch under;  // box fills, walls, trails: drawn before the discs
-    OverlayBatch over;   // text, legend, plots: drawn after
+    OverlayBatch under;             // box fills, walls, trails: drawn before the discs
+    OverlayBatch over;              // text, legend, plots: drawn after
     std::vector<Rgb8> colors;
     std::vector<OverlayVertex> overlay_upload;
 
     Impl(const RenderConfig& cfg, std::unique_ptr<Context> ctx)
         : config(cfg), context(std::move(ctx)) {
         config.validate();
-        if (!context) throw_runtime_error("renderer: no GL context");
+        if (!context)
+            throw_runtime_error("renderer: no GL context");
         context->make_current();
         if (gladLoadGLContext(&gl, context->proc_loader()) == 0) {
             throw_runtime_error("GL: cannot load the GL 3.3 core entry points");
@@ -231,14 +247,16 @@ struct Renderer::Impl {
         gl.BindBuffer(GL_ARRAY_BUFFER, disc_buffer.get());
         constexpr auto disc_stride = static_cast<GLsizei>(sizeof(DiscInstance));
         const auto at = [](std::size_t offset) { return reinterpret_cast<const void*>(offset); };
-        gl.VertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, disc_stride, at(offsetof(DiscInstance, x)));
+        gl.VertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, disc_stride,
+                               at(offsetof(DiscInstance, x)));
         gl.VertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, disc_stride,
                                at(offsetof(DiscInstance, radius)));
         gl.VertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, disc_stride,
                                at(offsetof(DiscInstance, style)));
         gl.VertexAttribPointer(3, 4, GL_UNSIGNED_BYTE, GL_TRUE, disc_stride,
                                at(offsetof(DiscInstance, color)));
-        for (GLuint location = 0; location < 4; ++location) gl.EnableVertexAttribArray(location);
+        for (GLuint location = 0; location < 4; ++location)
+            gl.EnableVertexAttribArray(location);
 
         overlay_vertex_array = make_vertex_array(gl);
         overlay_buffer = make_buffer(gl);
@@ -251,7 +269,8 @@ struct Renderer::Impl {
                                reinterpret_cast<const void*>(offsetof(OverlayVertex, u)));
         gl.VertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
                                reinterpret_cast<const void*>(offsetof(OverlayVertex, color)));
-        for (GLuint location = 0; location < 3; ++location) gl.EnableVertexAttribArray(location);
+        for (GLuint location = 0; location < 3; ++location)
+            gl.EnableVertexAttribArray(location);
         gl.BindVertexArray(0);
     }
 
@@ -279,15 +298,16 @@ struct Renderer::Impl {
                               std::to_string(frame.panels.size()));
         }
         for (const PanelContent& panel : frame.panels) {
-            if (panel.snapshot == nullptr) throw_input_error("render: a panel has no snapshot");
+            if (panel.snapshot == nullptr)
+                throw_input_error("render: a panel has no snapshot");
         }
     }
 
     void build_frame(const FrameContent& frame) {
         std::vector<Box> boxes;
-        for (const PanelContent& panel : frame.panels) boxes.push_back(panel.snapshot->box);
-        const FrameLayout layout =
-            compute_layout(config, boxes, font ? font->line_height() : 0.0F);
+        for (const PanelContent& panel : frame.panels)
+            boxes.push_back(panel.snapshot->box);
+        const FrameLayout layout = compute_layout(config, boxes, font ? font->line_height() : 0.0F);
         instances.clear();
         panel_instance_end.clear();
         panel_clip.clear();
@@ -304,7 +324,8 @@ struct Renderer::Impl {
             const bool periodic = frame.panels[i].snapshot->box.boundary == Boundary::periodic;
             panel_clip.push_back(periodic ? layout.panels[i].box : layout.panels[i].area);
         }
-        if (font) build_strip(frame, layout);
+        if (font)
+            build_strip(frame, layout);
         current_layout = layout;
     }
 
@@ -329,7 +350,8 @@ struct Renderer::Impl {
         }
         add_disc_instances(snapshot, panel);
         add_failure_markers(snapshot, panel, wall);
-        if (font) add_header(content, panel);
+        if (font)
+            add_header(content, panel);
     }
 
     void add_disc_instances(const Snapshot& snapshot, const PanelLayout& panel) {
@@ -340,10 +362,12 @@ struct Renderer::Impl {
             const Rgba8 color = with_alpha(colors[k], 255);
             const auto radius = static_cast<float>(disc.radius * panel.scale);
             Vec2 position = disc.position;
-            if (disc.escaped) position = clamp_into_panel(position, disc.radius, box, panel);
+            if (disc.escaped)
+                position = clamp_into_panel(position, disc.radius, box, panel);
             const PointF c = panel.to_pixels(position, box);
             instances.push_back({c.x, c.y, radius, 0.0F, color});
-            if (periodic) add_periodic_images(disc, panel, box, color);
+            if (periodic)
+                add_periodic_images(disc, panel, box, color);
             if (disc.escaped) {
                 instances.push_back(
                     {c.x, c.y, radius + 3.0F, std::max(1.5F, radius * 0.25F), escaped_ring_color});
@@ -373,9 +397,12 @@ struct Renderer::Impl {
             const PointF c = panel.to_pixels({p.x + ix * box.width, p.y + iy * box.height}, box);
             instances.push_back({c.x, c.y, radius, 0.0F, color});
         };
-        if (sx != 0) add(sx, 0);
-        if (sy != 0) add(0, sy);
-        if (sx != 0 && sy != 0) add(sx, sy);
+        if (sx != 0)
+            add(sx, 0);
+        if (sy != 0)
+            add(0, sy);
+        if (sx != 0 && sy != 0)
+            add(sx, sy);
     }
 
     void add_failure_markers(const Snapshot& snapshot, const PanelLayout& panel, float wall) {
@@ -383,7 +410,8 @@ struct Renderer::Impl {
         const float ring = std::max(1.5F, wall * 1.5F);
         for (const auto& [a, b] : snapshot.overlapping_pairs) {
             for (const std::uint32_t index : {a, b}) {
-                if (index >= snapshot.discs.size()) continue;  // defensive: bad marker data
+                if (index >= snapshot.discs.size())
+                    continue;  // defensive: bad marker data
                 const DiscState& disc = snapshot.discs[index];
                 const PointF c = panel.to_pixels(disc.position, box);
                 const auto radius = static_cast<float>(disc.radius * panel.scale);
@@ -392,7 +420,8 @@ struct Renderer::Impl {
         }
         if (!snapshot.missed_collisions.empty()) {
             double mean_radius = 0.0;
-            for (const DiscState& d : snapshot.discs) mean_radius += d.radius;
+            for (const DiscState& d : snapshot.discs)
+                mean_radius += d.radius;
             mean_radius /= static_cast<double>(std::max<std::size_t>(snapshot.discs.size(), 1));
             const float flash = std::max(8.0F, static_cast<float>(3.0 * mean_radius * panel.scale));
             for (const Vec2 where : snapshot.missed_collisions) {
@@ -424,7 +453,8 @@ struct Renderer::Impl {
         font->add_text(over, info.x0, info.y0 + font->ascent(), frame.time_text, title_color);
         add_legend(info);
         std::vector<const Snapshot*> snapshots;
-        for (const PanelContent& panel : frame.panels) snapshots.push_back(panel.snapshot);
+        for (const PanelContent& panel : frame.panels)
+            snapshots.push_back(panel.snapshot);
         draw_speed_plot(over, *font, histogram, snapshots, config.speed_min, config.speed_max);
         draw_drift_plot(over, *font, drift, frame.energy_drift);
         const float notes_baseline = strip.y1 - m * 0.5F - line + font->ascent();
@@ -483,8 +513,7 @@ struct Renderer::Impl {
         const auto frame_h = static_cast<float>(config.height);
 
         overlay_upload.assign(under.vertices().begin(), under.vertices().end());
-        overlay_upload.insert(overlay_upload.end(), over.vertices().begin(),
-                              over.vertices().end());
+        overlay_upload.insert(overlay_upload.end(), over.vertices().begin(), over.vertices().end());
         gl.UseProgram(overlay_program.get());
         gl.Uniform2f(overlay_frame_size, frame_w, frame_h);
         gl.BindVertexArray(overlay_vertex_array.get());
@@ -495,7 +524,8 @@ struct Renderer::Impl {
         gl.ActiveTexture(GL_TEXTURE0);
         gl.BindTexture(GL_TEXTURE_2D, glyph_texture.get());
         const auto under_count = static_cast<GLsizei>(under.vertices().size());
-        if (under_count > 0) gl.DrawArrays(GL_TRIANGLES, 0, under_count);
+        if (under_count > 0)
+            gl.DrawArrays(GL_TRIANGLES, 0, under_count);
 
         submit_discs(frame_w, frame_h);
 
@@ -549,7 +579,8 @@ struct Renderer::Impl {
 
     // Per panel, scissored: one draw of point sprites, one of quads (each skipped when empty).
     void submit_discs(float frame_w, float frame_h) {
-        if (instances.empty()) return;
+        if (instances.empty())
+            return;
         build_disc_vertices();
         gl.UseProgram(disc_program.get());
         gl.Uniform2f(disc_frame_size, frame_w, frame_h);
@@ -636,14 +667,23 @@ void Renderer::render(const FrameContent& frame, Image& out) {
     impl_->read_pixels(out);
 }
 
-void Renderer::draw(const FrameContent& frame) { impl_->draw(frame); }
-void Renderer::read_pixels(Image& out) { impl_->read_pixels(out); }
-
-void Renderer::reset_trails() {
-    for (TrailHistory& trail : impl_->trails) trail.reset();
+void Renderer::draw(const FrameContent& frame) {
+    impl_->draw(frame);
+}
+void Renderer::read_pixels(Image& out) {
+    impl_->read_pixels(out);
 }
 
-Backend Renderer::backend() const noexcept { return impl_->context->backend(); }
-const RenderConfig& Renderer::config() const noexcept { return impl_->config; }
+void Renderer::reset_trails() {
+    for (TrailHistory& trail : impl_->trails)
+        trail.reset();
+}
+
+Backend Renderer::backend() const noexcept {
+    return impl_->context->backend();
+}
+const RenderConfig& Renderer::config() const noexcept {
+    return impl_->config;
+}
 
 }  // namespace collide::render

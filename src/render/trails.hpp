@@ -16,7 +16,7 @@
 namespace collide::render {
 
 class TrailHistory {
-public:
+  public:
     /// Keeps up to `length` positions per tagged disc (>= 2).
     explicit TrailHistory(int length) : length_(static_cast<std::size_t>(length)) {}
 
@@ -33,7 +33,7 @@ public:
     /// The recorded positions of disc `index` (oldest first); empty when it is not tagged.
     [[nodiscard]] std::vector<Vec2> points(std::uint32_t index) const;
 
-private:
+  private:
     std::size_t length_;
     std::size_t disc_count_ = 0;
     double last_time_ = 0.0;

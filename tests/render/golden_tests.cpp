@@ -48,13 +48,14 @@ void check_against_golden(const Image& image, const std::string& name) {
         MESSAGE("updated golden image " << path.string());
         return;
     }
-    REQUIRE_MESSAGE(fs::exists(path), "missing golden " << path.string()
-                                                        << " (run with COLLIDE_UPDATE_GOLDENS=1)");
+    REQUIRE_MESSAGE(fs::exists(path),
+                    "missing golden " << path.string() << " (run with COLLIDE_UPDATE_GOLDENS=1)");
     const Image golden = video::read_png(path);
     REQUIRE(golden.width == image.width);
     REQUIRE(golden.height == image.height);
     const std::size_t differing = differing_pixels(image, golden);
-    const auto allowed = static_cast<std::size_t>(max_differing_fraction * image.width * image.height);
+    const auto allowed =
+        static_cast<std::size_t>(max_differing_fraction * image.width * image.height);
     INFO("golden " << name << ": " << differing << " pixels differ (allowed " << allowed << ")");
     CHECK(differing <= allowed);
 }
@@ -75,7 +76,8 @@ TEST_CASE("golden: two panels with overlays, speed colours and failure markers")
     frame.panels = {{&left, "Time-driven, dt = 0.05", {"steps 40", "missed 3"}},
                     {&right, "Event-driven", {"events 812"}}};
     frame.time_text = "t = 2.00";
-    frame.energy_drift = {{{0.0, 0.0}, {1.0, 0.01}, {2.0, 0.03}}, {{0.0, 0.0}, {1.0, 0.0}, {2.0, 0.0}}};
+    frame.energy_drift = {{{0.0, 0.0}, {1.0, 0.01}, {2.0, 0.03}},
+                          {{0.0, 0.0}, {1.0, 0.0}, {2.0, 0.0}}};
     frame.notes = {"red halo: overlap"};
     check_against_golden(renderer.render(frame), "two_panels_speed");
 }
@@ -94,7 +96,8 @@ TEST_CASE("golden: periodic box with trails crossing the seam, overlays off") {
     for (int step = 0; step < 12; ++step) {
         s.time = 0.1 * step;
         for (DiscState& d : s.discs) {
-            if (!d.tagged) continue;
+            if (!d.tagged)
+                continue;
             d.position = d.position + 0.1 * d.velocity;
             d.position.x = std::fmod(d.position.x + s.box.width, s.box.width);
             d.position.y = std::fmod(d.position.y + s.box.height, s.box.height);

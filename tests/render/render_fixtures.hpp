@@ -10,10 +10,9 @@
 #include <vector>
 
 #include "collide/image.hpp"
-#include "collide/video/png.hpp"
-
 #include "collide/render/renderer.hpp"
 #include "collide/snapshot.hpp"
+#include "collide/video/png.hpp"
 
 namespace collide::render::test {
 
@@ -65,7 +64,8 @@ inline DiscState disc_at(Vec2 position, double radius, Rgb8 color) {
 /// can look at what the tests render; does nothing otherwise.
 inline void dump_if_requested(const Image& image, const std::string& name) {
     const char* dir = std::getenv("COLLIDE_RENDER_DUMP_DIR");
-    if (dir == nullptr || *dir == '\0') return;
+    if (dir == nullptr || *dir == '\0')
+        return;
     std::filesystem::create_directories(dir);
     video::write_png(image, std::filesystem::path(dir) / (name + ".png"));
 }
@@ -79,8 +79,10 @@ inline Rgb8 rgb_at(const Image& image, int x, int y) {
 /// Number of pixels in [x0, x1) x [y0, y1) whose colour is within `tolerance` of `color`.
 inline int count_near(const Image& image, Rgb8 color, int tolerance, int x0 = 0, int y0 = 0,
                       int x1 = -1, int y1 = -1) {
-    if (x1 < 0) x1 = image.width;
-    if (y1 < 0) y1 = image.height;
+    if (x1 < 0)
+        x1 = image.width;
+    if (y1 < 0)
+        y1 = image.height;
     int count = 0;
     for (int y = y0; y < y1; ++y) {
         for (int x = x0; x < x1; ++x) {

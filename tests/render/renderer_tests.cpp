@@ -63,7 +63,8 @@ TEST_CASE("a disc lands at its centre with its colour, rows top-down") {
 
     // Inside 80% of the radius is the disc's colour, beyond 130% is the box fill.
     const double rad = 1.0 * r.layout.scale;
-    for (const auto& [dx, dy] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+    for (const auto& [dx, dy] :
+         {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
         const int xi = px(red_c.x + static_cast<float>(0.8 * rad * dx));
         const int yi = px(red_c.y + static_cast<float>(0.8 * rad * dy));
         CHECK(rgb_at(r.image, xi, yi) == red);
@@ -76,7 +77,8 @@ TEST_CASE("a disc lands at its centre with its colour, rows top-down") {
     const int reds = count_near(r.image, red, 100);
     CHECK(std::abs(reds - area) < 0.05 * area);
     // The alpha channel is opaque everywhere (encoders ignore it, PNGs must not be see-through).
-    for (std::size_t i = 3; i < r.image.rgba.size(); i += 4) REQUIRE(r.image.rgba[i] == 255);
+    for (std::size_t i = 3; i < r.image.rgba.size(); i += 4)
+        REQUIRE(r.image.rgba[i] == 255);
 }
 
 TEST_CASE("a disc one pixel across is still visible") {
@@ -94,7 +96,8 @@ TEST_CASE("a disc one pixel across is still visible") {
         for (int x = static_cast<int>(c.x) - 3; x <= static_cast<int>(c.x) + 3; ++x) {
             const int g = rgb_at(r.image, x, y).g;
             brightest = std::max(brightest, g);
-            if (g > box_fill.g + 10) ++lit;
+            if (g > box_fill.g + 10)
+                ++lit;
             coverage += static_cast<double>(g - box_fill.g) / (255.0 - box_fill.g);
         }
     }
@@ -161,10 +164,10 @@ TEST_CASE("in a periodic box a disc straddling an edge shows on both sides") {
     const PointF left_edge = r.layout.to_pixels({0.3, 5.0}, s.box);  // inside the wrapped image
     CHECK(rgb_at(r.image, static_cast<int>(left_edge.x), static_cast<int>(left_edge.y)) == red);
     // Nothing is drawn outside the box on either side (the images are clipped to it).
-    const int outside_left = count_near(r.image, red, 60, 0, 0,
-                                        static_cast<int>(r.layout.box.x0) - 1, r.image.height);
-    const int outside_right = count_near(r.image, red, 60, static_cast<int>(r.layout.box.x1) + 2,
-                                         0, r.image.width, r.image.height);
+    const int outside_left =
+        count_near(r.image, red, 60, 0, 0, static_cast<int>(r.layout.box.x0) - 1, r.image.height);
+    const int outside_right = count_near(r.image, red, 60, static_cast<int>(r.layout.box.x1) + 2, 0,
+                                         r.image.width, r.image.height);
     CHECK(outside_left == 0);
     CHECK(outside_right == 0);
 }
@@ -197,7 +200,8 @@ TEST_CASE("failure markers: red halo on an overlapping pair, flash where a colli
     CHECK(count_near(marked.image, {240, 45, 45}, 30) > 20);
     CHECK(count_near(plain.image, {240, 45, 45}, 30) == 0);
     const PointF flash = marked.layout.to_pixels({12.0, 7.0}, s.box);
-    const Rgb8 at_flash = rgb_at(marked.image, static_cast<int>(flash.x), static_cast<int>(flash.y));
+    const Rgb8 at_flash =
+        rgb_at(marked.image, static_cast<int>(flash.x), static_cast<int>(flash.y));
     const Rgb8 before = rgb_at(plain.image, static_cast<int>(flash.x), static_cast<int>(flash.y));
     CHECK(at_flash.r > before.r + 100);  // bright yellow over the dark box
     CHECK(at_flash.g > before.g + 100);

@@ -5,8 +5,8 @@
 #include <filesystem>
 
 #include "collide/error.hpp"
-#include "layout.hpp"
 #include "font.hpp"
+#include "layout.hpp"
 #include "render_fixtures.hpp"
 
 namespace collide::render {
@@ -17,7 +17,8 @@ int bright_pixels(const Image& image, RectF r) {
     int count = 0;
     for (int y = static_cast<int>(r.y0); y < static_cast<int>(r.y1); ++y) {
         for (int x = static_cast<int>(r.x0); x < static_cast<int>(r.x1); ++x) {
-            if (test::rgb_at(image, x, y).g > 120) ++count;
+            if (test::rgb_at(image, x, y).g > 120)
+                ++count;
         }
     }
     return count;
@@ -88,8 +89,8 @@ TEST_CASE("a 480p two-panel frame shows the speed legend's colour bar in the str
 TEST_CASE("a missing font file is a runtime error naming it") {
     RenderConfig config = test::small_config(true);
     config.font_path = "/nonexistent/font.ttf";
-    CHECK_THROWS_WITH_AS(Renderer(config, Backend::osmesa), doctest::Contains("/nonexistent/font.ttf"),
-                         Error);
+    CHECK_THROWS_WITH_AS(Renderer(config, Backend::osmesa),
+                         doctest::Contains("/nonexistent/font.ttf"), Error);
 }
 
 TEST_CASE("UTF-8 decoding: multi-byte characters become one code point each") {

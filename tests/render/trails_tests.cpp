@@ -27,7 +27,8 @@ TEST_CASE("trail history keeps the last trail_length positions of tagged discs")
     TrailHistory history(3);
     Snapshot s;
     s.box = {10.0, 10.0, Boundary::walls};
-    s.discs = {test::disc_at({1.0, 1.0}, 0.1, {255, 0, 0}), test::disc_at({5.0, 5.0}, 0.1, {0, 0, 255})};
+    s.discs = {test::disc_at({1.0, 1.0}, 0.1, {255, 0, 0}),
+               test::disc_at({5.0, 5.0}, 0.1, {0, 0, 255})};
     s.discs[0].tagged = true;
     for (int i = 0; i < 5; ++i) {
         s.time = i;
@@ -66,9 +67,9 @@ TEST_CASE("a trail crossing the seam of a periodic box shows on both sides and n
         const Rgb8 c = test::rgb_at(image, static_cast<int>(p.x), static_cast<int>(p.y));
         return c.r > c.g + 25;
     };
-    CHECK(reddish(8.0));   // the trail before the seam
-    CHECK(reddish(9.9));   // the step leaving through the right edge
-    CHECK(reddish(0.1));   // the same step arriving through the left edge
+    CHECK(reddish(8.0));        // the trail before the seam
+    CHECK(reddish(9.9));        // the step leaving through the right edge
+    CHECK(reddish(0.1));        // the same step arriving through the left edge
     CHECK_FALSE(reddish(3.0));  // no line across the middle of the box
     CHECK_FALSE(reddish(5.0));
 }
