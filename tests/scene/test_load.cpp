@@ -2,6 +2,8 @@
 
 #include <doctest/doctest.h>
 
+#include "../support/input_error.hpp"
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -17,18 +19,10 @@ using namespace collide;
 namespace {
 
 std::string load_error(const std::string& what) {
-    try {
-        (void)load_scene(what, COLLIDE_ASSETS_DIR);
-    } catch (const Error& e) {
-        CHECK(e.kind() == ErrorKind::input);
-        return e.what();
-    }
-    return "";
+    return test::input_error_message([&] { (void)load_scene(what, COLLIDE_ASSETS_DIR); });
 }
 
-bool contains(const std::string& s, const std::string& part) {
-    return s.find(part) != std::string::npos;
-}
+using collide::test::contains;
 
 }  // namespace
 
