@@ -49,6 +49,8 @@ struct CliValues {
     std::string progress = "auto";
     std::string dump_rgba;
     bool verbose = false;
+    std::uint64_t seed = 0;
+    CLI::Option* seed_opt = nullptr;
 
     // Options whose absence means "take the scene hint or the default".
     CLI::Option* output_opt = nullptr;
@@ -95,6 +97,8 @@ RenderRequest request_of(const CliValues& v, bool still) {
 
 /// The options `render` and `thumbnail` share.
 void add_shared_options(CLI::App& cmd, CliValues& v) {
+    v.seed_opt = cmd.add_option("--seed", v.seed,
+                                "Seed for the scene's random discs ([[generate]] block i gets N + i; default: the scene's)");
     cmd.add_option("scene", v.scene, "Scene: a built-in name (see `collide scenes`), a .toml or an algs4 .txt file")
         ->required();
     v.output_opt = cmd.add_option("-o,--output", v.output, "Output file (default: out/<scene>.<ext>)");
@@ -190,7 +194,9 @@ void print_summary(const RenderPlan& plan, const PipelineResult& result, double 
 void run(const CliValues& values, bool still) {
     // Validation: nothing is rendered, and no output file is created, until all of it passes.
     const ProgressMode progress_mode = parse_progress_mode(values.progress);
-    const Scene scene = load_scene(values.scene);
+    SceneOptions scene_options;
+    if (values.seed_opt != nullptr && values.seed_opt->count() > 0) scene_options.seed = values.seed;
+    const Scene scene = load_scene(values.scene, scene_assets_dir(), scene_options);
     const RenderRequest request = request_of(values, still);
     const RenderPlan plan = validated_plan(request, scene);
     video::set_libav_verbose(values.verbose);

@@ -189,3 +189,20 @@ TEST_CASE("render: bad options and scenes exit 2 with a message and create no ou
     }
     CHECK(fs::is_empty(dir.path));  // nothing written, not even a temporary
 }
+
+TEST_CASE("thumbnail --seed: the same seed gives the same picture, another seed another one") {
+    TempDir dir("seed");
+    const auto shot = [&](const std::string& seed, const std::string& name) {
+        const fs::path out = dir.path / name;
+        const auto r = run_collide("thumbnail maxwell-boltzmann --size 320x180 --at 0 --mode event --seed " + seed +
+                                   " -o " + out.string());
+        REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+        return collide::video::read_png(out);
+    };
+    const Image a = shot("5", "a.png");
+    const Image b = shot("5", "b.png");
+    const Image c = shot("6", "c.png");
+    CHECK(share_of_differing_pixels(a, b) == 0.0);
+    CHECK(share_of_differing_pixels(a, c) > 0.01);
+    CHECK(run_collide("thumbnail gas --seed banana -o " + (dir.path / "d.png").string()).exit_code == 2);
+}

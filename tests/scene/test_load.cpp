@@ -140,3 +140,21 @@ TEST_CASE("built-in library: the dense fluid overwhelms the time-driven method a
     coarse->advance_to(0.2);
     CHECK(coarse->snapshot().overlapping_pairs.size() > 100);  // of 2228 discs
 }
+
+TEST_CASE("load_scene: a seed override re-draws every [[generate]] block, reproducibly") {
+    const std::filesystem::path assets = COLLIDE_ASSETS_DIR;
+    const Scene own = load_scene("maxwell-boltzmann", assets);
+    const Scene seeded = load_scene("maxwell-boltzmann", assets, SceneOptions{7});
+    const Scene again = load_scene("maxwell-boltzmann", assets, SceneOptions{7});
+    const Scene other = load_scene("maxwell-boltzmann", assets, SceneOptions{8});
+    REQUIRE(seeded.discs.size() == own.discs.size());
+    const auto same_positions = [](const Scene& a, const Scene& b) {
+        for (std::size_t i = 0; i < a.discs.size(); ++i) {
+            if (!(a.discs[i].position == b.discs[i].position)) return false;
+        }
+        return true;
+    };
+    CHECK(same_positions(seeded, again));
+    CHECK_FALSE(same_positions(seeded, other));
+    CHECK_FALSE(same_positions(seeded, own));
+}
