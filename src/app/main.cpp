@@ -27,6 +27,9 @@ int main(int argc, char** argv) {
     collide::app::add_check_command(root);
     collide::app::add_scenes_command(root);
     collide::app::add_pq_command(root);
+    collide::app::add_render_command(root);
+    collide::app::add_thumbnail_command(root);
+
     collide::app::add_simulate_command(root);
     collide::app::add_bench_command(root);
 

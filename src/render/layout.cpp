@@ -9,8 +9,14 @@ float font_pixel_height(int frame_height) noexcept {
     return std::clamp(std::round(static_cast<float>(frame_height) / 34.0F), 11.0F, 48.0F);
 }
 
+int counter_columns(float panel_width, float font_pixel_height) noexcept {
+    // About 14 em per column keeps a short "label  value" counter on one line.
+    const float em = std::max(font_pixel_height, 1.0F);
+    return std::clamp(static_cast<int>(panel_width / (14.0F * em)), 1, 4);
+}
+
 FrameLayout compute_layout(const RenderConfig& config, const std::vector<Box>& boxes,
-                           float line_height) {
+                           float line_height, int counter_rows) {
     FrameLayout layout;
     const auto width = static_cast<float>(config.width);
     const auto height = static_cast<float>(config.height);
@@ -22,7 +28,7 @@ FrameLayout compute_layout(const RenderConfig& config, const std::vector<Box>& b
         const float strip_height = std::round(std::max(4.2F * line_height, 0.22F * height));
         panels_bottom = height - strip_height;
         layout.strip = {0.0F, panels_bottom, width, height};
-        header_height = 2.0F * line_height;  // title line + counters line
+        header_height = static_cast<float>(1 + std::max(counter_rows, 0)) * line_height;
     }
     const auto count = static_cast<float>(std::max<std::size_t>(boxes.size(), 1));
     for (std::size_t i = 0; i < boxes.size(); ++i) {

@@ -33,8 +33,13 @@ struct FrameLayout {
 /// The font size used for a frame height (px): legible at 480p, not huge at 1080p.
 [[nodiscard]] float font_pixel_height(int frame_height) noexcept;
 
-/// Lays out `boxes.size()` panels side by side (and the strip when overlays are on).
+/// Columns of the counter grid under a panel title. It depends only on the panel width and the
+/// font size, never on the counters' text, so the layout stays put while the numbers change.
+[[nodiscard]] int counter_columns(float panel_width, float font_pixel_height) noexcept;
+
+/// Lays out `boxes.size()` panels side by side (and the strip when overlays are on); each
+/// header holds the title line and `counter_rows` rows of counters.
 [[nodiscard]] FrameLayout compute_layout(const RenderConfig& config, const std::vector<Box>& boxes,
-                                         float line_height);
+                                         float line_height, int counter_rows = 1);
 
 }  // namespace collide::render

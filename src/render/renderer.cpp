@@ -27,19 +27,27 @@ namespace collide::render {
 
 std::string_view color_mode_name(ColorMode mode) noexcept {
     switch (mode) {
-        case ColorMode::scene: return "scene";
-        case ColorMode::speed: return "speed";
-        case ColorMode::mass: return "mass";
-        case ColorMode::tag: return "tag";
+        case ColorMode::scene:
+            return "scene";
+        case ColorMode::speed:
+            return "speed";
+        case ColorMode::mass:
+            return "mass";
+        case ColorMode::tag:
+            return "tag";
     }
     return "scene";
 }
 
 ColorMode parse_color_mode(std::string_view text, std::string_view field) {
-    if (text == "scene") return ColorMode::scene;
-    if (text == "speed") return ColorMode::speed;
-    if (text == "mass") return ColorMode::mass;
-    if (text == "tag") return ColorMode::tag;
+    if (text == "scene")
+        return ColorMode::scene;
+    if (text == "speed")
+        return ColorMode::speed;
+    if (text == "mass")
+        return ColorMode::mass;
+    if (text == "tag")
+        return ColorMode::tag;
     throw_input_error(std::string(field) + ": unknown colour mode '" + std::string(text) +
                       "' (expected scene, speed, mass or tag)");
 }
@@ -56,18 +64,21 @@ void RenderConfig::validate() const {
     if (height < min_size || height > max_size) {
         fail("height", "must be in [64, 8192], got " + std::to_string(height));
     }
-    if (!std::isfinite(speed_min) || speed_min < 0.0) fail("speed_min", "must be finite and >= 0");
+    if (!std::isfinite(speed_min) || speed_min < 0.0)
+        fail("speed_min", "must be finite and >= 0");
     if (!std::isfinite(speed_max) || !(speed_max > speed_min)) {
         fail("speed_max", "must be finite and > speed_min");
     }
-    if (!std::isfinite(mass_min) || !(mass_min > 0.0)) fail("mass_min", "must be finite and > 0");
+    if (!std::isfinite(mass_min) || !(mass_min > 0.0))
+        fail("mass_min", "must be finite and > 0");
     if (!std::isfinite(mass_max) || mass_max < mass_min) {
         fail("mass_max", "must be finite and >= mass_min");
     }
     if (trail_length < 2 || trail_length > 1024) {
         fail("trail_length", "must be in [2, 1024], got " + std::to_string(trail_length));
     }
-    if (overlays && font_path.empty()) fail("font_path", "must name a TrueType font");
+    if (overlays && font_path.empty())
+        fail("font_path", "must name a TrueType font");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -95,20 +106,24 @@ struct DiscInstance {
     Rgba8 color;
 };
 static_assert(sizeof(DiscInstance) == 20);
+constexpr std::size_t vertices_per_disc = 6;  // a quad's two triangles (disc.vert)
 static_assert(sizeof(OverlayVertex) == 20);
 
 Rgb8 disc_color(const DiscState& disc, const RenderConfig& config) noexcept {
     switch (config.color_mode) {
-        case ColorMode::scene: return disc.color;
+        case ColorMode::scene:
+            return disc.color;
         case ColorMode::speed:
             return colormap((norm(disc.velocity) - config.speed_min) /
                             (config.speed_max - config.speed_min));
         case ColorMode::mass: {
-            if (!(config.mass_max > config.mass_min)) return colormap(0.5);
+            if (!(config.mass_max > config.mass_min))
+                return colormap(0.5);
             return colormap(std::log(disc.mass / config.mass_min) /
                             std::log(config.mass_max / config.mass_min));
         }
-        case ColorMode::tag: return disc.tagged ? tagged_color : untagged_color;
+        case ColorMode::tag:
+            return disc.tagged ? tagged_color : untagged_color;
     }
     return disc.color;
 }
@@ -116,7 +131,8 @@ Rgb8 disc_color(const DiscState& disc, const RenderConfig& config) noexcept {
 std::string join(const std::vector<std::string>& parts, const char* separator) {
     std::string out;
     for (const std::string& part : parts) {
-        if (!out.empty()) out += separator;
+        if (!out.empty())
+            out += separator;
         out += part;
     }
     return out;
@@ -142,22 +158,36 @@ struct Renderer::Impl {
     GlObject overlay_buffer;
     GlObject glyph_texture;
     GLint disc_frame_size = -1;
+    GLint disc_as_points = -1;
     GLint overlay_frame_size = -1;
     std::optional<FontAtlas> font;
     std::vector<TrailHistory> trails;
 
     // Per-frame scratch, kept to avoid allocating every frame.
     std::vector<DiscInstance> instances;
+    // Upload order per panel: that panel's point sprites, then its quads (6 vertices each).
+    std::vector<DiscInstance> disc_vertices;
+    struct PanelDraws {
+        std::size_t first_point = 0;
+        std::size_t point_count = 0;
+        std::size_t first_quad_vertex = 0;
+        std::size_t quad_vertex_count = 0;
+    };
+    std::vector<PanelDraws> panel_draws;
+    std::vector<DiscInstance> quad_scratch;
+    float max_point_size = 0.0F;  // largest point sprite the implementation draws (px)
     std::vector<std::size_t> panel_instance_end;
-    OverlayBatch under;  // box fills, walls, trails: drawn before the discs
-    OverlayBatch over;   // text, legend, plots: drawn after
+    std::vector<RectF> panel_clip;  // scissor of each panel's discs
+    OverlayBatch under;             // box fills, walls, trails: drawn before the discs
+    OverlayBatch over;              // text, legend, plots: drawn after
     std::vector<Rgb8> colors;
     std::vector<OverlayVertex> overlay_upload;
 
     Impl(const RenderConfig& cfg, std::unique_ptr<Context> ctx)
         : config(cfg), context(std::move(ctx)) {
         config.validate();
-        if (!context) throw_runtime_error("renderer: no GL context");
+        if (!context)
+            throw_runtime_error("renderer: no GL context");
         context->make_current();
         if (gladLoadGLContext(&gl, context->proc_loader()) == 0) {
             throw_runtime_error("GL: cannot load the GL 3.3 core entry points");
@@ -201,6 +231,10 @@ struct Renderer::Impl {
         overlay_program =
             make_program(gl, shaders::overlay_vert, shaders::overlay_frag, "overlay shader");
         disc_frame_size = gl.GetUniformLocation(disc_program.get(), "frame_size");
+        disc_as_points = gl.GetUniformLocation(disc_program.get(), "as_points");
+        GLfloat point_range[2] = {0.0F, 0.0F};
+        gl.GetFloatv(GL_POINT_SIZE_RANGE, point_range);
+        max_point_size = point_range[1];
         overlay_frame_size = gl.GetUniformLocation(overlay_program.get(), "frame_size");
         gl.UseProgram(overlay_program.get());
         gl.Uniform1i(gl.GetUniformLocation(overlay_program.get(), "glyph_atlas"), 0);
@@ -211,11 +245,18 @@ struct Renderer::Impl {
         disc_buffer = make_buffer(gl);
         gl.BindVertexArray(disc_vertex_array.get());
         gl.BindBuffer(GL_ARRAY_BUFFER, disc_buffer.get());
-        point_disc_attributes(0);
-        for (GLuint location = 0; location < 4; ++location) {
+        constexpr auto disc_stride = static_cast<GLsizei>(sizeof(DiscInstance));
+        const auto at = [](std::size_t offset) { return reinterpret_cast<const void*>(offset); };
+        gl.VertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, disc_stride,
+                               at(offsetof(DiscInstance, x)));
+        gl.VertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, disc_stride,
+                               at(offsetof(DiscInstance, radius)));
+        gl.VertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, disc_stride,
+                               at(offsetof(DiscInstance, style)));
+        gl.VertexAttribPointer(3, 4, GL_UNSIGNED_BYTE, GL_TRUE, disc_stride,
+                               at(offsetof(DiscInstance, color)));
+        for (GLuint location = 0; location < 4; ++location)
             gl.EnableVertexAttribArray(location);
-            gl.VertexAttribDivisor(location, 1);
-        }
 
         overlay_vertex_array = make_vertex_array(gl);
         overlay_buffer = make_buffer(gl);
@@ -228,25 +269,9 @@ struct Renderer::Impl {
                                reinterpret_cast<const void*>(offsetof(OverlayVertex, u)));
         gl.VertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
                                reinterpret_cast<const void*>(offsetof(OverlayVertex, color)));
-        for (GLuint location = 0; location < 3; ++location) gl.EnableVertexAttribArray(location);
+        for (GLuint location = 0; location < 3; ++location)
+            gl.EnableVertexAttribArray(location);
         gl.BindVertexArray(0);
-    }
-
-    // Points the (bound) disc VAO at the instances starting at `first` (GL 3.3 has no base
-    // instance, so each panel's draw re-points the attributes instead).
-    void point_disc_attributes(std::size_t first) {
-        constexpr auto stride = static_cast<GLsizei>(sizeof(DiscInstance));
-        const std::size_t base = first * sizeof(DiscInstance);
-        const auto at = [base](std::size_t offset) {
-            return reinterpret_cast<const void*>(base + offset);
-        };
-        gl.VertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, stride, at(offsetof(DiscInstance, x)));
-        gl.VertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, stride,
-                               at(offsetof(DiscInstance, radius)));
-        gl.VertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride,
-                               at(offsetof(DiscInstance, style)));
-        gl.VertexAttribPointer(3, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
-                               at(offsetof(DiscInstance, color)));
     }
 
     void create_glyph_texture() {
@@ -273,31 +298,43 @@ struct Renderer::Impl {
                               std::to_string(frame.panels.size()));
         }
         for (const PanelContent& panel : frame.panels) {
-            if (panel.snapshot == nullptr) throw_input_error("render: a panel has no snapshot");
+            if (panel.snapshot == nullptr)
+                throw_input_error("render: a panel has no snapshot");
         }
     }
+
+    int counter_rows_ = 0;  ///< rows of the counter grid in the frame being built
 
     void build_frame(const FrameContent& frame) {
         std::vector<Box> boxes;
         for (const PanelContent& panel : frame.panels) boxes.push_back(panel.snapshot->box);
+        const int rows = counter_rows(frame);
+        counter_rows_ = rows;
         const FrameLayout layout =
-            compute_layout(config, boxes, font ? font->line_height() : 0.0F);
+            compute_layout(config, boxes, font ? font->line_height() : 0.0F, rows);
         instances.clear();
         panel_instance_end.clear();
+        panel_clip.clear();
         under.clear();
         over.clear();
         if (trails.size() != frame.panels.size()) {
             trails.assign(frame.panels.size(), TrailHistory(config.trail_length));
         }
         for (std::size_t i = 0; i < frame.panels.size(); ++i) {
-            build_panel(frame.panels[i], layout.panels[i], trails[i]);
+            build_panel(frame.panels[i], layout.panels[i], trails[i], frame.panels.size());
             panel_instance_end.push_back(instances.size());
+            // Periodic images must not spill past the seam; in a walled box escaped discs must
+            // show outside it, so those panels clip to the whole panel instead.
+            const bool periodic = frame.panels[i].snapshot->box.boundary == Boundary::periodic;
+            panel_clip.push_back(periodic ? layout.panels[i].box : layout.panels[i].area);
         }
-        if (font) build_strip(frame, layout);
+        if (font)
+            build_strip(frame, layout);
         current_layout = layout;
     }
 
-    void build_panel(const PanelContent& content, const PanelLayout& panel, TrailHistory& trail) {
+    void build_panel(const PanelContent& content, const PanelLayout& panel, TrailHistory& trail,
+                     std::size_t panels) {
         const Snapshot& snapshot = *content.snapshot;
         const Box& box = snapshot.box;
         const float wall = font ? std::max(1.0F, std::round(font->pixel_height() / 10.0F)) : 1.0F;
@@ -318,7 +355,7 @@ struct Renderer::Impl {
         }
         add_disc_instances(snapshot, panel);
         add_failure_markers(snapshot, panel, wall);
-        if (font) add_header(content, panel);
+        if (font) add_header(content, panel, panels);
     }
 
     void add_disc_instances(const Snapshot& snapshot, const PanelLayout& panel) {
@@ -329,10 +366,12 @@ struct Renderer::Impl {
             const Rgba8 color = with_alpha(colors[k], 255);
             const auto radius = static_cast<float>(disc.radius * panel.scale);
             Vec2 position = disc.position;
-            if (disc.escaped) position = clamp_into_panel(position, disc.radius, box, panel);
+            if (disc.escaped)
+                position = clamp_into_panel(position, disc.radius, box, panel);
             const PointF c = panel.to_pixels(position, box);
             instances.push_back({c.x, c.y, radius, 0.0F, color});
-            if (periodic) add_periodic_images(disc, panel, box, color);
+            if (periodic)
+                add_periodic_images(disc, panel, box, color);
             if (disc.escaped) {
                 instances.push_back(
                     {c.x, c.y, radius + 3.0F, std::max(1.5F, radius * 0.25F), escaped_ring_color});
@@ -362,9 +401,12 @@ struct Renderer::Impl {
             const PointF c = panel.to_pixels({p.x + ix * box.width, p.y + iy * box.height}, box);
             instances.push_back({c.x, c.y, radius, 0.0F, color});
         };
-        if (sx != 0) add(sx, 0);
-        if (sy != 0) add(0, sy);
-        if (sx != 0 && sy != 0) add(sx, sy);
+        if (sx != 0)
+            add(sx, 0);
+        if (sy != 0)
+            add(0, sy);
+        if (sx != 0 && sy != 0)
+            add(sx, sy);
     }
 
     void add_failure_markers(const Snapshot& snapshot, const PanelLayout& panel, float wall) {
@@ -372,7 +414,8 @@ struct Renderer::Impl {
         const float ring = std::max(1.5F, wall * 1.5F);
         for (const auto& [a, b] : snapshot.overlapping_pairs) {
             for (const std::uint32_t index : {a, b}) {
-                if (index >= snapshot.discs.size()) continue;  // defensive: bad marker data
+                if (index >= snapshot.discs.size())
+                    continue;  // defensive: bad marker data
                 const DiscState& disc = snapshot.discs[index];
                 const PointF c = panel.to_pixels(disc.position, box);
                 const auto radius = static_cast<float>(disc.radius * panel.scale);
@@ -381,7 +424,8 @@ struct Renderer::Impl {
         }
         if (!snapshot.missed_collisions.empty()) {
             double mean_radius = 0.0;
-            for (const DiscState& d : snapshot.discs) mean_radius += d.radius;
+            for (const DiscState& d : snapshot.discs)
+                mean_radius += d.radius;
             mean_radius /= static_cast<double>(std::max<std::size_t>(snapshot.discs.size(), 1));
             const float flash = std::max(8.0F, static_cast<float>(3.0 * mean_radius * panel.scale));
             for (const Vec2 where : snapshot.missed_collisions) {
@@ -391,11 +435,38 @@ struct Renderer::Impl {
         }
     }
 
-    void add_header(const PanelContent& content, const PanelLayout& panel) {
+    [[nodiscard]] int panel_counter_columns(std::size_t panels) const {
+        const float panel_width = static_cast<float>(config.width) / static_cast<float>(std::max<std::size_t>(panels, 1));
+        return counter_columns(panel_width, font ? font->pixel_height() : 1.0F);
+    }
+
+    /// Rows of the counter grid: enough for the panel with the most counters, but the header
+    /// never takes more than about 30% of the frame height (small frames keep room for the box;
+    /// counters come most important first, so the ones that do not fit are the least important).
+    [[nodiscard]] int counter_rows(const FrameContent& frame) const {
+        const auto columns = static_cast<std::size_t>(panel_counter_columns(frame.panels.size()));
+        std::size_t rows = 0;
+        for (const PanelContent& panel : frame.panels) {
+            rows = std::max(rows, (panel.counters.size() + columns - 1) / columns);
+        }
+        const float line = font ? font->line_height() : 1.0F;
+        const auto fit = static_cast<std::size_t>(std::max(0.0F, std::floor(0.30F * static_cast<float>(config.height) / line) - 1.0F));
+        return static_cast<int>(std::min(rows, fit));
+    }
+
+    void add_header(const PanelContent& content, const PanelLayout& panel, std::size_t panels) {
         const float baseline = panel.header.y0 + font->ascent();
         font->add_text(over, panel.header.x0, baseline, content.title, title_color);
-        font->add_text(over, panel.header.x0, baseline + font->line_height(),
-                       join(content.counters, "   "), counter_color);
+        const int columns = panel_counter_columns(panels);
+        const float column_width = (panel.header.x1 - panel.header.x0) / static_cast<float>(columns);
+        const std::size_t shown = std::min(content.counters.size(), static_cast<std::size_t>(columns) *
+                                                                       static_cast<std::size_t>(counter_rows_));
+        for (std::size_t k = 0; k < shown; ++k) {
+            const auto column = static_cast<float>(k % static_cast<std::size_t>(columns));
+            const auto row = static_cast<float>(1 + k / static_cast<std::size_t>(columns));
+            font->add_text(over, panel.header.x0 + column * column_width, baseline + row * font->line_height(),
+                           content.counters[k], counter_color);
+        }
     }
 
     void build_strip(const FrameContent& frame, const FrameLayout& layout) {
@@ -413,7 +484,8 @@ struct Renderer::Impl {
         font->add_text(over, info.x0, info.y0 + font->ascent(), frame.time_text, title_color);
         add_legend(info);
         std::vector<const Snapshot*> snapshots;
-        for (const PanelContent& panel : frame.panels) snapshots.push_back(panel.snapshot);
+        for (const PanelContent& panel : frame.panels)
+            snapshots.push_back(panel.snapshot);
         draw_speed_plot(over, *font, histogram, snapshots, config.speed_min, config.speed_max);
         draw_drift_plot(over, *font, drift, frame.energy_drift);
         const float notes_baseline = strip.y1 - m * 0.5F - line + font->ascent();
@@ -472,8 +544,7 @@ struct Renderer::Impl {
         const auto frame_h = static_cast<float>(config.height);
 
         overlay_upload.assign(under.vertices().begin(), under.vertices().end());
-        overlay_upload.insert(overlay_upload.end(), over.vertices().begin(),
-                              over.vertices().end());
+        overlay_upload.insert(overlay_upload.end(), over.vertices().begin(), over.vertices().end());
         gl.UseProgram(overlay_program.get());
         gl.Uniform2f(overlay_frame_size, frame_w, frame_h);
         gl.BindVertexArray(overlay_vertex_array.get());
@@ -484,7 +555,8 @@ struct Renderer::Impl {
         gl.ActiveTexture(GL_TEXTURE0);
         gl.BindTexture(GL_TEXTURE_2D, glyph_texture.get());
         const auto under_count = static_cast<GLsizei>(under.vertices().size());
-        if (under_count > 0) gl.DrawArrays(GL_TRIANGLES, 0, under_count);
+        if (under_count > 0)
+            gl.DrawArrays(GL_TRIANGLES, 0, under_count);
 
         submit_discs(frame_w, frame_h);
 
@@ -498,34 +570,81 @@ struct Renderer::Impl {
         check_gl(gl, "drawing a frame");
     }
 
+    // Splits each panel's discs into point sprites and quads (see disc.vert) in upload order.
+    void build_disc_vertices() {
+        disc_vertices.clear();
+        panel_draws.clear();
+        quad_scratch.clear();
+        std::size_t first = 0;
+        for (const std::size_t end : panel_instance_end) {
+            PanelDraws draws;
+            draws.first_point = disc_vertices.size();
+            quad_scratch.clear();
+            for (std::size_t i = first; i < end; ++i) {
+                if (fits_point_sprite(instances[i])) {
+                    disc_vertices.push_back(instances[i]);
+                } else {
+                    quad_scratch.push_back(instances[i]);
+                }
+            }
+            draws.point_count = disc_vertices.size() - draws.first_point;
+            draws.first_quad_vertex = disc_vertices.size();
+            for (const DiscInstance& quad : quad_scratch) {
+                disc_vertices.insert(disc_vertices.end(), vertices_per_disc, quad);
+            }
+            draws.quad_vertex_count = disc_vertices.size() - draws.first_quad_vertex;
+            panel_draws.push_back(draws);
+            first = end;
+        }
+    }
+
+    // Mirrors disc.vert's square: side 2 * (max(radius, min_radius) + aa_margin).
+    [[nodiscard]] bool fits_point_sprite(const DiscInstance& disc) const noexcept {
+        constexpr float min_radius = 0.75F;
+        constexpr float aa_margin = 1.0F;
+        const float half = std::max(disc.radius, min_radius) + aa_margin;
+        return 2.0F * half <= max_point_size && disc.x - half >= 0.0F && disc.y - half >= 0.0F &&
+               disc.x + half <= static_cast<float>(config.width) &&
+               disc.y + half <= static_cast<float>(config.height);
+    }
+
+    // Per panel, scissored: one draw of point sprites, one of quads (each skipped when empty).
     void submit_discs(float frame_w, float frame_h) {
-        if (instances.empty()) return;
+        if (instances.empty())
+            return;
+        build_disc_vertices();
         gl.UseProgram(disc_program.get());
         gl.Uniform2f(disc_frame_size, frame_w, frame_h);
         gl.BindVertexArray(disc_vertex_array.get());
         gl.BindBuffer(GL_ARRAY_BUFFER, disc_buffer.get());
         gl.BufferData(GL_ARRAY_BUFFER,
-                      static_cast<GLsizeiptr>(instances.size() * sizeof(DiscInstance)),
-                      instances.data(), GL_STREAM_DRAW);
+                      static_cast<GLsizeiptr>(disc_vertices.size() * sizeof(DiscInstance)),
+                      disc_vertices.data(), GL_STREAM_DRAW);
+        gl.Enable(GL_PROGRAM_POINT_SIZE);
         gl.Enable(GL_SCISSOR_TEST);
-        std::size_t first = 0;
-        for (std::size_t p = 0; p < panel_instance_end.size(); ++p) {
-            const std::size_t end = panel_instance_end[p];
-            if (end > first) {
-                scissor_to(current_layout.panels[p].area);
-                point_disc_attributes(first);
-                gl.DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4,
-                                       static_cast<GLsizei>(end - first));
+        for (std::size_t p = 0; p < panel_draws.size(); ++p) {
+            const PanelDraws& draws = panel_draws[p];
+            scissor_to(panel_clip[p]);
+            if (draws.point_count > 0) {
+                gl.Uniform1i(disc_as_points, 1);
+                gl.DrawArrays(GL_POINTS, static_cast<GLint>(draws.first_point),
+                              static_cast<GLsizei>(draws.point_count));
             }
-            first = end;
+            if (draws.quad_vertex_count > 0) {
+                gl.Uniform1i(disc_as_points, 0);
+                gl.DrawArrays(GL_TRIANGLES, static_cast<GLint>(draws.first_quad_vertex),
+                              static_cast<GLsizei>(draws.quad_vertex_count));
+            }
         }
         gl.Disable(GL_SCISSOR_TEST);
     }
 
-    // Rows are top-down in our pixel coordinates and in GL's (see disc.vert), so no flip.
+    // Whole pixels covering r.
     void scissor_to(RectF r) {
-        gl.Scissor(static_cast<GLint>(r.x0), static_cast<GLint>(r.y0),
-                   static_cast<GLsizei>(r.width()), static_cast<GLsizei>(r.height()));
+        const auto x0 = static_cast<GLint>(std::floor(r.x0));
+        const auto y0 = static_cast<GLint>(std::floor(r.y0));
+        gl.Scissor(x0, y0, static_cast<GLsizei>(std::ceil(r.x1)) - x0,
+                   static_cast<GLsizei>(std::ceil(r.y1)) - y0);
     }
 
     void draw(const FrameContent& frame) {
@@ -579,14 +698,23 @@ void Renderer::render(const FrameContent& frame, Image& out) {
     impl_->read_pixels(out);
 }
 
-void Renderer::draw(const FrameContent& frame) { impl_->draw(frame); }
-void Renderer::read_pixels(Image& out) { impl_->read_pixels(out); }
-
-void Renderer::reset_trails() {
-    for (TrailHistory& trail : impl_->trails) trail.reset();
+void Renderer::draw(const FrameContent& frame) {
+    impl_->draw(frame);
+}
+void Renderer::read_pixels(Image& out) {
+    impl_->read_pixels(out);
 }
 
-Backend Renderer::backend() const noexcept { return impl_->context->backend(); }
-const RenderConfig& Renderer::config() const noexcept { return impl_->config; }
+void Renderer::reset_trails() {
+    for (TrailHistory& trail : impl_->trails)
+        trail.reset();
+}
+
+Backend Renderer::backend() const noexcept {
+    return impl_->context->backend();
+}
+const RenderConfig& Renderer::config() const noexcept {
+    return impl_->config;
+}
 
 }  // namespace collide::render

@@ -1,12 +1,36 @@
 #include "trails.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
 
 namespace collide::render {
 
 bool wraps_between(const Box& box, Vec2 a, Vec2 b) noexcept {
-    if (box.boundary != Boundary::periodic) return false;
+    if (box.boundary != Boundary::periodic)
+        return false;
     return std::abs(b.x - a.x) > 0.5 * box.width || std::abs(b.y - a.y) > 0.5 * box.height;
+}
+
+std::optional<std::pair<Vec2, Vec2>> clip_to_box(const Box& box, Vec2 a, Vec2 b) noexcept {
+    // Liang-Barsky: keep the parameter range [t0, t1] of a + t (b - a) inside every slab.
+    double t0 = 0.0;
+    double t1 = 1.0;
+    const Vec2 d = b - a;
+    const auto slab = [&](double delta, double low_gap, double high_gap) {
+        // low_gap = a - low edge, high_gap = high edge - a (both >= 0 when a is inside)
+        if (delta == 0.0)
+            return low_gap >= 0.0 && high_gap >= 0.0;
+        const double t_low = -low_gap / delta;
+        const double t_high = high_gap / delta;
+        t0 = std::max(t0, std::min(t_low, t_high));
+        t1 = std::min(t1, std::max(t_low, t_high));
+        return t0 <= t1;
+    };
+    if (!slab(d.x, a.x, box.width - a.x) || !slab(d.y, a.y, box.height - a.y))
+        return std::nullopt;
+    return std::pair{a + t0 * d, a + t1 * d};
 }
 
 void TrailHistory::reset() noexcept {
@@ -17,11 +41,13 @@ void TrailHistory::reset() noexcept {
 }
 
 void TrailHistory::update(const Snapshot& snapshot) {
-    if (started_ && (snapshot.discs.size() != disc_count_ || snapshot.time < last_time_)) reset();
+    if (started_ && (snapshot.discs.size() != disc_count_ || snapshot.time < last_time_))
+        reset();
     if (!started_) {
         disc_count_ = snapshot.discs.size();
         for (std::uint32_t i = 0; i < snapshot.discs.size(); ++i) {
-            if (snapshot.discs[i].tagged) tagged_.push_back(i);
+            if (snapshot.discs[i].tagged)
+                tagged_.push_back(i);
         }
         paths_.assign(tagged_.size(), {});
         started_ = true;
@@ -29,7 +55,8 @@ void TrailHistory::update(const Snapshot& snapshot) {
     last_time_ = snapshot.time;
     for (std::size_t k = 0; k < tagged_.size(); ++k) {
         paths_[k].push_back(snapshot.discs[tagged_[k]].position);
-        if (paths_[k].size() > length_) paths_[k].pop_front();
+        if (paths_[k].size() > length_)
+            paths_[k].pop_front();
     }
 }
 
@@ -41,18 +68,33 @@ void TrailHistory::draw(OverlayBatch& batch, const Box& box,
         const std::deque<Vec2>& path = paths_[k];
         const Rgb8 color = colors[tagged_[k]];
         for (std::size_t i = 1; i < path.size(); ++i) {
-            if (wraps_between(box, path[i - 1], path[i])) continue;  // break the line
-            const float age = static_cast<float>(i) / static_cast<float>(length_);
-            const auto alpha = static_cast<std::uint8_t>(max_alpha * age);
-            batch.add_line(to_pixels(path[i - 1]), to_pixels(path[i]), width,
-                           with_alpha(color, alpha));
+            // Fade by age counted from the newest point, so a young trail is not faint.
+            const float age =
+                static_cast<float>(i + length_ - path.size()) / static_cast<float>(length_);
+            const Rgba8 faded = with_alpha(color, static_cast<std::uint8_t>(max_alpha * age));
+            const Vec2 a = path[i - 1];
+            const Vec2 b = path[i];
+            if (!wraps_between(box, a, b)) {
+                batch.add_line(to_pixels(a), to_pixels(b), width, faded);
+                continue;
+            }
+            // Across the seam: the step is the minimum-image displacement, drawn once leaving
+            // from a and once arriving at b, each cut at the box edge.
+            const Vec2 step = box.displacement(a, b);
+            for (const auto& [from, to] : {std::pair{a, a + step}, std::pair{b - step, b}}) {
+                if (const auto inside = clip_to_box(box, from, to)) {
+                    batch.add_line(to_pixels(inside->first), to_pixels(inside->second), width,
+                                   faded);
+                }
+            }
         }
     }
 }
 
 std::vector<Vec2> TrailHistory::points(std::uint32_t index) const {
     for (std::size_t k = 0; k < tagged_.size(); ++k) {
-        if (tagged_[k] == index) return {paths_[k].begin(), paths_[k].end()};
+        if (tagged_[k] == index)
+            return {paths_[k].begin(), paths_[k].end()};
     }
     return {};
 }

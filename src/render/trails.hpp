@@ -1,10 +1,13 @@
 #pragma once
 // Internal: per-panel history of tagged discs' positions across frames, drawn as fading
-// polylines; the line is broken where a disc wraps around a periodic box.
+// polylines; where a disc wraps around a periodic box the step is drawn on both sides of the
+// seam, cut at the box edges.
 
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "collide/snapshot.hpp"
@@ -13,7 +16,7 @@
 namespace collide::render {
 
 class TrailHistory {
-public:
+  public:
     /// Keeps up to `length` positions per tagged disc (>= 2).
     explicit TrailHistory(int length) : length_(static_cast<std::size_t>(length)) {}
 
@@ -30,7 +33,7 @@ public:
     /// The recorded positions of disc `index` (oldest first); empty when it is not tagged.
     [[nodiscard]] std::vector<Vec2> points(std::uint32_t index) const;
 
-private:
+  private:
     std::size_t length_;
     std::size_t disc_count_ = 0;
     double last_time_ = 0.0;
@@ -42,5 +45,9 @@ private:
 /// True when the step a -> b is a jump across a periodic box (not motion): longer than half the
 /// box in x or y.
 [[nodiscard]] bool wraps_between(const Box& box, Vec2 a, Vec2 b) noexcept;
+
+/// The part of segment a-b inside [0, width] x [0, height] (box units), none if it misses.
+[[nodiscard]] std::optional<std::pair<Vec2, Vec2>> clip_to_box(const Box& box, Vec2 a,
+                                                               Vec2 b) noexcept;
 
 }  // namespace collide::render

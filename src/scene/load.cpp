@@ -42,7 +42,8 @@ std::vector<std::string> scene_names_in(const std::filesystem::path& assets_dir)
     return names;
 }
 
-Scene load_builtin(const std::string& name, const std::filesystem::path& assets_dir) {
+Scene load_builtin(const std::string& name, const std::filesystem::path& assets_dir,
+                   const SceneOptions& options) {
     const std::filesystem::path file = scenes_dir(assets_dir) / (name + ".toml");
     std::error_code ec;
     if (!std::filesystem::is_regular_file(file, ec)) {
@@ -52,7 +53,7 @@ Scene load_builtin(const std::string& name, const std::filesystem::path& assets_
             guess.empty() ? " (`collide scenes` lists them)" : " (did you mean '" + guess + "'?)";
         throw_input_error("'" + name + "': " + reason);
     }
-    Scene scene = load_toml_scene(file);
+    Scene scene = load_toml_scene(file, options);
     scene.name = name;
     return scene;
 }
@@ -70,20 +71,21 @@ Scene load_scene(const std::string& path_or_name) {
     return load_scene(path_or_name, scene_assets_dir());
 }
 
-Scene load_scene(const std::string& path_or_name, const std::filesystem::path& assets_dir) {
+Scene load_scene(const std::string& path_or_name, const std::filesystem::path& assets_dir,
+                 const SceneOptions& options) {
     if (path_or_name.empty())
         throw_input_error("empty scene path (give a file or a built-in scene name)");
     const std::filesystem::path path(path_or_name);
     std::error_code ec;
     const bool exists = std::filesystem::exists(path, ec);
     if (!exists && looks_like_name(path_or_name))
-        return load_builtin(path_or_name, assets_dir);
+        return load_builtin(path_or_name, assets_dir, options);
     if (exists && std::filesystem::is_directory(path, ec))
         throw_input_error(path_or_name, 0, "", "is a directory, not a scene file");
     if (has_extension(path, ".txt"))
         return read_algs4_file(path).scene;
     if (has_extension(path, ".toml"))
-        return load_toml_scene(path);
+        return load_toml_scene(path, options);
     if (!exists)
         throw_input_error(path_or_name, 0, "", "no such file");
     throw_input_error(path_or_name, 0, "",

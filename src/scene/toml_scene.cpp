@@ -44,8 +44,9 @@ std::string joined(const Keys& keys) {
 
 class TomlReader {
   public:
-    TomlReader(std::string file, std::filesystem::path base_dir)
-        : file_(std::move(file)), base_dir_(std::move(base_dir)) {}
+    TomlReader(std::string file, std::filesystem::path base_dir,
+               std::optional<std::uint64_t> seed_override)
+        : file_(std::move(file)), base_dir_(std::move(base_dir)), seed_override_(seed_override) {}
 
     Scene read(std::string_view text) {
         toml::table doc = parse(text);
@@ -362,6 +363,8 @@ class TomlReader {
         }
         if (const toml::node* v = t.get("seed"))
             g.seed = static_cast<std::uint64_t>(integer(*v, key("seed"), 0));
+        if (seed_override_)
+            g.seed = *seed_override_ + index;  // --seed: blocks still get different streams
         if (const toml::node* v = t.get("tag"))
             g.tag = text_value(*v, key("tag"));
         try {
@@ -382,6 +385,7 @@ class TomlReader {
 
     std::string file_;
     std::filesystem::path base_dir_;
+    std::optional<std::uint64_t> seed_override_;
     Scene scene_;
     SceneOrigin origin_;
     bool speed_colored_ = false;
@@ -427,18 +431,18 @@ std::string nearest_name(std::string_view word, const std::vector<std::string>& 
 }
 
 Scene parse_toml_scene(std::string_view text, const std::string& file_label,
-                       const std::filesystem::path& base_dir) {
-    TomlReader reader(file_label, base_dir);
+                       const std::filesystem::path& base_dir, const SceneOptions& options) {
+    TomlReader reader(file_label, base_dir, options.seed);
     return reader.read(text);
 }
 
-Scene load_toml_scene(const std::filesystem::path& path) {
+Scene load_toml_scene(const std::filesystem::path& path, const SceneOptions& options) {
     std::ifstream in(path, std::ios::binary);
     if (!in)
         throw_input_error(path.string(), 0, "", "cannot open the scene file");
     std::ostringstream text;
     text << in.rdbuf();
-    Scene scene = parse_toml_scene(text.str(), path.string(), path.parent_path());
+    Scene scene = parse_toml_scene(text.str(), path.string(), path.parent_path(), options);
     scene.name = path.stem().string();
     if (scene.title.empty())
         scene.title = scene.name;

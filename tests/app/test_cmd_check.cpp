@@ -2,6 +2,8 @@
 
 #include <doctest/doctest.h>
 
+#include "../support/input_error.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -12,9 +14,7 @@ using collide::test::run_collide;
 
 namespace {
 
-bool contains(const std::string& s, const std::string& part) {
-    return s.find(part) != std::string::npos;
-}
+using collide::test::contains;
 
 // Writes `text` to a temporary file and returns its path (quoted for the shell).
 std::string temp_scene(const std::string& name, const std::string& text) {

@@ -3,12 +3,16 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
+#include <filesystem>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "collide/image.hpp"
 #include "collide/render/renderer.hpp"
 #include "collide/snapshot.hpp"
+#include "collide/video/png.hpp"
 
 namespace collide::render::test {
 
@@ -44,6 +48,52 @@ inline RenderConfig small_config(bool overlays) {
     config.height = 180;
     config.overlays = overlays;
     return config;
+}
+
+/// One disc at `position` (box units) with the given radius and colour.
+inline DiscState disc_at(Vec2 position, double radius, Rgb8 color) {
+    DiscState d;
+    d.position = position;
+    d.radius = radius;
+    d.mass = 1.0;
+    d.color = color;
+    return d;
+}
+
+/// Writes `image` to $COLLIDE_RENDER_DUMP_DIR/<name>.png when that variable is set, so a human
+/// can look at what the tests render; does nothing otherwise.
+inline void dump_if_requested(const Image& image, const std::string& name) {
+    const char* dir = std::getenv("COLLIDE_RENDER_DUMP_DIR");
+    if (dir == nullptr || *dir == '\0')
+        return;
+    std::filesystem::create_directories(dir);
+    video::write_png(image, std::filesystem::path(dir) / (name + ".png"));
+}
+
+/// The RGB of pixel (x, y) (row 0 is the top row).
+inline Rgb8 rgb_at(const Image& image, int x, int y) {
+    const std::uint8_t* p = image.pixel(x, y);
+    return {p[0], p[1], p[2]};
+}
+
+/// Number of pixels in [x0, x1) x [y0, y1) whose colour is within `tolerance` of `color`.
+inline int count_near(const Image& image, Rgb8 color, int tolerance, int x0 = 0, int y0 = 0,
+                      int x1 = -1, int y1 = -1) {
+    if (x1 < 0)
+        x1 = image.width;
+    if (y1 < 0)
+        y1 = image.height;
+    int count = 0;
+    for (int y = y0; y < y1; ++y) {
+        for (int x = x0; x < x1; ++x) {
+            const std::uint8_t* p = image.pixel(x, y);
+            if (std::abs(p[0] - color.r) <= tolerance && std::abs(p[1] - color.g) <= tolerance &&
+                std::abs(p[2] - color.b) <= tolerance) {
+                ++count;
+            }
+        }
+    }
+    return count;
 }
 
 }  // namespace collide::render::test

@@ -2,6 +2,8 @@
 
 #include <doctest/doctest.h>
 
+#include "../support/input_error.hpp"
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -17,18 +19,10 @@ using namespace collide;
 namespace {
 
 std::string load_error(const std::string& what) {
-    try {
-        (void)load_scene(what, COLLIDE_ASSETS_DIR);
-    } catch (const Error& e) {
-        CHECK(e.kind() == ErrorKind::input);
-        return e.what();
-    }
-    return "";
+    return test::input_error_message([&] { (void)load_scene(what, COLLIDE_ASSETS_DIR); });
 }
 
-bool contains(const std::string& s, const std::string& part) {
-    return s.find(part) != std::string::npos;
-}
+using collide::test::contains;
 
 }  // namespace
 
@@ -145,4 +139,22 @@ TEST_CASE("built-in library: the dense fluid overwhelms the time-driven method a
     auto coarse = make_engine(s, options);
     coarse->advance_to(0.2);
     CHECK(coarse->snapshot().overlapping_pairs.size() > 100);  // of 2228 discs
+}
+
+TEST_CASE("load_scene: a seed override re-draws every [[generate]] block, reproducibly") {
+    const std::filesystem::path assets = COLLIDE_ASSETS_DIR;
+    const Scene own = load_scene("maxwell-boltzmann", assets);
+    const Scene seeded = load_scene("maxwell-boltzmann", assets, SceneOptions{7});
+    const Scene again = load_scene("maxwell-boltzmann", assets, SceneOptions{7});
+    const Scene other = load_scene("maxwell-boltzmann", assets, SceneOptions{8});
+    REQUIRE(seeded.discs.size() == own.discs.size());
+    const auto same_positions = [](const Scene& a, const Scene& b) {
+        for (std::size_t i = 0; i < a.discs.size(); ++i) {
+            if (!(a.discs[i].position == b.discs[i].position)) return false;
+        }
+        return true;
+    };
+    CHECK(same_positions(seeded, again));
+    CHECK_FALSE(same_positions(seeded, other));
+    CHECK_FALSE(same_positions(seeded, own));
 }

@@ -2,6 +2,8 @@
 
 #include <doctest/doctest.h>
 
+#include "../support/input_error.hpp"
+
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -27,18 +29,10 @@ void check_same_discs(const Scene& a, const Scene& b) {
 }
 
 std::string save_error(const Scene& scene, const std::filesystem::path& path) {
-    try {
-        save_scene(scene, path);
-    } catch (const Error& e) {
-        CHECK(e.kind() == ErrorKind::input);
-        return e.what();
-    }
-    return "";
+    return test::input_error_message([&] { save_scene(scene, path); });
 }
 
-bool contains(const std::string& s, const std::string& part) {
-    return s.find(part) != std::string::npos;
-}
+using collide::test::contains;
 
 }  // namespace
 

@@ -2,6 +2,8 @@
 
 #include <doctest/doctest.h>
 
+#include "../support/input_error.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -19,18 +21,10 @@ Scene parse(const std::string& text, const std::filesystem::path& base = ".") {
 }
 
 std::string toml_error(const std::string& text, const std::filesystem::path& base = ".") {
-    try {
-        (void)parse(text, base);
-    } catch (const Error& e) {
-        CHECK(e.kind() == ErrorKind::input);
-        return e.what();
-    }
-    return "";
+    return test::input_error_message([&] { (void)parse(text, base); });
 }
 
-bool contains(const std::string& s, const std::string& part) {
-    return s.find(part) != std::string::npos;
-}
+using collide::test::contains;
 
 // A temporary directory removed at the end of the test.
 struct TempDir {

@@ -2,6 +2,8 @@
 
 #include <doctest/doctest.h>
 
+#include "../support/input_error.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -23,18 +25,10 @@ Scene make_box(Boundary boundary, double width = 1.0, double height = 1.0) {
 }
 
 std::string generate_error(Scene scene, const GenerateSpec& spec) {
-    try {
-        generate_discs(scene, spec);
-    } catch (const Error& e) {
-        CHECK(e.kind() == ErrorKind::input);
-        return e.what();
-    }
-    return "";
+    return test::input_error_message([&] { generate_discs(scene, spec); });
 }
 
-bool contains(const std::string& s, const std::string& part) {
-    return s.find(part) != std::string::npos;
-}
+using collide::test::contains;
 
 Vec2 momentum(const Scene& s) {
     Vec2 p{};

@@ -3,6 +3,8 @@
 
 #include <doctest/doctest.h>
 
+#include "../support/input_error.hpp"
+
 #include <cmath>
 #include <limits>
 #include <random>
@@ -24,18 +26,10 @@ Disc disc(double x, double y, double r, double m = 1.0) {
 }
 
 std::string validation_error(const Scene& scene, const SceneOrigin& origin = {}) {
-    try {
-        validate_scene(scene, origin);
-    } catch (const Error& e) {
-        CHECK(e.kind() == ErrorKind::input);
-        return e.what();
-    }
-    return "";
+    return test::input_error_message([&] { validate_scene(scene, origin); });
 }
 
-bool contains(const std::string& s, const std::string& part) {
-    return s.find(part) != std::string::npos;
-}
+using collide::test::contains;
 
 bool brute_force_overlap(const Scene& scene) {
     for (std::size_t i = 0; i < scene.discs.size(); ++i) {

@@ -4,7 +4,9 @@
 /// Every loader validates (collide/sim/scene_check.hpp) before it returns: a scene that comes out
 /// of here is safe to hand to any engine.
 
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -17,9 +19,17 @@ namespace collide {
 /// scene (assets/scenes/<name>.toml). Throws Error(input) naming file:line (or TOML key) and field.
 [[nodiscard]] Scene load_scene(const std::string& path_or_name);
 
+/// How a scene is loaded, beyond its file.
+struct SceneOptions {
+    /// Replaces the seed of every `[[generate]]` block (block i gets seed + i, so blocks still
+    /// differ): the CLI's `--seed`. Unset = the scene's own seeds. No effect on algs4 files.
+    std::optional<std::uint64_t> seed;
+};
+
 /// Same, looking built-in names up in `assets_dir`/scenes instead of scene_assets_dir().
 [[nodiscard]] Scene load_scene(const std::string& path_or_name,
-                               const std::filesystem::path& assets_dir);
+                               const std::filesystem::path& assets_dir,
+                               const SceneOptions& options = {});
 
 /// Names of the built-in scenes, sorted.
 [[nodiscard]] std::vector<std::string> builtin_scene_names();
@@ -41,10 +51,11 @@ struct BuiltinScene {
 /// Parses and validates a TOML scene given as text. `file_label` names it in messages;
 /// `include` paths are resolved against `base_dir`. Throws Error(input) "file:line: key: reason".
 [[nodiscard]] Scene parse_toml_scene(std::string_view text, const std::string& file_label,
-                                     const std::filesystem::path& base_dir);
+                                     const std::filesystem::path& base_dir,
+                                     const SceneOptions& options = {});
 
 /// Reads, parses and validates a TOML scene file (named after its stem).
-[[nodiscard]] Scene load_toml_scene(const std::filesystem::path& path);
+[[nodiscard]] Scene load_toml_scene(const std::filesystem::path& path, const SceneOptions& options = {});
 
 /// The candidate closest to `word` by edit distance, or "" when none is close enough to be a
 /// plausible typo ("radus" -> "radius"). Used for "unknown key ... (did you mean ...?)".

@@ -1,0 +1,135 @@
+// Renderer benchmarks on OSMesa (llvmpipe): draw and readback separately, overlays on and off,
+// N discs per panel. Figures go to docs/benchmarks.md, section "Renderer".
+//   cmake --build build/dev --target bench_render && build/dev/bench/bench_render
+// The frame is the product's: 1280x720, two panels (time-driven, event-driven), each showing N
+// discs at a packing fraction of 0.15 (so the covered pixel area is the same for every N); the
+// "discs" counter is the total drawn, 2N (10^3 .. 10^5).
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "collide/render/renderer.hpp"
+
+namespace {
+
+using namespace collide;
+using namespace collide::render;
+
+constexpr double packing_fraction = 0.15;
+
+Snapshot gas(std::size_t count, std::uint32_t seed, Boundary boundary) {
+    Snapshot s;
+    s.box = {1.0, 1.0, boundary};
+    const double radius =
+        std::sqrt(packing_fraction / (std::numbers::pi * static_cast<double>(count)));
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> where(radius, 1.0 - radius);
+    std::normal_distribution<double> velocity(0.0, 0.5);
+    s.discs.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        DiscState& d = s.discs[i];
+        d.position = {where(rng), where(rng)};
+        d.velocity = {velocity(rng), velocity(rng)};
+        d.radius = radius;
+        d.mass = 1.0;
+        d.color = {static_cast<std::uint8_t>(80 + i % 170), 120, 200};
+        d.tagged = i % 500 == 0;
+    }
+    return s;
+}
+
+struct Scenario {
+    Snapshot left;
+    Snapshot right;
+    FrameContent frame;
+    Renderer renderer;
+
+    Scenario(std::size_t count, bool overlays)
+        : left(gas(count, 1, Boundary::walls)),
+          right(gas(count, 2, Boundary::periodic)),
+          renderer(config(overlays), Backend::osmesa) {
+        frame.panels = {{&left, "Time-driven, dt = 0.01", {"steps 100", "missed 3"}},
+                        {&right, "Event-driven (priority queue)", {"events 12345"}}};
+        frame.time_text = "t = 1.00";
+        for (int p = 0; p < 2; ++p) {
+            std::vector<DriftPoint> series;
+            for (int i = 0; i < 200; ++i)
+                series.push_back({0.01 * i, 1e-4 * i * p});
+            frame.energy_drift.push_back(series);
+        }
+    }
+
+    static RenderConfig config(bool overlays) {
+        RenderConfig c;
+        c.width = 1280;
+        c.height = 720;
+        c.color_mode = ColorMode::speed;
+        c.speed_max = 2.0;
+        c.overlays = overlays;
+        return c;
+    }
+};
+
+void set_counters(benchmark::State& state) {
+    state.counters["fps"] =
+        benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+    state.counters["discs"] = static_cast<double>(2 * state.range(0));
+}
+
+// Draw only: build instances and overlays, issue GL, glFinish.
+void BM_draw(benchmark::State& state) {
+    Scenario s(static_cast<std::size_t>(state.range(0)), state.range(1) != 0);
+    for (auto _ : state)
+        s.renderer.draw(s.frame);
+    set_counters(state);
+}
+
+// Readback only: glReadPixels of the last frame into a reused image.
+void BM_read_pixels(benchmark::State& state) {
+    Scenario s(static_cast<std::size_t>(state.range(0)), state.range(1) != 0);
+    Image image;
+    s.renderer.draw(s.frame);
+    for (auto _ : state) {
+        s.renderer.read_pixels(image);
+        benchmark::DoNotOptimize(image.rgba.data());
+    }
+    set_counters(state);
+}
+
+// The whole frame: draw + readback (what `collide render` pays per frame).
+void BM_render(benchmark::State& state) {
+    Scenario s(static_cast<std::size_t>(state.range(0)), state.range(1) != 0);
+    Image image;
+    for (auto _ : state) {
+        s.renderer.render(s.frame, image);
+        benchmark::DoNotOptimize(image.rgba.data());
+    }
+    set_counters(state);
+}
+
+void sizes(benchmark::internal::Benchmark* b) {
+    for (const int overlays : {0, 1}) {
+        for (const int n : {500, 5000, 15000, 50000})
+            b->Args({n, overlays});
+    }
+    // Process CPU time (llvmpipe's rasteriser threads included): on a shared machine it is the
+    // honest measure of work; fps is frames per CPU second. Wall time is printed too.
+    b->ArgNames({"N", "overlays"})->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+}
+
+BENCHMARK(BM_draw)->Apply(sizes);
+BENCHMARK(BM_read_pixels)
+    ->Args({5000, 1})
+    ->ArgNames({"N", "overlays"})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime();
+BENCHMARK(BM_render)->Apply(sizes);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,259 @@
+/// `collide render` (a video) and `collide thumbnail` (one frame as PNG): read the options,
+/// validate everything (scene, options, destination) before anything is rendered, run the frame
+/// pipeline, print one summary line on stdout.
+
+#include <fmt/core.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <system_error>
+
+#include "collide/error.hpp"
+#include "collide/scene/load.hpp"
+#include "collide/video/output.hpp"
+#include "collide/video/video_writer.hpp"
+#include "commands.hpp"
+#include "interrupt.hpp"
+#include "pipeline.hpp"
+#include "progress.hpp"
+#include "render_plan.hpp"
+
+namespace collide::app {
+
+namespace {
+
+/// Raw option values as CLI11 stores them; `resolve` turns the ones given into a RenderRequest.
+struct CliValues {
+    std::string scene;
+    std::string output;
+    std::string mode = "both";
+    std::string quality;
+    std::string size;
+    int fps = 0;
+    double duration = 0.0;
+    double speed = 0.0;
+    double dt = 0.0;
+    double at = 0.0;
+    std::string engine = "fast";
+    std::string pq = "binary";
+    std::string td_detect = "all-pairs";
+    std::string color;
+    std::string format;
+    bool trails = true;
+    bool last_frame = false;
+    bool preview = false;
+    std::string progress = "auto";
+    std::string dump_rgba;
+    bool verbose = false;
+    std::uint64_t seed = 0;
+    CLI::Option* seed_opt = nullptr;
+
+    // Options whose absence means "take the scene hint or the default".
+    CLI::Option* output_opt = nullptr;
+    CLI::Option* quality_opt = nullptr;
+    CLI::Option* size_opt = nullptr;
+    CLI::Option* fps_opt = nullptr;
+    CLI::Option* duration_opt = nullptr;
+    CLI::Option* speed_opt = nullptr;
+    CLI::Option* dt_opt = nullptr;
+    CLI::Option* at_opt = nullptr;
+    CLI::Option* color_opt = nullptr;
+    CLI::Option* format_opt = nullptr;
+    CLI::Option* trails_opt = nullptr;
+};
+
+template <typename T>
+std::optional<T> if_given(const CLI::Option* option, const T& value) {
+    if (option == nullptr || option->count() == 0) return std::nullopt;
+    return value;
+}
+
+RenderRequest request_of(const CliValues& v, bool still) {
+    RenderRequest r;
+    r.scene = v.scene;
+    r.output = if_given(v.output_opt, v.output);
+    r.mode = v.mode;
+    r.quality = if_given(v.quality_opt, v.quality);
+    r.size = if_given(v.size_opt, v.size);
+    r.fps = if_given(v.fps_opt, v.fps);
+    r.duration = if_given(v.duration_opt, v.duration);
+    r.speed = if_given(v.speed_opt, v.speed);
+    r.dt = if_given(v.dt_opt, v.dt);
+    r.at = if_given(v.at_opt, v.at);
+    r.engine = v.engine;
+    r.pq = v.pq;
+    r.td_detect = v.td_detect;
+    r.color = if_given(v.color_opt, v.color);
+    r.trails = if_given(v.trails_opt, v.trails);
+    r.format = if_given(v.format_opt, v.format);
+    r.last_frame = v.last_frame;
+    r.still = still;
+    return r;
+}
+
+/// The options `render` and `thumbnail` share.
+void add_shared_options(CLI::App& cmd, CliValues& v) {
+    v.seed_opt = cmd.add_option("--seed", v.seed,
+                                "Seed for the scene's random discs ([[generate]] block i gets N + i; default: the scene's)");
+    cmd.add_option("scene", v.scene, "Scene: a built-in name (see `collide scenes`), a .toml or an algs4 .txt file")
+        ->required();
+    v.output_opt = cmd.add_option("-o,--output", v.output, "Output file (default: out/<scene>.<ext>)");
+    cmd.add_option("--mode", v.mode, "both (time-driven left, event-driven right), event or time")
+        ->capture_default_str();
+    v.quality_opt = cmd.add_option("-q,--quality", v.quality, "l 854x480@15, m 1280x720@30 (default), h 1920x1080@60, k 3840x2160@60");
+    v.size_opt = cmd.add_option("--size", v.size, "Frame size WxH, overrides -q (e.g. 640x360)");
+    v.fps_opt = cmd.add_option("--fps", v.fps, "Frames per second, overrides -q");
+    v.duration_opt = cmd.add_option("--duration", v.duration, "Seconds of video (default: scene hint, else 10)");
+    v.speed_opt = cmd.add_option("--speed", v.speed,
+                                 "Simulation time per second of video (default: scene hint, else a typical disc "
+                                 "crosses the box in 10 s)");
+    v.dt_opt = cmd.add_option("--dt", v.dt, "Time-driven time step (default: scene hint, else one frame interval)");
+    cmd.add_option("--engine", v.engine, "Event-driven engine: fast or classic")->capture_default_str();
+    cmd.add_option("--pq", v.pq, "Classic engine's queue: unordered, ordered, binary, dary:D or indexed")
+        ->capture_default_str();
+    cmd.add_option("--td-detect", v.td_detect, "Time-driven overlap checks: all-pairs or grid")->capture_default_str();
+    v.color_opt = cmd.add_option("--color", v.color, "Disc colours: scene, speed, mass or tag (default: scene hint, else scene)");
+    v.trails_opt = cmd.add_flag("--trails,!--no-trails", v.trails, "Trails behind tagged discs (default: scene hint, else on)");
+    cmd.add_flag("--preview", v.preview, "Show the frames live in a window when a display exists");
+    cmd.add_option("--progress", v.progress, "Progress on stderr: auto (bar on a terminal), bar, json or none")
+        ->capture_default_str();
+    cmd.add_flag("--verbose", v.verbose, "Show the encoder's own log");
+}
+
+void print_notice(const std::string& line) { std::fprintf(stderr, "collide: %s\n", line.c_str()); }
+
+/// Everything that can be wrong with the request, found before any frame is drawn.
+RenderPlan validated_plan(const RenderRequest& request, const Scene& scene) {
+    RenderPlan plan = plan_render(request, scene);
+    // The default directory is ours to create; a user-given one must exist already.
+    if (plan.default_output) std::filesystem::create_directories(plan.output.parent_path());
+    const bool directory = plan.kind == OutputKind::video && plan.format == video::VideoFormat::png_sequence;
+    video::check_output_writable(plan.output, directory);
+    return plan;
+}
+
+std::string human_size(std::uintmax_t bytes) {
+    if (bytes >= 1024 * 1024) return fmt::format("{:.1f} MB", static_cast<double>(bytes) / (1024.0 * 1024.0));
+    if (bytes >= 1024) return fmt::format("{:.1f} kB", static_cast<double>(bytes) / 1024.0);
+    return fmt::format("{} B", bytes);
+}
+
+std::uintmax_t size_on_disk(const std::filesystem::path& path) {
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) {
+        std::uintmax_t total = 0;
+        for (const auto& entry : std::filesystem::directory_iterator(path, error)) {
+            if (entry.is_regular_file(error)) total += entry.file_size(error);
+        }
+        return total;
+    }
+    const std::uintmax_t size = std::filesystem::file_size(path, error);
+    return error ? 0 : size;
+}
+
+/// Wall-clock cost of each engine: printed, never drawn (it would break byte-identical output).
+std::string engine_costs(const RenderPlan& plan, const PipelineResult& result) {
+    std::string out;
+    std::size_t i = 0;
+    if (plan.mode != RenderMode::event && i < result.engines.size()) {
+        const Measurements& m = result.engines[i++];
+        out += fmt::format("time-driven {:.2f} s ({} overlap checks)", m.wall_seconds,
+                           short_count(static_cast<double>(m.overlap_checks)));
+    }
+    if (plan.mode != RenderMode::time && i < result.engines.size()) {
+        const Measurements& m = result.engines[i];
+        if (!out.empty()) out += ", ";
+        out += fmt::format("event-driven {:.2f} s ({} collisions)", m.wall_seconds,
+                           short_count(static_cast<double>(m.collisions_pair + m.collisions_wall)));
+    }
+    return out;
+}
+
+void print_summary(const RenderPlan& plan, const PipelineResult& result, double wall_seconds) {
+    const std::uintmax_t bytes = size_on_disk(plan.output);
+    if (plan.kind == OutputKind::still) {
+        std::printf("%s: %dx%d PNG at t = %.6g (%s), %s, in %.1f s; engines: %s\n", plan.output.string().c_str(),
+                    result.output_width, result.output_height, result.sim_time,
+                    fmt::format("frame {} of a {} fps video", result.frames - 1, plan.fps).c_str(),
+                    human_size(bytes).c_str(), wall_seconds, engine_costs(plan, result).c_str());
+        return;
+    }
+    const double seconds = static_cast<double>(result.frames) / plan.fps;
+    std::printf("%s: %.2f s of video, %lld frames, %dx%d @ %g fps, %s, rendered in %.1f s (%.1f fps); "
+                "simulation time 0..%.6g; engines: %s\n",
+                plan.output.string().c_str(), seconds, static_cast<long long>(result.frames), result.output_width,
+                result.output_height, result.output_fps, human_size(bytes).c_str(), wall_seconds,
+                wall_seconds > 0.0 ? static_cast<double>(result.frames) / wall_seconds : 0.0, result.sim_time,
+                engine_costs(plan, result).c_str());
+}
+
+void run(const CliValues& values, bool still) {
+    // Validation: nothing is rendered, and no output file is created, until all of it passes.
+    const ProgressMode progress_mode = parse_progress_mode(values.progress);
+    SceneOptions scene_options;
+    if (values.seed_opt != nullptr && values.seed_opt->count() > 0) scene_options.seed = values.seed;
+    const Scene scene = load_scene(values.scene, scene_assets_dir(), scene_options);
+    const RenderRequest request = request_of(values, still);
+    const RenderPlan plan = validated_plan(request, scene);
+    video::set_libav_verbose(values.verbose);
+    for (const std::string& line : plan.notices) print_notice(line);
+
+    InterruptGuard interrupts;
+    Progress progress(progress_mode, plan.clock.count);
+    PipelineHooks hooks;
+    hooks.interrupts = &interrupts;
+    hooks.progress = &progress;
+    hooks.preview = values.preview;
+    hooks.notice = print_notice;
+    hooks.dump_rgba = values.dump_rgba;
+    PipelineResult result;
+    try {
+        result = plan.kind == OutputKind::still ? render_still(scene, plan, hooks) : render_video(scene, plan, hooks);
+    } catch (...) {
+        progress.finish();
+        throw;
+    }
+    progress.finish();
+    for (const std::string& line : result.notices) print_notice(line);
+    print_summary(plan, result, progress.elapsed_seconds());
+}
+
+}  // namespace
+
+void add_render_command(CLI::App& root) {
+    auto values = std::make_shared<CliValues>();
+    CLI::App* cmd = root.add_subcommand(
+        "render", "Render a teaching video: time-driven (left) and event-driven (right) side by side");
+    add_shared_options(*cmd, *values);
+    values->format_opt = cmd->add_option("--format", values->format, "mp4 (default), gif, or png (a directory of frames)");
+    cmd->add_flag("--last-frame", values->last_frame,
+                  "Write only the last frame, as a PNG (-o FILE.png, default out/<scene>.png)");
+    // Benchmarks only (scripts/bench_pipeline.sh): the frames as raw RGBA for ffmpeg alone.
+    cmd->add_option("--dump-rgba", values->dump_rgba, "")->group("");
+    cmd->footer(
+        "Examples:\n"
+        "  collide render tunnelling                      # out/tunnelling.mp4, 720p30, side by side\n"
+        "  collide render gas -q l --duration 5 -o gas.mp4\n"
+        "  collide render brownian --mode event --color speed --format gif\n"
+        "  collide render tunnelling --last-frame         # out/tunnelling.png");
+    cmd->callback([values] { run(*values, false); });
+}
+
+void add_thumbnail_command(CLI::App& root) {
+    auto values = std::make_shared<CliValues>();
+    CLI::App* cmd = root.add_subcommand("thumbnail", "Render one frame as a PNG (fast, no video): for READMEs and CI");
+    add_shared_options(*cmd, *values);
+    values->at_opt =
+        cmd->add_option("--at", values->at, "Simulation time of the frame (default: the video's last frame)");
+    cmd->footer(
+        "Examples:\n"
+        "  collide thumbnail gas --at 2.5 -o gas.png --size 480x270\n"
+        "  collide thumbnail tunnelling --mode time     # out/tunnelling.png");
+    cmd->callback([values] { run(*values, true); });
+}
+
+}  // namespace collide::app

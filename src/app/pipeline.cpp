@@ -1,0 +1,287 @@
+#include "pipeline.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <exception>
+#include <thread>
+#include <utility>
+
+#include "bounded_queue.hpp"
+#include "collide/error.hpp"
+#include "collide/render/preview.hpp"
+#include "collide/video/png.hpp"
+#include "collide/video/video_writer.hpp"
+
+namespace collide::app {
+
+namespace {
+
+/// SimFrames in flight between the simulation and render threads: enough to ride out an uneven
+/// frame (a burst of collisions) without holding many snapshots in memory.
+constexpr std::size_t sim_queue_frames = 4;
+
+double relative_drift(double energy, double initial) { return initial > 0.0 ? (energy - initial) / initial : 0.0; }
+
+void check_interrupt(const PipelineHooks& hooks) {
+    if (hooks.interrupts != nullptr) hooks.interrupts->throw_if_requested();
+}
+
+/// The simulation thread and the queue it fills. The destructor closes the queue (so a producer
+/// blocked on a full queue wakes up) and joins, so no path out of a run leaves a thread behind.
+class SimulationThread {
+public:
+    SimulationThread(const Scene& scene, const RenderPlan& plan, const std::atomic<bool>* cancel)
+        : queue_(sim_queue_frames), thread_([this, &scene, &plan, cancel] { run(scene, plan, cancel); }) {}
+    ~SimulationThread() {
+        queue_.close();
+        if (thread_.joinable()) thread_.join();
+    }
+    SimulationThread(const SimulationThread&) = delete;
+    SimulationThread& operator=(const SimulationThread&) = delete;
+
+    /// The next frame, or nullopt when all are done (or the simulation failed or was cancelled).
+    std::optional<SimFrame> next() { return queue_.pop(); }
+
+    /// After next() returned nullopt: rethrows the simulation's error, if any, and hands out the
+    /// engines' final measurements.
+    std::vector<Measurements> finish() {
+        thread_.join();
+        if (error_) std::rethrow_exception(error_);
+        return final_measurements_;
+    }
+
+private:
+    void run(const Scene& scene, const RenderPlan& plan, const std::atomic<bool>* cancel) {
+        try {
+            FrameSource source(scene, plan);
+            for (std::int64_t k = 0; k < plan.clock.count; ++k) {
+                if (cancel != nullptr && cancel->load()) break;
+                if (!queue_.push(source.frame(k))) break;
+            }
+            final_measurements_ = source.measurements();
+        } catch (...) {
+            error_ = std::current_exception();
+        }
+        queue_.close();
+    }
+
+    BoundedQueue<SimFrame> queue_;
+    std::exception_ptr error_;
+    std::vector<Measurements> final_measurements_;
+    std::thread thread_;  // last: started once everything it uses exists
+};
+
+/// Raw RGBA frames appended to a file (benchmarks only).
+class RawDump {
+public:
+    explicit RawDump(const std::filesystem::path& path) {
+        if (path.empty()) return;
+        file_ = std::fopen(path.c_str(), "wb");
+        if (file_ == nullptr) throw_input_error(fmt::format("--dump-rgba: cannot create '{}'", path.string()));
+    }
+    ~RawDump() {
+        if (file_ != nullptr) std::fclose(file_);
+    }
+    RawDump(const RawDump&) = delete;
+    RawDump& operator=(const RawDump&) = delete;
+
+    void write(const Image& image) {
+        if (file_ == nullptr) return;
+        if (std::fwrite(image.rgba.data(), 1, image.rgba.size(), file_) != image.rgba.size()) {
+            throw_runtime_error("--dump-rgba: write failed");
+        }
+    }
+
+private:
+    std::FILE* file_ = nullptr;
+};
+
+std::string_view title_of(const RenderPlan& plan) {
+    return plan.mode == RenderMode::both ? "collide: time-driven vs event-driven" : "collide";
+}
+
+}  // namespace
+
+// ------------------------------------------------------------------------------------------------
+// Simulation side
+
+std::vector<std::string> time_driven_counters(const Measurements& m, double /*dt*/, double energy_drift) {
+    // Short "label  value" pairs: the renderer lays them out in a grid of narrow columns.
+    return {
+        fmt::format("steps  {}", short_count(static_cast<double>(m.steps))),
+        fmt::format("checks  {}", short_count(static_cast<double>(m.overlap_checks))),
+        fmt::format("collisions  {}", short_count(static_cast<double>(m.collisions_pair + m.collisions_wall))),
+        fmt::format("overlaps now  {}", m.overlapping_pairs),
+        fmt::format("deepest  {:.2g}", m.max_overlap),
+        fmt::format("missed  {}", m.missed_collisions),
+        fmt::format("escaped  {}", m.escaped),
+        fmt::format("energy drift  {:+.1e}", energy_drift),
+        fmt::format("checks/time  {}", m.t > 0.0 ? short_count(static_cast<double>(m.overlap_checks) / m.t) : "-"),
+    };
+}
+
+std::vector<std::string> event_driven_counters(const Measurements& m, double energy_drift) {
+    const std::uint64_t queue_ops = m.queue.pushes + m.queue.pops;
+    const double stale_share =
+        m.queue.pops > 0 ? 100.0 * static_cast<double>(m.queue.stale_pops) / static_cast<double>(m.queue.pops) : 0.0;
+    const double work = static_cast<double>(m.predictions + queue_ops);
+    return {
+        fmt::format("events  {}", short_count(static_cast<double>(m.events))),
+        fmt::format("collisions  {}", short_count(static_cast<double>(m.collisions_pair + m.collisions_wall))),
+        fmt::format("predictions  {}", short_count(static_cast<double>(m.predictions))),
+        fmt::format("queue ops  {}", short_count(static_cast<double>(queue_ops))),
+        fmt::format("queue max  {}", m.queue.max_size),
+        fmt::format("stale pops  {:.0f}%", stale_share),
+        fmt::format("overlaps now  {}", m.max_overlap > 0.0 ? "yes" : "0"),
+        fmt::format("energy drift  {:+.1e}", energy_drift),
+        fmt::format("ops/time  {}", m.t > 0.0 ? short_count(work / m.t) : "-"),
+    };
+}
+
+std::vector<std::string> comparison_notes(RenderMode mode) {
+    if (mode != RenderMode::both) return {};
+    return {"The panels drift apart even when both are right (chaos): compare the figures, not the positions."};
+}
+
+FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan) : plan_(plan) {
+    const auto add = [&](const EngineOptions& options, bool time_driven, std::string title) {
+        Panel panel;
+        panel.engine = make_engine(scene, options);
+        panel.time_driven = time_driven;
+        panel.title = std::move(title);
+        panel.initial_energy = panel.engine->measurements().kinetic_energy;
+        panels_.push_back(std::move(panel));
+    };
+    if (plan.mode != RenderMode::event) add(plan.time_engine, true, time_panel_title(plan.time_engine.dt));
+    if (plan.mode != RenderMode::time) add(plan.event_engine, false, event_panel_title(plan.event_engine));
+}
+
+SimFrame FrameSource::frame(std::int64_t k) {
+    SimFrame out;
+    out.index = k;
+    out.time = plan_.clock.time(k);
+    out.panels.reserve(panels_.size());
+    for (Panel& panel : panels_) {
+        const double target = panel.time_driven ? last_step_time(out.time, plan_.time_engine.dt) : out.time;
+        panel.engine->advance_to(std::max(target, panel.engine->time()));
+        out.panels.push_back(describe(panel));
+    }
+    return out;
+}
+
+PanelFrame FrameSource::describe(const Panel& panel) const {
+    PanelFrame out;
+    out.snapshot = panel.engine->snapshot();
+    const Measurements m = panel.engine->measurements();
+    const double drift = relative_drift(m.kinetic_energy, panel.initial_energy);
+    out.title = panel.title;
+    out.counters = panel.time_driven ? time_driven_counters(m, plan_.time_engine.dt, drift)
+                                     : event_driven_counters(m, drift);
+    out.drift = {out.snapshot.time, drift};
+    return out;
+}
+
+std::vector<Measurements> FrameSource::measurements() const {
+    std::vector<Measurements> out;
+    for (const Panel& panel : panels_) out.push_back(panel.engine->measurements());
+    return out;
+}
+
+// ------------------------------------------------------------------------------------------------
+// Render side
+
+FrameComposer::FrameComposer(const RenderPlan& plan) : plan_(plan) { content_.notes = comparison_notes(plan.mode); }
+
+const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
+    content_.panels.resize(frame.panels.size());
+    content_.energy_drift.resize(frame.panels.size());
+    for (std::size_t i = 0; i < frame.panels.size(); ++i) {
+        const PanelFrame& panel = frame.panels[i];
+        content_.panels[i] = {&panel.snapshot, panel.title, panel.counters};
+        content_.energy_drift[i].push_back(panel.drift);
+    }
+    content_.time_text = fmt::format("t = {:.3f}   ({:.3g}/s)", frame.time, plan_.speed.speed);
+    return content_;
+}
+
+PipelineResult render_video(const Scene& scene, const RenderPlan& plan, const PipelineHooks& hooks) {
+    const std::atomic<bool>* cancel = hooks.interrupts != nullptr ? &hooks.interrupts->flag() : nullptr;
+    video::VideoOptions options;
+    options.path = plan.output;
+    options.format = plan.format;
+    options.width = plan.width;
+    options.height = plan.height;
+    options.fps = plan.fps;
+    options.cancel = cancel;
+    video::VideoWriter writer(options);  // validates, checks the path, creates the temporary
+    render::Renderer renderer(plan.render, render::Backend::automatic, hooks.notice);
+    std::unique_ptr<render::PreviewWindow> preview;
+    if (hooks.preview) {
+        preview = render::open_preview(plan.width, plan.height, std::string(title_of(plan)).c_str(), hooks.notice);
+    }
+    RawDump dump(hooks.dump_rgba);
+
+    PipelineResult result;
+    FrameComposer composer(plan);
+    SimulationThread simulation(scene, plan, cancel);
+    while (std::optional<SimFrame> frame = simulation.next()) {
+        check_interrupt(hooks);
+        Image image = renderer.render(composer.compose(*frame));
+        if (preview && !preview->show(image)) preview.reset();  // closed: keep encoding
+        dump.write(image);
+        writer.write(std::move(image));
+        result.frames += 1;
+        result.sim_time = frame->time;
+        if (hooks.progress != nullptr) hooks.progress->frame_done(frame->time);
+    }
+    result.engines = simulation.finish();
+    check_interrupt(hooks);
+    if (result.frames != plan.clock.count) throw_runtime_error("rendering stopped before the last frame");
+    writer.finish();
+    result.notices = writer.notices();
+    result.output_width = writer.output_width();
+    result.output_height = writer.output_height();
+    result.output_fps = writer.output_fps();
+    return result;
+}
+
+PipelineResult render_still(const Scene& scene, const RenderPlan& plan, const PipelineHooks& hooks) {
+    const std::atomic<bool>* cancel = hooks.interrupts != nullptr ? &hooks.interrupts->flag() : nullptr;
+    render::Renderer renderer(plan.render, render::Backend::automatic, hooks.notice);
+    // Only the frames whose positions appear in the trails need drawing before the last one.
+    const std::int64_t history = plan.render.trails ? plan.render.trail_length : 1;
+    const std::int64_t first_drawn = std::max<std::int64_t>(0, plan.clock.count - history);
+
+    PipelineResult result;
+    FrameComposer composer(plan);
+    Image image;
+    SimulationThread simulation(scene, plan, cancel);
+    while (std::optional<SimFrame> frame = simulation.next()) {
+        check_interrupt(hooks);
+        const render::FrameContent& content = composer.compose(*frame);
+        if (frame->index + 1 == plan.clock.count) {
+            renderer.render(content, image);
+        } else if (frame->index >= first_drawn) {
+            renderer.draw(content);
+        }
+        result.frames += 1;
+        result.sim_time = frame->time;
+        if (hooks.progress != nullptr) hooks.progress->frame_done(frame->time);
+    }
+    result.engines = simulation.finish();
+    check_interrupt(hooks);
+    if (result.frames != plan.clock.count) throw_runtime_error("rendering stopped before the last frame");
+    if (hooks.preview) {
+        if (auto window = render::open_preview(plan.width, plan.height, std::string(title_of(plan)).c_str(), hooks.notice)) {
+            window->show(image);
+        }
+    }
+    video::write_png(image, plan.output);
+    result.output_width = image.width;
+    result.output_height = image.height;
+    return result;
+}
+
+}  // namespace collide::app

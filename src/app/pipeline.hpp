@@ -1,0 +1,121 @@
+#pragma once
+/// \file
+/// The frame pipeline of `collide render`: simulate -> render -> encode, overlapped on threads.
+///
+///   simulation thread    FrameSource: advances the engines to each frame time, takes snapshots,
+///                        measurements and counter lines          -> BoundedQueue<SimFrame>
+///   calling thread       owns the GL context: FrameComposer + Renderer draw the frame
+///                        (and show it in the --preview window)   -> VideoWriter::write
+///   encoder thread(s)    inside VideoWriter (RGBA -> yuv420p, libx264 and its own threads)
+///
+/// Every stage sees frames strictly in order and nothing depends on wall time, so the output is
+/// byte-identical whatever the thread timing (same scene, options -> same file).
+
+#include <atomic>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "collide/render/renderer.hpp"
+#include "collide/scene.hpp"
+#include "collide/sim/engine.hpp"
+#include "collide/snapshot.hpp"
+#include "interrupt.hpp"
+#include "progress.hpp"
+#include "render_plan.hpp"
+
+namespace collide::app {
+
+/// One simulation's state at a frame time, with its on-screen figures.
+struct PanelFrame {
+    Snapshot snapshot;
+    std::string title;
+    std::vector<std::string> counters;
+    render::DriftPoint drift;  ///< (KE - KE0) / KE0 at this frame
+};
+
+/// What the simulation thread hands to the render thread for one frame.
+struct SimFrame {
+    std::int64_t index = 0;
+    double time = 0.0;
+    std::vector<PanelFrame> panels;  ///< time-driven first, then event-driven (as the plan says)
+};
+
+/// Owns the engines of a plan and produces its frames in order. Deterministic: the same scene
+/// and plan give the same frames (on-screen figures are counts, never wall-clock times).
+class FrameSource {
+public:
+    /// Builds the engines (time-driven and/or event-driven per plan.mode). Throws Error(input)
+    /// for engine options make_engine rejects.
+    FrameSource(const Scene& scene, const RenderPlan& plan);
+    /// Advances every engine to plan.clock.time(k) (k increasing) and describes the frame.
+    [[nodiscard]] SimFrame frame(std::int64_t k);
+    /// Measurements of each engine now, in panel order.
+    [[nodiscard]] std::vector<Measurements> measurements() const;
+
+private:
+    struct Panel {
+        std::unique_ptr<Engine> engine;
+        bool time_driven = false;
+        std::string title;
+        double initial_energy = 0.0;
+    };
+    [[nodiscard]] PanelFrame describe(const Panel& panel) const;
+
+    const RenderPlan& plan_;
+    std::vector<Panel> panels_;
+};
+
+/// The on-screen counter lines of one engine (pure: unit-tested).
+[[nodiscard]] std::vector<std::string> time_driven_counters(const Measurements& m, double dt, double energy_drift);
+[[nodiscard]] std::vector<std::string> event_driven_counters(const Measurements& m, double energy_drift);
+/// The notice lines under a side-by-side frame: why the pictures differ, what to compare.
+[[nodiscard]] std::vector<std::string> comparison_notes(RenderMode mode);
+
+/// Turns SimFrames into the renderer's FrameContent (render thread), keeping each panel's energy
+/// drift series across frames. The content points into the SimFrame, which must outlive its use.
+class FrameComposer {
+public:
+    explicit FrameComposer(const RenderPlan& plan);
+    [[nodiscard]] const render::FrameContent& compose(const SimFrame& frame);
+
+private:
+    const RenderPlan& plan_;
+    render::FrameContent content_;
+};
+
+/// Outside-world connections of a run. All optional.
+struct PipelineHooks {
+    const InterruptGuard* interrupts = nullptr;  ///< polled between frames; its flag cancels encoding
+    Progress* progress = nullptr;
+    bool preview = false;                        ///< show frames in a window when a display exists
+    render::NoticeSink notice;                   ///< one-line notices (empty = stderr)
+    /// Benchmarks only: also append every frame as raw RGBA to this file (for timing libx264
+    /// alone on exactly the same frames with the ffmpeg command line).
+    std::filesystem::path dump_rgba;
+};
+
+/// What happened, for the summary line.
+struct PipelineResult {
+    std::int64_t frames = 0;
+    double sim_time = 0.0;               ///< simulation time of the last frame
+    std::vector<Measurements> engines;   ///< in panel order
+    std::vector<std::string> notices;    ///< from the encoder (size rounded, GIF rate reduced)
+    int output_width = 0;
+    int output_height = 0;
+    double output_fps = 0.0;
+};
+
+/// Renders plan.clock's frames into plan.output (MP4, GIF or PNG sequence). Nothing appears at
+/// plan.output unless every frame was encoded and the file finished (temporary + rename).
+/// Throws Error: input for bad options, runtime for GL/encoder failures or an interrupt.
+PipelineResult render_video(const Scene& scene, const RenderPlan& plan, const PipelineHooks& hooks);
+
+/// Renders only the last frame of plan.clock into the PNG plan.output. Every frame time is still
+/// simulated (so the time-driven engine takes the video's steps) and the frames that feed the
+/// trails are drawn, so the image equals the video's frame at that time. Same throws.
+PipelineResult render_still(const Scene& scene, const RenderPlan& plan, const PipelineHooks& hooks);
+
+}  // namespace collide::app

@@ -1,0 +1,70 @@
+#pragma once
+/// \file
+/// Progress of a render on stderr: a one-line bar redrawn in place (frames, simulation time,
+/// frames per second, ETA) when stderr is a terminal, JSON lines for scripts, or nothing.
+/// Progress never goes to stdout, which holds only the final summary.
+
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <string_view>
+
+namespace collide::app {
+
+enum class ProgressMode {
+    automatic,  ///< bar when stderr is a terminal (isatty), otherwise none
+    bar,        ///< "\r[#####.....]  45/300 frames  t = 3.20  12.3 fps  ETA 0:21"
+    json,       ///< one JSON object per line: {"frame":45,"frames":300,"time":3.2,...}
+    none,
+};
+
+/// "auto" / "bar" / "json" / "none"; throws Error(input) naming `option` otherwise.
+[[nodiscard]] ProgressMode parse_progress_mode(std::string_view text, std::string_view option = "--progress");
+
+/// The numbers shown at one moment.
+struct ProgressState {
+    std::int64_t frames_done = 0;
+    std::int64_t frames_total = 0;
+    double sim_time = 0.0;         ///< simulation time of the last finished frame
+    double elapsed_seconds = 0.0;  ///< wall time since the start
+};
+
+/// Frames per second so far and the estimated seconds left (0 when unknown).
+[[nodiscard]] double frames_per_second(const ProgressState& state) noexcept;
+[[nodiscard]] double eta_seconds(const ProgressState& state) noexcept;
+/// The bar line (without the leading "\r"), `width` characters of bar.
+[[nodiscard]] std::string format_bar(const ProgressState& state, int width = 24);
+/// The JSON line (without the newline).
+[[nodiscard]] std::string format_json(const ProgressState& state);
+
+/// Reports a render's progress to a FILE (stderr). Redraws at most every 0.1 s (bar) or 0.5 s
+/// (json) plus the final frame, so reporting costs nothing measurable. Not thread-safe.
+class Progress {
+public:
+    Progress(ProgressMode mode, std::int64_t frames_total, std::FILE* out = stderr);
+    Progress(const Progress&) = delete;
+    Progress& operator=(const Progress&) = delete;
+
+    /// One more frame finished at simulation time `sim_time`.
+    void frame_done(double sim_time);
+    /// Ends the bar line (a newline after the last redraw); safe to call more than once.
+    void finish();
+
+    /// The mode in effect after resolving `automatic`.
+    [[nodiscard]] ProgressMode mode() const noexcept { return mode_; }
+    [[nodiscard]] double elapsed_seconds() const;
+
+private:
+    void emit(const ProgressState& state);
+
+    ProgressMode mode_;
+    std::FILE* out_;
+    std::int64_t frames_total_;
+    std::int64_t frames_done_ = 0;
+    std::chrono::steady_clock::time_point started_;
+    std::chrono::steady_clock::time_point last_emit_;
+    bool drawn_ = false;  ///< a bar line is on screen without its newline
+};
+
+}  // namespace collide::app

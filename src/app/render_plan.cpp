@@ -1,0 +1,336 @@
+#include "render_plan.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <limits>
+
+#include "collide/error.hpp"
+#include "collide/sim/pq/queue_kind.hpp"
+
+namespace collide::app {
+
+namespace {
+
+constexpr int min_frame_side = 64;  // the renderer's minimum
+constexpr int max_frame_side = 8192;
+constexpr int max_fps = 240;
+constexpr double max_duration = 3600.0;  // an hour of video is far beyond any lesson
+/// Colour and histogram range in units of the RMS speed: a 2D Maxwell-Boltzmann gas has
+/// P(v > 2.5 v_rms) = exp(-6.25) ~ 0.2 %, so almost every disc gets a distinct colour.
+constexpr double speed_range_in_rms = 2.5;
+/// Relative tolerance for "dt divides the frame interval" and for snapping a still's time onto
+/// a frame time: far above rounding (1e-16) and far below anything a viewer could see.
+constexpr double divide_tolerance = 1e-6;
+constexpr double snap_tolerance = 1e-9;
+
+[[noreturn]] void bad_option(std::string_view option, const std::string& reason) {
+    throw_input_error(fmt::format("{}: {}", option, reason));
+}
+
+bool positive_finite(double x) { return std::isfinite(x) && x > 0.0; }
+
+void require_positive(double value, std::string_view option, std::string_view what) {
+    if (!positive_finite(value)) bad_option(option, fmt::format("must be a positive {}, got {}", what, value));
+}
+
+std::string lowercase_extension(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+std::string output_stem(const Scene& scene) { return scene.name.empty() ? std::string("scene") : scene.name; }
+
+int choose_fps(const RenderRequest& request, const QualityPreset& preset) {
+    if (!request.fps) return preset.fps;
+    if (*request.fps < 1 || *request.fps > max_fps) {
+        bad_option("--fps", fmt::format("must be 1..{} frames per second, got {}", max_fps, *request.fps));
+    }
+    return *request.fps;
+}
+
+double choose_duration(const RenderRequest& request, const Scene& scene) {
+    const bool from_cli = request.duration.has_value();
+    const double duration = request.duration.value_or(scene.render.duration.value_or(10.0));
+    const char* option = from_cli ? "--duration" : "scene [render] duration";
+    require_positive(duration, option, "number of seconds");
+    if (duration > max_duration) bad_option(option, fmt::format("at most {} seconds, got {}", max_duration, duration));
+    return duration;
+}
+
+EngineOptions event_engine_options(const RenderRequest& request) {
+    if (request.engine != "fast" && request.engine != "classic") {
+        bad_option("--engine", fmt::format("must be fast or classic, got '{}'", request.engine));
+    }
+    (void)pq::parse_queue_kind(request.pq, "--pq");  // reject a bad --pq even for the fast engine
+    EngineOptions options;
+    options.engine = request.engine;
+    options.pq = request.pq;
+    return options;
+}
+
+EngineOptions time_engine_options(const RenderRequest& request, const Scene& scene, double interval,
+                                  std::vector<std::string>& notices) {
+    EngineOptions options;
+    options.engine = "time";
+    if (request.td_detect != "all-pairs" && request.td_detect != "grid") {
+        bad_option("--td-detect", fmt::format("must be all-pairs or grid, got '{}'", request.td_detect));
+    }
+    options.td_detect = request.td_detect;
+    const bool from_cli = request.dt.has_value();
+    // Without a dt anywhere: one step per frame, the coarsest that still lands on frame times.
+    options.dt = request.dt.value_or(scene.render.dt.value_or(interval));
+    require_positive(options.dt, from_cli ? "--dt" : "scene [render] dt", "time step");
+    if (options.dt > interval * (1.0 + divide_tolerance)) {
+        notices.push_back(fmt::format("dt = {:g} is longer than the frame interval {:g}: the time-driven "
+                                      "panel shows its latest step and changes every {:.3g} frames",
+                                      options.dt, interval, options.dt / interval));
+    } else if (!divides(options.dt, interval)) {
+        notices.push_back(fmt::format("warning: dt = {:g} does not divide the frame interval {:g}: the "
+                                      "time-driven panel shows its latest step, up to dt behind the frame time",
+                                      options.dt, interval));
+    }
+    return options;
+}
+
+render::RenderConfig render_config(const RenderRequest& request, const Scene& scene, int width, int height) {
+    render::RenderConfig config;
+    config.width = width;
+    config.height = height;
+    if (request.color) {
+        config.color_mode = render::parse_color_mode(*request.color, "--color");
+    } else if (scene.render.color_mode) {
+        config.color_mode = render::parse_color_mode(*scene.render.color_mode, "scene [render] color_mode");
+    }
+    // Fixed ranges for the whole video, so colours and histogram bins mean the same in every frame.
+    const double top = std::max(max_speed(scene), speed_range_in_rms * rms_speed(scene));
+    config.speed_min = 0.0;
+    config.speed_max = top > 0.0 ? top : 1.0;
+    if (!scene.discs.empty()) {
+        const auto [lightest, heaviest] = std::minmax_element(
+            scene.discs.begin(), scene.discs.end(), [](const Disc& a, const Disc& b) { return a.mass < b.mass; });
+        config.mass_min = lightest->mass;
+        config.mass_max = heaviest->mass;
+    }
+    config.trails = request.trails.value_or(scene.render.trails.value_or(true));
+    config.overlays = scene.render.overlays.value_or(true);
+    config.validate();
+    return config;
+}
+
+void plan_still_output(const RenderRequest& request, const Scene& scene, RenderPlan& plan) {
+    plan.kind = OutputKind::still;
+    if (request.format && *request.format != "png") {
+        bad_option("--format", fmt::format("a single frame is written as png, got '{}'", *request.format));
+    }
+    if (request.output) {
+        if (lowercase_extension(*request.output) != ".png") {
+            bad_option("-o", fmt::format("a single frame is a PNG image: give a .png path, got '{}'", *request.output));
+        }
+        plan.output = *request.output;
+    } else {
+        plan.output = std::filesystem::path(default_output_dir) / (output_stem(scene) + ".png");
+        plan.default_output = true;
+    }
+}
+
+video::VideoFormat format_of_path(const std::filesystem::path& path) {
+    const std::string ext = lowercase_extension(path);
+    if (ext == ".mp4") return video::VideoFormat::mp4;
+    if (ext == ".gif") return video::VideoFormat::gif;
+    if (ext == ".png") {
+        bad_option("-o", fmt::format("'{}' is a single image: use --last-frame or `collide thumbnail` for one "
+                                     "frame, or --format png for a directory of frames",
+                                     path.string()));
+    }
+    bad_option("-o", fmt::format("cannot tell the format of '{}': use a .mp4 or .gif path, or --format",
+                                 path.string()));
+}
+
+void plan_video_output(const RenderRequest& request, const Scene& scene, RenderPlan& plan) {
+    plan.kind = OutputKind::video;
+    if (request.format) {
+        plan.format = video::parse_video_format(*request.format, "--format");
+        if (request.output && plan.format != video::VideoFormat::png_sequence &&
+            format_of_path(*request.output) != plan.format) {
+            bad_option("-o", fmt::format("'{}' does not end in .{} (--format {})", *request.output,
+                                         video::to_string(plan.format), *request.format));
+        }
+    } else if (request.output) {
+        plan.format = format_of_path(*request.output);
+    }
+    if (request.output) {
+        plan.output = *request.output;
+        return;
+    }
+    plan.default_output = true;
+    const std::string stem = output_stem(scene);
+    switch (plan.format) {
+        case video::VideoFormat::mp4: plan.output = std::filesystem::path(default_output_dir) / (stem + ".mp4"); break;
+        case video::VideoFormat::gif: plan.output = std::filesystem::path(default_output_dir) / (stem + ".gif"); break;
+        case video::VideoFormat::png_sequence:
+            plan.output = std::filesystem::path(default_output_dir) / (stem + "_frames");
+            break;
+    }
+}
+
+}  // namespace
+
+RenderMode parse_render_mode(std::string_view text, std::string_view option) {
+    if (text == "both") return RenderMode::both;
+    if (text == "event") return RenderMode::event;
+    if (text == "time") return RenderMode::time;
+    bad_option(option, fmt::format("must be both, event or time, got '{}'", text));
+}
+
+QualityPreset quality_preset(std::string_view letter, std::string_view option) {
+    if (letter == "l") return {854, 480, 15};
+    if (letter == "m") return {1280, 720, 30};
+    if (letter == "h") return {1920, 1080, 60};
+    if (letter == "k") return {3840, 2160, 60};
+    bad_option(option, fmt::format("must be l (480p15), m (720p30), h (1080p60) or k (2160p60), got '{}'", letter));
+}
+
+FrameSize parse_frame_size(std::string_view text, std::string_view option) {
+    const auto bad = [&] {
+        bad_option(option, fmt::format("must be WIDTHxHEIGHT with each in {}..{}, e.g. 1280x720, got '{}'",
+                                       min_frame_side, max_frame_side, text));
+    };
+    const std::size_t x = text.find('x');
+    if (x == std::string_view::npos) bad();
+    FrameSize size;
+    const auto parse = [&](std::string_view part, int& out) {
+        const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), out);
+        if (part.empty() || error != std::errc{} || end != part.data() + part.size()) bad();
+        if (out < min_frame_side || out > max_frame_side) bad();
+    };
+    parse(text.substr(0, x), size.width);
+    parse(text.substr(x + 1), size.height);
+    return size;
+}
+
+double rms_speed(const Scene& scene) noexcept {
+    if (scene.discs.empty()) return 0.0;
+    double sum = 0.0;
+    for (const Disc& disc : scene.discs) sum += dot(disc.velocity, disc.velocity);
+    return std::sqrt(sum / static_cast<double>(scene.discs.size()));
+}
+
+double max_speed(const Scene& scene) noexcept {
+    double top = 0.0;
+    for (const Disc& disc : scene.discs) top = std::max(top, norm(disc.velocity));
+    return top;
+}
+
+SpeedChoice choose_speed(const Scene& scene, std::optional<double> cli) {
+    if (cli) {
+        require_positive(*cli, "--speed", "number of simulation time units per second");
+        return {*cli, "--speed", ""};
+    }
+    if (scene.render.speed) {
+        require_positive(*scene.render.speed, "scene [render] speed", "number of time units per second");
+        return {*scene.render.speed, "scene hint", ""};
+    }
+    const double typical = rms_speed(scene);
+    const double speed = scene.box.width / (crossing_seconds * typical);
+    if (!positive_finite(speed)) {
+        return {1.0, "fallback",
+                "nothing moves in this scene: showing 1 simulation time unit per second (set --speed)"};
+    }
+    return {speed, "derived", ""};
+}
+
+FrameClock video_clock(double duration, double speed, int fps) {
+    require_positive(duration, "--duration", "number of seconds");
+    require_positive(speed, "--speed", "number of simulation time units per second");
+    if (fps < 1) bad_option("--fps", fmt::format("must be >= 1, got {}", fps));
+    FrameClock clock;
+    clock.interval = speed / fps;
+    clock.count = std::max<std::int64_t>(1, std::llround(duration * fps));
+    clock.last_time = static_cast<double>(clock.count - 1) * clock.interval;
+    return clock;
+}
+
+FrameClock still_clock(double at, double speed, int fps, std::string_view option) {
+    if (!std::isfinite(at) || at < 0.0) bad_option(option, fmt::format("must be a time >= 0, got {}", at));
+    require_positive(speed, "--speed", "number of simulation time units per second");
+    FrameClock clock;
+    clock.interval = speed / fps;
+    const double steps = at / clock.interval;
+    auto whole = static_cast<std::int64_t>(std::floor(steps));
+    if (steps - static_cast<double>(whole) > 1.0 - snap_tolerance) ++whole;  // just under a frame time
+    const double on_grid = static_cast<double>(whole) * clock.interval;
+    if (std::abs(at - on_grid) <= snap_tolerance * clock.interval) {
+        clock.count = whole + 1;  // `at` is (within rounding) frame `whole`: take the video's time
+        clock.last_time = on_grid;
+    } else {
+        clock.count = whole + 2;  // frames 0..whole, then `at` itself
+        clock.last_time = at;
+    }
+    return clock;
+}
+
+double last_step_time(double t, double dt) noexcept {
+    if (!positive_finite(dt) || !(t > 0.0)) return t > 0.0 ? t : 0.0;
+    const double steps = std::floor(t / dt * (1.0 + divide_tolerance));
+    const double step_time = steps * dt;
+    // A frame time that is a whole number of steps (within rounding) is returned exactly.
+    if (std::abs(step_time - t) <= divide_tolerance * dt) return t;
+    return std::min(step_time, t);
+}
+
+bool divides(double dt, double interval) noexcept {
+    if (!positive_finite(dt) || !positive_finite(interval)) return false;
+    const double steps = interval / dt;
+    return std::abs(steps - std::round(steps)) <= divide_tolerance * std::max(1.0, steps);
+}
+
+RenderPlan plan_render(const RenderRequest& request, const Scene& scene) {
+    RenderPlan plan;
+    plan.mode = parse_render_mode(request.mode);
+    const QualityPreset preset = request.quality ? quality_preset(*request.quality) : QualityPreset{};
+    const FrameSize size = request.size ? parse_frame_size(*request.size) : FrameSize{preset.width, preset.height};
+    plan.width = size.width;
+    plan.height = size.height;
+    plan.fps = choose_fps(request, preset);
+    plan.duration = choose_duration(request, scene);
+    plan.speed = choose_speed(scene, request.speed);
+    if (!plan.speed.notice.empty()) plan.notices.push_back(plan.speed.notice);
+    const FrameClock video = video_clock(plan.duration, plan.speed.speed, plan.fps);
+    plan.event_engine = event_engine_options(request);
+    std::vector<std::string> dt_notices;
+    plan.time_engine = time_engine_options(request, scene, video.interval, dt_notices);
+    if (plan.mode != RenderMode::event) {
+        plan.notices.insert(plan.notices.end(), dt_notices.begin(), dt_notices.end());
+    }
+    plan.render = render_config(request, scene, plan.width, plan.height);
+    if (request.still || request.last_frame) {
+        plan_still_output(request, scene, plan);
+        plan.clock = request.at ? still_clock(*request.at, plan.speed.speed, plan.fps) : video;
+    } else {
+        if (request.at) bad_option("--at", "only for `collide thumbnail`");
+        plan_video_output(request, scene, plan);
+        plan.clock = video;
+    }
+    return plan;
+}
+
+std::string time_panel_title(double dt) { return fmt::format("Time-driven, dt = {:.3g}", dt); }
+
+std::string event_panel_title(const EngineOptions& options) {
+    if (options.engine == "classic") return fmt::format("Event-driven (priority queue: {})", options.pq);
+    return "Event-driven (priority queue)";
+}
+
+std::string short_count(double value) {
+    const double magnitude = std::abs(value);
+    if (magnitude >= 1e9) return fmt::format("{:.2f}G", value / 1e9);
+    if (magnitude >= 1e6) return fmt::format("{:.2f}M", value / 1e6);
+    if (magnitude >= 1e4) return fmt::format("{:.1f}k", value / 1e3);
+    return fmt::format("{:.0f}", value);
+}
+
+}  // namespace collide::app

@@ -1,0 +1,164 @@
+#pragma once
+/// \file
+/// What `collide render` / `collide thumbnail` will do, decided before anything is rendered:
+/// the options the user typed (RenderRequest) resolved against the scene's [render] hints and the
+/// defaults into one RenderPlan. Precedence everywhere: command line > scene hint > default.
+/// Pure functions (no GL, no files): unit-tested in collide_render_plan_tests.
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "collide/render/renderer.hpp"
+#include "collide/scene.hpp"
+#include "collide/sim/engine.hpp"
+#include "collide/video/video_writer.hpp"
+
+namespace collide::app {
+
+/// Which simulations appear in the video.
+enum class RenderMode {
+    both,   ///< time-driven left, event-driven right, same scene and simulation time
+    event,  ///< the event-driven engine alone
+    time,   ///< the time-driven engine alone
+};
+
+/// "both" / "event" / "time"; throws Error(input) naming `option` otherwise.
+[[nodiscard]] RenderMode parse_render_mode(std::string_view text, std::string_view option = "--mode");
+
+/// A frame size and rate preset, as in manim's -ql/-qm/-qh/-qk.
+struct QualityPreset {
+    int width = 1280;
+    int height = 720;
+    int fps = 30;
+};
+
+/// l = 854x480@15, m = 1280x720@30, h = 1920x1080@60, k = 3840x2160@60.
+/// Throws Error(input) naming `option` for any other letter.
+[[nodiscard]] QualityPreset quality_preset(std::string_view letter, std::string_view option = "-q");
+
+/// Parses "WxH" (e.g. "1280x720"), both in [64, 8192]. Throws Error(input) naming `option`.
+struct FrameSize {
+    int width = 0;
+    int height = 0;
+};
+[[nodiscard]] FrameSize parse_frame_size(std::string_view text, std::string_view option = "--size");
+
+/// Root mean square speed of the scene's discs at t = 0 (all discs, resting ones included, so a
+/// few fast discs among many resting ones still set the pace). 0 when nothing moves.
+[[nodiscard]] double rms_speed(const Scene& scene) noexcept;
+/// Largest disc speed at t = 0.
+[[nodiscard]] double max_speed(const Scene& scene) noexcept;
+
+/// Seconds of video in which a typical disc crosses the box when the speed is derived.
+inline constexpr double crossing_seconds = 10.0;
+
+/// The playback speed (simulation time units per second of video) and where it came from.
+struct SpeedChoice {
+    double speed = 1.0;
+    std::string source;  ///< "--speed", "scene hint", "derived" or "fallback"
+    std::string notice;  ///< non-empty when the user should know (e.g. nothing moves)
+};
+
+/// `cli` if given, else the scene's [render] speed hint, else box width / (crossing_seconds *
+/// rms speed) so that algs4 files with speeds of 0.01 and molecular-scale fluids both look right;
+/// a scene where nothing moves falls back to 1 with a notice. O(N).
+[[nodiscard]] SpeedChoice choose_speed(const Scene& scene, std::optional<double> cli);
+
+/// When each frame is taken, in simulation time. Frame k is at exactly k * interval, except the
+/// last one, which is at `last_time` (a thumbnail at a time between two frame times).
+struct FrameClock {
+    double interval = 1.0 / 30.0;  ///< simulation time between frames = speed / fps
+    std::int64_t count = 1;        ///< frames, >= 1
+    double last_time = 0.0;        ///< time of frame count - 1
+
+    [[nodiscard]] double time(std::int64_t k) const noexcept {
+        return k + 1 == count ? last_time : static_cast<double>(k) * interval;
+    }
+};
+
+/// A video of `duration` seconds at `fps`: round(duration * fps) frames (at least 1), frame k at
+/// k * speed / fps. Throws Error(input) if duration, speed or fps is not positive and finite.
+[[nodiscard]] FrameClock video_clock(double duration, double speed, int fps);
+
+/// The frames a still image at simulation time `at` goes through: every frame time of the video
+/// clock up to `at`, then `at` itself (snapped onto a frame time within 1e-9 of an interval), so
+/// the time-driven engine takes exactly the steps the video takes and a thumbnail at the video's
+/// last frame time equals that frame. Throws Error(input) naming `option` for a negative `at`.
+[[nodiscard]] FrameClock still_clock(double at, double speed, int fps, std::string_view option = "--at");
+
+/// The time of the time-driven engine's last whole step at or before frame time t: the naive
+/// method only has states at multiples of dt, so a frame shows its latest step rather than
+/// shortening steps to land on frame times (which would hide the tunnelling a large dt causes).
+/// Returns t itself when t is a whole number of steps (relative tolerance 1e-6).
+[[nodiscard]] double last_step_time(double t, double dt) noexcept;
+
+/// True when `dt` divides `interval` into a whole number of steps (relative tolerance 1e-6),
+/// i.e. the time-driven engine lands on every frame time without a shorter final step.
+[[nodiscard]] bool divides(double dt, double interval) noexcept;
+
+/// Everything the user may type; unset = take the scene hint or the default.
+struct RenderRequest {
+    std::string scene;                   ///< file or built-in name
+    std::optional<std::string> output;   ///< -o
+    std::string mode = "both";           ///< --mode
+    std::optional<std::string> quality;  ///< -q
+    std::optional<std::string> size;     ///< --size WxH
+    std::optional<int> fps;              ///< --fps
+    std::optional<double> duration;      ///< --duration (seconds of video)
+    std::optional<double> speed;         ///< --speed (simulation time per second of video)
+    std::optional<double> dt;            ///< --dt (time-driven quantum)
+    std::string engine = "fast";         ///< --engine (the event-driven one)
+    std::string pq = "binary";           ///< --pq (classic engine's queue)
+    std::string td_detect = "all-pairs"; ///< --td-detect (time-driven overlap checks)
+    std::optional<std::string> color;    ///< --color
+    std::optional<bool> trails;          ///< --trails / --no-trails
+    std::optional<std::string> format;   ///< --format mp4|gif|png
+    bool last_frame = false;             ///< --last-frame: write only the last frame as a PNG
+    std::optional<double> at;            ///< thumbnail --at (simulation time)
+    bool still = false;                  ///< true for `collide thumbnail` (PNG output)
+};
+
+/// What kind of file comes out.
+enum class OutputKind {
+    video,  ///< MP4 or GIF or PNG sequence through video::VideoWriter
+    still,  ///< one PNG (thumbnail, --last-frame)
+};
+
+/// The resolved plan. Every field is valid once plan_render returned.
+struct RenderPlan {
+    RenderMode mode = RenderMode::both;
+    int width = 1280;
+    int height = 720;
+    int fps = 30;
+    double duration = 10.0;  ///< seconds of video (still: the video it is a frame of)
+    SpeedChoice speed;
+    FrameClock clock;
+    EngineOptions event_engine;  ///< engine "fast" or "classic"
+    EngineOptions time_engine;   ///< engine "time", with the dt in use
+    render::RenderConfig render;
+    OutputKind kind = OutputKind::video;
+    video::VideoFormat format = video::VideoFormat::mp4;
+    std::filesystem::path output;
+    bool default_output = false;         ///< output derived from the scene name (under out/)
+    std::vector<std::string> notices;    ///< one-line remarks to print before rendering
+};
+
+/// Default output directory for derived paths.
+inline constexpr const char* default_output_dir = "out";
+
+/// Resolves `request` against `scene` (already loaded and validated). Throws Error(input) naming
+/// the first bad option. Touches no file: the caller checks that `output` is writable.
+[[nodiscard]] RenderPlan plan_render(const RenderRequest& request, const Scene& scene);
+
+/// Panel titles, fixed text shared by the renderer call and the tests.
+[[nodiscard]] std::string time_panel_title(double dt);
+[[nodiscard]] std::string event_panel_title(const EngineOptions& options);
+
+/// "1.23k", "4.56M": short counts for on-screen counters.
+[[nodiscard]] std::string short_count(double value);
+
+}  // namespace collide::app

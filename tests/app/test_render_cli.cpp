@@ -1,0 +1,208 @@
+// End-to-end tests of `collide render` and `collide thumbnail`: the files a user gets, read back.
+#include <doctest/doctest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "collide/image.hpp"
+#include "collide/video/png.hpp"
+#include "run_collide.hpp"
+
+namespace fs = std::filesystem;
+using collide::Image;
+using collide::test::run_collide;
+
+namespace {
+
+/// A fresh directory for one test's outputs, removed afterwards.
+struct TempDir {
+    fs::path path;
+    explicit TempDir(const std::string& name)
+        : path(fs::temp_directory_path() / ("collide_render_test_" + name + "_" + std::to_string(::getpid()))) {
+        fs::remove_all(path);
+        fs::create_directories(path);
+    }
+    ~TempDir() { fs::remove_all(path); }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+};
+
+std::string read_bytes(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// Runs a shell command and returns its standard output.
+std::string capture(const std::string& cmd) {
+    std::string out;
+    FILE* pipe = popen(cmd.c_str(), "r");
+    if (pipe == nullptr) return out;
+    char buf[512];
+    while (std::fgets(buf, sizeof buf, pipe) != nullptr) out += buf;
+    pclose(pipe);
+    return out;
+}
+
+bool have_ffprobe() { return std::system("ffprobe -version >/dev/null 2>&1") == 0; }
+
+/// Share of pixels where some channel differs by more than 2 (the golden-image tolerance).
+double share_of_differing_pixels(const Image& a, const Image& b) {
+    if (a.width != b.width || a.height != b.height) return 1.0;
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < a.rgba.size(); i += 4) {
+        for (std::size_t c = 0; c < 4; ++c) {
+            if (std::abs(int(a.rgba[i + c]) - int(b.rgba[i + c])) > 2) {
+                ++differing;
+                break;
+            }
+        }
+    }
+    return static_cast<double>(differing) / (static_cast<double>(a.rgba.size()) / 4.0);
+}
+
+/// Compares a thumbnail with tests/app/golden/<name>.png (per-channel difference <= 2 on at most
+/// 0.1% of the pixels); COLLIDE_UPDATE_GOLDENS=1 rewrites the golden instead.
+void check_golden(const fs::path& image_path, const std::string& name) {
+    const fs::path golden = fs::path(COLLIDE_TESTS_DIR) / "app" / "golden" / (name + ".png");
+    const Image image = collide::video::read_png(image_path);
+    const char* update = std::getenv("COLLIDE_UPDATE_GOLDENS");
+    if (update != nullptr && std::string(update) == "1") {
+        fs::create_directories(golden.parent_path());
+        collide::video::write_png(image, golden);
+        MESSAGE("golden rewritten: " << golden.string());
+        return;
+    }
+    REQUIRE_MESSAGE(fs::exists(golden), "missing golden " << golden.string() << " (COLLIDE_UPDATE_GOLDENS=1)");
+    CHECK_MESSAGE(share_of_differing_pixels(image, collide::video::read_png(golden)) <= 0.001, name);
+}
+
+}  // namespace
+
+TEST_CASE("render: a 2-second side-by-side MP4 that plays everywhere") {
+    if (!have_ffprobe()) {
+        MESSAGE("ffprobe not installed: skipped");
+        return;
+    }
+    TempDir dir("mp4");
+    const fs::path out = dir.path / "t.mp4";
+    const auto r = run_collide("render tunnelling --size 320x180 --fps 12 --duration 2 --progress none -o " +
+                               out.string());
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    CHECK(r.output.find("24 frames") != std::string::npos);
+    const std::string probe = capture(
+        "ffprobe -v error -select_streams v:0 -count_frames -show_entries "
+        "stream=codec_name,pix_fmt,width,height,nb_read_frames,r_frame_rate:format=duration -of default=nw=1 " +
+        out.string());
+    CHECK(probe.find("codec_name=h264") != std::string::npos);
+    CHECK(probe.find("pix_fmt=yuv420p") != std::string::npos);
+    CHECK(probe.find("width=320") != std::string::npos);
+    CHECK(probe.find("height=180") != std::string::npos);
+    CHECK(probe.find("nb_read_frames=24") != std::string::npos);
+    CHECK(probe.find("r_frame_rate=12/1") != std::string::npos);
+    CHECK(probe.find("duration=2.0") != std::string::npos);
+}
+
+TEST_CASE("render: the same scene and options give a byte-identical file") {
+    TempDir dir("determinism");
+    const std::string args = "render gas --size 320x180 --fps 10 --duration 1 --progress none -o ";
+    const auto a = run_collide(args + (dir.path / "a.mp4").string());
+    const auto b = run_collide(args + (dir.path / "b.mp4").string());
+    REQUIRE_MESSAGE(a.exit_code == 0, a.output);
+    REQUIRE_MESSAGE(b.exit_code == 0, b.output);
+    const std::string bytes = read_bytes(dir.path / "a.mp4");
+    CHECK(bytes.size() > 1000);
+    CHECK(bytes == read_bytes(dir.path / "b.mp4"));
+}
+
+TEST_CASE("render --last-frame equals thumbnail --at the end time") {
+    TempDir dir("last");
+    // 1 s at 10 fps and speed 0.5: the last frame (k = 9) is at t = 0.45
+    const auto last = run_collide("render gas --size 320x180 --fps 10 --duration 1 --speed 0.5 --last-frame "
+                                  "--progress none -o " + (dir.path / "last.png").string());
+    REQUIRE_MESSAGE(last.exit_code == 0, last.output);
+    const auto thumb = run_collide("thumbnail gas --size 320x180 --fps 10 --speed 0.5 --at 0.45 -o " +
+                                   (dir.path / "thumb.png").string());
+    REQUIRE_MESSAGE(thumb.exit_code == 0, thumb.output);
+    const Image a = collide::video::read_png(dir.path / "last.png");
+    const Image b = collide::video::read_png(dir.path / "thumb.png");
+    CHECK(a.width == 320);
+    CHECK(share_of_differing_pixels(a, b) == 0.0);
+}
+
+TEST_CASE("thumbnail: every built-in scene in both modes matches its golden image") {
+    TempDir dir("golden");
+    const std::string list = run_collide("scenes").output;
+    int scenes = 0;
+    for (const char* name : {"billiards", "brownian", "dense-fluid", "diffusion", "gas", "maxwell-boltzmann",
+                             "newtons-cradle", "tunnelling"}) {
+        CHECK_MESSAGE(list.find(name) != std::string::npos, name);
+        const fs::path out = dir.path / (std::string(name) + ".png");
+        const auto r = run_collide(std::string("thumbnail ") + name + " --size 320x180 --fps 10 --at 0.05 -o " +
+                                   out.string());
+        REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+        check_golden(out, name);
+        ++scenes;
+    }
+    CHECK(scenes == 8);
+}
+
+TEST_CASE("thumbnail: event-only and time-only modes render one panel each") {
+    TempDir dir("modes");
+    for (const char* mode : {"event", "time"}) {
+        const fs::path out = dir.path / (std::string(mode) + ".png");
+        const auto r = run_collide(std::string("thumbnail newtons-cradle --size 320x180 --at 0.5 --mode ") + mode +
+                                   " -o " + out.string());
+        REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+        check_golden(out, std::string("newtons-cradle-") + mode);
+    }
+}
+
+TEST_CASE("render: bad options and scenes exit 2 with a message and create no output") {
+    TempDir dir("bad");
+    const fs::path out = dir.path / "x.mp4";
+    const std::string o = " -o " + out.string();
+    struct Case {
+        std::string args;
+        std::string mentions;
+    };
+    const Case cases[] = {
+        {"render no-such-scene --progress none" + o, "no-such-scene"},
+        {"render gas --mode sideways --progress none" + o, "--mode"},
+        {"render gas -q z --progress none" + o, "-q"},
+        {"render gas --size 12x34x56 --progress none" + o, "--size"},
+        {"render gas --fps 0 --progress none" + o, "--fps"},
+        {"render gas --duration -3 --progress none" + o, "--duration"},
+        {"render gas --dt 0 --progress none" + o, "--dt"},
+        {"render gas --engine warp --progress none" + o, "--engine"},
+        {"render gas --pq fibonacci --engine classic --progress none" + o, "--pq"},
+        {"render gas --format avi --progress none" + o, "--format"},
+        {"render gas --progress none -o /nonexistent-dir/x.mp4", "/nonexistent-dir"},
+        {"thumbnail gas --at -1 -o " + (dir.path / "x.png").string(), "--at"},
+    };
+    for (const Case& c : cases) {
+        const auto r = run_collide(c.args);
+        CHECK_MESSAGE(r.exit_code == 2, c.args << "\n" << r.output);
+        CHECK_MESSAGE(r.output.find(c.mentions) != std::string::npos, c.args << "\n" << r.output);
+    }
+    CHECK(fs::is_empty(dir.path));  // nothing written, not even a temporary
+}
+
+TEST_CASE("thumbnail --seed: the same seed gives the same picture, another seed another one") {
+    TempDir dir("seed");
+    const auto shot = [&](const std::string& seed, const std::string& name) {
+        const fs::path out = dir.path / name;
+        const auto r = run_collide("thumbnail maxwell-boltzmann --size 320x180 --at 0 --mode event --seed " + seed +
+                                   " -o " + out.string());
+        REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+        return collide::video::read_png(out);
+    };
+    const Image a = shot("5", "a.png");
+    const Image b = shot("5", "b.png");
+    const Image c = shot("6", "c.png");
+    CHECK(share_of_differing_pixels(a, b) == 0.0);
+    CHECK(share_of_differing_pixels(a, c) > 0.01);
+    CHECK(run_collide("thumbnail gas --seed banana -o " + (dir.path / "d.png").string()).exit_code == 2);
+}

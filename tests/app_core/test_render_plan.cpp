@@ -1,0 +1,173 @@
+// The pure pieces of `collide render`: presets, sizes, speed derivation, frame clocks, dt steps,
+// option precedence (command line > scene hint > default).
+#include <doctest/doctest.h>
+
+#include "collide/error.hpp"
+#include "pipeline.hpp"
+#include "render_plan.hpp"
+
+using namespace collide;
+using namespace collide::app;
+
+namespace {
+
+Scene two_disc_scene(double speed) {
+    Scene s;
+    s.name = "two";
+    s.box = Box{2.0, 1.0, Boundary::walls};
+    s.discs.push_back(Disc{{0.5, 0.5}, {speed, 0.0}, 0.05, 1.0, {}, ""});
+    s.discs.push_back(Disc{{1.5, 0.5}, {-speed, 0.0}, 0.05, 1.0, {}, ""});
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("quality presets are the manim-like l/m/h/k sizes and rates") {
+    CHECK(quality_preset("l").width == 854);
+    CHECK(quality_preset("l").fps == 15);
+    CHECK(quality_preset("m").height == 720);
+    CHECK(quality_preset("h").fps == 60);
+    CHECK(quality_preset("k").width == 3840);
+    CHECK_THROWS_AS((void)quality_preset("x"), Error);
+}
+
+TEST_CASE("--size parses WxH and names the option when it is bad") {
+    const FrameSize s = parse_frame_size("640x360");
+    CHECK(s.width == 640);
+    CHECK(s.height == 360);
+    for (const char* bad : {"640", "x360", "640x", "0x360", "640x-2", "abcxdef", "99999x10"}) {
+        try {
+            (void)parse_frame_size(bad);
+            FAIL("accepted " << bad);
+        } catch (const Error& e) {
+            CHECK(e.exit_code() == 2);
+            CHECK(std::string(e.what()).find("--size") != std::string::npos);
+        }
+    }
+}
+
+TEST_CASE("the derived speed makes a typical disc cross the box in about ten seconds of video") {
+    const Scene slow = two_disc_scene(0.01);  // algs4-like speeds
+    const SpeedChoice a = choose_speed(slow, std::nullopt);
+    CHECK(a.source == "derived");
+    CHECK(a.speed == doctest::Approx(2.0 / (crossing_seconds * 0.01)));
+    const Scene fast = two_disc_scene(100.0);  // molecular-scale speeds
+    CHECK(choose_speed(fast, std::nullopt).speed == doctest::Approx(2.0 / (crossing_seconds * 100.0)));
+    // the command line beats the scene hint, which beats the derivation
+    Scene hinted = slow;
+    hinted.render.speed = 3.0;
+    CHECK(choose_speed(hinted, std::nullopt).speed == 3.0);
+    CHECK(choose_speed(hinted, 5.0).speed == 5.0);
+}
+
+TEST_CASE("a scene where nothing moves falls back with a notice instead of dividing by zero") {
+    const SpeedChoice c = choose_speed(two_disc_scene(0.0), std::nullopt);
+    CHECK(c.speed > 0.0);
+    CHECK_FALSE(c.notice.empty());
+}
+
+TEST_CASE("frame k is at exactly k * speed / fps") {
+    const FrameClock clock = video_clock(2.0, 0.5, 15);
+    CHECK(clock.count == 30);
+    CHECK(clock.time(0) == 0.0);
+    CHECK(clock.time(10) == doctest::Approx(10 * 0.5 / 15).epsilon(1e-15));
+    CHECK(clock.time(29) == doctest::Approx(29 * 0.5 / 15));
+    CHECK_THROWS_AS((void)video_clock(0.0, 1.0, 30), Error);
+    CHECK_THROWS_AS((void)video_clock(1.0, -1.0, 30), Error);
+}
+
+TEST_CASE("the time-driven panel shows its last whole step at or before the frame time") {
+    CHECK(last_step_time(0.0, 0.04) == 0.0);
+    CHECK(last_step_time(0.03, 0.04) == 0.0);               // before the first step ends
+    CHECK(last_step_time(0.05, 0.04) == doctest::Approx(0.04));
+    CHECK(last_step_time(0.12, 0.04) == 0.12);              // a whole number of steps: exact
+    CHECK(last_step_time(0.1, 0.01) == 0.1);                 // dt divides the interval: lands on t
+    double previous = 0.0;
+    for (int k = 0; k < 200; ++k) {  // never goes backwards from frame to frame
+        const double t = last_step_time(k / 75.0, 0.04);
+        CHECK(t >= previous);
+        CHECK(t <= k / 75.0 + 1e-12);
+        previous = t;
+    }
+}
+
+TEST_CASE("dt divides the frame interval, or the plan says what the panel will show") {
+    CHECK(divides(0.01, 0.05));
+    CHECK_FALSE(divides(0.03, 0.05));
+    RenderRequest request;
+    request.scene = "two";
+    request.size = "320x180";
+    request.fps = 10;
+    request.speed = 0.1;  // frame interval 0.01
+    request.dt = 0.04;
+    const RenderPlan plan = plan_render(request, two_disc_scene(0.1));
+    CHECK(plan.time_engine.dt == 0.04);
+    REQUIRE_FALSE(plan.notices.empty());
+    CHECK(plan.notices.front().find("latest step") != std::string::npos);
+}
+
+TEST_CASE("plan_render: command line over scene hints over defaults, and the default output path") {
+    Scene scene = two_disc_scene(0.1);
+    scene.render.duration = 3.0;
+    scene.render.color_mode = "speed";
+    RenderRequest request;
+    request.scene = "two";
+    RenderPlan plan = plan_render(request, scene);
+    CHECK(plan.duration == 3.0);
+    CHECK(plan.render.color_mode == render::ColorMode::speed);
+    CHECK(plan.width == 1280);
+    CHECK(plan.fps == 30);
+    CHECK(plan.output == std::filesystem::path("out") / "two.mp4");
+    CHECK(plan.mode == RenderMode::both);
+    request.duration = 1.0;
+    request.color = "scene";
+    request.quality = "l";
+    plan = plan_render(request, scene);
+    CHECK(plan.duration == 1.0);
+    CHECK(plan.render.color_mode == render::ColorMode::scene);
+    CHECK(plan.width == 854);
+    CHECK(plan.clock.count == 15);
+}
+
+TEST_CASE("plan_render rejects bad options with the option's name") {
+    const Scene scene = two_disc_scene(0.1);
+    const auto rejects = [&](auto&& edit, const char* option) {
+        RenderRequest request;
+        request.scene = "two";
+        edit(request);
+        try {
+            (void)plan_render(request, scene);
+            FAIL("accepted a bad " << option);
+        } catch (const Error& e) {
+            CHECK(e.exit_code() == 2);
+            CHECK_MESSAGE(std::string(e.what()).find(option) != std::string::npos, e.what());
+        }
+    };
+    rejects([](RenderRequest& r) { r.mode = "sideways"; }, "--mode");
+    rejects([](RenderRequest& r) { r.fps = 0; }, "--fps");
+    rejects([](RenderRequest& r) { r.duration = -1.0; }, "--duration");
+    rejects([](RenderRequest& r) { r.dt = 0.0; }, "--dt");
+    rejects([](RenderRequest& r) { r.color = "rainbow"; }, "--color");
+    rejects([](RenderRequest& r) { r.format = "avi"; }, "--format");
+}
+
+TEST_CASE("on-screen counters are deterministic counts, the same for the same measurements") {
+    Measurements m;
+    m.t = 2.0;
+    m.steps = 200;
+    m.overlap_checks = 1'000'000;
+    m.missed_collisions = 7;
+    m.escaped = 2;
+    const auto td = time_driven_counters(m, 0.01, 1e-3);
+    CHECK(td == time_driven_counters(m, 0.01, 1e-3));
+    const auto joined = [](const std::vector<std::string>& lines) {
+        std::string all;
+        for (const auto& l : lines) all += l + "\n";
+        return all;
+    };
+    CHECK(joined(td).find("missed  7") != std::string::npos);
+    CHECK(joined(td).find("escaped  2") != std::string::npos);
+    CHECK(joined(event_driven_counters(m, 0.0)).find("events") != std::string::npos);
+    CHECK(comparison_notes(RenderMode::both).size() == 1);
+    CHECK(comparison_notes(RenderMode::event).empty());
+}

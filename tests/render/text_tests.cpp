@@ -1,0 +1,104 @@
+// Text through stb_truetype: titles, counters and the time produce glyph pixels where the layout
+// puts the header and the strip; no text, no glyph pixels.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+
+#include "collide/error.hpp"
+#include "font.hpp"
+#include "layout.hpp"
+#include "render_fixtures.hpp"
+
+namespace collide::render {
+namespace {
+
+/// Pixels in `r` that are bright (text is near-white on the dark background).
+int bright_pixels(const Image& image, RectF r) {
+    int count = 0;
+    for (int y = static_cast<int>(r.y0); y < static_cast<int>(r.y1); ++y) {
+        for (int x = static_cast<int>(r.x0); x < static_cast<int>(r.x1); ++x) {
+            if (test::rgb_at(image, x, y).g > 120)
+                ++count;
+        }
+    }
+    return count;
+}
+
+TEST_CASE("titles, counters and time text put glyphs in the header and the strip") {
+    const RenderConfig config = test::small_config(true);
+    if (!std::filesystem::exists(config.font_path)) {
+        MESSAGE("SKIP: no DejaVu Sans at " << config.font_path);
+        return;
+    }
+    Renderer renderer(config, Backend::osmesa);
+    const Snapshot s = test::gas_snapshot(0, 0.05, {1.0, 1.0, Boundary::walls}, 1);
+    FrameContent blank;  // same layout as `titled` (one counter row), but no text in it
+    blank.panels = {{&s, "", {""}}};
+    FrameContent titled;
+    titled.panels = {{&s, "Event-driven", {"events 1234"}}};
+    titled.time_text = "t = 3.25";
+    const Image without = renderer.render(blank);
+    const Image with = renderer.render(titled);
+    test::dump_if_requested(with, "text_header");
+
+    const FontAtlas font(config.font_path, font_pixel_height(config.height));
+    const FrameLayout layout = compute_layout(config, {s.box}, font.line_height());
+    const RectF header = layout.panels[0].header;
+    CHECK(bright_pixels(without, header) == 0);
+    const int glyphs = bright_pixels(with, header);
+    CHECK(glyphs > 40);  // two short lines of ~11 px text
+    CHECK(glyphs < static_cast<int>(0.5F * header.width() * header.height()));  // not a filled box
+    CHECK(bright_pixels(with, layout.strip) > bright_pixels(without, layout.strip) + 10);
+}
+
+TEST_CASE("a 480p two-panel frame shows the speed legend's colour bar in the strip") {
+    RenderConfig config;
+    config.width = 854;
+    config.height = 480;
+    config.color_mode = ColorMode::speed;
+    config.speed_max = 1.5;
+    if (!std::filesystem::exists(config.font_path)) {
+        MESSAGE("SKIP: no DejaVu Sans at " << config.font_path);
+        return;
+    }
+    Renderer renderer(config, Backend::osmesa);
+    Snapshot left = test::gas_snapshot(200, 0.015, {1.0, 1.0, Boundary::walls}, 8, 4.0);
+    const Snapshot right = test::gas_snapshot(200, 0.015, {1.0, 1.0, Boundary::periodic}, 8, 4.0);
+    left.overlapping_pairs = {{10, 11}};
+    left.missed_collisions = {{0.3, 0.6}};
+    FrameContent frame;
+    frame.panels = {{&left, "Time-driven, dt = 0.02", {"steps 200", "checks 3.9M", "missed 17"}},
+                    {&right, "Event-driven (priority queue)", {"events 1840", "queue 412"}}};
+    frame.time_text = "t = 4.00   (x0.5 speed)";
+    frame.energy_drift = {{{0.0, 0.0}, {2.0, 0.004}, {4.0, 0.011}}, {{0.0, 0.0}, {4.0, 0.0}}};
+    frame.notes = {"red halo: overlapping discs", "yellow flash: missed collision"};
+    const Image image = renderer.render(frame);
+    test::dump_if_requested(image, "frame_480p");
+
+    const FontAtlas font(config.font_path, font_pixel_height(config.height));
+    const RectF strip = compute_layout(config, {left.box, right.box}, font.line_height()).strip;
+    const auto in_strip = [&](Rgb8 c) {
+        return test::count_near(image, c, 0, static_cast<int>(strip.x0), static_cast<int>(strip.y0),
+                                static_cast<int>(strip.x1), static_cast<int>(strip.y1));
+    };
+    constexpr int segments = 32;  // renderer.cpp's legend
+    CHECK(in_strip(colormap(0.5 / segments)) > 10);
+    CHECK(in_strip(colormap((segments - 0.5) / segments)) > 10);
+}
+
+TEST_CASE("a missing font file is a runtime error naming it") {
+    RenderConfig config = test::small_config(true);
+    config.font_path = "/nonexistent/font.ttf";
+    CHECK_THROWS_WITH_AS(Renderer(config, Backend::osmesa),
+                         doctest::Contains("/nonexistent/font.ttf"), Error);
+}
+
+TEST_CASE("UTF-8 decoding: multi-byte characters become one code point each") {
+    const std::vector<std::uint32_t> points = decode_utf8("t \xC2\xB7 \xC3\xA9");
+    REQUIRE(points.size() == 5);
+    CHECK(points[2] == 0xB7);
+    CHECK(points[4] == 0xE9);
+}
+
+}  // namespace
+}  // namespace collide::render
