@@ -9,7 +9,7 @@
 #include <utility>
 
 #if defined(__linux__)
-#include <sys/mman.h>  // madvise: a hint only, see reserve_on_huge_pages
+#include <sys/mman.h>  // madvise: a hint only, see advise_huge_pages
 #endif
 
 #include "collide/error.hpp"
@@ -43,7 +43,6 @@ void reserve_on_huge_pages(std::vector<T>& v, std::size_t n) {
     v.reserve(n);
     advise_huge_pages(v.data(), n * sizeof(T));
 }
-
 
 /// Cells are this much wider than the largest small-disc diameter, so that a disc sitting a
 /// rounding error outside its cell still only reaches the neighbouring cells.
