@@ -8,10 +8,6 @@
 #include <tuple>
 #include <utility>
 
-#if defined(__linux__)
-#include <sys/mman.h>  // madvise: a hint only, see advise_huge_pages
-#endif
-
 #include "collide/error.hpp"
 #include "collide/sim/kinematics.hpp"
 
@@ -20,29 +16,6 @@ namespace collide::sim {
 namespace {
 
 using kinematics::never;
-
-/// Asks the kernel to back [p, p + bytes) with 2 MiB pages (the whole huge pages inside it),
-/// which takes effect for memory not touched yet. Events are random in space, so at 10^5-10^6
-/// discs almost every record access also missed the TLB (the records alone are 64 MB at 10^6
-/// discs, 16k pages of 4 KiB); huge pages cut that page walk. Only a hint: where it is
-/// unsupported or refused, nothing changes but speed.
-inline void advise_huge_pages([[maybe_unused]] const void* p, [[maybe_unused]] std::size_t bytes) noexcept {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    constexpr std::uintptr_t huge_page = std::uintptr_t{2} << 20;
-    auto begin = reinterpret_cast<std::uintptr_t>(p);
-    auto end = begin + bytes;
-    begin = (begin + huge_page - 1) & ~(huge_page - 1);
-    end &= ~(huge_page - 1);
-    if (end > begin) (void)madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
-#endif
-}
-
-/// Reserves room for n elements on huge pages (see advise_huge_pages), before the first touch.
-template <class T>
-void reserve_on_huge_pages(std::vector<T>& v, std::size_t n) {
-    v.reserve(n);
-    advise_huge_pages(v.data(), n * sizeof(T));
-}
 
 /// Cells are this much wider than the largest small-disc diameter, so that a disc sitting a
 /// rounding error outside its cell still only reaches the neighbouring cells.
@@ -126,7 +99,7 @@ void FastEngine::choose_grid(const Scene& scene) {
     ny_ = ny;
     cw_ = box_.width / nx_;
     ch_ = box_.height / ny_;
-    reserve_on_huge_pages(head_, static_cast<std::size_t>(nx_) * ny_);
+    head_.reserve(static_cast<std::size_t>(nx_) * ny_);
     head_.assign(static_cast<std::size_t>(nx_) * ny_, no_disc);
 }
 
@@ -175,11 +148,11 @@ void FastEngine::place_discs(const Scene& scene) {
     const std::size_t n = scene.discs.size();
     if (n >= Key::index_mask) throw_input_error("", 0, "discs", "too many discs for the fast engine (at most 2^30 - 2)");
     scene_index_ = locality_order(scene);
-    reserve_on_huge_pages(p_, n);
-    reserve_on_huge_pages(prev_, n);
-    reserve_on_huge_pages(count_, n);
-    reserve_on_huge_pages(partner_count_, n);
-    reserve_on_huge_pages(last_partner_, n);
+    p_.reserve(n);
+    prev_.reserve(n);
+    count_.reserve(n);
+    partner_count_.reserve(n);
+    last_partner_.reserve(n);
     p_.resize(n);
     prev_.assign(n, no_disc);
     count_.assign(n, 0);
@@ -189,7 +162,6 @@ void FastEngine::place_discs(const Scene& scene) {
     start_.resize(n);
     heap_.reserve_handles(n);
     // The key and handle arrays are reserved but untouched yet (the position map is not).
-    heap_.for_each_storage(advise_huge_pages);
     for (std::uint32_t i = 0; i < n; ++i) {
         const Disc& d = scene.discs[scene_index_[i]];
         const Vec2 pos = box_.wrap(d.position);

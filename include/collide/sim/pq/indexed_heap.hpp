@@ -133,15 +133,6 @@ public:
         return (heap_.capacity() + pos_.capacity()) * sizeof(handle_type) + keys_.capacity() * sizeof(Key);
     }
 
-    /// Calls f(pointer, bytes) once per array with its reserved storage, e.g. to advise the
-    /// operating system on paging. The pointers stay valid until a growth beyond the capacity.
-    template <class F>
-    void for_each_storage(F&& f) const {
-        f(static_cast<const void*>(heap_.data()), heap_.capacity() * sizeof(handle_type));
-        f(static_cast<const void*>(pos_.data()), pos_.capacity() * sizeof(handle_type));
-        f(static_cast<const void*>(keys_.data()), keys_.capacity() * sizeof(Key));
-    }
-
     /// Heap order, and the position map is the inverse of the heap array:
     /// pos_[heap_[i]] == i for every i, and exactly size() handles are marked present. O(capacity).
     [[nodiscard]] bool check_invariants() const {
