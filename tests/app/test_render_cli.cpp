@@ -1,6 +1,8 @@
 // End-to-end tests of `collide render` and `collide thumbnail`: the files a user gets, read back.
 #include <doctest/doctest.h>
 
+#include "../support/temp_dir.hpp"
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -17,18 +19,7 @@ using collide::test::run_collide;
 
 namespace {
 
-/// A fresh directory for one test's outputs, removed afterwards.
-struct TempDir {
-    fs::path path;
-    explicit TempDir(const std::string& name)
-        : path(fs::temp_directory_path() / ("collide_render_test_" + name + "_" + std::to_string(::getpid()))) {
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() { fs::remove_all(path); }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-};
+using collide::test::TempDir;
 
 std::string read_bytes(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);

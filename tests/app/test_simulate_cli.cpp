@@ -3,6 +3,9 @@
 
 #include <doctest/doctest.h>
 
+#include "../support/input_error.hpp"
+#include "../support/temp_dir.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -17,22 +20,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool contains(const std::string& haystack, const std::string& needle) {
-    return haystack.find(needle) != std::string::npos;
-}
-
-/// A fresh directory under the system temp dir, removed at the end of the test.
-struct TempDir {
-    fs::path path;
-    explicit TempDir(const std::string& name) : path(fs::temp_directory_path() / name) {
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() {
-        std::error_code ignored;
-        fs::remove_all(path, ignored);
-    }
-};
+using collide::test::contains;
+using collide::test::TempDir;
 
 /// Two discs head-on in the unit box: a pair collision at t = 2, both walls at t = 5.
 fs::path write_head_on(const fs::path& dir) {
