@@ -87,7 +87,8 @@ std::vector<int> check_against_model(Q q, std::uint64_t seed, int swing, int key
         }
         mismatches += (q.size() != model.size()) + (q.empty() != model.empty());
         // Validating builds check inside every mutation (and throw); don't pay for it twice.
-        if constexpr (!validate_heaps) broken += !holds_invariant(q);
+        if constexpr (!validate_heaps)
+            broken += !holds_invariant(q);
         largest = std::max(largest, model.size());
     }
     CHECK(mismatches == 0);
@@ -116,12 +117,18 @@ void check_kinds_against_model(std::initializer_list<const char*> kinds) {
 
 // Every implementation and every compiled arity, each in one orientation (both orientations are
 // covered for arrays, heaps and the indexed heap).
-TEST_CASE("max-queues match a multiset over 10^5 random operations with duplicates (fewer when validating)") {
-    check_kinds_against_model<Orientation::max>({"unordered", "binary", "dary:4", "dary:5", "indexed:4"});
+TEST_CASE(
+    "max-queues match a multiset over 10^5 random operations with duplicates (fewer when "
+    "validating)") {
+    check_kinds_against_model<Orientation::max>(
+        {"unordered", "binary", "dary:4", "dary:5", "indexed:4"});
 }
 
-TEST_CASE("min-queues match a multiset over 10^5 random operations with duplicates (fewer when validating)") {
-    check_kinds_against_model<Orientation::min>({"ordered", "dary:3", "dary:8", "indexed:2", "indexed:8"});
+TEST_CASE(
+    "min-queues match a multiset over 10^5 random operations with duplicates (fewer when "
+    "validating)") {
+    check_kinds_against_model<Orientation::min>(
+        {"ordered", "dary:3", "dary:8", "indexed:2", "indexed:8"});
 }
 
 TEST_CASE("heaps match a multiset when they grow deep (thousands of items)") {
@@ -132,10 +139,14 @@ TEST_CASE("heaps match a multiset when they grow deep (thousands of items)") {
     const int keys = 1 << 20;
     check_against_model<Orientation::min>(BinaryHeap<int, Orientation::min>{}, 7, swing, keys, ops);
     check_against_model<Orientation::max>(BinaryHeap<int, Orientation::max>{}, 7, swing, keys, ops);
-    check_against_model<Orientation::min>(DaryHeap<int, Orientation::min, 3>{}, 8, swing, keys, ops);
-    check_against_model<Orientation::max>(DaryHeap<int, Orientation::max, 8>{}, 9, swing, keys, ops);
-    check_against_model<Orientation::max>(DaryHeap<int, Orientation::max, 0>(6), 10, swing, keys, ops);
-    check_against_model<Orientation::min>(IndexedHeapQueue<int, Orientation::min, 4>{}, 11, swing, keys, ops);
+    check_against_model<Orientation::min>(DaryHeap<int, Orientation::min, 3>{}, 8, swing, keys,
+                                          ops);
+    check_against_model<Orientation::max>(DaryHeap<int, Orientation::max, 8>{}, 9, swing, keys,
+                                          ops);
+    check_against_model<Orientation::max>(DaryHeap<int, Orientation::max, 0>(6), 10, swing, keys,
+                                          ops);
+    check_against_model<Orientation::min>(IndexedHeapQueue<int, Orientation::min, 4>{}, 11, swing,
+                                          keys, ops);
 }
 
 namespace {
@@ -174,7 +185,8 @@ struct TieWorkload {
                     out.push_back(q.pop());
                 }
             }
-            while (!q.empty()) out.push_back(q.pop());
+            while (!q.empty())
+                out.push_back(q.pop());
             return out;
         });
     }
@@ -196,8 +208,8 @@ struct TieWorkload {
     }
 };
 
-constexpr const char* all_kinds[] = {"unordered", "ordered", "binary", "dary:3", "dary:4",
-                                     "dary:8", "dary:6", "indexed:2", "indexed:4", "indexed:8"};
+constexpr const char* all_kinds[] = {"unordered", "ordered", "binary",    "dary:3",    "dary:4",
+                                     "dary:8",    "dary:6",  "indexed:2", "indexed:4", "indexed:8"};
 
 }  // namespace
 
@@ -221,7 +233,8 @@ TEST_CASE("with ties under Less the implementations may disagree (why event keys
     for (const char* text : all_kinds) {
         const auto out = work.run<TimeOnlyLess>(text);
         REQUIRE(out.size() == reference.size());
-        for (std::size_t i = 0; i < out.size(); ++i) REQUIRE(out[i].first == reference[i].first);
+        for (std::size_t i = 0; i < out.size(); ++i)
+            REQUIRE(out[i].first == reference[i].first);
         disagreeing += (out != reference);
     }
     CHECK(disagreeing > 0);  // same times in the same order, but not the same ids
@@ -229,10 +242,11 @@ TEST_CASE("with ties under Less the implementations may disagree (why event keys
 
 // ---- the indexed heap's handle operations against a model ------------------------------------
 
-TEST_CASE("IndexedDaryHeap matches a model over 10^5 random handle operations (fewer when validating)") {
+TEST_CASE(
+    "IndexedDaryHeap matches a model over 10^5 random handle operations (fewer when validating)") {
     constexpr unsigned handles = 300;
     IndexedDaryHeap<int, Orientation::min, 3> heap(handles);
-    std::map<unsigned, int> key_of;          // model: handle -> key
+    std::map<unsigned, int> key_of;            // model: handle -> key
     std::set<std::pair<int, unsigned>> order;  // model: (key, handle); ties of keys allowed
     std::mt19937_64 rng(99);
     std::uniform_int_distribution<unsigned> handle(0, handles - 1);
@@ -248,12 +262,14 @@ TEST_CASE("IndexedDaryHeap matches a model over 10^5 random handle operations (f
         switch (what(rng)) {
             case 0:  // push or change
                 heap.push_or_change(h, k);
-                if (present) order.erase({key_of[h], h});
+                if (present)
+                    order.erase({key_of[h], h});
                 key_of[h] = k;
                 order.insert({k, h});
                 break;
             case 1:  // pop: the top key must be the model's smallest (the handle may be any tie)
-                if (order.empty()) break;
+                if (order.empty())
+                    break;
                 mismatches += (heap.top_key() != order.begin()->first);
                 {
                     const unsigned got = heap.pop();
@@ -272,7 +288,8 @@ TEST_CASE("IndexedDaryHeap matches a model over 10^5 random handle operations (f
                 key_of.erase(h);
                 break;
             case 3:  // decrease_key, which must refuse a larger key
-                if (!present) break;
+                if (!present)
+                    break;
                 if (k > key_of[h]) {
                     CHECK_THROWS_AS(heap.decrease_key(h, k), collide::Error);
                     break;
@@ -283,7 +300,8 @@ TEST_CASE("IndexedDaryHeap matches a model over 10^5 random handle operations (f
                 order.insert({k, h});
                 break;
             case 4:  // increase_key, which must refuse a smaller key
-                if (!present) break;
+                if (!present)
+                    break;
                 if (k < key_of[h]) {
                     CHECK_THROWS_AS(heap.increase_key(h, k), collide::Error);
                     break;
@@ -302,7 +320,8 @@ TEST_CASE("IndexedDaryHeap matches a model over 10^5 random handle operations (f
                 break;
         }
         mismatches += (heap.size() != key_of.size());
-        if constexpr (!validate_heaps) broken += !heap.check_invariants();
+        if constexpr (!validate_heaps)
+            broken += !heap.check_invariants();
     }
     CHECK(mismatches == 0);
     CHECK(broken == 0);
@@ -312,12 +331,12 @@ TEST_CASE("IndexedDaryHeap refuses misuse with an Error and stays intact") {
     IndexedDaryHeap<double, Orientation::max, 4> heap(4);
     heap.push(0, 1.0);
     heap.push(2, 5.0);
-    CHECK_THROWS_AS(heap.push(4, 1.0), collide::Error);           // handle out of range
-    CHECK_THROWS_AS(heap.push(2, 1.0), collide::Error);           // already present
-    CHECK_THROWS_AS(heap.change_key(1, 1.0), collide::Error);     // not in the heap
-    CHECK_THROWS_AS(heap.change_key(99, 1.0), collide::Error);    // beyond the handle range
-    CHECK_THROWS_AS(heap.increase_key(0, 0.5), collide::Error);   // wrong direction
-    CHECK_THROWS_AS(heap.decrease_key(2, 6.0), collide::Error);   // wrong direction
+    CHECK_THROWS_AS(heap.push(4, 1.0), collide::Error);          // handle out of range
+    CHECK_THROWS_AS(heap.push(2, 1.0), collide::Error);          // already present
+    CHECK_THROWS_AS(heap.change_key(1, 1.0), collide::Error);    // not in the heap
+    CHECK_THROWS_AS(heap.change_key(99, 1.0), collide::Error);   // beyond the handle range
+    CHECK_THROWS_AS(heap.increase_key(0, 0.5), collide::Error);  // wrong direction
+    CHECK_THROWS_AS(heap.decrease_key(2, 6.0), collide::Error);  // wrong direction
     CHECK(heap.check_invariants());
     CHECK(heap.top() == 2);
     heap.increase_key(0, 9.0);  // max-oriented: a larger key moves up
@@ -355,11 +374,15 @@ struct TextbookMaxHeap {
         std::size_t i = 0;
         for (;;) {
             std::size_t best = D * i + 1;
-            if (best >= a.size()) break;
-            for (std::size_t c = best + 1; c < std::min<std::size_t>(D * i + D + 1, a.size()); ++c) {
-                if (a[best] < a[c]) best = c;
+            if (best >= a.size())
+                break;
+            for (std::size_t c = best + 1; c < std::min<std::size_t>(D * i + D + 1, a.size());
+                 ++c) {
+                if (a[best] < a[c])
+                    best = c;
             }
-            if (!(a[i] < a[best])) break;
+            if (!(a[i] < a[best]))
+                break;
             std::swap(a[i], a[best]);
             i = best;
         }
@@ -367,13 +390,14 @@ struct TextbookMaxHeap {
     }
 };
 
-/// An item of 4 KiB, so that a heap of a few hundred passes DaryHeap's branch_free_bytes and
-/// takes its branching path.
-struct FatItem {
+/// An item of Bytes bytes: the heap's storage puts item 1 on a cache line, which for items
+/// narrower than a line means starting the array mid-line and for wider ones not at all.
+template <std::size_t Bytes>
+struct SizedItem {
     int key = 0;
-    std::array<char, 4092> payload{};
-    friend bool operator<(const FatItem& a, const FatItem& b) { return a.key < b.key; }
-    friend bool operator==(const FatItem& a, const FatItem& b) { return a.key == b.key; }
+    std::array<char, Bytes - sizeof(int)> payload{};
+    friend bool operator<(const SizedItem& a, const SizedItem& b) { return a.key < b.key; }
+    friend bool operator==(const SizedItem& a, const SizedItem& b) { return a.key == b.key; }
 };
 
 /// Returns the largest heap's size in bytes.
@@ -401,7 +425,7 @@ std::size_t check_same_arrays_as_textbook(int ops = 6000) {
         } else {
             differing += fast.pop() != plain.pop();
         }
-        differing += fast.array() != plain.a;
+        differing += !std::ranges::equal(fast.array(), plain.a);
         largest = std::max(largest, plain.a.size());
     }
     CHECK(differing == 0);
@@ -418,9 +442,20 @@ TEST_CASE("DaryHeap's bottom-up pop leaves the same array as the lecture's sink,
     check_same_arrays_as_textbook<8>();
 }
 
-TEST_CASE("heaps larger than the caches (the branching child choice) match the lecture's sink too") {
-    constexpr std::size_t limit = DaryHeap<FatItem, Orientation::max, 2>::branch_free_bytes;
-    CHECK(check_same_arrays_as_textbook<2, FatItem>(4000) > limit);
-    CHECK(check_same_arrays_as_textbook<3, FatItem>(4000) > limit);
-    CHECK(check_same_arrays_as_textbook<4, FatItem>(4000) > limit);
+TEST_CASE("items of any width (line-aligned children storage) match the lecture's sink too") {
+    check_same_arrays_as_textbook<2, SizedItem<12>>(3000);
+    check_same_arrays_as_textbook<4, SizedItem<16>>(3000);
+    check_same_arrays_as_textbook<3, SizedItem<96>>(3000);
+    check_same_arrays_as_textbook<8, SizedItem<200>>(3000);
+}
+
+TEST_CASE("a d-ary heap stores item 1 at the start of a cache line, so children share lines") {
+    DaryHeap<double, Orientation::min, 4> heap;
+    for (int i = 0; i < 100; ++i)
+        heap.push(i);
+    CHECK(reinterpret_cast<std::uintptr_t>(heap.array().data() + 1) % heap_line_bytes == 0);
+    DaryHeap<SizedItem<16>, Orientation::max, 4> wide;
+    for (int i = 0; i < 100; ++i)
+        wide.push(SizedItem<16>{i, {}});
+    CHECK(reinterpret_cast<std::uintptr_t>(wide.array().data() + 1) % heap_line_bytes == 0);
 }

@@ -6,34 +6,31 @@
 /// D = 0 selects an arity chosen at run time (constructor argument); a compile-time D lets the
 /// compiler turn the index arithmetic into shifts and unroll the child scan, so prefer it.
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "collide/sim/pq/child_aligned_allocator.hpp"
 #include "collide/sim/pq/order.hpp"
 
 namespace collide::pq {
 
 template <class T, Orientation O = Orientation::max, unsigned D = 2, class Less = std::less<T>>
 class DaryHeap {
-    static_assert(D != 1, "a heap needs at least two children per node (D = 0: chosen at run time)");
+    static_assert(D != 1,
+                  "a heap needs at least two children per node (D = 0: chosen at run time)");
 
-public:
+  public:
     using value_type = T;
     /// Children per node fixed at compile time, or 0 when chosen at run time (see d()).
     static constexpr unsigned arity = D;
     /// Largest run-time arity accepted; wider nodes only cost compares.
     static constexpr unsigned max_runtime_arity = 64;
-
-    /// pop: heaps up to this many bytes pick the best child without branches (they sit in the
-    /// processor's caches, where a mispredicted branch costs more than a select); larger ones
-    /// branch, so the processor can guess the path and load the next level ahead of the compare
-    /// instead of waiting for each level's cache miss in turn. On the hold model at N = 10^6
-    /// doubles the branch-free binary heap took 1.7 to 2.6 times as long as std::priority_queue,
-    /// the branching one about as long (bench/bench_pq.cpp, docs/benchmarks.md).
-    static constexpr std::size_t branch_free_bytes = std::size_t{1} << 20;
 
     /// An empty heap (a run-time-arity heap built this way is binary).
     DaryHeap() = default;
@@ -41,8 +38,7 @@ public:
 
     /// An empty heap with d children per node; only for D = 0. Throws Error(runtime) unless
     /// 2 <= d <= max_runtime_arity.
-    explicit DaryHeap(unsigned d, Less less = Less{})
-        requires(D == 0)
+    explicit DaryHeap(unsigned d, Less less = Less{}) requires(D == 0)
         : d_(d), less_(std::move(less)) {
         if (d < 2 || d > max_runtime_arity) {
             throw_runtime_error("d-ary heap: arity " + std::to_string(d) + " out of range (2.." +
@@ -79,7 +75,8 @@ public:
         T out = std::move(a_.front());
         T last = std::move(a_.back());
         a_.pop_back();
-        if (!a_.empty()) sink_from_root(std::move(last));
+        if (!a_.empty())
+            sink_from_root(std::move(last));
         validate();
         return out;
     }
@@ -94,66 +91,47 @@ public:
     }
 
     /// The heap array, for teaching traces and tests (index 0 comes out next).
-    [[nodiscard]] const std::vector<T>& array() const noexcept { return a_; }
+    [[nodiscard]] std::span<const T> array() const noexcept { return a_; }
 
     /// Heap order: no child comes out before its parent. O(N).
     [[nodiscard]] bool is_heap() const {
         for (std::size_t i = 1; i < a_.size(); ++i) {
-            if (first(a_[i], a_[(i - 1) / d()])) return false;
+            if (first(a_[i], a_[(i - 1) / d()]))
+                return false;
         }
         return true;
     }
 
-private:
+  private:
     [[nodiscard]] bool first(const T& a, const T& b) const { return comes_first<O>(less_, a, b); }
 
     void swim(std::size_t i) {
         T x = std::move(a_[i]);
         while (i > 0) {
             const std::size_t parent = (i - 1) / d();
-            if (!first(x, a_[parent])) break;
+            if (!first(x, a_[parent]))
+                break;
             a_[i] = std::move(a_[parent]);
             i = parent;
         }
         a_[i] = std::move(x);
     }
 
-
-    /// The child of i that comes out first (the first of tying children). Precondition: i has
-    /// a child.
-    template <bool BranchFree>
+    /// The child of i that comes out first (the first of tying children), chosen without
+    /// branches: a mispredicted branch costs more than the few selects. Precondition: i has a
+    /// child.
     [[nodiscard]] std::size_t best_child(std::size_t i) const {
         const std::size_t c0 = d() * i + 1;
         const std::size_t n = a_.size();
         if constexpr (D != 0) {
-            if (c0 + D <= n) {
-                if constexpr (BranchFree) {
-                    return best_of<D>(c0);
-                } else {
-                    // Halves without branches, the final between them with a real branch.
-                    const std::size_t left = best_of<D / 2>(c0);
-                    const std::size_t right = best_of<D - D / 2>(c0 + D / 2);
-                    if (first(a_[right], a_[left])) {
-                        keep_branch();
-                        return right;
-                    }
-                    return left;
-                }
-            }
+            if (c0 + D <= n)
+                return best_of<D>(c0);
         }
         const std::size_t c_end = c0 + d() < n ? c0 + d() : n;
         std::size_t best = c0;
-        for (std::size_t c = c0 + 1; c < c_end; ++c) best = pick(c, best);
+        for (std::size_t c = c0 + 1; c < c_end; ++c)
+            best = pick(c, best);
         return best;
-    }
-
-    /// An empty statement the compiler must keep, so it cannot turn the branch around it into a
-    /// conditional move: the point of the branch is that the processor guesses it and starts
-    /// loading the next level before the compare is done.
-    static void keep_branch() noexcept {
-#if defined(__GNUC__)
-        asm volatile("");
-#endif
     }
 
     /// The first-coming of the K items from index c on, as a knock-out tournament in which the
@@ -179,8 +157,9 @@ private:
         const std::size_t n = a_.size();
         T x = std::move(a_[i]);
         while (d() * i + 1 < n) {
-            const std::size_t best = best_child<true>(i);
-            if (!first(a_[best], x)) break;
+            const std::size_t best = best_child(i);
+            if (!first(a_[best], x))
+                break;
             a_[i] = std::move(a_[best]);
             i = best;
         }
@@ -194,30 +173,52 @@ private:
     /// Rising past ties (non-strict) makes the result identical to the lecture's sink, which
     /// stops above the first child that does not come out before x, so traces match the lecture.
     void sink_from_root(T x) {
-        const std::size_t hole = n_bytes() <= branch_free_bytes ? hole_to_leaf<true>() : hole_to_leaf<false>();
+        const std::size_t hole = hole_to_leaf();
         rise_from(hole, std::move(x));
     }
 
-    [[nodiscard]] std::size_t n_bytes() const noexcept { return a_.size() * sizeof(T); }
-
     /// Moves the hole at the root down the path of best children to a leaf; returns the leaf.
-    template <bool BranchFree>
     std::size_t hole_to_leaf() {
         const std::size_t n = a_.size();
         std::size_t hole = 0;
         while (d() * hole + 1 < n) {
-            const std::size_t best = best_child<BranchFree>(hole);
+            prefetch_grandchildren(hole);
+            const std::size_t best = best_child(hole);
             a_[hole] = std::move(a_[best]);
             hole = best;
         }
         return hole;
     }
 
+    /// Asks the processor to load the grandchildren of i while the children are compared: the
+    /// path continues among them, so in a heap larger than the caches the next level's miss
+    /// overlaps this level's work instead of following it. They are d*d consecutive items
+    /// (children of d*i+1 ... d*i+d), two cache lines for a 4-ary heap of doubles. At N = 10^6
+    /// this took the 4-ary hold step from 1.1 to about 0.67 of std::priority_queue's time; in
+    /// small heaps the hint costs nothing measurable (docs/benchmarks.md).
+    void prefetch_grandchildren(std::size_t i) const noexcept {
+        const std::size_t n = a_.size();
+        const std::size_t g = d() * (d() * i + 1) + 1;
+        if (g >= n)
+            return;
+        const std::size_t g_end = std::min(n, g + d() * d());
+#if defined(__GNUC__)
+        // Every line the items touch: the first item may start mid-line (d*d*sizeof(T) need not
+        // be a multiple of the line), so step from its line's start to the last item's line.
+        const auto first = reinterpret_cast<std::uintptr_t>(a_.data() + g) & ~(heap_line_bytes - 1);
+        const auto last = reinterpret_cast<std::uintptr_t>(a_.data() + g_end) - 1;
+        for (std::uintptr_t line = first; line <= last; line += heap_line_bytes) {
+            __builtin_prefetch(reinterpret_cast<const void*>(line));
+        }
+#endif
+    }
+
     /// Puts x in the hole and lets it rise while its parent does not come out before it.
     void rise_from(std::size_t hole, T x) {
         while (hole > 0) {
             const std::size_t parent = (hole - 1) / d();
-            if (first(a_[parent], x)) break;
+            if (first(a_[parent], x))
+                break;
             a_[hole] = std::move(a_[parent]);
             hole = parent;
         }
@@ -225,11 +226,12 @@ private:
     }
 
     void validate() const {
-        if constexpr (validate_heaps) require_invariant(is_heap(), "d-ary heap order");
+        if constexpr (validate_heaps)
+            require_invariant(is_heap(), "d-ary heap order");
     }
 
-    std::vector<T> a_;
-    std::size_t d_ = D == 0 ? 2 : D;  ///< read only when D == 0
+    std::vector<T, ChildAlignedAllocator<T>> a_;  ///< children of a node share a cache line
+    std::size_t d_ = D == 0 ? 2 : D;              ///< read only when D == 0
     [[no_unique_address]] Less less_{};
 };
 

@@ -17,7 +17,7 @@ namespace collide::pq {
 
 template <class T, class Less = std::less<T>>
 class TopM {
-public:
+  public:
     /// Keeps the m largest items under less (m = 0 keeps nothing).
     explicit TopM(std::size_t m, Less less = Less{}) : m_(m), heap_(less), less_(std::move(less)) {
         heap_.reserve(m);
@@ -38,13 +38,14 @@ public:
 
     /// The items kept, largest first. O(M log M).
     [[nodiscard]] std::vector<T> largest_first() const {
-        std::vector<T> out = heap_.array();
+        const auto kept = heap_.array();
+        std::vector<T> out(kept.begin(), kept.end());
         heapsort(out.begin(), out.end(), [this](const T& a, const T& b) { return less_(a, b); });
         std::reverse(out.begin(), out.end());
         return out;
     }
 
-private:
+  private:
     std::size_t m_;
     DaryHeap<T, Orientation::min, 2, Less> heap_;  ///< the M largest so far; top() is the smallest
     [[no_unique_address]] Less less_;
@@ -52,9 +53,11 @@ private:
 
 /// The m largest items of [first, last) under less, largest first, in O(m) extra memory.
 template <std::input_iterator It, class Less = std::less<std::iter_value_t<It>>>
-[[nodiscard]] std::vector<std::iter_value_t<It>> top_m(It first, It last, std::size_t m, Less less = Less{}) {
+[[nodiscard]] std::vector<std::iter_value_t<It>> top_m(It first, It last, std::size_t m,
+                                                       Less less = Less{}) {
     TopM<std::iter_value_t<It>, Less> keep(m, std::move(less));
-    for (; first != last; ++first) keep.offer(*first);
+    for (; first != last; ++first)
+        keep.offer(*first);
     return keep.largest_first();
 }
 
