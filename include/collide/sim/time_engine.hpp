@@ -127,10 +127,10 @@ class TimeEngine final : public Engine {
     [[nodiscard]] std::uint64_t bytes() const noexcept;
 
     /// Calls visit(i, j), i < j, for every pair that may have touched during the step of length h
-    /// that just ended (h = 0: pairs overlapping now), and some farther ones; the visitor makes
-    /// the exact tests. count_checks adds the pairs tested to overlap_checks_.
+    /// that just ended, and some farther ones; the visitor makes the exact tests. Adds the pairs
+    /// tested (all-pairs: N(N-1)/2) to overlap_checks_.
     template <typename PairVisitor>
-    void for_each_candidate_pair(double h, bool count_checks, PairVisitor&& visit);
+    void for_each_candidate_pair(double h, PairVisitor&& visit);
 
     Box box_;
     double dt_;
