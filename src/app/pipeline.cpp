@@ -228,7 +228,8 @@ PipelineResult render_video(const Scene& scene, const RenderPlan& plan, const Pi
     SimulationThread simulation(scene, plan, cancel);
     while (std::optional<SimFrame> frame = simulation.next()) {
         check_interrupt(hooks);
-        Image image = renderer.render(composer.compose(*frame));
+        Image image = writer.spare_frame();
+        renderer.render(composer.compose(*frame), image);
         if (preview && !preview->show(image)) preview.reset();  // closed: keep encoding
         dump.write(image);
         writer.write(std::move(image));

@@ -94,6 +94,15 @@ class VideoWriter::Impl {
         changed_.notify_all();
     }
 
+    Image spare_frame() {
+        std::lock_guard lock(mutex_);
+        if (spares_.empty())
+            return {};
+        Image spare = std::move(spares_.back());
+        spares_.pop_back();
+        return spare;
+    }
+
     void finish() {
         if (finished_)
             throw_runtime_error("VideoWriter::finish called twice");
@@ -185,6 +194,9 @@ class VideoWriter::Impl {
                 if (cancelled())
                     throw_interrupted();
                 sink_->consume(frame);
+                std::lock_guard lock(mutex_);
+                if (spares_.size() < static_cast<std::size_t>(options_.queue_frames))
+                    spares_.push_back(std::move(frame));
             }
         } catch (...) {
             {
@@ -205,6 +217,7 @@ class VideoWriter::Impl {
     std::mutex mutex_;
     std::condition_variable changed_;  ///< queue changed, closing, abort or failure
     std::deque<Image> queue_;          ///< guarded by mutex_
+    std::vector<Image> spares_;        ///< guarded by mutex_: consumed frames, for spare_frame()
     bool closing_ = false;             ///< guarded by mutex_: no more frames will come
     bool abort_ = false;               ///< guarded by mutex_: stop without draining
     std::exception_ptr failure_;       ///< guarded by mutex_ (read after join without it)
@@ -222,6 +235,9 @@ VideoWriter& VideoWriter::operator=(VideoWriter&&) noexcept = default;
 
 void VideoWriter::write(Image frame) {
     impl_->write(std::move(frame));
+}
+Image VideoWriter::spare_frame() {
+    return impl_->spare_frame();
 }
 void VideoWriter::finish() {
     impl_->finish();

@@ -329,6 +329,36 @@ TEST_CASE("grid and all-pairs give identical results on a random gas") {
     }
 }
 
+TEST_CASE("grid and all-pairs agree when every neighbour touches exactly") {
+    // A square lattice at contact (r = 2^-6, so positions and sigma are exact): the first checks
+    // see distances equal to sigma, where the all-pairs sweep's bound and the exact test meet.
+    for (Boundary boundary : {Boundary::walls, Boundary::periodic}) {
+        CAPTURE(boundary == Boundary::periodic);
+        const double r = 0.015625;
+        std::mt19937_64 rng(17);
+        std::uniform_real_distribution<double> unit(-1.0, 1.0);
+        std::vector<Disc> discs;
+        for (int ix = 0; ix < 32; ++ix) {
+            for (int iy = 0; iy < 32; iy += 3) {
+                const Vec2 p{(2 * ix + 1) * r, (2 * iy + 1) * r};
+                discs.push_back(make_disc(p, {unit(rng), unit(rng)}, r));
+            }
+        }
+        const Scene scene = make_scene(1.0, 1.0, std::move(discs), boundary);
+        TimeEngine all(scene, time_options(0.01, "all-pairs"));
+        TimeEngine grid(scene, time_options(0.01, "grid"));
+        REQUIRE(same_snapshots(all.snapshot(), grid.snapshot()));
+        for (int frame = 1; frame <= 5; ++frame) {
+            all.advance_to(frame * 0.02);
+            grid.advance_to(frame * 0.02);
+            REQUIRE(same_snapshots(all.snapshot(), grid.snapshot()));
+        }
+        CHECK(all.measurements().collisions_pair > 0);
+        CHECK(all.measurements().collisions_pair == grid.measurements().collisions_pair);
+        CHECK(all.measurements().missed_collisions == grid.measurements().missed_collisions);
+    }
+}
+
 TEST_CASE("a periodic box wraps discs around") {
     const Scene scene =
         make_scene(1.0, 1.0, {make_disc({0.95, 0.5}, {1.0, 0.0}, 0.01)}, Boundary::periodic);

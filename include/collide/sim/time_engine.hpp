@@ -9,7 +9,10 @@
 ///  1. drift    every disc moves in a straight line for h.
 ///  2. detect   every pair is tested once for overlap (all-pairs: N(N-1)/2 tests, counted in
 ///              Measurements::overlap_checks; `grid`: only pairs in neighbouring cells, with the
-///              same outcome). A pair that overlaps and approaches (dv.dr < 0) becomes a contact.
+///              same outcome). All-pairs tests every pair in a vectorised sweep against a
+///              conservative bound (could it have touched during the step?) and runs the exact
+///              tests below on the few pairs it keeps, in the plain loop's order.
+///              A pair that overlaps and approaches (dv.dr < 0) becomes a contact.
 ///              A disc that straddles a wall line of a walled box and moves outwards becomes a wall
 ///              contact. A disc entirely past a wall is not touching it: it is not reflected and
 ///              keeps flying (it has escaped; Measurements::escaped, DiscState::escaped).
@@ -56,6 +59,7 @@ namespace collide {
 
 namespace detail {
 class CellGrid;
+class PairSweep;
 }  // namespace detail
 
 /// Throws Error(input) unless options.dt is finite and > 0 (names `--dt`) and options.td_detect
@@ -122,8 +126,11 @@ class TimeEngine final : public Engine {
     /// Heap memory held by the engine's containers (capacity), for Measurements::engine_bytes.
     [[nodiscard]] std::uint64_t bytes() const noexcept;
 
+    /// Calls visit(i, j), i < j, for every pair that may have touched during the step of length h
+    /// that just ended, and some farther ones; the visitor makes the exact tests. Adds the pairs
+    /// tested (all-pairs: N(N-1)/2) to overlap_checks_.
     template <typename PairVisitor>
-    void for_each_candidate_pair(double reach, bool count_checks, PairVisitor&& visit);
+    void for_each_candidate_pair(double h, PairVisitor&& visit);
 
     Box box_;
     double dt_;
@@ -146,6 +153,8 @@ class TimeEngine final : public Engine {
     double step_start_ = 0.0;  ///< simulation time at which the current step began
     std::vector<Contact> contacts_;
     std::unique_ptr<detail::CellGrid> grid_;
+    std::unique_ptr<detail::PairSweep> sweep_;                         ///< all-pairs detection
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> candidates_;  ///< from sweep_, reused
 
     // Failure markers and census (recomputed after each advance_to).
     std::vector<std::pair<std::uint32_t, std::uint32_t>> overlapping_pairs_;
