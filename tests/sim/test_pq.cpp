@@ -449,6 +449,14 @@ TEST_CASE("items of any width (line-aligned children storage) match the lecture'
     check_same_arrays_as_textbook<8, SizedItem<200>>(3000);
 }
 
+TEST_CASE("heaps larger than the caches (pop prefetches levels ahead) match the lecture's sink") {
+    using Fat = SizedItem<4096>;
+    constexpr std::size_t limit = DaryHeap<Fat, Orientation::max, 2>::prefetch_bytes;
+    CHECK(check_same_arrays_as_textbook<2, Fat>(4000) > limit);
+    CHECK(check_same_arrays_as_textbook<3, Fat>(4000) > limit);
+    CHECK(check_same_arrays_as_textbook<4, Fat>(4000) > limit);
+}
+
 TEST_CASE("a d-ary heap stores item 1 at the start of a cache line, so children share lines") {
     DaryHeap<double, Orientation::min, 4> heap;
     for (int i = 0; i < 100; ++i)
