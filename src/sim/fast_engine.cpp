@@ -149,15 +149,9 @@ void FastEngine::place_discs(const Scene& scene) {
     if (n >= Key::index_mask) throw_input_error("", 0, "discs", "too many discs for the fast engine (at most 2^30 - 2)");
     scene_index_ = locality_order(scene);
     p_.reserve(n);
-    prev_.reserve(n);
-    count_.reserve(n);
-    partner_count_.reserve(n);
-    last_partner_.reserve(n);
+    cold_.reserve(n);
     p_.resize(n);
-    prev_.assign(n, no_disc);
-    count_.assign(n, 0);
-    partner_count_.assign(n, 0);
-    last_partner_.assign(n, no_disc);
+    cold_.assign(n, Cold{0.0, no_disc, 0});
     image_.assign(n, Image{});
     start_.resize(n);
     heap_.reserve_handles(n);
@@ -165,7 +159,8 @@ void FastEngine::place_discs(const Scene& scene) {
     for (std::uint32_t i = 0; i < n; ++i) {
         const Disc& d = scene.discs[scene_index_[i]];
         const Vec2 pos = box_.wrap(d.position);
-        p_[i] = Particle{pos.x, pos.y, d.velocity.x, d.velocity.y, 0.0, d.radius, d.mass, no_disc, 0};
+        p_[i] = Particle{pos.x, pos.y, d.velocity.x, d.velocity.y, 0.0, d.radius, no_disc, 0, 0, no_disc};
+        cold_[i].m = d.mass;
         start_[i] = d.position;
         if (periodic_) {
             // Keep the unwrapped start: image counts measure wrapping from the wrapped position.
@@ -202,7 +197,7 @@ void FastEngine::process(std::uint32_t i, const Key& key) {
     switch (key.kind()) {
         case EventKind::pair: {
             const std::uint32_t j = key.a == i ? key.b() : key.a;
-            if (count_[j] != partner_count_[i]) {
+            if (p_[j].count != cold_[i].partner_count) {
                 // j collided after i predicted this; i's trajectory is unchanged, predict it anew.
                 ++stats_.stale_pops;
                 predict(i);
@@ -230,16 +225,16 @@ void FastEngine::process_pair(std::uint32_t i, std::uint32_t j, double t) {
     const Vec2 dr = box_.displacement({pi.x, pi.y}, {pj.x, pj.y});
     Vec2 vi{pi.vx, pi.vy};
     Vec2 vj{pj.vx, pj.vy};
-    const Vec2 impulse = kinematics::resolve_pair(vi, vj, pi.m, pj.m, dr);
+    const Vec2 impulse = kinematics::resolve_pair(vi, vj, cold_[i].m, cold_[j].m, dr);
     pi.vx = vi.x;
     pi.vy = vi.y;
     pj.vx = vj.x;
     pj.vy = vj.y;
     tally_.virial += std::abs(dot(dr, impulse));
-    ++count_[i];
-    ++count_[j];
-    last_partner_[i] = j;
-    last_partner_[j] = i;
+    ++pi.count;
+    ++pj.count;
+    pi.last_partner = j;
+    pj.last_partner = i;
     ++collisions_pair_;
     if (listener_) listener_(to_record(t, EventKind::pair, scene_index_[i], scene_index_[j]));
     predict(i);
@@ -250,16 +245,16 @@ void FastEngine::process_wall(std::uint32_t i, EventKind kind, double t) {
     advance_disc(i);
     Particle& pi = p_[i];
     if (kind == EventKind::xwall) {
-        tally_.wall_impulse += 2.0 * pi.m * std::abs(pi.vx);
+        tally_.wall_impulse += 2.0 * cold_[i].m * std::abs(pi.vx);
         pi.vx = -pi.vx;
         ++collisions_xwall_;
     } else {
-        tally_.wall_impulse += 2.0 * pi.m * std::abs(pi.vy);
+        tally_.wall_impulse += 2.0 * cold_[i].m * std::abs(pi.vy);
         pi.vy = -pi.vy;
         ++collisions_ywall_;
     }
-    ++count_[i];
-    last_partner_[i] = no_disc;
+    ++pi.count;
+    pi.last_partner = no_disc;
     if (listener_) listener_(to_record(t, kind, scene_index_[i], no_disc));
     predict(i);
 }
@@ -325,7 +320,7 @@ void FastEngine::predict(std::uint32_t i) {
         if (heap_.contains(i)) heap_.erase(i);
         return;
     }
-    if (best.kind() == EventKind::pair) partner_count_[i] = count_[best.a == i ? best.b() : best.a];
+    if (best.kind() == EventKind::pair) cold_[i].partner_count = p_[best.a == i ? best.b() : best.a].count;
     if (!heap_.contains(i)) {
         ++stats_.pushes;
     }
@@ -382,7 +377,7 @@ inline void FastEngine::consider_pair(std::uint32_t i, const Particle& pi, doubl
     const Vec2 dv{pj.vx - pi.vx, pj.vy - pi.vy};
     const double sigma = pi.r + pj.r;
     ++predictions_;
-    if (last_partner_[i] == j && last_partner_[j] == i) {
+    if (pi.last_partner == j && pj.last_partner == i) {
         const double reach = sigma * (1.0 + just_collided_slack);
         if (norm2(dr) < reach * reach) return;
     }
@@ -493,21 +488,22 @@ void FastEngine::link(std::uint32_t i, std::uint32_t cell) noexcept {
     Particle& pi = p_[i];
     pi.cell = cell;
     pi.next = head_[cell];
-    prev_[i] = no_disc;
-    if (pi.next != no_disc) prev_[pi.next] = i;
+    cold_[i].prev = no_disc;
+    if (pi.next != no_disc) cold_[pi.next].prev = i;
     head_[cell] = i;
 }
 
 void FastEngine::unlink(std::uint32_t i) noexcept {
     Particle& pi = p_[i];
-    if (prev_[i] == no_disc) {
+    const std::uint32_t prev = cold_[i].prev;
+    if (prev == no_disc) {
         head_[pi.cell] = pi.next;
     } else {
-        p_[prev_[i]].next = pi.next;
+        p_[prev].next = pi.next;
     }
-    if (pi.next != no_disc) prev_[pi.next] = prev_[i];
+    if (pi.next != no_disc) cold_[pi.next].prev = prev;
     pi.next = no_disc;
-    prev_[i] = no_disc;
+    cold_[i].prev = no_disc;
 }
 
 Vec2 FastEngine::position_at_now(std::uint32_t i) const noexcept {
@@ -530,7 +526,7 @@ Snapshot FastEngine::snapshot() const {
         d.position = box_.wrap(position_at_now(i));
         d.velocity = {p_[i].vx, p_[i].vy};
         d.radius = p_[i].r;
-        d.mass = p_[i].m;
+        d.mass = cold_[i].m;
         d.color = appearance_.colors[k];
         d.tagged = appearance_.tagged[k] != 0;
     }
@@ -559,7 +555,7 @@ Measurements FastEngine::measurements() const {
     for (std::uint32_t i = 0; i < n; ++i) {
         positions[i] = position_at_now(i);
         velocities[i] = {p_[i].vx, p_[i].vy};
-        masses[i] = p_[i].m;
+        masses[i] = cold_[i].m;
         radii[i] = p_[i].r;
         if (appearance_.in_msd(scene_index_[i])) {
             const Vec2 unwrapped{positions[i].x + image_[i].x * box_.width,
@@ -582,8 +578,8 @@ Measurements FastEngine::measurements() const {
 std::uint64_t FastEngine::bytes() const noexcept {
     constexpr std::size_t u32 = sizeof(std::uint32_t);
     std::size_t total = p_.capacity() * sizeof(Particle);
-    total += (prev_.capacity() + count_.capacity() + partner_count_.capacity() + last_partner_.capacity() +
-              big_.capacity() + head_.capacity() + scene_index_.capacity()) * u32;
+    total += cold_.capacity() * sizeof(Cold);
+    total += (big_.capacity() + head_.capacity() + scene_index_.capacity()) * u32;
     total += image_.capacity() * sizeof(Image) + start_.capacity() * sizeof(Vec2);
     total += heap_.bytes();
     total += appearance_.bytes();
@@ -596,7 +592,7 @@ bool FastEngine::check_invariants() const {
     for (std::size_t c = 0; c < head_.size(); ++c) {
         std::uint32_t before = no_disc;
         for (std::uint32_t j = head_[c]; j != no_disc; j = p_[j].next) {
-            if (j >= p_.size() || seen[j] || p_[j].cell != c || prev_[j] != before || is_big(j)) return false;
+            if (j >= p_.size() || seen[j] || p_[j].cell != c || cold_[j].prev != before || is_big(j)) return false;
             seen[j] = 1;
             before = j;
         }

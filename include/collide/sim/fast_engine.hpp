@@ -63,15 +63,27 @@ public:
     [[nodiscard]] bool check_invariants() const;
 
 private:
-    /// What a neighbour scan reads, in one cache line.
+    /// What a neighbour scan and an event on the disc read, in one cache line. Counters that each
+    /// event reads for both discs sit here too: as separate arrays they cost a cache miss per disc
+    /// and per array at large N (the access pattern jumps across the whole box).
     struct alignas(64) Particle {
         double x, y;    ///< position at local time t (periodic: within one cell of the box)
         double vx, vy;  ///< velocity
         double t;       ///< local clock: the time the position refers to
         double r;       ///< radius
-        double m;       ///< mass
-        std::uint32_t next;  ///< next disc in the same cell list (no_disc ends it)
-        std::uint32_t cell;  ///< cell of the centre (cy * nx + cx), tracked by cell events
+        std::uint32_t next;          ///< next disc in the same cell list (no_disc ends it)
+        std::uint32_t cell;          ///< cell of the centre (cy * nx + cx), tracked by cell events
+        std::uint32_t count;         ///< collisions of this disc (invalidates partners' events)
+        std::uint32_t last_partner;  ///< see sim::just_collided_slack
+    };
+    static_assert(sizeof(Particle) == 64, "one cache line per disc");
+
+    /// What only the disc's own events read (mass at collisions, list links at crossings, the
+    /// stale check of its pending pair event), kept out of the neighbour scans' cache lines.
+    struct Cold {
+        double m = 0.0;                   ///< mass
+        std::uint32_t prev = 0;           ///< previous disc in the cell list (O(1) unlink)
+        std::uint32_t partner_count = 0;  ///< partner's count when the pending pair event was predicted
     };
 
     /// A disc's pending event in 16 bytes (four keys per cache line in the heap): the time, the
@@ -156,10 +168,7 @@ private:
 
     // discs
     std::vector<Particle> p_;
-    std::vector<std::uint32_t> prev_;           ///< previous disc in the cell list (O(1) unlink)
-    std::vector<std::uint32_t> count_;          ///< collisions per disc (invalidates partners' events)
-    std::vector<std::uint32_t> partner_count_;  ///< partner's count when i's pair event was predicted
-    std::vector<std::uint32_t> last_partner_;   ///< see sim::just_collided_slack
+    std::vector<Cold> cold_;
     std::vector<Image> image_;                  ///< periodic unwrapping (mean squared displacement)
     std::vector<Vec2> start_;                   ///< positions at t = 0
     /// Discs are numbered internally along a Z-order curve over the cells, so that neighbours in
