@@ -196,7 +196,7 @@ void FastEngine::advance_to(double t) {
 void FastEngine::process(std::uint32_t i, const Key& key) {
     switch (key.kind()) {
         case EventKind::pair: {
-            const std::uint32_t j = key.a == i ? key.b() : key.a;
+            const std::uint32_t j = key.b();
             if (p_[j].count != cold_[i].partner_count) {
                 // j collided after i predicted this; i's trajectory is unchanged, predict it anew.
                 ++stats_.stale_pops;
@@ -320,7 +320,7 @@ void FastEngine::predict(std::uint32_t i) {
         if (heap_.contains(i)) heap_.erase(i);
         return;
     }
-    if (best.kind() == EventKind::pair) cold_[i].partner_count = p_[best.a == i ? best.b() : best.a].count;
+    if (best.kind() == EventKind::pair) cold_[i].partner_count = p_[best.b()].count;
     if (!heap_.contains(i)) {
         ++stats_.pushes;
     }
@@ -386,7 +386,7 @@ inline void FastEngine::consider_pair(std::uint32_t i, const Particle& pi, doubl
     if (dt == never) return;
     const double t = now_ + dt;
     if (t > best.t) return;
-    const Key k = Key::make(t, std::min(i, j), std::max(i, j), EventKind::pair);
+    const Key k = Key::make(t, i, j, EventKind::pair);
     if (key_less_(k, best)) best = k;
 }
 

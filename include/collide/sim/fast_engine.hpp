@@ -87,8 +87,9 @@ private:
     };
 
     /// A disc's pending event in 16 bytes (four keys per cache line in the heap): the time, the
-    /// first disc (pairs: the smaller index), and the kind packed above the second index (pairs:
-    /// the partner; walls: unused; cells: the axis). Hence at most 2^30 - 1 discs.
+    /// disc that holds it (its heap handle, so the heap keeps no handle array), and the kind
+    /// packed above the second index (pairs: the partner; walls: unused; cells: the axis).
+    /// Hence at most 2^30 - 1 discs.
     struct Key {
         static constexpr std::uint32_t index_mask = (1U << 30) - 1;
         double t;
@@ -114,7 +115,10 @@ private:
         }
         [[nodiscard]] bool tie_break(const Key& x, const Key& y) const noexcept;
     };
-    using Heap = pq::IndexedDaryHeap<Key, pq::Orientation::min, 4, KeyLess>;
+    struct KeyOwner {
+        [[nodiscard]] std::uint32_t operator()(const Key& k) const noexcept { return k.a; }
+    };
+    using Heap = pq::IndexedDaryHeap<Key, pq::Orientation::min, 4, KeyLess, KeyOwner>;
 
     struct Image {
         std::int32_t x = 0;  ///< times the disc wrapped across the right (+) or left (-) edge
