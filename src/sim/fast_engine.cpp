@@ -151,7 +151,7 @@ void FastEngine::place_discs(const Scene& scene) {
     p_.reserve(n);
     cold_.reserve(n);
     p_.resize(n);
-    cold_.assign(n, Cold{0.0, no_disc, 0});
+    cold_.assign(n, Cold{});
     image_.assign(n, Image{});
     start_.resize(n);
     heap_.reserve_handles(n);
@@ -197,7 +197,7 @@ void FastEngine::process(std::uint32_t i, const Key& key) {
     switch (key.kind()) {
         case EventKind::pair: {
             const std::uint32_t j = key.b();
-            if (p_[j].count != cold_[i].partner_count) {
+            if (p_[j].count != cold_[i].pair_count) {
                 // j collided after i predicted this; i's trajectory is unchanged, predict it anew.
                 ++stats_.stale_pops;
                 predict(i);
@@ -295,7 +295,7 @@ void FastEngine::process_cell(std::uint32_t i, std::uint32_t axis) {
         link(i, cell);
     }
     ++cell_crossings_;
-    predict(i);
+    predict_after_crossing(i, axis);
 }
 
 // ------------------------------------------------------------------------------------------
@@ -306,21 +306,55 @@ void FastEngine::predict(std::uint32_t i) {
     const double dt = now_ - pi.t;
     const double xi = pi.x + pi.vx * dt;
     const double yi = pi.y + pi.vy * dt;
-    Key best = Key::make(never, i, no_disc, EventKind::cell);
-    consider_walls_and_cells(i, pi, xi, yi, best);
+    // Pairs first, bounded only by each other (not by the wall and crossing times): the earliest
+    // pair is remembered for the crossings to come, so it must be exact.
+    Key pair = Key::make(never, i, no_disc, EventKind::pair);
     if (is_big(i)) {
-        scan_ring(i, pi, xi, yi, best);
+        scan_ring(i, pi, xi, yi, pair);
     } else {
-        scan_small_neighbours(i, pi, xi, yi, best);
+        scan_small_neighbours(i, pi, xi, yi, pair);
     }
     for (std::uint32_t b : big_) {
-        if (b != i) consider_pair_images(i, pi, xi, yi, b, best);
+        if (b != i) consider_pair_images(i, pi, xi, yi, b, pair);
     }
+    schedule(i, pi, xi, yi, pair);
+}
+
+void FastEngine::predict_after_crossing(std::uint32_t i, std::uint32_t axis) {
+    const Particle& pi = p_[i];
+    const Cold& ci = cold_[i];
+    // A big disc reaches a whole ring of cells; and once the remembered pair's partner has
+    // collided, the pairs that lost to it may be the earliest: both need the full scan.
+    if (is_big(i) || (ci.pair_t != never && p_[ci.pair_partner].count != ci.pair_count)) {
+        predict(i);
+        return;
+    }
+    // Crossings move nothing (pi.t == now_). The remembered pair covers every disc scanned since
+    // the last full prediction: discs that came near i since then scanned i when they crossed
+    // (and hold the pair themselves if it is their earliest); discs that collided since predicted
+    // again against i. What is new to i is the row or column of cells it now borders.
+    Key pair = Key::make(ci.pair_t, i, ci.pair_partner, EventKind::pair);
+    if (axis == 0) {
+        const std::int64_t dx = pi.vx > 0.0 ? 1 : -1;
+        scan_cells(i, pi, pi.x, pi.y, dx, dx, -1, 1, pair);
+    } else {
+        const std::int64_t dy = pi.vy > 0.0 ? 1 : -1;
+        scan_cells(i, pi, pi.x, pi.y, -1, 1, dy, dy, pair);
+    }
+    schedule(i, pi, pi.x, pi.y, pair);
+}
+
+void FastEngine::schedule(std::uint32_t i, const Particle& pi, double xi, double yi, const Key& pair) {
+    Cold& ci = cold_[i];
+    ci.pair_t = pair.t;
+    ci.pair_partner = pair.t == never ? no_disc : pair.b();
+    ci.pair_count = pair.t == never ? 0 : p_[pair.b()].count;
+    Key best = pair;
+    consider_walls_and_cells(i, pi, xi, yi, best);
     if (best.t == never) {
         if (heap_.contains(i)) heap_.erase(i);
         return;
     }
-    if (best.kind() == EventKind::pair) cold_[i].partner_count = p_[best.b()].count;
     if (!heap_.contains(i)) {
         ++stats_.pushes;
     }
@@ -410,9 +444,14 @@ void FastEngine::consider_pair_images(std::uint32_t i, const Particle& pi, doubl
 }
 
 void FastEngine::scan_small_neighbours(std::uint32_t i, const Particle& pi, double xi, double yi, Key& best) {
+    scan_cells(i, pi, xi, yi, -1, 1, -1, 1, best);
+}
+
+inline void FastEngine::scan_cells(std::uint32_t i, const Particle& pi, double xi, double yi, std::int64_t x0,
+                                   std::int64_t x1, std::int64_t y0, std::int64_t y1, Key& best) {
     const auto cx = static_cast<std::int64_t>(pi.cell % nx_);
     const auto cy = static_cast<std::int64_t>(pi.cell / nx_);
-    for (std::int64_t oy = -1; oy <= 1; ++oy) {
+    for (std::int64_t oy = y0; oy <= y1; ++oy) {
         std::int64_t y = cy + oy;
         double shift_y = 0.0;
         if (y < 0 || y >= ny_) {
@@ -420,7 +459,7 @@ void FastEngine::scan_small_neighbours(std::uint32_t i, const Particle& pi, doub
             shift_y = y < 0 ? -box_.height : box_.height;
             y = y < 0 ? y + ny_ : y - ny_;
         }
-        for (std::int64_t ox = -1; ox <= 1; ++ox) {
+        for (std::int64_t ox = x0; ox <= x1; ++ox) {
             std::int64_t x = cx + ox;
             double shift_x = 0.0;
             if (x < 0 || x >= nx_) {
@@ -601,6 +640,14 @@ bool FastEngine::check_invariants() const {
         if (!is_big(i) && !seen[i]) return false;
         if (p_[i].t > now_) return false;
         if (heap_.contains(i) && heap_.key(i).t < now_) return false;
+        // The pending event is the remembered pair or comes no later than it; a pending pair is
+        // the remembered one.
+        const Cold& ci = cold_[i];
+        if (ci.pair_t != never && (!heap_.contains(i) || heap_.key(i).t > ci.pair_t)) return false;
+        if (heap_.contains(i) && heap_.key(i).kind() == EventKind::pair &&
+            (heap_.key(i).t != ci.pair_t || heap_.key(i).b() != ci.pair_partner)) {
+            return false;
+        }
         // The centre lies in its cell, up to the rounding of the crossing times.
         const Vec2 pos = position_at_now(i);
         const double cx = static_cast<double>(p_[i].cell % nx_);

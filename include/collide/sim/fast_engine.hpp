@@ -5,7 +5,9 @@
 ///
 /// - Cell grid. Cells are at least one small-disc diameter wide, so a small disc can only touch
 ///   discs in its own and the eight neighbouring cells. Crossing into another cell is an event of
-///   its own (kind `cell`), after which the disc is predicted against its new neighbours.
+///   its own (kind `cell`), after which the disc is predicted against its new neighbours: only
+///   the three cells it newly borders, because each disc remembers the earliest pair event of
+///   its scans since its last full scan (valid while that partner has not collided since).
 /// - Local clocks. Each disc stores its state at its own last event time; nothing is advanced
 ///   unless it takes part in an event (no O(N) drift per event).
 /// - One pending event per disc. The disc's earliest predicted event is its key in an indexed
@@ -31,6 +33,7 @@
 #include "collide/sim/engine.hpp"
 #include "collide/sim/engine_support.hpp"
 #include "collide/sim/event.hpp"
+#include "collide/sim/kinematics.hpp"
 #include "collide/sim/observables.hpp"
 #include "collide/sim/pq/indexed_heap.hpp"
 
@@ -78,12 +81,17 @@ private:
     };
     static_assert(sizeof(Particle) == 64, "one cache line per disc");
 
-    /// What only the disc's own events read (mass at collisions, list links at crossings, the
-    /// stale check of its pending pair event), kept out of the neighbour scans' cache lines.
+    /// What only the disc's own events read (mass at collisions, list links at crossings, its
+    /// earliest pair event), kept out of the neighbour scans' cache lines.
     struct Cold {
-        double m = 0.0;                   ///< mass
-        std::uint32_t prev = 0;           ///< previous disc in the cell list (O(1) unlink)
-        std::uint32_t partner_count = 0;  ///< partner's count when the pending pair event was predicted
+        double m = 0.0;  ///< mass
+        /// The earliest pair event found by the disc's scans since its last full prediction (+inf:
+        /// none): the pair part of its pending event. A crossing keeps it and scans only the
+        /// newly bordering cells, unless the partner has collided since (then all nine).
+        double pair_t = kinematics::never;
+        std::uint32_t pair_partner = no_disc;
+        std::uint32_t pair_count = 0;  ///< the partner's collision count when pair_t was predicted
+        std::uint32_t prev = 0;        ///< previous disc in the cell list (O(1) unlink)
     };
 
     /// A disc's pending event in 16 bytes (four keys per cache line in the heap): the time, the
@@ -139,6 +147,8 @@ private:
 
     // --- prediction
     void predict(std::uint32_t i);
+    void predict_after_crossing(std::uint32_t i, std::uint32_t axis);
+    void schedule(std::uint32_t i, const Particle& pi, double xi, double yi, const Key& pair);
     /// True when the pair cannot have an event before best_t (cheap bound, no sqrt or division).
     [[nodiscard]] bool cannot_beat(Vec2 dr, Vec2 dv, double sigma, double best_t) const noexcept;
     void consider_pair(std::uint32_t i, const Particle& pi, double xi, double yi, std::uint32_t j,
@@ -146,6 +156,8 @@ private:
     void consider_pair_images(std::uint32_t i, const Particle& pi, double xi, double yi, std::uint32_t j,
                               Key& best);
     void scan_small_neighbours(std::uint32_t i, const Particle& pi, double xi, double yi, Key& best);
+    void scan_cells(std::uint32_t i, const Particle& pi, double xi, double yi, std::int64_t x0, std::int64_t x1,
+                    std::int64_t y0, std::int64_t y1, Key& best);
     void scan_ring(std::uint32_t i, const Particle& pi, double xi, double yi, Key& best);
     void consider_walls_and_cells(std::uint32_t i, const Particle& pi, double xi, double yi, Key& best);
 
