@@ -149,15 +149,9 @@ void FastEngine::place_discs(const Scene& scene) {
     if (n >= Key::index_mask) throw_input_error("", 0, "discs", "too many discs for the fast engine (at most 2^30 - 2)");
     scene_index_ = locality_order(scene);
     p_.reserve(n);
-    prev_.reserve(n);
-    count_.reserve(n);
-    partner_count_.reserve(n);
-    last_partner_.reserve(n);
+    cold_.reserve(n);
     p_.resize(n);
-    prev_.assign(n, no_disc);
-    count_.assign(n, 0);
-    partner_count_.assign(n, 0);
-    last_partner_.assign(n, no_disc);
+    cold_.assign(n, Cold{});
     image_.assign(n, Image{});
     start_.resize(n);
     heap_.reserve_handles(n);
@@ -165,7 +159,8 @@ void FastEngine::place_discs(const Scene& scene) {
     for (std::uint32_t i = 0; i < n; ++i) {
         const Disc& d = scene.discs[scene_index_[i]];
         const Vec2 pos = box_.wrap(d.position);
-        p_[i] = Particle{pos.x, pos.y, d.velocity.x, d.velocity.y, 0.0, d.radius, d.mass, no_disc, 0};
+        p_[i] = Particle{pos.x, pos.y, d.velocity.x, d.velocity.y, 0.0, d.radius, no_disc, 0, 0, no_disc};
+        cold_[i].m = d.mass;
         start_[i] = d.position;
         if (periodic_) {
             // Keep the unwrapped start: image counts measure wrapping from the wrapped position.
@@ -201,8 +196,8 @@ void FastEngine::advance_to(double t) {
 void FastEngine::process(std::uint32_t i, const Key& key) {
     switch (key.kind()) {
         case EventKind::pair: {
-            const std::uint32_t j = key.a == i ? key.b() : key.a;
-            if (count_[j] != partner_count_[i]) {
+            const std::uint32_t j = key.b();
+            if (p_[j].count != cold_[i].pair_count) {
                 // j collided after i predicted this; i's trajectory is unchanged, predict it anew.
                 ++stats_.stale_pops;
                 predict(i);
@@ -230,16 +225,16 @@ void FastEngine::process_pair(std::uint32_t i, std::uint32_t j, double t) {
     const Vec2 dr = box_.displacement({pi.x, pi.y}, {pj.x, pj.y});
     Vec2 vi{pi.vx, pi.vy};
     Vec2 vj{pj.vx, pj.vy};
-    const Vec2 impulse = kinematics::resolve_pair(vi, vj, pi.m, pj.m, dr);
+    const Vec2 impulse = kinematics::resolve_pair(vi, vj, cold_[i].m, cold_[j].m, dr);
     pi.vx = vi.x;
     pi.vy = vi.y;
     pj.vx = vj.x;
     pj.vy = vj.y;
     tally_.virial += std::abs(dot(dr, impulse));
-    ++count_[i];
-    ++count_[j];
-    last_partner_[i] = j;
-    last_partner_[j] = i;
+    ++pi.count;
+    ++pj.count;
+    pi.last_partner = j;
+    pj.last_partner = i;
     ++collisions_pair_;
     if (listener_) listener_(to_record(t, EventKind::pair, scene_index_[i], scene_index_[j]));
     predict(i);
@@ -250,16 +245,16 @@ void FastEngine::process_wall(std::uint32_t i, EventKind kind, double t) {
     advance_disc(i);
     Particle& pi = p_[i];
     if (kind == EventKind::xwall) {
-        tally_.wall_impulse += 2.0 * pi.m * std::abs(pi.vx);
+        tally_.wall_impulse += 2.0 * cold_[i].m * std::abs(pi.vx);
         pi.vx = -pi.vx;
         ++collisions_xwall_;
     } else {
-        tally_.wall_impulse += 2.0 * pi.m * std::abs(pi.vy);
+        tally_.wall_impulse += 2.0 * cold_[i].m * std::abs(pi.vy);
         pi.vy = -pi.vy;
         ++collisions_ywall_;
     }
-    ++count_[i];
-    last_partner_[i] = no_disc;
+    ++pi.count;
+    pi.last_partner = no_disc;
     if (listener_) listener_(to_record(t, kind, scene_index_[i], no_disc));
     predict(i);
 }
@@ -300,7 +295,7 @@ void FastEngine::process_cell(std::uint32_t i, std::uint32_t axis) {
         link(i, cell);
     }
     ++cell_crossings_;
-    predict(i);
+    predict_after_crossing(i, axis);
 }
 
 // ------------------------------------------------------------------------------------------
@@ -311,21 +306,55 @@ void FastEngine::predict(std::uint32_t i) {
     const double dt = now_ - pi.t;
     const double xi = pi.x + pi.vx * dt;
     const double yi = pi.y + pi.vy * dt;
-    Key best = Key::make(never, i, no_disc, EventKind::cell);
-    consider_walls_and_cells(i, pi, xi, yi, best);
+    // Pairs first, bounded only by each other (not by the wall and crossing times): the earliest
+    // pair is remembered for the crossings to come, so it must be exact.
+    Key pair = Key::make(never, i, no_disc, EventKind::pair);
     if (is_big(i)) {
-        scan_ring(i, pi, xi, yi, best);
+        scan_ring(i, pi, xi, yi, pair);
     } else {
-        scan_small_neighbours(i, pi, xi, yi, best);
+        scan_small_neighbours(i, pi, xi, yi, pair);
     }
     for (std::uint32_t b : big_) {
-        if (b != i) consider_pair_images(i, pi, xi, yi, b, best);
+        if (b != i) consider_pair_images(i, pi, xi, yi, b, pair);
     }
+    schedule(i, pi, xi, yi, pair);
+}
+
+void FastEngine::predict_after_crossing(std::uint32_t i, std::uint32_t axis) {
+    const Particle& pi = p_[i];
+    const Cold& ci = cold_[i];
+    // A big disc reaches a whole ring of cells; and once the remembered pair's partner has
+    // collided, the pairs that lost to it may be the earliest: both need the full scan.
+    if (is_big(i) || (ci.pair_t != never && p_[ci.pair_partner].count != ci.pair_count)) {
+        predict(i);
+        return;
+    }
+    // Crossings move nothing (pi.t == now_). The remembered pair covers every disc scanned since
+    // the last full prediction: discs that came near i since then scanned i when they crossed
+    // (and hold the pair themselves if it is their earliest); discs that collided since predicted
+    // again against i. What is new to i is the row or column of cells it now borders.
+    Key pair = Key::make(ci.pair_t, i, ci.pair_partner, EventKind::pair);
+    if (axis == 0) {
+        const std::int64_t dx = pi.vx > 0.0 ? 1 : -1;
+        scan_cells(i, pi, pi.x, pi.y, dx, dx, -1, 1, pair);
+    } else {
+        const std::int64_t dy = pi.vy > 0.0 ? 1 : -1;
+        scan_cells(i, pi, pi.x, pi.y, -1, 1, dy, dy, pair);
+    }
+    schedule(i, pi, pi.x, pi.y, pair);
+}
+
+void FastEngine::schedule(std::uint32_t i, const Particle& pi, double xi, double yi, const Key& pair) {
+    Cold& ci = cold_[i];
+    ci.pair_t = pair.t;
+    ci.pair_partner = pair.t == never ? no_disc : pair.b();
+    ci.pair_count = pair.t == never ? 0 : p_[pair.b()].count;
+    Key best = pair;
+    consider_walls_and_cells(i, pi, xi, yi, best);
     if (best.t == never) {
         if (heap_.contains(i)) heap_.erase(i);
         return;
     }
-    if (best.kind() == EventKind::pair) partner_count_[i] = count_[best.a == i ? best.b() : best.a];
     if (!heap_.contains(i)) {
         ++stats_.pushes;
     }
@@ -382,7 +411,7 @@ inline void FastEngine::consider_pair(std::uint32_t i, const Particle& pi, doubl
     const Vec2 dv{pj.vx - pi.vx, pj.vy - pi.vy};
     const double sigma = pi.r + pj.r;
     ++predictions_;
-    if (last_partner_[i] == j && last_partner_[j] == i) {
+    if (pi.last_partner == j && pj.last_partner == i) {
         const double reach = sigma * (1.0 + just_collided_slack);
         if (norm2(dr) < reach * reach) return;
     }
@@ -391,7 +420,7 @@ inline void FastEngine::consider_pair(std::uint32_t i, const Particle& pi, doubl
     if (dt == never) return;
     const double t = now_ + dt;
     if (t > best.t) return;
-    const Key k = Key::make(t, std::min(i, j), std::max(i, j), EventKind::pair);
+    const Key k = Key::make(t, i, j, EventKind::pair);
     if (key_less_(k, best)) best = k;
 }
 
@@ -415,9 +444,14 @@ void FastEngine::consider_pair_images(std::uint32_t i, const Particle& pi, doubl
 }
 
 void FastEngine::scan_small_neighbours(std::uint32_t i, const Particle& pi, double xi, double yi, Key& best) {
+    scan_cells(i, pi, xi, yi, -1, 1, -1, 1, best);
+}
+
+inline void FastEngine::scan_cells(std::uint32_t i, const Particle& pi, double xi, double yi, std::int64_t x0,
+                                   std::int64_t x1, std::int64_t y0, std::int64_t y1, Key& best) {
     const auto cx = static_cast<std::int64_t>(pi.cell % nx_);
     const auto cy = static_cast<std::int64_t>(pi.cell / nx_);
-    for (std::int64_t oy = -1; oy <= 1; ++oy) {
+    for (std::int64_t oy = y0; oy <= y1; ++oy) {
         std::int64_t y = cy + oy;
         double shift_y = 0.0;
         if (y < 0 || y >= ny_) {
@@ -425,7 +459,7 @@ void FastEngine::scan_small_neighbours(std::uint32_t i, const Particle& pi, doub
             shift_y = y < 0 ? -box_.height : box_.height;
             y = y < 0 ? y + ny_ : y - ny_;
         }
-        for (std::int64_t ox = -1; ox <= 1; ++ox) {
+        for (std::int64_t ox = x0; ox <= x1; ++ox) {
             std::int64_t x = cx + ox;
             double shift_x = 0.0;
             if (x < 0 || x >= nx_) {
@@ -493,21 +527,22 @@ void FastEngine::link(std::uint32_t i, std::uint32_t cell) noexcept {
     Particle& pi = p_[i];
     pi.cell = cell;
     pi.next = head_[cell];
-    prev_[i] = no_disc;
-    if (pi.next != no_disc) prev_[pi.next] = i;
+    cold_[i].prev = no_disc;
+    if (pi.next != no_disc) cold_[pi.next].prev = i;
     head_[cell] = i;
 }
 
 void FastEngine::unlink(std::uint32_t i) noexcept {
     Particle& pi = p_[i];
-    if (prev_[i] == no_disc) {
+    const std::uint32_t prev = cold_[i].prev;
+    if (prev == no_disc) {
         head_[pi.cell] = pi.next;
     } else {
-        p_[prev_[i]].next = pi.next;
+        p_[prev].next = pi.next;
     }
-    if (pi.next != no_disc) prev_[pi.next] = prev_[i];
+    if (pi.next != no_disc) cold_[pi.next].prev = prev;
     pi.next = no_disc;
-    prev_[i] = no_disc;
+    cold_[i].prev = no_disc;
 }
 
 Vec2 FastEngine::position_at_now(std::uint32_t i) const noexcept {
@@ -530,7 +565,7 @@ Snapshot FastEngine::snapshot() const {
         d.position = box_.wrap(position_at_now(i));
         d.velocity = {p_[i].vx, p_[i].vy};
         d.radius = p_[i].r;
-        d.mass = p_[i].m;
+        d.mass = cold_[i].m;
         d.color = appearance_.colors[k];
         d.tagged = appearance_.tagged[k] != 0;
     }
@@ -559,7 +594,7 @@ Measurements FastEngine::measurements() const {
     for (std::uint32_t i = 0; i < n; ++i) {
         positions[i] = position_at_now(i);
         velocities[i] = {p_[i].vx, p_[i].vy};
-        masses[i] = p_[i].m;
+        masses[i] = cold_[i].m;
         radii[i] = p_[i].r;
         if (appearance_.in_msd(scene_index_[i])) {
             const Vec2 unwrapped{positions[i].x + image_[i].x * box_.width,
@@ -582,8 +617,8 @@ Measurements FastEngine::measurements() const {
 std::uint64_t FastEngine::bytes() const noexcept {
     constexpr std::size_t u32 = sizeof(std::uint32_t);
     std::size_t total = p_.capacity() * sizeof(Particle);
-    total += (prev_.capacity() + count_.capacity() + partner_count_.capacity() + last_partner_.capacity() +
-              big_.capacity() + head_.capacity() + scene_index_.capacity()) * u32;
+    total += cold_.capacity() * sizeof(Cold);
+    total += (big_.capacity() + head_.capacity() + scene_index_.capacity()) * u32;
     total += image_.capacity() * sizeof(Image) + start_.capacity() * sizeof(Vec2);
     total += heap_.bytes();
     total += appearance_.bytes();
@@ -596,7 +631,7 @@ bool FastEngine::check_invariants() const {
     for (std::size_t c = 0; c < head_.size(); ++c) {
         std::uint32_t before = no_disc;
         for (std::uint32_t j = head_[c]; j != no_disc; j = p_[j].next) {
-            if (j >= p_.size() || seen[j] || p_[j].cell != c || prev_[j] != before || is_big(j)) return false;
+            if (j >= p_.size() || seen[j] || p_[j].cell != c || cold_[j].prev != before || is_big(j)) return false;
             seen[j] = 1;
             before = j;
         }
@@ -605,6 +640,14 @@ bool FastEngine::check_invariants() const {
         if (!is_big(i) && !seen[i]) return false;
         if (p_[i].t > now_) return false;
         if (heap_.contains(i) && heap_.key(i).t < now_) return false;
+        // The pending event is the remembered pair or comes no later than it; a pending pair is
+        // the remembered one.
+        const Cold& ci = cold_[i];
+        if (ci.pair_t != never && (!heap_.contains(i) || heap_.key(i).t > ci.pair_t)) return false;
+        if (heap_.contains(i) && heap_.key(i).kind() == EventKind::pair &&
+            (heap_.key(i).t != ci.pair_t || heap_.key(i).b() != ci.pair_partner)) {
+            return false;
+        }
         // The centre lies in its cell, up to the rounding of the crossing times.
         const Vec2 pos = position_at_now(i);
         const double cx = static_cast<double>(p_[i].cell % nx_);

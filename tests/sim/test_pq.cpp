@@ -350,6 +350,62 @@ TEST_CASE("IndexedDaryHeap refuses misuse with an Error and stays intact") {
     CHECK(heap.check_invariants());
 }
 
+// ---- keys that name their own handle (the fast engine's layout: no handle array) --------------
+
+namespace {
+
+struct OwnedKey {
+    int key = 0;
+    std::uint32_t handle = 0;
+    bool operator<(const OwnedKey& o) const { return key != o.key ? key < o.key : handle < o.handle; }
+};
+struct OwnerOf {
+    std::uint32_t operator()(const OwnedKey& k) const noexcept { return k.handle; }
+};
+
+}  // namespace
+
+TEST_CASE("IndexedDaryHeap with keys naming their handles matches a model and refuses a wrong name") {
+    constexpr unsigned handles = 200;
+    IndexedDaryHeap<OwnedKey, Orientation::min, 4, std::less<OwnedKey>, OwnerOf> heap(handles);
+    std::set<std::pair<int, unsigned>> order;  // model: (key, handle)
+    std::map<unsigned, int> key_of;
+    std::mt19937_64 rng(7);
+    std::uniform_int_distribution<unsigned> handle(0, handles - 1);
+    std::uniform_int_distribution<int> key(0, 300);
+    std::size_t mismatches = 0;
+    const int ops = validate_heaps ? 6'000 : 30'000;
+    for (int op = 0; op < ops; ++op) {
+        const unsigned h = handle(rng);
+        const int k = key(rng);
+        if (op % 3 == 2 && !order.empty()) {
+            mismatches += heap.top() != order.begin()->second || heap.top_key().key != order.begin()->first;
+            const unsigned got = heap.pop();
+            order.erase({key_of[got], got});
+            key_of.erase(got);
+        } else {
+            heap.push_or_change(h, OwnedKey{k, h});
+            if (key_of.count(h) > 0) order.erase({key_of[h], h});
+            key_of[h] = k;
+            order.insert({k, h});
+        }
+        mismatches += heap.size() != order.size();
+    }
+    CHECK(mismatches == 0);
+    CHECK(heap.check_invariants());
+    std::vector<unsigned> model;
+    for (const auto& [k, h] : order) model.push_back(h);
+    std::vector<unsigned> in_array = heap.array();
+    std::sort(in_array.begin(), in_array.end());
+    std::sort(model.begin(), model.end());
+    CHECK(in_array == model);
+    // A key that names another handle is a programming error, refused before any change.
+    const unsigned present = heap.top();
+    CHECK_THROWS_AS(heap.change_key(present, OwnedKey{0, present + 1}), collide::Error);
+    CHECK(heap.check_invariants());
+    CHECK(heap.top() == present);
+}
+
 // ---- DaryHeap's bottom-up pop leaves exactly the lecture's array --------------------------------
 
 namespace {

@@ -5,7 +5,9 @@
 ///
 /// - Cell grid. Cells are at least one small-disc diameter wide, so a small disc can only touch
 ///   discs in its own and the eight neighbouring cells. Crossing into another cell is an event of
-///   its own (kind `cell`), after which the disc is predicted against its new neighbours.
+///   its own (kind `cell`), after which the disc is predicted against its new neighbours: only
+///   the three cells it newly borders, because each disc remembers the earliest pair event of
+///   its scans since its last full scan (valid while that partner has not collided since).
 /// - Local clocks. Each disc stores its state at its own last event time; nothing is advanced
 ///   unless it takes part in an event (no O(N) drift per event).
 /// - One pending event per disc. The disc's earliest predicted event is its key in an indexed
@@ -31,6 +33,7 @@
 #include "collide/sim/engine.hpp"
 #include "collide/sim/engine_support.hpp"
 #include "collide/sim/event.hpp"
+#include "collide/sim/kinematics.hpp"
 #include "collide/sim/observables.hpp"
 #include "collide/sim/pq/indexed_heap.hpp"
 
@@ -63,20 +66,38 @@ public:
     [[nodiscard]] bool check_invariants() const;
 
 private:
-    /// What a neighbour scan reads, in one cache line.
+    /// What a neighbour scan and an event on the disc read, in one cache line. Counters that each
+    /// event reads for both discs sit here too: as separate arrays they cost a cache miss per disc
+    /// and per array at large N (the access pattern jumps across the whole box).
     struct alignas(64) Particle {
         double x, y;    ///< position at local time t (periodic: within one cell of the box)
         double vx, vy;  ///< velocity
         double t;       ///< local clock: the time the position refers to
         double r;       ///< radius
-        double m;       ///< mass
-        std::uint32_t next;  ///< next disc in the same cell list (no_disc ends it)
-        std::uint32_t cell;  ///< cell of the centre (cy * nx + cx), tracked by cell events
+        std::uint32_t next;          ///< next disc in the same cell list (no_disc ends it)
+        std::uint32_t cell;          ///< cell of the centre (cy * nx + cx), tracked by cell events
+        std::uint32_t count;         ///< collisions of this disc (invalidates partners' events)
+        std::uint32_t last_partner;  ///< see sim::just_collided_slack
+    };
+    static_assert(sizeof(Particle) == 64, "one cache line per disc");
+
+    /// What only the disc's own events read (mass at collisions, list links at crossings, its
+    /// earliest pair event), kept out of the neighbour scans' cache lines.
+    struct Cold {
+        double m = 0.0;  ///< mass
+        /// The earliest pair event found by the disc's scans since its last full prediction (+inf:
+        /// none): the pair part of its pending event. A crossing keeps it and scans only the
+        /// newly bordering cells, unless the partner has collided since (then all nine).
+        double pair_t = kinematics::never;
+        std::uint32_t pair_partner = no_disc;
+        std::uint32_t pair_count = 0;  ///< the partner's collision count when pair_t was predicted
+        std::uint32_t prev = 0;        ///< previous disc in the cell list (O(1) unlink)
     };
 
     /// A disc's pending event in 16 bytes (four keys per cache line in the heap): the time, the
-    /// first disc (pairs: the smaller index), and the kind packed above the second index (pairs:
-    /// the partner; walls: unused; cells: the axis). Hence at most 2^30 - 1 discs.
+    /// disc that holds it (its heap handle, so the heap keeps no handle array), and the kind
+    /// packed above the second index (pairs: the partner; walls: unused; cells: the axis).
+    /// Hence at most 2^30 - 1 discs.
     struct Key {
         static constexpr std::uint32_t index_mask = (1U << 30) - 1;
         double t;
@@ -102,7 +123,10 @@ private:
         }
         [[nodiscard]] bool tie_break(const Key& x, const Key& y) const noexcept;
     };
-    using Heap = pq::IndexedDaryHeap<Key, pq::Orientation::min, 4, KeyLess>;
+    struct KeyOwner {
+        [[nodiscard]] std::uint32_t operator()(const Key& k) const noexcept { return k.a; }
+    };
+    using Heap = pq::IndexedDaryHeap<Key, pq::Orientation::min, 4, KeyLess, KeyOwner>;
 
     struct Image {
         std::int32_t x = 0;  ///< times the disc wrapped across the right (+) or left (-) edge
@@ -123,6 +147,8 @@ private:
 
     // --- prediction
     void predict(std::uint32_t i);
+    void predict_after_crossing(std::uint32_t i, std::uint32_t axis);
+    void schedule(std::uint32_t i, const Particle& pi, double xi, double yi, const Key& pair);
     /// True when the pair cannot have an event before best_t (cheap bound, no sqrt or division).
     [[nodiscard]] bool cannot_beat(Vec2 dr, Vec2 dv, double sigma, double best_t) const noexcept;
     void consider_pair(std::uint32_t i, const Particle& pi, double xi, double yi, std::uint32_t j,
@@ -130,6 +156,8 @@ private:
     void consider_pair_images(std::uint32_t i, const Particle& pi, double xi, double yi, std::uint32_t j,
                               Key& best);
     void scan_small_neighbours(std::uint32_t i, const Particle& pi, double xi, double yi, Key& best);
+    void scan_cells(std::uint32_t i, const Particle& pi, double xi, double yi, std::int64_t x0, std::int64_t x1,
+                    std::int64_t y0, std::int64_t y1, Key& best);
     void scan_ring(std::uint32_t i, const Particle& pi, double xi, double yi, Key& best);
     void consider_walls_and_cells(std::uint32_t i, const Particle& pi, double xi, double yi, Key& best);
 
@@ -156,10 +184,7 @@ private:
 
     // discs
     std::vector<Particle> p_;
-    std::vector<std::uint32_t> prev_;           ///< previous disc in the cell list (O(1) unlink)
-    std::vector<std::uint32_t> count_;          ///< collisions per disc (invalidates partners' events)
-    std::vector<std::uint32_t> partner_count_;  ///< partner's count when i's pair event was predicted
-    std::vector<std::uint32_t> last_partner_;   ///< see sim::just_collided_slack
+    std::vector<Cold> cold_;
     std::vector<Image> image_;                  ///< periodic unwrapping (mean squared displacement)
     std::vector<Vec2> start_;                   ///< positions at t = 0
     /// Discs are numbered internally along a Z-order curve over the cells, so that neighbours in

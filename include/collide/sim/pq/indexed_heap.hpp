@@ -9,12 +9,21 @@
 /// sink then compares d keys that sit next to each other in memory instead of d keys scattered
 /// over the handle range (a cache miss each). For the fast engine at 10^5 discs this halved the
 /// heap's share of the run time.
+/// Two layout choices for large heaps (the fast engine at 10^6 discs, where every level of a
+/// sink below the cached top levels is a cache miss):
+/// - The key array starts D - 1 slots before a 64-byte boundary, so the D children of a node
+///   share one cache line when D * sizeof(Key) == 64 (4-ary, 16-byte keys) instead of
+///   straddling two lines for three nodes in four.
+/// - Keys that name their own handle (HandleOf given: HandleOf{}(key) is the handle) need no
+///   handle array: a sink then reads one line per level instead of two.
 
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <new>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -22,9 +31,33 @@
 
 namespace collide::pq {
 
-template <class Key, Orientation O = Orientation::min, unsigned D = 4, class Less = std::less<Key>>
+/// std::allocator with cache-line alignment (the key array of IndexedDaryHeap).
+template <class T>
+struct CacheLineAllocator {
+    using value_type = T;
+    static constexpr std::align_val_t alignment{64};
+
+    CacheLineAllocator() = default;
+    template <class U>
+    explicit CacheLineAllocator(const CacheLineAllocator<U>& /*other*/) noexcept {}
+
+    [[nodiscard]] T* allocate(std::size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), alignment)); }
+    void deallocate(T* p, std::size_t /*n*/) noexcept { ::operator delete(p, alignment); }
+
+    template <class U>
+    bool operator==(const CacheLineAllocator<U>& /*other*/) const noexcept {
+        return true;
+    }
+};
+
+/// HandleOf = void: handles are stored beside the keys. Otherwise a function object with
+/// `handle_type operator()(const Key&)` that reads the handle out of a key (the fast engine's
+/// events name the disc that holds them); push and change_key then require HandleOf{}(k) == h.
+template <class Key, Orientation O = Orientation::min, unsigned D = 4, class Less = std::less<Key>,
+          class HandleOf = void>
 class IndexedDaryHeap {
     static_assert(D >= 2, "a heap needs at least two children per node");
+    static constexpr bool embedded = !std::is_void_v<HandleOf>;
 
 public:
     using handle_type = std::uint32_t;
@@ -33,21 +66,19 @@ public:
 
     /// An empty heap that accepts handles 0 .. capacity-1.
     explicit IndexedDaryHeap(std::size_t capacity = 0, Less less = Less{})
-        : pos_(capacity, absent), less_(std::move(less)) {
-        heap_.reserve(capacity);
-        keys_.reserve(capacity);
+        : pos_(capacity, absent), keys_(pad), less_(std::move(less)) {
+        reserve_arrays(capacity);
     }
 
-    [[nodiscard]] bool empty() const noexcept { return heap_.empty(); }
-    [[nodiscard]] std::size_t size() const noexcept { return heap_.size(); }
+    [[nodiscard]] bool empty() const noexcept { return size() == 0; }
+    [[nodiscard]] std::size_t size() const noexcept { return keys_.size() - pad; }
     [[nodiscard]] std::size_t capacity() const noexcept { return pos_.size(); }
 
     /// Grows the handle range to 0 .. capacity-1 (never shrinks).
     void reserve_handles(std::size_t capacity) {
         if (capacity > pos_.size()) {
             pos_.resize(capacity, absent);
-            heap_.reserve(capacity);
-            keys_.reserve(capacity);
+            reserve_arrays(capacity);
         }
     }
 
@@ -58,39 +89,43 @@ public:
     /// The key of a handle in the heap. Throws Error for an unknown handle.
     [[nodiscard]] const Key& key(handle_type h) const {
         require_contains(h, "key");
-        return keys_[pos_[h]];
+        return at(pos_[h]);
     }
 
     /// The handle that comes out next and its key. Precondition: !empty().
-    [[nodiscard]] handle_type top() const { return heap_.front(); }
-    [[nodiscard]] const Key& top_key() const { return keys_.front(); }
+    [[nodiscard]] handle_type top() const { return handle_at(0); }
+    [[nodiscard]] const Key& top_key() const { return at(0); }
 
-    /// Inserts handle h with key k. Throws Error if h is out of range or already present.
+    /// Inserts handle h with key k. Throws Error if h is out of range or already present (or,
+    /// with HandleOf, if k names another handle).
     void push(handle_type h, Key k) {
         if (h >= pos_.size()) throw_runtime_error("indexed heap: handle " + std::to_string(h) + " out of range");
         if (pos_[h] != absent) throw_runtime_error("indexed heap: handle " + std::to_string(h) + " already present");
-        heap_.push_back(h);
+        require_names(h, k);
+        if constexpr (!embedded) heap_.push_back(h);
         keys_.push_back(k);
-        swim(heap_.size() - 1, std::move(k));
+        swim(size() - 1, h, std::move(k));
         validate();
     }
 
     /// Removes and returns the handle that comes out next. Precondition: !empty().
     handle_type pop() {
-        const handle_type h = heap_.front();
+        const handle_type h = handle_at(0);
         remove_at(0);
         validate();
         return h;
     }
 
-    /// Sets the key of h, moving it up or down as needed. Throws Error for an unknown handle.
+    /// Sets the key of h, moving it up or down as needed. Throws Error for an unknown handle
+    /// (or, with HandleOf, if k names another handle).
     void change_key(handle_type h, Key k) {
         require_contains(h, "change_key");
+        require_names(h, k);
         const std::size_t i = pos_[h];
-        if (first(k, keys_[i])) {
-            swim(i, std::move(k));
+        if (first(k, at(i))) {
+            swim(i, h, std::move(k));
         } else {
-            sink(i, std::move(k));
+            sink(i, h, std::move(k));
         }
         validate();
     }
@@ -107,14 +142,14 @@ public:
     /// Raises h's key under `Less` (k must not be less than the current key). Throws otherwise.
     void increase_key(handle_type h, Key k) {
         require_contains(h, "increase_key");
-        if (less_(k, keys_[pos_[h]])) throw_runtime_error("indexed heap: increase_key given a smaller key");
+        if (less_(k, at(pos_[h]))) throw_runtime_error("indexed heap: increase_key given a smaller key");
         change_key(h, std::move(k));
     }
 
     /// Lowers h's key under `Less` (k must not be greater than the current key). Throws otherwise.
     void decrease_key(handle_type h, Key k) {
         require_contains(h, "decrease_key");
-        if (less_(keys_[pos_[h]], k)) throw_runtime_error("indexed heap: decrease_key given a larger key");
+        if (less_(at(pos_[h]), k)) throw_runtime_error("indexed heap: decrease_key given a larger key");
         change_key(h, std::move(k));
     }
 
@@ -125,30 +160,63 @@ public:
         validate();
     }
 
-    /// Handles in heap-array order, for traces and tests.
-    [[nodiscard]] const std::vector<handle_type>& array() const noexcept { return heap_; }
+    /// Handles in heap-array order, for traces and tests. O(N): builds a copy.
+    [[nodiscard]] std::vector<handle_type> array() const {
+        std::vector<handle_type> out(size());
+        for (std::size_t i = 0; i < out.size(); ++i) out[i] = handle_at(i);
+        return out;
+    }
 
     /// Bytes held by the heap's arrays (capacities), for memory accounting.
     [[nodiscard]] std::size_t bytes() const noexcept {
         return (heap_.capacity() + pos_.capacity()) * sizeof(handle_type) + keys_.capacity() * sizeof(Key);
     }
 
-    /// Heap order, and the position map is the inverse of the heap array:
-    /// pos_[heap_[i]] == i for every i, and exactly size() handles are marked present. O(capacity).
+    /// Heap order, and the position map is the inverse of the heap array: pos_[handle at i] == i
+    /// for every i, and exactly size() handles are marked present. O(capacity).
     [[nodiscard]] bool check_invariants() const {
-        if (keys_.size() != heap_.size()) return false;
+        if (keys_.size() < pad) return false;
+        if (!embedded && heap_.size() != size()) return false;
         std::size_t present = 0;
         for (handle_type p : pos_) present += (p != absent);
-        if (present != heap_.size()) return false;
-        for (std::size_t i = 0; i < heap_.size(); ++i) {
-            if (heap_[i] >= pos_.size() || pos_[heap_[i]] != i) return false;
-            if (i > 0 && first(keys_[i], keys_[(i - 1) / D])) return false;
+        if (present != size()) return false;
+        for (std::size_t i = 0; i < size(); ++i) {
+            const handle_type h = handle_at(i);
+            if (h >= pos_.size() || pos_[h] != i) return false;
+            if (i > 0 && first(at(i), at((i - 1) / D))) return false;
         }
         return true;
     }
 
 private:
     static constexpr handle_type absent = std::numeric_limits<handle_type>::max();
+    /// Unused slots before the root: node i sits at keys_[i + pad], so the children of node i
+    /// (D i + 1 .. D i + D) start at slot D (i + 1), a multiple of D.
+    static constexpr std::size_t pad = D - 1;
+
+    [[nodiscard]] const Key& at(std::size_t i) const noexcept { return keys_[i + pad]; }
+    [[nodiscard]] Key& at(std::size_t i) noexcept { return keys_[i + pad]; }
+    [[nodiscard]] handle_type handle_at(std::size_t i) const noexcept {
+        if constexpr (embedded) {
+            return HandleOf{}(at(i));
+        } else {
+            return heap_[i];
+        }
+    }
+
+    void reserve_arrays(std::size_t capacity) {
+        if constexpr (!embedded) heap_.reserve(capacity);
+        keys_.reserve(capacity + pad);
+    }
+
+    void require_names([[maybe_unused]] handle_type h, [[maybe_unused]] const Key& k) const {
+        if constexpr (embedded) {
+            if (HandleOf{}(k) != h) {
+                throw_runtime_error("indexed heap: the key given for handle " + std::to_string(h) + " names handle " +
+                                    std::to_string(HandleOf{}(k)));
+            }
+        }
+    }
 
     [[nodiscard]] bool first(const Key& a, const Key& b) const { return comes_first<O>(less_, a, b); }
 
@@ -160,61 +228,57 @@ private:
     }
 
     void place(std::size_t i, handle_type h, Key&& k) {
-        heap_[i] = h;
-        keys_[i] = std::move(k);
+        if constexpr (!embedded) heap_[i] = h;
+        at(i) = std::move(k);
         pos_[h] = static_cast<handle_type>(i);
     }
 
     /// Moves the entry at `from` into slot `to`.
-    void move_entry(std::size_t to, std::size_t from) { place(to, heap_[from], std::move(keys_[from])); }
+    void move_entry(std::size_t to, std::size_t from) { place(to, handle_at(from), std::move(at(from))); }
 
     void remove_at(std::size_t i) {
-        const handle_type h = heap_[i];
-        pos_[h] = absent;
-        const std::size_t last = heap_.size() - 1;
+        pos_[handle_at(i)] = absent;
+        const std::size_t last = size() - 1;
         if (i == last) {
-            heap_.pop_back();
+            if constexpr (!embedded) heap_.pop_back();
             keys_.pop_back();
             return;
         }
-        const handle_type moved = heap_[last];
-        Key k = std::move(keys_[last]);
-        heap_.pop_back();
+        const handle_type moved = handle_at(last);
+        Key k = std::move(at(last));
+        if constexpr (!embedded) heap_.pop_back();
         keys_.pop_back();
-        heap_[i] = moved;  // sink/swim place it for real
         // The moved item may belong above or below its new slot.
-        if (i > 0 && first(k, keys_[(i - 1) / D])) {
-            swim(i, std::move(k));
+        if (i > 0 && first(k, at((i - 1) / D))) {
+            swim(i, moved, std::move(k));
         } else {
-            sink(i, std::move(k));
+            sink(i, moved, std::move(k));
         }
     }
 
-    /// Puts key k (of the handle at heap_[i]) at or above slot i.
-    void swim(std::size_t i, Key k) {
-        const handle_type h = heap_[i];
+    /// Puts key k of handle h at or above slot i (whose contents may be overwritten).
+    void swim(std::size_t i, handle_type h, Key k) {
         while (i > 0) {
             const std::size_t parent = (i - 1) / D;
-            if (!first(k, keys_[parent])) break;
+            if (!first(k, at(parent))) break;
             move_entry(i, parent);
             i = parent;
         }
         place(i, h, std::move(k));
     }
 
-    /// Puts key k (of the handle at heap_[i]) at or below slot i.
-    void sink(std::size_t i, Key k) {
-        const std::size_t n = heap_.size();
-        const handle_type h = heap_[i];
+    /// Puts key k of handle h at or below slot i (whose contents may be overwritten).
+    void sink(std::size_t i, handle_type h, Key k) {
+        const std::size_t n = size();
         for (;;) {
             const std::size_t c0 = D * i + 1;
             if (c0 >= n) break;
             const std::size_t c_end = c0 + D < n ? c0 + D : n;
             std::size_t best = c0;
             for (std::size_t c = c0 + 1; c < c_end; ++c) {
-                if (first(keys_[c], keys_[best])) best = c;
+                if (first(at(c), at(best))) best = c;
             }
-            if (!first(keys_[best], k)) break;
+            if (!first(at(best), k)) break;
             move_entry(i, best);
             i = best;
         }
@@ -225,9 +289,10 @@ private:
         if constexpr (validate_heaps) require_invariant(check_invariants(), "indexed heap order / position map");
     }
 
-    std::vector<handle_type> heap_;  ///< handles in heap order
-    std::vector<handle_type> pos_;   ///< pos_[handle] = index in heap_, or `absent`
-    std::vector<Key> keys_;          ///< keys_[i] is the key of heap_[i] (heap order)
+    std::vector<handle_type> heap_;  ///< handles in heap order (unused when keys name them)
+    std::vector<handle_type> pos_;   ///< pos_[handle] = index in heap order, or `absent`
+    /// Keys in heap order, node i at keys_[i + pad] (the first `pad` slots are unused).
+    std::vector<Key, CacheLineAllocator<Key>> keys_;
     [[no_unique_address]] Less less_;
 };
 
