@@ -284,15 +284,25 @@ private:
     /// popped disc, which then sinks from the root) went from 0.43 M to 0.46 M collisions per
     /// CPU second at 10^6 discs (docs/benchmarks.md).
     void sink(std::size_t i, handle_type h, Key k) {
+        // Two copies of the loop, so that heaps in the caches pay nothing per level for it.
+        if (size() * sizeof(Key) > prefetch_bytes) {
+            sink_loop<true>(i, h, std::move(k));
+        } else {
+            sink_loop<false>(i, h, std::move(k));
+        }
+    }
+
+    template <bool Prefetch>
+    void sink_loop(std::size_t i, handle_type h, Key k) {
         const std::size_t n = size();
-        const Lookahead ahead = n * sizeof(Key) > prefetch_bytes ? lookahead() : Lookahead{};
+        constexpr Lookahead ahead = lookahead();
         for (;;) {
             const std::size_t c0 = D * i + 1;
             if (c0 >= n) break;
             // The hints stay in this loop, which writes the arrays: GCC deleted a prefetch loop
             // in a side-effect-free helper of DaryHeap.
             const std::size_t below = i * ahead.items + ahead.offset;
-            if (ahead.items != 0 && below < n) {
+            if (Prefetch && below < n) {
                 const std::uintptr_t last = address_of(std::min(n, below + ahead.items)) - 1;
                 for (std::uintptr_t line = address_of(below) & ~(heap_line_bytes - 1); line <= last;
                      line += heap_line_bytes) {
@@ -316,7 +326,7 @@ private:
     /// loaded anyway), more while they fit in two cache lines: with 16-byte keys and D = 4,
     /// two levels, 16 keys in four lines (aligned, as the key array is).
     struct Lookahead {
-        std::size_t items = 0;   ///< D^levels; 0: no prefetching
+        std::size_t items = 0;   ///< D^levels
         std::size_t offset = 0;  ///< index of the root's first descendant at that depth
     };
     [[nodiscard]] static constexpr Lookahead lookahead() noexcept {
