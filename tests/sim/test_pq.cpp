@@ -406,6 +406,67 @@ TEST_CASE("IndexedDaryHeap with keys naming their handles matches a model and re
     CHECK(heap.top() == present);
 }
 
+TEST_CASE("IndexedDaryHeap larger than the caches (sinks prefetch levels ahead) matches a model") {
+    // 256-byte keys: 5000 of them exceed prefetch_bytes, so sinks take the prefetching path.
+    struct FatKey {
+        int key = 0;
+        std::uint32_t handle = 0;
+        std::array<char, 248> ballast{};
+        bool operator<(const FatKey& o) const { return key != o.key ? key < o.key : handle < o.handle; }
+    };
+    struct FatOwner {
+        std::uint32_t operator()(const FatKey& k) const noexcept { return k.handle; }
+    };
+    using Heap = IndexedDaryHeap<FatKey, Orientation::min, 4, std::less<FatKey>, FatOwner>;
+    constexpr unsigned handles = 5000;
+    static_assert(handles * sizeof(FatKey) > Heap::prefetch_bytes);
+    Heap heap(handles);
+    std::set<std::pair<int, unsigned>> order;  // model: (key, handle)
+    std::map<unsigned, int> key_of;
+    std::mt19937_64 rng(11);
+    std::uniform_int_distribution<unsigned> handle(0, handles - 1);
+    std::uniform_int_distribution<int> key(0, 1'000'000);
+    const auto set_key = [&](unsigned h, int k) {
+        heap.push_or_change(h, FatKey{k, h, {}});
+        if (key_of.count(h) > 0) order.erase({key_of[h], h});
+        key_of[h] = k;
+        order.insert({k, h});
+    };
+    for (unsigned h = 0; h < handles; ++h) set_key(h, key(rng));
+    std::size_t mismatches = 0;
+    std::size_t broken = 0;
+    std::size_t largest = 0;
+    const int ops = validate_heaps ? 4'000 : 40'000;
+    for (int op = 0; op < ops; ++op) {
+        const unsigned h = handle(rng);
+        if (op % 4 == 3 && !order.empty()) {
+            // The engine's step: the top's key moves later (a sink from the root).
+            const unsigned top = heap.top();
+            mismatches += top != order.begin()->second || heap.top_key().key != order.begin()->first;
+            set_key(top, order.begin()->first + key(rng));
+        } else if (op % 4 == 2 && !order.empty()) {
+            const unsigned got = heap.pop();
+            mismatches += got != order.begin()->second;
+            order.erase({key_of[got], got});
+            key_of.erase(got);
+        } else {
+            set_key(h, key(rng));
+        }
+        largest = std::max(largest, heap.size());
+        mismatches += heap.size() != order.size();
+        if (op % 101 == 0) broken += !heap.check_invariants();
+    }
+    CHECK(largest * sizeof(FatKey) > Heap::prefetch_bytes);
+    CHECK(mismatches == 0);
+    CHECK(broken == 0);
+    CHECK(heap.check_invariants());
+    std::vector<unsigned> drained;
+    while (!heap.empty()) drained.push_back(heap.pop());
+    std::vector<unsigned> model;
+    for (const auto& [k, h] : order) model.push_back(h);
+    CHECK(drained == model);
+}
+
 // ---- DaryHeap's bottom-up pop leaves exactly the lecture's array --------------------------------
 
 namespace {
