@@ -16,10 +16,11 @@ extern "C" {
 namespace collide::video::detail {
 namespace {
 
-// RGBA -> yuv420p on the encoder thread alone: it takes ~2 ms CPU per 1080p frame, and while the
-// pipeline runs, simulation, rendering and x264's threads keep every core busy, so splitting it
-// into bands only adds waiting (bench_video on the loaded 2-core machine: 2 bands 4.1 ms wall vs
-// 3.2 ms for 1). rgba_to_yuv420_bt709 supports bands for machines with cores to spare.
+// RGBA -> yuv420p on the encoder thread alone: it takes ~0.6 ms CPU per 1080p frame (bench_video),
+// and while the pipeline runs, simulation, rendering and x264's threads keep every core busy, so
+// splitting it into bands only adds waiting (bench_video on the loaded 2-core machine, before the
+// AVX2 chroma: 2 bands 4.1 ms wall vs 3.2 ms for 1). rgba_to_yuv420_bt709 supports bands for
+// machines with cores to spare.
 constexpr int conversion_threads = 1;
 
 struct CodecDefaults {

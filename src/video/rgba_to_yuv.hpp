@@ -27,6 +27,12 @@ struct Yuv420View {
 void rgba_to_yuv420_bt709_rows(const std::uint8_t* rgba, std::ptrdiff_t rgba_stride, int width,
                                Yuv420View out, int row_begin, int row_end) noexcept;
 
+/// rgba_to_yuv420_bt709_rows without the SIMD kernels (chosen at run time on x86-64 with AVX2):
+/// the same bytes, slower. The tests compare the two.
+void rgba_to_yuv420_bt709_rows_portable(const std::uint8_t* rgba, std::ptrdiff_t rgba_stride,
+                                        int width, Yuv420View out, int row_begin,
+                                        int row_end) noexcept;
+
 /// Whole picture (`width`, `height` even), split into `threads` horizontal bands converted in
 /// parallel (1 = on the calling thread only).
 void rgba_to_yuv420_bt709(const std::uint8_t* rgba, std::ptrdiff_t rgba_stride, int width,

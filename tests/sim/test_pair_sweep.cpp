@@ -166,6 +166,23 @@ TEST_CASE("pair sweep: exactly touching and near-tangent pairs are candidates") 
     }
 }
 
+TEST_CASE("pair sweep: near-tangent pairs far outside a walled box are candidates too") {
+    // Escaped discs fly on; far from the origin, float rounding of positions (the counting
+    // pass's) is coarse, and the pass's padding must grow with it.
+    const Box box{1.0, 1.0, Boundary::walls};
+    for (double offset : {-37.3, 1000.3, 1.0e5 + 0.3}) {
+        for (double h : {0.0, 1e-3}) {
+            CAPTURE(offset);
+            CAPTURE(h);
+            Discs d = near_tangent_discs(box, h);
+            for (Vec2& p : d.positions)
+                p = p + Vec2{offset, 0.5 * offset};
+            d.add({0.5, 0.5}, {0.0, 0.0}, 0.01);  // one disc stays home
+            check_sweep(box, d, h);
+        }
+    }
+}
+
 TEST_CASE("pair sweep: no discs, one disc") {
     detail::PairSweep sweep;
     std::vector<DiscPair> found{{0, 1}};

@@ -87,6 +87,37 @@ TEST_CASE("random pixels: within 1 code value of the exact formula") {
     CHECK(worst <= 1);
 }
 
+TEST_CASE("the SIMD kernels give the portable code's bytes") {
+    std::mt19937 rng(11);
+    std::uniform_int_distribution<int> byte(0, 255);
+    // Widths below, at and past the 16-pixel SIMD step (the tail is done by the portable code).
+    for (const int width : {2, 14, 16, 18, 46, 130}) {
+        CAPTURE(width);
+        collide::Image image(width, 6);
+        for (auto& value : image.rgba)
+            value = std::uint8_t(byte(rng));
+        // Extremes of the 2x2 sums: saturated primaries, white and black blocks.
+        const int corners[][3] = {
+            {255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {255, 255, 255}, {0, 0, 0}};
+        for (int x = 0; x < width; ++x) {
+            for (int y = 0; y < 2; ++y) {
+                std::uint8_t* p = image.pixel(x, y);
+                for (int c = 0; c < 3; ++c)
+                    p[c] = std::uint8_t(corners[(x / 2) % 5][c]);
+            }
+        }
+        Planes fast(width, image.height);
+        Planes portable(width, image.height);
+        rgba_to_yuv420_bt709_rows(image.rgba.data(), std::ptrdiff_t(image.stride()), width,
+                                  fast.view(), 0, image.height);
+        rgba_to_yuv420_bt709_rows_portable(image.rgba.data(), std::ptrdiff_t(image.stride()), width,
+                                           portable.view(), 0, image.height);
+        CHECK(fast.y == portable.y);
+        CHECK(fast.u == portable.u);
+        CHECK(fast.v == portable.v);
+    }
+}
+
 TEST_CASE("banded conversion on several threads equals the single-threaded result") {
     const collide::Image image = collide::video::testing::test_pattern(96, 54, 3);
     const Planes one = convert(image, 1);

@@ -39,14 +39,19 @@ class PairSweep {
 
     /// Heap memory held (capacity), bytes.
     [[nodiscard]] std::size_t bytes() const noexcept {
-        return (x_.capacity() + y_.capacity() + reach_.capacity()) * sizeof(double);
+        return (x_.capacity() + y_.capacity() + reach_.capacity()) * sizeof(double) +
+               (x32_.capacity() + y32_.capacity() + reach32_.capacity()) * sizeof(float);
     }
 
   private:
-    // Structure of arrays, so the inner loop reads contiguous doubles and vectorises.
+    // Structure of arrays, so the inner loops read contiguous values and vectorise.
     std::vector<double> x_;
     std::vector<double> y_;
     std::vector<double> reach_;  ///< widened r_i + |v_i| h
+    // The same rounded to float, reaches padded for that rounding: the counting pass's copy.
+    std::vector<float> x32_;
+    std::vector<float> y32_;
+    std::vector<float> reach32_;
 };
 
 }  // namespace collide::detail
