@@ -27,7 +27,7 @@ using namespace collide::pq;
 
 /// std::priority_queue behind the Queue interface (pop returns the item), the baseline.
 class StdPriorityQueue {
-public:
+  public:
     using value_type = double;
     [[nodiscard]] bool empty() const { return q_.empty(); }
     [[nodiscard]] std::size_t size() const { return q_.size(); }
@@ -39,7 +39,7 @@ public:
         return out;
     }
 
-private:
+  private:
     std::priority_queue<double, std::vector<double>, std::greater<>> q_;
 };
 static_assert(Queue<StdPriorityQueue>);
@@ -47,8 +47,8 @@ static_assert(Queue<StdPriorityQueue>);
 /// Pre-drawn random numbers, so the timed loop measures the queue and not the generator.
 struct RandomTable {
     static constexpr std::size_t size = 1 << 16;  // a power of two: index with a mask
-    std::vector<double> exponential;               // mean 1
-    std::vector<double> uniform;                   // [0, 1)
+    std::vector<double> exponential;              // mean 1
+    std::vector<double> uniform;                  // [0, 1)
     std::vector<std::uint32_t> bits;
 
     RandomTable() : exponential(size), uniform(size), bits(size) {
@@ -119,29 +119,43 @@ void decrease_heavy(benchmark::State& state) {
 }
 
 void register_hold(const std::string& name, auto make_queue, std::int64_t largest_n) {
-    benchmark::RegisterBenchmark(("hold/" + name).c_str(),
-                                 [make_queue](benchmark::State& state) { hold(state, make_queue()); })
+    benchmark::RegisterBenchmark(
+        ("hold/" + name).c_str(),
+        [make_queue](benchmark::State& state) { hold(state, make_queue()); })
         ->RangeMultiplier(10)
         ->Range(1000, largest_n);
 }
 
 void register_all() {
     constexpr std::int64_t million = 1'000'000;
-    register_hold("std::priority_queue", [] { return StdPriorityQueue{}; }, million);
-    for (const char* kind : {"binary", "dary:3", "dary:4", "dary:8", "dary:5", "indexed:2", "indexed:4",
-                             "indexed:8"}) {
-        with_queue<double, Orientation::min, std::less<double>>(parse_queue_kind(kind), [&](auto q) {
-            register_hold(kind, [q] { return q; }, million);
-        });
+    register_hold(
+        "std::priority_queue", [] { return StdPriorityQueue{}; }, million);
+    for (const char* kind : {"binary", "dary:3", "dary:4", "dary:8", "dary:5", "indexed:2",
+                             "indexed:4", "indexed:8"}) {
+        with_queue<double, Orientation::min, std::less<double>>(
+            parse_queue_kind(kind), [&](auto q) {
+                register_hold(
+                    kind, [q] { return q; }, million);
+            });
     }
     // O(N) per operation: only where a step stays in microseconds.
-    register_hold("unordered", [] { return UnorderedArrayPQ<double, Orientation::min>{}; }, 10'000);
-    register_hold("ordered", [] { return OrderedArrayPQ<double, Orientation::min>{}; }, 10'000);
+    register_hold(
+        "unordered", [] { return UnorderedArrayPQ<double, Orientation::min>{}; }, 10'000);
+    register_hold(
+        "ordered", [] { return OrderedArrayPQ<double, Orientation::min>{}; }, 10'000);
 
-    benchmark::RegisterBenchmark("decrease/indexed:2", decrease_heavy<2>)->RangeMultiplier(10)->Range(1000, million);
-    benchmark::RegisterBenchmark("decrease/indexed:3", decrease_heavy<3>)->RangeMultiplier(10)->Range(1000, million);
-    benchmark::RegisterBenchmark("decrease/indexed:4", decrease_heavy<4>)->RangeMultiplier(10)->Range(1000, million);
-    benchmark::RegisterBenchmark("decrease/indexed:8", decrease_heavy<8>)->RangeMultiplier(10)->Range(1000, million);
+    benchmark::RegisterBenchmark("decrease/indexed:2", decrease_heavy<2>)
+        ->RangeMultiplier(10)
+        ->Range(1000, million);
+    benchmark::RegisterBenchmark("decrease/indexed:3", decrease_heavy<3>)
+        ->RangeMultiplier(10)
+        ->Range(1000, million);
+    benchmark::RegisterBenchmark("decrease/indexed:4", decrease_heavy<4>)
+        ->RangeMultiplier(10)
+        ->Range(1000, million);
+    benchmark::RegisterBenchmark("decrease/indexed:8", decrease_heavy<8>)
+        ->RangeMultiplier(10)
+        ->Range(1000, million);
 }
 
 }  // namespace

@@ -58,8 +58,7 @@ struct Scenario {
         frame.time_text = "t = 1.00";
         for (int p = 0; p < 2; ++p) {
             std::vector<DriftPoint> series;
-            for (int i = 0; i < 200; ++i)
-                series.push_back({0.01 * i, 1e-4 * i * p});
+            for (int i = 0; i < 200; ++i) series.push_back({0.01 * i, 1e-4 * i * p});
             frame.energy_drift.push_back(series);
         }
     }
@@ -84,8 +83,7 @@ void set_counters(benchmark::State& state) {
 // Draw only: build instances and overlays, issue GL, glFinish.
 void BM_draw(benchmark::State& state) {
     Scenario s(static_cast<std::size_t>(state.range(0)), state.range(1) != 0);
-    for (auto _ : state)
-        s.renderer.draw(s.frame);
+    for (auto _ : state) s.renderer.draw(s.frame);
     set_counters(state);
 }
 
@@ -114,8 +112,7 @@ void BM_render(benchmark::State& state) {
 
 void sizes(benchmark::internal::Benchmark* b) {
     for (const int overlays : {0, 1}) {
-        for (const int n : {500, 5000, 15000, 50000})
-            b->Args({n, overlays});
+        for (const int n : {500, 5000, 15000, 50000}) b->Args({n, overlays});
     }
     // Process CPU time (llvmpipe's rasteriser threads included): on a shared machine it is the
     // honest measure of work; fps is frames per CPU second. Wall time is printed too.

@@ -28,16 +28,14 @@ Scene generated(std::size_t n, double eta, Boundary boundary) {
 // Lattice path (eta = 0.5, above the random-placement limit): the event-engine benchmarks' fluid.
 void BM_GenerateLattice(benchmark::State& state) {
     const auto n = static_cast<std::size_t>(state.range(0));
-    for (auto _ : state)
-        benchmark::DoNotOptimize(generated(n, 0.5, Boundary::periodic));
+    for (auto _ : state) benchmark::DoNotOptimize(generated(n, 0.5, Boundary::periodic));
     state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
 // Random sequential addition (eta = 0.3).
 void BM_GenerateRandom(benchmark::State& state) {
     const auto n = static_cast<std::size_t>(state.range(0));
-    for (auto _ : state)
-        benchmark::DoNotOptimize(generated(n, 0.3, Boundary::periodic));
+    for (auto _ : state) benchmark::DoNotOptimize(generated(n, 0.3, Boundary::periodic));
     state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
@@ -45,8 +43,7 @@ void BM_GenerateRandom(benchmark::State& state) {
 void BM_Validate(benchmark::State& state) {
     const auto n = static_cast<std::size_t>(state.range(0));
     const Scene s = generated(n, 0.7, Boundary::walls);
-    for (auto _ : state)
-        validate_scene(s);
+    for (auto _ : state) validate_scene(s);
     state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 

@@ -42,8 +42,7 @@ Image disc_frame(int width, int height, int index) {
                  x < std::min(width, int(cx + radius + 2)); ++x) {
                 const double d = std::hypot(x + 0.5 - cx, y + 0.5 - cy);
                 const double coverage = std::clamp(radius + 0.5 - d, 0.0, 1.0);
-                if (coverage <= 0.0)
-                    continue;
+                if (coverage <= 0.0) continue;
                 std::uint8_t* p = image.pixel(x, y);
                 p[0] = static_cast<std::uint8_t>(p[0] + coverage * (r - p[0]));
                 p[1] = static_cast<std::uint8_t>(p[1] + coverage * (g - p[1]));
@@ -118,8 +117,7 @@ void BM_EncodeX264(benchmark::State& state, const char* preset) {
     constexpr int height = 720;
     constexpr int frames = 60;
     std::vector<Image> clip;
-    for (int i = 0; i < frames; ++i)
-        clip.push_back(disc_frame(width, height, i));
+    for (int i = 0; i < frames; ++i) clip.push_back(disc_frame(width, height, i));
     set_libav_verbose(false);
     const auto path = std::filesystem::temp_directory_path() /
                       ("collide-bench-" + std::to_string(::getpid()) + ".mp4");
@@ -132,8 +130,7 @@ void BM_EncodeX264(benchmark::State& state, const char* preset) {
         options.fps = 30;
         options.preset = preset;
         VideoWriter writer(options);
-        for (const Image& frame : clip)
-            writer.write(frame);
+        for (const Image& frame : clip) writer.write(frame);
         writer.finish();
         bytes = std::filesystem::file_size(path);
     }

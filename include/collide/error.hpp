@@ -17,12 +17,12 @@ enum class ErrorKind {
 /// The single exception type thrown by collide's libraries. `what()` is a one-line message that
 /// already names the file, line and field where that is known.
 class Error : public std::runtime_error {
-public:
+  public:
     Error(ErrorKind kind, const std::string& message) : std::runtime_error(message), kind_(kind) {}
     [[nodiscard]] ErrorKind kind() const noexcept { return kind_; }
     [[nodiscard]] int exit_code() const noexcept { return kind_ == ErrorKind::input ? 2 : 1; }
 
-private:
+  private:
     ErrorKind kind_;
 };
 

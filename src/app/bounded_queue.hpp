@@ -15,7 +15,7 @@ namespace collide::app {
 
 template <typename T>
 class BoundedQueue {
-public:
+  public:
     /// `capacity` >= 1 items held at once.
     explicit BoundedQueue(std::size_t capacity) : capacity_(capacity < 1 ? 1 : capacity) {}
     BoundedQueue(const BoundedQueue&) = delete;
@@ -52,7 +52,7 @@ public:
         not_empty_.notify_all();
     }
 
-private:
+  private:
     std::size_t capacity_;
     std::mutex mutex_;
     std::condition_variable not_full_;

@@ -27,8 +27,8 @@ struct BenchOptions {
     std::string scene;  ///< empty: random periodic fluid
     std::size_t n = 100000;
     double eta = 0.5;
-    double collisions = 5e6;      ///< collisions timed
-    double warmup = -1.0;         ///< collisions before timing; < 0: two per disc
+    double collisions = 5e6;  ///< collisions timed
+    double warmup = -1.0;     ///< collisions before timing; < 0: two per disc
     std::uint64_t seed = 1;
     EngineOptions engine;
     bool json = false;
@@ -36,14 +36,16 @@ struct BenchOptions {
     void validate() const {
         if (scene.empty()) {
             if (n < 2) throw_input_error("--n", 0, "", "needs at least 2 discs");
-            if (!(eta > 0.0 && eta <= 0.85)) throw_input_error("--eta", 0, "", "packing fraction must lie in (0, 0.85]");
+            if (!(eta > 0.0 && eta <= 0.85))
+                throw_input_error("--eta", 0, "", "packing fraction must lie in (0, 0.85]");
         }
         if (!(collisions >= 1.0) || !std::isfinite(collisions)) {
             throw_input_error("--collisions", 0, "", "must be a finite number >= 1");
         }
         if (!std::isfinite(warmup)) throw_input_error("--warmup", 0, "", "must be finite");
         engine.validate();
-        if (engine.engine == "time") throw_input_error("--engine", 0, "", "bench engine measures event-driven engines");
+        if (engine.engine == "time")
+            throw_input_error("--engine", 0, "", "bench engine measures event-driven engines");
     }
 };
 
@@ -52,7 +54,9 @@ struct BenchOptions {
 double cpu_seconds() {
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
-    const auto seconds = [](const timeval& tv) { return static_cast<double>(tv.tv_sec) + 1e-6 * static_cast<double>(tv.tv_usec); };
+    const auto seconds = [](const timeval& tv) {
+        return static_cast<double>(tv.tv_sec) + 1e-6 * static_cast<double>(tv.tv_usec);
+    };
     return seconds(usage.ru_utime) + seconds(usage.ru_stime);
 }
 
@@ -87,7 +91,8 @@ void run_collisions(Engine& engine, const std::uint64_t& counter, double target)
         const double t0 = engine.time();
         engine.advance_to(t0 + step);
         const double done = static_cast<double>(counter - before);
-        const double wanted = std::max(1.0, std::min(static_cast<double>(goal - counter), target / 8.0));
+        const double wanted =
+            std::max(1.0, std::min(static_cast<double>(goal - counter), target / 8.0));
         // Aim each step at ~1/8 of the goal; grow fast while nothing happens.
         step = done > 0.0 ? std::min(step * 8.0, step * wanted / done) : step * 8.0;
     }
@@ -112,12 +117,14 @@ void run_bench(const BenchOptions& options) {
 
     const double seconds = m1.wall_seconds - m0.wall_seconds;
     const auto delta = [](std::uint64_t a, std::uint64_t b) { return static_cast<double>(a - b); };
-    const double timed_collisions = delta(m1.collisions_pair + m1.collisions_wall, m0.collisions_pair + m0.collisions_wall);
+    const double timed_collisions =
+        delta(m1.collisions_pair + m1.collisions_wall, m0.collisions_pair + m0.collisions_wall);
     const double timed_events = delta(m1.events, m0.events);
     const double pops = delta(m1.queue.pops, m0.queue.pops);
     const double window = m1.t - m0.t;
     // Z over the timed window only (the tally runs from t = 0, through the melting).
-    const double z_window = 1.0 + ((m1.compressibility - 1.0) * m1.t - (m0.compressibility - 1.0) * m0.t) / window;
+    const double z_window =
+        1.0 + ((m1.compressibility - 1.0) * m1.t - (m0.compressibility - 1.0) * m0.t) / window;
 
     std::vector<ReportField> fields{
         {"scene", scene.name},
@@ -131,7 +138,8 @@ void run_bench(const BenchOptions& options) {
         {"collisions_per_cpu_second", timed_collisions / cpu_timed},
         {"events_per_cpu_second", timed_events / cpu_timed},
         {"stale_fraction", pops > 0 ? delta(m1.queue.stale_pops, m0.queue.stale_pops) / pops : 0.0},
-        {"cell_crossings_per_collision", delta(m1.cell_crossings, m0.cell_crossings) / timed_collisions},
+        {"cell_crossings_per_collision",
+         delta(m1.cell_crossings, m0.cell_crossings) / timed_collisions},
         {"pq_max_size", m1.queue.max_size},
         {"engine_bytes_per_disc", static_cast<double>(m1.engine_bytes) / n},
         {"rss_delta_bytes_per_disc", static_cast<double>(rss_after - rss_before) / n},
@@ -141,7 +149,8 @@ void run_bench(const BenchOptions& options) {
         {"energy_relative_change", (m1.kinetic_energy - m0.kinetic_energy) / m0.kinetic_energy},
         {"max_overlap", m1.max_overlap},
     };
-    if (options.engine.engine == "classic") fields.insert(fields.begin() + 2, {"pq", options.engine.pq});
+    if (options.engine.engine == "classic")
+        fields.insert(fields.begin() + 2, {"pq", options.engine.pq});
     const std::string out = options.json ? format_json(fields) : format_text(fields);
     std::fputs(out.c_str(), stdout);
 }
@@ -152,7 +161,8 @@ void add_bench_command(CLI::App& root) {
     CLI::App* bench = root.add_subcommand("bench", "Benchmarks (figures for docs/benchmarks.md)");
     bench->require_subcommand(1);
     auto options = std::make_shared<BenchOptions>();
-    CLI::App* cmd = bench->add_subcommand("engine", "Collisions per second and bytes per disc of an engine");
+    CLI::App* cmd =
+        bench->add_subcommand("engine", "Collisions per second and bytes per disc of an engine");
     cmd->add_option("--scene", options->scene, "Scene to run instead of the random periodic fluid");
     cmd->add_option("--n", options->n, "Discs in the random fluid (default 100000)");
     cmd->add_option("--eta", options->eta, "Packing fraction of the random fluid (default 0.5)");

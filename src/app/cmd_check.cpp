@@ -29,11 +29,9 @@ void add_check_command(CLI::App& root) {
                     "box with walls only)");
     cmd->callback([options] {
         const Scene scene = load_scene(options->scene);  // validates; throws Error(input) -> exit 2
-        if (!options->export_path.empty())
-            save_scene(scene, options->export_path);
+        if (!options->export_path.empty()) save_scene(scene, options->export_path);
         std::printf("ok: %s: %s\n", options->scene.c_str(), scene_summary(scene).c_str());
-        if (!options->export_path.empty())
-            std::printf("wrote %s\n", options->export_path.c_str());
+        if (!options->export_path.empty()) std::printf("wrote %s\n", options->export_path.c_str());
     });
 }
 

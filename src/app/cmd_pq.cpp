@@ -41,7 +41,8 @@ Table table_of(const pq::Trace& trace) {
     for (const pq::QueueKind& kind : trace.queues) header.push_back(pq::to_string(kind));
     table.push_back(std::move(header));
     for (const pq::TraceRow& row : trace.rows) {
-        std::vector<std::string> cells{row.operation, row.argument, row.returned, std::to_string(row.size)};
+        std::vector<std::string> cells{row.operation, row.argument, row.returned,
+                                       std::to_string(row.size)};
         for (const auto& array : row.contents) cells.push_back(join(array, " "));
         table.push_back(std::move(cells));
     }
@@ -57,7 +58,8 @@ std::string as_text(const Table& table) {
     std::string out;
     const auto add_line = [&](const std::vector<std::string>& cells) {
         std::string line;
-        for (std::size_t c = 0; c < cells.size(); ++c) line += fmt::format("{:<{}}  ", cells[c], width[c]);
+        for (std::size_t c = 0; c < cells.size(); ++c)
+            line += fmt::format("{:<{}}  ", cells[c], width[c]);
         line.erase(line.find_last_not_of(' ') + 1);  // no trailing blanks
         out += line + '\n';
     };
@@ -88,7 +90,9 @@ std::string as_csv(const Table& table) {
 }
 
 std::string as_markdown(const Table& table) {
-    const auto line = [](const std::vector<std::string>& cells) { return "| " + join(cells, " | ") + " |\n"; };
+    const auto line = [](const std::vector<std::string>& cells) {
+        return "| " + join(cells, " | ") + " |\n";
+    };
     std::string out = line(table.front());
     out += line(std::vector<std::string>(table.front().size(), "---"));
     for (std::size_t r = 1; r < table.size(); ++r) out += line(table[r]);
@@ -98,7 +102,8 @@ std::string as_markdown(const Table& table) {
 void run_pq(const PqOptions& options) {
     const std::vector<pq::TraceOp> ops = pq::parse_trace_ops(options.ops, "--ops");
     std::vector<pq::QueueKind> kinds;
-    for (const std::string& impl : options.impls) kinds.push_back(pq::parse_queue_kind(impl, "--impl"));
+    for (const std::string& impl : options.impls)
+        kinds.push_back(pq::parse_queue_kind(impl, "--impl"));
     if (kinds.empty()) kinds = pq::default_trace_queues();
     const auto orientation = options.min ? pq::Orientation::min : pq::Orientation::max;
     const Table table = table_of(pq::run_trace(ops, orientation, kinds, "--ops"));
@@ -119,14 +124,17 @@ void run_pq(const PqOptions& options) {
 void add_pq_command(CLI::App& root) {
     auto options = std::make_shared<PqOptions>();
     CLI::App* pq = root.add_subcommand(
-        "pq", "Trace the lecture's priority queues: insert keys, '*' removes the max (or min), "
-              "one table row per operation with every implementation's array");
-    pq->add_option("--ops", options->ops,
-                   "Operations separated by spaces: a word of letters or an integer inserts it, '*' "
-                   "removes; keys must be all words (byte order: A < Z < a) or all integers, "
-                   "e.g. \"P Q E * X A M * P L E *\"")
+        "pq",
+        "Trace the lecture's priority queues: insert keys, '*' removes the max (or min), "
+        "one table row per operation with every implementation's array");
+    pq->add_option(
+          "--ops", options->ops,
+          "Operations separated by spaces: a word of letters or an integer inserts it, '*' "
+          "removes; keys must be all words (byte order: A < Z < a) or all integers, "
+          "e.g. \"P Q E * X A M * P L E *\"")
         ->required();
-    pq->add_flag("--min", options->min, "A min-queue ('*' removes the smallest) instead of a max-queue");
+    pq->add_flag("--min", options->min,
+                 "A min-queue ('*' removes the smallest) instead of a max-queue");
     pq->add_option("--impl", options->impls,
                    "Implementations to show, repeatable or comma-separated: "
                    "unordered|ordered|binary|dary:D|indexed[:D] (default: unordered, ordered, "

@@ -98,46 +98,65 @@ RenderRequest request_of(const CliValues& v, bool still) {
 /// The options `render` and `thumbnail` share.
 void add_shared_options(CLI::App& cmd, CliValues& v) {
     v.seed_opt = cmd.add_option("--seed", v.seed,
-                                "Seed for the scene's random discs ([[generate]] block i gets N + i; default: the scene's)");
-    cmd.add_option("scene", v.scene, "Scene: a built-in name (see `collide scenes`), a .toml or an algs4 .txt file")
+                                "Seed for the scene's random discs ([[generate]] block i gets N + "
+                                "i; default: the scene's)");
+    cmd.add_option("scene", v.scene,
+                   "Scene: a built-in name (see `collide scenes`), a .toml or an algs4 .txt file")
         ->required();
-    v.output_opt = cmd.add_option("-o,--output", v.output, "Output file (default: out/<scene>.<ext>)");
+    v.output_opt =
+        cmd.add_option("-o,--output", v.output, "Output file (default: out/<scene>.<ext>)");
     cmd.add_option("--mode", v.mode, "both (time-driven left, event-driven right), event or time")
         ->capture_default_str();
-    v.quality_opt = cmd.add_option("-q,--quality", v.quality, "l 854x480@15, m 1280x720@30 (default), h 1920x1080@60, k 3840x2160@60");
+    v.quality_opt =
+        cmd.add_option("-q,--quality", v.quality,
+                       "l 854x480@15, m 1280x720@30 (default), h 1920x1080@60, k 3840x2160@60");
     v.size_opt = cmd.add_option("--size", v.size, "Frame size WxH, overrides -q (e.g. 640x360)");
     v.fps_opt = cmd.add_option("--fps", v.fps, "Frames per second, overrides -q");
-    v.duration_opt = cmd.add_option("--duration", v.duration, "Seconds of video (default: scene hint, else 10)");
-    v.speed_opt = cmd.add_option("--speed", v.speed,
-                                 "Simulation time per second of video (default: scene hint, else a typical disc "
-                                 "crosses the box in 10 s)");
-    v.dt_opt = cmd.add_option("--dt", v.dt, "Time-driven time step (default: scene hint, else one frame interval)");
-    cmd.add_option("--engine", v.engine, "Event-driven engine: fast or classic")->capture_default_str();
-    cmd.add_option("--pq", v.pq, "Classic engine's queue: unordered, ordered, binary, dary:D or indexed")
+    v.duration_opt =
+        cmd.add_option("--duration", v.duration, "Seconds of video (default: scene hint, else 10)");
+    v.speed_opt = cmd.add_option(
+        "--speed", v.speed,
+        "Simulation time per second of video (default: scene hint, else a typical disc "
+        "crosses the box in 10 s)");
+    v.dt_opt = cmd.add_option(
+        "--dt", v.dt, "Time-driven time step (default: scene hint, else one frame interval)");
+    cmd.add_option("--engine", v.engine, "Event-driven engine: fast or classic")
         ->capture_default_str();
-    cmd.add_option("--td-detect", v.td_detect, "Time-driven overlap checks: all-pairs or grid")->capture_default_str();
-    v.color_opt = cmd.add_option("--color", v.color, "Disc colours: scene, speed, mass or tag (default: scene hint, else scene)");
-    v.trails_opt = cmd.add_flag("--trails,!--no-trails", v.trails, "Trails behind tagged discs (default: scene hint, else on)");
+    cmd.add_option("--pq", v.pq,
+                   "Classic engine's queue: unordered, ordered, binary, dary:D or indexed")
+        ->capture_default_str();
+    cmd.add_option("--td-detect", v.td_detect, "Time-driven overlap checks: all-pairs or grid")
+        ->capture_default_str();
+    v.color_opt =
+        cmd.add_option("--color", v.color,
+                       "Disc colours: scene, speed, mass or tag (default: scene hint, else scene)");
+    v.trails_opt = cmd.add_flag("--trails,!--no-trails", v.trails,
+                                "Trails behind tagged discs (default: scene hint, else on)");
     cmd.add_flag("--preview", v.preview, "Show the frames live in a window when a display exists");
-    cmd.add_option("--progress", v.progress, "Progress on stderr: auto (bar on a terminal), bar, json or none")
+    cmd.add_option("--progress", v.progress,
+                   "Progress on stderr: auto (bar on a terminal), bar, json or none")
         ->capture_default_str();
     cmd.add_flag("--verbose", v.verbose, "Show the encoder's own log");
 }
 
-void print_notice(const std::string& line) { std::fprintf(stderr, "collide: %s\n", line.c_str()); }
+void print_notice(const std::string& line) {
+    std::fprintf(stderr, "collide: %s\n", line.c_str());
+}
 
 /// Everything that can be wrong with the request, found before any frame is drawn.
 RenderPlan validated_plan(const RenderRequest& request, const Scene& scene) {
     RenderPlan plan = plan_render(request, scene);
     // The default directory is ours to create; a user-given one must exist already.
     if (plan.default_output) std::filesystem::create_directories(plan.output.parent_path());
-    const bool directory = plan.kind == OutputKind::video && plan.format == video::VideoFormat::png_sequence;
+    const bool directory =
+        plan.kind == OutputKind::video && plan.format == video::VideoFormat::png_sequence;
     video::check_output_writable(plan.output, directory);
     return plan;
 }
 
 std::string human_size(std::uintmax_t bytes) {
-    if (bytes >= 1024 * 1024) return fmt::format("{:.1f} MB", static_cast<double>(bytes) / (1024.0 * 1024.0));
+    if (bytes >= 1024 * 1024)
+        return fmt::format("{:.1f} MB", static_cast<double>(bytes) / (1024.0 * 1024.0));
     if (bytes >= 1024) return fmt::format("{:.1f} kB", static_cast<double>(bytes) / 1024.0);
     return fmt::format("{} B", bytes);
 }
@@ -176,26 +195,29 @@ std::string engine_costs(const RenderPlan& plan, const PipelineResult& result) {
 void print_summary(const RenderPlan& plan, const PipelineResult& result, double wall_seconds) {
     const std::uintmax_t bytes = size_on_disk(plan.output);
     if (plan.kind == OutputKind::still) {
-        std::printf("%s: %dx%d PNG at t = %.6g (%s), %s, in %.1f s; engines: %s\n", plan.output.string().c_str(),
-                    result.output_width, result.output_height, result.sim_time,
+        std::printf("%s: %dx%d PNG at t = %.6g (%s), %s, in %.1f s; engines: %s\n",
+                    plan.output.string().c_str(), result.output_width, result.output_height,
+                    result.sim_time,
                     fmt::format("frame {} of a {} fps video", result.frames - 1, plan.fps).c_str(),
                     human_size(bytes).c_str(), wall_seconds, engine_costs(plan, result).c_str());
         return;
     }
     const double seconds = static_cast<double>(result.frames) / plan.fps;
-    std::printf("%s: %.2f s of video, %lld frames, %dx%d @ %g fps, %s, rendered in %.1f s (%.1f fps); "
-                "simulation time 0..%.6g; engines: %s\n",
-                plan.output.string().c_str(), seconds, static_cast<long long>(result.frames), result.output_width,
-                result.output_height, result.output_fps, human_size(bytes).c_str(), wall_seconds,
-                wall_seconds > 0.0 ? static_cast<double>(result.frames) / wall_seconds : 0.0, result.sim_time,
-                engine_costs(plan, result).c_str());
+    std::printf(
+        "%s: %.2f s of video, %lld frames, %dx%d @ %g fps, %s, rendered in %.1f s (%.1f fps); "
+        "simulation time 0..%.6g; engines: %s\n",
+        plan.output.string().c_str(), seconds, static_cast<long long>(result.frames),
+        result.output_width, result.output_height, result.output_fps, human_size(bytes).c_str(),
+        wall_seconds, wall_seconds > 0.0 ? static_cast<double>(result.frames) / wall_seconds : 0.0,
+        result.sim_time, engine_costs(plan, result).c_str());
 }
 
 void run(const CliValues& values, bool still) {
     // Validation: nothing is rendered, and no output file is created, until all of it passes.
     const ProgressMode progress_mode = parse_progress_mode(values.progress);
     SceneOptions scene_options;
-    if (values.seed_opt != nullptr && values.seed_opt->count() > 0) scene_options.seed = values.seed;
+    if (values.seed_opt != nullptr && values.seed_opt->count() > 0)
+        scene_options.seed = values.seed;
     const Scene scene = load_scene(values.scene, scene_assets_dir(), scene_options);
     const RenderRequest request = request_of(values, still);
     const RenderPlan plan = validated_plan(request, scene);
@@ -212,7 +234,8 @@ void run(const CliValues& values, bool still) {
     hooks.dump_rgba = values.dump_rgba;
     PipelineResult result;
     try {
-        result = plan.kind == OutputKind::still ? render_still(scene, plan, hooks) : render_video(scene, plan, hooks);
+        result = plan.kind == OutputKind::still ? render_still(scene, plan, hooks)
+                                                : render_video(scene, plan, hooks);
     } catch (...) {
         progress.finish();
         throw;
@@ -227,16 +250,19 @@ void run(const CliValues& values, bool still) {
 void add_render_command(CLI::App& root) {
     auto values = std::make_shared<CliValues>();
     CLI::App* cmd = root.add_subcommand(
-        "render", "Render a teaching video: time-driven (left) and event-driven (right) side by side");
+        "render",
+        "Render a teaching video: time-driven (left) and event-driven (right) side by side");
     add_shared_options(*cmd, *values);
-    values->format_opt = cmd->add_option("--format", values->format, "mp4 (default), gif, or png (a directory of frames)");
+    values->format_opt = cmd->add_option("--format", values->format,
+                                         "mp4 (default), gif, or png (a directory of frames)");
     cmd->add_flag("--last-frame", values->last_frame,
                   "Write only the last frame, as a PNG (-o FILE.png, default out/<scene>.png)");
     // Benchmarks only (scripts/bench_pipeline.sh): the frames as raw RGBA for ffmpeg alone.
     cmd->add_option("--dump-rgba", values->dump_rgba, "")->group("");
     cmd->footer(
         "Examples:\n"
-        "  collide render tunnelling                      # out/tunnelling.mp4, 720p30, side by side\n"
+        "  collide render tunnelling                      # out/tunnelling.mp4, 720p30, side by "
+        "side\n"
         "  collide render gas -q l --duration 5 -o gas.mp4\n"
         "  collide render brownian --mode event --color speed --format gif\n"
         "  collide render tunnelling --last-frame         # out/tunnelling.png");
@@ -245,10 +271,11 @@ void add_render_command(CLI::App& root) {
 
 void add_thumbnail_command(CLI::App& root) {
     auto values = std::make_shared<CliValues>();
-    CLI::App* cmd = root.add_subcommand("thumbnail", "Render one frame as a PNG (fast, no video): for READMEs and CI");
+    CLI::App* cmd = root.add_subcommand(
+        "thumbnail", "Render one frame as a PNG (fast, no video): for READMEs and CI");
     add_shared_options(*cmd, *values);
-    values->at_opt =
-        cmd->add_option("--at", values->at, "Simulation time of the frame (default: the video's last frame)");
+    values->at_opt = cmd->add_option(
+        "--at", values->at, "Simulation time of the frame (default: the video's last frame)");
     cmd->footer(
         "Examples:\n"
         "  collide thumbnail gas --at 2.5 -o gas.png --size 480x270\n"

@@ -22,8 +22,7 @@ void add_scenes_command(CLI::App& root) {
                               " (set COLLIDE_ASSETS_DIR to the assets directory)");
         }
         std::size_t width = 0;
-        for (const BuiltinScene& s : scenes)
-            width = std::max(width, s.name.size());
+        for (const BuiltinScene& s : scenes) width = std::max(width, s.name.size());
         for (const BuiltinScene& s : scenes) {
             std::printf("%-*s  %s\n", static_cast<int>(width), s.name.c_str(),
                         s.description.c_str());

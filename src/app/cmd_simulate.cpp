@@ -2,6 +2,7 @@
 /// measurements (text or JSON), optionally logging every collision as CSV `t,kind,a,b`.
 
 #include <fmt/core.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cmath>
@@ -10,7 +11,6 @@
 #include <memory>
 #include <string>
 #include <system_error>
-#include <unistd.h>
 
 #include "collide/error.hpp"
 #include "collide/scene/load.hpp"
@@ -42,7 +42,7 @@ struct SimulateOptions {
 /// beside it, finish() flushes, closes and renames. Dropped unfinished (an error on the way), the
 /// temporary is removed and the destination is untouched.
 class AtomicTextFile {
-public:
+  public:
     /// Opens the temporary file. Throws Error(input) naming `option` when it cannot be created.
     AtomicTextFile(std::filesystem::path destination, const std::string& option)
         : destination_(std::move(destination)), temporary_(destination_) {
@@ -53,8 +53,9 @@ public:
         }
         file_ = std::fopen(temporary_.c_str(), "wb");
         if (file_ == nullptr) {
-            throw_input_error(option, 0, "", "cannot write '" + destination_.string() + "': " +
-                                                 std::error_code(errno, std::generic_category()).message());
+            throw_input_error(option, 0, "",
+                              "cannot write '" + destination_.string() + "': " +
+                                  std::error_code(errno, std::generic_category()).message());
         }
     }
     AtomicTextFile(const AtomicTextFile&) = delete;
@@ -82,11 +83,12 @@ public:
         std::filesystem::rename(temporary_, destination_, ec);
         if (ec) {
             std::filesystem::remove(temporary_, ec);
-            throw_runtime_error("cannot move the events log into place at '" + destination_.string() + "'");
+            throw_runtime_error("cannot move the events log into place at '" +
+                                destination_.string() + "'");
         }
     }
 
-private:
+  private:
     std::filesystem::path destination_;
     std::filesystem::path temporary_;
     std::FILE* file_ = nullptr;
@@ -94,9 +96,12 @@ private:
 
 const char* kind_name(CollisionKind kind) {
     switch (kind) {
-        case CollisionKind::pair: return "pair";
-        case CollisionKind::xwall: return "xwall";
-        case CollisionKind::ywall: return "ywall";
+        case CollisionKind::pair:
+            return "pair";
+        case CollisionKind::xwall:
+            return "xwall";
+        case CollisionKind::ywall:
+            return "ywall";
     }
     return "?";
 }
@@ -134,14 +139,17 @@ void run_simulate(const SimulateOptions& options) {
 
 void add_simulate_command(CLI::App& root) {
     auto options = std::make_shared<SimulateOptions>();
-    CLI::App* cmd = root.add_subcommand("simulate", "Run an engine to a time and print its measurements");
-    cmd->add_option("scene", options->scene, "Scene: algs4 .txt, .toml, or a built-in name")->required();
+    CLI::App* cmd =
+        root.add_subcommand("simulate", "Run an engine to a time and print its measurements");
+    cmd->add_option("scene", options->scene, "Scene: algs4 .txt, .toml, or a built-in name")
+        ->required();
     cmd->add_option("--until", options->until, "Simulation time to stop at")->required();
     cmd->add_option("--engine", options->engine.engine, "fast (default), classic or time");
     cmd->add_option("--pq", options->engine.pq,
                     "Classic engine's queue: unordered|ordered|binary|dary:D|indexed[:D]");
     cmd->add_option("--dt", options->engine.dt, "Time-driven step");
-    cmd->add_option("--td-detect", options->engine.td_detect, "Time-driven overlap checks: all-pairs|grid");
+    cmd->add_option("--td-detect", options->engine.td_detect,
+                    "Time-driven overlap checks: all-pairs|grid");
     cmd->add_option("--events-log", options->events_log, "Write every collision as CSV t,kind,a,b");
     cmd->add_flag("--json", options->json, "Print the measurements as JSON");
     cmd->callback([options] { run_simulate(*options); });

@@ -25,7 +25,8 @@ void add_simulate_command(CLI::App& root);
 /// `collide bench`: engine throughput and memory on a random periodic fluid or a scene.
 void add_bench_command(CLI::App& root);
 
-/// `collide render SCENE`: a side-by-side teaching video (time-driven | event-driven) to MP4/GIF/PNG.
+/// `collide render SCENE`: a side-by-side teaching video (time-driven | event-driven) to
+/// MP4/GIF/PNG.
 void add_render_command(CLI::App& root);
 
 /// `collide thumbnail SCENE --at T`: one frame of that video as a PNG, without encoding a video.

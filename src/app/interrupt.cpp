@@ -70,8 +70,7 @@ int InterruptGuard::signal_number() const noexcept {
 }
 
 void InterruptGuard::throw_if_requested() const {
-    if (!requested())
-        return;
+    if (!requested()) return;
     const int number = signal_number();
     const char* name = number == SIGINT ? "SIGINT" : number == SIGTERM ? "SIGTERM" : "a signal";
     throw_runtime_error(std::string("interrupted by ") + name + "; partial output removed");

@@ -14,7 +14,9 @@ namespace {
 constexpr int exit_usage = 2;
 constexpr int exit_failure = 1;
 
-void print_error(const std::string& message) { std::fprintf(stderr, "collide: error: %s\n", message.c_str()); }
+void print_error(const std::string& message) {
+    std::fprintf(stderr, "collide: error: %s\n", message.c_str());
+}
 
 }  // namespace
 

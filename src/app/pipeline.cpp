@@ -22,7 +22,9 @@ namespace {
 /// frame (a burst of collisions) without holding many snapshots in memory.
 constexpr std::size_t sim_queue_frames = 4;
 
-double relative_drift(double energy, double initial) { return initial > 0.0 ? (energy - initial) / initial : 0.0; }
+double relative_drift(double energy, double initial) {
+    return initial > 0.0 ? (energy - initial) / initial : 0.0;
+}
 
 void check_interrupt(const PipelineHooks& hooks) {
     if (hooks.interrupts != nullptr) hooks.interrupts->throw_if_requested();
@@ -31,9 +33,10 @@ void check_interrupt(const PipelineHooks& hooks) {
 /// The simulation thread and the queue it fills. The destructor closes the queue (so a producer
 /// blocked on a full queue wakes up) and joins, so no path out of a run leaves a thread behind.
 class SimulationThread {
-public:
+  public:
     SimulationThread(const Scene& scene, const RenderPlan& plan, const std::atomic<bool>* cancel)
-        : queue_(sim_queue_frames), thread_([this, &scene, &plan, cancel] { run(scene, plan, cancel); }) {}
+        : queue_(sim_queue_frames),
+          thread_([this, &scene, &plan, cancel] { run(scene, plan, cancel); }) {}
     ~SimulationThread() {
         queue_.close();
         if (thread_.joinable()) thread_.join();
@@ -52,7 +55,7 @@ public:
         return final_measurements_;
     }
 
-private:
+  private:
     void run(const Scene& scene, const RenderPlan& plan, const std::atomic<bool>* cancel) {
         try {
             FrameSource source(scene, plan);
@@ -75,11 +78,12 @@ private:
 
 /// Raw RGBA frames appended to a file (benchmarks only).
 class RawDump {
-public:
+  public:
     explicit RawDump(const std::filesystem::path& path) {
         if (path.empty()) return;
         file_ = std::fopen(path.c_str(), "wb");
-        if (file_ == nullptr) throw_input_error(fmt::format("--dump-rgba: cannot create '{}'", path.string()));
+        if (file_ == nullptr)
+            throw_input_error(fmt::format("--dump-rgba: cannot create '{}'", path.string()));
     }
     ~RawDump() {
         if (file_ != nullptr) std::fclose(file_);
@@ -94,7 +98,7 @@ public:
         }
     }
 
-private:
+  private:
     std::FILE* file_ = nullptr;
 };
 
@@ -107,29 +111,34 @@ std::string_view title_of(const RenderPlan& plan) {
 // ------------------------------------------------------------------------------------------------
 // Simulation side
 
-std::vector<std::string> time_driven_counters(const Measurements& m, double /*dt*/, double energy_drift) {
+std::vector<std::string> time_driven_counters(const Measurements& m, double /*dt*/,
+                                              double energy_drift) {
     // Short "label  value" pairs: the renderer lays them out in a grid of narrow columns.
     return {
         fmt::format("steps  {}", short_count(static_cast<double>(m.steps))),
         fmt::format("checks  {}", short_count(static_cast<double>(m.overlap_checks))),
-        fmt::format("collisions  {}", short_count(static_cast<double>(m.collisions_pair + m.collisions_wall))),
+        fmt::format("collisions  {}",
+                    short_count(static_cast<double>(m.collisions_pair + m.collisions_wall))),
         fmt::format("overlaps now  {}", m.overlapping_pairs),
         fmt::format("deepest  {:.2g}", m.max_overlap),
         fmt::format("missed  {}", m.missed_collisions),
         fmt::format("escaped  {}", m.escaped),
         fmt::format("energy drift  {:+.1e}", energy_drift),
-        fmt::format("checks/time  {}", m.t > 0.0 ? short_count(static_cast<double>(m.overlap_checks) / m.t) : "-"),
+        fmt::format("checks/time  {}",
+                    m.t > 0.0 ? short_count(static_cast<double>(m.overlap_checks) / m.t) : "-"),
     };
 }
 
 std::vector<std::string> event_driven_counters(const Measurements& m, double energy_drift) {
     const std::uint64_t queue_ops = m.queue.pushes + m.queue.pops;
-    const double stale_share =
-        m.queue.pops > 0 ? 100.0 * static_cast<double>(m.queue.stale_pops) / static_cast<double>(m.queue.pops) : 0.0;
+    const double stale_share = m.queue.pops > 0 ? 100.0 * static_cast<double>(m.queue.stale_pops) /
+                                                      static_cast<double>(m.queue.pops)
+                                                : 0.0;
     const double work = static_cast<double>(m.predictions + queue_ops);
     return {
         fmt::format("events  {}", short_count(static_cast<double>(m.events))),
-        fmt::format("collisions  {}", short_count(static_cast<double>(m.collisions_pair + m.collisions_wall))),
+        fmt::format("collisions  {}",
+                    short_count(static_cast<double>(m.collisions_pair + m.collisions_wall))),
         fmt::format("predictions  {}", short_count(static_cast<double>(m.predictions))),
         fmt::format("queue ops  {}", short_count(static_cast<double>(queue_ops))),
         fmt::format("queue max  {}", m.queue.max_size),
@@ -142,7 +151,9 @@ std::vector<std::string> event_driven_counters(const Measurements& m, double ene
 
 std::vector<std::string> comparison_notes(RenderMode mode) {
     if (mode != RenderMode::both) return {};
-    return {"The panels drift apart even when both are right (chaos): compare the figures, not the positions."};
+    return {
+        "The panels drift apart even when both are right (chaos): compare the figures, not the "
+        "positions."};
 }
 
 FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan) : plan_(plan) {
@@ -154,8 +165,10 @@ FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan) : plan_(pla
         panel.initial_energy = panel.engine->measurements().kinetic_energy;
         panels_.push_back(std::move(panel));
     };
-    if (plan.mode != RenderMode::event) add(plan.time_engine, true, time_panel_title(plan.time_engine.dt));
-    if (plan.mode != RenderMode::time) add(plan.event_engine, false, event_panel_title(plan.event_engine));
+    if (plan.mode != RenderMode::event)
+        add(plan.time_engine, true, time_panel_title(plan.time_engine.dt));
+    if (plan.mode != RenderMode::time)
+        add(plan.event_engine, false, event_panel_title(plan.event_engine));
 }
 
 SimFrame FrameSource::frame(std::int64_t k) {
@@ -164,7 +177,8 @@ SimFrame FrameSource::frame(std::int64_t k) {
     out.time = plan_.clock.time(k);
     out.panels.reserve(panels_.size());
     for (Panel& panel : panels_) {
-        const double target = panel.time_driven ? last_step_time(out.time, plan_.time_engine.dt) : out.time;
+        const double target =
+            panel.time_driven ? last_step_time(out.time, plan_.time_engine.dt) : out.time;
         panel.engine->advance_to(std::max(target, panel.engine->time()));
         out.panels.push_back(describe(panel));
     }
@@ -192,7 +206,9 @@ std::vector<Measurements> FrameSource::measurements() const {
 // ------------------------------------------------------------------------------------------------
 // Render side
 
-FrameComposer::FrameComposer(const RenderPlan& plan) : plan_(plan) { content_.notes = comparison_notes(plan.mode); }
+FrameComposer::FrameComposer(const RenderPlan& plan) : plan_(plan) {
+    content_.notes = comparison_notes(plan.mode);
+}
 
 const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
     content_.panels.resize(frame.panels.size());
@@ -206,8 +222,10 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
     return content_;
 }
 
-PipelineResult render_video(const Scene& scene, const RenderPlan& plan, const PipelineHooks& hooks) {
-    const std::atomic<bool>* cancel = hooks.interrupts != nullptr ? &hooks.interrupts->flag() : nullptr;
+PipelineResult render_video(const Scene& scene, const RenderPlan& plan,
+                            const PipelineHooks& hooks) {
+    const std::atomic<bool>* cancel =
+        hooks.interrupts != nullptr ? &hooks.interrupts->flag() : nullptr;
     video::VideoOptions options;
     options.path = plan.output;
     options.format = plan.format;
@@ -219,7 +237,8 @@ PipelineResult render_video(const Scene& scene, const RenderPlan& plan, const Pi
     render::Renderer renderer(plan.render, render::Backend::automatic, hooks.notice);
     std::unique_ptr<render::PreviewWindow> preview;
     if (hooks.preview) {
-        preview = render::open_preview(plan.width, plan.height, std::string(title_of(plan)).c_str(), hooks.notice);
+        preview = render::open_preview(plan.width, plan.height, std::string(title_of(plan)).c_str(),
+                                       hooks.notice);
     }
     RawDump dump(hooks.dump_rgba);
 
@@ -239,7 +258,8 @@ PipelineResult render_video(const Scene& scene, const RenderPlan& plan, const Pi
     }
     result.engines = simulation.finish();
     check_interrupt(hooks);
-    if (result.frames != plan.clock.count) throw_runtime_error("rendering stopped before the last frame");
+    if (result.frames != plan.clock.count)
+        throw_runtime_error("rendering stopped before the last frame");
     writer.finish();
     result.notices = writer.notices();
     result.output_width = writer.output_width();
@@ -248,8 +268,10 @@ PipelineResult render_video(const Scene& scene, const RenderPlan& plan, const Pi
     return result;
 }
 
-PipelineResult render_still(const Scene& scene, const RenderPlan& plan, const PipelineHooks& hooks) {
-    const std::atomic<bool>* cancel = hooks.interrupts != nullptr ? &hooks.interrupts->flag() : nullptr;
+PipelineResult render_still(const Scene& scene, const RenderPlan& plan,
+                            const PipelineHooks& hooks) {
+    const std::atomic<bool>* cancel =
+        hooks.interrupts != nullptr ? &hooks.interrupts->flag() : nullptr;
     render::Renderer renderer(plan.render, render::Backend::automatic, hooks.notice);
     // Only the frames whose positions appear in the trails need drawing before the last one.
     const std::int64_t history = plan.render.trails ? plan.render.trail_length : 1;
@@ -273,9 +295,11 @@ PipelineResult render_still(const Scene& scene, const RenderPlan& plan, const Pi
     }
     result.engines = simulation.finish();
     check_interrupt(hooks);
-    if (result.frames != plan.clock.count) throw_runtime_error("rendering stopped before the last frame");
+    if (result.frames != plan.clock.count)
+        throw_runtime_error("rendering stopped before the last frame");
     if (hooks.preview) {
-        if (auto window = render::open_preview(plan.width, plan.height, std::string(title_of(plan)).c_str(), hooks.notice)) {
+        if (auto window = render::open_preview(plan.width, plan.height,
+                                               std::string(title_of(plan)).c_str(), hooks.notice)) {
             window->show(image);
         }
     }

@@ -46,7 +46,7 @@ struct SimFrame {
 /// Owns the engines of a plan and produces its frames in order. Deterministic: the same scene
 /// and plan give the same frames (on-screen figures are counts, never wall-clock times).
 class FrameSource {
-public:
+  public:
     /// Builds the engines (time-driven and/or event-driven per plan.mode). Throws Error(input)
     /// for engine options make_engine rejects.
     FrameSource(const Scene& scene, const RenderPlan& plan);
@@ -55,7 +55,7 @@ public:
     /// Measurements of each engine now, in panel order.
     [[nodiscard]] std::vector<Measurements> measurements() const;
 
-private:
+  private:
     struct Panel {
         std::unique_ptr<Engine> engine;
         bool time_driven = false;
@@ -69,29 +69,32 @@ private:
 };
 
 /// The on-screen counter lines of one engine (pure: unit-tested).
-[[nodiscard]] std::vector<std::string> time_driven_counters(const Measurements& m, double dt, double energy_drift);
-[[nodiscard]] std::vector<std::string> event_driven_counters(const Measurements& m, double energy_drift);
+[[nodiscard]] std::vector<std::string> time_driven_counters(const Measurements& m, double dt,
+                                                            double energy_drift);
+[[nodiscard]] std::vector<std::string> event_driven_counters(const Measurements& m,
+                                                             double energy_drift);
 /// The notice lines under a side-by-side frame: why the pictures differ, what to compare.
 [[nodiscard]] std::vector<std::string> comparison_notes(RenderMode mode);
 
 /// Turns SimFrames into the renderer's FrameContent (render thread), keeping each panel's energy
 /// drift series across frames. The content points into the SimFrame, which must outlive its use.
 class FrameComposer {
-public:
+  public:
     explicit FrameComposer(const RenderPlan& plan);
     [[nodiscard]] const render::FrameContent& compose(const SimFrame& frame);
 
-private:
+  private:
     const RenderPlan& plan_;
     render::FrameContent content_;
 };
 
 /// Outside-world connections of a run. All optional.
 struct PipelineHooks {
-    const InterruptGuard* interrupts = nullptr;  ///< polled between frames; its flag cancels encoding
+    const InterruptGuard* interrupts =
+        nullptr;  ///< polled between frames; its flag cancels encoding
     Progress* progress = nullptr;
-    bool preview = false;                        ///< show frames in a window when a display exists
-    render::NoticeSink notice;                   ///< one-line notices (empty = stderr)
+    bool preview = false;       ///< show frames in a window when a display exists
+    render::NoticeSink notice;  ///< one-line notices (empty = stderr)
     /// Benchmarks only: also append every frame as raw RGBA to this file (for timing libx264
     /// alone on exactly the same frames with the ffmpeg command line).
     std::filesystem::path dump_rgba;
@@ -100,9 +103,9 @@ struct PipelineHooks {
 /// What happened, for the summary line.
 struct PipelineResult {
     std::int64_t frames = 0;
-    double sim_time = 0.0;               ///< simulation time of the last frame
-    std::vector<Measurements> engines;   ///< in panel order
-    std::vector<std::string> notices;    ///< from the encoder (size rounded, GIF rate reduced)
+    double sim_time = 0.0;              ///< simulation time of the last frame
+    std::vector<Measurements> engines;  ///< in panel order
+    std::vector<std::string> notices;   ///< from the encoder (size rounded, GIF rate reduced)
     int output_width = 0;
     int output_height = 0;
     double output_fps = 0.0;

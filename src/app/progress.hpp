@@ -20,7 +20,8 @@ enum class ProgressMode {
 };
 
 /// "auto" / "bar" / "json" / "none"; throws Error(input) naming `option` otherwise.
-[[nodiscard]] ProgressMode parse_progress_mode(std::string_view text, std::string_view option = "--progress");
+[[nodiscard]] ProgressMode parse_progress_mode(std::string_view text,
+                                               std::string_view option = "--progress");
 
 /// The numbers shown at one moment.
 struct ProgressState {
@@ -41,7 +42,7 @@ struct ProgressState {
 /// Reports a render's progress to a FILE (stderr). Redraws at most every 0.1 s (bar) or 0.5 s
 /// (json) plus the final frame, so reporting costs nothing measurable. Not thread-safe.
 class Progress {
-public:
+  public:
     Progress(ProgressMode mode, std::int64_t frames_total, std::FILE* out = stderr);
     Progress(const Progress&) = delete;
     Progress& operator=(const Progress&) = delete;
@@ -55,7 +56,7 @@ public:
     [[nodiscard]] ProgressMode mode() const noexcept { return mode_; }
     [[nodiscard]] double elapsed_seconds() const;
 
-private:
+  private:
     void emit(const ProgressState& state);
 
     ProgressMode mode_;

@@ -30,24 +30,31 @@ constexpr double snap_tolerance = 1e-9;
     throw_input_error(fmt::format("{}: {}", option, reason));
 }
 
-bool positive_finite(double x) { return std::isfinite(x) && x > 0.0; }
+bool positive_finite(double x) {
+    return std::isfinite(x) && x > 0.0;
+}
 
 void require_positive(double value, std::string_view option, std::string_view what) {
-    if (!positive_finite(value)) bad_option(option, fmt::format("must be a positive {}, got {}", what, value));
+    if (!positive_finite(value))
+        bad_option(option, fmt::format("must be a positive {}, got {}", what, value));
 }
 
 std::string lowercase_extension(const std::filesystem::path& path) {
     std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return ext;
 }
 
-std::string output_stem(const Scene& scene) { return scene.name.empty() ? std::string("scene") : scene.name; }
+std::string output_stem(const Scene& scene) {
+    return scene.name.empty() ? std::string("scene") : scene.name;
+}
 
 int choose_fps(const RenderRequest& request, const QualityPreset& preset) {
     if (!request.fps) return preset.fps;
     if (*request.fps < 1 || *request.fps > max_fps) {
-        bad_option("--fps", fmt::format("must be 1..{} frames per second, got {}", max_fps, *request.fps));
+        bad_option("--fps",
+                   fmt::format("must be 1..{} frames per second, got {}", max_fps, *request.fps));
     }
     return *request.fps;
 }
@@ -57,7 +64,8 @@ double choose_duration(const RenderRequest& request, const Scene& scene) {
     const double duration = request.duration.value_or(scene.render.duration.value_or(10.0));
     const char* option = from_cli ? "--duration" : "scene [render] duration";
     require_positive(duration, option, "number of seconds");
-    if (duration > max_duration) bad_option(option, fmt::format("at most {} seconds, got {}", max_duration, duration));
+    if (duration > max_duration)
+        bad_option(option, fmt::format("at most {} seconds, got {}", max_duration, duration));
     return duration;
 }
 
@@ -77,7 +85,8 @@ EngineOptions time_engine_options(const RenderRequest& request, const Scene& sce
     EngineOptions options;
     options.engine = "time";
     if (request.td_detect != "all-pairs" && request.td_detect != "grid") {
-        bad_option("--td-detect", fmt::format("must be all-pairs or grid, got '{}'", request.td_detect));
+        bad_option("--td-detect",
+                   fmt::format("must be all-pairs or grid, got '{}'", request.td_detect));
     }
     options.td_detect = request.td_detect;
     const bool from_cli = request.dt.has_value();
@@ -85,33 +94,38 @@ EngineOptions time_engine_options(const RenderRequest& request, const Scene& sce
     options.dt = request.dt.value_or(scene.render.dt.value_or(interval));
     require_positive(options.dt, from_cli ? "--dt" : "scene [render] dt", "time step");
     if (options.dt > interval * (1.0 + divide_tolerance)) {
-        notices.push_back(fmt::format("dt = {:g} is longer than the frame interval {:g}: the time-driven "
-                                      "panel shows its latest step and changes every {:.3g} frames",
-                                      options.dt, interval, options.dt / interval));
+        notices.push_back(
+            fmt::format("dt = {:g} is longer than the frame interval {:g}: the time-driven "
+                        "panel shows its latest step and changes every {:.3g} frames",
+                        options.dt, interval, options.dt / interval));
     } else if (!divides(options.dt, interval)) {
-        notices.push_back(fmt::format("warning: dt = {:g} does not divide the frame interval {:g}: the "
-                                      "time-driven panel shows its latest step, up to dt behind the frame time",
-                                      options.dt, interval));
+        notices.push_back(
+            fmt::format("warning: dt = {:g} does not divide the frame interval {:g}: the "
+                        "time-driven panel shows its latest step, up to dt behind the frame time",
+                        options.dt, interval));
     }
     return options;
 }
 
-render::RenderConfig render_config(const RenderRequest& request, const Scene& scene, int width, int height) {
+render::RenderConfig render_config(const RenderRequest& request, const Scene& scene, int width,
+                                   int height) {
     render::RenderConfig config;
     config.width = width;
     config.height = height;
     if (request.color) {
         config.color_mode = render::parse_color_mode(*request.color, "--color");
     } else if (scene.render.color_mode) {
-        config.color_mode = render::parse_color_mode(*scene.render.color_mode, "scene [render] color_mode");
+        config.color_mode =
+            render::parse_color_mode(*scene.render.color_mode, "scene [render] color_mode");
     }
     // Fixed ranges for the whole video, so colours and histogram bins mean the same in every frame.
     const double top = std::max(max_speed(scene), speed_range_in_rms * rms_speed(scene));
     config.speed_min = 0.0;
     config.speed_max = top > 0.0 ? top : 1.0;
     if (!scene.discs.empty()) {
-        const auto [lightest, heaviest] = std::minmax_element(
-            scene.discs.begin(), scene.discs.end(), [](const Disc& a, const Disc& b) { return a.mass < b.mass; });
+        const auto [lightest, heaviest] =
+            std::minmax_element(scene.discs.begin(), scene.discs.end(),
+                                [](const Disc& a, const Disc& b) { return a.mass < b.mass; });
         config.mass_min = lightest->mass;
         config.mass_max = heaviest->mass;
     }
@@ -124,11 +138,14 @@ render::RenderConfig render_config(const RenderRequest& request, const Scene& sc
 void plan_still_output(const RenderRequest& request, const Scene& scene, RenderPlan& plan) {
     plan.kind = OutputKind::still;
     if (request.format && *request.format != "png") {
-        bad_option("--format", fmt::format("a single frame is written as png, got '{}'", *request.format));
+        bad_option("--format",
+                   fmt::format("a single frame is written as png, got '{}'", *request.format));
     }
     if (request.output) {
         if (lowercase_extension(*request.output) != ".png") {
-            bad_option("-o", fmt::format("a single frame is a PNG image: give a .png path, got '{}'", *request.output));
+            bad_option("-o",
+                       fmt::format("a single frame is a PNG image: give a .png path, got '{}'",
+                                   *request.output));
         }
         plan.output = *request.output;
     } else {
@@ -142,12 +159,15 @@ video::VideoFormat format_of_path(const std::filesystem::path& path) {
     if (ext == ".mp4") return video::VideoFormat::mp4;
     if (ext == ".gif") return video::VideoFormat::gif;
     if (ext == ".png") {
-        bad_option("-o", fmt::format("'{}' is a single image: use --last-frame or `collide thumbnail` for one "
-                                     "frame, or --format png for a directory of frames",
-                                     path.string()));
+        bad_option(
+            "-o",
+            fmt::format("'{}' is a single image: use --last-frame or `collide thumbnail` for one "
+                        "frame, or --format png for a directory of frames",
+                        path.string()));
     }
-    bad_option("-o", fmt::format("cannot tell the format of '{}': use a .mp4 or .gif path, or --format",
-                                 path.string()));
+    bad_option("-o",
+               fmt::format("cannot tell the format of '{}': use a .mp4 or .gif path, or --format",
+                           path.string()));
 }
 
 void plan_video_output(const RenderRequest& request, const Scene& scene, RenderPlan& plan) {
@@ -169,8 +189,12 @@ void plan_video_output(const RenderRequest& request, const Scene& scene, RenderP
     plan.default_output = true;
     const std::string stem = output_stem(scene);
     switch (plan.format) {
-        case video::VideoFormat::mp4: plan.output = std::filesystem::path(default_output_dir) / (stem + ".mp4"); break;
-        case video::VideoFormat::gif: plan.output = std::filesystem::path(default_output_dir) / (stem + ".gif"); break;
+        case video::VideoFormat::mp4:
+            plan.output = std::filesystem::path(default_output_dir) / (stem + ".mp4");
+            break;
+        case video::VideoFormat::gif:
+            plan.output = std::filesystem::path(default_output_dir) / (stem + ".gif");
+            break;
         case video::VideoFormat::png_sequence:
             plan.output = std::filesystem::path(default_output_dir) / (stem + "_frames");
             break;
@@ -191,13 +215,16 @@ QualityPreset quality_preset(std::string_view letter, std::string_view option) {
     if (letter == "m") return {1280, 720, 30};
     if (letter == "h") return {1920, 1080, 60};
     if (letter == "k") return {3840, 2160, 60};
-    bad_option(option, fmt::format("must be l (480p15), m (720p30), h (1080p60) or k (2160p60), got '{}'", letter));
+    bad_option(option,
+               fmt::format("must be l (480p15), m (720p30), h (1080p60) or k (2160p60), got '{}'",
+                           letter));
 }
 
 FrameSize parse_frame_size(std::string_view text, std::string_view option) {
     const auto bad = [&] {
-        bad_option(option, fmt::format("must be WIDTHxHEIGHT with each in {}..{}, e.g. 1280x720, got '{}'",
-                                       min_frame_side, max_frame_side, text));
+        bad_option(option,
+                   fmt::format("must be WIDTHxHEIGHT with each in {}..{}, e.g. 1280x720, got '{}'",
+                               min_frame_side, max_frame_side, text));
     };
     const std::size_t x = text.find('x');
     if (x == std::string_view::npos) bad();
@@ -231,14 +258,16 @@ SpeedChoice choose_speed(const Scene& scene, std::optional<double> cli) {
         return {*cli, "--speed", ""};
     }
     if (scene.render.speed) {
-        require_positive(*scene.render.speed, "scene [render] speed", "number of time units per second");
+        require_positive(*scene.render.speed, "scene [render] speed",
+                         "number of time units per second");
         return {*scene.render.speed, "scene hint", ""};
     }
     const double typical = rms_speed(scene);
     const double speed = scene.box.width / (crossing_seconds * typical);
     if (!positive_finite(speed)) {
-        return {1.0, "fallback",
-                "nothing moves in this scene: showing 1 simulation time unit per second (set --speed)"};
+        return {
+            1.0, "fallback",
+            "nothing moves in this scene: showing 1 simulation time unit per second (set --speed)"};
     }
     return {speed, "derived", ""};
 }
@@ -255,13 +284,15 @@ FrameClock video_clock(double duration, double speed, int fps) {
 }
 
 FrameClock still_clock(double at, double speed, int fps, std::string_view option) {
-    if (!std::isfinite(at) || at < 0.0) bad_option(option, fmt::format("must be a time >= 0, got {}", at));
+    if (!std::isfinite(at) || at < 0.0)
+        bad_option(option, fmt::format("must be a time >= 0, got {}", at));
     require_positive(speed, "--speed", "number of simulation time units per second");
     FrameClock clock;
     clock.interval = speed / fps;
     const double steps = at / clock.interval;
     auto whole = static_cast<std::int64_t>(std::floor(steps));
-    if (steps - static_cast<double>(whole) > 1.0 - snap_tolerance) ++whole;  // just under a frame time
+    if (steps - static_cast<double>(whole) > 1.0 - snap_tolerance)
+        ++whole;  // just under a frame time
     const double on_grid = static_cast<double>(whole) * clock.interval;
     if (std::abs(at - on_grid) <= snap_tolerance * clock.interval) {
         clock.count = whole + 1;  // `at` is (within rounding) frame `whole`: take the video's time
@@ -291,8 +322,10 @@ bool divides(double dt, double interval) noexcept {
 RenderPlan plan_render(const RenderRequest& request, const Scene& scene) {
     RenderPlan plan;
     plan.mode = parse_render_mode(request.mode);
-    const QualityPreset preset = request.quality ? quality_preset(*request.quality) : QualityPreset{};
-    const FrameSize size = request.size ? parse_frame_size(*request.size) : FrameSize{preset.width, preset.height};
+    const QualityPreset preset =
+        request.quality ? quality_preset(*request.quality) : QualityPreset{};
+    const FrameSize size =
+        request.size ? parse_frame_size(*request.size) : FrameSize{preset.width, preset.height};
     plan.width = size.width;
     plan.height = size.height;
     plan.fps = choose_fps(request, preset);
@@ -318,10 +351,13 @@ RenderPlan plan_render(const RenderRequest& request, const Scene& scene) {
     return plan;
 }
 
-std::string time_panel_title(double dt) { return fmt::format("Time-driven, dt = {:.3g}", dt); }
+std::string time_panel_title(double dt) {
+    return fmt::format("Time-driven, dt = {:.3g}", dt);
+}
 
 std::string event_panel_title(const EngineOptions& options) {
-    if (options.engine == "classic") return fmt::format("Event-driven (priority queue: {})", options.pq);
+    if (options.engine == "classic")
+        return fmt::format("Event-driven (priority queue: {})", options.pq);
     return "Event-driven (priority queue)";
 }
 

@@ -27,7 +27,8 @@ enum class RenderMode {
 };
 
 /// "both" / "event" / "time"; throws Error(input) naming `option` otherwise.
-[[nodiscard]] RenderMode parse_render_mode(std::string_view text, std::string_view option = "--mode");
+[[nodiscard]] RenderMode parse_render_mode(std::string_view text,
+                                           std::string_view option = "--mode");
 
 /// A frame size and rate preset, as in manim's -ql/-qm/-qh/-qk.
 struct QualityPreset {
@@ -88,7 +89,8 @@ struct FrameClock {
 /// clock up to `at`, then `at` itself (snapped onto a frame time within 1e-9 of an interval), so
 /// the time-driven engine takes exactly the steps the video takes and a thumbnail at the video's
 /// last frame time equals that frame. Throws Error(input) naming `option` for a negative `at`.
-[[nodiscard]] FrameClock still_clock(double at, double speed, int fps, std::string_view option = "--at");
+[[nodiscard]] FrameClock still_clock(double at, double speed, int fps,
+                                     std::string_view option = "--at");
 
 /// The time of the time-driven engine's last whole step at or before frame time t: the naive
 /// method only has states at multiples of dt, so a frame shows its latest step rather than
@@ -102,24 +104,24 @@ struct FrameClock {
 
 /// Everything the user may type; unset = take the scene hint or the default.
 struct RenderRequest {
-    std::string scene;                   ///< file or built-in name
-    std::optional<std::string> output;   ///< -o
-    std::string mode = "both";           ///< --mode
-    std::optional<std::string> quality;  ///< -q
-    std::optional<std::string> size;     ///< --size WxH
-    std::optional<int> fps;              ///< --fps
-    std::optional<double> duration;      ///< --duration (seconds of video)
-    std::optional<double> speed;         ///< --speed (simulation time per second of video)
-    std::optional<double> dt;            ///< --dt (time-driven quantum)
-    std::string engine = "fast";         ///< --engine (the event-driven one)
-    std::string pq = "binary";           ///< --pq (classic engine's queue)
-    std::string td_detect = "all-pairs"; ///< --td-detect (time-driven overlap checks)
-    std::optional<std::string> color;    ///< --color
-    std::optional<bool> trails;          ///< --trails / --no-trails
-    std::optional<std::string> format;   ///< --format mp4|gif|png
-    bool last_frame = false;             ///< --last-frame: write only the last frame as a PNG
-    std::optional<double> at;            ///< thumbnail --at (simulation time)
-    bool still = false;                  ///< true for `collide thumbnail` (PNG output)
+    std::string scene;                    ///< file or built-in name
+    std::optional<std::string> output;    ///< -o
+    std::string mode = "both";            ///< --mode
+    std::optional<std::string> quality;   ///< -q
+    std::optional<std::string> size;      ///< --size WxH
+    std::optional<int> fps;               ///< --fps
+    std::optional<double> duration;       ///< --duration (seconds of video)
+    std::optional<double> speed;          ///< --speed (simulation time per second of video)
+    std::optional<double> dt;             ///< --dt (time-driven quantum)
+    std::string engine = "fast";          ///< --engine (the event-driven one)
+    std::string pq = "binary";            ///< --pq (classic engine's queue)
+    std::string td_detect = "all-pairs";  ///< --td-detect (time-driven overlap checks)
+    std::optional<std::string> color;     ///< --color
+    std::optional<bool> trails;           ///< --trails / --no-trails
+    std::optional<std::string> format;    ///< --format mp4|gif|png
+    bool last_frame = false;              ///< --last-frame: write only the last frame as a PNG
+    std::optional<double> at;             ///< thumbnail --at (simulation time)
+    bool still = false;                   ///< true for `collide thumbnail` (PNG output)
 };
 
 /// What kind of file comes out.
@@ -143,8 +145,8 @@ struct RenderPlan {
     OutputKind kind = OutputKind::video;
     video::VideoFormat format = video::VideoFormat::mp4;
     std::filesystem::path output;
-    bool default_output = false;         ///< output derived from the scene name (under out/)
-    std::vector<std::string> notices;    ///< one-line remarks to print before rendering
+    bool default_output = false;       ///< output derived from the scene name (under out/)
+    std::vector<std::string> notices;  ///< one-line remarks to print before rendering
 };
 
 /// Default output directory for derived paths.

@@ -1,17 +1,21 @@
+#include "collide/render/context.hpp"
+
 #include <iostream>
 #include <string>
 
 #include "backends.hpp"
 #include "collide/error.hpp"
-#include "collide/render/context.hpp"
 
 namespace collide::render {
 
 std::string_view backend_name(Backend backend) noexcept {
     switch (backend) {
-        case Backend::automatic: return "auto";
-        case Backend::osmesa: return "osmesa";
-        case Backend::glfw: return "glfw";
+        case Backend::automatic:
+            return "auto";
+        case Backend::osmesa:
+            return "osmesa";
+        case Backend::glfw:
+            return "glfw";
     }
     return "auto";
 }

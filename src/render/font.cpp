@@ -33,11 +33,22 @@ std::vector<std::uint32_t> decode_utf8(std::string_view text) {
         const auto byte = static_cast<unsigned char>(text[i]);
         int extra = 0;
         std::uint32_t cp = 0;
-        if (byte < 0x80) { cp = byte; }
-        else if ((byte & 0xE0) == 0xC0) { cp = byte & 0x1F; extra = 1; }
-        else if ((byte & 0xF0) == 0xE0) { cp = byte & 0x0F; extra = 2; }
-        else if ((byte & 0xF8) == 0xF0) { cp = byte & 0x07; extra = 3; }
-        else { out.push_back(0xFFFD); ++i; continue; }
+        if (byte < 0x80) {
+            cp = byte;
+        } else if ((byte & 0xE0) == 0xC0) {
+            cp = byte & 0x1F;
+            extra = 1;
+        } else if ((byte & 0xF0) == 0xE0) {
+            cp = byte & 0x0F;
+            extra = 2;
+        } else if ((byte & 0xF8) == 0xF0) {
+            cp = byte & 0x07;
+            extra = 3;
+        } else {
+            out.push_back(0xFFFD);
+            ++i;
+            continue;
+        }
         if (i + static_cast<std::size_t>(extra) >= text.size() && extra > 0) {
             out.push_back(0xFFFD);  // truncated sequence at the end
             break;
@@ -45,10 +56,17 @@ std::vector<std::uint32_t> decode_utf8(std::string_view text) {
         bool valid = true;
         for (int k = 1; k <= extra; ++k) {
             const auto next = static_cast<unsigned char>(text[i + static_cast<std::size_t>(k)]);
-            if ((next & 0xC0) != 0x80) { valid = false; break; }
+            if ((next & 0xC0) != 0x80) {
+                valid = false;
+                break;
+            }
             cp = (cp << 6) | (next & 0x3F);
         }
-        if (!valid) { out.push_back(0xFFFD); ++i; continue; }
+        if (!valid) {
+            out.push_back(0xFFFD);
+            ++i;
+            continue;
+        }
         out.push_back(cp);
         i += static_cast<std::size_t>(extra) + 1;
     }
@@ -58,7 +76,8 @@ std::vector<std::uint32_t> decode_utf8(std::string_view text) {
 FontAtlas::FontAtlas(const std::string& path, float pixel_height) : pixel_height_(pixel_height) {
     const std::vector<unsigned char> data = read_font_file(path);
     stbtt_fontinfo info;
-    if (data.empty() || stbtt_InitFont(&info, data.data(), stbtt_GetFontOffsetForIndex(data.data(), 0)) == 0) {
+    if (data.empty() ||
+        stbtt_InitFont(&info, data.data(), stbtt_GetFontOffsetForIndex(data.data(), 0)) == 0) {
         throw_runtime_error("font: '" + path + "' is not a usable TrueType font");
     }
     int ascent = 0, descent = 0, gap = 0;
@@ -69,10 +88,9 @@ FontAtlas::FontAtlas(const std::string& path, float pixel_height) : pixel_height
     atlas_size_ = pixel_height <= 20.0F ? 256 : (pixel_height <= 48.0F ? 512 : 1024);
     bitmap_.assign(static_cast<std::size_t>(atlas_size_) * atlas_size_, 0);
     std::vector<stbtt_bakedchar> baked(code_point_count);
-    const int rows_used =
-        stbtt_BakeFontBitmap(data.data(), 0, pixel_height, bitmap_.data(), atlas_size_,
-                             atlas_size_, static_cast<int>(first_code_point),
-                             static_cast<int>(code_point_count), baked.data());
+    const int rows_used = stbtt_BakeFontBitmap(
+        data.data(), 0, pixel_height, bitmap_.data(), atlas_size_, atlas_size_,
+        static_cast<int>(first_code_point), static_cast<int>(code_point_count), baked.data());
     if (rows_used <= 0) {
         throw_runtime_error("font: glyphs of '" + path + "' do not fit the atlas at this size");
     }

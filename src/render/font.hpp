@@ -12,7 +12,7 @@
 namespace collide::render {
 
 class FontAtlas {
-public:
+  public:
     /// Bakes code points 32..255 of the font at `pixel_height`. Throws collide::Error (runtime)
     /// when the file is missing or is not a usable TrueType font.
     FontAtlas(const std::string& path, float pixel_height);
@@ -32,7 +32,7 @@ public:
     [[nodiscard]] const std::vector<std::uint8_t>& bitmap() const noexcept { return bitmap_; }
     [[nodiscard]] int atlas_size() const noexcept { return atlas_size_; }
 
-private:
+  private:
     struct Glyph {
         float x0, y0, x1, y1;  // quad relative to the pen position (y down)
         float u0, v0, u1, v1;

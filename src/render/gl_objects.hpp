@@ -11,7 +11,7 @@ namespace collide::render {
 
 /// A GL object name plus how to delete it. Move-only; deleting needs the context current.
 class GlObject {
-public:
+  public:
     using Deleter = void (*)(const GladGLContext&, GLuint);
 
     GlObject() = default;
@@ -30,7 +30,7 @@ public:
 
     [[nodiscard]] GLuint get() const noexcept { return name_; }
 
-private:
+  private:
     void swap(GlObject& other) noexcept {
         std::swap(gl_, other.gl_);
         std::swap(name_, other.name_);

@@ -13,7 +13,9 @@
 
 namespace collide::render {
 
-GlfwLibrary::~GlfwLibrary() { glfwTerminate(); }
+GlfwLibrary::~GlfwLibrary() {
+    glfwTerminate();
+}
 
 std::shared_ptr<GlfwLibrary> GlfwLibrary::acquire(std::string& why) {
     // GLFW's state is process-global by design; this is the one place that mirrors it.
@@ -35,7 +37,7 @@ std::shared_ptr<GlfwLibrary> GlfwLibrary::acquire(std::string& why) {
 namespace {
 
 class GlfwContext final : public Context {
-public:
+  public:
     GlfwContext(std::shared_ptr<GlfwLibrary> library, GLFWwindow* window)
         : library_(std::move(library)), window_(window) {}
     ~GlfwContext() override { glfwDestroyWindow(window_); }
@@ -48,7 +50,7 @@ public:
         return [](const char* name) -> GlProc { return glfwGetProcAddress(name); };
     }
 
-private:
+  private:
     std::shared_ptr<GlfwLibrary> library_;  // declared first: outlives the window
     GLFWwindow* window_ = nullptr;
 };

@@ -8,7 +8,7 @@
 namespace collide::render {
 
 class GlfwLibrary {
-public:
+  public:
     GlfwLibrary(const GlfwLibrary&) = delete;
     GlfwLibrary& operator=(const GlfwLibrary&) = delete;
     ~GlfwLibrary();
@@ -17,7 +17,7 @@ public:
     /// GLFW's description in `why`.
     [[nodiscard]] static std::shared_ptr<GlfwLibrary> acquire(std::string& why);
 
-private:
+  private:
     GlfwLibrary() = default;
 };
 

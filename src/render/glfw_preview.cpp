@@ -21,7 +21,7 @@ struct WindowDeleter {
 };
 
 class GlfwPreview final : public PreviewWindow {
-public:
+  public:
     GlfwPreview(std::shared_ptr<GlfwLibrary> library, GLFWwindow* window)
         : library_(std::move(library)), window_(window) {
         glfwMakeContextCurrent(window_.get());
@@ -29,8 +29,8 @@ public:
             throw_runtime_error("GLFW: cannot load GL entry points for the preview window");
         }
         glfwSwapInterval(0);  // never let the display's refresh rate slow the encoder down
-        program_ = make_program(gl_, shaders::present_vert, shaders::present_frag,
-                                "preview shader");
+        program_ =
+            make_program(gl_, shaders::present_vert, shaders::present_frag, "preview shader");
         vertex_array_ = make_vertex_array(gl_);
         texture_ = make_texture(gl_);
         gl_.BindTexture(GL_TEXTURE_2D, texture_.get());
@@ -68,7 +68,7 @@ public:
         return true;
     }
 
-private:
+  private:
     void upload(const Image& image) {
         gl_.ActiveTexture(GL_TEXTURE0);
         gl_.BindTexture(GL_TEXTURE_2D, texture_.get());

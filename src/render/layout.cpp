@@ -38,9 +38,9 @@ FrameLayout compute_layout(const RenderConfig& config, const std::vector<Box>& b
         panel.header = {panel.area.x0 + m, m, panel.area.x1 - m, m + header_height};
         const RectF room{panel.area.x0 + m, panel.header.y1 + m, panel.area.x1 - m,
                          panels_bottom - m};
-        const double scale = std::max(
-            1e-9, std::min(static_cast<double>(room.width()) / boxes[i].width,
-                           static_cast<double>(room.height()) / boxes[i].height));
+        const double scale =
+            std::max(1e-9, std::min(static_cast<double>(room.width()) / boxes[i].width,
+                                    static_cast<double>(room.height()) / boxes[i].height));
         const auto box_w = static_cast<float>(boxes[i].width * scale);
         const auto box_h = static_cast<float>(boxes[i].height * scale);
         const float x0 = std::round(room.x0 + 0.5F * (room.width() - box_w));

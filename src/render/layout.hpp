@@ -13,8 +13,8 @@ namespace collide::render {
 /// One panel: its whole area, the header (title and counters) and the box's pixel rectangle.
 struct PanelLayout {
     RectF area;
-    RectF header;   // empty when overlays are off
-    RectF box;      // the box [0,W]x[0,H] in pixels, aspect ratio preserved
+    RectF header;        // empty when overlays are off
+    RectF box;           // the box [0,W]x[0,H] in pixels, aspect ratio preserved
     double scale = 1.0;  // pixels per box unit
 
     /// Box coordinates (y up) to frame pixels (y down).

@@ -17,17 +17,23 @@ namespace {
 constexpr int binding_buffer_size = 16;
 
 class OsmesaContext final : public Context {
-public:
+  public:
     OsmesaContext() {
-        const std::array<int, 15> attributes = {
-            OSMESA_FORMAT, OSMESA_RGBA,
-            OSMESA_DEPTH_BITS, 0,
-            OSMESA_STENCIL_BITS, 0,
-            OSMESA_ACCUM_BITS, 0,
-            OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-            OSMESA_CONTEXT_MAJOR_VERSION, 3,
-            OSMESA_CONTEXT_MINOR_VERSION, 3,
-            0};
+        const std::array<int, 15> attributes = {OSMESA_FORMAT,
+                                                OSMESA_RGBA,
+                                                OSMESA_DEPTH_BITS,
+                                                0,
+                                                OSMESA_STENCIL_BITS,
+                                                0,
+                                                OSMESA_ACCUM_BITS,
+                                                0,
+                                                OSMESA_PROFILE,
+                                                OSMESA_CORE_PROFILE,
+                                                OSMESA_CONTEXT_MAJOR_VERSION,
+                                                3,
+                                                OSMESA_CONTEXT_MINOR_VERSION,
+                                                3,
+                                                0};
         context_ = OSMesaCreateContextAttribs(attributes.data(), nullptr);
         if (context_ == nullptr) {
             throw_runtime_error("OSMesa: failed to create a GL 3.3 core-profile context");
@@ -52,7 +58,7 @@ public:
         return [](const char* name) -> GlProc { return OSMesaGetProcAddress(name); };
     }
 
-private:
+  private:
     OSMesaContext context_ = nullptr;
     std::vector<std::uint32_t> buffer_;  // RGBA8 pixels of the binding buffer
 };

@@ -35,8 +35,8 @@ void OverlayBatch::add_line(PointF a, PointF b, float width, Rgba8 color) {
     // Half-width normal; segments overlap a little at joints, which reads as a continuous line.
     const float nx = -dy / length * width * 0.5F;
     const float ny = dx / length * width * 0.5F;
-    add_quad({a.x + nx, a.y + ny}, {b.x + nx, b.y + ny}, {b.x - nx, b.y - ny},
-             {a.x - nx, a.y - ny}, solid_uv, color);
+    add_quad({a.x + nx, a.y + ny}, {b.x + nx, b.y + ny}, {b.x - nx, b.y - ny}, {a.x - nx, a.y - ny},
+             solid_uv, color);
 }
 
 void OverlayBatch::add_glyph(RectF r, RectF uv, Rgba8 color) {

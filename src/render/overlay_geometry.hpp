@@ -45,7 +45,7 @@ struct OverlayVertex {
 
 /// An append-only list of triangles, drawn in order with one call.
 class OverlayBatch {
-public:
+  public:
     void clear() noexcept { vertices_.clear(); }
     void add_rect(RectF r, Rgba8 color);
     /// A rectangle outline `width` pixels thick, inside r.
@@ -57,7 +57,7 @@ public:
 
     [[nodiscard]] const std::vector<OverlayVertex>& vertices() const noexcept { return vertices_; }
 
-private:
+  private:
     void add_quad(PointF a, PointF b, PointF c, PointF d, RectF uv, Rgba8 color);
     std::vector<OverlayVertex> vertices_;
 };

@@ -32,8 +32,7 @@ PlotFrame draw_axes(OverlayBatch& batch, const FontAtlas& font, RectF area,
     const float line = std::max(1.0F, std::round(font.pixel_height() / 12.0F));
     font.add_text(batch, area.x0, area.y0 + font.ascent(), title, label_color);
     RectF plot{area.x0, area.y0 + font.line_height(), area.x1, area.y1};
-    if (plot.y1 <= plot.y0 + 2.0F)
-        plot.y0 = plot.y1 - 2.0F;
+    if (plot.y1 <= plot.y0 + 2.0F) plot.y0 = plot.y1 - 2.0F;
     batch.add_rect({plot.x0, plot.y1 - line, plot.x1, plot.y1}, axis_color);
     batch.add_rect({plot.x0, plot.y0, plot.x0 + line, plot.y1}, axis_color);
     return {plot, line};
@@ -43,8 +42,7 @@ PlotFrame draw_axes(OverlayBatch& batch, const FontAtlas& font, RectF area,
 
 std::vector<double> speed_density(const Snapshot& snapshot, double v_min, double v_max, int bins) {
     std::vector<double> density(static_cast<std::size_t>(std::max(bins, 1)), 0.0);
-    if (snapshot.discs.empty() || !(v_max > v_min))
-        return density;
+    if (snapshot.discs.empty() || !(v_max > v_min)) return density;
     const double width = (v_max - v_min) / static_cast<double>(density.size());
     for (const DiscState& d : snapshot.discs) {
         const double bin = std::floor((norm(d.velocity) - v_min) / width);
@@ -53,14 +51,12 @@ std::vector<double> speed_density(const Snapshot& snapshot, double v_min, double
         }
     }
     const double scale = 1.0 / (static_cast<double>(snapshot.discs.size()) * width);
-    for (double& value : density)
-        value *= scale;
+    for (double& value : density) value *= scale;
     return density;
 }
 
 MaxwellBoltzmann::MaxwellBoltzmann(const Snapshot& snapshot) {
-    if (snapshot.discs.empty())
-        return;
+    if (snapshot.discs.empty()) return;
     std::map<double, double> counts;
     double kinetic = 0.0;
     double mass_sum = 0.0;
@@ -74,14 +70,12 @@ MaxwellBoltzmann::MaxwellBoltzmann(const Snapshot& snapshot) {
     if (counts.size() > max_mass_groups) {
         groups_.push_back({mass_sum / n, 1.0});
     } else {
-        for (const auto& [mass, count] : counts)
-            groups_.push_back({mass, count / n});
+        for (const auto& [mass, count] : counts) groups_.push_back({mass, count / n});
     }
 }
 
 double MaxwellBoltzmann::density(double speed) const noexcept {
-    if (!(kT_ > 0.0) || speed < 0.0)
-        return 0.0;
+    if (!(kT_ > 0.0) || speed < 0.0) return 0.0;
     double f = 0.0;
     for (const Group& g : groups_) {
         f += g.weight * (g.mass * speed / kT_) * std::exp(-g.mass * speed * speed / (2.0 * kT_));
@@ -100,15 +94,13 @@ void draw_speed_plot(OverlayBatch& batch, const FontAtlas& font, RectF area,
     const float room = area.width() - font.text_width(range) - font.pixel_height();
     std::string title = "speed distribution vs Maxwell-Boltzmann";
     for (const char* shorter : {"speeds vs Maxwell-Boltzmann", "speeds vs MB"}) {
-        if (font.text_width(title) <= room)
-            break;
+        if (font.text_width(title) <= room) break;
         title = shorter;
     }
     const bool show_range = font.text_width(title) <= room;
     const PlotFrame frame = draw_axes(batch, font, area, title);
     const RectF plot = frame.plot;
-    if (snapshots.empty() || plot.width() < 4.0F)
-        return;
+    if (snapshots.empty() || plot.width() < 4.0F) return;
     const int bins = std::clamp(static_cast<int>(plot.width() / 6.0F), 8, 40);
     std::vector<std::vector<double>> histograms;
     double peak = 0.0;
@@ -125,8 +117,7 @@ void draw_speed_plot(OverlayBatch& batch, const FontAtlas& font, RectF area,
             curve.density(v_min + (v_max - v_min) * i / curve_samples);
         peak = std::max(peak, curve_values[static_cast<std::size_t>(i)]);
     }
-    if (!(peak > 0.0))
-        return;
+    if (!(peak > 0.0)) return;
     const double y_scale = static_cast<double>(plot.height() - frame.line_width) / (peak * 1.1);
     const auto to_y = [&](double value) {
         return plot.y1 - frame.line_width - static_cast<float>(value * y_scale);
@@ -164,8 +155,7 @@ void draw_drift_plot(OverlayBatch& batch, const FontAtlas& font, RectF area,
     bool any = false;
     for (const auto& s : series) {
         for (const DriftPoint& p : s) {
-            if (!std::isfinite(p.drift) || !std::isfinite(p.time))
-                continue;
+            if (!std::isfinite(p.drift) || !std::isfinite(p.time)) continue;
             t_min = any ? std::min(t_min, p.time) : p.time;
             t_max = any ? std::max(t_max, p.time) : p.time;
             largest = std::max(largest, std::abs(p.drift));
@@ -180,8 +170,7 @@ void draw_drift_plot(OverlayBatch& batch, const FontAtlas& font, RectF area,
     const RectF plot = frame.plot;
     const float mid = 0.5F * (plot.y0 + plot.y1 - frame.line_width);
     batch.add_rect({plot.x0, mid, plot.x1, mid + 1.0F}, Rgba8{90, 90, 100, 255});
-    if (!any || !(t_max > t_min))
-        return;
+    if (!any || !(t_max > t_min)) return;
     const auto to_x = [&](double t) {
         return plot.x0 + static_cast<float>((t - t_min) / (t_max - t_min)) * plot.width();
     };
@@ -191,8 +180,7 @@ void draw_drift_plot(OverlayBatch& batch, const FontAtlas& font, RectF area,
         const Rgba8 color = with_alpha(panel_color(p), 255);
         const auto& s = series[p];
         for (std::size_t i = 1; i < s.size(); ++i) {
-            if (!std::isfinite(s[i].drift) || !std::isfinite(s[i - 1].drift))
-                continue;
+            if (!std::isfinite(s[i].drift) || !std::isfinite(s[i - 1].drift)) continue;
             batch.add_line({to_x(s[i - 1].time), to_y(s[i - 1].drift)},
                            {to_x(s[i].time), to_y(s[i].drift)}, frame.line_width * 1.5F, color);
         }

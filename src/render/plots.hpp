@@ -20,12 +20,12 @@ namespace collide::render {
 /// energy per disc (k_B = 1): with several masses a mixture, one term per mass weighted by its
 /// share of discs: f(v) = sum_g (n_g/N) (m_g v / kT) exp(-m_g v^2 / 2kT).
 class MaxwellBoltzmann {
-public:
+  public:
     explicit MaxwellBoltzmann(const Snapshot& snapshot);
     [[nodiscard]] double kT() const noexcept { return kT_; }
     [[nodiscard]] double density(double speed) const noexcept;
 
-private:
+  private:
     struct Group {
         double mass;
         double weight;  // share of discs with this mass

@@ -40,14 +40,10 @@ std::string_view color_mode_name(ColorMode mode) noexcept {
 }
 
 ColorMode parse_color_mode(std::string_view text, std::string_view field) {
-    if (text == "scene")
-        return ColorMode::scene;
-    if (text == "speed")
-        return ColorMode::speed;
-    if (text == "mass")
-        return ColorMode::mass;
-    if (text == "tag")
-        return ColorMode::tag;
+    if (text == "scene") return ColorMode::scene;
+    if (text == "speed") return ColorMode::speed;
+    if (text == "mass") return ColorMode::mass;
+    if (text == "tag") return ColorMode::tag;
     throw_input_error(std::string(field) + ": unknown colour mode '" + std::string(text) +
                       "' (expected scene, speed, mass or tag)");
 }
@@ -64,21 +60,18 @@ void RenderConfig::validate() const {
     if (height < min_size || height > max_size) {
         fail("height", "must be in [64, 8192], got " + std::to_string(height));
     }
-    if (!std::isfinite(speed_min) || speed_min < 0.0)
-        fail("speed_min", "must be finite and >= 0");
+    if (!std::isfinite(speed_min) || speed_min < 0.0) fail("speed_min", "must be finite and >= 0");
     if (!std::isfinite(speed_max) || !(speed_max > speed_min)) {
         fail("speed_max", "must be finite and > speed_min");
     }
-    if (!std::isfinite(mass_min) || !(mass_min > 0.0))
-        fail("mass_min", "must be finite and > 0");
+    if (!std::isfinite(mass_min) || !(mass_min > 0.0)) fail("mass_min", "must be finite and > 0");
     if (!std::isfinite(mass_max) || mass_max < mass_min) {
         fail("mass_max", "must be finite and >= mass_min");
     }
     if (trail_length < 2 || trail_length > 1024) {
         fail("trail_length", "must be in [2, 1024], got " + std::to_string(trail_length));
     }
-    if (overlays && font_path.empty())
-        fail("font_path", "must name a TrueType font");
+    if (overlays && font_path.empty()) fail("font_path", "must name a TrueType font");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -117,8 +110,7 @@ Rgb8 disc_color(const DiscState& disc, const RenderConfig& config) noexcept {
             return colormap((norm(disc.velocity) - config.speed_min) /
                             (config.speed_max - config.speed_min));
         case ColorMode::mass: {
-            if (!(config.mass_max > config.mass_min))
-                return colormap(0.5);
+            if (!(config.mass_max > config.mass_min)) return colormap(0.5);
             return colormap(std::log(disc.mass / config.mass_min) /
                             std::log(config.mass_max / config.mass_min));
         }
@@ -131,8 +123,7 @@ Rgb8 disc_color(const DiscState& disc, const RenderConfig& config) noexcept {
 std::string join(const std::vector<std::string>& parts, const char* separator) {
     std::string out;
     for (const std::string& part : parts) {
-        if (!out.empty())
-            out += separator;
+        if (!out.empty()) out += separator;
         out += part;
     }
     return out;
@@ -189,8 +180,7 @@ struct Renderer::Impl {
     Impl(const RenderConfig& cfg, std::unique_ptr<Context> ctx)
         : config(cfg), context(std::move(ctx)) {
         config.validate();
-        if (!context)
-            throw_runtime_error("renderer: no GL context");
+        if (!context) throw_runtime_error("renderer: no GL context");
         context->make_current();
         if (gladLoadGLContext(&gl, context->proc_loader()) == 0) {
             throw_runtime_error("GL: cannot load the GL 3.3 core entry points");
@@ -261,8 +251,7 @@ struct Renderer::Impl {
                                at(offsetof(DiscInstance, style)));
         gl.VertexAttribPointer(3, 4, GL_UNSIGNED_BYTE, GL_TRUE, disc_stride,
                                at(offsetof(DiscInstance, color)));
-        for (GLuint location = 0; location < 4; ++location)
-            gl.EnableVertexAttribArray(location);
+        for (GLuint location = 0; location < 4; ++location) gl.EnableVertexAttribArray(location);
 
         overlay_vertex_array = make_vertex_array(gl);
         overlay_buffer = make_buffer(gl);
@@ -275,8 +264,7 @@ struct Renderer::Impl {
                                reinterpret_cast<const void*>(offsetof(OverlayVertex, u)));
         gl.VertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
                                reinterpret_cast<const void*>(offsetof(OverlayVertex, color)));
-        for (GLuint location = 0; location < 3; ++location)
-            gl.EnableVertexAttribArray(location);
+        for (GLuint location = 0; location < 3; ++location) gl.EnableVertexAttribArray(location);
         gl.BindVertexArray(0);
     }
 
@@ -304,8 +292,7 @@ struct Renderer::Impl {
                               std::to_string(frame.panels.size()));
         }
         for (const PanelContent& panel : frame.panels) {
-            if (panel.snapshot == nullptr)
-                throw_input_error("render: a panel has no snapshot");
+            if (panel.snapshot == nullptr) throw_input_error("render: a panel has no snapshot");
         }
     }
 
@@ -313,8 +300,7 @@ struct Renderer::Impl {
 
     void build_frame(const FrameContent& frame) {
         std::vector<Box> boxes;
-        for (const PanelContent& panel : frame.panels)
-            boxes.push_back(panel.snapshot->box);
+        for (const PanelContent& panel : frame.panels) boxes.push_back(panel.snapshot->box);
         const int rows = counter_rows(frame);
         counter_rows_ = rows;
         const FrameLayout layout =
@@ -336,8 +322,7 @@ struct Renderer::Impl {
             const bool periodic = frame.panels[i].snapshot->box.boundary == Boundary::periodic;
             panel_clip.push_back(periodic ? layout.panels[i].box : layout.panels[i].area);
         }
-        if (font)
-            build_strip(frame, layout);
+        if (font) build_strip(frame, layout);
         current_layout = layout;
     }
 
@@ -363,8 +348,7 @@ struct Renderer::Impl {
         }
         add_disc_instances(snapshot, panel);
         add_failure_markers(snapshot, panel, wall);
-        if (font)
-            add_header(content, panel, panels);
+        if (font) add_header(content, panel, panels);
     }
 
     // The opaque box background, as if drawn with under.add_rect(box, box_fill_color). Shading
@@ -384,8 +368,7 @@ struct Renderer::Impl {
         }
         fill_clears.push_back(inner);
         const auto strip = [&](RectF r) {
-            if (r.x0 < r.x1 && r.y0 < r.y1)
-                under.add_rect(r, box_fill_color);
+            if (r.x0 < r.x1 && r.y0 < r.y1) under.add_rect(r, box_fill_color);
         };
         strip({box.x0, box.y0, inner.x0, box.y1});      // left, full height
         strip({inner.x1, box.y0, box.x1, box.y1});      // right, full height
@@ -401,12 +384,10 @@ struct Renderer::Impl {
             const Rgba8 color = with_alpha(colors[k], 255);
             const auto radius = static_cast<float>(disc.radius * panel.scale);
             Vec2 position = disc.position;
-            if (disc.escaped)
-                position = clamp_into_panel(position, disc.radius, box, panel);
+            if (disc.escaped) position = clamp_into_panel(position, disc.radius, box, panel);
             const PointF c = panel.to_pixels(position, box);
             instances.push_back({c.x, c.y, radius, 0.0F, color});
-            if (periodic)
-                add_periodic_images(disc, panel, box, color);
+            if (periodic) add_periodic_images(disc, panel, box, color);
             if (disc.escaped) {
                 instances.push_back(
                     {c.x, c.y, radius + 3.0F, std::max(1.5F, radius * 0.25F), escaped_ring_color});
@@ -436,12 +417,9 @@ struct Renderer::Impl {
             const PointF c = panel.to_pixels({p.x + ix * box.width, p.y + iy * box.height}, box);
             instances.push_back({c.x, c.y, radius, 0.0F, color});
         };
-        if (sx != 0)
-            add(sx, 0);
-        if (sy != 0)
-            add(0, sy);
-        if (sx != 0 && sy != 0)
-            add(sx, sy);
+        if (sx != 0) add(sx, 0);
+        if (sy != 0) add(0, sy);
+        if (sx != 0 && sy != 0) add(sx, sy);
     }
 
     void add_failure_markers(const Snapshot& snapshot, const PanelLayout& panel, float wall) {
@@ -449,8 +427,7 @@ struct Renderer::Impl {
         const float ring = std::max(1.5F, wall * 1.5F);
         for (const auto& [a, b] : snapshot.overlapping_pairs) {
             for (const std::uint32_t index : {a, b}) {
-                if (index >= snapshot.discs.size())
-                    continue;  // defensive: bad marker data
+                if (index >= snapshot.discs.size()) continue;  // defensive: bad marker data
                 const DiscState& disc = snapshot.discs[index];
                 const PointF c = panel.to_pixels(disc.position, box);
                 const auto radius = static_cast<float>(disc.radius * panel.scale);
@@ -459,8 +436,7 @@ struct Renderer::Impl {
         }
         if (!snapshot.missed_collisions.empty()) {
             double mean_radius = 0.0;
-            for (const DiscState& d : snapshot.discs)
-                mean_radius += d.radius;
+            for (const DiscState& d : snapshot.discs) mean_radius += d.radius;
             mean_radius /= static_cast<double>(std::max<std::size_t>(snapshot.discs.size(), 1));
             const float flash = std::max(8.0F, static_cast<float>(3.0 * mean_radius * panel.scale));
             for (const Vec2 where : snapshot.missed_collisions) {
@@ -524,8 +500,7 @@ struct Renderer::Impl {
         font->add_text(over, info.x0, info.y0 + font->ascent(), frame.time_text, title_color);
         add_legend(info);
         std::vector<const Snapshot*> snapshots;
-        for (const PanelContent& panel : frame.panels)
-            snapshots.push_back(panel.snapshot);
+        for (const PanelContent& panel : frame.panels) snapshots.push_back(panel.snapshot);
         draw_speed_plot(over, *font, histogram, snapshots, config.speed_min, config.speed_max);
         draw_drift_plot(over, *font, drift, frame.energy_drift);
         const float notes_baseline = strip.y1 - m * 0.5F - line + font->ascent();
@@ -593,8 +568,7 @@ struct Renderer::Impl {
         gl.ActiveTexture(GL_TEXTURE0);
         gl.BindTexture(GL_TEXTURE_2D, glyph_texture.get());
         const auto under_count = static_cast<GLsizei>(under.vertices().size());
-        if (under_count > 0)
-            gl.DrawArrays(GL_TRIANGLES, 0, under_count);
+        if (under_count > 0) gl.DrawArrays(GL_TRIANGLES, 0, under_count);
 
         submit_discs(frame_w, frame_h);
 
@@ -626,8 +600,7 @@ struct Renderer::Impl {
         gl.ClearColor(background_color.r / 255.0F, background_color.g / 255.0F,
                       background_color.b / 255.0F, 1.0F);
         gl.Clear(GL_COLOR_BUFFER_BIT);
-        if (fill_clears.empty())
-            return;
+        if (fill_clears.empty()) return;
         gl.ClearColor(box_fill_color.r / 255.0F, box_fill_color.g / 255.0F,
                       box_fill_color.b / 255.0F, 1.0F);
         gl.Enable(GL_SCISSOR_TEST);
@@ -678,8 +651,7 @@ struct Renderer::Impl {
 
     // Per panel, scissored: one draw of point sprites, one of quads (each skipped when empty).
     void submit_discs(float frame_w, float frame_h) {
-        if (instances.empty())
-            return;
+        if (instances.empty()) return;
         build_disc_vertices();
         gl.UseProgram(disc_program.get());
         gl.Uniform2f(disc_frame_size, frame_w, frame_h);
@@ -784,8 +756,7 @@ void Renderer::read_pixels(Image& out) {
 }
 
 void Renderer::reset_trails() {
-    for (TrailHistory& trail : impl_->trails)
-        trail.reset();
+    for (TrailHistory& trail : impl_->trails) trail.reset();
 }
 
 Backend Renderer::backend() const noexcept {

@@ -8,8 +8,7 @@
 namespace collide::render {
 
 bool wraps_between(const Box& box, Vec2 a, Vec2 b) noexcept {
-    if (box.boundary != Boundary::periodic)
-        return false;
+    if (box.boundary != Boundary::periodic) return false;
     return std::abs(b.x - a.x) > 0.5 * box.width || std::abs(b.y - a.y) > 0.5 * box.height;
 }
 
@@ -20,16 +19,14 @@ std::optional<std::pair<Vec2, Vec2>> clip_to_box(const Box& box, Vec2 a, Vec2 b)
     const Vec2 d = b - a;
     const auto slab = [&](double delta, double low_gap, double high_gap) {
         // low_gap = a - low edge, high_gap = high edge - a (both >= 0 when a is inside)
-        if (delta == 0.0)
-            return low_gap >= 0.0 && high_gap >= 0.0;
+        if (delta == 0.0) return low_gap >= 0.0 && high_gap >= 0.0;
         const double t_low = -low_gap / delta;
         const double t_high = high_gap / delta;
         t0 = std::max(t0, std::min(t_low, t_high));
         t1 = std::min(t1, std::max(t_low, t_high));
         return t0 <= t1;
     };
-    if (!slab(d.x, a.x, box.width - a.x) || !slab(d.y, a.y, box.height - a.y))
-        return std::nullopt;
+    if (!slab(d.x, a.x, box.width - a.x) || !slab(d.y, a.y, box.height - a.y)) return std::nullopt;
     return std::pair{a + t0 * d, a + t1 * d};
 }
 
@@ -41,13 +38,11 @@ void TrailHistory::reset() noexcept {
 }
 
 void TrailHistory::update(const Snapshot& snapshot) {
-    if (started_ && (snapshot.discs.size() != disc_count_ || snapshot.time < last_time_))
-        reset();
+    if (started_ && (snapshot.discs.size() != disc_count_ || snapshot.time < last_time_)) reset();
     if (!started_) {
         disc_count_ = snapshot.discs.size();
         for (std::uint32_t i = 0; i < snapshot.discs.size(); ++i) {
-            if (snapshot.discs[i].tagged)
-                tagged_.push_back(i);
+            if (snapshot.discs[i].tagged) tagged_.push_back(i);
         }
         paths_.assign(tagged_.size(), {});
         started_ = true;
@@ -55,8 +50,7 @@ void TrailHistory::update(const Snapshot& snapshot) {
     last_time_ = snapshot.time;
     for (std::size_t k = 0; k < tagged_.size(); ++k) {
         paths_[k].push_back(snapshot.discs[tagged_[k]].position);
-        if (paths_[k].size() > length_)
-            paths_[k].pop_front();
+        if (paths_[k].size() > length_) paths_[k].pop_front();
     }
 }
 
@@ -93,8 +87,7 @@ void TrailHistory::draw(OverlayBatch& batch, const Box& box,
 
 std::vector<Vec2> TrailHistory::points(std::uint32_t index) const {
     for (std::size_t k = 0; k < tagged_.size(); ++k) {
-        if (tagged_[k] == index)
-            return {paths_[k].begin(), paths_[k].end()};
+        if (tagged_[k] == index) return {paths_[k].begin(), paths_[k].end()};
     }
     return {};
 }

@@ -35,8 +35,7 @@ std::vector<std::string> scene_names_in(const std::filesystem::path& assets_dir)
     std::vector<std::string> names;
     std::error_code ec;
     for (const auto& entry : std::filesystem::directory_iterator(scenes_dir(assets_dir), ec)) {
-        if (entry.path().extension() == ".toml")
-            names.push_back(entry.path().stem().string());
+        if (entry.path().extension() == ".toml") names.push_back(entry.path().stem().string());
     }
     std::sort(names.begin(), names.end());
     return names;
@@ -62,8 +61,7 @@ Scene load_builtin(const std::string& name, const std::filesystem::path& assets_
 
 std::filesystem::path scene_assets_dir() {
     const char* env = std::getenv("COLLIDE_ASSETS_DIR");
-    if (env != nullptr && *env != '\0')
-        return env;
+    if (env != nullptr && *env != '\0') return env;
     return COLLIDE_SOURCE_ASSETS_DIR;
 }
 
@@ -82,12 +80,9 @@ Scene load_scene(const std::string& path_or_name, const std::filesystem::path& a
         return load_builtin(path_or_name, assets_dir, options);
     if (exists && std::filesystem::is_directory(path, ec))
         throw_input_error(path_or_name, 0, "", "is a directory, not a scene file");
-    if (has_extension(path, ".txt"))
-        return read_algs4_file(path).scene;
-    if (has_extension(path, ".toml"))
-        return load_toml_scene(path, options);
-    if (!exists)
-        throw_input_error(path_or_name, 0, "", "no such file");
+    if (has_extension(path, ".txt")) return read_algs4_file(path).scene;
+    if (has_extension(path, ".toml")) return load_toml_scene(path, options);
+    if (!exists) throw_input_error(path_or_name, 0, "", "no such file");
     throw_input_error(path_or_name, 0, "",
                       "unknown scene format '" + path.extension().string() +
                           "' (expected an algs4 .txt file or a .toml scene)");
@@ -101,8 +96,7 @@ std::vector<BuiltinScene> builtin_scenes(const std::filesystem::path& assets_dir
     std::vector<BuiltinScene> scenes;
     std::error_code ec;
     for (const auto& entry : std::filesystem::directory_iterator(scenes_dir(assets_dir), ec)) {
-        if (entry.path().extension() != ".toml")
-            continue;
+        if (entry.path().extension() != ".toml") continue;
         BuiltinScene s;
         s.name = entry.path().stem().string();
         try {

@@ -51,21 +51,14 @@ std::string hex_color(Rgb8 c) {
 }
 
 void write_render(std::ostream& out, const RenderHints& r) {
-    if (!r.color_mode && !r.trails && !r.overlays && !r.duration && !r.speed && !r.dt)
-        return;
+    if (!r.color_mode && !r.trails && !r.overlays && !r.duration && !r.speed && !r.dt) return;
     out << "\n[render]\n";
-    if (r.color_mode)
-        out << "color_mode = " << quoted(*r.color_mode) << "\n";
-    if (r.trails)
-        out << "trails = " << (*r.trails ? "true" : "false") << "\n";
-    if (r.overlays)
-        out << "overlays = " << (*r.overlays ? "true" : "false") << "\n";
-    if (r.duration)
-        out << "duration = " << exact(*r.duration) << "\n";
-    if (r.speed)
-        out << "speed = " << exact(*r.speed) << "\n";
-    if (r.dt)
-        out << "dt = " << exact(*r.dt) << "\n";
+    if (r.color_mode) out << "color_mode = " << quoted(*r.color_mode) << "\n";
+    if (r.trails) out << "trails = " << (*r.trails ? "true" : "false") << "\n";
+    if (r.overlays) out << "overlays = " << (*r.overlays ? "true" : "false") << "\n";
+    if (r.duration) out << "duration = " << exact(*r.duration) << "\n";
+    if (r.speed) out << "speed = " << exact(*r.speed) << "\n";
+    if (r.dt) out << "dt = " << exact(*r.dt) << "\n";
 }
 
 void write_disc(std::ostream& out, const Disc& d) {
@@ -73,21 +66,18 @@ void write_disc(std::ostream& out, const Disc& d) {
         << "]\nvelocity = [" << exact(d.velocity.x) << ", " << exact(d.velocity.y)
         << "]\nradius = " << exact(d.radius) << "\nmass = " << exact(d.mass)
         << "\ncolor = " << quoted(hex_color(d.color)) << "\n";
-    if (!d.tag.empty())
-        out << "tag = " << quoted(d.tag) << "\n";
+    if (!d.tag.empty()) out << "tag = " << quoted(d.tag) << "\n";
 }
 
 }  // namespace
 
 void write_toml_scene(std::ostream& out, const Scene& scene) {
-    if (!scene.title.empty())
-        out << "title = " << quoted(scene.title) << "\n";
+    if (!scene.title.empty()) out << "title = " << quoted(scene.title) << "\n";
     out << "\n[box]\nwidth = " << exact(scene.box.width) << "\nheight = " << exact(scene.box.height)
         << "\nboundary = "
         << (scene.box.boundary == Boundary::periodic ? "\"periodic\"" : "\"walls\"") << "\n";
     write_render(out, scene.render);
-    for (const Disc& d : scene.discs)
-        write_disc(out, d);
+    for (const Disc& d : scene.discs) write_disc(out, d);
 }
 
 void save_scene(const Scene& scene, const std::filesystem::path& path) {
@@ -105,8 +95,7 @@ void save_scene(const Scene& scene, const std::filesystem::path& path) {
     temp += ".partial";
     {
         std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        if (!out)
-            throw_input_error(path.string(), 0, "", "cannot write here");
+        if (!out) throw_input_error(path.string(), 0, "", "cannot write here");
         if (ext == ".toml") {
             write_toml_scene(out, scene);
         } else {

@@ -37,8 +37,7 @@ std::string num(double v) {
 
 std::string joined(const Keys& keys) {
     std::string s;
-    for (const std::string& k : keys)
-        s += (s.empty() ? "" : ", ") + k;
+    for (const std::string& k : keys) s += (s.empty() ? "" : ", ") + k;
     return s;
 }
 
@@ -51,28 +50,20 @@ class TomlReader {
     Scene read(std::string_view text) {
         toml::table doc = parse(text);
         check_keys(doc, "", top_keys);
-        if (const toml::node* n = doc.get("title"))
-            scene_.title = text_value(*n, "title");
-        if (const toml::node* n = doc.get("description"))
-            (void)text_value(*n, "description");
-        if (const toml::node* n = doc.get("box"))
-            read_box(*n);
-        if (const toml::node* n = doc.get("render"))
-            read_render(*n);
-        if (const toml::node* n = doc.get("include"))
-            read_includes(*n);
-        if (const toml::node* n = doc.get("disc"))
-            read_discs(*n);
+        if (const toml::node* n = doc.get("title")) scene_.title = text_value(*n, "title");
+        if (const toml::node* n = doc.get("description")) (void)text_value(*n, "description");
+        if (const toml::node* n = doc.get("box")) read_box(*n);
+        if (const toml::node* n = doc.get("render")) read_render(*n);
+        if (const toml::node* n = doc.get("include")) read_includes(*n);
+        if (const toml::node* n = doc.get("disc")) read_discs(*n);
         // Periodic boxes accept any position: keep them in the box, as the engines expect.
-        for (Disc& d : scene_.discs)
-            d.position = scene_.box.wrap(d.position);
+        for (Disc& d : scene_.discs) d.position = scene_.box.wrap(d.position);
         if (const toml::node* n = doc.get("generate")) {
             // The generators build grids from the discs already there: those must be sane.
             validate_scene(scene_, origin_);
             read_generators(*n);
         }
-        if (speed_colored_ && !scene_.render.color_mode)
-            scene_.render.color_mode = "speed";
+        if (speed_colored_ && !scene_.render.color_mode) scene_.render.color_mode = "speed";
         validate_scene(scene_, origin_);
         return std::move(scene_);
     }
@@ -96,8 +87,7 @@ class TomlReader {
                     const Keys& allowed) const {
         for (auto&& [key, value] : table) {
             const std::string name(key.str());
-            if (std::find(allowed.begin(), allowed.end(), name) != allowed.end())
-                continue;
+            if (std::find(allowed.begin(), allowed.end(), name) != allowed.end()) continue;
             std::string reason = "unknown key '" + name + "'";
             const std::string guess = nearest_name(name, allowed);
             reason += guess.empty() ? " (valid keys: " + joined(allowed) + ")"
@@ -108,8 +98,7 @@ class TomlReader {
 
     const toml::table& table_at(const toml::node& n, const std::string& field) const {
         const toml::table* t = n.as_table();
-        if (t == nullptr)
-            fail(n, field, "expected a table");
+        if (t == nullptr) fail(n, field, "expected a table");
         return *t;
     }
 
@@ -122,22 +111,19 @@ class TomlReader {
         } else {
             fail(n, field, "expected a number");
         }
-        if (!std::isfinite(v))
-            fail(n, field, "not a finite number (" + num(v) + ")");
+        if (!std::isfinite(v)) fail(n, field, "not a finite number (" + num(v) + ")");
         return v;
     }
 
     double positive(const toml::node& n, const std::string& field) const {
         const double v = number(n, field);
-        if (!(v > 0.0))
-            fail(n, field, "must be > 0 (got " + num(v) + ")");
+        if (!(v > 0.0)) fail(n, field, "must be > 0 (got " + num(v) + ")");
         return v;
     }
 
     std::int64_t integer(const toml::node& n, const std::string& field, std::int64_t min) const {
         const auto* i = n.as_integer();
-        if (i == nullptr)
-            fail(n, field, "expected an integer");
+        if (i == nullptr) fail(n, field, "expected an integer");
         if (i->get() < min)
             fail(n, field,
                  "must be >= " + std::to_string(min) + " (got " + std::to_string(i->get()) + ")");
@@ -146,22 +132,19 @@ class TomlReader {
 
     std::string text_value(const toml::node& n, const std::string& field) const {
         const auto* s = n.as_string();
-        if (s == nullptr)
-            fail(n, field, "expected a string");
+        if (s == nullptr) fail(n, field, "expected a string");
         return s->get();
     }
 
     bool boolean(const toml::node& n, const std::string& field) const {
         const auto* b = n.as_boolean();
-        if (b == nullptr)
-            fail(n, field, "expected true or false");
+        if (b == nullptr) fail(n, field, "expected true or false");
         return b->get();
     }
 
     Vec2 pair(const toml::node& n, const std::string& field) const {
         const toml::array* a = n.as_array();
-        if (a == nullptr || a->size() != 2)
-            fail(n, field, "expected [x, y]");
+        if (a == nullptr || a->size() != 2) fail(n, field, "expected [x, y]");
         return {number(*a->get(0), field + "[0]"), number(*a->get(1), field + "[1]")};
     }
 
@@ -185,8 +168,7 @@ class TomlReader {
             hex.size() == 7 && hex[0] == '#' && std::all_of(hex.begin() + 1, hex.end(), [](char c) {
                 return std::isxdigit(static_cast<unsigned char>(c)) != 0;
             });
-        if (!ok)
-            fail(n, field, "expected \"#rrggbb\" or [r, g, b] with integers 0..255");
+        if (!ok) fail(n, field, "expected \"#rrggbb\" or [r, g, b] with integers 0..255");
         const auto byte = [&](std::size_t at) {
             return static_cast<std::uint8_t>(std::stoi(hex.substr(at, 2), nullptr, 16));
         };
@@ -196,10 +178,8 @@ class TomlReader {
     void read_box(const toml::node& n) {
         const toml::table& t = table_at(n, "box");
         check_keys(t, "box", box_keys);
-        if (const toml::node* v = t.get("width"))
-            scene_.box.width = positive(*v, "box.width");
-        if (const toml::node* v = t.get("height"))
-            scene_.box.height = positive(*v, "box.height");
+        if (const toml::node* v = t.get("width")) scene_.box.width = positive(*v, "box.width");
+        if (const toml::node* v = t.get("height")) scene_.box.height = positive(*v, "box.height");
         if (const toml::node* v = t.get("boundary")) {
             const std::string b = text_value(*v, "box.boundary");
             if (b == "walls") {
@@ -224,16 +204,11 @@ class TomlReader {
             }
             r.color_mode = mode;
         }
-        if (const toml::node* v = t.get("trails"))
-            r.trails = boolean(*v, "render.trails");
-        if (const toml::node* v = t.get("overlays"))
-            r.overlays = boolean(*v, "render.overlays");
-        if (const toml::node* v = t.get("duration"))
-            r.duration = positive(*v, "render.duration");
-        if (const toml::node* v = t.get("speed"))
-            r.speed = positive(*v, "render.speed");
-        if (const toml::node* v = t.get("dt"))
-            r.dt = positive(*v, "render.dt");
+        if (const toml::node* v = t.get("trails")) r.trails = boolean(*v, "render.trails");
+        if (const toml::node* v = t.get("overlays")) r.overlays = boolean(*v, "render.overlays");
+        if (const toml::node* v = t.get("duration")) r.duration = positive(*v, "render.duration");
+        if (const toml::node* v = t.get("speed")) r.speed = positive(*v, "render.speed");
+        if (const toml::node* v = t.get("dt")) r.dt = positive(*v, "render.dt");
     }
 
     void read_includes(const toml::node& n) {
@@ -242,8 +217,7 @@ class TomlReader {
             return;
         }
         const toml::array* a = n.as_array();
-        if (a == nullptr)
-            fail(n, "include", "expected a file name or a list of file names");
+        if (a == nullptr) fail(n, "include", "expected a file name or a list of file names");
         for (std::size_t i = 0; i < a->size(); ++i)
             read_include(*a->get(i), "include[" + std::to_string(i) + "]");
     }
@@ -254,12 +228,10 @@ class TomlReader {
             fail(n, field,
                  "only algs4 .txt files can be included (got '" + path.filename().string() + "')");
         std::ifstream in(path, std::ios::binary);
-        if (!in)
-            fail(n, field, "cannot open '" + path.string() + "'");
+        if (!in) fail(n, field, "cannot open '" + path.string() + "'");
         ParsedScene part = parse_algs4(in, path.string());
         const std::size_t first = scene_.discs.size();
-        for (Disc& d : part.scene.discs)
-            scene_.discs.push_back(std::move(d));
+        for (Disc& d : part.scene.discs) scene_.discs.push_back(std::move(d));
         for (DiscSource run : part.origin.runs()) {
             run.first += first;
             origin_.add(std::move(run));
@@ -268,8 +240,7 @@ class TomlReader {
 
     void read_discs(const toml::node& n) {
         const toml::array* a = n.as_array();
-        if (a == nullptr)
-            fail(n, "disc", "expected [[disc]] tables");
+        if (a == nullptr) fail(n, "disc", "expected [[disc]] tables");
         for (std::size_t i = 0; i < a->size(); ++i) {
             const std::string field = "disc[" + std::to_string(i) + "]";
             const toml::table& t = table_at(*a->get(i), field);
@@ -296,22 +267,17 @@ class TomlReader {
     Disc read_disc(const toml::table& t, const std::string& prefix) const {
         Disc d;
         d.position = pair(required(t, "position", prefix), prefix + ".position");
-        if (const toml::node* v = t.get("velocity"))
-            d.velocity = pair(*v, prefix + ".velocity");
+        if (const toml::node* v = t.get("velocity")) d.velocity = pair(*v, prefix + ".velocity");
         d.radius = positive(required(t, "radius", prefix), prefix + ".radius");
-        if (const toml::node* v = t.get("mass"))
-            d.mass = positive(*v, prefix + ".mass");
-        if (const toml::node* v = t.get("color"))
-            d.color = rgb(*v, prefix + ".color");
-        if (const toml::node* v = t.get("tag"))
-            d.tag = text_value(*v, prefix + ".tag");
+        if (const toml::node* v = t.get("mass")) d.mass = positive(*v, prefix + ".mass");
+        if (const toml::node* v = t.get("color")) d.color = rgb(*v, prefix + ".color");
+        if (const toml::node* v = t.get("tag")) d.tag = text_value(*v, prefix + ".tag");
         return d;
     }
 
     void read_generators(const toml::node& n) {
         const toml::array* a = n.as_array();
-        if (a == nullptr)
-            fail(n, "generate", "expected [[generate]] tables");
+        if (a == nullptr) fail(n, "generate", "expected [[generate]] tables");
         for (std::size_t i = 0; i < a->size(); ++i) {
             const std::string field = "generate[" + std::to_string(i) + "]";
             const toml::table& t = table_at(*a->get(i), field);
@@ -343,16 +309,13 @@ class TomlReader {
                               "give count or packing_fraction");
         }
         g.radius = positive(required(t, "radius", prefix), key("radius"));
-        if (const toml::node* v = t.get("mass"))
-            g.mass = positive(*v, key("mass"));
+        if (const toml::node* v = t.get("mass")) g.mass = positive(*v, key("mass"));
         if (const toml::node* v = t.get("temperature"))
             g.temperature = number(*v, key("temperature"));
-        if (const toml::node* v = t.get("speed"))
-            g.speed = number(*v, key("speed"));
+        if (const toml::node* v = t.get("speed")) g.speed = number(*v, key("speed"));
         if (t.get("temperature") != nullptr && g.speed)
             fail(*t.get("speed"), key("speed"), "give temperature or speed, not both");
-        if (const toml::node* v = t.get("region"))
-            read_region(*v, key("region"), g);
+        if (const toml::node* v = t.get("region")) read_region(*v, key("region"), g);
         if (const toml::node* v = t.get("color")) {
             if (v->is_string() && v->as_string()->get() == "speed") {
                 g.color_by_speed = true;
@@ -365,8 +328,7 @@ class TomlReader {
             g.seed = static_cast<std::uint64_t>(integer(*v, key("seed"), 0));
         if (seed_override_)
             g.seed = *seed_override_ + index;  // --seed: blocks still get different streams
-        if (const toml::node* v = t.get("tag"))
-            g.tag = text_value(*v, key("tag"));
+        if (const toml::node* v = t.get("tag")) g.tag = text_value(*v, key("tag"));
         try {
             g.validate(prefix);
         } catch (const Error& e) {
@@ -377,8 +339,7 @@ class TomlReader {
 
     void read_region(const toml::node& n, const std::string& field, GenerateSpec& g) const {
         const toml::array* a = n.as_array();
-        if (a == nullptr || a->size() != 2)
-            fail(n, field, "expected [[x0, y0], [x1, y1]]");
+        if (a == nullptr || a->size() != 2) fail(n, field, "expected [[x0, y0], [x1, y1]]");
         g.region_min = pair(*a->get(0), field + "[0]");
         g.region_max = pair(*a->get(1), field + "[1]");
     }
@@ -396,10 +357,8 @@ class TomlReader {
 std::size_t edit_distance(std::string_view a, std::string_view b) {
     const std::size_t w = b.size() + 1;
     std::vector<std::size_t> d((a.size() + 1) * w);
-    for (std::size_t i = 0; i <= a.size(); ++i)
-        d[i * w] = i;
-    for (std::size_t j = 0; j <= b.size(); ++j)
-        d[j] = j;
+    for (std::size_t i = 0; i <= a.size(); ++i) d[i * w] = i;
+    for (std::size_t j = 0; j <= b.size(); ++j) d[j] = j;
     for (std::size_t i = 1; i <= a.size(); ++i) {
         for (std::size_t j = 1; j <= b.size(); ++j) {
             const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
@@ -438,14 +397,12 @@ Scene parse_toml_scene(std::string_view text, const std::string& file_label,
 
 Scene load_toml_scene(const std::filesystem::path& path, const SceneOptions& options) {
     std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw_input_error(path.string(), 0, "", "cannot open the scene file");
+    if (!in) throw_input_error(path.string(), 0, "", "cannot open the scene file");
     std::ostringstream text;
     text << in.rdbuf();
     Scene scene = parse_toml_scene(text.str(), path.string(), path.parent_path(), options);
     scene.name = path.stem().string();
-    if (scene.title.empty())
-        scene.title = scene.name;
+    if (scene.title.empty()) scene.title = scene.name;
     return scene;
 }
 

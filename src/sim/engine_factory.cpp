@@ -26,7 +26,8 @@ std::unique_ptr<Engine> make_classic_engine(const Scene& scene, const EngineOpti
 
 void EngineOptions::validate() const {
     if (engine != "fast" && engine != "classic" && engine != "time") {
-        throw_input_error("--engine", 0, "", "unknown engine '" + engine + "' (expected fast|classic|time)");
+        throw_input_error("--engine", 0, "",
+                          "unknown engine '" + engine + "' (expected fast|classic|time)");
     }
     (void)pq::parse_queue_kind(pq, "--pq");
     validate_time_driven_options(*this);  // --dt, --td-detect: one rule, shared with the engine
@@ -34,8 +35,10 @@ void EngineOptions::validate() const {
 
 std::unique_ptr<Engine> make_engine(const Scene& scene, const EngineOptions& options) {
     if (options.engine == "fast") {
-        // Tiny periodic boxes (under three diameters) have no 3 x 3 grid: the O(N) loop is exact there.
-        if (!sim::FastEngine::can_simulate(scene)) return make_classic_engine(scene, EngineOptions{});
+        // Tiny periodic boxes (under three diameters) have no 3 x 3 grid: the O(N) loop is exact
+        // there.
+        if (!sim::FastEngine::can_simulate(scene))
+            return make_classic_engine(scene, EngineOptions{});
         return std::make_unique<sim::FastEngine>(scene);
     }
     if (options.engine == "classic") return make_classic_engine(scene, options);

@@ -146,7 +146,8 @@ std::vector<std::uint32_t> FastEngine::locality_order(const Scene& scene) const 
 
 void FastEngine::place_discs(const Scene& scene) {
     const std::size_t n = scene.discs.size();
-    if (n >= Key::index_mask) throw_input_error("", 0, "discs", "too many discs for the fast engine (at most 2^30 - 2)");
+    if (n >= Key::index_mask)
+        throw_input_error("", 0, "discs", "too many discs for the fast engine (at most 2^30 - 2)");
     scene_index_ = locality_order(scene);
     p_.reserve(n);
     cold_.reserve(n);
@@ -159,7 +160,8 @@ void FastEngine::place_discs(const Scene& scene) {
     for (std::uint32_t i = 0; i < n; ++i) {
         const Disc& d = scene.discs[scene_index_[i]];
         const Vec2 pos = box_.wrap(d.position);
-        p_[i] = Particle{pos.x, pos.y, d.velocity.x, d.velocity.y, 0.0, d.radius, no_disc, 0, 0, no_disc};
+        p_[i] = Particle{pos.x, pos.y, d.velocity.x, d.velocity.y, 0.0, d.radius, no_disc,
+                         0,     0,     no_disc};
         cold_[i].m = d.mass;
         start_[i] = d.position;
         if (periodic_) {
@@ -344,7 +346,8 @@ void FastEngine::predict_after_crossing(std::uint32_t i, std::uint32_t axis) {
     schedule(i, pi, pi.x, pi.y, pair);
 }
 
-void FastEngine::schedule(std::uint32_t i, const Particle& pi, double xi, double yi, const Key& pair) {
+void FastEngine::schedule(std::uint32_t i, const Particle& pi, double xi, double yi,
+                          const Key& pair) {
     Cold& ci = cold_[i];
     ci.pair_t = pair.t;
     ci.pair_partner = pair.t == never ? no_disc : pair.b();
@@ -443,12 +446,14 @@ void FastEngine::consider_pair_images(std::uint32_t i, const Particle& pi, doubl
     }
 }
 
-void FastEngine::scan_small_neighbours(std::uint32_t i, const Particle& pi, double xi, double yi, Key& best) {
+void FastEngine::scan_small_neighbours(std::uint32_t i, const Particle& pi, double xi, double yi,
+                                       Key& best) {
     scan_cells(i, pi, xi, yi, -1, 1, -1, 1, best);
 }
 
-inline void FastEngine::scan_cells(std::uint32_t i, const Particle& pi, double xi, double yi, std::int64_t x0,
-                                   std::int64_t x1, std::int64_t y0, std::int64_t y1, Key& best) {
+inline void FastEngine::scan_cells(std::uint32_t i, const Particle& pi, double xi, double yi,
+                                   std::int64_t x0, std::int64_t x1, std::int64_t y0,
+                                   std::int64_t y1, Key& best) {
     const auto cx = static_cast<std::int64_t>(pi.cell % nx_);
     const auto cy = static_cast<std::int64_t>(pi.cell / nx_);
     for (std::int64_t oy = y0; oy <= y1; ++oy) {
@@ -467,7 +472,8 @@ inline void FastEngine::scan_cells(std::uint32_t i, const Particle& pi, double x
                 shift_x = x < 0 ? -box_.width : box_.width;
                 x = x < 0 ? x + nx_ : x - nx_;
             }
-            for (std::uint32_t j = head_[static_cast<std::size_t>(y * nx_ + x)]; j != no_disc; j = p_[j].next) {
+            for (std::uint32_t j = head_[static_cast<std::size_t>(y * nx_ + x)]; j != no_disc;
+                 j = p_[j].next) {
                 if (j != i) consider_pair(i, pi, xi, yi, j, shift_x, shift_y, best);
             }
         }
@@ -505,7 +511,8 @@ void FastEngine::scan_ring(std::uint32_t i, const Particle& pi, double xi, doubl
                 shift_x = x < 0 ? -box_.width : box_.width;
                 x = x < 0 ? x + nx_ : x - nx_;
             }
-            for (std::uint32_t j = head_[static_cast<std::size_t>(y * nx_ + x)]; j != no_disc; j = p_[j].next) {
+            for (std::uint32_t j = head_[static_cast<std::size_t>(y * nx_ + x)]; j != no_disc;
+                 j = p_[j].next) {
                 consider_pair(i, pi, xi, yi, j, shift_x, shift_y, best);
             }
         }
@@ -608,7 +615,8 @@ Measurements FastEngine::measurements() const {
     m.msd = msd_count > 0 ? msd_sum / static_cast<double>(msd_count) : 0.0;
     m.wall_seconds = wall_seconds_;
     if (wall_seconds_ > 0.0) {
-        m.collisions_per_second = static_cast<double>(m.collisions_pair + m.collisions_wall) / wall_seconds_;
+        m.collisions_per_second =
+            static_cast<double>(m.collisions_pair + m.collisions_wall) / wall_seconds_;
     }
     m.engine_bytes = bytes();
     return m;
@@ -631,7 +639,9 @@ bool FastEngine::check_invariants() const {
     for (std::size_t c = 0; c < head_.size(); ++c) {
         std::uint32_t before = no_disc;
         for (std::uint32_t j = head_[c]; j != no_disc; j = p_[j].next) {
-            if (j >= p_.size() || seen[j] || p_[j].cell != c || cold_[j].prev != before || is_big(j)) return false;
+            if (j >= p_.size() || seen[j] || p_[j].cell != c || cold_[j].prev != before ||
+                is_big(j))
+                return false;
             seen[j] = 1;
             before = j;
         }

@@ -40,7 +40,8 @@ double overlap_of(const Box& box, Vec2 a, Vec2 b, double sigma) {
 
 }  // namespace
 
-double max_overlap(const std::vector<Vec2>& positions, const std::vector<double>& radii, const Box& box) {
+double max_overlap(const std::vector<Vec2>& positions, const std::vector<double>& radii,
+                   const Box& box) {
     const std::size_t n = positions.size();
     if (n < 2) return 0.0;
     const double big = big_radius_threshold(radii);
@@ -59,8 +60,10 @@ double max_overlap(const std::vector<Vec2>& positions, const std::vector<double>
     std::vector<std::uint32_t> bigs;
     for (std::size_t i = 0; i < n; ++i) {
         wrapped[i] = box.wrap(positions[i]);
-        const auto cx = std::min(nx - 1, static_cast<std::size_t>(std::max(0.0, wrapped[i].x / cw)));
-        const auto cy = std::min(ny - 1, static_cast<std::size_t>(std::max(0.0, wrapped[i].y / ch)));
+        const auto cx =
+            std::min(nx - 1, static_cast<std::size_t>(std::max(0.0, wrapped[i].x / cw)));
+        const auto cy =
+            std::min(ny - 1, static_cast<std::size_t>(std::max(0.0, wrapped[i].y / ch)));
         cell_of[i] = static_cast<std::uint32_t>(cy * nx + cx);
         if (radii[i] > big) bigs.push_back(static_cast<std::uint32_t>(i));
     }
@@ -106,11 +109,13 @@ double max_overlap(const std::vector<Vec2>& positions, const std::vector<double>
                     if (!periodic) continue;
                     x = (x + static_cast<long>(nx)) % static_cast<long>(nx);
                 }
-                const std::size_t c = static_cast<std::size_t>(y) * nx + static_cast<std::size_t>(x);
+                const std::size_t c =
+                    static_cast<std::size_t>(y) * nx + static_cast<std::size_t>(x);
                 for (std::uint32_t k = start[c]; k < start[c + 1]; ++k) {
                     const std::uint32_t j = members[k];
                     if (j <= i) continue;
-                    deepest = std::max(deepest, overlap_of(box, wrapped[i], wrapped[j], radii[i] + radii[j]));
+                    deepest = std::max(
+                        deepest, overlap_of(box, wrapped[i], wrapped[j], radii[i] + radii[j]));
                 }
             }
         }
@@ -118,7 +123,8 @@ double max_overlap(const std::vector<Vec2>& positions, const std::vector<double>
     for (std::uint32_t b : bigs) {
         for (std::size_t j = 0; j < n; ++j) {
             if (j == b) continue;
-            deepest = std::max(deepest, overlap_of(box, wrapped[b], wrapped[j], radii[b] + radii[j]));
+            deepest =
+                std::max(deepest, overlap_of(box, wrapped[b], wrapped[j], radii[b] + radii[j]));
         }
     }
     return deepest;
@@ -130,7 +136,8 @@ double packing_fraction(const std::vector<double>& radii, const Box& box) {
     return covered / box.area();
 }
 
-std::vector<std::uint64_t> speed_histogram(const Snapshot& snapshot, std::size_t bins, double v_max) {
+std::vector<std::uint64_t> speed_histogram(const Snapshot& snapshot, std::size_t bins,
+                                           double v_max) {
     if (bins == 0) throw_input_error("", 0, "bins", "a speed histogram needs at least one bin");
     if (v_max <= 0.0) {
         for (const DiscState& d : snapshot.discs) v_max = std::max(v_max, norm(d.velocity));

@@ -61,16 +61,14 @@ inline std::string av_error_text(int code) {
 
 /// Throws Error(runtime, "<what>: <libav message>") when `code` is negative; returns it otherwise.
 inline int check_av(int code, std::string_view what) {
-    if (code < 0)
-        throw_runtime_error(std::string(what) + ": " + av_error_text(code));
+    if (code < 0) throw_runtime_error(std::string(what) + ": " + av_error_text(code));
     return code;
 }
 
 /// Throws Error(runtime, "out of memory: <what>") when an allocation returned null.
 template <typename T>
 T* check_alloc(T* pointer, std::string_view what) {
-    if (pointer == nullptr)
-        throw_runtime_error("out of memory: " + std::string(what));
+    if (pointer == nullptr) throw_runtime_error("out of memory: " + std::string(what));
     return pointer;
 }
 

@@ -34,13 +34,11 @@ class SpillFile {
         : frame_bytes_(frame_bytes) {
         std::string name = beside.string() + ".frames.XXXXXX";
         fd_ = ::mkstemp(name.data());
-        if (fd_ < 0)
-            throw_runtime_error("cannot create the GIF frame store: " + errno_text());
+        if (fd_ < 0) throw_runtime_error("cannot create the GIF frame store: " + errno_text());
         ::unlink(name.c_str());  // unnamed from now on: the kernel frees it when fd_ closes
     }
     ~SpillFile() {
-        if (fd_ >= 0)
-            ::close(fd_);
+        if (fd_ >= 0) ::close(fd_);
     }
     SpillFile(const SpillFile&) = delete;
     SpillFile& operator=(const SpillFile&) = delete;
@@ -65,8 +63,7 @@ class SpillFile {
         while (done < frame_bytes_) {
             const ssize_t n =
                 io(fd_, data + done, frame_bytes_ - done, offset + static_cast<off_t>(done));
-            if (n < 0 && errno == EINTR)
-                continue;
+            if (n < 0 && errno == EINTR) continue;
             if (n <= 0) {
                 throw_runtime_error(std::string("GIF frame store: cannot ") + what + ": " +
                                     (n < 0 ? errno_text() : std::string("unexpected end")));
@@ -134,16 +131,14 @@ class GifSink final : public FrameSink {
 
     void consume(const Image& frame) override {
         const std::int64_t index = input_index_++;
-        if (index % geometry_.frame_step != 0)
-            return;  // even frame dropping for the rate cap
+        if (index % geometry_.frame_step != 0) return;  // even frame dropping for the rate cap
         spill_.append(frame.rgba.data());
         add_frame(statistics_.source, frame.rgba.data(),
                   static_cast<std::int64_t>(spill_.frames() - 1));
     }
 
     void finish() override {
-        if (spill_.frames() == 0)
-            throw_runtime_error("no frames were written to the GIF");
+        if (spill_.frames() == 0) throw_runtime_error("no frames were written to the GIF");
         FramePtr palette = compute_palette();
         dither_ = build_chain(
             "buffer@in=" + input_arguments() + "[main];buffer@palette=" +
@@ -203,8 +198,7 @@ class GifSink final : public FrameSink {
 
     void open_encoder_and_muxer() {
         const AVCodec* gif = avcodec_find_encoder(AV_CODEC_ID_GIF);
-        if (gif == nullptr)
-            throw_runtime_error("the GIF encoder is not available in this FFmpeg");
+        if (gif == nullptr) throw_runtime_error("the GIF encoder is not available in this FFmpeg");
         AVFormatContext* format = nullptr;
         check_av(avformat_alloc_output_context2(&format, nullptr, "gif", temporary_.c_str()),
                  "cannot create a GIF muxer");
@@ -228,8 +222,7 @@ class GifSink final : public FrameSink {
     void encode_filtered() {
         while (true) {
             const int got = av_buffersink_get_frame(dither_.sink, filtered_.get());
-            if (got == AVERROR(EAGAIN) || got == AVERROR_EOF)
-                return;
+            if (got == AVERROR(EAGAIN) || got == AVERROR_EOF) return;
             check_av(got, "GIF dithering failed");
             filtered_->pict_type = AV_PICTURE_TYPE_NONE;
             const int sent = avcodec_send_frame(codec_.get(), filtered_.get());
@@ -247,8 +240,7 @@ class GifSink final : public FrameSink {
     void receive_packets() {
         while (true) {
             const int received = avcodec_receive_packet(codec_.get(), packet_.get());
-            if (received == AVERROR(EAGAIN) || received == AVERROR_EOF)
-                return;
+            if (received == AVERROR(EAGAIN) || received == AVERROR_EOF) return;
             check_av(received, "GIF encoding failed");
             av_packet_rescale_ts(packet_.get(), codec_->time_base, stream_->time_base);
             packet_->stream_index = stream_->index;

@@ -87,8 +87,7 @@ class Mp4Sink final : public FrameSink {
     }
 
     void consume(const Image& input) override {
-        if (!opened_)
-            open();
+        if (!opened_) open();
         const Image& frame =
             input.width == geometry_.output_width && input.height == geometry_.output_height
                 ? input
@@ -105,8 +104,7 @@ class Mp4Sink final : public FrameSink {
     }
 
     void finish() override {
-        if (!opened_)
-            throw_runtime_error("no frames were written to '" + shown() + "'");
+        if (!opened_) throw_runtime_error("no frames were written to '" + shown() + "'");
         encode(nullptr);  // flush: the encoder holds look-ahead frames
         finished_ = true;
         check_av(av_write_trailer(format_.get()), "cannot finish '" + shown() + "'");
@@ -139,19 +137,16 @@ class Mp4Sink final : public FrameSink {
         const int crf = options_.crf < 0 ? defaults.crf : options_.crf;
         // Options the chosen encoder lacks are ignored (AV_OPT_SEARCH_CHILDREN not needed:
         // priv_data holds them); av_opt_set only fails for unknown names or bad values.
-        if (!preset.empty())
-            set_private_option("preset", preset);
+        if (!preset.empty()) set_private_option("preset", preset);
         set_private_option("crf", std::to_string(crf));
         if (options_.codec == VideoCodec::hevc)
             set_private_option("x265-params", "log-level=error");
     }
 
     void set_private_option(const char* name, const std::string& value) {
-        if (codec_->priv_data == nullptr)
-            return;
+        if (codec_->priv_data == nullptr) return;
         const int result = av_opt_set(codec_->priv_data, name, value.c_str(), 0);
-        if (result == AVERROR_OPTION_NOT_FOUND)
-            return;  // e.g. a user-chosen encoder without CRF
+        if (result == AVERROR_OPTION_NOT_FOUND) return;  // e.g. a user-chosen encoder without CRF
         check_av(result, std::string("encoder option ") + name + "=" + value);
     }
 
@@ -188,8 +183,7 @@ class Mp4Sink final : public FrameSink {
         check_av(avcodec_send_frame(codec_.get(), frame), "encoding failed");
         while (true) {
             const int received = avcodec_receive_packet(codec_.get(), packet_.get());
-            if (received == AVERROR(EAGAIN) || received == AVERROR_EOF)
-                return;
+            if (received == AVERROR(EAGAIN) || received == AVERROR_EOF) return;
             check_av(received, "encoding failed");
             av_packet_rescale_ts(packet_.get(), codec_->time_base, stream_->time_base);
             packet_->stream_index = stream_->index;

@@ -32,8 +32,7 @@ void require_range(std::string_view field, int value, int low, int high) {
 }
 
 void validate_preset(const VideoOptions& options) {
-    if (options.preset.empty() || options.format != VideoFormat::mp4)
-        return;
+    if (options.preset.empty() || options.format != VideoFormat::mp4) return;
     if (options.codec == VideoCodec::av1) {
         const bool digits = std::all_of(options.preset.begin(), options.preset.end(),
                                         [](unsigned char c) { return std::isdigit(c) != 0; });
@@ -55,8 +54,7 @@ void validate_preset(const VideoOptions& options) {
 }  // namespace
 
 void VideoOptions::validate() const {
-    if (path.empty())
-        throw_input_error("", 0, "video.path", "is empty");
+    if (path.empty()) throw_input_error("", 0, "video.path", "is empty");
     require_range("video.width", width, 1, max_dimension);
     require_range("video.height", height, 1, max_dimension);
     require_range("video.fps", fps, 1, max_fps);
@@ -69,34 +67,26 @@ void VideoOptions::validate() const {
 
 VideoFormat parse_video_format(std::string_view text, std::string_view field) {
     const std::string name = lowercase(text);
-    if (name == "mp4")
-        return VideoFormat::mp4;
-    if (name == "gif")
-        return VideoFormat::gif;
-    if (name == "png" || name == "png_sequence")
-        return VideoFormat::png_sequence;
+    if (name == "mp4") return VideoFormat::mp4;
+    if (name == "gif") return VideoFormat::gif;
+    if (name == "png" || name == "png_sequence") return VideoFormat::png_sequence;
     throw_input_error("", 0, std::string(field),
                       "expected mp4, gif or png, got '" + std::string(text) + "'");
 }
 
 VideoCodec parse_video_codec(std::string_view text, std::string_view field) {
     const std::string name = lowercase(text);
-    if (name == "h264" || name == "avc" || name == "x264")
-        return VideoCodec::h264;
-    if (name == "hevc" || name == "h265" || name == "x265")
-        return VideoCodec::hevc;
-    if (name == "av1")
-        return VideoCodec::av1;
+    if (name == "h264" || name == "avc" || name == "x264") return VideoCodec::h264;
+    if (name == "hevc" || name == "h265" || name == "x265") return VideoCodec::hevc;
+    if (name == "av1") return VideoCodec::av1;
     throw_input_error("", 0, std::string(field),
                       "expected h264, hevc or av1, got '" + std::string(text) + "'");
 }
 
 VideoFormat format_from_extension(const std::filesystem::path& path) {
     const std::string extension = lowercase(path.extension().string());
-    if (extension == ".gif")
-        return VideoFormat::gif;
-    if (extension.empty() || extension == ".png")
-        return VideoFormat::png_sequence;
+    if (extension == ".gif") return VideoFormat::gif;
+    if (extension.empty() || extension == ".png") return VideoFormat::png_sequence;
     return VideoFormat::mp4;
 }
 

@@ -53,8 +53,7 @@ void write_png_file(const Image& image, const std::filesystem::path& path,
     std::vector<unsigned char> bytes;
     const int ok = stbi_write_png_to_func(append_bytes, &bytes, image.width, image.height, 4,
                                           image.rgba.data(), static_cast<int>(image.stride()));
-    if (ok == 0)
-        throw_runtime_error("cannot encode PNG '" + shown_as.string() + "'");
+    if (ok == 0) throw_runtime_error("cannot encode PNG '" + shown_as.string() + "'");
     write_all(path, bytes, shown_as);
 }
 

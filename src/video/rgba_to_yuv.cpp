@@ -200,8 +200,7 @@ namespace {
 SwsPtr make_bt709_sws(int width, int height, int flags) {
     SwsPtr context(sws_getContext(width, height, AV_PIX_FMT_RGBA, width, height, AV_PIX_FMT_YUV420P,
                                   flags, nullptr, nullptr, nullptr));
-    if (!context)
-        throw_runtime_error("libswscale: cannot create an RGBA -> yuv420p converter");
+    if (!context) throw_runtime_error("libswscale: cannot create an RGBA -> yuv420p converter");
     int* inverse_table = nullptr;
     int* table = nullptr;
     int source_range = 0;
@@ -238,8 +237,7 @@ SwsConverter::SwsConverter(int width, int height, int flags, int bands)
     : width_(width), height_(height), bands_(std::clamp(bands, 1, 2)) {
     band_rows_ = bands_ == 1 ? height : (height / 2) & ~1;
     first_ = make_bt709_sws(width, band_rows_, flags);
-    if (bands_ == 2)
-        last_ = make_bt709_sws(width, height - band_rows_, flags);
+    if (bands_ == 2) last_ = make_bt709_sws(width, height - band_rows_, flags);
 }
 
 void SwsConverter::convert(const std::uint8_t* rgba, std::ptrdiff_t rgba_stride, Yuv420View out) {

@@ -23,8 +23,7 @@ Image pad_by_edge_replication(const Image& image, int width, int height) {
         std::uint8_t* out = padded.pixel(0, row);
         std::memcpy(out, image.pixel(0, source_row), image.stride());
         const std::uint8_t* last = image.pixel(image.width - 1, source_row);
-        for (int x = image.width; x < width; ++x)
-            std::memcpy(padded.pixel(x, row), last, 4);
+        for (int x = image.width; x < width; ++x) std::memcpy(padded.pixel(x, row), last, 4);
     }
     return padded;
 }
@@ -65,17 +64,14 @@ class VideoWriter::Impl {
             abort_ = true;
         }
         changed_.notify_all();
-        if (worker_.joinable())
-            worker_.join();
+        if (worker_.joinable()) worker_.join();
         sink_.reset();  // closes files before the temporary is removed
         temporary_.discard();
     }
 
     void write(Image frame) {
-        if (finished_)
-            throw_runtime_error("VideoWriter::write after finish()");
-        if (cancelled())
-            throw_interrupted();
+        if (finished_) throw_runtime_error("VideoWriter::write after finish()");
+        if (cancelled()) throw_interrupted();
         if (frame.width != geometry_.input_width || frame.height != geometry_.input_height ||
             frame.rgba.size() != frame.stride() * static_cast<std::size_t>(frame.height)) {
             throw_runtime_error("video frame is " + size_text(frame.width, frame.height) +
@@ -86,8 +82,7 @@ class VideoWriter::Impl {
         changed_.wait(lock, [&] {
             return failure_ || queue_.size() < static_cast<std::size_t>(options_.queue_frames);
         });
-        if (failure_)
-            std::rethrow_exception(failure_);
+        if (failure_) std::rethrow_exception(failure_);
         queue_.push_back(std::move(frame));
         ++frames_written_;
         lock.unlock();
@@ -96,16 +91,14 @@ class VideoWriter::Impl {
 
     Image spare_frame() {
         std::lock_guard lock(mutex_);
-        if (spares_.empty())
-            return {};
+        if (spares_.empty()) return {};
         Image spare = std::move(spares_.back());
         spares_.pop_back();
         return spare;
     }
 
     void finish() {
-        if (finished_)
-            throw_runtime_error("VideoWriter::finish called twice");
+        if (finished_) throw_runtime_error("VideoWriter::finish called twice");
         finished_ = true;  // whatever happens next, no more frames
         {
             std::lock_guard lock(mutex_);
@@ -113,10 +106,8 @@ class VideoWriter::Impl {
         }
         changed_.notify_all();
         worker_.join();
-        if (failure_)
-            std::rethrow_exception(failure_);
-        if (cancelled())
-            throw_interrupted();
+        if (failure_) std::rethrow_exception(failure_);
+        if (cancelled()) throw_interrupted();
         if (frames_written_ == 0) {
             throw_runtime_error("no frames were written to '" + options_.path.string() + "'");
         }
@@ -185,14 +176,12 @@ class VideoWriter::Impl {
                 {
                     std::unique_lock lock(mutex_);
                     changed_.wait(lock, [&] { return abort_ || closing_ || !queue_.empty(); });
-                    if (abort_ || queue_.empty())
-                        return;  // aborted, or closed and drained
+                    if (abort_ || queue_.empty()) return;  // aborted, or closed and drained
                     frame = std::move(queue_.front());
                     queue_.pop_front();
                 }
                 changed_.notify_all();
-                if (cancelled())
-                    throw_interrupted();
+                if (cancelled()) throw_interrupted();
                 sink_->consume(frame);
                 std::lock_guard lock(mutex_);
                 if (spares_.size() < static_cast<std::size_t>(options_.queue_frames))

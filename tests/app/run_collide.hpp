@@ -1,10 +1,11 @@
 #pragma once
 // Runs the `collide` executable built by this tree and captures its exit code and output.
 
+#include <sys/wait.h>
+
 #include <array>
 #include <cstdio>
 #include <string>
-#include <sys/wait.h>
 
 namespace collide::test {
 

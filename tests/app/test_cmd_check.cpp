@@ -2,12 +2,11 @@
 
 #include <doctest/doctest.h>
 
-#include "../support/input_error.hpp"
-
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "../support/input_error.hpp"
 #include "run_collide.hpp"
 
 using collide::test::run_collide;

@@ -21,8 +21,7 @@ TEST_CASE("collide scenes: one line per built-in scene, name then description") 
         ++count;
         const auto space = line.find("  ");
         CHECK(space != std::string::npos);  // a description follows the name
-        if (line.rfind("tunnelling ", 0) == 0)
-            tunnelling = true;
+        if (line.rfind("tunnelling ", 0) == 0) tunnelling = true;
     }
     CHECK(count >= 8);
     CHECK(tunnelling);

@@ -26,7 +26,8 @@ bool contains(const std::string& haystack, const std::string& needle) {
 
 }  // namespace
 
-TEST_CASE("collide pq prints the lecture's table: removals Q, X, P; ordered array ends A E E L M P") {
+TEST_CASE(
+    "collide pq prints the lecture's table: removals Q, X, P; ordered array ends A E E L M P") {
     const auto r = run_collide(std::string("pq ") + lecture_ops + " --impl ordered --format csv");
     REQUIRE(r.exit_code == 0);
     const auto lines = lines_of(r.output);
@@ -43,8 +44,8 @@ TEST_CASE("by default every implementation gets a column in a plain text table")
     REQUIRE(r.exit_code == 0);
     const auto lines = lines_of(r.output);
     REQUIRE(lines.size() == 14);  // header, rule, 12 operations
-    for (const char* column : {"operation", "argument", "return", "size", "unordered", "ordered", "binary",
-                               "dary:3", "indexed:4"}) {
+    for (const char* column : {"operation", "argument", "return", "size", "unordered", "ordered",
+                               "binary", "dary:3", "indexed:4"}) {
         CHECK(contains(lines[0], column));
     }
     CHECK(lines[1].find_first_not_of("- ") == std::string::npos);
@@ -53,7 +54,8 @@ TEST_CASE("by default every implementation gets a column in a plain text table")
 }
 
 TEST_CASE("--format markdown makes a pipe table for slides; --min removes the smallest") {
-    const auto r = run_collide("pq --ops \"3 1 2 * *\" --min --impl binary,unordered --format markdown");
+    const auto r =
+        run_collide("pq --ops \"3 1 2 * *\" --min --impl binary,unordered --format markdown");
     REQUIRE(r.exit_code == 0);
     const auto lines = lines_of(r.output);
     REQUIRE(lines.size() == 7);

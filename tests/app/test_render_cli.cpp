@@ -1,14 +1,13 @@
 // End-to-end tests of `collide render` and `collide thumbnail`: the files a user gets, read back.
 #include <doctest/doctest.h>
 
-#include "../support/temp_dir.hpp"
-
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
 
+#include "../support/temp_dir.hpp"
 #include "collide/image.hpp"
 #include "collide/video/png.hpp"
 #include "run_collide.hpp"
@@ -37,7 +36,9 @@ std::string capture(const std::string& cmd) {
     return out;
 }
 
-bool have_ffprobe() { return std::system("ffprobe -version >/dev/null 2>&1") == 0; }
+bool have_ffprobe() {
+    return std::system("ffprobe -version >/dev/null 2>&1") == 0;
+}
 
 /// Share of pixels where some channel differs by more than 2 (the golden-image tolerance).
 double share_of_differing_pixels(const Image& a, const Image& b) {
@@ -66,8 +67,10 @@ void check_golden(const fs::path& image_path, const std::string& name) {
         MESSAGE("golden rewritten: " << golden.string());
         return;
     }
-    REQUIRE_MESSAGE(fs::exists(golden), "missing golden " << golden.string() << " (COLLIDE_UPDATE_GOLDENS=1)");
-    CHECK_MESSAGE(share_of_differing_pixels(image, collide::video::read_png(golden)) <= 0.001, name);
+    REQUIRE_MESSAGE(fs::exists(golden),
+                    "missing golden " << golden.string() << " (COLLIDE_UPDATE_GOLDENS=1)");
+    CHECK_MESSAGE(share_of_differing_pixels(image, collide::video::read_png(golden)) <= 0.001,
+                  name);
 }
 
 }  // namespace
@@ -79,13 +82,15 @@ TEST_CASE("render: a 2-second side-by-side MP4 that plays everywhere") {
     }
     TempDir dir("mp4");
     const fs::path out = dir.path / "t.mp4";
-    const auto r = run_collide("render tunnelling --size 320x180 --fps 12 --duration 2 --progress none -o " +
-                               out.string());
+    const auto r =
+        run_collide("render tunnelling --size 320x180 --fps 12 --duration 2 --progress none -o " +
+                    out.string());
     REQUIRE_MESSAGE(r.exit_code == 0, r.output);
     CHECK(r.output.find("24 frames") != std::string::npos);
     const std::string probe = capture(
         "ffprobe -v error -select_streams v:0 -count_frames -show_entries "
-        "stream=codec_name,pix_fmt,width,height,nb_read_frames,r_frame_rate:format=duration -of default=nw=1 " +
+        "stream=codec_name,pix_fmt,width,height,nb_read_frames,r_frame_rate:format=duration -of "
+        "default=nw=1 " +
         out.string());
     CHECK(probe.find("codec_name=h264") != std::string::npos);
     CHECK(probe.find("pix_fmt=yuv420p") != std::string::npos);
@@ -111,11 +116,14 @@ TEST_CASE("render: the same scene and options give a byte-identical file") {
 TEST_CASE("render --last-frame equals thumbnail --at the end time") {
     TempDir dir("last");
     // 1 s at 10 fps and speed 0.5: the last frame (k = 9) is at t = 0.45
-    const auto last = run_collide("render gas --size 320x180 --fps 10 --duration 1 --speed 0.5 --last-frame "
-                                  "--progress none -o " + (dir.path / "last.png").string());
+    const auto last = run_collide(
+        "render gas --size 320x180 --fps 10 --duration 1 --speed 0.5 --last-frame "
+        "--progress none -o " +
+        (dir.path / "last.png").string());
     REQUIRE_MESSAGE(last.exit_code == 0, last.output);
-    const auto thumb = run_collide("thumbnail gas --size 320x180 --fps 10 --speed 0.5 --at 0.45 -o " +
-                                   (dir.path / "thumb.png").string());
+    const auto thumb =
+        run_collide("thumbnail gas --size 320x180 --fps 10 --speed 0.5 --at 0.45 -o " +
+                    (dir.path / "thumb.png").string());
     REQUIRE_MESSAGE(thumb.exit_code == 0, thumb.output);
     const Image a = collide::video::read_png(dir.path / "last.png");
     const Image b = collide::video::read_png(dir.path / "thumb.png");
@@ -127,12 +135,12 @@ TEST_CASE("thumbnail: every built-in scene in both modes matches its golden imag
     TempDir dir("golden");
     const std::string list = run_collide("scenes").output;
     int scenes = 0;
-    for (const char* name : {"billiards", "brownian", "dense-fluid", "diffusion", "gas", "maxwell-boltzmann",
-                             "newtons-cradle", "tunnelling"}) {
+    for (const char* name : {"billiards", "brownian", "dense-fluid", "diffusion", "gas",
+                             "maxwell-boltzmann", "newtons-cradle", "tunnelling"}) {
         CHECK_MESSAGE(list.find(name) != std::string::npos, name);
         const fs::path out = dir.path / (std::string(name) + ".png");
-        const auto r = run_collide(std::string("thumbnail ") + name + " --size 320x180 --fps 10 --at 0.05 -o " +
-                                   out.string());
+        const auto r = run_collide(std::string("thumbnail ") + name +
+                                   " --size 320x180 --fps 10 --at 0.05 -o " + out.string());
         REQUIRE_MESSAGE(r.exit_code == 0, r.output);
         check_golden(out, name);
         ++scenes;
@@ -144,8 +152,9 @@ TEST_CASE("thumbnail: event-only and time-only modes render one panel each") {
     TempDir dir("modes");
     for (const char* mode : {"event", "time"}) {
         const fs::path out = dir.path / (std::string(mode) + ".png");
-        const auto r = run_collide(std::string("thumbnail newtons-cradle --size 320x180 --at 0.5 --mode ") + mode +
-                                   " -o " + out.string());
+        const auto r =
+            run_collide(std::string("thumbnail newtons-cradle --size 320x180 --at 0.5 --mode ") +
+                        mode + " -o " + out.string());
         REQUIRE_MESSAGE(r.exit_code == 0, r.output);
         check_golden(out, std::string("newtons-cradle-") + mode);
     }
@@ -185,8 +194,9 @@ TEST_CASE("thumbnail --seed: the same seed gives the same picture, another seed 
     TempDir dir("seed");
     const auto shot = [&](const std::string& seed, const std::string& name) {
         const fs::path out = dir.path / name;
-        const auto r = run_collide("thumbnail maxwell-boltzmann --size 320x180 --at 0 --mode event --seed " + seed +
-                                   " -o " + out.string());
+        const auto r =
+            run_collide("thumbnail maxwell-boltzmann --size 320x180 --at 0 --mode event --seed " +
+                        seed + " -o " + out.string());
         REQUIRE_MESSAGE(r.exit_code == 0, r.output);
         return collide::video::read_png(out);
     };
@@ -195,5 +205,7 @@ TEST_CASE("thumbnail --seed: the same seed gives the same picture, another seed 
     const Image c = shot("6", "c.png");
     CHECK(share_of_differing_pixels(a, b) == 0.0);
     CHECK(share_of_differing_pixels(a, c) > 0.01);
-    CHECK(run_collide("thumbnail gas --seed banana -o " + (dir.path / "d.png").string()).exit_code == 2);
+    CHECK(
+        run_collide("thumbnail gas --seed banana -o " + (dir.path / "d.png").string()).exit_code ==
+        2);
 }

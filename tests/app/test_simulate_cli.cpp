@@ -3,15 +3,14 @@
 
 #include <doctest/doctest.h>
 
-#include "../support/input_error.hpp"
-#include "../support/temp_dir.hpp"
-
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "../support/input_error.hpp"
+#include "../support/temp_dir.hpp"
 #include "run_collide.hpp"
 
 using collide::test::run_collide;
@@ -44,13 +43,15 @@ TEST_CASE("collide simulate --json prints every measurement key") {
     const fs::path scene = write_head_on(dir.path);
     for (const char* engine : {"fast", "classic"}) {
         CAPTURE(engine);
-        const auto r = run_collide("simulate \"" + scene.string() + "\" --until 5.5 --json --engine " + engine);
+        const auto r = run_collide("simulate \"" + scene.string() +
+                                   "\" --until 5.5 --json --engine " + engine);
         REQUIRE(r.exit_code == 0);
-        for (const char* key : {"\"t\": 5.5", "\"events\"", "\"collisions_pair\": 1", "\"collisions_wall\": 2",
-                                "\"kinetic_energy\"", "\"pressure\"", "\"compressibility\"", "\"packing_fraction\"",
-                                "\"max_overlap\": 0", "\"collisions_per_second\"", "\"pq_max_size\"",
-                                "\"stale_events\"", "\"overlap_checks\"", "\"missed_collisions\"", "\"escaped\"",
-                                "\"energy_drift\"", "\"msd\"", "\"temperature\""}) {
+        for (const char* key :
+             {"\"t\": 5.5", "\"events\"", "\"collisions_pair\": 1", "\"collisions_wall\": 2",
+              "\"kinetic_energy\"", "\"pressure\"", "\"compressibility\"", "\"packing_fraction\"",
+              "\"max_overlap\": 0", "\"collisions_per_second\"", "\"pq_max_size\"",
+              "\"stale_events\"", "\"overlap_checks\"", "\"missed_collisions\"", "\"escaped\"",
+              "\"energy_drift\"", "\"msd\"", "\"temperature\""}) {
             CHECK_MESSAGE(contains(r.output, key), key);
         }
     }
@@ -60,8 +61,10 @@ TEST_CASE("collide simulate --events-log writes one CSV line per collision") {
     TempDir dir("collide_test_simulate_log");
     const fs::path scene = write_head_on(dir.path);
     const fs::path log = dir.path / "events.csv";
-    const auto r = run_collide("simulate \"" + scene.string() + "\" --until 5.5 --pq ordered --engine classic"
-                               " --events-log \"" + log.string() + "\"");
+    const auto r = run_collide("simulate \"" + scene.string() +
+                               "\" --until 5.5 --pq ordered --engine classic"
+                               " --events-log \"" +
+                               log.string() + "\"");
     REQUIRE(r.exit_code == 0);
     const auto lines = lines_of(log);
     REQUIRE(lines.size() == 4);
@@ -94,15 +97,17 @@ TEST_CASE("collide simulate: bad options and unwritable logs exit 2 without outp
     const auto until = run_collide("simulate \"" + scene.string() + "\" --until -1");
     CHECK(until.exit_code == 2);
     CHECK(contains(until.output, "--until"));
-    const auto missing = run_collide("simulate \"" + (dir.path / "none.txt").string() + "\" --until 1");
+    const auto missing =
+        run_collide("simulate \"" + (dir.path / "none.txt").string() + "\" --until 1");
     CHECK(missing.exit_code == 2);
 }
 
 TEST_CASE("collide bench engine reports throughput and memory on a small fluid") {
     const auto r = run_collide("bench engine --n 400 --eta 0.4 --collisions 20000 --json");
     REQUIRE(r.exit_code == 0);
-    for (const char* key : {"\"collisions_per_second\"", "\"events_per_cpu_second\"", "\"engine_bytes_per_disc\"",
-                            "\"rss_delta_bytes_per_disc\"", "\"pq_max_size\": 400", "\"stale_fraction\""}) {
+    for (const char* key :
+         {"\"collisions_per_second\"", "\"events_per_cpu_second\"", "\"engine_bytes_per_disc\"",
+          "\"rss_delta_bytes_per_disc\"", "\"pq_max_size\": 400", "\"stale_fraction\""}) {
         CHECK_MESSAGE(contains(r.output, key), key);
     }
     CHECK(run_collide("bench engine --n 1 --collisions 10").exit_code == 2);

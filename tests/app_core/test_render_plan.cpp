@@ -52,7 +52,8 @@ TEST_CASE("the derived speed makes a typical disc cross the box in about ten sec
     CHECK(a.source == "derived");
     CHECK(a.speed == doctest::Approx(2.0 / (crossing_seconds * 0.01)));
     const Scene fast = two_disc_scene(100.0);  // molecular-scale speeds
-    CHECK(choose_speed(fast, std::nullopt).speed == doctest::Approx(2.0 / (crossing_seconds * 100.0)));
+    CHECK(choose_speed(fast, std::nullopt).speed ==
+          doctest::Approx(2.0 / (crossing_seconds * 100.0)));
     // the command line beats the scene hint, which beats the derivation
     Scene hinted = slow;
     hinted.render.speed = 3.0;
@@ -78,10 +79,10 @@ TEST_CASE("frame k is at exactly k * speed / fps") {
 
 TEST_CASE("the time-driven panel shows its last whole step at or before the frame time") {
     CHECK(last_step_time(0.0, 0.04) == 0.0);
-    CHECK(last_step_time(0.03, 0.04) == 0.0);               // before the first step ends
+    CHECK(last_step_time(0.03, 0.04) == 0.0);  // before the first step ends
     CHECK(last_step_time(0.05, 0.04) == doctest::Approx(0.04));
-    CHECK(last_step_time(0.12, 0.04) == 0.12);              // a whole number of steps: exact
-    CHECK(last_step_time(0.1, 0.01) == 0.1);                 // dt divides the interval: lands on t
+    CHECK(last_step_time(0.12, 0.04) == 0.12);  // a whole number of steps: exact
+    CHECK(last_step_time(0.1, 0.01) == 0.1);    // dt divides the interval: lands on t
     double previous = 0.0;
     for (int k = 0; k < 200; ++k) {  // never goes backwards from frame to frame
         const double t = last_step_time(k / 75.0, 0.04);

@@ -71,13 +71,15 @@ TEST_CASE("periodic fluid at packing fraction 0.3: Z within 1% of Henderson") {
     run_collisions(engine, 400'000, 0.05);
     const Measurements b = engine.measurements();
     // Z over the window [a.t, b.t] from the cumulative virial Z(t) = 1 + V(t) / (2 N kT t).
-    const double z = 1.0 + ((b.compressibility - 1.0) * b.t - (a.compressibility - 1.0) * a.t) / (b.t - a.t);
+    const double z =
+        1.0 + ((b.compressibility - 1.0) * b.t - (a.compressibility - 1.0) * a.t) / (b.t - a.t);
     const double henderson = (1.0 + eta * eta / 8.0) / ((1.0 - eta) * (1.0 - eta));
     CAPTURE(z);
     CAPTURE(henderson);
     CHECK(std::abs(z - henderson) <= 0.01 * henderson);
     // The pressure field agrees with Z = P A / (N kT).
-    CHECK(b.pressure * 1.0 == doctest::Approx(b.compressibility * 900 * b.temperature / (scene.box.area())));
+    CHECK(b.pressure * 1.0 ==
+          doctest::Approx(b.compressibility * 900 * b.temperature / (scene.box.area())));
 }
 
 TEST_CASE("classic and fast agree for 3000 collisions of 400 discs") {
@@ -135,7 +137,8 @@ TEST_CASE("algs4 files: time never runs backwards and no overlap beyond the tole
             CHECK_FALSE(backwards);
             CHECK(seen > 100);
             CHECK(last <= until);
-            CHECK(worst <= std::max(initial_overlap, sim::overlap_tolerance * largest_sigma(*scene)));
+            CHECK(worst <=
+                  std::max(initial_overlap, sim::overlap_tolerance * largest_sigma(*scene)));
             const Measurements m = engine->measurements();
             CHECK(m.t == until);
             CHECK(m.escaped == 0);

@@ -96,8 +96,7 @@ TEST_CASE("golden: periodic box with trails crossing the seam, overlays off") {
     for (int step = 0; step < 12; ++step) {
         s.time = 0.1 * step;
         for (DiscState& d : s.discs) {
-            if (!d.tagged)
-                continue;
+            if (!d.tagged) continue;
             d.position = d.position + 0.1 * d.velocity;
             d.position.x = std::fmod(d.position.x + s.box.width, s.box.width);
             d.position.y = std::fmod(d.position.y + s.box.height, s.box.height);

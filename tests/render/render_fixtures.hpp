@@ -64,8 +64,7 @@ inline DiscState disc_at(Vec2 position, double radius, Rgb8 color) {
 /// can look at what the tests render; does nothing otherwise.
 inline void dump_if_requested(const Image& image, const std::string& name) {
     const char* dir = std::getenv("COLLIDE_RENDER_DUMP_DIR");
-    if (dir == nullptr || *dir == '\0')
-        return;
+    if (dir == nullptr || *dir == '\0') return;
     std::filesystem::create_directories(dir);
     video::write_png(image, std::filesystem::path(dir) / (name + ".png"));
 }
@@ -79,10 +78,8 @@ inline Rgb8 rgb_at(const Image& image, int x, int y) {
 /// Number of pixels in [x0, x1) x [y0, y1) whose colour is within `tolerance` of `color`.
 inline int count_near(const Image& image, Rgb8 color, int tolerance, int x0 = 0, int y0 = 0,
                       int x1 = -1, int y1 = -1) {
-    if (x1 < 0)
-        x1 = image.width;
-    if (y1 < 0)
-        y1 = image.height;
+    if (x1 < 0) x1 = image.width;
+    if (y1 < 0) y1 = image.height;
     int count = 0;
     for (int y = y0; y < y1; ++y) {
         for (int x = x0; x < x1; ++x) {

@@ -77,8 +77,7 @@ TEST_CASE("a disc lands at its centre with its colour, rows top-down") {
     const int reds = count_near(r.image, red, 100);
     CHECK(std::abs(reds - area) < 0.05 * area);
     // The alpha channel is opaque everywhere (encoders ignore it, PNGs must not be see-through).
-    for (std::size_t i = 3; i < r.image.rgba.size(); i += 4)
-        REQUIRE(r.image.rgba[i] == 255);
+    for (std::size_t i = 3; i < r.image.rgba.size(); i += 4) REQUIRE(r.image.rgba[i] == 255);
 }
 
 TEST_CASE("a disc one pixel across is still visible") {
@@ -96,8 +95,7 @@ TEST_CASE("a disc one pixel across is still visible") {
         for (int x = static_cast<int>(c.x) - 3; x <= static_cast<int>(c.x) + 3; ++x) {
             const int g = rgb_at(r.image, x, y).g;
             brightest = std::max(brightest, g);
-            if (g > box_fill.g + 10)
-                ++lit;
+            if (g > box_fill.g + 10) ++lit;
             coverage += static_cast<double>(g - box_fill.g) / (255.0 - box_fill.g);
         }
     }

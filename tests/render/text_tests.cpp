@@ -17,8 +17,7 @@ int bright_pixels(const Image& image, RectF r) {
     int count = 0;
     for (int y = static_cast<int>(r.y0); y < static_cast<int>(r.y1); ++y) {
         for (int x = static_cast<int>(r.x0); x < static_cast<int>(r.x1); ++x) {
-            if (test::rgb_at(image, x, y).g > 120)
-                ++count;
+            if (test::rgb_at(image, x, y).g > 120) ++count;
         }
     }
     return count;

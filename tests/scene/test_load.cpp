@@ -2,13 +2,12 @@
 
 #include <doctest/doctest.h>
 
-#include "../support/input_error.hpp"
-
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "../support/input_error.hpp"
 #include "collide/error.hpp"
 #include "collide/scene/load.hpp"
 #include "collide/sim/engine.hpp"
@@ -56,8 +55,7 @@ TEST_CASE("load_scene: unknown names suggest a built-in scene") {
 TEST_CASE("built-in library: the required scenes exist, each described and valid") {
     const std::vector<BuiltinScene> scenes = builtin_scenes(COLLIDE_ASSETS_DIR);
     std::vector<std::string> names;
-    for (const BuiltinScene& s : scenes)
-        names.push_back(s.name);
+    for (const BuiltinScene& s : scenes) names.push_back(s.name);
     for (const char* required : {"gas", "brownian", "diffusion", "billiards", "newtons-cradle",
                                  "maxwell-boltzmann", "tunnelling", "dense-fluid"}) {
         CAPTURE(required);
@@ -100,8 +98,7 @@ namespace {
 int escaped_from_chamber(const collide::Snapshot& snapshot) {
     int out = 0;
     for (const collide::DiscState& d : snapshot.discs) {
-        if (d.radius > 0.006 && (d.position.x < 0.3 || d.position.x > 0.7))
-            ++out;
+        if (d.radius > 0.006 && (d.position.x < 0.3 || d.position.x > 0.7)) ++out;
     }
     return out;
 }

@@ -2,12 +2,11 @@
 
 #include <doctest/doctest.h>
 
-#include "../support/input_error.hpp"
-
 #include <filesystem>
 #include <sstream>
 #include <string>
 
+#include "../support/input_error.hpp"
 #include "collide/error.hpp"
 #include "collide/scene/load.hpp"
 #include "collide/scene/save.hpp"

@@ -64,7 +64,9 @@ inline Scene head_on() {
     return s;
 }
 
-inline std::filesystem::path algs4_dir() { return std::filesystem::path(COLLIDE_SHARED_DIR) / "data" / "algs4"; }
+inline std::filesystem::path algs4_dir() {
+    return std::filesystem::path(COLLIDE_SHARED_DIR) / "data" / "algs4";
+}
 
 /// Reads and validates an algs4 file from ../shared/data/algs4; std::nullopt when it is absent
 /// (tests then skip).

@@ -165,8 +165,7 @@ TEST_CASE("algs4: the course's 25 files load, or are rejected for the right reas
     int rejected = 0;
     for (const auto& entry : std::filesystem::directory_iterator(dir)) {
         const std::string name = entry.path().filename().string();
-        if (entry.path().extension() != ".txt" || name == "PROVENANCE.txt")
-            continue;
+        if (entry.path().extension() != ".txt" || name == "PROVENANCE.txt") continue;
         CAPTURE(name);
         std::string error;
         try {

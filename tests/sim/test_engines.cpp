@@ -32,7 +32,8 @@ std::unique_ptr<Engine> engine_named(const std::string& name, const Scene& scene
 }
 
 /// Runs until `count` collisions have been recorded (or t_max), returning them.
-std::vector<CollisionRecord> first_collisions(Engine& engine, std::size_t count, double step, double t_max) {
+std::vector<CollisionRecord> first_collisions(Engine& engine, std::size_t count, double step,
+                                              double t_max) {
     std::vector<CollisionRecord> log;
     engine.set_collision_listener([&](const CollisionRecord& r) { log.push_back(r); });
     while (log.size() < count && engine.time() < t_max) engine.advance_to(engine.time() + step);
@@ -40,8 +41,8 @@ std::vector<CollisionRecord> first_collisions(Engine& engine, std::size_t count,
     return log;
 }
 
-void require_same_events(const std::vector<CollisionRecord>& x, const std::vector<CollisionRecord>& y,
-                         double time_tolerance) {
+void require_same_events(const std::vector<CollisionRecord>& x,
+                         const std::vector<CollisionRecord>& y, double time_tolerance) {
     REQUIRE(x.size() == y.size());
     for (std::size_t k = 0; k < x.size(); ++k) {
         INFO("collision #" << k << " at t = " << x[k].t);
@@ -204,40 +205,41 @@ TEST_CASE("classic and fast agree event by event in a dilute gas (many crossings
         REQUIRE(a.size() == 100);
         require_same_events(a, b, 1e-9);
         const Measurements m = fast.measurements();
-        CHECK(static_cast<double>(m.cell_crossings) > 2.0 * static_cast<double>(m.collisions_pair + m.collisions_wall));
+        CHECK(static_cast<double>(m.cell_crossings) >
+              2.0 * static_cast<double>(m.collisions_pair + m.collisions_wall));
     }
 }
 
 TEST_CASE("classic and fast agree with one big disc among small ones (the big-disc list)") {
-  for (Boundary boundary : {Boundary::walls, Boundary::periodic}) {
-    CAPTURE(static_cast<int>(boundary));
-    Scene scene = lattice_fluid(10, 0.3, boundary, 5, 0.005);
-    // Turn the central disc into a heavy big one and clear the discs it would overlap.
-    const Vec2 centre{scene.box.width / 2, scene.box.height / 2};
-    std::vector<Disc> kept;
-    for (const Disc& d : scene.discs) {
-        if (norm(d.position - centre) > 0.03) kept.push_back(d);
+    for (Boundary boundary : {Boundary::walls, Boundary::periodic}) {
+        CAPTURE(static_cast<int>(boundary));
+        Scene scene = lattice_fluid(10, 0.3, boundary, 5, 0.005);
+        // Turn the central disc into a heavy big one and clear the discs it would overlap.
+        const Vec2 centre{scene.box.width / 2, scene.box.height / 2};
+        std::vector<Disc> kept;
+        for (const Disc& d : scene.discs) {
+            if (norm(d.position - centre) > 0.03) kept.push_back(d);
+        }
+        Disc big;
+        big.position = centre;
+        big.velocity = {0.2, 0.1};
+        big.radius = 0.02;
+        big.mass = 10.0;
+        kept.push_back(big);
+        scene.discs = kept;
+        sim::FastEngine fast(scene);
+        CHECK(fast.big_disc_count() == 1);
+        sim::ClassicEngine<BinaryQueue> classic(scene);
+        const auto a = first_collisions(classic, 400, 0.01, 100.0);
+        const auto b = first_collisions(fast, 400, 0.01, 100.0);
+        REQUIRE(a.size() == 400);
+        require_same_events(a, b, 1e-9);
+        CHECK(fast.check_invariants());
+        // the big disc took part
+        CHECK(std::any_of(a.begin(), a.end(), [&](const CollisionRecord& r) {
+            return r.kind == CollisionKind::pair && r.b == scene.discs.size() - 1;
+        }));
     }
-    Disc big;
-    big.position = centre;
-    big.velocity = {0.2, 0.1};
-    big.radius = 0.02;
-    big.mass = 10.0;
-    kept.push_back(big);
-    scene.discs = kept;
-    sim::FastEngine fast(scene);
-    CHECK(fast.big_disc_count() == 1);
-    sim::ClassicEngine<BinaryQueue> classic(scene);
-    const auto a = first_collisions(classic, 400, 0.01, 100.0);
-    const auto b = first_collisions(fast, 400, 0.01, 100.0);
-    REQUIRE(a.size() == 400);
-    require_same_events(a, b, 1e-9);
-    CHECK(fast.check_invariants());
-    // the big disc took part
-    CHECK(std::any_of(a.begin(), a.end(), [&](const CollisionRecord& r) {
-        return r.kind == CollisionKind::pair && r.b == scene.discs.size() - 1;
-    }));
-  }
 }
 
 TEST_CASE("the classic engine pops the identical event sequence whatever the queue") {
@@ -248,8 +250,8 @@ TEST_CASE("the classic engine pops the identical event sequence whatever the que
     const auto reference = first_collisions(binary, 400, 0.01, 100.0);
     REQUIRE(reference.size() == 400);
     const Measurements reference_m = binary.measurements();
-    for (const char* kind : {"unordered", "ordered", "binary", "dary:3", "dary:4", "dary:8", "dary:5",
-                             "indexed", "indexed:2", "indexed:8"}) {
+    for (const char* kind : {"unordered", "ordered", "binary", "dary:3", "dary:4", "dary:8",
+                             "dary:5", "indexed", "indexed:2", "indexed:8"}) {
         CAPTURE(kind);
         EngineOptions options;
         options.engine = "classic";

@@ -2,14 +2,13 @@
 
 #include <doctest/doctest.h>
 
-#include "../support/input_error.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
 #include <string>
 
+#include "../support/input_error.hpp"
 #include "collide/error.hpp"
 #include "collide/sim/generate.hpp"
 #include "collide/sim/scene_check.hpp"
@@ -32,8 +31,7 @@ using collide::test::contains;
 
 Vec2 momentum(const Scene& s) {
     Vec2 p{};
-    for (const Disc& d : s.discs)
-        p += d.mass * d.velocity;
+    for (const Disc& d : s.discs) p += d.mass * d.velocity;
     return p;
 }
 
@@ -115,8 +113,7 @@ TEST_CASE("generate: Maxwell-Boltzmann velocities at exactly kT, zero total mome
     // Gaussian components: the fraction within one sigma is about 68 %
     const double sigma = std::sqrt(1.5 / 2.0);
     int inside = 0;
-    for (const Disc& d : s.discs)
-        inside += std::abs(d.velocity.x) < sigma ? 1 : 0;
+    for (const Disc& d : s.discs) inside += std::abs(d.velocity.x) < sigma ? 1 : 0;
     CHECK(inside / 2000.0 == doctest::Approx(0.683).epsilon(0.05));
 }
 
@@ -127,8 +124,7 @@ TEST_CASE("generate: speed = v gives every disc the same speed and zero momentum
     g.radius = 0.01;
     g.speed = 0.3;
     generate_discs(s, g);
-    for (const Disc& d : s.discs)
-        CHECK(norm(d.velocity) == doctest::Approx(0.3));
+    for (const Disc& d : s.discs) CHECK(norm(d.velocity) == doctest::Approx(0.3));
     CHECK(std::abs(momentum(s).x) < 1e-12);
     CHECK(std::abs(momentum(s).y) < 1e-12);
 }

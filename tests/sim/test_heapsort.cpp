@@ -30,7 +30,9 @@ std::uint64_t heapsort_compares(const std::vector<int>& in) {
     return compares;
 }
 
-double two_n_lg_n(std::size_t n) { return n < 2 ? 0.0 : 2.0 * static_cast<double>(n) * std::log2(static_cast<double>(n)); }
+double two_n_lg_n(std::size_t n) {
+    return n < 2 ? 0.0 : 2.0 * static_cast<double>(n) * std::log2(static_cast<double>(n));
+}
 
 std::vector<int> random_ints(std::size_t n, int range, std::uint64_t seed) {
     std::mt19937_64 rng(seed);
@@ -43,7 +45,8 @@ std::vector<int> random_ints(std::size_t n, int range, std::uint64_t seed) {
 }  // namespace
 
 TEST_CASE("heapsort sorts random, sorted, reversed and all-equal input within 2 N lg N compares") {
-    for (std::size_t n : {0u, 1u, 2u, 3u, 4u, 5u, 7u, 8u, 9u, 16u, 17u, 100u, 1000u, 4096u, 8191u}) {
+    for (std::size_t n :
+         {0u, 1u, 2u, 3u, 4u, 5u, 7u, 8u, 9u, 16u, 17u, 100u, 1000u, 4096u, 8191u}) {
         CAPTURE(n);
         const std::vector<int> random = random_ints(n, 1 << 30, n);
         std::vector<int> sorted = random;

@@ -40,7 +40,8 @@ TEST_CASE("max_overlap sees a big disc overlapping small ones far from its centr
     r.push_back(0.2);
     CHECK(sim::big_radius_threshold(r) < 0.2);
     double expected = 0.0;
-    for (int k = 0; k < 100; ++k) expected = std::max(expected, 0.21 - std::hypot(pos[k].x - 0.5, pos[k].y - 0.5));
+    for (int k = 0; k < 100; ++k)
+        expected = std::max(expected, 0.21 - std::hypot(pos[k].x - 0.5, pos[k].y - 0.5));
     CHECK(sim::max_overlap(pos, r, box) == doctest::Approx(expected));
 }
 

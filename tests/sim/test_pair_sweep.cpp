@@ -175,8 +175,7 @@ TEST_CASE("pair sweep: near-tangent pairs far outside a walled box are candidate
             CAPTURE(offset);
             CAPTURE(h);
             Discs d = near_tangent_discs(box, h);
-            for (Vec2& p : d.positions)
-                p = p + Vec2{offset, 0.5 * offset};
+            for (Vec2& p : d.positions) p = p + Vec2{offset, 0.5 * offset};
             d.add({0.5, 0.5}, {0.0, 0.0}, 0.01);  // one disc stays home
             check_sweep(box, d, h);
         }

@@ -87,8 +87,7 @@ std::vector<int> check_against_model(Q q, std::uint64_t seed, int swing, int key
         }
         mismatches += (q.size() != model.size()) + (q.empty() != model.empty());
         // Validating builds check inside every mutation (and throw); don't pay for it twice.
-        if constexpr (!validate_heaps)
-            broken += !holds_invariant(q);
+        if constexpr (!validate_heaps) broken += !holds_invariant(q);
         largest = std::max(largest, model.size());
     }
     CHECK(mismatches == 0);
@@ -185,8 +184,7 @@ struct TieWorkload {
                     out.push_back(q.pop());
                 }
             }
-            while (!q.empty())
-                out.push_back(q.pop());
+            while (!q.empty()) out.push_back(q.pop());
             return out;
         });
     }
@@ -233,8 +231,7 @@ TEST_CASE("with ties under Less the implementations may disagree (why event keys
     for (const char* text : all_kinds) {
         const auto out = work.run<TimeOnlyLess>(text);
         REQUIRE(out.size() == reference.size());
-        for (std::size_t i = 0; i < out.size(); ++i)
-            REQUIRE(out[i].first == reference[i].first);
+        for (std::size_t i = 0; i < out.size(); ++i) REQUIRE(out[i].first == reference[i].first);
         disagreeing += (out != reference);
     }
     CHECK(disagreeing > 0);  // same times in the same order, but not the same ids
@@ -262,14 +259,12 @@ TEST_CASE(
         switch (what(rng)) {
             case 0:  // push or change
                 heap.push_or_change(h, k);
-                if (present)
-                    order.erase({key_of[h], h});
+                if (present) order.erase({key_of[h], h});
                 key_of[h] = k;
                 order.insert({k, h});
                 break;
             case 1:  // pop: the top key must be the model's smallest (the handle may be any tie)
-                if (order.empty())
-                    break;
+                if (order.empty()) break;
                 mismatches += (heap.top_key() != order.begin()->first);
                 {
                     const unsigned got = heap.pop();
@@ -288,8 +283,7 @@ TEST_CASE(
                 key_of.erase(h);
                 break;
             case 3:  // decrease_key, which must refuse a larger key
-                if (!present)
-                    break;
+                if (!present) break;
                 if (k > key_of[h]) {
                     CHECK_THROWS_AS(heap.decrease_key(h, k), collide::Error);
                     break;
@@ -300,8 +294,7 @@ TEST_CASE(
                 order.insert({k, h});
                 break;
             case 4:  // increase_key, which must refuse a smaller key
-                if (!present)
-                    break;
+                if (!present) break;
                 if (k < key_of[h]) {
                     CHECK_THROWS_AS(heap.increase_key(h, k), collide::Error);
                     break;
@@ -320,8 +313,7 @@ TEST_CASE(
                 break;
         }
         mismatches += (heap.size() != key_of.size());
-        if constexpr (!validate_heaps)
-            broken += !heap.check_invariants();
+        if constexpr (!validate_heaps) broken += !heap.check_invariants();
     }
     CHECK(mismatches == 0);
     CHECK(broken == 0);
@@ -357,7 +349,9 @@ namespace {
 struct OwnedKey {
     int key = 0;
     std::uint32_t handle = 0;
-    bool operator<(const OwnedKey& o) const { return key != o.key ? key < o.key : handle < o.handle; }
+    bool operator<(const OwnedKey& o) const {
+        return key != o.key ? key < o.key : handle < o.handle;
+    }
 };
 struct OwnerOf {
     std::uint32_t operator()(const OwnedKey& k) const noexcept { return k.handle; }
@@ -365,7 +359,8 @@ struct OwnerOf {
 
 }  // namespace
 
-TEST_CASE("IndexedDaryHeap with keys naming their handles matches a model and refuses a wrong name") {
+TEST_CASE(
+    "IndexedDaryHeap with keys naming their handles matches a model and refuses a wrong name") {
     constexpr unsigned handles = 200;
     IndexedDaryHeap<OwnedKey, Orientation::min, 4, std::less<OwnedKey>, OwnerOf> heap(handles);
     std::set<std::pair<int, unsigned>> order;  // model: (key, handle)
@@ -379,7 +374,8 @@ TEST_CASE("IndexedDaryHeap with keys naming their handles matches a model and re
         const unsigned h = handle(rng);
         const int k = key(rng);
         if (op % 3 == 2 && !order.empty()) {
-            mismatches += heap.top() != order.begin()->second || heap.top_key().key != order.begin()->first;
+            mismatches +=
+                heap.top() != order.begin()->second || heap.top_key().key != order.begin()->first;
             const unsigned got = heap.pop();
             order.erase({key_of[got], got});
             key_of.erase(got);
@@ -412,7 +408,9 @@ TEST_CASE("IndexedDaryHeap larger than the caches (sinks prefetch levels ahead) 
         int key = 0;
         std::uint32_t handle = 0;
         std::array<char, 248> ballast{};
-        bool operator<(const FatKey& o) const { return key != o.key ? key < o.key : handle < o.handle; }
+        bool operator<(const FatKey& o) const {
+            return key != o.key ? key < o.key : handle < o.handle;
+        }
     };
     struct FatOwner {
         std::uint32_t operator()(const FatKey& k) const noexcept { return k.handle; }
@@ -442,7 +440,8 @@ TEST_CASE("IndexedDaryHeap larger than the caches (sinks prefetch levels ahead) 
         if (op % 4 == 3 && !order.empty()) {
             // The engine's step: the top's key moves later (a sink from the root).
             const unsigned top = heap.top();
-            mismatches += top != order.begin()->second || heap.top_key().key != order.begin()->first;
+            mismatches +=
+                top != order.begin()->second || heap.top_key().key != order.begin()->first;
             set_key(top, order.begin()->first + key(rng));
         } else if (op % 4 == 2 && !order.empty()) {
             const unsigned got = heap.pop();
@@ -491,15 +490,12 @@ struct TextbookMaxHeap {
         std::size_t i = 0;
         for (;;) {
             std::size_t best = D * i + 1;
-            if (best >= a.size())
-                break;
+            if (best >= a.size()) break;
             for (std::size_t c = best + 1; c < std::min<std::size_t>(D * i + D + 1, a.size());
                  ++c) {
-                if (a[best] < a[c])
-                    best = c;
+                if (a[best] < a[c]) best = c;
             }
-            if (!(a[i] < a[best]))
-                break;
+            if (!(a[i] < a[best])) break;
             std::swap(a[i], a[best]);
             i = best;
         }
@@ -576,11 +572,9 @@ TEST_CASE("heaps larger than the caches (pop prefetches levels ahead) match the 
 
 TEST_CASE("a d-ary heap stores item 1 at the start of a cache line, so children share lines") {
     DaryHeap<double, Orientation::min, 4> heap;
-    for (int i = 0; i < 100; ++i)
-        heap.push(i);
+    for (int i = 0; i < 100; ++i) heap.push(i);
     CHECK(reinterpret_cast<std::uintptr_t>(heap.array().data() + 1) % heap_line_bytes == 0);
     DaryHeap<SizedItem<16>, Orientation::max, 4> wide;
-    for (int i = 0; i < 100; ++i)
-        wide.push(SizedItem<16>{i, {}});
+    for (int i = 0; i < 100; ++i) wide.push(SizedItem<16>{i, {}});
     CHECK(reinterpret_cast<std::uintptr_t>(wide.array().data() + 1) % heap_line_bytes == 0);
 }

@@ -22,7 +22,8 @@ namespace {
 
 /// Pushes every value, then pops everything; returns the pop order.
 template <Queue Q>
-std::vector<typename Q::value_type> drain_after_pushing(Q q, const std::vector<typename Q::value_type>& in) {
+std::vector<typename Q::value_type> drain_after_pushing(
+    Q q, const std::vector<typename Q::value_type>& in) {
     for (const auto& x : in) q.push(x);
     std::vector<typename Q::value_type> out;
     while (!q.empty()) {
@@ -53,13 +54,15 @@ TEST_CASE("parse_queue_kind accepts every documented spelling and round-trips to
     CHECK(parse_queue_kind("dary:17") == QueueKind{QueueFamily::dary, 17});
     CHECK(parse_queue_kind("indexed") == QueueKind{QueueFamily::indexed, default_indexed_arity});
     CHECK(parse_queue_kind("indexed:8") == QueueKind{QueueFamily::indexed, 8});
-    for (const char* text : {"unordered", "ordered", "binary", "dary:2", "dary:8", "indexed:2", "indexed:3"}) {
+    for (const char* text :
+         {"unordered", "ordered", "binary", "dary:2", "dary:8", "indexed:2", "indexed:3"}) {
         CHECK(to_string(parse_queue_kind(text)) == text);
     }
 }
 
 TEST_CASE("parse_queue_kind names the option and the bad token") {
-    CHECK(error_message("x") == "--pq: unknown queue 'x' (expected unordered|ordered|binary|dary:D|indexed)");
+    CHECK(error_message("x") ==
+          "--pq: unknown queue 'x' (expected unordered|ordered|binary|dary:D|indexed)");
     CHECK(error_message("dary").find("'dary'") != std::string::npos);
     CHECK(error_message("dary:").find("'dary:'") != std::string::npos);
     CHECK(error_message("dary:1").find("'dary:1'") != std::string::npos);
@@ -79,8 +82,9 @@ TEST_CASE("parse_queue_kind names the option and the bad token") {
 TEST_CASE("with_queue hands f a queue of the kind asked for, each popping in the same order") {
     const std::vector<int> in{5, 1, 9, 3, 9, 0, 7, 7, -2};
     const std::vector<int> expected{-2, 0, 1, 3, 5, 7, 7, 9, 9};
-    for (const char* text : {"unordered", "ordered", "binary", "dary:2", "dary:3", "dary:4", "dary:8",
-                             "dary:5", "indexed", "indexed:2", "indexed:3", "indexed:8"}) {
+    for (const char* text :
+         {"unordered", "ordered", "binary", "dary:2", "dary:3", "dary:4", "dary:8", "dary:5",
+          "indexed", "indexed:2", "indexed:3", "indexed:8"}) {
         CAPTURE(text);
         const auto out = with_queue<int, Orientation::min, std::less<int>>(
             parse_queue_kind(text), [&](auto q) { return drain_after_pushing(std::move(q), in); });
@@ -88,16 +92,18 @@ TEST_CASE("with_queue hands f a queue of the kind asked for, each popping in the
     }
 }
 
-TEST_CASE("with_queue picks compile-time types for the common arities and a run-time one otherwise") {
+TEST_CASE(
+    "with_queue picks compile-time types for the common arities and a run-time one otherwise") {
     const auto arity_of = [](const char* text) {
-        return with_queue<int, Orientation::max, std::less<int>>(parse_queue_kind(text), [](auto&& q) {
-            using Q = std::remove_cvref_t<decltype(q)>;
-            if constexpr (requires { Q::arity; }) {
-                return std::make_tuple(Q::arity, std::size_t{q.d()});
-            } else {
-                return std::make_tuple(1u, std::size_t{0});
-            }
-        });
+        return with_queue<int, Orientation::max, std::less<int>>(
+            parse_queue_kind(text), [](auto&& q) {
+                using Q = std::remove_cvref_t<decltype(q)>;
+                if constexpr (requires { Q::arity; }) {
+                    return std::make_tuple(Q::arity, std::size_t{q.d()});
+                } else {
+                    return std::make_tuple(1u, std::size_t{0});
+                }
+            });
     };
     CHECK(arity_of("binary") == std::make_tuple(2u, std::size_t{2}));
     CHECK(arity_of("dary:8") == std::make_tuple(8u, std::size_t{8}));

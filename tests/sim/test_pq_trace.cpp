@@ -38,7 +38,8 @@ std::size_t column_of(const Trace& trace, const char* kind) {
 
 }  // namespace
 
-TEST_CASE("the lecture's sequence: removals return Q, X, P and the ordered array ends A E E L M P") {
+TEST_CASE(
+    "the lecture's sequence: removals return Q, X, P and the ordered array ends A E E L M P") {
     const auto ops = parse_trace_ops("P Q E * X A M * P L E *");
     const auto kinds = default_trace_queues();
     const Trace trace = run_trace(ops, Orientation::max, kinds);
@@ -94,12 +95,15 @@ TEST_CASE("numbers compare as numbers, words byte by byte") {
 }
 
 TEST_CASE("bad operation strings name the offending token") {
-    CHECK(parse_error("P Q ! *") == "--ops: token 3 '!': not a key (a word of letters or an integer) nor '*' (remove)");
-    CHECK(parse_error("P Q1") .find("token 2 'Q1'") != std::string::npos);
-    CHECK(parse_error("P 3 Q").rfind("--ops: token 2 '3': is a number but the first key 'P' is a word", 0) == 0);
-    CHECK(parse_error("* 4 x").find("token 3 'x': is a word but the first key '4' is a number") != std::string::npos);
-    CHECK(parse_error("99999999999999999999").find("token 1 '99999999999999999999': integer out of range") !=
+    CHECK(parse_error("P Q ! *") ==
+          "--ops: token 3 '!': not a key (a word of letters or an integer) nor '*' (remove)");
+    CHECK(parse_error("P Q1").find("token 2 'Q1'") != std::string::npos);
+    CHECK(parse_error("P 3 Q").rfind(
+              "--ops: token 2 '3': is a number but the first key 'P' is a word", 0) == 0);
+    CHECK(parse_error("* 4 x").find("token 3 'x': is a word but the first key '4' is a number") !=
           std::string::npos);
+    CHECK(parse_error("99999999999999999999")
+              .find("token 1 '99999999999999999999': integer out of range") != std::string::npos);
     CHECK(parse_error("   ").find("no operations") != std::string::npos);
     CHECK(parse_error("- +").find("token 1 '-'") != std::string::npos);
 }

@@ -3,13 +3,12 @@
 
 #include <doctest/doctest.h>
 
-#include "../support/input_error.hpp"
-
 #include <cmath>
 #include <limits>
 #include <random>
 #include <string>
 
+#include "../support/input_error.hpp"
 #include "collide/error.hpp"
 #include "collide/sim/scene_check.hpp"
 
@@ -37,8 +36,7 @@ bool brute_force_overlap(const Scene& scene) {
             const Disc& a = scene.discs[i];
             const Disc& b = scene.discs[j];
             const double limit = (a.radius + b.radius) * (1.0 - contact_tolerance);
-            if (norm2(scene.box.displacement(a.position, b.position)) < limit * limit)
-                return true;
+            if (norm2(scene.box.displacement(a.position, b.position)) < limit * limit) return true;
         }
     }
     return false;
@@ -104,8 +102,7 @@ TEST_CASE("validation: every disc outside a walled box is listed with its origin
 
 TEST_CASE("validation: long lists of problems are cut short") {
     Scene s;
-    for (int i = 0; i < 20; ++i)
-        s.discs.push_back(disc(2.0 + i, 0.5, 0.1));
+    for (int i = 0; i < 20; ++i) s.discs.push_back(disc(2.0 + i, 0.5, 0.1));
     const std::string msg = validation_error(s);
     CHECK(contains(msg, "20 discs lie outside"));
     CHECK(contains(msg, "and 15 more"));
@@ -147,8 +144,7 @@ TEST_CASE("validation: a big disc among many small ones (one tracer) is checked 
             const double x = 0.0125 + 0.025 * i;
             const double y = 0.0125 + 0.025 * j;
             const double distance = std::hypot(x - 0.5, y - 0.5);
-            if (distance < 0.25)
-                continue;
+            if (distance < 0.25) continue;
             nearest = std::min(nearest, distance);
             s.discs.push_back(disc(x, y, 0.005));
         }

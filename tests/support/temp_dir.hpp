@@ -15,8 +15,10 @@ struct TempDir {
 
     /// Creates $TMPDIR/collide_<name>_XXXXXX (unique, so parallel test processes never share it).
     explicit TempDir(const std::string& name) {
-        std::string pattern = (std::filesystem::temp_directory_path() / ("collide_" + name + "_XXXXXX")).string();
-        if (mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp failed for " + pattern);
+        std::string pattern =
+            (std::filesystem::temp_directory_path() / ("collide_" + name + "_XXXXXX")).string();
+        if (mkdtemp(pattern.data()) == nullptr)
+            throw std::runtime_error("mkdtemp failed for " + pattern);
         path = pattern;
     }
     ~TempDir() {

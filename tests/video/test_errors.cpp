@@ -153,8 +153,7 @@ TEST_CASE("a writer destroyed without finish() deletes its temporary and keeps t
     write_bytes(dir / "out.mp4", "previous video");
     {
         VideoWriter writer(small_options(dir / "out.mp4"));
-        for (int i = 0; i < 3; ++i)
-            writer.write(test_pattern(160, 90, i));
+        for (int i = 0; i < 3; ++i) writer.write(test_pattern(160, 90, i));
         CHECK(dir.entries().size() == 2);  // the destination and our hidden temporary
     }
     CHECK(read_bytes(dir / "out.mp4") == "previous video");
@@ -186,10 +185,8 @@ TEST_CASE("the cancel hook stops write() and finish() with an error, leaving no 
             check_error([&] { writer.finish(); }, collide::ErrorKind::runtime, "interrupted");
         }
         CHECK(dir.entries().size() == 1);
-        if (format != VideoFormat::png_sequence)
-            CHECK(read_bytes(path) == "previous");
-        if (format == VideoFormat::png_sequence)
-            CHECK(std::filesystem::is_empty(path));
+        if (format != VideoFormat::png_sequence) CHECK(read_bytes(path) == "previous");
+        if (format == VideoFormat::png_sequence) CHECK(std::filesystem::is_empty(path));
     }
 }
 
@@ -210,10 +207,8 @@ int interrupt_helper_run(const std::filesystem::path& output, int signal_number,
     // encode for a while, so the signal lands in the middle of an encode.
     bool started = false;
     for (int attempt = 0; attempt < 2000 && !started; ++attempt) {
-        for (const auto& name : dir.entries())
-            started = started || name.front() == '.';
-        if (!started)
-            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        for (const auto& name : dir.entries()) started = started || name.front() == '.';
+        if (!started) std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
     CHECK(started);
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
@@ -260,8 +255,7 @@ TEST_CASE("a full disk is a clear runtime error, not a crash, and leaves no part
                 options.format = format;
                 options.crf = 0;  // lossless: big packets
                 VideoWriter writer(options);
-                for (int i = 0; i < 40; ++i)
-                    writer.write(test_pattern(160, 90, i));
+                for (int i = 0; i < 40; ++i) writer.write(test_pattern(160, 90, i));
                 writer.finish();
             } catch (const collide::Error& e) {
                 const std::string message = e.what();
@@ -269,8 +263,7 @@ TEST_CASE("a full disk is a clear runtime error, not a crash, and leaves no part
                                message.find("File too large") != std::string::npos
                            ? 0
                            : 4;
-                if (code != 0)
-                    std::fprintf(stderr, "unexpected message: %s\n", e.what());
+                if (code != 0) std::fprintf(stderr, "unexpected message: %s\n", e.what());
             } catch (...) {
                 code = 5;
             }

@@ -58,8 +58,7 @@ TEST_CASE("PNG sequence: zero-padded names in a directory, exact pixels, old dir
     options.width = 40;
     options.height = 30;
     VideoWriter writer(options);
-    for (int i = 0; i < 3; ++i)
-        writer.write(test_pattern(40, 30, i));
+    for (int i = 0; i < 3; ++i) writer.write(test_pattern(40, 30, i));
     // Until finish() the old directory stays as it was.
     CHECK(std::filesystem::exists(path / "stale.txt"));
     writer.finish();
@@ -91,8 +90,7 @@ TEST_CASE("GIF: generated palette, frame rate capped by dropping frames evenly")
     REQUIRE(writer.notices().size() == 1);
     CHECK(writer.notices()[0].find("50 to 25 fps") != std::string::npos);
     constexpr int frames = 10;
-    for (int i = 0; i < frames; ++i)
-        writer.write(test_pattern(160, 90, i));
+    for (int i = 0; i < frames; ++i) writer.write(test_pattern(160, 90, i));
     writer.finish();
 
     const Decoded decoded = decode_file(options.path);
@@ -123,8 +121,7 @@ TEST_CASE("GIF at a low frame rate keeps every frame and says nothing") {
     options.fps = 10;
     VideoWriter writer(options);
     CHECK(writer.notices().empty());
-    for (int i = 0; i < 3; ++i)
-        writer.write(test_pattern(64, 48, i));
+    for (int i = 0; i < 3; ++i) writer.write(test_pattern(64, 48, i));
     writer.finish();
     CHECK(decode_file(options.path).frames.size() == 3);
 }

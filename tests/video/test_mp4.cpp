@@ -36,8 +36,7 @@ VideoOptions mp4_options(const std::filesystem::path& path, int width, int heigh
 
 void encode_pattern(const VideoOptions& options, int count) {
     VideoWriter writer(options);
-    for (int i = 0; i < count; ++i)
-        writer.write(test_pattern(options.width, options.height, i));
+    for (int i = 0; i < count; ++i) writer.write(test_pattern(options.width, options.height, i));
     writer.finish();
 }
 
@@ -110,8 +109,7 @@ TEST_CASE("odd sizes are rounded up to even, with a notice, and keep their conte
     CHECK(writer.output_height() == 92);
     REQUIRE(writer.notices().size() == 1);
     CHECK(writer.notices()[0].find("161x91 rounded up to 162x92") != std::string::npos);
-    for (int i = 0; i < 4; ++i)
-        writer.write(test_pattern(161, 91, i));
+    for (int i = 0; i < 4; ++i) writer.write(test_pattern(161, 91, i));
     writer.finish();
 
     const Decoded decoded = decode_file(path);

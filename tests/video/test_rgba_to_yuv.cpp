@@ -72,8 +72,7 @@ TEST_CASE("random pixels: within 1 code value of the exact formula") {
     std::mt19937 rng(7);
     std::uniform_int_distribution<int> byte(0, 255);
     collide::Image image(64, 32);
-    for (auto& value : image.rgba)
-        value = std::uint8_t(byte(rng));
+    for (auto& value : image.rgba) value = std::uint8_t(byte(rng));
     const Planes planes = convert(image, 1);
     const collide::video::testing::Yuv420 exact = collide::video::testing::exact_yuv420(image);
     int worst = 0;
@@ -94,16 +93,14 @@ TEST_CASE("the SIMD kernels give the portable code's bytes") {
     for (const int width : {2, 14, 16, 18, 46, 130}) {
         CAPTURE(width);
         collide::Image image(width, 6);
-        for (auto& value : image.rgba)
-            value = std::uint8_t(byte(rng));
+        for (auto& value : image.rgba) value = std::uint8_t(byte(rng));
         // Extremes of the 2x2 sums: saturated primaries, white and black blocks.
         const int corners[][3] = {
             {255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {255, 255, 255}, {0, 0, 0}};
         for (int x = 0; x < width; ++x) {
             for (int y = 0; y < 2; ++y) {
                 std::uint8_t* p = image.pixel(x, y);
-                for (int c = 0; c < 3; ++c)
-                    p[c] = std::uint8_t(corners[(x / 2) % 5][c]);
+                for (int c = 0; c < 3; ++c) p[c] = std::uint8_t(corners[(x / 2) % 5][c]);
             }
         }
         Planes fast(width, image.height);

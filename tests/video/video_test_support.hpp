@@ -35,8 +35,7 @@ inline Image test_pattern(int width, int height, int index) {
             p[1] = static_cast<std::uint8_t>(60 + 120 * y / height);
             p[2] = static_cast<std::uint8_t>(200 - 100 * (x + y) / (width + height));
             p[3] = 255;
-            if (y < height / 8 && (x / 4) % 2 == 0)
-                p[0] = p[1] = p[2] = 230;  // stripes
+            if (y < height / 8 && (x / 4) % 2 == 0) p[0] = p[1] = p[2] = 230;  // stripes
             for (int disc = 0; disc < 3; ++disc) {
                 const double cx = (width * (0.2 + 0.3 * disc) + 3.0 * index) - width * 0.0;
                 const double cy = height * (0.5 + 0.2 * std::sin(0.3 * index + disc));
@@ -117,8 +116,7 @@ inline Yuv420 exact_yuv420(const Image& image) {
 /// PSNR of one plane against a reference plane of the same size, in dB.
 inline double psnr_plane(const std::vector<double>& a, const std::vector<double>& b) {
     double squared = 0.0;
-    for (std::size_t i = 0; i < a.size(); ++i)
-        squared += (a[i] - b[i]) * (a[i] - b[i]);
+    for (std::size_t i = 0; i < a.size(); ++i) squared += (a[i] - b[i]) * (a[i] - b[i]);
     const double mse = squared / double(a.size());
     return mse == 0.0 ? 99.0 : 10.0 * std::log10(255.0 * 255.0 / mse);
 }
@@ -156,16 +154,13 @@ inline Decoded decode_file(const std::filesystem::path& path) {
     }
     std::unique_ptr<AVFormatContext*, void (*)(AVFormatContext**)> format_owner(
         &format, avformat_close_input);
-    if (avformat_find_stream_info(format, nullptr) < 0)
-        throw std::runtime_error("no stream info");
+    if (avformat_find_stream_info(format, nullptr) < 0) throw std::runtime_error("no stream info");
     const int index = av_find_best_stream(format, AVMEDIA_TYPE_VIDEO, -1, -1, nullptr, 0);
-    if (index < 0)
-        throw std::runtime_error("no video stream");
+    if (index < 0) throw std::runtime_error("no video stream");
     AVStream* stream = format->streams[index];
     const AVCodecParameters* par = stream->codecpar;
     const AVCodec* decoder = avcodec_find_decoder(par->codec_id);
-    if (decoder == nullptr)
-        throw std::runtime_error("no decoder");
+    if (decoder == nullptr) throw std::runtime_error("no decoder");
     out.codec = decoder->name;
     out.width = par->width;
     out.height = par->height;
@@ -182,8 +177,7 @@ inline Decoded decode_file(const std::filesystem::path& path) {
     std::unique_ptr<AVCodecContext*, void (*)(AVCodecContext**)> codec_owner(&codec,
                                                                              avcodec_free_context);
     avcodec_parameters_to_context(codec, par);
-    if (avcodec_open2(codec, decoder, nullptr) < 0)
-        throw std::runtime_error("cannot open decoder");
+    if (avcodec_open2(codec, decoder, nullptr) < 0) throw std::runtime_error("cannot open decoder");
     AVPacket* packet = av_packet_alloc();
     std::unique_ptr<AVPacket*, void (*)(AVPacket**)> packet_owner(&packet, av_packet_free);
     AVFrame* frame = av_frame_alloc();
@@ -231,8 +225,7 @@ inline Decoded decode_file(const std::filesystem::path& path) {
         }
     };
     while (av_read_frame(format, packet) >= 0) {
-        if (packet->stream_index == index)
-            avcodec_send_packet(codec, packet);
+        if (packet->stream_index == index) avcodec_send_packet(codec, packet);
         av_packet_unref(packet);
         receive_all();
     }
@@ -257,13 +250,11 @@ inline std::vector<std::string> mp4_top_level_boxes(const std::filesystem::path&
         if (size == 1) {
             in.read(reinterpret_cast<char*>(header) + 8, 8);
             size = 0;
-            for (int i = 8; i < 16; ++i)
-                size = (size << 8) | header[i];
+            for (int i = 8; i < 16; ++i) size = (size << 8) | header[i];
         } else if (size == 0) {
             size = file_size - offset;
         }
-        if (size < 8)
-            break;
+        if (size < 8) break;
         offset += size;
     }
     return boxes;
@@ -275,8 +266,7 @@ class ScratchDirectory {
     ScratchDirectory() {
         std::string name =
             (std::filesystem::temp_directory_path() / "collide-video-XXXXXX").string();
-        if (mkdtemp(name.data()) == nullptr)
-            throw std::runtime_error("mkdtemp failed");
+        if (mkdtemp(name.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
         path_ = name;
     }
     ~ScratchDirectory() {

@@ -39,7 +39,7 @@ using GlProcLoader = GlProc (*)(const char* name);
 /// destroying it destroys the context, so GL objects must be destroyed first (the Renderer
 /// declares its GL objects after its context for exactly that reason).
 class Context {
-public:
+  public:
     Context() = default;
     Context(const Context&) = delete;
     Context& operator=(const Context&) = delete;

@@ -12,7 +12,7 @@ namespace collide::render {
 
 /// A GLFW window with its own GL context that displays images. Move-only (held by unique_ptr).
 class PreviewWindow {
-public:
+  public:
     PreviewWindow(const PreviewWindow&) = delete;
     PreviewWindow& operator=(const PreviewWindow&) = delete;
     virtual ~PreviewWindow() = default;
@@ -22,14 +22,13 @@ public:
     /// Throws collide::Error (runtime) on GL failure.
     virtual bool show(const Image& image) = 0;
 
-protected:
+  protected:
     PreviewWindow() = default;
 };
 
 /// Opens a preview window of `width` x `height` pixels titled `title`. Returns null (after one
 /// notice) when no display is available; never throws for that reason.
-[[nodiscard]] std::unique_ptr<PreviewWindow> open_preview(int width, int height,
-                                                          const char* title,
+[[nodiscard]] std::unique_ptr<PreviewWindow> open_preview(int width, int height, const char* title,
                                                           const NoticeSink& notice = {});
 
 }  // namespace collide::render

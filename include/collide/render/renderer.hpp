@@ -39,7 +39,8 @@ enum class ColorMode {
 /// "scene" / "speed" / "mass" / "tag".
 [[nodiscard]] std::string_view color_mode_name(ColorMode mode) noexcept;
 /// Parses a colour mode name; throws collide::Error (input) naming `field` otherwise.
-[[nodiscard]] ColorMode parse_color_mode(std::string_view text, std::string_view field = "color_mode");
+[[nodiscard]] ColorMode parse_color_mode(std::string_view text,
+                                         std::string_view field = "color_mode");
 
 /// Everything that stays fixed for a whole video.
 struct RenderConfig {
@@ -53,9 +54,9 @@ struct RenderConfig {
     /// Mass range of ColorMode::mass (log scale), > 0, mass_max >= mass_min.
     double mass_min = 1.0;
     double mass_max = 1.0;
-    bool trails = true;      ///< fading trails behind tagged discs
-    int trail_length = 48;   ///< frames of history kept per tagged disc, 2..1024
-    bool overlays = true;    ///< titles, counters, legend and the bottom strip; off = discs only
+    bool trails = true;     ///< fading trails behind tagged discs
+    int trail_length = 48;  ///< frames of history kept per tagged disc, 2..1024
+    bool overlays = true;   ///< titles, counters, legend and the bottom strip; off = discs only
     /// Font for all text (DejaVu Sans from fonts-dejavu-core). A missing file is a runtime error
     /// when the Renderer is constructed with overlays on.
     std::string font_path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
@@ -92,7 +93,7 @@ struct FrameContent {
 /// sees only snapshots), so feed frames in time order; a snapshot whose disc count changes or
 /// whose time goes backwards resets that panel's trails. Not thread-safe; one per thread.
 class Renderer {
-public:
+  public:
     /// Creates the context (see make_context) and all GL resources. Throws collide::Error:
     /// input for an invalid config, runtime when the context, shaders or font cannot be set up.
     explicit Renderer(const RenderConfig& config, Backend backend = Backend::automatic,
@@ -123,7 +124,7 @@ public:
     [[nodiscard]] Backend backend() const noexcept;
     [[nodiscard]] const RenderConfig& config() const noexcept;
 
-private:
+  private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

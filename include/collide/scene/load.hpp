@@ -55,7 +55,8 @@ struct BuiltinScene {
                                      const SceneOptions& options = {});
 
 /// Reads, parses and validates a TOML scene file (named after its stem).
-[[nodiscard]] Scene load_toml_scene(const std::filesystem::path& path, const SceneOptions& options = {});
+[[nodiscard]] Scene load_toml_scene(const std::filesystem::path& path,
+                                    const SceneOptions& options = {});
 
 /// The candidate closest to `word` by edit distance, or "" when none is close enough to be a
 /// plausible typo ("radus" -> "radius"). Used for "unknown key ... (did you mean ...?)".

@@ -26,7 +26,7 @@ namespace collide::sim {
 /// top(), empty() and size() (e.g. pq::DaryHeap<Event, Orientation::min, 2, EventLess>).
 template <class Queue>
 class ClassicEngine final : public Engine {
-public:
+  public:
     /// Copies the scene (validated by the caller) and predicts every initial event:
     /// O(N^2) time, O(number of predicted events) memory.
     explicit ClassicEngine(const Scene& scene, Queue queue = Queue{})
@@ -113,18 +113,21 @@ public:
         m.msd = mean_squared_displacement();
         m.wall_seconds = wall_seconds_;
         if (wall_seconds_ > 0.0) {
-            m.collisions_per_second = static_cast<double>(m.collisions_pair + m.collisions_wall) / wall_seconds_;
+            m.collisions_per_second =
+                static_cast<double>(m.collisions_pair + m.collisions_wall) / wall_seconds_;
         }
         m.engine_bytes = bytes();
         return m;
     }
 
-    void set_collision_listener(CollisionListener listener) override { listener_ = std::move(listener); }
+    void set_collision_listener(CollisionListener listener) override {
+        listener_ = std::move(listener);
+    }
 
     /// The queue, for teaching traces and queue statistics.
     [[nodiscard]] const Queue& queue() const noexcept { return queue_; }
 
-private:
+  private:
     [[nodiscard]] Vec2 position(std::size_t i) const noexcept { return {px_[i], py_[i]}; }
     [[nodiscard]] Vec2 velocity(std::size_t i) const noexcept { return {vx_[i], vy_[i]}; }
     void set_velocity(std::size_t i, Vec2 v) noexcept {
@@ -204,8 +207,10 @@ private:
         const double tx = kinematics::time_to_wall(pi.x, vi.x, ri, box_.width);
         const double ty = kinematics::time_to_wall(pi.y, vi.y, ri, box_.height);
         predictions_ += 2;
-        if (tx != kinematics::never) push(Event{now_ + tx, EventKind::xwall, i, no_disc, count_[i], 0});
-        if (ty != kinematics::never) push(Event{now_ + ty, EventKind::ywall, i, no_disc, count_[i], 0});
+        if (tx != kinematics::never)
+            push(Event{now_ + tx, EventKind::xwall, i, no_disc, count_[i], 0});
+        if (ty != kinematics::never)
+            push(Event{now_ + ty, EventKind::ywall, i, no_disc, count_[i], 0});
     }
 
     void offer_pair(std::uint32_t i, std::uint32_t j, double dt) {
@@ -234,7 +239,8 @@ private:
     }
 
     /// See sim::just_collided_slack: a pair still touching after colliding with each other.
-    [[nodiscard]] bool just_collided(std::uint32_t i, std::uint32_t j, Vec2 dr, double sigma) const noexcept {
+    [[nodiscard]] bool just_collided(std::uint32_t i, std::uint32_t j, Vec2 dr,
+                                     double sigma) const noexcept {
         if (last_partner_[i] != j || last_partner_[j] != i) return false;
         const double reach = sigma * (1.0 + just_collided_slack);
         return norm2(dr) < reach * reach;
@@ -289,10 +295,12 @@ private:
     }
 
     [[nodiscard]] std::uint64_t bytes() const noexcept {
-        const std::size_t vecs = (px_.capacity() + py_.capacity() + vx_.capacity() + vy_.capacity()) * sizeof(double) +
-                                 start_.capacity() * sizeof(Vec2);
-        const std::size_t scalars = (radius_.capacity() + mass_.capacity()) * sizeof(double) +
-                                    (count_.capacity() + last_partner_.capacity()) * sizeof(std::uint32_t);
+        const std::size_t vecs =
+            (px_.capacity() + py_.capacity() + vx_.capacity() + vy_.capacity()) * sizeof(double) +
+            start_.capacity() * sizeof(Vec2);
+        const std::size_t scalars =
+            (radius_.capacity() + mass_.capacity()) * sizeof(double) +
+            (count_.capacity() + last_partner_.capacity()) * sizeof(std::uint32_t);
         // The queue's own storage is not visible through its interface; count its entries.
         return vecs + scalars + appearance_.bytes() + stats_.max_size * sizeof(Event);
     }

@@ -28,7 +28,7 @@ struct CollisionRecord {
 using CollisionListener = std::function<void(const CollisionRecord&)>;
 
 class Engine {
-public:
+  public:
     virtual ~Engine() = default;
     Engine() = default;
     Engine(const Engine&) = delete;
@@ -49,8 +49,8 @@ public:
 /// Options shared by the engine factory and the CLI; validate() names the bad field.
 struct EngineOptions {
     std::string engine = "fast";  ///< "fast", "classic" or "time"
-    std::string pq = "binary";    ///< classic engine's queue: unordered|ordered|binary|dary:D|indexed
-    double dt = 0.01;             ///< time-driven quantum
+    std::string pq = "binary";  ///< classic engine's queue: unordered|ordered|binary|dary:D|indexed
+    double dt = 0.01;           ///< time-driven quantum
     std::string td_detect = "all-pairs";  ///< time-driven overlap checks: "all-pairs" or "grid"
 
     /// Throws Error(input) naming the option (--engine, --pq, --dt, --td-detect) that is wrong.

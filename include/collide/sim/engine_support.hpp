@@ -33,7 +33,9 @@ struct Appearance {
     }
 
     /// Discs that enter the mean squared displacement: the tagged ones, or all when none is.
-    [[nodiscard]] bool in_msd(std::size_t i) const noexcept { return !any_tagged || tagged[i] != 0; }
+    [[nodiscard]] bool in_msd(std::size_t i) const noexcept {
+        return !any_tagged || tagged[i] != 0;
+    }
 
     [[nodiscard]] std::size_t bytes() const noexcept {
         return colors.capacity() * sizeof(Rgb8) + tagged.capacity();
@@ -45,8 +47,9 @@ struct Appearance {
 inline void require_forward(double now, double t) {
     if (!(t >= now)) {  // also false for NaN
         throw_input_error("", 0, "until",
-                          "cannot advance to t = " + std::to_string(t) + ": the simulation is at t = " +
-                              std::to_string(now) + " and time never runs backwards");
+                          "cannot advance to t = " + std::to_string(t) +
+                              ": the simulation is at t = " + std::to_string(now) +
+                              " and time never runs backwards");
     }
     if (t > std::numeric_limits<double>::max()) {
         throw_input_error("", 0, "until", "the end time must be finite");
@@ -55,7 +58,7 @@ inline void require_forward(double now, double t) {
 
 /// Accumulates wall-clock seconds spent inside an engine call (RAII over one call).
 class WallClock {
-public:
+  public:
     explicit WallClock(double& total) : total_(total), start_(std::chrono::steady_clock::now()) {}
     ~WallClock() {
         total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
@@ -63,18 +66,25 @@ public:
     WallClock(const WallClock&) = delete;
     WallClock& operator=(const WallClock&) = delete;
 
-private:
+  private:
     double& total_;
     std::chrono::steady_clock::time_point start_;
 };
 
 /// The record handed to listeners: pairs with a < b, walls with b = 0.
-[[nodiscard]] inline CollisionRecord to_record(double t, EventKind kind, std::uint32_t a, std::uint32_t b) {
+[[nodiscard]] inline CollisionRecord to_record(double t, EventKind kind, std::uint32_t a,
+                                               std::uint32_t b) {
     CollisionRecord r;
     r.t = t;
     switch (kind) {
-        case EventKind::xwall: r.kind = CollisionKind::xwall; r.a = a; break;
-        case EventKind::ywall: r.kind = CollisionKind::ywall; r.a = a; break;
+        case EventKind::xwall:
+            r.kind = CollisionKind::xwall;
+            r.a = a;
+            break;
+        case EventKind::ywall:
+            r.kind = CollisionKind::ywall;
+            r.a = a;
+            break;
         default:
             r.kind = CollisionKind::pair;
             r.a = a < b ? a : b;

@@ -40,12 +40,12 @@ inline constexpr double overlap_tolerance = 1e-9;
 /// the lecture). Pair events are normalised to a < b so that the same collision predicted from
 /// either disc is the same key.
 struct Event {
-    double t = 0.0;            ///< absolute simulation time
+    double t = 0.0;  ///< absolute simulation time
     EventKind kind = EventKind::pair;
-    std::uint32_t a = 0;       ///< the disc (pairs: the smaller index)
-    std::uint32_t b = no_disc; ///< the other disc (pairs only)
-    std::uint32_t count_a = 0; ///< a's collision count when predicted
-    std::uint32_t count_b = 0; ///< b's collision count when predicted (pairs only)
+    std::uint32_t a = 0;        ///< the disc (pairs: the smaller index)
+    std::uint32_t b = no_disc;  ///< the other disc (pairs only)
+    std::uint32_t count_a = 0;  ///< a's collision count when predicted
+    std::uint32_t count_b = 0;  ///< b's collision count when predicted (pairs only)
 };
 
 /// Strict total order on events: time, then kind, then disc ids, then counts.

@@ -40,7 +40,7 @@
 namespace collide::sim {
 
 class FastEngine final : public Engine {
-public:
+  public:
     /// Builds the grid and predicts every disc's first event: O(N) expected time and memory.
     /// Throws Error(input) when a periodic box is too small for a 3 x 3 grid.
     explicit FastEngine(const Scene& scene);
@@ -53,7 +53,9 @@ public:
     [[nodiscard]] double time() const noexcept override { return now_; }
     [[nodiscard]] Snapshot snapshot() const override;
     [[nodiscard]] Measurements measurements() const override;
-    void set_collision_listener(CollisionListener listener) override { listener_ = std::move(listener); }
+    void set_collision_listener(CollisionListener listener) override {
+        listener_ = std::move(listener);
+    }
 
     /// Grid cells per axis (for tests and the benchmark report).
     [[nodiscard]] std::uint32_t cells_x() const noexcept { return nx_; }
@@ -65,18 +67,18 @@ public:
     /// O(N) consistency check (cell membership, heap invariants, one event per disc); for tests.
     [[nodiscard]] bool check_invariants() const;
 
-private:
+  private:
     /// What a neighbour scan and an event on the disc read, in one cache line. Counters that each
     /// event reads for both discs sit here too: as separate arrays they cost a cache miss per disc
     /// and per array at large N (the access pattern jumps across the whole box).
     struct alignas(64) Particle {
-        double x, y;    ///< position at local time t (periodic: within one cell of the box)
-        double vx, vy;  ///< velocity
-        double t;       ///< local clock: the time the position refers to
-        double r;       ///< radius
-        std::uint32_t next;          ///< next disc in the same cell list (no_disc ends it)
-        std::uint32_t cell;          ///< cell of the centre (cy * nx + cx), tracked by cell events
-        std::uint32_t count;         ///< collisions of this disc (invalidates partners' events)
+        double x, y;          ///< position at local time t (periodic: within one cell of the box)
+        double vx, vy;        ///< velocity
+        double t;             ///< local clock: the time the position refers to
+        double r;             ///< radius
+        std::uint32_t next;   ///< next disc in the same cell list (no_disc ends it)
+        std::uint32_t cell;   ///< cell of the centre (cy * nx + cx), tracked by cell events
+        std::uint32_t count;  ///< collisions of this disc (invalidates partners' events)
         std::uint32_t last_partner;  ///< see sim::just_collided_slack
     };
     static_assert(sizeof(Particle) == 64, "one cache line per disc");
@@ -107,7 +109,9 @@ private:
         static Key make(double t, std::uint32_t a, std::uint32_t b, EventKind kind) noexcept {
             return Key{t, a, (static_cast<std::uint32_t>(kind) << 30) | (b & index_mask)};
         }
-        [[nodiscard]] EventKind kind() const noexcept { return static_cast<EventKind>(kind_b >> 30); }
+        [[nodiscard]] EventKind kind() const noexcept {
+            return static_cast<EventKind>(kind_b >> 30);
+        }
         [[nodiscard]] std::uint32_t b() const noexcept { return kind_b & index_mask; }
     };
     /// Time, then kind, then the discs' scene indices (pairs: smaller, larger; others: disc,
@@ -153,13 +157,15 @@ private:
     [[nodiscard]] bool cannot_beat(Vec2 dr, Vec2 dv, double sigma, double best_t) const noexcept;
     void consider_pair(std::uint32_t i, const Particle& pi, double xi, double yi, std::uint32_t j,
                        double shift_x, double shift_y, Key& best);
-    void consider_pair_images(std::uint32_t i, const Particle& pi, double xi, double yi, std::uint32_t j,
-                              Key& best);
-    void scan_small_neighbours(std::uint32_t i, const Particle& pi, double xi, double yi, Key& best);
-    void scan_cells(std::uint32_t i, const Particle& pi, double xi, double yi, std::int64_t x0, std::int64_t x1,
-                    std::int64_t y0, std::int64_t y1, Key& best);
+    void consider_pair_images(std::uint32_t i, const Particle& pi, double xi, double yi,
+                              std::uint32_t j, Key& best);
+    void scan_small_neighbours(std::uint32_t i, const Particle& pi, double xi, double yi,
+                               Key& best);
+    void scan_cells(std::uint32_t i, const Particle& pi, double xi, double yi, std::int64_t x0,
+                    std::int64_t x1, std::int64_t y0, std::int64_t y1, Key& best);
     void scan_ring(std::uint32_t i, const Particle& pi, double xi, double yi, Key& best);
-    void consider_walls_and_cells(std::uint32_t i, const Particle& pi, double xi, double yi, Key& best);
+    void consider_walls_and_cells(std::uint32_t i, const Particle& pi, double xi, double yi,
+                                  Key& best);
 
     // --- bookkeeping
     void advance_disc(std::uint32_t i) noexcept;
@@ -176,8 +182,8 @@ private:
     // grid
     std::uint32_t nx_ = 1;
     std::uint32_t ny_ = 1;
-    double cw_ = 1.0;  ///< cell width
-    double ch_ = 1.0;  ///< cell height
+    double cw_ = 1.0;             ///< cell width
+    double ch_ = 1.0;             ///< cell height
     double big_threshold_ = 0.0;  ///< radius above which a disc is big (+inf: none)
     double small_radius_max_ = 0.0;
     std::vector<std::uint32_t> head_;  ///< first disc of each cell list (no_disc: empty)
@@ -185,13 +191,13 @@ private:
     // discs
     std::vector<Particle> p_;
     std::vector<Cold> cold_;
-    std::vector<Image> image_;                  ///< periodic unwrapping (mean squared displacement)
-    std::vector<Vec2> start_;                   ///< positions at t = 0
+    std::vector<Image> image_;  ///< periodic unwrapping (mean squared displacement)
+    std::vector<Vec2> start_;   ///< positions at t = 0
     /// Discs are numbered internally along a Z-order curve over the cells, so that neighbours in
     /// space are mostly neighbours in memory (at 10^5 discs in scene order every neighbour was a
     /// cache miss). scene_index_[i] is the scene's index of internal disc i.
     std::vector<std::uint32_t> scene_index_;
-    std::vector<std::uint32_t> big_;            ///< indices of big discs
+    std::vector<std::uint32_t> big_;  ///< indices of big discs
 
     KeyLess key_less_{&scene_index_};
     Heap heap_{0, key_less_};

@@ -20,25 +20,25 @@ struct QueueStats {
 
 struct Measurements {
     // --- time and counts
-    double t = 0.0;                     ///< simulation time
-    std::uint64_t events = 0;           ///< events processed (collisions + engine-internal events)
-    std::uint64_t collisions_pair = 0;  ///< disc-disc collisions resolved
-    std::uint64_t collisions_wall = 0;  ///< disc-wall collisions resolved (x and y walls)
-    std::uint64_t predictions = 0;      ///< collision-time computations (pair + wall)
-    std::uint64_t collisions_xwall = 0; ///< of collisions_wall: left/right walls
-    std::uint64_t collisions_ywall = 0; ///< of collisions_wall: bottom/top walls
-    std::uint64_t cell_crossings = 0;   ///< fast engine: cell-crossing events (part of `events`)
+    double t = 0.0;                      ///< simulation time
+    std::uint64_t events = 0;            ///< events processed (collisions + engine-internal events)
+    std::uint64_t collisions_pair = 0;   ///< disc-disc collisions resolved
+    std::uint64_t collisions_wall = 0;   ///< disc-wall collisions resolved (x and y walls)
+    std::uint64_t predictions = 0;       ///< collision-time computations (pair + wall)
+    std::uint64_t collisions_xwall = 0;  ///< of collisions_wall: left/right walls
+    std::uint64_t collisions_ywall = 0;  ///< of collisions_wall: bottom/top walls
+    std::uint64_t cell_crossings = 0;    ///< fast engine: cell-crossing events (part of `events`)
     QueueStats queue;
 
     // --- physics (k_B = 1)
-    double kinetic_energy = 0.0;   ///< sum of m v^2 / 2
-    Vec2 momentum;                 ///< sum of m v
-    double temperature = 0.0;      ///< kT = KE / N (two degrees of freedom per disc)
-    double pressure = 0.0;         ///< virial (periodic) or wall impulse per length per time
-    double compressibility = 0.0;  ///< Z = P A / (N k T)
-    double packing_fraction = 0.0; ///< sum of pi r^2 / A
-    double max_overlap = 0.0;      ///< deepest current overlap between two discs (length units)
-    double msd = 0.0;              ///< mean squared displacement of tagged discs (all if none)
+    double kinetic_energy = 0.0;    ///< sum of m v^2 / 2
+    Vec2 momentum;                  ///< sum of m v
+    double temperature = 0.0;       ///< kT = KE / N (two degrees of freedom per disc)
+    double pressure = 0.0;          ///< virial (periodic) or wall impulse per length per time
+    double compressibility = 0.0;   ///< Z = P A / (N k T)
+    double packing_fraction = 0.0;  ///< sum of pi r^2 / A
+    double max_overlap = 0.0;       ///< deepest current overlap between two discs (length units)
+    double msd = 0.0;               ///< mean squared displacement of tagged discs (all if none)
 
     // --- cost
     double wall_seconds = 0.0;           ///< wall-clock time spent inside the engine

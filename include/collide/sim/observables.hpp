@@ -24,8 +24,8 @@ namespace collide::sim {
 /// Deepest overlap max(0, r_i + r_j - |r_ij|) over all pairs (minimum image in periodic boxes;
 /// positions may be unwrapped). Uses a temporary cell grid: O(N) for equal discs, plus
 /// O(N) per big disc. Allocates.
-[[nodiscard]] double max_overlap(const std::vector<Vec2>& positions, const std::vector<double>& radii,
-                                 const Box& box);
+[[nodiscard]] double max_overlap(const std::vector<Vec2>& positions,
+                                 const std::vector<double>& radii, const Box& box);
 
 /// Sum of pi r^2 over the box area.
 [[nodiscard]] double packing_fraction(const std::vector<double>& radii, const Box& box);

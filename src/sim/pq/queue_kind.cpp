@@ -27,7 +27,9 @@ unsigned parse_arity(std::string_view digits, std::string_view option, std::stri
     return d;
 }
 
-bool is_compiled_indexed_arity(unsigned d) { return d == 2 || d == 3 || d == 4 || d == 8; }
+bool is_compiled_indexed_arity(unsigned d) {
+    return d == 2 || d == 3 || d == 4 || d == 8;
+}
 
 }  // namespace
 
@@ -55,11 +57,16 @@ QueueKind parse_queue_kind(std::string_view text, std::string_view option) {
 
 std::string to_string(const QueueKind& kind) {
     switch (kind.family) {
-        case QueueFamily::unordered: return "unordered";
-        case QueueFamily::ordered: return "ordered";
-        case QueueFamily::binary: return "binary";
-        case QueueFamily::dary: return "dary:" + std::to_string(kind.d);
-        case QueueFamily::indexed: return "indexed:" + std::to_string(kind.d);
+        case QueueFamily::unordered:
+            return "unordered";
+        case QueueFamily::ordered:
+            return "ordered";
+        case QueueFamily::binary:
+            return "binary";
+        case QueueFamily::dary:
+            return "dary:" + std::to_string(kind.d);
+        case QueueFamily::indexed:
+            return "indexed:" + std::to_string(kind.d);
     }
     return "unknown";
 }

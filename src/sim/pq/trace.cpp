@@ -13,10 +13,10 @@ namespace collide::pq {
 
 namespace {
 
-[[noreturn]] void reject_token(std::string_view option, std::size_t token, std::string_view spelling,
-                               const std::string& why) {
-    throw_input_error(std::string(option) + ": token " + std::to_string(token) + " '" + std::string(spelling) +
-                      "': " + why);
+[[noreturn]] void reject_token(std::string_view option, std::size_t token,
+                               std::string_view spelling, const std::string& why) {
+    throw_input_error(std::string(option) + ": token " + std::to_string(token) + " '" +
+                      std::string(spelling) + "': " + why);
 }
 
 bool is_word(std::string_view s) {
@@ -46,14 +46,17 @@ TraceKey key_from(std::string_view spelling, std::string_view option, std::size_
     key.numeric = true;
     std::string_view digits = spelling;
     if (digits.front() == '+') digits.remove_prefix(1);  // from_chars takes '-' but not '+'
-    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), key.number);
+    const auto [end, ec] =
+        std::from_chars(digits.data(), digits.data() + digits.size(), key.number);
     if (ec != std::errc{} || end != digits.data() + digits.size()) {
         reject_token(option, token, spelling, "integer out of range");
     }
     return key;
 }
 
-const char* type_name(const TraceKey& key) { return key.numeric ? "a number" : "a word"; }
+const char* type_name(const TraceKey& key) {
+    return key.numeric ? "a number" : "a word";
+}
 
 /// Splits at ASCII white space.
 std::vector<std::string_view> split_tokens(std::string_view text) {
@@ -76,7 +79,8 @@ std::vector<std::string> texts_of(const auto& keys) {
 }
 
 /// The reference model's view of the trace: operation, argument, return value and size.
-std::vector<TraceRow> model_rows(std::span<const TraceOp> ops, Orientation orientation, std::string_view option) {
+std::vector<TraceRow> model_rows(std::span<const TraceOp> ops, Orientation orientation,
+                                 std::string_view option) {
     std::multiset<TraceKey> model;
     std::vector<TraceRow> rows;
     rows.reserve(ops.size());
@@ -84,8 +88,10 @@ std::vector<TraceRow> model_rows(std::span<const TraceOp> ops, Orientation orien
         TraceRow row;
         if (op.remove) {
             row.operation = orientation == Orientation::max ? "remove max" : "remove min";
-            if (model.empty()) reject_token(option, op.token, op.spelling, "removes from an empty queue");
-            const auto next = orientation == Orientation::max ? std::prev(model.end()) : model.begin();
+            if (model.empty())
+                reject_token(option, op.token, op.spelling, "removes from an empty queue");
+            const auto next =
+                orientation == Orientation::max ? std::prev(model.end()) : model.begin();
             row.returned = next->text();
             model.erase(next);
         } else {
@@ -102,14 +108,16 @@ std::vector<TraceRow> model_rows(std::span<const TraceOp> ops, Orientation orien
 /// Runs the operations on one queue, appending its array to every row's contents and checking
 /// each removal against the model's.
 template <Orientation O>
-void add_queue_column(const QueueKind& kind, std::span<const TraceOp> ops, std::vector<TraceRow>& rows) {
+void add_queue_column(const QueueKind& kind, std::span<const TraceOp> ops,
+                      std::vector<TraceRow>& rows) {
     with_queue<TraceKey, O, std::less<TraceKey>>(kind, [&](auto q) {
         for (std::size_t i = 0; i < ops.size(); ++i) {
             if (ops[i].remove) {
                 const std::string got = q.pop().text();
                 if (got != rows[i].returned) {
-                    throw_runtime_error("pq trace: " + to_string(kind) + " returned '" + got + "' at token " +
-                                        std::to_string(ops[i].token) + ", expected '" + rows[i].returned + "'");
+                    throw_runtime_error("pq trace: " + to_string(kind) + " returned '" + got +
+                                        "' at token " + std::to_string(ops[i].token) +
+                                        ", expected '" + rows[i].returned + "'");
                 }
             } else {
                 q.push(ops[i].key);
@@ -123,7 +131,8 @@ void add_queue_column(const QueueKind& kind, std::span<const TraceOp> ops, std::
 
 std::vector<TraceOp> parse_trace_ops(std::string_view ops, std::string_view option) {
     const std::vector<std::string_view> tokens = split_tokens(ops);
-    if (tokens.empty()) throw_input_error(std::string(option) + ": no operations given (e.g. \"P Q E * X\")");
+    if (tokens.empty())
+        throw_input_error(std::string(option) + ": no operations given (e.g. \"P Q E * X\")");
     std::vector<TraceOp> out;
     out.reserve(tokens.size());
     std::size_t first_key = tokens.size();  // index in `out` of the first key; none yet
@@ -161,8 +170,8 @@ std::vector<QueueKind> default_trace_queues() {
             {QueueFamily::indexed, default_indexed_arity}};
 }
 
-Trace run_trace(std::span<const TraceOp> ops, Orientation orientation, std::span<const QueueKind> queues,
-                std::string_view option) {
+Trace run_trace(std::span<const TraceOp> ops, Orientation orientation,
+                std::span<const QueueKind> queues, std::string_view option) {
     Trace trace;
     trace.queues.assign(queues.begin(), queues.end());
     trace.rows = model_rows(ops, orientation, option);

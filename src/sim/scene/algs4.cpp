@@ -37,8 +37,7 @@ std::vector<std::string_view> split_whitespace(std::string_view line) {
         while (i < line.size() && !(line[i] == ' ' || line[i] == '\t' || line[i] == '\r' ||
                                     line[i] == '\f' || line[i] == '\v'))
             ++i;
-        if (i > start)
-            out.push_back(line.substr(start, i - start));
+        if (i > start) out.push_back(line.substr(start, i - start));
     }
     return out;
 }
@@ -48,8 +47,7 @@ std::vector<std::string_view> split_whitespace(std::string_view line) {
 bool parse_double(std::string_view token, double& value) {
     if (!token.empty() && token.front() == '+') {
         token.remove_prefix(1);
-        if (!token.empty() && (token.front() == '-' || token.front() == '+'))
-            return false;
+        if (!token.empty() && (token.front() == '-' || token.front() == '+')) return false;
     }
     const char* end = token.data() + token.size();
     const auto [ptr, ec] = std::from_chars(token.data(), end, value);
@@ -57,8 +55,7 @@ bool parse_double(std::string_view token, double& value) {
 }
 
 bool parse_count(std::string_view token, unsigned long long& value) {
-    if (!token.empty() && token.front() == '+')
-        token.remove_prefix(1);
+    if (!token.empty() && token.front() == '+') token.remove_prefix(1);
     const char* end = token.data() + token.size();
     const auto [ptr, ec] = std::from_chars(token.data(), end, value);
     return ec == std::errc() && ptr == end && !token.empty();
@@ -72,8 +69,7 @@ std::string quoted(std::string_view s) {
         const auto u = static_cast<unsigned char>(c);
         q += (u < 0x20 || u >= 0x7f) ? '?' : c;
     }
-    if (s.size() > shown)
-        q += "...";
+    if (s.size() > shown) q += "...";
     return q + "'";
 }
 
@@ -172,24 +168,21 @@ ParsedScene parse_algs4(std::istream& in, const std::string& file_label) {
     int line = 0;
     while (std::getline(in, text)) {
         ++line;
-        if (blank(text))
-            continue;
+        if (blank(text)) continue;
         if (reader.count_line == 0) {
             reader.read_count(text, line);
         } else {
             reader.read_disc(text, line);
         }
     }
-    if (in.bad())
-        throw_input_error(file_label, line, "", "read error");
+    if (in.bad()) throw_input_error(file_label, line, "", "read error");
     reader.finish();
     return std::move(reader.parsed);
 }
 
 ParsedScene read_algs4_file(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw_input_error(path.string(), 0, "", "cannot open the scene file");
+    if (!in) throw_input_error(path.string(), 0, "", "cannot open the scene file");
     ParsedScene parsed = parse_algs4(in, path.string());
     parsed.scene.name = path.stem().string();
     parsed.scene.title = parsed.scene.name;

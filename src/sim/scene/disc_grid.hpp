@@ -33,8 +33,7 @@ class DiscGrid {
             for (int ix = xs.lo; ix <= xs.hi; ++ix) {
                 const std::size_t cell = row + static_cast<std::size_t>(wrap_index(ix, nx_));
                 for (std::uint32_t e = head_[cell]; e != none; e = entries_[e].next) {
-                    if (visit(entries_[e].id))
-                        return true;
+                    if (visit(entries_[e].id)) return true;
                 }
             }
         }
@@ -63,8 +62,7 @@ class DiscGrid {
     }
     [[nodiscard]] CellRange range(double c, double r, double cell, int n) const noexcept;
     [[nodiscard]] int wrap_index(int i, int n) const noexcept {
-        if (!periodic_)
-            return i;
+        if (!periodic_) return i;
         const int m = i % n;
         return m < 0 ? m + n : m;
     }

@@ -82,8 +82,7 @@ std::size_t resolve_count(const GenerateSpec& spec, const Placement& where,
                           const std::string& prefix) {
     const double disc_area = std::numbers::pi * spec.radius * spec.radius;
     double count = static_cast<double>(spec.count);
-    if (spec.count == 0)
-        count = std::round(spec.packing_fraction * where.region_area / disc_area);
+    if (spec.count == 0) count = std::round(spec.packing_fraction * where.region_area / disc_area);
     if (count < 1.0)
         fail(prefix, "packing_fraction",
              "gives no disc at all in the region (radius " + num(spec.radius) + ")");
@@ -113,8 +112,7 @@ class Occupancy {
         : box_(scene.box),
           grid_(scene.box, 2.0 * radius, 4 * (scene.discs.size() + expected_new) + 64) {
         placed_.reserve(scene.discs.size() + expected_new);
-        for (const Disc& d : scene.discs)
-            add(d.position, d.radius);
+        for (const Disc& d : scene.discs) add(d.position, d.radius);
     }
 
     // Would a disc at p with radius r overlap anything added so far?
@@ -186,8 +184,7 @@ bool place_randomly(Scene& scene, const GenerateSpec& spec, const Placement& whe
         }
         const Vec2 p{rng.uniform(where.lo.x, where.hi.x), rng.uniform(where.lo.y, where.hi.y)};
         const Vec2 q = scene.box.wrap(p);
-        if (occupancy.blocked(q, spec.radius))
-            continue;
+        if (occupancy.blocked(q, spec.radius)) continue;
         scene.discs.push_back(new_disc(spec, q));
         occupancy.add(q, spec.radius);
     }
@@ -275,8 +272,7 @@ class LatticePlacer {
         const Occupancy occupancy(scene_, spec_.radius + jitter, lattice.sites());
         lattice.for_each_site([&](Vec2 p) {
             const Vec2 q = scene_.box.wrap(p);
-            if (!occupancy.blocked(q, spec_.radius + jitter))
-                sites.push_back(q);
+            if (!occupancy.blocked(q, spec_.radius + jitter)) sites.push_back(q);
         });
         return sites;
     }
@@ -286,8 +282,7 @@ class LatticePlacer {
     }
 
     std::size_t free_count(const Lattice& lattice) const {
-        if (scene_.discs.empty())
-            return lattice.sites();
+        if (scene_.discs.empty()) return lattice.sites();
         return free_sites(lattice).size();
     }
 
@@ -298,11 +293,9 @@ class LatticePlacer {
         constexpr int max_rounds = 40;
         for (int round = 0; round < max_rounds; ++round) {
             const Lattice lattice = where_.wraps ? periodic_for(target) : rectangle_for(target);
-            if (!roomy(lattice))
-                break;
+            if (!roomy(lattice)) break;
             const std::size_t free = free_count(lattice);
-            if (free >= count_)
-                return lattice;
+            if (free >= count_) return lattice;
             const double grow =
                 free == 0 ? 2.0 : 1.02 * static_cast<double>(count_) / static_cast<double>(free);
             target =
@@ -340,10 +333,8 @@ class LatticePlacer {
             l.cols = l.odd_cols = (target + rows - 1) / rows;
             l.ax = box.width / static_cast<double>(l.cols);
             l.origin = {0.25 * l.ax, 0.5 * l.ay};
-            if (best.rows == 0 || l.neighbour_distance() > best.neighbour_distance())
-                best = l;
-            if (l.ay < spec_.radius)
-                break;  // rows closer than a radius: only worse from here
+            if (best.rows == 0 || l.neighbour_distance() > best.neighbour_distance()) best = l;
+            if (l.ay < spec_.radius) break;  // rows closer than a radius: only worse from here
         }
         return best;
     }
@@ -359,10 +350,8 @@ class LatticePlacer {
     // engines' caches); random vacancies help the lattice melt.
     std::vector<std::size_t> pick(std::size_t n) {
         std::vector<std::size_t> index(n);
-        for (std::size_t i = 0; i < n; ++i)
-            index[i] = i;
-        for (std::size_t i = 0; i < count_; ++i)
-            std::swap(index[i], index[i + rng_.below(n - i)]);
+        for (std::size_t i = 0; i < n; ++i) index[i] = i;
+        for (std::size_t i = 0; i < count_; ++i) std::swap(index[i], index[i + rng_.below(n - i)]);
         index.resize(count_);
         std::sort(index.begin(), index.end());
         return index;
@@ -412,8 +401,7 @@ void thermal_velocities(std::vector<Disc>& discs, std::size_t first, double kT, 
     }
     const double target = static_cast<double>(n) * kT;
     const double scale = energy > 0.0 ? std::sqrt(target / energy) : 0.0;
-    for (std::size_t i = first; i < discs.size(); ++i)
-        discs[i].velocity *= scale;
+    for (std::size_t i = first; i < discs.size(); ++i) discs[i].velocity *= scale;
 }
 
 // Every disc at the same speed; consecutive pairs fly in opposite directions.
@@ -421,8 +409,7 @@ void fixed_speed_velocities(std::vector<Disc>& discs, std::size_t first, double 
     for (std::size_t i = first; i < discs.size(); i += 2) {
         const double phi = 2.0 * std::numbers::pi * rng.uniform();
         discs[i].velocity = {speed * std::cos(phi), speed * std::sin(phi)};
-        if (i + 1 < discs.size())
-            discs[i + 1].velocity = -discs[i].velocity;
+        if (i + 1 < discs.size()) discs[i + 1].velocity = -discs[i].velocity;
     }
 }
 
@@ -474,8 +461,7 @@ void generate_discs(Scene& scene, const GenerateSpec& spec, const std::string& f
                        where.region_area;
     const bool random_done =
         eta <= random_placement_limit && place_randomly(scene, spec, where, count, rng);
-    if (!random_done)
-        LatticePlacer(scene, spec, where, count, rng, field_prefix).run();
+    if (!random_done) LatticePlacer(scene, spec, where, count, rng, field_prefix).run();
 
     if (spec.speed) {
         fixed_speed_velocities(scene.discs, first, *spec.speed, rng);

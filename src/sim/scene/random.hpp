@@ -23,8 +23,7 @@ class Rng {
     std::uint64_t below(std::uint64_t n) {
         const std::uint64_t limit = UINT64_MAX - UINT64_MAX % n;
         std::uint64_t x = engine_();
-        while (x >= limit)
-            x = engine_();
+        while (x >= limit) x = engine_();
         return x % n;
     }
 

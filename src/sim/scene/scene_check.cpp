@@ -34,18 +34,15 @@ std::string point_text(Vec2 p) {
 // "file:line: field" without a reason (the prefix of a message).
 std::string location_text(const SourceLocation& where) {
     std::string s = where.file;
-    if (where.line > 0)
-        s += (s.empty() ? "line " : ":") + std::to_string(where.line);
-    if (!where.field.empty())
-        s += (s.empty() ? "" : ": ") + where.field;
+    if (where.line > 0) s += (s.empty() ? "line " : ":") + std::to_string(where.line);
+    if (!where.field.empty()) s += (s.empty() ? "" : ": ") + where.field;
     return s;
 }
 
 [[noreturn]] void fail_at(const SourceLocation& where, const std::string& field_suffix,
                           const std::string& reason) {
     std::string field = where.field;
-    if (!field_suffix.empty())
-        field += (field.empty() ? "" : " ") + field_suffix;
+    if (!field_suffix.empty()) field += (field.empty() ? "" : " ") + field_suffix;
     throw_input_error(where.file, where.line, field, reason);
 }
 
@@ -75,8 +72,7 @@ void check_disc_values(const Disc& d, const SourceLocation& where) {
         fail_at(where, "radius", "must be > 0 (got " + format_number(d.radius) + ")");
     if (!std::isfinite(d.mass))
         fail_at(where, "mass", "not a finite number (" + format_number(d.mass) + ")");
-    if (!(d.mass > 0.0))
-        fail_at(where, "mass", "must be > 0 (got " + format_number(d.mass) + ")");
+    if (!(d.mass > 0.0)) fail_at(where, "mass", "must be > 0 (got " + format_number(d.mass) + ")");
 }
 
 // How far a walled box is exceeded, as text ("right edge at 1.01 > width 1"), or empty.
@@ -84,12 +80,10 @@ std::string outside_reason(const Box& box, const Disc& d) {
     const Vec2 p = d.position;
     const double r = d.radius;
     const double slack = contact_tolerance * r;
-    if (p.x - r < -slack)
-        return "left edge at x = " + format_number(p.x - r) + " < 0";
+    if (p.x - r < -slack) return "left edge at x = " + format_number(p.x - r) + " < 0";
     if (p.x + r > box.width + slack)
         return "right edge at x = " + format_number(p.x + r) + " > " + format_number(box.width);
-    if (p.y - r < -slack)
-        return "bottom edge at y = " + format_number(p.y - r) + " < 0";
+    if (p.y - r < -slack) return "bottom edge at y = " + format_number(p.y - r) + " < 0";
     if (p.y + r > box.height + slack)
         return "top edge at y = " + format_number(p.y + r) + " > " + format_number(box.height);
     return {};
@@ -97,35 +91,30 @@ std::string outside_reason(const Box& box, const Disc& d) {
 
 // Lists every disc outside a walled box (up to max_listed_problems) in one message.
 void check_inside_box(const Scene& scene, const SceneOrigin& origin) {
-    if (scene.box.boundary == Boundary::periodic)
-        return;
+    if (scene.box.boundary == Boundary::periodic) return;
     std::vector<std::string> problems;
     std::size_t total = 0;
     for (std::size_t i = 0; i < scene.discs.size(); ++i) {
         const std::string why = outside_reason(scene.box, scene.discs[i]);
-        if (why.empty())
-            continue;
+        if (why.empty()) continue;
         if (++total <= max_listed_problems) {
             problems.push_back(location_text(origin.locate(i)) + ": centre " +
                                point_text(scene.discs[i].position) + ", radius " +
                                format_number(scene.discs[i].radius) + ": " + why);
         }
     }
-    if (total == 0)
-        return;
+    if (total == 0) return;
     std::string msg = std::to_string(total) + (total == 1 ? " disc lies" : " discs lie") +
                       " outside the box [0, " + format_number(scene.box.width) + "] x [0, " +
                       format_number(scene.box.height) + "]: ";
-    for (std::size_t k = 0; k < problems.size(); ++k)
-        msg += (k ? "; " : "") + problems[k];
+    for (std::size_t k = 0; k < problems.size(); ++k) msg += (k ? "; " : "") + problems[k];
     if (total > problems.size())
         msg += "; and " + std::to_string(total - problems.size()) + " more";
     throw_input_error(msg);
 }
 
 void check_periodic_sizes(const Scene& scene, const SceneOrigin& origin) {
-    if (scene.box.boundary != Boundary::periodic)
-        return;
+    if (scene.box.boundary != Boundary::periodic) return;
     // Minimum-image distances are only right when no pair of discs can touch around the box
     // both ways, i.e. r_i + r_j <= half the shorter side.
     const double limit = std::min(scene.box.width, scene.box.height) / 4.0;
@@ -143,18 +132,15 @@ void check_periodic_sizes(const Scene& scene, const SceneOrigin& origin) {
 double overlap_cell_size(const Scene& scene) {
     std::vector<double> radii;
     radii.reserve(scene.discs.size());
-    for (const Disc& d : scene.discs)
-        radii.push_back(d.radius);
+    for (const Disc& d : scene.discs) radii.push_back(d.radius);
     auto mid = radii.begin() + static_cast<std::ptrdiff_t>(radii.size() / 2);
     std::nth_element(radii.begin(), mid, radii.end());
     double cell = 2.0 * *mid;
     const double budget = 16.0 * static_cast<double>(radii.size()) + 64.0;
     for (;;) {
         double filings = 0.0;
-        for (double r : radii)
-            filings += std::pow(2.0 * r / cell + 2.0, 2.0);
-        if (filings <= budget)
-            return cell;
+        for (double r : radii) filings += std::pow(2.0 * r / cell + 2.0, 2.0);
+        if (filings <= budget) return cell;
         cell *= 2.0;
     }
 }
@@ -167,8 +153,7 @@ bool overlapping(const Box& box, const Disc& a, const Disc& b) noexcept {
 
 void check_overlaps(const Scene& scene, const SceneOrigin& origin) {
     const std::size_t n = scene.discs.size();
-    if (n < 2)
-        return;
+    if (n < 2) return;
     if (n >= std::numeric_limits<std::uint32_t>::max())
         throw_input_error("too many discs (" + std::to_string(n) + ")");
     detail::DiscGrid grid(scene.box, overlap_cell_size(scene), 4 * n + 64);
@@ -207,8 +192,7 @@ SourceLocation SceneOrigin::locate(std::size_t index) const {
         const std::string name = run.field.empty() ? "disc" : run.field;
         return {run.file, run.lines[k], name + " " + std::to_string(k + 1)};
     }
-    if (run.count == 1)
-        return {run.file, run.line, run.field};  // a [[disc]] table
+    if (run.count == 1) return {run.file, run.line, run.field};  // a [[disc]] table
     return {run.file, run.line, run.field + " disc " + std::to_string(k + 1)};
 }
 
@@ -230,15 +214,13 @@ void validate_scene(const Scene& scene, const SceneOrigin& origin) {
 
 double packing_fraction(const Scene& scene) noexcept {
     double area = 0.0;
-    for (const Disc& d : scene.discs)
-        area += std::numbers::pi * d.radius * d.radius;
+    for (const Disc& d : scene.discs) area += std::numbers::pi * d.radius * d.radius;
     return area / scene.box.area();
 }
 
 double kinetic_energy(const Scene& scene) noexcept {
     double e = 0.0;
-    for (const Disc& d : scene.discs)
-        e += 0.5 * d.mass * norm2(d.velocity);
+    for (const Disc& d : scene.discs) e += 0.5 * d.mass * norm2(d.velocity);
     return e;
 }
 

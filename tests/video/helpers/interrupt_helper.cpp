@@ -11,8 +11,7 @@
 #include "interrupt.hpp"
 
 int main(int argc, char** argv) {
-    if (argc != 2)
-        return 2;
+    if (argc != 2) return 2;
     try {
         collide::app::InterruptGuard interrupts;
         collide::video::set_libav_verbose(false);

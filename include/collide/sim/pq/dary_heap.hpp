@@ -79,8 +79,7 @@ class DaryHeap {
         T out = std::move(a_.front());
         T last = std::move(a_.back());
         a_.pop_back();
-        if (!a_.empty())
-            sink_from_root(std::move(last));
+        if (!a_.empty()) sink_from_root(std::move(last));
         validate();
         return out;
     }
@@ -100,8 +99,7 @@ class DaryHeap {
     /// Heap order: no child comes out before its parent. O(N).
     [[nodiscard]] bool is_heap() const {
         for (std::size_t i = 1; i < a_.size(); ++i) {
-            if (first(a_[i], a_[(i - 1) / d()]))
-                return false;
+            if (first(a_[i], a_[(i - 1) / d()])) return false;
         }
         return true;
     }
@@ -113,8 +111,7 @@ class DaryHeap {
         T x = std::move(a_[i]);
         while (i > 0) {
             const std::size_t parent = (i - 1) / d();
-            if (!first(x, a_[parent]))
-                break;
+            if (!first(x, a_[parent])) break;
             a_[i] = std::move(a_[parent]);
             i = parent;
         }
@@ -128,13 +125,11 @@ class DaryHeap {
         const std::size_t c0 = d() * i + 1;
         const std::size_t n = a_.size();
         if constexpr (D != 0) {
-            if (c0 + D <= n)
-                return best_of<D>(c0);
+            if (c0 + D <= n) return best_of<D>(c0);
         }
         const std::size_t c_end = c0 + d() < n ? c0 + d() : n;
         std::size_t best = c0;
-        for (std::size_t c = c0 + 1; c < c_end; ++c)
-            best = pick(c, best);
+        for (std::size_t c = c0 + 1; c < c_end; ++c) best = pick(c, best);
         return best;
     }
 
@@ -162,8 +157,7 @@ class DaryHeap {
         T x = std::move(a_[i]);
         while (d() * i + 1 < n) {
             const std::size_t best = best_child(i);
-            if (!first(a_[best], x))
-                break;
+            if (!first(a_[best], x)) break;
             a_[i] = std::move(a_[best]);
             i = best;
         }
@@ -224,8 +218,7 @@ class DaryHeap {
     [[nodiscard]] static Lookahead lookahead(std::size_t d) noexcept {
         const std::size_t budget = 2 * heap_line_bytes / sizeof(T);
         std::size_t items = d * d;
-        while (items * d <= budget)
-            items *= d;
+        while (items * d <= budget) items *= d;
         return {items, (items - 1) / (d - 1)};  // 1 + d + ... + d^(levels-1): the levels above
     }
 
@@ -244,8 +237,7 @@ class DaryHeap {
     void rise_from(std::size_t hole, T x) {
         while (hole > 0) {
             const std::size_t parent = (hole - 1) / d();
-            if (first(a_[parent], x))
-                break;
+            if (first(a_[parent], x)) break;
             a_[hole] = std::move(a_[parent]);
             hole = parent;
         }
@@ -253,8 +245,7 @@ class DaryHeap {
     }
 
     void validate() const {
-        if constexpr (validate_heaps)
-            require_invariant(is_heap(), "d-ary heap order");
+        if constexpr (validate_heaps) require_invariant(is_heap(), "d-ary heap order");
     }
 
     std::vector<T, ChildAlignedAllocator<T>> a_;  ///< children of a node share a cache line

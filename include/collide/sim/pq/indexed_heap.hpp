@@ -44,7 +44,9 @@ struct CacheLineAllocator {
     template <class U>
     explicit CacheLineAllocator(const CacheLineAllocator<U>& /*other*/) noexcept {}
 
-    [[nodiscard]] T* allocate(std::size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), alignment)); }
+    [[nodiscard]] T* allocate(std::size_t n) {
+        return static_cast<T*>(::operator new(n * sizeof(T), alignment));
+    }
     void deallocate(T* p, std::size_t /*n*/) noexcept { ::operator delete(p, alignment); }
 
     template <class U>
@@ -62,7 +64,7 @@ class IndexedDaryHeap {
     static_assert(D >= 2, "a heap needs at least two children per node");
     static constexpr bool embedded = !std::is_void_v<HandleOf>;
 
-public:
+  public:
     using handle_type = std::uint32_t;
     using key_type = Key;
     static constexpr unsigned arity = D;
@@ -106,8 +108,10 @@ public:
     /// Inserts handle h with key k. Throws Error if h is out of range or already present (or,
     /// with HandleOf, if k names another handle).
     void push(handle_type h, Key k) {
-        if (h >= pos_.size()) throw_runtime_error("indexed heap: handle " + std::to_string(h) + " out of range");
-        if (pos_[h] != absent) throw_runtime_error("indexed heap: handle " + std::to_string(h) + " already present");
+        if (h >= pos_.size())
+            throw_runtime_error("indexed heap: handle " + std::to_string(h) + " out of range");
+        if (pos_[h] != absent)
+            throw_runtime_error("indexed heap: handle " + std::to_string(h) + " already present");
         require_names(h, k);
         if constexpr (!embedded) heap_.push_back(h);
         keys_.push_back(k);
@@ -149,14 +153,16 @@ public:
     /// Raises h's key under `Less` (k must not be less than the current key). Throws otherwise.
     void increase_key(handle_type h, Key k) {
         require_contains(h, "increase_key");
-        if (less_(k, at(pos_[h]))) throw_runtime_error("indexed heap: increase_key given a smaller key");
+        if (less_(k, at(pos_[h])))
+            throw_runtime_error("indexed heap: increase_key given a smaller key");
         change_key(h, std::move(k));
     }
 
     /// Lowers h's key under `Less` (k must not be greater than the current key). Throws otherwise.
     void decrease_key(handle_type h, Key k) {
         require_contains(h, "decrease_key");
-        if (less_(at(pos_[h]), k)) throw_runtime_error("indexed heap: decrease_key given a larger key");
+        if (less_(at(pos_[h]), k))
+            throw_runtime_error("indexed heap: decrease_key given a larger key");
         change_key(h, std::move(k));
     }
 
@@ -176,7 +182,8 @@ public:
 
     /// Bytes held by the heap's arrays (capacities), for memory accounting.
     [[nodiscard]] std::size_t bytes() const noexcept {
-        return (heap_.capacity() + pos_.capacity()) * sizeof(handle_type) + keys_.capacity() * sizeof(Key);
+        return (heap_.capacity() + pos_.capacity()) * sizeof(handle_type) +
+               keys_.capacity() * sizeof(Key);
     }
 
     /// Heap order, and the position map is the inverse of the heap array: pos_[handle at i] == i
@@ -195,7 +202,7 @@ public:
         return true;
     }
 
-private:
+  private:
     static constexpr handle_type absent = std::numeric_limits<handle_type>::max();
     /// Unused slots before the root: node i sits at keys_[i + pad], so the children of node i
     /// (D i + 1 .. D i + D) start at slot D (i + 1), a multiple of D.
@@ -219,18 +226,20 @@ private:
     void require_names([[maybe_unused]] handle_type h, [[maybe_unused]] const Key& k) const {
         if constexpr (embedded) {
             if (HandleOf{}(k) != h) {
-                throw_runtime_error("indexed heap: the key given for handle " + std::to_string(h) + " names handle " +
-                                    std::to_string(HandleOf{}(k)));
+                throw_runtime_error("indexed heap: the key given for handle " + std::to_string(h) +
+                                    " names handle " + std::to_string(HandleOf{}(k)));
             }
         }
     }
 
-    [[nodiscard]] bool first(const Key& a, const Key& b) const { return comes_first<O>(less_, a, b); }
+    [[nodiscard]] bool first(const Key& a, const Key& b) const {
+        return comes_first<O>(less_, a, b);
+    }
 
     void require_contains(handle_type h, const char* op) const {
         if (!contains(h)) {
-            throw_runtime_error(std::string("indexed heap: ") + op + " on handle " + std::to_string(h) +
-                                " which is not in the heap");
+            throw_runtime_error(std::string("indexed heap: ") + op + " on handle " +
+                                std::to_string(h) + " which is not in the heap");
         }
     }
 
@@ -241,7 +250,9 @@ private:
     }
 
     /// Moves the entry at `from` into slot `to`.
-    void move_entry(std::size_t to, std::size_t from) { place(to, handle_at(from), std::move(at(from))); }
+    void move_entry(std::size_t to, std::size_t from) {
+        place(to, handle_at(from), std::move(at(from)));
+    }
 
     void remove_at(std::size_t i) {
         pos_[handle_at(i)] = absent;
@@ -349,7 +360,8 @@ private:
     }
 
     void validate() const {
-        if constexpr (validate_heaps) require_invariant(check_invariants(), "indexed heap order / position map");
+        if constexpr (validate_heaps)
+            require_invariant(check_invariants(), "indexed heap order / position map");
     }
 
     std::vector<handle_type> heap_;  ///< handles in heap order (unused when keys name them)

@@ -18,7 +18,7 @@ namespace collide::pq {
 /// Requires T to be default-constructible and copyable (keys are stored per handle).
 template <class T, Orientation O = Orientation::max, unsigned D = 4, class Less = std::less<T>>
 class IndexedHeapQueue {
-public:
+  public:
     using value_type = T;
     using heap_type = IndexedDaryHeap<T, O, D, Less>;
     using handle_type = typename heap_type::handle_type;
@@ -61,7 +61,8 @@ public:
     /// The heap's invariants (heap order, position map) and the free list's: every handle is
     /// either in the heap or free, never both. O(capacity).
     [[nodiscard]] bool check_invariants() const {
-        if (!heap_.check_invariants() || free_.size() + heap_.size() != heap_.capacity()) return false;
+        if (!heap_.check_invariants() || free_.size() + heap_.size() != heap_.capacity())
+            return false;
         for (handle_type h : free_) {
             if (h >= heap_.capacity() || heap_.contains(h)) return false;
         }
@@ -71,7 +72,7 @@ public:
     /// The underlying indexed heap (handles, position map), read-only.
     [[nodiscard]] const heap_type& heap() const noexcept { return heap_; }
 
-private:
+  private:
     /// Extends the handle range to `capacity` and adds the new handles to the free list so the
     /// lowest new handle is handed out first.
     void grow_to(std::size_t capacity) {
@@ -82,7 +83,8 @@ private:
     }
 
     void validate() const {
-        if constexpr (validate_heaps) require_invariant(check_invariants(), "indexed queue free list");
+        if constexpr (validate_heaps)
+            require_invariant(check_invariants(), "indexed queue free list");
     }
 
     heap_type heap_;

@@ -15,7 +15,7 @@ namespace collide::pq {
 
 template <class T, Orientation O = Orientation::max, class Less = std::less<T>>
 class OrderedArrayPQ {
-public:
+  public:
     using value_type = T;
 
     OrderedArrayPQ() = default;
@@ -61,7 +61,7 @@ public:
         return true;
     }
 
-private:
+  private:
     void validate() const {
         if constexpr (validate_heaps) require_invariant(is_sorted(), "ordered array order");
     }

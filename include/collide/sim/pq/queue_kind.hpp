@@ -62,21 +62,31 @@ decltype(auto) with_queue(const QueueKind& kind, F&& f) {
             return std::forward<F>(f)(BinaryHeap<T, O, Less>{});
         case QueueFamily::dary:
             switch (kind.d) {
-                case 2: return std::forward<F>(f)(DaryHeap<T, O, 2, Less>{});
-                case 3: return std::forward<F>(f)(DaryHeap<T, O, 3, Less>{});
-                case 4: return std::forward<F>(f)(DaryHeap<T, O, 4, Less>{});
-                case 8: return std::forward<F>(f)(DaryHeap<T, O, 8, Less>{});
-                default: break;
+                case 2:
+                    return std::forward<F>(f)(DaryHeap<T, O, 2, Less>{});
+                case 3:
+                    return std::forward<F>(f)(DaryHeap<T, O, 3, Less>{});
+                case 4:
+                    return std::forward<F>(f)(DaryHeap<T, O, 4, Less>{});
+                case 8:
+                    return std::forward<F>(f)(DaryHeap<T, O, 8, Less>{});
+                default:
+                    break;
             }
             if (kind.d < 2 || kind.d > DaryHeap<T, O, 0, Less>::max_runtime_arity) break;
             return std::forward<F>(f)(DaryHeap<T, O, 0, Less>(kind.d));
         case QueueFamily::indexed:
             switch (kind.d) {
-                case 2: return std::forward<F>(f)(IndexedHeapQueue<T, O, 2, Less>{});
-                case 3: return std::forward<F>(f)(IndexedHeapQueue<T, O, 3, Less>{});
-                case 4: return std::forward<F>(f)(IndexedHeapQueue<T, O, 4, Less>{});
-                case 8: return std::forward<F>(f)(IndexedHeapQueue<T, O, 8, Less>{});
-                default: break;
+                case 2:
+                    return std::forward<F>(f)(IndexedHeapQueue<T, O, 2, Less>{});
+                case 3:
+                    return std::forward<F>(f)(IndexedHeapQueue<T, O, 3, Less>{});
+                case 4:
+                    return std::forward<F>(f)(IndexedHeapQueue<T, O, 4, Less>{});
+                case 8:
+                    return std::forward<F>(f)(IndexedHeapQueue<T, O, 8, Less>{});
+                default:
+                    break;
             }
             break;
     }

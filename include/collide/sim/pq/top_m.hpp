@@ -56,8 +56,7 @@ template <std::input_iterator It, class Less = std::less<std::iter_value_t<It>>>
 [[nodiscard]] std::vector<std::iter_value_t<It>> top_m(It first, It last, std::size_t m,
                                                        Less less = Less{}) {
     TopM<std::iter_value_t<It>, Less> keep(m, std::move(less));
-    for (; first != last; ++first)
-        keep.offer(*first);
+    for (; first != last; ++first) keep.offer(*first);
     return keep.largest_first();
 }
 

@@ -43,16 +43,17 @@ struct TraceKey {
 
 /// One operation of a trace, with where it came from for error messages.
 struct TraceOp {
-    bool remove = false;      ///< `*`: remove the item that comes out next
-    TraceKey key;             ///< the key inserted (insert only)
-    std::size_t token = 0;    ///< 1-based position in the operation string
-    std::string spelling;     ///< the token as written
+    bool remove = false;    ///< `*`: remove the item that comes out next
+    TraceKey key;           ///< the key inserted (insert only)
+    std::size_t token = 0;  ///< 1-based position in the operation string
+    std::string spelling;   ///< the token as written
 };
 
 /// Splits `ops` at white space into operations. Throws Error(input) "<option>: token N 'x': why"
 /// for a token that is neither `*`, a word of letters nor an integer (or overflows a 64-bit
 /// integer), for a key whose type differs from the first key's, and for an empty sequence.
-[[nodiscard]] std::vector<TraceOp> parse_trace_ops(std::string_view ops, std::string_view option = "--ops");
+[[nodiscard]] std::vector<TraceOp> parse_trace_ops(std::string_view ops,
+                                                   std::string_view option = "--ops");
 
 /// One line of the lecture's table: the state after one operation.
 struct TraceRow {
@@ -60,7 +61,8 @@ struct TraceRow {
     std::string argument;   ///< the key inserted, empty for a removal
     std::string returned;   ///< the key removed, empty for an insert
     std::size_t size = 0;   ///< items in the queue afterwards
-    std::vector<std::vector<std::string>> contents;  ///< per queue (same order as Trace::queues): its array
+    std::vector<std::vector<std::string>>
+        contents;  ///< per queue (same order as Trace::queues): its array
 };
 
 /// The whole table.

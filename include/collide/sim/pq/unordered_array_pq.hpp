@@ -14,7 +14,7 @@ namespace collide::pq {
 
 template <class T, Orientation O = Orientation::max, class Less = std::less<T>>
 class UnorderedArrayPQ {
-public:
+  public:
     using value_type = T;
 
     UnorderedArrayPQ() = default;
@@ -44,7 +44,7 @@ public:
     /// The array in storage order, for teaching traces and tests.
     [[nodiscard]] const std::vector<T>& array() const noexcept { return a_; }
 
-private:
+  private:
     [[nodiscard]] std::size_t best_index() const {
         std::size_t best = 0;
         for (std::size_t i = 1; i < a_.size(); ++i) {
