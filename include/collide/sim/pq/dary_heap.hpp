@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-#include "collide/sim/pq/child_aligned_allocator.hpp"
+#include "collide/sim/pq/cache_layout.hpp"
 #include "collide/sim/pq/order.hpp"
 
 namespace collide::pq {
@@ -32,9 +32,8 @@ class DaryHeap {
     /// Largest run-time arity accepted; wider nodes only cost compares.
     static constexpr unsigned max_runtime_arity = 64;
 
-    /// pop prefetches the next level only in heaps of more than this many bytes (a typical L2
-    /// cache): smaller ones are served from the caches, where the hints are pure overhead.
-    static constexpr std::size_t prefetch_bytes = std::size_t{1} << 20;
+    /// pop prefetches the levels ahead only in heaps of more than this many bytes.
+    static constexpr std::size_t prefetch_bytes = heap_prefetch_bytes;
 
     /// An empty heap (a run-time-arity heap built this way is binary).
     DaryHeap() = default;
@@ -179,26 +178,19 @@ class DaryHeap {
     ///
     /// In a heap larger than the caches, each level waits for a cache miss before it knows
     /// where to go next. So on each level it asks the processor to load the hole's descendants a
-    /// few levels down (see Lookahead) while the children are compared: the path continues among
-    /// them, and the misses of the coming levels overlap instead of following one another. At
-    /// N = 10^6 this took the 4-ary hold step from about 1.1 to 0.7 of std::priority_queue's
-    /// time. Heaps that fit in the caches skip it: there it only costs (the binary heap, with
-    /// the most levels, went from 0.78 to 1.2 of std's time at N = 10^3; docs/benchmarks.md).
+    /// few levels down (heap_lookahead) while the children are compared: the path continues
+    /// among them. At N = 10^6 this took the 4-ary hold step from about 1.1 to 0.7 of
+    /// std::priority_queue's time; heaps that fit in the caches skip it (heap_prefetch_bytes).
     std::size_t hole_to_leaf() {
         const std::size_t n = a_.size();
         const std::size_t d = this->d();
-        const Lookahead ahead = n * sizeof(T) > prefetch_bytes ? lookahead(d) : Lookahead{};
+        const HeapLookahead ahead =
+            n * sizeof(T) > heap_prefetch_bytes ? heap_lookahead(d, sizeof(T)) : HeapLookahead{};
         std::size_t hole = 0;
         while (d * hole + 1 < n) {
-            // The hints stay in this loop, which writes the array: moved into a helper of their
-            // own, GCC judged it free of side effects and deleted the call (seen in the binary).
             const std::size_t first = hole * ahead.items + ahead.offset;
             if (ahead.items != 0 && first < n) {
-                const std::uintptr_t last = address_of(std::min(n, first + ahead.items)) - 1;
-                for (std::uintptr_t line = address_of(first) & ~(heap_line_bytes - 1); line <= last;
-                     line += heap_line_bytes) {
-                    prefetch(line);
-                }
+                prefetch_lines(address_of(first), address_of(std::min(n, first + ahead.items)));
             }
             const std::size_t best = best_child(hole);
             a_[hole] = std::move(a_[best]);
@@ -207,30 +199,8 @@ class DaryHeap {
         return hole;
     }
 
-    /// Which descendants of node i pop prefetches: the items `items` wide from i*items + offset,
-    /// all of i's descendants some levels down. At least two levels (the children are being
-    /// loaded anyway), more while they fit in two cache lines: a binary heap of doubles looks
-    /// four levels ahead (16 items), a 4-ary one two (16 items), an 8-ary one two (64 items).
-    struct Lookahead {
-        std::size_t items = 0;   ///< d^levels; 0: no prefetching
-        std::size_t offset = 0;  ///< index of node 0's first descendant at that depth
-    };
-    [[nodiscard]] static Lookahead lookahead(std::size_t d) noexcept {
-        const std::size_t budget = 2 * heap_line_bytes / sizeof(T);
-        std::size_t items = d * d;
-        while (items * d <= budget) items *= d;
-        return {items, (items - 1) / (d - 1)};  // 1 + d + ... + d^(levels-1): the levels above
-    }
-
     [[nodiscard]] std::uintptr_t address_of(std::size_t i) const noexcept {
         return reinterpret_cast<std::uintptr_t>(a_.data() + i);
-    }
-
-    /// A hint to load the cache line at `address`; no effect on results.
-    static void prefetch([[maybe_unused]] std::uintptr_t address) noexcept {
-#if defined(__GNUC__)
-        __builtin_prefetch(reinterpret_cast<const void*>(address));
-#endif
     }
 
     /// Puts x in the hole and lets it rise while its parent does not come out before it.

@@ -11,49 +11,28 @@
 /// heap's share of the run time.
 /// Two layout choices for large heaps (the fast engine at 10^6 discs, where every level of a
 /// sink below the cached top levels is a cache miss):
-/// - The key array starts D - 1 slots before a 64-byte boundary, so the D children of a node
-///   share one cache line when D * sizeof(Key) == 64 (4-ary, 16-byte keys) instead of
+/// - The key array puts node 1 on a 64-byte boundary (ChildAlignedAllocator), so the D children
+///   of a node share one cache line when D * sizeof(Key) == 64 (4-ary, 16-byte keys) instead of
 ///   straddling two lines for three nodes in four.
 /// - Keys that name their own handle (HandleOf given: HandleOf{}(key) is the handle) need no
 ///   handle array: a sink then reads one line per level instead of two.
-/// - Sinks in heaps beyond prefetch_bytes prefetch the levels ahead (see sink).
+/// - Sinks in heaps beyond heap_prefetch_bytes prefetch the levels ahead (see sink), as
+///   DaryHeap's pop does.
 
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <limits>
-#include <new>
 #include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
-#include "collide/sim/pq/child_aligned_allocator.hpp"
+#include "collide/sim/pq/cache_layout.hpp"
 #include "collide/sim/pq/order.hpp"
 
 namespace collide::pq {
-
-/// std::allocator with cache-line alignment (the key array of IndexedDaryHeap).
-template <class T>
-struct CacheLineAllocator {
-    using value_type = T;
-    static constexpr std::align_val_t alignment{64};
-
-    CacheLineAllocator() = default;
-    template <class U>
-    explicit CacheLineAllocator(const CacheLineAllocator<U>& /*other*/) noexcept {}
-
-    [[nodiscard]] T* allocate(std::size_t n) {
-        return static_cast<T*>(::operator new(n * sizeof(T), alignment));
-    }
-    void deallocate(T* p, std::size_t /*n*/) noexcept { ::operator delete(p, alignment); }
-
-    template <class U>
-    bool operator==(const CacheLineAllocator<U>& /*other*/) const noexcept {
-        return true;
-    }
-};
 
 /// HandleOf = void: handles are stored beside the keys. Otherwise a function object with
 /// `handle_type operator()(const Key&)` that reads the handle out of a key (the fast engine's
@@ -69,18 +48,17 @@ class IndexedDaryHeap {
     using key_type = Key;
     static constexpr unsigned arity = D;
 
-    /// Sinks prefetch the levels ahead only in heaps whose keys take more than this many bytes
-    /// (a typical L2 cache), as DaryHeap's pop does: smaller ones are served from the caches.
-    static constexpr std::size_t prefetch_bytes = std::size_t{1} << 20;
+    /// Sinks prefetch the levels ahead only in heaps whose keys take more than this many bytes.
+    static constexpr std::size_t prefetch_bytes = heap_prefetch_bytes;
 
     /// An empty heap that accepts handles 0 .. capacity-1.
     explicit IndexedDaryHeap(std::size_t capacity = 0, Less less = Less{})
-        : pos_(capacity, absent), keys_(pad), less_(std::move(less)) {
+        : pos_(capacity, absent), less_(std::move(less)) {
         reserve_arrays(capacity);
     }
 
     [[nodiscard]] bool empty() const noexcept { return size() == 0; }
-    [[nodiscard]] std::size_t size() const noexcept { return keys_.size() - pad; }
+    [[nodiscard]] std::size_t size() const noexcept { return keys_.size(); }
     [[nodiscard]] std::size_t capacity() const noexcept { return pos_.size(); }
 
     /// Grows the handle range to 0 .. capacity-1 (never shrinks).
@@ -189,7 +167,6 @@ class IndexedDaryHeap {
     /// Heap order, and the position map is the inverse of the heap array: pos_[handle at i] == i
     /// for every i, and exactly size() handles are marked present. O(capacity).
     [[nodiscard]] bool check_invariants() const {
-        if (keys_.size() < pad) return false;
         if (!embedded && heap_.size() != size()) return false;
         std::size_t present = 0;
         for (handle_type p : pos_) present += (p != absent);
@@ -204,12 +181,9 @@ class IndexedDaryHeap {
 
   private:
     static constexpr handle_type absent = std::numeric_limits<handle_type>::max();
-    /// Unused slots before the root: node i sits at keys_[i + pad], so the children of node i
-    /// (D i + 1 .. D i + D) start at slot D (i + 1), a multiple of D.
-    static constexpr std::size_t pad = D - 1;
 
-    [[nodiscard]] const Key& at(std::size_t i) const noexcept { return keys_[i + pad]; }
-    [[nodiscard]] Key& at(std::size_t i) noexcept { return keys_[i + pad]; }
+    [[nodiscard]] const Key& at(std::size_t i) const noexcept { return keys_[i]; }
+    [[nodiscard]] Key& at(std::size_t i) noexcept { return keys_[i]; }
     [[nodiscard]] handle_type handle_at(std::size_t i) const noexcept {
         if constexpr (embedded) {
             return HandleOf{}(at(i));
@@ -220,7 +194,7 @@ class IndexedDaryHeap {
 
     void reserve_arrays(std::size_t capacity) {
         if constexpr (!embedded) heap_.reserve(capacity);
-        keys_.reserve(capacity + pad);
+        keys_.reserve(capacity);
     }
 
     void require_names([[maybe_unused]] handle_type h, [[maybe_unused]] const Key& k) const {
@@ -289,14 +263,14 @@ class IndexedDaryHeap {
     ///
     /// In a heap larger than the caches every level below the cached top waits for a cache miss
     /// before it knows where to go next; so, as DaryHeap's pop does, each level asks for all of
-    /// the node's descendants a few levels down (see lookahead()) while its children are
+    /// the node's descendants a few levels down (heap_lookahead) while its children are
     /// compared: the path continues among them, and the misses of the coming levels overlap
     /// instead of following one another. The fast engine's sinks (every event re-keys the
     /// popped disc, which then sinks from the root) went from 0.43 M to 0.46 M collisions per
     /// CPU second at 10^6 discs (docs/benchmarks.md).
     void sink(std::size_t i, handle_type h, Key k) {
         // Two copies of the loop, so that heaps in the caches pay nothing per level for it.
-        if (size() * sizeof(Key) > prefetch_bytes) {
+        if (size() * sizeof(Key) > heap_prefetch_bytes) {
             sink_loop<true>(i, h, std::move(k));
         } else {
             sink_loop<false>(i, h, std::move(k));
@@ -306,19 +280,13 @@ class IndexedDaryHeap {
     template <bool Prefetch>
     void sink_loop(std::size_t i, handle_type h, Key k) {
         const std::size_t n = size();
-        constexpr Lookahead ahead = lookahead();
+        constexpr HeapLookahead ahead = heap_lookahead(D, sizeof(Key));
         for (;;) {
             const std::size_t c0 = D * i + 1;
             if (c0 >= n) break;
-            // The hints stay in this loop, which writes the arrays: GCC deleted a prefetch loop
-            // in a side-effect-free helper of DaryHeap.
             const std::size_t below = i * ahead.items + ahead.offset;
             if (Prefetch && below < n) {
-                const std::uintptr_t last = address_of(std::min(n, below + ahead.items)) - 1;
-                for (std::uintptr_t line = address_of(below) & ~(heap_line_bytes - 1); line <= last;
-                     line += heap_line_bytes) {
-                    prefetch(reinterpret_cast<const void*>(line));
-                }
+                prefetch_lines(address_of(below), address_of(std::min(n, below + ahead.items)));
             }
             const std::size_t c_end = c0 + D < n ? c0 + D : n;
             std::size_t best = c0;
@@ -332,31 +300,9 @@ class IndexedDaryHeap {
         place(i, h, std::move(k));
     }
 
-    /// Which descendants a sink prefetches: the keys `items` wide from i*items + offset, all of
-    /// node i's descendants some levels down. At least two levels (the children are being
-    /// loaded anyway), more while they fit in two cache lines: with 16-byte keys and D = 4,
-    /// two levels, 16 keys in four lines (aligned, as the key array is).
-    struct Lookahead {
-        std::size_t items = 0;   ///< D^levels
-        std::size_t offset = 0;  ///< index of the root's first descendant at that depth
-    };
-    [[nodiscard]] static constexpr Lookahead lookahead() noexcept {
-        const std::size_t budget = 2 * heap_line_bytes / sizeof(Key);
-        std::size_t items = std::size_t{D} * D;
-        while (items * D <= budget) items *= D;
-        return {items, (items - 1) / (D - 1)};  // 1 + D + ... + D^(levels-1): the levels above
-    }
-
     /// Address of node i's key slot (i may be size(): one past the last).
     [[nodiscard]] std::uintptr_t address_of(std::size_t i) const noexcept {
-        return reinterpret_cast<std::uintptr_t>(keys_.data() + pad + i);
-    }
-
-    /// A hint to load the cache line holding `address`; no effect on results.
-    static void prefetch([[maybe_unused]] const void* address) noexcept {
-#if defined(__GNUC__)
-        __builtin_prefetch(address);
-#endif
+        return reinterpret_cast<std::uintptr_t>(keys_.data() + i);
     }
 
     void validate() const {
@@ -366,8 +312,8 @@ class IndexedDaryHeap {
 
     std::vector<handle_type> heap_;  ///< handles in heap order (unused when keys name them)
     std::vector<handle_type> pos_;   ///< pos_[handle] = index in heap order, or `absent`
-    /// Keys in heap order, node i at keys_[i + pad] (the first `pad` slots are unused).
-    std::vector<Key, CacheLineAllocator<Key>> keys_;
+    /// Keys in heap order (node 1 starts a cache line, so each node's children share lines).
+    std::vector<Key, ChildAlignedAllocator<Key>> keys_;
     [[no_unique_address]] Less less_;
 };
 
