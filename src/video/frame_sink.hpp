@@ -17,6 +17,10 @@ namespace collide::video::detail {
 class FrameSink {
   public:
     virtual ~FrameSink() = default;
+    /// Called once on the encoder thread before the first frame: sinks with a costly start (x264
+    /// allocates its look-ahead and tables) do it here, while the caller is still setting up its
+    /// renderer, instead of stalling the first frame. Throws Error(runtime).
+    virtual void prepare() {}
     /// Encodes one frame of exactly the writer's input size. Throws Error(runtime).
     virtual void consume(const Image& frame) = 0;
     /// Flushes everything and closes the output; the caller then renames it. Throws Error.

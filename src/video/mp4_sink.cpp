@@ -71,19 +71,26 @@ class Mp4Sink final : public FrameSink {
         frame_.reset(check_alloc(av_frame_alloc(), "AVFrame"));
     }
 
-    // libsvtav1 (1.4.1 in Debian 12) deadlocks when closed without ever receiving a frame; the
-    // encoder is therefore only opened by the first frame, and an abandoned SVT-AV1 encoder is
-    // also sent its end of stream and drained before it is freed (best effort, errors ignored:
-    // this is the abort path). Other encoders are freed at once: draining x264's look-ahead
-    // would only delay the exit after Ctrl-C.
+    // libsvtav1 (1.4.1 in Debian 12) deadlocks when closed without ever receiving a frame; that
+    // encoder is therefore only opened by the first frame (see prepare()), and an abandoned
+    // SVT-AV1 encoder is also sent its end of stream and drained before it is freed (best effort,
+    // errors ignored: this is the abort path). Other encoders are freed at once: draining x264's
+    // look-ahead would only delay the exit after Ctrl-C.
     ~Mp4Sink() override {
-        if (opened_ && !finished_ && std::string_view(encoder_->name) == "libsvtav1") {
+        if (opened_ && !finished_ && opens_lazily()) {
             if (avcodec_send_frame(codec_.get(), nullptr) >= 0) {
                 while (avcodec_receive_packet(codec_.get(), packet_.get()) >= 0) {
                     av_packet_unref(packet_.get());
                 }
             }
         }
+    }
+
+    /// Opens every encoder but SVT-AV1 at once. Opening x264 takes ~40 ms at 720p (allocating and
+    /// touching its buffers); done here it overlaps the renderer's start-up on the caller's
+    /// thread instead of delaying the first frame (docs/benchmarks.md, Whole pipeline).
+    void prepare() override {
+        if (!opens_lazily()) open();
     }
 
     void consume(const Image& input) override {
@@ -113,6 +120,7 @@ class Mp4Sink final : public FrameSink {
 
   private:
     std::string shown() const { return options_.path.string(); }
+    bool opens_lazily() const { return std::string_view(encoder_->name) == "libsvtav1"; }
 
     void configure_encoder() {
         codec_.reset(check_alloc(avcodec_alloc_context3(encoder_), "AVCodecContext"));

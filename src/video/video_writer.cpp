@@ -171,6 +171,7 @@ class VideoWriter::Impl {
     /// Its first error is kept and rethrown to the caller by write() or finish().
     void encode_loop() {
         try {
+            sink_->prepare();
             while (true) {
                 Image frame;
                 {
