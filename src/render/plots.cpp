@@ -1,6 +1,7 @@
 #include "plots.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -38,7 +39,51 @@ PlotFrame draw_axes(OverlayBatch& batch, const FontAtlas& font, RectF area,
     return {plot, line};
 }
 
+bool is_finite(const DriftPoint& p) {
+    return std::isfinite(p.time) && std::isfinite(p.drift);
+}
+
+// Appends the indices to draw of the run [begin, end) of finite points in one pixel column.
+void keep_run(const std::vector<DriftPoint>& s, std::size_t begin, std::size_t end,
+              std::vector<std::size_t>& keep) {
+    constexpr std::size_t all_kept = 4;
+    if (end - begin <= all_kept) {
+        for (std::size_t i = begin; i < end; ++i) keep.push_back(i);
+        return;
+    }
+    std::size_t low = begin;
+    std::size_t high = begin;
+    for (std::size_t i = begin + 1; i < end; ++i) {
+        if (s[i].drift < s[low].drift) low = i;
+        if (s[i].drift > s[high].drift) high = i;
+    }
+    std::array<std::size_t, 4> picked{begin, low, high, end - 1};
+    std::sort(picked.begin(), picked.end());
+    const auto last = std::unique(picked.begin(), picked.end());
+    keep.insert(keep.end(), picked.begin(), last);
+}
+
 }  // namespace
+
+std::vector<std::size_t> drift_points_to_draw(const std::vector<DriftPoint>& series,
+                                              const std::function<std::int64_t(double)>& column) {
+    std::vector<std::size_t> keep;
+    std::size_t i = 0;
+    while (i < series.size()) {
+        if (!is_finite(series[i])) {
+            keep.push_back(i++);
+            continue;
+        }
+        const std::int64_t here = column(series[i].time);
+        std::size_t end = i + 1;
+        while (end < series.size() && is_finite(series[end]) && column(series[end].time) == here) {
+            ++end;
+        }
+        keep_run(series, i, end, keep);
+        i = end;
+    }
+    return keep;
+}
 
 std::vector<double> speed_density(const Snapshot& snapshot, double v_min, double v_max, int bins) {
     std::vector<double> density(static_cast<std::size_t>(std::max(bins, 1)), 0.0);
@@ -176,13 +221,17 @@ void draw_drift_plot(OverlayBatch& batch, const FontAtlas& font, RectF area,
     };
     const float half = 0.5F * (plot.height() - frame.line_width) * 0.9F;
     const auto to_y = [&](double d) { return mid - static_cast<float>(d / scale) * half; };
+    const auto column = [&](double t) { return static_cast<std::int64_t>(std::floor(to_x(t))); };
     for (std::size_t p = 0; p < series.size(); ++p) {
         const Rgba8 color = with_alpha(panel_color(p), 255);
         const auto& s = series[p];
-        for (std::size_t i = 1; i < s.size(); ++i) {
-            if (!std::isfinite(s[i].drift) || !std::isfinite(s[i - 1].drift)) continue;
-            batch.add_line({to_x(s[i - 1].time), to_y(s[i - 1].drift)},
-                           {to_x(s[i].time), to_y(s[i].drift)}, frame.line_width * 1.5F, color);
+        const std::vector<std::size_t> shown = drift_points_to_draw(s, column);
+        for (std::size_t k = 1; k < shown.size(); ++k) {
+            const DriftPoint& a = s[shown[k - 1]];
+            const DriftPoint& b = s[shown[k]];
+            if (!is_finite(a) || !is_finite(b)) continue;
+            batch.add_line({to_x(a.time), to_y(a.drift)}, {to_x(b.time), to_y(b.drift)},
+                           frame.line_width * 1.5F, color);
         }
     }
 }

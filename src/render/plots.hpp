@@ -2,6 +2,8 @@
 // Internal: the strip's small plots (speed histogram vs 2D Maxwell-Boltzmann, energy drift),
 // built as overlay triangles, and the statistics behind them (pure, tested directly).
 
+#include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "collide/render/renderer.hpp"
@@ -41,6 +43,15 @@ class MaxwellBoltzmann {
 /// Maxwell-Boltzmann curve of the last one (white) inside `area`.
 void draw_speed_plot(OverlayBatch& batch, const FontAtlas& font, RectF area,
                      const std::vector<const Snapshot*>& snapshots, double v_min, double v_max);
+
+/// The indices (increasing) of the points of `series` worth drawing, `column` mapping a time to
+/// its pixel column: of each run of consecutive points in one column, the first, the lowest, the
+/// highest and the last (every point of a run of at most four). A polyline through them covers
+/// the same pixels as one through every point, so the plot of a long video costs O(plot width)
+/// segments per frame instead of one more segment per frame for ever. Points with a non-finite
+/// time or drift are kept (they break the line) and end a run.
+[[nodiscard]] std::vector<std::size_t> drift_points_to_draw(
+    const std::vector<DriftPoint>& series, const std::function<std::int64_t(double)>& column);
 
 /// Draws relative energy drift against time, one polyline per series, scaled to the largest
 /// |drift| (labelled), with the zero line.

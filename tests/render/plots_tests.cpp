@@ -1,0 +1,130 @@
+// The strip's plot statistics and the drift plot's thinning, tested as pure functions.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <random>
+#include <vector>
+
+#include "plots.hpp"
+
+namespace collide::render {
+namespace {
+
+// Pixel columns of width `per_column` time units starting at t = 0.
+auto columns_of_width(double per_column) {
+    return [per_column](double t) { return static_cast<std::int64_t>(std::floor(t / per_column)); };
+}
+
+std::vector<DriftPoint> random_walk(std::size_t count, double dt, std::uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> step(0.0, 1e-3);
+    std::vector<DriftPoint> series;
+    double drift = 0.0;
+    for (std::size_t i = 0; i < count; ++i) {
+        series.push_back({static_cast<double>(i) * dt, drift});
+        drift += step(rng);
+    }
+    return series;
+}
+
+bool strictly_increasing(const std::vector<std::size_t>& v) {
+    return std::adjacent_find(v.begin(), v.end(), std::greater_equal<>()) == v.end();
+}
+
+TEST_CASE("a drift series with at most four points per pixel column is drawn point for point") {
+    const std::vector<DriftPoint> series = random_walk(400, 0.25, 1);  // 4 points per column
+    const std::vector<std::size_t> kept = drift_points_to_draw(series, columns_of_width(1.0));
+    std::vector<std::size_t> all(series.size());
+    std::iota(all.begin(), all.end(), std::size_t{0});
+    CHECK(kept == all);
+}
+
+TEST_CASE("a long drift series keeps per column its first, lowest, highest and last points") {
+    const std::size_t per_column = 50;
+    const std::size_t columns = 300;
+    const std::vector<DriftPoint> series = random_walk(per_column * columns, 0.02, 2);
+    const std::vector<std::size_t> kept = drift_points_to_draw(series, columns_of_width(1.0));
+    REQUIRE(strictly_increasing(kept));
+    CHECK(kept.size() <= 4 * columns);
+    CHECK(kept.front() == 0);
+    CHECK(kept.back() == series.size() - 1);
+
+    for (std::size_t c = 0; c < columns; ++c) {
+        const std::size_t begin = c * per_column;
+        const std::size_t end = begin + per_column;
+        const auto by_drift = [&](std::size_t a, std::size_t b) {
+            return series[a].drift < series[b].drift;
+        };
+        std::vector<std::size_t> in_column(per_column);
+        std::iota(in_column.begin(), in_column.end(), begin);
+        const std::size_t low = *std::min_element(in_column.begin(), in_column.end(), by_drift);
+        const std::size_t high = *std::max_element(in_column.begin(), in_column.end(), by_drift);
+        const auto kept_here = [&](std::size_t i) {
+            return std::binary_search(kept.begin(), kept.end(), i);
+        };
+        CHECK(kept_here(begin));
+        CHECK(kept_here(end - 1));
+        CHECK(kept_here(low));
+        CHECK(kept_here(high));
+        const auto count = std::count_if(kept.begin(), kept.end(),
+                                         [&](std::size_t i) { return i >= begin && i < end; });
+        CHECK(count <= 4);
+    }
+}
+
+TEST_CASE("non-finite drift points are kept and split the run of their column") {
+    std::vector<DriftPoint> series = random_walk(100, 0.01, 3);  // all in column 0
+    series[50].drift = std::numeric_limits<double>::quiet_NaN();
+    const std::vector<std::size_t> kept = drift_points_to_draw(series, columns_of_width(1.0));
+    REQUIRE(strictly_increasing(kept));
+    CHECK(std::binary_search(kept.begin(), kept.end(), std::size_t{50}));
+    // Both halves end and start at the gap: the line stops at the last point before the NaN.
+    CHECK(std::binary_search(kept.begin(), kept.end(), std::size_t{49}));
+    CHECK(std::binary_search(kept.begin(), kept.end(), std::size_t{51}));
+    CHECK(kept.size() <= 9);
+}
+
+TEST_CASE("an empty drift series draws nothing") {
+    CHECK(drift_points_to_draw({}, columns_of_width(1.0)).empty());
+}
+
+Snapshot discs_with_speeds(const std::vector<double>& speeds, double mass = 1.0) {
+    Snapshot s;
+    s.box = {1.0, 1.0, Boundary::periodic};
+    for (const double v : speeds) {
+        DiscState d;
+        d.velocity = {v, 0.0};
+        d.mass = mass;
+        d.radius = 0.01;
+        s.discs.push_back(d);
+    }
+    return s;
+}
+
+TEST_CASE("the speed histogram is a density: counts / (N x bin width), speeds outside skipped") {
+    const Snapshot s = discs_with_speeds({0.1, 0.2, 0.6, 0.7, 0.8, 5.0});
+    const std::vector<double> density = speed_density(s, 0.0, 1.0, 2);
+    REQUIRE(density.size() == 2);
+    CHECK(density[0] == doctest::Approx(2.0 / (6.0 * 0.5)));
+    CHECK(density[1] == doctest::Approx(3.0 / (6.0 * 0.5)));
+    CHECK(speed_density(Snapshot{}, 0.0, 1.0, 4) == std::vector<double>(4, 0.0));
+}
+
+TEST_CASE("the 2D Maxwell-Boltzmann density uses kT = mean kinetic energy and integrates to 1") {
+    const Snapshot s = discs_with_speeds({1.0, 2.0, 3.0}, 2.0);  // kT = (1 + 4 + 9) / 3
+    const MaxwellBoltzmann mb(s);
+    CHECK(mb.kT() == doctest::Approx(14.0 / 3.0));
+    const double kT = mb.kT();
+    CHECK(mb.density(1.5) == doctest::Approx(2.0 * 1.5 / kT * std::exp(-2.0 * 2.25 / (2.0 * kT))));
+    double area = 0.0;
+    const double dv = 1e-3;
+    for (double v = 0.5 * dv; v < 20.0; v += dv) area += mb.density(v) * dv;
+    CHECK(area == doctest::Approx(1.0).epsilon(1e-4));
+}
+
+}  // namespace
+}  // namespace collide::render
