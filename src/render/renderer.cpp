@@ -642,7 +642,7 @@ struct Renderer::Impl {
     // Mirrors disc.vert's square: side 2 * (max(radius, min_radius) + aa_margin).
     [[nodiscard]] bool fits_point_sprite(const DiscInstance& disc) const noexcept {
         constexpr float min_radius = 0.75F;
-        constexpr float aa_margin = 1.0F;
+        constexpr float aa_margin = 0.5F;
         const float half = std::max(disc.radius, min_radius) + aa_margin;
         return 2.0F * half <= max_point_size && disc.x - half >= 0.0F && disc.y - half >= 0.0F &&
                disc.x + half <= static_cast<float>(config.width) &&
