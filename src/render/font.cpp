@@ -94,12 +94,11 @@ FontAtlas::FontAtlas(const std::string& path, float pixel_height) : pixel_height
     if (rows_used <= 0) {
         throw_runtime_error("font: glyphs of '" + path + "' do not fit the atlas at this size");
     }
-    const float inv = 1.0F / static_cast<float>(atlas_size_);
     glyphs_.reserve(code_point_count);
     for (const stbtt_bakedchar& b : baked) {
-        glyphs_.push_back({b.xoff, b.yoff, b.xoff + static_cast<float>(b.x1 - b.x0),
-                           b.yoff + static_cast<float>(b.y1 - b.y0), b.x0 * inv, b.y0 * inv,
-                           b.x1 * inv, b.y1 * inv, b.xadvance});
+        // stbtt bakes each glyph box at whole-pixel offsets; the atlas is at most 1024 texels.
+        glyphs_.push_back({b.xoff, b.yoff, b.x0, b.y0, static_cast<std::uint16_t>(b.x1 - b.x0),
+                           static_cast<std::uint16_t>(b.y1 - b.y0), b.xadvance});
     }
 }
 
@@ -112,14 +111,17 @@ const FontAtlas::Glyph& FontAtlas::glyph(std::uint32_t code_point) const noexcep
 
 float FontAtlas::add_text(OverlayBatch& batch, float x, float baseline_y, std::string_view text,
                           Rgba8 color) const {
-    // Snap the pen to whole pixels: glyphs were rasterised on the pixel grid.
+    // Glyphs were rasterised on the pixel grid, so each one lands on whole pixels. The pen
+    // advances by fractional widths; a glyph goes to the pixel column whose centre its left edge
+    // reaches (ceil(edge - 1/2)), the column a rasteriser fills first for a quad there.
     float pen = std::round(x);
     const float base = std::round(baseline_y);
     for (const std::uint32_t cp : decode_utf8(text)) {
         const Glyph& g = glyph(cp);
-        if (g.x1 > g.x0) {
-            batch.add_glyph({pen + g.x0, base + g.y0, pen + g.x1, base + g.y1},
-                            {g.u0, g.v0, g.u1, g.v1}, color);
+        if (g.width > 0 && g.height > 0) {
+            batch.add_glyph({static_cast<int>(std::ceil(pen + g.x_offset - 0.5F)),
+                             static_cast<int>(base + g.y_offset), g.u, g.v, g.width, g.height,
+                             color});
         }
         pen += g.advance;
     }

@@ -34,8 +34,8 @@ class FontAtlas {
 
   private:
     struct Glyph {
-        float x0, y0, x1, y1;  // quad relative to the pen position (y down)
-        float u0, v0, u1, v1;
+        float x_offset, y_offset;  // top-left pixel relative to the pen (whole pixels, y down)
+        std::uint16_t u, v, width, height;  // texels in the atlas
         float advance;
     };
     [[nodiscard]] const Glyph& glyph(std::uint32_t code_point) const noexcept;

@@ -3,21 +3,17 @@
 #include <cmath>
 
 namespace collide::render {
-namespace {
-constexpr RectF solid_uv{-1.0F, -1.0F, -1.0F, -1.0F};
-}
-
-void OverlayBatch::add_quad(PointF a, PointF b, PointF c, PointF d, RectF uv, Rgba8 color) {
+void OverlayBatch::add_quad(PointF a, PointF b, PointF c, PointF d, Rgba8 color) {
     // a-b along the top edge, d-c along the bottom; two triangles a b c, a c d.
-    const OverlayVertex va{a.x, a.y, uv.x0, uv.y0, color};
-    const OverlayVertex vb{b.x, b.y, uv.x1, uv.y0, color};
-    const OverlayVertex vc{c.x, c.y, uv.x1, uv.y1, color};
-    const OverlayVertex vd{d.x, d.y, uv.x0, uv.y1, color};
+    const OverlayVertex va{a.x, a.y, color};
+    const OverlayVertex vb{b.x, b.y, color};
+    const OverlayVertex vc{c.x, c.y, color};
+    const OverlayVertex vd{d.x, d.y, color};
     vertices_.insert(vertices_.end(), {va, vb, vc, va, vc, vd});
 }
 
 void OverlayBatch::add_rect(RectF r, Rgba8 color) {
-    add_quad({r.x0, r.y0}, {r.x1, r.y0}, {r.x1, r.y1}, {r.x0, r.y1}, solid_uv, color);
+    add_quad({r.x0, r.y0}, {r.x1, r.y0}, {r.x1, r.y1}, {r.x0, r.y1}, color);
 }
 
 void OverlayBatch::add_frame(RectF r, float width, Rgba8 color) {
@@ -36,11 +32,7 @@ void OverlayBatch::add_line(PointF a, PointF b, float width, Rgba8 color) {
     const float nx = -dy / length * width * 0.5F;
     const float ny = dx / length * width * 0.5F;
     add_quad({a.x + nx, a.y + ny}, {b.x + nx, b.y + ny}, {b.x - nx, b.y - ny}, {a.x - nx, a.y - ny},
-             solid_uv, color);
-}
-
-void OverlayBatch::add_glyph(RectF r, RectF uv, Rgba8 color) {
-    add_quad({r.x0, r.y0}, {r.x1, r.y0}, {r.x1, r.y1}, {r.x0, r.y1}, uv, color);
+             color);
 }
 
 }  // namespace collide::render

@@ -14,6 +14,7 @@
 #include "collide/error.hpp"
 #include "font.hpp"
 #include "gl_objects.hpp"
+#include "glyph_blit.hpp"
 #include "layout.hpp"
 #include "overlay_geometry.hpp"
 #include "plots.hpp"
@@ -100,7 +101,7 @@ struct DiscInstance {
 };
 static_assert(sizeof(DiscInstance) == 20);
 constexpr std::size_t vertices_per_disc = 6;  // a quad's two triangles (disc.vert)
-static_assert(sizeof(OverlayVertex) == 20);
+static_assert(sizeof(OverlayVertex) == 12);
 
 Rgb8 disc_color(const DiscState& disc, const RenderConfig& config) noexcept {
     switch (config.color_mode) {
@@ -147,7 +148,6 @@ struct Renderer::Impl {
     GlObject disc_buffer;
     GlObject overlay_vertex_array;
     GlObject overlay_buffer;
-    GlObject glyph_texture;
     GLint disc_frame_size = -1;
     GLint disc_as_points = -1;
     GLint overlay_frame_size = -1;
@@ -170,7 +170,7 @@ struct Renderer::Impl {
     std::vector<std::size_t> panel_instance_end;
     std::vector<RectF> panel_clip;  // scissor of each panel's discs
     OverlayBatch under;             // box fills, walls, trails: drawn before the discs
-    OverlayBatch over;              // text, legend, plots: drawn after
+    OverlayBatch over;              // text, legend, plots: drawn after (text on the CPU)
     // Whole-pixel interiors of the box fills, cleared (clear_background) before anything is
     // drawn; the fractional edges left over go into `under` as thin quads (add_box_fill).
     std::vector<RectF> fill_clears;
@@ -191,7 +191,6 @@ struct Renderer::Impl {
         create_framebuffer();
         create_programs();
         create_vertex_arrays();
-        create_glyph_texture();
         check_gl(gl, "renderer setup");
     }
 
@@ -232,8 +231,6 @@ struct Renderer::Impl {
         gl.GetFloatv(GL_POINT_SIZE_RANGE, point_range);
         max_point_size = point_range[1];
         overlay_frame_size = gl.GetUniformLocation(overlay_program.get(), "frame_size");
-        gl.UseProgram(overlay_program.get());
-        gl.Uniform1i(gl.GetUniformLocation(overlay_program.get(), "glyph_atlas"), 0);
     }
 
     void create_vertex_arrays() {
@@ -260,28 +257,10 @@ struct Renderer::Impl {
         constexpr auto stride = static_cast<GLsizei>(sizeof(OverlayVertex));
         gl.VertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, stride,
                                reinterpret_cast<const void*>(offsetof(OverlayVertex, x)));
-        gl.VertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, stride,
-                               reinterpret_cast<const void*>(offsetof(OverlayVertex, u)));
-        gl.VertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
+        gl.VertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
                                reinterpret_cast<const void*>(offsetof(OverlayVertex, color)));
-        for (GLuint location = 0; location < 3; ++location) gl.EnableVertexAttribArray(location);
+        for (GLuint location = 0; location < 2; ++location) gl.EnableVertexAttribArray(location);
         gl.BindVertexArray(0);
-    }
-
-    void create_glyph_texture() {
-        glyph_texture = make_texture(gl);
-        gl.ActiveTexture(GL_TEXTURE0);
-        gl.BindTexture(GL_TEXTURE_2D, glyph_texture.get());
-        gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        const std::uint8_t empty = 0;
-        const int size = font ? font->atlas_size() : 1;
-        gl.TexImage2D(GL_TEXTURE_2D, 0, GL_R8, size, size, 0, GL_RED, GL_UNSIGNED_BYTE,
-                      font ? font->bitmap().data() : &empty);
-        // Glyph quads are placed on whole pixels at the baked size: nearest is exact.
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     }
 
     // ------------------------------------------------------------------ frame building
@@ -556,6 +535,9 @@ struct Renderer::Impl {
         const auto frame_w = static_cast<float>(config.width);
         const auto frame_h = static_cast<float>(config.height);
 
+        // Text is blended on the CPU after the readback (read_pixels), over everything GL drew:
+        // only `over` may hold glyphs.
+        if (!under.glyphs().empty()) throw_runtime_error("renderer: text below the discs");
         overlay_upload.assign(under.vertices().begin(), under.vertices().end());
         overlay_upload.insert(overlay_upload.end(), over.vertices().begin(), over.vertices().end());
         gl.UseProgram(overlay_program.get());
@@ -565,8 +547,6 @@ struct Renderer::Impl {
         gl.BufferData(GL_ARRAY_BUFFER,
                       static_cast<GLsizeiptr>(overlay_upload.size() * sizeof(OverlayVertex)),
                       overlay_upload.data(), GL_STREAM_DRAW);
-        gl.ActiveTexture(GL_TEXTURE0);
-        gl.BindTexture(GL_TEXTURE_2D, glyph_texture.get());
         const auto under_count = static_cast<GLsizei>(under.vertices().size());
         if (under_count > 0) gl.DrawArrays(GL_TRIANGLES, 0, under_count);
 
@@ -716,6 +696,7 @@ struct Renderer::Impl {
         gl.ReadPixels(0, 0, config.width, config.height, GL_RGBA, GL_UNSIGNED_BYTE,
                       out.rgba.data());
         check_gl(gl, "reading the frame back");
+        if (font) blend_glyphs(out, over.glyphs(), font->bitmap(), font->atlas_size());
     }
 
     FrameLayout current_layout;
