@@ -114,7 +114,7 @@ class Renderer {
     void render(const FrameContent& frame, Image& out);
 
     /// The two halves of render(), exposed for benchmarks: draw only (GL commands issued and
-    /// finished), then read back the last drawn frame.
+    /// finished), then read back the last drawn frame (its text is blended in on the CPU then).
     void draw(const FrameContent& frame);
     void read_pixels(Image& out);
 
