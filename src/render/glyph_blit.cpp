@@ -19,7 +19,8 @@ std::uint32_t to_unorm8(float value) {
 }
 
 void blend_pixel(std::uint8_t* dst, Rgba8 color, std::uint8_t coverage) {
-    // overlay.frag: alpha = a * coverage; out = (rgb * alpha, alpha), in float.
+    // What a fragment shader sampling the coverage would output, in float:
+    // alpha = a * coverage; out = (rgb * alpha, alpha).
     const float alpha =
         (static_cast<float>(color.a) / 255.0F) * (static_cast<float>(coverage) / 255.0F);
     const std::uint32_t src_a = to_unorm8(alpha);

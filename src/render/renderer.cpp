@@ -537,7 +537,9 @@ struct Renderer::Impl {
 
         // Text is blended on the CPU after the readback (read_pixels), over everything GL drew:
         // only `over` may hold glyphs.
-        if (!under.glyphs().empty()) throw_runtime_error("renderer: text below the discs");
+        if (!under.glyphs().empty()) {
+            throw_runtime_error("renderer: text can only be drawn over everything else");
+        }
         overlay_upload.assign(under.vertices().begin(), under.vertices().end());
         overlay_upload.insert(overlay_upload.end(), over.vertices().begin(), over.vertices().end());
         gl.UseProgram(overlay_program.get());

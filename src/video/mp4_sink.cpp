@@ -86,9 +86,10 @@ class Mp4Sink final : public FrameSink {
         }
     }
 
-    /// Opens every encoder but SVT-AV1 at once. Opening x264 takes ~40 ms at 720p (allocating and
-    /// touching its buffers); done here it overlaps the renderer's start-up on the caller's
-    /// thread instead of delaying the first frame (docs/benchmarks.md, Whole pipeline).
+    /// Opens every encoder but SVT-AV1 at once. Opened by the first frame, x264 (allocating and
+    /// touching its buffers) delayed that frame's encoding by ~14 ms at 720p; opened here it
+    /// overlaps the renderer's start-up on the caller's thread (docs/benchmarks.md, Whole
+    /// pipeline).
     void prepare() override {
         if (!opens_lazily()) open();
     }
