@@ -508,7 +508,8 @@ inline void FastEngine::scan_cells(std::uint32_t i, const Particle& pi, double x
 
 // Beyond the caches every cell's first disc is a miss, and following the lists one after the
 // other makes those misses wait for each other. Asking for all of them before reading any
-// overlaps them: +12 % collisions per second at N = 1e5, +13 % at 1e6 (bench engine, eta 0.5).
+// overlaps them: +7 % collisions per second at N = 1e5 and 1e6 (bench engine, eta 0.5;
+// docs/benchmarks.md).
 // In cache the second pass only costs, hence prefetch_neighbours_; and this path stays out of
 // line so that the in-cache one keeps its code as it was.
 [[gnu::noinline]] void FastEngine::scan_cells_prefetched(std::uint32_t i, const Particle& pi,
