@@ -33,7 +33,13 @@ class TunnelScene {
         std::error_code ignored;
         std::filesystem::remove(path_, ignored);
     }
-    [[nodiscard]] std::string path() const { return "\"" + path_.string() + "\""; }
+    [[nodiscard]] std::string path() const {
+        // Appended, not "\"" + ...: GCC 12 -O2 warns falsely there (-Wrestrict, PR 105329).
+        std::string quoted(1, '"');
+        quoted += path_.string();
+        quoted += '"';
+        return quoted;
+    }
 
   private:
     std::filesystem::path path_;

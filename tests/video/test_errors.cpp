@@ -71,7 +71,7 @@ TEST_CASE("validate() names the bad field") {
     bad.codec = VideoCodec::av1;
     bad.preset = "veryfast";
     expect(bad, "video.preset");
-    bad.preset = "8";
+    bad.preset = std::string("8");  // not = "8": GCC 12 -O2 warns falsely (-Wrestrict, PR 105329)
     CHECK_NOTHROW(bad.validate());
     bad = options;
     bad.path.clear();
