@@ -544,30 +544,10 @@ void FastEngine::scan_ring(std::uint32_t i, const Particle& pi, double xi, doubl
         }
         return;
     }
-    const auto cx = static_cast<std::int64_t>(pi.cell % nx_);
-    const auto cy = static_cast<std::int64_t>(pi.cell / nx_);
-    for (std::int64_t y0 = cy - ky; y0 <= cy + ky; ++y0) {
-        std::int64_t y = y0;
-        double shift_y = 0.0;
-        if (y < 0 || y >= ny_) {
-            if (!periodic_) continue;
-            shift_y = y < 0 ? -box_.height : box_.height;
-            y = y < 0 ? y + ny_ : y - ny_;
-        }
-        for (std::int64_t x0 = cx - kx; x0 <= cx + kx; ++x0) {
-            std::int64_t x = x0;
-            double shift_x = 0.0;
-            if (x < 0 || x >= nx_) {
-                if (!periodic_) continue;
-                shift_x = x < 0 ? -box_.width : box_.width;
-                x = x < 0 ? x + nx_ : x - nx_;
-            }
-            for (std::uint32_t j = head_[static_cast<std::size_t>(y * nx_ + x)]; j != no_disc;
-                 j = p_[j].next) {
-                consider_pair(i, pi, xi, yi, j, shift_x, shift_y, best);
-            }
-        }
-    }
+    // Big discs are in no cell list, so scan_list's skip of i never applies here.
+    for_each_cell(pi, -kx, kx, -ky, ky, [&](std::uint32_t first, double sx, double sy) {
+        scan_list(i, pi, xi, yi, first, sx, sy, best);
+    });
 }
 
 // ------------------------------------------------------------------------------------------
