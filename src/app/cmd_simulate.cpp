@@ -16,6 +16,7 @@
 #include "collide/scene/load.hpp"
 #include "collide/sim/engine.hpp"
 #include "commands.hpp"
+#include "interrupt.hpp"
 #include "measurements_report.hpp"
 
 namespace collide::app {
@@ -125,7 +126,15 @@ void run_simulate(const SimulateOptions& options) {
             }
         });
     }
-    engine->advance_to(options.until);
+    // Ctrl-C stops the run cleanly (the events log's temporary is removed) however long it is.
+    InterruptGuard interrupts;
+    engine->set_stop_flag(&interrupts.flag());
+    try {
+        engine->advance_to(options.until);
+    } catch (const Error&) {
+        interrupts.throw_if_requested();  // say why the engine stopped
+        throw;
+    }
     if (log) log->finish();
     std::vector<ReportField> fields{{"scene", scene.name}, {"engine", options.engine.engine}};
     if (options.engine.engine == "classic") fields.push_back({"pq", options.engine.pq});

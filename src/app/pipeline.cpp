@@ -58,7 +58,7 @@ class SimulationThread {
   private:
     void run(const Scene& scene, const RenderPlan& plan, const std::atomic<bool>* cancel) {
         try {
-            FrameSource source(scene, plan);
+            FrameSource source(scene, plan, cancel);
             for (std::int64_t k = 0; k < plan.clock.count; ++k) {
                 if (cancel != nullptr && cancel->load()) break;
                 if (!queue_.push(source.frame(k))) break;
@@ -156,10 +156,13 @@ std::vector<std::string> comparison_notes(RenderMode mode) {
         "positions."};
 }
 
-FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan) : plan_(plan) {
+FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan,
+                         const std::atomic<bool>* stop)
+    : plan_(plan) {
     const auto add = [&](const EngineOptions& options, bool time_driven, std::string title) {
         Panel panel;
         panel.engine = make_engine(scene, options);
+        panel.engine->set_stop_flag(stop);
         panel.time_driven = time_driven;
         panel.title = std::move(title);
         panel.initial_energy = panel.engine->measurements().kinetic_energy;
@@ -256,8 +259,9 @@ PipelineResult render_video(const Scene& scene, const RenderPlan& plan,
         result.sim_time = frame->time;
         if (hooks.progress != nullptr) hooks.progress->frame_done(frame->time);
     }
-    result.engines = simulation.finish();
+    // Interrupted: say so, rather than the "simulation stopped" the engines threw on seeing it.
     check_interrupt(hooks);
+    result.engines = simulation.finish();
     if (result.frames != plan.clock.count)
         throw_runtime_error("rendering stopped before the last frame");
     writer.finish();
@@ -293,8 +297,9 @@ PipelineResult render_still(const Scene& scene, const RenderPlan& plan,
         result.sim_time = frame->time;
         if (hooks.progress != nullptr) hooks.progress->frame_done(frame->time);
     }
-    result.engines = simulation.finish();
+    // Interrupted: say so, rather than the "simulation stopped" the engines threw on seeing it.
     check_interrupt(hooks);
+    result.engines = simulation.finish();
     if (result.frames != plan.clock.count)
         throw_runtime_error("rendering stopped before the last frame");
     if (hooks.preview) {

@@ -48,8 +48,10 @@ struct SimFrame {
 class FrameSource {
   public:
     /// Builds the engines (time-driven and/or event-driven per plan.mode). Throws Error(input)
-    /// for engine options make_engine rejects.
-    FrameSource(const Scene& scene, const RenderPlan& plan);
+    /// for engine options make_engine rejects. Once `stop` is set (nullptr: never), frame()
+    /// throws Error(runtime) within a few thousand events, however far its frame time is.
+    FrameSource(const Scene& scene, const RenderPlan& plan,
+                const std::atomic<bool>* stop = nullptr);
     /// Advances every engine to plan.clock.time(k) (k increasing) and describes the frame.
     [[nodiscard]] SimFrame frame(std::int64_t k);
     /// Measurements of each engine now, in panel order.

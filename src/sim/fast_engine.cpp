@@ -192,6 +192,7 @@ void FastEngine::advance_to(double t) {
     require_forward(now_, t);
     WallClock clock(wall_seconds_);
     while (!heap_.empty() && heap_.top_key().t <= t) {
+        poll_stop();
         const std::uint32_t i = heap_.top();
         const Key key = heap_.top_key();
         ++stats_.pops;

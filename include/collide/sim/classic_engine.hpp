@@ -58,6 +58,7 @@ class ClassicEngine final : public Engine {
         require_forward(now_, t);
         WallClock clock(wall_seconds_);
         while (!queue_.empty() && queue_.top().t <= t) {
+            poll_stop();
             const Event e = queue_.pop();
             ++stats_.pops;
             if (!is_valid(e)) {

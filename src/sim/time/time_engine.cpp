@@ -89,6 +89,7 @@ void TimeEngine::advance_to(double t) {
     const double base = time_;
     std::uint64_t k = 0;
     while (time_ < t) {
+        check_stop();  // once per step: a step over many discs can take milliseconds
         ++k;
         double next = base + static_cast<double>(k) * dt_;
         if (next > t - landing_tolerance * dt_) {

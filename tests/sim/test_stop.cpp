@@ -1,0 +1,146 @@
+// Engine::set_stop_flag: a long advance_to() stops between two events once the flag is set (how
+// Ctrl-C reaches a run with a huge --until or --speed), and the engine stays usable.
+
+#include <doctest/doctest.h>
+
+#include <atomic>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "collide/error.hpp"
+#include "collide/sim/engine.hpp"
+#include "collide/sim/fast_engine.hpp"
+#include "scene_fixtures.hpp"
+
+using namespace collide;
+using collide::test::lattice_fluid;
+
+namespace {
+
+std::unique_ptr<Engine> make(const std::string& engine, const std::string& pq, const Scene& scene) {
+    EngineOptions options;
+    options.engine = engine;
+    options.pq = pq;
+    options.dt = 1e-3;
+    return make_engine(scene, options);
+}
+
+/// Runs advance_to(t) and returns the message of the Error(runtime) it throws ("" if none).
+std::string stop_message(Engine& engine, double t) {
+    try {
+        engine.advance_to(t);
+    } catch (const Error& e) {
+        CHECK(e.kind() == ErrorKind::runtime);
+        return e.what();
+    }
+    return "";
+}
+
+struct EngineKind {
+    const char* engine;
+    const char* pq;
+};
+constexpr EngineKind all_kinds[] = {
+    {"fast", "binary"}, {"classic", "binary"}, {"classic", "indexed"}, {"time", "binary"}};
+
+}  // namespace
+
+TEST_CASE("a set stop flag ends an endless advance_to with an error, between two events") {
+    for (const EngineKind kind : all_kinds) {
+        CAPTURE(kind.engine);
+        CAPTURE(kind.pq);
+        const Scene scene = lattice_fluid(8, 0.4, Boundary::walls, 3);
+        auto engine = make(kind.engine, kind.pq, scene);
+        std::atomic<bool> stop{true};
+        engine->set_stop_flag(&stop);
+        // Millions of events or steps ahead: seconds of work if the flag were ignored (and then
+        // no error), a few microseconds when it is seen.
+        const bool stepped = std::strcmp(kind.engine, "time") == 0;
+        CHECK(stop_message(*engine, stepped ? 1e3 : 1e4) == "simulation stopped");
+        CHECK(engine->time() >= 0.0);
+        CHECK(engine->time() < 1.0);
+        CHECK(engine->measurements().max_overlap <= 1e-9);
+    }
+}
+
+TEST_CASE("an unset or absent stop flag changes nothing") {
+    for (const EngineKind kind : all_kinds) {
+        CAPTURE(kind.engine);
+        const Scene scene = lattice_fluid(8, 0.4, Boundary::periodic, 5);
+        auto flagged = make(kind.engine, kind.pq, scene);
+        auto plain = make(kind.engine, kind.pq, scene);
+        std::atomic<bool> stop{false};
+        flagged->set_stop_flag(&stop);
+        CHECK(stop_message(*flagged, 2.0).empty());
+        plain->advance_to(2.0);
+        const Measurements a = flagged->measurements();
+        const Measurements b = plain->measurements();
+        CHECK(a.collisions_pair > 1000);  // the flag was looked at many times
+        CHECK(a.collisions_pair == b.collisions_pair);
+        CHECK(a.kinetic_energy == b.kinetic_energy);
+        flagged->set_stop_flag(nullptr);
+        CHECK(stop_message(*flagged, 3.0).empty());
+    }
+}
+
+// The stop lands between two events, so an engine stopped in the middle of a run and then run
+// on (flag cleared) produces the very same collisions as one that was never stopped.
+TEST_CASE("event-driven engines stopped mid-run and resumed give the identical event sequence") {
+    for (const EngineKind kind : all_kinds) {
+        if (std::strcmp(kind.engine, "time") == 0) continue;  // steps restart from the stop time
+        CAPTURE(kind.engine);
+        CAPTURE(kind.pq);
+        const Scene scene = lattice_fluid(10, 0.5, Boundary::periodic, 9);
+        auto reference = make(kind.engine, kind.pq, scene);
+        std::vector<CollisionRecord> expected;
+        reference->set_collision_listener([&](const CollisionRecord& r) { expected.push_back(r); });
+        reference->advance_to(1.0);
+        REQUIRE(expected.size() > 6000);
+
+        auto engine = make(kind.engine, kind.pq, scene);
+        std::atomic<bool> stop{false};
+        std::vector<CollisionRecord> got;
+        engine->set_collision_listener([&](const CollisionRecord& r) {
+            got.push_back(r);
+            if (got.size() == 2500 || got.size() == 5000) stop = true;  // twice, mid-frame
+        });
+        engine->set_stop_flag(&stop);
+        int stops = 0;
+        for (;;) {
+            const std::string message = stop_message(*engine, 1.0);
+            if (message.empty()) break;
+            CHECK(message == "simulation stopped");
+            CHECK(engine->time() < 1.0);
+            ++stops;
+            stop = false;
+        }
+        CHECK(stops == 2);
+        REQUIRE(got.size() == expected.size());
+        for (std::size_t k = 0; k < got.size(); ++k) {
+            INFO("collision #" << k);
+            REQUIRE(got[k].t == expected[k].t);
+            REQUIRE(got[k].kind == expected[k].kind);
+            REQUIRE(got[k].a == expected[k].a);
+            REQUIRE(got[k].b == expected[k].b);
+        }
+        CHECK(engine->time() == 1.0);
+    }
+}
+
+TEST_CASE("the fast engine's invariants hold after a stop") {
+    const Scene scene = lattice_fluid(10, 0.5, Boundary::periodic, 21);
+    sim::FastEngine engine(scene);
+    std::atomic<bool> stop{false};
+    std::size_t collisions = 0;
+    engine.set_collision_listener([&](const CollisionRecord&) {
+        if (++collisions == 3000) stop = true;
+    });
+    engine.set_stop_flag(&stop);
+    CHECK(stop_message(engine, 10.0) == "simulation stopped");
+    CHECK(engine.check_invariants());
+    // Stopped within one polling interval of the request.
+    CHECK(collisions >= 3000);
+    CHECK(collisions < 3000 + 1024);
+}
