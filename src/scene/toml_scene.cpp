@@ -121,6 +121,14 @@ class TomlReader {
         return v;
     }
 
+    // Named here rather than in validate_scene, which does not know the box's line.
+    double box_side(const toml::node& n, const std::string& field) const {
+        const double v = positive(n, field);
+        if (v > max_scene_magnitude)
+            fail(n, field, "must be at most " + num(max_scene_magnitude) + " (got " + num(v) + ")");
+        return v;
+    }
+
     std::int64_t integer(const toml::node& n, const std::string& field, std::int64_t min) const {
         const auto* i = n.as_integer();
         if (i == nullptr) fail(n, field, "expected an integer");
@@ -178,8 +186,8 @@ class TomlReader {
     void read_box(const toml::node& n) {
         const toml::table& t = table_at(n, "box");
         check_keys(t, "box", box_keys);
-        if (const toml::node* v = t.get("width")) scene_.box.width = positive(*v, "box.width");
-        if (const toml::node* v = t.get("height")) scene_.box.height = positive(*v, "box.height");
+        if (const toml::node* v = t.get("width")) scene_.box.width = box_side(*v, "box.width");
+        if (const toml::node* v = t.get("height")) scene_.box.height = box_side(*v, "box.height");
         if (const toml::node* v = t.get("boundary")) {
             const std::string b = text_value(*v, "box.boundary");
             if (b == "walls") {

@@ -15,6 +15,7 @@
 #include "collide/sim/fast_engine.hpp"
 #include "collide/sim/observables.hpp"
 #include "collide/sim/pq/dary_heap.hpp"
+#include "collide/sim/scene_check.hpp"
 #include "scene_fixtures.hpp"
 
 using namespace collide;
@@ -85,6 +86,49 @@ TEST_CASE("both engines: head-on discs collide at the analytic time and exchange
         CHECK(log[1].t == doctest::Approx(5.0));
         CHECK(log[2].t == doctest::Approx(5.0));
         CHECK(engine->measurements().collisions_wall == 2);
+    }
+}
+
+// validate_scene admits lengths, speeds and masses up to 1e50 (radii and masses down to 1e-50):
+// at every corner of that range the head-on collision must still happen, on time, with the
+// velocities exchanged and nothing overflowing or underflowing (no NaN, no passing through).
+TEST_CASE("every engine: head-on collision at the corners of the admitted range of magnitudes") {
+    for (const double length : {1e-49, 1.0, 1e50}) {
+        for (const double speed : {1e-50, 1.0, 1e50}) {
+            for (const double mass : {min_scene_magnitude, 1.0, max_scene_magnitude}) {
+                CAPTURE(length);
+                CAPTURE(speed);
+                CAPTURE(mass);
+                Scene scene = head_on();  // unit box, radius 0.1, speeds 0.1: contact at t = 2
+                scene.box = Box{length, length, Boundary::walls};
+                for (Disc& d : scene.discs) {
+                    d.position = length * d.position;
+                    d.radius *= length;
+                    d.velocity = speed * d.velocity;
+                    d.mass = mass;
+                }
+                REQUIRE_NOTHROW(validate_scene(scene));
+                const double unit_time = length / speed;
+                for (const std::string name : {"classic", "fast", "time", "time-grid"}) {
+                    CAPTURE(name);
+                    EngineOptions options;
+                    options.engine = name == "time-grid" ? "time" : name;
+                    if (name == "time-grid") options.td_detect = "grid";
+                    options.dt = 0.01 * unit_time;
+                    auto engine = make_engine(scene, options);
+                    const double energy = engine->measurements().kinetic_energy;
+                    engine->advance_to(2.5 * unit_time);
+                    const Snapshot s = engine->snapshot();
+                    CHECK(s.discs[0].velocity.x == doctest::Approx(-0.1 * speed));
+                    CHECK(s.discs[1].velocity.x == doctest::Approx(0.1 * speed));
+                    CHECK(s.discs[0].position.x == doctest::Approx(0.35 * length).epsilon(1e-3));
+                    const Measurements m = engine->measurements();
+                    CHECK(m.collisions_pair == 1);
+                    CHECK(m.kinetic_energy == doctest::Approx(energy).epsilon(1e-12));
+                    CHECK(m.max_overlap <= 1e-9 * length);
+                }
+            }
+        }
     }
 }
 

@@ -83,6 +83,42 @@ TEST_CASE("validation: bad values name the disc and the field") {
     CHECK(contains(validation_error(s), "box.height"));
 }
 
+TEST_CASE("validation: magnitudes beyond what the collision formulas survive are refused") {
+    Scene s;
+    s.box = Box{1.0, 1.0, Boundary::periodic};
+    const auto error_for = [&](const Disc& d) {
+        s.discs = {d};
+        return validation_error(s);
+    };
+    // 2 m_i m_j (dv . dr) at mass 1e200 overflows (a NaN velocity); at 1e-200 it underflows to 0
+    // (no impulse: the discs would pass through each other).
+    CHECK(contains(error_for(disc(0.5, 0.5, 0.1, 1e200)),
+                   "disc 1 mass: 1e+200 is outside the range collide computes with ([1e-50, "
+                   "1e+50])"));
+    CHECK(contains(error_for(disc(0.5, 0.5, 0.1, 1e-200)), "disc 1 mass: 1e-200 is outside"));
+    CHECK(contains(error_for(disc(0.5, 0.5, 1e-60)), "disc 1 radius: 1e-60 is outside"));
+    Disc fast = disc(0.5, 0.5, 0.1);
+    fast.velocity = {0.0, -1e308};
+    CHECK(contains(error_for(fast), "disc 1 velocity: -1e+308 is outside the range collide "
+                                    "computes with (at most 1e+50)"));
+    Disc far = disc(0.5, 0.5, 0.1);
+    far.position = {1e60, 0.5};
+    CHECK(contains(error_for(far), "disc 1 position: 1e+60 is outside"));
+    s.discs = {disc(0.5, 0.5, 0.1)};
+    s.box.width = 1e60;
+    CHECK(contains(validation_error(s), "box.width: 1e+60 is outside"));
+
+    // The bounds themselves are accepted.
+    s.box = Box{1e50, 1e50, Boundary::walls};
+    Disc big = disc(5e49, 5e49, 1e49, max_scene_magnitude);
+    big.velocity = {-max_scene_magnitude, max_scene_magnitude};
+    s.discs = {big};
+    CHECK_NOTHROW(validate_scene(s));
+    s.box = Box{1.0, 1.0, Boundary::walls};
+    s.discs = {disc(0.5, 0.5, min_scene_magnitude, min_scene_magnitude)};
+    CHECK_NOTHROW(validate_scene(s));
+}
+
 TEST_CASE("validation: every disc outside a walled box is listed with its origin") {
     Scene s;
     s.discs = {disc(0.5, 0.5, 0.1), disc(0.95, 0.5, 0.1), disc(0.5, -0.2, 0.1)};

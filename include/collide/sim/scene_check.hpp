@@ -50,12 +50,22 @@ class SceneOrigin {
 /// 1e-14 below the sum of radii.
 inline constexpr double contact_tolerance = 1e-9;
 
+/// The range of magnitudes the engines compute with: box sides, coordinates and velocity
+/// components at most max_scene_magnitude; radii and masses within [min, max]. Why: the collision
+/// formulas multiply up to four such numbers (2 m_i m_j (dv . dr), v^2 r^2), and beyond this
+/// range a product overflows to infinity (a NaN velocity, a run that never ends) or underflows to
+/// zero (no impulse: the discs pass through each other). SI units fit, from molecules (1e-26 kg,
+/// 1e-10 m) to planets (1e30 kg, 1e11 m).
+inline constexpr double max_scene_magnitude = 1e50;
+inline constexpr double min_scene_magnitude = 1e-50;
+
 /// How many problems of one kind a validation message lists before "and N more".
 inline constexpr std::size_t max_listed_problems = 5;
 
 /// Checks a scene and throws Error(input) on the first kind of problem found, naming where it
 /// comes from: box size not positive/finite; a position, velocity, radius or mass not finite;
-/// radius <= 0; mass <= 0; discs outside a walled box (every such disc is listed, up to
+/// radius <= 0; mass <= 0; any of them outside the range of max_scene_magnitude /
+/// min_scene_magnitude; discs outside a walled box (every such disc is listed, up to
 /// max_listed_problems); a disc too large for a periodic box (radius > min(width, height) / 4);
 /// two discs overlapping at t = 0 (the first pair in scene order is named).
 /// Complexity O(N) expected (a cell grid), memory O(N).

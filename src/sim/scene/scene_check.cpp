@@ -46,6 +46,33 @@ std::string location_text(const SourceLocation& where) {
     throw_input_error(where.file, where.line, field, reason);
 }
 
+// "1e+200 is outside ..." for a value beyond the range the engines compute with.
+std::string out_of_range_reason(double value, bool with_lower_bound) {
+    // One stream rather than "[" + ...: GCC 12 -O3 warns falsely (-Wrestrict) on the latter.
+    std::ostringstream s;
+    s.precision(6);
+    s << value << " is outside the range collide computes with (";
+    if (with_lower_bound) {
+        s << '[' << min_scene_magnitude << ", " << max_scene_magnitude << ']';
+    } else {
+        s << "at most " << max_scene_magnitude;
+    }
+    s << "): beyond it the collision formulas overflow or underflow";
+    return s.str();
+}
+
+bool within(double magnitude) noexcept {
+    return magnitude <= max_scene_magnitude;
+}
+
+bool within(Vec2 v) noexcept {
+    return within(std::abs(v.x)) && within(std::abs(v.y));
+}
+
+bool within_both(double positive) noexcept {
+    return positive >= min_scene_magnitude && positive <= max_scene_magnitude;
+}
+
 void check_box(const Box& box) {
     if (!(box.width > 0.0) || !std::isfinite(box.width)) {
         throw_input_error("", 0, "box.width",
@@ -55,6 +82,10 @@ void check_box(const Box& box) {
         throw_input_error("", 0, "box.height",
                           "must be a finite number > 0 (got " + format_number(box.height) + ")");
     }
+    if (box.width > max_scene_magnitude)
+        throw_input_error("", 0, "box.width", out_of_range_reason(box.width, false));
+    if (box.height > max_scene_magnitude)
+        throw_input_error("", 0, "box.height", out_of_range_reason(box.height, false));
 }
 
 bool finite(Vec2 v) noexcept {
@@ -73,6 +104,20 @@ void check_disc_values(const Disc& d, const SourceLocation& where) {
     if (!std::isfinite(d.mass))
         fail_at(where, "mass", "not a finite number (" + format_number(d.mass) + ")");
     if (!(d.mass > 0.0)) fail_at(where, "mass", "must be > 0 (got " + format_number(d.mass) + ")");
+    const auto check_components = [&](Vec2 v, const char* field) {
+        for (const double c : {v.x, v.y})
+            if (!within(std::abs(c))) fail_at(where, field, out_of_range_reason(c, false));
+    };
+    check_components(d.position, "position");
+    check_components(d.velocity, "velocity");
+    if (!within_both(d.radius)) fail_at(where, "radius", out_of_range_reason(d.radius, true));
+    if (!within_both(d.mass)) fail_at(where, "mass", out_of_range_reason(d.mass, true));
+}
+
+// The checks of check_disc_values, as one test (no strings built for the good discs).
+bool disc_values_ok(const Disc& d) noexcept {
+    return finite(d.position) && finite(d.velocity) && within(d.position) && within(d.velocity) &&
+           within_both(d.radius) && within_both(d.mass);
 }
 
 // How far a walled box is exceeded, as text ("right edge at 1.01 > width 1"), or empty.
@@ -201,10 +246,7 @@ void validate_scene(const Scene& scene, const SceneOrigin& origin) {
     for (std::size_t i = 0; i < scene.discs.size(); ++i) {
         // Only build a location (strings) when something is wrong.
         const Disc& d = scene.discs[i];
-        if (finite(d.position) && finite(d.velocity) && std::isfinite(d.radius) && d.radius > 0.0 &&
-            std::isfinite(d.mass) && d.mass > 0.0) {
-            continue;
-        }
+        if (disc_values_ok(d)) continue;
         check_disc_values(d, origin.locate(i));
     }
     check_inside_box(scene, origin);

@@ -14,10 +14,13 @@ struct SweepCoordinates {
     const double* reach;
 };
 
+/// The float copy, in units of a power of two near the scene's extent (see PairSweep::find).
 struct SweepCoordinates32 {
     const float* x;
     const float* y;
     const float* reach;
+    float width;  ///< the periodic box's sides in the same units (unused with walls)
+    float height;
 };
 
 /// Pairs tested together before looking for hits: large enough for the vector loop to run at full
@@ -50,8 +53,8 @@ template <bool periodic>
                                               const SweepCoordinates32& f, std::uint32_t n,
                                               double width, double height,
                                               std::vector<DiscPair>& out) {
-    const auto width_f = static_cast<float>(width);
-    const auto height_f = static_cast<float>(height);
+    const float width_f = f.width;
+    const float height_f = f.height;
     for (std::uint32_t i = 0; i < n; ++i) {
         const float xi_f = f.x[i];
         const float yi_f = f.y[i];
@@ -94,7 +97,7 @@ template <bool periodic>
 COLLIDE_SWEEP_CLONES
 void sweep_rows_walls(const SweepCoordinates& d, const SweepCoordinates32& f, std::uint32_t n,
                       std::vector<DiscPair>& out) {
-    sweep_rows<false>(d, f, n, 0.0, 0.0, out);
+    sweep_rows<false>(d, f, n, 0.0, 0.0, out);  // no periodic fold: the box sides are unused
 }
 
 COLLIDE_SWEEP_CLONES
@@ -137,14 +140,21 @@ void PairSweep::find(const Box& box, const std::vector<Vec2>& positions,
     // largest reach) covers both with room to spare and lets only a sliver more pairs through to
     // the double test. (Non-finite data make the pad non-finite: then every block is rescanned.)
     const double pad = 16.0 * std::numeric_limits<float>::epsilon() * (extent + max_reach);
+    // Floats only reach 3e38 and lose precision below 1e-38, and scenes go from 1e-50 to 1e50:
+    // the float copy counts in units of the power of two at or below the extent, so that its
+    // coordinates lie within +-2. A power of two scales exactly, so the rounding (and the pad,
+    // relative to the extent) is as above.
+    const double unit = std::isfinite(extent) ? std::ldexp(1.0, -std::ilogb(extent)) : 1.0;
     for (std::size_t i = 0; i < n; ++i) {
-        x32_[i] = static_cast<float>(x_[i]);
-        y32_[i] = static_cast<float>(y_[i]);
-        reach32_[i] = static_cast<float>(reach_[i] + pad);
+        x32_[i] = static_cast<float>(x_[i] * unit);
+        y32_[i] = static_cast<float>(y_[i] * unit);
+        reach32_[i] = static_cast<float>((reach_[i] + pad) * unit);
     }
     const auto count = static_cast<std::uint32_t>(n);
     const SweepCoordinates d{x_.data(), y_.data(), reach_.data()};
-    const SweepCoordinates32 f{x32_.data(), y32_.data(), reach32_.data()};
+    const SweepCoordinates32 f{x32_.data(), y32_.data(), reach32_.data(),
+                               static_cast<float>(box.width * unit),
+                               static_cast<float>(box.height * unit)};
     if (box.boundary == Boundary::periodic) {
         sweep_rows_periodic(d, f, count, box.width, box.height, out);
     } else {
