@@ -16,6 +16,7 @@
 #include "collide/scene/load.hpp"
 #include "collide/sim/engine.hpp"
 #include "collide/sim/generate.hpp"
+#include "collide/sim/scene_check.hpp"
 #include "commands.hpp"
 #include "measurements_report.hpp"
 
@@ -23,9 +24,12 @@ namespace collide::app {
 
 namespace {
 
+/// The fast engine's limit (30-bit disc indices), rounded down.
+constexpr double max_discs = 1e9;
+
 struct BenchOptions {
     std::string scene;  ///< empty: random periodic fluid
-    std::size_t n = 100000;
+    double n = 1e5;  ///< a double, so that --n 1e5 reads like --collisions 5e6
     double eta = 0.5;
     double collisions = 5e6;  ///< collisions timed
     double warmup = -1.0;     ///< collisions before timing; < 0: two per disc
@@ -35,7 +39,11 @@ struct BenchOptions {
 
     void validate() const {
         if (scene.empty()) {
-            if (n < 2) throw_input_error("--n", 0, "", "needs at least 2 discs");
+            if (!(n >= 2.0 && n <= max_discs && n == std::floor(n)))
+                throw_input_error("--n", 0, "",
+                                  fmt::format("must be a whole number of discs from 2 to {:g}, "
+                                              "got {:g}",
+                                              max_discs, n));
             if (!(eta > 0.0 && eta <= 0.85))
                 throw_input_error("--eta", 0, "", "packing fraction must lie in (0, 0.85]");
         }
@@ -69,15 +77,22 @@ std::uint64_t max_rss_bytes() {
 
 Scene random_fluid(const BenchOptions& options) {
     Scene scene;
-    scene.name = fmt::format("fluid-n{}-eta{}", options.n, options.eta);
+    const auto count = static_cast<std::size_t>(options.n);
+    scene.name = fmt::format("fluid-n{}-eta{}", count, options.eta);
     scene.box = Box{1.0, 1.0, Boundary::periodic};
     GenerateSpec spec;
-    spec.count = options.n;
-    spec.radius = std::sqrt(options.eta / (std::numbers::pi * static_cast<double>(options.n)));
+    spec.count = count;
+    spec.radius = std::sqrt(options.eta / (std::numbers::pi * options.n));
     spec.temperature = 1.0;
     spec.seed = options.seed;
     spec.validate();
     generate_discs(scene, spec);
+    try {
+        validate_scene(scene);  // a few discs at a high packing fraction are too big for the box
+    } catch (const Error& e) {
+        throw_input_error(fmt::format("--n {:g} --eta {:g}: no valid fluid: {}", options.n,
+                                      options.eta, e.what()));
+    }
     return scene;
 }
 
@@ -89,6 +104,13 @@ void run_collisions(Engine& engine, const std::uint64_t& counter, double target)
     while (counter < goal) {
         const std::uint64_t before = counter;
         const double t0 = engine.time();
+        if (!std::isfinite(t0 + step)) {
+            // The step grows eightfold while nothing collides: it only gets here if nothing ever
+            // will (discs at rest, or moving in parallel), and then there is nothing to time.
+            throw_input_error(fmt::format("bench engine: no collision happens in this scene (none "
+                                          "up to t = {:g}), so there is nothing to time",
+                                          t0));
+        }
         engine.advance_to(t0 + step);
         const double done = static_cast<double>(counter - before);
         const double wanted =

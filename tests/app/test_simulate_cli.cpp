@@ -112,3 +112,26 @@ TEST_CASE("collide bench engine reports throughput and memory on a small fluid")
     }
     CHECK(run_collide("bench engine --n 1 --collisions 10").exit_code == 2);
 }
+
+TEST_CASE("collide bench engine: --n in exponent form, and clear errors for fluids it cannot time") {
+    const auto exponent = run_collide("bench engine --n 4e2 --eta 0.4 --collisions 1e3");
+    CHECK(exponent.exit_code == 0);
+    CHECK(contains(exponent.output, "discs: 400"));
+
+    const auto fractional = run_collide("bench engine --n 2.5 --collisions 10");
+    CHECK(fractional.exit_code == 2);
+    CHECK(contains(fractional.output, "--n: must be a whole number of discs from 2 to 1e+09"));
+
+    // Two discs at packing fraction 0.5 are wider than a quarter of the box.
+    const auto too_few = run_collide("bench engine --n 2 --eta 0.5 --collisions 10");
+    CHECK(too_few.exit_code == 2);
+    CHECK(contains(too_few.output, "--n 2 --eta 0.5: no valid fluid"));
+
+    // A disc at rest in a walled box never collides: an error, not an endless search.
+    TempDir dir("collide_test_bench_still");
+    const fs::path still = dir.path / "still.txt";
+    std::ofstream(still) << "1\n0.5 0.5 0 0 0.1 1 0 0 0\n";
+    const auto r = run_collide("bench engine --scene \"" + still.string() + "\" --collisions 10");
+    CHECK(r.exit_code == 2);
+    CHECK(contains(r.output, "no collision happens in this scene"));
+}
