@@ -1,6 +1,7 @@
 #pragma once
 // Runs the `collide` executable built by this tree and captures its exit code and output.
 
+#include <doctest/doctest.h>
 #include <sys/wait.h>
 
 #include <array>
@@ -26,6 +27,13 @@ inline RunResult run_collide(const std::string& args) {
     const int status = pclose(pipe);
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return r;
+}
+
+/// Runs `collide <args>` expecting bad input (exit code 2, checked); returns its output.
+inline std::string run_collide_bad_input(const std::string& args) {
+    const RunResult r = run_collide(args);
+    CHECK_MESSAGE(r.exit_code == 2, args);
+    return r.output;
 }
 
 }  // namespace collide::test

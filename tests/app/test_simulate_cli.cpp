@@ -14,6 +14,7 @@
 #include "run_collide.hpp"
 
 using collide::test::run_collide;
+using collide::test::run_collide_bad_input;
 
 namespace {
 
@@ -118,20 +119,16 @@ TEST_CASE("collide bench engine: --n in exponent form, and clear errors for flui
     CHECK(exponent.exit_code == 0);
     CHECK(contains(exponent.output, "discs: 400"));
 
-    const auto fractional = run_collide("bench engine --n 2.5 --collisions 10");
-    CHECK(fractional.exit_code == 2);
-    CHECK(contains(fractional.output, "--n: must be a whole number of discs from 2 to 1e+09"));
-
+    CHECK(contains(run_collide_bad_input("bench engine --n 2.5 --collisions 10"),
+                   "--n: must be a whole number of discs from 2 to 1e+09"));
     // Two discs at packing fraction 0.5 are wider than a quarter of the box.
-    const auto too_few = run_collide("bench engine --n 2 --eta 0.5 --collisions 10");
-    CHECK(too_few.exit_code == 2);
-    CHECK(contains(too_few.output, "--n 2 --eta 0.5: no valid fluid"));
-
+    CHECK(contains(run_collide_bad_input("bench engine --n 2 --eta 0.5 --collisions 10"),
+                   "--n 2 --eta 0.5: no valid fluid"));
     // A disc at rest in a walled box never collides: an error, not an endless search.
     TempDir dir("collide_test_bench_still");
     const fs::path still = dir.path / "still.txt";
     std::ofstream(still) << "1\n0.5 0.5 0 0 0.1 1 0 0 0\n";
-    const auto r = run_collide("bench engine --scene \"" + still.string() + "\" --collisions 10");
-    CHECK(r.exit_code == 2);
-    CHECK(contains(r.output, "no collision happens in this scene"));
+    CHECK(contains(run_collide_bad_input("bench engine --scene \"" + still.string() +
+                                         "\" --collisions 10"),
+                   "no collision happens in this scene"));
 }

@@ -19,12 +19,25 @@ using collide::test::lattice_fluid;
 
 namespace {
 
+struct EngineKind {
+    const char* engine;
+    const char* pq;
+};
+
 std::unique_ptr<Engine> make(const std::string& engine, const std::string& pq, const Scene& scene) {
     EngineOptions options;
     options.engine = engine;
     options.pq = pq;
     options.dt = 1e-3;
     return make_engine(scene, options);
+}
+
+/// An engine that polls `stop`.
+std::unique_ptr<Engine> make_flagged(const EngineKind& kind, const Scene& scene,
+                                     const std::atomic<bool>& stop) {
+    auto engine = make(kind.engine, kind.pq, scene);
+    engine->set_stop_flag(&stop);
+    return engine;
 }
 
 /// Runs advance_to(t) and returns the message of the Error(runtime) it throws ("" if none).
@@ -38,10 +51,6 @@ std::string stop_message(Engine& engine, double t) {
     return "";
 }
 
-struct EngineKind {
-    const char* engine;
-    const char* pq;
-};
 /// The stop is polled in each engine's own loop, whatever the classic engine's queue.
 constexpr EngineKind all_kinds[] = {{"fast", "binary"}, {"classic", "binary"}, {"time", "binary"}};
 
@@ -51,10 +60,8 @@ TEST_CASE("a set stop flag ends an endless advance_to with an error, between two
     for (const EngineKind kind : all_kinds) {
         CAPTURE(kind.engine);
         CAPTURE(kind.pq);
-        const Scene scene = lattice_fluid(8, 0.4, Boundary::walls, 3);
-        auto engine = make(kind.engine, kind.pq, scene);
-        std::atomic<bool> stop{true};
-        engine->set_stop_flag(&stop);
+        const std::atomic<bool> stop{true};
+        auto engine = make_flagged(kind, lattice_fluid(8, 0.4, Boundary::walls, 3), stop);
         // Millions of events or steps ahead: seconds of work if the flag were ignored (and then
         // no error), a few microseconds when it is seen.
         const bool stepped = std::strcmp(kind.engine, "time") == 0;
@@ -72,10 +79,9 @@ TEST_CASE("an unset or absent stop flag changes nothing") {
         CAPTURE(kind.engine);
         CAPTURE(kind.pq);
         const Scene scene = lattice_fluid(5, 0.4, Boundary::walls, 5);
-        auto flagged = make(kind.engine, kind.pq, scene);
+        const std::atomic<bool> stop{false};
+        auto flagged = make_flagged(kind, scene, stop);
         auto plain = make(kind.engine, kind.pq, scene);
-        std::atomic<bool> stop{false};
-        flagged->set_stop_flag(&stop);
         // The same frames for both (the time-driven engine's steps restart at each call), far
         // enough for the flag to be looked at twice (every 1024 events, or every step).
         double t = 0.0;
