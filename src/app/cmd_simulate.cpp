@@ -109,6 +109,8 @@ const char* kind_name(CollisionKind kind) {
 
 void run_simulate(const SimulateOptions& options) {
     options.validate();
+    // Ctrl-C stops the run cleanly (the events log's temporary is removed) however long it is.
+    InterruptGuard interrupts;
     const Scene scene = load_scene(options.scene);
     // Open the log before simulating: an unwritable path fails fast, with nothing half written.
     std::unique_ptr<AtomicTextFile> log;
@@ -126,8 +128,6 @@ void run_simulate(const SimulateOptions& options) {
             }
         });
     }
-    // Ctrl-C stops the run cleanly (the events log's temporary is removed) however long it is.
-    InterruptGuard interrupts;
     engine->set_stop_flag(&interrupts.flag());
     try {
         engine->advance_to(options.until);
@@ -135,6 +135,7 @@ void run_simulate(const SimulateOptions& options) {
         interrupts.throw_if_requested();  // say why the engine stopped
         throw;
     }
+    interrupts.throw_if_requested();  // a signal during loading, or too late for a poll
     if (log) log->finish();
     std::vector<ReportField> fields{{"scene", scene.name}, {"engine", options.engine.engine}};
     if (options.engine.engine == "classic") fields.push_back({"pq", options.engine.pq});

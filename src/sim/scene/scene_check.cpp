@@ -61,15 +61,15 @@ std::string out_of_range_reason(double value, bool with_lower_bound) {
     return s.str();
 }
 
-bool within(double magnitude) noexcept {
+bool below_max(double magnitude) noexcept {
     return magnitude <= max_scene_magnitude;
 }
 
-bool within(Vec2 v) noexcept {
-    return within(std::abs(v.x)) && within(std::abs(v.y));
+bool components_below_max(Vec2 v) noexcept {
+    return below_max(std::abs(v.x)) && below_max(std::abs(v.y));
 }
 
-bool within_both(double positive) noexcept {
+bool in_range(double positive) noexcept {
     return positive >= min_scene_magnitude && positive <= max_scene_magnitude;
 }
 
@@ -106,18 +106,18 @@ void check_disc_values(const Disc& d, const SourceLocation& where) {
     if (!(d.mass > 0.0)) fail_at(where, "mass", "must be > 0 (got " + format_number(d.mass) + ")");
     const auto check_components = [&](Vec2 v, const char* field) {
         for (const double c : {v.x, v.y})
-            if (!within(std::abs(c))) fail_at(where, field, out_of_range_reason(c, false));
+            if (!below_max(std::abs(c))) fail_at(where, field, out_of_range_reason(c, false));
     };
     check_components(d.position, "position");
     check_components(d.velocity, "velocity");
-    if (!within_both(d.radius)) fail_at(where, "radius", out_of_range_reason(d.radius, true));
-    if (!within_both(d.mass)) fail_at(where, "mass", out_of_range_reason(d.mass, true));
+    if (!in_range(d.radius)) fail_at(where, "radius", out_of_range_reason(d.radius, true));
+    if (!in_range(d.mass)) fail_at(where, "mass", out_of_range_reason(d.mass, true));
 }
 
 // The checks of check_disc_values, as one test (no strings built for the good discs).
 bool disc_values_ok(const Disc& d) noexcept {
-    return finite(d.position) && finite(d.velocity) && within(d.position) && within(d.velocity) &&
-           within_both(d.radius) && within_both(d.mass);
+    return finite(d.position) && finite(d.velocity) && components_below_max(d.position) &&
+           components_below_max(d.velocity) && in_range(d.radius) && in_range(d.mass);
 }
 
 // How far a walled box is exceeded, as text ("right edge at 1.01 > width 1"), or empty.
