@@ -156,8 +156,7 @@ std::vector<std::string> comparison_notes(RenderMode mode) {
         "positions."};
 }
 
-FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan,
-                         const std::atomic<bool>* stop)
+FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan, const std::atomic<bool>* stop)
     : plan_(plan) {
     const auto add = [&](const EngineOptions& options, bool time_driven, std::string title) {
         Panel panel;
@@ -221,7 +220,7 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
         content_.panels[i] = {&panel.snapshot, panel.title, panel.counters};
         content_.energy_drift[i].push_back(panel.drift);
     }
-    content_.time_text = fmt::format("t = {:.3f}   ({:.3g}/s)", frame.time, plan_.speed.speed);
+    content_.time_text = clock_label(frame.time, plan_.clock, plan_.speed.speed);
     return content_;
 }
 

@@ -363,10 +363,17 @@ std::string event_panel_title(const EngineOptions& options) {
 
 std::string short_count(double value) {
     const double magnitude = std::abs(value);
+    if (magnitude >= 1e12 || (magnitude > 0.0 && magnitude < 1.0))
+        return fmt::format("{:.3g}", value);
     if (magnitude >= 1e9) return fmt::format("{:.2f}G", value / 1e9);
     if (magnitude >= 1e6) return fmt::format("{:.2f}M", value / 1e6);
     if (magnitude >= 1e4) return fmt::format("{:.1f}k", value / 1e3);
     return fmt::format("{:.0f}", value);
+}
+
+std::string clock_label(double t, const FrameClock& clock, double speed) {
+    if (clock.interval >= 1e-3) return fmt::format("t = {:.3f}   ({:.3g}/s)", t, speed);
+    return fmt::format("t = {:.6g}   ({:.3g}/s)", t, speed);
 }
 
 }  // namespace collide::app

@@ -160,7 +160,13 @@ inline constexpr const char* default_output_dir = "out";
 [[nodiscard]] std::string time_panel_title(double dt);
 [[nodiscard]] std::string event_panel_title(const EngineOptions& options);
 
-/// "1.23k", "4.56M": short counts for on-screen counters.
+/// "1.23k", "4.56M": short counts for on-screen counters; beyond 10^12, and for fractions below
+/// one, three significant digits ("2.39e+17", "0.00042"), so that no count outgrows its column.
 [[nodiscard]] std::string short_count(double value);
+
+/// The on-screen clock "t = 12.345   (1/s)": three decimals while they tell one frame from the
+/// next (frame interval >= 1e-3), else six significant digits ("t = 4.96667e-11"), as in scenes
+/// written in SI units where a video spans picoseconds.
+[[nodiscard]] std::string clock_label(double t, const FrameClock& clock, double speed);
 
 }  // namespace collide::app

@@ -172,3 +172,24 @@ TEST_CASE("on-screen counters are deterministic counts, the same for the same me
     CHECK(comparison_notes(RenderMode::both).size() == 1);
     CHECK(comparison_notes(RenderMode::event).empty());
 }
+
+TEST_CASE("short counts stay short at any magnitude") {
+    CHECK(short_count(0.0) == "0");
+    CHECK(short_count(999.0) == "999");
+    CHECK(short_count(12'345.0) == "12.3k");
+    CHECK(short_count(4.56e6) == "4.56M");
+    CHECK(short_count(7.5e9) == "7.50G");
+    // Per unit of time in scenes written in SI units (picoseconds): no 20-digit "G" counts.
+    CHECK(short_count(2.394e17) == "2.39e+17");
+    CHECK(short_count(4.2e-4) == "0.00042");
+    CHECK(short_count(-3e13) == "-3e+13");
+}
+
+TEST_CASE("the on-screen clock resolves one frame interval, whatever the units") {
+    // Built-in scenes: three decimals, as in every video so far.
+    CHECK(clock_label(12.3456, video_clock(10.0, 1.0, 30), 1.0) == "t = 12.346   (1/s)");
+    // An argon scene in SI units: the video spans 5e-11 s, frames 3.3e-13 s apart.
+    const FrameClock si = video_clock(10.0, 5e-12, 15);
+    CHECK(clock_label(si.time(149), si, 5e-12) == "t = 4.96667e-11   (5e-12/s)");
+    CHECK(clock_label(si.time(148), si, 5e-12) != clock_label(si.time(149), si, 5e-12));
+}
