@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace collide::render {
 
@@ -38,9 +39,12 @@ FrameLayout compute_layout(const RenderConfig& config, const std::vector<Box>& b
         panel.header = {panel.area.x0 + m, m, panel.area.x1 - m, m + header_height};
         const RectF room{panel.area.x0 + m, panel.header.y1 + m, panel.area.x1 - m,
                          panels_bottom - m};
+        // Pixels per scene unit: anything from ~1e-48 (a box of 1e50 units) to ~1e52 (1e-50
+        // units); only a degenerate room could make it 0.
         const double scale =
-            std::max(1e-9, std::min(static_cast<double>(room.width()) / boxes[i].width,
-                                    static_cast<double>(room.height()) / boxes[i].height));
+            std::max(std::numeric_limits<double>::min(),
+                     std::min(static_cast<double>(room.width()) / boxes[i].width,
+                              static_cast<double>(room.height()) / boxes[i].height));
         const auto box_w = static_cast<float>(boxes[i].width * scale);
         const auto box_h = static_cast<float>(boxes[i].height * scale);
         const float x0 = std::round(room.x0 + 0.5F * (room.width() - box_w));

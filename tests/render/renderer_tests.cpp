@@ -80,6 +80,29 @@ TEST_CASE("a disc lands at its centre with its colour, rows top-down") {
     for (std::size_t i = 3; i < r.image.rgba.size(); i += 4) REQUIRE(r.image.rgba[i] == 255);
 }
 
+// Scenes may be written in any units from 1e-50 to 1e50 (validate_scene): the picture depends on
+// the scene's shape only. (A floor on the pixels per unit once made boxes of 1e20 units 10^11
+// pixels wide, and the frame failed with a GL error.)
+TEST_CASE("the same scene in tiny or huge units gives the same picture") {
+    const auto scaled = [](double unit) {
+        Snapshot s = empty_snapshot({16.0 * unit, 9.0 * unit, Boundary::walls});
+        s.discs = {disc_at({4.0 * unit, 6.5 * unit}, 1.0 * unit, red),
+                   disc_at({12.0 * unit, 2.0 * unit}, 0.5 * unit, green)};
+        return render_one(s).image;
+    };
+    const Image reference = scaled(1.0);
+    CHECK(count_near(reference, red, 10) > 100);
+    for (const double unit : {1e-45, 1e-12, 1e20, 1e45}) {
+        CAPTURE(unit);
+        const Image image = scaled(unit);
+        REQUIRE(image.rgba.size() == reference.rgba.size());
+        std::size_t differing = 0;
+        for (std::size_t i = 0; i < image.rgba.size(); ++i)
+            differing += image.rgba[i] != reference.rgba[i];
+        CHECK(differing <= 8);  // the rounding of a few rim pixels at most
+    }
+}
+
 TEST_CASE("a disc one pixel across is still visible") {
     Snapshot s = empty_snapshot({16.0, 9.0, Boundary::walls});
     RenderConfig config = test::small_config(false);
