@@ -29,7 +29,7 @@ constexpr double max_discs = 1e9;
 
 struct BenchOptions {
     std::string scene;  ///< empty: random periodic fluid
-    double n = 1e5;  ///< a double, so that --n 1e5 reads like --collisions 5e6
+    double n = 1e5;     ///< a double, so that --n 1e5 reads like --collisions 5e6
     double eta = 0.5;
     double collisions = 5e6;  ///< collisions timed
     double warmup = -1.0;     ///< collisions before timing; < 0: two per disc
@@ -107,9 +107,10 @@ void run_collisions(Engine& engine, const std::uint64_t& counter, double target)
         if (!std::isfinite(t0 + step)) {
             // The step grows eightfold while nothing collides: it only gets here if nothing ever
             // will (discs at rest, or moving in parallel), and then there is nothing to time.
-            throw_input_error(fmt::format("bench engine: no collision happens in this scene (none "
-                                          "up to t = {:g}), so there is nothing to time",
-                                          t0));
+            throw_input_error(
+                fmt::format("bench engine: no collision happens in this scene (none "
+                            "up to t = {:g}), so there is nothing to time",
+                            t0));
         }
         engine.advance_to(t0 + step);
         const double done = static_cast<double>(counter - before);

@@ -96,15 +96,15 @@ TEST_CASE("render: a signal during an endless simulation step exits 1 and leaves
         TempDir logs("interrupt_render_log");
         const fs::path log = logs.path / "log.txt";
         // --speed 1e300: the first frame lies 10^298 time units ahead, an endless advance_to().
-        const int status = run_and_signal(
-            {"render", "gas", "-o", (out.path / "out.mp4").string(), "--speed", "1e300", "-q", "l",
-             "--duration", "1", "--progress", "none"},
-            log, signal_number, [&] { return has_hidden_entry(out.path); });
+        const int status =
+            run_and_signal({"render", "gas", "-o", (out.path / "out.mp4").string(), "--speed",
+                            "1e300", "-q", "l", "--duration", "1", "--progress", "none"},
+                           log, signal_number, [&] { return has_hidden_entry(out.path); });
         REQUIRE(WIFEXITED(status));  // handled, not killed by the signal
         CHECK(WEXITSTATUS(status) == 1);
-        CHECK(read_all(log).find(signal_number == SIGINT ? "interrupted by SIGINT"
-                                                          : "interrupted by SIGTERM") !=
-              std::string::npos);
+        CHECK(read_all(log).find(signal_number == SIGINT
+                                     ? "interrupted by SIGINT"
+                                     : "interrupted by SIGTERM") != std::string::npos);
         CHECK(entries(out.path).empty());  // neither the video nor its temporary
     }
 }

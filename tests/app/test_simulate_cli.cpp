@@ -114,7 +114,8 @@ TEST_CASE("collide bench engine reports throughput and memory on a small fluid")
     CHECK(run_collide("bench engine --n 1 --collisions 10").exit_code == 2);
 }
 
-TEST_CASE("collide bench engine: --n in exponent form, and clear errors for fluids it cannot time") {
+TEST_CASE(
+    "collide bench engine: --n in exponent form, and clear errors for fluids it cannot time") {
     const auto exponent = run_collide("bench engine --n 4e2 --eta 0.4 --collisions 1e3");
     CHECK(exponent.exit_code == 0);
     CHECK(contains(exponent.output, "discs: 400"));
@@ -128,7 +129,7 @@ TEST_CASE("collide bench engine: --n in exponent form, and clear errors for flui
     TempDir dir("collide_test_bench_still");
     const fs::path still = dir.path / "still.txt";
     std::ofstream(still) << "1\n0.5 0.5 0 0 0.1 1 0 0 0\n";
-    CHECK(contains(run_collide_bad_input("bench engine --scene \"" + still.string() +
-                                         "\" --collisions 10"),
-                   "no collision happens in this scene"));
+    CHECK(contains(
+        run_collide_bad_input("bench engine --scene \"" + still.string() + "\" --collisions 10"),
+        "no collision happens in this scene"));
 }

@@ -99,8 +99,9 @@ TEST_CASE("validation: magnitudes beyond what the collision formulas survive are
     CHECK(contains(error_for(disc(0.5, 0.5, 1e-60)), "disc 1 radius: 1e-60 is outside"));
     Disc fast = disc(0.5, 0.5, 0.1);
     fast.velocity = {0.0, -1e308};
-    CHECK(contains(error_for(fast), "disc 1 velocity: -1e+308 is outside the range collide "
-                                    "computes with (at most 1e+50)"));
+    CHECK(contains(error_for(fast),
+                   "disc 1 velocity: -1e+308 is outside the range collide "
+                   "computes with (at most 1e+50)"));
     Disc far = disc(0.5, 0.5, 0.1);
     far.position = {1e60, 0.5};
     CHECK(contains(error_for(far), "disc 1 position: 1e+60 is outside"));
