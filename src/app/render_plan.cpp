@@ -372,8 +372,14 @@ std::string short_count(double value) {
 }
 
 std::string clock_label(double t, const FrameClock& clock, double speed) {
-    if (clock.interval >= 1e-3) return fmt::format("t = {:.3f}   ({:.3g}/s)", t, speed);
-    return fmt::format("t = {:.6g}   ({:.3g}/s)", t, speed);
+    if (clock.interval >= 1e-3 && clock.last_time < 1e6)
+        return fmt::format("t = {:.3f}   ({:.3g}/s)", t, speed);
+    // Enough significant digits for consecutive frames to differ: one per decade from the frame
+    // interval up to the last frame's time, and two more.
+    const double decades =
+        clock.last_time > clock.interval ? std::log10(clock.last_time / clock.interval) : 0.0;
+    const int digits = std::clamp(static_cast<int>(std::ceil(decades)) + 2, 4, 15);
+    return fmt::format("t = {:.{}g}   ({:.3g}/s)", t, digits, speed);
 }
 
 }  // namespace collide::app

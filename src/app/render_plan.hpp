@@ -165,8 +165,9 @@ inline constexpr const char* default_output_dir = "out";
 [[nodiscard]] std::string short_count(double value);
 
 /// The on-screen clock "t = 12.345   (1/s)": three decimals while they tell one frame from the
-/// next (frame interval >= 1e-3), else six significant digits ("t = 4.96667e-11"), as in scenes
-/// written in SI units where a video spans picoseconds.
+/// next and stay short (frame interval >= 1e-3, last frame before 1e6), else as many significant
+/// digits as tell frames apart ("t = 4.9667e-11"): scenes in SI units span picoseconds, and
+/// scenes in astronomical units 1e45 time units.
 [[nodiscard]] std::string clock_label(double t, const FrameClock& clock, double speed);
 
 }  // namespace collide::app

@@ -190,6 +190,18 @@ TEST_CASE("the on-screen clock resolves one frame interval, whatever the units")
     CHECK(clock_label(12.3456, video_clock(10.0, 1.0, 30), 1.0) == "t = 12.346   (1/s)");
     // An argon scene in SI units: the video spans 5e-11 s, frames 3.3e-13 s apart.
     const FrameClock si = video_clock(10.0, 5e-12, 15);
-    CHECK(clock_label(si.time(149), si, 5e-12) == "t = 4.96667e-11   (5e-12/s)");
-    CHECK(clock_label(si.time(148), si, 5e-12) != clock_label(si.time(149), si, 5e-12));
+    CHECK(clock_label(si.time(149), si, 5e-12) == "t = 4.9667e-11   (5e-12/s)");
+    // Huge units: no 46-digit clock.
+    const FrameClock huge = video_clock(10.0, 7e44, 15);
+    CHECK(clock_label(huge.time(149), huge, 7e44) == "t = 6.9533e+45   (7e+44/s)");
+    // Long runs in ordinary units: as many digits as it takes.
+    const FrameClock long_run = video_clock(600.0, 1e4, 30);
+    CHECK(clock_label(long_run.time(12345), long_run, 1e4) == "t = 4115000   (1e+04/s)");
+    for (const FrameClock& clock : {si, huge, long_run}) {
+        for (std::int64_t k = 1; k < clock.count; ++k) {
+            CAPTURE(k);
+            REQUIRE(clock_label(clock.time(k - 1), clock, 1.0) !=
+                    clock_label(clock.time(k), clock, 1.0));
+        }
+    }
 }
