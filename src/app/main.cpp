@@ -43,8 +43,11 @@ int main(int argc, char** argv) {
         return 0;
     } catch (const CLI::ParseError& e) {
         // --help and --version arrive here as "errors" with exit code 0.
-        const int code = root.exit(e);
-        return code == 0 ? 0 : exit_usage;
+        if (e.get_exit_code() == 0) return root.exit(e);
+        // Usage errors read like every other error ("collide: error: ..."), with CLI11's hint.
+        print_error(e.what());
+        std::fputs("Run with --help for more information.\n", stderr);
+        return exit_usage;
     } catch (const collide::Error& e) {
         print_error(e.what());
         return e.exit_code();

@@ -22,6 +22,13 @@ TEST_CASE("an unknown option is a usage error: exit 2 with a reason naming it") 
     CHECK(r.output.find("--no-such-option") != std::string::npos);
 }
 
+TEST_CASE("usage errors read like every other error, with the hint to --help") {
+    const auto r = run_collide("render gas --seed x");
+    CHECK(r.exit_code == 2);
+    CHECK(r.output.find("collide: error: Could not convert: --seed = x") != std::string::npos);
+    CHECK(r.output.find("Run with --help for more information.") != std::string::npos);
+}
+
 TEST_CASE("an unknown subcommand is a usage error: exit 2") {
     const auto r = run_collide("frobnicate");
     CHECK(r.exit_code == 2);
