@@ -10,8 +10,8 @@
 
 #include <atomic>
 #include <chrono>
-#include <thread>
 
+#include "../support/signal_child.hpp"
 #include "collide/error.hpp"
 #include "collide/video/output.hpp"
 #include "collide/video/video_writer.hpp"
@@ -196,26 +196,18 @@ namespace {
 /// and returns its exit status.
 int interrupt_helper_run(const std::filesystem::path& output, int signal_number,
                          const ScratchDirectory& dir) {
-    const pid_t child = fork();
-    REQUIRE(child >= 0);
-    if (child == 0) {
-        execl(COLLIDE_VIDEO_INTERRUPT_HELPER, COLLIDE_VIDEO_INTERRUPT_HELPER, output.c_str(),
-              static_cast<char*>(nullptr));
-        _exit(127);
-    }
     // Wait (up to 20 s, generous for sanitizer builds) for the writer's temporary, then let it
     // encode for a while, so the signal lands in the middle of an encode.
-    bool started = false;
-    for (int attempt = 0; attempt < 2000 && !started; ++attempt) {
-        for (const auto& name : dir.entries()) started = started || name.front() == '.';
-        if (!started) std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    CHECK(started);
-    std::this_thread::sleep_for(std::chrono::milliseconds(300));
-    kill(child, signal_number);
-    int status = 0;
-    waitpid(child, &status, 0);
-    return status;
+    collide::test::SignalledRun run;
+    run.argv = {COLLIDE_VIDEO_INTERRUPT_HELPER, output.string()};
+    run.started = [&] {
+        for (const auto& name : dir.entries())
+            if (name.front() == '.') return true;
+        return false;
+    };
+    run.start_timeout = std::chrono::seconds(20);
+    run.settle = std::chrono::milliseconds(300);
+    return collide::test::run_and_signal(run, signal_number);
 }
 
 }  // namespace

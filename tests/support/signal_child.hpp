@@ -1,0 +1,69 @@
+#pragma once
+// Shared by the test suites: runs a program in a child process, signals it once it is under way,
+// and hands back how it ended (the interrupt tests of the video writer and of the CLI).
+
+#include <doctest/doctest.h>
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace collide::test {
+
+struct SignalledRun {
+    std::vector<std::string> argv;  ///< argv[0] is the executable's path
+    std::filesystem::path log;      ///< stdout and stderr go here; empty: inherited
+    std::function<bool()> started;  ///< polled every 10 ms: true once the run is under way
+    std::chrono::milliseconds start_timeout{30000};  ///< sanitizer builds start slowly
+    std::chrono::milliseconds settle{500};           ///< run time between started() and the signal
+};
+
+/// Starts run.argv, waits until run.started() holds (checked: a run that never starts fails the
+/// test), lets it run run.settle longer, sends `signal_number` and returns the wait status once
+/// the child has ended. A child still running 30 s after the signal ignored it: it is killed and
+/// the test fails, rather than hanging.
+inline int run_and_signal(const SignalledRun& run, int signal_number) {
+    const pid_t child = fork();
+    REQUIRE(child >= 0);
+    if (child == 0) {
+        if (!run.log.empty()) {
+            const int fd = open(run.log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+            if (fd < 0) _exit(126);
+            dup2(fd, STDOUT_FILENO);
+            dup2(fd, STDERR_FILENO);
+        }
+        std::vector<char*> argv;
+        for (const std::string& a : run.argv) argv.push_back(const_cast<char*>(a.c_str()));
+        argv.push_back(nullptr);
+        execv(argv[0], argv.data());
+        _exit(127);
+    }
+    constexpr std::chrono::milliseconds poll{10};
+    bool ready = false;
+    for (auto waited = std::chrono::milliseconds{0}; waited < run.start_timeout && !ready;
+         waited += poll) {
+        ready = run.started();
+        if (!ready) std::this_thread::sleep_for(poll);
+    }
+    CHECK(ready);
+    std::this_thread::sleep_for(run.settle);
+    kill(child, signal_number);
+    int status = 0;
+    for (int attempt = 0; attempt < 3000; ++attempt) {
+        if (waitpid(child, &status, WNOHANG) == child) return status;
+        std::this_thread::sleep_for(poll);
+    }
+    kill(child, SIGKILL);
+    waitpid(child, &status, 0);
+    FAIL("the child did not stop within 30 s of the signal");
+    return status;
+}
+
+}  // namespace collide::test
