@@ -141,7 +141,7 @@ TEST_CASE("render: two SIGINTs close together stop as cleanly as one") {
 TEST_CASE("render: progress piped into a reader that closes early leaves nothing behind") {
     TempDir out("interrupt_pipe");
     // `head -c 10` exits after the first progress line; the next one gets SIGPIPE (and EPIPE).
-    const std::string command = std::string("\"") + COLLIDE_EXE +
+    const std::string command = std::string("timeout 120 \"") + COLLIDE_EXE +
                                 "\" render gas -q l --duration 60 --progress json -o '" +
                                 (out.path / "out.mp4").string() + "' 2>&1 | head -c 10 > /dev/null";
     const int status = std::system(command.c_str());
@@ -153,7 +153,8 @@ TEST_CASE("simulate: standard output piped into a reader that closes early stops
     TempDir out("interrupt_pipe_log");
     // An endless run logging to stdout: without SIGPIPE handled it would die, with it ignored
     // it would run for ever.
-    const std::string command = "cd '" + out.path.string() + "' && \"" + COLLIDE_EXE +
+    // timeout: a build that ignores the closed pipe fails here instead of running for ever.
+    const std::string command = "cd '" + out.path.string() + "' && timeout 120 \"" + COLLIDE_EXE +
                                 "\" simulate gas --until 1e300 --events-log - 2>"
                                 "'" +
                                 (out.path / "err.txt").string() + "' | head -c 100 > /dev/null";
