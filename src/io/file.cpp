@@ -62,14 +62,13 @@ fs::path directory_of(const fs::path& path) {
 /// The process umask, read without changing it (umask(2) can only be read by setting it, which
 /// races with other threads creating files). Linux >= 4.7 reports it in /proc; 022 otherwise.
 mode_t current_umask() {
-    std::FILE* status = std::fopen("/proc/self/status", "re");
-    if (status == nullptr) return 022;
-    std::array<char, 256> line{};
+    const File status(::open("/proc/self/status", O_RDONLY | O_CLOEXEC));
+    std::array<char, 4096> text{};
+    const ssize_t size = status ? ::read(status.get(), text.data(), text.size() - 1) : -1;
+    if (size <= 0) return 022;
+    const char* line = std::strstr(text.data(), "\nUmask:");
     unsigned int mask = 022;
-    while (std::fgets(line.data(), line.size(), status) != nullptr) {
-        if (std::sscanf(line.data(), "Umask: %o", &mask) == 1) break;
-    }
-    std::fclose(status);
+    if (line == nullptr || std::sscanf(line, "\nUmask: %o", &mask) != 1) return 022;
     return static_cast<mode_t>(mask);
 }
 
@@ -300,7 +299,8 @@ void File::write_all(const void* data, std::size_t size, const fs::path& shown) 
 void File::close(const fs::path& shown) {
     const int fd = std::exchange(fd_, -1);
     if (fd >= 0 && ::close(fd) != 0 && errno != EINTR) {
-        throw_runtime_error("cannot write " + quote_path(shown) + ": " + errno_text(errno));
+        const int error = errno;
+        throw_runtime_error("cannot write " + quote_path(shown) + ": " + errno_text(error));
     }
 }
 
@@ -316,7 +316,8 @@ OutputFile::OutputFile(const fs::path& destination, OutputOptions options)
             throw_input_error(what + " is one of this process's open streams; give a file name");
         }
         file_ = File(::fcntl(stream, F_DUPFD_CLOEXEC, 3));
-        if (!file_) throw_input_error(what + ": " + errno_text(errno));
+        const int error = errno;
+        if (!file_) throw_input_error(what + ": " + errno_text(error));
         stream_ = active_ = true;
         return;
     }
@@ -350,30 +351,32 @@ OutputFile::OutputFile(const fs::path& destination, OutputOptions options)
     }
 
     detail::sweep_stale_temporaries(directory_of(target));
-    if (options.unnamed_temporary && proc_fd_available()) {
+    create_temporary(options.unnamed_temporary,
+                     what + ": cannot create a file in " + quote_path(directory_of(target)));
+    lock_exclusively(file_.get());
+    active_ = true;
+}
+
+void OutputFile::create_temporary(bool unnamed, const std::string& what) {
+    if (unnamed && proc_fd_available()) {
         file_ = File(::openat(directory_.get(), ".", O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666));
         const int error = errno;
         // Filesystems without O_TMPFILE say so in several ways; those get a named temporary.
-        if (!file_ && error != EOPNOTSUPP && error != EISDIR && error != EINVAL &&
-            error != ENOENT) {
-            throw_create_error(
-                what + ": cannot create a file in " + quote_path(directory_of(target)), error);
+        if (file_) return;
+        if (error != EOPNOTSUPP && error != EISDIR && error != EINVAL && error != ENOENT) {
+            throw_create_error(what, error);
         }
     }
-    if (!file_) {
-        for (int attempt = 0; attempt < max_name_attempts && !file_; ++attempt) {
-            temporary_name_ = fresh_temporary_name(target_name_);
-            file_ = File(::openat(directory_.get(), temporary_name_.c_str(),
-                                  O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600));
-            if (!file_ && errno != EEXIST) {
-                throw_create_error(
-                    what + ": cannot create a file in " + quote_path(directory_of(target)), errno);
-            }
-        }
-        if (!file_) throw_runtime_error(what + ": no free temporary name");
+    for (int attempt = 0; attempt < max_name_attempts; ++attempt) {
+        temporary_name_ = fresh_temporary_name(target_name_);
+        file_ = File(::openat(directory_.get(), temporary_name_.c_str(),
+                              O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600));
+        if (file_) return;
+        const int error = errno;
+        temporary_name_.clear();
+        if (error != EEXIST) throw_create_error(what, error);
     }
-    lock_exclusively(file_.get());
-    active_ = true;
+    throw_runtime_error(what + ": no free temporary name");
 }
 
 OutputFile::~OutputFile() {
@@ -423,8 +426,10 @@ void OutputFile::commit() {
         file_.close(destination_);
         return;
     }
-    if (::fsync(file_.get()) != 0)
-        throw_runtime_error("cannot write " + quote_path(destination_) + ": " + errno_text(errno));
+    if (::fsync(file_.get()) != 0) {
+        const int error = errno;  // NFS and full disks report delayed write errors here
+        throw_runtime_error("cannot write " + quote_path(destination_) + ": " + errno_text(error));
+    }
     // The finished file gets the replaced file's permissions, or those of an ordinary creation.
     struct stat old {};
     const bool replacing =
@@ -440,16 +445,18 @@ void OutputFile::commit() {
                          AT_SYMLINK_FOLLOW) == 0) {
                 temporary_name_ = name;
             } else if (errno != EEXIST) {
+                const int error = errno;
                 throw_runtime_error("cannot put " + quote_path(destination_) +
-                                    " in place: " + errno_text(errno));
+                                    " in place: " + errno_text(error));
             }
         }
         if (temporary_name_.empty()) throw_runtime_error(what + ": no free temporary name");
     }
     if (::renameat(directory_.get(), temporary_name_.c_str(), directory_.get(),
                    target_name_.c_str()) != 0) {
+        const int error = errno;
         throw_runtime_error("cannot put " + quote_path(destination_) +
-                            " in place: " + errno_text(errno));
+                            " in place: " + errno_text(error));
     }
     temporary_name_.clear();
     active_ = false;
@@ -552,7 +559,8 @@ OutputDirectory::OutputDirectory(const fs::path& destination, NamePredicate repl
         if (!S_ISDIR(existing.st_mode)) throw_input_error(what + " exists and is not a directory");
         const File old(::openat(parent_.get(), target_name_.c_str(),
                                 O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC));
-        if (!old) throw_create_error(what, errno);
+        const int error = errno;
+        if (!old) throw_create_error(what, error);
         check_replaceable(parent_.get(), old.get(), target, destination, replaceable_, label_);
     }
 
@@ -561,8 +569,9 @@ OutputDirectory::OutputDirectory(const fs::path& destination, NamePredicate repl
         temporary_name_ = fresh_temporary_name(target_name_);
         if (::mkdirat(parent_.get(), temporary_name_.c_str(), 0700) != 0) {
             if (errno == EEXIST) continue;
+            const int error = errno;
             throw_create_error(
-                what + ": cannot create a directory in " + quote_path(directory_of(target)), errno);
+                what + ": cannot create a directory in " + quote_path(directory_of(target)), error);
         }
         temporary_ = File(::openat(parent_.get(), temporary_name_.c_str(),
                                    O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC));
@@ -610,8 +619,9 @@ File OutputDirectory::create_file(const std::string& name) const {
     File file(::openat(temporary_.get(), name.c_str(),
                        O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666));
     if (!file) {
+        const int error = errno;
         throw_runtime_error("cannot write " + quote_path(destination_ / name) + ": " +
-                            errno_text(errno));
+                            errno_text(error));
     }
     return file;
 }
@@ -658,13 +668,15 @@ void OutputDirectory::commit() {
             }
             replaced = aside;
         } else {
+            const int error = errno;
             throw_runtime_error("cannot replace " + quote_path(destination_) + ": " +
-                                errno_text(errno));
+                                errno_text(error));
         }
     } else if (::renameat(parent_.get(), temporary_name_.c_str(), parent_.get(),
                           target_name_.c_str()) != 0) {
+        const int error = errno;
         throw_runtime_error("cannot put " + quote_path(destination_) +
-                            " in place: " + errno_text(errno));
+                            " in place: " + errno_text(error));
     }
     active_ = false;
     temporary_ = File();
@@ -702,8 +714,9 @@ File open_scratch_file(const fs::path& directory) {
     std::string name = (directory / ".collide-scratch.XXXXXX").native();
     file = File(::mkostemp(name.data(), O_CLOEXEC));
     if (!file) {
+        const int error = errno;
         throw_runtime_error("cannot create a scratch file in " + quote_path(directory) + ": " +
-                            errno_text(errno));
+                            errno_text(error));
     }
     ::unlink(name.c_str());  // unnamed from now on: the kernel frees it when the file closes
     return file;

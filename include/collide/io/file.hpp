@@ -115,6 +115,10 @@ class OutputFile {
     void discard() noexcept;
 
   private:
+    /// An O_TMPFILE in directory_ (when `unnamed` and the filesystem has it), else a hidden
+    /// exclusive file named after target_name_. Throws Error naming `what`.
+    void create_temporary(bool unnamed, const std::string& what);
+
     std::filesystem::path destination_;
     std::string label_;
     File directory_;              ///< the (resolved) destination's directory
