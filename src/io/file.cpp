@@ -240,8 +240,19 @@ std::size_t sweep(int directory, const OutputDirectory::NamePredicate& directory
     });
     std::size_t removed = 0;
     for (const std::string& name : candidates) {
-        const File file(::openat(directory, name.c_str(),
-                                 O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC | O_NOCTTY));
+        // Never open anything but plain files and directories (a device's open can act).
+        struct stat kind {};
+        if (::fstatat(directory, name.c_str(), &kind, AT_SYMLINK_NOFOLLOW) != 0 ||
+            !(S_ISREG(kind.st_mode) || S_ISDIR(kind.st_mode))) {
+            continue;
+        }
+        // Files are opened for writing: NFS emulates flock with POSIX locks, which need it.
+        File file(::openat(directory, name.c_str(),
+                           O_RDWR | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC | O_NOCTTY));
+        if (!file && errno == EISDIR) {
+            file = File(
+                ::openat(directory, name.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC));
+        }
         struct stat status {};
         if (!file || ::fstat(file.get(), &status) != 0 || status.st_uid != ::geteuid()) continue;
         // A live writer anywhere (another host on NFS, another pid namespace) holds the lock.
