@@ -2,12 +2,26 @@
 
 #include <cstdio>
 
+#include "collide/error.hpp"
 #include "collide/io/file.hpp"
 
 namespace collide::video {
 
+void check_sequence_name(const std::filesystem::path& path) {
+    // The frames' names add "_00000.png" to the directory's stem; NAME_MAX is 255 bytes.
+    constexpr std::size_t name_max = 255;
+    const std::string first = sequence_frame_name(sequence_stem(path), 0);
+    if (first.size() > name_max) {
+        throw_input_error("output '" + path.string() + "': the frames' names ('" +
+                          first.substr(0, 20) + "...', " + std::to_string(first.size()) +
+                          " bytes) would exceed the file name limit of 255 bytes; give the "
+                          "directory a shorter name");
+    }
+}
+
 void check_output_writable(const std::filesystem::path& path, bool directory_output) {
     if (directory_output) {
+        check_sequence_name(path);
         const std::string stem = sequence_stem(path);
         io::check_output_directory(
             path, [stem](std::string_view name) { return is_sequence_frame_name(stem, name); });

@@ -61,6 +61,7 @@ class VideoWriter::Impl {
         options_.validate();
         settle_geometry();
         if (options_.format == VideoFormat::png_sequence) {
+            check_sequence_name(options_.path);
             const std::string stem = sequence_stem(options_.path);
             directory_ = io::OutputDirectory(options_.path, [stem](std::string_view name) {
                 return is_sequence_frame_name(stem, name);

@@ -172,3 +172,25 @@ TEST_CASE("finished outputs get ordinary permissions (umask), not the temporarie
           (perms::owner_all | perms::group_read | perms::group_exec | perms::others_read |
            perms::others_exec));
 }
+
+TEST_CASE("PNG sequence: a directory name too long for its frames' names is refused up front") {
+    ScratchDirectory dir;
+    VideoOptions options;
+    options.path = dir / std::string(250, 'd');  // a legal name, but d..d_00000.png is not
+    options.format = VideoFormat::png_sequence;
+    options.width = 40;
+    options.height = 30;
+    try {
+        VideoWriter writer(options);
+        FAIL("accepted");
+    } catch (const collide::Error& e) {
+        CHECK(e.kind() == collide::ErrorKind::input);
+        CHECK(std::string(e.what()).find("shorter name") != std::string::npos);
+    }
+    CHECK(dir.entries().empty());
+    options.path = dir / std::string(240, 'd');
+    VideoWriter writer(options);
+    writer.write(test_pattern(40, 30, 0));
+    writer.finish();
+    CHECK(dir.entries() == std::vector<std::string>{std::string(240, 'd')});
+}

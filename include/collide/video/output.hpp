@@ -20,6 +20,10 @@ namespace collide::video {
 /// Throws Error(input) naming the path and the reason.
 void check_output_writable(const std::filesystem::path& path, bool directory_output = false);
 
+/// Throws Error(input) when the frames of a sequence written to the directory `path` would have
+/// names longer than the filesystem allows (255 bytes).
+void check_sequence_name(const std::filesystem::path& path);
+
 /// The name of frame `index` in a PNG sequence: "<stem>_00042.png" (at least five digits).
 [[nodiscard]] std::string sequence_frame_name(std::string_view stem, std::int64_t index);
 /// True for names sequence_frame_name(stem, i) gives for some i: the files a new sequence of
