@@ -361,7 +361,7 @@ OutputFile::OutputFile(const fs::path& destination, OutputOptions options)
         }
     }
 
-    detail::sweep_stale_temporaries(directory_of(target));
+    sweep(directory_.get(), {});
     create_temporary(options.unnamed_temporary,
                      what + ": cannot create a file in " + quote_path(directory_of(target)));
     lock_exclusively(file_.get());
@@ -575,7 +575,7 @@ OutputDirectory::OutputDirectory(const fs::path& destination, NamePredicate repl
         check_replaceable(parent_.get(), old.get(), target, destination, replaceable_, label_);
     }
 
-    detail::sweep_stale_temporaries(directory_of(target), replaceable_);
+    sweep(parent_.get(), replaceable_);
     for (int attempt = 0; attempt < max_name_attempts && !temporary_; ++attempt) {
         temporary_name_ = fresh_temporary_name(target_name_);
         if (::mkdirat(parent_.get(), temporary_name_.c_str(), 0700) != 0) {
