@@ -101,6 +101,24 @@ TEST_CASE("render: a 2-second side-by-side MP4 that plays everywhere") {
     CHECK(probe.find("duration=2.0") != std::string::npos);
 }
 
+TEST_CASE("render --format gif: peak memory does not grow with the number of frames") {
+    // The palette pass used to keep every frame (0.9 MB at 640x360) queued in memory until the
+    // end: 105 more frames cost ~90 MB. Flat memory leaves a few MB for the encoders' buffers.
+    const collide::test::TempDir dir("gif_memory");
+    const auto peak_kib = [&](const std::string& duration) {
+        const auto r = collide::test::run_collide_measured(
+            "render gas --mode event --size 640x360 --fps 15 --duration " + duration +
+            " --format gif -o \"" + (dir.path / ("gas_" + duration + ".gif")).string() + "\"");
+        REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+        return r.peak_rss_kib;
+    };
+    const long short_clip = peak_kib("1");  // 15 frames
+    const long long_clip = peak_kib("8");   // 120 frames
+    MESSAGE("peak resident size: " << short_clip / 1024 << " MiB for 15 frames, "
+                                   << long_clip / 1024 << " MiB for 120");
+    CHECK(long_clip <= short_clip + 16 * 1024);
+}
+
 TEST_CASE("render: the same scene and options give a byte-identical file") {
     TempDir dir("determinism");
     const std::string args = "render gas --size 320x180 --fps 10 --duration 1 --progress none -o ";
