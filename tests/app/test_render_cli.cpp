@@ -7,6 +7,7 @@
 #include <iterator>
 #include <string>
 
+#include "../support/skip.hpp"
 #include "../support/temp_dir.hpp"
 #include "collide/image.hpp"
 #include "collide/video/png.hpp"
@@ -64,8 +65,7 @@ void check_golden(const fs::path& image_path, const std::string& name) {
     if (update != nullptr && std::string(update) == "1") {
         fs::create_directories(golden.parent_path());
         collide::video::write_png(image, golden);
-        MESSAGE("golden rewritten: " << golden.string());
-        return;
+        COLLIDE_SKIP_TEST("golden rewritten, not compared: " << golden.string());
     }
     REQUIRE_MESSAGE(fs::exists(golden),
                     "missing golden " << golden.string() << " (COLLIDE_UPDATE_GOLDENS=1)");
@@ -77,8 +77,7 @@ void check_golden(const fs::path& image_path, const std::string& name) {
 
 TEST_CASE("render: a 2-second side-by-side MP4 that plays everywhere") {
     if (!have_ffprobe()) {
-        MESSAGE("ffprobe not installed: skipped");
-        return;
+        COLLIDE_SKIP_TEST("ffprobe is not installed (scripts/setup.sh --test installs it)");
     }
     TempDir dir("mp4");
     const fs::path out = dir.path / "t.mp4";
