@@ -41,7 +41,10 @@ struct MeasuredRun : RunResult {
 /// Runs `collide <args>` like run_collide and also reports its peak resident size. Under
 /// AddressSanitizer, freed blocks wait in a quarantine (256 MB by default) that would show as
 /// growth: the child runs without one, so the figure measures what the program holds.
-inline MeasuredRun run_collide_measured(const std::string& args) {
+/// `address_space_mib` > 0 caps the child's address space (RLIMIT_AS) so that a regression fails
+/// with an allocation error instead of taking a shared machine's memory; ignored under
+/// AddressSanitizer, which reserves terabytes of address space for its shadow memory.
+inline MeasuredRun run_collide_measured(const std::string& args, long address_space_mib = 0) {
     const std::string cmd = std::string("exec \"") + COLLIDE_EXE + "\" " + args + " 2>&1";
     std::array<int, 2> out{};
     if (pipe(out.data()) != 0) throw std::runtime_error("pipe failed");
@@ -52,6 +55,13 @@ inline MeasuredRun run_collide_measured(const std::string& args) {
         const std::string options =
             std::string(asan != nullptr ? asan : "") + ":quarantine_size_mb=0";
         setenv("ASAN_OPTIONS", options.c_str(), 1);
+#if !defined(__SANITIZE_ADDRESS__)
+        if (address_space_mib > 0) {
+            const auto bytes = static_cast<rlim_t>(address_space_mib) * 1024 * 1024;
+            const rlimit limit{bytes, bytes};
+            setrlimit(RLIMIT_AS, &limit);
+        }
+#endif
         dup2(out[1], STDOUT_FILENO);
         close(out[0]);
         close(out[1]);
