@@ -34,6 +34,12 @@ inline RunResult run_collide(const std::string& args) {
     return r;
 }
 
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr bool address_sanitizer = true;
+#else
+inline constexpr bool address_sanitizer = false;
+#endif
+
 struct MeasuredRun : RunResult {
     long peak_rss_kib = 0;  ///< the process's peak resident set size (ru_maxrss from wait4)
 };
@@ -55,13 +61,11 @@ inline MeasuredRun run_collide_measured(const std::string& args, long address_sp
         const std::string options =
             std::string(asan != nullptr ? asan : "") + ":quarantine_size_mb=0";
         setenv("ASAN_OPTIONS", options.c_str(), 1);
-#if !defined(__SANITIZE_ADDRESS__)
-        if (address_space_mib > 0) {
+        if (!address_sanitizer && address_space_mib > 0) {
             const auto bytes = static_cast<rlim_t>(address_space_mib) * 1024 * 1024;
             const rlimit limit{bytes, bytes};
             setrlimit(RLIMIT_AS, &limit);
         }
-#endif
         dup2(out[1], STDOUT_FILENO);
         close(out[0]);
         close(out[1]);
