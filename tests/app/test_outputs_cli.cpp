@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/skip.hpp"
 #include "../support/temp_dir.hpp"
 #include "run_collide.hpp"
 
@@ -180,7 +181,7 @@ TEST_CASE("render: stale temporaries of a dead run are removed, a live run's are
 }
 
 TEST_CASE(
-    "simulate --events-log: '-' is standard output; a symlink at a temporary name is not "
+    "simulate --events-log: '-' is standard output, and a symlink at a temporary name is not "
     "followed") {
     TempDir dir("outputs_events");
     const RunResult r = run_collide("simulate gas --until 1 --events-log -");
@@ -253,8 +254,10 @@ TEST_CASE("check --export: a full disk is exit 1, not bad input") {
     CHECK(entries(dir.path).empty());
 }
 
-TEST_CASE("check --export: a read-only filesystem is exit 2 with the reason" *
-          doctest::skip(geteuid() != 0 || std::system("unshare -m true 2>/dev/null") != 0)) {
+TEST_CASE("check --export: a read-only filesystem is exit 2 with the reason") {
+    if (geteuid() != 0 || std::system("unshare -m true 2>/dev/null") != 0) {
+        COLLIDE_SKIP_TEST("needs root and unshare(1) to mount a read-only filesystem privately");
+    }
     // A private mount namespace: the read-only tmpfs exists for this one command only.
     TempDir dir("outputs_read_only");
     const std::string command = "unshare -m sh -c \"mount -t tmpfs -o ro none " + q(dir.path) +

@@ -152,7 +152,7 @@ TEST_CASE("plan_render rejects bad options with the option's name") {
     rejects([](RenderRequest& r) { r.format = "avi"; }, "--format");
 }
 
-TEST_CASE("--format decides for a path without extension; a clashing extension names both") {
+TEST_CASE("--format decides for a path without extension, a clashing extension names both") {
     const Scene scene = two_disc_scene(0.1);
     RenderRequest request;
     request.scene = "two";

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "../support/input_error.hpp"
+#include "../support/skip.hpp"
 #include "../support/temp_dir.hpp"
 #include "collide/error.hpp"
 #include "collide/io/file.hpp"
@@ -216,9 +217,9 @@ TEST_CASE("a symlinked destination is written through: the link stays, its targe
                    "symbolic links"));
 }
 
-// Needs root to give a link another owner: skipped otherwise.
-TEST_CASE("in a shared sticky directory, another user's link is not followed (protected_symlinks)" *
-          doctest::skip(geteuid() != 0)) {
+TEST_CASE(
+    "in a shared sticky directory, another user's link is not followed (protected_symlinks)") {
+    if (geteuid() != 0) COLLIDE_SKIP_TEST("needs root to give a link another owner");
     TempDir dir("io_sticky");
     const fs::path shared = dir.path / "tmp";
     fs::create_directory(shared);
@@ -254,7 +255,7 @@ TEST_CASE("unwritable destinations are input errors with the system's reason") {
     }
 }
 
-TEST_CASE("streams: standard output and devices are written in place; a FIFO nobody reads fails") {
+TEST_CASE("streams: standard output and devices are written in place, a FIFO nobody reads fails") {
     OutputOptions stream;
     stream.allow_stream = true;
     OutputFile null("/dev/null", stream);
@@ -319,7 +320,7 @@ TEST_CASE("stale temporaries: those of a dead process go, anything not provably 
     CHECK_FALSE(fs::exists(dir.path / stale));
 }
 
-TEST_CASE("a directory output: new, empty or an earlier sequence is replaced; nothing else") {
+TEST_CASE("a directory output: new, empty or an earlier sequence is replaced, nothing else") {
     TempDir dir("io_directory");
     const fs::path frames = dir.path / "seq";
     const auto write_sequence = [&](int count) {
