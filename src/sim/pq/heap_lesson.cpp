@@ -698,6 +698,7 @@ LessonFrame LessonTimeline::frame_at(double seconds) const {
         return frame;
     }
     frame.started = true;
+    frame.finished = seconds >= op_start_.back();
     frame.op = static_cast<std::size_t>(after - op_start_.begin()) - 1;
     const double into = seconds - op_start_[frame.op];
     const auto step = static_cast<std::size_t>(into / pacing_.pace);

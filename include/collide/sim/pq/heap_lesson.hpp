@@ -120,6 +120,7 @@ struct LessonPanelFrame {
 struct LessonFrame {
     std::size_t op = 0;    ///< the operation under way or just done (op_labels.size() at the start)
     bool started = false;  ///< false during the intro
+    bool finished = false;  ///< true during the outro (every operation done)
     std::vector<LessonPanelFrame> panels;
 };
 
