@@ -41,7 +41,7 @@ void HeapViewConfig::validate() const {
 }
 
 std::size_t max_legible_keys(std::size_t panels) noexcept {
-    constexpr std::size_t keys_per_frame_width = 24;
+    constexpr std::size_t keys_per_frame_width = 36;
     return keys_per_frame_width / panel_columns(panels);
 }
 
@@ -146,8 +146,9 @@ struct PanelGeometry {
     RectF panel;
     float title_baseline = 0.0F;
     float counters_baseline = 0.0F;
-    RectF tree;  ///< the node centres' box (tree panels)
-    RectF map;   ///< indexed heap's map column
+    int counter_lines = 1;  ///< counters side by side, or one under the other in narrow panels
+    RectF tree;             ///< the node centres' box (tree panels)
+    RectF map;              ///< indexed heap's map column
     float slot_size = 0.0F;
     float slot_top = 0.0F;
     float slots_x0 = 0.0F;
@@ -291,9 +292,15 @@ struct HeapRenderer::Impl {
 
     /// Text size: as large as the columns allow (21 px at 854x480 for one panel, 16 px for three).
     [[nodiscard]] float caption_px() const {
-        const float per_column = columns <= 1 ? 32.0F : (columns == 2 ? 28.0F : 25.0F);
+        const float per_column = columns <= 1   ? 32.0F
+                                 : columns == 2 ? 28.0F
+                                 : columns == 3 ? 25.0F
+                                                : 22.0F;
         return std::max(15.0F, per_column * unit);
     }
+
+    /// Space inside a panel's edge; tighter when four or more panels share the row.
+    [[nodiscard]] float padding() const { return (columns >= 4 ? 7.0F : 12.0F) * unit; }
 
     /// The key font for boxes of `box` pixels: as large as fits the widest key.
     const FontAtlas& key_font(float box) {
@@ -328,8 +335,8 @@ struct HeapRenderer::Impl {
         for (auto& [px, layer] : text_layers) layer.clear();
         const auto w = static_cast<float>(config.width);
         const auto h = static_cast<float>(config.height);
-        const float margin = 14.0F * unit;
         columns = panel_columns(frame.panels.size());
+        const float margin = (columns >= 4 ? 8.0F : 14.0F) * unit;
         const float strip_h = build_token_strip(frame, margin);
         const std::vector<RectF> rects =
             panel_rects(frame.panels.size(), {margin, strip_h, w - margin, h - margin}, margin);
@@ -386,13 +393,16 @@ struct HeapRenderer::Impl {
     PanelGeometry layout_panel(const HeapPanelView& p, RectF r, std::size_t panels) {
         PanelGeometry g;
         g.panel = r;
-        const float pad = 12.0F * unit;
+        const float pad = padding();
         const FontAtlas& title = font(caption_px() * 1.05F);
         const FontAtlas& small = font(caption_px() * 0.85F);
         const FontAtlas& caption = font(caption_px());
         g.title_baseline = r.y0 + pad + title.ascent();
         g.counters_baseline = g.title_baseline + small.line_height() * 1.15F;
-        const float caption_lines = panels > 3 ? 2.0F : 3.0F;
+        g.counter_lines = counters_fit(p, r.width() - 2.0F * pad) ? 1 : 2;
+        const float counters_bottom =
+            g.counters_baseline + static_cast<float>(g.counter_lines - 1) * small.line_height();
+        const float caption_lines = panels >= 4 ? 4.0F : 3.0F;
         g.caption_top = r.y1 - pad - caption_lines * caption.line_height();
 
         // The array row: square slots, as large as the width allows, at most ~1/9 of the height.
@@ -409,17 +419,27 @@ struct HeapRenderer::Impl {
         g.slots_x0 = r.x0 + 0.5F * (r.width() - row_w - g.sorted_gap);
         if (!p.tree) {
             // Arrays alone: the row sits in the middle of the free space.
-            const float top = g.counters_baseline + pad;
+            const float top = counters_bottom + pad;
             g.slot_top = std::max(top, 0.5F * (top + g.caption_top - index_h - g.slot_size));
             return g;
         }
 
-        // The tree above the array (the map column on the right for the indexed heap).
-        RectF tree{r.x0 + pad, g.counters_baseline + pad, r.x1 - pad, g.slot_top - 1.5F * pad};
+        // The tree above the array; the indexed heap's map between them, one column per key.
+        // (Beside the array when the panel is wide enough: the tree keeps its height.)
+        float tree_bottom = g.slot_top - 1.5F * pad;
         if (p.show_map) {
-            g.map = {tree.x1 - 0.26F * r.width(), tree.y0, tree.x1, tree.y1};
-            tree.x1 = g.map.x0 - pad;
+            const float map_h = small.line_height() + 2.0F * map_font(g).line_height();
+            if (inner_w >= 2.0F * row_w + 3.0F * pad) {
+                g.slots_x0 = r.x0 + 0.5F * (r.width() - 2.0F * row_w - 3.0F * pad);
+                const float x0 = g.slots_x0 + row_w + 3.0F * pad;
+                const float y0 = g.slot_top + 0.5F * g.slot_size - 0.5F * map_h;
+                g.map = {x0, y0, x0 + row_w, y0 + map_h};
+            } else {
+                g.map = {g.slots_x0, tree_bottom - map_h, g.slots_x0 + row_w, tree_bottom};
+                tree_bottom = g.map.y0 - pad;
+            }
         }
+        const RectF tree{r.x0 + pad, counters_bottom + pad, r.x1 - pad, tree_bottom};
         const std::size_t leaves = std::max<std::size_t>(tree_leaves(p.capacity, p.arity), 1);
         const int levels = std::max(tree_levels(p.capacity, p.arity), 1);
         const float pitch_x = tree.width() / static_cast<float>(leaves);
@@ -455,13 +475,35 @@ struct HeapRenderer::Impl {
         build_caption(p, g);
     }
 
+    static std::string counters_line(const HeapPanelView& p) {
+        std::string line;
+        for (const std::string& c : p.counters) line += (line.empty() ? "" : "    ") + c;
+        return line;
+    }
+
+    /// Whether the counters fit on one line, judged on four-digit counts so that the layout does
+    /// not jump when a count gains a digit.
+    bool counters_fit(const HeapPanelView& p, float width) {
+        std::string widest;
+        for (const std::string& c : p.counters) {
+            widest += (widest.empty() ? "" : "    ") + c.substr(0, c.find(' ')) + " 0000";
+        }
+        return font(caption_px() * 0.85F).text_width(widest) <= width;
+    }
+
     void build_header(const HeapPanelView& p, const PanelGeometry& g) {
-        const float pad = 12.0F * unit;
+        const float pad = padding();
         text(font(caption_px() * 1.05F), g.panel.x0 + pad, g.title_baseline, p.title, title_color);
-        std::string counters;
-        for (const std::string& c : p.counters) counters += (counters.empty() ? "" : "    ") + c;
-        text(font(caption_px() * 0.85F), g.panel.x0 + pad, g.counters_baseline, counters,
-             counter_color);
+        const FontAtlas& small = font(caption_px() * 0.85F);
+        if (g.counter_lines == 1) {
+            text(small, g.panel.x0 + pad, g.counters_baseline, counters_line(p), counter_color);
+            return;
+        }
+        float baseline = g.counters_baseline;
+        for (const std::string& c : p.counters) {
+            text(small, g.panel.x0 + pad, baseline, c, counter_color);
+            baseline += small.line_height();
+        }
     }
 
     /// Where the key of slot i is drawn now (in the tree): its node, or on its way to the other
@@ -566,32 +608,35 @@ struct HeapRenderer::Impl {
         }
     }
 
+    /// The map's text: smaller than the keys, it is the second thing to read.
+    const FontAtlas& map_font(const PanelGeometry& g) {
+        return font(std::min(0.42F * g.slot_size, caption_px()));
+    }
+
+    /// The indexed heap's map as a table over the array: for each key (in the order of their
+    /// handles), the index of the slot that holds it; entries an exchange is updating lit.
     void build_map(const HeapPanelView& p, const PanelGeometry& g) {
-        const FontAtlas& head = font(caption_px() * 0.8F);
-        const float rows = static_cast<float>(std::max<std::size_t>(p.map.size(), 1));
-        const float row_h = std::min(g.map.height() / (rows + 1.5F), 1.6F * caption_px());
-        const FontAtlas& f = font(std::min(0.72F * row_h, caption_px()));
-        float y = g.map.y0 + head.ascent();
-        text(head, g.map.x0, y, "map: key -> index", map_header);
-        y += 0.4F * row_h;
-        const float key_x = g.map.x0 + 0.15F * g.map.width();
-        const float arrow_x = g.map.x0 + 0.45F * g.map.width();
-        const float index_x = g.map.x0 + 0.75F * g.map.width();
-        for (const HeapMapRow& row : p.map) {
-            const float cy = y + 0.5F * row_h;
+        const FontAtlas& head = font(caption_px() * 0.85F);
+        const FontAtlas& f = map_font(g);
+        text(head, g.map.x0, g.map.y0 + head.ascent(), "map: key -> index", map_header);
+        const float key_y = g.map.y0 + head.line_height() + 0.5F * f.line_height();
+        const float index_y = key_y + f.line_height();
+        for (std::size_t c = 0; c < p.map.size(); ++c) {
+            const HeapMapRow& row = p.map[c];
+            const float x = g.map.x0 + (static_cast<float>(c) + 0.5F) * g.slot_size;
             if (row.updated) {
-                under.add_rect({g.map.x0, y + 0.06F * row_h, g.map.x1, y + 0.94F * row_h},
+                under.add_rect({x - 0.45F * g.slot_size, index_y - 0.5F * f.line_height(),
+                                x + 0.45F * g.slot_size, index_y + 0.5F * f.line_height()},
                                style_of(SlotMark::moving).fill);
             }
-            centred(f, {key_x, cy}, row.key, title_color);
-            centred(f, {arrow_x, cy}, "->", counter_color);
-            centred(f, {index_x, cy}, row.index, title_color);
-            y += row_h;
+            centred(f, {x, key_y}, row.key, title_color);
+            centred(f, {x, index_y}, row.index,
+                    row.updated ? Rgba8{255, 255, 255, 255} : index_color);
         }
     }
 
     void build_caption(const HeapPanelView& p, const PanelGeometry& g) {
-        const float pad = 12.0F * unit;
+        const float pad = padding();
         const FontAtlas& f = font(caption_px());
         const std::size_t max_lines = g.panel.y1 - g.caption_top > 2.5F * f.line_height() ? 3 : 2;
         const std::vector<std::string> lines =

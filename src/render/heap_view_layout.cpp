@@ -66,8 +66,8 @@ std::vector<PointF> tree_positions(std::size_t count, unsigned arity) {
 }
 
 std::size_t panel_columns(std::size_t panels) noexcept {
-    if (panels <= 3) return std::max<std::size_t>(panels, 1);
-    return panels == 4 ? 2 : 3;
+    // One row: a tree needs height more than width, and a row keeps the lock-step easy to follow.
+    return std::max<std::size_t>(panels, 1);
 }
 
 std::vector<RectF> panel_rects(std::size_t panels, RectF area, float gap) {

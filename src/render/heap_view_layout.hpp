@@ -21,8 +21,7 @@ namespace collide::render {
 /// Leaves of a d-ary heap of `count` nodes (the tree's width in nodes).
 [[nodiscard]] std::size_t tree_leaves(std::size_t count, unsigned arity) noexcept;
 
-/// Panels of a frame: up to three side by side, four in two rows of two, five or six in two
-/// rows of three, inside `area`, `gap` pixels apart.
+/// Panels of a frame, side by side in one row inside `area`, `gap` pixels apart.
 [[nodiscard]] std::vector<RectF> panel_rects(std::size_t panels, RectF area, float gap);
 
 /// Columns of the panel grid for `panels` panels.

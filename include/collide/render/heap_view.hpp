@@ -106,10 +106,10 @@ struct HeapViewConfig {
 /// Most panels in one frame.
 inline constexpr std::size_t max_heap_panels = 6;
 
-/// The most keys a queue may hold at once when `panels` queues share the frame and still be
-/// drawn legibly (array slots and tree leaves at least ~1/26 of a column's width, so that keys
-/// stay over 14 px tall at 854x480): 24 for one panel, 12 for two, 8 for three (the lecture's
-/// trace holds 7), and per column when four or more panels take two rows.
+/// The most keys a queue may hold at once when `panels` queues share the frame (side by side)
+/// and still be drawn legibly: 36 / panels (36 for one panel, 12 for three, 7 for five: the
+/// lecture's trace holds 7), which keeps array slots over ~21 px wide and keys over ~13 px tall
+/// at 854x480 (-q l), half as much again at 720p.
 [[nodiscard]] std::size_t max_legible_keys(std::size_t panels) noexcept;
 
 /// Draws lesson frames with a GL context it owns. Not thread-safe; one per thread.

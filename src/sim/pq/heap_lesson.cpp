@@ -149,9 +149,11 @@ class Replayer {
 
     void change(std::size_t i, const std::string& new_key) {
         const std::string old = state_.keys[i];
+        changed_from_ = old;
         state_.keys[i] = new_key;
-        prefix_ += " at " + slot_name(i, base_);
-        std::string what = prefix_ + " (the map: " + old + " -> " + std::to_string(i + base_) + ")";
+        const std::string slot = slot_name(i, base_);
+        std::string what = prefix_ + ": the map says " + old + " is at " + slot + "; set " + slot +
+                           " = " + new_key;
         add_step(LessonStep::Kind::change, i, i, what);
     }
 
@@ -248,7 +250,9 @@ class Replayer {
     std::string heap_compare_caption(std::size_t i, std::size_t j, const std::string& a,
                                      const std::string& b) const {
         if (i == j) {  // increase-key: the new key against the old one
-            return prefix_ + "; " + (max_ ? "up: swim" : "up: sink");
+            return prefix_ + "; " + vs(a, changed_from_) +
+                   (max_ ? ": a larger key may have to swim up"
+                         : ": a larger key may have to sink");
         }
         const bool siblings = i > 0 && j > 0 && parent(i) == parent(j);
         if (siblings) {
@@ -321,6 +325,7 @@ class Replayer {
     std::uint64_t op_exchanges_ = 0;
     std::optional<std::size_t> best_;
     std::optional<std::string> sinking_;  ///< the key a sink moves down
+    std::string changed_from_;            ///< increase-key: the key before
 };
 
 // ------------------------------------------------------------------------------------ running
@@ -661,7 +666,7 @@ LessonTimeline LessonTimeline::heapsort(std::span<const TraceKey> keys, Orientat
     replay.begin_op("sortdown");
     for (std::size_t e = split; e < log.size(); ++e) replay.apply(log[e]);
     replay.state().heap_size = 0;
-    replay.end_op(texts(sorted), "sorted");
+    replay.end_op(texts(sorted), "sortdown done");
     out.capacity_ = keys.size();
     out.panels_.push_back(std::move(panel));
     out.finish_timing(pacing);
