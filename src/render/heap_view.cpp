@@ -296,7 +296,7 @@ struct HeapRenderer::Impl {
                                  : columns == 2 ? 28.0F
                                  : columns == 3 ? 25.0F
                                                 : 22.0F;
-        return std::max(15.0F, per_column * unit);
+        return std::max(10.0F, per_column * unit);
     }
 
     /// Space inside a panel's edge; tighter when four or more panels share the row.
@@ -341,7 +341,7 @@ struct HeapRenderer::Impl {
         const std::vector<RectF> rects =
             panel_rects(frame.panels.size(), {margin, strip_h, w - margin, h - margin}, margin);
         for (std::size_t p = 0; p < frame.panels.size(); ++p) {
-            build_panel(frame.panels[p], rects[p], frame.panels.size());
+            build_panel(frame.panels[p], rects[p]);
         }
     }
 
@@ -390,7 +390,7 @@ struct HeapRenderer::Impl {
         return height;
     }
 
-    PanelGeometry layout_panel(const HeapPanelView& p, RectF r, std::size_t panels) {
+    PanelGeometry layout_panel(const HeapPanelView& p, RectF r) {
         PanelGeometry g;
         g.panel = r;
         const float pad = padding();
@@ -402,7 +402,9 @@ struct HeapRenderer::Impl {
         g.counter_lines = counters_fit(p, r.width() - 2.0F * pad) ? 1 : 2;
         const float counters_bottom =
             g.counters_baseline + static_cast<float>(g.counter_lines - 1) * small.line_height();
-        const float caption_lines = panels >= 4 ? 4.0F : 3.0F;
+        // Room for captions of ~70 characters (the longest the model writes) at ~0.5 em each.
+        const float chars_per_line = (r.width() - 2.0F * pad) / (0.5F * caption.pixel_height());
+        const float caption_lines = std::clamp(std::ceil(70.0F / chars_per_line), 2.0F, 4.0F);
         g.caption_top = r.y1 - pad - caption_lines * caption.line_height();
 
         // The array row: square slots, as large as the width allows, at most ~1/9 of the height.
@@ -410,8 +412,11 @@ struct HeapRenderer::Impl {
         const std::size_t slots = std::max<std::size_t>(p.capacity, 1);
         // Heapsort's panel keeps room for the gap before the sorted part from the start.
         const float gap_slots = p.heap_size != SIZE_MAX ? 0.4F : 0.0F;
+        // Deep trees need the height more than the array does.
+        const bool deep = p.tree && tree_levels(p.capacity, p.arity) >= 4;
+        const float tallest = p.tree ? (deep ? 0.085F : 0.11F) : 0.16F;
         g.slot_size = std::min(inner_w / (static_cast<float>(slots) + gap_slots),
-                               (p.tree ? 0.11F : 0.16F) * static_cast<float>(config.height));
+                               tallest * static_cast<float>(config.height));
         const float index_h = small.line_height();
         g.slot_top = g.caption_top - pad - index_h - g.slot_size;
         const float row_w = g.slot_size * static_cast<float>(slots);
@@ -444,7 +449,7 @@ struct HeapRenderer::Impl {
         const int levels = std::max(tree_levels(p.capacity, p.arity), 1);
         const float pitch_x = tree.width() / static_cast<float>(leaves);
         const float pitch_y = tree.height() / static_cast<float>(levels);
-        g.node_radius = std::max(4.0F, std::min({0.42F * pitch_x, 0.36F * pitch_y, 38.0F * unit}));
+        g.node_radius = std::max(4.0F, std::min({0.42F * pitch_x, 0.4F * pitch_y, 38.0F * unit}));
         g.tree = {tree.x0 + 0.5F * pitch_x, tree.y0 + g.node_radius, tree.x1 - 0.5F * pitch_x,
                   tree.y1 - g.node_radius};
         const std::vector<PointF> unit_positions = tree_positions(p.capacity, p.arity);
@@ -465,8 +470,8 @@ struct HeapRenderer::Impl {
                 g.slot_top + 0.5F * g.slot_size};
     }
 
-    void build_panel(const HeapPanelView& p, RectF r, std::size_t panels) {
-        const PanelGeometry g = layout_panel(p, r, panels);
+    void build_panel(const HeapPanelView& p, RectF r) {
+        const PanelGeometry g = layout_panel(p, r);
         under.add_rect(r, panel_color);
         build_header(p, g);
         if (p.tree) build_tree(p, g);
@@ -493,7 +498,11 @@ struct HeapRenderer::Impl {
 
     void build_header(const HeapPanelView& p, const PanelGeometry& g) {
         const float pad = padding();
-        text(font(caption_px() * 1.05F), g.panel.x0 + pad, g.title_baseline, p.title, title_color);
+        const FontAtlas& title = font(caption_px() * 1.05F);
+        const float room = g.panel.width() - 2.0F * pad;
+        const float width = title.text_width(p.title);
+        const FontAtlas& fitted = width <= room ? title : font(title.pixel_height() * room / width);
+        text(fitted, g.panel.x0 + pad, g.title_baseline, p.title, title_color);
         const FontAtlas& small = font(caption_px() * 0.85F);
         if (g.counter_lines == 1) {
             text(small, g.panel.x0 + pad, g.counters_baseline, counters_line(p), counter_color);
@@ -511,8 +520,19 @@ struct HeapRenderer::Impl {
     [[nodiscard]] static PointF node_position(const HeapPanelView& p, const PanelGeometry& g,
                                               std::size_t i) {
         if (p.swap && (i == p.swap->a || i == p.swap->b)) {
+            // Along the edge, bowed out to either side so that the two keys pass each other in
+            // view instead of hiding each other halfway.
             const std::size_t other = i == p.swap->a ? p.swap->b : p.swap->a;
-            return lerp(g.nodes[i], g.nodes[other], p.swap->t);
+            PointF c = lerp(g.nodes[i], g.nodes[other], p.swap->t);
+            const float dx = g.nodes[other].x - g.nodes[i].x;
+            const float dy = g.nodes[other].y - g.nodes[i].y;
+            const float length = std::sqrt(dx * dx + dy * dy);
+            if (length > 0.0F) {
+                const float bow = std::sin(3.14159265F * p.swap->t) * 1.1F * g.node_radius / length;
+                c.x += -dy * bow;
+                c.y += dx * bow;
+            }
+            return c;
         }
         return g.nodes[i];
     }
