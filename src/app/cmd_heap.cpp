@@ -46,6 +46,7 @@ struct HeapCli {
     std::string size;
     int fps = 30;
     bool last_frame = false;
+    double at = 0.0;
     std::string progress = "auto";
     bool verbose = false;
 
@@ -56,6 +57,7 @@ struct HeapCli {
     CLI::Option* format_opt = nullptr;
     CLI::Option* size_opt = nullptr;
     CLI::Option* fps_opt = nullptr;
+    CLI::Option* at_opt = nullptr;
 };
 
 bool given(const CLI::Option* option) {
@@ -133,7 +135,7 @@ struct HeapOutput {
 HeapOutput output_of(const HeapCli& v) {
     HeapOutput out;
     const std::filesystem::path dir = default_output_dir;
-    if (v.last_frame) {
+    if (v.last_frame || given(v.at_opt)) {
         out.still = true;
         if (given(v.format_opt) && v.format != "png")
             bad_option("--format", "a single frame is written as png, got '" + v.format + "'");
@@ -218,6 +220,10 @@ void run(const HeapCli& v) {
     const pq::LessonTimeline timeline = timeline_of(v);
     check_legible(timeline, v);
     const FrameGeometry geometry = geometry_of(v);
+    if (given(v.at_opt) && !(v.at >= 0.0 && v.at <= timeline.duration())) {
+        bad_option("--at", fmt::format("must be within the video, 0..{:.2f} s, got {}",
+                                       timeline.duration(), v.at));
+    }
     const HeapOutput output = output_of(v);
     if (output.default_path) std::filesystem::create_directories(output.path.parent_path());
     video::check_output_writable(
@@ -235,10 +241,12 @@ void run(const HeapCli& v) {
     render::HeapRenderer renderer(config, render::Backend::automatic, print_notice);
 
     if (output.still) {
-        const Image image = renderer.render(heap_frame_at(timeline, show, timeline.duration()));
+        const double t = given(v.at_opt) ? v.at : timeline.duration();
+        const Image image = renderer.render(heap_frame_at(timeline, show, t));
         video::write_png(image, output.path);
-        std::printf("%s: %dx%d PNG, the final state of %s\n", output.path.string().c_str(),
-                    geometry.width, geometry.height, lesson_name(timeline).c_str());
+        std::printf("%s: %dx%d PNG at %.2f s of a %.2f s video of %s\n",
+                    output.path.string().c_str(), geometry.width, geometry.height, t,
+                    timeline.duration(), lesson_name(timeline).c_str());
         return;
     }
 
@@ -310,6 +318,9 @@ void add_heap_command(CLI::App& root) {
     v->fps_opt = cmd->add_option("--fps", v->fps, "Frames per second, overrides -q");
     cmd->add_flag("--last-frame", v->last_frame,
                   "Write only the final state, as a PNG (-o FILE.png, default out/heap.png)");
+    v->at_opt = cmd->add_option("--at", v->at,
+                                "Write only the frame at this many seconds of video, as a PNG "
+                                "(a still for slides; -o FILE.png, default out/heap.png)");
     cmd->add_option("--progress", v->progress,
                     "Progress on stderr: auto (bar on a terminal), bar, json or none")
         ->capture_default_str();

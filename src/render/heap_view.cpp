@@ -418,7 +418,8 @@ struct HeapRenderer::Impl {
         g.slot_size = std::min(inner_w / (static_cast<float>(slots) + gap_slots),
                                tallest * static_cast<float>(config.height));
         const float index_h = small.line_height();
-        g.slot_top = g.caption_top - pad - index_h - g.slot_size;
+        // Under the index labels: room for the key that dips under the row in an exchange.
+        g.slot_top = g.caption_top - pad - index_h - 1.45F * g.slot_size;
         const float row_w = g.slot_size * static_cast<float>(slots);
         g.sorted_gap = g.slot_size * gap_slots;
         g.slots_x0 = r.x0 + 0.5F * (r.width() - row_w - g.sorted_gap);
@@ -611,9 +612,11 @@ struct HeapRenderer::Impl {
             Rgba8 color = i >= p.heap_size ? sorted_text : style_of(m).text;
             if (p.swap && (i == p.swap->a || i == p.swap->b)) {
                 const std::size_t other = i == p.swap->a ? p.swap->b : p.swap->a;
-                const float arc = std::sin(3.14159265F * p.swap->t) * 0.55F * s;
+                // Over the row clear of its keys; under it only as far as the reserved room.
+                const float lift = i == p.swap->a ? -1.05F : 0.75F;
+                const float arc = std::sin(3.14159265F * p.swap->t) * lift * s;
                 c = lerp(c, slot_centre(g, p, other), p.swap->t);
-                c.y += i == p.swap->a ? -arc : arc;
+                c.y += arc;
                 const RectF tile{c.x - 0.46F * s, c.y - 0.46F * s, c.x + 0.46F * s,
                                  c.y + 0.46F * s};
                 under.add_rect(tile, style_of(SlotMark::moving).fill);
