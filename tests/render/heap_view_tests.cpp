@@ -229,8 +229,8 @@ TEST_CASE("golden: the indexed heap's map and heapsort's sorted part, 480x270") 
     HeapPanelView sort = binary_panel({"P", "O", "M", "L", "E", "A", "E", "R", "S", "T", "X"}, 11);
     sort.title = "heapsort (ascending)";
     sort.heap_size = 7;
-    sort.slots[0].mark = SlotMark::compared;
     sort.slots[1].mark = SlotMark::compared;
+    sort.slots[2].mark = SlotMark::compared;
     sort.caption = "sortdown; sink P: larger child? O > M";
     HeapFrameView f = frame_of({sort});
     f.tokens = {"build", "sortdown"};
