@@ -587,7 +587,8 @@ struct HeapRenderer::Impl {
         const float s = g.slot_size;
         const float outline = std::max(1.0F, 2.0F * unit);
         const FontAtlas& f = key_font(s);
-        const FontAtlas& small = font(caption_px() * 0.8F);
+        // Index labels: two digits must fit under a slot.
+        const FontAtlas& small = font(std::min(caption_px() * 0.8F, 0.5F * s));
         // Slot boxes for the whole capacity; index labels under them.
         for (std::size_t i = 0; i < std::max(p.capacity, p.slots.size()); ++i) {
             const PointF c = slot_centre(g, p, i);
