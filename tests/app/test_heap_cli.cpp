@@ -49,7 +49,7 @@ TEST_CASE("collide heap renders the lecture's trace to MP4, byte-identical from 
     CHECK(bytes_of(a) == bytes_of(b));
 }
 
-TEST_CASE("collide heap: side by side, GIF; heapsort as a PNG sequence; the last frame as PNG") {
+TEST_CASE("collide heap: side by side as GIF, heapsort as a PNG sequence, the last frame as PNG") {
     TempDir dir("heap_formats");
     const auto three = run_collide("heap --ops \"P Q E * X\" --impl unordered,ordered,binary" +
                                    quick + "-o " + quoted(dir.path / "three.gif"));

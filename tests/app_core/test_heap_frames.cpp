@@ -96,7 +96,7 @@ TEST_CASE("heap frames: the indexed heap's map, in handle order, with the exchan
     CHECK(!end.map[0].updated);
 }
 
-TEST_CASE("heap frames: heapsort sets the sorted part apart; arrays are not trees") {
+TEST_CASE("heap frames: heapsort sets the sorted part apart, arrays are not trees") {
     const pq::LessonTimeline sort = pq::LessonTimeline::heapsort(pq::parse_sort_keys("S O R T"),
                                                                  pq::Orientation::max, 1, pacing);
     HeapShow show;

@@ -128,7 +128,7 @@ TEST_CASE("heap view: d-ary trees, single nodes and empty trees") {
     CHECK(tree_positions(0, 2).empty());
 }
 
-TEST_CASE("heap view: panels share one row; the legible limit shrinks with them") {
+TEST_CASE("heap view: panels share one row and the legible limit shrinks with them") {
     const std::vector<RectF> r = panel_rects(3, {0.0F, 0.0F, 320.0F, 100.0F}, 10.0F);
     REQUIRE(r.size() == 3);
     CHECK(r[0].width() == doctest::Approx(100.0F));
@@ -159,7 +159,7 @@ TEST_CASE("heap view: bad frames are input errors") {
     CHECK_THROWS_AS(HeapRenderer(tiny, Backend::osmesa), Error);
 }
 
-TEST_CASE("heap view: compared keys light up amber, exchanged ones blue; frames repeat exactly") {
+TEST_CASE("heap view: compared keys light up amber, exchanged ones blue, frames repeat exactly") {
     HeapRenderer renderer(config_of(480, 270), Backend::osmesa);
     HeapPanelView plain = binary_panel({"T", "P", "R", "N", "H"}, 7);
     const Image before = renderer.render(frame_of({plain}));

@@ -156,7 +156,7 @@ TEST_CASE("heap lesson: the lecture's insert of S into a binary heap, in words")
     CHECK(insert_s.end.compares - panel.ops[9].end.compares == 3);
 }
 
-TEST_CASE("heap lesson: remove-max exchanges root and last, removes, then sinks; 0-based names") {
+TEST_CASE("heap lesson: remove-max exchanges root and last, removes, then sinks (0-based names)") {
     const std::vector<QueueKind> binary{{QueueFamily::binary, 2}};
     const LessonTimeline t = LessonTimeline::operations(parse_lesson_ops("P Q E X A *"), binary,
                                                         Orientation::max, 0, pacing);
