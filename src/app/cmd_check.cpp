@@ -10,6 +10,7 @@
 #include "collide/scene/save.hpp"
 #include "collide/sim/scene_check.hpp"
 #include "commands.hpp"
+#include "work_limits.hpp"
 
 namespace collide::app {
 
@@ -29,6 +30,7 @@ void add_check_command(CLI::App& root) {
                     "box with walls only)");
     cmd->callback([options] {
         const Scene scene = load_scene(options->scene);  // validates; throws Error(input) -> exit 2
+        check_scene_hints(scene);  // what `collide render SCENE` would refuse in the hints
         if (!options->export_path.empty()) save_scene(scene, options->export_path);
         std::printf("ok: %s: %s\n", options->scene.c_str(), scene_summary(scene).c_str());
         if (!options->export_path.empty()) std::printf("wrote %s\n", options->export_path.c_str());

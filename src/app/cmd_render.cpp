@@ -21,6 +21,7 @@
 #include "pipeline.hpp"
 #include "progress.hpp"
 #include "render_plan.hpp"
+#include "work_limits.hpp"
 
 namespace collide::app {
 
@@ -49,6 +50,7 @@ struct CliValues {
     std::string progress = "auto";
     std::string dump_rgba;
     bool verbose = false;
+    bool no_limits = false;
     std::uint64_t seed = 0;
     CLI::Option* seed_opt = nullptr;
 
@@ -92,6 +94,7 @@ RenderRequest request_of(const CliValues& v, bool still) {
     r.format = if_given(v.format_opt, v.format);
     r.last_frame = v.last_frame;
     r.still = still;
+    r.no_limits = v.no_limits;
     return r;
 }
 
@@ -137,6 +140,9 @@ void add_shared_options(CLI::App& cmd, CliValues& v) {
                    "Progress on stderr: auto (bar on a terminal), bar, json or none")
         ->capture_default_str();
     cmd.add_flag("--verbose", v.verbose, "Show the encoder's own log");
+    cmd.add_flag(insist_option, v.no_limits,
+                 "Run even when the estimated work (collisions, time-driven steps and checks, "
+                 "frames) is beyond the limits of docs/limits.md");
 }
 
 void print_notice(const std::string& line) {
@@ -146,6 +152,7 @@ void print_notice(const std::string& line) {
 /// Everything that can be wrong with the request, found before any frame is drawn.
 RenderPlan validated_plan(const RenderRequest& request, const Scene& scene) {
     RenderPlan plan = plan_render(request, scene);
+    check_render_work(plan, request, scene);
     // The default directory is ours to create; a user-given one must exist already.
     if (plan.default_output) std::filesystem::create_directories(plan.output.parent_path());
     const bool directory =

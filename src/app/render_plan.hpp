@@ -102,6 +102,10 @@ struct FrameClock {
 /// i.e. the time-driven engine lands on every frame time without a shorter final step.
 [[nodiscard]] bool divides(double dt, double interval) noexcept;
 
+/// How messages name a scene hint: its "file:line: render.dt" when known (`where`, from
+/// RenderHints), else "scene [render] dt".
+[[nodiscard]] std::string hint_option(const std::string& where, std::string_view key);
+
 /// Everything the user may type; unset = take the scene hint or the default.
 struct RenderRequest {
     std::string scene;                    ///< file or built-in name
@@ -122,6 +126,7 @@ struct RenderRequest {
     bool last_frame = false;              ///< --last-frame: write only the last frame as a PNG
     std::optional<double> at;             ///< thumbnail --at (simulation time)
     bool still = false;                   ///< true for `collide thumbnail` (PNG output)
+    bool no_limits = false;               ///< --no-limits: run even what exceeds WorkLimits
 };
 
 /// What kind of file comes out.

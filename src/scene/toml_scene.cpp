@@ -78,6 +78,11 @@ class TomlReader {
         }
     }
 
+    // "file:line: field", the prefix of messages about a value checked later (render hints).
+    std::string where(const toml::node& at, const std::string& field) const {
+        return file_ + ":" + std::to_string(at.source().begin.line) + ": " + field;
+    }
+
     [[noreturn]] void fail(const toml::node& at, const std::string& field,
                            const std::string& reason) const {
         throw_input_error(file_, static_cast<int>(at.source().begin.line), field, reason);
@@ -214,9 +219,18 @@ class TomlReader {
         }
         if (const toml::node* v = t.get("trails")) r.trails = boolean(*v, "render.trails");
         if (const toml::node* v = t.get("overlays")) r.overlays = boolean(*v, "render.overlays");
-        if (const toml::node* v = t.get("duration")) r.duration = positive(*v, "render.duration");
-        if (const toml::node* v = t.get("speed")) r.speed = positive(*v, "render.speed");
-        if (const toml::node* v = t.get("dt")) r.dt = positive(*v, "render.dt");
+        if (const toml::node* v = t.get("duration")) {
+            r.duration = positive(*v, "render.duration");
+            r.duration_at = where(*v, "render.duration");
+        }
+        if (const toml::node* v = t.get("speed")) {
+            r.speed = positive(*v, "render.speed");
+            r.speed_at = where(*v, "render.speed");
+        }
+        if (const toml::node* v = t.get("dt")) {
+            r.dt = positive(*v, "render.dt");
+            r.dt_at = where(*v, "render.dt");
+        }
     }
 
     void read_includes(const toml::node& n) {

@@ -53,11 +53,13 @@ TEST_CASE("render: a signal during an endless simulation step exits 1 and leaves
         TempDir out("interrupt_render");
         TempDir logs("interrupt_render_log");
         const fs::path log = logs.path / "log.txt";
-        // --speed 1e300: the first frame lies 10^298 time units ahead, an endless advance_to().
+        // --speed 1e300: the first frame lies 10^298 time units ahead, an endless advance_to()
+        // (--no-limits: without it, the work estimate refuses to start such a run).
         SignalledRun run;
-        run.argv = {COLLIDE_EXE, "render",     "gas", "-o", (out.path / "out.mp4").string(),
-                    "--speed",   "1e300",      "-q",  "l",  "--duration",
-                    "1",         "--progress", "none"};
+        run.argv = {
+            COLLIDE_EXE, "render",     "gas",  "-o",         (out.path / "out.mp4").string(),
+            "--speed",   "1e300",      "-q",   "l",          "--duration",
+            "1",         "--progress", "none", "--no-limits"};
         run.log = log;
         run.started = [&] { return has_hidden_entry(out.path); };
         // The default settle (500 ms) takes it deep into the simulation, where only the
@@ -83,7 +85,8 @@ TEST_CASE("simulate: a signal during an endless run exits 1 and removes the even
                 "--until",
                 "1e300",
                 "--events-log",
-                (out.path / "ev.csv").string()};
+                (out.path / "ev.csv").string(),
+                "--no-limits"};
     run.log = log;
     run.started = [&] { return has_entry_containing(out.path, "ev.csv.tmp"); };
     const int status = run_and_signal(run, SIGINT);

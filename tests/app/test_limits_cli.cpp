@@ -1,0 +1,117 @@
+// End-to-end: runs that could never finish are refused before they start (exit 2, naming the
+// option or the scene hint, with the estimate and what would fit), and `check` agrees with
+// `render` about a scene's [render] hints.
+
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "../support/input_error.hpp"
+#include "../support/temp_dir.hpp"
+#include "run_collide.hpp"
+
+using collide::test::contains;
+using collide::test::run_collide;
+using collide::test::run_collide_bad_input;
+using collide::test::TempDir;
+
+namespace {
+
+std::string write_file(const TempDir& dir, const std::string& name, const std::string& text) {
+    const std::filesystem::path path = dir.path / name;
+    std::ofstream(path, std::ios::binary) << text;
+    return path.string();
+}
+
+std::string toml_with_render(const std::string& render_lines) {
+    return "[box]\nwidth = 1.0\nheight = 1.0\n\n[[disc]]\nposition = [0.3, 0.5]\n"
+           "velocity = [0.1, 0.05]\nradius = 0.05\n\n[render]\n" +
+           render_lines;
+}
+
+}  // namespace
+
+TEST_CASE("limits: simulate --until 1e300 is refused with the collision estimate and the way out") {
+    const std::string out = run_collide_bad_input("simulate gas --until 1e300");
+    CHECK(contains(out, "--until"));
+    CHECK(contains(out, "collisions"));
+    CHECK(contains(out, "--no-limits"));
+}
+
+TEST_CASE("limits: a dt below the clock's resolution is refused, even with --no-limits") {
+    for (const std::string args :
+         {"simulate gas --until 10 --engine time --dt 1e-300",
+          "simulate gas --until 10 --engine time --dt 1e-300 --no-limits",
+          "render gas --dt 1e-300 -o never.mp4", "render gas --dt 1e-300 --no-limits -o never.mp4",
+          "thumbnail gas --dt 1e-300 -o never.png"}) {
+        CAPTURE(args);
+        const std::string out = run_collide_bad_input(args);
+        CHECK(contains(out, "--dt"));
+        CHECK(contains(out, "t + dt == t"));
+    }
+    CHECK_FALSE(std::filesystem::exists("never.mp4"));
+    CHECK_FALSE(std::filesystem::exists("never.png"));
+}
+
+TEST_CASE("limits: too many time-driven steps name --dt and the dt that would fit") {
+    const std::string out =
+        run_collide_bad_input("simulate gas --until 10 --engine time --dt 1e-9");
+    CHECK(contains(out, "--dt"));
+    CHECK(contains(out, "steps"));
+    CHECK(contains(out, "at least 1e-08"));
+}
+
+TEST_CASE("limits: render --speed 1e300 and thumbnail --at 1e6 are refused naming the option") {
+    CHECK(contains(run_collide_bad_input("render gas --speed 1e300 -o never.mp4"), "--speed"));
+    CHECK(contains(run_collide_bad_input("render gas --speed 1e308 --no-limits -o never.mp4"),
+                   "beyond the range of double precision"));
+    const std::string at = run_collide_bad_input("thumbnail gas --at 1e6 -o never.png");
+    CHECK(contains(at, "--at"));
+    CHECK(contains(at, "frames"));
+}
+
+TEST_CASE("limits: a disc at 1e50 units per time unit is refused for --until 10") {
+    TempDir dir("limits_fast");
+    const std::string scene = write_file(dir, "fast.txt", "1\n0.5 0.5 1e50 0 0.01 1 0 0 0\n");
+    const std::string out = run_collide_bad_input("simulate '" + scene + "' --until 10");
+    CHECK(contains(out, "--until"));
+    CHECK(contains(out, "collisions"));
+}
+
+TEST_CASE("limits (UBSan): thumbnail --at beyond the countable frames is exit 2 naming --at") {
+    for (const std::string args :
+         {"thumbnail gas --at 1e18 -o never.png", "thumbnail gas --at 1e15 -o never.png",
+          "thumbnail gas --at 1 --speed 1e-300 -o never.png",
+          "thumbnail gas --at 1e18 --no-limits -o never.png"}) {
+        CAPTURE(args);
+        const std::string out = run_collide_bad_input(args);
+        CHECK(contains(out, "collide: error: --at"));
+        CHECK_FALSE(contains(out, "runtime error"));
+    }
+}
+
+TEST_CASE("limits: check and render agree on [render] hints, naming file, line and field") {
+    TempDir dir("limits_hints");
+    struct Case {
+        const char* render;
+        const char* field;
+    };
+    for (const Case c :
+         {Case{"dt = 1e-300\n", "render.dt"}, Case{"duration = 1e300\n", "render.duration"},
+          Case{"speed = 1e300\n", "render.speed"}}) {
+        CAPTURE(c.render);
+        const std::string scene = write_file(dir, "hint.toml", toml_with_render(c.render));
+        const std::string where = scene + ":11: " + c.field;
+        const std::string checked = run_collide_bad_input("check '" + scene + "'");
+        CHECK(contains(checked, where));
+        const std::string rendered = run_collide_bad_input("render '" + scene + "' -o '" +
+                                                           (dir.path / "x.mp4").string() + "'");
+        CHECK(contains(rendered, where));
+        CHECK_FALSE(std::filesystem::exists(dir.path / "x.mp4"));
+    }
+    // A command-line value replaces the hint, and then the hint is no longer in the way.
+    const std::string scene = write_file(dir, "hint.toml", toml_with_render("speed = 1e300\n"));
+    CHECK(run_collide("simulate '" + scene + "' --until 1").exit_code == 0);
+}
