@@ -12,6 +12,7 @@
 #include <string>
 #include <system_error>
 
+#include "cli_numbers.hpp"
 #include "collide/error.hpp"
 #include "collide/scene/load.hpp"
 #include "collide/video/output.hpp"
@@ -100,9 +101,9 @@ RenderRequest request_of(const CliValues& v, bool still) {
 
 /// The options `render` and `thumbnail` share.
 void add_shared_options(CLI::App& cmd, CliValues& v) {
-    v.seed_opt = cmd.add_option("--seed", v.seed,
-                                "Seed for the scene's random discs ([[generate]] block i gets N + "
-                                "i; default: the scene's)");
+    v.seed_opt = add_whole_option(cmd, "--seed", v.seed, 0, UINT64_MAX,
+                                  "Seed for the scene's random discs ([[generate]] block i gets "
+                                  "N + i; default: the scene's)");
     cmd.add_option("scene", v.scene,
                    "Scene: a built-in name (see `collide scenes`), a .toml or an algs4 .txt file")
         ->required();
@@ -114,7 +115,8 @@ void add_shared_options(CLI::App& cmd, CliValues& v) {
         cmd.add_option("-q,--quality", v.quality,
                        "l 854x480@15, m 1280x720@30 (default), h 1920x1080@60, k 3840x2160@60");
     v.size_opt = cmd.add_option("--size", v.size, "Frame size WxH, overrides -q (e.g. 640x360)");
-    v.fps_opt = cmd.add_option("--fps", v.fps, "Frames per second, overrides -q");
+    v.fps_opt =
+        add_whole_option(cmd, "--fps", v.fps, 1, max_fps, "Frames per second, overrides -q");
     v.duration_opt =
         cmd.add_option("--duration", v.duration, "Seconds of video (default: scene hint, else 10)");
     v.speed_opt = cmd.add_option(

@@ -16,7 +16,6 @@ namespace {
 
 constexpr int min_frame_side = 64;  // the renderer's minimum
 constexpr int max_frame_side = 8192;
-constexpr int max_fps = 240;
 constexpr double max_duration = 3600.0;  // an hour of video is far beyond any lesson
 /// Colour and histogram range in units of the RMS speed: a 2D Maxwell-Boltzmann gas has
 /// P(v > 2.5 v_rms) = exp(-6.25) ~ 0.2 %, so almost every disc gets a distinct colour.

@@ -37,6 +37,9 @@ struct QualityPreset {
     int fps = 30;
 };
 
+/// The highest --fps accepted.
+inline constexpr int max_fps = 240;
+
 /// l = 854x480@15, m = 1280x720@30, h = 1920x1080@60, k = 3840x2160@60.
 /// Throws Error(input) naming `option` for any other letter.
 [[nodiscard]] QualityPreset quality_preset(std::string_view letter, std::string_view option = "-q");

@@ -115,3 +115,20 @@ TEST_CASE("limits: check and render agree on [render] hints, naming file, line a
     const std::string scene = write_file(dir, "hint.toml", toml_with_render("speed = 1e300\n"));
     CHECK(run_collide("simulate '" + scene + "' --until 1").exit_code == 0);
 }
+
+TEST_CASE("options: --seed, --fps and bench's counts refuse what strtoull would bend") {
+    for (const std::string args :
+         {"render gas --seed -1", "render gas --seed 18446744073709551616",
+          "render gas --seed 1e23", "thumbnail gas --seed 0x10", "bench engine --seed -1",
+          "render gas --fps 1e3", "thumbnail gas --fps 99999999999", "render gas --fps 30.5"}) {
+        CAPTURE(args);
+        const std::string out = run_collide_bad_input(args + " -o never.mp4");
+        const std::size_t from = args.find(" --") + 1;
+        const std::string option = args.substr(from, args.find(' ', from) - from);
+        CHECK(contains(out, "collide: error: " + option + ": "));
+    }
+    CHECK(contains(run_collide_bad_input("bench engine --collisions 1e30"), "--collisions"));
+    CHECK(contains(run_collide_bad_input("bench engine --collisions 2e10"), "--no-limits"));
+    CHECK(contains(run_collide_bad_input("bench engine --warmup 1e300"), "--warmup"));
+    CHECK_FALSE(std::filesystem::exists("never.mp4"));
+}
