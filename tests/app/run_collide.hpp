@@ -15,9 +15,10 @@ struct RunResult {
     std::string output;  ///< stdout and stderr, interleaved
 };
 
-/// Runs `collide <args>` through the shell (args are pasted verbatim: quote them yourself).
-inline RunResult run_collide(const std::string& args) {
-    const std::string cmd = std::string("\"") + COLLIDE_EXE + "\" " + args + " 2>&1";
+/// Runs `collide <args>` through the shell with environment assignments `env` ("NAME='value'",
+/// or empty) before it (args and env are pasted verbatim: quote them yourself).
+inline RunResult run_collide_env(const std::string& env, const std::string& args) {
+    const std::string cmd = env + " \"" + COLLIDE_EXE + "\" " + args + " 2>&1";
     RunResult r;
     FILE* pipe = popen(cmd.c_str(), "r");
     if (pipe == nullptr) return r;
@@ -27,6 +28,11 @@ inline RunResult run_collide(const std::string& args) {
     const int status = pclose(pipe);
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return r;
+}
+
+/// Runs `collide <args>` through the shell (args are pasted verbatim: quote them yourself).
+inline RunResult run_collide(const std::string& args) {
+    return run_collide_env("", args);
 }
 
 /// Runs `collide <args>` expecting bad input (exit code 2, checked); returns its output.

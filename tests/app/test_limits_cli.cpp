@@ -3,7 +3,9 @@
 // `render` about a scene's [render] hints.
 
 #include <doctest/doctest.h>
+#include <sys/stat.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -15,6 +17,7 @@
 using collide::test::contains;
 using collide::test::run_collide;
 using collide::test::run_collide_bad_input;
+using collide::test::run_collide_env;
 using collide::test::TempDir;
 
 namespace {
@@ -131,4 +134,47 @@ TEST_CASE("options: --seed, --fps and bench's counts refuse what strtoull would 
     CHECK(contains(run_collide_bad_input("bench engine --collisions 2e10"), "--no-limits"));
     CHECK(contains(run_collide_bad_input("bench engine --warmup 1e300"), "--warmup"));
     CHECK_FALSE(std::filesystem::exists("never.mp4"));
+}
+
+TEST_CASE("inputs: a FIFO, /dev/zero or an oversized file as a scene is exit 2 naming it") {
+    TempDir dir("limits_inputs");
+    const std::filesystem::path fifo = dir.path / "pipe.toml";
+    REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+    std::filesystem::create_symlink("/dev/zero", dir.path / "zero.txt");
+    const std::filesystem::path big = dir.path / "big.txt";
+    std::ofstream(big).close();
+    std::filesystem::resize_file(big, (std::uintmax_t{512} << 20) + 1);  // sparse
+    // The old reader blocked forever on a FIFO and read /dev/zero until memory ran out: under
+    // `timeout`, that is exit 124, a failure rather than a hung test.
+    const auto bounded = [](const std::string& args) {
+        const auto r = run_collide_env("timeout 60", args);
+        CHECK_MESSAGE(r.exit_code == 2, args);
+        return r.output;
+    };
+    CHECK(contains(bounded("check '" + fifo.string() + "'"),
+                   "pipe.toml: a FIFO (named pipe), not a regular file"));
+    CHECK(contains(bounded("simulate '" + (dir.path / "zero.txt").string() + "' --until 1"),
+                   "zero.txt: a character device, not a regular file"));
+    CHECK(contains(bounded("check '" + big.string() + "'"), "larger than 512 MiB"));
+    // `collide scenes` over an assets directory holding a FIFO.
+    std::filesystem::create_directories(dir.path / "assets" / "scenes");
+    REQUIRE(mkfifo((dir.path / "assets" / "scenes" / "stuck.toml").c_str(), 0600) == 0);
+    const auto r = run_collide_env(
+        "COLLIDE_ASSETS_DIR='" + (dir.path / "assets").string() + "' timeout 60", "scenes");
+    CHECK(r.exit_code == 2);
+    CHECK(contains(r.output, "stuck.toml: a FIFO"));
+}
+
+TEST_CASE("inputs: an algs4 file with a UTF-8 BOM, and a 1e-400 in it, check fine") {
+    TempDir dir("limits_bom");
+    const std::string scene = write_file(dir, "bom.txt",
+                                         "\xEF\xBB\xBF"
+                                         "1\n0.5 0.5 1e-400 0 0.1 1 0 0 0\n");
+    const auto r = run_collide("check '" + scene + "'");
+    CHECK(r.exit_code == 0);
+    CHECK(contains(r.output, "ok: "));
+    CHECK(contains(
+        run_collide_bad_input(
+            "check '" + write_file(dir, "huge.txt", "1\n0.5 0.5 1e400 0 0.1 1 0 0 0\n") + "'"),
+        "huge.txt:2: vx: '1e400' is too large for a double"));
 }
