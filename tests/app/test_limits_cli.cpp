@@ -178,3 +178,16 @@ TEST_CASE("inputs: an algs4 file with a UTF-8 BOM, and a 1e-400 in it, check fin
             "check '" + write_file(dir, "huge.txt", "1\n0.5 0.5 1e400 0 0.1 1 0 0 0\n") + "'"),
         "huge.txt:2: vx: '1e400' is too large for a double"));
 }
+
+TEST_CASE("memory: running out says what ran out and what to lower, exit 1") {
+    TempDir dir("limits_memory");
+    const std::string scene = write_file(dir, "many.toml",
+                                         "[box]\nwidth = 100.0\nheight = 100.0\n\n[[generate]]\n"
+                                         "count = 20000000\nradius = 0.001\nspeed = 1.0\n");
+    // 20 million discs need about 2 GB; the address space is capped at 1 GB for this run.
+    const auto r = run_collide_env("ulimit -v 1000000;", "check '" + scene + "'");
+    CHECK(r.exit_code == 1);
+    CHECK(contains(r.output, "collide: error: out of memory in `collide check`"));
+    CHECK(contains(r.output, "use fewer discs"));
+    CHECK_FALSE(contains(r.output, "std::bad_alloc"));
+}
