@@ -9,6 +9,21 @@
 
 namespace collide::app {
 
+namespace {
+
+/// Runs `parse`; a bad value becomes a CLI11 usage error (exit 2 with the hint to --help, like
+/// every other bad option value) carrying our message.
+template <typename Parse>
+std::uint64_t as_usage_error(Parse&& parse) {
+    try {
+        return parse();
+    } catch (const Error& e) {
+        throw CLI::ValidationError(e.what());
+    }
+}
+
+}  // namespace
+
 std::uint64_t parse_whole_number(std::string_view text, std::string_view option, std::uint64_t min,
                                  std::uint64_t max) {
     const auto bad = [&](std::string_view why) {
@@ -34,7 +49,7 @@ CLI::Option* add_whole_option(CLI::App& app, const std::string& name, std::uint6
     return app.add_option_function<std::string>(
         name,
         [&target, option, min, max](const std::string& text) {
-            target = parse_whole_number(text, option, min, max);
+            target = as_usage_error([&] { return parse_whole_number(text, option, min, max); });
         },
         help);
 }
@@ -46,8 +61,10 @@ CLI::Option* add_whole_option(CLI::App& app, const std::string& name, int& targe
     return app.add_option_function<std::string>(
         name,
         [&target, option, min, max](const std::string& text) {
-            target = static_cast<int>(parse_whole_number(
-                text, option, static_cast<std::uint64_t>(min), static_cast<std::uint64_t>(max)));
+            target = static_cast<int>(as_usage_error([&] {
+                return parse_whole_number(text, option, static_cast<std::uint64_t>(min),
+                                          static_cast<std::uint64_t>(max));
+            }));
         },
         help);
 }

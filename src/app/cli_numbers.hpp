@@ -17,7 +17,8 @@ namespace collide::app {
 [[nodiscard]] std::uint64_t parse_whole_number(std::string_view text, std::string_view option,
                                                std::uint64_t min, std::uint64_t max);
 
-/// Registers an option whose value is parsed by parse_whole_number into `target`.
+/// Registers an option whose value is parsed by parse_whole_number into `target`; a bad value
+/// throws CLI::ValidationError (a usage error: exit 2 and the hint to --help) with that message.
 CLI::Option* add_whole_option(CLI::App& app, const std::string& name, std::uint64_t& target,
                               std::uint64_t min, std::uint64_t max, const std::string& help);
 /// The same for an int target, 0 <= min <= max.
