@@ -61,12 +61,12 @@ struct BenchOptions {
             throw_input_error("--warmup", 0, "",
                               fmt::format("must be a number up to {:g}", max_counted));
         const double total = collisions + std::max(0.0, warmup);
-        if (!no_limits && total > WorkLimits{}.collisions) {
+        if (!no_limits && total > WorkLimits{}.events) {
             throw_input_error(
                 "--collisions", 0, "",
                 fmt::format("{:g} collisions (with the warm-up) is over the limit of {:g} (about "
                             "an hour); ask for fewer, or pass {} to run it anyway",
-                            total, WorkLimits{}.collisions, insist_option));
+                            total, WorkLimits{}.events, insist_option));
         }
         engine.validate();
         if (engine.engine == "time")

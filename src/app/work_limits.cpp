@@ -54,15 +54,19 @@ void check_finishable(const RunShape& run, const WorkEstimate& work, const Culpr
 void refuse_excess(const Scene& scene, const RunShape& run, const WorkExcess& excess,
                    const Culprits& who, const std::string& frames_advice) {
     const std::string limit = fmt::format("over the limit of {}", rough_number(excess.limit));
-    if (excess.what == "collisions") {
+    if (excess.what == "events") {
         const CollisionRate rate = collision_rate(scene);
+        const std::string crossings =
+            run.cell_grid
+                ? fmt::format(" and {} cell crossings", rough_number(cell_crossing_rate(scene)))
+                : std::string();
         refuse(who.span,
-               fmt::format("simulating t = 0..{:g} would take about {} collisions (kinetic-theory "
-                           "estimate for N = {} discs: {} per time unit), {}; simulate at most "
-                           "t = {:.3g} ({}), {}",
+               fmt::format("simulating t = 0..{:g} would take about {} events (kinetic-theory "
+                           "estimate for N = {} discs: {} collisions{} per time unit), {}; "
+                           "simulate at most t = {:.3g} ({}), {}",
                            run.span, rough_number(excess.estimate), scene.discs.size(),
-                           rough_number(rate.total()), limit, run.span * excess.fitting_fraction(),
-                           who.shorter, insist_advice()));
+                           rough_number(rate.total()), crossings, limit,
+                           run.span * excess.fitting_fraction(), who.shorter, insist_advice()));
     }
     if (excess.what == "time-driven steps") {
         refuse(who.dt,
@@ -126,6 +130,7 @@ RunShape render_run_shape(const RenderPlan& plan) {
     RunShape run;
     run.span = plan.clock.last_time;
     run.event_driven = plan.mode != RenderMode::time;
+    run.cell_grid = plan.event_engine.engine == "fast";
     run.time_driven = plan.mode != RenderMode::event;
     run.dt = plan.time_engine.dt;
     run.all_pairs = plan.time_engine.td_detect != "grid";
@@ -159,7 +164,10 @@ void check_scene_hints(const Scene& scene, const WorkLimits& limits) {
     // Overlap checks depend on --td-detect, which the scene cannot set: render's to refuse.
     WorkEstimate hinted = work;
     hinted.pair_checks = 0.0;
-    if (!who.span_from_hint) hinted.collisions = 0.0;
+    if (!who.span_from_hint) {
+        hinted.collisions = 0.0;
+        hinted.crossings = 0.0;
+    }
     if (!who.dt_from_hint) hinted.steps = 0.0;
     hinted.frames = 0.0;  // a video's frames are bounded by its duration and fps
     const WorkExcess excess = first_excess(hinted, limits);
@@ -173,6 +181,7 @@ void check_simulate_work(const Scene& scene, const EngineOptions& engine, double
     run.span = until;
     run.time_driven = engine.engine == "time";
     run.event_driven = !run.time_driven;
+    run.cell_grid = engine.engine == "fast";
     run.dt = engine.dt;
     run.all_pairs = engine.td_detect != "grid";
     const WorkEstimate work = estimate_work(scene, run);

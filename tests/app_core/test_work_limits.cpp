@@ -66,7 +66,7 @@ TEST_CASE("work limits: an ordinary render passes; too much work names the optio
 
 TEST_CASE("work limits: --no-limits lifts the limits but not a run that can never end") {
     WorkLimits tiny;
-    tiny.collisions = 1.0;  // any collision is too many
+    tiny.events = 1.0;  // any collision is too many
     RenderRequest request;
     request.mode = "event";
     CHECK(contains(render_refusal(request, moving_pair(), tiny), "collisions"));

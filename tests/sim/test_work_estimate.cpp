@@ -24,7 +24,7 @@ Scene one_disc(Vec2 velocity) {
 
 }  // namespace
 
-TEST_CASE("work: the kinetic-theory collision rate is within 15 % of a melted gas's actual count") {
+TEST_CASE("work: collision and crossing rates are within 15 % of a melted gas's actual counts") {
     for (const Boundary boundary : {Boundary::walls, Boundary::periodic}) {
         for (const double eta : {0.05, 0.3, 0.5}) {
             CAPTURE(eta);
@@ -41,6 +41,9 @@ TEST_CASE("work: the kinetic-theory collision rate is within 15 % of a melted ga
             const auto walls = static_cast<double>(after.collisions_wall - before.collisions_wall);
             CHECK(rate.pairs == doctest::Approx(pairs).epsilon(0.15));
             CHECK(rate.walls == doctest::Approx(walls).epsilon(0.15));
+            const auto crossings =
+                static_cast<double>(after.cell_crossings - before.cell_crossings);
+            CHECK(cell_crossing_rate(gas) == doctest::Approx(crossings).epsilon(0.15));
         }
     }
 }
@@ -99,6 +102,9 @@ TEST_CASE("work: first_excess names the limit exceeded the most, or none") {
     work.steps = 1e11;  // 100 x its limit beats 3 x
     const WorkExcess e = first_excess(work);
     CHECK(e.what == "time-driven steps");
+    work.crossings = 1e12;  // events: collisions and crossings, 103 x the limit
+    CHECK(first_excess(work).what == "events");
+    work.crossings = 0.0;
     CHECK(e.estimate == 1e11);
     CHECK(e.fitting_fraction() == doctest::Approx(1e-2));
     work.frames = std::numeric_limits<double>::infinity();
@@ -110,4 +116,21 @@ TEST_CASE("work: rough_number is short and exact for small counts") {
     CHECK(rough_number(0.0123456) == "0.0123");
     CHECK(rough_number(3.21e12) == "3.2e+12");
     CHECK(rough_number(std::numeric_limits<double>::infinity()) == "infinitely many");
+}
+
+TEST_CASE("work: cell crossings of the fast engine: a lone disc in a periodic box never rests") {
+    Scene s;
+    s.box = Box{1.0, 1.0, Boundary::periodic};
+    s.discs.push_back(Disc{{0.5, 0.5}, {1.0, 0.3}, 0.01, 1.0, {}, ""});
+    EngineOptions options;
+    std::unique_ptr<Engine> engine = make_engine(s, options);
+    engine->advance_to(1000.0);
+    const auto actual = static_cast<double>(engine->measurements().cell_crossings) / 1000.0;
+    CHECK(cell_crossing_rate(s) == doctest::Approx(actual).epsilon(0.1));
+    RunShape run;
+    run.span = 1e300;
+    run.event_driven = true;
+    CHECK(estimate_work(s, run).crossings == 0.0);  // the classic engine has no cells
+    run.cell_grid = true;
+    CHECK(first_excess(estimate_work(s, run)).what == "events");
 }

@@ -33,10 +33,17 @@ struct CollisionRate {
 /// when a speed is so large that the sum overflows.
 [[nodiscard]] CollisionRate collision_rate(const Scene& scene) noexcept;
 
+/// Cell crossings per unit of simulation time in the fast engine's grid (collide/sim/
+/// fast_engine.hpp): about max(9, 2 N) cells, none narrower than a disc diameter, and a disc at
+/// velocity v crosses |v_x| / cell width + |v_y| / cell height cell walls per time unit. These are
+/// events too: a lone disc in a periodic box never collides but crosses cells forever. O(N).
+[[nodiscard]] double cell_crossing_rate(const Scene& scene) noexcept;
+
 /// What a run is asked to do.
 struct RunShape {
     double span = 0.0;          ///< simulation time from the start to the end of the run
     bool event_driven = false;  ///< an event-driven engine runs over the span
+    bool cell_grid = false;     ///< that engine is the fast one, whose events include crossings
     bool time_driven = false;   ///< a time-driven engine runs over the span
     double dt = 0.0;            ///< the time-driven step
     bool all_pairs = true;      ///< time-driven overlap checks: all pairs, else a cell grid
@@ -46,6 +53,7 @@ struct RunShape {
 /// The estimated work of a run; every field is >= 0 and may be +inf.
 struct WorkEstimate {
     double collisions = 0.0;   ///< event-driven collisions expected over the span
+    double crossings = 0.0;    ///< the fast engine's cell crossings over the span
     double steps = 0.0;        ///< time-driven steps: span / dt
     double pair_checks = 0.0;  ///< time-driven overlap checks: steps * N (N - 1) / 2, or with a
                                ///< grid steps * N * grid_checks_per_disc
@@ -65,7 +73,8 @@ inline constexpr double grid_checks_per_disc = 10.0;
 /// The most work a run may take without the user insisting (`--no-limits`): each limit is about
 /// an hour or more of computing on a laptop core, far beyond any lesson's video.
 struct WorkLimits {
-    double collisions = 1e10;   ///< at a few million collisions per second: about an hour
+    double events = 1e10;       ///< collisions and cell crossings: a few million per second,
+                                ///< so about an hour
     double steps = 1e9;         ///< time-driven steps, whatever their size
     double pair_checks = 1e13;  ///< at ~10^9 checks per second: about three hours
     double frames = 1e7;        ///< frames a run goes through (a still passes all before its own)

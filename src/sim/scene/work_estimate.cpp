@@ -52,10 +52,29 @@ CollisionRate collision_rate(const Scene& scene) noexcept {
     return rate;
 }
 
+double cell_crossing_rate(const Scene& scene) noexcept {
+    const std::size_t n = scene.discs.size();
+    if (n == 0) return 0.0;
+    double radius_sum = 0.0;
+    double crossing_speed = 0.0;  // sum of |v_x| + |v_y|
+    for (const Disc& d : scene.discs) {
+        radius_sum += d.radius;
+        crossing_speed += std::abs(d.velocity.x) + std::abs(d.velocity.y);
+    }
+    const double diameter = 2.0 * radius_sum / static_cast<double>(n);
+    const double area = scene.box.area();
+    const double cells =
+        std::min(area / (diameter * diameter), std::max(9.0, 2.0 * static_cast<double>(n)));
+    return crossing_speed / std::sqrt(area / std::max(1.0, cells));
+}
+
 WorkEstimate estimate_work(const Scene& scene, const RunShape& run) noexcept {
     WorkEstimate work;
     const double span = std::max(0.0, run.span);
-    if (run.event_driven && span > 0.0) work.collisions = collision_rate(scene).total() * span;
+    if (run.event_driven && span > 0.0) {
+        work.collisions = collision_rate(scene).total() * span;
+        if (run.cell_grid) work.crossings = cell_crossing_rate(scene) * span;
+    }
     if (run.time_driven && span > 0.0) {
         work.steps = span / run.dt;
         work.dt_below_resolution = !(span + run.dt > span);
@@ -65,7 +84,7 @@ WorkEstimate estimate_work(const Scene& scene, const RunShape& run) noexcept {
     }
     work.frames = std::max(0.0, run.frames);
     // 0 * inf (no discs, infinite span) is no work, not NaN.
-    for (double* v : {&work.collisions, &work.steps, &work.pair_checks}) {
+    for (double* v : {&work.collisions, &work.crossings, &work.steps, &work.pair_checks}) {
         if (std::isnan(*v)) *v = 0.0;
     }
     return work;
@@ -81,7 +100,7 @@ WorkExcess first_excess(const WorkEstimate& work, const WorkLimits& limits) {
             worst = {what, estimate, limit};
         }
     };
-    consider("collisions", work.collisions, limits.collisions);
+    consider("events", work.collisions + work.crossings, limits.events);
     consider("time-driven steps", work.steps, limits.steps);
     consider("overlap checks", work.pair_checks, limits.pair_checks);
     consider("frames", work.frames, limits.frames);
