@@ -143,8 +143,8 @@ void add_shared_options(CLI::App& cmd, CliValues& v) {
         ->capture_default_str();
     cmd.add_flag("--verbose", v.verbose, "Show the encoder's own log");
     cmd.add_flag(insist_option, v.no_limits,
-                 "Run even when the estimated work (collisions, time-driven steps and checks, "
-                 "frames) is beyond the limits of docs/limits.md");
+                 "Run even when the estimated work (collisions and cell crossings, time-driven "
+                 "steps and checks, frames) is beyond the limits of docs/limits.md");
 }
 
 void print_notice(const std::string& line) {

@@ -166,8 +166,8 @@ void add_simulate_command(CLI::App& root) {
     cmd->add_option("--events-log", options->events_log, "Write every collision as CSV t,kind,a,b");
     cmd->add_flag("--json", options->json, "Print the measurements as JSON");
     cmd->add_flag(insist_option, options->no_limits,
-                  "Run even when the estimated work (collisions, time-driven steps and checks) is "
-                  "beyond the limits of docs/limits.md");
+                  "Run even when the estimated work (collisions and cell crossings, time-driven "
+                  "steps and checks) is beyond the limits of docs/limits.md");
     cmd->callback([options] { run_simulate(*options); });
 }
 
