@@ -48,7 +48,7 @@ TEST_CASE("work: collision and crossing rates are within 15 % of a melted gas's 
     }
 }
 
-TEST_CASE("work: a single fast disc's wall hits and no pairs; nothing moving is no work") {
+TEST_CASE("work: a single fast disc's wall hits and no pairs, and nothing moving is no work") {
     const CollisionRate rate = collision_rate(one_disc({1e50, 0.0}));
     CHECK(rate.pairs == 0.0);
     CHECK(rate.walls > 1e50);
