@@ -51,7 +51,8 @@ TEST_CASE("work limits: the render's span is its last frame time, its engines th
     CHECK(run.frames == 20.0);
 }
 
-TEST_CASE("work limits: an ordinary render passes; too much work names the option responsible") {
+TEST_CASE(
+    "work limits: an ordinary render passes, and too much work names the option responsible") {
     RenderRequest request;
     CHECK(render_refusal(request, moving_pair()).empty());
     request.speed = 1e300;
