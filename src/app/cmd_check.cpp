@@ -12,6 +12,7 @@
 #include "collide/sim/scene_check.hpp"
 #include "commands.hpp"
 #include "interrupt.hpp"
+#include "work_limits.hpp"
 
 namespace collide::app {
 
@@ -31,6 +32,7 @@ void add_check_command(CLI::App& root) {
                     "box with walls only)");
     cmd->callback([options] {
         const Scene scene = load_scene(options->scene);  // validates; throws Error(input) -> exit 2
+        check_scene_hints(scene);  // what `collide render SCENE` would refuse in the hints
         if (!options->export_path.empty()) {
             // A signal while the file is written leaves nothing at the destination, not even a
             // temporary: the guard turns it into a flag save_scene checks before the rename.

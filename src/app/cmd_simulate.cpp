@@ -17,6 +17,7 @@
 #include "commands.hpp"
 #include "interrupt.hpp"
 #include "measurements_report.hpp"
+#include "work_limits.hpp"
 
 namespace collide::app {
 
@@ -28,6 +29,7 @@ struct SimulateOptions {
     EngineOptions engine;
     std::string events_log;  ///< empty: no log
     bool json = false;
+    bool no_limits = false;  ///< --no-limits: run even beyond the work limits
 
     /// Throws Error(input) naming the bad option.
     void validate() const {
@@ -89,6 +91,7 @@ void run_simulate(const SimulateOptions& options) {
     // Ctrl-C stops the run cleanly (the events log's temporary is removed) however long it is.
     InterruptGuard interrupts;
     const Scene scene = load_scene(options.scene);
+    check_simulate_work(scene, options.engine, options.until, options.no_limits);
     // Open the log before simulating: an unwritable path fails fast, with nothing half written.
     std::unique_ptr<EventsLog> log;
     if (!options.events_log.empty()) {
@@ -140,6 +143,9 @@ void add_simulate_command(CLI::App& root) {
     cmd->add_option("--events-log", options->events_log,
                     "Write every collision as CSV t,kind,a,b (- for standard output)");
     cmd->add_flag("--json", options->json, "Print the measurements as JSON");
+    cmd->add_flag(insist_option, options->no_limits,
+                  "Run even when the estimated work (collisions and cell crossings, time-driven "
+                  "steps and checks) is beyond the limits of docs/limits.md");
     cmd->callback([options] { run_simulate(*options); });
 }
 

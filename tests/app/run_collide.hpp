@@ -46,6 +46,13 @@ inline RunResult run_collide(const std::string& args) {
     return run_command(std::string("\"") + COLLIDE_EXE + "\" " + args + " 2>&1");
 }
 
+/// Runs `collide <args>` through the shell with `env` before it: environment assignments
+/// ("NAME='value'"), a wrapper ("timeout 60") or a shell command ("ulimit -v 1000000;"), or
+/// nothing (env and args are pasted verbatim: quote them yourself).
+inline RunResult run_collide_env(const std::string& env, const std::string& args) {
+    return run_command(env + " \"" + COLLIDE_EXE + "\" " + args + " 2>&1");
+}
+
 #if defined(__SANITIZE_ADDRESS__)
 inline constexpr bool address_sanitizer = true;
 #else

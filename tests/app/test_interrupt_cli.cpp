@@ -42,12 +42,13 @@ bool has_hidden_entry(const fs::path& dir) {
     return false;
 }
 
-/// `collide render gas` into out/out.mp4 with an endless first frame (--speed 1e300).
+/// `collide render gas` into out/out.mp4 with an endless first frame (--speed 1e300; --no-limits,
+/// or the work estimate would refuse to start it).
 SignalledRun endless_render(const fs::path& out, const fs::path& log) {
     SignalledRun run;
     run.argv = {COLLIDE_EXE, "render",     "gas", "-o", (out / "out.mp4").string(),
                 "--speed",   "1e300",      "-q",  "l",  "--duration",
-                "1",         "--progress", "none"};
+                "1",         "--progress", "none", "--no-limits"};
     run.log = log;
     // The writer's temporary is open (unnamed where the filesystem has O_TMPFILE).
     run.started_child = [out](pid_t child) {
@@ -89,7 +90,8 @@ TEST_CASE("simulate: a signal during an endless run exits 1 and removes the even
                 "--until",
                 "1e300",
                 "--events-log",
-                (out.path / "ev.csv").string()};
+                (out.path / "ev.csv").string(),
+                "--no-limits"};
     run.log = log;
     run.started_child = [&](pid_t child) {
         return has_hidden_entry(out.path) || collide::test::has_open_file_in(child, out.path);
@@ -155,7 +157,7 @@ TEST_CASE("simulate: standard output piped into a reader that closes early stops
     // it would run for ever.
     // timeout: a build that ignores the closed pipe fails here instead of running for ever.
     const std::string command = "cd '" + out.path.string() + "' && timeout 120 \"" + COLLIDE_EXE +
-                                "\" simulate gas --until 1e300 --events-log - 2>"
+                                "\" simulate gas --until 1e300 --no-limits --events-log - 2>"
                                 "'" +
                                 (out.path / "err.txt").string() + "' | head -c 100 > /dev/null";
     const int status = std::system(command.c_str());

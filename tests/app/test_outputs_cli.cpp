@@ -111,13 +111,13 @@ TEST_CASE("render --format png -o . and -o .. are refused before anything is ren
     write_file(work / "notes.txt", "mine");
     write_file(work / "inner" / "notes.txt", "mine too");
     // Run inside work/inner, so that even a broken build could only reach this test's files.
-    // --speed 1e300: rendering would never end (timeout fails it), so an answer at all means
-    // the refusal came up front.
+    // --speed 1e300 --no-limits: rendering would never end (timeout fails it), so an answer at
+    // all means the refusal came up front.
     for (const char* bad : {".", "..", "./", "inner/..", "../inner", "/"}) {
         CAPTURE(bad);
         const RunResult r = run_collide_shell(
             "cd " + q(work / "inner") + " && timeout 60 \"" + COLLIDE_EXE +
-            "\" render gas --speed 1e300 --format png -o '" + bad + "' --progress none");
+            "\" render gas --speed 1e300 --no-limits --format png -o '" + bad + "' --progress none");
         CHECK(r.exit_code == 2);
         CHECK((contains(r.output, "give it a name") || contains(r.output, "current directory")));
     }

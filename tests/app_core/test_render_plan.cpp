@@ -224,3 +224,18 @@ TEST_CASE("the on-screen clock resolves one frame interval, whatever the units")
         }
     }
 }
+
+TEST_CASE("still_clock refuses a time more frame intervals away than int64 / double can count") {
+    for (const auto& [at, speed] :
+         {std::pair{1e18, 1.0}, std::pair{1e15, 1.0}, std::pair{1.0, 1e-300}}) {
+        CAPTURE(at);
+        try {
+            (void)still_clock(at, speed, 30);
+            FAIL("no error");
+        } catch (const Error& e) {
+            CHECK(e.kind() == ErrorKind::input);
+            CHECK(std::string(e.what()).rfind("--at: ", 0) == 0);
+        }
+    }
+    CHECK(still_clock(1e12, 1.0, 30).count == 30000000000001);  // far, but countable
+}
