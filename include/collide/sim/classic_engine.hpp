@@ -50,6 +50,9 @@ class ClassicEngine final : public Engine {
         }
         count_.assign(n, 0);
         last_partner_.assign(n, no_disc);
+        instant_t_.assign(n, 0.0);
+        instant_collisions_.assign(n, 0);
+        instant_limit_ = instant_collision_limit(n);
         // Each pair once (j > i) at the start; identical keys would be duplicates anyway.
         for (std::uint32_t i = 0; i < n; ++i) predict(i, i + 1);
     }
@@ -247,8 +250,20 @@ class ClassicEngine final : public Engine {
         return norm2(dr) < reach * reach;
     }
 
+    /// Counts a collision of disc i at now_ and throws when i is jammed (see
+    /// sim::instant_collision_limit): a wedged disc would otherwise collide at this instant
+    /// forever while the queue grows by N events per collision.
+    void count_collision_now(std::uint32_t i) {
+        if (!same_instant(now_ - instant_t_[i], velocity(i), radius_[i]))
+            instant_collisions_[i] = 0;
+        instant_t_[i] = now_;
+        if (++instant_collisions_[i] > instant_limit_) throw_jammed(i, now_, instant_limit_);
+    }
+
     void resolve(const Event& e) {
         const std::uint32_t a = e.a;
+        count_collision_now(a);
+        if (e.kind == EventKind::pair) count_collision_now(e.b);
         switch (e.kind) {
             case EventKind::pair: {
                 const std::uint32_t b = e.b;
@@ -301,7 +316,9 @@ class ClassicEngine final : public Engine {
             start_.capacity() * sizeof(Vec2);
         const std::size_t scalars =
             (radius_.capacity() + mass_.capacity()) * sizeof(double) +
-            (count_.capacity() + last_partner_.capacity()) * sizeof(std::uint32_t);
+            (count_.capacity() + last_partner_.capacity() + instant_collisions_.capacity()) *
+                sizeof(std::uint32_t) +
+            instant_t_.capacity() * sizeof(double);
         // The queue's own storage is not visible through its interface; count its entries.
         return vecs + scalars + appearance_.bytes() + stats_.max_size * sizeof(Event);
     }
@@ -320,6 +337,9 @@ class ClassicEngine final : public Engine {
     std::vector<std::uint32_t> count_;         ///< collisions per disc (lazy invalidation)
     std::vector<std::uint32_t> last_partner_;  ///< see just_collided
     std::vector<double> may_hit_;              ///< scratch of predict (no allocation per event)
+    std::vector<double> instant_t_;            ///< time of each disc's latest collision
+    std::vector<std::uint32_t> instant_collisions_;  ///< collisions of each disc in its instant
+    std::uint64_t instant_limit_ = 0;                ///< see count_collision_now
     QueueStats stats_;
     ImpulseTally tally_;
     std::uint64_t collisions_pair_ = 0;
