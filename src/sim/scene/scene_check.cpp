@@ -197,31 +197,15 @@ bool overlapping(const Box& box, const Disc& a, const Disc& b) noexcept {
     return norm2(box.displacement(a.position, b.position)) < limit * limit;
 }
 
-void check_overlaps(const Scene& scene, const SceneOrigin& origin) {
-    const std::size_t n = scene.discs.size();
-    if (n < 2) return;
-    if (n >= std::numeric_limits<std::uint32_t>::max())
-        throw_input_error("too many discs (" + std::to_string(n) + ")");
-    detail::DiscGrid grid(scene.box, overlap_cell_size(scene), 4 * n + 64);
-    for (std::size_t i = 0; i < n; ++i) {
-        const Disc& d = scene.discs[i];
-        const Vec2 p = scene.box.wrap(d.position);
-        std::uint32_t other = 0;
-        const bool hit = grid.any_near(p, d.radius, [&](std::uint32_t j) {
-            other = j;
-            return overlapping(scene.box, scene.discs[j], d);
-        });
-        if (hit) {
-            const Disc& e = scene.discs[other];
-            const double gap =
-                norm(scene.box.displacement(e.position, d.position)) - e.radius - d.radius;
-            throw_input_error(location_text(origin.locate(i)) + ": overlaps " +
-                              location_text(origin.locate(other)) + " at t = 0 (centres " +
-                              point_text(e.position) + " and " + point_text(d.position) +
-                              ", overlap depth " + format_number(-gap) + ")");
-        }
-        grid.insert(static_cast<std::uint32_t>(i), p, d.radius);
-    }
+[[noreturn]] void fail_overlap(const Scene& scene, const SceneOrigin& origin, std::size_t i,
+                               std::size_t other) {
+    const Disc& d = scene.discs[i];
+    const Disc& e = scene.discs[other];
+    const double gap = norm(scene.box.displacement(e.position, d.position)) - e.radius - d.radius;
+    throw_input_error(location_text(origin.locate(i)) + ": overlaps " +
+                      location_text(origin.locate(other)) + " at t = 0 (centres " +
+                      point_text(e.position) + " and " + point_text(d.position) +
+                      ", overlap depth " + format_number(-gap) + ")");
 }
 
 // --- Jams: discs that cannot move along an axis but are given a velocity along it.
@@ -330,12 +314,16 @@ std::string jam_reason(const Scene& scene, const SceneOrigin& origin, int axis, 
            " as a whole, and an event-driven simulation would collide forever at t = 0";
 }
 
-// Refuses a scene whose discs sit in a straight row of touching discs from wall to wall (or around
-// a periodic box) and move along it: they cannot move, and the engines would collide at t = 0
-// forever. Rows, not general jams: the engines catch the rest (sim::instant_collision_limit).
-void check_jams(const Scene& scene, const SceneOrigin& origin) {
+// One pass of the O(N) grid over the discs in scene order, each against those before it: refuses
+// the first disc that overlaps an earlier one, and collects the straight rows of touching discs.
+// Then refuses a disc in a straight row from wall to wall (or around a periodic box) that moves
+// along the row: the row cannot move, and the engines would collide at t = 0 forever. Rows, not
+// general jams: the engines catch the rest (sim::instant_collision_limit).
+void check_contacts(const Scene& scene, const SceneOrigin& origin) {
     const std::size_t n = scene.discs.size();
     if (n == 0) return;
+    if (n >= std::numeric_limits<std::uint32_t>::max())
+        throw_input_error("too many discs (" + std::to_string(n) + ")");
     std::array<AxisRows, 2> axes{AxisRows(n), AxisRows(n)};
     double max_radius = 0.0;
     for (const Disc& d : scene.discs) max_radius = std::max(max_radius, d.radius);
@@ -346,16 +334,20 @@ void check_jams(const Scene& scene, const SceneOrigin& origin) {
         const Vec2 p = scene.box.wrap(d.position);
         // Widened so that discs touching within the tolerance share a cell.
         const double reach = d.radius + 2.0 * contact_tolerance * (d.radius + max_radius);
-        grid.any_near(p, reach, [&](std::uint32_t j) {
+        std::uint32_t other = 0;
+        const bool overlap = grid.any_near(p, reach, [&](std::uint32_t j) {
             if (seen[j] == i) return false;  // filed in several cells
             seen[j] = i;
+            other = j;
             const Disc& e = scene.discs[j];
+            if (overlapping(scene.box, e, d)) return true;
             const Vec2 dr = scene.box.displacement(e.position, d.position);
             const double sigma = d.radius + e.radius;
             const double touch = sigma * (1.0 + contact_tolerance);
             if (norm2(dr) <= touch * touch) join_contact(scene.box, i, j, dr, sigma, axes);
             return false;
         });
+        if (overlap) fail_overlap(scene, origin, i, other);
         grid.insert(i, p, d.radius);
         flag_walls(scene.box, d, i, axes);
     }
@@ -404,8 +396,7 @@ void validate_scene(const Scene& scene, const SceneOrigin& origin) {
     }
     check_inside_box(scene, origin);
     check_periodic_sizes(scene, origin);
-    check_overlaps(scene, origin);
-    check_jams(scene, origin);
+    check_contacts(scene, origin);
 }
 
 double packing_fraction(const Scene& scene) noexcept {
