@@ -238,6 +238,7 @@ void run(const CliValues& values, bool still) {
                                                 : render_video(scene, plan, hooks);
     } catch (...) {
         progress.finish();
+        interrupts.throw_if_requested();  // whatever noticed it first: one wording, the signal
         throw;
     }
     progress.finish();

@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
     collide::app::add_check_command(root);
     collide::app::add_scenes_command(root);
     collide::app::add_pq_command(root);
+    collide::app::add_heap_command(root);
     collide::app::add_render_command(root);
     collide::app::add_thumbnail_command(root);
 

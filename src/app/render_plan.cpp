@@ -174,10 +174,14 @@ void plan_video_output(const RenderRequest& request, const Scene& scene, RenderP
     plan.kind = OutputKind::video;
     if (request.format) {
         plan.format = video::parse_video_format(*request.format, "--format");
-        if (request.output && plan.format != video::VideoFormat::png_sequence &&
-            format_of_path(*request.output) != plan.format) {
-            bad_option("-o", fmt::format("'{}' does not end in .{} (--format {})", *request.output,
-                                         video::to_string(plan.format), *request.format));
+        // With --format, the path's extension is the user's business, unless it names another
+        // format (a .gif written as MP4 would mislead every player).
+        const std::string ext = request.output ? lowercase_extension(*request.output) : "";
+        const bool other_format = (ext == ".mp4" || ext == ".gif" || ext == ".png") &&
+                                  ext != "." + std::string(video::to_string(plan.format));
+        if (plan.format != video::VideoFormat::png_sequence && other_format) {
+            bad_option("-o", fmt::format("'{}' ends in {}, but --format is {}", *request.output,
+                                         ext, *request.format));
         }
     } else if (request.output) {
         plan.format = format_of_path(*request.output);
