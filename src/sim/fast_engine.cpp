@@ -51,6 +51,7 @@ FastEngine::FastEngine(const Scene& scene)
     : box_(scene.box), periodic_(scene.box.boundary == Boundary::periodic), appearance_(scene) {
     choose_grid(scene);
     place_discs(scene);
+    instant_limit_ = instant_collision_limit(p_.size());
     for (std::uint32_t i = 0; i < p_.size(); ++i) predict(i);
 }
 
@@ -225,7 +226,17 @@ void FastEngine::process(std::uint32_t i, const Key& key) {
     }
 }
 
+void FastEngine::count_collision_now(std::uint32_t i) {
+    // The local clock is the time of the disc's latest event (collision or crossing).
+    const Particle& pi = p_[i];
+    std::uint32_t& count = cold_[i].instant_collisions;
+    if (!same_instant(now_ - pi.t, {pi.vx, pi.vy}, pi.r)) count = 0;
+    if (++count > instant_limit_) throw_jammed(scene_index_[i], now_, instant_limit_);
+}
+
 void FastEngine::process_pair(std::uint32_t i, std::uint32_t j, double t) {
+    count_collision_now(i);
+    count_collision_now(j);
     advance_disc(i);
     advance_disc(j);
     Particle& pi = p_[i];
@@ -251,6 +262,7 @@ void FastEngine::process_pair(std::uint32_t i, std::uint32_t j, double t) {
 }
 
 void FastEngine::process_wall(std::uint32_t i, EventKind kind, double t) {
+    count_collision_now(i);
     advance_disc(i);
     Particle& pi = p_[i];
     if (kind == EventKind::xwall) {
@@ -269,6 +281,9 @@ void FastEngine::process_wall(std::uint32_t i, EventKind kind, double t) {
 }
 
 void FastEngine::process_cell(std::uint32_t i, std::uint32_t axis) {
+    // A crossing far from the disc's latest event starts a new instant for the jam count.
+    if (!same_instant(now_ - p_[i].t, {p_[i].vx, p_[i].vy}, p_[i].r))
+        cold_[i].instant_collisions = 0;
     advance_disc(i);
     Particle& pi = p_[i];
     auto cx = static_cast<std::int64_t>(pi.cell % nx_);

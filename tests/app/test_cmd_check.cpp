@@ -88,6 +88,28 @@ TEST_CASE("collide check: the course's billiards-overflow.txt is rejected, namin
     CHECK(contains(r.output, "billiards-overflow.txt:6: disc 5"));
 }
 
+// Issue 15: these scenes passed check, then every event-driven run collided forever at t = 0.
+TEST_CASE("collide check: discs wedged wall to wall and moving along the row are refused") {
+    const std::string rack = temp_scene("wedged.txt",
+                                        "3\n"
+                                        "0.16666666666666666 0.5 0 0 0.16666666666666666 1 0 0 0\n"
+                                        "0.5 0.5 0.25 0 0.16666666666666666 1 0 0 0\n"
+                                        "0.8333333333333334 0.5 0 0 0.16666666666666666 1 0 0 0\n");
+    auto r = run_collide("check " + rack);
+    CHECK(r.exit_code == 2);
+    CHECK(contains(r.output, "wedged.txt:3: disc 2 velocity: moves along x (0.25)"));
+    CHECK(contains(r.output, "straight row of 3 touching discs"));
+    r = run_collide("simulate " + rack + " --until 1");
+    CHECK(r.exit_code == 2);
+    CHECK(contains(r.output, "wedged.txt:3: disc 2 velocity"));
+
+    r = run_collide("check " + temp_scene("wide.txt", "1\n0.5 0.5 1 0 0.5 1 0 0 0\n"));
+    CHECK(r.exit_code == 2);
+    CHECK(contains(r.output,
+                   "wide.txt:2: disc 1 velocity: moves along x (1), but the disc is as "
+                   "wide as the box"));
+}
+
 TEST_CASE("collide check: a missing argument is a usage error") {
     const auto r = run_collide("check");
     CHECK(r.exit_code == 2);

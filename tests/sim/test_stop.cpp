@@ -158,3 +158,61 @@ TEST_CASE("the fast engine's invariants hold after a stop") {
     CHECK(collisions >= 3000);
     CHECK(collisions < 3000 + 1024);
 }
+
+// Ctrl-C during one long step (issue 15, item 9). Each scene is large enough that finishing the
+// step would take seconds (minutes in the sanitizer build): the flag is set beforehand, so the
+// step must throw instead of completing, and the test cannot hang.
+TEST_CASE("the classic engine's initial O(N^2) prediction stops when the flag is set") {
+    const Scene scene = lattice_fluid(142, 0.3, Boundary::walls, 3);  // 20164 discs: 2e8 pairs
+    const std::atomic<bool> stop{true};
+    auto engine = make_flagged({"classic", "binary"}, scene, stop);
+    CHECK(stop_message(*engine, 1.0) == "simulation stopped");
+    // Not one row predicted (the constructor used to predict them all before the flag was set).
+    CHECK(engine->measurements().predictions == 0);
+    CHECK(engine->measurements().queue.pushes == 0);
+    CHECK(engine->time() == 0.0);
+}
+
+TEST_CASE("a stopped classic engine resumes its initial prediction and gives the same events") {
+    const Scene scene = lattice_fluid(5, 0.5, Boundary::walls, 9);
+    auto reference = make("classic", "binary", scene);
+    std::vector<CollisionRecord> expected;
+    reference->set_collision_listener([&](const CollisionRecord& r) { expected.push_back(r); });
+    reference->advance_to(0.05);
+    std::atomic<bool> stop{true};
+    auto engine = make_flagged({"classic", "binary"}, scene, stop);
+    std::vector<CollisionRecord> got;
+    engine->set_collision_listener([&](const CollisionRecord& r) { got.push_back(r); });
+    CHECK(stop_message(*engine, 0.05) == "simulation stopped");
+    stop = false;
+    CHECK(stop_message(*engine, 0.05).empty());
+    REQUIRE(got.size() > 10);
+    REQUIRE(got.size() == expected.size());
+    for (std::size_t k = 0; k < got.size(); ++k) {
+        REQUIRE(got[k].t == expected[k].t);
+        REQUIRE(got[k].a == expected[k].a);
+        REQUIRE(got[k].b == expected[k].b);
+    }
+}
+
+TEST_CASE("a time-driven step over many discs stops, and leaves the discs where they were") {
+    for (const char* detect : {"all-pairs", "grid"}) {
+        CAPTURE(std::string(detect));
+        const Scene scene = lattice_fluid(142, 0.3, Boundary::walls, 3);
+        EngineOptions options;
+        options.engine = "time";
+        options.dt = 1.0;  // one step over 20164 discs
+        options.td_detect = detect;
+        auto engine = make_engine(scene, options);
+        const Snapshot before = engine->snapshot();
+        const std::atomic<bool> stop{true};
+        engine->set_stop_flag(&stop);
+        CHECK(stop_message(*engine, 1.0) == "simulation stopped");
+        CHECK(engine->time() == 0.0);
+        const Snapshot after = engine->snapshot();
+        REQUIRE(after.discs.size() == before.discs.size());
+        for (std::size_t i = 0; i < after.discs.size(); ++i) {
+            REQUIRE(norm(after.discs[i].position - before.discs[i].position) < 1e-12);
+        }
+    }
+}

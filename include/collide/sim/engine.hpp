@@ -48,10 +48,13 @@ class Engine {
     virtual void set_collision_listener(CollisionListener listener) = 0;
 
     /// Makes advance_to() cancellable: the engine polls `stop` (set by another thread or a signal
-    /// handler) every few thousand events, or every time step, and once it is set throws
-    /// Error(runtime, "simulation stopped") between two events. Why: one call can run for minutes
-    /// (a large --until or --speed), and Ctrl-C must still stop it cleanly. The engine is then
-    /// consistent at some time between where it was and t. nullptr (the default): never stops.
+    /// handler) every few thousand events, or every time step and every few thousand pair tests
+    /// within one (the classic engine's initial O(N^2) prediction and the time-driven engine's
+    /// all-pairs step), and once it is set throws Error(runtime, "simulation stopped") between
+    /// two events or steps. Why: one call can run for minutes (a large --until or --speed, or one
+    /// all-pairs step over 10^6 discs), and Ctrl-C must still stop it cleanly. The engine is then
+    /// consistent at some time between where it was and t (a time-driven step stopped midway is
+    /// undone, up to rounding). nullptr (the default): never stops.
     void set_stop_flag(const std::atomic<bool>* stop) noexcept { stop_ = stop; }
 
   protected:
@@ -62,11 +65,15 @@ class Engine {
         stop_countdown_ = stop_poll_events;
         check_stop();
     }
+    /// The flag given to set_stop_flag (nullptr: none), for loops inside one long step that poll
+    /// it themselves.
+    [[nodiscard]] const std::atomic<bool>* stop_flag() const noexcept { return stop_; }
     /// For loops whose every pass is long (a time step over all discs): looks at the flag now.
     void check_stop() const {
-        if (stop_ != nullptr && stop_->load(std::memory_order_relaxed))
-            throw_runtime_error("simulation stopped");
+        if (stop_ != nullptr && stop_->load(std::memory_order_relaxed)) throw_stopped();
     }
+    /// The error of a stop seen by the engine itself or by a loop it called.
+    [[noreturn]] static void throw_stopped() { throw_runtime_error("simulation stopped"); }
 
   private:
     /// Events between two looks at the stop flag: a few milliseconds of the slowest engine (the

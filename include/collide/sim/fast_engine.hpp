@@ -102,7 +102,11 @@ class FastEngine final : public Engine {
         std::uint32_t pair_partner = no_disc;
         std::uint32_t pair_count = 0;  ///< the partner's collision count when pair_t was predicted
         std::uint32_t prev = 0;        ///< previous disc in the cell list (O(1) unlink)
+        /// Collisions in the disc's current instant (sim::same_instant), for the jam bound (see
+        /// count_collision_now); fills the record's padding.
+        std::uint32_t instant_collisions = 0;
     };
+    static_assert(sizeof(Cold) == 32, "the jam counter fits in the padding");
 
     /// A disc's pending event in 16 bytes (four keys per cache line in the heap): the time, the
     /// disc that holds it (its heap handle, so the heap keeps no handle array), and the kind
@@ -156,6 +160,9 @@ class FastEngine final : public Engine {
     void process_pair(std::uint32_t i, std::uint32_t j, double t);
     void process_wall(std::uint32_t i, EventKind kind, double t);
     void process_cell(std::uint32_t i, std::uint32_t axis);
+    /// Counts a collision of disc i at now_, before it is advanced; throws when i is jammed
+    /// (sim::instant_collision_limit).
+    void count_collision_now(std::uint32_t i);
 
     // --- prediction
     void predict(std::uint32_t i);
@@ -229,6 +236,7 @@ class FastEngine final : public Engine {
     std::uint64_t cell_crossings_ = 0;
     std::uint64_t predictions_ = 0;
     double wall_seconds_ = 0.0;
+    std::uint64_t instant_limit_ = 0;  ///< see count_collision_now
     CollisionListener listener_;
 };
 

@@ -67,7 +67,11 @@ inline constexpr std::size_t max_listed_problems = 5;
 /// radius <= 0; mass <= 0; any of them outside the range of max_scene_magnitude /
 /// min_scene_magnitude; discs outside a walled box (every such disc is listed, up to
 /// max_listed_problems); a disc too large for a periodic box (radius > min(width, height) / 4);
-/// two discs overlapping at t = 0 (the first pair in scene order is named).
+/// two discs overlapping at t = 0 (the first pair in scene order is named); a disc that cannot move
+/// along an axis but has a velocity along it (field `velocity`): as wide as the box, wedged from
+/// wall to wall in a straight row of touching discs, or moving unlike the rest of a straight ring
+/// of touching discs around a periodic box (the event-driven engines would collide forever at
+/// t = 0; rows within sqrt(contact_tolerance) of straight count as straight).
 /// Complexity O(N) expected (a cell grid), memory O(N).
 void validate_scene(const Scene& scene, const SceneOrigin& origin = {});
 

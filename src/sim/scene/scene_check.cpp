@@ -3,6 +3,7 @@
 #include "collide/sim/scene_check.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -196,30 +197,174 @@ bool overlapping(const Box& box, const Disc& a, const Disc& b) noexcept {
     return norm2(box.displacement(a.position, b.position)) < limit * limit;
 }
 
-void check_overlaps(const Scene& scene, const SceneOrigin& origin) {
+[[noreturn]] void fail_overlap(const Scene& scene, const SceneOrigin& origin, std::size_t i,
+                               std::size_t other) {
+    const Disc& d = scene.discs[i];
+    const Disc& e = scene.discs[other];
+    const double gap = norm(scene.box.displacement(e.position, d.position)) - e.radius - d.radius;
+    throw_input_error(location_text(origin.locate(i)) + ": overlaps " +
+                      location_text(origin.locate(other)) + " at t = 0 (centres " +
+                      point_text(e.position) + " and " + point_text(d.position) +
+                      ", overlap depth " + format_number(-gap) + ")");
+}
+
+// --- Jams: discs that cannot move along an axis but are given a velocity along it.
+
+/// A bend in a row of touching discs by an offset delta across the row shortens it by about
+/// delta^2 / sigma per contact; below sqrt(contact_tolerance) sigma that is under the contact
+/// tolerance, so such a row is as straight as "touching" can tell.
+const double row_alignment = std::sqrt(contact_tolerance);
+
+/// Union-find over discs: the straight rows of touching discs along one axis.
+class Rows {
+  public:
+    explicit Rows(std::size_t n) : parent_(n) {
+        for (std::size_t i = 0; i < n; ++i) parent_[i] = static_cast<std::uint32_t>(i);
+    }
+    std::uint32_t find(std::uint32_t i) {
+        while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
+        return i;
+    }
+    /// Joins the rows of a and b; false when they were one row already (the row closes a ring).
+    bool unite(std::uint32_t a, std::uint32_t b) {
+        a = find(a);
+        b = find(b);
+        if (a == b) return false;
+        parent_[std::max(a, b)] = std::min(a, b);  // the root is the row's first disc
+        return true;
+    }
+
+  private:
+    std::vector<std::uint32_t> parent_;
+};
+
+enum RowFlag : std::uint8_t { low_wall = 1, high_wall = 2, ring = 4 };
+
+struct AxisRows {
+    Rows rows;
+    std::vector<std::uint8_t> flags;  ///< RowFlag bits, per disc, then gathered on each root
+    explicit AxisRows(std::size_t n) : rows(n), flags(n, 0) {}
+};
+
+double along(Vec2 v, int axis) noexcept {
+    return axis == 0 ? v.x : v.y;
+}
+double across(Vec2 v, int axis) noexcept {
+    return axis == 0 ? v.y : v.x;
+}
+
+// Joins i and j in the rows of each axis their contact lies along (a periodic pair touching both
+// ways around the box is a ring of two).
+void join_contact(const Box& box, std::uint32_t i, std::uint32_t j, Vec2 d, double sigma,
+                  std::array<AxisRows, 2>& axes) {
+    for (int axis = 0; axis < 2; ++axis) {
+        if (std::abs(across(d, axis)) > row_alignment * sigma) continue;
+        AxisRows& a = axes[static_cast<std::size_t>(axis)];
+        const double period = axis == 0 ? box.width : box.height;
+        const bool both_ways =
+            box.boundary == Boundary::periodic &&
+            period - std::abs(along(d, axis)) <= sigma * (1.0 + contact_tolerance);
+        if (!a.rows.unite(i, j) || both_ways) a.flags[i] |= ring;
+    }
+}
+
+// Marks the walls disc d touches, per axis.
+void flag_walls(const Box& box, const Disc& d, std::uint32_t i, std::array<AxisRows, 2>& axes) {
+    if (box.boundary == Boundary::periodic) return;
+    const double slack = contact_tolerance * d.radius;
+    for (int axis = 0; axis < 2; ++axis) {
+        const double p = along(d.position, axis);
+        const double extent = axis == 0 ? box.width : box.height;
+        std::uint8_t& f = axes[static_cast<std::size_t>(axis)].flags[i];
+        if (p - d.radius <= slack) f |= low_wall;
+        if (p + d.radius >= extent - slack) f |= high_wall;
+    }
+}
+
+// Why disc i of a jammed row may not have its velocity, or empty when it may.
+std::string jam_reason(const Scene& scene, const SceneOrigin& origin, int axis, std::uint32_t i,
+                       std::uint32_t root, std::uint8_t flags, std::size_t row_size) {
+    const char* name = axis == 0 ? "x" : "y";
+    const double v = along(scene.discs[i].velocity, axis);
+    const double extent = axis == 0 ? scene.box.width : scene.box.height;
+    if ((flags & low_wall) && (flags & high_wall)) {
+        if (v == 0.0) return {};
+        std::string why = "moves along " + std::string(name) + " (" + format_number(v) + "), but ";
+        if (row_size == 1) {
+            why += "the disc is as wide as the box (diameter " +
+                   format_number(2.0 * scene.discs[i].radius) + ", " +
+                   (axis == 0 ? "width " : "height ") + format_number(extent) + ")";
+        } else {
+            why += "it is wedged between the walls " + std::string(name) + " = 0 and " + name +
+                   " = " + format_number(extent) + " in a straight row of " +
+                   std::to_string(row_size) + " touching discs" +
+                   (root == i ? "" : " (the first is " + location_text(origin.locate(root)) + ")");
+        }
+        return why + ": it cannot move along " + name +
+               ", and an event-driven simulation would collide forever at t = 0. Give it no " +
+               name + " velocity, or leave a gap";
+    }
+    if (!(flags & ring)) return {};
+    const double v_root = along(scene.discs[root].velocity, axis);
+    if (v == v_root) return {};
+    return "moves along " + std::string(name) + " at " + format_number(v) + ", unlike " +
+           location_text(origin.locate(root)) + " (" + format_number(v_root) +
+           "), in a straight ring of " + std::to_string(row_size) +
+           " touching discs around the periodic box: such a ring can only move along " + name +
+           " as a whole, and an event-driven simulation would collide forever at t = 0";
+}
+
+// One pass of the O(N) grid over the discs in scene order, each against those before it: refuses
+// the first disc that overlaps an earlier one, and collects the straight rows of touching discs.
+// Then refuses a disc in a straight row from wall to wall (or around a periodic box) that moves
+// along the row: the row cannot move, and the engines would collide at t = 0 forever. Rows, not
+// general jams: the engines catch the rest (sim::instant_collision_limit).
+void check_contacts(const Scene& scene, const SceneOrigin& origin) {
     const std::size_t n = scene.discs.size();
-    if (n < 2) return;
+    if (n == 0) return;
     if (n >= std::numeric_limits<std::uint32_t>::max())
         throw_input_error("too many discs (" + std::to_string(n) + ")");
+    std::array<AxisRows, 2> axes{AxisRows(n), AxisRows(n)};
+    double max_radius = 0.0;
+    for (const Disc& d : scene.discs) max_radius = std::max(max_radius, d.radius);
     detail::DiscGrid grid(scene.box, overlap_cell_size(scene), 4 * n + 64);
-    for (std::size_t i = 0; i < n; ++i) {
+    std::vector<std::uint32_t> seen(n, std::numeric_limits<std::uint32_t>::max());
+    for (std::uint32_t i = 0; i < n; ++i) {
         const Disc& d = scene.discs[i];
         const Vec2 p = scene.box.wrap(d.position);
+        // Widened so that discs touching within the tolerance share a cell.
+        const double reach = d.radius + 2.0 * contact_tolerance * (d.radius + max_radius);
         std::uint32_t other = 0;
-        const bool hit = grid.any_near(p, d.radius, [&](std::uint32_t j) {
+        const bool overlap = grid.any_near(p, reach, [&](std::uint32_t j) {
+            if (seen[j] == i) return false;  // filed in several cells
+            seen[j] = i;
             other = j;
-            return overlapping(scene.box, scene.discs[j], d);
+            const Disc& e = scene.discs[j];
+            if (overlapping(scene.box, e, d)) return true;
+            const Vec2 dr = scene.box.displacement(e.position, d.position);
+            const double sigma = d.radius + e.radius;
+            const double touch = sigma * (1.0 + contact_tolerance);
+            if (norm2(dr) <= touch * touch) join_contact(scene.box, i, j, dr, sigma, axes);
+            return false;
         });
-        if (hit) {
-            const Disc& e = scene.discs[other];
-            const double gap =
-                norm(scene.box.displacement(e.position, d.position)) - e.radius - d.radius;
-            throw_input_error(location_text(origin.locate(i)) + ": overlaps " +
-                              location_text(origin.locate(other)) + " at t = 0 (centres " +
-                              point_text(e.position) + " and " + point_text(d.position) +
-                              ", overlap depth " + format_number(-gap) + ")");
+        if (overlap) fail_overlap(scene, origin, i, other);
+        grid.insert(i, p, d.radius);
+        flag_walls(scene.box, d, i, axes);
+    }
+    for (int axis = 0; axis < 2; ++axis) {
+        AxisRows& a = axes[static_cast<std::size_t>(axis)];
+        std::vector<std::uint32_t> size(n, 0);
+        for (std::uint32_t i = 0; i < n; ++i) {
+            const std::uint32_t root = a.rows.find(i);
+            a.flags[root] |= a.flags[i];
+            ++size[root];
         }
-        grid.insert(static_cast<std::uint32_t>(i), p, d.radius);
+        for (std::uint32_t i = 0; i < n; ++i) {
+            const std::uint32_t root = a.rows.find(i);
+            const std::string why =
+                jam_reason(scene, origin, axis, i, root, a.flags[root], size[root]);
+            if (!why.empty()) fail_at(origin.locate(i), "velocity", why);
+        }
     }
 }
 
@@ -251,7 +396,7 @@ void validate_scene(const Scene& scene, const SceneOrigin& origin) {
     }
     check_inside_box(scene, origin);
     check_periodic_sizes(scene, origin);
-    check_overlaps(scene, origin);
+    check_contacts(scene, origin);
 }
 
 double packing_fraction(const Scene& scene) noexcept {

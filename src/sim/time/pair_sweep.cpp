@@ -48,14 +48,23 @@ inline T gap2(T dx, T dy, T width, T height) noexcept {
 /// PairSweep::find): a superset of the double test's hits, twice as many pairs per vector. The
 /// rare block with a hit is scanned again with the double test to list them, so the result is
 /// exactly the double test's. Inlined into the multi-versioned entry points below.
+/// Returns false when it stopped early because `stop` was set (looked at before a row once
+/// sweep_stop_poll_pairs pairs have been tested since the previous look).
 template <bool periodic>
-[[gnu::always_inline]] inline void sweep_rows(const SweepCoordinates& d,
+[[gnu::always_inline]] inline bool sweep_rows(const SweepCoordinates& d,
                                               const SweepCoordinates32& f, std::uint32_t n,
                                               double width, double height,
-                                              std::vector<DiscPair>& out) {
+                                              std::vector<DiscPair>& out,
+                                              const std::atomic<bool>* stop) {
     const float width_f = f.width;
     const float height_f = f.height;
+    std::uint64_t unpolled = 0;  // pairs tested since the last look at the stop flag
     for (std::uint32_t i = 0; i < n; ++i) {
+        if (unpolled >= sweep_stop_poll_pairs) {
+            unpolled = 0;
+            if (stop != nullptr && stop->load(std::memory_order_relaxed)) return false;
+        }
+        unpolled += n - i - 1;
         const float xi_f = f.x[i];
         const float yi_f = f.y[i];
         const float ri_f = f.reach[i];
@@ -81,6 +90,7 @@ template <bool periodic>
             }
         }
     }
+    return true;
 }
 
 // GCC builds AVX-512 and AVX2 copies of each next to the baseline x86-64 one and picks at load
@@ -95,24 +105,26 @@ template <bool periodic>
 #endif
 
 COLLIDE_SWEEP_CLONES
-void sweep_rows_walls(const SweepCoordinates& d, const SweepCoordinates32& f, std::uint32_t n,
-                      std::vector<DiscPair>& out) {
-    sweep_rows<false>(d, f, n, 0.0, 0.0, out);  // no periodic fold: the box sides are unused
+bool sweep_rows_walls(const SweepCoordinates& d, const SweepCoordinates32& f, std::uint32_t n,
+                      std::vector<DiscPair>& out, const std::atomic<bool>* stop) {
+    // No periodic fold: the box sides are unused.
+    return sweep_rows<false>(d, f, n, 0.0, 0.0, out, stop);
 }
 
 COLLIDE_SWEEP_CLONES
-void sweep_rows_periodic(const SweepCoordinates& d, const SweepCoordinates32& f, std::uint32_t n,
-                         double width, double height, std::vector<DiscPair>& out) {
-    sweep_rows<true>(d, f, n, width, height, out);
+bool sweep_rows_periodic(const SweepCoordinates& d, const SweepCoordinates32& f, std::uint32_t n,
+                         double width, double height, std::vector<DiscPair>& out,
+                         const std::atomic<bool>* stop) {
+    return sweep_rows<true>(d, f, n, width, height, out, stop);
 }
 
 #undef COLLIDE_SWEEP_CLONES
 
 }  // namespace
 
-void PairSweep::find(const Box& box, const std::vector<Vec2>& positions,
+bool PairSweep::find(const Box& box, const std::vector<Vec2>& positions,
                      const std::vector<Vec2>& velocities, const std::vector<double>& radii,
-                     double h, std::vector<DiscPair>& out) {
+                     double h, std::vector<DiscPair>& out, const std::atomic<bool>* stop) {
     out.clear();
     const std::size_t n = positions.size();
     x_.resize(n);
@@ -156,10 +168,9 @@ void PairSweep::find(const Box& box, const std::vector<Vec2>& positions,
                                static_cast<float>(box.width * unit),
                                static_cast<float>(box.height * unit)};
     if (box.boundary == Boundary::periodic) {
-        sweep_rows_periodic(d, f, count, box.width, box.height, out);
-    } else {
-        sweep_rows_walls(d, f, count, out);
+        return sweep_rows_periodic(d, f, count, box.width, box.height, out, stop);
     }
+    return sweep_rows_walls(d, f, count, out, stop);
 }
 
 }  // namespace collide::detail

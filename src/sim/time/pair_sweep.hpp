@@ -5,6 +5,7 @@
 /// (a conservative distance bound), and the engine runs its exact tests on those alone. At
 /// N = 2000 a step holds about 2 M pairs and a few thousand candidates.
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <utility>
@@ -26,6 +27,10 @@ inline constexpr double sweep_relative_margin = 1e-6;
 /// of positions in a periodic box (~1e-16 of the box).
 inline constexpr double sweep_absolute_margin = 1e-9;
 
+/// Pairs between two looks at the stop flag: a few microseconds of sweeping, so a look (one load,
+/// once per row when rows are longer) costs nothing measurable.
+inline constexpr std::uint64_t sweep_stop_poll_pairs = 4096;
+
 class PairSweep {
   public:
     /// Appends to `out` (cleared first), in increasing (i, j) order, every pair i < j of discs
@@ -33,9 +38,11 @@ class PairSweep {
     /// (minimum-image) distance now is below (r_i + |v_i| h) + (r_j + |v_j| h), widened by the
     /// margins above; a few farther pairs may come too, none closer is left out. Every one of the
     /// N(N-1)/2 pairs is tested. h = 0 gives the pairs overlapping now. O(N^2) time, O(N) memory.
-    void find(const Box& box, const std::vector<Vec2>& positions,
+    /// Looks at `stop` (may be null) every sweep_stop_poll_pairs pairs or so and returns false,
+    /// with `out` incomplete, once it is set (at 10^6 discs one sweep takes a minute); else true.
+    bool find(const Box& box, const std::vector<Vec2>& positions,
               const std::vector<Vec2>& velocities, const std::vector<double>& radii, double h,
-              std::vector<DiscPair>& out);
+              std::vector<DiscPair>& out, const std::atomic<bool>* stop = nullptr);
 
     /// Heap memory held (capacity), bytes.
     [[nodiscard]] std::size_t bytes() const noexcept {

@@ -111,7 +111,12 @@ void TimeEngine::step(double h) {
     step_start_ = time_;
     drift(h);
     contacts_.clear();
-    detect_pair_contacts(h);
+    try {
+        detect_pair_contacts(h);  // the long phase (O(N^2) all-pairs): it looks at the stop flag
+    } catch (...) {
+        drift(-h);  // stopped: back to the start of the step (up to rounding), time_ unchanged
+        throw;
+    }
     detect_wall_contacts(h);
     resolve_contacts(h);
     wrap_positions();
@@ -138,8 +143,9 @@ void TimeEngine::for_each_candidate_pair(double h, PairVisitor&& visit) {
     // grid with that reach sees every overlap and every miss.
     if (use_grid_ &&
         grid_->build(box_, position_, (2.0 * max_radius_ + 2.0 * max_speed() * h) * cell_margin)) {
+        // Cells as wide as the fast discs' reach can hold most of the discs: poll here too.
         grid_->for_each_pair([&](std::uint32_t i, std::uint32_t j) {
-            ++overlap_checks_;
+            if (++overlap_checks_ % detail::sweep_stop_poll_pairs == 0) check_stop();
             visit(i, j);
         });
         return;
@@ -147,7 +153,9 @@ void TimeEngine::for_each_candidate_pair(double h, PairVisitor&& visit) {
     // The lecture's all-pairs loop: N(N-1)/2 checks. The sweep tests every pair against a
     // conservative bound in a vectorised loop; the exact tests (visit) run on the few it keeps,
     // in the same (i, j) order as the plain double loop, so the results are the same.
-    sweep_->find(box_, position_, velocity_, radius_, h, candidates_);
+    if (!sweep_->find(box_, position_, velocity_, radius_, h, candidates_, stop_flag())) {
+        throw_stopped();
+    }
     const auto n = static_cast<std::uint64_t>(position_.size());
     overlap_checks_ += n < 2 ? 0 : n * (n - 1) / 2;
     for (const auto& [i, j] : candidates_) {
@@ -333,7 +341,7 @@ void TimeEngine::take_census() {
     if (grid_->build(box_, position_, std::max(2.0 * max_radius_, share) * cell_margin)) {
         grid_->for_each_pair(census_pair);
     } else {  // a periodic box under three cells wide
-        sweep_->find(box_, position_, velocity_, radius_, 0.0, candidates_);
+        (void)sweep_->find(box_, position_, velocity_, radius_, 0.0, candidates_);
         for (const auto& [i, j] : candidates_) {
             census_pair(i, j);
         }
