@@ -87,17 +87,31 @@ TEST_CASE("display: the preview window shows frames") {
         MESSAGE("SKIP: DISPLAY is not set");
         return;
     }
-    Renderer renderer(test::small_config(false), Backend::osmesa);
-    const Snapshot s = test::gas_snapshot(10, 0.05, {1.0, 1.0, Boundary::walls}, 2);
-    FrameContent frame;
-    frame.panels = {{&s, "", {}}};
-    const Image image = renderer.render(frame);
+    const auto frame_of = [](const Snapshot& s) {
+        FrameContent frame;
+        frame.panels = {{&s, "", {}}};
+        return frame;
+    };
+    std::vector<Snapshot> snapshots;
+    for (unsigned seed = 2; seed < 22; ++seed) {
+        snapshots.push_back(test::gas_snapshot(10, 0.05, {1.0, 1.0, Boundary::walls}, seed));
+    }
+    std::vector<Image> expected;  // the frames (trails and all) when nothing else draws
+    {
+        Renderer alone(test::small_config(false), Backend::glfw);
+        for (const Snapshot& s : snapshots) expected.push_back(alone.render(frame_of(s)));
+    }
+    // As `collide render --preview` does: the window first, then the renderer on GLFW (one GL
+    // implementation for both: docs/renderer.md, "Preview"), every frame rendered then shown.
     const auto preview = open_preview(320, 180, "collide test");
     REQUIRE(preview != nullptr);
-    CHECK(preview->show(image));
-    CHECK(preview->show(image));
-    // The renderer still works after the preview's context was current.
-    CHECK(renderer.render(frame).rgba == image.rgba);
+    Renderer renderer(test::small_config(false), Backend::glfw);
+    REQUIRE(renderer.backend() == Backend::glfw);
+    for (std::size_t i = 0; i < snapshots.size(); ++i) {
+        const Image image = renderer.render(frame_of(snapshots[i]));
+        CHECK(image.rgba == expected[i].rgba);  // the preview's drawing leaves the frames alone
+        CHECK(preview->show(image));
+    }
 }
 
 }  // namespace
