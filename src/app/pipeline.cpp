@@ -119,8 +119,8 @@ std::unique_ptr<render::PreviewWindow> open_preview_if_asked(const RenderPlan& p
 /// per-thread current context (libglapi), while glvnd skips a glXMakeCurrent that its own records
 /// say changes nothing; after an OSMesa frame the preview then drew and swapped with OSMesa's
 /// context and crashed (issue 22; docs/renderer.md, "Preview").
-render::Backend render_backend(const render::PreviewWindow* preview) {
-    return preview != nullptr ? render::Backend::glfw : render::Backend::automatic;
+render::Backend render_backend(const render::PreviewWindow* preview, const PipelineHooks& hooks) {
+    return preview != nullptr ? render::Backend::glfw : hooks.backend;
 }
 
 }  // namespace
@@ -254,7 +254,7 @@ PipelineResult render_video(const Scene& scene, const RenderPlan& plan,
     options.cancel = cancel;
     video::VideoWriter writer(options);  // validates, checks the path, creates the temporary
     std::unique_ptr<render::PreviewWindow> preview = open_preview_if_asked(plan, hooks);
-    render::Renderer renderer(plan.render, render_backend(preview.get()), hooks.notice);
+    render::Renderer renderer(plan.render, render_backend(preview.get(), hooks), hooks.notice);
     RawDump dump(hooks.dump_rgba);
 
     PipelineResult result;
@@ -291,7 +291,7 @@ PipelineResult render_still(const Scene& scene, const RenderPlan& plan,
         hooks.interrupts != nullptr ? &hooks.interrupts->flag() : nullptr;
     // Opened first (it stays hidden until it has the image) so the renderer can share its GL.
     std::unique_ptr<render::PreviewWindow> preview = open_preview_if_asked(plan, hooks);
-    render::Renderer renderer(plan.render, render_backend(preview.get()), hooks.notice);
+    render::Renderer renderer(plan.render, render_backend(preview.get(), hooks), hooks.notice);
     // Only the frames whose positions appear in the trails need drawing before the last one.
     const std::int64_t history = plan.render.trails ? plan.render.trail_length : 1;
     const std::int64_t first_drawn = std::max<std::int64_t>(0, plan.clock.count - history);
