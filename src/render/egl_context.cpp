@@ -7,9 +7,9 @@
 #include <EGL/eglext.h>
 
 #include <cstdio>
-#include <map>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -92,40 +92,28 @@ EGLDeviceEXT pick_device(bool any) {
 // ----------------------------------------------------------------------------------------------
 // Displays
 
-/// An initialised EGL display. EGL displays are process-wide per platform and native display,
-/// and eglTerminate ends them for every user: one owner per display, shared by the contexts on
-/// it, terminates it when the last one goes.
-class EglDisplay {
-  public:
-    EglDisplay(const EglDisplay&) = delete;
-    EglDisplay& operator=(const EglDisplay&) = delete;
-    ~EglDisplay() { eglTerminate(display_); }
-
-    static std::shared_ptr<EglDisplay> acquire(EGLenum platform, void* native) {
-        // Mirrors EGL's own process-global display table; this is the one place that does.
-        static std::mutex mutex;
-        static std::map<std::pair<EGLenum, void*>, std::weak_ptr<EglDisplay>> live;
-        const std::lock_guard lock(mutex);
-        std::weak_ptr<EglDisplay>& slot = live[{platform, native}];
-        if (auto display = slot.lock()) return display;
-        const EGLDisplay display = eglGetPlatformDisplay(platform, native, nullptr);
-        if (display == EGL_NO_DISPLAY) throw_egl_error("no display on this platform");
+/// The initialised EGL display of `platform` and `native`. EGL displays are process-wide (the same
+/// platform and native display give the same handle to every caller), so they are initialised
+/// once and left initialised until the process exits: eglTerminate would pull a display from under
+/// every other context on it, and each re-initialisation loads the driver again (which
+/// eglTerminate unloads, leaving its allocations unnamed for LeakSanitizer).
+EGLDisplay initialised_display(EGLenum platform, void* native) {
+    // Mirrors EGL's own process-global display table; this is the one place that does.
+    static std::mutex mutex;
+    static std::set<EGLDisplay> initialised;
+    const std::lock_guard lock(mutex);
+    const EGLDisplay display = eglGetPlatformDisplay(platform, native, nullptr);
+    if (display == EGL_NO_DISPLAY) throw_egl_error("no display on this platform");
+    if (initialised.count(display) == 0) {
         EGLint major = 0;
         EGLint minor = 0;
         if (eglInitialize(display, &major, &minor) != EGL_TRUE) {
             throw_egl_error("cannot initialise the display");
         }
-        std::shared_ptr<EglDisplay> owner(new EglDisplay(display));
-        slot = owner;
-        return owner;
+        initialised.insert(display);
     }
-
-    [[nodiscard]] EGLDisplay get() const noexcept { return display_; }
-
-  private:
-    explicit EglDisplay(EGLDisplay display) : display_(display) {}
-    EGLDisplay display_;
-};
+    return display;
+}
 
 // ----------------------------------------------------------------------------------------------
 // The context
@@ -146,9 +134,8 @@ EGLConfig choose_config(EGLDisplay display) {
 
 class EglContext final : public Context {
   public:
-    EglContext(std::shared_ptr<EglDisplay> display, Backend backend)
-        : display_(std::move(display)), backend_(backend) {
-        const EGLDisplay dpy = display_->get();
+    EglContext(EGLDisplay display, Backend backend) : display_(display), backend_(backend) {
+        const EGLDisplay dpy = display_;
         if (!has_extension(eglQueryString(dpy, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context")) {
             throw_runtime_error(
                 "EGL: the display cannot make a context current without a "
@@ -170,9 +157,9 @@ class EglContext final : public Context {
     }
     ~EglContext() override {
         if (eglGetCurrentContext() == context_) {
-            eglMakeCurrent(display_->get(), EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+            eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         }
-        eglDestroyContext(display_->get(), context_);
+        eglDestroyContext(display_, context_);
     }
     EglContext(const EglContext&) = delete;
     EglContext& operator=(const EglContext&) = delete;
@@ -180,7 +167,7 @@ class EglContext final : public Context {
     [[nodiscard]] Backend backend() const noexcept override { return backend_; }
 
     void make_current() override {
-        if (eglMakeCurrent(display_->get(), EGL_NO_SURFACE, EGL_NO_SURFACE, context_) != EGL_TRUE) {
+        if (eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_) != EGL_TRUE) {
             throw_egl_error("failed to make the context current");
         }
     }
@@ -191,13 +178,13 @@ class EglContext final : public Context {
     }
 
   private:
-    std::shared_ptr<EglDisplay> display_;  // declared first: outlives the context
+    EGLDisplay display_;  // process-wide, never terminated (initialised_display)
     Backend backend_;
     EGLContext context_ = EGL_NO_CONTEXT;
 };
 
 std::unique_ptr<Context> make_on_device(EGLDeviceEXT device) {
-    return std::make_unique<EglContext>(EglDisplay::acquire(EGL_PLATFORM_DEVICE_EXT, device),
+    return std::make_unique<EglContext>(initialised_display(EGL_PLATFORM_DEVICE_EXT, device),
                                         Backend::egl_device);
 }
 
@@ -221,7 +208,7 @@ std::unique_ptr<Context> make_egl_context(Backend backend) {
             "(EGL_MESA_platform_surfaceless) is available");
     }
     return std::make_unique<EglContext>(
-        EglDisplay::acquire(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY), Backend::egl);
+        initialised_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY), Backend::egl);
 }
 
 }  // namespace collide::render
