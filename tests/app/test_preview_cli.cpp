@@ -1,6 +1,7 @@
 // End-to-end tests of `--preview`: the real program with a real window, as a user runs it. They
 // need a display: ctest runs them under `xvfb-run -a` (tests/CMakeLists.txt, entries
-// "collide_app_tests:xvfb: ..."); without DISPLAY they report SKIP, which ctest shows as skipped.
+// "collide_app_tests:xvfb: ..."); without DISPLAY they skip (COLLIDE_SKIP_TEST), which ctest shows
+// as skipped.
 #include <doctest/doctest.h>
 
 #include <cstdio>
@@ -10,6 +11,7 @@
 #include <iterator>
 #include <string>
 
+#include "../support/skip.hpp"
 #include "../support/temp_dir.hpp"
 #include "run_collide.hpp"
 
@@ -53,8 +55,7 @@ const std::string video_args = "render gas --size 320x180 --fps 15 --duration 4 
 
 TEST_CASE("display: render --preview encodes the same file as without it") {
     if (!have_display()) {
-        MESSAGE("SKIP: DISPLAY is not set (the xvfb ctest entry runs this under xvfb-run)");
-        return;
+        COLLIDE_SKIP_TEST("DISPLAY is not set (the xvfb ctest entry runs this under xvfb-run)");
     }
     TempDir dir("preview");
     for (const char* mode : {"both", "event", "time"}) {
@@ -73,8 +74,7 @@ TEST_CASE("display: render --preview encodes the same file as without it") {
 
 TEST_CASE("display: thumbnail --preview writes the same PNG as without it") {
     if (!have_display()) {
-        MESSAGE("SKIP: DISPLAY is not set (the xvfb ctest entry runs this under xvfb-run)");
-        return;
+        COLLIDE_SKIP_TEST("DISPLAY is not set (the xvfb ctest entry runs this under xvfb-run)");
     }
     TempDir dir("preview_thumb");
     const std::string args = "thumbnail gas --size 320x180 --at 2 -o ";
@@ -88,8 +88,7 @@ TEST_CASE("display: thumbnail --preview writes the same PNG as without it") {
 
 TEST_CASE("display: closing the preview window stops the preview and not the render") {
     if (!have_display()) {
-        MESSAGE("SKIP: DISPLAY is not set (the xvfb ctest entry runs this under xvfb-run)");
-        return;
+        COLLIDE_SKIP_TEST("DISPLAY is not set (the xvfb ctest entry runs this under xvfb-run)");
     }
     TempDir dir("preview_close");
     // Long enough (450 frames) that the window is closed while the render is still going.

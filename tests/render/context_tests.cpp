@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/skip.hpp"
 #include "collide/error.hpp"
 #include "collide/render/preview.hpp"
 #include "render_fixtures.hpp"
@@ -82,8 +83,7 @@ TEST_CASE("a backend this build lacks is refused with the list of those it has")
 
 TEST_CASE("EGL surfaceless gives the same pixels as OSMesa") {
     if (!is_available(Backend::osmesa) || !is_available(Backend::egl)) {
-        MESSAGE("SKIP: this build lacks OSMesa or EGL");
-        return;
+        COLLIDE_SKIP_TEST("this build lacks OSMesa or EGL");
     }
     const Snapshot a = test::gas_snapshot(80, 0.03, {1.0, 1.0, Boundary::walls}, 4);
     const Snapshot b = test::gas_snapshot(80, 0.03, {1.0, 1.0, Boundary::periodic}, 5);
@@ -93,8 +93,7 @@ TEST_CASE("EGL surfaceless gives the same pixels as OSMesa") {
         Renderer egl(config, Backend::egl);
         // On a machine with a GPU, `egl` takes it: different rasteriser, different pixels.
         if (egl.backend() != Backend::egl) {
-            MESSAGE("SKIP: EGL chose a GPU device here, not the surfaceless platform");
-            return;
+            COLLIDE_SKIP_TEST("EGL chose a GPU device here, not the surfaceless platform");
         }
         from_egl = egl.render(sample_frame(a, b));
     }
@@ -107,15 +106,13 @@ TEST_CASE("EGL surfaceless gives the same pixels as OSMesa") {
 
 TEST_CASE("an EGL device context renders") {
     if (!is_available(Backend::egl_device)) {
-        MESSAGE("SKIP: this build has no EGL");
-        return;
+        COLLIDE_SKIP_TEST("this build has no EGL");
     }
     std::unique_ptr<Context> context;
     try {
         context = make_context(Backend::egl_device, 320, 180);
     } catch (const Error& e) {
-        MESSAGE("SKIP: no EGL device here: " << e.what());
-        return;
+        COLLIDE_SKIP_TEST("no EGL device here: " << e.what());
     }
     CHECK(context->backend() == Backend::egl_device);
     Renderer renderer(test::small_config(false), std::move(context));
@@ -153,8 +150,7 @@ TEST_CASE("without a display, GLFW falls back to the offscreen default with one 
 
 TEST_CASE("display: the GLFW backend produces the same pixels as the offscreen one") {
     if (!have_display()) {
-        MESSAGE("SKIP: DISPLAY is not set (the xvfb ctest entry runs this under xvfb-run)");
-        return;
+        COLLIDE_SKIP_TEST("DISPLAY is not set (the xvfb ctest entry runs this under xvfb-run)");
     }
     const Snapshot a = test::gas_snapshot(80, 0.03, {1.0, 1.0, Boundary::walls}, 4);
     const Snapshot b = test::gas_snapshot(80, 0.03, {1.0, 1.0, Boundary::periodic}, 5);
@@ -177,8 +173,7 @@ TEST_CASE("display: the GLFW backend produces the same pixels as the offscreen o
 
 TEST_CASE("display: the preview window shows frames") {
     if (!have_display()) {
-        MESSAGE("SKIP: DISPLAY is not set");
-        return;
+        COLLIDE_SKIP_TEST("DISPLAY is not set (the xvfb ctest entry runs this under xvfb-run)");
     }
     const auto frame_of = [](const Snapshot& s) {
         FrameContent frame;
