@@ -2,7 +2,9 @@
 # The README's second command: install what is missing, build, run every test through ctest.
 #  1. a sim-only build (no GL, no libav: proves the simulation library stands alone), under
 #     AddressSanitizer + UBSan with the heavy invariant checks on, running the unit tests;
-#  2. the full sanitizer build, running the other modules' `unit` tests;
+#  2. the full sanitizer build, running the other modules' `unit` tests and the CLI option matrix
+#     (label `cli-matrix`: the sanitized `collide` over many bad and extreme option sets, so that
+#     UBSan, which never recovers here, checks the command line's paths, not just the libraries);
 #  3. a renderer-only build without OSMesa (COLLIDE_WITH_OSMESA=OFF: EGL only, as on distributions
 #     whose Mesa has no OSMesa), running the renderer tests;
 #  4. the full RelWithDebInfo build, running the whole suite, including the long physics runs
@@ -28,7 +30,8 @@ ctest --test-dir build/sim-asan -L unit --output-on-failure -j "$jobs"
 echo "==> [2/4] full build with sanitizers (build/asan)"
 cmake -S . -B build/asan "${common[@]}" -DCMAKE_BUILD_TYPE=Debug -DCOLLIDE_SANITIZE=ON >/dev/null
 cmake --build build/asan -j "$jobs"
-ctest --test-dir build/asan -L unit -E "^collide_sim_tests:" --output-on-failure -j "$jobs"
+ctest --test-dir build/asan -L 'unit|cli-matrix' -E "^collide_sim_tests:" --output-on-failure \
+      -j "$jobs"
 
 echo "==> [3/4] renderer without OSMesa (build/no-osmesa)"
 cmake -S . -B build/no-osmesa "${common[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \

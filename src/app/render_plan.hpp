@@ -37,6 +37,9 @@ struct QualityPreset {
     int fps = 30;
 };
 
+/// The highest --fps accepted.
+inline constexpr int max_fps = 240;
+
 /// l = 854x480@15, m = 1280x720@30, h = 1920x1080@60, k = 3840x2160@60.
 /// Throws Error(input) naming `option` for any other letter.
 [[nodiscard]] QualityPreset quality_preset(std::string_view letter, std::string_view option = "-q");
@@ -102,6 +105,10 @@ struct FrameClock {
 /// i.e. the time-driven engine lands on every frame time without a shorter final step.
 [[nodiscard]] bool divides(double dt, double interval) noexcept;
 
+/// How messages name a scene hint: its "file:line: render.dt" when known (`where`, from
+/// RenderHints), else "scene [render] dt".
+[[nodiscard]] std::string hint_option(const std::string& where, std::string_view key);
+
 /// Everything the user may type; unset = take the scene hint or the default.
 struct RenderRequest {
     std::string scene;                    ///< file or built-in name
@@ -122,6 +129,7 @@ struct RenderRequest {
     bool last_frame = false;              ///< --last-frame: write only the last frame as a PNG
     std::optional<double> at;             ///< thumbnail --at (simulation time)
     bool still = false;                   ///< true for `collide thumbnail` (PNG output)
+    bool no_limits = false;               ///< --no-limits: run even what exceeds WorkLimits
 };
 
 /// What kind of file comes out.
