@@ -1,6 +1,7 @@
-// Renderer benchmarks on OSMesa (llvmpipe): draw and readback separately, overlays on and off,
-// N discs per panel. Figures go to docs/benchmarks.md, section "Renderer".
+// Renderer benchmarks on the offscreen backend (llvmpipe): draw and readback separately, overlays
+// on and off, N discs per panel. Figures go to docs/benchmarks.md, section "Renderer".
 //   cmake --build build/dev --target bench_render && build/dev/bench/bench_render
+//   COLLIDE_BENCH_GL=egl build/dev/bench/bench_render     # EGL surfaceless instead of OSMesa
 // The frame is the product's: 1280x720, two panels (time-driven, event-driven), each showing N
 // discs at a packing fraction of 0.15 (so the covered pixel area is the same for every N); the
 // "discs" counter is the total drawn, 2N (10^3 .. 10^5).
@@ -8,6 +9,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
 #include <random>
 #include <string>
@@ -19,6 +21,13 @@ namespace {
 
 using namespace collide;
 using namespace collide::render;
+
+/// COLLIDE_BENCH_GL (a --gl name) or auto: run once per backend to compare them side by side.
+Backend bench_backend() {
+    const char* name = std::getenv("COLLIDE_BENCH_GL");
+    return name != nullptr && *name != '\0' ? parse_backend(name, "COLLIDE_BENCH_GL")
+                                            : Backend::automatic;
+}
 
 constexpr double packing_fraction = 0.15;
 
@@ -52,7 +61,7 @@ struct Scenario {
     Scenario(std::size_t count, bool overlays)
         : left(gas(count, 1, Boundary::walls)),
           right(gas(count, 2, Boundary::periodic)),
-          renderer(config(overlays), Backend::osmesa) {
+          renderer(config(overlays), bench_backend()) {
         frame.panels = {{&left, "Time-driven, dt = 0.01", {"steps 100", "missed 3"}},
                         {&right, "Event-driven (priority queue)", {"events 12345"}}};
         frame.time_text = "t = 1.00";

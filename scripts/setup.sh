@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
     build-essential cmake ninja-build pkg-config python3-glad
-    libosmesa6-dev libglfw3-dev libstb-dev fonts-dejavu-core
+    libosmesa6-dev libegl-dev libglfw3-dev libstb-dev fonts-dejavu-core
     libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libavfilter-dev
     libcli11-dev libtomlplusplus-dev libfmt-dev doctest-dev libbenchmark-dev
 )

@@ -5,8 +5,11 @@
 #  2. the full sanitizer build, running the other modules' `unit` tests and the CLI option matrix
 #     (label `cli-matrix`: the sanitized `collide` over many bad and extreme option sets, so that
 #     UBSan, which never recovers here, checks the command line's paths, not just the libraries);
-#  3. the full RelWithDebInfo build, running the whole suite, including the long physics runs
-#     (label `slow`) and the end-to-end CLI tests (label `e2e`); ctest's summary line comes last.
+#  3. a renderer-only build without OSMesa (COLLIDE_WITH_OSMESA=OFF: EGL only, as on distributions
+#     whose Mesa has no OSMesa), running the renderer tests;
+#  4. the full RelWithDebInfo build, running the whole suite, including the long physics runs
+#     (label `slow`), the end-to-end CLI tests (label `e2e`) and the renderer suite once more on
+#     EGL; ctest's summary line comes last.
 # With CI=true warnings are errors.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -18,19 +21,25 @@ if [[ "${CI:-}" == "true" ]]; then
 fi
 jobs=$(nproc)
 
-echo "==> [1/3] sim-only build with sanitizers (build/sim-asan)"
+echo "==> [1/4] sim-only build with sanitizers (build/sim-asan)"
 cmake -S . -B build/sim-asan "${common[@]}" -DCMAKE_BUILD_TYPE=Debug -DCOLLIDE_SIM_ONLY=ON \
       -DCOLLIDE_SANITIZE=ON -DCOLLIDE_VALIDATE=ON >/dev/null
 cmake --build build/sim-asan -j "$jobs"
 ctest --test-dir build/sim-asan -L unit --output-on-failure -j "$jobs"
 
-echo "==> [2/3] full build with sanitizers (build/asan)"
+echo "==> [2/4] full build with sanitizers (build/asan)"
 cmake -S . -B build/asan "${common[@]}" -DCMAKE_BUILD_TYPE=Debug -DCOLLIDE_SANITIZE=ON >/dev/null
 cmake --build build/asan -j "$jobs"
 ctest --test-dir build/asan -L 'unit|cli-matrix' -E "^collide_sim_tests:" --output-on-failure \
       -j "$jobs"
 
-echo "==> [3/3] full build (build/test), every test"
+echo "==> [3/4] renderer without OSMesa (build/no-osmesa)"
+cmake -S . -B build/no-osmesa "${common[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DCOLLIDE_WITH_OSMESA=OFF >/dev/null
+cmake --build build/no-osmesa -j "$jobs" --target collide_render_tests
+ctest --test-dir build/no-osmesa -R "^collide_render_tests:" --output-on-failure -j "$jobs"
+
+echo "==> [4/4] full build (build/test), every test"
 cmake -S . -B build/test "${common[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build build/test -j "$jobs"
 ctest --test-dir build/test --output-on-failure -j "$jobs"

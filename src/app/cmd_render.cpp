@@ -48,6 +48,7 @@ struct CliValues {
     bool trails = true;
     bool last_frame = false;
     bool preview = false;
+    std::string gl = "auto";
     std::string progress = "auto";
     std::string dump_rgba;
     bool verbose = false;
@@ -73,6 +74,26 @@ template <typename T>
 std::optional<T> if_given(const CLI::Option* option, const T& value) {
     if (option == nullptr || option->count() == 0) return std::nullopt;
     return value;
+}
+
+/// The --gl backend, checked against this build and against --preview (which renders through
+/// GLFW: one GL implementation per process, docs/renderer.md "Preview"). Throws Error (input).
+render::Backend gl_backend_of(const CliValues& v) {
+    const render::Backend backend = render::parse_backend(v.gl, "--gl");
+    if (!render::is_available(backend)) {
+        std::string available;
+        for (const render::Backend b : render::available_backends()) {
+            available += (available.empty() ? "" : ", ") + std::string(render::backend_name(b));
+        }
+        throw_input_error("--gl " + v.gl +
+                          ": this collide was built without it (available: " + available + ")");
+    }
+    if (v.preview && backend != render::Backend::automatic && backend != render::Backend::glfw) {
+        throw_input_error("--gl " + v.gl +
+                          ": --preview renders the frames through glfw (one GL implementation "
+                          "for the frames and the window); drop --gl or --preview");
+    }
+    return backend;
 }
 
 RenderRequest request_of(const CliValues& v, bool still) {
@@ -138,6 +159,10 @@ void add_shared_options(CLI::App& cmd, CliValues& v) {
     v.trails_opt = cmd.add_flag("--trails,!--no-trails", v.trails,
                                 "Trails behind tagged discs (default: scene hint, else on)");
     cmd.add_flag("--preview", v.preview, "Show the frames live in a window when a display exists");
+    cmd.add_option("--gl", v.gl,
+                   "GL backend: auto (OSMesa where built, else EGL), osmesa, egl (surfaceless, or "
+                   "the GPU), egl-device or glfw (needs a display)")
+        ->capture_default_str();
     cmd.add_option("--progress", v.progress,
                    "Progress on stderr: auto (bar on a terminal), bar, json or none")
         ->capture_default_str();
@@ -228,6 +253,7 @@ void run(const CliValues& values, bool still) {
     if (values.seed_opt != nullptr && values.seed_opt->count() > 0)
         scene_options.seed = values.seed;
     const Scene scene = load_scene(values.scene, scene_assets_dir(), scene_options);
+    const render::Backend backend = gl_backend_of(values);
     const RenderRequest request = request_of(values, still);
     const RenderPlan plan = validated_plan(request, scene);
     video::set_libav_verbose(values.verbose);
@@ -239,6 +265,7 @@ void run(const CliValues& values, bool still) {
     hooks.interrupts = &interrupts;
     hooks.progress = &progress;
     hooks.preview = values.preview;
+    hooks.backend = backend;
     hooks.notice = print_notice;
     hooks.dump_rgba = values.dump_rgba;
     PipelineResult result;

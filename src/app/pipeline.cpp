@@ -101,6 +101,23 @@ std::string_view title_of(const RenderPlan& plan) {
     return plan.mode == RenderMode::both ? "collide: time-driven vs event-driven" : "collide";
 }
 
+/// The --preview window: null when not asked for or when there is no display (after a notice).
+std::unique_ptr<render::PreviewWindow> open_preview_if_asked(const RenderPlan& plan,
+                                                             const PipelineHooks& hooks) {
+    if (!hooks.preview) return nullptr;
+    return render::open_preview(plan.width, plan.height, std::string(title_of(plan)).c_str(),
+                                hooks.notice);
+}
+
+/// The backend that renders the frames. With a preview window open it is GLFW, so that one GL
+/// implementation (Mesa's GLX driver) serves both: libOSMesa and the GLX driver share Mesa's
+/// per-thread current context (libglapi), while glvnd skips a glXMakeCurrent that its own records
+/// say changes nothing; after an OSMesa frame the preview then drew and swapped with OSMesa's
+/// context and crashed (issue 22; docs/renderer.md, "Preview").
+render::Backend render_backend(const render::PreviewWindow* preview, const PipelineHooks& hooks) {
+    return preview != nullptr ? render::Backend::glfw : hooks.backend;
+}
+
 }  // namespace
 
 // ------------------------------------------------------------------------------------------------
@@ -231,12 +248,8 @@ PipelineResult render_video(const Scene& scene, const RenderPlan& plan,
     options.fps = plan.fps;
     options.cancel = cancel;
     video::VideoWriter writer(options);  // validates, checks the path, creates the temporary
-    render::Renderer renderer(plan.render, render::Backend::automatic, hooks.notice);
-    std::unique_ptr<render::PreviewWindow> preview;
-    if (hooks.preview) {
-        preview = render::open_preview(plan.width, plan.height, std::string(title_of(plan)).c_str(),
-                                       hooks.notice);
-    }
+    std::unique_ptr<render::PreviewWindow> preview = open_preview_if_asked(plan, hooks);
+    render::Renderer renderer(plan.render, render_backend(preview.get(), hooks), hooks.notice);
     RawDump dump(hooks.dump_rgba);
 
     PipelineResult result;
@@ -246,7 +259,8 @@ PipelineResult render_video(const Scene& scene, const RenderPlan& plan,
         check_interrupt(hooks);
         Image image = writer.spare_frame();
         renderer.render(composer.compose(*frame), image);
-        if (preview && !preview->show(image)) preview.reset();  // closed: keep encoding
+        // Closing the window stops the preview only: the video is encoded to the end.
+        if (preview && !preview->show(image)) preview.reset();
         dump.write(image);
         writer.write(std::move(image));
         result.frames += 1;
@@ -271,7 +285,9 @@ PipelineResult render_still(const Scene& scene, const RenderPlan& plan,
                             const PipelineHooks& hooks) {
     const std::atomic<bool>* cancel =
         hooks.interrupts != nullptr ? &hooks.interrupts->flag() : nullptr;
-    render::Renderer renderer(plan.render, render::Backend::automatic, hooks.notice);
+    // Opened first (it stays hidden until it has the image) so the renderer can share its GL.
+    std::unique_ptr<render::PreviewWindow> preview = open_preview_if_asked(plan, hooks);
+    render::Renderer renderer(plan.render, render_backend(preview.get(), hooks), hooks.notice);
     // Only the frames whose positions appear in the trails need drawing before the last one.
     const std::int64_t history = plan.render.trails ? plan.render.trail_length : 1;
     const std::int64_t first_drawn = std::max<std::int64_t>(0, plan.clock.count - history);
@@ -297,12 +313,7 @@ PipelineResult render_still(const Scene& scene, const RenderPlan& plan,
     result.engines = simulation.finish();
     if (result.frames != plan.clock.count)
         throw_runtime_error("rendering stopped before the last frame");
-    if (hooks.preview) {
-        if (auto window = render::open_preview(plan.width, plan.height,
-                                               std::string(title_of(plan)).c_str(), hooks.notice)) {
-            window->show(image);
-        }
-    }
+    if (preview) preview->show(image);
     video::write_png(image, plan.output);
     result.output_width = image.width;
     result.output_height = image.height;

@@ -95,7 +95,9 @@ struct PipelineHooks {
     const InterruptGuard* interrupts =
         nullptr;  ///< polled between frames; its flag cancels encoding
     Progress* progress = nullptr;
-    bool preview = false;       ///< show frames in a window when a display exists
+    bool preview = false;  ///< show frames in a window when a display exists
+    /// GL backend for the frames; with a preview window open they go through GLFW instead.
+    render::Backend backend = render::Backend::automatic;
     render::NoticeSink notice;  ///< one-line notices (empty = stderr)
     /// Benchmarks only: also append every frame as raw RGBA to this file (for timing libx264
     /// alone on exactly the same frames with the ffmpeg command line).

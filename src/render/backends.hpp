@@ -8,8 +8,14 @@
 
 namespace collide::render {
 
-/// OSMesa core-profile context. Throws collide::Error (runtime) when Mesa refuses.
+/// OSMesa core-profile context (built when COLLIDE_HAVE_OSMESA). Throws collide::Error (runtime)
+/// when Mesa refuses.
 [[nodiscard]] std::unique_ptr<Context> make_osmesa_context(int width, int height);
+
+/// EGL core-profile context without a surface (built when COLLIDE_HAVE_EGL): Backend::egl takes a
+/// hardware GPU device when there is one, else Mesa's surfaceless platform; Backend::egl_device
+/// any device. Throws collide::Error (runtime) when EGL cannot make one.
+[[nodiscard]] std::unique_ptr<Context> make_egl_context(Backend backend);
 
 /// A hidden GLFW window's context, or null when GLFW cannot initialise (no display); `why`
 /// then says what GLFW reported. Throws collide::Error (runtime) for other failures.

@@ -1,5 +1,6 @@
 #include "collide/render/context.hpp"
 
+#include <array>
 #include <iostream>
 #include <string>
 
@@ -7,6 +8,26 @@
 #include "collide/error.hpp"
 
 namespace collide::render {
+namespace {
+
+constexpr std::array all_backends = {Backend::automatic, Backend::osmesa, Backend::egl,
+                                     Backend::egl_device, Backend::glfw};
+
+std::string names_of(const std::vector<Backend>& backends) {
+    std::string out;
+    for (const Backend backend : backends) {
+        if (!out.empty()) out += ", ";
+        out += backend_name(backend);
+    }
+    return out;
+}
+
+/// The offscreen backend `automatic` stands for in this build.
+Backend default_offscreen() {
+    return is_available(Backend::osmesa) ? Backend::osmesa : Backend::egl;
+}
+
+}  // namespace
 
 std::string_view backend_name(Backend backend) noexcept {
     switch (backend) {
@@ -14,6 +35,10 @@ std::string_view backend_name(Backend backend) noexcept {
             return "auto";
         case Backend::osmesa:
             return "osmesa";
+        case Backend::egl:
+            return "egl";
+        case Backend::egl_device:
+            return "egl-device";
         case Backend::glfw:
             return "glfw";
     }
@@ -21,11 +46,34 @@ std::string_view backend_name(Backend backend) noexcept {
 }
 
 Backend parse_backend(std::string_view text, std::string_view option) {
-    if (text == "auto") return Backend::automatic;
-    if (text == "osmesa") return Backend::osmesa;
-    if (text == "glfw") return Backend::glfw;
-    throw_input_error(std::string(option) + ": unknown backend '" + std::string(text) +
-                      "' (expected osmesa, glfw or auto)");
+    for (const Backend backend : all_backends) {
+        if (text == backend_name(backend)) return backend;
+    }
+    throw_input_error(std::string(option) + ": unknown GL backend '" + std::string(text) +
+                      "' (expected one of " + names_of({all_backends.begin(), all_backends.end()}) +
+                      ")");
+}
+
+bool is_available(Backend backend) {
+    switch (backend) {
+        case Backend::osmesa:
+            return COLLIDE_HAVE_OSMESA != 0;
+        case Backend::egl:
+        case Backend::egl_device:
+            return COLLIDE_HAVE_EGL != 0;
+        case Backend::automatic:
+        case Backend::glfw:
+            return true;
+    }
+    return false;
+}
+
+std::vector<Backend> available_backends() {
+    std::vector<Backend> out;
+    for (const Backend backend : all_backends) {
+        if (is_available(backend)) out.push_back(backend);
+    }
+    return out;
 }
 
 void emit_notice(const NoticeSink& notice, const std::string& line) {
@@ -42,12 +90,39 @@ std::unique_ptr<Context> make_context(Backend backend, int width, int height,
         throw_input_error("render context: width and height must be positive, got " +
                           std::to_string(width) + "x" + std::to_string(height));
     }
+    if (!is_available(backend)) {
+        throw_input_error(
+            "GL backend '" + std::string(backend_name(backend)) +
+            "' is not built into this collide (available: " + names_of(available_backends()) + ")");
+    }
     if (backend == Backend::glfw) {
         std::string why;
         if (auto context = try_make_glfw_context(width, height, why)) return context;
-        emit_notice(notice, "notice: GLFW unavailable (" + why + "); rendering with OSMesa");
+        backend = default_offscreen();
+        emit_notice(notice, "notice: GLFW unavailable (" + why + "); rendering with " +
+                                std::string(backend_name(backend)));
     }
-    return make_osmesa_context(width, height);
+    if (backend == Backend::automatic) backend = default_offscreen();
+    switch (backend) {
+        case Backend::osmesa:
+#if COLLIDE_HAVE_OSMESA
+            return make_osmesa_context(width, height);
+#else
+            break;
+#endif
+        case Backend::egl:
+        case Backend::egl_device:
+#if COLLIDE_HAVE_EGL
+            return make_egl_context(backend);
+#else
+            break;
+#endif
+        case Backend::automatic:
+        case Backend::glfw:
+            break;
+    }
+    throw_runtime_error("render context: no backend for '" + std::string(backend_name(backend)) +
+                        "'");
 }
 
 }  // namespace collide::render

@@ -55,6 +55,10 @@ class GlfwPreview final : public PreviewWindow {
         }
         glfwMakeContextCurrent(window_.get());
         upload(image);
+        // Shown with its first frame, so a window opened before rendering starts is never blank.
+        if (glfwGetWindowAttrib(window_.get(), GLFW_VISIBLE) == GLFW_FALSE) {
+            glfwShowWindow(window_.get());
+        }
         int width = 0;
         int height = 0;
         glfwGetFramebufferSize(window_.get(), &width, &height);
@@ -108,6 +112,7 @@ std::unique_ptr<PreviewWindow> open_preview(int width, int height, const char* t
         return nullptr;
     }
     glfwDefaultWindowHints();
+    glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);  // until show() has a frame for it
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);

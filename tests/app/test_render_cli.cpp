@@ -226,3 +226,39 @@ TEST_CASE("thumbnail --seed: the same seed gives the same picture, another seed 
         run_collide("thumbnail gas --seed banana -o " + (dir.path / "d.png").string()).exit_code ==
         2);
 }
+
+TEST_CASE("render --gl: OSMesa and EGL surfaceless give byte-identical files") {
+    TempDir dir("gl");
+    const std::string video = "render gas --size 320x180 --fps 10 --duration 2 --progress none";
+    const std::string still = "thumbnail gas --size 320x180 --at 1";
+    const auto osmesa = run_collide(video + " --gl osmesa -o " + (dir.path / "o.mp4").string());
+    const auto egl = run_collide(video + " --gl egl -o " + (dir.path / "e.mp4").string());
+    if (osmesa.output.find("built without it") != std::string::npos ||
+        egl.output.find("built without it") != std::string::npos) {
+        COLLIDE_SKIP_TEST("this build lacks OSMesa or EGL");
+    }
+    REQUIRE_MESSAGE(osmesa.exit_code == 0, osmesa.output);
+    REQUIRE_MESSAGE(egl.exit_code == 0, egl.output);
+    const std::string bytes = read_bytes(dir.path / "o.mp4");
+    CHECK(bytes.size() > 1000);
+    CHECK(bytes == read_bytes(dir.path / "e.mp4"));
+    const auto osmesa_png = run_collide(still + " --gl osmesa -o " + (dir.path / "o.png").string());
+    const auto egl_png = run_collide(still + " --gl egl -o " + (dir.path / "e.png").string());
+    REQUIRE_MESSAGE(osmesa_png.exit_code == 0, osmesa_png.output);
+    REQUIRE_MESSAGE(egl_png.exit_code == 0, egl_png.output);
+    CHECK(read_bytes(dir.path / "o.png") == read_bytes(dir.path / "e.png"));
+}
+
+TEST_CASE("render --gl: an unknown backend, or one beside --preview, exits 2 naming --gl") {
+    TempDir dir("gl_bad");
+    const fs::path out = dir.path / "x.mp4";
+    const std::string unknown = collide::test::run_collide_bad_input(
+        "render gas --duration 1 --gl vulkan -o " + out.string());
+    CHECK(unknown.find("--gl: unknown GL backend 'vulkan' (expected one of auto, osmesa, egl, "
+                       "egl-device, glfw)") != std::string::npos);
+    const std::string with_preview = collide::test::run_collide_bad_input(
+        "render gas --duration 1 --gl osmesa --preview -o " + out.string());
+    CHECK(with_preview.find("--gl osmesa: --preview renders the frames through glfw") !=
+          std::string::npos);
+    CHECK_FALSE(fs::exists(out));
+}

@@ -64,7 +64,7 @@ TEST_CASE("golden: two panels with overlays, speed colours and failure markers")
     RenderConfig config = test::small_config(true);
     config.color_mode = ColorMode::speed;
     config.speed_max = 1.5;
-    Renderer renderer(config, Backend::osmesa);
+    Renderer renderer(config, test::test_backend());
     Snapshot left = test::gas_snapshot(60, 0.03, {1.0, 1.0, Boundary::walls}, 11, 2.0);
     const Snapshot right = test::gas_snapshot(60, 0.03, {1.0, 1.0, Boundary::walls}, 11, 2.0);
     left.discs[3].position = left.discs[4].position + Vec2{0.03, 0.0};
@@ -85,7 +85,7 @@ TEST_CASE("golden: two panels with overlays, speed colours and failure markers")
 TEST_CASE("golden: periodic box with trails crossing the seam, overlays off") {
     RenderConfig config = test::small_config(false);
     config.color_mode = ColorMode::tag;
-    Renderer renderer(config, Backend::osmesa);
+    Renderer renderer(config, test::test_backend());
     Snapshot s = test::gas_snapshot(30, 0.04, {2.0, 1.0, Boundary::periodic}, 5);
     s.discs[0].tagged = true;
     s.discs[0].velocity = {0.9, 0.35};
@@ -107,7 +107,7 @@ TEST_CASE("golden: periodic box with trails crossing the seam, overlays off") {
 }
 
 TEST_CASE("golden: one panel in scene colours with title and counters") {
-    Renderer renderer(test::small_config(true), Backend::osmesa);
+    Renderer renderer(test::small_config(true), test::test_backend());
     const Snapshot s = test::gas_snapshot(25, 0.05, {1.6, 0.9, Boundary::walls}, 3, 0.5);
     FrameContent frame;
     frame.panels = {{&s, "Event-driven (priority queue)", {"events 42", "queue 97"}}};

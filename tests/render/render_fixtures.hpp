@@ -16,6 +16,14 @@
 
 namespace collide::render::test {
 
+/// The backend the pixel tests render on: COLLIDE_TEST_GL (a --gl name: osmesa, egl, ...) or
+/// auto. ctest runs the suite once more with COLLIDE_TEST_GL=egl (tests/CMakeLists.txt).
+inline Backend test_backend() {
+    const char* name = std::getenv("COLLIDE_TEST_GL");
+    if (name == nullptr || *name == '\0') return Backend::automatic;
+    return parse_backend(name, "COLLIDE_TEST_GL");
+}
+
 /// `count` discs of radius `radius` on a jittered grid in a box, velocities from a fixed seed.
 inline Snapshot gas_snapshot(std::size_t count, double radius, Box box, std::uint32_t seed,
                              double time = 0.0) {

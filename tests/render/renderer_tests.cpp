@@ -28,7 +28,7 @@ struct OnePanel {
 };
 
 OnePanel render_one(const Snapshot& snapshot, RenderConfig config = test::small_config(false)) {
-    Renderer renderer(config, Backend::osmesa);
+    Renderer renderer(config, test::test_backend());
     FrameContent frame;
     frame.panels = {{&snapshot, "", {}}};
     OnePanel out;
@@ -247,7 +247,7 @@ TEST_CASE("speed mode colours a disc by |v| through the colormap over the fixed 
 
 TEST_CASE("rendering is deterministic and render(frame, out) matches render(frame)") {
     const Snapshot s = test::gas_snapshot(200, 0.02, {1.0, 1.0, Boundary::walls}, 7);
-    Renderer renderer(test::small_config(true), Backend::osmesa);
+    Renderer renderer(test::small_config(true), test::test_backend());
     FrameContent frame;
     frame.panels = {{&s, "Event-driven", {"events 12"}}, {&s, "Time-driven", {"steps 3"}}};
     const Image first = renderer.render(frame);
@@ -258,7 +258,7 @@ TEST_CASE("rendering is deterministic and render(frame, out) matches render(fram
 }
 
 TEST_CASE("bad frames and configs are input errors, not crashes") {
-    Renderer renderer(test::small_config(false), Backend::osmesa);
+    Renderer renderer(test::small_config(false), test::test_backend());
     FrameContent none;
     CHECK_THROWS_AS(renderer.draw(none), Error);
     FrameContent null_panel;
@@ -271,7 +271,7 @@ TEST_CASE("bad frames and configs are input errors, not crashes") {
     }
     RenderConfig bad = test::small_config(false);
     bad.width = 10;
-    CHECK_THROWS_AS(Renderer(bad, Backend::osmesa), Error);
+    CHECK_THROWS_AS(Renderer(bad, test::test_backend()), Error);
     bad = test::small_config(false);
     bad.speed_max = bad.speed_min;
     CHECK_THROWS_WITH_AS(bad.validate(), doctest::Contains("speed_max"), Error);

@@ -29,7 +29,7 @@ TEST_CASE("titles, counters and time text put glyphs in the header and the strip
     if (!std::filesystem::exists(config.font_path)) {
         COLLIDE_SKIP_TEST("no DejaVu Sans at " << config.font_path);
     }
-    Renderer renderer(config, Backend::osmesa);
+    Renderer renderer(config, test::test_backend());
     const Snapshot s = test::gas_snapshot(0, 0.05, {1.0, 1.0, Boundary::walls}, 1);
     FrameContent blank;  // same layout as `titled` (one counter row), but no text in it
     blank.panels = {{&s, "", {""}}};
@@ -59,7 +59,7 @@ TEST_CASE("a 480p two-panel frame shows the speed legend's colour bar in the str
     if (!std::filesystem::exists(config.font_path)) {
         COLLIDE_SKIP_TEST("no DejaVu Sans at " << config.font_path);
     }
-    Renderer renderer(config, Backend::osmesa);
+    Renderer renderer(config, test::test_backend());
     Snapshot left = test::gas_snapshot(200, 0.015, {1.0, 1.0, Boundary::walls}, 8, 4.0);
     const Snapshot right = test::gas_snapshot(200, 0.015, {1.0, 1.0, Boundary::periodic}, 8, 4.0);
     left.overlapping_pairs = {{10, 11}};
@@ -87,7 +87,7 @@ TEST_CASE("a 480p two-panel frame shows the speed legend's colour bar in the str
 TEST_CASE("a missing font file is a runtime error naming it") {
     RenderConfig config = test::small_config(true);
     config.font_path = "/nonexistent/font.ttf";
-    CHECK_THROWS_WITH_AS(Renderer(config, Backend::osmesa),
+    CHECK_THROWS_WITH_AS(Renderer(config, test::test_backend()),
                          doctest::Contains("/nonexistent/font.ttf"), Error);
 }
 

@@ -47,7 +47,7 @@ TEST_CASE("trail history keeps the last trail_length positions of tagged discs")
 
 TEST_CASE("a trail crossing the seam of a periodic box shows on both sides and not across") {
     RenderConfig config = test::small_config(false);
-    Renderer renderer(config, Backend::osmesa);
+    Renderer renderer(config, test::test_backend());
     Snapshot s;
     s.box = {10.0, 10.0, Boundary::periodic};
     s.discs = {test::disc_at({7.0, 5.0}, 0.05, {255, 40, 40})};

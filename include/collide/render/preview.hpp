@@ -26,8 +26,11 @@ class PreviewWindow {
     PreviewWindow() = default;
 };
 
-/// Opens a preview window of `width` x `height` pixels titled `title`. Returns null (after one
-/// notice) when no display is available; never throws for that reason.
+/// Opens a preview window of `width` x `height` pixels titled `title`, hidden until the first
+/// show(). Returns null (after one notice) when no display is available; never throws for that
+/// reason. While it is open, render with Backend::glfw: OSMesa and the window's GLX driver share
+/// Mesa's per-thread current context but each keeps its own record of it, so interleaving them
+/// draws with the wrong context (docs/renderer.md, "Preview").
 [[nodiscard]] std::unique_ptr<PreviewWindow> open_preview(int width, int height, const char* title,
                                                           const NoticeSink& notice = {});
 
