@@ -2,10 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <functional>
 #include <string>
-#include <system_error>
 #include <utility>
 
 #include "collide/error.hpp"
@@ -15,6 +13,7 @@
 #include "collide/sim/pq/observer.hpp"
 #include "collide/sim/pq/ordered_array_pq.hpp"
 #include "collide/sim/pq/unordered_array_pq.hpp"
+#include "pq/tokens.hpp"
 
 namespace collide::pq {
 
@@ -22,79 +21,14 @@ namespace {
 
 // ------------------------------------------------------------------------------------ parsing
 
+using tokens::is_integer;
+using tokens::key_of;
+using tokens::KeyKindCheck;
+
 [[noreturn]] void reject_token(std::string_view option, std::size_t token,
                                std::string_view spelling, const std::string& why) {
-    throw_input_error(std::string(option) + ": token " + std::to_string(token) + " '" +
-                      std::string(spelling) + "': " + why);
+    tokens::reject(option, token, spelling, why);
 }
-
-bool is_word(std::string_view s) {
-    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) {
-        return std::isalpha(static_cast<unsigned char>(c)) != 0;
-    });
-}
-
-bool is_integer(std::string_view s) {
-    if (!s.empty() && (s.front() == '+' || s.front() == '-')) s.remove_prefix(1);
-    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) {
-        return std::isdigit(static_cast<unsigned char>(c)) != 0;
-    });
-}
-
-/// A key from one word or integer; nullopt for anything else.
-std::optional<TraceKey> key_of(std::string_view text) {
-    TraceKey key;
-    if (is_word(text)) {
-        key.word = std::string(text);
-        return key;
-    }
-    if (!is_integer(text)) return std::nullopt;
-    key.numeric = true;
-    if (text.front() == '+') text.remove_prefix(1);  // from_chars takes '-' but not '+'
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), key.number);
-    if (ec != std::errc{} || end != text.data() + text.size()) return std::nullopt;
-    return key;
-}
-
-std::vector<std::string_view> split_tokens(std::string_view text) {
-    std::vector<std::string_view> tokens;
-    std::size_t i = 0;
-    while (i < text.size()) {
-        while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i])) != 0) ++i;
-        const std::size_t start = i;
-        while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i])) == 0) ++i;
-        if (i > start) tokens.push_back(text.substr(start, i - start));
-    }
-    return tokens;
-}
-
-const char* kind_name(const TraceKey& key) {
-    return key.numeric ? "a number" : "a word";
-}
-
-/// Words and numbers do not mix: the first key decides.
-class KeyKindCheck {
-  public:
-    explicit KeyKindCheck(std::string_view option) : option_(option) {}
-    void check(const TraceKey& key, std::size_t token, std::string_view spelling) {
-        if (!first_) {
-            first_ = key;
-            first_spelling_ = std::string(spelling);
-            return;
-        }
-        if (key.numeric != first_->numeric) {
-            reject_token(option_, token, spelling,
-                         std::string("is ") + kind_name(key) + " but the first key '" +
-                             first_spelling_ + "' is " + kind_name(*first_) +
-                             "; keys must be all words or all numbers");
-        }
-    }
-
-  private:
-    std::string_view option_;
-    std::optional<TraceKey> first_;
-    std::string first_spelling_;
-};
 
 // ------------------------------------------------------------------------------------ captions
 
@@ -535,16 +469,16 @@ std::size_t most_items(const LessonPanel& panel) {
 // ------------------------------------------------------------------------------------ parsing
 
 std::vector<LessonOp> parse_lesson_ops(std::string_view text, std::string_view option) {
-    const std::vector<std::string_view> tokens = split_tokens(text);
-    if (tokens.empty())
+    const std::vector<std::string_view> words = tokens::split(text);
+    if (words.empty())
         throw_input_error(std::string(option) + ": no operations given (e.g. \"P Q E * X\")");
     std::vector<LessonOp> out;
     KeyKindCheck kinds(option);
-    for (std::size_t t = 0; t < tokens.size(); ++t) {
+    for (std::size_t t = 0; t < words.size(); ++t) {
         LessonOp op;
         op.token = t + 1;
-        op.spelling = std::string(tokens[t]);
-        const std::string_view s = tokens[t];
+        op.spelling = std::string(words[t]);
+        const std::string_view s = words[t];
         const std::size_t caret = s.find('^');
         if (s == "*") {
             op.kind = LessonOp::Kind::remove;
@@ -575,18 +509,18 @@ std::vector<LessonOp> parse_lesson_ops(std::string_view text, std::string_view o
 }
 
 std::vector<TraceKey> parse_sort_keys(std::string_view text, std::string_view option) {
-    const std::vector<std::string_view> tokens = split_tokens(text);
-    if (tokens.empty())
+    const std::vector<std::string_view> words = tokens::split(text);
+    if (words.empty())
         throw_input_error(std::string(option) + ": no keys given (e.g. \"S O R T E X A M P L E\")");
     std::vector<TraceKey> out;
     KeyKindCheck kinds(option);
-    for (std::size_t t = 0; t < tokens.size(); ++t) {
-        const auto key = key_of(tokens[t]);
+    for (std::size_t t = 0; t < words.size(); ++t) {
+        const auto key = key_of(words[t]);
         if (!key) {
-            reject_token(option, t + 1, tokens[t],
+            reject_token(option, t + 1, words[t],
                          "heapsort takes keys only (words of letters or integers)");
         }
-        kinds.check(*key, t + 1, tokens[t]);
+        kinds.check(*key, t + 1, words[t]);
         out.push_back(*key);
     }
     return out;

@@ -2,82 +2,37 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <functional>
 #include <iterator>
 #include <memory>
 #include <set>
-#include <system_error>
 #include <utility>
 
 #include "collide/error.hpp"
+#include "pq/tokens.hpp"
 
 namespace collide::pq {
 
 namespace {
 
+using tokens::is_integer;
+using tokens::is_word;
+
 [[noreturn]] void reject_token(std::string_view option, std::size_t token,
                                std::string_view spelling, const std::string& why) {
-    throw_input_error(std::string(option) + ": token " + std::to_string(token) + " '" +
-                      std::string(spelling) + "': " + why);
-}
-
-bool is_word(std::string_view s) {
-    if (s.empty()) return false;
-    for (char c : s) {
-        if (std::isalpha(static_cast<unsigned char>(c)) == 0) return false;
-    }
-    return true;
-}
-
-bool is_integer(std::string_view s) {
-    if (!s.empty() && (s.front() == '+' || s.front() == '-')) s.remove_prefix(1);
-    if (s.empty()) return false;
-    for (char c : s) {
-        if (std::isdigit(static_cast<unsigned char>(c)) == 0) return false;
-    }
-    return true;
+    tokens::reject(option, token, spelling, why);
 }
 
 /// A key from a token already known to be a word or an integer.
 TraceKey key_from(std::string_view spelling, std::string_view option, std::size_t token) {
-    TraceKey key;
-    if (is_word(spelling)) {
-        if (spelling.size() > max_trace_key_length) {
-            reject_token(option, token,
-                         std::string(spelling.substr(0, max_trace_key_length)) + "...",
-                         "a word of " + std::to_string(spelling.size()) + " letters; at most " +
-                             std::to_string(max_trace_key_length));
-        }
-        key.word = std::string(spelling);
-        return key;
+    if (is_word(spelling) && spelling.size() > max_trace_key_length) {
+        reject_token(option, token, std::string(spelling.substr(0, max_trace_key_length)) + "...",
+                     "a word of " + std::to_string(spelling.size()) + " letters; at most " +
+                         std::to_string(max_trace_key_length));
     }
-    key.numeric = true;
-    std::string_view digits = spelling;
-    if (digits.front() == '+') digits.remove_prefix(1);  // from_chars takes '-' but not '+'
-    const auto [end, ec] =
-        std::from_chars(digits.data(), digits.data() + digits.size(), key.number);
-    if (ec != std::errc{} || end != digits.data() + digits.size()) {
-        reject_token(option, token, spelling, "integer out of range");
-    }
-    return key;
-}
-
-const char* type_name(const TraceKey& key) {
-    return key.numeric ? "a number" : "a word";
-}
-
-/// Splits at ASCII white space.
-std::vector<std::string_view> split_tokens(std::string_view text) {
-    std::vector<std::string_view> tokens;
-    std::size_t i = 0;
-    while (i < text.size()) {
-        while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i])) != 0) ++i;
-        const std::size_t start = i;
-        while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i])) == 0) ++i;
-        if (i > start) tokens.push_back(text.substr(start, i - start));
-    }
-    return tokens;
+    const std::optional<TraceKey> key = tokens::key_of(spelling);
+    if (!key) reject_token(option, token, spelling, "integer out of range");
+    return *key;
 }
 
 /// One implementation of the trace behind a common interface, so that every queue can take
@@ -157,39 +112,31 @@ void remove_from_all(std::span<const std::unique_ptr<TraceQueue>> queues,
 }  // namespace
 
 std::vector<TraceOp> parse_trace_ops(std::string_view ops, std::string_view option) {
-    const std::vector<std::string_view> tokens = split_tokens(ops);
-    if (tokens.empty())
+    const std::vector<std::string_view> words = tokens::split(ops);
+    if (words.empty())
         throw_input_error(std::string(option) + ": no operations given (e.g. \"P Q E * X\")");
-    if (tokens.size() > max_trace_operations) {
-        throw_input_error(std::string(option) + ": " + std::to_string(tokens.size()) +
+    if (words.size() > max_trace_operations) {
+        throw_input_error(std::string(option) + ": " + std::to_string(words.size()) +
                           " operations; at most " + std::to_string(max_trace_operations) +
                           " (a trace is a table to read, one row per operation)");
     }
     std::vector<TraceOp> out;
-    out.reserve(tokens.size());
-    std::size_t first_key = tokens.size();  // index in `out` of the first key; none yet
-    for (std::size_t i = 0; i < tokens.size(); ++i) {
+    out.reserve(words.size());
+    tokens::KeyKindCheck kinds(option);
+    for (std::size_t i = 0; i < words.size(); ++i) {
         TraceOp op;
         op.token = i + 1;
-        op.spelling = std::string(tokens[i]);
-        if (tokens[i] == "*") {
+        op.spelling = std::string(words[i]);
+        if (words[i] == "*") {
             op.remove = true;
-        } else if (is_word(tokens[i]) || is_integer(tokens[i])) {
-            op.key = key_from(tokens[i], option, op.token);
+        } else if (is_word(words[i]) || is_integer(words[i])) {
+            op.key = key_from(words[i], option, op.token);
+            kinds.check(op.key, op.token, op.spelling);
         } else {
             reject_token(option, op.token, op.spelling,
                          "not a key (a word of letters or an integer) nor '*' (remove)");
         }
         out.push_back(std::move(op));
-        if (out.back().remove) continue;
-        if (first_key == tokens.size()) {
-            first_key = i;
-        } else if (out.back().key.numeric != out[first_key].key.numeric) {
-            reject_token(option, out.back().token, out.back().spelling,
-                         std::string("is ") + type_name(out.back().key) + " but the first key '" +
-                             out[first_key].spelling + "' is " + type_name(out[first_key].key) +
-                             "; keys must be all words or all numbers");
-        }
     }
     return out;
 }
