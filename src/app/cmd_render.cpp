@@ -42,6 +42,9 @@ struct CliValues {
     std::string pq = "binary";
     std::string td_detect = "all-pairs";
     std::string color;
+    std::string overlays;
+    std::string theme;
+    std::string layout_json;
     std::string format;
     bool trails = true;
     bool last_frame = false;
@@ -62,6 +65,9 @@ struct CliValues {
     CLI::Option* dt_opt = nullptr;
     CLI::Option* at_opt = nullptr;
     CLI::Option* color_opt = nullptr;
+    CLI::Option* overlays_opt = nullptr;
+    CLI::Option* theme_opt = nullptr;
+    CLI::Option* layout_json_opt = nullptr;
     CLI::Option* format_opt = nullptr;
     CLI::Option* trails_opt = nullptr;
 };
@@ -89,6 +95,9 @@ RenderRequest request_of(const CliValues& v, bool still) {
     r.td_detect = v.td_detect;
     r.color = if_given(v.color_opt, v.color);
     r.trails = if_given(v.trails_opt, v.trails);
+    r.overlays = if_given(v.overlays_opt, v.overlays);
+    r.theme = if_given(v.theme_opt, v.theme);
+    r.layout_json = if_given(v.layout_json_opt, v.layout_json);
     r.format = if_given(v.format_opt, v.format);
     r.last_frame = v.last_frame;
     r.still = still;
@@ -130,6 +139,16 @@ void add_shared_options(CLI::App& cmd, CliValues& v) {
     v.color_opt =
         cmd.add_option("--color", v.color,
                        "Disc colours: scene, speed, mass or tag (default: scene hint, else scene)");
+    v.overlays_opt = cmd.add_option(
+        "--overlays", v.overlays,
+        "Text around the boxes: lesson (titles, a few figures, the cost graphic, captions; "
+        "default), full (every counter and plot) or none (discs only)");
+    v.theme_opt = cmd.add_option("--theme", v.theme,
+                                 "Colours: dark (screens) or light (projectors, print); default: "
+                                 "scene hint, else dark");
+    v.layout_json_opt = cmd.add_option(
+        "--layout-json", v.layout_json,
+        "Also write the frame's rectangles (panels, boxes, text lines with pixel heights) as JSON");
     v.trails_opt = cmd.add_flag("--trails,!--no-trails", v.trails,
                                 "Trails behind tagged discs (default: scene hint, else on)");
     cmd.add_flag("--preview", v.preview, "Show the frames live in a window when a display exists");
@@ -137,6 +156,18 @@ void add_shared_options(CLI::App& cmd, CliValues& v) {
                    "Progress on stderr: auto (bar on a terminal), bar, json or none")
         ->capture_default_str();
     cmd.add_flag("--verbose", v.verbose, "Show the encoder's own log");
+}
+
+/// Writes `text` to `path` whole or not at all (temporary beside it, then rename).
+void write_text_file(const std::filesystem::path& path, const std::string& text) {
+    video::TemporaryOutput temporary(path, video::TemporaryOutput::Kind::file);
+    std::FILE* file = std::fopen(temporary.path().c_str(), "wb");
+    if (file == nullptr) throw_runtime_error("cannot write '" + path.string() + "'");
+    const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
+    if (std::fclose(file) != 0 || !written) {
+        throw_runtime_error("cannot write '" + path.string() + "'");
+    }
+    temporary.commit();
 }
 
 void print_notice(const std::string& line) {
@@ -151,6 +182,7 @@ RenderPlan validated_plan(const RenderRequest& request, const Scene& scene) {
     const bool directory =
         plan.kind == OutputKind::video && plan.format == video::VideoFormat::png_sequence;
     video::check_output_writable(plan.output, directory);
+    if (!plan.layout_json.empty()) video::check_output_writable(plan.layout_json);
     return plan;
 }
 
@@ -241,6 +273,7 @@ void run(const CliValues& values, bool still) {
         throw;
     }
     progress.finish();
+    if (!plan.layout_json.empty()) write_text_file(plan.layout_json, result.layout_json);
     for (const std::string& line : result.notices) print_notice(line);
     print_summary(plan, result, progress.elapsed_seconds());
 }

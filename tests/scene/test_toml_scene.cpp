@@ -97,7 +97,7 @@ dt = 0.25
 )");
     CHECK(s.render.color_mode == "mass");
     CHECK(s.render.trails == true);
-    CHECK(s.render.overlays == false);
+    CHECK(s.render.overlays == std::optional<std::string>("none"));
     CHECK(s.render.duration == 12.0);
     CHECK(s.render.speed == 0.5);
     CHECK(s.render.dt == 0.25);
