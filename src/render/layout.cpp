@@ -147,6 +147,12 @@ FrameLayout lesson_layout(const LayoutInput& in) {
         y += h;
     };
     if (fits(line)) add(TextRole::clock, -1, line, body);
+    if (in.large_plot) {
+        // The plot is the subject: it comes first and takes most of the column.
+        const float h = std::round(0.62F * (column.area.y1 - y));
+        column.plot = {column_x0, y + gap, column_x0 + column_w, y + h};
+        y += h;
+    }
     const auto panels = static_cast<float>(in.boxes.size());
     if (fits(gap + line + panels * (line + bar_h + gap + head_line))) {
         y += gap;
@@ -171,7 +177,7 @@ FrameLayout lesson_layout(const LayoutInput& in) {
         add(TextRole::legend, -1, line, body);
     }
     y += gap;
-    if (column.area.y1 - y > 3.0F * line) {
+    if (!in.large_plot && column.area.y1 - y > 3.0F * line) {
         column.plot = {column_x0, y, column_x0 + column_w, column.area.y1};
     }
     return layout;

@@ -255,15 +255,15 @@ void draw_moving_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontA
                             RectF area, const std::vector<const Snapshot*>& snapshots,
                             const std::vector<Rgb8>& colors, double v_min, double v_max,
                             const PlotColors& palette) {
-    const PlotFrame frame = draw_axes(batch, text, font, area,
+    RectF axes_area = area;
+    axes_area.y1 -= font.line_height();  // room for the axis labels below
+    const PlotFrame frame = draw_axes(batch, text, font, axes_area,
                                       font.text_width("Speeds of moving discs") <= area.width()
                                           ? "Speeds of moving discs"
                                           : "Speeds",
                                       palette.label);
-    RectF plot = frame.plot;
-    plot.y1 -= font.line_height();  // room for the axis labels below
+    const RectF plot = frame.plot;
     if (snapshots.empty() || plot.width() < 8.0F || plot.height() < 8.0F) return;
-    batch.add_rect({plot.x0, plot.y1 - frame.line_width, plot.x1, plot.y1}, palette.axis);
     const int bins = std::clamp(static_cast<int>(plot.width() / 10.0F), 8, 30);
     std::vector<std::vector<double>> histograms;
     for (const Snapshot* s : snapshots)

@@ -20,6 +20,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "collide/image.hpp"
@@ -96,6 +97,12 @@ struct Figure {
 
 /// One simulation shown in one panel.
 struct PanelContent {
+    PanelContent() = default;
+    /// The full level's content (what every level needs: the snapshot and a title).
+    PanelContent(const Snapshot* snapshot_, std::string title_,
+                 std::vector<std::string> counters_ = {})
+        : snapshot(snapshot_), title(std::move(title_)), counters(std::move(counters_)) {}
+
     const Snapshot* snapshot = nullptr;  ///< not owned; must stay valid during render()
     std::string title;                   ///< e.g. "Event-driven: priority queue of collisions"
     std::vector<std::string> counters;   ///< full level: lines under the title ("collisions 1234")
