@@ -3,6 +3,7 @@
 #include "frame_builder.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -34,9 +35,19 @@ Rgba8 faded(Rgba8 c, float opacity) {
     return c;
 }
 
-double channel_luminance(std::uint8_t c) {
+double linear_channel(int c) {
     const double v = c / 255.0;
     return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+}
+
+// sRGB to linear light, tabulated: the contrast rule runs per disc in colour-mapped scenes.
+double channel_luminance(std::uint8_t c) {
+    static const std::array<double, 256> table = [] {
+        std::array<double, 256> t{};
+        for (int i = 0; i < 256; ++i) t[static_cast<std::size_t>(i)] = linear_channel(i);
+        return t;
+    }();
+    return table[c];
 }
 
 double luminance(Rgb8 c) {
@@ -178,6 +189,7 @@ FrameBuilder::FrameBuilder(const RenderConfig& config)
     }
     list_.background = palette_.background;
     list_.fill_color = palette_.box_fill;
+    choose_colormap_range();
     if (body_font_) list_.text.push_back({&*body_font_, {}});
     if (head_font_) list_.text.push_back({&*head_font_, {}});
 }
@@ -311,17 +323,42 @@ Rgb8 FrameBuilder::disc_color(const DiscState& disc) const noexcept {
         case ColorMode::scene:
             return away_from_failure_color(disc.color);
         case ColorMode::speed:
-            return colormap((norm(disc.velocity) - config_.speed_min) /
-                            (config_.speed_max - config_.speed_min));
+            return shown_colormap((norm(disc.velocity) - config_.speed_min) /
+                                  (config_.speed_max - config_.speed_min));
         case ColorMode::mass: {
-            if (!(config_.mass_max > config_.mass_min)) return colormap(0.5);
-            return colormap(std::log(disc.mass / config_.mass_min) /
-                            std::log(config_.mass_max / config_.mass_min));
+            if (!(config_.mass_max > config_.mass_min)) return shown_colormap(0.5);
+            return shown_colormap(std::log(disc.mass / config_.mass_min) /
+                                  std::log(config_.mass_max / config_.mass_min));
         }
         case ColorMode::tag:
             return disc.tagged ? tagged_color : untagged_color;
     }
     return disc.color;
+}
+
+Rgb8 FrameBuilder::shown_colormap(double t) const noexcept {
+    if (!(t > 0.0)) t = 0.0;
+    if (t > 1.0) t = 1.0;
+    return colormap(colormap_low_ + (colormap_high_ - colormap_low_) * t);
+}
+
+// The part of the colormap every colour of which keeps 3:1 contrast with the box (lesson level):
+// on the dark theme its darkest violet is cut, on the light theme its palest yellow, so discs
+// need no outline and the colour bar shows what the discs show.
+void FrameBuilder::choose_colormap_range() {
+    if (config_.overlays != OverlayLevel::lesson) return;
+    const Rgb8 fill = rgb(palette_.box_fill);
+    constexpr int steps = 200;
+    const auto ok = [&](int i) {
+        return contrast_ratio(colormap(static_cast<double>(i) / steps), fill) >= min_disc_contrast;
+    };
+    int low = 0;
+    while (low < steps && !ok(low)) ++low;
+    int high = steps;
+    while (high > low && !ok(high)) --high;
+    if (high - low < steps / 3) return;  // nothing usable: keep the whole map (outlines)
+    colormap_low_ = static_cast<double>(low) / steps;
+    colormap_high_ = static_cast<double>(high) / steps;
 }
 
 void FrameBuilder::add_discs(const Snapshot& snapshot, const PanelLayout& panel) {
@@ -610,7 +647,7 @@ void FrameBuilder::add_column(const FrameContent& frame) {
             const float x0 = bar.x0 + bar.width() * static_cast<float>(s) / segments;
             const float x1 = bar.x0 + bar.width() * static_cast<float>(s + 1) / segments;
             list_.over.add_rect({x0, bar.y0, x1 + 0.5F, bar.y1},
-                                with_alpha(colormap((s + 0.5) / segments), 255));
+                                with_alpha(shown_colormap((s + 0.5) / segments), 255));
         }
         const bool speed = config_.color_mode == ColorMode::speed;
         draw_text(Font::body, *slot, speed ? "slow" : "light", palette_.text);

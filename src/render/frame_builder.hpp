@@ -103,6 +103,8 @@ class FrameBuilder {
     [[nodiscard]] int counter_rows(const FrameContent& frame) const;
     [[nodiscard]] int panel_counter_columns(std::size_t panels) const;
     [[nodiscard]] Rgb8 disc_color(const DiscState& disc) const noexcept;
+    [[nodiscard]] Rgb8 shown_colormap(double t) const noexcept;
+    void choose_colormap_range();
 
     RenderConfig config_;
     Palette palette_;
@@ -114,6 +116,8 @@ class FrameBuilder {
     DrawList list_;
     std::vector<Rgb8> colors_;  // per-frame scratch
     double video_time_ = 0.0;
+    double colormap_low_ = 0.0;  // the part of the colormap in use (choose_colormap_range)
+    double colormap_high_ = 1.0;
     bool intro_ = false;  // the title card covers this frame: no other text
     int counter_rows_ = 0;
 };

@@ -126,7 +126,11 @@ FrameLayout lesson_layout(const LayoutInput& in) {
         layout.text.push_back(
             {TextRole::title, p, {text_x0, top - gap - line, text_x1, top - gap}, body});
         float y = std::max(panel.box.y1, top) + gap;
-        layout.text.push_back({TextRole::figures, p, {text_x0, y, text_x1, y + head_line}, head});
+        // Figures stay under their own box, so the two panels' rows cannot run together.
+        const float figures_x0 = left_of_column ? text_x0 : std::max(text_x0, panel.box.x0);
+        const float figures_x1 = left_of_column ? std::min(text_x1, panel.box.x1) : text_x1;
+        layout.text.push_back(
+            {TextRole::figures, p, {figures_x0, y, figures_x1, y + head_line}, head});
         y += head_line;
         if (in.note_line)
             layout.text.push_back({TextRole::note, p, {text_x0, y, text_x1, y + line}, body});
