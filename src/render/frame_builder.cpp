@@ -266,7 +266,8 @@ void FrameBuilder::build_panel(std::size_t index, const PanelContent& content,
         const float width = config_.overlays == OverlayLevel::lesson
                                 ? std::max(2.0F, std::round(text_px / 8.0F))
                                 : std::max(1.0F, wall * 1.5F);
-        trails_[index].draw(list_.under, box, to_pixels, colors_, width);
+        const bool lesson = config_.overlays == OverlayLevel::lesson;
+        trails_[index].draw(list_.under, box, to_pixels, colors_, width, lesson ? 0.35F : 0.0F);
     }
     add_discs(snapshot, panel);
     std::size_t hidden = 0;
@@ -545,8 +546,12 @@ void FrameBuilder::add_lesson_panel_text(std::size_t index, const PanelContent& 
         const float gap = head_font_->pixel_height();
         std::vector<Figure> figures = content.figures;
         if (hidden_markers > 0) {
-            figures.push_back({"+" + with_separators(static_cast<long long>(hidden_markers)),
-                               "more not marked", false});
+            // Right after the failure counts, so it is dropped only after them.
+            const auto after_failures = std::find_if(figures.begin(), figures.end(),
+                                                     [](const Figure& f) { return !f.failure; });
+            figures.insert(after_failures,
+                           {"+" + with_separators(static_cast<long long>(hidden_markers)),
+                            "not marked", false});
         }
         for (const Figure& figure : figures) {
             const float need =
@@ -666,7 +671,8 @@ void FrameBuilder::add_column(const FrameContent& frame) {
                                colors, config_.speed_min, config_.speed_max,
                                {palette_.text, palette_.muted, palette_.title});
     } else if (frame.energy_plot) {
-        draw_drift_plot(list_.over, list_.text[0].glyphs, *body_font_, plot, frame.energy_drift);
+        draw_drift_plot(list_.over, list_.text[0].glyphs, *body_font_, plot, frame.energy_drift,
+                        {palette_.text, palette_.muted, palette_.title});
     }
 }
 
@@ -705,6 +711,11 @@ void FrameBuilder::add_intro(const FrameContent& frame) {
 // ---------------------------------------------------------------------------------------------
 // Full level (today's expert layout)
 
+Rgba8 FrameBuilder::counter_color() const noexcept {
+    // The full level's dimmer counter grey on dark; the theme's text colour on light.
+    return config_.theme == Theme::dark ? Rgba8{190, 190, 200, 255} : palette_.text;
+}
+
 int FrameBuilder::panel_counter_columns(std::size_t panels) const {
     const float panel_width =
         static_cast<float>(config_.width) / static_cast<float>(std::max<std::size_t>(panels, 1));
@@ -740,8 +751,7 @@ void FrameBuilder::add_full_header(const PanelContent& content, const PanelLayou
         const auto column = static_cast<float>(k % static_cast<std::size_t>(columns));
         const auto row = static_cast<float>(1 + k / static_cast<std::size_t>(columns));
         font.add_text(text, panel.header.x0 + column * column_width,
-                      baseline + row * font.line_height(), content.counters[k],
-                      Rgba8{190, 190, 200, 255});
+                      baseline + row * font.line_height(), content.counters[k], counter_color());
     }
 }
 
@@ -768,14 +778,14 @@ void FrameBuilder::add_full_strip(const FrameContent& frame) {
     draw_drift_plot(list_.over, text, font, drift, frame.energy_drift);
     const float notes_baseline = strip.y1 - m * 0.5F - line + font.ascent();
     font.add_text(text, columns.x0, notes_baseline, join(frame.notes, "   \xC2\xB7   "),
-                  Rgba8{190, 190, 200, 255});
+                  counter_color());
 }
 
 // Colour bar with its fixed range (speed or mass modes) or the tag key.
 void FrameBuilder::add_legend(RectF info) {
     const FontAtlas& font = *body_font_;
     OverlayBatch& text = list_.text[0].glyphs;
-    const Rgba8 counter{190, 190, 200, 255};
+    const Rgba8 counter = counter_color();
     const float line = font.line_height();
     float y = info.y0 + line * 1.3F;
     if (config_.color_mode == ColorMode::speed || config_.color_mode == ColorMode::mass) {

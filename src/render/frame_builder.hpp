@@ -101,6 +101,7 @@ class FrameBuilder {
                     Align align = Align::left, float x = -1.0F);
     [[nodiscard]] const FontAtlas& atlas(Font font) const;
     [[nodiscard]] int counter_rows(const FrameContent& frame) const;
+    [[nodiscard]] Rgba8 counter_color() const noexcept;
     [[nodiscard]] int panel_counter_columns(std::size_t panels) const;
     [[nodiscard]] Rgb8 disc_color(const DiscState& disc) const noexcept;
     [[nodiscard]] Rgb8 shown_colormap(double t) const noexcept;

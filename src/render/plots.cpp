@@ -194,7 +194,7 @@ void draw_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& f
 }
 
 void draw_drift_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& font, RectF area,
-                     const std::vector<std::vector<DriftPoint>>& series) {
+                     const std::vector<std::vector<DriftPoint>>& series, const PlotColors& colors) {
     double t_min = 0.0;
     double t_max = 0.0;
     double largest = 0.0;
@@ -212,7 +212,8 @@ void draw_drift_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& f
     constexpr double smallest_scale = 1e-12;
     const double scale = std::max(largest, smallest_scale);
     const PlotFrame frame =
-        draw_axes(batch, text, font, area, "energy drift  " + format_number("\xC2\xB1%.2g", scale));
+        draw_axes(batch, text, font, area, "energy drift  " + format_number("\xC2\xB1%.2g", scale),
+                  colors.label);
     const RectF plot = frame.plot;
     const float mid = 0.5F * (plot.y0 + plot.y1 - frame.line_width);
     batch.add_rect({plot.x0, mid, plot.x1, mid + 1.0F}, Rgba8{90, 90, 100, 255});

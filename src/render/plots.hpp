@@ -36,6 +36,13 @@ class MaxwellBoltzmann {
     std::vector<Group> groups_;
 };
 
+/// Colours of a plot's text, axes and reference curve (the theme's).
+struct PlotColors {
+    Rgba8 label{210, 210, 215, 255};
+    Rgba8 axis{150, 150, 160, 255};
+    Rgba8 curve{250, 250, 250, 255};
+};
+
 /// Per-panel series colours (time-driven left, event-driven right).
 [[nodiscard]] Rgb8 panel_color(std::size_t panel) noexcept;
 
@@ -57,7 +64,8 @@ void draw_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& f
 /// Draws relative energy drift against time, one polyline per series, scaled to the largest
 /// |drift| (labelled), with the zero line.
 void draw_drift_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& font, RectF area,
-                     const std::vector<std::vector<DriftPoint>>& series);
+                     const std::vector<std::vector<DriftPoint>>& series,
+                     const PlotColors& colors = {});
 
 /// Discs at least this many times heavier than the lightest disc count as immovable (barriers,
 /// walls of heavy discs): they are not part of the speed distribution.
@@ -65,12 +73,6 @@ inline constexpr double immovable_mass_ratio = 1000.0;
 
 /// The snapshot's discs that can move (finite mass below immovable_mass_ratio x the lightest).
 [[nodiscard]] Snapshot moving_discs(const Snapshot& snapshot);
-
-struct PlotColors {
-    Rgba8 label;
-    Rgba8 axis;
-    Rgba8 curve;
-};
 
 /// Lesson plot: histograms of the moving discs' speeds (one per snapshot, in `colors`) on the
 /// fixed range [v_min, v_max] and a fixed height, with the labelled Maxwell-Boltzmann curve of
