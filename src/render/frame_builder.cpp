@@ -360,6 +360,7 @@ void FrameBuilder::choose_colormap_range() {
     if (high - low < steps / 3) return;  // nothing usable: keep the whole map (outlines)
     colormap_low_ = static_cast<double>(low) / steps;
     colormap_high_ = static_cast<double>(high) / steps;
+    colormap_clear_ = true;
 }
 
 void FrameBuilder::add_discs(const Snapshot& snapshot, const PanelLayout& panel) {
@@ -369,13 +370,18 @@ void FrameBuilder::add_discs(const Snapshot& snapshot, const PanelLayout& panel)
     const Rgb8 fill = rgb(palette_.box_fill);
     // Outlines only where a colour is too close to the box (contrast is checked once per colour
     // run: scenes have a handful of colours, colormaps change slowly).
+    // Colormap colours are all clear of the box already (choose_colormap_range) unless no part of
+    // the map was: then, and for scene and tag colours, each colour is checked.
+    const bool mapped =
+        config_.color_mode == ColorMode::speed || config_.color_mode == ColorMode::mass;
+    const bool check = lesson && !(mapped && colormap_clear_);
     Rgb8 last_color{0, 0, 0};
-    bool last_needs_outline = contrast_ratio(last_color, fill) < min_disc_contrast;
+    bool last_needs_outline = check && contrast_ratio(last_color, fill) < min_disc_contrast;
     for (std::size_t k = 0; k < snapshot.discs.size(); ++k) {
         const DiscState& disc = snapshot.discs[k];
         if (lesson && disc.escaped) continue;  // counted and marked at the box edge instead
         const Rgb8 c = colors_[k];
-        if (c.r != last_color.r || c.g != last_color.g || c.b != last_color.b) {
+        if (check && (c.r != last_color.r || c.g != last_color.g || c.b != last_color.b)) {
             last_color = c;
             last_needs_outline = contrast_ratio(c, fill) < min_disc_contrast;
         }

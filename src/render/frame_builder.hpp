@@ -119,7 +119,8 @@ class FrameBuilder {
     double video_time_ = 0.0;
     double colormap_low_ = 0.0;  // the part of the colormap in use (choose_colormap_range)
     double colormap_high_ = 1.0;
-    bool intro_ = false;  // the title card covers this frame: no other text
+    bool colormap_clear_ = false;  // every colour of [low, high] has 3:1 contrast with the box
+    bool intro_ = false;           // the title card covers this frame: no other text
     int counter_rows_ = 0;
 };
 
