@@ -1,15 +1,18 @@
 /// `collide pq`: the lecture's priority-queue trace table, for the classroom or for slides.
 /// The trace itself (operations run on each implementation) comes from collide_sim; this file
-/// only reads the options and lays the table out as text, CSV or Markdown.
+/// only reads the options and lays the table out as text, CSV or Markdown, row by row as the
+/// trace runs, so memory and output stay linear in the number of operations.
 
 #include <fmt/core.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "collide/error.hpp"
 #include "collide/sim/pq/trace.hpp"
 #include "commands.hpp"
 
@@ -24,9 +27,17 @@ struct PqOptions {
     std::string format = "text";
 };
 
-using Table = std::vector<std::vector<std::string>>;  ///< rows of cells; row 0 is the header
+/// Entries of each array printed per row: a lecture's arrays stay far below (a five-level binary
+/// heap holds 31); longer ones end in "... (+N more)" so that a row's width does not grow with
+/// the input. The header says so when it happens.
+constexpr std::size_t shown_entries = 32;
 
-std::string join(const std::vector<std::string>& items, const char* separator) {
+/// Implementations per table (each is a column; a lecture compares a handful).
+constexpr std::size_t max_impls = 16;
+
+using Cells = std::vector<std::string>;
+
+std::string join(const Cells& items, const char* separator) {
     std::string out;
     for (std::size_t i = 0; i < items.size(); ++i) {
         if (i > 0) out += separator;
@@ -35,40 +46,78 @@ std::string join(const std::vector<std::string>& items, const char* separator) {
     return out;
 }
 
-Table table_of(const pq::Trace& trace) {
-    Table table;
-    std::vector<std::string> header{"operation", "argument", "return", "size"};
-    for (const pq::QueueKind& kind : trace.queues) header.push_back(pq::to_string(kind));
-    table.push_back(std::move(header));
-    for (const pq::TraceRow& row : trace.rows) {
-        std::vector<std::string> cells{row.operation, row.argument, row.returned,
-                                       std::to_string(row.size)};
-        for (const auto& array : row.contents) cells.push_back(join(array, " "));
-        table.push_back(std::move(cells));
+/// The table's layout, known before the first row: its columns and whether arrays are cut short.
+struct TableShape {
+    std::vector<pq::QueueKind> queues;
+    bool cut_short = false;  ///< some array grows beyond shown_entries
+
+    [[nodiscard]] Cells header() const {
+        Cells cells{"operation", "argument", "return", "size"};
+        for (const pq::QueueKind& kind : queues) {
+            cells.push_back(pq::to_string(kind) +
+                            (cut_short ? fmt::format(" (first {})", shown_entries) : ""));
+        }
+        return cells;
     }
-    return table;
+};
+
+Cells cells_of(const pq::TraceRow& row) {
+    Cells cells{row.operation, row.argument, row.returned, std::to_string(row.size)};
+    for (const auto& array : row.contents) {
+        std::string cell = join(array, " ");
+        if (array.size() < row.size)
+            cell += fmt::format(" ... (+{} more)", row.size - array.size());
+        cells.push_back(std::move(cell));
+    }
+    return cells;
 }
 
-/// Columns padded to their widest cell, two spaces apart, a rule under the header.
-std::string as_text(const Table& table) {
-    std::vector<std::size_t> width(table.front().size(), 0);
-    for (const auto& row : table) {
-        for (std::size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], row[c].size());
+/// Produces the table row by row (header first); nothing is kept between rows.
+using RowSink = std::function<void(const Cells&)>;
+
+/// One trace run: the header, then each operation's row, handed to `sink`.
+struct TableSource {
+    const std::vector<pq::TraceOp>& ops;
+    pq::Orientation orientation;
+    TableShape shape;
+
+    void stream(const RowSink& sink) const {
+        sink(shape.header());
+        pq::for_each_trace_row(
+            ops, orientation, shape.queues, shown_entries,
+            [&sink](const pq::TraceRow& row) { sink(cells_of(row)); }, "--ops");
     }
-    std::string out;
-    const auto add_line = [&](const std::vector<std::string>& cells) {
+};
+
+void print(const std::string& line) {
+    std::fputs(line.c_str(), stdout);
+}
+
+/// Columns padded to their widest cell, two spaces apart, a rule under the header. The widths
+/// need every row: the trace runs twice (measure, then print) rather than keeping the rows.
+void print_text(const TableSource& table) {
+    std::vector<std::size_t> width;
+    table.stream([&width](const Cells& cells) {
+        width.resize(cells.size(), 0);
+        for (std::size_t c = 0; c < cells.size(); ++c)
+            width[c] = std::max(width[c], cells[c].size());
+    });
+    const auto print_line = [&width](const Cells& cells) {
         std::string line;
         for (std::size_t c = 0; c < cells.size(); ++c)
             line += fmt::format("{:<{}}  ", cells[c], width[c]);
         line.erase(line.find_last_not_of(' ') + 1);  // no trailing blanks
-        out += line + '\n';
+        print(line + '\n');
     };
-    add_line(table.front());
-    std::vector<std::string> rule;
-    for (std::size_t w : width) rule.emplace_back(w, '-');
-    add_line(rule);
-    for (std::size_t r = 1; r < table.size(); ++r) add_line(table[r]);
-    return out;
+    bool header = true;
+    table.stream([&](const Cells& cells) {
+        print_line(cells);
+        if (!header) return;
+        header = false;
+        Cells rule;
+        for (std::size_t w : width) rule.emplace_back(w, '-');
+        print_line(rule);
+    });
 }
 
 /// RFC 4180: quote a field holding a comma, quote or line break; double inner quotes.
@@ -79,44 +128,49 @@ std::string csv_field(const std::string& cell) {
     return out + '"';
 }
 
-std::string as_csv(const Table& table) {
-    std::string out;
-    for (const auto& row : table) {
-        std::vector<std::string> fields;
-        for (const auto& cell : row) fields.push_back(csv_field(cell));
-        out += join(fields, ",") + '\n';
-    }
-    return out;
+void print_csv(const TableSource& table) {
+    table.stream([](const Cells& cells) {
+        Cells fields;
+        for (const auto& cell : cells) fields.push_back(csv_field(cell));
+        print(join(fields, ",") + '\n');
+    });
 }
 
-std::string as_markdown(const Table& table) {
-    const auto line = [](const std::vector<std::string>& cells) {
-        return "| " + join(cells, " | ") + " |\n";
-    };
-    std::string out = line(table.front());
-    out += line(std::vector<std::string>(table.front().size(), "---"));
-    for (std::size_t r = 1; r < table.size(); ++r) out += line(table[r]);
-    return out;
+void print_markdown(const TableSource& table) {
+    bool header = true;
+    table.stream([&header](const Cells& cells) {
+        print("| " + join(cells, " | ") + " |\n");
+        if (!header) return;
+        header = false;
+        print("| " + join(Cells(cells.size(), "---"), " | ") + " |\n");
+    });
+}
+
+std::vector<pq::QueueKind> queues_of(const std::vector<std::string>& impls) {
+    if (impls.size() > max_impls) {
+        throw_input_error(fmt::format("--impl: {} implementations; at most {} (one column each)",
+                                      impls.size(), max_impls));
+    }
+    std::vector<pq::QueueKind> kinds;
+    for (const std::string& impl : impls) kinds.push_back(pq::parse_queue_kind(impl, "--impl"));
+    if (kinds.empty()) kinds = pq::default_trace_queues();
+    return kinds;
 }
 
 void run_pq(const PqOptions& options) {
     const std::vector<pq::TraceOp> ops = pq::parse_trace_ops(options.ops, "--ops");
-    std::vector<pq::QueueKind> kinds;
-    for (const std::string& impl : options.impls)
-        kinds.push_back(pq::parse_queue_kind(impl, "--impl"));
-    if (kinds.empty()) kinds = pq::default_trace_queues();
-    const auto orientation = options.min ? pq::Orientation::min : pq::Orientation::max;
-    const Table table = table_of(pq::run_trace(ops, orientation, kinds, "--ops"));
-
-    std::string text;
+    TableShape shape;
+    shape.queues = queues_of(options.impls);
+    shape.cut_short = pq::peak_trace_size(ops, "--ops") > shown_entries;
+    const TableSource table{ops, options.min ? pq::Orientation::min : pq::Orientation::max,
+                            std::move(shape)};
     if (options.format == "csv") {
-        text = as_csv(table);
+        print_csv(table);
     } else if (options.format == "markdown") {
-        text = as_markdown(table);
+        print_markdown(table);
     } else {
-        text = as_text(table);
+        print_text(table);
     }
-    std::fputs(text.c_str(), stdout);
 }
 
 }  // namespace
@@ -125,20 +179,25 @@ void add_pq_command(CLI::App& root) {
     auto options = std::make_shared<PqOptions>();
     CLI::App* pq = root.add_subcommand(
         "pq",
-        "Trace the lecture's priority queues: insert keys, '*' removes the max (or min), "
-        "one table row per operation with every implementation's array");
+        fmt::format("Trace the lecture's priority queues: insert keys, '*' removes the max (or "
+                    "min), one table row per operation with every implementation's array (its "
+                    "first {} entries, then '... (+N more)')",
+                    shown_entries));
     pq->add_option(
           "--ops", options->ops,
-          "Operations separated by spaces: a word of letters or an integer inserts it, '*' "
-          "removes; keys must be all words (byte order: A < Z < a) or all integers, "
-          "e.g. \"P Q E * X A M * P L E *\"")
+          fmt::format("Operations separated by spaces: a word of letters or an integer inserts "
+                      "it, '*' removes; keys must be all words (byte order: A < Z < a) or all "
+                      "integers, e.g. \"P Q E * X A M * P L E *\"; at most {} operations, words "
+                      "of at most {} letters",
+                      pq::max_trace_operations, pq::max_trace_key_length))
         ->required();
     pq->add_flag("--min", options->min,
                  "A min-queue ('*' removes the smallest) instead of a max-queue");
     pq->add_option("--impl", options->impls,
-                   "Implementations to show, repeatable or comma-separated: "
-                   "unordered|ordered|binary|dary:D|indexed[:D] (default: unordered, ordered, "
-                   "binary, dary:3, indexed)")
+                   fmt::format("Implementations to show, repeatable or comma-separated: "
+                               "unordered|ordered|binary|dary:D|indexed[:D] (default: unordered, "
+                               "ordered, binary, dary:3, indexed); at most {}",
+                               max_impls))
         ->delimiter(',');
     pq->add_option("--format", options->format, "Table format: text, csv or markdown")
         ->check(CLI::IsMember({"text", "csv", "markdown"}))

@@ -170,7 +170,11 @@ class GifSink final : public FrameSink {
                                 time_base_);
     }
 
-    /// Copies RGBA pixels into a new frame with timestamp `pts` and hands it to `source`.
+    /// Copies RGBA pixels into a new frame with timestamp `pts` and hands it to `source`, then
+    /// runs the graph until every filter has taken what it can. Without that push, pass 1 would
+    /// keep every frame queued in memory until finish(): palettegen outputs nothing before the
+    /// end, so nothing downstream ever pulls, and a filter graph only runs when something pulls.
+    /// Pushed, palettegen adds each frame to its colour histogram and frees it at once.
     void add_frame(AVFilterContext* source, const std::uint8_t* rgba, std::int64_t pts) {
         FramePtr frame(check_alloc(av_frame_alloc(), "AVFrame"));
         frame->format = AV_PIX_FMT_RGBA;
@@ -183,7 +187,8 @@ class GifSink final : public FrameSink {
                         row_bytes);
         }
         frame->pts = pts;
-        check_av(av_buffersrc_add_frame(source, frame.get()), "GIF palette filter failed");
+        check_av(av_buffersrc_add_frame_flags(source, frame.get(), AV_BUFFERSRC_FLAG_PUSH),
+                 "GIF palette filter failed");
     }
 
     /// Ends pass 1 and returns palettegen's single output frame.

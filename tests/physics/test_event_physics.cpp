@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "../sim/scene_fixtures.hpp"
+#include "../support/skip.hpp"
 #include "collide/sim/engine.hpp"
 #include "collide/sim/event.hpp"
 #include "collide/sim/fast_engine.hpp"
@@ -108,14 +109,17 @@ TEST_CASE("algs4 files: time never runs backwards and no overlap beyond the tole
         double fast_until;
         double classic_until;
     };
-    for (const Case c : {Case{"p10.txt", 20000.0, 20000.0}, Case{"p2000.txt", 1000.0, 30.0},
-                         Case{"brownian.txt", 1000.0, 30.0}, Case{"diffusion.txt", 1000.0, 30.0}}) {
+    const std::vector<Case> cases{
+        Case{"p10.txt", 20000.0, 20000.0}, Case{"p2000.txt", 1000.0, 30.0},
+        Case{"brownian.txt", 1000.0, 30.0}, Case{"diffusion.txt", 1000.0, 30.0}};
+    for (const Case& c : cases) {
+        if (!std::filesystem::exists(collide::test::algs4_dir() / c.file))
+            COLLIDE_SKIP_TEST(collide::test::algs4_dir() / c.file << " is absent");
+    }
+    for (const Case& c : cases) {
         CAPTURE(c.file);
         const auto scene = collide::test::read_algs4(c.file);
-        if (!scene) {
-            MESSAGE("skipped: " << c.file << " not present in ../shared/data/algs4");
-            continue;
-        }
+        REQUIRE(scene.has_value());
         for (const char* name : {"fast", "classic"}) {
             CAPTURE(name);
             auto engine = engine_named(name, *scene);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/skip.hpp"
 #include "collide/error.hpp"
 #include "collide/render/preview.hpp"
 #include "render_fixtures.hpp"
@@ -60,8 +61,7 @@ TEST_CASE("without a display, GLFW falls back to OSMesa with one notice") {
 
 TEST_CASE("display: the GLFW backend produces the same pixels as OSMesa") {
     if (!have_display()) {
-        MESSAGE("SKIP: DISPLAY is not set (the xvfb ctest entry runs this under xvfb-run)");
-        return;
+        COLLIDE_SKIP_TEST("DISPLAY is not set (the xvfb ctest entry runs this under xvfb-run)");
     }
     const Snapshot a = test::gas_snapshot(80, 0.03, {1.0, 1.0, Boundary::walls}, 4);
     const Snapshot b = test::gas_snapshot(80, 0.03, {1.0, 1.0, Boundary::periodic}, 5);
@@ -84,8 +84,7 @@ TEST_CASE("display: the GLFW backend produces the same pixels as OSMesa") {
 
 TEST_CASE("display: the preview window shows frames") {
     if (!have_display()) {
-        MESSAGE("SKIP: DISPLAY is not set");
-        return;
+        COLLIDE_SKIP_TEST("DISPLAY is not set (the xvfb ctest entry runs this under xvfb-run)");
     }
     Renderer renderer(test::small_config(false), Backend::osmesa);
     const Snapshot s = test::gas_snapshot(10, 0.05, {1.0, 1.0, Boundary::walls}, 2);

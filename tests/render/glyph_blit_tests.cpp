@@ -36,7 +36,7 @@ std::array<std::uint8_t, 4> at(const Image& image, int x, int y) {
     return {p[0], p[1], p[2], p[3]};
 }
 
-TEST_CASE("full coverage paints the glyph colour; zero coverage leaves the frame alone") {
+TEST_CASE("full coverage paints the glyph colour, zero coverage leaves the frame alone") {
     // Texels of the left half are covered, of the right half not.
     const auto atlas = atlas_of([](int u, int) { return u < 4 ? 255 : 0; });
     Image image = filled(10, 10, {10, 20, 30, 255});

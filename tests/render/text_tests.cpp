@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "../support/skip.hpp"
 #include "collide/error.hpp"
 #include "font.hpp"
 #include "layout.hpp"
@@ -26,8 +27,7 @@ int bright_pixels(const Image& image, RectF r) {
 TEST_CASE("titles, counters and time text put glyphs in the header and the strip") {
     const RenderConfig config = test::small_config(true);
     if (!std::filesystem::exists(config.font_path)) {
-        MESSAGE("SKIP: no DejaVu Sans at " << config.font_path);
-        return;
+        COLLIDE_SKIP_TEST("no DejaVu Sans at " << config.font_path);
     }
     Renderer renderer(config, Backend::osmesa);
     const Snapshot s = test::gas_snapshot(0, 0.05, {1.0, 1.0, Boundary::walls}, 1);
@@ -58,8 +58,7 @@ TEST_CASE("a 480p two-panel frame shows the speed legend's colour bar in the str
     config.speed_max = 1.5;
     config.overlays = OverlayLevel::full;  // the expert level's strip
     if (!std::filesystem::exists(config.font_path)) {
-        MESSAGE("SKIP: no DejaVu Sans at " << config.font_path);
-        return;
+        COLLIDE_SKIP_TEST("no DejaVu Sans at " << config.font_path);
     }
     Renderer renderer(config, Backend::osmesa);
     Snapshot left = test::gas_snapshot(200, 0.015, {1.0, 1.0, Boundary::walls}, 8, 4.0);

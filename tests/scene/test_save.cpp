@@ -68,7 +68,7 @@ TEST_CASE("save: titles and tags with quotes and control characters survive") {
     check_same_discs(scene, back);
 }
 
-TEST_CASE("save: files by extension, through a temporary file; errors leave nothing behind") {
+TEST_CASE("save: files by extension, through a temporary file, errors leave nothing behind") {
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / "collide_test_save";
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);

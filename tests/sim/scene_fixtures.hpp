@@ -69,7 +69,7 @@ inline std::filesystem::path algs4_dir() {
 }
 
 /// Reads and validates an algs4 file from ../shared/data/algs4; std::nullopt when it is absent
-/// (tests then skip).
+/// (tests then skip with COLLIDE_SKIP_TEST, support/skip.hpp).
 inline std::optional<Scene> read_algs4(const std::string& name) {
     const std::filesystem::path path = algs4_dir() / name;
     if (!std::filesystem::exists(path)) return std::nullopt;

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <string>
 
+#include "../support/skip.hpp"
 #include "collide/error.hpp"
 #include "collide/sim/algs4.hpp"
 
@@ -158,8 +159,7 @@ TEST_CASE("algs4: read_algs4_file validates and names the scene after the file")
 TEST_CASE("algs4: the course's 25 files load, or are rejected for the right reason") {
     const std::filesystem::path dir = std::filesystem::path(COLLIDE_SHARED_DIR) / "data" / "algs4";
     if (!std::filesystem::is_directory(dir)) {
-        MESSAGE("skipped: " << dir << " is absent");
-        return;
+        COLLIDE_SKIP_TEST(dir << " is absent");
     }
     int loaded = 0;
     int rejected = 0;

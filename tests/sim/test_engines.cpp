@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "../support/skip.hpp"
 #include "collide/error.hpp"
 #include "collide/sim/classic_engine.hpp"
 #include "collide/sim/engine.hpp"
@@ -426,8 +427,8 @@ TEST_CASE("queue statistics: the fast engine pops no more stale events than it h
 TEST_CASE("p10.txt: both engines agree and never run time backwards") {
     const auto scene = collide::test::read_algs4("p10.txt");
     if (!scene) {
-        MESSAGE("skipped: ../shared/data/algs4/p10.txt not present");
-        return;
+        COLLIDE_SKIP_TEST(collide::test::algs4_dir() / "p10.txt"
+                          << " is absent");
     }
     auto classic = engine_named("classic", *scene);
     auto fast = engine_named("fast", *scene);

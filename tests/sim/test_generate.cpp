@@ -37,7 +37,7 @@ Vec2 momentum(const Scene& s) {
 
 }  // namespace
 
-TEST_CASE("generate: same seed, same scene; another seed, another scene") {
+TEST_CASE("generate: same seed, same scene, another seed, another scene") {
     for (double eta : {0.3, 0.7}) {
         GenerateSpec g;
         g.packing_fraction = eta;

@@ -1,6 +1,7 @@
 // The teaching trace behind `collide pq`: parsing the operations and the lecture's table.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -120,10 +121,66 @@ TEST_CASE("removing from an empty queue is an input error naming the token") {
     }
 }
 
-TEST_CASE("white space of any kind separates tokens; '*' needs no neighbours") {
+TEST_CASE("white space of any kind separates tokens, '*' needs no neighbours") {
     const auto ops = parse_trace_ops("\tP\nQ  *  ");
     REQUIRE(ops.size() == 3);
     CHECK(ops[2].remove);
     CHECK(ops[2].token == 3);
     CHECK(ops[1].spelling == "Q");
+}
+
+TEST_CASE("for_each_trace_row streams run_trace's rows, each array cut to its first entries") {
+    // Four inserts, one removal, 40 times: the queue grows to 121 items, arrays beyond 5 are cut.
+    std::string spaced;
+    for (int i = 0; i < 200; ++i)
+        spaced += i % 5 == 4 ? "* " : std::string(1, char('A' + (i * 7) % 26)) + " ";
+    const auto ops = parse_trace_ops(spaced);
+    const std::vector<QueueKind> kinds = default_trace_queues();
+    const Trace full = run_trace(ops, Orientation::max, kinds);
+    std::size_t seen = 0;
+    for_each_trace_row(ops, Orientation::max, kinds, 5, [&](const TraceRow& row) {
+        REQUIRE(seen < full.rows.size());
+        const TraceRow& expected = full.rows[seen++];
+        CHECK(row.operation == expected.operation);
+        CHECK(row.argument == expected.argument);
+        CHECK(row.returned == expected.returned);
+        CHECK(row.size == expected.size);
+        REQUIRE(row.contents.size() == kinds.size());
+        for (std::size_t q = 0; q < kinds.size(); ++q) {
+            const auto& all = expected.contents[q];
+            REQUIRE(all.size() == row.size);
+            const std::size_t shown = std::min<std::size_t>(5, all.size());
+            CHECK(row.contents[q] == std::vector<std::string>(all.begin(), all.begin() + shown));
+        }
+    });
+    CHECK(seen == ops.size());
+    CHECK(peak_trace_size(ops) == 121);
+}
+
+TEST_CASE("an input error in the trace comes before the first row") {
+    const auto ops = parse_trace_ops("A B * * *");
+    const std::vector<QueueKind> kinds = default_trace_queues();
+    std::size_t rows = 0;
+    try {
+        for_each_trace_row(ops, Orientation::min, kinds, all_trace_entries,
+                           [&rows](const TraceRow&) { ++rows; });
+        FAIL("no error");
+    } catch (const collide::Error& e) {
+        CHECK(e.kind() == collide::ErrorKind::input);
+        CHECK(std::string(e.what()) == "--ops: token 5 '*': removes from an empty queue");
+    }
+    CHECK(rows == 0);
+}
+
+TEST_CASE("a trace is at most max_trace_operations operations with words of bounded length") {
+    std::string at_limit;
+    for (std::size_t i = 0; i < max_trace_operations; ++i) at_limit += "A ";
+    CHECK(parse_trace_ops(at_limit).size() == max_trace_operations);
+    CHECK(parse_error(at_limit + "*") ==
+          "--ops: 10001 operations; at most 10000 (a trace is a table to read, one row per "
+          "operation)");
+    const std::string longest(max_trace_key_length, 'x');
+    CHECK(parse_trace_ops("A " + longest).back().key.word == longest);
+    CHECK(parse_error("A " + longest + "y") ==
+          "--ops: token 2 '" + longest + "...': a word of 33 letters; at most 32");
 }

@@ -145,7 +145,7 @@ TEST_CASE("validation: long lists of problems are cut short") {
     CHECK(contains(msg, "and 15 more"));
 }
 
-TEST_CASE("validation: overlaps name the pair; contacts are fine") {
+TEST_CASE("validation: overlaps name the pair, contacts are fine") {
     Scene s;
     s.discs = {disc(0.2, 0.5, 0.1), disc(0.4, 0.5, 0.1), disc(0.59, 0.5, 0.1)};
     SceneOrigin origin;

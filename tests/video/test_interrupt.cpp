@@ -33,7 +33,7 @@ TEST_CASE("SIGTERM too, and a new guard starts clear") {
     CHECK(guard.signal_number() == SIGTERM);
 }
 
-TEST_CASE("only one guard at a time; the previous handler comes back afterwards") {
+TEST_CASE("only one guard at a time, the previous handler comes back afterwards") {
     struct sigaction before {};
     sigaction(SIGINT, nullptr, &before);
     {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "../support/skip.hpp"
 #include "collide/error.hpp"
 #include "collide/video/video_writer.hpp"
 #include "frame_sink.hpp"
@@ -179,8 +180,7 @@ TEST_CASE("preset and CRF change the encoding: lower CRF gives a bigger, better 
 
 TEST_CASE("HEVC MP4 round trip when libx265 is available") {
     if (!has_encoder("libx265")) {
-        MESSAGE("libx265 missing: skipped");
-        return;
+        COLLIDE_SKIP_TEST("this FFmpeg has no libx265");
     }
     ScratchDirectory dir;
     VideoOptions options = mp4_options(dir / "clip.mp4", 160, 90);
@@ -195,8 +195,7 @@ TEST_CASE("HEVC MP4 round trip when libx265 is available") {
 
 TEST_CASE("AV1 MP4 round trip when libsvtav1 is available") {
     if (!has_encoder("libsvtav1")) {
-        MESSAGE("libsvtav1 missing: skipped");
-        return;
+        COLLIDE_SKIP_TEST("this FFmpeg has no libsvtav1");
     }
     ScratchDirectory dir;
     VideoOptions options = mp4_options(dir / "clip.mp4", 160, 96);

@@ -1,8 +1,11 @@
 #include "collide/sim/pq/trace.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <functional>
+#include <iterator>
+#include <memory>
 #include <set>
 #include <system_error>
 #include <utility>
@@ -40,6 +43,12 @@ bool is_integer(std::string_view s) {
 TraceKey key_from(std::string_view spelling, std::string_view option, std::size_t token) {
     TraceKey key;
     if (is_word(spelling)) {
+        if (spelling.size() > max_trace_key_length) {
+            reject_token(option, token,
+                         std::string(spelling.substr(0, max_trace_key_length)) + "...",
+                         "a word of " + std::to_string(spelling.size()) + " letters; at most " +
+                             std::to_string(max_trace_key_length));
+        }
         key.word = std::string(spelling);
         return key;
     }
@@ -71,60 +80,78 @@ std::vector<std::string_view> split_tokens(std::string_view text) {
     return tokens;
 }
 
-std::vector<std::string> texts_of(const auto& keys) {
-    std::vector<std::string> out;
-    out.reserve(keys.size());
-    for (const TraceKey& k : keys) out.push_back(k.text());
-    return out;
-}
+/// One implementation of the trace behind a common interface, so that every queue can take
+/// each operation in turn (the table is produced row by row, not column by column).
+class TraceQueue {
+  public:
+    TraceQueue() = default;
+    virtual ~TraceQueue() = default;
+    TraceQueue(const TraceQueue&) = delete;
+    TraceQueue& operator=(const TraceQueue&) = delete;
 
-/// The reference model's view of the trace: operation, argument, return value and size.
-std::vector<TraceRow> model_rows(std::span<const TraceOp> ops, Orientation orientation,
-                                 std::string_view option) {
-    std::multiset<TraceKey> model;
-    std::vector<TraceRow> rows;
-    rows.reserve(ops.size());
-    for (const TraceOp& op : ops) {
-        TraceRow row;
-        if (op.remove) {
-            row.operation = orientation == Orientation::max ? "remove max" : "remove min";
-            if (model.empty())
-                reject_token(option, op.token, op.spelling, "removes from an empty queue");
-            const auto next =
-                orientation == Orientation::max ? std::prev(model.end()) : model.begin();
-            row.returned = next->text();
-            model.erase(next);
-        } else {
-            row.operation = "insert";
-            row.argument = op.key.text();
-            model.insert(op.key);
-        }
-        row.size = model.size();
-        rows.push_back(std::move(row));
+    virtual void push(const TraceKey& key) = 0;
+    virtual TraceKey pop() = 0;
+    /// Replaces `out` with the text of the array's first `count` entries (fewer if it is shorter).
+    virtual void first_entries(std::size_t count, std::vector<std::string>& out) const = 0;
+};
+
+template <class Q>
+class TraceQueueOf final : public TraceQueue {
+  public:
+    explicit TraceQueueOf(Q queue) : queue_(std::move(queue)) {}
+
+    void push(const TraceKey& key) override { queue_.push(key); }
+    TraceKey pop() override { return queue_.pop(); }
+    void first_entries(std::size_t count, std::vector<std::string>& out) const override {
+        out.clear();
+        const std::size_t shown = std::min(count, queue_.size());
+        for (std::size_t i = 0; i < shown; ++i) out.push_back(entry(i).text());
     }
-    return rows;
+
+  private:
+    /// The array's entry i without copying the array (the indexed queue's array() builds one).
+    const TraceKey& entry(std::size_t i) const {
+        if constexpr (requires { queue_.heap().key_at(i); }) {
+            return queue_.heap().key_at(i);
+        } else {
+            return queue_.array()[i];
+        }
+    }
+
+    Q queue_;
+};
+
+template <Orientation O>
+std::unique_ptr<TraceQueue> make_trace_queue(const QueueKind& kind) {
+    return with_queue<TraceKey, O, std::less<TraceKey>>(
+        kind, [](auto queue) -> std::unique_ptr<TraceQueue> {
+            return std::make_unique<TraceQueueOf<decltype(queue)>>(std::move(queue));
+        });
 }
 
-/// Runs the operations on one queue, appending its array to every row's contents and checking
-/// each removal against the model's.
-template <Orientation O>
-void add_queue_column(const QueueKind& kind, std::span<const TraceOp> ops,
-                      std::vector<TraceRow>& rows) {
-    with_queue<TraceKey, O, std::less<TraceKey>>(kind, [&](auto q) {
-        for (std::size_t i = 0; i < ops.size(); ++i) {
-            if (ops[i].remove) {
-                const std::string got = q.pop().text();
-                if (got != rows[i].returned) {
-                    throw_runtime_error("pq trace: " + to_string(kind) + " returned '" + got +
-                                        "' at token " + std::to_string(ops[i].token) +
-                                        ", expected '" + rows[i].returned + "'");
-                }
-            } else {
-                q.push(ops[i].key);
-            }
-            rows[i].contents.push_back(texts_of(q.array()));
+std::vector<std::unique_ptr<TraceQueue>> make_trace_queues(std::span<const QueueKind> kinds,
+                                                           Orientation orientation) {
+    std::vector<std::unique_ptr<TraceQueue>> queues;
+    for (const QueueKind& kind : kinds) {
+        queues.push_back(orientation == Orientation::max
+                             ? make_trace_queue<Orientation::max>(kind)
+                             : make_trace_queue<Orientation::min>(kind));
+    }
+    return queues;
+}
+
+/// Removes from every queue, checking each against the model's answer (a mismatch is a bug).
+void remove_from_all(std::span<const std::unique_ptr<TraceQueue>> queues,
+                     std::span<const QueueKind> kinds, const TraceOp& op,
+                     const std::string& expected) {
+    for (std::size_t q = 0; q < queues.size(); ++q) {
+        const std::string got = queues[q]->pop().text();
+        if (got != expected) {
+            throw_runtime_error("pq trace: " + to_string(kinds[q]) + " returned '" + got +
+                                "' at token " + std::to_string(op.token) + ", expected '" +
+                                expected + "'");
         }
-    });
+    }
 }
 
 }  // namespace
@@ -133,6 +160,11 @@ std::vector<TraceOp> parse_trace_ops(std::string_view ops, std::string_view opti
     const std::vector<std::string_view> tokens = split_tokens(ops);
     if (tokens.empty())
         throw_input_error(std::string(option) + ": no operations given (e.g. \"P Q E * X\")");
+    if (tokens.size() > max_trace_operations) {
+        throw_input_error(std::string(option) + ": " + std::to_string(tokens.size()) +
+                          " operations; at most " + std::to_string(max_trace_operations) +
+                          " (a trace is a table to read, one row per operation)");
+    }
     std::vector<TraceOp> out;
     out.reserve(tokens.size());
     std::size_t first_key = tokens.size();  // index in `out` of the first key; none yet
@@ -170,18 +202,60 @@ std::vector<QueueKind> default_trace_queues() {
             {QueueFamily::indexed, default_indexed_arity}};
 }
 
+std::size_t peak_trace_size(std::span<const TraceOp> ops, std::string_view option) {
+    std::size_t size = 0;
+    std::size_t peak = 0;
+    for (const TraceOp& op : ops) {
+        if (!op.remove) {
+            peak = std::max(peak, ++size);
+        } else if (size == 0) {
+            reject_token(option, op.token, op.spelling, "removes from an empty queue");
+        } else {
+            --size;
+        }
+    }
+    return peak;
+}
+
+void for_each_trace_row(std::span<const TraceOp> ops, Orientation orientation,
+                        std::span<const QueueKind> queues, std::size_t max_entries,
+                        const TraceVisitor& visit, std::string_view option) {
+    (void)peak_trace_size(ops, option);  // input errors before the first row
+    const std::vector<std::unique_ptr<TraceQueue>> columns = make_trace_queues(queues, orientation);
+    std::multiset<TraceKey> model;  // the reference: what comes out next, and the size
+    TraceRow row;
+    row.contents.resize(queues.size());
+    for (const TraceOp& op : ops) {
+        row.argument.clear();
+        row.returned.clear();
+        if (op.remove) {
+            row.operation = orientation == Orientation::max ? "remove max" : "remove min";
+            const auto next =
+                orientation == Orientation::max ? std::prev(model.end()) : model.begin();
+            row.returned = next->text();
+            model.erase(next);
+            remove_from_all(columns, queues, op, row.returned);
+        } else {
+            row.operation = "insert";
+            row.argument = op.key.text();
+            model.insert(op.key);
+            for (const auto& column : columns) column->push(op.key);
+        }
+        row.size = model.size();
+        for (std::size_t q = 0; q < columns.size(); ++q)
+            columns[q]->first_entries(max_entries, row.contents[q]);
+        visit(row);
+    }
+}
+
 Trace run_trace(std::span<const TraceOp> ops, Orientation orientation,
                 std::span<const QueueKind> queues, std::string_view option) {
     Trace trace;
     trace.queues.assign(queues.begin(), queues.end());
-    trace.rows = model_rows(ops, orientation, option);
-    for (const QueueKind& kind : queues) {
-        if (orientation == Orientation::max) {
-            add_queue_column<Orientation::max>(kind, ops, trace.rows);
-        } else {
-            add_queue_column<Orientation::min>(kind, ops, trace.rows);
-        }
-    }
+    trace.rows.reserve(ops.size());
+    for_each_trace_row(
+        ops, orientation, queues, all_trace_entries,
+        [&trace](const TraceRow& row) { trace.rows.push_back(row); }, option);
     return trace;
 }
 

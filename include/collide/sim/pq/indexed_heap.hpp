@@ -151,6 +151,10 @@ class IndexedDaryHeap {
         validate();
     }
 
+    /// The key at position i of the heap array (0 comes out next), for traces that show only
+    /// the first entries: O(1), unlike array(). Precondition: i < size().
+    [[nodiscard]] const Key& key_at(std::size_t i) const noexcept { return at(i); }
+
     /// Handles in heap-array order, for traces and tests. O(N): builds a copy.
     [[nodiscard]] std::vector<handle_type> array() const {
         std::vector<handle_type> out(size());
