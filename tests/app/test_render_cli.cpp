@@ -261,7 +261,7 @@ TEST_CASE("render: -q l and -q m simulate the same systems (the preset never cha
     CHECK(counts[0] == counts[1]);
 }
 
-TEST_CASE("thumbnail --layout-json writes the rectangles; lesson text is at least 2.8 % high") {
+TEST_CASE("thumbnail --layout-json writes the rectangles, with lesson text at least 2.8 % high") {
     TempDir dir("layout");
     const fs::path json = dir.path / "layout.json";
     const auto r = run_collide("thumbnail tunnelling --at 1 --size 1280x720 -o " +

@@ -230,7 +230,7 @@ TEST_CASE("the default dt comes from the scene, never from the preset or the fra
     CHECK(step_note(0.01, 0.02).empty());
 }
 
-TEST_CASE("captions follow the scene's schedule; the intro card fades out after ~2 s") {
+TEST_CASE("captions follow the scene's schedule, and the intro card fades out after ~2 s") {
     Scene scene = two_disc_scene(0.2);
     scene.title = "Two discs";
     scene.description = "They meet in the middle";

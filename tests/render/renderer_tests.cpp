@@ -7,6 +7,7 @@
 #include <numbers>
 #include <string>
 
+#include "../support/skip.hpp"
 #include "collide/error.hpp"
 #include "layout.hpp"
 #include "render_fixtures.hpp"
@@ -313,7 +314,9 @@ LessonFrame render_lesson(const Snapshot& snapshot, Theme theme = Theme::dark) {
 }
 
 TEST_CASE("lesson: a disc without 3:1 contrast against the box gets an outline") {
-    if (!std::filesystem::exists(RenderConfig{}.font_path)) return;
+    if (!std::filesystem::exists(RenderConfig{}.font_path)) {
+        COLLIDE_SKIP_TEST("no DejaVu Sans at " << RenderConfig{}.font_path);
+    }
     for (const Theme theme : {Theme::dark, Theme::light}) {
         const Rgb8 faint = theme == Theme::dark ? Rgb8{32, 32, 32} : Rgb8{245, 245, 245};
         const Rgb8 clear = theme == Theme::dark ? Rgb8{240, 240, 240} : Rgb8{20, 20, 20};
@@ -340,8 +343,11 @@ TEST_CASE("lesson: a disc without 3:1 contrast against the box gets an outline")
 }
 
 TEST_CASE(
-    "lesson: escaped discs stay out of the picture; a marker in the failure colour at the edge") {
-    if (!std::filesystem::exists(RenderConfig{}.font_path)) return;
+    "lesson: escaped discs stay out of the picture, with a marker in the failure colour at the "
+    "edge") {
+    if (!std::filesystem::exists(RenderConfig{}.font_path)) {
+        COLLIDE_SKIP_TEST("no DejaVu Sans at " << RenderConfig{}.font_path);
+    }
     Snapshot s = empty_snapshot({10.0, 10.0, Boundary::walls});
     DiscState gone = disc_at({-40.0, 5.0}, 0.5, green);  // far outside, left
     gone.escaped = true;
