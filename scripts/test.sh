@@ -2,7 +2,9 @@
 # The README's second command: install what is missing, build, run every test through ctest.
 #  1. a sim-only build (no GL, no libav: proves the simulation library stands alone), under
 #     AddressSanitizer + UBSan with the heavy invariant checks on, running the unit tests;
-#  2. the full sanitizer build, running the other modules' `unit` tests;
+#  2. the full sanitizer build, running the other modules' `unit` tests and the CLI option matrix
+#     (label `cli-matrix`: the sanitized `collide` over many bad and extreme option sets, so that
+#     UBSan, which never recovers here, checks the command line's paths, not just the libraries);
 #  3. the full RelWithDebInfo build, running the whole suite, including the long physics runs
 #     (label `slow`) and the end-to-end CLI tests (label `e2e`); ctest's summary line comes last.
 # With CI=true warnings are errors.
@@ -25,7 +27,8 @@ ctest --test-dir build/sim-asan -L unit --output-on-failure -j "$jobs"
 echo "==> [2/3] full build with sanitizers (build/asan)"
 cmake -S . -B build/asan "${common[@]}" -DCMAKE_BUILD_TYPE=Debug -DCOLLIDE_SANITIZE=ON >/dev/null
 cmake --build build/asan -j "$jobs"
-ctest --test-dir build/asan -L unit -E "^collide_sim_tests:" --output-on-failure -j "$jobs"
+ctest --test-dir build/asan -L 'unit|cli-matrix' -E "^collide_sim_tests:" --output-on-failure \
+      -j "$jobs"
 
 echo "==> [3/3] full build (build/test), every test"
 cmake -S . -B build/test "${common[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null

@@ -36,6 +36,11 @@ struct RenderHints {
     std::optional<double> duration;        ///< seconds of video
     std::optional<double> speed;           ///< simulation time units per second of video
     std::optional<double> dt;              ///< time-driven quantum
+    /// Where each numeric hint was written, "file:line: render.dt", so that a hint the CLI
+    /// refuses (too long, too much work) is named where the user can fix it; empty = unknown.
+    std::string duration_at;
+    std::string speed_at;
+    std::string dt_at;
 };
 
 struct Scene {

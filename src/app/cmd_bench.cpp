@@ -12,6 +12,7 @@
 #include <numbers>
 #include <string>
 
+#include "cli_numbers.hpp"
 #include "collide/error.hpp"
 #include "collide/scene/load.hpp"
 #include "collide/sim/engine.hpp"
@@ -19,6 +20,7 @@
 #include "collide/sim/scene_check.hpp"
 #include "commands.hpp"
 #include "measurements_report.hpp"
+#include "work_limits.hpp"
 
 namespace collide::app {
 
@@ -26,6 +28,9 @@ namespace {
 
 /// The fast engine's limit (30-bit disc indices), rounded down.
 constexpr double max_discs = 1e9;
+/// Collision counts are converted to uint64 and counted one by one: 10^15 is exact in both and
+/// far beyond any run (years of computing).
+constexpr double max_counted = 1e15;
 
 struct BenchOptions {
     std::string scene;  ///< empty: random periodic fluid
@@ -36,6 +41,7 @@ struct BenchOptions {
     std::uint64_t seed = 1;
     EngineOptions engine;
     bool json = false;
+    bool no_limits = false;
 
     void validate() const {
         if (scene.empty()) {
@@ -47,10 +53,21 @@ struct BenchOptions {
             if (!(eta > 0.0 && eta <= 0.85))
                 throw_input_error("--eta", 0, "", "packing fraction must lie in (0, 0.85]");
         }
-        if (!(collisions >= 1.0) || !std::isfinite(collisions)) {
-            throw_input_error("--collisions", 0, "", "must be a finite number >= 1");
+        if (!(collisions >= 1.0 && collisions <= max_counted)) {
+            throw_input_error("--collisions", 0, "",
+                              fmt::format("must be a number from 1 to {:g}", max_counted));
         }
-        if (!std::isfinite(warmup)) throw_input_error("--warmup", 0, "", "must be finite");
+        if (!(warmup <= max_counted) || !std::isfinite(warmup))
+            throw_input_error("--warmup", 0, "",
+                              fmt::format("must be a number up to {:g}", max_counted));
+        const double total = collisions + std::max(0.0, warmup);
+        if (!no_limits && total > WorkLimits{}.events) {
+            throw_input_error(
+                "--collisions", 0, "",
+                fmt::format("{:g} collisions (with the warm-up) is over the limit of {:g} (about "
+                            "an hour); ask for fewer, or pass {} to run it anyway",
+                            total, WorkLimits{}.events, insist_option));
+        }
         engine.validate();
         if (engine.engine == "time")
             throw_input_error("--engine", 0, "", "bench engine measures event-driven engines");
@@ -191,10 +208,12 @@ void add_bench_command(CLI::App& root) {
     cmd->add_option("--eta", options->eta, "Packing fraction of the random fluid (default 0.5)");
     cmd->add_option("--collisions", options->collisions, "Collisions timed (default 5e6)");
     cmd->add_option("--warmup", options->warmup, "Collisions before timing (default: 2 per disc)");
-    cmd->add_option("--seed", options->seed, "Seed of the random fluid");
+    add_whole_option(*cmd, "--seed", options->seed, 0, UINT64_MAX, "Seed of the random fluid");
     cmd->add_option("--engine", options->engine.engine, "fast (default) or classic");
     cmd->add_option("--pq", options->engine.pq, "Classic engine's queue");
     cmd->add_flag("--json", options->json, "Print JSON");
+    cmd->add_flag(insist_option, options->no_limits,
+                  "Time even more than 10^10 collisions (docs/limits.md)");
     cmd->callback([options] { run_bench(*options); });
 }
 

@@ -6,10 +6,13 @@
 #include <memory>
 #include <string>
 
+#include "collide/error.hpp"
 #include "collide/scene/load.hpp"
 #include "collide/scene/save.hpp"
 #include "collide/sim/scene_check.hpp"
 #include "commands.hpp"
+#include "interrupt.hpp"
+#include "work_limits.hpp"
 
 namespace collide::app {
 
@@ -29,7 +32,18 @@ void add_check_command(CLI::App& root) {
                     "box with walls only)");
     cmd->callback([options] {
         const Scene scene = load_scene(options->scene);  // validates; throws Error(input) -> exit 2
-        if (!options->export_path.empty()) save_scene(scene, options->export_path);
+        check_scene_hints(scene);  // what `collide render SCENE` would refuse in the hints
+        if (!options->export_path.empty()) {
+            // A signal while the file is written leaves nothing at the destination, not even a
+            // temporary: the guard turns it into a flag save_scene checks before the rename.
+            InterruptGuard interrupts;
+            try {
+                save_scene(scene, options->export_path, &interrupts.flag());
+            } catch (const Error&) {
+                interrupts.throw_if_requested();
+                throw;
+            }
+        }
         std::printf("ok: %s: %s\n", options->scene.c_str(), scene_summary(scene).c_str());
         if (!options->export_path.empty()) std::printf("wrote %s\n", options->export_path.c_str());
     });

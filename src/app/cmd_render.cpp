@@ -12,7 +12,9 @@
 #include <string>
 #include <system_error>
 
+#include "cli_numbers.hpp"
 #include "collide/error.hpp"
+#include "collide/io/file.hpp"
 #include "collide/scene/load.hpp"
 #include "collide/video/output.hpp"
 #include "collide/video/video_writer.hpp"
@@ -21,6 +23,7 @@
 #include "pipeline.hpp"
 #include "progress.hpp"
 #include "render_plan.hpp"
+#include "work_limits.hpp"
 
 namespace collide::app {
 
@@ -52,6 +55,7 @@ struct CliValues {
     std::string progress = "auto";
     std::string dump_rgba;
     bool verbose = false;
+    bool no_limits = false;
     std::uint64_t seed = 0;
     CLI::Option* seed_opt = nullptr;
 
@@ -101,14 +105,15 @@ RenderRequest request_of(const CliValues& v, bool still) {
     r.format = if_given(v.format_opt, v.format);
     r.last_frame = v.last_frame;
     r.still = still;
+    r.no_limits = v.no_limits;
     return r;
 }
 
 /// The options `render` and `thumbnail` share.
 void add_shared_options(CLI::App& cmd, CliValues& v) {
-    v.seed_opt = cmd.add_option("--seed", v.seed,
-                                "Seed for the scene's random discs ([[generate]] block i gets N + "
-                                "i; default: the scene's)");
+    v.seed_opt = add_whole_option(cmd, "--seed", v.seed, 0, UINT64_MAX,
+                                  "Seed for the scene's random discs ([[generate]] block i gets "
+                                  "N + i; default: the scene's)");
     cmd.add_option("scene", v.scene,
                    "Scene: a built-in name (see `collide scenes`), a .toml or an algs4 .txt file")
         ->required();
@@ -120,7 +125,8 @@ void add_shared_options(CLI::App& cmd, CliValues& v) {
         cmd.add_option("-q,--quality", v.quality,
                        "l 854x480@15, m 1280x720@30 (default), h 1920x1080@60, k 3840x2160@60");
     v.size_opt = cmd.add_option("--size", v.size, "Frame size WxH, overrides -q (e.g. 640x360)");
-    v.fps_opt = cmd.add_option("--fps", v.fps, "Frames per second, overrides -q");
+    v.fps_opt =
+        add_whole_option(cmd, "--fps", v.fps, 1, max_fps, "Frames per second, overrides -q");
     v.duration_opt =
         cmd.add_option("--duration", v.duration, "Seconds of video (default: scene hint, else 10)");
     v.speed_opt = cmd.add_option(
@@ -156,18 +162,9 @@ void add_shared_options(CLI::App& cmd, CliValues& v) {
                    "Progress on stderr: auto (bar on a terminal), bar, json or none")
         ->capture_default_str();
     cmd.add_flag("--verbose", v.verbose, "Show the encoder's own log");
-}
-
-/// Writes `text` to `path` whole or not at all (temporary beside it, then rename).
-void write_text_file(const std::filesystem::path& path, const std::string& text) {
-    video::TemporaryOutput temporary(path, video::TemporaryOutput::Kind::file);
-    std::FILE* file = std::fopen(temporary.path().c_str(), "wb");
-    if (file == nullptr) throw_runtime_error("cannot write '" + path.string() + "'");
-    const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
-    if (std::fclose(file) != 0 || !written) {
-        throw_runtime_error("cannot write '" + path.string() + "'");
-    }
-    temporary.commit();
+    cmd.add_flag(insist_option, v.no_limits,
+                 "Run even when the estimated work (collisions and cell crossings, time-driven "
+                 "steps and checks, frames) is beyond the limits of docs/limits.md");
 }
 
 void print_notice(const std::string& line) {
@@ -177,12 +174,12 @@ void print_notice(const std::string& line) {
 /// Everything that can be wrong with the request, found before any frame is drawn.
 RenderPlan validated_plan(const RenderRequest& request, const Scene& scene) {
     RenderPlan plan = plan_render(request, scene);
+    check_render_work(plan, request, scene);
     // The default directory is ours to create; a user-given one must exist already.
     if (plan.default_output) std::filesystem::create_directories(plan.output.parent_path());
     const bool directory =
         plan.kind == OutputKind::video && plan.format == video::VideoFormat::png_sequence;
     video::check_output_writable(plan.output, directory);
-    if (!plan.layout_json.empty()) video::check_output_writable(plan.layout_json);
     return plan;
 }
 
@@ -255,6 +252,11 @@ void run(const CliValues& values, bool still) {
     const RenderPlan plan = validated_plan(request, scene);
     video::set_libav_verbose(values.verbose);
     for (const std::string& line : plan.notices) print_notice(line);
+    // Its temporary exists from here on, so an unwritable path fails before any frame.
+    std::optional<io::OutputFile> layout_file;
+    if (!plan.layout_json.empty()) {
+        layout_file.emplace(plan.layout_json, io::OutputOptions{"--layout-json", true});
+    }
 
     InterruptGuard interrupts;
     Progress progress(progress_mode, plan.clock.count);
@@ -270,10 +272,14 @@ void run(const CliValues& values, bool still) {
                                                 : render_video(scene, plan, hooks);
     } catch (...) {
         progress.finish();
+        interrupts.throw_if_requested();  // whatever noticed it first: one wording, the signal
         throw;
     }
     progress.finish();
-    if (!plan.layout_json.empty()) write_text_file(plan.layout_json, result.layout_json);
+    if (layout_file) {
+        layout_file->write(result.layout_json);
+        layout_file->commit();
+    }
     for (const std::string& line : result.notices) print_notice(line);
     print_summary(plan, result, progress.elapsed_seconds());
 }

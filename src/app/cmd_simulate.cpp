@@ -2,22 +2,22 @@
 /// measurements (text or JSON), optionally logging every collision as CSV `t,kind,a,b`.
 
 #include <fmt/core.h>
-#include <unistd.h>
 
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
-#include <system_error>
+#include <string_view>
 
 #include "collide/error.hpp"
+#include "collide/io/file.hpp"
 #include "collide/scene/load.hpp"
 #include "collide/sim/engine.hpp"
 #include "commands.hpp"
 #include "interrupt.hpp"
 #include "measurements_report.hpp"
+#include "work_limits.hpp"
 
 namespace collide::app {
 
@@ -29,6 +29,7 @@ struct SimulateOptions {
     EngineOptions engine;
     std::string events_log;  ///< empty: no log
     bool json = false;
+    bool no_limits = false;  ///< --no-limits: run even beyond the work limits
 
     /// Throws Error(input) naming the bad option.
     void validate() const {
@@ -39,60 +40,38 @@ struct SimulateOptions {
     }
 };
 
-/// A file that appears at its destination only when finished: lines go to a temporary file
-/// beside it, finish() flushes, closes and renames. Dropped unfinished (an error on the way), the
-/// temporary is removed and the destination is untouched.
-class AtomicTextFile {
+/// The events log: lines buffered in memory and written through an io::OutputFile (a temporary
+/// beside the destination until finish(); standard output for "-"), so that a run that fails or
+/// is interrupted leaves nothing at the destination.
+class EventsLog {
   public:
-    /// Opens the temporary file. Throws Error(input) naming `option` when it cannot be created.
-    AtomicTextFile(std::filesystem::path destination, const std::string& option)
-        : destination_(std::move(destination)), temporary_(destination_) {
-        // The process id keeps two runs (or a user's own *.tmp file) from sharing the temporary.
-        temporary_ += ".tmp-" + std::to_string(getpid());
-        if (std::filesystem::is_directory(destination_)) {
-            throw_input_error(option, 0, "", "'" + destination_.string() + "' is a directory");
-        }
-        file_ = std::fopen(temporary_.c_str(), "wb");
-        if (file_ == nullptr) {
-            throw_input_error(option, 0, "",
-                              "cannot write '" + destination_.string() + "': " +
-                                  std::error_code(errno, std::generic_category()).message());
-        }
-    }
-    AtomicTextFile(const AtomicTextFile&) = delete;
-    AtomicTextFile& operator=(const AtomicTextFile&) = delete;
-    ~AtomicTextFile() {
-        if (file_ != nullptr) {
-            std::fclose(file_);
-            std::error_code ignored;
-            std::filesystem::remove(temporary_, ignored);
-        }
+    /// Throws Error(input) naming --events-log when the destination cannot be written.
+    explicit EventsLog(const std::string& destination)
+        : file_(destination, io::OutputOptions{"--events-log", true}) {
+        buffer_.reserve(flush_bytes);
     }
 
-    void write(const std::string& text) { std::fwrite(text.data(), 1, text.size(), file_); }
+    void write(std::string_view text) {
+        buffer_.append(text);
+        if (buffer_.size() >= flush_bytes) flush();
+    }
 
-    /// Flushes, closes and moves the file into place. Throws Error(runtime) on a write failure.
+    /// Writes what is buffered and moves the file into place. Throws Error(runtime) on failure.
     void finish() {
-        const bool write_failed = std::ferror(file_) != 0;
-        const bool close_failed = std::fclose(file_) != 0;
-        file_ = nullptr;
-        std::error_code ec;
-        if (write_failed || close_failed) {
-            std::filesystem::remove(temporary_, ec);
-            throw_runtime_error("writing '" + destination_.string() + "' failed (disk full?)");
-        }
-        std::filesystem::rename(temporary_, destination_, ec);
-        if (ec) {
-            std::filesystem::remove(temporary_, ec);
-            throw_runtime_error("cannot move the events log into place at '" +
-                                destination_.string() + "'");
-        }
+        flush();
+        file_.commit();
     }
 
   private:
-    std::filesystem::path destination_;
-    std::filesystem::path temporary_;
-    std::FILE* file_ = nullptr;
+    static constexpr std::size_t flush_bytes = 1 << 16;
+
+    void flush() {
+        file_.write(buffer_);
+        buffer_.clear();
+    }
+
+    io::OutputFile file_;
+    std::string buffer_;
 };
 
 const char* kind_name(CollisionKind kind) {
@@ -112,10 +91,11 @@ void run_simulate(const SimulateOptions& options) {
     // Ctrl-C stops the run cleanly (the events log's temporary is removed) however long it is.
     InterruptGuard interrupts;
     const Scene scene = load_scene(options.scene);
+    check_simulate_work(scene, options.engine, options.until, options.no_limits);
     // Open the log before simulating: an unwritable path fails fast, with nothing half written.
-    std::unique_ptr<AtomicTextFile> log;
+    std::unique_ptr<EventsLog> log;
     if (!options.events_log.empty()) {
-        log = std::make_unique<AtomicTextFile>(options.events_log, "--events-log");
+        log = std::make_unique<EventsLog>(options.events_log);
         log->write("t,kind,a,b\n");
     }
     std::unique_ptr<Engine> engine = make_engine(scene, options.engine);
@@ -160,8 +140,12 @@ void add_simulate_command(CLI::App& root) {
     cmd->add_option("--dt", options->engine.dt, "Time-driven step");
     cmd->add_option("--td-detect", options->engine.td_detect,
                     "Time-driven overlap checks: all-pairs|grid");
-    cmd->add_option("--events-log", options->events_log, "Write every collision as CSV t,kind,a,b");
+    cmd->add_option("--events-log", options->events_log,
+                    "Write every collision as CSV t,kind,a,b (- for standard output)");
     cmd->add_flag("--json", options->json, "Print the measurements as JSON");
+    cmd->add_flag(insist_option, options->no_limits,
+                  "Run even when the estimated work (collisions and cell crossings, time-driven "
+                  "steps and checks) is beyond the limits of docs/limits.md");
     cmd->callback([options] { run_simulate(*options); });
 }
 

@@ -19,6 +19,9 @@ void add_scenes_command(CLI::App& root);
 /// `collide pq`: the lecture's priority-queue trace table (text, CSV or Markdown).
 void add_pq_command(CLI::App& root);
 
+/// `collide heap`: animated priority-queue operations (heaps as trees over their arrays).
+void add_heap_command(CLI::App& root);
+
 /// `collide simulate`: run an engine to a time, print measurements, optionally log collisions.
 void add_simulate_command(CLI::App& root);
 

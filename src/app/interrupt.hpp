@@ -1,16 +1,21 @@
 #pragma once
 /// \file
-/// SIGINT/SIGTERM turned into a flag the frame pipeline polls: the pipeline then throws, stack
-/// unwinding runs the writers' destructors (which delete their temporary outputs), and `main`
-/// exits non-zero with a message. Nothing half-written ever lands at the destination path.
+/// SIGINT, SIGTERM, SIGHUP, SIGQUIT and SIGPIPE turned into a flag the frame pipeline polls: the
+/// pipeline then throws, stack unwinding runs the writers' destructors (which delete their
+/// temporary outputs), and `main` exits 1 with "interrupted by SIGINT; nothing was written".
+/// Nothing half-written ever lands at the destination path (docs/outputs.md).
 
+#include <array>
 #include <atomic>
 #include <csignal>
+#include <string>
 
 namespace collide::app {
 
-/// Installs SIGINT and SIGTERM handlers for its lifetime (restoring the previous ones after).
-/// Each handler fires once: a second Ctrl-C gets the default action and ends the process at once.
+/// Installs handlers for SIGINT, SIGTERM, SIGHUP, SIGQUIT and SIGPIPE for its lifetime
+/// (restoring the previous ones after). The first signal sets the flag; a second one is ignored
+/// (the clean stop is already removing the temporaries); a third (SIGPIPE aside) ends the process
+/// at once with the signal's default action, for a clean stop that hangs.
 /// Only one may be alive at a time (a second one throws Error(runtime)): a signal handler can only
 /// reach static storage, so the flag behind it is the one process-wide variable of the program.
 class InterruptGuard {
@@ -22,16 +27,17 @@ class InterruptGuard {
 
     /// The flag the handlers set; hand it to VideoOptions::cancel and poll it in loops.
     [[nodiscard]] const std::atomic<bool>& flag() const noexcept;
-    /// True once SIGINT or SIGTERM arrived.
+    /// True once one of the signals arrived.
     [[nodiscard]] bool requested() const noexcept;
-    /// The signal that arrived (SIGINT, SIGTERM) or 0.
+    /// The first signal that arrived, or 0.
     [[nodiscard]] int signal_number() const noexcept;
-    /// Throws Error(runtime, "interrupted by SIGINT") when a signal arrived.
+    /// The one wording of an interrupt: "interrupted by SIGINT; nothing was written".
+    [[nodiscard]] std::string message() const;
+    /// Throws Error(runtime, message()) when a signal arrived.
     void throw_if_requested() const;
 
   private:
-    struct sigaction previous_int_ {};
-    struct sigaction previous_term_ {};
+    std::array<struct sigaction, 5> previous_{};
 };
 
 }  // namespace collide::app

@@ -4,7 +4,9 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <string>
+#include <vector>
 
 #include "collide/error.hpp"
 #include "commands.hpp"
@@ -18,6 +20,27 @@ void print_error(const std::string& message) {
     std::fprintf(stderr, "collide: error: %s\n", message.c_str());
 }
 
+/// What to lower when `command` runs out of memory: the sizes that its memory grows with.
+std::string memory_advice(const std::string& command) {
+    if (command == "render" || command == "thumbnail")
+        return "use fewer discs, a smaller frame (-q l or --size), or a shorter --duration";
+    if (command == "simulate") return "use fewer discs, or a shorter --until";
+    if (command == "bench") return "use a smaller --n";
+    if (command == "pq") return "give fewer --ops";
+    return "use fewer discs (the scene's N, or [[generate]] count)";
+}
+
+/// "out of memory while running `collide render`": std::bad_alloc says neither what ran out nor
+/// what to do.
+std::string out_of_memory_message(const CLI::App& root) {
+    const std::vector<CLI::App*> commands = root.get_subcommands();
+    const std::string command = commands.empty() ? std::string() : commands.front()->get_name();
+    std::string message = "out of memory";
+    if (!command.empty()) message += " in `collide " + command + "`";
+    message += ": the run needs more memory than the system would give; " + memory_advice(command);
+    return message;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -29,6 +52,7 @@ int main(int argc, char** argv) {
     collide::app::add_check_command(root);
     collide::app::add_scenes_command(root);
     collide::app::add_pq_command(root);
+    collide::app::add_heap_command(root);
     collide::app::add_render_command(root);
     collide::app::add_thumbnail_command(root);
 
@@ -51,6 +75,9 @@ int main(int argc, char** argv) {
     } catch (const collide::Error& e) {
         print_error(e.what());
         return e.exit_code();
+    } catch (const std::bad_alloc&) {
+        print_error(out_of_memory_message(root));
+        return exit_failure;
     } catch (const std::exception& e) {
         print_error(e.what());
         return exit_failure;

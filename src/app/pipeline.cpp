@@ -6,11 +6,13 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <optional>
 #include <thread>
 #include <utility>
 
 #include "bounded_queue.hpp"
 #include "collide/error.hpp"
+#include "collide/io/file.hpp"
 #include "collide/render/preview.hpp"
 #include "collide/video/png.hpp"
 #include "collide/video/video_writer.hpp"
@@ -77,30 +79,23 @@ class SimulationThread {
     std::thread thread_;  // last: started once everything it uses exists
 };
 
-/// Raw RGBA frames appended to a file (benchmarks only).
+/// Raw RGBA frames appended to a file (benchmarks only), through io::OutputFile like every
+/// output: in place once the video is finished, or a stream ("-", a FIFO, /dev/null).
 class RawDump {
   public:
     explicit RawDump(const std::filesystem::path& path) {
-        if (path.empty()) return;
-        file_ = std::fopen(path.c_str(), "wb");
-        if (file_ == nullptr)
-            throw_input_error(fmt::format("--dump-rgba: cannot create '{}'", path.string()));
+        if (!path.empty()) file_.emplace(path, io::OutputOptions{"--dump-rgba", true});
     }
-    ~RawDump() {
-        if (file_ != nullptr) std::fclose(file_);
-    }
-    RawDump(const RawDump&) = delete;
-    RawDump& operator=(const RawDump&) = delete;
 
     void write(const Image& image) {
-        if (file_ == nullptr) return;
-        if (std::fwrite(image.rgba.data(), 1, image.rgba.size(), file_) != image.rgba.size()) {
-            throw_runtime_error("--dump-rgba: write failed");
-        }
+        if (file_) file_->write(image.rgba.data(), image.rgba.size());
+    }
+    void finish() {
+        if (file_) file_->commit();
     }
 
   private:
-    std::FILE* file_ = nullptr;
+    std::optional<io::OutputFile> file_;
 };
 
 std::string_view title_of(const RenderPlan& plan) {
@@ -347,6 +342,7 @@ PipelineResult render_video(const Scene& scene, const RenderPlan& plan,
     if (result.frames != plan.clock.count)
         throw_runtime_error("rendering stopped before the last frame");
     writer.finish();
+    dump.finish();
     result.notices = writer.notices();
     result.output_width = writer.output_width();
     result.output_height = writer.output_height();

@@ -16,7 +16,10 @@ constexpr auto bar_interval = std::chrono::milliseconds(100);
 constexpr auto json_interval = std::chrono::milliseconds(500);
 
 std::string clock_text(double seconds) {
-    const auto total = static_cast<long long>(std::llround(std::max(0.0, seconds)));
+    // Clamped: an estimate from a first slow frame can be absurd (or inf), and llround of a value
+    // beyond long long is unspecified.
+    const double shown = seconds > 0.0 ? std::min(seconds, 1e12) : 0.0;  // NaN too
+    const auto total = static_cast<long long>(std::llround(shown));
     if (total >= 3600)
         return fmt::format("{}:{:02}:{:02}", total / 3600, total / 60 % 60, total % 60);
     return fmt::format("{}:{:02}", total / 60, total % 60);

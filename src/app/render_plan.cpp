@@ -16,7 +16,6 @@ namespace {
 
 constexpr int min_frame_side = 64;  // the renderer's minimum
 constexpr int max_frame_side = 8192;
-constexpr int max_fps = 240;
 constexpr double max_duration = 3600.0;  // an hour of video is far beyond any lesson
 /// Colour and histogram range in units of the RMS speed: a 2D Maxwell-Boltzmann gas has
 /// P(v > 2.5 v_rms) = exp(-6.25) ~ 0.2 %, so almost every disc gets a distinct colour.
@@ -25,6 +24,9 @@ constexpr double speed_range_in_rms = 2.5;
 /// a frame time: far above rounding (1e-16) and far below anything a viewer could see.
 constexpr double divide_tolerance = 1e-6;
 constexpr double snap_tolerance = 1e-9;
+/// Frames are counted in int64 and their times computed as k * interval: beyond 2^53 neither the
+/// index nor the double k is exact (and an unchecked conversion overflows).
+constexpr double max_countable_frames = 9007199254740992.0;  // 2^53
 
 [[noreturn]] void bad_option(std::string_view option, const std::string& reason) {
     throw_input_error(fmt::format("{}: {}", option, reason));
@@ -62,7 +64,8 @@ int choose_fps(const RenderRequest& request, const QualityPreset& preset) {
 double choose_duration(const RenderRequest& request, const Scene& scene) {
     const bool from_cli = request.duration.has_value();
     const double duration = request.duration.value_or(scene.render.duration.value_or(10.0));
-    const char* option = from_cli ? "--duration" : "scene [render] duration";
+    const std::string option =
+        from_cli ? std::string("--duration") : hint_option(scene.render.duration_at, "duration");
     require_positive(duration, option, "number of seconds");
     if (duration > max_duration)
         bad_option(option, fmt::format("at most {} seconds, got {}", max_duration, duration));
@@ -80,8 +83,8 @@ EngineOptions event_engine_options(const RenderRequest& request) {
     return options;
 }
 
-EngineOptions time_engine_options(const RenderRequest& request, const Scene& scene, double interval,
-                                  std::vector<std::string>& notices) {
+EngineOptions time_engine_options(const RenderRequest& request, const Scene& scene, double speed,
+                                  double interval, std::vector<std::string>& notices) {
     EngineOptions options;
     options.engine = "time";
     if (request.td_detect != "all-pairs" && request.td_detect != "grid") {
@@ -91,8 +94,10 @@ EngineOptions time_engine_options(const RenderRequest& request, const Scene& sce
     options.td_detect = request.td_detect;
     const bool from_cli = request.dt.has_value();
     // Without a dt anywhere: the scene's own time scale, so -q and --fps never change the physics.
-    options.dt = request.dt.value_or(scene.render.dt.value_or(default_dt(scene)));
-    require_positive(options.dt, from_cli ? "--dt" : "scene [render] dt", "time step");
+    options.dt = request.dt.value_or(scene.render.dt.value_or(default_dt(speed)));
+    require_positive(options.dt,
+                     from_cli ? std::string("--dt") : hint_option(scene.render.dt_at, "dt"),
+                     "time step");
     if (options.dt > interval * (1.0 + divide_tolerance)) {
         notices.push_back(
             fmt::format("dt = {:g} is longer than the frame interval {:g}: the time-driven "
@@ -270,10 +275,14 @@ void plan_video_output(const RenderRequest& request, const Scene& scene, RenderP
     plan.kind = OutputKind::video;
     if (request.format) {
         plan.format = video::parse_video_format(*request.format, "--format");
-        if (request.output && plan.format != video::VideoFormat::png_sequence &&
-            format_of_path(*request.output) != plan.format) {
-            bad_option("-o", fmt::format("'{}' does not end in .{} (--format {})", *request.output,
-                                         video::to_string(plan.format), *request.format));
+        // With --format, the path's extension is the user's business, unless it names another
+        // format (a .gif written as MP4 would mislead every player).
+        const std::string ext = request.output ? lowercase_extension(*request.output) : "";
+        const bool other_format = (ext == ".mp4" || ext == ".gif" || ext == ".png") &&
+                                  ext != "." + std::string(video::to_string(plan.format));
+        if (plan.format != video::VideoFormat::png_sequence && other_format) {
+            bad_option("-o", fmt::format("'{}' ends in {}, but --format is {}", *request.output,
+                                         ext, *request.format));
         }
     } else if (request.output) {
         plan.format = format_of_path(*request.output);
@@ -298,6 +307,10 @@ void plan_video_output(const RenderRequest& request, const Scene& scene, RenderP
 }
 
 }  // namespace
+
+std::string hint_option(const std::string& where, std::string_view key) {
+    return where.empty() ? fmt::format("scene [render] {}", key) : where;
+}
 
 RenderMode parse_render_mode(std::string_view text, std::string_view option) {
     if (text == "both") return RenderMode::both;
@@ -354,7 +367,7 @@ SpeedChoice choose_speed(const Scene& scene, std::optional<double> cli) {
         return {*cli, "--speed", ""};
     }
     if (scene.render.speed) {
-        require_positive(*scene.render.speed, "scene [render] speed",
+        require_positive(*scene.render.speed, hint_option(scene.render.speed_at, "speed"),
                          "number of time units per second");
         return {*scene.render.speed, "scene hint", ""};
     }
@@ -372,6 +385,9 @@ FrameClock video_clock(double duration, double speed, int fps) {
     require_positive(duration, "--duration", "number of seconds");
     require_positive(speed, "--speed", "number of simulation time units per second");
     if (fps < 1) bad_option("--fps", fmt::format("must be >= 1, got {}", fps));
+    if (!(duration * fps < max_countable_frames))
+        bad_option("--duration", fmt::format("{:g} s at {} fps is more frames than can be counted",
+                                             duration, fps));
     FrameClock clock;
     clock.interval = speed / fps;
     clock.count = std::max<std::int64_t>(1, std::llround(duration * fps));
@@ -386,6 +402,13 @@ FrameClock still_clock(double at, double speed, int fps, std::string_view option
     FrameClock clock;
     clock.interval = speed / fps;
     const double steps = at / clock.interval;
+    // Frame indices are int64 and are counted one by one: beyond 2^53 neither holds.
+    if (!(steps < max_countable_frames)) {
+        bad_option(option, fmt::format("t = {:g} is {:.3g} frame intervals ({:g} / {} fps) into "
+                                       "the video, more than can be counted ({:.3g}): give an "
+                                       "earlier time, or a larger --speed",
+                                       at, steps, speed, fps, max_countable_frames));
+    }
     auto whole = static_cast<std::int64_t>(std::floor(steps));
     if (steps - static_cast<double>(whole) > 1.0 - snap_tolerance)
         ++whole;  // just under a frame time
@@ -431,7 +454,8 @@ RenderPlan plan_render(const RenderRequest& request, const Scene& scene) {
     const FrameClock video = video_clock(plan.duration, plan.speed.speed, plan.fps);
     plan.event_engine = event_engine_options(request);
     std::vector<std::string> dt_notices;
-    plan.time_engine = time_engine_options(request, scene, video.interval, dt_notices);
+    plan.time_engine =
+        time_engine_options(request, scene, plan.speed.speed, video.interval, dt_notices);
     if (plan.mode != RenderMode::event) {
         plan.notices.insert(plan.notices.end(), dt_notices.begin(), dt_notices.end());
     }
@@ -454,8 +478,8 @@ RenderPlan plan_render(const RenderRequest& request, const Scene& scene) {
     return plan;
 }
 
-double default_dt(const Scene& scene) {
-    return choose_speed(scene, std::nullopt).speed / reference_fps;
+double default_dt(double speed) {
+    return speed / reference_fps;
 }
 
 std::size_t moving_disc_count(const Scene& scene) {

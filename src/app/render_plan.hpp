@@ -37,6 +37,9 @@ struct QualityPreset {
     int fps = 30;
 };
 
+/// The highest --fps accepted.
+inline constexpr int max_fps = 240;
+
 /// l = 854x480@15, m = 1280x720@30, h = 1920x1080@60, k = 3840x2160@60.
 /// Throws Error(input) naming `option` for any other letter.
 [[nodiscard]] QualityPreset quality_preset(std::string_view letter, std::string_view option = "-q");
@@ -102,6 +105,10 @@ struct FrameClock {
 /// i.e. the time-driven engine lands on every frame time without a shorter final step.
 [[nodiscard]] bool divides(double dt, double interval) noexcept;
 
+/// How messages name a scene hint: its "file:line: render.dt" when known (`where`, from
+/// RenderHints), else "scene [render] dt".
+[[nodiscard]] std::string hint_option(const std::string& where, std::string_view key);
+
 /// Everything the user may type; unset = take the scene hint or the default.
 struct RenderRequest {
     std::string scene;                       ///< file or built-in name
@@ -125,6 +132,7 @@ struct RenderRequest {
     bool last_frame = false;                 ///< --last-frame: write only the last frame as a PNG
     std::optional<double> at;                ///< thumbnail --at (simulation time)
     bool still = false;                      ///< true for `collide thumbnail` (PNG output)
+    bool no_limits = false;                  ///< --no-limits: run even what exceeds WorkLimits
 };
 
 /// What kind of file comes out.
@@ -151,13 +159,14 @@ struct LessonPlan {
 
 /// Seconds of the intro card: about 2 s, at most a quarter of a short video.
 inline constexpr double intro_seconds = 2.0;
-/// The default time-driven dt is the scene's time per this many video frames at its own speed
-/// (the -q m frame interval), whatever -q or --fps say: presets never change the physics.
+/// The default time-driven dt is the simulation time of one 1/30 s video frame at the video's
+/// speed (the -q m frame interval), whatever -q or --fps say: presets never change the physics.
 inline constexpr double reference_fps = 30.0;
 
-/// The default dt of a scene without `[render] dt`: its time scale (scene or derived speed, never
-/// --speed or the frame rate) / reference_fps.
-[[nodiscard]] double default_dt(const Scene& scene);
+/// The default dt without `[render] dt` or --dt: the time scale of the video (its speed: --speed,
+/// the scene's hint or derived from the scene, in simulation time per second of video) divided
+/// by reference_fps. Never the frame rate.
+[[nodiscard]] double default_dt(double speed);
 
 /// How many of the scene's discs can move (mass below 1000 x the median).
 [[nodiscard]] std::size_t moving_disc_count(const Scene& scene);

@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <fstream>
 #include <system_error>
 
 #include "collide/error.hpp"
@@ -45,7 +44,8 @@ Scene load_builtin(const std::string& name, const std::filesystem::path& assets_
                    const SceneOptions& options) {
     const std::filesystem::path file = scenes_dir(assets_dir) / (name + ".toml");
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(file, ec)) {
+    // Anything there that is not a regular file is refused by name when it is read.
+    if (!std::filesystem::exists(file, ec)) {
         std::string reason = "not a scene file and not a built-in scene";
         const std::string guess = nearest_name(name, scene_names_in(assets_dir));
         reason +=
@@ -80,7 +80,7 @@ Scene load_scene(const std::string& path_or_name, const std::filesystem::path& a
         return load_builtin(path_or_name, assets_dir, options);
     if (exists && std::filesystem::is_directory(path, ec))
         throw_input_error(path_or_name, 0, "", "is a directory, not a scene file");
-    if (has_extension(path, ".txt")) return read_algs4_file(path).scene;
+    if (has_extension(path, ".txt")) return read_algs4_text(read_scene_file(path), path).scene;
     if (has_extension(path, ".toml")) return load_toml_scene(path, options);
     if (!exists) throw_input_error(path_or_name, 0, "", "no such file");
     throw_input_error(path_or_name, 0, "",
@@ -100,7 +100,8 @@ std::vector<BuiltinScene> builtin_scenes(const std::filesystem::path& assets_dir
         BuiltinScene s;
         s.name = entry.path().stem().string();
         try {
-            const toml::table doc = toml::parse_file(entry.path().string());
+            const std::string text = read_scene_file(entry.path());
+            const toml::table doc = toml::parse(text, entry.path().string());
             s.description = doc["description"].value_or(std::string());
         } catch (const toml::parse_error& e) {
             throw_input_error(entry.path().string(), static_cast<int>(e.source().begin.line), "",

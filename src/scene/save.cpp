@@ -1,16 +1,17 @@
-// Writing scenes: TOML (every disc explicit) or algs4 text, through a temporary file and a
-// rename so that a failure never leaves a half-written scene at the destination.
+// Writing scenes: TOML (every disc explicit) or algs4 text, through io::OutputFile (an exclusive
+// temporary beside the destination, renamed onto it) so that a failure or an interrupt never
+// leaves a half-written scene, or anything else, at the destination.
 
 #include "collide/scene/save.hpp"
 
 #include <array>
 #include <cstdio>
-#include <fstream>
 #include <ostream>
+#include <sstream>
 #include <string>
-#include <system_error>
 
 #include "collide/error.hpp"
+#include "collide/io/file.hpp"
 #include "collide/sim/algs4.hpp"
 
 namespace collide {
@@ -89,7 +90,8 @@ void write_toml_scene(std::ostream& out, const Scene& scene) {
     for (const Disc& d : scene.discs) write_disc(out, d);
 }
 
-void save_scene(const Scene& scene, const std::filesystem::path& path) {
+void save_scene(const Scene& scene, const std::filesystem::path& path,
+                const std::atomic<bool>* cancel) {
     const std::string ext = path.extension().string();
     if (ext != ".toml" && ext != ".txt") {
         throw_input_error(path.string(), 0, "",
@@ -100,31 +102,19 @@ void save_scene(const Scene& scene, const std::filesystem::path& path) {
         throw_input_error(path.string(), 0, "",
                           "algs4 .txt files describe the unit box with walls only (use .toml)");
     }
-    std::filesystem::path temp = path;
-    temp += ".partial";
-    {
-        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        if (!out) throw_input_error(path.string(), 0, "", "cannot write here");
-        if (ext == ".toml") {
-            write_toml_scene(out, scene);
-        } else {
-            write_algs4(out, scene);
-        }
-        out.flush();
-        if (!out) {
-            out.close();
-            std::error_code ignored;
-            std::filesystem::remove(temp, ignored);
-            throw_input_error(path.string(), 0, "", "write failed (disk full?)");
-        }
+    // Everything is formatted before the file is created: an error on the way leaves nothing.
+    std::ostringstream text;
+    if (ext == ".toml") {
+        write_toml_scene(text, scene);
+    } else {
+        write_algs4(text, scene);
     }
-    std::error_code ec;
-    std::filesystem::rename(temp, path, ec);
-    if (ec) {
-        std::error_code ignored;
-        std::filesystem::remove(temp, ignored);
-        throw_input_error(path.string(), 0, "", "cannot write here (" + ec.message() + ")");
+    io::OutputFile file(path, io::OutputOptions{"scene", false});
+    file.write(text.view());
+    if (cancel != nullptr && cancel->load()) {
+        throw_runtime_error("interrupted; nothing was written");  // the destructor removes it
     }
+    file.commit();
 }
 
 }  // namespace collide

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "collide/error.hpp"
@@ -82,6 +81,11 @@ class TomlReader {
             throw_input_error(file_, static_cast<int>(e.source().begin.line), "",
                               "TOML syntax error: " + std::string(e.description()));
         }
+    }
+
+    // "file:line: field", the prefix of messages about a value checked later (render hints).
+    std::string where(const toml::node& at, const std::string& field) const {
+        return file_ + ":" + std::to_string(at.source().begin.line) + ": " + field;
     }
 
     [[noreturn]] void fail(const toml::node& at, const std::string& field,
@@ -231,9 +235,18 @@ class TomlReader {
             r.histogram = one_of(*v, "render.histogram", histogram_kinds);
         }
         if (const toml::node* v = t.get("caption")) r.caption = caption(*v, "render.caption");
-        if (const toml::node* v = t.get("duration")) r.duration = positive(*v, "render.duration");
-        if (const toml::node* v = t.get("speed")) r.speed = positive(*v, "render.speed");
-        if (const toml::node* v = t.get("dt")) r.dt = positive(*v, "render.dt");
+        if (const toml::node* v = t.get("duration")) {
+            r.duration = positive(*v, "render.duration");
+            r.duration_at = where(*v, "render.duration");
+        }
+        if (const toml::node* v = t.get("speed")) {
+            r.speed = positive(*v, "render.speed");
+            r.speed_at = where(*v, "render.speed");
+        }
+        if (const toml::node* v = t.get("dt")) {
+            r.dt = positive(*v, "render.dt");
+            r.dt_at = where(*v, "render.dt");
+        }
         if (const toml::node* v = t.get("captions")) read_captions(*v);
     }
 
@@ -313,9 +326,18 @@ class TomlReader {
         if (path.extension() != ".txt")
             fail(n, field,
                  "only algs4 .txt files can be included (got '" + path.filename().string() + "')");
-        std::ifstream in(path, std::ios::binary);
-        if (!in) fail(n, field, "cannot open '" + path.string() + "'");
-        ParsedScene part = parse_algs4(in, path.string());
+        std::string text;
+        try {
+            text = read_scene_file(path);
+        } catch (const Error& e) {
+            fail(n, field, e.what());  // where the include is written, then what is wrong
+        }
+        included_bytes_ += text.size();
+        if (included_bytes_ > max_scene_file_bytes)
+            fail(n, field,
+                 "the included files add up to more than " +
+                     std::to_string(max_scene_file_bytes >> 20) + " MiB, the most a scene reads");
+        ParsedScene part = parse_algs4(std::string_view(text), path.string());
         const std::size_t first = scene_.discs.size();
         for (Disc& d : part.scene.discs) scene_.discs.push_back(std::move(d));
         for (DiscSource run : part.origin.runs()) {
@@ -436,6 +458,7 @@ class TomlReader {
     Scene scene_;
     SceneOrigin origin_;
     bool speed_colored_ = false;
+    std::uintmax_t included_bytes_ = 0;  ///< read through `include` so far
 };
 
 // Optimal string alignment distance: insertions, deletions, substitutions and swaps of two
@@ -482,11 +505,8 @@ Scene parse_toml_scene(std::string_view text, const std::string& file_label,
 }
 
 Scene load_toml_scene(const std::filesystem::path& path, const SceneOptions& options) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw_input_error(path.string(), 0, "", "cannot open the scene file");
-    std::ostringstream text;
-    text << in.rdbuf();
-    Scene scene = parse_toml_scene(text.str(), path.string(), path.parent_path(), options);
+    const std::string text = read_scene_file(path);
+    Scene scene = parse_toml_scene(text, path.string(), path.parent_path(), options);
     scene.name = path.stem().string();
     if (scene.title.empty()) scene.title = scene.name;
     return scene;

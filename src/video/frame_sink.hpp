@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "collide/image.hpp"
+#include "collide/io/file.hpp"
 #include "collide/video/video_writer.hpp"
 
 namespace collide::video::detail {
@@ -40,16 +41,18 @@ struct SinkGeometry {
 /// MP4 via libavformat + the codec's encoder. Throws Error(runtime) naming a missing encoder.
 std::unique_ptr<FrameSink> make_mp4_sink(const VideoOptions& options, const SinkGeometry& geometry,
                                          const std::filesystem::path& temporary);
-/// GIF with a palette generated from all frames (palettegen + paletteuse).
+/// GIF with a palette generated from all frames (palettegen + paletteuse); frames wait between
+/// the passes in an unnamed scratch file in `scratch_directory`.
 std::unique_ptr<FrameSink> make_gif_sink(const SinkGeometry& geometry,
-                                         const std::filesystem::path& temporary);
-/// PNG files `<stem>_00000.png`... inside the (temporary) directory.
+                                         const std::filesystem::path& temporary,
+                                         const std::filesystem::path& scratch_directory);
+/// PNG files `<stem>_00000.png`... inside the output directory's temporary (which must outlive
+/// the sink).
 std::unique_ptr<FrameSink> make_png_sequence_sink(const std::string& stem,
-                                                  const std::filesystem::path& directory);
+                                                  const io::OutputDirectory& directory);
 
-/// Writes a PNG at `path` directly (no temporary; callers provide atomicity). Throws Error.
-void write_png_file(const Image& image, const std::filesystem::path& path,
-                    const std::filesystem::path& shown_as);
+/// `image` encoded as PNG. Throws Error(runtime) naming `shown_as`.
+std::vector<unsigned char> encode_png(const Image& image, const std::filesystem::path& shown_as);
 
 /// `image` grown to `width` x `height` (>= its size) by repeating the last column and row.
 Image pad_by_edge_replication(const Image& image, int width, int height);

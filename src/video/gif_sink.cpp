@@ -3,7 +3,8 @@
 //   pass 2 (in finish):           buffer (frames re-read) + buffer (palette) -> paletteuse
 //                                 -> buffersink -> gif encoder -> gif muxer
 // Between the passes the kept frames wait in an unnamed spill file beside the output (raw RGBA,
-// unlinked at creation so nothing is left behind even after a crash), not in memory: a 720p GIF
+// io::open_scratch_file: never named, or unlinked at once, so nothing is left behind even after a
+// crash), not in memory: a 720p GIF
 // of 10 s would otherwise hold ~1 GB.
 
 extern "C" {
@@ -30,16 +31,8 @@ namespace {
 /// Raw frames of one size appended to an unlinked temporary file and read back by index.
 class SpillFile {
   public:
-    SpillFile(const std::filesystem::path& beside, std::size_t frame_bytes)
-        : frame_bytes_(frame_bytes) {
-        std::string name = beside.string() + ".frames.XXXXXX";
-        fd_ = ::mkstemp(name.data());
-        if (fd_ < 0) throw_runtime_error("cannot create the GIF frame store: " + errno_text());
-        ::unlink(name.c_str());  // unnamed from now on: the kernel frees it when fd_ closes
-    }
-    ~SpillFile() {
-        if (fd_ >= 0) ::close(fd_);
-    }
+    SpillFile(const std::filesystem::path& directory, std::size_t frame_bytes)
+        : file_(io::open_scratch_file(directory)), fd_(file_.get()), frame_bytes_(frame_bytes) {}
     SpillFile(const SpillFile&) = delete;
     SpillFile& operator=(const SpillFile&) = delete;
 
@@ -72,7 +65,8 @@ class SpillFile {
         }
     }
 
-    int fd_ = -1;
+    io::File file_;
+    int fd_ = -1;  ///< file_'s descriptor
     std::size_t frame_bytes_ = 0;
     std::size_t frames_ = 0;
 };
@@ -114,11 +108,12 @@ std::string buffer_arguments(int width, int height, int pix_fmt, AVRational time
 
 class GifSink final : public FrameSink {
   public:
-    GifSink(const SinkGeometry& geometry, const std::filesystem::path& temporary)
+    GifSink(const SinkGeometry& geometry, const std::filesystem::path& temporary,
+            const std::filesystem::path& scratch_directory)
         : geometry_(geometry),
           temporary_(temporary),
-          spill_(temporary, static_cast<std::size_t>(geometry.input_width) *
-                                static_cast<std::size_t>(geometry.input_height) * 4) {
+          spill_(scratch_directory, static_cast<std::size_t>(geometry.input_width) *
+                                        static_cast<std::size_t>(geometry.input_height) * 4) {
         // Each kept frame lasts frame_step input frames.
         time_base_ = AVRational{geometry.frame_step, geometry.fps};
         // reserve_transparent=0: our frames are opaque, so all 256 entries hold colours.
@@ -271,8 +266,9 @@ class GifSink final : public FrameSink {
 }  // namespace
 
 std::unique_ptr<FrameSink> make_gif_sink(const SinkGeometry& geometry,
-                                         const std::filesystem::path& temporary) {
-    return std::make_unique<GifSink>(geometry, temporary);
+                                         const std::filesystem::path& temporary,
+                                         const std::filesystem::path& scratch_directory) {
+    return std::make_unique<GifSink>(geometry, temporary, scratch_directory);
 }
 
 }  // namespace collide::video::detail

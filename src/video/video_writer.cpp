@@ -10,6 +10,8 @@
 #include <utility>
 
 #include "av_handles.hpp"
+#include "collide/io/file.hpp"
+#include "collide/video/output.hpp"
 #include "frame_sink.hpp"
 
 namespace collide::video {
@@ -32,12 +34,20 @@ Image pad_by_edge_replication(const Image& image, int width, int height) {
 
 namespace {
 
+/// Where the GIF writer keeps its frames between passes: beside the output (same filesystem as
+/// the user chose for it, rather than a possibly small /tmp).
+std::filesystem::path scratch_directory(const std::filesystem::path& output) {
+    const std::filesystem::path parent = output.parent_path();
+    return parent.empty() ? std::filesystem::path(".") : parent;
+}
+
 std::string size_text(int width, int height) {
     return std::to_string(width) + "x" + std::to_string(height);
 }
 
+// The app replaces this with its own message naming the signal (interrupt.cpp); same wording.
 [[noreturn]] void throw_interrupted() {
-    throw_runtime_error("interrupted; partial output removed");
+    throw_runtime_error("interrupted; nothing was written");
 }
 
 }  // namespace
@@ -49,11 +59,16 @@ class VideoWriter::Impl {
   public:
     explicit Impl(VideoOptions options) : options_(std::move(options)) {
         options_.validate();
-        const bool sequence = options_.format == VideoFormat::png_sequence;
-        check_output_writable(options_.path, sequence);
         settle_geometry();
-        temporary_ = TemporaryOutput(options_.path, sequence ? TemporaryOutput::Kind::directory
-                                                             : TemporaryOutput::Kind::file);
+        if (options_.format == VideoFormat::png_sequence) {
+            check_sequence_name(options_.path);
+            const std::string stem = sequence_stem(options_.path);
+            directory_ = io::OutputDirectory(options_.path, [stem](std::string_view name) {
+                return is_sequence_frame_name(stem, name);
+            });
+        } else {
+            file_ = io::OutputFile(options_.path);
+        }
         sink_ = make_sink();
         worker_ = std::thread([this] { encode_loop(); });
     }
@@ -66,7 +81,8 @@ class VideoWriter::Impl {
         changed_.notify_all();
         if (worker_.joinable()) worker_.join();
         sink_.reset();  // closes files before the temporary is removed
-        temporary_.discard();
+        file_.discard();
+        directory_.discard();
     }
 
     void write(Image frame) {
@@ -112,7 +128,11 @@ class VideoWriter::Impl {
             throw_runtime_error("no frames were written to '" + options_.path.string() + "'");
         }
         sink_->finish();
-        temporary_.commit();
+        if (options_.format == VideoFormat::png_sequence) {
+            directory_.commit();
+        } else {
+            file_.commit();
+        }
     }
 
     const std::vector<std::string>& notices() const noexcept { return notices_; }
@@ -157,12 +177,12 @@ class VideoWriter::Impl {
     std::unique_ptr<detail::FrameSink> make_sink() {
         switch (options_.format) {
             case VideoFormat::mp4:
-                return detail::make_mp4_sink(options_, geometry_, temporary_.path());
+                return detail::make_mp4_sink(options_, geometry_, file_.reopen_path());
             case VideoFormat::gif:
-                return detail::make_gif_sink(geometry_, temporary_.path());
+                return detail::make_gif_sink(geometry_, file_.reopen_path(),
+                                             scratch_directory(options_.path));
             case VideoFormat::png_sequence:
-                return detail::make_png_sequence_sink(options_.path.stem().string(),
-                                                      temporary_.path());
+                return detail::make_png_sequence_sink(sequence_stem(options_.path), directory_);
         }
         throw_runtime_error("unknown video format");
     }
@@ -201,7 +221,8 @@ class VideoWriter::Impl {
     VideoOptions options_;
     detail::SinkGeometry geometry_;
     std::vector<std::string> notices_;
-    TemporaryOutput temporary_{};
+    io::OutputFile file_;            ///< the temporary of an MP4 or GIF
+    io::OutputDirectory directory_;  ///< the temporary of a PNG sequence
     std::unique_ptr<detail::FrameSink> sink_;
 
     std::mutex mutex_;

@@ -20,9 +20,8 @@ struct RunResult {
     std::string output;  ///< stdout and stderr, interleaved
 };
 
-/// Runs `collide <args>` through the shell (args are pasted verbatim: quote them yourself).
-inline RunResult run_collide(const std::string& args) {
-    const std::string cmd = std::string("\"") + COLLIDE_EXE + "\" " + args + " 2>&1";
+/// Runs `cmd` through popen, capturing its stdout, and its exit code.
+inline RunResult run_command(const std::string& cmd) {
     RunResult r;
     FILE* pipe = popen(cmd.c_str(), "r");
     if (pipe == nullptr) return r;
@@ -32,6 +31,26 @@ inline RunResult run_collide(const std::string& args) {
     const int status = pclose(pipe);
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return r;
+}
+
+/// Runs a shell command line (`sh -c`), capturing its exit code and its stdout and stderr.
+inline RunResult run_collide_shell(const std::string& command) {
+    std::string quoted = "'";
+    for (const char c : command) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    quoted += "'";
+    return run_command("sh -c " + quoted + " 2>&1");
+}
+
+/// Runs `collide <args>` through the shell (args are pasted verbatim: quote them yourself).
+inline RunResult run_collide(const std::string& args) {
+    return run_command(std::string("\"") + COLLIDE_EXE + "\" " + args + " 2>&1");
+}
+
+/// Runs `collide <args>` through the shell with `env` before it: environment assignments
+/// ("NAME='value'"), a wrapper ("timeout 60") or a shell command ("ulimit -v 1000000;"), or
+/// nothing (env and args are pasted verbatim: quote them yourself).
+inline RunResult run_collide_env(const std::string& env, const std::string& args) {
+    return run_command(env + " \"" + COLLIDE_EXE + "\" " + args + " 2>&1");
 }
 
 #if defined(__SANITIZE_ADDRESS__)

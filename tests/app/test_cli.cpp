@@ -23,10 +23,15 @@ TEST_CASE("an unknown option is a usage error: exit 2 with a reason naming it") 
 }
 
 TEST_CASE("usage errors read like every other error, with the hint to --help") {
-    const auto r = run_collide("render gas --seed x");
+    const auto r = run_collide("render gas --duration x");
     CHECK(r.exit_code == 2);
-    CHECK(r.output.find("collide: error: Could not convert: --seed = x") != std::string::npos);
+    CHECK(r.output.find("collide: error: Could not convert: --duration = x") != std::string::npos);
     CHECK(r.output.find("Run with --help for more information.") != std::string::npos);
+    // Whole-number options parse strictly, and their errors read the same way.
+    const auto seed = run_collide("render gas --seed x");
+    CHECK(seed.exit_code == 2);
+    CHECK(seed.output.find("collide: error: --seed: expected a whole number") != std::string::npos);
+    CHECK(seed.output.find("Run with --help for more information.") != std::string::npos);
 }
 
 TEST_CASE("an unknown subcommand is a usage error: exit 2") {

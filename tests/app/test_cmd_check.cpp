@@ -112,5 +112,5 @@ TEST_CASE("collide check --export freezes a generated scene that checks the same
 
     const auto bad = run_collide("check gas --export /nonexistent-dir/x.toml");
     CHECK(bad.exit_code == 2);
-    CHECK(contains(bad.output, "cannot write here"));
+    CHECK(contains(bad.output, "'/nonexistent-dir' does not exist"));
 }

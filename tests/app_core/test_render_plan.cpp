@@ -152,6 +152,25 @@ TEST_CASE("plan_render rejects bad options with the option's name") {
     rejects([](RenderRequest& r) { r.format = "avi"; }, "--format");
 }
 
+TEST_CASE("--format decides for a path without extension, a clashing extension names both") {
+    const Scene scene = two_disc_scene(0.1);
+    RenderRequest request;
+    request.scene = "two";
+    request.format = "mp4";
+    request.output = "noext";
+    const RenderPlan plan = plan_render(request, scene);
+    CHECK(plan.format == video::VideoFormat::mp4);
+    CHECK(plan.output == "noext");
+    request.output = "clip.gif";
+    try {
+        (void)plan_render(request, scene);
+        FAIL("accepted clip.gif as mp4");
+    } catch (const Error& e) {
+        CHECK(e.exit_code() == 2);
+        CHECK(std::string(e.what()) == "-o: 'clip.gif' ends in .gif, but --format is mp4");
+    }
+}
+
 TEST_CASE("on-screen counters are deterministic counts, the same for the same measurements") {
     Measurements m;
     m.t = 2.0;
@@ -218,7 +237,7 @@ TEST_CASE("the default dt comes from the scene, never from the preset or the fra
         if (dt == 0.0) dt = plan.time_engine.dt;
         CHECK_MESSAGE(plan.time_engine.dt == dt, "-q " << q);
     }
-    CHECK(dt == doctest::Approx(default_dt(scene)));
+    CHECK(dt == doctest::Approx(default_dt(choose_speed(scene, std::nullopt).speed)));
     RenderRequest request;
     request.fps = 7;
     CHECK(plan_render(request, scene).time_engine.dt == dt);
@@ -294,4 +313,19 @@ TEST_CASE("lesson figures are plain words with thousands separators") {
     const auto ed = event_driven_figures(m);
     CHECK(ed[0].value == "1,000,000");
     CHECK(ed[1].value == "0");
+}
+
+TEST_CASE("still_clock refuses a time more frame intervals away than int64 / double can count") {
+    for (const auto& [at, speed] :
+         {std::pair{1e18, 1.0}, std::pair{1e15, 1.0}, std::pair{1.0, 1e-300}}) {
+        CAPTURE(at);
+        try {
+            (void)still_clock(at, speed, 30);
+            FAIL("no error");
+        } catch (const Error& e) {
+            CHECK(e.kind() == ErrorKind::input);
+            CHECK(std::string(e.what()).rfind("--at: ", 0) == 0);
+        }
+    }
+    CHECK(still_clock(1e12, 1.0, 30).count == 30000000000001);  // far, but countable
 }

@@ -1,6 +1,8 @@
 // load_scene: dispatch on .txt / .toml / built-in names, and the built-in library itself.
 
 #include <doctest/doctest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -8,8 +10,10 @@
 #include <string>
 
 #include "../support/input_error.hpp"
+#include "../support/temp_dir.hpp"
 #include "collide/error.hpp"
 #include "collide/scene/load.hpp"
+#include "collide/sim/algs4.hpp"
 #include "collide/sim/engine.hpp"
 #include "collide/sim/scene_check.hpp"
 
@@ -154,4 +158,65 @@ TEST_CASE("load_scene: a seed override re-draws every [[generate]] block, reprod
     CHECK(same_positions(seeded, again));
     CHECK_FALSE(same_positions(seeded, other));
     CHECK_FALSE(same_positions(seeded, own));
+}
+
+namespace {
+
+/// A FIFO (named pipe) in a fresh directory. Reading it the old way blocks forever in open():
+/// the alarm turns that hang into a failure (SIGALRM ends the test process).
+struct FifoGuard {
+    FifoGuard() { alarm(20); }
+    ~FifoGuard() { alarm(0); }
+};
+
+}  // namespace
+
+TEST_CASE("read_scene_file: a FIFO, a device, a directory are refused by name without blocking") {
+    test::TempDir dir("scene_file");
+    const std::filesystem::path fifo = dir.path / "pipe.toml";
+    REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+    const FifoGuard guard;
+    const std::string message = load_error(fifo.string());
+    CHECK(contains(message, fifo.string() + ": a FIFO (named pipe), not a regular file"));
+    std::filesystem::create_symlink(fifo, dir.path / "linked.txt");
+    CHECK(contains(load_error((dir.path / "linked.txt").string()), "a FIFO (named pipe)"));
+    std::filesystem::create_symlink("/dev/zero", dir.path / "zero.txt");
+    CHECK(contains(load_error((dir.path / "zero.txt").string()),
+                   "zero.txt: a character device, not a regular file"));
+    CHECK(contains(test::input_error_message([&] { (void)read_scene_file(dir.path); }),
+                   "a directory, not a regular file"));
+}
+
+TEST_CASE("read_scene_file: a file beyond the size cap is refused naming the cap, unread") {
+    test::TempDir dir("scene_file_big");
+    const std::filesystem::path big = dir.path / "big.txt";
+    std::ofstream(big).close();
+    std::filesystem::resize_file(big, max_scene_file_bytes + 1);  // sparse: no disk used
+    CHECK(
+        contains(load_error(big.string()), "big.txt: larger than 512 MiB, the most a scene file"));
+    std::filesystem::resize_file(big, 0);
+    std::ofstream(big) << "1\n0.5 0.5 0 0 0.1 1 0 0 0\n";
+    CHECK(read_scene_file(big).size() == 26);
+}
+
+TEST_CASE("toml include: a FIFO or an oversized include is refused at the include's line") {
+    test::TempDir dir("scene_file_include");
+    REQUIRE(mkfifo((dir.path / "pipe.txt").c_str(), 0600) == 0);
+    std::ofstream(dir.path / "s.toml") << "title = \"x\"\ninclude = \"pipe.txt\"\n";
+    const FifoGuard guard;
+    const std::string message = load_error((dir.path / "s.toml").string());
+    CHECK(contains(message, "s.toml:2: include: "));
+    CHECK(contains(message, "pipe.txt: a FIFO (named pipe), not a regular file"));
+}
+
+TEST_CASE("builtin_scenes: a FIFO among the assets is refused by name instead of hanging") {
+    test::TempDir dir("scene_file_assets");
+    std::filesystem::create_directories(dir.path / "scenes");
+    std::ofstream(dir.path / "scenes" / "good.toml") << "description = \"fine\"\n";
+    REQUIRE(mkfifo((dir.path / "scenes" / "stuck.toml").c_str(), 0600) == 0);
+    const FifoGuard guard;
+    CHECK(contains(test::input_error_message([&] { (void)builtin_scenes(dir.path); }),
+                   "stuck.toml: a FIFO (named pipe), not a regular file"));
+    CHECK(contains(test::input_error_message([&] { (void)load_scene("stuck", dir.path); }),
+                   "stuck.toml: a FIFO"));
 }

@@ -2,11 +2,15 @@
 
 #include <doctest/doctest.h>
 
+#include <atomic>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 
 #include "../support/input_error.hpp"
+#include "../support/temp_dir.hpp"
 #include "collide/error.hpp"
 #include "collide/scene/load.hpp"
 #include "collide/scene/save.hpp"
@@ -86,6 +90,34 @@ TEST_CASE("save: files by extension, through a temporary file, errors leave noth
     periodic.box.boundary = Boundary::periodic;
     CHECK(contains(save_error(periodic, dir / "p.txt"), "unit box with walls only"));
     CHECK(!std::filesystem::exists(dir / "p.txt"));
-    CHECK(contains(save_error(gas, dir / "missing" / "x.toml"), "cannot write here"));
+    CHECK(contains(save_error(gas, dir / "missing" / "x.toml"), "does not exist"));
     std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("save: an unrelated DEST.partial is neither used nor removed") {
+    const test::TempDir dir("save_partial");
+    std::ofstream(dir.path / "gas.toml.partial") << "the user's own file";
+    save_scene(load_scene("gas", COLLIDE_ASSETS_DIR), dir.path / "gas.toml");
+    std::ifstream in(dir.path / "gas.toml.partial");
+    const std::string kept((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    CHECK(kept == "the user's own file");
+    CHECK(load_scene((dir.path / "gas.toml").string()).discs.size() > 0);
+}
+
+TEST_CASE("save: an interrupt (the cancel flag) writes nothing and keeps the old file") {
+    const test::TempDir dir("save_cancel");
+    std::ofstream(dir.path / "gas.toml") << "old";
+    const std::atomic<bool> cancel{true};
+    try {
+        save_scene(load_scene("gas", COLLIDE_ASSETS_DIR), dir.path / "gas.toml", &cancel);
+        FAIL("no error");
+    } catch (const Error& e) {
+        CHECK(e.kind() == ErrorKind::runtime);
+        CHECK(contains(e.what(), "interrupted"));
+    }
+    std::ifstream in(dir.path / "gas.toml");
+    const std::string kept((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    CHECK(kept == "old");
+    CHECK(std::distance(std::filesystem::directory_iterator(dir.path),
+                        std::filesystem::directory_iterator()) == 1);
 }

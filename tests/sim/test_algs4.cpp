@@ -2,6 +2,7 @@
 
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -189,4 +190,32 @@ TEST_CASE("algs4: the course's 25 files load, or are rejected for the right reas
     }
     CHECK(loaded == 23);
     CHECK(rejected == 2);
+}
+
+TEST_CASE("algs4: a UTF-8 byte order mark before N is skipped, as in TOML files") {
+    const ParsedScene p = parse(
+        "\xEF\xBB\xBF"
+        "1\n0.5 0.5 0 0 0.1 1 0 0 0\n");
+    CHECK(p.scene.discs.size() == 1);
+    // Elsewhere the same bytes are still not a number.
+    CHECK(parse_error("1\n\xEF\xBB\xBF"
+                      "0.5 0.5 0 0 0.1 1 0 0 0\n")
+              .find("is not a number") != std::string::npos);
+}
+
+TEST_CASE("algs4: a number too small for a double reads as 0, one too large is refused as such") {
+    const ParsedScene p = parse("1\n0.5 0.5 1e-400 -1e-400 0.1 1 0 0 0\n");
+    CHECK(p.scene.discs[0].velocity.x == 0.0);
+    CHECK(p.scene.discs[0].velocity.y == 0.0);
+    CHECK(std::signbit(p.scene.discs[0].velocity.y));
+    CHECK(parse("1\n0.5 0.5 4.9e-324 0 0.1 1 0 0 0\n").scene.discs[0].velocity.x > 0.0);
+    const std::string big = parse_error("1\n0.5 0.5 1e400 0 0.1 1 0 0 0\n");
+    CHECK(big.find("t.txt:2: vx: '1e400' is too large for a double") != std::string::npos);
+    CHECK(parse_error("1\n0.5 0.5 1e-4x00 0 0.1 1 0 0 0\n").find("is not a number") !=
+          std::string::npos);
+}
+
+TEST_CASE("algs4: read_algs4_file refuses what is not a regular file") {
+    CHECK_THROWS_AS((void)read_algs4_file("/dev/null"), Error);
+    CHECK_THROWS_AS((void)read_algs4_file(std::filesystem::temp_directory_path()), Error);
 }

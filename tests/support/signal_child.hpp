@@ -21,9 +21,27 @@ struct SignalledRun {
     std::vector<std::string> argv;  ///< argv[0] is the executable's path
     std::filesystem::path log;      ///< stdout and stderr go here; empty: inherited
     std::function<bool()> started;  ///< polled every 10 ms: true once the run is under way
+    /// Used instead of `started` when set: the same, given the child's process id.
+    std::function<bool(pid_t)> started_child;
     std::chrono::milliseconds start_timeout{30000};  ///< sanitizer builds start slowly
     std::chrono::milliseconds settle{500};           ///< run time between started() and the signal
+    int repeats = 1;                                 ///< how many times the signal is sent
+    std::chrono::milliseconds repeat_gap{0};         ///< between two of them
 };
+
+/// True when process `pid` has a file open in `directory` (an unnamed O_TMPFILE temporary shows
+/// as "DIR/#INODE (deleted)" in /proc): the way to see that a writer has begun when its
+/// temporary has no name.
+inline bool has_open_file_in(pid_t pid, const std::filesystem::path& directory) {
+    std::error_code error;
+    const std::string prefix = std::filesystem::canonical(directory, error).string() + "/";
+    const std::filesystem::path fds = "/proc/" + std::to_string(pid) + "/fd";
+    for (const auto& entry : std::filesystem::directory_iterator(fds, error)) {
+        const std::string target = std::filesystem::read_symlink(entry.path(), error).string();
+        if (!error && target.rfind(prefix, 0) == 0) return true;
+    }
+    return false;
+}
 
 /// Starts run.argv, waits until run.started() holds (checked: a run that never starts fails the
 /// test), lets it run run.settle longer, sends `signal_number` and returns the wait status once
@@ -49,12 +67,15 @@ inline int run_and_signal(const SignalledRun& run, int signal_number) {
     bool ready = false;
     for (auto waited = std::chrono::milliseconds{0}; waited < run.start_timeout && !ready;
          waited += poll) {
-        ready = run.started();
+        ready = run.started_child ? run.started_child(child) : run.started();
         if (!ready) std::this_thread::sleep_for(poll);
     }
     CHECK(ready);
     std::this_thread::sleep_for(run.settle);
-    kill(child, signal_number);
+    for (int sent = 0; sent < run.repeats; ++sent) {
+        if (sent > 0) std::this_thread::sleep_for(run.repeat_gap);
+        kill(child, signal_number);
+    }
     int status = 0;
     for (int attempt = 0; attempt < 3000; ++attempt) {
         if (waitpid(child, &status, WNOHANG) == child) return status;

@@ -46,11 +46,13 @@ TEST_CASE("read_png of a missing or corrupt file is an input error naming it") {
     }
 }
 
-TEST_CASE("PNG sequence: zero-padded names in a directory, exact pixels, old directory replaced") {
+TEST_CASE("PNG sequence: zero-padded names in a directory, exact pixels, old sequence replaced") {
     ScratchDirectory dir;
     const auto path = dir / "frames";
     std::filesystem::create_directory(path);
-    write_bytes(path / "stale.txt", "from an older run");
+    for (int i = 0; i < 5; ++i) {
+        write_bytes(path / ("frames_0000" + std::to_string(i) + ".png"), "from an older run");
+    }
 
     VideoOptions options;
     options.path = path;
@@ -60,7 +62,7 @@ TEST_CASE("PNG sequence: zero-padded names in a directory, exact pixels, old dir
     VideoWriter writer(options);
     for (int i = 0; i < 3; ++i) writer.write(test_pattern(40, 30, i));
     // Until finish() the old directory stays as it was.
-    CHECK(std::filesystem::exists(path / "stale.txt"));
+    CHECK(read_bytes(path / "frames_00004.png") == "from an older run");
     writer.finish();
 
     std::vector<std::string> names;
@@ -68,12 +70,36 @@ TEST_CASE("PNG sequence: zero-padded names in a directory, exact pixels, old dir
         names.push_back(entry.path().filename().string());
     }
     std::sort(names.begin(), names.end());
+    // The whole earlier sequence is replaced: no frame 3 or 4 of it is left.
     CHECK(names ==
           std::vector<std::string>{"frames_00000.png", "frames_00001.png", "frames_00002.png"});
     for (int i = 0; i < 3; ++i) {
         CHECK(read_png(path / names[i]).rgba == test_pattern(40, 30, i).rgba);
     }
     CHECK(dir.entries() == std::vector<std::string>{"frames"});
+}
+
+TEST_CASE("PNG sequence: a directory holding anything else is refused and left untouched") {
+    ScratchDirectory dir;
+    const auto path = dir / "out";
+    std::filesystem::create_directory(path);
+    write_bytes(path / "gas.mp4", "a video the user made earlier");
+    write_bytes(path / "out_00000.png", "a frame");
+    VideoOptions options;
+    options.path = path;
+    options.format = VideoFormat::png_sequence;
+    options.width = 40;
+    options.height = 30;
+    try {
+        VideoWriter writer(options);
+        FAIL("accepted a directory with other files");
+    } catch (const collide::Error& e) {
+        CHECK(e.kind() == collide::ErrorKind::input);
+        CHECK(std::string(e.what()).find("'gas.mp4'") != std::string::npos);
+    }
+    CHECK(read_bytes(path / "gas.mp4") == "a video the user made earlier");
+    CHECK(read_bytes(path / "out_00000.png") == "a frame");
+    CHECK(dir.entries() == std::vector<std::string>{"out"});
 }
 
 TEST_CASE("GIF: generated palette, frame rate capped by dropping frames evenly") {
@@ -145,4 +171,26 @@ TEST_CASE("finished outputs get ordinary permissions (umask), not the temporarie
     CHECK((std::filesystem::status(dir / "seq").permissions() & perms::all) ==
           (perms::owner_all | perms::group_read | perms::group_exec | perms::others_read |
            perms::others_exec));
+}
+
+TEST_CASE("PNG sequence: a directory name too long for its frames' names is refused up front") {
+    ScratchDirectory dir;
+    VideoOptions options;
+    options.path = dir / std::string(250, 'd');  // a legal name, but d..d_00000.png is not
+    options.format = VideoFormat::png_sequence;
+    options.width = 40;
+    options.height = 30;
+    try {
+        VideoWriter writer(options);
+        FAIL("accepted");
+    } catch (const collide::Error& e) {
+        CHECK(e.kind() == collide::ErrorKind::input);
+        CHECK(std::string(e.what()).find("shorter name") != std::string::npos);
+    }
+    CHECK(dir.entries().empty());
+    options.path = dir / std::string(240, 'd');
+    VideoWriter writer(options);
+    writer.write(test_pattern(40, 30, 0));
+    writer.finish();
+    CHECK(dir.entries() == std::vector<std::string>{std::string(240, 'd')});
 }

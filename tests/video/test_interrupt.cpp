@@ -1,8 +1,11 @@
 // src/app/interrupt: signals become a flag, the flag becomes an Error.
 
 #include <doctest/doctest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <csignal>
+#include <string>
 
 #include "collide/error.hpp"
 #include "interrupt.hpp"
@@ -46,12 +49,43 @@ TEST_CASE("only one guard at a time, the previous handler comes back afterwards"
     CHECK(same_handler);
 }
 
-TEST_CASE("each handler fires once: a second signal would get the default action") {
+TEST_CASE("a second signal is harmless: the first one's clean stop goes on") {
     InterruptGuard guard;
     std::raise(SIGINT);
+    std::raise(SIGINT);  // with SA_RESETHAND (before) this one killed the process mid-cleanup
     CHECK(guard.requested());
+    CHECK(guard.signal_number() == SIGINT);
     struct sigaction now {};
     sigaction(SIGINT, nullptr, &now);
-    const bool default_action = now.sa_handler == SIG_DFL;
-    CHECK(default_action);
+    const bool still_ours = now.sa_handler != SIG_DFL;
+    CHECK(still_ours);
+}
+
+TEST_CASE("SIGHUP, SIGQUIT and SIGPIPE stop cleanly too, named in the one message") {
+    for (const int signal_number : {SIGHUP, SIGQUIT, SIGPIPE}) {
+        CAPTURE(signal_number);
+        InterruptGuard guard;
+        std::raise(signal_number);
+        REQUIRE(guard.requested());
+        const std::string name = signal_number == SIGHUP    ? "SIGHUP"
+                                 : signal_number == SIGQUIT ? "SIGQUIT"
+                                                            : "SIGPIPE";
+        CHECK(guard.message() == "interrupted by " + name + "; nothing was written");
+    }
+}
+
+TEST_CASE("a third signal ends the process at once, for a clean stop that hangs") {
+    const pid_t child = fork();
+    REQUIRE(child >= 0);
+    if (child == 0) {
+        InterruptGuard guard;
+        std::raise(SIGINT);
+        std::raise(SIGINT);
+        std::raise(SIGINT);  // the default action: the process ends here
+        _exit(0);
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    CHECK(WIFSIGNALED(status));
+    CHECK(WTERMSIG(status) == SIGINT);
 }

@@ -58,6 +58,12 @@ struct BuiltinScene {
 [[nodiscard]] Scene load_toml_scene(const std::filesystem::path& path,
                                     const SceneOptions& options = {});
 
+/// Reads a whole scene file (a scene or an include), safely: refuses anything that is not a
+/// regular file (a FIFO, a device such as /dev/zero, a directory, through symlinks too) without
+/// blocking in open(), and any file larger than max_scene_file_bytes (collide/sim/algs4.hpp,
+/// 512 MiB). Throws Error(input) naming the file.
+[[nodiscard]] std::string read_scene_file(const std::filesystem::path& path);
+
 /// The candidate closest to `word` by edit distance, or "" when none is close enough to be a
 /// plausible typo ("radus" -> "radius"). Used for "unknown key ... (did you mean ...?)".
 [[nodiscard]] std::string nearest_name(std::string_view word,

@@ -1,56 +1,35 @@
 #pragma once
 /// \file
-/// Output-path safety shared by every writer: the checks the app runs before rendering anything,
-/// and the temporary-file-then-rename discipline that keeps a destination whole.
+/// The checks the app runs on a video's destination before rendering anything. The rules
+/// themselves (exclusive temporaries beside the destination, atomic commit, symbolic links,
+/// directories of frames) live in collide/io/file.hpp; docs/outputs.md says what they promise.
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 namespace collide::video {
 
-/// Checks, before any frame is rendered, that `path` can be written: its directory (the current
-/// directory when `path` has none) exists, is a directory, and a file can actually be created in
-/// it (probed with a temporary file that is removed again; permission bits alone lie for root and
-/// read-only mounts), and `path` itself is not an existing directory (unless `directory_output`:
-/// PNG sequences write a directory). Throws Error(input) naming the path and the reason.
+/// Checks, before any frame is rendered, that `path` can be written: its directory exists, is a
+/// directory, and a file can actually be created in it (probed with a temporary that is removed
+/// again; permission bits alone lie for root and read-only mounts), and `path` itself is not an
+/// existing directory or device. With `directory_output` (PNG sequences) `path` is a directory
+/// that is written whole: it must be new, empty, or hold only an earlier sequence of the same
+/// stem; `.`, `..`, `/`, the current directory and its parents are refused.
+/// Throws Error(input) naming the path and the reason.
 void check_output_writable(const std::filesystem::path& path, bool directory_output = false);
 
-/// A uniquely named temporary file or directory created beside a destination, removed by the
-/// destructor unless `commit()` renamed it onto the destination. Move-only.
-/// Beside, not in /tmp: rename(2) is only atomic within one filesystem.
-class TemporaryOutput {
-  public:
-    enum class Kind { file, directory };
+/// Throws Error(input) when the frames of a sequence written to the directory `path` would have
+/// names longer than the filesystem allows (255 bytes).
+void check_sequence_name(const std::filesystem::path& path);
 
-    /// An empty placeholder owning nothing (assign a real one later).
-    TemporaryOutput() = default;
-    /// Creates a hidden `.<name>.XXXXXX` temporary next to `destination`.
-    /// Throws Error(input) naming `destination` if it cannot be created there.
-    TemporaryOutput(const std::filesystem::path& destination, Kind kind);
-    ~TemporaryOutput();
-    TemporaryOutput(TemporaryOutput&& other) noexcept;
-    TemporaryOutput& operator=(TemporaryOutput&& other) noexcept;
-    TemporaryOutput(const TemporaryOutput&) = delete;
-    TemporaryOutput& operator=(const TemporaryOutput&) = delete;
-
-    /// Where to write (the temporary).
-    [[nodiscard]] const std::filesystem::path& path() const noexcept { return temporary_; }
-    /// Where `commit()` puts it.
-    [[nodiscard]] const std::filesystem::path& destination() const noexcept { return destination_; }
-
-    /// Renames the temporary onto the destination, replacing what was there (for a directory the
-    /// old one is moved aside first and removed after). Throws Error(runtime) on failure, in which
-    /// case the temporary is still removed by the destructor and the old destination is kept.
-    void commit();
-
-    /// Removes the temporary now (idempotent, never throws).
-    void discard() noexcept;
-
-  private:
-    std::filesystem::path destination_;
-    std::filesystem::path temporary_;
-    Kind kind_ = Kind::file;
-    bool owned_ = false;  ///< true while the temporary exists and is ours to remove
-};
+/// The name of frame `index` in a PNG sequence: "<stem>_00042.png" (at least five digits).
+[[nodiscard]] std::string sequence_frame_name(std::string_view stem, std::int64_t index);
+/// True for names sequence_frame_name(stem, i) gives for some i: the files a new sequence of
+/// `stem` may replace.
+[[nodiscard]] bool is_sequence_frame_name(std::string_view stem, std::string_view name);
+/// The stem of the frames in the directory `path` ("frames/" and "frames" give "frames").
+[[nodiscard]] std::string sequence_stem(const std::filesystem::path& path);
 
 }  // namespace collide::video

@@ -8,9 +8,11 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <istream>
 #include <ostream>
+#include <sstream>
 #include <string_view>
 #include <vector>
 
@@ -42,16 +44,31 @@ std::vector<std::string_view> split_whitespace(std::string_view line) {
     return out;
 }
 
+enum class NumberParse { ok, not_a_number, too_large };
+
 // Java's Double.parseDouble forms that matter here: "1.9E-4", ".05", "-0.0", "+3", "1e5".
 // NaN and infinities parse (so the message can say "not finite" rather than "not a number").
-bool parse_double(std::string_view token, double& value) {
+// A number too small for a double ("1e-400") is 0 with its sign, as Java, strtod and TOML read
+// it; one too large ("1e400") is refused as such.
+NumberParse parse_double(std::string_view token, double& value) {
     if (!token.empty() && token.front() == '+') {
         token.remove_prefix(1);
-        if (!token.empty() && (token.front() == '-' || token.front() == '+')) return false;
+        if (!token.empty() && (token.front() == '-' || token.front() == '+'))
+            return NumberParse::not_a_number;
     }
     const char* end = token.data() + token.size();
     const auto [ptr, ec] = std::from_chars(token.data(), end, value);
-    return ec == std::errc() && ptr == end;
+    if (ptr != end) return NumberParse::not_a_number;
+    if (ec == std::errc::result_out_of_range) {
+        // A well-formed decimal out of range: strtod tells underflow (a tiny result) from
+        // overflow (HUGE_VAL).
+        const std::string copy(token);
+        const double rounded = std::strtod(copy.c_str(), nullptr);
+        if (std::isinf(rounded)) return NumberParse::too_large;
+        value = rounded;
+        return NumberParse::ok;
+    }
+    return ec == std::errc() ? NumberParse::ok : NumberParse::not_a_number;
 }
 
 bool parse_count(std::string_view token, unsigned long long& value) {
@@ -94,8 +111,13 @@ struct Reader {
 
     double number(std::string_view token, int line, std::size_t column) const {
         double v = 0.0;
-        if (!parse_double(token, v)) {
+        const NumberParse result = parse_double(token, v);
+        if (result == NumberParse::not_a_number) {
             throw_input_error(file, line, column_names[column], quoted(token) + " is not a number");
+        }
+        if (result == NumberParse::too_large) {
+            throw_input_error(file, line, column_names[column],
+                              quoted(token) + " is too large for a double (at most 1.8e308)");
         }
         if (!std::isfinite(v))
             throw_input_error(file, line, column_names[column],
@@ -161,33 +183,58 @@ bool blank(std::string_view s) {
 
 }  // namespace
 
-ParsedScene parse_algs4(std::istream& in, const std::string& file_label) {
+ParsedScene parse_algs4(std::string_view text, const std::string& file_label) {
     Reader reader{file_label, {}, {}, 0, 0};
     reader.parsed.scene.box = Box{1.0, 1.0, Boundary::walls};  // algs4's unit box
-    std::string text;
+    // Editors on Windows start UTF-8 files with a byte order mark; TOML files may have one too.
+    if (text.starts_with(utf8_bom)) text.remove_prefix(utf8_bom.size());
     int line = 0;
-    while (std::getline(in, text)) {
+    while (!text.empty()) {
+        const std::size_t newline = text.find('\n');
+        const std::string_view current = text.substr(0, newline);
+        text.remove_prefix(newline == std::string_view::npos ? text.size() : newline + 1);
         ++line;
-        if (blank(text)) continue;
+        if (blank(current)) continue;
         if (reader.count_line == 0) {
-            reader.read_count(text, line);
+            reader.read_count(current, line);
         } else {
-            reader.read_disc(text, line);
+            reader.read_disc(current, line);
         }
     }
-    if (in.bad()) throw_input_error(file_label, line, "", "read error");
     reader.finish();
     return std::move(reader.parsed);
 }
 
-ParsedScene read_algs4_file(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw_input_error(path.string(), 0, "", "cannot open the scene file");
-    ParsedScene parsed = parse_algs4(in, path.string());
+ParsedScene parse_algs4(std::istream& in, const std::string& file_label) {
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) throw_input_error(file_label, 0, "", "read error");
+    return parse_algs4(std::string_view(text.view()), file_label);
+}
+
+ParsedScene read_algs4_text(std::string_view text, const std::filesystem::path& path) {
+    ParsedScene parsed = parse_algs4(text, path.string());
     parsed.scene.name = path.stem().string();
     parsed.scene.title = parsed.scene.name;
     validate_scene(parsed.scene, parsed.origin);
     return parsed;
+}
+
+ParsedScene read_algs4_file(const std::filesystem::path& path) {
+    // std-only, so the checks come before opening (a FIFO would block in open). The CLI reads
+    // through collide::read_scene_file instead, which opens without blocking and checks after.
+    std::error_code error;
+    const std::filesystem::file_status status = std::filesystem::status(path, error);
+    if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+        throw_input_error(path.string(), 0, "", "not a regular file");
+    if (std::filesystem::is_regular_file(status) &&
+        std::filesystem::file_size(path, error) > max_scene_file_bytes)
+        throw_input_error(path.string(), 0, "", "larger than the scene file limit");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw_input_error(path.string(), 0, "", "cannot open the scene file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return read_algs4_text(text.view(), path);
 }
 
 void write_algs4(std::ostream& out, const Scene& scene) {

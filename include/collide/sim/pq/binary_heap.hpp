@@ -9,7 +9,8 @@
 
 namespace collide::pq {
 
-template <class T, Orientation O = Orientation::max, class Less = std::less<T>>
-using BinaryHeap = DaryHeap<T, O, 2, Less>;
+template <class T, Orientation O = Orientation::max, class Less = std::less<T>,
+          QueueObserver Obs = NoObserver>
+using BinaryHeap = DaryHeap<T, O, 2, Less, Obs>;
 
 }  // namespace collide::pq

@@ -5,6 +5,9 @@
 /// level on its way down, then a short rise (see sink_from_root).
 /// D = 0 selects an arity chosen at run time (constructor argument); a compile-time D lets the
 /// compiler turn the index arithmetic into shifts and unroll the child scan, so prefer it.
+/// Obs (observer.hpp) sees every compare and exchange; the default NoObserver costs nothing.
+/// A watched heap's pop runs the lecture's sink (exchange root and last, remove, sink) instead of
+/// the bottom-up one: the same array after every operation (tested), the steps a class is taught.
 
 #include <algorithm>
 #include <cstddef>
@@ -16,11 +19,13 @@
 #include <vector>
 
 #include "collide/sim/pq/cache_layout.hpp"
+#include "collide/sim/pq/observer.hpp"
 #include "collide/sim/pq/order.hpp"
 
 namespace collide::pq {
 
-template <class T, Orientation O = Orientation::max, unsigned D = 2, class Less = std::less<T>>
+template <class T, Orientation O = Orientation::max, unsigned D = 2, class Less = std::less<T>,
+          QueueObserver Obs = NoObserver>
 class DaryHeap {
     static_assert(D != 1,
                   "a heap needs at least two children per node (D = 0: chosen at run time)");
@@ -37,12 +42,12 @@ class DaryHeap {
 
     /// An empty heap (a run-time-arity heap built this way is binary).
     DaryHeap() = default;
-    explicit DaryHeap(Less less) : less_(std::move(less)) {}
+    explicit DaryHeap(Less less, Obs obs = Obs{}) : less_(std::move(less)), obs_(std::move(obs)) {}
 
     /// An empty heap with d children per node; only for D = 0. Throws Error(runtime) unless
     /// 2 <= d <= max_runtime_arity.
-    explicit DaryHeap(unsigned d, Less less = Less{}) requires(D == 0)
-        : d_(d), less_(std::move(less)) {
+    explicit DaryHeap(unsigned d, Less less = Less{}, Obs obs = Obs{}) requires(D == 0)
+        : d_(d), less_(std::move(less)), obs_(std::move(obs)) {
         if (d < 2 || d > max_runtime_arity) {
             throw_runtime_error("d-ary heap: arity " + std::to_string(d) + " out of range (2.." +
                                 std::to_string(max_runtime_arity) + ")");
@@ -75,6 +80,9 @@ class DaryHeap {
 
     /// Removes and returns the item that comes out next. Precondition: !empty(). O(d log_d N).
     T pop() {
+        if constexpr (Obs::watching) {
+            return pop_as_taught();
+        }
         T out = std::move(a_.front());
         T last = std::move(a_.back());
         a_.pop_back();
@@ -95,6 +103,9 @@ class DaryHeap {
     /// The heap array, for teaching traces and tests (index 0 comes out next).
     [[nodiscard]] std::span<const T> array() const noexcept { return a_; }
 
+    /// The observer (e.g. a QueueRecorder's log handle).
+    [[nodiscard]] const Obs& observer() const noexcept { return obs_; }
+
     /// Heap order: no child comes out before its parent. O(N).
     [[nodiscard]] bool is_heap() const {
         for (std::size_t i = 1; i < a_.size(); ++i) {
@@ -110,7 +121,9 @@ class DaryHeap {
         T x = std::move(a_[i]);
         while (i > 0) {
             const std::size_t parent = (i - 1) / d();
+            obs_.compared(i, parent);
             if (!first(x, a_[parent])) break;
+            obs_.exchanged(i, parent);
             a_[i] = std::move(a_[parent]);
             i = parent;
         }
@@ -146,6 +159,7 @@ class DaryHeap {
 
     /// `challenger` if it comes out before `holder`, else `holder`, computed without a branch.
     [[nodiscard]] std::size_t pick(std::size_t challenger, std::size_t holder) const {
+        obs_.compared(challenger, holder);
         const auto take = static_cast<std::size_t>(first(a_[challenger], a_[holder]));
         return holder + ((challenger - holder) & (std::size_t{0} - take));
     }
@@ -156,11 +170,27 @@ class DaryHeap {
         T x = std::move(a_[i]);
         while (d() * i + 1 < n) {
             const std::size_t best = best_child(i);
+            obs_.compared(i, best);
             if (!first(a_[best], x)) break;
+            obs_.exchanged(i, best);
             a_[i] = std::move(a_[best]);
             i = best;
         }
         a_[i] = std::move(x);
+    }
+
+    /// pop of a watched heap, step by step as the lecture shows it: exchange the root with the last
+    /// item, remove the last slot, sink the new root.
+    T pop_as_taught() {
+        const std::size_t last = a_.size() - 1;
+        obs_.exchanged(0, last);
+        std::swap(a_.front(), a_.back());
+        T out = std::move(a_.back());
+        a_.pop_back();
+        obs_.removed(last);
+        if (!a_.empty()) sink(0);
+        validate();
+        return out;
     }
 
     /// pop's sink of x (the former last item) from the empty root, bottom-up (Floyd): move the
@@ -221,6 +251,7 @@ class DaryHeap {
     std::vector<T, ChildAlignedAllocator<T>> a_;  ///< children of a node share a cache line
     std::size_t d_ = D == 0 ? 2 : D;              ///< read only when D == 0
     [[no_unique_address]] Less less_{};
+    [[no_unique_address]] Obs obs_{};
 };
 
 }  // namespace collide::pq

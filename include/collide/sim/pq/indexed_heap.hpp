@@ -18,6 +18,9 @@
 ///   handle array: a sink then reads one line per level instead of two.
 /// - Sinks in heaps beyond heap_prefetch_bytes prefetch the levels ahead (see sink), as
 ///   DaryHeap's pop does.
+/// Obs (observer.hpp) sees every compare and exchange, and the removal of the last slot (a
+/// removal moves the last entry into the hole: reported as an exchange, then the removal); the
+/// default NoObserver costs nothing.
 
 #include <algorithm>
 #include <cstddef>
@@ -30,6 +33,7 @@
 #include <vector>
 
 #include "collide/sim/pq/cache_layout.hpp"
+#include "collide/sim/pq/observer.hpp"
 #include "collide/sim/pq/order.hpp"
 
 namespace collide::pq {
@@ -38,7 +42,7 @@ namespace collide::pq {
 /// `handle_type operator()(const Key&)` that reads the handle out of a key (the fast engine's
 /// events name the disc that holds them); push and change_key then require HandleOf{}(k) == h.
 template <class Key, Orientation O = Orientation::min, unsigned D = 4, class Less = std::less<Key>,
-          class HandleOf = void>
+          class HandleOf = void, QueueObserver Obs = NoObserver>
 class IndexedDaryHeap {
     static_assert(D >= 2, "a heap needs at least two children per node");
     static constexpr bool embedded = !std::is_void_v<HandleOf>;
@@ -52,8 +56,8 @@ class IndexedDaryHeap {
     static constexpr std::size_t prefetch_bytes = heap_prefetch_bytes;
 
     /// An empty heap that accepts handles 0 .. capacity-1.
-    explicit IndexedDaryHeap(std::size_t capacity = 0, Less less = Less{})
-        : pos_(capacity, absent), less_(std::move(less)) {
+    explicit IndexedDaryHeap(std::size_t capacity = 0, Less less = Less{}, Obs obs = Obs{})
+        : pos_(capacity, absent), less_(std::move(less)), obs_(std::move(obs)) {
         reserve_arrays(capacity);
     }
 
@@ -111,6 +115,7 @@ class IndexedDaryHeap {
         require_contains(h, "change_key");
         require_names(h, k);
         const std::size_t i = pos_[h];
+        obs_.compared(i, i);  // the new key against the old one, in slot i
         if (first(k, at(i))) {
             swim(i, h, std::move(k));
         } else {
@@ -131,6 +136,7 @@ class IndexedDaryHeap {
     /// Raises h's key under `Less` (k must not be less than the current key). Throws otherwise.
     void increase_key(handle_type h, Key k) {
         require_contains(h, "increase_key");
+        obs_.compared(pos_[h], pos_[h]);  // the new key against the old one
         if (less_(k, at(pos_[h])))
             throw_runtime_error("indexed heap: increase_key given a smaller key");
         change_key(h, std::move(k));
@@ -139,6 +145,7 @@ class IndexedDaryHeap {
     /// Lowers h's key under `Less` (k must not be greater than the current key). Throws otherwise.
     void decrease_key(handle_type h, Key k) {
         require_contains(h, "decrease_key");
+        obs_.compared(pos_[h], pos_[h]);
         if (less_(at(pos_[h]), k))
             throw_runtime_error("indexed heap: decrease_key given a larger key");
         change_key(h, std::move(k));
@@ -238,14 +245,17 @@ class IndexedDaryHeap {
         if (i == last) {
             if constexpr (!embedded) heap_.pop_back();
             keys_.pop_back();
+            obs_.removed(last);
             return;
         }
+        obs_.exchanged(i, last);
+        obs_.removed(last);
         const handle_type moved = handle_at(last);
         Key k = std::move(at(last));
         if constexpr (!embedded) heap_.pop_back();
         keys_.pop_back();
         // The moved item may belong above or below its new slot.
-        if (i > 0 && first(k, at((i - 1) / D))) {
+        if (i > 0 && (obs_.compared(i, (i - 1) / D), first(k, at((i - 1) / D)))) {
             swim(i, moved, std::move(k));
         } else {
             sink(i, moved, std::move(k));
@@ -256,7 +266,9 @@ class IndexedDaryHeap {
     void swim(std::size_t i, handle_type h, Key k) {
         while (i > 0) {
             const std::size_t parent = (i - 1) / D;
+            obs_.compared(i, parent);
             if (!first(k, at(parent))) break;
+            obs_.exchanged(i, parent);
             move_entry(i, parent);
             i = parent;
         }
@@ -295,9 +307,12 @@ class IndexedDaryHeap {
             const std::size_t c_end = c0 + D < n ? c0 + D : n;
             std::size_t best = c0;
             for (std::size_t c = c0 + 1; c < c_end; ++c) {
+                obs_.compared(c, best);
                 if (first(at(c), at(best))) best = c;
             }
+            obs_.compared(i, best);
             if (!first(at(best), k)) break;
+            obs_.exchanged(i, best);
             move_entry(i, best);
             i = best;
         }
@@ -319,6 +334,7 @@ class IndexedDaryHeap {
     /// Keys in heap order (node 1 starts a cache line, so each node's children share lines).
     std::vector<Key, ChildAlignedAllocator<Key>> keys_;
     [[no_unique_address]] Less less_;
+    [[no_unique_address]] Obs obs_;
 };
 
 }  // namespace collide::pq

@@ -1,0 +1,201 @@
+#pragma once
+/// \file
+/// The one place where collide's safe-output rules live (library collide_io, std + POSIX only;
+/// used by collide_scene, collide_video and the app, never by collide_sim). docs/outputs.md says
+/// what they promise to users:
+///
+/// - Nothing appears at a destination until the whole output is written: writers write into a
+///   temporary that `commit()` puts in place with one atomic rename; dropped uncommitted (error,
+///   interrupt), the temporary goes and the old destination is untouched.
+/// - Temporaries are created exclusively, in the destination's directory (rename is atomic only
+///   within one filesystem): an unnamed O_TMPFILE file where the filesystem supports it (then
+///   not even SIGKILL or a power cut leaves anything behind), else a hidden
+///   `.NAME.collide-PID-XXXXXX` made by mkostemp/mkdtemp, never a fixed or guessable name. The
+///   temporary's name is kept within NAME_MAX (the NAME part is shortened), so any legal
+///   destination name works.
+/// - Every writer holds an exclusive flock(2) on its temporary. A later run removes hidden
+///   temporaries of that exact pattern, in the directory it writes to, only when they are
+///   provably abandoned: owned by the same user, the process PID in the name gone, and nobody
+///   holding the lock.
+/// - A destination that is a symbolic link is written through: the link stays and its target is
+///   replaced (except, as the kernel's protected_symlinks rule does, a link in a sticky
+///   world-writable directory such as /tmp owned by someone else: refused).
+/// - Errors: a destination that cannot be created (no such directory, permissions, read-only
+///   filesystem) is Error(input) with the system's reason; a write that fails (full disk, I/O
+///   error) is Error(runtime).
+
+#include <sys/types.h>
+
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace collide::io {
+
+/// An owned file descriptor, closed by the destructor (fmt's `file`): copy deleted, noexcept
+/// move that empties the source.
+class File {
+  public:
+    File() = default;
+    explicit File(int fd) noexcept : fd_(fd) {}
+    ~File();
+    File(File&& other) noexcept;
+    File& operator=(File&& other) noexcept;
+    File(const File&) = delete;
+    File& operator=(const File&) = delete;
+
+    [[nodiscard]] int get() const noexcept { return fd_; }
+    [[nodiscard]] explicit operator bool() const noexcept { return fd_ >= 0; }
+
+    /// Writes all `size` bytes (retrying short writes and EINTR). Throws Error(runtime)
+    /// "cannot write 'SHOWN': REASON" (e.g. "No space left on device").
+    void write_all(const void* data, std::size_t size, const std::filesystem::path& shown) const;
+    /// close(2), checked (NFS reports delayed write errors here). Throws Error(runtime).
+    void close(const std::filesystem::path& shown);
+
+  private:
+    int fd_ = -1;
+};
+
+/// How an OutputFile may treat its destination.
+struct OutputOptions {
+    /// Names the output in messages: "LABEL 'PATH': reason" ("output", "--events-log", ...).
+    std::string label = "output";
+    /// Streams (a text log, raw frames) may go to standard output ("-") or to an existing
+    /// device, FIFO or socket (/dev/stdout, /dev/null), written in place: there is nothing to
+    /// replace atomically. Without this, such destinations are refused (Error(input)).
+    bool allow_stream = false;
+    /// Use an unnamed O_TMPFILE temporary where the filesystem supports it. Only tests turn this
+    /// off, to exercise the hidden named temporary that other filesystems get.
+    bool unnamed_temporary = true;
+};
+
+/// One output file: a temporary beside the destination (see the file comment), moved onto it by
+/// commit(), removed by discard() or the destructor. Move-only.
+class OutputFile {
+  public:
+    /// Owns nothing.
+    OutputFile() = default;
+    /// Checks `destination` (its directory exists, it is not a directory, not a non-regular file
+    /// unless options.allow_stream; symbolic links are followed), removes provably abandoned
+    /// temporaries beside it, and creates this output's temporary. Throws Error(input) naming
+    /// the label, the path and the system's reason when the destination cannot be written.
+    explicit OutputFile(const std::filesystem::path& destination, OutputOptions options = {});
+    ~OutputFile();
+    OutputFile(OutputFile&& other) noexcept;
+    OutputFile& operator=(OutputFile&& other) noexcept;
+    OutputFile(const OutputFile&) = delete;
+    OutputFile& operator=(const OutputFile&) = delete;
+
+    /// The open temporary (or stream), for writing.
+    [[nodiscard]] int fd() const noexcept { return file_.get(); }
+    /// A name that opens this very file, for libraries that insist on a path (libav):
+    /// /proc/self/fd/N, so that nothing planted under the temporary's name is ever opened.
+    [[nodiscard]] std::filesystem::path reopen_path() const;
+    /// The destination as given (for messages).
+    [[nodiscard]] const std::filesystem::path& destination() const noexcept { return destination_; }
+    /// True when writing straight to standard output or a device/FIFO (see OutputOptions).
+    [[nodiscard]] bool is_stream() const noexcept { return stream_; }
+    /// The temporary's name in the destination's directory, when it has one (tests).
+    [[nodiscard]] const std::string& temporary_name() const noexcept { return temporary_name_; }
+
+    /// Appends bytes. Throws Error(runtime) naming the destination and the reason.
+    void write(const void* data, std::size_t size) const;
+    void write(std::string_view text) const { write(text.data(), text.size()); }
+
+    /// Flushes the data to disk (fsync), gives the file the mode an ordinary creation would (or
+    /// the replaced file's), and renames it onto the destination atomically. Streams: nothing to
+    /// move. Throws Error(runtime) on failure; the old destination is then untouched and the
+    /// temporary is removed by the destructor.
+    void commit();
+    /// Removes the temporary now (idempotent, never throws).
+    void discard() noexcept;
+
+  private:
+    /// An O_TMPFILE in directory_ (when `unnamed` and the filesystem has it), else a hidden
+    /// exclusive file named after target_name_. Throws Error naming `what`.
+    void create_temporary(bool unnamed, const std::string& what);
+
+    std::filesystem::path destination_;
+    std::string label_;
+    File directory_;              ///< the (resolved) destination's directory
+    std::string target_name_;     ///< the destination's name in directory_
+    File file_;                   ///< the temporary, locked with flock(LOCK_EX)
+    std::string temporary_name_;  ///< its name in directory_; empty while it is an O_TMPFILE
+    bool stream_ = false;
+    bool active_ = false;  ///< true while there is a temporary (or stream) to commit or discard
+};
+
+/// A directory output (a PNG sequence): a hidden temporary directory beside the destination,
+/// filled with create_file(), that commit() puts in the destination's place.
+///
+/// An existing destination directory is only ever replaced when everything in it is a regular
+/// file whose name satisfies `replaceable` (an earlier sequence of the same name); anything else
+/// in it, or a destination that is the current directory or one of its ancestors (`.`, `..`,
+/// `/`) or a mount point, is Error(input) up front. The replaced directory's files that satisfy
+/// `replaceable` are removed after the commit; anything that appeared meanwhile is left in place.
+class OutputDirectory {
+  public:
+    using NamePredicate = std::function<bool(std::string_view)>;
+
+    OutputDirectory() = default;
+    /// Throws Error(input) naming the path and the reason when the destination is unsuitable.
+    OutputDirectory(const std::filesystem::path& destination, NamePredicate replaceable,
+                    std::string label = "output");
+    ~OutputDirectory();
+    OutputDirectory(OutputDirectory&& other) noexcept;
+    OutputDirectory& operator=(OutputDirectory&& other) noexcept;
+    OutputDirectory(const OutputDirectory&) = delete;
+    OutputDirectory& operator=(const OutputDirectory&) = delete;
+
+    /// Creates `name` (a plain file name) exclusively inside the temporary directory.
+    /// Throws Error(runtime).
+    [[nodiscard]] File create_file(const std::string& name) const;
+    /// Moves the directory into place (atomically exchanging it with an existing one where the
+    /// filesystem can). Throws Error(runtime); the old destination is then untouched.
+    void commit();
+    /// Removes the temporary directory and the files this object created in it. Never throws.
+    void discard() noexcept;
+
+  private:
+    std::filesystem::path destination_;
+    std::string label_;
+    NamePredicate replaceable_;
+    File parent_;  ///< the destination's parent directory
+    std::string target_name_;
+    File temporary_;  ///< the temporary directory, locked with flock(LOCK_EX)
+    std::string temporary_name_;
+    bool active_ = false;
+};
+
+/// Checks up front (before any work) that `destination` can be written as a directory output,
+/// by the rules of OutputDirectory, without creating anything. Throws Error(input).
+void check_output_directory(const std::filesystem::path& destination,
+                            const OutputDirectory::NamePredicate& replaceable,
+                            const std::string& label = "output");
+
+/// An unnamed scratch file in `directory` (O_TMPFILE, or mkostemp + unlink at once), for data
+/// that must never outlive the process (the GIF writer's frame store). Throws Error(runtime).
+[[nodiscard]] File open_scratch_file(const std::filesystem::path& directory);
+
+namespace detail {
+
+/// The mkstemp template of a temporary for the file `name`, for process `pid`:
+/// ".NAME.collide-PID-XXXXXX", with NAME shortened (at a UTF-8 character boundary) so that the
+/// whole stays within `name_max` bytes.
+[[nodiscard]] std::string temporary_template(std::string_view name, pid_t pid,
+                                             std::size_t name_max = 255);
+/// The process id in a name made from temporary_template(), or nothing for any other name.
+[[nodiscard]] std::optional<pid_t> temporary_owner(std::string_view name);
+/// Removes the abandoned temporaries in `directory` (see the file comment): files, and
+/// directories whose entries all satisfy `directory_entries` (null: directories are kept).
+/// Returns how many were removed. Never throws.
+std::size_t sweep_stale_temporaries(const std::filesystem::path& directory,
+                                    const OutputDirectory::NamePredicate& directory_entries = {});
+
+}  // namespace detail
+
+}  // namespace collide::io

@@ -1,0 +1,72 @@
+#include "cli_numbers.hpp"
+
+#include <fmt/core.h>
+
+#include <cassert>
+#include <charconv>
+
+#include "collide/error.hpp"
+
+namespace collide::app {
+
+namespace {
+
+/// Runs `parse`; a bad value becomes a CLI11 usage error (exit 2 with the hint to --help, like
+/// every other bad option value) carrying our message.
+template <typename Parse>
+std::uint64_t as_usage_error(Parse&& parse) {
+    try {
+        return parse();
+    } catch (const Error& e) {
+        throw CLI::ValidationError(e.what());
+    }
+}
+
+}  // namespace
+
+std::uint64_t parse_whole_number(std::string_view text, std::string_view option, std::uint64_t min,
+                                 std::uint64_t max) {
+    const auto bad = [&](std::string_view why) {
+        throw_input_error(fmt::format("{}: {} (got '{}'): give a whole number from {} to {}",
+                                      option, why, text, min, max));
+    };
+    std::string_view digits = text;
+    if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
+    if (digits.empty()) bad("expected a whole number");
+    if (digits.front() == '-' || digits.front() == '+') bad("expected a whole number");
+    std::uint64_t value = 0;
+    const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+    if (end != digits.data() + digits.size()) bad("expected a whole number in decimal digits");
+    if (error == std::errc::result_out_of_range) bad("out of range");
+    if (error != std::errc{}) bad("expected a whole number");
+    if (value < min || value > max) bad("out of range");
+    return value;
+}
+
+CLI::Option* add_whole_option(CLI::App& app, const std::string& name, std::uint64_t& target,
+                              std::uint64_t min, std::uint64_t max, const std::string& help) {
+    const std::string option = name.substr(0, name.find(','));
+    return app.add_option_function<std::string>(
+        name,
+        [&target, option, min, max](const std::string& text) {
+            target = as_usage_error([&] { return parse_whole_number(text, option, min, max); });
+        },
+        help);
+}
+
+CLI::Option* add_whole_option(CLI::App& app, const std::string& name, int& target, int min, int max,
+                              const std::string& help) {
+    assert(0 <= min && min <= max);
+    const std::string option = name.substr(0, name.find(','));
+    return app.add_option_function<std::string>(
+        name,
+        [&target, option, min, max](const std::string& text) {
+            target = static_cast<int>(as_usage_error([&] {
+                return parse_whole_number(text, option, static_cast<std::uint64_t>(min),
+                                          static_cast<std::uint64_t>(max));
+            }));
+        },
+        help);
+}
+
+}  // namespace collide::app

@@ -1,0 +1,764 @@
+// Frames of a priority-queue lesson: lay out the token strip and the panels, build triangles
+// (edges, slots, boxes), discs (tree nodes) and glyphs on the CPU, draw them with three GL calls
+// into an FBO, read it back and blend the text in on the CPU (glyph_blit.hpp), as the collision
+// renderer does. The GL plumbing here is a small copy of the idea in renderer.cpp (FBO, overlay
+// and disc programs), written for this module so that neither file depends on the other.
+#include "collide/render/heap_view.hpp"
+
+#include <glad/gl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <map>
+#include <string>
+#include <string_view>
+
+#include "collide/error.hpp"
+#include "font.hpp"
+#include "gl_objects.hpp"
+#include "glyph_blit.hpp"
+#include "heap_view_layout.hpp"
+#include "overlay_geometry.hpp"
+#include "shaders.hpp"
+
+namespace collide::render {
+
+// ---------------------------------------------------------------------------------------------
+// Config and limits
+
+void HeapViewConfig::validate() const {
+    const auto check_size = [](const char* field, int value) {
+        if (value < 64 || value > 8192) {
+            throw_input_error(std::string("heap view.") + field + ": must be in [64, 8192], got " +
+                              std::to_string(value));
+        }
+    };
+    check_size("width", width);
+    check_size("height", height);
+    if (font_path.empty()) throw_input_error("heap view.font_path: must name a TrueType font");
+    if (widest_key.empty()) throw_input_error("heap view.widest_key: must not be empty");
+}
+
+std::size_t max_legible_keys(std::size_t panels) noexcept {
+    constexpr std::size_t keys_per_frame_width = 36;
+    return keys_per_frame_width / panel_columns(panels);
+}
+
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// Colours: the collision video's dark theme; highlights chosen to stay apart for colour-blind
+// viewers (amber / blue / green / purple / red differ in lightness too).
+
+constexpr Rgba8 background_color{22, 22, 28, 255};
+constexpr Rgba8 panel_color{32, 34, 44, 255};
+constexpr Rgba8 title_color{245, 245, 245, 255};
+constexpr Rgba8 counter_color{190, 190, 200, 255};
+constexpr Rgba8 caption_color{255, 255, 255, 255};
+constexpr Rgba8 edge_color{105, 108, 128, 255};
+constexpr Rgba8 slot_color{52, 56, 74, 255};
+constexpr Rgba8 slot_outline{150, 152, 170, 255};
+constexpr Rgba8 index_color{165, 168, 185, 255};
+constexpr Rgba8 node_outline{215, 215, 225, 255};
+constexpr Rgba8 sorted_fill{40, 43, 55, 255};
+constexpr Rgba8 sorted_text{150, 152, 165, 255};
+constexpr Rgba8 token_done{200, 200, 210, 255};
+constexpr Rgba8 token_todo{110, 112, 128, 255};
+constexpr Rgba8 token_now_fill{240, 170, 40, 255};
+constexpr Rgba8 dark_text{20, 20, 24, 255};
+constexpr Rgba8 map_header{170, 172, 190, 255};
+
+struct MarkStyle {
+    Rgba8 fill;
+    Rgba8 text;
+};
+
+MarkStyle style_of(SlotMark mark) noexcept {
+    switch (mark) {
+        case SlotMark::plain:
+            return {slot_color, title_color};
+        case SlotMark::compared:
+            return {{240, 170, 40, 255}, dark_text};
+        case SlotMark::moving:
+            return {{70, 145, 240, 255}, {255, 255, 255, 255}};
+        case SlotMark::inserted:
+            return {{70, 185, 100, 255}, dark_text};
+        case SlotMark::changed:
+            return {{175, 110, 230, 255}, {255, 255, 255, 255}};
+        case SlotMark::best:
+            return {{40, 175, 175, 255}, dark_text};
+        case SlotMark::leaving:
+            return {{225, 70, 70, 255}, {255, 255, 255, 255}};
+        case SlotMark::sinking:
+            return {{240, 170, 40, 255}, dark_text};
+    }
+    return {slot_color, title_color};
+}
+
+Rgba8 faded(Rgba8 c, float alpha) noexcept {
+    c.a = static_cast<std::uint8_t>(
+        std::lround(static_cast<float>(c.a) * std::clamp(alpha, 0.0F, 1.0F)));
+    return c;
+}
+
+PointF lerp(PointF a, PointF b, float t) noexcept {
+    return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t};
+}
+
+/// The vertex layout of shaders/disc.vert (same as the collision renderer's, 20 bytes).
+struct NodeInstance {
+    float x, y;
+    float radius;
+    float style;  // 0 filled, > 0 ring width
+    Rgba8 color;
+};
+static_assert(sizeof(NodeInstance) == 20);
+
+/// Greedy word wrap to `width` pixels; at most `max_lines` lines (the last one ends in "...").
+std::vector<std::string> wrap(const FontAtlas& font, const std::string& text, float width,
+                              std::size_t max_lines) {
+    std::vector<std::string> lines;
+    std::string line;
+    std::size_t i = 0;
+    while (i < text.size()) {
+        const std::size_t end = std::min(text.find(' ', i), text.size());
+        const std::string word = text.substr(i, end - i);
+        const std::string candidate = line.empty() ? word : line + " " + word;
+        if (!line.empty() && font.text_width(candidate) > width) {
+            lines.push_back(line);
+            line = word;
+        } else {
+            line = candidate;
+        }
+        i = end + 1;
+    }
+    if (!line.empty()) lines.push_back(line);
+    if (lines.size() > max_lines) {
+        lines.resize(max_lines);
+        lines.back() += " ...";
+    }
+    return lines;
+}
+
+/// Where one panel's parts go.
+struct PanelGeometry {
+    RectF panel;
+    float title_baseline = 0.0F;
+    float counters_baseline = 0.0F;
+    int counter_lines = 1;  ///< counters side by side, or one under the other in narrow panels
+    RectF tree;             ///< the node centres' box (tree panels)
+    RectF map;              ///< indexed heap's map column
+    float slot_size = 0.0F;
+    float slot_top = 0.0F;
+    float slots_x0 = 0.0F;
+    float sorted_gap = 0.0F;  ///< extra space before heapsort's sorted part
+    float caption_top = 0.0F;
+    float node_radius = 0.0F;
+    std::vector<PointF> nodes;  ///< node centres, pixels
+};
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+
+struct HeapRenderer::Impl {
+    // Declaration order: the context outlives every GL object.
+    HeapViewConfig config;
+    std::unique_ptr<Context> context;
+    GladGLContext gl{};
+    GlObject color_texture;
+    GlObject framebuffer;
+    GlObject overlay_program;
+    GlObject node_program;
+    GlObject overlay_vertex_array;
+    GlObject overlay_buffer;
+    GlObject node_vertex_array;
+    GlObject node_buffer;
+    GLint overlay_frame_size = -1;
+    GLint node_frame_size = -1;
+    GLint node_as_points = -1;
+
+    std::map<int, FontAtlas> fonts;           // by pixel height
+    std::map<int, OverlayBatch> text_layers;  // glyphs per font, blended after readback
+    OverlayBatch under;                       // slots, edges, boxes: before the nodes
+    OverlayBatch over;                        // token marker etc.: after the nodes
+    std::vector<NodeInstance> nodes;
+    std::vector<NodeInstance> node_vertices;
+
+    float unit = 1.0F;        // pixels per 1/720 of the frame height
+    std::size_t columns = 1;  // of the panel grid in the frame being built
+
+    Impl(const HeapViewConfig& cfg, std::unique_ptr<Context> ctx)
+        : config(cfg), context(std::move(ctx)) {
+        config.validate();
+        if (!context) throw_runtime_error("heap view: no GL context");
+        context->make_current();
+        if (gladLoadGLContext(&gl, context->proc_loader()) == 0)
+            throw_runtime_error("GL: cannot load the GL 3.3 core entry points");
+        unit = static_cast<float>(config.height) / 720.0F;
+        (void)font(caption_px());  // a missing font fails here, before any frame
+        create_framebuffer();
+        create_programs();
+        create_vertex_arrays();
+        check_gl(gl, "heap view setup");
+    }
+
+    ~Impl() {
+        try {
+            context->make_current();
+        } catch (...) {  // NOLINT(bugprone-empty-catch): nothing sane to do in a destructor
+        }
+    }
+    Impl(const Impl&) = delete;
+    Impl& operator=(const Impl&) = delete;
+
+    // ------------------------------------------------------------------ GL setup
+
+    void create_framebuffer() {
+        color_texture = make_texture(gl);
+        gl.BindTexture(GL_TEXTURE_2D, color_texture.get());
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+        gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, config.width, config.height, 0, GL_RGBA,
+                      GL_UNSIGNED_BYTE, nullptr);
+        gl.BindTexture(GL_TEXTURE_2D, 0);
+        framebuffer = make_framebuffer(gl);
+        gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer.get());
+        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
+                                color_texture.get(), 0);
+        if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            throw_runtime_error("GL: the heap view's framebuffer is incomplete");
+    }
+
+    void create_programs() {
+        overlay_program =
+            make_program(gl, shaders::overlay_vert, shaders::overlay_frag, "overlay shader");
+        node_program = make_program(gl, shaders::disc_vert, shaders::disc_frag, "disc shader");
+        overlay_frame_size = gl.GetUniformLocation(overlay_program.get(), "frame_size");
+        node_frame_size = gl.GetUniformLocation(node_program.get(), "frame_size");
+        node_as_points = gl.GetUniformLocation(node_program.get(), "as_points");
+    }
+
+    void create_vertex_arrays() {
+        const auto at = [](std::size_t offset) { return reinterpret_cast<const void*>(offset); };
+        overlay_vertex_array = make_vertex_array(gl);
+        overlay_buffer = make_buffer(gl);
+        gl.BindVertexArray(overlay_vertex_array.get());
+        gl.BindBuffer(GL_ARRAY_BUFFER, overlay_buffer.get());
+        constexpr auto stride = static_cast<GLsizei>(sizeof(OverlayVertex));
+        gl.VertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, stride, at(offsetof(OverlayVertex, x)));
+        gl.VertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
+                               at(offsetof(OverlayVertex, color)));
+        gl.EnableVertexAttribArray(0);
+        gl.EnableVertexAttribArray(1);
+
+        node_vertex_array = make_vertex_array(gl);
+        node_buffer = make_buffer(gl);
+        gl.BindVertexArray(node_vertex_array.get());
+        gl.BindBuffer(GL_ARRAY_BUFFER, node_buffer.get());
+        constexpr auto node_stride = static_cast<GLsizei>(sizeof(NodeInstance));
+        gl.VertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, node_stride,
+                               at(offsetof(NodeInstance, x)));
+        gl.VertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, node_stride,
+                               at(offsetof(NodeInstance, radius)));
+        gl.VertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, node_stride,
+                               at(offsetof(NodeInstance, style)));
+        gl.VertexAttribPointer(3, 4, GL_UNSIGNED_BYTE, GL_TRUE, node_stride,
+                               at(offsetof(NodeInstance, color)));
+        for (GLuint location = 0; location < 4; ++location) gl.EnableVertexAttribArray(location);
+        gl.BindVertexArray(0);
+    }
+
+    // ------------------------------------------------------------------ text
+
+    const FontAtlas& font(float pixel_height) {
+        // Atlases hold 224 glyphs up to ~80 px (1024 texels square).
+        const int px = std::clamp(static_cast<int>(std::lround(pixel_height)), 10, 80);
+        auto it = fonts.find(px);
+        if (it == fonts.end())
+            it = fonts.emplace(px, FontAtlas(config.font_path, static_cast<float>(px))).first;
+        return it->second;
+    }
+
+    void text(const FontAtlas& f, float x, float baseline, std::string_view s, Rgba8 color) {
+        f.add_text(text_layers[static_cast<int>(std::lround(f.pixel_height()))], x, baseline, s,
+                   color);
+    }
+
+    /// Text centred on (cx, cy), by the height of a capital letter.
+    void centred(const FontAtlas& f, PointF c, std::string_view s, Rgba8 color) {
+        text(f, c.x - 0.5F * f.text_width(s), c.y + 0.36F * f.pixel_height(), s, color);
+    }
+
+    /// Text size: as large as the columns allow (21 px at 854x480 for one panel, 16 px for three).
+    [[nodiscard]] float caption_px() const {
+        const float per_column = columns <= 1   ? 32.0F
+                                 : columns == 2 ? 28.0F
+                                 : columns == 3 ? 25.0F
+                                                : 22.0F;
+        return std::max(10.0F, per_column * unit);
+    }
+
+    /// Space inside a panel's edge; tighter when four or more panels share the row.
+    [[nodiscard]] float padding() const { return (columns >= 4 ? 7.0F : 12.0F) * unit; }
+
+    /// The key font for boxes of `box` pixels: as large as fits the widest key.
+    const FontAtlas& key_font(float box) {
+        const float wanted = 0.62F * box;
+        const FontAtlas& probe = font(wanted);
+        const float width = probe.text_width(config.widest_key);
+        const float limit = 0.86F * box;
+        if (width <= limit) return probe;
+        return font(wanted * limit / width);
+    }
+
+    // ------------------------------------------------------------------ frame
+
+    void check(const HeapFrameView& frame) const {
+        if (frame.panels.empty() || frame.panels.size() > max_heap_panels) {
+            throw_input_error("heap view: a frame needs 1 to " + std::to_string(max_heap_panels) +
+                              " panels, got " + std::to_string(frame.panels.size()));
+        }
+        for (const HeapPanelView& p : frame.panels) {
+            if (p.slots.size() > p.capacity)
+                throw_input_error("heap view: more slots than the panel's capacity");
+            if (p.swap && (p.swap->a >= p.slots.size() || p.swap->b >= p.slots.size()))
+                throw_input_error("heap view: an exchange of slots that do not exist");
+            if (p.tree && p.arity < 2) throw_input_error("heap view: a tree needs arity >= 2");
+        }
+    }
+
+    void build(const HeapFrameView& frame) {
+        under.clear();
+        over.clear();
+        nodes.clear();
+        for (auto& [px, layer] : text_layers) layer.clear();
+        const auto w = static_cast<float>(config.width);
+        const auto h = static_cast<float>(config.height);
+        columns = panel_columns(frame.panels.size());
+        const float margin = (columns >= 4 ? 8.0F : 14.0F) * unit;
+        const float strip_h = build_token_strip(frame, margin);
+        const std::vector<RectF> rects =
+            panel_rects(frame.panels.size(), {margin, strip_h, w - margin, h - margin}, margin);
+        for (std::size_t p = 0; p < frame.panels.size(); ++p) {
+            build_panel(frame.panels[p], rects[p]);
+        }
+    }
+
+    /// The operations on one line, the current one on an amber tab; returns the strip's height.
+    float build_token_strip(const HeapFrameView& frame, float margin) {
+        const FontAtlas& f = font(caption_px() * 1.05F);
+        const float height = f.pixel_height() * 2.0F;
+        if (frame.tokens.empty()) return margin;
+        const float gap = f.text_width("  ");
+        const auto w = static_cast<float>(config.width);
+        // Widths, then a window of tokens around the current one that fits the line.
+        std::vector<float> widths;
+        for (const std::string& t : frame.tokens) widths.push_back(f.text_width(t));
+        const std::size_t now = frame.current_token.value_or(0);
+        std::size_t first = 0;
+        const auto span = [&](std::size_t a, std::size_t b) {
+            float s = 0.0F;
+            for (std::size_t i = a; i < b; ++i) s += widths[i] + gap;
+            return s;
+        };
+        const float room = w - 2.0F * margin;
+        std::size_t last = frame.tokens.size();
+        while (span(first, last) > room && last > first + 1) {
+            // Drop from whichever end is farther from the current token.
+            if (now - std::min(now, first) > last - 1 - std::min(now, last - 1)) {
+                ++first;
+            } else {
+                --last;
+            }
+        }
+        float x = 0.5F * (w - span(first, last) + gap);
+        const float baseline = 0.5F * height + 0.36F * f.pixel_height();
+        for (std::size_t i = first; i < last; ++i) {
+            Rgba8 color = token_todo;
+            if (frame.current_token && i < *frame.current_token) color = token_done;
+            if (frame.current_token && i == *frame.current_token) {
+                const float pad = 0.3F * f.pixel_height();
+                under.add_rect({x - pad, baseline - 1.05F * f.pixel_height(), x + widths[i] + pad,
+                                baseline + 0.35F * f.pixel_height()},
+                               token_now_fill);
+                color = dark_text;
+            }
+            text(f, x, baseline, frame.tokens[i], color);
+            x += widths[i] + gap;
+        }
+        return height;
+    }
+
+    PanelGeometry layout_panel(const HeapPanelView& p, RectF r) {
+        PanelGeometry g;
+        g.panel = r;
+        const float pad = padding();
+        const FontAtlas& title = font(caption_px() * 1.05F);
+        const FontAtlas& small = font(caption_px() * 0.85F);
+        const FontAtlas& caption = font(caption_px());
+        g.title_baseline = r.y0 + pad + title.ascent();
+        g.counters_baseline = g.title_baseline + small.line_height() * 1.15F;
+        g.counter_lines = counters_fit(p, r.width() - 2.0F * pad) ? 1 : 2;
+        const float counters_bottom =
+            g.counters_baseline + static_cast<float>(g.counter_lines - 1) * small.line_height();
+        // Room for captions of ~70 characters (the longest the model writes) at ~0.5 em each.
+        const float chars_per_line = (r.width() - 2.0F * pad) / (0.5F * caption.pixel_height());
+        const float caption_lines = std::clamp(std::ceil(70.0F / chars_per_line), 2.0F, 4.0F);
+        g.caption_top = r.y1 - pad - caption_lines * caption.line_height();
+
+        // The array row: square slots, as large as the width allows, at most ~1/9 of the height.
+        const float inner_w = r.width() - 2.0F * pad;
+        const std::size_t slots = std::max<std::size_t>(p.capacity, 1);
+        // Heapsort's panel keeps room for the gap before the sorted part from the start.
+        const float gap_slots = p.heap_size != SIZE_MAX ? 0.4F : 0.0F;
+        // Deep trees need the height more than the array does.
+        const bool deep = p.tree && tree_levels(p.capacity, p.arity) >= 4;
+        const float tallest = p.tree ? (deep ? 0.085F : 0.11F) : 0.16F;
+        g.slot_size = std::min(inner_w / (static_cast<float>(slots) + gap_slots),
+                               tallest * static_cast<float>(config.height));
+        const float index_h = small.line_height();
+        // Under the index labels: room for the key that dips under the row in an exchange.
+        g.slot_top = g.caption_top - pad - index_h - 1.45F * g.slot_size;
+        const float row_w = g.slot_size * static_cast<float>(slots);
+        g.sorted_gap = g.slot_size * gap_slots;
+        g.slots_x0 = r.x0 + 0.5F * (r.width() - row_w - g.sorted_gap);
+        if (!p.tree) {
+            // Arrays alone: the row sits in the middle of the free space.
+            const float top = counters_bottom + pad;
+            g.slot_top = std::max(top, 0.5F * (top + g.caption_top - index_h - g.slot_size));
+            return g;
+        }
+
+        // The tree above the array; the indexed heap's map between them, one column per key.
+        // (Beside the array when the panel is wide enough: the tree keeps its height.)
+        float tree_bottom = g.slot_top - 1.5F * pad;
+        if (p.show_map) {
+            const float map_h = small.line_height() + 2.0F * map_font(g).line_height();
+            if (inner_w >= 2.0F * row_w + 3.0F * pad) {
+                g.slots_x0 = r.x0 + 0.5F * (r.width() - 2.0F * row_w - 3.0F * pad);
+                const float x0 = g.slots_x0 + row_w + 3.0F * pad;
+                const float y0 = g.slot_top + 0.5F * g.slot_size - 0.5F * map_h;
+                g.map = {x0, y0, x0 + row_w, y0 + map_h};
+            } else {
+                g.map = {g.slots_x0, tree_bottom - map_h, g.slots_x0 + row_w, tree_bottom};
+                tree_bottom = g.map.y0 - pad;
+            }
+        }
+        const RectF tree{r.x0 + pad, counters_bottom + pad, r.x1 - pad, tree_bottom};
+        const std::size_t leaves = std::max<std::size_t>(tree_leaves(p.capacity, p.arity), 1);
+        const int levels = std::max(tree_levels(p.capacity, p.arity), 1);
+        const float pitch_x = tree.width() / static_cast<float>(leaves);
+        const float pitch_y = tree.height() / static_cast<float>(levels);
+        g.node_radius = std::max(4.0F, std::min({0.42F * pitch_x, 0.4F * pitch_y, 38.0F * unit}));
+        g.tree = {tree.x0 + 0.5F * pitch_x, tree.y0 + g.node_radius, tree.x1 - 0.5F * pitch_x,
+                  tree.y1 - g.node_radius};
+        const std::vector<PointF> unit_positions = tree_positions(p.capacity, p.arity);
+        for (const PointF& u : unit_positions) {
+            g.nodes.push_back(
+                {g.tree.x0 + u.x * g.tree.width(), g.tree.y0 + u.y * g.tree.height()});
+        }
+        if (leaves == 1) {
+            for (PointF& n : g.nodes) n.x = 0.5F * (tree.x0 + tree.x1);
+        }
+        return g;
+    }
+
+    [[nodiscard]] PointF slot_centre(const PanelGeometry& g, const HeapPanelView& p,
+                                     std::size_t i) const {
+        const float apart = i >= p.heap_size ? g.sorted_gap : 0.0F;
+        return {g.slots_x0 + (static_cast<float>(i) + 0.5F) * g.slot_size + apart,
+                g.slot_top + 0.5F * g.slot_size};
+    }
+
+    void build_panel(const HeapPanelView& p, RectF r) {
+        const PanelGeometry g = layout_panel(p, r);
+        under.add_rect(r, panel_color);
+        build_header(p, g);
+        if (p.tree) build_tree(p, g);
+        build_array(p, g);
+        if (p.show_map) build_map(p, g);
+        build_caption(p, g);
+    }
+
+    static std::string counters_line(const HeapPanelView& p) {
+        std::string line;
+        for (const std::string& c : p.counters) line += (line.empty() ? "" : "    ") + c;
+        return line;
+    }
+
+    /// Whether the counters fit on one line, judged on four-digit counts so that the layout does
+    /// not jump when a count gains a digit.
+    bool counters_fit(const HeapPanelView& p, float width) {
+        std::string widest;
+        for (const std::string& c : p.counters) {
+            widest += (widest.empty() ? "" : "    ") + c.substr(0, c.find(' ')) + " 0000";
+        }
+        return font(caption_px() * 0.85F).text_width(widest) <= width;
+    }
+
+    void build_header(const HeapPanelView& p, const PanelGeometry& g) {
+        const float pad = padding();
+        const FontAtlas& title = font(caption_px() * 1.05F);
+        const float room = g.panel.width() - 2.0F * pad;
+        const float width = title.text_width(p.title);
+        const FontAtlas& fitted = width <= room ? title : font(title.pixel_height() * room / width);
+        text(fitted, g.panel.x0 + pad, g.title_baseline, p.title, title_color);
+        const FontAtlas& small = font(caption_px() * 0.85F);
+        if (g.counter_lines == 1) {
+            text(small, g.panel.x0 + pad, g.counters_baseline, counters_line(p), counter_color);
+            return;
+        }
+        float baseline = g.counters_baseline;
+        for (const std::string& c : p.counters) {
+            text(small, g.panel.x0 + pad, baseline, c, counter_color);
+            baseline += small.line_height();
+        }
+    }
+
+    /// Where the key of slot i is drawn now (in the tree): its node, or on its way to the other
+    /// node of an exchange.
+    [[nodiscard]] static PointF node_position(const HeapPanelView& p, const PanelGeometry& g,
+                                              std::size_t i) {
+        if (p.swap && (i == p.swap->a || i == p.swap->b)) {
+            // Along the edge, bowed out to either side so that the two keys pass each other in
+            // view instead of hiding each other halfway.
+            const std::size_t other = i == p.swap->a ? p.swap->b : p.swap->a;
+            PointF c = lerp(g.nodes[i], g.nodes[other], p.swap->t);
+            const float dx = g.nodes[other].x - g.nodes[i].x;
+            const float dy = g.nodes[other].y - g.nodes[i].y;
+            const float length = std::sqrt(dx * dx + dy * dy);
+            if (length > 0.0F) {
+                const float bow = std::sin(3.14159265F * p.swap->t) * 1.1F * g.node_radius / length;
+                c.x += -dy * bow;
+                c.y += dx * bow;
+            }
+            return c;
+        }
+        return g.nodes[i];
+    }
+
+    [[nodiscard]] static float alpha_of(const HeapPanelView& p, SlotMark mark) {
+        return mark == SlotMark::inserted || mark == SlotMark::leaving ? p.fade : 1.0F;
+    }
+
+    void build_tree(const HeapPanelView& p, const PanelGeometry& g) {
+        const std::size_t in_tree = std::min(p.slots.size(), p.heap_size);
+        const float edge_w = std::max(1.5F, 3.0F * unit);
+        // Edges between the nodes' places (the slide follows them).
+        for (std::size_t i = 1; i < in_tree; ++i) {
+            const std::size_t parent = (i - 1) / p.arity;
+            const bool lit = p.slots[i].mark != SlotMark::plain &&
+                             p.slots[parent].mark == p.slots[i].mark &&
+                             p.slots[i].mark != SlotMark::leaving;
+            under.add_line(g.nodes[parent], g.nodes[i], lit ? 2.2F * edge_w : edge_w,
+                           lit ? style_of(p.slots[i].mark).fill : edge_color);
+        }
+        // Empty places of the capacity, faint, so the shape of a full tree shows.
+        for (std::size_t i = in_tree; i < g.nodes.size(); ++i) {
+            nodes.push_back({g.nodes[i].x,
+                             g.nodes[i].y,
+                             g.node_radius,
+                             std::max(1.0F, unit),
+                             {70, 72, 90, 255}});
+        }
+        const FontAtlas& f = key_font(2.0F * g.node_radius);
+        // Still nodes first, moving ones on top.
+        for (int pass = 0; pass < 2; ++pass) {
+            for (std::size_t i = 0; i < in_tree; ++i) {
+                const bool moving = p.swap && (i == p.swap->a || i == p.swap->b);
+                if (moving != (pass == 1)) continue;
+                draw_node(p.slots[i], node_position(p, g, i), g.node_radius,
+                          alpha_of(p, p.slots[i].mark), f);
+            }
+        }
+    }
+
+    void draw_node(const HeapSlotView& s, PointF c, float radius, float alpha, const FontAtlas& f) {
+        const MarkStyle style = style_of(s.mark);
+        const Rgba8 fill = s.mark == SlotMark::plain ? Rgba8{58, 62, 84, 255} : style.fill;
+        nodes.push_back({c.x, c.y, radius, 0.0F, faded(fill, alpha)});
+        nodes.push_back(
+            {c.x, c.y, radius, std::max(1.5F, 2.5F * unit), faded(node_outline, alpha)});
+        centred(f, c, s.key, faded(style.text, alpha));
+    }
+
+    void build_array(const HeapPanelView& p, const PanelGeometry& g) {
+        const float s = g.slot_size;
+        const float outline = std::max(1.0F, 2.0F * unit);
+        const FontAtlas& f = key_font(s);
+        // Index labels: two digits must fit under a slot.
+        const FontAtlas& small = font(std::min(caption_px() * 0.8F, 0.5F * s));
+        // Slot boxes for the whole capacity; index labels under them.
+        for (std::size_t i = 0; i < std::max(p.capacity, p.slots.size()); ++i) {
+            const PointF c = slot_centre(g, p, i);
+            const RectF box{c.x - 0.5F * s, g.slot_top, c.x + 0.5F * s, g.slot_top + s};
+            Rgba8 fill = background_color;
+            if (i < p.slots.size()) {
+                const SlotMark m = p.slots[i].mark;
+                fill = i >= p.heap_size ? sorted_fill : style_of(m).fill;
+                if (m == SlotMark::inserted || m == SlotMark::leaving) fill = faded(fill, p.fade);
+                if (p.swap && (i == p.swap->a || i == p.swap->b)) fill = slot_color;  // tile away
+            }
+            under.add_rect(box, fill);
+            under.add_frame(box, outline,
+                            i < p.slots.size() ? slot_outline : Rgba8{70, 72, 90, 255});
+            const std::string index = std::to_string(static_cast<long long>(i) + p.index_base);
+            centred(small, {c.x, g.slot_top + s + 0.62F * small.line_height()}, index, index_color);
+        }
+        // Keys; an exchange slides the two keys as tiles, one over the row and one under it.
+        for (std::size_t i = 0; i < p.slots.size(); ++i) {
+            PointF c = slot_centre(g, p, i);
+            const SlotMark m = p.slots[i].mark;
+            Rgba8 color = i >= p.heap_size ? sorted_text : style_of(m).text;
+            if (p.swap && (i == p.swap->a || i == p.swap->b)) {
+                const std::size_t other = i == p.swap->a ? p.swap->b : p.swap->a;
+                // Over the row clear of its keys; under it only as far as the reserved room.
+                const float lift = i == p.swap->a ? -1.05F : 0.75F;
+                const float arc = std::sin(3.14159265F * p.swap->t) * lift * s;
+                c = lerp(c, slot_centre(g, p, other), p.swap->t);
+                c.y += arc;
+                const RectF tile{c.x - 0.46F * s, c.y - 0.46F * s, c.x + 0.46F * s,
+                                 c.y + 0.46F * s};
+                under.add_rect(tile, style_of(SlotMark::moving).fill);
+                under.add_frame(tile, outline, node_outline);
+            }
+            centred(f, c, p.slots[i].key, faded(color, alpha_of(p, m)));
+        }
+        if (p.heap_size < p.slots.size()) {
+            const PointF c = slot_centre(g, p, p.heap_size);
+            text(small, c.x - 0.5F * s, g.slot_top - 0.35F * small.line_height(), "sorted",
+                 index_color);
+        }
+    }
+
+    /// The map's text: smaller than the keys, it is the second thing to read.
+    const FontAtlas& map_font(const PanelGeometry& g) {
+        return font(std::min(0.42F * g.slot_size, caption_px()));
+    }
+
+    /// The indexed heap's map as a table over the array: for each key (in the order of their
+    /// handles), the index of the slot that holds it; entries an exchange is updating lit.
+    void build_map(const HeapPanelView& p, const PanelGeometry& g) {
+        const FontAtlas& head = font(caption_px() * 0.85F);
+        const FontAtlas& f = map_font(g);
+        text(head, g.map.x0, g.map.y0 + head.ascent(), "map: key -> index", map_header);
+        const float key_y = g.map.y0 + head.line_height() + 0.5F * f.line_height();
+        const float index_y = key_y + f.line_height();
+        for (std::size_t c = 0; c < p.map.size(); ++c) {
+            const HeapMapRow& row = p.map[c];
+            const float x = g.map.x0 + (static_cast<float>(c) + 0.5F) * g.slot_size;
+            if (row.updated) {
+                under.add_rect({x - 0.45F * g.slot_size, index_y - 0.5F * f.line_height(),
+                                x + 0.45F * g.slot_size, index_y + 0.5F * f.line_height()},
+                               style_of(SlotMark::moving).fill);
+            }
+            centred(f, {x, key_y}, row.key, title_color);
+            centred(f, {x, index_y}, row.index,
+                    row.updated ? Rgba8{255, 255, 255, 255} : index_color);
+        }
+    }
+
+    void build_caption(const HeapPanelView& p, const PanelGeometry& g) {
+        const float pad = padding();
+        const FontAtlas& f = font(caption_px());
+        const std::size_t max_lines = g.panel.y1 - g.caption_top > 2.5F * f.line_height() ? 3 : 2;
+        const std::vector<std::string> lines =
+            wrap(f, p.caption, g.panel.width() - 2.0F * pad, max_lines);
+        float baseline = g.caption_top + f.ascent();
+        for (const std::string& line : lines) {
+            text(f, g.panel.x0 + pad, baseline, line, caption_color);
+            baseline += f.line_height();
+        }
+    }
+
+    // ------------------------------------------------------------------ GL
+
+    void draw_triangles(const OverlayBatch& batch) {
+        if (batch.vertices().empty()) return;
+        gl.UseProgram(overlay_program.get());
+        gl.Uniform2f(overlay_frame_size, static_cast<float>(config.width),
+                     static_cast<float>(config.height));
+        gl.BindVertexArray(overlay_vertex_array.get());
+        gl.BindBuffer(GL_ARRAY_BUFFER, overlay_buffer.get());
+        gl.BufferData(GL_ARRAY_BUFFER,
+                      static_cast<GLsizeiptr>(batch.vertices().size() * sizeof(OverlayVertex)),
+                      batch.vertices().data(), GL_STREAM_DRAW);
+        gl.DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(batch.vertices().size()));
+    }
+
+    void draw_nodes() {
+        if (nodes.empty()) return;
+        // Six vertices per node: the two triangles of disc.vert's quad (no point sprites: nodes
+        // are few and large).
+        node_vertices.clear();
+        for (const NodeInstance& n : nodes) node_vertices.insert(node_vertices.end(), 6, n);
+        gl.UseProgram(node_program.get());
+        gl.Uniform2f(node_frame_size, static_cast<float>(config.width),
+                     static_cast<float>(config.height));
+        gl.Uniform1i(node_as_points, 0);
+        gl.BindVertexArray(node_vertex_array.get());
+        gl.BindBuffer(GL_ARRAY_BUFFER, node_buffer.get());
+        gl.BufferData(GL_ARRAY_BUFFER,
+                      static_cast<GLsizeiptr>(node_vertices.size() * sizeof(NodeInstance)),
+                      node_vertices.data(), GL_STREAM_DRAW);
+        gl.DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(node_vertices.size()));
+    }
+
+    void render(const HeapFrameView& frame, Image& out) {
+        check(frame);
+        context->make_current();
+        build(frame);
+        gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer.get());
+        gl.Viewport(0, 0, config.width, config.height);
+        gl.ClearColor(background_color.r / 255.0F, background_color.g / 255.0F,
+                      background_color.b / 255.0F, 1.0F);
+        gl.Clear(GL_COLOR_BUFFER_BIT);
+        gl.Enable(GL_BLEND);
+        gl.BlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied, as the shaders write
+        draw_triangles(under);
+        draw_nodes();
+        draw_triangles(over);
+        gl.BindVertexArray(0);
+        gl.Finish();
+        check_gl(gl, "drawing a heap frame");
+
+        if (out.width != config.width || out.height != config.height)
+            out = Image(config.width, config.height);
+        gl.BindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer.get());
+        gl.ReadBuffer(GL_COLOR_ATTACHMENT0);
+        gl.PixelStorei(GL_PACK_ALIGNMENT, 4);
+        gl.ReadPixels(0, 0, config.width, config.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                      out.rgba.data());
+        check_gl(gl, "reading the heap frame back");
+        for (const auto& [px, layer] : text_layers) {
+            const FontAtlas& f = fonts.at(px);
+            blend_glyphs(out, layer.glyphs(), f.bitmap(), f.atlas_size());
+        }
+    }
+};
+
+// ---------------------------------------------------------------------------------------------
+
+HeapRenderer::HeapRenderer(const HeapViewConfig& config, Backend backend, const NoticeSink& notice)
+    : impl_([&] {
+          config.validate();  // before creating a context for a config we would reject anyway
+          return std::make_unique<Impl>(config,
+                                        make_context(backend, config.width, config.height, notice));
+      }()) {}
+
+HeapRenderer::~HeapRenderer() = default;
+HeapRenderer::HeapRenderer(HeapRenderer&&) noexcept = default;
+HeapRenderer& HeapRenderer::operator=(HeapRenderer&&) noexcept = default;
+
+void HeapRenderer::render(const HeapFrameView& frame, Image& out) {
+    impl_->render(frame, out);
+}
+
+Image HeapRenderer::render(const HeapFrameView& frame) {
+    Image image;
+    render(frame, image);
+    return image;
+}
+
+}  // namespace collide::render

@@ -1,0 +1,30 @@
+#pragma once
+// Internal: where the pieces of a priority-queue lesson frame go (heap_view.hpp), in frame pixels
+// with y down. Pure geometry, no GL: unit-tested.
+
+#include <cstddef>
+#include <vector>
+
+#include "overlay_geometry.hpp"
+
+namespace collide::render {
+
+/// Node centres of a d-ary heap of `count` nodes in a unit box: x in [0, 1], y in [0, 1] (root at
+/// y = 0, deepest level at y = 1; a single level sits at y = 0.5). Leaves are spread evenly in
+/// depth-first order and each parent sits midway over its first and last child, so the tree is
+/// as wide as its leaves and no two nodes overlap however deep it is.
+[[nodiscard]] std::vector<PointF> tree_positions(std::size_t count, unsigned arity);
+
+/// Levels of a d-ary heap of `count` nodes (0 for none).
+[[nodiscard]] int tree_levels(std::size_t count, unsigned arity) noexcept;
+
+/// Leaves of a d-ary heap of `count` nodes (the tree's width in nodes).
+[[nodiscard]] std::size_t tree_leaves(std::size_t count, unsigned arity) noexcept;
+
+/// Panels of a frame, side by side in one row inside `area`, `gap` pixels apart.
+[[nodiscard]] std::vector<RectF> panel_rects(std::size_t panels, RectF area, float gap);
+
+/// Columns of the panel grid for `panels` panels.
+[[nodiscard]] std::size_t panel_columns(std::size_t panels) noexcept;
+
+}  // namespace collide::render

@@ -1,0 +1,125 @@
+// `collide heap` end to end: videos, GIFs, PNG sequences and last frames written (byte-identical
+// from run to run), and every kind of bad input refused with exit 2 before anything is written.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "../support/temp_dir.hpp"
+#include "collide/video/png.hpp"
+#include "run_collide.hpp"
+
+using collide::test::run_collide;
+using collide::test::run_collide_bad_input;
+using collide::test::TempDir;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Small and quick: a few seconds of 320x180 video at 5 frames per second.
+const std::string quick = " --size 320x180 --fps 5 --pace 0.1 --progress none ";
+
+bool contains(const std::string& haystack, const std::string& needle) {
+    return haystack.find(needle) != std::string::npos;
+}
+
+std::string bytes_of(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::string quoted(const fs::path& path) {
+    return "\"" + path.string() + "\"";
+}
+
+}  // namespace
+
+TEST_CASE("collide heap renders the lecture's trace to MP4, byte-identical from run to run") {
+    TempDir dir("heap_mp4");
+    const fs::path a = dir.path / "a.mp4";
+    const fs::path b = dir.path / "b.mp4";
+    const std::string ops = "heap --ops \"P Q E * X A M * P L E *\"" + quick;
+    const auto r = run_collide(ops + "-o " + quoted(a));
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    CHECK(contains(r.output, "binary heap, 12 operations"));
+    REQUIRE(run_collide(ops + "-o " + quoted(b)).exit_code == 0);
+    CHECK(fs::file_size(a) > 1000);
+    CHECK(bytes_of(a) == bytes_of(b));
+}
+
+TEST_CASE("collide heap: side by side as GIF, heapsort as a PNG sequence, the last frame as PNG") {
+    TempDir dir("heap_formats");
+    const auto three = run_collide("heap --ops \"P Q E * X\" --impl unordered,ordered,binary" +
+                                   quick + "-o " + quoted(dir.path / "three.gif"));
+    REQUIRE_MESSAGE(three.exit_code == 0, three.output);
+    CHECK(contains(three.output, "unordered array, ordered array, binary heap"));
+    CHECK(fs::file_size(dir.path / "three.gif") > 1000);
+
+    const auto sort = run_collide("heap --sort \"S O R T E X\" --format png" + quick + "-o " +
+                                  quoted(dir.path / "frames"));
+    REQUIRE_MESSAGE(sort.exit_code == 0, sort.output);
+    std::size_t frames = 0;
+    for (const auto& entry : fs::directory_iterator(dir.path / "frames")) {
+        frames += entry.path().extension() == ".png";
+    }
+    CHECK(frames > 10);
+
+    const fs::path last = dir.path / "last.png";
+    const auto still = run_collide("heap --ops \"5 9 3 7 * 3^12\" --impl indexed:2 --last-frame" +
+                                   quick + "-o " + quoted(last));
+    REQUIRE_MESSAGE(still.exit_code == 0, still.output);
+    const collide::Image image = collide::video::read_png(last);
+    CHECK(image.width == 320);
+    CHECK(image.height == 180);
+}
+
+TEST_CASE("collide heap: bad tokens exit 2 naming the token and its position") {
+    TempDir dir("heap_bad_tokens");
+    const std::string out = " -o " + quoted(dir.path / "x.mp4");
+    CHECK(contains(run_collide_bad_input("heap --ops \"P ? *\"" + quick + out),
+                   "--ops: token 2 '?'"));
+    CHECK(contains(run_collide_bad_input("heap --ops \"P * *\"" + quick + out),
+                   "token 3 '*': removes from an empty queue"));
+    CHECK(contains(run_collide_bad_input("heap --ops \"5 3 3^9\"" + quick + out),
+                   "token 3 '3^9': increase-key needs --impl indexed"));
+    CHECK(contains(run_collide_bad_input("heap --ops \"5 3 3^1\" --impl indexed" + quick + out),
+                   "increase-key to a smaller key"));
+    CHECK(contains(run_collide_bad_input("heap --ops \"5 X\"" + quick + out), "token 2 'X'"));
+    CHECK(contains(run_collide_bad_input("heap --sort \"S O * T\"" + quick + out),
+                   "--sort: token 3 '*'"));
+    CHECK(fs::is_empty(dir.path));  // nothing written
+}
+
+TEST_CASE("collide heap: bad options and inputs too big to draw legibly exit 2") {
+    TempDir dir("heap_bad_options");
+    const std::string out = " -o " + quoted(dir.path / "x.mp4");
+    CHECK(contains(run_collide_bad_input("heap" + quick + out), "give either --ops"));
+    CHECK(contains(run_collide_bad_input("heap --ops P --sort P" + quick + out),
+                   "give either --ops"));
+    CHECK(contains(run_collide_bad_input("heap --sort \"B A\" --impl ordered" + quick + out),
+                   "--impl"));
+    CHECK(contains(run_collide_bad_input("heap --ops P --impl heap" + quick + out),
+                   "--impl: unknown queue 'heap'"));
+    CHECK(contains(run_collide_bad_input("heap --ops P --index-base 2" + quick + out),
+                   "--index-base: must be 0 or 1"));
+    CHECK(contains(run_collide_bad_input("heap --ops P --pace 0" + quick + out), "--pace"));
+    CHECK(
+        contains(run_collide_bad_input("heap --ops P" + quick + "-o " + quoted(dir.path / "x.txt")),
+                 "-o: cannot tell the format"));
+    CHECK(contains(run_collide_bad_input("heap --ops P --last-frame" + quick + out),
+                   "give a .png path"));
+    CHECK(contains(run_collide_bad_input("heap --ops P" + quick + "-o " +
+                                         quoted(dir.path / "missing" / "x.mp4")),
+                   "missing"));
+    // 13 keys at once in three panels: more than 36 / 3 = 12 can be drawn legibly.
+    const std::string thirteen = "\"A B C D E F G H I J K L M\"";
+    const std::string big = run_collide_bad_input("heap --ops " + thirteen +
+                                                  " --impl unordered,ordered,binary" + quick + out);
+    CHECK(contains(big, "holds up to 13 keys at once, but at most 12 can be drawn legibly"));
+    CHECK(run_collide("heap --ops " + thirteen + " --last-frame" + quick + "-o " +
+                      quoted(dir.path / "one.png"))
+              .exit_code == 0);  // one panel takes up to 36
+    CHECK(!fs::exists(dir.path / "x.mp4"));
+}

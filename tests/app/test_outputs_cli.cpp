@@ -1,0 +1,269 @@
+// What the program promises for its outputs (docs/outputs.md), through the real executable:
+// never a lost or clobbered user file, no temporary left, symbolic links written through,
+// standard output for "-", exit 1 for a full disk and 2 (with the reason) for an unwritable path.
+
+#include <doctest/doctest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "../support/skip.hpp"
+#include "../support/temp_dir.hpp"
+#include "run_collide.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using collide::test::run_collide;
+using collide::test::run_collide_shell;
+using collide::test::RunResult;
+using collide::test::TempDir;
+
+bool contains(const std::string& s, const std::string& part) {
+    return s.find(part) != std::string::npos;
+}
+
+std::vector<std::string> entries(const fs::path& dir) {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+std::string read_all(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_file(const fs::path& file, const std::string& text) {
+    std::ofstream(file, std::ios::binary) << text;
+}
+
+std::string q(const fs::path& path) {
+    return "'" + path.string() + "'";
+}
+
+/// A short, cheap video: 5 frames at 854x480.
+const std::string small_video = " -q l --duration 0.3 --progress none";
+
+/// Runs `collide ARGS` in a child whose pid is known before it starts, so that `prepare(pid)`
+/// can plant files at names derived from it (the pid survives exec). Returns the exit code.
+template <typename Prepare>
+int run_with_pid(const std::vector<std::string>& args, const fs::path& log, Prepare prepare) {
+    const pid_t child = fork();
+    REQUIRE(child >= 0);
+    if (child == 0) {
+        prepare(getpid());
+        std::vector<std::string> argv{COLLIDE_EXE};
+        argv.insert(argv.end(), args.begin(), args.end());
+        std::vector<char*> pointers;
+        for (std::string& a : argv) pointers.push_back(a.data());
+        pointers.push_back(nullptr);
+        const std::string log_name = log.string();
+        if (std::freopen(log_name.c_str(), "w", stdout) == nullptr) _exit(126);
+        dup2(STDOUT_FILENO, STDERR_FILENO);
+        execv(pointers[0], pointers.data());
+        _exit(127);
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+}  // namespace
+
+TEST_CASE("render --format png -o DIR never deletes what it did not create") {
+    TempDir dir("outputs_png_dir");
+    const fs::path out = dir.path / "out";
+    fs::create_directory(out);
+    REQUIRE(run_collide("render gas" + small_video + " -o " + q(out / "gas.mp4")).exit_code == 0);
+    const std::string video = read_all(out / "gas.mp4");
+    // The issue's report: this removed out/gas.mp4.
+    const RunResult r = run_collide("render gas" + small_video + " --format png -o " + q(out));
+    CHECK(r.exit_code == 2);
+    CHECK(contains(r.output, "holds other files ('gas.mp4')"));
+    CHECK(read_all(out / "gas.mp4") == video);
+    CHECK(entries(out) == std::vector<std::string>{"gas.mp4"});
+    CHECK(entries(dir.path) == std::vector<std::string>{"out"});
+
+    // A new directory, then the same one again: an earlier sequence of the same name is replaced.
+    const fs::path frames = dir.path / "frames";
+    REQUIRE(run_collide("render gas" + small_video + " --format png -o " + q(frames)).exit_code ==
+            0);
+    CHECK(entries(frames).size() == 5);
+    CHECK(run_collide("render gas -q l --duration 0.2 --progress none --format png -o " + q(frames))
+              .exit_code == 0);
+    CHECK(entries(frames).size() == 3);  // the whole earlier sequence replaced
+    CHECK(entries(dir.path) == std::vector<std::string>{"frames", "out"});
+}
+
+TEST_CASE("render --format png -o . and -o .. are refused before anything is rendered") {
+    TempDir dir("outputs_png_dot");
+    const fs::path work = dir.path / "work";
+    fs::create_directories(work / "inner");
+    write_file(work / "notes.txt", "mine");
+    write_file(work / "inner" / "notes.txt", "mine too");
+    // Run inside work/inner, so that even a broken build could only reach this test's files.
+    // --speed 1e300 --no-limits: rendering would never end (timeout fails it), so an answer at
+    // all means the refusal came up front.
+    for (const char* bad : {".", "..", "./", "inner/..", "../inner", "/"}) {
+        CAPTURE(bad);
+        const RunResult r = run_collide_shell(
+            "cd " + q(work / "inner") + " && timeout 60 \"" + COLLIDE_EXE +
+            "\" render gas --speed 1e300 --no-limits --format png -o '" + bad + "' --progress none");
+        CHECK(r.exit_code == 2);
+        CHECK((contains(r.output, "give it a name") || contains(r.output, "current directory")));
+    }
+    CHECK(read_all(work / "notes.txt") == "mine");
+    CHECK(read_all(work / "inner" / "notes.txt") == "mine too");
+    CHECK(entries(dir.path) == std::vector<std::string>{"work"});
+    CHECK(entries(work) == std::vector<std::string>{"inner", "notes.txt"});
+}
+
+TEST_CASE("render: a legal 250-byte file name works") {
+    TempDir dir("outputs_long_name");
+    const fs::path out = dir.path / (std::string(246, 'v') + ".mp4");
+    const RunResult r = run_collide("render gas" + small_video + " -o " + q(out));
+    CHECK(r.exit_code == 0);
+    CHECK(fs::file_size(out) > 1000);
+    CHECK(entries(dir.path).size() == 1);
+}
+
+TEST_CASE("render: a symlinked output is written through, the link kept") {
+    TempDir dir("outputs_symlink");
+    write_file(dir.path / "v1.mp4", "old");
+    fs::create_symlink("v1.mp4", dir.path / "latest.mp4");
+    const RunResult r =
+        run_collide("render gas" + small_video + " -o " + q(dir.path / "latest.mp4"));
+    CHECK(r.exit_code == 0);
+    CHECK(fs::is_symlink(dir.path / "latest.mp4"));
+    CHECK(fs::file_size(dir.path / "v1.mp4") > 1000);
+    CHECK(entries(dir.path) == std::vector<std::string>{"latest.mp4", "v1.mp4"});
+}
+
+TEST_CASE("render: -o NAME without extension with --format writes that format") {
+    TempDir dir("outputs_noext");
+    const RunResult r =
+        run_collide("render gas" + small_video + " --format mp4 -o " + q(dir.path / "noext"));
+    CHECK(r.exit_code == 0);
+    CHECK(read_all(dir.path / "noext").substr(4, 4) == "ftyp");  // an MP4
+    const RunResult clash =
+        run_collide("render gas" + small_video + " --format mp4 -o " + q(dir.path / "x.gif"));
+    CHECK(clash.exit_code == 2);
+    CHECK(contains(clash.output, "ends in .gif, but --format is mp4"));
+    CHECK_FALSE(contains(clash.output, "or --format"));
+}
+
+TEST_CASE("render: stale temporaries of a dead run are removed, a live run's are kept") {
+    TempDir dir("outputs_stale");
+    const pid_t dead = fork();
+    REQUIRE(dead >= 0);
+    if (dead == 0) _exit(0);
+    waitpid(dead, nullptr, 0);
+    // What a SIGKILLed run leaves on a filesystem without O_TMPFILE.
+    const std::string stale = ".out.mp4.collide-" + std::to_string(dead) + "-Ab12Cd";
+    const std::string live = ".out.mp4.collide-" + std::to_string(getpid()) + "-Ef34Gh";
+    write_file(dir.path / stale, "half a video");
+    write_file(dir.path / live, "a video being written");
+    write_file(dir.path / ".out.mp4.XXXXXX", "not ours: another pattern");
+    const RunResult r = run_collide("render gas" + small_video + " -o " + q(dir.path / "out.mp4"));
+    CHECK(r.exit_code == 0);
+    std::vector<std::string> expected{live, ".out.mp4.XXXXXX", "out.mp4"};
+    std::sort(expected.begin(), expected.end());
+    CHECK(entries(dir.path) == expected);
+}
+
+TEST_CASE(
+    "simulate --events-log: '-' is standard output, and a symlink at a temporary name is not "
+    "followed") {
+    TempDir dir("outputs_events");
+    const RunResult r = run_collide("simulate gas --until 1 --events-log -");
+    CHECK(r.exit_code == 0);
+    CHECK(r.output.rfind("t,kind,a,b\n", 0) == 0);
+    CHECK_FALSE(fs::exists("-"));
+
+    // The old fixed pattern DEST.tmp-<pid>, planted by someone who guesses the pid.
+    write_file(dir.path / "victim.txt", "precious");
+    const int code = run_with_pid(
+        {"simulate", "gas", "--until", "1", "--events-log", (dir.path / "ev.csv").string()},
+        dir.path / "log.txt", [&](pid_t pid) {
+            fs::create_symlink(dir.path / "victim.txt",
+                               dir.path / ("ev.csv.tmp-" + std::to_string(pid)));
+        });
+    CHECK(code == 0);
+    CHECK(read_all(dir.path / "victim.txt") == "precious");
+    CHECK(fs::is_regular_file(fs::symlink_status(dir.path / "ev.csv")));
+    CHECK(read_all(dir.path / "ev.csv").rfind("t,kind,a,b\n", 0) == 0);
+}
+
+TEST_CASE("simulate --events-log to a full device is exit 1 with the reason") {
+    TempDir dir("outputs_full");
+    // Through a link, so that nothing can ever replace /dev/full itself.
+    fs::create_symlink("/dev/full", dir.path / "full.csv");
+    const RunResult r =
+        run_collide("simulate gas --until 10 --events-log " + q(dir.path / "full.csv"));
+    CHECK(r.exit_code == 1);
+    CHECK(contains(r.output, "No space left on device"));
+    CHECK(fs::is_symlink(dir.path / "full.csv"));
+}
+
+TEST_CASE("check --export: an unrelated DEST.partial is left alone") {
+    TempDir dir("outputs_partial");
+    write_file(dir.path / "x.toml.partial", "the user's own file");
+    const RunResult r = run_collide("check gas --export " + q(dir.path / "x.toml"));
+    CHECK(r.exit_code == 0);
+    CHECK(read_all(dir.path / "x.toml.partial") == "the user's own file");
+    CHECK(entries(dir.path) == std::vector<std::string>{"x.toml", "x.toml.partial"});
+}
+
+TEST_CASE("check --export: concurrent exports to one path each leave a whole file") {
+    TempDir dir("outputs_concurrent");
+    const fs::path out = dir.path / "x.toml";
+    REQUIRE(run_collide("check brownian --export " + q(dir.path / "a.toml")).exit_code == 0);
+    REQUIRE(run_collide("check dense-fluid --export " + q(dir.path / "b.toml")).exit_code == 0);
+    const std::string a = read_all(dir.path / "a.toml");
+    const std::string b = read_all(dir.path / "b.toml");
+    const std::string exe = std::string("\"") + COLLIDE_EXE + "\"";
+    for (int round = 0; round < 5; ++round) {
+        CAPTURE(round);
+        const std::string both = exe + " check brownian --export " + q(out) + " >/dev/null & " +
+                                 exe + " check dense-fluid --export " + q(out) +
+                                 " >/dev/null & wait";
+        CHECK(std::system(both.c_str()) == 0);
+        const std::string result = read_all(out);
+        CHECK((result == a || result == b));
+    }
+    CHECK(entries(dir.path) == std::vector<std::string>{"a.toml", "b.toml", "x.toml"});
+}
+
+TEST_CASE("check --export: a full disk is exit 1, not bad input") {
+    TempDir dir("outputs_export_full");
+    // A file size limit makes writes fail as a full disk does (EFBIG), on any filesystem.
+    const std::string command = "trap '' XFSZ; ulimit -f 1; exec \"" + std::string(COLLIDE_EXE) +
+                                "\" check dense-fluid --export " + q(dir.path / "x.toml");
+    const RunResult r = run_collide_shell(command);
+    CHECK(r.exit_code == 1);
+    CHECK(contains(r.output, "File too large"));
+    CHECK(entries(dir.path).empty());
+}
+
+TEST_CASE("check --export: a read-only filesystem is exit 2 with the reason") {
+    if (geteuid() != 0 || std::system("unshare -m true 2>/dev/null") != 0) {
+        COLLIDE_SKIP_TEST("needs root and unshare(1) to mount a read-only filesystem privately");
+    }
+    // A private mount namespace: the read-only tmpfs exists for this one command only.
+    TempDir dir("outputs_read_only");
+    const std::string command = "unshare -m sh -c \"mount -t tmpfs -o ro none " + q(dir.path) +
+                                " && exec '" + COLLIDE_EXE + "' check gas --export " +
+                                q(dir.path / "x.toml") + "\"";
+    const RunResult r = run_collide_shell(command);
+    CHECK(r.exit_code == 2);
+    CHECK(contains(r.output, "Read-only file system"));
+}

@@ -1,0 +1,134 @@
+// The command-line option matrix: the real `collide` over many bad and extreme option sets. Each
+// bad set must end with exit 2 and a "collide: error: <option>" message before any work starts;
+// each extreme but valid set must succeed. Built in every tree, this suite also runs against the
+// sanitizer build's executable (scripts/test.sh, step 2, label `cli-matrix`), where UBSan's
+// -fno-sanitize-recover turns any undefined behaviour (an unchecked double -> integer
+// conversion, a signed overflow) into a failed run, and LeakSanitizer any leak on these paths.
+
+#include <doctest/doctest.h>
+
+#include <string>
+#include <vector>
+
+#include "../app/run_collide.hpp"
+#include "../support/input_error.hpp"
+
+using collide::test::contains;
+using collide::test::run_collide;
+
+namespace {
+
+struct Bad {
+    std::string args;    ///< options after the subcommand (-o is added for render/thumbnail)
+    std::string option;  ///< what the message must name first
+};
+
+/// Runs every case; each must be refused with exit 2, naming `option`, without a sanitizer report.
+void expect_refused(const std::string& command, const std::vector<Bad>& cases) {
+    for (const Bad& c : cases) {
+        const std::string args = command + " " + c.args;
+        CAPTURE(args);
+        const auto r = run_collide(args);
+        CHECK(r.exit_code == 2);
+        CHECK(contains(r.output, "collide: error: "));
+        CHECK(contains(r.output, c.option));
+        CHECK_FALSE(contains(r.output, "runtime error"));  // UBSan
+        CHECK_FALSE(contains(r.output, "Sanitizer"));      // ASan, LSan
+    }
+}
+
+/// Every case must succeed (exit 0) without a sanitizer report.
+void expect_ok(const std::vector<std::string>& cases) {
+    for (const std::string& args : cases) {
+        CAPTURE(args);
+        const auto r = run_collide(args);
+        CHECK(r.exit_code == 0);
+        CHECK_FALSE(contains(r.output, "runtime error"));
+        CHECK_FALSE(contains(r.output, "Sanitizer"));
+    }
+}
+
+// Render and thumbnail refuse before creating any output: a path that must never appear.
+const std::string never = " -o /nonexistent-dir-collide/never";
+
+}  // namespace
+
+TEST_CASE("option matrix: render's numbers, sizes and names") {
+    std::vector<Bad> cases;
+    for (const char* v : {"0", "-1", "241", "1e3", "30.5", "99999999999", "abc", "0x10"})
+        cases.push_back({std::string("gas --fps ") + v + never + ".mp4", "--fps"});
+    for (const char* v : {"0", "-1", "nan", "inf", "1e300", "3601", "-0"})
+        cases.push_back({std::string("gas --duration ") + v + never + ".mp4", "--duration"});
+    for (const char* v : {"0", "-1", "nan", "inf", "-inf", "1e300", "1e308", "1e-400"})
+        cases.push_back({std::string("gas --speed ") + v + never + ".mp4", "--speed"});
+    for (const char* v : {"0", "-1", "nan", "inf", "1e-300", "5e-324", "1e-9"})
+        cases.push_back({std::string("gas --dt ") + v + never + ".mp4", "--dt"});
+    cases.push_back({"gas --dt 1e-300 --no-limits" + never + ".mp4", "--dt"});
+    cases.push_back({"gas --speed 1e308 --no-limits" + never + ".mp4", "--speed"});
+    for (const char* v : {"0x0", "64", "99999x64", "-64x64", "64x1e3", "64x99999999999", "x"})
+        cases.push_back({std::string("gas --size ") + v + never + ".mp4", "--size"});
+    for (const char* v : {"-1", "18446744073709551616", "1e23", "0x10", "1.5", "-0"})
+        cases.push_back({std::string("gas --seed ") + v + never + ".mp4", "--seed"});
+    cases.push_back({"gas -q z" + never + ".mp4", "-q"});
+    cases.push_back({"gas --mode sideways" + never + ".mp4", "--mode"});
+    cases.push_back({"gas --engine warp" + never + ".mp4", "--engine"});
+    for (const char* v : {"dary:0", "dary:-1", "dary:99999999999999999999", "indexed:1e3", "heap"})
+        cases.push_back({std::string("gas --pq ") + v + never + ".mp4", "--pq"});
+    cases.push_back({"gas --td-detect magic" + never + ".mp4", "--td-detect"});
+    cases.push_back({"gas --color plaid" + never + ".mp4", "--color"});
+    cases.push_back({"gas --format avi" + never + ".mp4", "--format"});
+    cases.push_back({"gas --at 1" + never + ".mp4", "--at"});
+    cases.push_back({"gas --progress loud" + never + ".mp4", "--progress"});
+    expect_refused("render", cases);
+}
+
+TEST_CASE("option matrix: thumbnail --at at every extreme") {
+    std::vector<Bad> cases;
+    for (const char* v : {"-1", "nan", "inf", "1e18", "1e15", "1e300", "1e308", "1e6"})
+        cases.push_back({std::string("gas --at ") + v + never + ".png", "--at"});
+    cases.push_back({"gas --at 1 --speed 1e-300" + never + ".png", "--at"});
+    cases.push_back({"gas --at 1e18 --no-limits" + never + ".png", "--at"});
+    cases.push_back({"gas --at 1 --fps 0" + never + ".png", "--fps"});
+    cases.push_back({"gas --at 1 --seed -1" + never + ".png", "--seed"});
+    expect_refused("thumbnail", cases);
+}
+
+TEST_CASE("option matrix: simulate's --until, --dt and engines") {
+    std::vector<Bad> cases;
+    for (const char* v : {"-1", "nan", "inf", "1e300", "1e308", "abc"})
+        cases.push_back({std::string("gas --until ") + v, "--until"});
+    for (const char* v : {"0", "-1", "nan", "inf", "1e-300", "1e-9"})
+        cases.push_back({std::string("gas --until 10 --engine time --dt ") + v, "--dt"});
+    cases.push_back({"gas --until 10 --engine time --dt 1e-300 --no-limits", "--dt"});
+    cases.push_back({"gas --until 1 --engine warp", "--engine"});
+    cases.push_back({"gas --until 1 --engine classic --pq dary:0", "--pq"});
+    cases.push_back({"gas --until 1 --engine time --td-detect magic", "--td-detect"});
+    cases.push_back({"/dev/null --until 1", "/dev/null"});
+    cases.push_back({"/ --until 1", "/"});
+    expect_refused("simulate", cases);
+}
+
+TEST_CASE("option matrix: bench engine's counts") {
+    std::vector<Bad> cases;
+    for (const char* v : {"0", "1", "1.5", "1e10", "-1", "nan", "inf"})
+        cases.push_back({std::string("--n ") + v, "--n"});
+    for (const char* v : {"0", "1", "-1", "nan"})
+        cases.push_back({std::string("--eta ") + v, "--eta"});
+    for (const char* v : {"0", "1e30", "nan", "inf", "2e10"})
+        cases.push_back({std::string("--collisions ") + v, "--collisions"});
+    for (const char* v : {"nan", "inf", "1e300"})
+        cases.push_back({std::string("--warmup ") + v, "--warmup"});
+    for (const char* v : {"-1", "18446744073709551616", "1e23"})
+        cases.push_back({std::string("--seed ") + v, "--seed"});
+    cases.push_back({"--engine time", "--engine"});
+    expect_refused("bench engine", cases);
+}
+
+TEST_CASE("option matrix: extreme but valid values run to the end") {
+    expect_ok({"simulate gas --until 0", "simulate gas --until 1e-300",
+               "simulate gas --until 5e-324", "simulate gas --until 1e3",
+               "simulate gas --until 1 --engine time --dt 1e-4",
+               "simulate gas --until 1 --engine classic --pq dary:2", "check gas",
+               "bench engine --n 2 --eta 0.01 --collisions 1 --warmup 0",
+               "bench engine --n 64 --collisions 100 --seed 18446744073709551615 --json"});
+}

@@ -1,0 +1,241 @@
+// The priority-queue lesson view (heap_view.hpp): tree layout, panel layout, legibility limits,
+// input checks, pixel checks of highlights and slides, and golden frames at 480x270 (tolerant
+// comparison as in golden_tests.cpp; regenerate with COLLIDE_UPDATE_GOLDENS=1, then LOOK).
+#include <doctest/doctest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <set>
+#include <string>
+
+#include "collide/error.hpp"
+#include "collide/render/heap_view.hpp"
+#include "heap_view_layout.hpp"
+#include "render_fixtures.hpp"
+
+namespace collide::render {
+namespace {
+
+namespace fs = std::filesystem;
+
+HeapPanelView binary_panel(const std::vector<std::string>& keys, std::size_t capacity) {
+    HeapPanelView p;
+    p.title = "binary heap (max)";
+    p.counters = {"compares 3", "exchanges 2"};
+    p.caption = "insert S at a[6]; S > P: exchange";
+    p.capacity = capacity;
+    for (const std::string& k : keys) p.slots.push_back({k, SlotMark::plain});
+    return p;
+}
+
+HeapFrameView frame_of(std::vector<HeapPanelView> panels) {
+    HeapFrameView f;
+    f.tokens = {"P", "Q", "E", "*", "X", "S"};
+    f.current_token = 5;
+    f.panels = std::move(panels);
+    return f;
+}
+
+HeapViewConfig config_of(int width, int height) {
+    HeapViewConfig c;
+    c.width = width;
+    c.height = height;
+    return c;
+}
+
+/// Pixels whose colour is within 40 of `c` on every channel.
+std::size_t pixels_near(const Image& image, Rgb8 c) {
+    std::size_t n = 0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const Rgb8 p = test::rgb_at(image, x, y);
+            n += std::abs(p.r - c.r) < 40 && std::abs(p.g - c.g) < 40 && std::abs(p.b - c.b) < 40;
+        }
+    }
+    return n;
+}
+
+constexpr Rgb8 amber{240, 170, 40};
+constexpr Rgb8 blue{70, 145, 240};
+
+// ------------------------------------------------------------------------------ golden frames
+
+bool updating_goldens() {
+    const char* flag = std::getenv("COLLIDE_UPDATE_GOLDENS");
+    return flag != nullptr && std::string(flag) == "1";
+}
+
+void check_golden(const Image& image, const std::string& name) {
+    const fs::path path = fs::path(COLLIDE_TESTS_DIR) / "render" / "golden" / (name + ".png");
+    test::dump_if_requested(image, "golden_" + name);
+    if (updating_goldens()) {
+        video::write_png(image, path);
+        MESSAGE("updated golden image " << path.string());
+        return;
+    }
+    REQUIRE_MESSAGE(fs::exists(path), "missing golden " << path.string());
+    const Image golden = video::read_png(path);
+    REQUIRE(golden.width == image.width);
+    REQUIRE(golden.height == image.height);
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+        for (std::size_t c = 0; c < 4; ++c) {
+            if (std::abs(image.rgba[i + c] - golden.rgba[i + c]) > 2) {
+                ++differing;
+                break;
+            }
+        }
+    }
+    const auto allowed = static_cast<std::size_t>(0.001 * image.width * image.height);
+    INFO("golden " << name << ": " << differing << " pixels differ (allowed " << allowed << ")");
+    CHECK(differing <= allowed);
+}
+
+}  // namespace
+
+TEST_CASE("heap view: a binary tree's nodes sit level by level, parents over their children") {
+    const std::vector<PointF> p = tree_positions(11, 2);
+    REQUIRE(p.size() == 11);
+    CHECK(tree_levels(11, 2) == 4);
+    CHECK(tree_leaves(11, 2) == 6);
+    CHECK(p[0].y == 0.0F);
+    CHECK(p[10].y == 1.0F);
+    CHECK(p[1].y == doctest::Approx(1.0 / 3.0));
+    for (std::size_t i = 1; i < p.size(); ++i) {
+        CHECK(p[i].y > p[(i - 1) / 2].y);  // children below their parent
+    }
+    CHECK(p[1].x == doctest::Approx(0.5F * (p[3].x + p[4].x)));
+    CHECK(p[1].x < p[0].x);
+    CHECK(p[0].x < p[2].x);
+    // No two nodes of a level overlap: x strictly increasing along each level.
+    for (std::size_t i = 4; i < 6; ++i) CHECK(p[i].x < p[i + 1].x);
+    for (const PointF& q : p) {
+        CHECK(q.x >= 0.0F);
+        CHECK(q.x <= 1.0F);
+    }
+}
+
+TEST_CASE("heap view: d-ary trees, single nodes and empty trees") {
+    CHECK(tree_levels(0, 3) == 0);
+    CHECK(tree_levels(1, 3) == 1);
+    CHECK(tree_levels(4, 3) == 2);
+    CHECK(tree_levels(5, 3) == 3);
+    CHECK(tree_leaves(13, 3) == 9);
+    CHECK(tree_positions(1, 2)[0].x == 0.5F);
+    CHECK(tree_positions(1, 2)[0].y == 0.5F);
+    const std::vector<PointF> p = tree_positions(4, 3);
+    CHECK(p[0].x == doctest::Approx(p[2].x));  // the middle child under the root
+    CHECK(tree_positions(0, 2).empty());
+}
+
+TEST_CASE("heap view: panels share one row and the legible limit shrinks with them") {
+    const std::vector<RectF> r = panel_rects(3, {0.0F, 0.0F, 320.0F, 100.0F}, 10.0F);
+    REQUIRE(r.size() == 3);
+    CHECK(r[0].width() == doctest::Approx(100.0F));
+    CHECK(r[2].x1 == doctest::Approx(320.0F));
+    CHECK(r[1].y0 == 0.0F);
+    CHECK(max_legible_keys(1) == 36);
+    CHECK(max_legible_keys(3) == 12);
+    CHECK(max_legible_keys(5) == 7);  // the lecture's trace holds 7 keys at most
+}
+
+TEST_CASE("heap view: bad frames are input errors") {
+    HeapRenderer renderer(config_of(160, 90), Backend::osmesa);
+    const auto kind_of = [&](HeapFrameView f) {
+        try {
+            (void)renderer.render(f);
+        } catch (const Error& e) {
+            return e.kind();
+        }
+        return ErrorKind::runtime;  // nothing thrown: the CHECK below fails
+    };
+    CHECK(kind_of(HeapFrameView{}) == ErrorKind::input);
+    HeapPanelView too_many = binary_panel({"A", "B", "C"}, 2);
+    CHECK(kind_of(frame_of({too_many})) == ErrorKind::input);
+    HeapPanelView bad_swap = binary_panel({"A", "B"}, 3);
+    bad_swap.swap = HeapSwapView{0, 2, 0.5F};
+    CHECK(kind_of(frame_of({bad_swap})) == ErrorKind::input);
+    HeapViewConfig tiny = config_of(32, 90);
+    CHECK_THROWS_AS(HeapRenderer(tiny, Backend::osmesa), Error);
+}
+
+TEST_CASE("heap view: compared keys light up amber, exchanged ones blue, frames repeat exactly") {
+    HeapRenderer renderer(config_of(480, 270), Backend::osmesa);
+    HeapPanelView plain = binary_panel({"T", "P", "R", "N", "H"}, 7);
+    const Image before = renderer.render(frame_of({plain}));
+    HeapPanelView compared = plain;
+    compared.slots[1].mark = SlotMark::compared;
+    compared.slots[4].mark = SlotMark::compared;
+    const Image lit = renderer.render(frame_of({compared}));
+    // Two nodes and two slots turn amber (the token tab is amber in both frames).
+    CHECK(pixels_near(lit, amber) > pixels_near(before, amber) + 400);
+    HeapPanelView moving = plain;
+    moving.slots[1].mark = SlotMark::moving;
+    moving.slots[4].mark = SlotMark::moving;
+    moving.swap = HeapSwapView{4, 1, 0.5F};
+    const Image sliding = renderer.render(frame_of({moving}));
+    CHECK(pixels_near(sliding, blue) > pixels_near(before, blue) + 400);
+    CHECK(renderer.render(frame_of({moving})).rgba == sliding.rgba);  // deterministic
+    // Halfway through the exchange the frame differs from both ends.
+    moving.swap->t = 0.0F;
+    const Image start = renderer.render(frame_of({moving}));
+    CHECK(start.rgba != sliding.rgba);
+}
+
+TEST_CASE("golden: the lecture's binary heap mid-exchange, 480x270") {
+    HeapRenderer renderer(config_of(480, 270), Backend::osmesa);
+    HeapPanelView p = binary_panel({"T", "P", "R", "N", "H", "O", "A", "E", "I", "G", "S"}, 11);
+    p.slots[10].mark = SlotMark::moving;
+    p.slots[4].mark = SlotMark::moving;
+    p.swap = HeapSwapView{10, 4, 0.4F};
+    p.caption = "insert S at a[11]; exchange S and H";
+    check_golden(renderer.render(frame_of({p})), "heap_binary_exchange");
+}
+
+TEST_CASE("golden: arrays and a heap side by side, the scan and a shift, 480x270") {
+    HeapRenderer renderer(config_of(480, 270), Backend::osmesa);
+    HeapPanelView unordered;
+    unordered.title = "unordered array (max)";
+    unordered.counters = {"compares 2", "exchanges 0"};
+    unordered.caption = "scan for the max: X > P, new max X";
+    unordered.tree = false;
+    unordered.capacity = 7;
+    unordered.slots = {{"P", SlotMark::plain}, {"E", SlotMark::best}, {"X", SlotMark::compared}};
+    HeapPanelView ordered = unordered;
+    ordered.title = "ordered array (max)";
+    ordered.counters = {"compares 2", "shifts 1"};
+    ordered.caption = "insert M at a[3]; shift P right to a[3]";
+    ordered.slots = {{"E", SlotMark::plain}, {"P", SlotMark::moving}, {"M", SlotMark::moving}};
+    ordered.swap = HeapSwapView{1, 2, 0.5F};
+    HeapPanelView heap = binary_panel({"X", "E", "P"}, 7);
+    heap.slots[0].mark = SlotMark::compared;
+    heap.slots[2].mark = SlotMark::compared;
+    check_golden(renderer.render(frame_of({unordered, ordered, heap})), "heap_three_panels");
+}
+
+TEST_CASE("golden: the indexed heap's map and heapsort's sorted part, 480x270") {
+    HeapRenderer renderer(config_of(480, 270), Backend::osmesa);
+    HeapPanelView indexed = binary_panel({"12", "7", "5"}, 4);
+    indexed.title = "indexed binary heap (max)";
+    indexed.show_map = true;
+    indexed.slots[0].mark = SlotMark::changed;
+    indexed.map = {{"5", "3", false}, {"12", "1", true}, {"7", "2", false}};
+    indexed.caption = "increase 3 to 12: the map says 3 is at a[3]; set a[3] = 12";
+    HeapViewConfig config = config_of(480, 270);
+    config.widest_key = "12";
+    HeapRenderer wide_keys(config, Backend::osmesa);
+    check_golden(wide_keys.render(frame_of({indexed})), "heap_indexed_map");
+
+    HeapPanelView sort = binary_panel({"P", "O", "M", "L", "E", "A", "E", "R", "S", "T", "X"}, 11);
+    sort.title = "heapsort (ascending)";
+    sort.heap_size = 7;
+    sort.slots[1].mark = SlotMark::compared;
+    sort.slots[2].mark = SlotMark::compared;
+    sort.caption = "sortdown; sink P: larger child? O > M";
+    HeapFrameView f = frame_of({sort});
+    f.tokens = {"build", "sortdown"};
+    f.current_token = 1;
+    check_golden(renderer.render(f), "heap_sortdown");
+}
+
+}  // namespace collide::render
