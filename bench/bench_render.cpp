@@ -1,5 +1,6 @@
 // Renderer benchmarks on the offscreen backend (llvmpipe): draw and readback separately, overlays
-// on and off, N discs per panel. Figures go to docs/benchmarks.md, section "Renderer".
+// none (0), lesson (1, the default) and full (2), N discs per panel. Figures go to
+// docs/benchmarks.md, section "Renderer".
 //   cmake --build build/dev --target bench_render && build/dev/bench/bench_render
 //   COLLIDE_BENCH_GL=egl build/dev/bench/bench_render     # EGL surfaceless instead of OSMesa
 // The frame is the product's: 1280x720, two panels (time-driven, event-driven), each showing N
@@ -58,13 +59,23 @@ struct Scenario {
     FrameContent frame;
     Renderer renderer;
 
-    Scenario(std::size_t count, bool overlays)
+    Scenario(std::size_t count, int overlays)
         : left(gas(count, 1, Boundary::walls)),
           right(gas(count, 2, Boundary::periodic)),
           renderer(config(overlays), bench_backend()) {
         frame.panels = {{&left, "Time-driven, dt = 0.01", {"steps 100", "missed 3"}},
                         {&right, "Event-driven (priority queue)", {"events 12345"}}};
         frame.time_text = "t = 1.00";
+        // What the lesson level shows (ignored by the other levels).
+        frame.panels[0].figures = {{"1,234", "missed", true}, {"12", "overlapping", true}};
+        frame.panels[1].figures = {{"12,345", "collisions", false}, {"0", "missed", true}};
+        frame.panels[0].cost_label = "pair tests";
+        frame.panels[0].cost = 1.2e6;
+        frame.panels[1].cost_label = "queue steps";
+        frame.panels[1].cost = 2.4e4;
+        frame.panels[1].accent = panel_accent(false);
+        frame.caption = "Fast discs slip through the barrier between two time steps";
+        frame.energy_line = "Energy conserved";
         for (int p = 0; p < 2; ++p) {
             std::vector<DriftPoint> series;
             for (int i = 0; i < 200; ++i) series.push_back({0.01 * i, 1e-4 * i * p});
@@ -72,13 +83,16 @@ struct Scenario {
         }
     }
 
-    static RenderConfig config(bool overlays) {
+    /// 0: none, 1: lesson (the default), 2: full.
+    static RenderConfig config(int overlays) {
         RenderConfig c;
         c.width = 1280;
         c.height = 720;
         c.color_mode = ColorMode::speed;
         c.speed_max = 2.0;
-        c.overlays = overlays;
+        c.overlays = overlays == 0   ? OverlayLevel::none
+                     : overlays == 1 ? OverlayLevel::lesson
+                                     : OverlayLevel::full;
         return c;
     }
 };
@@ -91,14 +105,14 @@ void set_counters(benchmark::State& state) {
 
 // Draw only: build instances and overlays, issue GL, glFinish.
 void BM_draw(benchmark::State& state) {
-    Scenario s(static_cast<std::size_t>(state.range(0)), state.range(1) != 0);
+    Scenario s(static_cast<std::size_t>(state.range(0)), static_cast<int>(state.range(1)));
     for (auto _ : state) s.renderer.draw(s.frame);
     set_counters(state);
 }
 
 // Readback only: glReadPixels of the last frame into a reused image.
 void BM_read_pixels(benchmark::State& state) {
-    Scenario s(static_cast<std::size_t>(state.range(0)), state.range(1) != 0);
+    Scenario s(static_cast<std::size_t>(state.range(0)), static_cast<int>(state.range(1)));
     Image image;
     s.renderer.draw(s.frame);
     for (auto _ : state) {
@@ -110,7 +124,7 @@ void BM_read_pixels(benchmark::State& state) {
 
 // The whole frame: draw + readback (what `collide render` pays per frame).
 void BM_render(benchmark::State& state) {
-    Scenario s(static_cast<std::size_t>(state.range(0)), state.range(1) != 0);
+    Scenario s(static_cast<std::size_t>(state.range(0)), static_cast<int>(state.range(1)));
     Image image;
     for (auto _ : state) {
         s.renderer.render(s.frame, image);
@@ -120,7 +134,7 @@ void BM_render(benchmark::State& state) {
 }
 
 void sizes(benchmark::internal::Benchmark* b) {
-    for (const int overlays : {0, 1}) {
+    for (const int overlays : {0, 1, 2}) {  // none, lesson, full
         for (const int n : {500, 5000, 15000, 50000}) b->Args({n, overlays});
     }
     // Process CPU time (llvmpipe's rasteriser threads included): on a shared machine it is the

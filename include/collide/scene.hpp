@@ -12,14 +12,30 @@
 
 namespace collide {
 
+/// A caption shown from `at` seconds of video until the next one (`[[render.captions]]`).
+struct CaptionCue {
+    double at = 0.0;   ///< seconds of video
+    std::string text;  ///< at most max_caption_chars characters
+    std::string file;  ///< where it was written, for errors found later (beyond the video)
+    int line = 0;
+};
+
+/// Longest caption: one line across a 16:9 frame at the lesson text size (docs/scenes.md).
+inline constexpr std::size_t max_caption_chars = 64;
+
 /// Rendering defaults a scene may carry in `[render]`; the CLI overrides every one of them.
 struct RenderHints {
     std::optional<std::string> color_mode;  ///< "scene", "speed", "mass" (or "tag")
     std::optional<bool> trails;             ///< draw trails for tagged discs
-    std::optional<bool> overlays;           ///< counters and plots on screen
-    std::optional<double> duration;         ///< seconds of video
-    std::optional<double> speed;            ///< simulation time units per second of video
-    std::optional<double> dt;               ///< time-driven quantum
+    /// "none", "lesson" or "full" (true in a file means lesson, false none)
+    std::optional<std::string> overlays;
+    std::optional<std::string> theme;      ///< "dark" or "light"
+    std::optional<std::string> caption;    ///< the caption line for the whole video
+    std::vector<CaptionCue> captions;      ///< scripted captions, `at` increasing
+    std::optional<std::string> histogram;  ///< "auto", "none", "small" or "large"
+    std::optional<double> duration;        ///< seconds of video
+    std::optional<double> speed;           ///< simulation time units per second of video
+    std::optional<double> dt;              ///< time-driven quantum
     /// Where each numeric hint was written, "file:line: render.dt", so that a hint the CLI
     /// refuses (too long, too much work) is named where the user can fix it; empty = unknown.
     std::string duration_at;
@@ -28,8 +44,9 @@ struct RenderHints {
 };
 
 struct Scene {
-    std::string name;   ///< short name (file stem or built-in name), used for default outputs
-    std::string title;  ///< human title shown on screen
+    std::string name;         ///< short name (file stem or built-in name), used for default outputs
+    std::string title;        ///< human title shown on screen
+    std::string description;  ///< one or two sentences: what the scene shows (the intro card)
     Box box;
     std::vector<Disc> discs;
     RenderHints render;

@@ -14,6 +14,7 @@
 
 #include "cli_numbers.hpp"
 #include "collide/error.hpp"
+#include "collide/io/file.hpp"
 #include "collide/scene/load.hpp"
 #include "collide/video/output.hpp"
 #include "collide/video/video_writer.hpp"
@@ -44,6 +45,9 @@ struct CliValues {
     std::string pq = "binary";
     std::string td_detect = "all-pairs";
     std::string color;
+    std::string overlays;
+    std::string theme;
+    std::string layout_json;
     std::string format;
     bool trails = true;
     bool last_frame = false;
@@ -66,6 +70,9 @@ struct CliValues {
     CLI::Option* dt_opt = nullptr;
     CLI::Option* at_opt = nullptr;
     CLI::Option* color_opt = nullptr;
+    CLI::Option* overlays_opt = nullptr;
+    CLI::Option* theme_opt = nullptr;
+    CLI::Option* layout_json_opt = nullptr;
     CLI::Option* format_opt = nullptr;
     CLI::Option* trails_opt = nullptr;
 };
@@ -113,6 +120,9 @@ RenderRequest request_of(const CliValues& v, bool still) {
     r.td_detect = v.td_detect;
     r.color = if_given(v.color_opt, v.color);
     r.trails = if_given(v.trails_opt, v.trails);
+    r.overlays = if_given(v.overlays_opt, v.overlays);
+    r.theme = if_given(v.theme_opt, v.theme);
+    r.layout_json = if_given(v.layout_json_opt, v.layout_json);
     r.format = if_given(v.format_opt, v.format);
     r.last_frame = v.last_frame;
     r.still = still;
@@ -156,6 +166,16 @@ void add_shared_options(CLI::App& cmd, CliValues& v) {
     v.color_opt =
         cmd.add_option("--color", v.color,
                        "Disc colours: scene, speed, mass or tag (default: scene hint, else scene)");
+    v.overlays_opt = cmd.add_option(
+        "--overlays", v.overlays,
+        "Text around the boxes: lesson (titles, a few figures, the cost graphic, captions; "
+        "default), full (every counter and plot) or none (discs only)");
+    v.theme_opt = cmd.add_option("--theme", v.theme,
+                                 "Colours: dark (screens) or light (projectors, print); default: "
+                                 "scene hint, else dark");
+    v.layout_json_opt = cmd.add_option(
+        "--layout-json", v.layout_json,
+        "Also write the frame's rectangles (panels, boxes, text lines with pixel heights) as JSON");
     v.trails_opt = cmd.add_flag("--trails,!--no-trails", v.trails,
                                 "Trails behind tagged discs (default: scene hint, else on)");
     cmd.add_flag("--preview", v.preview, "Show the frames live in a window when a display exists");
@@ -258,6 +278,11 @@ void run(const CliValues& values, bool still) {
     const RenderPlan plan = validated_plan(request, scene);
     video::set_libav_verbose(values.verbose);
     for (const std::string& line : plan.notices) print_notice(line);
+    // Its temporary exists from here on, so an unwritable path fails before any frame.
+    std::optional<io::OutputFile> layout_file;
+    if (!plan.layout_json.empty()) {
+        layout_file.emplace(plan.layout_json, io::OutputOptions{"--layout-json", true});
+    }
 
     InterruptGuard interrupts;
     Progress progress(progress_mode, plan.clock.count);
@@ -278,6 +303,10 @@ void run(const CliValues& values, bool still) {
         throw;
     }
     progress.finish();
+    if (layout_file) {
+        layout_file->write(result.layout_json);
+        layout_file->commit();
+    }
     for (const std::string& line : result.notices) print_notice(line);
     print_summary(plan, result, progress.elapsed_seconds());
 }

@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <optional>
@@ -161,11 +162,32 @@ std::vector<std::string> event_driven_counters(const Measurements& m, double ene
     };
 }
 
-std::vector<std::string> comparison_notes(RenderMode mode) {
-    if (mode != RenderMode::both) return {};
+std::vector<std::string> comparison_notes(RenderMode /*mode*/) {
+    // The chaos remark belongs to the scenes that need it (their own captions), not every video.
+    return {};
+}
+
+namespace {
+std::string count_text(std::uint64_t n) {
+    return render::with_separators(static_cast<long long>(n));
+}
+}  // namespace
+
+std::vector<render::Figure> time_driven_figures(const Measurements& m, bool walls) {
+    std::vector<render::Figure> out = {
+        {count_text(m.missed_collisions), "missed", true},
+        {count_text(m.overlapping_pairs), "overlapping", true},
+    };
+    if (walls && m.escaped > 0) out.push_back({count_text(m.escaped), "left the box", true});
+    out.push_back({count_text(m.collisions_pair + m.collisions_wall), "collisions", false});
+    return out;
+}
+
+std::vector<render::Figure> event_driven_figures(const Measurements& m) {
     return {
-        "The panels drift apart even when both are right (chaos): compare the figures, not the "
-        "positions."};
+        {count_text(m.collisions_pair + m.collisions_wall), "collisions", false},
+        {"0", "missed", true},
+    };
 }
 
 FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan, const std::atomic<bool>* stop)
@@ -179,10 +201,14 @@ FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan, const std::
         panel.initial_energy = panel.engine->measurements().kinetic_energy;
         panels_.push_back(std::move(panel));
     };
+    const bool lesson = plan.render.overlays == render::OverlayLevel::lesson;
     if (plan.mode != RenderMode::event)
-        add(plan.time_engine, true, time_panel_title(plan.time_engine.dt));
+        add(plan.time_engine, true,
+            lesson ? time_lesson_title(plan.time_engine.dt)
+                   : time_panel_title(plan.time_engine.dt));
     if (plan.mode != RenderMode::time)
-        add(plan.event_engine, false, event_panel_title(plan.event_engine));
+        add(plan.event_engine, false,
+            lesson ? event_lesson_title(plan.event_engine) : event_panel_title(plan.event_engine));
 }
 
 SimFrame FrameSource::frame(std::int64_t k) {
@@ -208,6 +234,19 @@ PanelFrame FrameSource::describe(const Panel& panel) const {
     out.counters = panel.time_driven ? time_driven_counters(m, plan_.time_engine.dt, drift)
                                      : event_driven_counters(m, drift);
     out.drift = {out.snapshot.time, drift};
+    out.time_driven = panel.time_driven;
+    if (panel.time_driven) {
+        out.figures = time_driven_figures(m, out.snapshot.box.boundary == Boundary::walls);
+        out.compact_line = fmt::format("{} missed", count_text(m.missed_collisions));
+        out.cost_label = "pair tests";
+        out.cost = static_cast<double>(m.overlap_checks);
+    } else {
+        out.figures = event_driven_figures(m);
+        out.compact_line =
+            fmt::format("{} collisions", count_text(m.collisions_pair + m.collisions_wall));
+        out.cost_label = "queue steps";
+        out.cost = static_cast<double>(m.queue.pushes + m.queue.pops);
+    }
     return out;
 }
 
@@ -225,14 +264,54 @@ FrameComposer::FrameComposer(const RenderPlan& plan) : plan_(plan) {
 }
 
 const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
+    const LessonPlan& lesson = plan_.lesson;
+    const double video_time = static_cast<double>(frame.index) / plan_.fps;
     content_.panels.resize(frame.panels.size());
     content_.energy_drift.resize(frame.panels.size());
     for (std::size_t i = 0; i < frame.panels.size(); ++i) {
         const PanelFrame& panel = frame.panels[i];
-        content_.panels[i] = {&panel.snapshot, panel.title, panel.counters};
+        render::PanelContent& out = content_.panels[i];
+        out.snapshot = &panel.snapshot;
+        out.title = panel.title;
+        out.counters = panel.counters;
+        out.figures = panel.figures;
+        out.compact_line = panel.compact_line;
+        out.cost_label = panel.cost_label;
+        out.cost = panel.cost;
+        out.accent = render::panel_accent(panel.time_driven);
+        out.note.clear();
+        out.step_period = 1;
+        out.step_phase = 0;
+        if (panel.time_driven && lesson.frames_per_step > 1) {
+            // Which frame of the held step this is: a new state restarts the count.
+            if (panel.snapshot.time != last_step_time_) {
+                last_step_time_ = panel.snapshot.time;
+                step_phase_ = 0;
+            } else {
+                ++step_phase_;
+            }
+            out.note = step_note(plan_.time_engine.dt, plan_.clock.interval);
+            out.step_period = lesson.frames_per_step;
+            out.step_phase = std::min(step_phase_, lesson.frames_per_step - 1);
+        }
         content_.energy_drift[i].push_back(panel.drift);
+        if (std::isfinite(panel.drift.drift))
+            largest_drift_ = std::max(largest_drift_, std::abs(panel.drift.drift));
     }
     content_.time_text = clock_label(frame.time, plan_.clock, plan_.speed.speed);
+    if (plan_.render.overlays == render::OverlayLevel::lesson) {
+        // Just the time: the column is narrow and the playback rate is no lesson.
+        content_.time_text = content_.time_text.substr(0, content_.time_text.find("   ("));
+    }
+    content_.video_time = video_time;
+    content_.caption = lesson.caption_at(video_time);
+    content_.histogram = lesson.histogram;
+    const bool conserved = largest_drift_ <= round_off_drift;
+    content_.energy_line = conserved ? "Energy conserved" : "Energy not conserved";
+    content_.energy_plot = !conserved;
+    content_.intro_title = lesson.title;
+    content_.intro_text = lesson.description;
+    content_.intro_opacity = lesson.intro_opacity(video_time);
     return content_;
 }
 
@@ -258,7 +337,11 @@ PipelineResult render_video(const Scene& scene, const RenderPlan& plan,
     while (std::optional<SimFrame> frame = simulation.next()) {
         check_interrupt(hooks);
         Image image = writer.spare_frame();
-        renderer.render(composer.compose(*frame), image);
+        const render::FrameContent& content = composer.compose(*frame);
+        renderer.render(content, image);
+        if (!plan.layout_json.empty() && frame->index + 1 == plan.clock.count) {
+            result.layout_json = renderer.layout_json(content);
+        }
         // Closing the window stops the preview only: the video is encoded to the end.
         if (preview && !preview->show(image)) preview.reset();
         dump.write(image);
@@ -301,6 +384,7 @@ PipelineResult render_still(const Scene& scene, const RenderPlan& plan,
         const render::FrameContent& content = composer.compose(*frame);
         if (frame->index + 1 == plan.clock.count) {
             renderer.render(content, image);
+            if (!plan.layout_json.empty()) result.layout_json = renderer.layout_json(content);
         } else if (frame->index >= first_drawn) {
             renderer.draw(content);
         }

@@ -32,8 +32,13 @@ namespace collide::app {
 struct PanelFrame {
     Snapshot snapshot;
     std::string title;
-    std::vector<std::string> counters;
-    render::DriftPoint drift;  ///< (KE - KE0) / KE0 at this frame
+    std::vector<std::string> counters;  ///< full level
+    render::DriftPoint drift;           ///< (KE - KE0) / KE0 at this frame
+    bool time_driven = false;
+    std::vector<render::Figure> figures;  ///< lesson level
+    std::string compact_line;
+    std::string cost_label;
+    double cost = 0.0;
 };
 
 /// What the simulation thread hands to the render thread for one frame.
@@ -78,6 +83,13 @@ class FrameSource {
 /// The notice lines under a side-by-side frame: why the pictures differ, what to compare.
 [[nodiscard]] std::vector<std::string> comparison_notes(RenderMode mode);
 
+/// The lesson level's figures in plain words (pure: unit-tested). `walls`: the box has walls
+/// (discs can leave it).
+[[nodiscard]] std::vector<render::Figure> time_driven_figures(const Measurements& m, bool walls);
+[[nodiscard]] std::vector<render::Figure> event_driven_figures(const Measurements& m);
+/// Below this relative drift the energy is conserved up to round-off.
+inline constexpr double round_off_drift = 1e-9;
+
 /// Turns SimFrames into the renderer's FrameContent (render thread), keeping each panel's energy
 /// drift series across frames. The content points into the SimFrame, which must outlive its use.
 class FrameComposer {
@@ -88,6 +100,9 @@ class FrameComposer {
   private:
     const RenderPlan& plan_;
     render::FrameContent content_;
+    double largest_drift_ = 0.0;
+    double last_step_time_ = -1.0;
+    int step_phase_ = 0;
 };
 
 /// Outside-world connections of a run. All optional.
@@ -113,6 +128,7 @@ struct PipelineResult {
     int output_width = 0;
     int output_height = 0;
     double output_fps = 0.0;
+    std::string layout_json;  ///< the last frame's rectangles (when plan.layout_json is set)
 };
 
 /// Renders plan.clock's frames into plan.output (MP4, GIF or PNG sequence). Nothing appears at

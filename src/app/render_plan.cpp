@@ -83,8 +83,8 @@ EngineOptions event_engine_options(const RenderRequest& request) {
     return options;
 }
 
-EngineOptions time_engine_options(const RenderRequest& request, const Scene& scene, double interval,
-                                  std::vector<std::string>& notices) {
+EngineOptions time_engine_options(const RenderRequest& request, const Scene& scene, double speed,
+                                  double interval, std::vector<std::string>& notices) {
     EngineOptions options;
     options.engine = "time";
     if (request.td_detect != "all-pairs" && request.td_detect != "grid") {
@@ -93,8 +93,8 @@ EngineOptions time_engine_options(const RenderRequest& request, const Scene& sce
     }
     options.td_detect = request.td_detect;
     const bool from_cli = request.dt.has_value();
-    // Without a dt anywhere: one step per frame, the coarsest that still lands on frame times.
-    options.dt = request.dt.value_or(scene.render.dt.value_or(interval));
+    // Without a dt anywhere: the scene's own time scale, so -q and --fps never change the physics.
+    options.dt = request.dt.value_or(scene.render.dt.value_or(default_dt(speed)));
     require_positive(options.dt,
                      from_cli ? std::string("--dt") : hint_option(scene.render.dt_at, "dt"),
                      "time step");
@@ -135,9 +135,105 @@ render::RenderConfig render_config(const RenderRequest& request, const Scene& sc
         config.mass_max = heaviest->mass;
     }
     config.trails = request.trails.value_or(scene.render.trails.value_or(true));
-    config.overlays = scene.render.overlays.value_or(true);
+    if (request.overlays) {
+        config.overlays = render::parse_overlay_level(*request.overlays, "--overlays");
+    } else if (scene.render.overlays) {
+        config.overlays =
+            render::parse_overlay_level(*scene.render.overlays, "scene [render] overlays");
+    }
+    if (request.theme) {
+        config.theme = render::parse_theme(*request.theme, "--theme");
+    } else if (scene.render.theme) {
+        config.theme = render::parse_theme(*scene.render.theme, "scene [render] theme");
+    }
     config.validate();
     return config;
+}
+
+/// Trails long enough to see a path: the whole video for a few tagged discs (a Brownian
+/// tracer's path), the default otherwise (each trail point costs a segment per frame).
+int trail_length(const Scene& scene, std::int64_t frames) {
+    constexpr std::size_t few_tagged = 8;
+    constexpr std::int64_t default_length = 48;
+    constexpr std::int64_t longest = 1024;
+    const auto tagged = static_cast<std::size_t>(std::count_if(
+        scene.discs.begin(), scene.discs.end(), [](const Disc& d) { return !d.tag.empty(); }));
+    if (tagged == 0 || tagged > few_tagged) return static_cast<int>(default_length);
+    return static_cast<int>(std::clamp(frames, default_length, longest));
+}
+
+render::PlotSize histogram_size(const Scene& scene) {
+    // A distribution needs discs: below this many moving ones a histogram is noise.
+    constexpr std::size_t enough_for_a_distribution = 200;
+    // "auto": only where it teaches. The lesson column is too narrow for a readable small plot
+    // at 2.8 % capitals, so a scene shows one when it asks ("large", e.g. maxwell-boltzmann).
+    const std::string kind = scene.render.histogram.value_or("auto");
+    if (kind == "large") return render::PlotSize::large;
+    if (kind == "small") {
+        return moving_disc_count(scene) >= enough_for_a_distribution ? render::PlotSize::small
+                                                                     : render::PlotSize::none;
+    }
+    return render::PlotSize::none;
+}
+
+/// Captions beyond the video: an error when the video is as long as the scene says (the scene
+/// is wrong), a notice when --duration shortened it (a preview).
+std::vector<CaptionCue> captions_within(const Scene& scene, double duration, bool cli_duration,
+                                        std::vector<std::string>& notices) {
+    std::vector<CaptionCue> kept;
+    for (const CaptionCue& cue : scene.render.captions) {
+        if (cue.at < duration) {
+            kept.push_back(cue);
+            continue;
+        }
+        if (!cli_duration) {
+            throw_input_error(cue.file, cue.line, "render.captions.at",
+                              fmt::format("beyond the video: {:g} s, the video lasts {:g} s "
+                                          "(set [render] duration)",
+                                          cue.at, duration));
+        }
+        notices.push_back(
+            fmt::format("the caption at {:g} s is after the end of this {:g} s "
+                        "video: not shown",
+                        cue.at, duration));
+    }
+    return kept;
+}
+
+LessonPlan lesson_plan(const RenderRequest& request, const Scene& scene, const RenderPlan& plan,
+                       std::vector<std::string>& notices) {
+    LessonPlan lesson;
+    lesson.title = scene.title;
+    lesson.description = scene.description;
+    const bool video = !(request.still || request.last_frame);
+    if (video && !scene.description.empty()) {
+        lesson.intro_seconds = std::min(intro_seconds, 0.25 * plan.duration);
+    }
+    lesson.caption = scene.render.caption.value_or("");
+    lesson.captions = captions_within(scene, plan.duration, request.duration.has_value(), notices);
+    lesson.histogram = histogram_size(scene);
+    const double interval = plan.speed.speed / plan.fps;
+    if (plan.time_engine.dt > interval * (1.0 + 1e-6)) {
+        lesson.frames_per_step = static_cast<int>(std::lround(plan.time_engine.dt / interval));
+    }
+    return lesson;
+}
+
+/// Scene colours too close to the reserved failure colour are shifted (by the renderer); say so.
+void check_failure_colors(const Scene& scene, const render::RenderConfig& config,
+                          std::vector<std::string>& notices) {
+    if (config.color_mode != render::ColorMode::scene) return;
+    for (const Disc& disc : scene.discs) {
+        if (render::near_failure_color(disc.color)) {
+            const Rgb8 c = disc.color;
+            const Rgb8 shifted = render::away_from_failure_color(c);
+            notices.push_back(fmt::format(
+                "disc colour #{:02x}{:02x}{:02x} is too close to the colour reserved for "
+                "failures: drawn as #{:02x}{:02x}{:02x}",
+                c.r, c.g, c.b, shifted.r, shifted.g, shifted.b));
+            return;
+        }
+    }
 }
 
 void plan_still_output(const RenderRequest& request, const Scene& scene, RenderPlan& plan) {
@@ -358,11 +454,19 @@ RenderPlan plan_render(const RenderRequest& request, const Scene& scene) {
     const FrameClock video = video_clock(plan.duration, plan.speed.speed, plan.fps);
     plan.event_engine = event_engine_options(request);
     std::vector<std::string> dt_notices;
-    plan.time_engine = time_engine_options(request, scene, video.interval, dt_notices);
+    plan.time_engine =
+        time_engine_options(request, scene, plan.speed.speed, video.interval, dt_notices);
     if (plan.mode != RenderMode::event) {
         plan.notices.insert(plan.notices.end(), dt_notices.begin(), dt_notices.end());
     }
     plan.render = render_config(request, scene, plan.width, plan.height);
+    plan.render.trail_length = trail_length(scene, video.count);
+    check_failure_colors(scene, plan.render, plan.notices);
+    plan.lesson = lesson_plan(request, scene, plan, plan.notices);
+    if (request.layout_json) {
+        if (request.layout_json->empty()) bad_option("--layout-json", "needs a file name");
+        plan.layout_json = *request.layout_json;
+    }
     if (request.still || request.last_frame) {
         plan_still_output(request, scene, plan);
         plan.clock = request.at ? still_clock(*request.at, plan.speed.speed, plan.fps) : video;
@@ -372,6 +476,57 @@ RenderPlan plan_render(const RenderRequest& request, const Scene& scene) {
         plan.clock = video;
     }
     return plan;
+}
+
+double default_dt(double speed) {
+    return speed / reference_fps;
+}
+
+std::size_t moving_disc_count(const Scene& scene) {
+    if (scene.discs.empty()) return 0;
+    double lightest = std::numeric_limits<double>::infinity();
+    for (const Disc& d : scene.discs) lightest = std::min(lightest, d.mass);
+    const double heavy = 1000.0 * lightest;  // render::immovable_mass_ratio
+    return static_cast<std::size_t>(
+        std::count_if(scene.discs.begin(), scene.discs.end(),
+                      [&](const Disc& d) { return std::isfinite(d.mass) && d.mass < heavy; }));
+}
+
+const std::string& LessonPlan::caption_at(double video_seconds) const noexcept {
+    const std::string* current = &caption;
+    for (const CaptionCue& cue : captions) {
+        if (cue.at > video_seconds) break;
+        current = &cue.text;
+    }
+    return *current;
+}
+
+float LessonPlan::intro_opacity(double video_seconds) const noexcept {
+    if (!(intro_seconds > 0.0) || video_seconds >= intro_seconds) return 0.0F;
+    const double fade = std::min(0.5, 0.5 * intro_seconds);
+    return static_cast<float>(std::clamp((intro_seconds - video_seconds) / fade, 0.0, 1.0));
+}
+
+std::string time_lesson_title(double dt) {
+    return fmt::format("Time-driven: steps of dt = {:.3g}", dt);
+}
+
+std::string event_lesson_title(const EngineOptions& options) {
+    if (options.engine == "classic") return fmt::format("Event-driven: queue ({})", options.pq);
+    return "Event-driven: priority queue";
+}
+
+std::string step_note(double dt, double frame_interval) {
+    if (!(dt > frame_interval * (1.0 + 1e-6))) return {};
+    const double frames = dt / frame_interval;
+    if (divides(frame_interval, dt)) {
+        const long n = std::lround(frames);
+        const char* suffix = n % 10 == 2 && n % 100 != 12   ? "nd"
+                             : n % 10 == 3 && n % 100 != 13 ? "rd"
+                                                            : "th";
+        return fmt::format("Moves only every {}{} frame", n, suffix);
+    }
+    return fmt::format("Moves only every {:.2g} frames", frames);
 }
 
 std::string time_panel_title(double dt) {

@@ -111,25 +111,28 @@ struct FrameClock {
 
 /// Everything the user may type; unset = take the scene hint or the default.
 struct RenderRequest {
-    std::string scene;                    ///< file or built-in name
-    std::optional<std::string> output;    ///< -o
-    std::string mode = "both";            ///< --mode
-    std::optional<std::string> quality;   ///< -q
-    std::optional<std::string> size;      ///< --size WxH
-    std::optional<int> fps;               ///< --fps
-    std::optional<double> duration;       ///< --duration (seconds of video)
-    std::optional<double> speed;          ///< --speed (simulation time per second of video)
-    std::optional<double> dt;             ///< --dt (time-driven quantum)
-    std::string engine = "fast";          ///< --engine (the event-driven one)
-    std::string pq = "binary";            ///< --pq (classic engine's queue)
-    std::string td_detect = "all-pairs";  ///< --td-detect (time-driven overlap checks)
-    std::optional<std::string> color;     ///< --color
-    std::optional<bool> trails;           ///< --trails / --no-trails
-    std::optional<std::string> format;    ///< --format mp4|gif|png
-    bool last_frame = false;              ///< --last-frame: write only the last frame as a PNG
-    std::optional<double> at;             ///< thumbnail --at (simulation time)
-    bool still = false;                   ///< true for `collide thumbnail` (PNG output)
-    bool no_limits = false;               ///< --no-limits: run even what exceeds WorkLimits
+    std::string scene;                       ///< file or built-in name
+    std::optional<std::string> output;       ///< -o
+    std::string mode = "both";               ///< --mode
+    std::optional<std::string> quality;      ///< -q
+    std::optional<std::string> size;         ///< --size WxH
+    std::optional<int> fps;                  ///< --fps
+    std::optional<double> duration;          ///< --duration (seconds of video)
+    std::optional<double> speed;             ///< --speed (simulation time per second of video)
+    std::optional<double> dt;                ///< --dt (time-driven quantum)
+    std::string engine = "fast";             ///< --engine (the event-driven one)
+    std::string pq = "binary";               ///< --pq (classic engine's queue)
+    std::string td_detect = "all-pairs";     ///< --td-detect (time-driven overlap checks)
+    std::optional<std::string> color;        ///< --color
+    std::optional<bool> trails;              ///< --trails / --no-trails
+    std::optional<std::string> overlays;     ///< --overlays none|lesson|full
+    std::optional<std::string> theme;        ///< --theme dark|light
+    std::optional<std::string> layout_json;  ///< --layout-json FILE
+    std::optional<std::string> format;       ///< --format mp4|gif|png
+    bool last_frame = false;                 ///< --last-frame: write only the last frame as a PNG
+    std::optional<double> at;                ///< thumbnail --at (simulation time)
+    bool still = false;                      ///< true for `collide thumbnail` (PNG output)
+    bool no_limits = false;                  ///< --no-limits: run even what exceeds WorkLimits
 };
 
 /// What kind of file comes out.
@@ -137,6 +140,36 @@ enum class OutputKind {
     video,  ///< MP4 or GIF or PNG sequence through video::VideoWriter
     still,  ///< one PNG (thumbnail, --last-frame)
 };
+
+/// The scene's story and the lesson level's choices, resolved once for the whole video.
+struct LessonPlan {
+    std::string title;                 ///< the intro card's title
+    std::string description;           ///< the intro card's text
+    double intro_seconds = 0.0;        ///< how long the card shows (0: none; videos only)
+    std::string caption;               ///< [render] caption, shown when no scripted caption applies
+    std::vector<CaptionCue> captions;  ///< [[render.captions]] within the video
+    render::PlotSize histogram = render::PlotSize::none;
+    int frames_per_step = 1;  ///< time-driven: frames per dt when dt is longer than a frame
+
+    /// The caption at `video_seconds`: the last cue at or before it, else `caption`.
+    [[nodiscard]] const std::string& caption_at(double video_seconds) const noexcept;
+    /// Opacity of the intro card at `video_seconds` (1, fading to 0 over its last half second).
+    [[nodiscard]] float intro_opacity(double video_seconds) const noexcept;
+};
+
+/// Seconds of the intro card: about 2 s, at most a quarter of a short video.
+inline constexpr double intro_seconds = 2.0;
+/// The default time-driven dt is the simulation time of one 1/30 s video frame at the video's
+/// speed (the -q m frame interval), whatever -q or --fps say: presets never change the physics.
+inline constexpr double reference_fps = 30.0;
+
+/// The default dt without `[render] dt` or --dt: the time scale of the video (its speed: --speed,
+/// the scene's hint or derived from the scene, in simulation time per second of video) divided
+/// by reference_fps. Never the frame rate.
+[[nodiscard]] double default_dt(double speed);
+
+/// How many of the scene's discs can move (mass below 1000 x the median).
+[[nodiscard]] std::size_t moving_disc_count(const Scene& scene);
 
 /// The resolved plan. Every field is valid once plan_render returned.
 struct RenderPlan {
@@ -153,8 +186,10 @@ struct RenderPlan {
     OutputKind kind = OutputKind::video;
     video::VideoFormat format = video::VideoFormat::mp4;
     std::filesystem::path output;
-    bool default_output = false;       ///< output derived from the scene name (under out/)
-    std::vector<std::string> notices;  ///< one-line remarks to print before rendering
+    bool default_output = false;        ///< output derived from the scene name (under out/)
+    std::vector<std::string> notices;   ///< one-line remarks to print before rendering
+    LessonPlan lesson;                  ///< what the lesson level shows besides the discs
+    std::filesystem::path layout_json;  ///< --layout-json (empty: none)
 };
 
 /// Default output directory for derived paths.
@@ -164,9 +199,14 @@ inline constexpr const char* default_output_dir = "out";
 /// the first bad option. Touches no file: the caller checks that `output` is writable.
 [[nodiscard]] RenderPlan plan_render(const RenderRequest& request, const Scene& scene);
 
-/// Panel titles, fixed text shared by the renderer call and the tests.
+/// Panel titles, fixed text shared by the renderer call and the tests (full level).
 [[nodiscard]] std::string time_panel_title(double dt);
 [[nodiscard]] std::string event_panel_title(const EngineOptions& options);
+/// Lesson-level titles, in plain words.
+[[nodiscard]] std::string time_lesson_title(double dt);
+[[nodiscard]] std::string event_lesson_title(const EngineOptions& options);
+/// The note under the time-driven figures when dt is longer than a frame (empty otherwise).
+[[nodiscard]] std::string step_note(double dt, double frame_interval);
 
 /// "1.23k", "4.56M": short counts for on-screen counters; beyond 10^12, and for fractions below
 /// one, three significant digits ("2.39e+17", "0.00042"), so that no count outgrows its column.

@@ -84,8 +84,12 @@ FontAtlas::FontAtlas(const std::string& path, float pixel_height) : pixel_height
     stbtt_GetFontVMetrics(&info, &ascent, &descent, &gap);
     ascent_ = static_cast<float>(ascent) * stbtt_ScaleForPixelHeight(&info, pixel_height);
 
-    // 224 glyphs fit 256x256 up to ~20 px, 512x512 up to ~48 px.
-    atlas_size_ = pixel_height <= 20.0F ? 256 : (pixel_height <= 48.0F ? 512 : 1024);
+    // 224 glyphs fit 256x256 up to ~20 px, 512x512 up to ~48 px, 1024 up to ~90 px (4K lesson
+    // text).
+    atlas_size_ = pixel_height <= 20.0F   ? 256
+                  : pixel_height <= 48.0F ? 512
+                  : pixel_height <= 88.0F ? 1024
+                                          : 2048;
     bitmap_.assign(static_cast<std::size_t>(atlas_size_) * atlas_size_, 0);
     std::vector<stbtt_bakedchar> baked(code_point_count);
     const int rows_used = stbtt_BakeFontBitmap(

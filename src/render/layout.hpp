@@ -1,7 +1,18 @@
 #pragma once
-// Internal: where everything goes in a frame. Pure arithmetic on the config and the box, so the
-// tests can predict where a disc must land.
+// Internal: where everything goes in a frame. Pure arithmetic on the frame size, the boxes and
+// the overlay level (no GL, no font file), so tests can check the rectangles directly and
+// `--layout-json` can write them out.
+//
+// Levels (docs/renderer.md):
+//  - none:    the boxes fill the frame, no text.
+//  - lesson:  per panel a title line above its box and a row of headline figures (and an optional
+//             note line) below it; a column between the boxes (beside a single box) for the clock,
+//             the shared cost graphic, the energy line and a plot; a caption line across the
+//             bottom. Capitals are at least 2.8 % of the frame height. Below compact_width the
+//             compact form: boxes fill the frame under one line of text per panel.
+//  - full:    today's expert layout: title and counter grid above each box, strip of plots below.
 
+#include <string>
 #include <vector>
 
 #include "collide/box.hpp"
@@ -10,10 +21,52 @@
 
 namespace collide::render {
 
-/// One panel: its whole area, the header (title and counters) and the box's pixel rectangle.
+/// Cap height of DejaVu Sans as a share of the pixel height stb_truetype bakes it at
+/// (capital 1493 units over ascent 1901 + descent 483): text is sized from its capitals.
+inline constexpr float cap_height_per_pixel_height = 1493.0F / 2384.0F;
+/// Lesson text: capitals at least this share of the frame height (20 px at 720p).
+inline constexpr float lesson_cap_share = 0.028F;
+/// Headline figures are this much larger than body text.
+inline constexpr float headline_scale = 1.3F;
+/// Frames narrower than this use the compact lesson form (thumbnails).
+inline constexpr int compact_width = 480;
+/// Compact text: capitals at least this many pixels.
+inline constexpr float compact_min_cap_px = 9.0F;
+
+/// What a text slot is for (written to --layout-json).
+enum class TextRole {
+    title,
+    figures,
+    note,
+    caption,
+    clock,
+    cost_heading,
+    cost_label,
+    cost_value,
+    energy,
+    legend,
+    plot_title,
+    counters,
+    strip
+};
+[[nodiscard]] const char* text_role_name(TextRole role) noexcept;
+
+/// One line of text: its slot (nothing else is drawn there) and the font's pixel height.
+struct TextSlot {
+    TextRole role = TextRole::title;
+    int panel = -1;  ///< the panel it belongs to, -1 for shared text
+    RectF rect;
+    float pixel_height = 0.0F;  ///< font size (stb pixel height)
+    [[nodiscard]] float cap_height() const noexcept {
+        return pixel_height * cap_height_per_pixel_height;
+    }
+};
+
+/// One panel: its whole area, the header (full level: title and counters) and the box's pixel
+/// rectangle.
 struct PanelLayout {
     RectF area;
-    RectF header;        // empty when overlays are off
+    RectF header;        // full level only
     RectF box;           // the box [0,W]x[0,H] in pixels, aspect ratio preserved
     double scale = 1.0;  // pixels per box unit
 
@@ -24,22 +77,64 @@ struct PanelLayout {
     }
 };
 
-struct FrameLayout {
-    std::vector<PanelLayout> panels;
-    RectF strip;  // the bottom strip (empty when overlays are off)
-    float margin = 0.0F;
+/// The lesson column's pieces (empty rectangles when absent).
+struct ColumnLayout {
+    RectF area;        ///< the whole column
+    RectF bars;        ///< the cost graphic's bars area
+    RectF legend_bar;  ///< the colour bar (speed/mass colours), above its `legend` text slot
+    RectF plot;        ///< what is left below: a plot (histogram) when one is shown
 };
 
-/// The font size used for a frame height (px): legible at 480p, not huge at 1080p.
-[[nodiscard]] float font_pixel_height(int frame_height) noexcept;
+struct FrameLayout {
+    OverlayLevel level = OverlayLevel::none;
+    bool compact = false;
+    std::vector<PanelLayout> panels;
+    RectF strip;                 // full level: the bottom strip
+    ColumnLayout column;         // lesson level
+    std::vector<TextSlot> text;  // every text line (lesson, compact); full: header and strip
+    float margin = 0.0F;
+    float body_pixel_height = 0.0F;      ///< 0 at level none
+    float headline_pixel_height = 0.0F;  ///< headline figures (lesson)
 
-/// Columns of the counter grid under a panel title. It depends only on the panel width and the
-/// font size, never on the counters' text, so the layout stays put while the numbers change.
+    /// The first slot with this role (and panel), or nullptr.
+    [[nodiscard]] const TextSlot* slot(TextRole role, int panel = -1) const noexcept;
+    /// Every slot with this role (and panel, -1 = any).
+    [[nodiscard]] std::vector<const TextSlot*> slots(TextRole role, int panel = -1) const;
+};
+
+/// What the layout needs to know of a frame besides its size.
+struct LayoutInput {
+    int width = 1280;
+    int height = 720;
+    OverlayLevel level = OverlayLevel::lesson;
+    std::vector<Box> boxes;     ///< 1 or 2 panels, left to right (only their shapes matter)
+    bool note_line = false;     ///< lesson: a note line under the figures (dt > frame)
+    bool large_plot = false;    ///< lesson: the plot is the subject: a wider column
+    bool color_legend = false;  ///< lesson: a colour bar (speed or mass colours) in the column
+    int counter_rows = 1;       ///< full: rows of the counter grid
+};
+
+/// The font size used for a frame height at the full level (px): today's H / 34.
+[[nodiscard]] float font_pixel_height(int frame_height) noexcept;
+/// Lesson body text size: capitals >= 2.8 % of the height (>= 9 px in the compact form).
+[[nodiscard]] float lesson_pixel_height(int frame_width, int frame_height) noexcept;
+
+/// Columns of the counter grid under a panel title (full level). It depends only on the panel
+/// width and the font size, never on the counters' text, so the layout stays put.
 [[nodiscard]] int counter_columns(float panel_width, float font_pixel_height) noexcept;
 
-/// Lays out `boxes.size()` panels side by side (and the strip when overlays are on); each
-/// header holds the title line and `counter_rows` rows of counters.
+/// Lays out a frame. Pure and cheap (a few dozen rectangles).
+[[nodiscard]] FrameLayout compute_layout(const LayoutInput& input);
+
+/// The full/none layout of today (kept for the `full` level and tests): `boxes.size()` panels
+/// side by side, each header holding the title and `counter_rows` rows of counters.
 [[nodiscard]] FrameLayout compute_layout(const RenderConfig& config, const std::vector<Box>& boxes,
                                          float line_height, int counter_rows = 1);
+
+/// The rectangles as JSON (frame size, level, panels with box and scale, every text slot).
+[[nodiscard]] std::string layout_json(const FrameLayout& layout, int width, int height);
+
+/// True when the two rectangles share interior area.
+[[nodiscard]] bool overlaps(RectF a, RectF b) noexcept;
 
 }  // namespace collide::render

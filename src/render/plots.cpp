@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <string>
 
@@ -28,10 +29,10 @@ struct PlotFrame {
 };
 
 // Title line above, axes along the bottom and left.
-PlotFrame draw_axes(OverlayBatch& batch, const FontAtlas& font, RectF area,
-                    const std::string& title) {
+PlotFrame draw_axes(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& font, RectF area,
+                    const std::string& title, Rgba8 title_color = label_color) {
     const float line = std::max(1.0F, std::round(font.pixel_height() / 12.0F));
-    font.add_text(batch, area.x0, area.y0 + font.ascent(), title, label_color);
+    font.add_text(text, area.x0, area.y0 + font.ascent(), title, title_color);
     RectF plot{area.x0, area.y0 + font.line_height(), area.x1, area.y1};
     if (plot.y1 <= plot.y0 + 2.0F) plot.y0 = plot.y1 - 2.0F;
     batch.add_rect({plot.x0, plot.y1 - line, plot.x1, plot.y1}, axis_color);
@@ -132,7 +133,7 @@ Rgb8 panel_color(std::size_t panel) noexcept {
     return panel == 0 ? Rgb8{240, 150, 60} : Rgb8{90, 175, 245};
 }
 
-void draw_speed_plot(OverlayBatch& batch, const FontAtlas& font, RectF area,
+void draw_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& font, RectF area,
                      const std::vector<const Snapshot*>& snapshots, double v_min, double v_max) {
     // The longest title that leaves room for the range label (narrow frames get the short one).
     const std::string range = format_number("v max %.3g", v_max);
@@ -143,7 +144,7 @@ void draw_speed_plot(OverlayBatch& batch, const FontAtlas& font, RectF area,
         title = shorter;
     }
     const bool show_range = font.text_width(title) <= room;
-    const PlotFrame frame = draw_axes(batch, font, area, title);
+    const PlotFrame frame = draw_axes(batch, text, font, area, title);
     const RectF plot = frame.plot;
     if (snapshots.empty() || plot.width() < 4.0F) return;
     const int bins = std::clamp(static_cast<int>(plot.width() / 6.0F), 8, 40);
@@ -187,13 +188,13 @@ void draw_speed_plot(OverlayBatch& batch, const FontAtlas& font, RectF area,
                        frame.line_width * 1.5F, curve_color);
     }
     if (show_range) {
-        font.add_text(batch, plot.x1 - font.text_width(range), area.y0 + font.ascent(), range,
+        font.add_text(text, plot.x1 - font.text_width(range), area.y0 + font.ascent(), range,
                       axis_color);
     }
 }
 
-void draw_drift_plot(OverlayBatch& batch, const FontAtlas& font, RectF area,
-                     const std::vector<std::vector<DriftPoint>>& series) {
+void draw_drift_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& font, RectF area,
+                     const std::vector<std::vector<DriftPoint>>& series, const PlotColors& colors) {
     double t_min = 0.0;
     double t_max = 0.0;
     double largest = 0.0;
@@ -211,7 +212,8 @@ void draw_drift_plot(OverlayBatch& batch, const FontAtlas& font, RectF area,
     constexpr double smallest_scale = 1e-12;
     const double scale = std::max(largest, smallest_scale);
     const PlotFrame frame =
-        draw_axes(batch, font, area, "energy drift  " + format_number("\xC2\xB1%.2g", scale));
+        draw_axes(batch, text, font, area, "energy drift  " + format_number("\xC2\xB1%.2g", scale),
+                  colors.label);
     const RectF plot = frame.plot;
     const float mid = 0.5F * (plot.y0 + plot.y1 - frame.line_width);
     batch.add_rect({plot.x0, mid, plot.x1, mid + 1.0F}, Rgba8{90, 90, 100, 255});
@@ -234,6 +236,98 @@ void draw_drift_plot(OverlayBatch& batch, const FontAtlas& font, RectF area,
                            frame.line_width * 1.5F, color);
         }
     }
+}
+
+Snapshot moving_discs(const Snapshot& snapshot) {
+    Snapshot out;
+    out.time = snapshot.time;
+    out.box = snapshot.box;
+    if (snapshot.discs.empty()) return out;
+    double lightest = std::numeric_limits<double>::infinity();
+    for (const DiscState& d : snapshot.discs) lightest = std::min(lightest, d.mass);
+    const double heavy = immovable_mass_ratio * lightest;
+    for (const DiscState& d : snapshot.discs) {
+        if (std::isfinite(d.mass) && d.mass < heavy) out.discs.push_back(d);
+    }
+    return out;
+}
+
+void draw_moving_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& font,
+                            RectF area, const std::vector<const Snapshot*>& snapshots,
+                            const std::vector<Rgb8>& colors, double v_min, double v_max,
+                            const PlotColors& palette) {
+    RectF axes_area = area;
+    axes_area.y1 -= font.line_height();  // room for the axis labels below
+    const PlotFrame frame = draw_axes(batch, text, font, axes_area,
+                                      font.text_width("Speeds of moving discs") <= area.width()
+                                          ? "Speeds of moving discs"
+                                          : "Speeds",
+                                      palette.label);
+    const RectF plot = frame.plot;
+    if (snapshots.empty() || plot.width() < 8.0F || plot.height() < 8.0F) return;
+    const int bins = std::clamp(static_cast<int>(plot.width() / 10.0F), 8, 30);
+    std::vector<std::vector<double>> histograms;
+    for (const Snapshot* s : snapshots)
+        histograms.push_back(speed_density(moving_discs(*s), v_min, v_max, bins));
+    const MaxwellBoltzmann curve(moving_discs(*snapshots.back()));
+    constexpr int curve_samples = 64;
+    std::vector<double> curve_values(curve_samples + 1);
+    double peak = 0.0;
+    for (int i = 0; i <= curve_samples; ++i) {
+        curve_values[static_cast<std::size_t>(i)] =
+            curve.density(v_min + (v_max - v_min) * i / curve_samples);
+        peak = std::max(peak, curve_values[static_cast<std::size_t>(i)]);
+    }
+    // A fixed vertical scale (the curve's peak depends only on the energy, which is conserved):
+    // bars do not jump as the histogram fills; taller bins are cut at the top.
+    if (!(peak > 0.0)) return;
+    const double top = peak * 1.6;
+    const double y_scale = static_cast<double>(plot.height() - frame.line_width) / top;
+    const auto to_y = [&](double value) {
+        return plot.y1 - frame.line_width - static_cast<float>(std::min(value, top) * y_scale);
+    };
+    const float bin_width = plot.width() / static_cast<float>(bins);
+    for (std::size_t p = 0; p < histograms.size(); ++p) {
+        const Rgb8 c = p < colors.size() ? colors[p] : panel_color(p);
+        const Rgba8 color = with_alpha(c, histograms.size() > 1 ? 150 : 220);
+        for (int b = 0; b < bins; ++b) {
+            const float x0 = plot.x0 + bin_width * static_cast<float>(b);
+            const float y = to_y(histograms[p][static_cast<std::size_t>(b)]);
+            if (histograms.size() > 1) {  // two outlines
+                batch.add_line({x0, y}, {x0 + bin_width, y}, 2.0F * frame.line_width, color);
+            } else {
+                batch.add_rect({x0 + 1.0F, y, x0 + bin_width - 1.0F, plot.y1 - frame.line_width},
+                               color);
+            }
+        }
+    }
+    float label_x = plot.x0;
+    float label_y = plot.y0;
+    for (int i = 0; i < curve_samples; ++i) {
+        const float x0 = plot.x0 + plot.width() * static_cast<float>(i) / curve_samples;
+        const float x1 = plot.x0 + plot.width() * static_cast<float>(i + 1) / curve_samples;
+        const float y0 = to_y(curve_values[static_cast<std::size_t>(i)]);
+        batch.add_line({x0, y0}, {x1, to_y(curve_values[static_cast<std::size_t>(i) + 1])},
+                       frame.line_width * 2.5F, palette.curve);
+        if (curve_values[static_cast<std::size_t>(i)] >= peak * 0.999) {
+            label_x = x0;
+            label_y = y0;
+        }
+    }
+    // The curve's name beside its peak, inside the plot.
+    const std::string name = "Maxwell-Boltzmann";
+    const float name_x = std::clamp(label_x + font.pixel_height() * 0.5F, plot.x0,
+                                    std::max(plot.x0, plot.x1 - font.text_width(name)));
+    font.add_text(text, name_x,
+                  std::max(plot.y0 + font.ascent(), label_y - font.pixel_height() * 0.3F), name,
+                  palette.curve);
+    const float base = plot.y1 + font.ascent() + 2.0F;
+    font.add_text(text, plot.x0, base, "0", palette.label);
+    const std::string high = format_number("%.2g", v_max);
+    const std::string axis = "speed";
+    font.add_text(text, plot.x0 + 0.5F * (plot.width() - font.text_width(axis)), base, axis,
+                  palette.label);
+    font.add_text(text, plot.x1 - font.text_width(high), base, high, palette.label);
 }
 
 }  // namespace collide::render

@@ -36,12 +36,20 @@ class MaxwellBoltzmann {
     std::vector<Group> groups_;
 };
 
+/// Colours of a plot's text, axes and reference curve (the theme's).
+struct PlotColors {
+    Rgba8 label{210, 210, 215, 255};
+    Rgba8 axis{150, 150, 160, 255};
+    Rgba8 curve{250, 250, 250, 255};
+};
+
 /// Per-panel series colours (time-driven left, event-driven right).
 [[nodiscard]] Rgb8 panel_color(std::size_t panel) noexcept;
 
+/// Shapes go to `batch`, text to `text`.
 /// Draws the histograms of every snapshot (step outlines in panel colours) and the
 /// Maxwell-Boltzmann curve of the last one (white) inside `area`.
-void draw_speed_plot(OverlayBatch& batch, const FontAtlas& font, RectF area,
+void draw_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& font, RectF area,
                      const std::vector<const Snapshot*>& snapshots, double v_min, double v_max);
 
 /// The indices (increasing) of the points of `series` worth drawing, `column` mapping a time to
@@ -55,7 +63,23 @@ void draw_speed_plot(OverlayBatch& batch, const FontAtlas& font, RectF area,
 
 /// Draws relative energy drift against time, one polyline per series, scaled to the largest
 /// |drift| (labelled), with the zero line.
-void draw_drift_plot(OverlayBatch& batch, const FontAtlas& font, RectF area,
-                     const std::vector<std::vector<DriftPoint>>& series);
+void draw_drift_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& font, RectF area,
+                     const std::vector<std::vector<DriftPoint>>& series,
+                     const PlotColors& colors = {});
+
+/// Discs at least this many times heavier than the lightest disc count as immovable (barriers,
+/// walls of heavy discs): they are not part of the speed distribution.
+inline constexpr double immovable_mass_ratio = 1000.0;
+
+/// The snapshot's discs that can move (finite mass below immovable_mass_ratio x the lightest).
+[[nodiscard]] Snapshot moving_discs(const Snapshot& snapshot);
+
+/// Lesson plot: histograms of the moving discs' speeds (one per snapshot, in `colors`) on the
+/// fixed range [v_min, v_max] and a fixed height, with the labelled Maxwell-Boltzmann curve of
+/// the last snapshot's moving discs and the axis labelled. Shapes go to `batch`, text to `text`.
+void draw_moving_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& font,
+                            RectF area, const std::vector<const Snapshot*>& snapshots,
+                            const std::vector<Rgb8>& colors, double v_min, double v_max,
+                            const PlotColors& palette);
 
 }  // namespace collide::render

@@ -56,7 +56,7 @@ void TrailHistory::update(const Snapshot& snapshot) {
 
 void TrailHistory::draw(OverlayBatch& batch, const Box& box,
                         const std::function<PointF(Vec2)>& to_pixels,
-                        const std::vector<Rgb8>& colors, float width) const {
+                        const std::vector<Rgb8>& colors, float width, float min_share) const {
     constexpr float max_alpha = 200.0F;
     for (std::size_t k = 0; k < tagged_.size(); ++k) {
         const std::deque<Vec2>& path = paths_[k];
@@ -65,7 +65,8 @@ void TrailHistory::draw(OverlayBatch& batch, const Box& box,
             // Fade by age counted from the newest point, so a young trail is not faint.
             const float age =
                 static_cast<float>(i + length_ - path.size()) / static_cast<float>(length_);
-            const Rgba8 faded = with_alpha(color, static_cast<std::uint8_t>(max_alpha * age));
+            const float share = min_share + (1.0F - min_share) * age;
+            const Rgba8 faded = with_alpha(color, static_cast<std::uint8_t>(max_alpha * share));
             const Vec2 a = path[i - 1];
             const Vec2 b = path[i];
             if (!wraps_between(box, a, b)) {

@@ -27,8 +27,10 @@ class TrailHistory {
 
     /// Appends every trail: oldest point transparent, newest `max_alpha`. `to_pixels` maps box
     /// coordinates to frame pixels; colours are indexed like the snapshot's discs.
+    /// `min_share` in [0, 1): the oldest point's opacity as a share of the newest's (0: fades
+    /// out completely; the lesson level keeps the whole path visible).
     void draw(OverlayBatch& batch, const Box& box, const std::function<PointF(Vec2)>& to_pixels,
-              const std::vector<Rgb8>& colors, float width) const;
+              const std::vector<Rgb8>& colors, float width, float min_share = 0.0F) const;
 
     /// The recorded positions of disc `index` (oldest first); empty when it is not tagged.
     [[nodiscard]] std::vector<Vec2> points(std::uint32_t index) const;

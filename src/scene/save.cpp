@@ -52,14 +52,23 @@ std::string hex_color(Rgb8 c) {
 }
 
 void write_render(std::ostream& out, const RenderHints& r) {
-    if (!r.color_mode && !r.trails && !r.overlays && !r.duration && !r.speed && !r.dt) return;
+    if (!r.color_mode && !r.trails && !r.overlays && !r.duration && !r.speed && !r.dt && !r.theme &&
+        !r.caption && r.captions.empty() && !r.histogram)
+        return;
     out << "\n[render]\n";
     if (r.color_mode) out << "color_mode = " << quoted(*r.color_mode) << "\n";
     if (r.trails) out << "trails = " << (*r.trails ? "true" : "false") << "\n";
-    if (r.overlays) out << "overlays = " << (*r.overlays ? "true" : "false") << "\n";
+    if (r.overlays) out << "overlays = " << quoted(*r.overlays) << "\n";
+    if (r.theme) out << "theme = " << quoted(*r.theme) << "\n";
+    if (r.caption) out << "caption = " << quoted(*r.caption) << "\n";
+    if (r.histogram) out << "histogram = " << quoted(*r.histogram) << "\n";
     if (r.duration) out << "duration = " << exact(*r.duration) << "\n";
     if (r.speed) out << "speed = " << exact(*r.speed) << "\n";
     if (r.dt) out << "dt = " << exact(*r.dt) << "\n";
+    for (const CaptionCue& cue : r.captions) {
+        out << "\n[[render.captions]]\nat = " << exact(cue.at) << "\ntext = " << quoted(cue.text)
+            << "\n";
+    }
 }
 
 void write_disc(std::ostream& out, const Disc& d) {

@@ -24,7 +24,12 @@ const Keys box_keys = {"width", "height", "boundary"};
 const Keys disc_keys = {"position", "velocity", "radius", "mass", "color", "tag"};
 const Keys generate_keys = {"count", "packing_fraction", "radius", "mass", "temperature",
                             "speed", "region",           "color",  "seed", "tag"};
-const Keys render_keys = {"color_mode", "trails", "overlays", "duration", "speed", "dt"};
+const Keys render_keys = {"color_mode", "trails", "overlays", "duration", "speed",
+                          "dt",         "theme",  "caption",  "captions", "histogram"};
+const Keys caption_keys = {"at", "text"};
+const Keys overlay_levels = {"none", "lesson", "full"};
+const Keys themes = {"dark", "light"};
+const Keys histogram_kinds = {"auto", "none", "small", "large"};
 const Keys color_modes = {"scene", "speed", "mass", "tag"};
 
 std::string num(double v) {
@@ -50,7 +55,8 @@ class TomlReader {
         toml::table doc = parse(text);
         check_keys(doc, "", top_keys);
         if (const toml::node* n = doc.get("title")) scene_.title = text_value(*n, "title");
-        if (const toml::node* n = doc.get("description")) (void)text_value(*n, "description");
+        if (const toml::node* n = doc.get("description"))
+            scene_.description = text_value(*n, "description");
         if (const toml::node* n = doc.get("box")) read_box(*n);
         if (const toml::node* n = doc.get("render")) read_render(*n);
         if (const toml::node* n = doc.get("include")) read_includes(*n);
@@ -217,7 +223,18 @@ class TomlReader {
             r.color_mode = mode;
         }
         if (const toml::node* v = t.get("trails")) r.trails = boolean(*v, "render.trails");
-        if (const toml::node* v = t.get("overlays")) r.overlays = boolean(*v, "render.overlays");
+        if (const toml::node* v = t.get("overlays")) {
+            if (v->is_boolean()) {
+                r.overlays = boolean(*v, "render.overlays") ? "lesson" : "none";
+            } else {
+                r.overlays = one_of(*v, "render.overlays", overlay_levels);
+            }
+        }
+        if (const toml::node* v = t.get("theme")) r.theme = one_of(*v, "render.theme", themes);
+        if (const toml::node* v = t.get("histogram")) {
+            r.histogram = one_of(*v, "render.histogram", histogram_kinds);
+        }
+        if (const toml::node* v = t.get("caption")) r.caption = caption(*v, "render.caption");
         if (const toml::node* v = t.get("duration")) {
             r.duration = positive(*v, "render.duration");
             r.duration_at = where(*v, "render.duration");
@@ -229,6 +246,67 @@ class TomlReader {
         if (const toml::node* v = t.get("dt")) {
             r.dt = positive(*v, "render.dt");
             r.dt_at = where(*v, "render.dt");
+        }
+        if (const toml::node* v = t.get("captions")) read_captions(*v);
+    }
+
+    std::string one_of(const toml::node& n, const std::string& field, const Keys& allowed) const {
+        const std::string value = text_value(n, field);
+        if (std::find(allowed.begin(), allowed.end(), value) == allowed.end()) {
+            fail(n, field, "expected one of " + joined(allowed) + " (got \"" + value + "\")");
+        }
+        return value;
+    }
+
+    std::string caption(const toml::node& n, const std::string& field) const {
+        const std::string text = text_value(n, field);
+        const std::size_t chars = utf8_length(text);
+        if (chars > max_caption_chars) {
+            fail(n, field,
+                 "too long to fit on one line: at most " + std::to_string(max_caption_chars) +
+                     " characters, got " + std::to_string(chars) +
+                     " (split it into timed [[render.captions]])");
+        }
+        return text;
+    }
+
+    static std::size_t utf8_length(const std::string& text) {
+        return static_cast<std::size_t>(std::count_if(text.begin(), text.end(), [](char c) {
+            return (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+        }));
+    }
+
+    // [[render.captions]]: at (seconds of video, increasing, within the video) and text.
+    void read_captions(const toml::node& n) {
+        const toml::array* a = n.as_array();
+        if (a == nullptr) fail(n, "render.captions", "expected [[render.captions]] tables");
+        RenderHints& r = scene_.render;
+        for (std::size_t i = 0; i < a->size(); ++i) {
+            const std::string field = "render.captions[" + std::to_string(i) + "]";
+            const toml::table& t = table_at(*a->get(i), field);
+            check_keys(t, field, caption_keys);
+            const toml::node* at = t.get("at");
+            const toml::node* text = t.get("text");
+            if (at == nullptr) fail(t, field + ".at", "missing (seconds of video)");
+            if (text == nullptr) fail(t, field + ".text", "missing");
+            CaptionCue cue;
+            cue.at = number(*at, field + ".at");
+            if (!(cue.at >= 0.0))
+                fail(*at, field + ".at", "must be >= 0 (got " + num(cue.at) + ")");
+            if (!r.captions.empty() && !(cue.at > r.captions.back().at)) {
+                fail(*at, field + ".at",
+                     "out of order: " + num(cue.at) + " s is not after the previous caption at " +
+                         num(r.captions.back().at) + " s");
+            }
+            if (r.duration && cue.at >= *r.duration) {
+                fail(*at, field + ".at",
+                     "beyond the video: " + num(cue.at) + " s, the video lasts " +
+                         num(*r.duration) + " s");
+            }
+            cue.text = caption(*text, field + ".text");
+            cue.file = file_;
+            cue.line = static_cast<int>(at->source().begin.line);
+            r.captions.push_back(std::move(cue));
         }
     }
 

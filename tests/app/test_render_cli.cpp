@@ -198,6 +198,8 @@ TEST_CASE("render: bad options and scenes exit 2 with a message and create no ou
         {"render gas --format avi --progress none" + o, "--format"},
         {"render gas --progress none -o /nonexistent-dir/x.mp4", "/nonexistent-dir"},
         {"thumbnail gas --at -1 -o " + (dir.path / "x.png").string(), "--at"},
+        {"render gas --overlays loud --progress none" + o, "--overlays"},
+        {"render gas --theme neon --progress none" + o, "--theme"},
     };
     for (const Case& c : cases) {
         const auto r = run_collide(c.args);
@@ -261,4 +263,57 @@ TEST_CASE("render --gl: an unknown backend, or one beside --preview, exits 2 nam
     CHECK(with_preview.find("--gl osmesa: --preview renders the frames through glfw") !=
           std::string::npos);
     CHECK_FALSE(fs::exists(out));
+}
+
+namespace {
+/// The engines' counts from a summary line ("engines: time-driven ... (N overlap checks), ...").
+std::string engine_counts(const std::string& output) {
+    const std::size_t at = output.find("engines:");
+    if (at == std::string::npos) return {};
+    std::string counts;
+    bool inside = false;
+    for (std::size_t i = at; i < output.size() && output[i] != '\n'; ++i) {
+        if (output[i] == '(') inside = true;
+        if (inside) counts += output[i];
+        if (output[i] == ')') inside = false;
+    }
+    return counts;
+}
+}  // namespace
+
+TEST_CASE("render: -q l and -q m simulate the same systems (the preset never changes dt)") {
+    TempDir dir("presets");
+    std::string counts[2];
+    int i = 0;
+    for (const char* q : {"l", "m"}) {
+        const fs::path out = dir.path / (std::string(q) + ".png");
+        // t = 2 is a frame time at 15 and 30 fps alike.
+        const auto r =
+            run_collide(std::string("thumbnail diffusion --at 2 -q ") + q + " -o " + out.string());
+        REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+        counts[i++] = engine_counts(r.output);
+    }
+    CHECK_FALSE(counts[0].empty());
+    CHECK(counts[0] == counts[1]);
+}
+
+TEST_CASE("thumbnail --layout-json writes the rectangles, with lesson text at least 2.8 % high") {
+    TempDir dir("layout");
+    const fs::path json = dir.path / "layout.json";
+    const auto r = run_collide("thumbnail tunnelling --at 1 --size 1280x720 -o " +
+                               (dir.path / "t.png").string() + " --layout-json " + json.string());
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    std::ifstream in(json);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    CHECK(text.find("\"level\": \"lesson\"") != std::string::npos);
+    CHECK(text.find("\"role\": \"figures\"") != std::string::npos);
+    // Every cap height written is >= 20.16 px (2.8 % of 720).
+    std::size_t at = 0;
+    int lines = 0;
+    while ((at = text.find("\"cap_height\": ", at)) != std::string::npos) {
+        at += 14;
+        CHECK(std::stod(text.substr(at)) >= 20.1);
+        ++lines;
+    }
+    CHECK(lines >= 8);
 }

@@ -188,7 +188,8 @@ TEST_CASE("on-screen counters are deterministic counts, the same for the same me
     CHECK(joined(td).find("missed  7") != std::string::npos);
     CHECK(joined(td).find("escaped  2") != std::string::npos);
     CHECK(joined(event_driven_counters(m, 0.0)).find("events") != std::string::npos);
-    CHECK(comparison_notes(RenderMode::both).size() == 1);
+    // No global remark: a scene that needs the chaos remark says so in its own caption.
+    CHECK(comparison_notes(RenderMode::both).empty());
     CHECK(comparison_notes(RenderMode::event).empty());
 }
 
@@ -223,6 +224,95 @@ TEST_CASE("the on-screen clock resolves one frame interval, whatever the units")
                     clock_label(clock.time(k), clock, 1.0));
         }
     }
+}
+
+TEST_CASE("the default dt comes from the scene, never from the preset or the frame rate") {
+    const Scene scene = two_disc_scene(0.2);
+    double dt = 0.0;
+    for (const char* q : {"l", "m", "h", "k"}) {
+        RenderRequest request;
+        request.scene = "two";
+        request.quality = q;
+        const RenderPlan plan = plan_render(request, scene);
+        if (dt == 0.0) dt = plan.time_engine.dt;
+        CHECK_MESSAGE(plan.time_engine.dt == dt, "-q " << q);
+    }
+    CHECK(dt == doctest::Approx(default_dt(choose_speed(scene, std::nullopt).speed)));
+    RenderRequest request;
+    request.fps = 7;
+    CHECK(plan_render(request, scene).time_engine.dt == dt);
+    // At 60 fps a step spans two frames: the lesson says so and counts them.
+    request.fps = 60;
+    const RenderPlan plan = plan_render(request, scene);
+    CHECK(plan.lesson.frames_per_step == 2);
+    CHECK(step_note(plan.time_engine.dt, plan.clock.interval) == "Moves only every 2nd frame");
+    CHECK(step_note(0.01, 0.02).empty());
+}
+
+TEST_CASE("captions follow the scene's schedule, and the intro card fades out after ~2 s") {
+    Scene scene = two_disc_scene(0.2);
+    scene.title = "Two discs";
+    scene.description = "They meet in the middle";
+    scene.render.duration = 10.0;
+    scene.render.caption = "Always";
+    scene.render.captions = {{2.0, "From two", "s.toml", 7}, {6.0, "From six", "s.toml", 10}};
+    RenderRequest request;
+    const RenderPlan plan = plan_render(request, scene);
+    CHECK(plan.lesson.caption_at(0.0) == "Always");
+    CHECK(plan.lesson.caption_at(1.99) == "Always");
+    CHECK(plan.lesson.caption_at(2.0) == "From two");
+    CHECK(plan.lesson.caption_at(5.9) == "From two");
+    CHECK(plan.lesson.caption_at(9.0) == "From six");
+    CHECK(plan.lesson.intro_opacity(0.0) == 1.0F);
+    CHECK(plan.lesson.intro_opacity(1.75) == doctest::Approx(0.5));
+    CHECK(plan.lesson.intro_opacity(2.0) == 0.0F);
+    // A still image has no intro card.
+    request.still = true;
+    CHECK(plan_render(request, scene).lesson.intro_opacity(0.0) == 0.0F);
+}
+
+TEST_CASE("captions beyond the video: an error naming the scene line, or a notice for --duration") {
+    Scene scene = two_disc_scene(0.2);
+    scene.render.captions = {{12.0, "Too late", "s.toml", 9}};
+    RenderRequest request;  // the default 10 s video
+    const std::string message = [&] {
+        try {
+            (void)plan_render(request, scene);
+        } catch (const Error& e) {
+            CHECK(e.kind() == ErrorKind::input);
+            return std::string(e.what());
+        }
+        return std::string();
+    }();
+    CHECK(message.find("s.toml:9") != std::string::npos);
+    CHECK(message.find("beyond the video") != std::string::npos);
+    request.duration = 4.0;  // a preview: shorter on purpose
+    scene.render.captions = {{1.0, "Early", "s.toml", 5}, {6.0, "Later", "s.toml", 9}};
+    const RenderPlan plan = plan_render(request, scene);
+    CHECK(plan.lesson.captions.size() == 1);
+    bool noticed = false;
+    for (const std::string& n : plan.notices) noticed |= n.find("6 s") != std::string::npos;
+    CHECK(noticed);
+}
+
+TEST_CASE("lesson figures are plain words with thousands separators") {
+    Measurements m;
+    m.missed_collisions = 12345;
+    m.overlapping_pairs = 3;
+    m.escaped = 0;
+    m.collisions_pair = 1000000;
+    const auto td = time_driven_figures(m, true);
+    REQUIRE(td.size() == 3);  // nobody left the box: no "left the box" figure yet
+    CHECK(td[0].value == "12,345");
+    CHECK(td[0].label == "missed");
+    CHECK(td[0].failure);
+    CHECK(td[2].value == "1,000,000");
+    m.escaped = 4;
+    CHECK(time_driven_figures(m, true).size() == 4);
+    CHECK(time_driven_figures(m, false).size() == 3);  // periodic boxes have nothing to leave
+    const auto ed = event_driven_figures(m);
+    CHECK(ed[0].value == "1,000,000");
+    CHECK(ed[1].value == "0");
 }
 
 TEST_CASE("still_clock refuses a time more frame intervals away than int64 / double can count") {

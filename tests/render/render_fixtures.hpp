@@ -54,7 +54,7 @@ inline RenderConfig small_config(bool overlays) {
     RenderConfig config;
     config.width = 320;
     config.height = 180;
-    config.overlays = overlays;
+    config.overlays = overlays ? OverlayLevel::full : OverlayLevel::none;
     return config;
 }
 

@@ -3,9 +3,11 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <string>
 
+#include "../support/skip.hpp"
 #include "collide/error.hpp"
 #include "layout.hpp"
 #include "render_fixtures.hpp"
@@ -277,6 +279,85 @@ TEST_CASE("bad frames and configs are input errors, not crashes") {
     CHECK_THROWS_WITH_AS(bad.validate(), doctest::Contains("speed_max"), Error);
     CHECK_THROWS_AS((void)parse_color_mode("rainbow"), Error);
     CHECK(parse_color_mode("mass") == ColorMode::mass);
+}
+
+}  // namespace
+}  // namespace collide::render
+
+namespace collide::render {
+namespace {
+
+/// Renders one lesson-level frame at 854x480 (the layout it used comes back too).
+struct LessonFrame {
+    Image image;
+    FrameLayout layout;
+};
+
+LessonFrame render_lesson(const Snapshot& snapshot, Theme theme = Theme::dark) {
+    RenderConfig config;
+    config.width = 854;
+    config.height = 480;
+    config.theme = theme;
+    config.overlays = OverlayLevel::lesson;
+    Renderer renderer(config, Backend::osmesa);
+    FrameContent frame;
+    frame.panels = {{&snapshot, "Event-driven", {}}};
+    frame.panels[0].figures = {{"0", "missed", true}};
+    LessonFrame out;
+    out.image = renderer.render(frame);
+    LayoutInput in;
+    in.width = 854;
+    in.height = 480;
+    in.boxes = {snapshot.box};
+    out.layout = compute_layout(in);
+    return out;
+}
+
+TEST_CASE("lesson: a disc without 3:1 contrast against the box gets an outline") {
+    if (!std::filesystem::exists(RenderConfig{}.font_path)) {
+        COLLIDE_SKIP_TEST("no DejaVu Sans at " << RenderConfig{}.font_path);
+    }
+    for (const Theme theme : {Theme::dark, Theme::light}) {
+        const Rgb8 faint = theme == Theme::dark ? Rgb8{32, 32, 32} : Rgb8{245, 245, 245};
+        const Rgb8 clear = theme == Theme::dark ? Rgb8{240, 240, 240} : Rgb8{20, 20, 20};
+        REQUIRE(contrast_ratio(faint, box_fill_color(theme)) < min_disc_contrast);
+        Snapshot s = empty_snapshot({10.0, 10.0, Boundary::walls});
+        s.discs = {disc_at({5.0, 5.0}, 1.0, faint)};
+        const LessonFrame r = render_lesson(s, theme);
+        const RectF box = r.layout.panels[0].box;
+        // The outline: pixels of high contrast with the box inside the box.
+        int outlined = 0;
+        for (int y = static_cast<int>(box.y0) + 2; y < static_cast<int>(box.y1) - 2; ++y) {
+            for (int x = static_cast<int>(box.x0) + 2; x < static_cast<int>(box.x1) - 2; ++x) {
+                if (contrast_ratio(rgb_at(r.image, x, y), box_fill_color(theme)) >= 3.0) {
+                    ++outlined;
+                }
+            }
+        }
+        CHECK_MESSAGE(outlined > 20, theme_name(theme));
+        // A clear colour needs none: only its own pixels stand out.
+        s.discs = {disc_at({5.0, 5.0}, 1.0, clear)};
+        const LessonFrame plain = render_lesson(s, theme);
+        CHECK(count_near(plain.image, clear, 8) > 100);
+    }
+}
+
+TEST_CASE(
+    "lesson: escaped discs stay out of the picture, with a marker in the failure colour at the "
+    "edge") {
+    if (!std::filesystem::exists(RenderConfig{}.font_path)) {
+        COLLIDE_SKIP_TEST("no DejaVu Sans at " << RenderConfig{}.font_path);
+    }
+    Snapshot s = empty_snapshot({10.0, 10.0, Boundary::walls});
+    DiscState gone = disc_at({-40.0, 5.0}, 0.5, green);  // far outside, left
+    gone.escaped = true;
+    s.discs = {gone};
+    const LessonFrame r = render_lesson(s);
+    CHECK(count_near(r.image, green, 40) == 0);  // nowhere: not over the text, not in the box
+    const RectF box = r.layout.panels[0].box;
+    CHECK(count_near(r.image, failure_color(Theme::dark), 40, static_cast<int>(box.x0),
+                     static_cast<int>(box.y0), static_cast<int>(box.x0) + 30,
+                     static_cast<int>(box.y1)) > 10);
 }
 
 }  // namespace

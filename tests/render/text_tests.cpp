@@ -56,6 +56,7 @@ TEST_CASE("a 480p two-panel frame shows the speed legend's colour bar in the str
     config.height = 480;
     config.color_mode = ColorMode::speed;
     config.speed_max = 1.5;
+    config.overlays = OverlayLevel::full;  // the expert level's strip
     if (!std::filesystem::exists(config.font_path)) {
         COLLIDE_SKIP_TEST("no DejaVu Sans at " << config.font_path);
     }

@@ -97,7 +97,7 @@ dt = 0.25
 )");
     CHECK(s.render.color_mode == "mass");
     CHECK(s.render.trails == true);
-    CHECK(s.render.overlays == false);
+    CHECK(s.render.overlays == std::optional<std::string>("none"));
     CHECK(s.render.duration == 12.0);
     CHECK(s.render.speed == 0.5);
     CHECK(s.render.dt == 0.25);
@@ -292,6 +292,61 @@ region = [[0.5, 0.0], [1.0, 1.0]]
     REQUIRE(s.discs.size() == 2);
     // same relative position in each half would mean the same random stream
     CHECK(s.discs[1].position.y != s.discs[0].position.y);
+}
+
+TEST_CASE("toml: the scene's story: description, caption, timed captions, theme, overlays") {
+    const Scene s = parse(R"(title = "T"
+description = "What it shows"
+[render]
+duration = 10
+overlays = "full"
+theme = "light"
+histogram = "large"
+caption = "The whole video"
+[[render.captions]]
+at = 2
+text = "First"
+[[render.captions]]
+at = 5.5
+text = "Second"
+)");
+    CHECK(s.description == "What it shows");
+    CHECK(s.render.overlays == std::optional<std::string>("full"));
+    CHECK(s.render.theme == std::optional<std::string>("light"));
+    CHECK(s.render.histogram == std::optional<std::string>("large"));
+    CHECK(s.render.caption == std::optional<std::string>("The whole video"));
+    REQUIRE(s.render.captions.size() == 2);
+    CHECK(s.render.captions[1].at == 5.5);
+    CHECK(s.render.captions[1].text == "Second");
+    CHECK(s.render.captions[1].line == 13);
+    CHECK(parse("[render]\noverlays = true\n").render.overlays ==
+          std::optional<std::string>("lesson"));
+}
+
+TEST_CASE("toml: bad captions name the file, line and field and say what is allowed") {
+    const std::string long_text(65, 'x');
+    const std::string too_long = toml_error("[render]\ncaption = \"" + long_text + "\"\n");
+    CHECK(contains(too_long, "s.toml:2"));
+    CHECK(contains(too_long, "render.caption"));
+    CHECK(contains(too_long, "at most 64 characters, got 65"));
+    const std::string order = toml_error(
+        "[render]\n[[render.captions]]\nat = 3\ntext = \"a\"\n[[render.captions]]\nat = 2\n"
+        "text = \"b\"\n");
+    CHECK(contains(order, "s.toml:6"));
+    CHECK(contains(order, "render.captions[1].at"));
+    CHECK(contains(order, "out of order"));
+    const std::string beyond =
+        toml_error("[render]\nduration = 5\n[[render.captions]]\nat = 7\ntext = \"late\"\n");
+    CHECK(contains(beyond, "s.toml:4"));
+    CHECK(contains(beyond, "beyond the video"));
+    const std::string cue_too_long =
+        toml_error("[render]\n[[render.captions]]\nat = 1\ntext = \"" + long_text + "\"\n");
+    CHECK(contains(cue_too_long, "render.captions[0].text"));
+    CHECK(contains(cue_too_long, "at most 64"));
+    CHECK(contains(toml_error("[render]\ntheme = \"neon\"\n"), "render.theme"));
+    CHECK(contains(toml_error("[render]\noverlays = \"some\"\n"), "render.overlays"));
+    CHECK(contains(toml_error("[render]\n[[render.captions]]\ntext = \"no time\"\n"),
+                   "render.captions[0].at"));
 }
 
 TEST_CASE("toml: a number too small for a double reads as 0, as in algs4 files and on the CLI") {

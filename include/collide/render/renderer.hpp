@@ -20,6 +20,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "collide/image.hpp"
@@ -35,6 +36,27 @@ enum class ColorMode {
     mass,   ///< mass through the colormap over [mass_min, mass_max] (log scale)
     tag,    ///< tagged discs highlighted, the others grey
 };
+
+/// How much is drawn around the boxes (docs/renderer.md, "Layout levels").
+enum class OverlayLevel {
+    none,    ///< discs only: the boxes fill the frame
+    lesson,  ///< the default: titles, two or three figures per panel, the cost graphic, a caption
+    full,    ///< every counter and the plot strip (for experts)
+};
+/// "none" / "lesson" / "full".
+[[nodiscard]] std::string_view overlay_level_name(OverlayLevel level) noexcept;
+/// Parses an overlay level; throws collide::Error (input) naming `field` otherwise.
+[[nodiscard]] OverlayLevel parse_overlay_level(std::string_view text,
+                                               std::string_view field = "overlays");
+
+/// Colours of the background, panels and text.
+enum class Theme {
+    dark,   ///< light discs on dark panels (screens)
+    light,  ///< dark text on white panels (projectors, print)
+};
+[[nodiscard]] std::string_view theme_name(Theme theme) noexcept;
+/// Parses a theme; throws collide::Error (input) naming `field` otherwise.
+[[nodiscard]] Theme parse_theme(std::string_view text, std::string_view field = "theme");
 
 /// "scene" / "speed" / "mass" / "tag".
 [[nodiscard]] std::string_view color_mode_name(ColorMode mode) noexcept;
@@ -56,7 +78,8 @@ struct RenderConfig {
     double mass_max = 1.0;
     bool trails = true;     ///< fading trails behind tagged discs
     int trail_length = 48;  ///< frames of history kept per tagged disc, 2..1024
-    bool overlays = true;   ///< titles, counters, legend and the bottom strip; off = discs only
+    OverlayLevel overlays = OverlayLevel::lesson;  ///< what is drawn around the boxes
+    Theme theme = Theme::dark;
     /// Font for all text (DejaVu Sans from fonts-dejavu-core). A missing file is a runtime error
     /// when the Renderer is constructed with overlays on.
     std::string font_path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
@@ -65,12 +88,38 @@ struct RenderConfig {
     void validate() const;
 };
 
+/// A headline figure of the lesson level: a big number and its label in plain words.
+struct Figure {
+    std::string value;     ///< "1,234"
+    std::string label;     ///< "collisions missed"
+    bool failure = false;  ///< drawn in the failure colour when the value is not zero
+};
+
 /// One simulation shown in one panel.
 struct PanelContent {
+    PanelContent() = default;
+    /// The full level's content (what every level needs: the snapshot and a title).
+    PanelContent(const Snapshot* snapshot_, std::string title_,
+                 std::vector<std::string> counters_ = {})
+        : snapshot(snapshot_), title(std::move(title_)), counters(std::move(counters_)) {}
+
     const Snapshot* snapshot = nullptr;  ///< not owned; must stay valid during render()
-    std::string title;                   ///< e.g. "Event-driven (priority queue)"
-    std::vector<std::string> counters;   ///< lines shown under the title ("collisions 1234")
+    std::string title;                   ///< e.g. "Event-driven: priority queue of collisions"
+    std::vector<std::string> counters;   ///< full level: lines under the title ("collisions 1234")
+    std::vector<Figure> figures;         ///< lesson level: two or three, most important first
+    std::string compact_line;            ///< compact lesson form: the one line (failure count)
+    std::string note;                    ///< lesson level: a line under the figures (dt > frame)
+    /// Step indicator beside the note: the time-driven state changes every `step_period` frames
+    /// and this frame is `step_phase` (0 = a new step) of them. Period 1 draws none.
+    int step_period = 1;
+    int step_phase = 0;
+    std::string cost_label;     ///< the cost graphic's label ("pair tests")
+    double cost = 0.0;          ///< work done so far, on the graphic's shared scale
+    Rgb8 accent{240, 150, 60};  ///< the engine's colour (title swatch, bar, histogram)
 };
+
+/// Size of a lesson-level plot.
+enum class PlotSize { none, small, large };
 
 /// One sample of an energy drift series: relative drift (E(t) - E(0)) / E(0) at time t.
 struct DriftPoint {
@@ -86,7 +135,18 @@ struct FrameContent {
     std::string time_text;  ///< e.g. "t = 3.25   (x0.5 speed)"
     /// One series per panel (same order as `panels`; may be empty or shorter), oldest first.
     std::vector<std::vector<DriftPoint>> energy_drift;
-    std::vector<std::string> notes;  ///< notice line(s) at the bottom, e.g. what the viewer sees
+    std::vector<std::string> notes;  ///< full level: notice line(s) at the bottom
+    std::string caption;             ///< lesson level: the caption line at the bottom
+    std::string energy_line;         ///< lesson level: "Energy conserved" (empty: the drift plot)
+    std::string cost_heading = "Work so far";
+    double video_time = 0.0;  ///< seconds of video at this frame: failure markers fade by it
+    /// Lesson level: the speed histogram of moving discs in the column (large: it is the subject).
+    PlotSize histogram = PlotSize::none;
+    bool energy_plot = false;  ///< lesson level: the energy drift plot (energy not conserved)
+    /// The scene's title card (intro): drawn over the frame with this opacity (0 = none).
+    std::string intro_title;
+    std::string intro_text;
+    float intro_opacity = 0.0F;
 };
 
 /// Renders frames with a GL context it owns. Keeps per-panel trail history across frames (it
@@ -118,7 +178,11 @@ class Renderer {
     void draw(const FrameContent& frame);
     void read_pixels(Image& out);
 
-    /// Forgets all trail history (e.g. after seeking).
+    /// The rectangles this frame would be laid out in (panels, boxes, every text line with its
+    /// pixel height), as JSON (`--layout-json`).
+    [[nodiscard]] std::string layout_json(const FrameContent& frame) const;
+
+    /// Forgets all trail and marker history (e.g. after seeking).
     void reset_trails();
 
     [[nodiscard]] Backend backend() const noexcept;
@@ -128,6 +192,26 @@ class Renderer {
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };
+
+/// "1,234,567": thousands separators, for figures read from the back row.
+[[nodiscard]] std::string with_separators(long long value);
+
+/// Each engine's colour (title swatch, cost bar, histogram): time-driven orange, event-driven
+/// blue, the same in every video.
+[[nodiscard]] Rgb8 panel_accent(bool time_driven) noexcept;
+
+/// The colour reserved for failures (missed collisions, overlaps, escapes) in a theme.
+[[nodiscard]] Rgb8 failure_color(Theme theme) noexcept;
+/// True when a disc colour could be mistaken for the failure colour.
+[[nodiscard]] bool near_failure_color(Rgb8 color) noexcept;
+/// `color` moved away from the failure colour (unchanged when it is not near it).
+[[nodiscard]] Rgb8 away_from_failure_color(Rgb8 color) noexcept;
+/// WCAG contrast ratio of two sRGB colours, 1..21.
+[[nodiscard]] double contrast_ratio(Rgb8 a, Rgb8 b) noexcept;
+/// The box fill of a theme (what discs are seen against).
+[[nodiscard]] Rgb8 box_fill_color(Theme theme) noexcept;
+/// Discs with less contrast than this against the box get an outline.
+inline constexpr double min_disc_contrast = 3.0;
 
 /// The perceptual colormap used for speed and mass (dark blue-violet -> teal -> yellow), t in
 /// [0, 1] (clamped). Exposed for tests and for anyone drawing a matching legend.

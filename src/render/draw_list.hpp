@@ -1,0 +1,48 @@
+#pragma once
+// Internal: a picture described on the CPU for GlTarget (gl_target.hpp): discs (filled, rings,
+// glows), triangles under and over them, and text. No GL here, so frame builders and their tests
+// need no context.
+
+#include <cstddef>
+#include <vector>
+
+#include "font.hpp"
+#include "overlay_geometry.hpp"
+
+namespace collide::render {
+
+/// The vertex layout of shaders/disc.vert: one instance per disc or marker (20 bytes).
+struct DiscInstance {
+    float x, y;    ///< centre, frame pixels
+    float radius;  ///< pixels
+    float style;   ///< 0 filled, > 0 ring width (px), < 0 glow
+    Rgba8 color;
+};
+static_assert(sizeof(DiscInstance) == 20);
+
+/// Text of one font: glyphs (OverlayBatch::glyphs) blended over everything after the readback.
+struct TextRun {
+    const FontAtlas* font = nullptr;
+    OverlayBatch glyphs;  ///< only its glyphs are used
+};
+
+/// Everything one frame draws, in drawing order: background (and whole-pixel fills cleared to
+/// `fill_color`), `under` triangles, discs (per group, scissored), `over` triangles, then text.
+struct DrawList {
+    Rgba8 background{22, 22, 28, 255};
+    Rgba8 fill_color{34, 36, 46, 255};
+    std::vector<RectF> fill_clears;  ///< whole-pixel rectangles cleared to fill_color first
+    OverlayBatch under;              ///< triangles under the discs (must hold no glyphs)
+    std::vector<DiscInstance> discs;
+    struct DiscGroup {
+        std::size_t end = 0;  ///< discs [previous group's end, end)
+        RectF clip;           ///< scissor rectangle of the group
+    };
+    std::vector<DiscGroup> disc_groups;
+    OverlayBatch over;          ///< triangles over the discs (must hold no glyphs)
+    std::vector<TextRun> text;  ///< blended last, run by run
+
+    void clear();
+};
+
+}  // namespace collide::render
