@@ -140,7 +140,7 @@ TEST_CASE("heap view: panels share one row and the legible limit shrinks with th
 }
 
 TEST_CASE("heap view: bad frames are input errors") {
-    HeapRenderer renderer(config_of(160, 90), Backend::osmesa);
+    HeapRenderer renderer(config_of(160, 90), test::test_backend());
     const auto kind_of = [&](HeapFrameView f) {
         try {
             (void)renderer.render(f);
@@ -156,11 +156,11 @@ TEST_CASE("heap view: bad frames are input errors") {
     bad_swap.swap = HeapSwapView{0, 2, 0.5F};
     CHECK(kind_of(frame_of({bad_swap})) == ErrorKind::input);
     HeapViewConfig tiny = config_of(32, 90);
-    CHECK_THROWS_AS(HeapRenderer(tiny, Backend::osmesa), Error);
+    CHECK_THROWS_AS(HeapRenderer(tiny, test::test_backend()), Error);
 }
 
 TEST_CASE("heap view: compared keys light up amber, exchanged ones blue, frames repeat exactly") {
-    HeapRenderer renderer(config_of(480, 270), Backend::osmesa);
+    HeapRenderer renderer(config_of(480, 270), test::test_backend());
     HeapPanelView plain = binary_panel({"T", "P", "R", "N", "H"}, 7);
     const Image before = renderer.render(frame_of({plain}));
     HeapPanelView compared = plain;
@@ -183,7 +183,7 @@ TEST_CASE("heap view: compared keys light up amber, exchanged ones blue, frames 
 }
 
 TEST_CASE("golden: the lecture's binary heap mid-exchange, 480x270") {
-    HeapRenderer renderer(config_of(480, 270), Backend::osmesa);
+    HeapRenderer renderer(config_of(480, 270), test::test_backend());
     HeapPanelView p = binary_panel({"T", "P", "R", "N", "H", "O", "A", "E", "I", "G", "S"}, 11);
     p.slots[10].mark = SlotMark::moving;
     p.slots[4].mark = SlotMark::moving;
@@ -193,7 +193,7 @@ TEST_CASE("golden: the lecture's binary heap mid-exchange, 480x270") {
 }
 
 TEST_CASE("golden: arrays and a heap side by side, the scan and a shift, 480x270") {
-    HeapRenderer renderer(config_of(480, 270), Backend::osmesa);
+    HeapRenderer renderer(config_of(480, 270), test::test_backend());
     HeapPanelView unordered;
     unordered.title = "unordered array (max)";
     unordered.counters = {"compares 2", "exchanges 0"};
@@ -214,7 +214,7 @@ TEST_CASE("golden: arrays and a heap side by side, the scan and a shift, 480x270
 }
 
 TEST_CASE("golden: the indexed heap's map and heapsort's sorted part, 480x270") {
-    HeapRenderer renderer(config_of(480, 270), Backend::osmesa);
+    HeapRenderer renderer(config_of(480, 270), test::test_backend());
     HeapPanelView indexed = binary_panel({"12", "7", "5"}, 4);
     indexed.title = "indexed binary heap (max)";
     indexed.show_map = true;
@@ -223,7 +223,7 @@ TEST_CASE("golden: the indexed heap's map and heapsort's sorted part, 480x270") 
     indexed.caption = "increase 3 to 12: the map says 3 is at a[3]; set a[3] = 12";
     HeapViewConfig config = config_of(480, 270);
     config.widest_key = "12";
-    HeapRenderer wide_keys(config, Backend::osmesa);
+    HeapRenderer wide_keys(config, test::test_backend());
     check_golden(wide_keys.render(frame_of({indexed})), "heap_indexed_map");
 
     HeapPanelView sort = binary_panel({"P", "O", "M", "L", "E", "A", "E", "R", "S", "T", "X"}, 11);

@@ -299,7 +299,7 @@ LessonFrame render_lesson(const Snapshot& snapshot, Theme theme = Theme::dark) {
     config.height = 480;
     config.theme = theme;
     config.overlays = OverlayLevel::lesson;
-    Renderer renderer(config, Backend::osmesa);
+    Renderer renderer(config, test::test_backend());
     FrameContent frame;
     frame.panels = {{&snapshot, "Event-driven", {}}};
     frame.panels[0].figures = {{"0", "missed", true}};
