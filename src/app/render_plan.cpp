@@ -150,15 +150,21 @@ render::RenderConfig render_config(const RenderRequest& request, const Scene& sc
     return config;
 }
 
-/// Trails long enough to see a path: the whole video for a few tagged discs (a Brownian
-/// tracer's path), the default otherwise (each trail point costs a segment per frame).
-int trail_length(const Scene& scene, std::int64_t frames) {
+/// A few tagged discs whose path is the lesson (a Brownian tracer): their whole path stays on
+/// screen (each trail point costs a segment per frame, so not for many).
+bool few_tagged_discs(const Scene& scene) {
     constexpr std::size_t few_tagged = 8;
-    constexpr std::int64_t default_length = 48;
-    constexpr std::int64_t longest = 1024;
     const auto tagged = static_cast<std::size_t>(std::count_if(
         scene.discs.begin(), scene.discs.end(), [](const Disc& d) { return !d.tag.empty(); }));
-    if (tagged == 0 || tagged > few_tagged) return static_cast<int>(default_length);
+    return tagged > 0 && tagged <= few_tagged;
+}
+
+/// Trails long enough to see a path: the whole video for a few tagged discs (thinned past
+/// `longest` points, RenderConfig::trail_whole_path), the default otherwise.
+int trail_length(const Scene& scene, std::int64_t frames) {
+    constexpr std::int64_t default_length = 48;
+    constexpr std::int64_t longest = 1024;
+    if (!few_tagged_discs(scene)) return static_cast<int>(default_length);
     return static_cast<int>(std::clamp(frames, default_length, longest));
 }
 
@@ -461,6 +467,7 @@ RenderPlan plan_render(const RenderRequest& request, const Scene& scene) {
     }
     plan.render = render_config(request, scene, plan.width, plan.height);
     plan.render.trail_length = trail_length(scene, video.count);
+    plan.render.trail_whole_path = few_tagged_discs(scene);
     check_failure_colors(scene, plan.render, plan.notices);
     plan.lesson = lesson_plan(request, scene, plan, plan.notices);
     if (request.layout_json) {

@@ -235,7 +235,8 @@ const DrawList& FrameBuilder::build(const FrameContent& frame) {
     counter_rows_ = config_.overlays == OverlayLevel::full ? counter_rows(frame) : 0;
     layout_ = layout_for(frame);
     if (trails_.size() != frame.panels.size()) {
-        trails_.assign(frame.panels.size(), TrailHistory(config_.trail_length));
+        trails_.assign(frame.panels.size(),
+                       TrailHistory(config_.trail_length, config_.trail_whole_path));
         markers_.assign(frame.panels.size(), MarkerMemory{});
     }
     for (std::size_t i = 0; i < frame.panels.size(); ++i) {

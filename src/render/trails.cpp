@@ -30,6 +30,18 @@ std::optional<std::pair<Vec2, Vec2>> clip_to_box(const Box& box, Vec2 a, Vec2 b)
     return std::pair{a + t0 * d, a + t1 * d};
 }
 
+namespace {
+
+/// Keeps the positions at even indices and the newest one: half the points, same start and end.
+void thin(std::deque<Vec2>& path) {
+    std::deque<Vec2> kept;
+    for (std::size_t i = 0; i < path.size(); i += 2) kept.push_back(path[i]);
+    if (path.size() % 2 == 0) kept.push_back(path.back());
+    path = std::move(kept);
+}
+
+}  // namespace
+
 void TrailHistory::reset() noexcept {
     started_ = false;
     disc_count_ = 0;
@@ -49,8 +61,14 @@ void TrailHistory::update(const Snapshot& snapshot) {
     }
     last_time_ = snapshot.time;
     for (std::size_t k = 0; k < tagged_.size(); ++k) {
-        paths_[k].push_back(snapshot.discs[tagged_[k]].position);
-        if (paths_[k].size() > length_) paths_[k].pop_front();
+        std::deque<Vec2>& path = paths_[k];
+        path.push_back(snapshot.discs[tagged_[k]].position);
+        if (path.size() <= length_) continue;
+        if (whole_path_) {
+            thin(path);
+        } else {
+            path.pop_front();
+        }
     }
 }
 

@@ -17,8 +17,11 @@ namespace collide::render {
 
 class TrailHistory {
   public:
-    /// Keeps up to `length` positions per tagged disc (>= 2).
-    explicit TrailHistory(int length) : length_(static_cast<std::size_t>(length)) {}
+    /// Keeps up to `length` positions per tagged disc (>= 2). Past that, the oldest position is
+    /// dropped, or with `whole_path` every other position is dropped instead, so the trail keeps
+    /// its start (a Brownian tracer's whole path) at a coarser spacing and bounded cost.
+    explicit TrailHistory(int length, bool whole_path = false)
+        : length_(static_cast<std::size_t>(length)), whole_path_(whole_path) {}
 
     /// Records the tagged discs' positions. Starts over when the disc count changes or time
     /// goes backwards (a new video or a seek). O(tagged discs).
@@ -37,6 +40,7 @@ class TrailHistory {
 
   private:
     std::size_t length_;
+    bool whole_path_ = false;
     std::size_t disc_count_ = 0;
     double last_time_ = 0.0;
     bool started_ = false;

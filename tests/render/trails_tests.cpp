@@ -2,6 +2,8 @@
 // drawn on both sides, cut at the edges, never as a line across the whole box.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+
 #include "layout.hpp"
 #include "render_fixtures.hpp"
 #include "trails.hpp"
@@ -43,6 +45,25 @@ TEST_CASE("trail history keeps the last trail_length positions of tagged discs")
     s.time = 0.0;                      // time going backwards resets the history
     history.update(s);
     CHECK(history.points(0).size() == 1);
+}
+
+TEST_CASE("a whole-path trail keeps its start past trail_length, thinned, within the length") {
+    TrailHistory history(8, true);
+    Snapshot s;
+    s.box = {1000.0, 10.0, Boundary::walls};
+    s.discs = {test::disc_at({0.0, 1.0}, 0.1, {255, 0, 0})};
+    s.discs[0].tagged = true;
+    for (int i = 0; i < 100; ++i) {
+        s.time = i;
+        s.discs[0].position = {static_cast<double>(i), 1.0};
+        history.update(s);
+        const std::vector<Vec2> path = history.points(0);
+        REQUIRE(path.size() <= 8);
+        CHECK(path.front().x == doctest::Approx(0.0));                    // the start stays
+        CHECK(path.back().x == doctest::Approx(static_cast<double>(i)));  // and the newest
+        CHECK(std::is_sorted(path.begin(), path.end(),
+                             [](Vec2 a, Vec2 b) { return a.x < b.x; }));  // in order
+    }
 }
 
 TEST_CASE("a trail crossing the seam of a periodic box shows on both sides and not across") {

@@ -78,6 +78,9 @@ struct RenderConfig {
     double mass_max = 1.0;
     bool trails = true;     ///< fading trails behind tagged discs
     int trail_length = 48;  ///< frames of history kept per tagged disc, 2..1024
+    /// Past trail_length frames, keep the whole path at a coarser spacing instead of dropping its
+    /// start (a few tagged discs whose path is the lesson, as the Brownian tracer's).
+    bool trail_whole_path = false;
     OverlayLevel overlays = OverlayLevel::lesson;  ///< what is drawn around the boxes
     Theme theme = Theme::dark;
     /// Font for all text (DejaVu Sans from fonts-dejavu-core). A missing file is a runtime error
