@@ -96,8 +96,13 @@ InterruptGuard::InterruptGuard() {
 }
 
 InterruptGuard::~InterruptGuard() {
-    for (std::size_t i = 0; i < handled_signals.size(); ++i) {
-        sigaction(handled_signals[i], &previous_[i], nullptr);
+    // Once a signal asked for a stop, the handlers stay: the program is on its way out, and a
+    // second Ctrl-C arriving between this destructor and exit() must stay harmless rather than
+    // meet the default action (killed by the signal instead of exit 1). The third still kills.
+    if (!interrupt_requested.load()) {
+        for (std::size_t i = 0; i < handled_signals.size(); ++i) {
+            sigaction(handled_signals[i], &previous_[i], nullptr);
+        }
     }
     guard_alive.store(false);
 }

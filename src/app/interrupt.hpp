@@ -13,7 +13,9 @@
 namespace collide::app {
 
 /// Installs handlers for SIGINT, SIGTERM, SIGHUP, SIGQUIT and SIGPIPE for its lifetime
-/// (restoring the previous ones after). The first signal sets the flag; a second one is ignored
+/// (restoring the previous ones after, unless a signal arrived: then they stay until the program
+/// exits, so a late second signal is still harmless). The first signal sets the flag; a second one
+/// is ignored
 /// (the clean stop is already removing the temporaries); a third (SIGPIPE aside) ends the process
 /// at once with the signal's default action, for a clean stop that hangs.
 /// Only one may be alive at a time (a second one throws Error(runtime)): a signal handler can only

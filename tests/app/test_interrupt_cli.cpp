@@ -15,26 +15,18 @@
 #include <string>
 #include <vector>
 
+#include "../support/files.hpp"
 #include "../support/signal_child.hpp"
 #include "../support/temp_dir.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
+using collide::test::entries;
+using collide::test::read_all;
 using collide::test::run_and_signal;
 using collide::test::SignalledRun;
 using collide::test::TempDir;
-
-std::vector<std::string> entries(const fs::path& dir) {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename());
-    return names;
-}
-
-std::string read_all(const fs::path& file) {
-    std::ifstream in(file);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 bool has_hidden_entry(const fs::path& dir) {
     for (const std::string& name : entries(dir))
@@ -46,8 +38,8 @@ bool has_hidden_entry(const fs::path& dir) {
 /// or the work estimate would refuse to start it).
 SignalledRun endless_render(const fs::path& out, const fs::path& log) {
     SignalledRun run;
-    run.argv = {COLLIDE_EXE, "render",     "gas", "-o", (out / "out.mp4").string(),
-                "--speed",   "1e300",      "-q",  "l",  "--duration",
+    run.argv = {COLLIDE_EXE, "render",     "gas",  "-o",         (out / "out.mp4").string(),
+                "--speed",   "1e300",      "-q",   "l",          "--duration",
                 "1",         "--progress", "none", "--no-limits"};
     run.log = log;
     // The writer's temporary is open (unnamed where the filesystem has O_TMPFILE).

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/files.hpp"
 #include "../support/skip.hpp"
 #include "../support/temp_dir.hpp"
 #include "run_collide.hpp"
@@ -21,29 +22,16 @@
 namespace {
 
 namespace fs = std::filesystem;
+using collide::test::entries;
+using collide::test::read_all;
 using collide::test::run_collide;
 using collide::test::run_collide_shell;
 using collide::test::RunResult;
 using collide::test::TempDir;
+using collide::test::write_file;
 
 bool contains(const std::string& s, const std::string& part) {
     return s.find(part) != std::string::npos;
-}
-
-std::vector<std::string> entries(const fs::path& dir) {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename());
-    std::sort(names.begin(), names.end());
-    return names;
-}
-
-std::string read_all(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void write_file(const fs::path& file, const std::string& text) {
-    std::ofstream(file, std::ios::binary) << text;
 }
 
 std::string q(const fs::path& path) {
@@ -115,9 +103,10 @@ TEST_CASE("render --format png -o . and -o .. are refused before anything is ren
     // all means the refusal came up front.
     for (const char* bad : {".", "..", "./", "inner/..", "../inner", "/"}) {
         CAPTURE(bad);
-        const RunResult r = run_collide_shell(
-            "cd " + q(work / "inner") + " && timeout 60 \"" + COLLIDE_EXE +
-            "\" render gas --speed 1e300 --no-limits --format png -o '" + bad + "' --progress none");
+        const RunResult r =
+            run_collide_shell("cd " + q(work / "inner") + " && timeout 60 \"" + COLLIDE_EXE +
+                              "\" render gas --speed 1e300 --no-limits --format png -o '" + bad +
+                              "' --progress none");
         CHECK(r.exit_code == 2);
         CHECK((contains(r.output, "give it a name") || contains(r.output, "current directory")));
     }

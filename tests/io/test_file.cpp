@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/files.hpp"
 #include "../support/input_error.hpp"
 #include "../support/skip.hpp"
 #include "../support/temp_dir.hpp"
@@ -26,25 +27,12 @@ namespace {
 
 namespace fs = std::filesystem;
 using collide::test::contains;
+using collide::test::entries;
 using collide::test::input_error_message;
+using collide::test::read_all;
 using collide::test::TempDir;
+using collide::test::write_file;
 using namespace collide::io;
-
-std::vector<std::string> entries(const fs::path& dir) {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename());
-    std::sort(names.begin(), names.end());
-    return names;
-}
-
-std::string read_all(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void write_file(const fs::path& file, const std::string& text) {
-    std::ofstream(file, std::ios::binary) << text;
-}
 
 /// Both kinds of temporary: unnamed (O_TMPFILE) where the filesystem has it, and the hidden
 /// named one every other filesystem gets.
