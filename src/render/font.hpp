@@ -47,6 +47,11 @@ class FontAtlas {
     std::vector<Glyph> glyphs_;  // code points 32..255
 };
 
+/// Greedy word wrap: the words of `text` (split at spaces) in lines no wider than `width` pixels
+/// in `font` (a word wider than that gets a line of its own).
+[[nodiscard]] std::vector<std::string> wrap_words(const FontAtlas& font, const std::string& text,
+                                                  float width);
+
 /// Decodes UTF-8 into code points; malformed bytes become U+FFFD.
 [[nodiscard]] std::vector<std::uint32_t> decode_utf8(std::string_view text);
 

@@ -59,28 +59,6 @@ Rgb8 rgb(Rgba8 c) {
     return {c.r, c.g, c.b};
 }
 
-/// Words of `text` in lines no wider than `width` pixels.
-std::vector<std::string> wrap(const FontAtlas& font, const std::string& text, float width) {
-    std::vector<std::string> lines;
-    std::string line;
-    std::size_t start = 0;
-    while (start < text.size()) {
-        std::size_t end = text.find(' ', start);
-        if (end == std::string::npos) end = text.size();
-        const std::string word = text.substr(start, end - start);
-        const std::string candidate = line.empty() ? word : line + " " + word;
-        if (!line.empty() && font.text_width(candidate) > width) {
-            lines.push_back(line);
-            line = word;
-        } else {
-            line = candidate;
-        }
-        start = end + 1;
-    }
-    if (!line.empty()) lines.push_back(line);
-    return lines;
-}
-
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -645,7 +623,7 @@ void FrameBuilder::add_column(const FrameContent& frame) {
     const std::vector<const TextSlot*> energy = layout_.slots(TextRole::energy);
     if (!energy.empty() && !frame.energy_line.empty()) {
         const std::vector<std::string> lines =
-            wrap(*body_font_, frame.energy_line, energy.front()->rect.width());
+            wrap_words(*body_font_, frame.energy_line, energy.front()->rect.width());
         for (std::size_t k = 0; k < lines.size() && k < energy.size(); ++k) {
             draw_text(Font::body, *energy[k], lines[k],
                       frame.energy_plot ? palette_.failure : palette_.text);
@@ -691,8 +669,8 @@ void FrameBuilder::add_intro(const FrameContent& frame) {
     const FontAtlas& head = atlas(Font::head);
     const FontAtlas& body = atlas(Font::body);
     const float width = 0.8F * w;
-    const std::vector<std::string> title = wrap(head, frame.intro_title, width);
-    const std::vector<std::string> text = wrap(body, frame.intro_text, width);
+    const std::vector<std::string> title = wrap_words(head, frame.intro_title, width);
+    const std::vector<std::string> text = wrap_words(body, frame.intro_text, width);
     const float head_line = head.line_height();
     const float body_line = body.line_height() * 1.1F;
     const float total = static_cast<float>(title.size()) * head_line + 0.6F * head_line +

@@ -118,22 +118,7 @@ static_assert(sizeof(NodeInstance) == 20);
 /// Greedy word wrap to `width` pixels; at most `max_lines` lines (the last one ends in "...").
 std::vector<std::string> wrap(const FontAtlas& font, const std::string& text, float width,
                               std::size_t max_lines) {
-    std::vector<std::string> lines;
-    std::string line;
-    std::size_t i = 0;
-    while (i < text.size()) {
-        const std::size_t end = std::min(text.find(' ', i), text.size());
-        const std::string word = text.substr(i, end - i);
-        const std::string candidate = line.empty() ? word : line + " " + word;
-        if (!line.empty() && font.text_width(candidate) > width) {
-            lines.push_back(line);
-            line = word;
-        } else {
-            line = candidate;
-        }
-        i = end + 1;
-    }
-    if (!line.empty()) lines.push_back(line);
+    std::vector<std::string> lines = wrap_words(font, text, width);
     if (lines.size() > max_lines) {
         lines.resize(max_lines);
         lines.back() += " ...";
