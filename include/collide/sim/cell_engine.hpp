@@ -31,6 +31,7 @@
 #include "collide/sim/event.hpp"
 #include "collide/sim/kinematics.hpp"
 #include "collide/sim/observables.hpp"
+#include "collide/sim/pq/calendar_queue.hpp"
 #include "collide/sim/pq/indexed_heap.hpp"
 
 namespace collide::sim {
@@ -134,7 +135,11 @@ class CellEngine final : public Engine {
     struct KeyOwner {
         [[nodiscard]] std::uint32_t operator()(const Key& k) const noexcept { return k.a; }
     };
+#ifdef COLLIDE_CELL_CALENDAR
+    using Heap = pq::IndexedCalendarQueue<Key, KeyLess, KeyOwner>;
+#else
     using Heap = pq::IndexedDaryHeap<Key, pq::Orientation::min, 4, KeyLess, KeyOwner>;
+#endif
 
     struct Image {
         std::int32_t x = 0;
