@@ -73,7 +73,7 @@ double choose_duration(const RenderRequest& request, const Scene& scene) {
 }
 
 EngineOptions event_engine_options(const RenderRequest& request) {
-    if (request.engine != "fast" && request.engine != "cell" && request.engine != "classic") {
+    if (request.engine != "fast" && request.engine != "classic") {
         bad_option("--engine", fmt::format("must be fast or classic, got '{}'", request.engine));
     }
     (void)pq::parse_queue_kind(request.pq, "--pq");  // reject a bad --pq even for the fast engine

@@ -130,7 +130,7 @@ RunShape render_run_shape(const RenderPlan& plan) {
     RunShape run;
     run.span = plan.clock.last_time;
     run.event_driven = plan.mode != RenderMode::time;
-    run.cell_grid = plan.event_engine.engine == "fast" || plan.event_engine.engine == "cell";
+    run.cell_grid = plan.event_engine.engine == "fast";
     run.time_driven = plan.mode != RenderMode::event;
     run.dt = plan.time_engine.dt;
     run.all_pairs = plan.time_engine.td_detect != "grid";
@@ -181,7 +181,7 @@ void check_simulate_work(const Scene& scene, const EngineOptions& engine, double
     run.span = until;
     run.time_driven = engine.engine == "time";
     run.event_driven = !run.time_driven;
-    run.cell_grid = engine.engine == "fast" || engine.engine == "cell";
+    run.cell_grid = engine.engine == "fast";
     run.dt = engine.dt;
     run.all_pairs = engine.td_detect != "grid";
     const WorkEstimate work = estimate_work(scene, run);

@@ -1,7 +1,6 @@
 #include <type_traits>
 
 #include "collide/error.hpp"
-#include "collide/sim/cell_engine.hpp"
 #include "collide/sim/classic_engine.hpp"
 #include "collide/sim/engine.hpp"
 #include "collide/sim/event.hpp"
@@ -26,7 +25,7 @@ std::unique_ptr<Engine> make_classic_engine(const Scene& scene, const EngineOpti
 }  // namespace
 
 void EngineOptions::validate() const {
-    if (engine != "fast" && engine != "cell" && engine != "classic" && engine != "time") {
+    if (engine != "fast" && engine != "classic" && engine != "time") {
         throw_input_error("--engine", 0, "",
                           "unknown engine '" + engine + "' (expected fast|classic|time)");
     }
@@ -41,10 +40,6 @@ std::unique_ptr<Engine> make_engine(const Scene& scene, const EngineOptions& opt
         if (!sim::FastEngine::can_simulate(scene))
             return make_classic_engine(scene, EngineOptions{});
         return std::make_unique<sim::FastEngine>(scene);
-    }
-    if (options.engine == "cell") {
-        if (!sim::CellEngine::can_simulate(scene)) return make_classic_engine(scene, EngineOptions{});
-        return std::make_unique<sim::CellEngine>(scene);
     }
     if (options.engine == "classic") return make_classic_engine(scene, options);
     if (options.engine == "time") return std::make_unique<TimeEngine>(scene, options);
