@@ -18,6 +18,7 @@
 #include "collide/sim/puzzle/board.hpp"
 #include "collide/sim/puzzle/search.hpp"
 #include "commands.hpp"
+#include "puzzle_video.hpp"
 
 namespace collide::app {
 
@@ -38,6 +39,7 @@ struct PuzzleCli {
     std::uint64_t max_nodes = puzzle::SearchLimits{}.max_nodes;
     bool solve = false;
     bool json = false;
+    PuzzleVideoCli video;
 
     CLI::Option* moves_opt = nullptr;
     CLI::Option* seed_opt = nullptr;
@@ -178,11 +180,18 @@ void run(const PuzzleCli& v) {
         throw_input_error("--method: expected both, bfs or astar, got '" + v.method + "'");
     const Board start = start_board(v);
     require_solvable(start);
+    if (v.json || v.solve) {
+        refuse_video_options(v.video, v.json ? "--json" : "--solve");
+    } else {
+        validate_puzzle_video(v.video);
+    }
     const std::vector<SearchResult> results = run_searches(start, v);
     if (v.json) {
         print_json(start, results);
-    } else {
+    } else if (v.solve) {
         print_text(start, results);
+    } else {
+        render_puzzle_video(start, results, v.video);
     }
 }
 
@@ -218,6 +227,7 @@ void add_puzzle_command(CLI::App& root) {
     cmd->add_flag("--solve", v->solve,
                   "Print the moves and each method's counts as text instead of a video");
     cmd->add_flag("--json", v->json, "Print the same as JSON instead of a video");
+    add_puzzle_video_options(*cmd, v->video);
     cmd->footer(
         "Examples:\n"
         "  collide puzzle \"1 2 3 4 0 6 7 5 8\" -o puzzle.mp4   # BFS (left) vs A* (right)\n"
