@@ -94,9 +94,16 @@ void require_solvable(const Board& board) {
         puzzle::bytes_per_node));
 }
 
-std::vector<SearchResult> run_searches(const Board& start, const PuzzleCli& v) {
-    const puzzle::Heuristic heuristic = puzzle::parse_heuristic(v.heuristic, "--heuristic");
-    const pq::QueueKind queue = pq::parse_queue_kind(v.pq, "--pq");
+/// The searches' settings, read from the options before anything runs.
+struct SearchSettings {
+    puzzle::Heuristic heuristic = puzzle::Heuristic::manhattan;
+    pq::QueueKind queue{};
+};
+
+std::vector<SearchResult> run_searches(const Board& start, const SearchSettings& settings,
+                                       const PuzzleCli& v) {
+    const puzzle::Heuristic heuristic = settings.heuristic;
+    const pq::QueueKind queue = settings.queue;
     puzzle::SearchLimits limits;
     limits.max_nodes = static_cast<std::size_t>(v.max_nodes);
     std::vector<SearchResult> results;
@@ -180,12 +187,14 @@ void run(const PuzzleCli& v) {
         throw_input_error("--method: expected both, bfs or astar, got '" + v.method + "'");
     const Board start = start_board(v);
     require_solvable(start);
+    const SearchSettings settings{puzzle::parse_heuristic(v.heuristic, "--heuristic"),
+                                  pq::parse_queue_kind(v.pq, "--pq")};
     if (v.json || v.solve) {
         refuse_video_options(v.video, v.json ? "--json" : "--solve");
     } else {
         validate_puzzle_video(v.video);
     }
-    const std::vector<SearchResult> results = run_searches(start, v);
+    const std::vector<SearchResult> results = run_searches(start, settings, v);
     if (v.json) {
         print_json(start, results);
     } else if (v.solve) {
