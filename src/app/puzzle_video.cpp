@@ -51,7 +51,7 @@ struct Output {
 Output output_of(const PuzzleVideoCli& v) {
     Output out;
     const std::filesystem::path dir = default_output_dir;
-    if (v.last_frame) {
+    if (v.last_frame || given(v.at_opt)) {
         out.still = true;
         if (given(v.format_opt) && v.format != "png")
             bad_option("--format", "a single frame is written as png, got '" + v.format + "'");
@@ -150,6 +150,9 @@ void add_puzzle_video_options(CLI::App& cmd, PuzzleVideoCli& v) {
     v.last_frame_opt =
         cmd.add_flag("--last-frame", v.last_frame,
                      "Write only the final frame, as a PNG (-o FILE.png, default out/puzzle.png)");
+    v.at_opt = cmd.add_option("--at", v.at,
+                              "Write only the frame at this many seconds of video, as a PNG (a "
+                              "still for slides; -o FILE.png, default out/puzzle.png)");
     cmd.add_option("--progress", v.progress,
                    "Progress on stderr: auto (bar on a terminal), bar, json or none")
         ->capture_default_str();
@@ -157,8 +160,8 @@ void add_puzzle_video_options(CLI::App& cmd, PuzzleVideoCli& v) {
 }
 
 void refuse_video_options(const PuzzleVideoCli& v, const std::string& mode) {
-    for (const CLI::Option* o :
-         {v.output_opt, v.format_opt, v.quality_opt, v.size_opt, v.fps_opt, v.last_frame_opt}) {
+    for (const CLI::Option* o : {v.output_opt, v.format_opt, v.quality_opt, v.size_opt, v.fps_opt,
+                                 v.last_frame_opt, v.at_opt}) {
         if (given(o)) {
             bad_option(o->get_name(), mode + " prints text instead of a video; leave " +
                                           o->get_name() + " out, or " + mode + " out");
@@ -181,24 +184,28 @@ void render_puzzle_video(const puzzle::Board& start,
                          const PuzzleVideoCli& v) {
     const ProgressMode progress_mode = parse_progress_mode(v.progress);
     const Geometry geometry = geometry_of(v);
+    const PuzzleFrames frames(start, results);
+    if (given(v.at_opt) && !(v.at >= 0.0 && v.at <= frames.duration())) {
+        bad_option("--at", fmt::format("must be within the video, 0..{:.2f} s, got {}",
+                                       frames.duration(), v.at));
+    }
     const Output output = output_of(v);
     if (output.default_path) std::filesystem::create_directories(output.path.parent_path());
     video::check_output_writable(
         output.path, !output.still && output.format == video::VideoFormat::png_sequence);
     video::set_libav_verbose(v.verbose);
 
-    const PuzzleFrames frames(start, results);
     render::PuzzleViewConfig config;
     config.width = geometry.width;
     config.height = geometry.height;
     render::PuzzleRenderer renderer(config, render::Backend::automatic, print_notice);
 
     if (output.still) {
-        const Image image = renderer.render(frames.frame_at(frames.duration()));
+        const double t = given(v.at_opt) ? v.at : frames.duration();
+        const Image image = renderer.render(frames.frame_at(t));
         video::write_png(image, output.path);
-        std::printf("%s: %dx%d PNG, the last frame of a %.2f s video\n",
-                    output.path.string().c_str(), geometry.width, geometry.height,
-                    frames.duration());
+        std::printf("%s: %dx%d PNG at %.2f s of a %.2f s video\n", output.path.string().c_str(),
+                    geometry.width, geometry.height, t, frames.duration());
         return;
     }
 

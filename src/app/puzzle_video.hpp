@@ -21,6 +21,7 @@ struct PuzzleVideoCli {
     std::string size;
     int fps = 30;
     bool last_frame = false;
+    double at = 0.0;
     std::string progress = "auto";
     bool verbose = false;
 
@@ -30,6 +31,7 @@ struct PuzzleVideoCli {
     CLI::Option* size_opt = nullptr;
     CLI::Option* fps_opt = nullptr;
     CLI::Option* last_frame_opt = nullptr;
+    CLI::Option* at_opt = nullptr;
 };
 
 /// Registers the video options on `cmd`.

@@ -77,9 +77,11 @@ struct SearchLimits {
 };
 
 /// Largest max_nodes accepted (about bytes_per_node x this in memory).
-inline constexpr std::size_t max_node_budget = 50'000'000;
-/// Memory per stored board, all structures included, rounded up (node, hash slot, queue entry).
-inline constexpr std::size_t bytes_per_node = 64;
+inline constexpr std::size_t max_node_budget = 20'000'000;
+/// Memory per stored board at most, all structures included (node, hash slot, queue entry, and
+/// the spare capacity of arrays that grow by doubling): measured 100 at 2 million boards, 68 at
+/// 8 million (peak resident size of a 15-puzzle BFS, docs/puzzle.md).
+inline constexpr std::size_t bytes_per_node = 100;
 
 /// A finished (or stopped) search: every node, the order they were expanded in, and its costs.
 struct SearchResult {
