@@ -18,6 +18,7 @@
 #include "collide/sim/puzzle/board.hpp"
 #include "collide/sim/puzzle/search.hpp"
 #include "commands.hpp"
+#include "puzzle_frames.hpp"
 #include "puzzle_video.hpp"
 
 namespace collide::app {
@@ -78,7 +79,8 @@ void require_solvable(const Board& board) {
             "--pq {}: {} stopped after {} expansions without reaching the goal: the array "
             "queue's O(N) scans would take too long (the limit is {} entries scanned); use a "
             "heap (--pq binary or dary:4) or a board fewer moves from the goal",
-            pq::to_string(r.queue), who, r.stats.expanded, puzzle::SearchLimits{}.max_scan_work));
+            pq::to_string(r.queue), who, with_thousands(r.stats.expanded),
+            with_thousands(puzzle::SearchLimits{}.max_scan_work)));
     }
     std::string advice;
     if (r.method == puzzle::Method::bfs && v.method == "both")
@@ -89,8 +91,8 @@ void require_solvable(const Board& board) {
         "--max-nodes: {} stopped after storing {} boards (the node budget, about {} MB) without "
         "reaching the goal, {} moves deep; {}give a board fewer moves from the goal, or raise "
         "--max-nodes (at most {}, about {} bytes a board)",
-        who, r.stats.enqueued, v.max_nodes * puzzle::bytes_per_node / 1'000'000,
-        r.nodes.empty() ? 0 : r.nodes.back().moves, advice, puzzle::max_node_budget,
+        who, with_thousands(r.stats.enqueued), v.max_nodes * puzzle::bytes_per_node / 1'000'000,
+        r.nodes.empty() ? 0 : r.nodes.back().moves, advice, with_thousands(puzzle::max_node_budget),
         puzzle::bytes_per_node));
 }
 
@@ -139,10 +141,11 @@ void print_text(const Board& start, const std::vector<SearchResult>& results) {
                                     "expanded", "enqueued", "largest queue", "moves")
                             .c_str());
     for (const SearchResult& r : results) {
-        std::printf("%s\n", fmt::format("{:<{}}  {:>9}  {:>9}  {:>13}  {:>5}", method_title(r),
-                                        title_width, r.stats.expanded, r.stats.enqueued,
-                                        r.stats.max_queue, r.solution_length())
-                                .c_str());
+        std::printf("%s\n",
+                    fmt::format("{:<{}}  {:>9}  {:>9}  {:>13}  {:>5}", method_title(r), title_width,
+                                with_thousands(r.stats.expanded), with_thousands(r.stats.enqueued),
+                                with_thousands(r.stats.max_queue), r.solution_length())
+                        .c_str());
     }
     for (const SearchResult& r : results) {
         std::printf("%s: %s\n", std::string(puzzle::to_string(r.method)).c_str(),

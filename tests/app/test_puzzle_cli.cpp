@@ -51,7 +51,7 @@ TEST_CASE("collide puzzle --solve and --json: both methods find the 31 moves of 
     REQUIRE_MESSAGE(text.exit_code == 0, text.output);
     CHECK(contains(text.output, "BFS (FIFO queue)"));
     CHECK(contains(text.output, "A* (manhattan, binary)"));
-    CHECK(contains(text.output, "181439"));  // BFS expands all but one of the 181,440 boards
+    CHECK(contains(text.output, "181,439"));  // BFS expands all but one of the 181,440 boards
     CHECK(occurrences(text.output, "     31\n") == 2);
 
     const auto json = run_collide(
@@ -111,7 +111,7 @@ TEST_CASE("collide puzzle: bad boards name the token and unsolvable boards and b
     CHECK(contains(unsolvable, "cannot be solved: it has 1 inversion"));
     const std::string budget =
         run_collide_bad_input("puzzle random --side 4 --moves 60 --seed 5 --max-nodes 20000" + out);
-    CHECK(contains(budget, "--max-nodes: BFS stopped after storing 20000 boards"));
+    CHECK(contains(budget, "--max-nodes: BFS stopped after storing 20,000 boards"));
     CHECK(contains(budget, "--method astar"));
     CHECK(run_collide("puzzle random --side 4 --moves 60 --seed 5 --solve --method astar")
               .exit_code == 0);
