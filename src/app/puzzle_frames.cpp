@@ -157,13 +157,24 @@ render::PuzzlePanelView PuzzleFrames::search_panel(const Side& side, std::size_t
     // The tree: the deepest rows reached, each with its most recent boards.
     const std::size_t rows = render::max_puzzle_rows;
     if (step > 0) {
-        const std::size_t deepest = side.deepest[step];
+        // The deepest rows, but never without the board being expanded: A* may come back up
+        // the tree, and then the rows follow it (keeping up to two deeper rows below it).
+        const std::size_t current = r.nodes[r.expansions[step - 1]].moves;
+        const std::size_t deepest = std::min<std::size_t>(side.deepest[step], current + 2);
         const std::size_t first = deepest + 1 > rows ? deepest + 1 - rows : 0;
         std::size_t hidden = 0;
         for (std::size_t d = 0; d < first; ++d) hidden += count_below(side.by_depth[d], step);
         if (first > 0) {
-            p.hidden_rows = fmt::format("depths 0 to {} above: {} expanded, not drawn", first - 1,
-                                        plural(hidden, "board"));
+            p.hidden_rows =
+                fmt::format("not drawn: depths 0 to {} ({})", first - 1, plural(hidden, "board"));
+        }
+        if (deepest < side.deepest[step]) {
+            std::size_t below = 0;
+            for (std::size_t d = deepest + 1; d <= side.deepest[step]; ++d)
+                below += count_below(side.by_depth[d], step);
+            p.hidden_rows +=
+                fmt::format("{}{} to {} ({})", p.hidden_rows.empty() ? "not drawn: depths " : ", ",
+                            deepest + 1, side.deepest[step], plural(below, "board"));
         }
         std::vector<std::uint32_t> above;  // expansion indices drawn in the row above
         for (std::size_t d = first; d <= deepest; ++d) {
