@@ -160,6 +160,7 @@ void add_puzzle_video_options(CLI::App& cmd, PuzzleVideoCli& v) {
 }
 
 void refuse_video_options(const PuzzleVideoCli& v, const std::string& mode) {
+    (void)parse_progress_mode(v.progress);  // harmless with text, but never a wrong value
     for (const CLI::Option* o : {v.output_opt, v.format_opt, v.quality_opt, v.size_opt, v.fps_opt,
                                  v.last_frame_opt, v.at_opt}) {
         if (given(o)) {
