@@ -33,7 +33,7 @@ struct Move {
 };
 
 /// A board of side n (2..4): cell i (row-major, 0-based) holds tile 1..n*n-1 or the blank 0.
-/// A value type of 10 bytes; equal boards have equal packed() values.
+/// A small value type (16 bytes); equal boards have equal packed() values.
 class Board {
   public:
     /// The solved board of side n: 1 2 ... n*n-1 then the blank. Throws Error(input) unless
