@@ -6,5 +6,5 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 collide=${1:-build/release/collide}
 mkdir -p docs/gallery
-"$collide" puzzle "8 6 7 2 5 4 3 0 1" --size 854x480 --at 11 -o docs/gallery/puzzle.png >/dev/null
+"$collide" puzzle "8 6 7 2 5 4 3 0 1" --size 854x480 --at 12 -o docs/gallery/puzzle.png >/dev/null
 echo docs/gallery/puzzle.png

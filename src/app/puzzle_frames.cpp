@@ -222,6 +222,12 @@ render::PuzzlePanelView PuzzleFrames::search_panel(const Side& side, std::size_t
         }
     }
 
+    if (step == 0) {
+        p.board = board_view(side, 0);
+        p.caption = fmt::format("start: manhattan {}, hamming {}", puzzle::manhattan(start_),
+                                puzzle::hamming(start_));
+    }
+
     // The queue's front.
     p.queue_title = r.method == Method::bfs ? "FIFO queue" : pq::to_string(r.queue) + " PQ";
     const std::vector<std::uint32_t> front = r.queue_front(step, render::max_puzzle_queue_shown);

@@ -61,7 +61,7 @@ class PuzzleFrames {
     std::vector<Side> sides_;
     std::size_t most_expansions_ = 0;
     std::size_t longest_solution_ = 0;
-    double intro_ = 1.5;           ///< the start, before any expansion
+    double intro_ = 2.5;           ///< the start, before any expansion
     double search_seconds_ = 0.0;  ///< the growth of the largest search
     double pause_ = 2.0;           ///< the finished trees, before the playback
     double per_move_ = 0.5;        ///< playback seconds per move

@@ -200,7 +200,12 @@ struct PuzzleRenderer::Impl {
         if (p.playback) {
             draw_playback(p, body);
         } else {
-            draw_tree(p, {body.x0 + X(10), body.y0, body.x1 - X(176), body.y1});
+            const RectF tree{body.x0 + X(10), body.y0, body.x1 - X(176), body.y1};
+            if (p.rows.empty() && !p.board.tiles.empty()) {
+                draw_playback(p, tree);  // before the first expansion: the start, large
+            } else {
+                draw_tree(p, tree);
+            }
             draw_queue(p, {body.x1 - X(168), body.y0, body.x1 - X(10), body.y1});
         }
     }
@@ -292,7 +297,7 @@ struct PuzzleRenderer::Impl {
             throw_input_error("puzzle view: 1 or 2 panels, got " +
                               std::to_string(frame.panels.size()));
         for (const PuzzlePanelView& p : frame.panels) {
-            if (p.playback) check_board(p.board);
+            if (p.playback || !p.board.tiles.empty()) check_board(p.board);
             for (const PuzzleRowView& row : p.rows) {
                 for (const PuzzleBoardView& b : row.boards) check_board(b);
             }

@@ -68,6 +68,8 @@ TEST_CASE("puzzle frames: the start, the tree rows and the queue's front during 
         CHECK(p.rows.empty());
         REQUIRE(p.queue.size() == 1);  // the start waits in the queue
         CHECK(p.queue.front().tiles == tiles_of(start));
+        CHECK(p.board.tiles == tiles_of(start));  // drawn large until the first expansion
+        CHECK(p.caption == "start: manhattan 10, hamming 5");
     }
     // Mid-search: rows are consecutive depths, at most max_puzzle_rows, the newest board marked.
     const double mid = (frames.search_start() + frames.search_end()) / 2.0;

@@ -68,8 +68,8 @@ struct PuzzlePanelView {
     std::vector<PuzzleBoardView> queue;  ///< its first entries (at most max_puzzle_queue_shown)
     std::string queue_more;              ///< e.g. "+ 1,234 more"
 
-    // The playback.
-    PuzzleBoardView board;  ///< the large board
+    // The playback (and, before the search has expanded anything, the start in the tree's place).
+    PuzzleBoardView board;  ///< the large board; no tiles: none
     PuzzleSlideView slide;  ///< the tile moving, if any
     std::string caption;    ///< "move 5 of 31: 6 up"
 };
