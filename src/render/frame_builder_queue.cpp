@@ -194,7 +194,7 @@ void FrameBuilder::add_queue_strip(const Snapshot& snapshot, RectF strip) {
     const TextSlot heading_slot{
         TextRole::queue, -1, {inner.x0, inner.y0, inner.x1, inner.y0 + line}, small.pixel_height()};
     const std::string legend =
-        fmt::format("In the box: the next {} collisions, time to go", queue.next.size());
+        fmt::format("In the box: the next {} collisions queued, time to go", queue.next.size());
     TextSlot left = heading_slot;
     left.rect.x1 = inner.x1 - small.text_width(legend) - 2.0F * m;
     draw_text(Font::small, left, heading, palette_.title);
