@@ -112,6 +112,7 @@ class FrameBuilder {
     /// A label centred at `at` on a plate of the box colour, kept inside `inside`.
     void add_plate_label(Font font, PointF at, std::string_view text, Rgba8 color, RectF inside);
     [[nodiscard]] float pop_highlight(const QueuedEvent& popped, double now) const noexcept;
+    [[nodiscard]] Rgba8 next_color() const noexcept;
     void add_intro(const FrameContent& frame);
     float draw_text(Font font, const TextSlot& slot, std::string_view text, Rgba8 color,
                     Align align = Align::left, float x = -1.0F);

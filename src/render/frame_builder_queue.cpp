@@ -25,8 +25,10 @@ Rgb8 rgb(Rgba8 c) {
     return {c.r, c.g, c.b};
 }
 
-/// The next event: warm and bright on both themes, far from the failure magenta.
-constexpr Rgb8 next_event_color{255, 196, 40};
+/// The next event: amber, far from the failure magenta; darker on the light theme, where the
+/// bright one has too little contrast against white.
+constexpr Rgb8 next_event_dark{255, 196, 40};
+constexpr Rgb8 next_event_light{185, 105, 0};
 
 /// "3-7", "5 wall", "5 cell": what an event involves, in the fewest characters.
 std::string event_label(const QueuedEvent& e) {
@@ -58,6 +60,10 @@ Rgba8 mix(Rgba8 a, Rgba8 b, float t) {
 }
 
 }  // namespace
+
+Rgba8 FrameBuilder::next_color() const noexcept {
+    return with_alpha(config_.theme == Theme::light ? next_event_light : next_event_dark, 255);
+}
 
 float FrameBuilder::pop_highlight(const QueuedEvent& popped, double now) const noexcept {
     if (!(speed_ > 0.0)) return 0.0F;
@@ -113,9 +119,10 @@ void FrameBuilder::add_queue_in_box(const Snapshot& snapshot, const PanelLayout&
         const QueuedEvent& e = queue.next[r];
         if (e.a >= snapshot.discs.size()) continue;  // defensive: bad view data
         const bool first = r == 0;
-        const Rgba8 color = first ? with_alpha(next_event_color, 255) : faded(palette_.text, 0.75F);
-        const float width = first ? std::max(3.0F, std::round(body / 7.0F))
-                                  : std::max(1.5F, std::round(body / 14.0F));
+        const Rgba8 color = first ? next_color() : faded(palette_.text, 0.75F);
+        // Wide enough to be seen from the back of a lecture hall: 5 and 3 px at 720p.
+        const float width = first ? std::max(3.0F, std::round(body / 6.0F))
+                                  : std::max(1.5F, std::round(body / 10.0F));
         const DiscState& a = snapshot.discs[e.a];
         const double dt = e.t - snapshot.time;
         PointF label_at;
@@ -171,7 +178,7 @@ void FrameBuilder::add_queue_in_box(const Snapshot& snapshot, const PanelLayout&
         const bool first = r == 0;
         add_plate_label(first ? Font::body : Font::small, pending[r].first,
                         time_to_go(queue.next[r].t - snapshot.time),
-                        first ? with_alpha(next_event_color, 255) : palette_.text, inside);
+                        first ? next_color() : palette_.text, inside);
     }
 }
 
@@ -236,9 +243,9 @@ void FrameBuilder::add_popped(const QueueView& queue, double now, RectF area) {
         if (glow > 0.0F) {
             // Just removed: a plate in the highlight colour behind it, fading out.
             const RectF plate{area.x0 - 2.0F, y + 1.0F, area.x1, y + line - 1.0F};
-            const Rgba8 tint = e.stale ? palette_.muted : with_alpha(next_event_color, 255);
+            const Rgba8 tint = e.stale ? palette_.muted : next_color();
             list_.over.add_rect(plate, faded(tint, 0.35F * glow));
-            if (!e.stale) color = mix(color, with_alpha(next_event_color, 255), glow);
+            if (!e.stale) color = mix(color, next_color(), glow);
         }
         draw_text(Font::small, slot(y), text, color);
         y += line;
@@ -310,8 +317,8 @@ void FrameBuilder::add_queue_tree(const QueueView& queue, double now, RectF area
         const PointF c = centre[i];
         const RectF node{std::round(c.x - 0.5F * node_w), std::round(c.y - 0.5F * node_h),
                          std::round(c.x + 0.5F * node_w), std::round(c.y + 0.5F * node_h)};
-        const Rgba8 frame = i == 0 ? with_alpha(next_event_color, 255)
-                                   : (e.stale ? faded(palette_.muted, 0.6F) : palette_.muted);
+        const Rgba8 frame =
+            i == 0 ? next_color() : (e.stale ? faded(palette_.muted, 0.6F) : palette_.muted);
         add_queue_node(e, now, node, frame, e.stale);
     }
     if (queue.size > queue.slots.size()) {
@@ -349,8 +356,8 @@ void FrameBuilder::add_queue_row(const QueueView& queue, double now, RectF area)
         const QueuedEvent& e = queue.slots[i];
         const float x0 = std::round(area.x0 + static_cast<float>(i) * (area.width() / n));
         const bool next = ordered ? i == 0 : i == queue.top_index;
-        const Rgba8 frame = next ? with_alpha(next_event_color, 255)
-                                 : (e.stale ? faded(palette_.muted, 0.6F) : palette_.muted);
+        const Rgba8 frame =
+            next ? next_color() : (e.stale ? faded(palette_.muted, 0.6F) : palette_.muted);
         add_queue_node(e, now, {x0, y0, x0 + node_w, y0 + node_h}, frame, e.stale);
     }
 }
