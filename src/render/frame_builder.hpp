@@ -107,6 +107,8 @@ class FrameBuilder {
     void add_popped(const QueueView& queue, double now, RectF area);
     void add_queue_tree(const QueueView& queue, double now, RectF area);
     void add_queue_row(const QueueView& queue, double now, RectF area);
+    void add_leaving_root(const QueueView& queue, double now, PointF root, float node_w,
+                          float node_h);
     void add_queue_node(const QueuedEvent& event, double now, RectF node, Rgba8 frame_color,
                         bool stale);
     /// A label centred at `at` on a plate of the box colour, kept inside `inside`.

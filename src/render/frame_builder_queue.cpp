@@ -278,6 +278,41 @@ void FrameBuilder::add_queue_node(const QueuedEvent& event, double now, RectF no
         Align::centre);
 }
 
+// The event just popped, beside the root it was a moment ago, fading out with an arrow away
+// from the tree: "remove the min = get next collision", seen as it happens.
+void FrameBuilder::add_leaving_root(const QueueView& queue, double now, PointF root, float node_w,
+                                    float node_h) {
+    if (queue.popped.empty()) return;
+    const QueuedEvent& e = queue.popped.back();
+    const float glow = pop_highlight(e, now);
+    if (glow <= 0.0F) return;
+    const FontAtlas& small = *small_font_;
+    const float x1 = std::round(root.x - 0.5F * node_w - 1.2F * node_w);
+    const float w = std::round(1.5F * node_w);  // room for "thrown away"
+    const RectF node{x1 - w, std::round(root.y - 0.5F * node_h), x1,
+                     std::round(root.y + 0.5F * node_h)};
+    const Rgba8 color = e.stale ? palette_.muted : next_color();
+    list_.over.add_rect(node, faded(color, 0.25F * glow));
+    list_.over.add_frame(node, 2.0F, faded(color, glow));
+    const float ay = root.y;
+    const float ax0 = std::round(root.x - 0.5F * node_w - 0.2F * node_w);
+    const float ax1 = node.x1 + 0.2F * node_w;
+    list_.over.add_line({ax0, ay}, {ax1, ay}, 2.0F, faded(color, glow));
+    const float head = 0.18F * node_h;
+    list_.over.add_line({ax1, ay}, {ax1 + head, ay - head}, 2.0F, faded(color, glow));
+    list_.over.add_line({ax1, ay}, {ax1 + head, ay + head}, 2.0F, faded(color, glow));
+    const float half = 0.5F * node_h;
+    const Rgba8 text = faded(e.stale ? palette_.muted : palette_.title, glow);
+    draw_text(
+        Font::small,
+        {TextRole::queue, -1, {node.x0, node.y0, node.x1, node.y0 + half}, small.pixel_height()},
+        event_label(e), text, Align::centre);
+    draw_text(
+        Font::small,
+        {TextRole::queue, -1, {node.x0, node.y0 + half, node.x1, node.y1}, small.pixel_height()},
+        e.stale ? "thrown away" : "popped", text, Align::centre);
+}
+
 // A heap's top levels: slot i's children are d i + 1 .. d i + d; the root (the next pop) framed
 // in the highlight colour, stale entries greyed.
 void FrameBuilder::add_queue_tree(const QueueView& queue, double now, RectF area) {
@@ -321,16 +356,17 @@ void FrameBuilder::add_queue_tree(const QueueView& queue, double now, RectF area
             i == 0 ? next_color() : (e.stale ? faded(palette_.muted, 0.6F) : palette_.muted);
         add_queue_node(e, now, node, frame, e.stale);
     }
+    add_leaving_root(queue, now, centre.front(), node_w, node_h);
     if (queue.size > queue.slots.size()) {
         const std::string more = fmt::format(
             "+{} below", with_separators(static_cast<long long>(queue.size - queue.slots.size())));
         draw_text(Font::small,
                   {TextRole::queue,
                    -1,
-                   {area.x0, area.y0, area.x0 + area.width() * 0.45F,
+                   {area.x1 - area.width() * 0.4F, area.y0, area.x1,
                     area.y0 + std::round(small.pixel_height() * 1.2F)},
                    small.pixel_height()},
-                  more, palette_.muted);
+                  more, palette_.muted, Align::right);  // the left of the root is for pops
     }
 }
 
