@@ -115,6 +115,8 @@ class FrameBuilder {
     void add_plate_label(Font font, PointF at, std::string_view text, Rgba8 color, RectF inside);
     [[nodiscard]] float pop_highlight(const QueuedEvent& popped, double now) const noexcept;
     [[nodiscard]] Rgba8 next_color() const noexcept;
+    /// A queue node as wide as the widest label among `events` (and a time to go).
+    [[nodiscard]] float node_width(const std::vector<QueuedEvent>& events) const;
     void add_intro(const FrameContent& frame);
     float draw_text(Font font, const TextSlot& slot, std::string_view text, Rgba8 color,
                     Align align = Align::left, float x = -1.0F);

@@ -59,6 +59,33 @@ Rgba8 mix(Rgba8 a, Rgba8 b, float t) {
     return {lerp(a.r, b.r), lerp(a.g, b.g), lerp(a.b, b.b), lerp(a.a, b.a)};
 }
 
+/// The part of segment a-b inside r (Liang-Barsky); false when none is.
+bool clip_to(RectF r, PointF& a, PointF& b) {
+    double t0 = 0.0;
+    double t1 = 1.0;
+    const double dx = b.x - a.x;
+    const double dy = b.y - a.y;
+    const double p[4] = {-dx, dx, -dy, dy};
+    const double q[4] = {a.x - r.x0, r.x1 - a.x, a.y - r.y0, r.y1 - a.y};
+    for (int k = 0; k < 4; ++k) {
+        if (p[k] == 0.0) {
+            if (q[k] < 0.0) return false;
+            continue;
+        }
+        const double t = q[k] / p[k];
+        if (p[k] < 0.0) {
+            t0 = std::max(t0, t);
+        } else {
+            t1 = std::min(t1, t);
+        }
+    }
+    if (t0 > t1) return false;
+    const PointF a0 = a;
+    a = {static_cast<float>(a0.x + t0 * dx), static_cast<float>(a0.y + t0 * dy)};
+    b = {static_cast<float>(a0.x + t1 * dx), static_cast<float>(a0.y + t1 * dy)};
+    return true;
+}
+
 }  // namespace
 
 Rgba8 FrameBuilder::next_color() const noexcept {
@@ -139,12 +166,23 @@ void FrameBuilder::add_queue_in_box(const Snapshot& snapshot, const PanelLayout&
         }
         if (e.kind == QueuedKind::pair) {
             if (e.b >= snapshot.discs.size()) continue;
+            // The nearest images (periodic boxes: the pair may meet across the seam, and then
+            // the line is drawn from each disc to the seam, cut at the box).
             const Vec2 pa = a.position;
-            const Vec2 pb = pa + box.displacement(pa, snapshot.discs[e.b].position);
+            const Vec2 d = box.displacement(pa, snapshot.discs[e.b].position);
             const PointF qa = panel.to_pixels(pa, box);
-            const PointF qb = panel.to_pixels(pb, box);
-            list_.over.add_line(qa, qb, width, color);
+            const PointF qb = panel.to_pixels(pa + d, box);
             label_at = {0.5F * (qa.x + qb.x), 0.5F * (qa.y + qb.y)};
+            const auto line = [&](Vec2 from, Vec2 to) {
+                PointF u = panel.to_pixels(from, box);
+                PointF v = panel.to_pixels(to, box);
+                if (clip_to(inside, u, v)) list_.over.add_line(u, v, width, color);
+            };
+            line(pa, pa + d);
+            if (box.boundary == Boundary::periodic) {
+                const Vec2 pb = snapshot.discs[e.b].position;
+                line(pb, pb - d);
+            }
         } else if (e.kind == QueuedKind::xwall || e.kind == QueuedKind::ywall) {
             // Where the disc's centre will be, and the wall point it touches.
             const Vec2 centre = a.position + a.velocity * dt;
@@ -260,6 +298,13 @@ void FrameBuilder::add_popped(const QueueView& queue, double now, RectF area) {
     draw_text(Font::small, slot(bottom), counts, palette_.muted);
 }
 
+float FrameBuilder::node_width(const std::vector<QueuedEvent>& events) const {
+    const FontAtlas& small = *small_font_;
+    float widest = small.text_width("0.0000");  // the longest time to go, "stale"
+    for (const QueuedEvent& e : events) widest = std::max(widest, small.text_width(event_label(e)));
+    return std::round(widest + 0.8F * small.pixel_height());
+}
+
 void FrameBuilder::add_queue_node(const QueuedEvent& event, double now, RectF node,
                                   Rgba8 frame_color, bool stale) {
     const FontAtlas& small = *small_font_;
@@ -326,7 +371,7 @@ void FrameBuilder::add_queue_tree(const QueueView& queue, double now, RectF area
     std::size_t widest = 1;
     for (unsigned l = 1; l < queue.levels; ++l) widest *= d;
     const float cell_w = area.width() / static_cast<float>(widest);
-    const float node_w = std::min(std::round(4.2F * small.pixel_height()), cell_w - 3.0F);
+    const float node_w = std::min(node_width(queue.slots), cell_w - 3.0F);
     // Slot i sits at level l, position p within it; its centre is over its subtree's middle.
     std::vector<PointF> centre(queue.slots.size());
     std::size_t first = 0;
@@ -386,7 +431,7 @@ void FrameBuilder::add_queue_row(const QueueView& queue, double now, RectF area)
     if (queue.slots.empty()) return;
     const float node_h = std::round(2.1F * small.pixel_height());
     const auto n = static_cast<float>(queue.slots.size());
-    const float node_w = std::min(std::round(4.2F * small.pixel_height()), area.width() / n - 3.0F);
+    const float node_w = std::min(node_width(queue.slots), area.width() / n - 3.0F);
     const float y0 = std::round(area.y0 + line + 0.5F * (area.height() - line - node_h));
     for (std::size_t i = 0; i < queue.slots.size(); ++i) {
         const QueuedEvent& e = queue.slots[i];
