@@ -171,7 +171,7 @@ TEST_CASE("plan_render rejects bad options with the option's name") {
     rejects([](RenderRequest& r) { r.slow_motion = std::nan(""); }, "--slow-motion");
 }
 
-TEST_CASE("--queue asks for the event queue; --slow-motion slows the video, not the physics") {
+TEST_CASE("--queue asks for the event queue and --slow-motion slows the video, not the physics") {
     const Scene scene = two_disc_scene(0.2);
     RenderRequest request;
     request.scene = "two";

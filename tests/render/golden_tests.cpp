@@ -207,7 +207,7 @@ TEST_CASE("golden: an ordered array's queue, and the fast engine's in a compact 
     check_against_golden(compact.render(queue_frame(left, right)), "queue_fast_compact");
 }
 
-TEST_CASE("queue: drawn only when the snapshot carries one; the next event in its colour") {
+TEST_CASE("queue: drawn only when the snapshot carries one, the next event in its colour") {
     RenderConfig config = test::small_config(true);
     config.width = 640;
     config.height = 360;

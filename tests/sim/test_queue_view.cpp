@@ -128,7 +128,7 @@ TEST_CASE("queue view: the next events shown are the collisions that happen next
     }
 }
 
-TEST_CASE("queue view: the shown slots are the queue's own, root first; counts match") {
+TEST_CASE("queue view: the shown slots are the queue's own, root first, and the counts match") {
     const Scene scene = walled_gas();
     for (const EngineOptions& o : every_queue) {
         CAPTURE(o.engine);
