@@ -189,8 +189,10 @@ void add_shared_options(CLI::App& cmd, CliValues& v) {
         "Also write the frame's rectangles (panels, boxes, text lines with pixel heights) as JSON");
     v.queue_opt = cmd.add_option("--queue", v.queue,
                                  "Show the event-driven engine's queue: its next K (default 5, "
-                                 "at most 20) collisions in the box, its top levels under it")
-                      ->expected(0, 1);
+                                 "at most 20) collisions in the box, its top levels under it "
+                                 "(after the scene: `render gas --queue`)")
+                      ->expected(0, 1)
+                      ->type_name("[K]");
     v.slow_motion_opt = cmd.add_option(
         "--slow-motion", v.slow_motion,
         "Play F times slower than --speed (or the scene's pace), e.g. 4 to follow single events");
