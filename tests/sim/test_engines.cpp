@@ -146,6 +146,26 @@ TEST_CASE("both engines stop exactly at the frame time and refuse to go backward
     }
 }
 
+TEST_CASE(
+    "every engine refuses to go backwards, or to a time that is not finite, with an input "
+    "error") {
+    for (const char* name : {"classic", "fast", "time"}) {
+        CAPTURE(name);
+        auto engine = engine_named(name, head_on());
+        engine->advance_to(0.75);
+        for (const double t : {0.5, std::nan(""), HUGE_VAL}) {
+            CAPTURE(t);
+            try {
+                engine->advance_to(t);
+                FAIL("advance_to accepted t");
+            } catch (const Error& e) {
+                CHECK(e.kind() == ErrorKind::input);
+            }
+        }
+        CHECK(engine->time() == 0.75);
+    }
+}
+
 TEST_CASE("a disc wedged in a corner bounces out without a zero-time loop") {
     Scene s;
     s.box = Box{1.0, 1.0, Boundary::walls};

@@ -31,6 +31,7 @@
 
 #include "collide/scene.hpp"
 #include "collide/sim/engine.hpp"
+#include "collide/sim/engine_core.hpp"
 #include "collide/sim/engine_support.hpp"
 #include "collide/sim/event.hpp"
 #include "collide/sim/kinematics.hpp"
@@ -54,7 +55,7 @@ class FastEngine final : public Engine {
     [[nodiscard]] Snapshot snapshot() const override;
     [[nodiscard]] Measurements measurements() const override;
     void set_collision_listener(CollisionListener listener) override {
-        listener_ = std::move(listener);
+        core_.set_listener(std::move(listener));
     }
 
     /// Grid cells per axis (for tests and the benchmark report).
@@ -199,9 +200,11 @@ class FastEngine final : public Engine {
     [[nodiscard]] bool is_big(std::uint32_t i) const noexcept { return p_[i].r > big_threshold_; }
     [[nodiscard]] Vec2 position_at_now(std::uint32_t i) const noexcept;
 
+    [[nodiscard]] QueueStats& stats() noexcept { return core_.counters().queue; }
+
+    EngineCore core_;
     Box box_;
     bool periodic_ = false;
-    Appearance appearance_;
     double now_ = 0.0;
 
     // grid
@@ -228,16 +231,7 @@ class FastEngine final : public Engine {
 
     KeyLess key_less_{&scene_index_};
     Heap heap_{0, key_less_};
-    QueueStats stats_;
-    ImpulseTally tally_;
-    std::uint64_t collisions_pair_ = 0;
-    std::uint64_t collisions_xwall_ = 0;
-    std::uint64_t collisions_ywall_ = 0;
-    std::uint64_t cell_crossings_ = 0;
-    std::uint64_t predictions_ = 0;
-    double wall_seconds_ = 0.0;
     std::uint64_t instant_limit_ = 0;  ///< see count_collision_now
-    CollisionListener listener_;
 };
 
 }  // namespace collide::sim

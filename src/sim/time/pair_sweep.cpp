@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-namespace collide::detail {
+namespace collide::sim::detail {
 
 namespace {
 
@@ -173,4 +173,4 @@ bool PairSweep::find(const Box& box, const std::vector<Vec2>& positions,
     return sweep_rows_walls(d, f, count, out, stop);
 }
 
-}  // namespace collide::detail
+}  // namespace collide::sim::detail
