@@ -146,10 +146,6 @@ std::vector<std::uint32_t> FastEngine::locality_order(const Scene& scene) const 
     return order;
 }
 
-bool FastEngine::neighbour_prefetch_pays(std::size_t discs) noexcept {
-    return discs * sizeof(Particle) > pq::heap_prefetch_bytes;
-}
-
 void FastEngine::place_discs(const Scene& scene) {
     const std::size_t n = scene.discs.size();
     if (n >= Key::index_mask)
@@ -162,7 +158,6 @@ void FastEngine::place_discs(const Scene& scene) {
     image_.assign(n, Image{});
     start_.resize(n);
     heap_.reserve_handles(n);
-    prefetch_neighbours_ = neighbour_prefetch_pays(n);
     // The key and handle arrays are reserved but untouched yet (the position map is not).
     for (std::uint32_t i = 0; i < n; ++i) {
         const Disc& d = scene.discs[scene_index_[i]];
@@ -506,28 +501,12 @@ template <typename Visit>
     }
 }
 
+// Beyond the caches every cell's first disc is a miss, and following the lists one after the
+// other makes those misses wait for each other: asking for all of them before reading any
+// overlaps them (docs/benchmarks.md). The scans and their order are the same either way.
 inline void FastEngine::scan_cells(std::uint32_t i, const Particle& pi, double xi, double yi,
                                    std::int64_t x0, std::int64_t x1, std::int64_t y0,
                                    std::int64_t y1, Key& best) {
-    if (prefetch_neighbours_) {
-        scan_cells_prefetched(i, pi, xi, yi, x0, x1, y0, y1, best);
-        return;
-    }
-    for_each_cell(pi, x0, x1, y0, y1, [&](std::uint32_t first, double sx, double sy) {
-        scan_list(i, pi, xi, yi, first, sx, sy, best);
-    });
-}
-
-// Beyond the caches every cell's first disc is a miss, and following the lists one after the
-// other makes those misses wait for each other. Asking for all of them before reading any
-// overlaps them: +7 % collisions per second at N = 1e5 and 1e6 (bench engine, eta 0.5;
-// docs/benchmarks.md).
-// In cache the second pass only costs, hence prefetch_neighbours_; and this path stays out of
-// line so that the in-cache one keeps its code as it was.
-[[gnu::noinline]] void FastEngine::scan_cells_prefetched(std::uint32_t i, const Particle& pi,
-                                                         double xi, double yi, std::int64_t x0,
-                                                         std::int64_t x1, std::int64_t y0,
-                                                         std::int64_t y1, Key& best) {
     struct CellVisit {
         std::uint32_t first;
         double shift_x, shift_y;

@@ -275,35 +275,6 @@ TEST_CASE("classic and fast agree event by event in a dilute gas (many crossings
     }
 }
 
-// Large engines prefetch each scan's cells before reading them; the scans are the same, so the
-// events must be the same to the last bit, in both kinds of box and through cell crossings.
-TEST_CASE("fast engine: prefetched neighbour scans give bit-identical events") {
-    for (Boundary boundary : {Boundary::periodic, Boundary::walls}) {
-        for (const double eta : {0.5, 0.05}) {
-            CAPTURE(static_cast<int>(boundary));
-            CAPTURE(eta);
-            const Scene scene = lattice_fluid(12, eta, boundary, 17);
-            sim::FastEngine plain(scene);
-            sim::FastEngine prefetched(scene);
-            CHECK_FALSE(plain.neighbour_prefetch());  // 144 discs: in cache
-            prefetched.set_neighbour_prefetch(true);
-            const auto a = first_collisions(plain, 3000, 0.01, 1000.0);
-            const auto b = first_collisions(prefetched, 3000, 0.01, 1000.0);
-            REQUIRE(a.size() == 3000);
-            require_same_events(a, b, 0.0);
-            CHECK(prefetched.check_invariants());
-        }
-    }
-}
-
-TEST_CASE("fast engine: neighbour prefetching is the default beyond 1 MiB of disc records") {
-    CHECK_FALSE(sim::FastEngine::neighbour_prefetch_pays(16384));  // 64-byte records: 1 MiB
-    CHECK(sim::FastEngine::neighbour_prefetch_pays(16385));
-    const Scene scene = lattice_fluid(12, 0.3, Boundary::periodic, 3);
-    CHECK(sim::FastEngine(scene).neighbour_prefetch() ==
-          sim::FastEngine::neighbour_prefetch_pays(scene.discs.size()));
-}
-
 TEST_CASE("classic and fast agree with one big disc among small ones (the big-disc list)") {
     for (Boundary boundary : {Boundary::walls, Boundary::periodic}) {
         CAPTURE(static_cast<int>(boundary));

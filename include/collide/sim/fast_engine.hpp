@@ -67,14 +67,6 @@ class FastEngine final : public Engine {
     [[nodiscard]] std::uint64_t bytes() const noexcept;
     /// O(N) consistency check (cell membership, heap invariants, one event per disc); for tests.
     [[nodiscard]] bool check_invariants() const;
-    /// Whether neighbour scans prefetch: on by default once the disc records outgrow the caches
-    /// (see scan_cells). Either way the same discs are scanned in the same order, so the events
-    /// are identical; tests force it to check that.
-    [[nodiscard]] bool neighbour_prefetch() const noexcept { return prefetch_neighbours_; }
-    /// The default: prefetch once the disc records outgrow 1 MiB, the heaps' rule
-    /// (pq::heap_prefetch_bytes).
-    [[nodiscard]] static bool neighbour_prefetch_pays(std::size_t discs) noexcept;
-    void set_neighbour_prefetch(bool on) noexcept { prefetch_neighbours_ = on; }
 
   private:
     /// What a neighbour scan and an event on the disc read, in one cache line. Counters that each
@@ -179,9 +171,6 @@ class FastEngine final : public Engine {
                                Key& best);
     void scan_cells(std::uint32_t i, const Particle& pi, double xi, double yi, std::int64_t x0,
                     std::int64_t x1, std::int64_t y0, std::int64_t y1, Key& best);
-    void scan_cells_prefetched(std::uint32_t i, const Particle& pi, double xi, double yi,
-                               std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1,
-                               Key& best);
     /// Calls visit(first disc, shift x, shift y) for each non-empty cell at offsets x0..x1,
     /// y0..y1 from pi's cell (shifts: the periodic image of a wrapped-around cell).
     template <typename Visit>
@@ -226,8 +215,6 @@ class FastEngine final : public Engine {
     /// cache miss). scene_index_[i] is the scene's index of internal disc i.
     std::vector<std::uint32_t> scene_index_;
     std::vector<std::uint32_t> big_;  ///< indices of big discs
-    /// Whether neighbour scans prefetch (the disc records outgrow the caches; see scan_cells).
-    bool prefetch_neighbours_ = false;
 
     KeyLess key_less_{&scene_index_};
     Heap heap_{0, key_less_};
