@@ -101,7 +101,6 @@ void FastEngine::choose_grid(const Scene& scene) {
     ny_ = ny;
     cw_ = box_.width / nx_;
     ch_ = box_.height / ny_;
-    head_.reserve(static_cast<std::size_t>(nx_) * ny_);
     head_.assign(static_cast<std::size_t>(nx_) * ny_, no_disc);
 }
 
@@ -151,8 +150,6 @@ void FastEngine::place_discs(const Scene& scene) {
     if (n >= Key::index_mask)
         throw_input_error("", 0, "discs", "too many discs for the fast engine (at most 2^30 - 2)");
     scene_index_ = locality_order(scene);
-    p_.reserve(n);
-    cold_.reserve(n);
     p_.resize(n);
     cold_.assign(n, Cold{});
     image_.assign(n, Image{});

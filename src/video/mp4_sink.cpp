@@ -80,7 +80,7 @@ class Mp4Sink final : public FrameSink {
     }
 
     /// Opens every encoder but SVT-AV1 at once. Opened by the first frame, x264 (allocating and
-    /// touching its buffers) delayed that frame's encoding by ~14 ms at 720p; opened here it
+    /// touching its buffers) delayed that frame's encoding noticeably; opened here it
     /// overlaps the renderer's start-up on the caller's thread (docs/benchmarks.md, Whole
     /// pipeline).
     void prepare() override {

@@ -90,8 +90,8 @@ __attribute__((target("avx2"))) inline __m256i block_sums(const std::uint8_t* a,
 }
 
 // chroma_row with AVX2, 16 pixels (8 chroma samples) per step, the same integer arithmetic (so
-// the same bytes): GCC does not vectorise chroma_row's stride-8 byte gathers well (bench_video,
-// a whole 720p frame: 0.66 ms with chroma_row, 0.26 ms with this). Per 128-bit lane of 4
+// the same bytes): GCC does not vectorise chroma_row's stride-8 byte gathers well (bench_video;
+// docs/benchmarks.md). Per 128-bit lane of 4
 // pixels, a byte shuffle puts each channel of a horizontal pixel pair side by side, maddubs with
 // ones adds them (<= 510), adding the bottom row's gives the 2x2 sums (<= 1020) as 16-bit lanes
 // R G B A; madd with the coefficients (all fit in int16) and hadd make chroma_row's 32-bit dot

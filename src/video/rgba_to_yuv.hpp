@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// RGBA8 -> yuv420p (BT.709, limited/MPEG range) conversion, hand-written in fixed point (2.7x
-/// less CPU than libswscale's, see docs/benchmarks.md). Internal to collide_video.
+/// RGBA8 -> yuv420p (BT.709, limited/MPEG range) conversion, hand-written in fixed point (far
+/// less CPU than libswscale, see docs/benchmarks.md). Internal to collide_video.
 
 #include <cstddef>
 #include <cstdint>

@@ -7,8 +7,7 @@
 /// breaks on duplicate keys; keying it by handle does not.
 /// The keys are stored in heap order too (`keys_[i]` belongs to `heap_[i]`), not by handle: a
 /// sink then compares d keys that sit next to each other in memory instead of d keys scattered
-/// over the handle range (a cache miss each). For the fast engine at 10^5 discs this halved the
-/// heap's share of the run time.
+/// over the handle range (a cache miss each in a large heap).
 /// Two layout choices for large heaps (the fast engine at 10^6 discs, where every level of a
 /// sink below the cached top levels is a cache miss):
 /// - The key array puts node 1 on a 64-byte boundary (ChildAlignedAllocator), so the D children
