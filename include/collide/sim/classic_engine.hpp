@@ -20,6 +20,7 @@
 #include "collide/sim/event.hpp"
 #include "collide/sim/kinematics.hpp"
 #include "collide/sim/observables.hpp"
+#include "collide/sim/queue_view.hpp"
 
 namespace collide::sim {
 
@@ -58,7 +59,9 @@ class ClassicEngine final : public Engine {
             poll_stop();
             const Event e = queue_.pop();
             ++stats().pops;
-            if (!is_valid(e)) {
+            const bool valid = is_valid(e);
+            if (watch_.on()) watch_.record_pop(queued(e, !valid));
+            if (!valid) {
                 ++stats().stale_pops;
                 continue;
             }
@@ -78,7 +81,13 @@ class ClassicEngine final : public Engine {
             EngineCore::set_motion(s.discs[i], box_.wrap(position_[i]), velocity_[i], radius_[i],
                                    mass_[i]);
         }
+        if (watch_.on()) s.queue = queue_view();
         return s;
+    }
+
+    bool watch_queue(std::size_t next_events) override {
+        watch_.start(next_events);
+        return true;
     }
 
     [[nodiscard]] Measurements measurements() const override {
@@ -99,6 +108,17 @@ class ClassicEngine final : public Engine {
 
   private:
     [[nodiscard]] QueueStats& stats() noexcept { return core_.counters().queue; }
+
+    /// The queue as it stands (see Engine::watch_queue): O(entries).
+    [[nodiscard]] QueueView queue_view() const {
+        QueueView view;
+        describe_queue(
+            queue_, watch_.next_events(), [this](const Event& e) { return !is_valid(e); }, view);
+        view.popped = watch_.popped();
+        view.pops = core_.counters().queue.pops;
+        view.stale_pops = core_.counters().queue.stale_pops;
+        return view;
+    }
 
     /// Predicts each pair once (j > i), row by row, looking at the stop flag before each row.
     /// Why here and not in the constructor: the flag is set after construction, and at 10^6 discs
@@ -265,6 +285,7 @@ class ClassicEngine final : public Engine {
     std::vector<std::uint32_t> instant_collisions_;  ///< collisions of each disc in its instant
     std::uint64_t instant_limit_ = 0;                ///< see count_collision_now
     std::uint32_t initial_rows_ = 0;                 ///< see predict_initial_events
+    QueueWatch watch_;  ///< off unless a teaching video asked for the queue (watch_queue)
 };
 
 }  // namespace collide::sim

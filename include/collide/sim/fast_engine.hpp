@@ -37,6 +37,7 @@
 #include "collide/sim/kinematics.hpp"
 #include "collide/sim/observables.hpp"
 #include "collide/sim/pq/indexed_heap.hpp"
+#include "collide/sim/queue_view.hpp"
 
 namespace collide::sim {
 
@@ -56,6 +57,10 @@ class FastEngine final : public Engine {
     [[nodiscard]] Measurements measurements() const override;
     void set_collision_listener(CollisionListener listener) override {
         core_.set_listener(std::move(listener));
+    }
+    bool watch_queue(std::size_t next_events) override {
+        watch_.start(next_events);
+        return true;
     }
 
     /// Grid cells per axis (for tests and the benchmark report).
@@ -182,6 +187,12 @@ class FastEngine final : public Engine {
     void consider_walls_and_cells(std::uint32_t i, const Particle& pi, double xi, double yi,
                                   Key& best);
 
+    // --- the queue view (watch_queue)
+    /// Disc i's pending event as the view shows it (scene indices; stale when its partner has
+    /// collided since it was predicted).
+    [[nodiscard]] QueuedEvent queued_event(std::uint32_t i, const Key& key) const noexcept;
+    [[nodiscard]] QueueView queue_view() const;
+
     // --- bookkeeping
     void advance_disc(std::uint32_t i) noexcept;
     void link(std::uint32_t i, std::uint32_t cell) noexcept;
@@ -219,6 +230,7 @@ class FastEngine final : public Engine {
     KeyLess key_less_{&scene_index_};
     Heap heap_{0, key_less_};
     std::uint64_t instant_limit_ = 0;  ///< see count_collision_now
+    QueueWatch watch_;  ///< off unless a teaching video asked for the queue (watch_queue)
 };
 
 }  // namespace collide::sim
