@@ -54,7 +54,7 @@ void BM_TimeEngineCost(benchmark::State& state) {
     const double span = 0.05;
     collide::Measurements last;
     for (auto _ : state) {
-        collide::TimeEngine engine(scene, options);
+        collide::sim::TimeEngine engine(scene, options);
         engine.advance_to(span);
         last = engine.measurements();
         benchmark::DoNotOptimize(last.kinetic_energy);
@@ -79,7 +79,7 @@ void BM_TimeEngineMisses(benchmark::State& state) {
     options.td_detect = "grid";
     collide::Measurements last;
     for (auto _ : state) {
-        collide::TimeEngine engine(scene, options);
+        collide::sim::TimeEngine engine(scene, options);
         engine.advance_to(1.0);
         last = engine.measurements();
     }

@@ -1,4 +1,4 @@
-// Video benchmarks: RGBA -> yuv420p conversion per method and size, and whole-writer encoding
+// Video benchmarks: RGBA -> yuv420p conversion per size, and whole-writer encoding
 // throughput with libx264 per preset. Figures go to docs/benchmarks.md, section "Video".
 //   cmake --build build/release --target bench_video && build/release/bench/bench_video
 
@@ -68,48 +68,15 @@ int width_for(int height) {
 void BM_ConvertHand(benchmark::State& state) {
     const int height = int(state.range(0));
     const int width = width_for(height);
-    const int threads = int(state.range(1));
     const Image frame = disc_frame(width, height, 0);
     Planes planes(width, height);
     for (auto _ : state) {
         rgba_to_yuv420_bt709(frame.rgba.data(), std::ptrdiff_t(frame.stride()), width, height,
-                             planes.view, threads);
+                             planes.view);
         benchmark::DoNotOptimize(planes.y.data());
     }
-    state.SetLabel("hand-written, " + std::to_string(threads) + " thread(s)");
 }
-BENCHMARK(BM_ConvertHand)
-    ->ArgsProduct({{720, 1080}, {1, 2}})
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
-
-void BM_ConvertSws(benchmark::State& state) {
-    const int height = int(state.range(0));
-    const int width = width_for(height);
-    const int flags = int(state.range(1));
-    const int bands = int(state.range(2));
-    const Image frame = disc_frame(width, height, 0);
-    Planes planes(width, height);
-    SwsConverter converter(width, height, flags, bands);
-    for (auto _ : state) {
-        converter.convert(frame.rgba.data(), std::ptrdiff_t(frame.stride()), planes.view);
-        benchmark::DoNotOptimize(planes.y.data());
-    }
-    const std::string name = flags == SWS_BICUBIC         ? "bicubic (default)"
-                             : flags == SWS_FAST_BILINEAR ? "fast_bilinear"
-                             : flags == (SWS_FAST_BILINEAR | SWS_ACCURATE_RND)
-                                 ? "fast_bilinear|accurate_rnd"
-                             : flags == SWS_POINT ? "point"
-                                                  : "other";
-    state.SetLabel("sws " + name + ", " + std::to_string(bands) + " band(s)");
-}
-BENCHMARK(BM_ConvertSws)
-    ->ArgsProduct({{720, 1080},
-                   {SWS_BICUBIC, SWS_FAST_BILINEAR, SWS_FAST_BILINEAR | SWS_ACCURATE_RND,
-                    SWS_POINT},
-                   {1, 2}})
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
+BENCHMARK(BM_ConvertHand)->Arg(720)->Arg(1080)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 /// Whole VideoWriter (queue, conversion, libx264, MP4 muxing) at 720p30: frames per second.
 void BM_EncodeX264(benchmark::State& state, const char* preset) {

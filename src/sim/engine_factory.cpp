@@ -42,7 +42,7 @@ std::unique_ptr<Engine> make_engine(const Scene& scene, const EngineOptions& opt
         return std::make_unique<sim::FastEngine>(scene);
     }
     if (options.engine == "classic") return make_classic_engine(scene, options);
-    if (options.engine == "time") return std::make_unique<TimeEngine>(scene, options);
+    if (options.engine == "time") return std::make_unique<sim::TimeEngine>(scene, options);
     throw_input_error("--engine", 0, "", "unknown engine '" + options.engine + "'");
 }
 

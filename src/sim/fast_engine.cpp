@@ -48,7 +48,7 @@ bool FastEngine::KeyLess::tie_break(const Key& x, const Key& y) const noexcept {
 }
 
 FastEngine::FastEngine(const Scene& scene)
-    : box_(scene.box), periodic_(scene.box.boundary == Boundary::periodic), appearance_(scene) {
+    : core_(scene), box_(scene.box), periodic_(scene.box.boundary == Boundary::periodic) {
     choose_grid(scene);
     place_discs(scene);
     instant_limit_ = instant_collision_limit(p_.size());
@@ -101,7 +101,6 @@ void FastEngine::choose_grid(const Scene& scene) {
     ny_ = ny;
     cw_ = box_.width / nx_;
     ch_ = box_.height / ny_;
-    head_.reserve(static_cast<std::size_t>(nx_) * ny_);
     head_.assign(static_cast<std::size_t>(nx_) * ny_, no_disc);
 }
 
@@ -146,23 +145,16 @@ std::vector<std::uint32_t> FastEngine::locality_order(const Scene& scene) const 
     return order;
 }
 
-bool FastEngine::neighbour_prefetch_pays(std::size_t discs) noexcept {
-    return discs * sizeof(Particle) > pq::heap_prefetch_bytes;
-}
-
 void FastEngine::place_discs(const Scene& scene) {
     const std::size_t n = scene.discs.size();
     if (n >= Key::index_mask)
         throw_input_error("", 0, "discs", "too many discs for the fast engine (at most 2^30 - 2)");
     scene_index_ = locality_order(scene);
-    p_.reserve(n);
-    cold_.reserve(n);
     p_.resize(n);
     cold_.assign(n, Cold{});
     image_.assign(n, Image{});
     start_.resize(n);
     heap_.reserve_handles(n);
-    prefetch_neighbours_ = neighbour_prefetch_pays(n);
     // The key and handle arrays are reserved but untouched yet (the position map is not).
     for (std::uint32_t i = 0; i < n; ++i) {
         const Disc& d = scene.discs[scene_index_[i]];
@@ -190,13 +182,12 @@ void FastEngine::place_discs(const Scene& scene) {
 // The main loop: pop the earliest pending event, check it, resolve it, predict again.
 
 void FastEngine::advance_to(double t) {
-    require_forward(now_, t);
-    WallClock clock(wall_seconds_);
+    const WallClock clock = core_.start_advance(now_, t);
     while (!heap_.empty() && heap_.top_key().t <= t) {
         poll_stop();
         const std::uint32_t i = heap_.top();
         const Key key = heap_.top_key();
-        ++stats_.pops;
+        ++stats().pops;
         if (watch_.on()) watch_.record_pop(queued_event(i, key));
         now_ = key.t;
         process(i, key);
@@ -210,7 +201,7 @@ void FastEngine::process(std::uint32_t i, const Key& key) {
             const std::uint32_t j = key.b();
             if (p_[j].count != cold_[i].pair_count) {
                 // j collided after i predicted this; i's trajectory is unchanged, predict it anew.
-                ++stats_.stale_pops;
+                ++stats().stale_pops;
                 predict(i);
                 return;
             }
@@ -251,13 +242,12 @@ void FastEngine::process_pair(std::uint32_t i, std::uint32_t j, double t) {
     pi.vy = vi.y;
     pj.vx = vj.x;
     pj.vy = vj.y;
-    tally_.virial += std::abs(dot(dr, impulse));
+    core_.counters().impulses.virial += std::abs(dot(dr, impulse));
     ++pi.count;
     ++pj.count;
     pi.last_partner = j;
     pj.last_partner = i;
-    ++collisions_pair_;
-    if (listener_) listener_(to_record(t, EventKind::pair, scene_index_[i], scene_index_[j]));
+    core_.collided(to_record(t, EventKind::pair, scene_index_[i], scene_index_[j]));
     predict(i);
     predict(j);
 }
@@ -267,17 +257,15 @@ void FastEngine::process_wall(std::uint32_t i, EventKind kind, double t) {
     advance_disc(i);
     Particle& pi = p_[i];
     if (kind == EventKind::xwall) {
-        tally_.wall_impulse += 2.0 * cold_[i].m * std::abs(pi.vx);
+        core_.counters().impulses.wall_impulse += 2.0 * cold_[i].m * std::abs(pi.vx);
         pi.vx = -pi.vx;
-        ++collisions_xwall_;
     } else {
-        tally_.wall_impulse += 2.0 * cold_[i].m * std::abs(pi.vy);
+        core_.counters().impulses.wall_impulse += 2.0 * cold_[i].m * std::abs(pi.vy);
         pi.vy = -pi.vy;
-        ++collisions_ywall_;
     }
     ++pi.count;
     pi.last_partner = no_disc;
-    if (listener_) listener_(to_record(t, kind, scene_index_[i], no_disc));
+    core_.collided(to_record(t, kind, scene_index_[i], no_disc));
     predict(i);
 }
 
@@ -319,7 +307,7 @@ void FastEngine::process_cell(std::uint32_t i, std::uint32_t axis) {
         unlink(i);
         link(i, cell);
     }
-    ++cell_crossings_;
+    ++core_.counters().cell_crossings;
     predict_after_crossing(i, axis);
 }
 
@@ -382,10 +370,10 @@ void FastEngine::schedule(std::uint32_t i, const Particle& pi, double xi, double
         return;
     }
     if (!heap_.contains(i)) {
-        ++stats_.pushes;
+        ++stats().pushes;
     }
     heap_.push_or_change(i, best);
-    stats_.max_size = std::max<std::uint64_t>(stats_.max_size, heap_.size());
+    stats().max_size = std::max<std::uint64_t>(stats().max_size, heap_.size());
 }
 
 void FastEngine::consider_walls_and_cells(std::uint32_t i, const Particle& pi, double xi, double yi,
@@ -398,7 +386,7 @@ void FastEngine::consider_walls_and_cells(std::uint32_t i, const Particle& pi, d
     if (!periodic_) {
         offer(kinematics::time_to_wall(xi, pi.vx, pi.r, box_.width), EventKind::xwall, no_disc);
         offer(kinematics::time_to_wall(yi, pi.vy, pi.r, box_.height), EventKind::ywall, no_disc);
-        predictions_ += 2;
+        core_.counters().predictions += 2;
     }
     const std::uint32_t cx = pi.cell % nx_;
     const std::uint32_t cy = pi.cell / nx_;
@@ -436,7 +424,7 @@ inline void FastEngine::consider_pair(std::uint32_t i, const Particle& pi, doubl
     const Vec2 dr{pj.x + pj.vx * dtj + shift_x - xi, pj.y + pj.vy * dtj + shift_y - yi};
     const Vec2 dv{pj.vx - pi.vx, pj.vy - pi.vy};
     const double sigma = pi.r + pj.r;
-    ++predictions_;
+    ++core_.counters().predictions;
     if (pi.last_partner == j && pj.last_partner == i) {
         const double reach = sigma * (1.0 + just_collided_slack);
         if (norm2(dr) < reach * reach) return;
@@ -511,28 +499,12 @@ template <typename Visit>
     }
 }
 
+// Beyond the caches every cell's first disc is a miss, and following the lists one after the
+// other makes those misses wait for each other: asking for all of them before reading any
+// overlaps them (docs/benchmarks.md). The scans and their order are the same either way.
 inline void FastEngine::scan_cells(std::uint32_t i, const Particle& pi, double xi, double yi,
                                    std::int64_t x0, std::int64_t x1, std::int64_t y0,
                                    std::int64_t y1, Key& best) {
-    if (prefetch_neighbours_) {
-        scan_cells_prefetched(i, pi, xi, yi, x0, x1, y0, y1, best);
-        return;
-    }
-    for_each_cell(pi, x0, x1, y0, y1, [&](std::uint32_t first, double sx, double sy) {
-        scan_list(i, pi, xi, yi, first, sx, sy, best);
-    });
-}
-
-// Beyond the caches every cell's first disc is a miss, and following the lists one after the
-// other makes those misses wait for each other. Asking for all of them before reading any
-// overlaps them: +7 % collisions per second at N = 1e5 and 1e6 (bench engine, eta 0.5;
-// docs/benchmarks.md).
-// In cache the second pass only costs, hence prefetch_neighbours_; and this path stays out of
-// line so that the in-cache one keeps its code as it was.
-[[gnu::noinline]] void FastEngine::scan_cells_prefetched(std::uint32_t i, const Particle& pi,
-                                                         double xi, double yi, std::int64_t x0,
-                                                         std::int64_t x1, std::int64_t y0,
-                                                         std::int64_t y1, Key& best) {
     struct CellVisit {
         std::uint32_t first;
         double shift_x, shift_y;
@@ -610,19 +582,10 @@ Vec2 FastEngine::position_at_now(std::uint32_t i) const noexcept {
 // Outputs.
 
 Snapshot FastEngine::snapshot() const {
-    Snapshot s;
-    s.time = now_;
-    s.box = box_;
-    s.discs.resize(p_.size());
+    Snapshot s = core_.start_snapshot(now_);
     for (std::uint32_t i = 0; i < p_.size(); ++i) {
-        const std::uint32_t k = scene_index_[i];
-        DiscState& d = s.discs[k];
-        d.position = box_.wrap(position_at_now(i));
-        d.velocity = {p_[i].vx, p_[i].vy};
-        d.radius = p_[i].r;
-        d.mass = cold_[i].m;
-        d.color = appearance_.colors[k];
-        d.tagged = appearance_.tagged[k] != 0;
+        EngineCore::set_motion(s.discs[scene_index_[i]], box_.wrap(position_at_now(i)),
+                               {p_[i].vx, p_[i].vy}, p_[i].r, cold_[i].m);
     }
     if (watch_.on()) s.queue = queue_view();
     return s;
@@ -666,51 +629,31 @@ QueueView FastEngine::queue_view() const {
     keep_next_collisions(all, watch_.next_events());
     view.next = std::move(all);
     view.popped = watch_.popped();
-    view.pops = stats_.pops;
-    view.stale_pops = stats_.stale_pops;
+    view.pops = core_.counters().queue.pops;
+    view.stale_pops = core_.counters().queue.stale_pops;
     return view;
 }
 
 Measurements FastEngine::measurements() const {
-    Measurements m;
-    m.t = now_;
-    m.collisions_pair = collisions_pair_;
-    m.collisions_xwall = collisions_xwall_;
-    m.collisions_ywall = collisions_ywall_;
-    m.collisions_wall = collisions_xwall_ + collisions_ywall_;
-    m.cell_crossings = cell_crossings_;
-    m.events = m.collisions_pair + m.collisions_wall + cell_crossings_;
-    m.predictions = predictions_;
-    m.queue = stats_;
-
+    // In the internal order: the sums come out as they always have, bit for bit.
     const std::size_t n = p_.size();
     std::vector<Vec2> positions(n);
     std::vector<Vec2> velocities(n);
     std::vector<double> masses(n);
     std::vector<double> radii(n);
-    double msd_sum = 0.0;
-    std::size_t msd_count = 0;
     for (std::uint32_t i = 0; i < n; ++i) {
         positions[i] = position_at_now(i);
         velocities[i] = {p_[i].vx, p_[i].vy};
         masses[i] = cold_[i].m;
         radii[i] = p_[i].r;
-        if (appearance_.in_msd(scene_index_[i])) {
-            const Vec2 unwrapped{positions[i].x + image_[i].x * box_.width,
-                                 positions[i].y + image_[i].y * box_.height};
-            msd_sum += norm2(unwrapped - start_[i]);
-            ++msd_count;
-        }
     }
-    fill_thermodynamics(m, velocities, masses, radii, box_, tally_);
+    Measurements m = core_.measurements(now_, velocities, masses, radii, bytes());
     m.max_overlap = max_overlap(positions, radii, box_);
-    m.msd = msd_count > 0 ? msd_sum / static_cast<double>(msd_count) : 0.0;
-    m.wall_seconds = wall_seconds_;
-    if (wall_seconds_ > 0.0) {
-        m.collisions_per_second =
-            static_cast<double>(m.collisions_pair + m.collisions_wall) / wall_seconds_;
-    }
-    m.engine_bytes = bytes();
+    m.msd = core_.mean_squared_displacement(n, [&](std::size_t i) {
+        const Vec2 unwrapped{positions[i].x + image_[i].x * box_.width,
+                             positions[i].y + image_[i].y * box_.height};
+        return std::pair{std::size_t{scene_index_[i]}, unwrapped - start_[i]};
+    });
     return m;
 }
 
@@ -721,7 +664,7 @@ std::uint64_t FastEngine::bytes() const noexcept {
     total += (big_.capacity() + head_.capacity() + scene_index_.capacity()) * u32;
     total += image_.capacity() * sizeof(Image) + start_.capacity() * sizeof(Vec2);
     total += heap_.bytes();
-    total += appearance_.bytes();
+    total += core_.bytes();
     return total;
 }
 

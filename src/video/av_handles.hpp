@@ -8,7 +8,6 @@ extern "C" {
 #include <libavfilter/avfilter.h>
 #include <libavformat/avformat.h>
 #include <libavutil/frame.h>
-#include <libswscale/swscale.h>
 }
 
 #include <memory>
@@ -28,9 +27,6 @@ struct PacketFree {
 struct CodecContextFree {
     void operator()(AVCodecContext* context) const noexcept { avcodec_free_context(&context); }
 };
-struct SwsFree {
-    void operator()(SwsContext* context) const noexcept { sws_freeContext(context); }
-};
 struct FilterGraphFree {
     void operator()(AVFilterGraph* graph) const noexcept { avfilter_graph_free(&graph); }
 };
@@ -48,7 +44,6 @@ struct FormatContextFree {
 using FramePtr = std::unique_ptr<AVFrame, FrameFree>;
 using PacketPtr = std::unique_ptr<AVPacket, PacketFree>;
 using CodecContextPtr = std::unique_ptr<AVCodecContext, CodecContextFree>;
-using SwsPtr = std::unique_ptr<SwsContext, SwsFree>;
 using FilterGraphPtr = std::unique_ptr<AVFilterGraph, FilterGraphFree>;
 using FormatContextPtr = std::unique_ptr<AVFormatContext, FormatContextFree>;
 

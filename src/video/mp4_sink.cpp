@@ -16,13 +16,6 @@ extern "C" {
 namespace collide::video::detail {
 namespace {
 
-// RGBA -> yuv420p on the encoder thread alone: it takes ~0.6 ms CPU per 1080p frame (bench_video),
-// and while the pipeline runs, simulation, rendering and x264's threads keep every core busy, so
-// splitting it into bands only adds waiting (bench_video on the loaded 2-core machine, before the
-// AVX2 chroma: 2 bands 4.1 ms wall vs 3.2 ms for 1). rgba_to_yuv420_bt709 supports bands for
-// machines with cores to spare.
-constexpr int conversion_threads = 1;
-
 struct CodecDefaults {
     const char* preset;
     int crf;
@@ -87,7 +80,7 @@ class Mp4Sink final : public FrameSink {
     }
 
     /// Opens every encoder but SVT-AV1 at once. Opened by the first frame, x264 (allocating and
-    /// touching its buffers) delayed that frame's encoding by ~14 ms at 720p; opened here it
+    /// touching its buffers) delayed that frame's encoding noticeably; opened here it
     /// overlaps the renderer's start-up on the caller's thread (docs/benchmarks.md, Whole
     /// pipeline).
     void prepare() override {
@@ -106,7 +99,7 @@ class Mp4Sink final : public FrameSink {
         const Yuv420View planes{frame_->data[0],     frame_->data[1],     frame_->data[2],
                                 frame_->linesize[0], frame_->linesize[1], frame_->linesize[2]};
         rgba_to_yuv420_bt709(frame.rgba.data(), static_cast<std::ptrdiff_t>(frame.stride()),
-                             frame.width, frame.height, planes, conversion_threads);
+                             frame.width, frame.height, planes);
         frame_->pts = next_pts_++;
         encode(frame_.get());
     }

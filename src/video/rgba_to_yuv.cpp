@@ -4,7 +4,6 @@
 #include <bit>
 #include <cstdint>
 #include <cstring>
-#include <thread>
 #include <vector>
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
@@ -91,8 +90,8 @@ __attribute__((target("avx2"))) inline __m256i block_sums(const std::uint8_t* a,
 }
 
 // chroma_row with AVX2, 16 pixels (8 chroma samples) per step, the same integer arithmetic (so
-// the same bytes): GCC does not vectorise chroma_row's stride-8 byte gathers well (bench_video,
-// a whole 720p frame: 0.66 ms with chroma_row, 0.26 ms with this). Per 128-bit lane of 4
+// the same bytes): GCC does not vectorise chroma_row's stride-8 byte gathers well (bench_video;
+// docs/benchmarks.md). Per 128-bit lane of 4
 // pixels, a byte shuffle puts each channel of a horizontal pixel pair side by side, maddubs with
 // ones adds them (<= 510), adding the bottom row's gives the 2x2 sums (<= 1020) as 16-bit lanes
 // R G B A; madd with the coefficients (all fit in int16) and hadd make chroma_row's 32-bit dot
@@ -181,72 +180,8 @@ void rgba_to_yuv420_bt709_rows_portable(const std::uint8_t* rgba, std::ptrdiff_t
 }
 
 void rgba_to_yuv420_bt709(const std::uint8_t* rgba, std::ptrdiff_t rgba_stride, int width,
-                          int height, Yuv420View out, int threads) {
-    threads = std::clamp(threads, 1, std::max(1, height / 2));
-    const int band = (height / threads) & ~1;
-    std::vector<std::jthread> workers;
-    workers.reserve(static_cast<std::size_t>(threads - 1));
-    for (int i = 0; i + 1 < threads; ++i) {
-        workers.emplace_back([=] {
-            rgba_to_yuv420_bt709_rows(rgba, rgba_stride, width, out, i * band, (i + 1) * band);
-        });
-    }
-    // The calling thread takes the last (possibly taller) band.
-    rgba_to_yuv420_bt709_rows(rgba, rgba_stride, width, out, (threads - 1) * band, height);
-}
-
-namespace {
-
-SwsPtr make_bt709_sws(int width, int height, int flags) {
-    SwsPtr context(sws_getContext(width, height, AV_PIX_FMT_RGBA, width, height, AV_PIX_FMT_YUV420P,
-                                  flags, nullptr, nullptr, nullptr));
-    if (!context) throw_runtime_error("libswscale: cannot create an RGBA -> yuv420p converter");
-    int* inverse_table = nullptr;
-    int* table = nullptr;
-    int source_range = 0;
-    int destination_range = 0;
-    int brightness = 0;
-    int contrast = 0;
-    int saturation = 0;
-    sws_getColorspaceDetails(context.get(), &inverse_table, &source_range, &table,
-                             &destination_range, &brightness, &contrast, &saturation);
-    // Source: full-range RGB; destination: BT.709 matrix, limited range (what the tags say).
-    check_av(sws_setColorspaceDetails(context.get(), inverse_table, 1,
-                                      sws_getCoefficients(SWS_CS_ITU709), 0, brightness, contrast,
-                                      saturation),
-             "libswscale: cannot select BT.709");
-    return context;
-}
-
-void sws_band(SwsContext* context, const std::uint8_t* rgba, std::ptrdiff_t rgba_stride, int rows,
-              Yuv420View out, int row_begin) {
-    const std::uint8_t* source[1] = {rgba + row_begin * rgba_stride};
-    const int source_stride[1] = {static_cast<int>(rgba_stride)};
-    std::uint8_t* destination[3] = {out.y + row_begin * out.y_stride,
-                                    out.u + (row_begin / 2) * out.u_stride,
-                                    out.v + (row_begin / 2) * out.v_stride};
-    const int destination_stride[3] = {static_cast<int>(out.y_stride),
-                                       static_cast<int>(out.u_stride),
-                                       static_cast<int>(out.v_stride)};
-    sws_scale(context, source, source_stride, 0, rows, destination, destination_stride);
-}
-
-}  // namespace
-
-SwsConverter::SwsConverter(int width, int height, int flags, int bands)
-    : width_(width), height_(height), bands_(std::clamp(bands, 1, 2)) {
-    band_rows_ = bands_ == 1 ? height : (height / 2) & ~1;
-    first_ = make_bt709_sws(width, band_rows_, flags);
-    if (bands_ == 2) last_ = make_bt709_sws(width, height - band_rows_, flags);
-}
-
-void SwsConverter::convert(const std::uint8_t* rgba, std::ptrdiff_t rgba_stride, Yuv420View out) {
-    if (bands_ == 1) {
-        sws_band(first_.get(), rgba, rgba_stride, height_, out, 0);
-        return;
-    }
-    std::jthread helper([&] { sws_band(first_.get(), rgba, rgba_stride, band_rows_, out, 0); });
-    sws_band(last_.get(), rgba, rgba_stride, height_ - band_rows_, out, band_rows_);
+                          int height, Yuv420View out) noexcept {
+    rgba_to_yuv420_bt709_rows(rgba, rgba_stride, width, out, 0, height);
 }
 
 }  // namespace collide::video::detail

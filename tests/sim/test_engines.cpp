@@ -146,6 +146,26 @@ TEST_CASE("both engines stop exactly at the frame time and refuse to go backward
     }
 }
 
+TEST_CASE(
+    "every engine refuses to go backwards, or to a time that is not finite, with an input "
+    "error") {
+    for (const char* name : {"classic", "fast", "time"}) {
+        CAPTURE(name);
+        auto engine = engine_named(name, head_on());
+        engine->advance_to(0.75);
+        for (const double t : {0.5, std::nan(""), HUGE_VAL}) {
+            CAPTURE(t);
+            try {
+                engine->advance_to(t);
+                FAIL("advance_to accepted t");
+            } catch (const Error& e) {
+                CHECK(e.kind() == ErrorKind::input);
+            }
+        }
+        CHECK(engine->time() == 0.75);
+    }
+}
+
 TEST_CASE("a disc wedged in a corner bounces out without a zero-time loop") {
     Scene s;
     s.box = Box{1.0, 1.0, Boundary::walls};
@@ -253,35 +273,6 @@ TEST_CASE("classic and fast agree event by event in a dilute gas (many crossings
         CHECK(static_cast<double>(m.cell_crossings) >
               2.0 * static_cast<double>(m.collisions_pair + m.collisions_wall));
     }
-}
-
-// Large engines prefetch each scan's cells before reading them; the scans are the same, so the
-// events must be the same to the last bit, in both kinds of box and through cell crossings.
-TEST_CASE("fast engine: prefetched neighbour scans give bit-identical events") {
-    for (Boundary boundary : {Boundary::periodic, Boundary::walls}) {
-        for (const double eta : {0.5, 0.05}) {
-            CAPTURE(static_cast<int>(boundary));
-            CAPTURE(eta);
-            const Scene scene = lattice_fluid(12, eta, boundary, 17);
-            sim::FastEngine plain(scene);
-            sim::FastEngine prefetched(scene);
-            CHECK_FALSE(plain.neighbour_prefetch());  // 144 discs: in cache
-            prefetched.set_neighbour_prefetch(true);
-            const auto a = first_collisions(plain, 3000, 0.01, 1000.0);
-            const auto b = first_collisions(prefetched, 3000, 0.01, 1000.0);
-            REQUIRE(a.size() == 3000);
-            require_same_events(a, b, 0.0);
-            CHECK(prefetched.check_invariants());
-        }
-    }
-}
-
-TEST_CASE("fast engine: neighbour prefetching is the default beyond 1 MiB of disc records") {
-    CHECK_FALSE(sim::FastEngine::neighbour_prefetch_pays(16384));  // 64-byte records: 1 MiB
-    CHECK(sim::FastEngine::neighbour_prefetch_pays(16385));
-    const Scene scene = lattice_fluid(12, 0.3, Boundary::periodic, 3);
-    CHECK(sim::FastEngine(scene).neighbour_prefetch() ==
-          sim::FastEngine::neighbour_prefetch_pays(scene.discs.size()));
 }
 
 TEST_CASE("classic and fast agree with one big disc among small ones (the big-disc list)") {

@@ -18,7 +18,7 @@
 #include "time/pair_sweep.hpp"
 
 using namespace collide;
-using detail::DiscPair;
+using sim::detail::DiscPair;
 
 namespace {
 
@@ -36,9 +36,10 @@ struct Discs {
 
 /// The sweep's bound written plainly: minimum-image distance by Box::displacement.
 std::vector<DiscPair> plain_candidates(const Box& box, const Discs& d, double h) {
-    const double slack = detail::sweep_absolute_margin * std::max(box.width, box.height);
+    const double slack = sim::detail::sweep_absolute_margin * std::max(box.width, box.height);
     auto reach = [&](std::size_t i) {
-        return (d.radii[i] + norm(d.velocities[i]) * h) * (1.0 + detail::sweep_relative_margin) +
+        return (d.radii[i] + norm(d.velocities[i]) * h) *
+                   (1.0 + sim::detail::sweep_relative_margin) +
                slack;
     };
     std::vector<DiscPair> out;
@@ -71,7 +72,7 @@ bool flagged_exactly(const Box& box, const Discs& d, std::uint32_t i, std::uint3
 }
 
 void check_sweep(const Box& box, const Discs& d, double h) {
-    detail::PairSweep sweep;
+    sim::detail::PairSweep sweep;
     std::vector<DiscPair> found;
     sweep.find(box, d.positions, d.velocities, d.radii, h, found);
     CHECK(found == plain_candidates(box, d, h));
@@ -184,7 +185,7 @@ TEST_CASE("pair sweep: near-tangent pairs far outside a walled box are candidate
 }
 
 TEST_CASE("pair sweep: no discs, one disc") {
-    detail::PairSweep sweep;
+    sim::detail::PairSweep sweep;
     std::vector<DiscPair> found{{0, 1}};
     sweep.find(Box{}, {}, {}, {}, 0.1, found);
     CHECK(found.empty());
@@ -200,7 +201,7 @@ TEST_CASE("pair sweep: a set stop flag ends the sweep after a few thousand pairs
     std::uniform_real_distribution<double> coord(0.0, 1.0);
     Discs d;
     for (int k = 0; k < 3000; ++k) d.add({coord(rng), coord(rng)}, {0.0, 0.0}, 0.05);
-    detail::PairSweep sweep;
+    sim::detail::PairSweep sweep;
     std::vector<DiscPair> out;
     const std::atomic<bool> stop{true};
     CHECK_FALSE(sweep.find(box, d.positions, d.velocities, d.radii, 0.01, out, &stop));

@@ -13,6 +13,7 @@
 #include "collide/sim/time_engine.hpp"
 
 using namespace collide;
+using sim::TimeEngine;
 
 namespace {
 

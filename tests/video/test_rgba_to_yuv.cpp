@@ -1,5 +1,4 @@
-// The hand-written BT.709 RGBA -> yuv420p converter against the standard's formula, and its
-// banded (threaded) form against the single-threaded one.
+// The hand-written BT.709 RGBA -> yuv420p converter against the standard's formula.
 
 #include <doctest/doctest.h>
 
@@ -26,10 +25,10 @@ struct Planes {
     Yuv420View view() { return {y.data(), u.data(), v.data(), width, width / 2, width / 2}; }
 };
 
-Planes convert(const collide::Image& image, int threads) {
+Planes convert(const collide::Image& image) {
     Planes planes(image.width, image.height);
     rgba_to_yuv420_bt709(image.rgba.data(), std::ptrdiff_t(image.stride()), image.width,
-                         image.height, planes.view(), threads);
+                         image.height, planes.view());
     return planes;
 }
 
@@ -60,7 +59,7 @@ TEST_CASE("primaries, white and black land on the BT.709 limited-range code valu
         CAPTURE(c.r);
         CAPTURE(c.g);
         CAPTURE(c.b);
-        const Planes planes = convert(solid(c.r, c.g, c.b), 1);
+        const Planes planes = convert(solid(c.r, c.g, c.b));
         CHECK(int(planes.y[0]) == c.y);
         CHECK(int(planes.y[5]) == c.y);
         CHECK(int(planes.u[1]) == c.u);
@@ -73,7 +72,7 @@ TEST_CASE("random pixels: within 1 code value of the exact formula") {
     std::uniform_int_distribution<int> byte(0, 255);
     collide::Image image(64, 32);
     for (auto& value : image.rgba) value = std::uint8_t(byte(rng));
-    const Planes planes = convert(image, 1);
+    const Planes planes = convert(image);
     const collide::video::testing::Yuv420 exact = collide::video::testing::exact_yuv420(image);
     int worst = 0;
     for (std::size_t i = 0; i < exact.y.size(); ++i) {
@@ -113,28 +112,4 @@ TEST_CASE("the SIMD kernels give the portable code's bytes") {
         CHECK(fast.u == portable.u);
         CHECK(fast.v == portable.v);
     }
-}
-
-TEST_CASE("banded conversion on several threads equals the single-threaded result") {
-    const collide::Image image = collide::video::testing::test_pattern(96, 54, 3);
-    const Planes one = convert(image, 1);
-    for (const int threads : {2, 3, 4}) {
-        const Planes many = convert(image, threads);
-        CHECK(many.y == one.y);
-        CHECK(many.u == one.u);
-        CHECK(many.v == one.v);
-    }
-}
-
-TEST_CASE("libswscale with BT.709 details agrees with the hand-written converter on luma") {
-    const collide::Image image = collide::video::testing::test_pattern(96, 54, 3);
-    const Planes hand = convert(image, 1);
-    Planes sws(96, 54);
-    SwsConverter converter(96, 54, SWS_BICUBIC | SWS_ACCURATE_RND, 2);
-    converter.convert(image.rgba.data(), std::ptrdiff_t(image.stride()), sws.view());
-    int worst = 0;
-    for (std::size_t i = 0; i < hand.y.size(); ++i) {
-        worst = std::max(worst, std::abs(int(hand.y[i]) - int(sws.y[i])));
-    }
-    CHECK(worst <= 1);  // a BT.601 matrix would be off by up to ~17 on the saturated discs
 }

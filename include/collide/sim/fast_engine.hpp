@@ -31,6 +31,7 @@
 
 #include "collide/scene.hpp"
 #include "collide/sim/engine.hpp"
+#include "collide/sim/engine_core.hpp"
 #include "collide/sim/engine_support.hpp"
 #include "collide/sim/event.hpp"
 #include "collide/sim/kinematics.hpp"
@@ -55,7 +56,7 @@ class FastEngine final : public Engine {
     [[nodiscard]] Snapshot snapshot() const override;
     [[nodiscard]] Measurements measurements() const override;
     void set_collision_listener(CollisionListener listener) override {
-        listener_ = std::move(listener);
+        core_.set_listener(std::move(listener));
     }
     bool watch_queue(std::size_t next_events) override {
         watch_.start(next_events);
@@ -71,14 +72,6 @@ class FastEngine final : public Engine {
     [[nodiscard]] std::uint64_t bytes() const noexcept;
     /// O(N) consistency check (cell membership, heap invariants, one event per disc); for tests.
     [[nodiscard]] bool check_invariants() const;
-    /// Whether neighbour scans prefetch: on by default once the disc records outgrow the caches
-    /// (see scan_cells). Either way the same discs are scanned in the same order, so the events
-    /// are identical; tests force it to check that.
-    [[nodiscard]] bool neighbour_prefetch() const noexcept { return prefetch_neighbours_; }
-    /// The default: prefetch once the disc records outgrow 1 MiB, the heaps' rule
-    /// (pq::heap_prefetch_bytes).
-    [[nodiscard]] static bool neighbour_prefetch_pays(std::size_t discs) noexcept;
-    void set_neighbour_prefetch(bool on) noexcept { prefetch_neighbours_ = on; }
 
   private:
     /// What a neighbour scan and an event on the disc read, in one cache line. Counters that each
@@ -183,9 +176,6 @@ class FastEngine final : public Engine {
                                Key& best);
     void scan_cells(std::uint32_t i, const Particle& pi, double xi, double yi, std::int64_t x0,
                     std::int64_t x1, std::int64_t y0, std::int64_t y1, Key& best);
-    void scan_cells_prefetched(std::uint32_t i, const Particle& pi, double xi, double yi,
-                               std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1,
-                               Key& best);
     /// Calls visit(first disc, shift x, shift y) for each non-empty cell at offsets x0..x1,
     /// y0..y1 from pi's cell (shifts: the periodic image of a wrapped-around cell).
     template <typename Visit>
@@ -210,9 +200,11 @@ class FastEngine final : public Engine {
     [[nodiscard]] bool is_big(std::uint32_t i) const noexcept { return p_[i].r > big_threshold_; }
     [[nodiscard]] Vec2 position_at_now(std::uint32_t i) const noexcept;
 
+    [[nodiscard]] QueueStats& stats() noexcept { return core_.counters().queue; }
+
+    EngineCore core_;
     Box box_;
     bool periodic_ = false;
-    Appearance appearance_;
     double now_ = 0.0;
 
     // grid
@@ -234,21 +226,10 @@ class FastEngine final : public Engine {
     /// cache miss). scene_index_[i] is the scene's index of internal disc i.
     std::vector<std::uint32_t> scene_index_;
     std::vector<std::uint32_t> big_;  ///< indices of big discs
-    /// Whether neighbour scans prefetch (the disc records outgrow the caches; see scan_cells).
-    bool prefetch_neighbours_ = false;
 
     KeyLess key_less_{&scene_index_};
     Heap heap_{0, key_less_};
-    QueueStats stats_;
-    ImpulseTally tally_;
-    std::uint64_t collisions_pair_ = 0;
-    std::uint64_t collisions_xwall_ = 0;
-    std::uint64_t collisions_ywall_ = 0;
-    std::uint64_t cell_crossings_ = 0;
-    std::uint64_t predictions_ = 0;
-    double wall_seconds_ = 0.0;
     std::uint64_t instant_limit_ = 0;  ///< see count_collision_now
-    CollisionListener listener_;
     QueueWatch watch_;  ///< off unless a teaching video asked for the queue (watch_queue)
 };
 

@@ -53,18 +53,22 @@
 
 #include "collide/scene.hpp"
 #include "collide/sim/engine.hpp"
-#include "collide/sim/observables.hpp"
+#include "collide/sim/engine_core.hpp"
 
 namespace collide {
+
+/// Throws Error(input) unless options.dt is finite and > 0 (names `--dt`) and options.td_detect
+/// is "all-pairs" or "grid" (names `--td-detect`). The time-driven engine calls it on construction.
+void validate_time_driven_options(const EngineOptions& options);
+
+}  // namespace collide
+
+namespace collide::sim {
 
 namespace detail {
 class CellGrid;
 class PairSweep;
 }  // namespace detail
-
-/// Throws Error(input) unless options.dt is finite and > 0 (names `--dt`) and options.td_detect
-/// is "all-pairs" or "grid" (names `--td-detect`). The time-driven engine calls it on construction.
-void validate_time_driven_options(const EngineOptions& options);
 
 /// The time-driven engine (`--engine time`). Deterministic: the same scene and options give the
 /// same snapshots and the same collision records. Cost per step: all-pairs O(N^2), grid about
@@ -85,7 +89,8 @@ class TimeEngine final : public Engine {
 
     /// Runs steps of dt until exactly time t; when t is not a multiple of dt away, the final step
     /// is shorter and lands exactly on t (a step that would end within 1e-9 dt of t ends on t).
-    /// The next call starts its steps from t. Throws Error(runtime) if t < time() or t is NaN.
+    /// The next call starts its steps from t. Throws Error(input) (sim::require_forward) if
+    /// t < time() or t is not finite.
     void advance_to(double t) override;
     [[nodiscard]] double time() const noexcept override { return time_; }
     /// Discs at time(), with the escaped flags, the pairs overlapping now and the markers of the
@@ -109,7 +114,6 @@ class TimeEngine final : public Engine {
     void step(double h);
     void drift(double h);
     void detect_pair_contacts(double h);
-    void check_pair(std::uint32_t i, std::uint32_t j, double h);
     void detect_wall_contacts(double h);
     void resolve_contacts(double h);
     void resolve_pair_contact(const Contact& contact, double h);
@@ -120,7 +124,6 @@ class TimeEngine final : public Engine {
     /// resolution is elastic). Throws Error(runtime) naming the broken invariant. O(N).
     void validate_state() const;
     void move(std::uint32_t i, Vec2 delta);
-    void record(CollisionKind kind, std::uint32_t a, std::uint32_t b, double t);
     [[nodiscard]] double max_speed() const noexcept;
     [[nodiscard]] double kinetic_energy() const noexcept;
     /// Heap memory held by the engine's containers (capacity), for Measurements::engine_bytes.
@@ -132,6 +135,7 @@ class TimeEngine final : public Engine {
     template <typename PairVisitor>
     void for_each_candidate_pair(double h, PairVisitor&& visit);
 
+    EngineCore core_;
     Box box_;
     double dt_;
     bool use_grid_;
@@ -144,10 +148,7 @@ class TimeEngine final : public Engine {
     std::vector<Vec2> displacement_;  ///< unwrapped displacement since t = 0 (mean squared displ.)
     std::vector<double> radius_;
     std::vector<double> mass_;
-    std::vector<Rgb8> color_;
-    std::vector<bool> tagged_;
     std::vector<bool> escaped_;
-    bool any_tagged_ = false;
 
     double time_ = 0.0;
     double step_start_ = 0.0;  ///< simulation time at which the current step began
@@ -165,17 +166,8 @@ class TimeEngine final : public Engine {
     // Counters.
     std::uint64_t steps_ = 0;
     std::uint64_t overlap_checks_ = 0;
-    std::uint64_t predictions_ = 0;
-    std::uint64_t collisions_pair_ = 0;
-    std::uint64_t collisions_wall_ = 0;
     std::uint64_t missed_ = 0;
     double max_overlap_seen_ = 0.0;
-    std::uint64_t collisions_xwall_ = 0;
-    std::uint64_t collisions_ywall_ = 0;
-    sim::ImpulseTally impulses_;  ///< for pressure: virial (periodic) and wall impulse (walls)
-    double wall_seconds_ = 0.0;
-
-    CollisionListener listener_;
 };
 
-}  // namespace collide
+}  // namespace collide::sim

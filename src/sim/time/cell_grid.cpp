@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace collide::detail {
+namespace collide::sim::detail {
 
 namespace {
 
@@ -99,4 +99,4 @@ bool CellGrid::neighbour(std::size_t cx, std::size_t cy, int ox, int oy,
     return true;
 }
 
-}  // namespace collide::detail
+}  // namespace collide::sim::detail

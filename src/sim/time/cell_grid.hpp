@@ -11,7 +11,7 @@
 #include "collide/box.hpp"
 #include "collide/vec2.hpp"
 
-namespace collide::detail {
+namespace collide::sim::detail {
 
 class CellGrid {
   public:
@@ -88,4 +88,4 @@ class CellGrid {
     std::vector<std::uint32_t> cell_id_;     ///< cell of each disc
 };
 
-}  // namespace collide::detail
+}  // namespace collide::sim::detail

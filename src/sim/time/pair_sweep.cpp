@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-namespace collide::detail {
+namespace collide::sim::detail {
 
 namespace {
 
@@ -95,8 +95,8 @@ template <bool periodic>
 
 // GCC builds AVX-512 and AVX2 copies of each next to the baseline x86-64 one and picks at load
 // time (function multi-versioning through an ifunc, no system call), so the binary runs on any
-// x86-64. The AVX-512 copy: -11 % per all-pairs step at N = 2025 on this AMD EPYC
-// (bench_time_engine, BM_TimeEngineCost/45/0: 19.9 -> 17.8 ms).
+// x86-64: the wide copies are what makes the all-pairs step affordable at a few thousand discs
+// (docs/benchmarks.md).
 // Walls and periodic boxes get separate loops: the minimum image costs six more operations a pair.
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
 #define COLLIDE_SWEEP_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
@@ -173,4 +173,4 @@ bool PairSweep::find(const Box& box, const std::vector<Vec2>& positions,
     return sweep_rows_walls(d, f, count, out, stop);
 }
 
-}  // namespace collide::detail
+}  // namespace collide::sim::detail

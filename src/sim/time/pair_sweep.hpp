@@ -14,7 +14,7 @@
 #include "collide/box.hpp"
 #include "collide/vec2.hpp"
 
-namespace collide::detail {
+namespace collide::sim::detail {
 
 /// A pair of disc ids, i < j.
 using DiscPair = std::pair<std::uint32_t, std::uint32_t>;
@@ -61,4 +61,4 @@ class PairSweep {
     std::vector<float> reach32_;
 };
 
-}  // namespace collide::detail
+}  // namespace collide::sim::detail

@@ -1,7 +1,6 @@
 #include "collide/sim/time_engine.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <string>
 #include <tuple>
@@ -14,6 +13,21 @@
 #include "time/pair_sweep.hpp"
 
 namespace collide {
+
+void validate_time_driven_options(const EngineOptions& options) {
+    if (!std::isfinite(options.dt) || options.dt <= 0.0) {
+        throw_input_error("", 0, "--dt",
+                          "must be a finite number > 0 (got " + std::to_string(options.dt) + ")");
+    }
+    if (options.td_detect != "all-pairs" && options.td_detect != "grid") {
+        throw_input_error("", 0, "--td-detect",
+                          "unknown method '" + options.td_detect + "' (use all-pairs or grid)");
+    }
+}
+
+}  // namespace collide
+
+namespace collide::sim {
 
 namespace {
 
@@ -34,36 +48,21 @@ double within_step(double t_contact, double h) noexcept {
 
 }  // namespace
 
-void validate_time_driven_options(const EngineOptions& options) {
-    if (!std::isfinite(options.dt) || options.dt <= 0.0) {
-        throw_input_error("", 0, "--dt",
-                          "must be a finite number > 0 (got " + std::to_string(options.dt) + ")");
-    }
-    if (options.td_detect != "all-pairs" && options.td_detect != "grid") {
-        throw_input_error("", 0, "--td-detect",
-                          "unknown method '" + options.td_detect + "' (use all-pairs or grid)");
-    }
-}
-
 TimeEngine::TimeEngine(const Scene& scene, const EngineOptions& options)
-    : box_(scene.box), dt_(options.dt), use_grid_(options.td_detect == "grid") {
+    : core_(scene), box_(scene.box), dt_(options.dt), use_grid_(options.td_detect == "grid") {
     validate_time_driven_options(options);
     const std::size_t n = scene.discs.size();
     position_.reserve(n);
     velocity_.reserve(n);
     radius_.reserve(n);
     mass_.reserve(n);
-    color_.reserve(n);
     for (const Disc& disc : scene.discs) {
         position_.push_back(box_.wrap(disc.position));
         velocity_.push_back(disc.velocity);
         radius_.push_back(disc.radius);
         mass_.push_back(disc.mass);
-        color_.push_back(disc.color);
-        tagged_.push_back(!disc.tag.empty());
         max_radius_ = std::max(max_radius_, disc.radius);
     }
-    any_tagged_ = std::find(tagged_.begin(), tagged_.end(), true) != tagged_.end();
     displacement_.assign(n, Vec2{});
     escaped_.assign(n, false);
     grid_ = std::make_unique<detail::CellGrid>();
@@ -75,15 +74,11 @@ TimeEngine::TimeEngine(const Scene& scene, const EngineOptions& options)
 TimeEngine::~TimeEngine() = default;
 
 void TimeEngine::set_collision_listener(CollisionListener listener) {
-    listener_ = std::move(listener);
+    core_.set_listener(std::move(listener));
 }
 
 void TimeEngine::advance_to(double t) {
-    if (!std::isfinite(t) || t < time_) {
-        throw_runtime_error("time-driven engine: cannot advance from t = " + std::to_string(time_) +
-                            " to t = " + std::to_string(t));
-    }
-    const auto started = std::chrono::steady_clock::now();
+    const WallClock clock = core_.start_advance(time_, t);
     missed_markers_.clear();  // markers are "missed since the previous frame"
     // Step ends are base + k dt (not a running sum), so rounding does not accumulate.
     const double base = time_;
@@ -102,8 +97,6 @@ void TimeEngine::advance_to(double t) {
         time_ = next;
     }
     take_census();
-    wall_seconds_ +=
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 }
 
 // One quantum, as the lecture lists it: move everyone, check for overlaps, roll back, resolve.
@@ -178,7 +171,7 @@ void TimeEngine::detect_pair_contacts(double h) {
         if (dist2 < sigma * sigma) {
             max_overlap_seen_ = std::max(max_overlap_seen_, sigma - std::sqrt(dist2));
             if (dot(dv, dr) < 0.0) {
-                ++predictions_;
+                ++core_.counters().predictions;
                 const double t_contact =
                     within_step(kinematics::time_to_hit(dr - h * dv, dv, sigma), h);
                 contacts_.push_back({t_contact, CollisionKind::pair, i, j});
@@ -228,13 +221,13 @@ void TimeEngine::detect_wall_contacts(double h) {
             alongside(p.x, box_.width, r) && ((v.y < 0.0 && straddles(p.y, 0.0, r)) ||
                                               (v.y > 0.0 && straddles(p.y, box_.height, r)));
         if (hits_x) {
-            ++predictions_;
+            ++core_.counters().predictions;
             const double t_contact =
                 within_step(kinematics::time_to_wall(p.x - h * v.x, v.x, r, box_.width), h);
             contacts_.push_back({t_contact, CollisionKind::xwall, i, 0});
         }
         if (hits_y) {
-            ++predictions_;
+            ++core_.counters().predictions;
             const double t_contact =
                 within_step(kinematics::time_to_wall(p.y - h * v.y, v.y, r, box_.height), h);
             contacts_.push_back({t_contact, CollisionKind::ywall, i, 0});
@@ -265,7 +258,7 @@ void TimeEngine::resolve_pair_contact(const Contact& contact, double h) {
     if (norm2(dr) >= sigma * sigma || dot(dv, dr) >= 0.0) {
         return;
     }
-    ++predictions_;
+    ++core_.counters().predictions;
     const double t_contact = within_step(kinematics::time_to_hit(dr - h * dv, dv, sigma), h);
     const double back = h - t_contact;
     move(a, -back * velocity_[a]);
@@ -273,11 +266,10 @@ void TimeEngine::resolve_pair_contact(const Contact& contact, double h) {
     const Vec2 contact_dr = box_.displacement(position_[a], position_[b]);
     const Vec2 impulse =
         kinematics::resolve_pair(velocity_[a], velocity_[b], mass_[a], mass_[b], contact_dr);
-    impulses_.virial += std::fabs(dot(contact_dr, impulse));
+    core_.counters().impulses.virial += std::fabs(dot(contact_dr, impulse));
     move(a, back * velocity_[a]);
     move(b, back * velocity_[b]);
-    ++collisions_pair_;
-    record(CollisionKind::pair, a, b, step_start_ + t_contact);
+    core_.collided({step_start_ + t_contact, CollisionKind::pair, a, b});
 }
 
 void TimeEngine::resolve_wall_contact(const Contact& contact, double h) {
@@ -293,16 +285,14 @@ void TimeEngine::resolve_wall_contact(const Contact& contact, double h) {
     if (!towards_wall) {
         return;
     }
-    ++predictions_;
+    ++core_.counters().predictions;
     const double t_contact = within_step(kinematics::time_to_wall(p - h * v, v, r, extent), h);
     const double back = h - t_contact;
     move(i, -back * velocity_[i]);
-    impulses_.wall_impulse += 2.0 * mass_[i] * std::fabs(v);
+    core_.counters().impulses.wall_impulse += 2.0 * mass_[i] * std::fabs(v);
     v = -v;
     move(i, back * velocity_[i]);
-    ++collisions_wall_;
-    ++(x_axis ? collisions_xwall_ : collisions_ywall_);
-    record(contact.kind, i, 0, step_start_ + t_contact);
+    core_.collided({step_start_ + t_contact, contact.kind, i, 0});
 }
 
 void TimeEngine::wrap_positions() {
@@ -311,12 +301,6 @@ void TimeEngine::wrap_positions() {
     }
     for (Vec2& p : position_) {
         p = box_.wrap(p);
-    }
-}
-
-void TimeEngine::record(CollisionKind kind, std::uint32_t a, std::uint32_t b, double t) {
-    if (listener_) {
-        listener_(CollisionRecord{t, kind, a, b});
     }
 }
 
@@ -396,9 +380,9 @@ std::uint64_t TimeEngine::bytes() const noexcept {
                                           sizeof(typename std::decay_t<decltype(v)>::value_type));
     };
     return held(position_) + held(velocity_) + held(displacement_) + held(radius_) + held(mass_) +
-           held(color_) + (tagged_.capacity() + escaped_.capacity()) / 8 + held(contacts_) +
-           held(overlapping_pairs_) + held(missed_markers_) + held(candidates_) + grid_->bytes() +
-           sweep_->bytes();
+           escaped_.capacity() / 8 + held(contacts_) + held(overlapping_pairs_) +
+           held(missed_markers_) + held(candidates_) + grid_->bytes() + sweep_->bytes() +
+           core_.bytes();
 }
 
 double TimeEngine::kinetic_energy() const noexcept {
@@ -410,20 +394,11 @@ double TimeEngine::kinetic_energy() const noexcept {
 }
 
 Snapshot TimeEngine::snapshot() const {
-    Snapshot snap;
-    snap.time = time_;
-    snap.box = box_;
-    snap.discs.reserve(position_.size());
+    Snapshot snap = core_.start_snapshot(time_);
     for (std::size_t i = 0; i < position_.size(); ++i) {
-        DiscState d;
-        d.position = position_[i];
-        d.velocity = velocity_[i];
-        d.radius = radius_[i];
-        d.mass = mass_[i];
-        d.color = color_[i];
-        d.tagged = tagged_[i];
+        DiscState& d = snap.discs[i];
+        EngineCore::set_motion(d, position_[i], velocity_[i], radius_[i], mass_[i]);
         d.escaped = escaped_[i];
-        snap.discs.push_back(d);
     }
     snap.overlapping_pairs = overlapping_pairs_;
     snap.missed_collisions = missed_markers_;
@@ -431,38 +406,14 @@ Snapshot TimeEngine::snapshot() const {
 }
 
 Measurements TimeEngine::measurements() const {
-    Measurements m;
-    m.t = time_;
-    m.steps = steps_;
-    m.collisions_pair = collisions_pair_;
-    m.collisions_wall = collisions_wall_;
-    m.collisions_xwall = collisions_xwall_;
-    m.collisions_ywall = collisions_ywall_;
-    m.events = collisions_pair_ + collisions_wall_;
-    m.predictions = predictions_;
-
-    // The same formulas as the event-driven engines, from the same code.
-    sim::fill_thermodynamics(m, velocity_, mass_, radius_, box_, impulses_);
+    Measurements m = core_.measurements(time_, velocity_, mass_, radius_, bytes());
     m.max_overlap = max_overlap_;
+    m.msd = core_.mean_squared_displacement(displacement_.size(), [this](std::size_t i) {
+        return std::pair{i, displacement_[i]};
+    });
+    m.steps = steps_;
     m.max_overlap_seen = max_overlap_seen_;
-
-    double msd_sum = 0.0;
-    double msd_count = 0.0;
-    for (std::size_t i = 0; i < displacement_.size(); ++i) {
-        if (any_tagged_ && !tagged_[i]) {
-            continue;
-        }
-        msd_sum += norm2(displacement_[i]);
-        msd_count += 1.0;
-    }
-    m.msd = msd_count > 0 ? msd_sum / msd_count : 0.0;
-
-    m.wall_seconds = wall_seconds_;
-    m.engine_bytes = bytes();
-    const auto collisions = static_cast<double>(collisions_pair_ + collisions_wall_);
-    m.collisions_per_second = wall_seconds_ > 0.0 ? collisions / wall_seconds_ : 0.0;
-    m.seconds_per_time_unit = time_ > 0.0 ? wall_seconds_ / time_ : 0.0;
-
+    m.seconds_per_time_unit = time_ > 0.0 ? m.wall_seconds / time_ : 0.0;
     m.overlap_checks = overlap_checks_;
     m.missed_collisions = missed_;
     m.escaped = escaped_count_;
@@ -472,4 +423,4 @@ Measurements TimeEngine::measurements() const {
     return m;
 }
 
-}  // namespace collide
+}  // namespace collide::sim

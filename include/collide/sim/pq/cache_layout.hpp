@@ -54,9 +54,8 @@ class ChildAlignedAllocator {
 };
 
 /// Heaps whose items take more than this many bytes (a typical L2 cache) prefetch on their way
-/// down; smaller ones are served from the caches, where the hints are pure overhead (the binary
-/// heap went from 0.78 to 1.2 of std::priority_queue's time at N = 10^3 when it prefetched
-/// regardless; docs/benchmarks.md).
+/// down; smaller ones are served from the caches, where the hints are pure overhead
+/// (docs/benchmarks.md).
 inline constexpr std::size_t heap_prefetch_bytes = std::size_t{1} << 20;
 
 /// Which descendants of node i a sink prefetches in a heap beyond heap_prefetch_bytes: the items

@@ -209,8 +209,8 @@ class DaryHeap {
     /// In a heap larger than the caches, each level waits for a cache miss before it knows
     /// where to go next. So on each level it asks the processor to load the hole's descendants a
     /// few levels down (heap_lookahead) while the children are compared: the path continues
-    /// among them. At N = 10^6 this took the 4-ary hold step from about 1.1 to 0.7 of
-    /// std::priority_queue's time; heaps that fit in the caches skip it (heap_prefetch_bytes).
+    /// among them (docs/benchmarks.md); heaps that fit in the caches skip it
+    /// (heap_prefetch_bytes).
     std::size_t hole_to_leaf() {
         const std::size_t n = a_.size();
         const std::size_t d = this->d();

@@ -7,8 +7,7 @@
 /// breaks on duplicate keys; keying it by handle does not.
 /// The keys are stored in heap order too (`keys_[i]` belongs to `heap_[i]`), not by handle: a
 /// sink then compares d keys that sit next to each other in memory instead of d keys scattered
-/// over the handle range (a cache miss each). For the fast engine at 10^5 discs this halved the
-/// heap's share of the run time.
+/// over the handle range (a cache miss each in a large heap).
 /// Two layout choices for large heaps (the fast engine at 10^6 discs, where every level of a
 /// sink below the cached top levels is a cache miss):
 /// - The key array puts node 1 on a 64-byte boundary (ChildAlignedAllocator), so the D children
@@ -281,27 +280,18 @@ class IndexedDaryHeap {
     /// before it knows where to go next; so, as DaryHeap's pop does, each level asks for all of
     /// the node's descendants a few levels down (heap_lookahead) while its children are
     /// compared: the path continues among them, and the misses of the coming levels overlap
-    /// instead of following one another. The fast engine's sinks (every event re-keys the
-    /// popped disc, which then sinks from the root) went from 0.43 M to 0.46 M collisions per
-    /// CPU second at 10^6 discs (docs/benchmarks.md).
+    /// instead of following one another (the fast engine re-keys a disc and sinks it from the
+    /// root at every event; docs/benchmarks.md). Heaps in the caches skip the hints.
     void sink(std::size_t i, handle_type h, Key k) {
-        // Two copies of the loop, so that heaps in the caches pay nothing per level for it.
-        if (size() * sizeof(Key) > heap_prefetch_bytes) {
-            sink_loop<true>(i, h, std::move(k));
-        } else {
-            sink_loop<false>(i, h, std::move(k));
-        }
-    }
-
-    template <bool Prefetch>
-    void sink_loop(std::size_t i, handle_type h, Key k) {
         const std::size_t n = size();
-        constexpr HeapLookahead ahead = heap_lookahead(D, sizeof(Key));
+        const HeapLookahead ahead = n * sizeof(Key) > heap_prefetch_bytes
+                                        ? heap_lookahead(D, sizeof(Key))
+                                        : HeapLookahead{};
         for (;;) {
             const std::size_t c0 = D * i + 1;
             if (c0 >= n) break;
             const std::size_t below = i * ahead.items + ahead.offset;
-            if (Prefetch && below < n) {
+            if (ahead.items != 0 && below < n) {
                 prefetch_lines(address_of(below), address_of(std::min(n, below + ahead.items)));
             }
             const std::size_t c_end = c0 + D < n ? c0 + D : n;
