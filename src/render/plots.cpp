@@ -300,11 +300,20 @@ void draw_moving_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontA
     }
     batch.add_rect({plot.x0, plot.y0, plot.x0 + line_width, plot.y1}, palette.axis);
     if (snapshots.empty() || plot.width() < 8.0F || plot.height() < 8.0F) return;
-    const int bins = std::clamp(static_cast<int>(plot.width() / 10.0F), 8, 30);
+    std::vector<Snapshot> moving;
+    std::size_t most = 0;
+    for (const Snapshot* s : snapshots) {
+        moving.push_back(moving_discs(*s));
+        most = std::max(most, moving.back().discs.size());
+    }
+    // About sqrt(N) bins (a few discs per bin even in a small gas), at least 10 px each.
+    const int bins =
+        std::clamp(std::min(static_cast<int>(plot.width() / 10.0F),
+                            static_cast<int>(std::lround(std::sqrt(static_cast<double>(most))))),
+                   5, 30);
     std::vector<std::vector<double>> histograms;
-    for (const Snapshot* s : snapshots)
-        histograms.push_back(speed_density(moving_discs(*s), v_min, v_max, bins));
-    const MaxwellBoltzmann curve(moving_discs(*snapshots.back()));
+    for (const Snapshot& s : moving) histograms.push_back(speed_density(s, v_min, v_max, bins));
+    const MaxwellBoltzmann curve(moving.back());
     constexpr int curve_samples = 64;
     std::vector<double> curve_values(curve_samples + 1);
     const auto sample_x = [&](int i) {
