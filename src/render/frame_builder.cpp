@@ -76,6 +76,31 @@ Palette palette(Theme theme) noexcept {
             {150, 150, 160, 255}, {255, 40, 220, 255},  {225, 225, 232, 255}};
 }
 
+CaptionFit fit_caption(const RenderConfig& config, std::string_view caption) {
+    if (config.overlays != OverlayLevel::lesson || config.width < compact_width) return {};
+    LayoutInput input;
+    input.width = config.width;
+    input.height = config.height;
+    input.boxes = {Box{}};  // the caption line spans the frame whatever the panels
+    const FrameLayout layout = compute_layout(input);
+    const TextSlot* slot = layout.slot(TextRole::caption);
+    if (slot == nullptr) return {};
+    const FontAtlas font(config.font_path, slot->pixel_height);
+    const std::string text(caption);
+    if (font.text_width(text) <= slot->rect.width()) return {};
+    // Characters (UTF-8 lead bytes) of the longest prefix that fits.
+    CaptionFit fit{false, 0};
+    std::size_t characters = 0;
+    for (std::size_t i = 1; i <= text.size(); ++i) {
+        const bool ends_character =
+            i == text.size() || (static_cast<unsigned char>(text[i]) & 0xC0U) != 0x80U;
+        if (!ends_character) continue;
+        if (font.text_width(text.substr(0, i)) > slot->rect.width()) break;
+        fit.max_characters = ++characters;
+    }
+    return fit;
+}
+
 PlotColors plot_colors(Theme theme) noexcept {
     if (theme == Theme::dark) return {};  // the plots' own defaults are the dark theme's
     const Palette p = palette(theme);
@@ -676,8 +701,8 @@ void FrameBuilder::add_column(const FrameContent& frame) {
             axis_colors = [this](double t) { return shown_colormap(t); };
         }
         draw_moving_speed_plot(list_.over, list_.text[0].glyphs, *body_font_, plot, snapshots,
-                               colors, config_.speed_min, config_.speed_max, plot_colors(config_.theme),
-                               axis_colors);
+                               colors, config_.speed_min, config_.speed_max,
+                               plot_colors(config_.theme), axis_colors);
     } else if (frame.energy_plot) {
         draw_drift_plot(list_.over, list_.text[0].glyphs, *body_font_, plot, frame.energy_drift,
                         plot_colors(config_.theme));
