@@ -252,24 +252,29 @@ Snapshot moving_discs(const Snapshot& snapshot) {
 SpeedPlotLayout speed_plot_layout(const FontAtlas& font, RectF area) {
     SpeedPlotLayout out;
     const float line = font.line_height();
-    // A title only above a data area of at least three lines: in a narrow column the axis word
-    // ("speed") and the curve's name say enough.
+    out.curve_name = "Maxwell-Boltzmann";
+    if (font.text_width(out.curve_name) > area.width()) out.curve_name = "Maxwell";
+    const float name_width = std::min(font.text_width(out.curve_name), area.width());
+    // A title, and the curve's name on its own line, only above a data area of at least four
+    // lines: in a narrow column the axis word ("speed") says enough and the name goes inside
+    // the data area's top right corner (bins under it are cut there).
     float top = area.y0;
-    const float data_height = area.height() - line;  // the axis labels take the last line
-    if (data_height - line >= 3.0F * line) {
+    const bool roomy = area.height() - 3.0F * line >= 4.0F * line;
+    if (roomy) {
         out.title_text = font.text_width("Speeds of moving discs") <= area.width()
                              ? "Speeds of moving discs"
                              : "Speeds";
         out.title = {area.x0, top, area.x1, top + line};
         top += line;
+        out.curve_label = {area.x1 - name_width, top, area.x1, top + line};
+        top += line;
     }
     out.data = {area.x0, top, area.x1, std::max(top, area.y1 - line)};
     out.axis = {area.x0, out.data.y1, area.x1, area.y1};
-    out.curve_name = "Maxwell-Boltzmann";
-    if (font.text_width(out.curve_name) > area.width()) out.curve_name = "Maxwell";
-    const float name_width = std::min(font.text_width(out.curve_name), area.width());
-    out.curve_label = {out.data.x1 - name_width, out.data.y0, out.data.x1,
-                       std::min(out.data.y1, out.data.y0 + line)};
+    if (!roomy) {
+        out.curve_label = {out.data.x1 - name_width, out.data.y0, out.data.x1,
+                           std::min(out.data.y1, out.data.y0 + line)};
+    }
     return out;
 }
 

@@ -78,9 +78,9 @@ inline constexpr double immovable_mass_ratio = 1000.0;
 /// The snapshot's discs that can move (finite mass below immovable_mass_ratio x the lightest).
 [[nodiscard]] Snapshot moving_discs(const Snapshot& snapshot);
 
-/// Where the lesson speed plot puts its parts inside its area (pure, tested): a title line when
-/// the area is tall enough for one above a readable data area, the data area (bars and curve),
-/// the curve's name inside the data area's top right corner (bars and curve stay below it), and
+/// Where the lesson speed plot puts its parts inside its area (pure, tested): where the area is
+/// tall enough, a title line and the curve's name on a line of its own above the data area;
+/// otherwise the name inside the data area's top right corner (bars and curve stay below it);
 /// the axis labels' line under the data area.
 struct SpeedPlotLayout {
     RectF title;        ///< empty when there is no room for a title line
