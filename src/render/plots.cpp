@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <map>
 #include <string>
 
 namespace collide::render {
@@ -83,36 +82,63 @@ std::vector<std::size_t> drift_points_to_draw(const std::vector<DriftPoint>& ser
     return keep;
 }
 
-std::vector<double> speed_density(const Snapshot& snapshot, double v_min, double v_max, int bins) {
+namespace {
+bool counted(const DiscState& d, double heavy) noexcept {
+    return std::isfinite(d.mass) && d.mass < heavy;
+}
+}  // namespace
+
+std::vector<double> speed_density(const Snapshot& snapshot, double v_min, double v_max, int bins,
+                                  double heavy) {
     std::vector<double> density(static_cast<std::size_t>(std::max(bins, 1)), 0.0);
     if (snapshot.discs.empty() || !(v_max > v_min)) return density;
     const double width = (v_max - v_min) / static_cast<double>(density.size());
+    std::size_t discs = 0;
     for (const DiscState& d : snapshot.discs) {
+        if (!counted(d, heavy)) continue;
+        ++discs;
         const double bin = std::floor((norm(d.velocity) - v_min) / width);
         if (bin >= 0.0 && bin < static_cast<double>(density.size())) {
             density[static_cast<std::size_t>(bin)] += 1.0;
         }
     }
-    const double scale = 1.0 / (static_cast<double>(snapshot.discs.size()) * width);
+    if (discs == 0) return density;
+    const double scale = 1.0 / (static_cast<double>(discs) * width);
     for (double& value : density) value *= scale;
     return density;
 }
 
-MaxwellBoltzmann::MaxwellBoltzmann(const Snapshot& snapshot) {
-    if (snapshot.discs.empty()) return;
-    std::map<double, double> counts;
+MaxwellBoltzmann::MaxwellBoltzmann(const Snapshot& snapshot, double heavy) {
+    // Masses and their counts: a short list (one or a few masses), searched linearly; beyond
+    // max_mass_groups distinct masses one group at the mean mass.
+    std::vector<std::pair<double, double>> counts;
+    bool many_masses = false;
     double kinetic = 0.0;
     double mass_sum = 0.0;
+    std::size_t discs = 0;
     for (const DiscState& d : snapshot.discs) {
+        if (!counted(d, heavy)) continue;
+        ++discs;
         kinetic += 0.5 * d.mass * norm2(d.velocity);
         mass_sum += d.mass;
-        counts[d.mass] += 1.0;
+        if (many_masses) continue;
+        const auto it = std::find_if(counts.begin(), counts.end(),
+                                     [&](const auto& c) { return c.first == d.mass; });
+        if (it != counts.end()) {
+            it->second += 1.0;
+        } else if (counts.size() < max_mass_groups) {
+            counts.emplace_back(d.mass, 1.0);
+        } else {
+            many_masses = true;
+        }
     }
-    const auto n = static_cast<double>(snapshot.discs.size());
+    if (discs == 0) return;
+    const auto n = static_cast<double>(discs);
     kT_ = kinetic / n;
-    if (counts.size() > max_mass_groups) {
+    if (many_masses) {
         groups_.push_back({mass_sum / n, 1.0});
     } else {
+        std::sort(counts.begin(), counts.end());
         for (const auto& [mass, count] : counts) groups_.push_back({mass, count / n});
     }
 }
@@ -235,16 +261,19 @@ void draw_drift_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& f
     }
 }
 
+double moving_mass_limit(const Snapshot& snapshot) noexcept {
+    double lightest = std::numeric_limits<double>::infinity();
+    for (const DiscState& d : snapshot.discs) lightest = std::min(lightest, d.mass);
+    return immovable_mass_ratio * lightest;
+}
+
 Snapshot moving_discs(const Snapshot& snapshot) {
     Snapshot out;
     out.time = snapshot.time;
     out.box = snapshot.box;
-    if (snapshot.discs.empty()) return out;
-    double lightest = std::numeric_limits<double>::infinity();
-    for (const DiscState& d : snapshot.discs) lightest = std::min(lightest, d.mass);
-    const double heavy = immovable_mass_ratio * lightest;
+    const double heavy = moving_mass_limit(snapshot);
     for (const DiscState& d : snapshot.discs) {
-        if (std::isfinite(d.mass) && d.mass < heavy) out.discs.push_back(d);
+        if (counted(d, heavy)) out.discs.push_back(d);
     }
     return out;
 }
@@ -305,11 +334,15 @@ void draw_moving_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontA
     }
     batch.add_rect({plot.x0, plot.y0, plot.x0 + line_width, plot.y1}, palette.axis);
     if (snapshots.empty() || plot.width() < 8.0F || plot.height() < 8.0F) return;
-    std::vector<Snapshot> moving;
+    // The moving discs, counted in place (no copies of 10^4 discs per frame).
+    std::vector<double> heavy;
     std::size_t most = 0;
     for (const Snapshot* s : snapshots) {
-        moving.push_back(moving_discs(*s));
-        most = std::max(most, moving.back().discs.size());
+        heavy.push_back(moving_mass_limit(*s));
+        const double limit = heavy.back();
+        most = std::max(most, static_cast<std::size_t>(std::count_if(
+                                  s->discs.begin(), s->discs.end(),
+                                  [&](const DiscState& d) { return counted(d, limit); })));
     }
     // About sqrt(N) bins (a few discs per bin even in a small gas), at least 10 px each.
     const int bins =
@@ -317,8 +350,10 @@ void draw_moving_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontA
                             static_cast<int>(std::lround(std::sqrt(static_cast<double>(most))))),
                    5, 30);
     std::vector<std::vector<double>> histograms;
-    for (const Snapshot& s : moving) histograms.push_back(speed_density(s, v_min, v_max, bins));
-    const MaxwellBoltzmann curve(moving.back());
+    for (std::size_t p = 0; p < snapshots.size(); ++p) {
+        histograms.push_back(speed_density(*snapshots[p], v_min, v_max, bins, heavy[p]));
+    }
+    const MaxwellBoltzmann curve(*snapshots.back(), heavy.back());
     constexpr int curve_samples = 64;
     std::vector<double> curve_values(curve_samples + 1);
     const auto sample_x = [&](int i) {

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -16,15 +17,20 @@ namespace collide::render {
 
 /// Histogram of |v| as a probability density over [v_min, v_max] with `bins` bins (speeds
 /// outside the range are counted in no bin, so the area is the fraction inside). O(N).
-[[nodiscard]] std::vector<double> speed_density(const Snapshot& snapshot, double v_min,
-                                                double v_max, int bins);
+/// Discs of mass `heavy` or more (and non-finite masses) are left out when `heavy` is given
+/// (moving_mass_limit: the moving discs only, without copying them).
+[[nodiscard]] std::vector<double> speed_density(
+    const Snapshot& snapshot, double v_min, double v_max, int bins,
+    double heavy = std::numeric_limits<double>::infinity());
 
 /// The 2D Maxwell-Boltzmann speed density of a snapshot's temperature, kT = mean kinetic
 /// energy per disc (k_B = 1): with several masses a mixture, one term per mass weighted by its
 /// share of discs: f(v) = sum_g (n_g/N) (m_g v / kT) exp(-m_g v^2 / 2kT).
 class MaxwellBoltzmann {
   public:
-    explicit MaxwellBoltzmann(const Snapshot& snapshot);
+    /// Over the discs lighter than `heavy` (all finite-mass discs by default).
+    explicit MaxwellBoltzmann(const Snapshot& snapshot,
+                              double heavy = std::numeric_limits<double>::infinity());
     [[nodiscard]] double kT() const noexcept { return kT_; }
     [[nodiscard]] double density(double speed) const noexcept;
 
@@ -77,6 +83,9 @@ inline constexpr double immovable_mass_ratio = 1000.0;
 
 /// The snapshot's discs that can move (finite mass below immovable_mass_ratio x the lightest).
 [[nodiscard]] Snapshot moving_discs(const Snapshot& snapshot);
+/// The mass from which a disc of `snapshot` counts as immovable: immovable_mass_ratio x the
+/// lightest (infinity for no discs). O(N), no copy.
+[[nodiscard]] double moving_mass_limit(const Snapshot& snapshot) noexcept;
 
 /// Where the lesson speed plot puts its parts inside its area (pure, tested): where the area is
 /// tall enough, a title line and the curve's name on a line of its own above the data area;
