@@ -1,11 +1,7 @@
-// Frames of a priority-queue lesson: lay out the token strip and the panels, build triangles
-// (edges, slots, boxes), discs (tree nodes) and glyphs on the CPU, draw them with three GL calls
-// into an FBO, read it back and blend the text in on the CPU (glyph_blit.hpp), as the collision
-// renderer does. The GL plumbing here is a small copy of the idea in renderer.cpp (FBO, overlay
-// and disc programs), written for this module so that neither file depends on the other.
+// Frames of a priority-queue lesson: lay out the token strip and the panels, build a DrawList
+// (edges, slots and boxes as triangles, tree nodes as discs, glyphs per font size) on the CPU, and
+// draw it through GlTarget, the collision renderer's GL half: one GL path for every picture.
 #include "collide/render/heap_view.hpp"
-
-#include <glad/gl.h>
 
 #include <algorithm>
 #include <cmath>
@@ -15,12 +11,11 @@
 #include <string_view>
 
 #include "collide/error.hpp"
+#include "draw_list.hpp"
 #include "font.hpp"
-#include "gl_objects.hpp"
-#include "glyph_blit.hpp"
+#include "gl_target.hpp"
 #include "heap_view_layout.hpp"
 #include "overlay_geometry.hpp"
-#include "shaders.hpp"
 
 namespace collide::render {
 
@@ -128,15 +123,6 @@ PointF lerp(PointF a, PointF b, float t) noexcept {
     return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t};
 }
 
-/// The vertex layout of shaders/disc.vert (same as the collision renderer's, 20 bytes).
-struct NodeInstance {
-    float x, y;
-    float radius;
-    float style;  // 0 filled, > 0 ring width
-    Rgba8 color;
-};
-static_assert(sizeof(NodeInstance) == 20);
-
 /// Greedy word wrap to `width` pixels; at most `max_lines` lines (the last one ends in "...").
 std::vector<std::string> wrap(const FontAtlas& font, const std::string& text, float width,
                               std::size_t max_lines) {
@@ -170,111 +156,35 @@ struct PanelGeometry {
 // ---------------------------------------------------------------------------------------------
 
 struct HeapRenderer::Impl {
-    // Declaration order: the context outlives every GL object.
     HeapViewConfig config;
     HeapPalette colors;
-    std::unique_ptr<Context> context;
-    GladGLContext gl{};
-    GlObject color_texture;
-    GlObject framebuffer;
-    GlObject overlay_program;
-    GlObject node_program;
-    GlObject overlay_vertex_array;
-    GlObject overlay_buffer;
-    GlObject node_vertex_array;
-    GlObject node_buffer;
-    GLint overlay_frame_size = -1;
-    GLint node_frame_size = -1;
-    GLint node_as_points = -1;
+    GlTarget target;  // the context and every GL object
 
-    std::map<int, FontAtlas> fonts;           // by pixel height
-    std::map<int, OverlayBatch> text_layers;  // glyphs per font, blended after readback
-    OverlayBatch under;                       // slots, edges, boxes: before the nodes
-    OverlayBatch over;                        // token marker etc.: after the nodes
-    std::vector<NodeInstance> nodes;
-    std::vector<NodeInstance> node_vertices;
+    std::map<int, FontAtlas> fonts;       // by pixel height (map nodes: stable addresses)
+    std::map<int, std::size_t> text_run;  // pixel height -> its run in list.text
+    DrawList list;                        // slots, edges, boxes under the nodes; glyphs
+    OverlayBatch& under = list.under;     // slots, edges, boxes: before the nodes
+    OverlayBatch& over = list.over;       // token marker etc.: after the nodes
 
     float unit = 1.0F;        // pixels per 1/720 of the frame height
     std::size_t columns = 1;  // of the panel grid in the frame being built
 
     Impl(const HeapViewConfig& cfg, std::unique_ptr<Context> ctx)
-        : config(cfg), colors(heap_palette(cfg.theme)), context(std::move(ctx)) {
+        : config(cfg),
+          colors(heap_palette(cfg.theme)),
+          target(cfg.width, cfg.height, std::move(ctx)) {
         config.validate();
-        if (!context) throw_runtime_error("heap view: no GL context");
-        context->make_current();
-        if (gladLoadGLContext(&gl, context->proc_loader()) == 0)
-            throw_runtime_error("GL: cannot load the GL 3.3 core entry points");
         unit = static_cast<float>(config.height) / 720.0F;
         (void)font(caption_px());  // a missing font fails here, before any frame
-        create_framebuffer();
-        create_programs();
-        create_vertex_arrays();
-        check_gl(gl, "heap view setup");
     }
 
-    ~Impl() {
-        try {
-            context->make_current();
-        } catch (...) {  // NOLINT(bugprone-empty-catch): nothing sane to do in a destructor
-        }
-    }
-    Impl(const Impl&) = delete;
-    Impl& operator=(const Impl&) = delete;
-
-    // ------------------------------------------------------------------ GL setup
-
-    void create_framebuffer() {
-        color_texture = make_texture(gl);
-        gl.BindTexture(GL_TEXTURE_2D, color_texture.get());
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-        gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, config.width, config.height, 0, GL_RGBA,
-                      GL_UNSIGNED_BYTE, nullptr);
-        gl.BindTexture(GL_TEXTURE_2D, 0);
-        framebuffer = make_framebuffer(gl);
-        gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer.get());
-        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
-                                color_texture.get(), 0);
-        if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-            throw_runtime_error("GL: the heap view's framebuffer is incomplete");
-    }
-
-    void create_programs() {
-        overlay_program =
-            make_program(gl, shaders::overlay_vert, shaders::overlay_frag, "overlay shader");
-        node_program = make_program(gl, shaders::disc_vert, shaders::disc_frag, "disc shader");
-        overlay_frame_size = gl.GetUniformLocation(overlay_program.get(), "frame_size");
-        node_frame_size = gl.GetUniformLocation(node_program.get(), "frame_size");
-        node_as_points = gl.GetUniformLocation(node_program.get(), "as_points");
-    }
-
-    void create_vertex_arrays() {
-        const auto at = [](std::size_t offset) { return reinterpret_cast<const void*>(offset); };
-        overlay_vertex_array = make_vertex_array(gl);
-        overlay_buffer = make_buffer(gl);
-        gl.BindVertexArray(overlay_vertex_array.get());
-        gl.BindBuffer(GL_ARRAY_BUFFER, overlay_buffer.get());
-        constexpr auto stride = static_cast<GLsizei>(sizeof(OverlayVertex));
-        gl.VertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, stride, at(offsetof(OverlayVertex, x)));
-        gl.VertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
-                               at(offsetof(OverlayVertex, color)));
-        gl.EnableVertexAttribArray(0);
-        gl.EnableVertexAttribArray(1);
-
-        node_vertex_array = make_vertex_array(gl);
-        node_buffer = make_buffer(gl);
-        gl.BindVertexArray(node_vertex_array.get());
-        gl.BindBuffer(GL_ARRAY_BUFFER, node_buffer.get());
-        constexpr auto node_stride = static_cast<GLsizei>(sizeof(NodeInstance));
-        gl.VertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, node_stride,
-                               at(offsetof(NodeInstance, x)));
-        gl.VertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, node_stride,
-                               at(offsetof(NodeInstance, radius)));
-        gl.VertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, node_stride,
-                               at(offsetof(NodeInstance, style)));
-        gl.VertexAttribPointer(3, 4, GL_UNSIGNED_BYTE, GL_TRUE, node_stride,
-                               at(offsetof(NodeInstance, color)));
-        for (GLuint location = 0; location < 4; ++location) gl.EnableVertexAttribArray(location);
-        gl.BindVertexArray(0);
+    /// A node: its fill or ring, drawn in order (each node its own group: a moving node stays
+    /// over the still ones whatever GlTarget draws as point sprites or quads).
+    void add_node(const DiscInstance& disc) {
+        list.discs.push_back(disc);
+        list.disc_groups.push_back(
+            {list.discs.size(),
+             {0.0F, 0.0F, static_cast<float>(config.width), static_cast<float>(config.height)}});
     }
 
     // ------------------------------------------------------------------ text
@@ -289,8 +199,10 @@ struct HeapRenderer::Impl {
     }
 
     void text(const FontAtlas& f, float x, float baseline, std::string_view s, Rgba8 color) {
-        f.add_text(text_layers[static_cast<int>(std::lround(f.pixel_height()))], x, baseline, s,
-                   color);
+        const int px = static_cast<int>(std::lround(f.pixel_height()));
+        const auto [run, fresh] = text_run.try_emplace(px, list.text.size());
+        if (fresh) list.text.push_back({&f, {}});
+        f.add_text(list.text[run->second].glyphs, x, baseline, s, color);
     }
 
     /// Text centred on (cx, cy), by the height of a capital letter.
@@ -337,10 +249,8 @@ struct HeapRenderer::Impl {
     }
 
     void build(const HeapFrameView& frame) {
-        under.clear();
-        over.clear();
-        nodes.clear();
-        for (auto& [px, layer] : text_layers) layer.clear();
+        list.clear();  // keeps the text runs (one per font size), emptied
+        list.background = colors.background;
         const auto w = static_cast<float>(config.width);
         const auto h = static_cast<float>(config.height);
         columns = panel_columns(frame.panels.size());
@@ -564,7 +474,7 @@ struct HeapRenderer::Impl {
         }
         // Empty places of the capacity, faint, so the shape of a full tree shows.
         for (std::size_t i = in_tree; i < g.nodes.size(); ++i) {
-            nodes.push_back(
+            add_node(
                 {g.nodes[i].x, g.nodes[i].y, g.node_radius, std::max(1.0F, unit), colors.empty});
         }
         const FontAtlas& f = key_font(2.0F * g.node_radius);
@@ -582,8 +492,8 @@ struct HeapRenderer::Impl {
     void draw_node(const HeapSlotView& s, PointF c, float radius, float alpha, const FontAtlas& f) {
         const MarkStyle style = style_of(s.mark, colors);
         const Rgba8 fill = s.mark == SlotMark::plain ? colors.node : style.fill;
-        nodes.push_back({c.x, c.y, radius, 0.0F, faded(fill, alpha)});
-        nodes.push_back(
+        add_node({c.x, c.y, radius, 0.0F, faded(fill, alpha)});
+        add_node(
             {c.x, c.y, radius, std::max(1.5F, 2.5F * unit), faded(colors.node_outline, alpha)});
         centred(f, c, s.key, faded(style.text, alpha));
     }
@@ -679,67 +589,11 @@ struct HeapRenderer::Impl {
 
     // ------------------------------------------------------------------ GL
 
-    void draw_triangles(const OverlayBatch& batch) {
-        if (batch.vertices().empty()) return;
-        gl.UseProgram(overlay_program.get());
-        gl.Uniform2f(overlay_frame_size, static_cast<float>(config.width),
-                     static_cast<float>(config.height));
-        gl.BindVertexArray(overlay_vertex_array.get());
-        gl.BindBuffer(GL_ARRAY_BUFFER, overlay_buffer.get());
-        gl.BufferData(GL_ARRAY_BUFFER,
-                      static_cast<GLsizeiptr>(batch.vertices().size() * sizeof(OverlayVertex)),
-                      batch.vertices().data(), GL_STREAM_DRAW);
-        gl.DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(batch.vertices().size()));
-    }
-
-    void draw_nodes() {
-        if (nodes.empty()) return;
-        // Six vertices per node: the two triangles of disc.vert's quad (no point sprites: nodes
-        // are few and large).
-        node_vertices.clear();
-        for (const NodeInstance& n : nodes) node_vertices.insert(node_vertices.end(), 6, n);
-        gl.UseProgram(node_program.get());
-        gl.Uniform2f(node_frame_size, static_cast<float>(config.width),
-                     static_cast<float>(config.height));
-        gl.Uniform1i(node_as_points, 0);
-        gl.BindVertexArray(node_vertex_array.get());
-        gl.BindBuffer(GL_ARRAY_BUFFER, node_buffer.get());
-        gl.BufferData(GL_ARRAY_BUFFER,
-                      static_cast<GLsizeiptr>(node_vertices.size() * sizeof(NodeInstance)),
-                      node_vertices.data(), GL_STREAM_DRAW);
-        gl.DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(node_vertices.size()));
-    }
-
     void render(const HeapFrameView& frame, Image& out) {
         check(frame);
-        context->make_current();
         build(frame);
-        gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer.get());
-        gl.Viewport(0, 0, config.width, config.height);
-        gl.ClearColor(colors.background.r / 255.0F, colors.background.g / 255.0F,
-                      colors.background.b / 255.0F, 1.0F);
-        gl.Clear(GL_COLOR_BUFFER_BIT);
-        gl.Enable(GL_BLEND);
-        gl.BlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied, as the shaders write
-        draw_triangles(under);
-        draw_nodes();
-        draw_triangles(over);
-        gl.BindVertexArray(0);
-        gl.Finish();
-        check_gl(gl, "drawing a heap frame");
-
-        if (out.width != config.width || out.height != config.height)
-            out = Image(config.width, config.height);
-        gl.BindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer.get());
-        gl.ReadBuffer(GL_COLOR_ATTACHMENT0);
-        gl.PixelStorei(GL_PACK_ALIGNMENT, 4);
-        gl.ReadPixels(0, 0, config.width, config.height, GL_RGBA, GL_UNSIGNED_BYTE,
-                      out.rgba.data());
-        check_gl(gl, "reading the heap frame back");
-        for (const auto& [px, layer] : text_layers) {
-            const FontAtlas& f = fonts.at(px);
-            blend_glyphs(out, layer.glyphs(), f.bitmap(), f.atlas_size());
-        }
+        target.draw(list);
+        target.read_pixels(list, out);
     }
 };
 
