@@ -175,11 +175,12 @@ void draw_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& f
     std::vector<std::vector<double>> histograms;
     double peak = 0.0;
     for (const Snapshot* s : snapshots) {
-        histograms.push_back(speed_density(*s, v_min, v_max, bins));
+        // Moving discs only: barriers of still, heavy discs are not part of the gas.
+        histograms.push_back(speed_density(*s, v_min, v_max, bins, moving_mass_limit(*s)));
         peak =
             std::max(peak, *std::max_element(histograms.back().begin(), histograms.back().end()));
     }
-    const MaxwellBoltzmann curve(*snapshots.back());
+    const MaxwellBoltzmann curve(*snapshots.back(), moving_mass_limit(*snapshots.back()));
     constexpr int curve_samples = 64;
     std::vector<double> curve_values(curve_samples + 1);
     for (int i = 0; i <= curve_samples; ++i) {

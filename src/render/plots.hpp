@@ -56,8 +56,8 @@ struct PlotColors {
 [[nodiscard]] Rgb8 panel_color(std::size_t panel) noexcept;
 
 /// Shapes go to `batch`, text to `text`.
-/// Draws the histograms of every snapshot (step outlines in panel colours) and the
-/// Maxwell-Boltzmann curve of the last one (white) inside `area`.
+/// Draws the histograms of every snapshot's moving discs (step outlines in panel colours) and
+/// the Maxwell-Boltzmann curve of the last one's inside `area`.
 void draw_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& font, RectF area,
                      const std::vector<const Snapshot*>& snapshots, double v_min, double v_max,
                      const PlotColors& colors = {});
