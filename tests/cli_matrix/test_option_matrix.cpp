@@ -79,6 +79,14 @@ TEST_CASE("option matrix: render's numbers, sizes and names") {
     cases.push_back({"gas --format avi" + never + ".mp4", "--format"});
     cases.push_back({"gas --at 1" + never + ".mp4", "--at"});
     cases.push_back({"gas --progress loud" + never + ".mp4", "--progress"});
+    for (const char* v : {"0", "21", "-1", "2.5", "1e3", "x", "99999999999999999999"})
+        cases.push_back({std::string("gas --queue ") + v + never + ".mp4", "--queue"});
+    cases.push_back({"gas --queue --mode time" + never + ".mp4", "--queue"});
+    cases.push_back({"gas --queue 3 --mode time --engine classic" + never + ".mp4", "--queue"});
+    cases.push_back({"gas --queue --overlays none" + never + ".mp4", "--queue"});
+    cases.push_back({"gas --queue --overlays full" + never + ".mp4", "--queue"});
+    for (const char* v : {"0", "0.5", "-2", "nan", "inf", "1e9", "abc"})
+        cases.push_back({std::string("gas --slow-motion ") + v + never + ".mp4", "--slow-motion"});
     expect_refused("render", cases);
 }
 
@@ -90,6 +98,8 @@ TEST_CASE("option matrix: thumbnail --at at every extreme") {
     cases.push_back({"gas --at 1e18 --no-limits" + never + ".png", "--at"});
     cases.push_back({"gas --at 1 --fps 0" + never + ".png", "--fps"});
     cases.push_back({"gas --at 1 --seed -1" + never + ".png", "--seed"});
+    cases.push_back({"gas --at 1 --queue 0" + never + ".png", "--queue"});
+    cases.push_back({"gas --at 1 --queue --mode time" + never + ".png", "--queue"});
     expect_refused("thumbnail", cases);
 }
 
