@@ -76,6 +76,7 @@ struct Scenario {
         frame.panels[1].accent = panel_accent(false);
         frame.caption = "Fast discs slip through the barrier between two time steps";
         frame.energy_line = "Energy conserved";
+        frame.histogram = PlotSize::small;  // the lesson default with >= 200 moving discs
         for (int p = 0; p < 2; ++p) {
             std::vector<DriftPoint> series;
             for (int i = 0; i < 200; ++i) series.push_back({0.01 * i, 1e-4 * i * p});

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Regenerates the README's heap gallery: one 640x360 still per slide of a heap lesson, taken
-# mid-operation with `collide heap --at` (docs/heap.md explains each command).
+# with `collide heap --at` inside an operation, at the rest after a step (the keys have landed,
+# the step still lit: nothing half-way over the labels), so every one is readable
+# (docs/heap.md explains each command).
 # Usage: scripts/heap_gallery.sh [path/to/collide]   (default build/release/collide)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -13,8 +15,8 @@ still() {  # name, seconds into the video, then the lesson's options
     "$collide" heap "$@" --size 640x360 --at "$at" -o "docs/gallery/$name.png" >/dev/null
     echo "docs/gallery/$name.png"
 }
-still heap-binary 23.4 --ops "$lecture"
+still heap-binary 23.65 --ops "$lecture"
 still heap-side-by-side 30 --ops "$lecture" --impl unordered,ordered,binary
 still heap-dary-min 21.5 --ops "$lecture" --impl dary:3 --min
-still heap-indexed 18.3 --ops "5 9 3 7 * 3^12" --impl indexed:2
+still heap-indexed 18.72 --ops "5 9 3 7 * 3^12" --impl indexed:2
 still heap-heapsort 40.35 --sort "S O R T E X A M P L E"

@@ -41,6 +41,7 @@ struct RenderHints {
     std::string duration_at;
     std::string speed_at;
     std::string dt_at;
+    std::string caption_at;  ///< "file:line: render.caption", for a caption too wide for a frame
 };
 
 struct Scene {

@@ -48,6 +48,7 @@ struct HeapCli {
     bool last_frame = false;
     double at = 0.0;
     std::string progress = "auto";
+    std::string theme = "dark";
     bool verbose = false;
 
     CLI::Option* ops_opt = nullptr;
@@ -217,6 +218,7 @@ std::string lesson_name(const pq::LessonTimeline& timeline) {
 void run(const HeapCli& v) {
     // Validation: nothing is drawn, and no file is created, until all of it passes.
     const ProgressMode progress_mode = parse_progress_mode(v.progress);
+    const render::Theme theme = render::parse_theme(v.theme, "--theme");
     const pq::LessonTimeline timeline = timeline_of(v);
     check_legible(timeline, v);
     const FrameGeometry geometry = geometry_of(v);
@@ -238,6 +240,7 @@ void run(const HeapCli& v) {
     config.width = geometry.width;
     config.height = geometry.height;
     config.widest_key = widest_key(timeline);
+    config.theme = theme;
     render::HeapRenderer renderer(config, render::Backend::automatic, print_notice);
 
     if (output.still) {
@@ -323,6 +326,9 @@ void add_heap_command(CLI::App& root) {
                                 "(a still for slides; -o FILE.png, default out/heap.png)");
     cmd->add_option("--progress", v->progress,
                     "Progress on stderr: auto (bar on a terminal), bar, json or none")
+        ->capture_default_str();
+    cmd->add_option("--theme", v->theme,
+                    "Colours: dark (screens) or light (projectors, print), as in `collide render`")
         ->capture_default_str();
     cmd->add_flag("--verbose", v->verbose, "Show the encoder's own log");
     cmd->footer(

@@ -165,8 +165,9 @@ void add_shared_options(CLI::App& cmd, CliValues& v) {
         "--speed", v.speed,
         "Simulation time per second of video (default: scene hint, else a typical disc "
         "crosses the box in 10 s)");
-    v.dt_opt = cmd.add_option(
-        "--dt", v.dt, "Time-driven time step (default: scene hint, else one frame interval)");
+    v.dt_opt = cmd.add_option("--dt", v.dt,
+                              "Time-driven time step (default: scene hint, else the video's speed "
+                              "/ 30, the same at every -q)");
     cmd.add_option("--engine", v.engine, "Event-driven engine: fast or classic")
         ->capture_default_str();
     cmd.add_option("--pq", v.pq,

@@ -66,8 +66,12 @@ std::vector<render::HeapMapRow> map_rows(const pq::LessonState& state, const Hea
     for (const auto& [handle, slot] : by_handle) {
         render::HeapMapRow row;
         row.key = state.keys[slot];
-        row.index = std::to_string(static_cast<long long>(slot) + show.index_base);
         row.updated = swap && (slot == swap->a || slot == swap->b);
+        // Once the keys have landed (the step's rest), the lit entries show where they are now:
+        // the picture at rest never contradicts the array.
+        std::size_t shown = slot;
+        if (row.updated && swap->t >= 1.0F) shown = slot == swap->a ? swap->b : swap->a;
+        row.index = std::to_string(static_cast<long long>(shown) + show.index_base);
         rows.push_back(std::move(row));
     }
     return rows;

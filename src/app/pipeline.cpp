@@ -119,6 +119,30 @@ render::Backend render_backend(const render::PreviewWindow* preview, const Pipel
     return preview != nullptr ? render::Backend::glfw : hooks.backend;
 }
 
+/// Every caption of the video fits the caption line of this frame size, or the render stops
+/// before anything is written, naming the caption and how much of it fits.
+void check_captions_fit(const Scene& scene, const RenderPlan& plan) {
+    const auto check = [&](const std::string& text, const std::string& file, int line,
+                           const std::string& field) {
+        if (text.empty()) return;
+        const render::CaptionFit fit = render::fit_caption(plan.render, text);
+        if (fit.fits) return;
+        throw_input_error(
+            file, line, field,
+            fmt::format("too long for the caption line of a {}x{} frame: {} of its characters "
+                        "fit (a wider --size, or a shorter caption)",
+                        plan.width, plan.height, fit.max_characters));
+    };
+    if (!plan.lesson.caption.empty()) {
+        // caption_at is "file:line: render.caption" (empty for a caption not read from a file).
+        const std::string& at = scene.render.caption_at;
+        check(plan.lesson.caption, "", 0, at.empty() ? "render.caption" : at);
+    }
+    for (const CaptionCue& cue : plan.lesson.captions) {
+        check(cue.text, cue.file, cue.line, "render.captions.text");
+    }
+}
+
 }  // namespace
 
 // ------------------------------------------------------------------------------------------------
@@ -329,6 +353,7 @@ PipelineResult render_video(const Scene& scene, const RenderPlan& plan,
     options.height = plan.height;
     options.fps = plan.fps;
     options.cancel = cancel;
+    check_captions_fit(scene, plan);
     video::VideoWriter writer(options);  // validates, checks the path, creates the temporary
     std::unique_ptr<render::PreviewWindow> preview = open_preview_if_asked(plan, hooks);
     render::Renderer renderer(plan.render, render_backend(preview.get(), hooks), hooks.notice);
@@ -371,6 +396,7 @@ PipelineResult render_still(const Scene& scene, const RenderPlan& plan,
                             const PipelineHooks& hooks) {
     const std::atomic<bool>* cancel =
         hooks.interrupts != nullptr ? &hooks.interrupts->flag() : nullptr;
+    check_captions_fit(scene, plan);
     // Opened first (it stays hidden until it has the image) so the renderer can share its GL.
     std::unique_ptr<render::PreviewWindow> preview = open_preview_if_asked(plan, hooks);
     render::Renderer renderer(plan.render, render_backend(preview.get(), hooks), hooks.notice);

@@ -206,13 +206,13 @@ int trail_length(const Scene& scene, std::int64_t frames) {
 render::PlotSize histogram_size(const Scene& scene) {
     // A distribution needs discs: below this many moving ones a histogram is noise.
     constexpr std::size_t enough_for_a_distribution = 200;
-    // "auto": only where it teaches. The lesson column is too narrow for a readable small plot
-    // at 2.8 % capitals, so a scene shows one when it asks ("large", e.g. maxwell-boltzmann).
+    // "auto": only where it teaches, i.e. where there are enough moving discs; a scene may ask
+    // for one anyway ("small"), or make it the subject ("large", e.g. maxwell-boltzmann).
     const std::string kind = scene.render.histogram.value_or("auto");
     if (kind == "large") return render::PlotSize::large;
-    if (kind == "small") {
-        return moving_disc_count(scene) >= enough_for_a_distribution ? render::PlotSize::small
-                                                                     : render::PlotSize::none;
+    if (kind == "small") return render::PlotSize::small;
+    if (kind == "auto" && moving_disc_count(scene) >= enough_for_a_distribution) {
+        return render::PlotSize::small;
     }
     return render::PlotSize::none;
 }

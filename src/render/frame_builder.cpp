@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 
 #include "collide/error.hpp"
@@ -73,6 +74,43 @@ Palette palette(Theme theme) noexcept {
     return {{22, 22, 28, 255},    {34, 36, 46, 255},    {205, 205, 215, 255},
             {95, 95, 120, 255},   {245, 245, 245, 255}, {215, 215, 222, 255},
             {150, 150, 160, 255}, {255, 40, 220, 255},  {225, 225, 232, 255}};
+}
+
+CaptionFit fit_caption(const RenderConfig& config, std::string_view caption) {
+    if (config.overlays != OverlayLevel::lesson || config.width < compact_width) return {};
+    LayoutInput input;
+    input.width = config.width;
+    input.height = config.height;
+    input.boxes = {Box{}};  // the caption line spans the frame whatever the panels
+    const FrameLayout layout = compute_layout(input);
+    const TextSlot* slot = layout.slot(TextRole::caption);
+    if (slot == nullptr) return {};
+    const FontAtlas font(config.font_path, slot->pixel_height);
+    const std::string text(caption);
+    if (font.text_width(text) <= slot->rect.width()) return {};
+    // Characters (UTF-8 lead bytes) of the longest prefix that fits.
+    CaptionFit fit{false, 0};
+    std::size_t characters = 0;
+    for (std::size_t i = 1; i <= text.size(); ++i) {
+        const bool ends_character =
+            i == text.size() || (static_cast<unsigned char>(text[i]) & 0xC0U) != 0x80U;
+        if (!ends_character) continue;
+        if (font.text_width(text.substr(0, i)) > slot->rect.width()) break;
+        fit.max_characters = ++characters;
+    }
+    return fit;
+}
+
+PlotColors plot_colors(Theme theme) noexcept {
+    if (theme == Theme::dark) return {};  // the plots' own defaults are the dark theme's
+    const Palette p = palette(theme);
+    // The zero line: halfway between the axis grey and the page, quieter than the axes.
+    const auto mix = [](std::uint8_t a, std::uint8_t b) {
+        return static_cast<std::uint8_t>((static_cast<int>(a) + static_cast<int>(b)) / 2);
+    };
+    const Rgba8 zero{mix(p.muted.r, p.background.r), mix(p.muted.g, p.background.g),
+                     mix(p.muted.b, p.background.b), 255};
+    return {p.text, p.muted, p.title, zero};
 }
 
 Rgb8 panel_accent(bool time_driven) noexcept {
@@ -193,8 +231,12 @@ FrameLayout FrameBuilder::layout_for(const FrameContent& frame) const {
         if (!panel.note.empty()) input.note_line = true;
     }
     input.large_plot = frame.histogram == PlotSize::large;
+    input.small_plot = frame.histogram == PlotSize::small;
+    // Speed colours beside a speed plot: the plot's axis is the colour bar (speed_axis_colors).
     input.color_legend =
-        config_.color_mode == ColorMode::speed || config_.color_mode == ColorMode::mass;
+        config_.color_mode == ColorMode::mass ||
+        (config_.color_mode == ColorMode::speed &&
+         (frame.histogram == PlotSize::none || config_.overlays != OverlayLevel::lesson));
     input.counter_rows = config_.overlays == OverlayLevel::full ? counter_rows(frame) : 0;
     for (std::size_t i = 0; i < frame.panels.size(); ++i) {
         const Snapshot* snapshot = frame.panels[i].snapshot;
@@ -628,7 +670,9 @@ void FrameBuilder::add_column(const FrameContent& frame) {
         }
         const auto count = static_cast<long long>(std::llround(std::min(panel.cost, 9.0e18)));
         std::string shown = with_separators(count);
-        if (head_font_->text_width(shown) > value->rect.width()) {
+        const Font value_font =
+            value->pixel_height >= head_font_->pixel_height() ? Font::head : Font::body;
+        if (atlas(value_font).text_width(shown) > value->rect.width()) {
             // Too many digits for the column: in words, in the body font.
             char words[48];
             const double c = panel.cost;
@@ -636,7 +680,7 @@ void FrameBuilder::add_column(const FrameContent& frame) {
                           c >= 1e9 ? c / 1e9 : c / 1e6);
             draw_text(Font::body, *value, words, palette_.title);
         } else {
-            draw_text(Font::head, *value, shown, palette_.title);
+            draw_text(value_font, *value, shown, palette_.title);
         }
     }
     const std::vector<const TextSlot*> energy = layout_.slots(TextRole::energy);
@@ -671,12 +715,16 @@ void FrameBuilder::add_column(const FrameContent& frame) {
             snapshots.push_back(panel.snapshot);
             colors.push_back(panel.accent);
         }
+        std::function<Rgb8(double)> axis_colors;
+        if (config_.color_mode == ColorMode::speed) {
+            axis_colors = [this](double t) { return shown_colormap(t); };
+        }
         draw_moving_speed_plot(list_.over, list_.text[0].glyphs, *body_font_, plot, snapshots,
                                colors, config_.speed_min, config_.speed_max,
-                               {palette_.text, palette_.muted, palette_.title});
+                               plot_colors(config_.theme), axis_colors);
     } else if (frame.energy_plot) {
         draw_drift_plot(list_.over, list_.text[0].glyphs, *body_font_, plot, frame.energy_drift,
-                        {palette_.text, palette_.muted, palette_.title});
+                        plot_colors(config_.theme));
     }
 }
 
@@ -778,8 +826,8 @@ void FrameBuilder::add_full_strip(const FrameContent& frame) {
     std::vector<const Snapshot*> snapshots;
     for (const PanelContent& panel : frame.panels) snapshots.push_back(panel.snapshot);
     draw_speed_plot(list_.over, text, font, histogram, snapshots, config_.speed_min,
-                    config_.speed_max);
-    draw_drift_plot(list_.over, text, font, drift, frame.energy_drift);
+                    config_.speed_max, plot_colors(config_.theme));
+    draw_drift_plot(list_.over, text, font, drift, frame.energy_drift, plot_colors(config_.theme));
     const float notes_baseline = strip.y1 - m * 0.5F - line + font.ascent();
     font.add_text(text, columns.x0, notes_baseline, join(frame.notes, "   \xC2\xB7   "),
                   counter_color());

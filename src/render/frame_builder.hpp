@@ -12,6 +12,7 @@
 #include "draw_list.hpp"
 #include "font.hpp"
 #include "layout.hpp"
+#include "plots.hpp"
 #include "trails.hpp"
 
 namespace collide::render {
@@ -34,6 +35,8 @@ struct Palette {
     Rgba8 outline;  ///< around discs with too little contrast against the box
 };
 [[nodiscard]] Palette palette(Theme theme) noexcept;
+/// A plot's text, axis, curve and zero-line colours in a theme (every level's plots use them).
+[[nodiscard]] PlotColors plot_colors(Theme theme) noexcept;
 
 /// How long an event popped off a panel's queue stays highlighted, in seconds of video.
 inline constexpr double queue_pop_seconds = 0.8;

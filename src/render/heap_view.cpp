@@ -1,11 +1,7 @@
-// Frames of a priority-queue lesson: lay out the token strip and the panels, build triangles
-// (edges, slots, boxes), discs (tree nodes) and glyphs on the CPU, draw them with three GL calls
-// into an FBO, read it back and blend the text in on the CPU (glyph_blit.hpp), as the collision
-// renderer does. The GL plumbing here is a small copy of the idea in renderer.cpp (FBO, overlay
-// and disc programs), written for this module so that neither file depends on the other.
+// Frames of a priority-queue lesson: lay out the token strip and the panels, build a DrawList
+// (edges, slots and boxes as triangles, tree nodes as discs, glyphs per font size) on the CPU, and
+// draw it through GlTarget, the collision renderer's GL half: one GL path for every picture.
 #include "collide/render/heap_view.hpp"
-
-#include <glad/gl.h>
 
 #include <algorithm>
 #include <cmath>
@@ -15,12 +11,11 @@
 #include <string_view>
 
 #include "collide/error.hpp"
+#include "draw_list.hpp"
 #include "font.hpp"
-#include "gl_objects.hpp"
-#include "glyph_blit.hpp"
+#include "gl_target.hpp"
 #include "heap_view_layout.hpp"
 #include "overlay_geometry.hpp"
-#include "shaders.hpp"
 
 namespace collide::render {
 
@@ -48,36 +43,58 @@ std::size_t max_legible_keys(std::size_t panels) noexcept {
 namespace {
 
 // ---------------------------------------------------------------------------------------------
-// Colours: the collision video's dark theme; highlights chosen to stay apart for colour-blind
-// viewers (amber / blue / green / purple / red differ in lightness too).
+// Colours: the collision video's themes; highlights chosen to stay apart for colour-blind
+// viewers (amber / blue / green / purple / red differ in lightness too), the same in both themes
+// (their text is chosen against the highlight, not the page).
 
-constexpr Rgba8 background_color{22, 22, 28, 255};
-constexpr Rgba8 panel_color{32, 34, 44, 255};
-constexpr Rgba8 title_color{245, 245, 245, 255};
-constexpr Rgba8 counter_color{190, 190, 200, 255};
-constexpr Rgba8 caption_color{255, 255, 255, 255};
-constexpr Rgba8 edge_color{105, 108, 128, 255};
-constexpr Rgba8 slot_color{52, 56, 74, 255};
-constexpr Rgba8 slot_outline{150, 152, 170, 255};
-constexpr Rgba8 index_color{165, 168, 185, 255};
-constexpr Rgba8 node_outline{215, 215, 225, 255};
-constexpr Rgba8 sorted_fill{40, 43, 55, 255};
-constexpr Rgba8 sorted_text{150, 152, 165, 255};
-constexpr Rgba8 token_done{200, 200, 210, 255};
-constexpr Rgba8 token_todo{110, 112, 128, 255};
+struct HeapPalette {
+    Rgba8 background;
+    Rgba8 panel;
+    Rgba8 title;
+    Rgba8 counter;
+    Rgba8 caption;
+    Rgba8 edge;
+    Rgba8 slot;          ///< a plain slot's fill
+    Rgba8 slot_outline;  ///< around a slot holding a key
+    Rgba8 empty;         ///< outlines of the capacity's empty places (nodes and slots)
+    Rgba8 node;          ///< a plain node's fill
+    Rgba8 index;
+    Rgba8 node_outline;
+    Rgba8 sorted_fill;
+    Rgba8 sorted_text;
+    Rgba8 token_done;
+    Rgba8 token_todo;
+    Rgba8 map_header;
+};
+
+HeapPalette heap_palette(Theme theme) noexcept {
+    if (theme == Theme::light) {
+        return {{236, 236, 240, 255}, {255, 255, 255, 255}, {10, 10, 15, 255},
+                {55, 55, 65, 255},    {20, 20, 25, 255},    {150, 152, 170, 255},
+                {226, 229, 238, 255}, {85, 88, 105, 255},   {195, 197, 210, 255},
+                {214, 218, 230, 255}, {80, 82, 98, 255},    {40, 40, 50, 255},
+                {205, 207, 216, 255}, {95, 97, 110, 255},   {35, 35, 45, 255},
+                {150, 152, 165, 255}, {75, 77, 95, 255}};
+    }
+    return {{22, 22, 28, 255},    {32, 34, 44, 255},    {245, 245, 245, 255}, {190, 190, 200, 255},
+            {255, 255, 255, 255}, {105, 108, 128, 255}, {52, 56, 74, 255},    {150, 152, 170, 255},
+            {70, 72, 90, 255},    {58, 62, 84, 255},    {165, 168, 185, 255}, {215, 215, 225, 255},
+            {40, 43, 55, 255},    {150, 152, 165, 255}, {200, 200, 210, 255}, {110, 112, 128, 255},
+            {170, 172, 190, 255}};
+}
+
 constexpr Rgba8 token_now_fill{240, 170, 40, 255};
 constexpr Rgba8 dark_text{20, 20, 24, 255};
-constexpr Rgba8 map_header{170, 172, 190, 255};
 
 struct MarkStyle {
     Rgba8 fill;
     Rgba8 text;
 };
 
-MarkStyle style_of(SlotMark mark) noexcept {
+MarkStyle style_of(SlotMark mark, const HeapPalette& palette) noexcept {
     switch (mark) {
         case SlotMark::plain:
-            return {slot_color, title_color};
+            return {palette.slot, palette.title};
         case SlotMark::compared:
             return {{240, 170, 40, 255}, dark_text};
         case SlotMark::moving:
@@ -93,7 +110,7 @@ MarkStyle style_of(SlotMark mark) noexcept {
         case SlotMark::sinking:
             return {{240, 170, 40, 255}, dark_text};
     }
-    return {slot_color, title_color};
+    return {palette.slot, palette.title};
 }
 
 Rgba8 faded(Rgba8 c, float alpha) noexcept {
@@ -105,15 +122,6 @@ Rgba8 faded(Rgba8 c, float alpha) noexcept {
 PointF lerp(PointF a, PointF b, float t) noexcept {
     return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t};
 }
-
-/// The vertex layout of shaders/disc.vert (same as the collision renderer's, 20 bytes).
-struct NodeInstance {
-    float x, y;
-    float radius;
-    float style;  // 0 filled, > 0 ring width
-    Rgba8 color;
-};
-static_assert(sizeof(NodeInstance) == 20);
 
 /// Greedy word wrap to `width` pixels; at most `max_lines` lines (the last one ends in "...").
 std::vector<std::string> wrap(const FontAtlas& font, const std::string& text, float width,
@@ -148,110 +156,35 @@ struct PanelGeometry {
 // ---------------------------------------------------------------------------------------------
 
 struct HeapRenderer::Impl {
-    // Declaration order: the context outlives every GL object.
     HeapViewConfig config;
-    std::unique_ptr<Context> context;
-    GladGLContext gl{};
-    GlObject color_texture;
-    GlObject framebuffer;
-    GlObject overlay_program;
-    GlObject node_program;
-    GlObject overlay_vertex_array;
-    GlObject overlay_buffer;
-    GlObject node_vertex_array;
-    GlObject node_buffer;
-    GLint overlay_frame_size = -1;
-    GLint node_frame_size = -1;
-    GLint node_as_points = -1;
+    HeapPalette colors;
+    GlTarget target;  // the context and every GL object
 
-    std::map<int, FontAtlas> fonts;           // by pixel height
-    std::map<int, OverlayBatch> text_layers;  // glyphs per font, blended after readback
-    OverlayBatch under;                       // slots, edges, boxes: before the nodes
-    OverlayBatch over;                        // token marker etc.: after the nodes
-    std::vector<NodeInstance> nodes;
-    std::vector<NodeInstance> node_vertices;
+    std::map<int, FontAtlas> fonts;       // by pixel height (map nodes: stable addresses)
+    std::map<int, std::size_t> text_run;  // pixel height -> its run in list.text
+    DrawList list;                        // slots, edges, boxes under the nodes; glyphs
+    OverlayBatch& under = list.under;     // slots, edges, boxes: before the nodes
+    OverlayBatch& over = list.over;       // token marker etc.: after the nodes
 
     float unit = 1.0F;        // pixels per 1/720 of the frame height
     std::size_t columns = 1;  // of the panel grid in the frame being built
 
     Impl(const HeapViewConfig& cfg, std::unique_ptr<Context> ctx)
-        : config(cfg), context(std::move(ctx)) {
+        : config(cfg),
+          colors(heap_palette(cfg.theme)),
+          target(cfg.width, cfg.height, std::move(ctx)) {
         config.validate();
-        if (!context) throw_runtime_error("heap view: no GL context");
-        context->make_current();
-        if (gladLoadGLContext(&gl, context->proc_loader()) == 0)
-            throw_runtime_error("GL: cannot load the GL 3.3 core entry points");
         unit = static_cast<float>(config.height) / 720.0F;
         (void)font(caption_px());  // a missing font fails here, before any frame
-        create_framebuffer();
-        create_programs();
-        create_vertex_arrays();
-        check_gl(gl, "heap view setup");
     }
 
-    ~Impl() {
-        try {
-            context->make_current();
-        } catch (...) {  // NOLINT(bugprone-empty-catch): nothing sane to do in a destructor
-        }
-    }
-    Impl(const Impl&) = delete;
-    Impl& operator=(const Impl&) = delete;
-
-    // ------------------------------------------------------------------ GL setup
-
-    void create_framebuffer() {
-        color_texture = make_texture(gl);
-        gl.BindTexture(GL_TEXTURE_2D, color_texture.get());
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-        gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, config.width, config.height, 0, GL_RGBA,
-                      GL_UNSIGNED_BYTE, nullptr);
-        gl.BindTexture(GL_TEXTURE_2D, 0);
-        framebuffer = make_framebuffer(gl);
-        gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer.get());
-        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
-                                color_texture.get(), 0);
-        if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-            throw_runtime_error("GL: the heap view's framebuffer is incomplete");
-    }
-
-    void create_programs() {
-        overlay_program =
-            make_program(gl, shaders::overlay_vert, shaders::overlay_frag, "overlay shader");
-        node_program = make_program(gl, shaders::disc_vert, shaders::disc_frag, "disc shader");
-        overlay_frame_size = gl.GetUniformLocation(overlay_program.get(), "frame_size");
-        node_frame_size = gl.GetUniformLocation(node_program.get(), "frame_size");
-        node_as_points = gl.GetUniformLocation(node_program.get(), "as_points");
-    }
-
-    void create_vertex_arrays() {
-        const auto at = [](std::size_t offset) { return reinterpret_cast<const void*>(offset); };
-        overlay_vertex_array = make_vertex_array(gl);
-        overlay_buffer = make_buffer(gl);
-        gl.BindVertexArray(overlay_vertex_array.get());
-        gl.BindBuffer(GL_ARRAY_BUFFER, overlay_buffer.get());
-        constexpr auto stride = static_cast<GLsizei>(sizeof(OverlayVertex));
-        gl.VertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, stride, at(offsetof(OverlayVertex, x)));
-        gl.VertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
-                               at(offsetof(OverlayVertex, color)));
-        gl.EnableVertexAttribArray(0);
-        gl.EnableVertexAttribArray(1);
-
-        node_vertex_array = make_vertex_array(gl);
-        node_buffer = make_buffer(gl);
-        gl.BindVertexArray(node_vertex_array.get());
-        gl.BindBuffer(GL_ARRAY_BUFFER, node_buffer.get());
-        constexpr auto node_stride = static_cast<GLsizei>(sizeof(NodeInstance));
-        gl.VertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, node_stride,
-                               at(offsetof(NodeInstance, x)));
-        gl.VertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, node_stride,
-                               at(offsetof(NodeInstance, radius)));
-        gl.VertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, node_stride,
-                               at(offsetof(NodeInstance, style)));
-        gl.VertexAttribPointer(3, 4, GL_UNSIGNED_BYTE, GL_TRUE, node_stride,
-                               at(offsetof(NodeInstance, color)));
-        for (GLuint location = 0; location < 4; ++location) gl.EnableVertexAttribArray(location);
-        gl.BindVertexArray(0);
+    /// A node: its fill or ring, drawn in order (each node its own group: a moving node stays
+    /// over the still ones whatever GlTarget draws as point sprites or quads).
+    void add_node(const DiscInstance& disc) {
+        list.discs.push_back(disc);
+        list.disc_groups.push_back(
+            {list.discs.size(),
+             {0.0F, 0.0F, static_cast<float>(config.width), static_cast<float>(config.height)}});
     }
 
     // ------------------------------------------------------------------ text
@@ -266,8 +199,10 @@ struct HeapRenderer::Impl {
     }
 
     void text(const FontAtlas& f, float x, float baseline, std::string_view s, Rgba8 color) {
-        f.add_text(text_layers[static_cast<int>(std::lround(f.pixel_height()))], x, baseline, s,
-                   color);
+        const int px = static_cast<int>(std::lround(f.pixel_height()));
+        const auto [run, fresh] = text_run.try_emplace(px, list.text.size());
+        if (fresh) list.text.push_back({&f, {}});
+        f.add_text(list.text[run->second].glyphs, x, baseline, s, color);
     }
 
     /// Text centred on (cx, cy), by the height of a capital letter.
@@ -314,10 +249,8 @@ struct HeapRenderer::Impl {
     }
 
     void build(const HeapFrameView& frame) {
-        under.clear();
-        over.clear();
-        nodes.clear();
-        for (auto& [px, layer] : text_layers) layer.clear();
+        list.clear();  // keeps the text runs (one per font size), emptied
+        list.background = colors.background;
         const auto w = static_cast<float>(config.width);
         const auto h = static_cast<float>(config.height);
         columns = panel_columns(frame.panels.size());
@@ -360,8 +293,8 @@ struct HeapRenderer::Impl {
         float x = 0.5F * (w - span(first, last) + gap);
         const float baseline = 0.5F * height + 0.36F * f.pixel_height();
         for (std::size_t i = first; i < last; ++i) {
-            Rgba8 color = token_todo;
-            if (frame.current_token && i < *frame.current_token) color = token_done;
+            Rgba8 color = colors.token_todo;
+            if (frame.current_token && i < *frame.current_token) color = colors.token_done;
             if (frame.current_token && i == *frame.current_token) {
                 const float pad = 0.3F * f.pixel_height();
                 under.add_rect({x - pad, baseline - 1.05F * f.pixel_height(), x + widths[i] + pad,
@@ -458,7 +391,7 @@ struct HeapRenderer::Impl {
 
     void build_panel(const HeapPanelView& p, RectF r) {
         const PanelGeometry g = layout_panel(p, r);
-        under.add_rect(r, panel_color);
+        under.add_rect(r, colors.panel);
         build_header(p, g);
         if (p.tree) build_tree(p, g);
         build_array(p, g);
@@ -488,15 +421,15 @@ struct HeapRenderer::Impl {
         const float room = g.panel.width() - 2.0F * pad;
         const float width = title.text_width(p.title);
         const FontAtlas& fitted = width <= room ? title : font(title.pixel_height() * room / width);
-        text(fitted, g.panel.x0 + pad, g.title_baseline, p.title, title_color);
+        text(fitted, g.panel.x0 + pad, g.title_baseline, p.title, colors.title);
         const FontAtlas& small = font(caption_px() * 0.85F);
         if (g.counter_lines == 1) {
-            text(small, g.panel.x0 + pad, g.counters_baseline, counters_line(p), counter_color);
+            text(small, g.panel.x0 + pad, g.counters_baseline, counters_line(p), colors.counter);
             return;
         }
         float baseline = g.counters_baseline;
         for (const std::string& c : p.counters) {
-            text(small, g.panel.x0 + pad, baseline, c, counter_color);
+            text(small, g.panel.x0 + pad, baseline, c, colors.counter);
             baseline += small.line_height();
         }
     }
@@ -537,15 +470,12 @@ struct HeapRenderer::Impl {
                              p.slots[parent].mark == p.slots[i].mark &&
                              p.slots[i].mark != SlotMark::leaving;
             under.add_line(g.nodes[parent], g.nodes[i], lit ? 2.2F * edge_w : edge_w,
-                           lit ? style_of(p.slots[i].mark).fill : edge_color);
+                           lit ? style_of(p.slots[i].mark, colors).fill : colors.edge);
         }
         // Empty places of the capacity, faint, so the shape of a full tree shows.
         for (std::size_t i = in_tree; i < g.nodes.size(); ++i) {
-            nodes.push_back({g.nodes[i].x,
-                             g.nodes[i].y,
-                             g.node_radius,
-                             std::max(1.0F, unit),
-                             {70, 72, 90, 255}});
+            add_node(
+                {g.nodes[i].x, g.nodes[i].y, g.node_radius, std::max(1.0F, unit), colors.empty});
         }
         const FontAtlas& f = key_font(2.0F * g.node_radius);
         // Still nodes first, moving ones on top.
@@ -560,11 +490,11 @@ struct HeapRenderer::Impl {
     }
 
     void draw_node(const HeapSlotView& s, PointF c, float radius, float alpha, const FontAtlas& f) {
-        const MarkStyle style = style_of(s.mark);
-        const Rgba8 fill = s.mark == SlotMark::plain ? Rgba8{58, 62, 84, 255} : style.fill;
-        nodes.push_back({c.x, c.y, radius, 0.0F, faded(fill, alpha)});
-        nodes.push_back(
-            {c.x, c.y, radius, std::max(1.5F, 2.5F * unit), faded(node_outline, alpha)});
+        const MarkStyle style = style_of(s.mark, colors);
+        const Rgba8 fill = s.mark == SlotMark::plain ? colors.node : style.fill;
+        add_node({c.x, c.y, radius, 0.0F, faded(fill, alpha)});
+        add_node(
+            {c.x, c.y, radius, std::max(1.5F, 2.5F * unit), faded(colors.node_outline, alpha)});
         centred(f, c, s.key, faded(style.text, alpha));
     }
 
@@ -578,24 +508,24 @@ struct HeapRenderer::Impl {
         for (std::size_t i = 0; i < std::max(p.capacity, p.slots.size()); ++i) {
             const PointF c = slot_centre(g, p, i);
             const RectF box{c.x - 0.5F * s, g.slot_top, c.x + 0.5F * s, g.slot_top + s};
-            Rgba8 fill = background_color;
+            Rgba8 fill = colors.background;
             if (i < p.slots.size()) {
                 const SlotMark m = p.slots[i].mark;
-                fill = i >= p.heap_size ? sorted_fill : style_of(m).fill;
+                fill = i >= p.heap_size ? colors.sorted_fill : style_of(m, colors).fill;
                 if (m == SlotMark::inserted || m == SlotMark::leaving) fill = faded(fill, p.fade);
-                if (p.swap && (i == p.swap->a || i == p.swap->b)) fill = slot_color;  // tile away
+                if (p.swap && (i == p.swap->a || i == p.swap->b)) fill = colors.slot;  // tile away
             }
             under.add_rect(box, fill);
-            under.add_frame(box, outline,
-                            i < p.slots.size() ? slot_outline : Rgba8{70, 72, 90, 255});
+            under.add_frame(box, outline, i < p.slots.size() ? colors.slot_outline : colors.empty);
             const std::string index = std::to_string(static_cast<long long>(i) + p.index_base);
-            centred(small, {c.x, g.slot_top + s + 0.62F * small.line_height()}, index, index_color);
+            centred(small, {c.x, g.slot_top + s + 0.62F * small.line_height()}, index,
+                    colors.index);
         }
         // Keys; an exchange slides the two keys as tiles, one over the row and one under it.
         for (std::size_t i = 0; i < p.slots.size(); ++i) {
             PointF c = slot_centre(g, p, i);
             const SlotMark m = p.slots[i].mark;
-            Rgba8 color = i >= p.heap_size ? sorted_text : style_of(m).text;
+            Rgba8 color = i >= p.heap_size ? colors.sorted_text : style_of(m, colors).text;
             if (p.swap && (i == p.swap->a || i == p.swap->b)) {
                 const std::size_t other = i == p.swap->a ? p.swap->b : p.swap->a;
                 // Over the row clear of its keys; under it only as far as the reserved room.
@@ -605,15 +535,15 @@ struct HeapRenderer::Impl {
                 c.y += arc;
                 const RectF tile{c.x - 0.46F * s, c.y - 0.46F * s, c.x + 0.46F * s,
                                  c.y + 0.46F * s};
-                under.add_rect(tile, style_of(SlotMark::moving).fill);
-                under.add_frame(tile, outline, node_outline);
+                under.add_rect(tile, style_of(SlotMark::moving, colors).fill);
+                under.add_frame(tile, outline, colors.node_outline);
             }
             centred(f, c, p.slots[i].key, faded(color, alpha_of(p, m)));
         }
         if (p.heap_size < p.slots.size()) {
             const PointF c = slot_centre(g, p, p.heap_size);
             text(small, c.x - 0.5F * s, g.slot_top - 0.35F * small.line_height(), "sorted",
-                 index_color);
+                 colors.index);
         }
     }
 
@@ -627,7 +557,7 @@ struct HeapRenderer::Impl {
     void build_map(const HeapPanelView& p, const PanelGeometry& g) {
         const FontAtlas& head = font(caption_px() * 0.85F);
         const FontAtlas& f = map_font(g);
-        text(head, g.map.x0, g.map.y0 + head.ascent(), "map: key -> index", map_header);
+        text(head, g.map.x0, g.map.y0 + head.ascent(), "map: key -> index", colors.map_header);
         const float key_y = g.map.y0 + head.line_height() + 0.5F * f.line_height();
         const float index_y = key_y + f.line_height();
         for (std::size_t c = 0; c < p.map.size(); ++c) {
@@ -636,11 +566,11 @@ struct HeapRenderer::Impl {
             if (row.updated) {
                 under.add_rect({x - 0.45F * g.slot_size, index_y - 0.5F * f.line_height(),
                                 x + 0.45F * g.slot_size, index_y + 0.5F * f.line_height()},
-                               style_of(SlotMark::moving).fill);
+                               style_of(SlotMark::moving, colors).fill);
             }
-            centred(f, {x, key_y}, row.key, title_color);
+            centred(f, {x, key_y}, row.key, colors.title);
             centred(f, {x, index_y}, row.index,
-                    row.updated ? Rgba8{255, 255, 255, 255} : index_color);
+                    row.updated ? Rgba8{255, 255, 255, 255} : colors.index);
         }
     }
 
@@ -652,74 +582,18 @@ struct HeapRenderer::Impl {
             wrap(f, p.caption, g.panel.width() - 2.0F * pad, max_lines);
         float baseline = g.caption_top + f.ascent();
         for (const std::string& line : lines) {
-            text(f, g.panel.x0 + pad, baseline, line, caption_color);
+            text(f, g.panel.x0 + pad, baseline, line, colors.caption);
             baseline += f.line_height();
         }
     }
 
     // ------------------------------------------------------------------ GL
 
-    void draw_triangles(const OverlayBatch& batch) {
-        if (batch.vertices().empty()) return;
-        gl.UseProgram(overlay_program.get());
-        gl.Uniform2f(overlay_frame_size, static_cast<float>(config.width),
-                     static_cast<float>(config.height));
-        gl.BindVertexArray(overlay_vertex_array.get());
-        gl.BindBuffer(GL_ARRAY_BUFFER, overlay_buffer.get());
-        gl.BufferData(GL_ARRAY_BUFFER,
-                      static_cast<GLsizeiptr>(batch.vertices().size() * sizeof(OverlayVertex)),
-                      batch.vertices().data(), GL_STREAM_DRAW);
-        gl.DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(batch.vertices().size()));
-    }
-
-    void draw_nodes() {
-        if (nodes.empty()) return;
-        // Six vertices per node: the two triangles of disc.vert's quad (no point sprites: nodes
-        // are few and large).
-        node_vertices.clear();
-        for (const NodeInstance& n : nodes) node_vertices.insert(node_vertices.end(), 6, n);
-        gl.UseProgram(node_program.get());
-        gl.Uniform2f(node_frame_size, static_cast<float>(config.width),
-                     static_cast<float>(config.height));
-        gl.Uniform1i(node_as_points, 0);
-        gl.BindVertexArray(node_vertex_array.get());
-        gl.BindBuffer(GL_ARRAY_BUFFER, node_buffer.get());
-        gl.BufferData(GL_ARRAY_BUFFER,
-                      static_cast<GLsizeiptr>(node_vertices.size() * sizeof(NodeInstance)),
-                      node_vertices.data(), GL_STREAM_DRAW);
-        gl.DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(node_vertices.size()));
-    }
-
     void render(const HeapFrameView& frame, Image& out) {
         check(frame);
-        context->make_current();
         build(frame);
-        gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer.get());
-        gl.Viewport(0, 0, config.width, config.height);
-        gl.ClearColor(background_color.r / 255.0F, background_color.g / 255.0F,
-                      background_color.b / 255.0F, 1.0F);
-        gl.Clear(GL_COLOR_BUFFER_BIT);
-        gl.Enable(GL_BLEND);
-        gl.BlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied, as the shaders write
-        draw_triangles(under);
-        draw_nodes();
-        draw_triangles(over);
-        gl.BindVertexArray(0);
-        gl.Finish();
-        check_gl(gl, "drawing a heap frame");
-
-        if (out.width != config.width || out.height != config.height)
-            out = Image(config.width, config.height);
-        gl.BindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer.get());
-        gl.ReadBuffer(GL_COLOR_ATTACHMENT0);
-        gl.PixelStorei(GL_PACK_ALIGNMENT, 4);
-        gl.ReadPixels(0, 0, config.width, config.height, GL_RGBA, GL_UNSIGNED_BYTE,
-                      out.rgba.data());
-        check_gl(gl, "reading the heap frame back");
-        for (const auto& [px, layer] : text_layers) {
-            const FontAtlas& f = fonts.at(px);
-            blend_glyphs(out, layer.glyphs(), f.bitmap(), f.atlas_size());
-        }
+        target.draw(list);
+        target.read_pixels(list, out);
     }
 };
 

@@ -161,25 +161,33 @@ FrameLayout lesson_layout(const LayoutInput& in) {
         y += h;
     };
     if (fits(line)) add(TextRole::clock, -1, line, body);
+    const auto panels = static_cast<float>(in.boxes.size());
+    // Beside a small plot the work figures are body sized: the plot needs the height.
+    const float value_line = in.small_plot ? line : head_line;
+    const float value_px = in.small_plot ? body : head;
+    const float cost_h = gap + line + panels * (line + bar_h + gap + value_line);
+    const float energy_h = gap + 2.0F * line;
     if (in.large_plot) {
-        // The plot is the subject: it comes first and takes most of the column.
-        const float h = std::round(0.62F * (column.area.y1 - y));
+        // The plot is the subject: it comes first and takes what the energy line leaves, and
+        // the cost graphic's room too unless the plot keeps at least 7 lines beside it.
+        const float rest = column.area.y1 - y - energy_h;
+        const bool with_cost = rest - cost_h >= 7.0F * line;
+        const float h = std::max(0.0F, with_cost ? rest - cost_h : rest);
         column.plot = {column_x0, y + gap, column_x0 + column_w, y + h};
         y += h;
     }
-    const auto panels = static_cast<float>(in.boxes.size());
-    if (fits(gap + line + panels * (line + bar_h + gap + head_line))) {
+    if (fits(cost_h)) {
         y += gap;
         add(TextRole::cost_heading, -1, line, body);
         const float bars_top = y;
         for (std::size_t i = 0; i < in.boxes.size(); ++i) {
             add(TextRole::cost_label, static_cast<int>(i), line, body);
             y += bar_h + gap;  // the bar itself
-            add(TextRole::cost_value, static_cast<int>(i), head_line, head);
+            add(TextRole::cost_value, static_cast<int>(i), value_line, value_px);
         }
         column.bars = {column_x0, bars_top, column_x0 + column_w, y};
     }
-    if (fits(gap + 2.0F * line)) {
+    if (fits(energy_h)) {
         y += gap;
         add(TextRole::energy, -1, line, body);  // "Energy" / "conserved": two narrow lines
         add(TextRole::energy, -1, line, body);
@@ -191,8 +199,11 @@ FrameLayout lesson_layout(const LayoutInput& in) {
         add(TextRole::legend, -1, line, body);
     }
     y += gap;
-    if (!in.large_plot && column.area.y1 - y > 3.0F * line) {
-        column.plot = {column_x0, y, column_x0 + column_w, column.area.y1};
+    // A small plot may reach down beside the figures row: the figures stay under their own box,
+    // so that strip between (or beside) the boxes is free.
+    const float plot_bottom = in.small_plot ? column.area.y1 + gap + head_line : column.area.y1;
+    if (!in.large_plot && plot_bottom - y > 3.0F * line) {
+        column.plot = {column_x0, y, column_x0 + column_w, plot_bottom};
     }
     return layout;
 }

@@ -83,7 +83,9 @@ struct ColumnLayout {
     RectF area;        ///< the whole column
     RectF bars;        ///< the cost graphic's bars area
     RectF legend_bar;  ///< the colour bar (speed/mass colours), above its `legend` text slot
-    RectF plot;        ///< what is left below: a plot (histogram) when one is shown
+    RectF plot;        ///< what is left below: a plot (histogram) when one is shown; with
+                       ///< small_plot it reaches down to the figures row's bottom (the room
+                       ///< between the two boxes' figures is free)
 };
 
 struct FrameLayout {
@@ -113,6 +115,8 @@ struct LayoutInput {
     std::vector<Box> boxes;     ///< 1 or 2 panels, left to right (only their shapes matter)
     bool note_line = false;     ///< lesson: a note line under the figures (dt > frame)
     bool large_plot = false;    ///< lesson: the plot is the subject: a wider column
+    bool small_plot = false;    ///< lesson: a plot below the column's text, reaching down
+                                ///< beside the figures row so it is tall enough to read
     bool color_legend = false;  ///< lesson: a colour bar (speed or mass colours) in the column
     int counter_rows = 1;       ///< full: rows of the counter grid
     int queue_panel = -1;       ///< lesson: this panel shows its event queue in a strip below it

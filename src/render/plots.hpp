@@ -4,6 +4,8 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
+#include <string>
 #include <vector>
 
 #include "collide/render/renderer.hpp"
@@ -15,15 +17,20 @@ namespace collide::render {
 
 /// Histogram of |v| as a probability density over [v_min, v_max] with `bins` bins (speeds
 /// outside the range are counted in no bin, so the area is the fraction inside). O(N).
-[[nodiscard]] std::vector<double> speed_density(const Snapshot& snapshot, double v_min,
-                                                double v_max, int bins);
+/// Discs of mass `heavy` or more (and non-finite masses) are left out when `heavy` is given
+/// (moving_mass_limit: the moving discs only, without copying them).
+[[nodiscard]] std::vector<double> speed_density(
+    const Snapshot& snapshot, double v_min, double v_max, int bins,
+    double heavy = std::numeric_limits<double>::infinity());
 
 /// The 2D Maxwell-Boltzmann speed density of a snapshot's temperature, kT = mean kinetic
 /// energy per disc (k_B = 1): with several masses a mixture, one term per mass weighted by its
 /// share of discs: f(v) = sum_g (n_g/N) (m_g v / kT) exp(-m_g v^2 / 2kT).
 class MaxwellBoltzmann {
   public:
-    explicit MaxwellBoltzmann(const Snapshot& snapshot);
+    /// Over the discs lighter than `heavy` (all finite-mass discs by default).
+    explicit MaxwellBoltzmann(const Snapshot& snapshot,
+                              double heavy = std::numeric_limits<double>::infinity());
     [[nodiscard]] double kT() const noexcept { return kT_; }
     [[nodiscard]] double density(double speed) const noexcept;
 
@@ -37,20 +44,23 @@ class MaxwellBoltzmann {
 };
 
 /// Colours of a plot's text, axes and reference curve (the theme's).
+/// The defaults are the dark theme's; FrameBuilder passes its theme's (plot_colors(Palette)).
 struct PlotColors {
     Rgba8 label{210, 210, 215, 255};
     Rgba8 axis{150, 150, 160, 255};
     Rgba8 curve{250, 250, 250, 255};
+    Rgba8 zero_line{90, 90, 100, 255};  ///< the drift plot's zero
 };
 
 /// Per-panel series colours (time-driven left, event-driven right).
 [[nodiscard]] Rgb8 panel_color(std::size_t panel) noexcept;
 
 /// Shapes go to `batch`, text to `text`.
-/// Draws the histograms of every snapshot (step outlines in panel colours) and the
-/// Maxwell-Boltzmann curve of the last one (white) inside `area`.
+/// Draws the histograms of every snapshot's moving discs (step outlines in panel colours) and
+/// the Maxwell-Boltzmann curve of the last one's inside `area`.
 void draw_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& font, RectF area,
-                     const std::vector<const Snapshot*>& snapshots, double v_min, double v_max);
+                     const std::vector<const Snapshot*>& snapshots, double v_min, double v_max,
+                     const PlotColors& colors = {});
 
 /// The indices (increasing) of the points of `series` worth drawing, `column` mapping a time to
 /// its pixel column: of each run of consecutive points in one column, the first, the lowest, the
@@ -73,13 +83,33 @@ inline constexpr double immovable_mass_ratio = 1000.0;
 
 /// The snapshot's discs that can move (finite mass below immovable_mass_ratio x the lightest).
 [[nodiscard]] Snapshot moving_discs(const Snapshot& snapshot);
+/// The mass from which a disc of `snapshot` counts as immovable: immovable_mass_ratio x the
+/// lightest (infinity for no discs). O(N), no copy.
+[[nodiscard]] double moving_mass_limit(const Snapshot& snapshot) noexcept;
+
+/// Where the lesson speed plot puts its parts inside its area (pure, tested): where the area is
+/// tall enough, a title line and the curve's name on a line of its own above the data area;
+/// otherwise the name inside the data area's top right corner (bars and curve stay below it);
+/// the axis labels' line under the data area.
+struct SpeedPlotLayout {
+    RectF title;        ///< empty when there is no room for a title line
+    RectF data;         ///< histogram bars and the curve
+    RectF curve_label;  ///< the curve's name (nothing else is drawn there)
+    RectF axis;         ///< "0", "speed" and the top speed
+    std::string title_text;
+    std::string curve_name;  ///< "Maxwell-Boltzmann", or "Maxwell" where that does not fit
+};
+[[nodiscard]] SpeedPlotLayout speed_plot_layout(const FontAtlas& font, RectF area);
 
 /// Lesson plot: histograms of the moving discs' speeds (one per snapshot, in `colors`) on the
 /// fixed range [v_min, v_max] and a fixed height, with the labelled Maxwell-Boltzmann curve of
 /// the last snapshot's moving discs and the axis labelled. Shapes go to `batch`, text to `text`.
+/// With `axis_colors` (t in [0, 1] from v_min to v_max to a colour) the speed axis is drawn as a
+/// colour bar: the discs' speed colours, so no separate colour legend is needed.
 void draw_moving_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& font,
                             RectF area, const std::vector<const Snapshot*>& snapshots,
                             const std::vector<Rgb8>& colors, double v_min, double v_max,
-                            const PlotColors& palette);
+                            const PlotColors& palette,
+                            const std::function<Rgb8(double)>& axis_colors = {});
 
 }  // namespace collide::render

@@ -234,7 +234,10 @@ class TomlReader {
         if (const toml::node* v = t.get("histogram")) {
             r.histogram = one_of(*v, "render.histogram", histogram_kinds);
         }
-        if (const toml::node* v = t.get("caption")) r.caption = caption(*v, "render.caption");
+        if (const toml::node* v = t.get("caption")) {
+            r.caption = caption(*v, "render.caption");
+            r.caption_at = where(*v, "render.caption");
+        }
         if (const toml::node* v = t.get("duration")) {
             r.duration = positive(*v, "render.duration");
             r.duration_at = where(*v, "render.duration");

@@ -2,10 +2,12 @@
 // from run to run), and every kind of bad input refused with exit 2 before anything is written.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <utility>
 
 #include "../support/temp_dir.hpp"
 #include "collide/video/png.hpp"
@@ -73,6 +75,39 @@ TEST_CASE("collide heap: side by side as GIF, heapsort as a PNG sequence, the la
     const collide::Image image = collide::video::read_png(last);
     CHECK(image.width == 320);
     CHECK(image.height == 180);
+}
+
+TEST_CASE("collide heap --theme light draws dark text on a light page, as collide render does") {
+    TempDir dir("heap_theme");
+    const auto still = [&](const std::string& theme, const char* name) {
+        const fs::path png = dir.path / name;
+        const auto r = run_collide("heap --ops \"P Q E * X\" --last-frame" + quick + theme +
+                                   " -o " + quoted(png));
+        REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+        return collide::video::read_png(png);
+    };
+    // Mean brightness of the frame and its darkest pixel's brightness.
+    const auto brightness = [](const collide::Image& image) {
+        double sum = 0.0;
+        int darkest = 255 * 3;
+        for (std::size_t i = 0; i + 3 < image.rgba.size(); i += 4) {
+            const int v = image.rgba[i] + image.rgba[i + 1] + image.rgba[i + 2];
+            sum += v;
+            darkest = std::min(darkest, v);
+        }
+        return std::pair<double, int>{sum / (3.0 * static_cast<double>(image.rgba.size() / 4)),
+                                      darkest / 3};
+    };
+    const auto [dark_mean, dark_min] = brightness(still("", "dark.png"));
+    const auto [light_mean, light_min] = brightness(still("--theme light", "light.png"));
+    CHECK(dark_mean < 80.0);    // the default: a dark page
+    CHECK(light_mean > 180.0);  // a light page...
+    CHECK(light_min < 60);      // ...with dark text on it
+    CHECK(brightness(still("--theme dark", "dark2.png")).first == doctest::Approx(dark_mean));
+    CHECK(contains(run_collide_bad_input("heap --ops P --theme sepia" + quick + "-o " +
+                                         quoted(dir.path / "x.mp4")),
+                   "--theme: unknown theme 'sepia' (expected dark or light)"));
+    CHECK(!fs::exists(dir.path / "x.mp4"));
 }
 
 TEST_CASE("collide heap: bad tokens exit 2 naming the token and its position") {

@@ -209,6 +209,41 @@ TEST_CASE("render: bad options and scenes exit 2 with a message and create no ou
     CHECK(fs::is_empty(dir.path));  // nothing written, not even a temporary
 }
 
+TEST_CASE("render: a caption too wide for the frame's caption line exits 2 saying how much fits") {
+    TempDir dir("caption_fit");
+    const fs::path scene = dir.path / "cap.toml";
+    std::ofstream(scene) << "title = \"Two discs\"\n[box]\nwidth = 1.0\nheight = 1.0\n"
+                            "[[disc]]\nposition = [0.3, 0.5]\nvelocity = [0.1, 0]\nradius = 0.05\n"
+                            "[[disc]]\nposition = [0.7, 0.5]\nvelocity = [-0.1, 0]\nradius = 0.05\n"
+                            "[render]\nduration = 4\n"
+                            "caption = \"Watch both discs meet in the middle and bounce back\"\n"
+                            "[[render.captions]]\nat = 2\n"
+                            "text = \"WWWWWWWWWWWWWWWWWWWWWWWWWWWWWWWWWWWWWWWWWWWWWWWWWWWW\"\n";
+    const fs::path png = dir.path / "x.png";
+    const fs::path mp4 = dir.path / "x.mp4";
+    // 52 wide letters are within the 64 characters a scene may write, but not within 1280 px.
+    const auto wide =
+        run_collide("render " + scene.string() + " --progress none -o " + mp4.string());
+    CHECK(wide.exit_code == 2);
+    CHECK_MESSAGE(
+        wide.output.find("cap.toml:17: render.captions.text: too long for the caption "
+                         "line of a 1280x720 frame: 44 of its characters fit") != std::string::npos,
+        wide.output);
+    CHECK(!fs::exists(mp4));
+    // The scene's caption (51 characters) fits 16:9 but not a square 600 px frame.
+    const auto square =
+        run_collide("thumbnail " + scene.string() + " --at 1 --size 600x600 -o " + png.string());
+    CHECK(square.exit_code == 2);
+    CHECK_MESSAGE(square.output.find("cap.toml:15: render.caption: too long for the caption line "
+                                     "of a 600x600 frame") != std::string::npos,
+                  square.output);
+    CHECK(!fs::exists(png));
+    // Below 480 px wide the compact form shows no caption: nothing to check.
+    const auto thumb =
+        run_collide("thumbnail " + scene.string() + " --at 1 --size 320x180 -o " + png.string());
+    CHECK_MESSAGE(thumb.exit_code == 0, thumb.output);
+}
+
 TEST_CASE("thumbnail --seed: the same seed gives the same picture, another seed another one") {
     TempDir dir("seed");
     const auto shot = [&](const std::string& seed, const std::string& name) {

@@ -91,6 +91,13 @@ TEST_CASE("heap frames: the indexed heap's map, in handle order, with the exchan
     CHECK(p.map[1].index == "1");
     CHECK(p.map[0].updated);
     CHECK(p.map[1].updated);
+    // The slide over (the step's rest), the keys have landed: the lit entries say where.
+    const render::HeapPanelView rest = heap_frame_at(t, show, time_of(t, 1, 2, 0.95)).panels[0];
+    REQUIRE(rest.swap);
+    CHECK(rest.swap->t == 1.0F);
+    CHECK(rest.map[0].index == "1");
+    CHECK(rest.map[1].index == "0");
+    CHECK(rest.map[0].updated);
     const render::HeapPanelView end = heap_frame_at(t, show, t.duration()).panels[0];
     CHECK(end.map[0].index == "1");  // 5 went down to slot 1
     CHECK(!end.map[0].updated);

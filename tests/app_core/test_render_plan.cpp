@@ -309,6 +309,31 @@ TEST_CASE("captions follow the scene's schedule, and the intro card fades out af
     CHECK(plan_render(request, scene).lesson.intro_opacity(0.0) == 0.0F);
 }
 
+TEST_CASE("the speed histogram shows by default with enough moving discs, or when the scene asks") {
+    // 250 light discs and 300 immovable ones (a barrier): 250 moving is enough.
+    Scene gas = two_disc_scene(0.2);
+    gas.discs.clear();
+    for (int i = 0; i < 550; ++i) {
+        const double mass = i < 250 ? 1.0 : 1e6;
+        gas.discs.push_back(
+            Disc{{0.01 + 0.0035 * i, 0.5}, {i < 250 ? 0.1 : 0.0, 0.0}, 0.001, mass, {}, ""});
+    }
+    RenderRequest request;
+    CHECK(plan_render(request, gas).lesson.histogram == render::PlotSize::small);
+    // 150 moving among 400 is not: the barrier discs never count (tunnelling, billiards, ...).
+    gas.discs.erase(gas.discs.begin(), gas.discs.begin() + 100);
+    CHECK(moving_disc_count(gas) == 150);
+    CHECK(plan_render(request, gas).lesson.histogram == render::PlotSize::none);
+    // The scene decides over the default.
+    gas.render.histogram = "small";
+    CHECK(plan_render(request, gas).lesson.histogram == render::PlotSize::small);
+    gas.render.histogram = "large";
+    CHECK(plan_render(request, gas).lesson.histogram == render::PlotSize::large);
+    gas.render.histogram = "none";
+    gas.discs.resize(600, gas.discs.front());
+    CHECK(plan_render(request, gas).lesson.histogram == render::PlotSize::none);
+}
+
 TEST_CASE("captions beyond the video: an error naming the scene line, or a notice for --duration") {
     Scene scene = two_disc_scene(0.2);
     scene.render.captions = {{12.0, "Too late", "s.toml", 9}};

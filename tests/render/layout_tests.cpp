@@ -3,8 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <random>
 #include <string>
 
+#include "../support/skip.hpp"
 #include "frame_builder.hpp"
 #include "layout.hpp"
 
@@ -111,6 +114,47 @@ TEST_CASE("lesson layout: notes, colour legend, a large plot and one panel never
     wide.boxes = {{2.0, 1.0, Boundary::walls}, {2.0, 1.0, Boundary::walls}};
     const FrameLayout layout = compute_layout(wide);
     CHECK(layout.panels[0].box.width() == doctest::Approx(2.0 * layout.panels[0].box.height()));
+    check_nothing_overlaps_text(layout, {1280, 720});
+}
+
+TEST_CASE("lesson layout: a small speed plot fits beside two boxes that keep >= 55 % of 16:9") {
+    for (const Size size : {Size{854, 480}, Size{1280, 720}, Size{1920, 1080}, Size{3840, 2160}}) {
+        {
+            INFO(size.width << "x" << size.height);
+            LayoutInput in = lesson_input(size);
+            in.small_plot = true;
+            const FrameLayout layout = compute_layout(in);
+            const float frame = static_cast<float>(size.width) * static_cast<float>(size.height);
+            CHECK((area(layout.panels[0].box) + area(layout.panels[1].box)) / frame >= 0.55F);
+            // Readable: at least the axis labels' line and three more lines of data, and the
+            // cost graphic and the energy line are still there.
+            const float line = layout.body_pixel_height * 1.2F;
+            CHECK(layout.column.plot.height() >= 4.0F * line);
+            CHECK(layout.column.plot.width() >= 6.0F * layout.body_pixel_height);
+            CHECK(layout.slots(TextRole::cost_value).size() == 2);
+            CHECK(layout.slots(TextRole::energy).size() == 2);
+            // It reaches below the boxes, between the two panels' figures, never onto them.
+            CHECK(layout.column.plot.y1 > layout.panels[0].box.y1);
+            check_nothing_overlaps_text(layout, size);
+            for (const TextSlot* figures : layout.slots(TextRole::figures)) {
+                CHECK_FALSE(overlaps(figures->rect, layout.column.plot));
+            }
+        }
+        // A colour legend too (mass colours; speed colours use the plot's axis instead): the
+        // legend is kept, the plot only where it still fits, nothing overlaps.
+        LayoutInput in = lesson_input(size);
+        in.small_plot = true;
+        in.color_legend = true;
+        const FrameLayout layout = compute_layout(in);
+        CHECK(layout.column.legend_bar.height() > 0.0F);
+        check_nothing_overlaps_text(layout, size);
+    }
+    // One panel: the plot sits right of the box, clear of its figures.
+    LayoutInput one = lesson_input({1280, 720}, 1);
+    one.small_plot = true;
+    one.note_line = true;
+    const FrameLayout layout = compute_layout(one);
+    CHECK(layout.column.plot.height() > 0.0F);
     check_nothing_overlaps_text(layout, {1280, 720});
 }
 
@@ -229,6 +273,78 @@ TEST_CASE("failure colours are reserved and discs keep 3:1 contrast or get an ou
     CHECK(contrast_ratio(red, red) == doctest::Approx(1.0));
     // The billiards 8-ball (#202020) is below 3:1 on the dark box: it gets an outline.
     CHECK(contrast_ratio({32, 32, 32}, box_fill_color(Theme::dark)) < min_disc_contrast);
+}
+
+/// A walled unit box of `count` unit-mass discs with random velocities.
+Snapshot random_gas(std::size_t count, std::uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0.05, 0.95);
+    std::normal_distribution<double> v(0.0, 0.2);
+    Snapshot s;
+    s.box = {1.0, 1.0, Boundary::walls};
+    for (std::size_t i = 0; i < count; ++i) {
+        DiscState d;
+        d.position = {u(rng), u(rng)};
+        d.velocity = {v(rng), v(rng)};
+        d.radius = 0.01;
+        d.mass = 1.0;
+        s.discs.push_back(d);
+    }
+    return s;
+}
+
+Rgb8 rgb(Rgba8 c) {
+    return {c.r, c.g, c.b};
+}
+
+bool same_rgb(Rgba8 a, Rgba8 b) {
+    return a.r == b.r && a.g == b.g && a.b == b.b;
+}
+
+TEST_CASE("every plot follows the theme: the light full level's strip has no dark-theme colours") {
+    const RenderConfig defaults;
+    if (!std::filesystem::exists(defaults.font_path)) {
+        COLLIDE_SKIP_TEST("no DejaVu Sans at " << defaults.font_path);
+    }
+    for (const OverlayLevel level : {OverlayLevel::full, OverlayLevel::lesson}) {
+        INFO(overlay_level_name(level));
+        RenderConfig config;
+        config.width = 1280;
+        config.height = 720;
+        config.overlays = level;
+        config.theme = Theme::light;
+        config.speed_max = 0.6;
+        FrameBuilder builder(config);
+        const Snapshot left = random_gas(300, 1);
+        const Snapshot right = random_gas(300, 2);
+        FrameContent frame;
+        frame.panels = {{&left, "Time-driven", {"steps 40"}}, {&right, "Event-driven", {}}};
+        frame.time_text = "t = 2.00";
+        frame.energy_line = "Energy conserved";
+        frame.energy_drift = {{{0.0, 0.0}, {1.0, 0.01}, {2.0, 0.03}}, {{0.0, 0.0}, {2.0, 0.0}}};
+        frame.histogram = PlotSize::small;
+        const DrawList& list = builder.build(frame);
+        const Rgb8 page = rgb(palette(Theme::light).background);
+        const PlotColors dark;  // the dark theme's plot colours
+        int glyphs = 0;
+        for (const TextRun& run : list.text) {
+            for (const GlyphBox& g : run.glyphs.glyphs()) {
+                ++glyphs;
+                // Plot labels, axis numbers, counters: all readable on the light page.
+                CHECK(contrast_ratio(rgb(g.color), page) >= 3.0);
+            }
+        }
+        CHECK(glyphs > 50);
+        int plot_vertices = 0;
+        for (const OverlayVertex& v : list.over.vertices()) {
+            CHECK_FALSE(same_rgb(v.color, dark.label));
+            CHECK_FALSE(same_rgb(v.color, dark.axis));
+            CHECK_FALSE(same_rgb(v.color, dark.curve));
+            CHECK_FALSE(same_rgb(v.color, dark.zero_line));
+            if (same_rgb(v.color, plot_colors(Theme::light).curve)) ++plot_vertices;
+        }
+        CHECK(plot_vertices > 0);  // a Maxwell-Boltzmann curve was drawn, in the theme's colour
+    }
 }
 
 }  // namespace

@@ -4,11 +4,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <limits>
 #include <numeric>
 #include <random>
 #include <vector>
 
+#include "../support/skip.hpp"
+#include "layout.hpp"
 #include "plots.hpp"
 
 namespace collide::render {
@@ -124,6 +127,83 @@ TEST_CASE("the 2D Maxwell-Boltzmann density uses kT = mean kinetic energy and in
     const double dv = 1e-3;
     for (double v = 0.5 * dv; v < 20.0; v += dv) area += mb.density(v) * dv;
     CHECK(area == doctest::Approx(1.0).epsilon(1e-4));
+}
+
+/// A gas of `count` unit-mass discs with speeds drawn from the 2D Maxwell-Boltzmann law.
+Snapshot maxwellian_gas(std::size_t count, double kT, std::uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> component(0.0, std::sqrt(kT));
+    Snapshot s;
+    s.box = {1.0, 1.0, Boundary::walls};
+    for (std::size_t i = 0; i < count; ++i) {
+        DiscState d;
+        d.position = {0.5, 0.5};
+        d.velocity = {component(rng), component(rng)};
+        d.radius = 0.01;
+        d.mass = 1.0;
+        s.discs.push_back(d);
+    }
+    return s;
+}
+
+RectF triangle_bounds(const std::vector<OverlayVertex>& v, std::size_t first) {
+    RectF r{v[first].x, v[first].y, v[first].x, v[first].y};
+    for (std::size_t k = first; k < first + 3; ++k) {
+        r.x0 = std::min(r.x0, v[k].x);
+        r.y0 = std::min(r.y0, v[k].y);
+        r.x1 = std::max(r.x1, v[k].x);
+        r.y1 = std::max(r.y1, v[k].y);
+    }
+    return r;
+}
+
+TEST_CASE("the lesson speed plot in a narrow column: labelled curve, nothing drawn over its name") {
+    const RenderConfig config;
+    if (!std::filesystem::exists(config.font_path)) {
+        COLLIDE_SKIP_TEST("no DejaVu Sans at " << config.font_path);
+    }
+    // The column of a 720p lesson frame with a small plot, and a large plot's area.
+    for (const RectF area :
+         {RectF{532.0F, 420.0F, 747.0F, 575.0F}, RectF{800.0F, 100.0F, 1184.0F, 420.0F}}) {
+        INFO("plot " << area.width() << " x " << area.height());
+        const FontAtlas font(config.font_path, lesson_pixel_height(1280, 720));
+        const SpeedPlotLayout parts = speed_plot_layout(font, area);
+        CHECK(parts.title_text.empty() == (area.height() < 200.0F));  // no room for a title
+        CHECK(parts.curve_label.width() <= area.width());
+        CHECK(parts.curve_name.rfind("Maxwell", 0) == 0);
+        CHECK(parts.data.height() >= 2.0F * font.line_height());
+        // Two panels' histograms, one hotter (its bins pile up under the name if not cut).
+        const Snapshot cool = maxwellian_gas(800, 0.01, 1);
+        const Snapshot hot = maxwellian_gas(800, 0.04, 2);
+        OverlayBatch shapes;
+        OverlayBatch text;
+        draw_moving_speed_plot(shapes, text, font, area, {&hot, &cool},
+                               {{240, 150, 60}, {90, 175, 245}}, 0.0, 0.35, PlotColors{});
+        const std::vector<OverlayVertex>& v = shapes.vertices();
+        REQUIRE(v.size() % 3 == 0);
+        REQUIRE(v.size() > 100);  // bars and curve were drawn
+        const RectF name{parts.curve_label.x0 + 1.0F, parts.curve_label.y0 + 1.0F,
+                         parts.curve_label.x1 - 1.0F, parts.curve_label.y1 - 1.0F};
+        // Strokes may reach half the curve's width (2.5 line widths) past the plot's edge.
+        const float spill = 1.25F * std::max(1.0F, std::round(font.pixel_height() / 12.0F)) + 1.0F;
+        int over_name = 0;
+        for (std::size_t k = 0; k < v.size(); k += 3) {
+            const RectF t = triangle_bounds(v, k);
+            if (overlaps(t, name)) ++over_name;
+            CHECK(t.x0 >= area.x0 - spill);
+            CHECK(t.x1 <= area.x1 + spill);
+            CHECK(t.y0 >= area.y0 - spill);
+            CHECK(t.y1 <= area.y1);
+        }
+        CHECK(over_name == 0);
+        // Every glyph (name, axis labels, title) is inside the area.
+        REQUIRE_FALSE(text.glyphs().empty());
+        for (const GlyphBox& g : text.glyphs()) {
+            CHECK(static_cast<float>(g.x) >= area.x0 - 1.0F);
+            CHECK(static_cast<float>(g.x + g.width) <= area.x1 + 1.0F);
+            CHECK(static_cast<float>(g.y + g.height) <= area.y1 + 1.0F);
+        }
+    }
 }
 
 }  // namespace

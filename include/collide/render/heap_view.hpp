@@ -26,6 +26,7 @@
 
 #include "collide/image.hpp"
 #include "collide/render/context.hpp"
+#include "collide/render/renderer.hpp"
 
 namespace collide::render {
 
@@ -98,6 +99,8 @@ struct HeapViewConfig {
     /// The widest key of the video: node and slot text is sized so that it fits.
     std::string widest_key = "W";
     std::string font_path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+    /// dark (screens) or light (projectors, print): the collision video's themes.
+    Theme theme = Theme::dark;
 
     /// Throws Error(input) naming the first bad field.
     void validate() const;

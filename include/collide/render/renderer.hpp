@@ -219,6 +219,15 @@ class Renderer {
 /// Discs with less contrast than this against the box get an outline.
 inline constexpr double min_disc_contrast = 3.0;
 
+/// How a caption fits the lesson level's caption line (one line across the frame).
+struct CaptionFit {
+    bool fits = true;                ///< also true where no caption is shown (none, full, compact)
+    std::size_t max_characters = 0;  ///< when it does not fit: how many of its characters do
+};
+/// Measures `caption` (UTF-8) with the lesson font of `config`'s frame size against the caption
+/// line's width. Throws collide::Error (runtime) when the font cannot be loaded.
+[[nodiscard]] CaptionFit fit_caption(const RenderConfig& config, std::string_view caption);
+
 /// The perceptual colormap used for speed and mass (dark blue-violet -> teal -> yellow), t in
 /// [0, 1] (clamped). Exposed for tests and for anyone drawing a matching legend.
 [[nodiscard]] Rgb8 colormap(double t) noexcept;
