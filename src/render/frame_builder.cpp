@@ -324,7 +324,8 @@ void FrameBuilder::build_panel(std::size_t index, const PanelContent& content,
     if (config_.overlays == OverlayLevel::full) {
         add_full_header(content, panel, layout_.panels.size());
     } else if (config_.overlays == OverlayLevel::lesson && !intro_) {
-        add_lesson_panel_text(index, content, hidden);
+        add_lesson_panel_text(index, content);
+        if (hidden > 0) add_unmarked_note(panel, hidden);
     }
 }
 
@@ -539,6 +540,25 @@ std::size_t FrameBuilder::add_lesson_failures(std::size_t index, const Snapshot&
     return hidden;
 }
 
+// More failures than markers: say so inside the box, on a plate along its top edge. The figures
+// row has no room left once the failure counts are in it (a dense fluid's "223 missed
+// 733 overlapping" fills it), and a class must not think the circles are all there is.
+void FrameBuilder::add_unmarked_note(const PanelLayout& panel, std::size_t hidden) {
+    const std::string text =
+        "+" + with_separators(static_cast<long long>(hidden)) + " more not circled";
+    const FontAtlas& f = atlas(Font::body);
+    const float pad = std::round(0.3F * f.pixel_height());
+    const float width = std::min(f.text_width(text) + 2.0F * pad, panel.box.width());
+    const RectF plate{panel.box.x1 - width, panel.box.y0, panel.box.x1,
+                      panel.box.y0 + f.pixel_height() + 2.0F * pad};
+    list_.over.add_rect(plate, faded(palette_.box_fill, 0.9F));
+    TextSlot slot;
+    slot.panel = -1;
+    slot.rect = {plate.x0 + pad, plate.y0, plate.x1 - pad, plate.y1};
+    slot.pixel_height = f.pixel_height();
+    draw_text(Font::body, slot, text, palette_.failure);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Text
 
@@ -563,8 +583,7 @@ float FrameBuilder::draw_text(Font font, const TextSlot& slot, std::string_view 
     return f.add_text(run->glyphs, left, baseline, shown, color);
 }
 
-void FrameBuilder::add_lesson_panel_text(std::size_t index, const PanelContent& content,
-                                         std::size_t hidden_markers) {
+void FrameBuilder::add_lesson_panel_text(std::size_t index, const PanelContent& content) {
     const int p = static_cast<int>(index);
     const Rgba8 accent = with_alpha(content.accent, 255);
     if (layout_.compact) {
@@ -590,16 +609,7 @@ void FrameBuilder::add_lesson_panel_text(std::size_t index, const PanelContent& 
     if (const TextSlot* slot = layout_.slot(TextRole::figures, p)) {
         float x = slot->rect.x0;
         const float gap = head_font_->pixel_height();
-        std::vector<Figure> figures = content.figures;
-        if (hidden_markers > 0) {
-            // Right after the failure counts, so it is dropped only after them.
-            const auto after_failures = std::find_if(figures.begin(), figures.end(),
-                                                     [](const Figure& f) { return !f.failure; });
-            figures.insert(after_failures,
-                           {"+" + with_separators(static_cast<long long>(hidden_markers)),
-                            "not marked", false});
-        }
-        for (const Figure& figure : figures) {
+        for (const Figure& figure : content.figures) {
             const float need =
                 head_font_->text_width(figure.value) + body_font_->text_width(" " + figure.label);
             if (x + need > slot->rect.x1) break;  // the least important figures go first

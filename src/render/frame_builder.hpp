@@ -101,8 +101,8 @@ class FrameBuilder {
     void add_full_header(const PanelContent& content, const PanelLayout& panel, std::size_t panels);
     void add_full_strip(const FrameContent& frame);
     void add_legend(RectF info);
-    void add_lesson_panel_text(std::size_t index, const PanelContent& content,
-                               std::size_t hidden_markers);
+    void add_lesson_panel_text(std::size_t index, const PanelContent& content);
+    void add_unmarked_note(const PanelLayout& panel, std::size_t hidden);
     void add_column(const FrameContent& frame);
     // The event queue (Snapshot::queue; frame_builder_queue.cpp).
     void add_queue_in_box(const Snapshot& snapshot, const PanelLayout& panel);

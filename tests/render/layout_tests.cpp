@@ -301,6 +301,56 @@ bool same_rgb(Rgba8 a, Rgba8 b) {
     return a.r == b.r && a.g == b.g && a.b == b.b;
 }
 
+// Counts the glyphs of `color` whose origin lies inside `r`.
+int glyphs_inside(const DrawList& list, RectF r, Rgba8 color) {
+    int n = 0;
+    for (const TextRun& run : list.text) {
+        for (const GlyphBox& g : run.glyphs.glyphs()) {
+            const bool inside = static_cast<float>(g.x) >= r.x0 && static_cast<float>(g.x) < r.x1 &&
+                                static_cast<float>(g.y) >= r.y0 && static_cast<float>(g.y) < r.y1;
+            if (inside && same_rgb(g.color, color)) ++n;
+        }
+    }
+    return n;
+}
+
+TEST_CASE("more failures than markers: the box says how many more are not circled") {
+    const RenderConfig defaults;
+    if (!std::filesystem::exists(defaults.font_path)) {
+        COLLIDE_SKIP_TEST("no DejaVu Sans at " << defaults.font_path);
+    }
+    RenderConfig config;
+    config.width = 1280;
+    config.height = 720;
+    config.overlays = OverlayLevel::lesson;
+    const Rgba8 failure = palette(config.theme).failure;
+    for (const std::size_t pairs : {std::size_t{10}, max_markers + 25}) {
+        INFO(pairs << " overlapping pairs");
+        FrameBuilder builder(config);
+        Snapshot left = random_gas(2 * pairs, 3);
+        for (std::size_t k = 0; k < pairs; ++k)
+            left.overlapping_pairs.emplace_back(2 * k, 2 * k + 1);
+        const Snapshot right = random_gas(2 * pairs, 4);
+        FrameContent frame;
+        frame.panels = {{&left, "Time-driven", {}}, {&right, "Event-driven", {}}};
+        frame.time_text = "t = 1.00";
+        const DrawList& list = builder.build(frame);
+        std::size_t rings = 0;
+        for (const DiscInstance& d : list.discs) {
+            if (d.style > 0.0F && same_rgb(d.color, failure)) ++rings;
+        }
+        CHECK(rings == std::min(pairs, max_markers));
+        const RectF box = builder.layout().panels.at(0).box;
+        const int note = glyphs_inside(list, box, failure);
+        if (pairs > max_markers) {
+            CHECK(note >= 10);  // "+25 more not circled"
+        } else {
+            CHECK(note == 0);
+        }
+        CHECK(glyphs_inside(list, builder.layout().panels.at(1).box, failure) == 0);
+    }
+}
+
 TEST_CASE("every plot follows the theme: the light full level's strip has no dark-theme colours") {
     const RenderConfig defaults;
     if (!std::filesystem::exists(defaults.font_path)) {
