@@ -120,8 +120,11 @@ FrameLayout lesson_layout(const LayoutInput& in) {
         const bool left_of_column = i == 0 && in.boxes.size() == 2;
         const float text_x0 = left_of_column ? std::max(m, panel.box.x0 - m)
                                              : (i == 0 ? panel.box.x0 : column_mid + 0.5F * m);
-        const float text_x1 =
-            left_of_column ? column_mid - 0.5F * m : std::min(width - m, panel.box.x1 + m);
+        // The right one of two panels may reach the frame's edge; a single panel's text stops
+        // short of the column on its right.
+        const float text_x1 = left_of_column         ? column_mid - 0.5F * m
+                              : in.boxes.size() == 2 ? width - m
+                                                     : std::min(width - m, panel.box.x1 + m);
         panel.area = {left_of_column ? 0.0F : (i == 0 ? 0.0F : column_mid), 0.0F,
                       left_of_column ? column_mid : width, caption_top - gap};
         const int p = static_cast<int>(i);
