@@ -73,17 +73,17 @@ Theme parse_theme(std::string_view text, std::string_view field) {
 }
 
 void RenderConfig::validate() const {
-    constexpr int min_size = 64;
-    constexpr int max_size = 8192;  // well inside every GL implementation's FBO limit
     const auto fail = [](const char* field, const std::string& reason) {
         throw_input_error(std::string("render.") + field + ": " + reason);
     };
-    if (width < min_size || width > max_size) {
-        fail("width", "must be in [64, 8192], got " + std::to_string(width));
-    }
-    if (height < min_size || height > max_size) {
-        fail("height", "must be in [64, 8192], got " + std::to_string(height));
-    }
+    const auto check_side = [&](const char* field, int side) {
+        if (side < min_frame_side || side > max_frame_side) {
+            fail(field, "must be in [" + std::to_string(min_frame_side) + ", " +
+                            std::to_string(max_frame_side) + "], got " + std::to_string(side));
+        }
+    };
+    check_side("width", width);
+    check_side("height", height);
     if (!std::isfinite(speed_min) || speed_min < 0.0) fail("speed_min", "must be finite and >= 0");
     if (!std::isfinite(speed_max) || !(speed_max > speed_min)) {
         fail("speed_max", "must be finite and > speed_min");
