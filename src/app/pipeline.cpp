@@ -124,8 +124,7 @@ render::Backend render_backend(const render::PreviewWindow* preview, const Pipel
 // ------------------------------------------------------------------------------------------------
 // Simulation side
 
-std::vector<std::string> time_driven_counters(const Measurements& m, double /*dt*/,
-                                              double energy_drift) {
+std::vector<std::string> time_driven_counters(const Measurements& m, double energy_drift) {
     // Short "label  value" pairs: the renderer lays them out in a grid of narrow columns.
     return {
         fmt::format("steps  {}", short_count(static_cast<double>(m.steps))),
@@ -231,7 +230,7 @@ PanelFrame FrameSource::describe(const Panel& panel) const {
     const Measurements m = panel.engine->measurements();
     const double drift = relative_drift(m.kinetic_energy, panel.initial_energy);
     out.title = panel.title;
-    out.counters = panel.time_driven ? time_driven_counters(m, plan_.time_engine.dt, drift)
+    out.counters = panel.time_driven ? time_driven_counters(m, drift)
                                      : event_driven_counters(m, drift);
     out.drift = {out.snapshot.time, drift};
     out.time_driven = panel.time_driven;

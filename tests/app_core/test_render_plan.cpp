@@ -178,8 +178,8 @@ TEST_CASE("on-screen counters are deterministic counts, the same for the same me
     m.overlap_checks = 1'000'000;
     m.missed_collisions = 7;
     m.escaped = 2;
-    const auto td = time_driven_counters(m, 0.01, 1e-3);
-    CHECK(td == time_driven_counters(m, 0.01, 1e-3));
+    const auto td = time_driven_counters(m, 1e-3);
+    CHECK(td == time_driven_counters(m, 1e-3));
     const auto joined = [](const std::vector<std::string>& lines) {
         std::string all;
         for (const auto& l : lines) all += l + "\n";
