@@ -32,7 +32,7 @@ ProgressMode parse_progress_mode(std::string_view text, std::string_view option)
     if (text == "bar") return ProgressMode::bar;
     if (text == "json") return ProgressMode::json;
     if (text == "none") return ProgressMode::none;
-    throw_input_error(fmt::format("{}: must be auto, bar, json or none, got '{}'", option, text));
+    throw_option_error(option, text, "auto, bar, json or none");
 }
 
 double frames_per_second(const ProgressState& state) noexcept {

@@ -78,7 +78,7 @@ class TomlReader {
         try {
             return toml::parse(text, file_);
         } catch (const toml::parse_error& e) {
-            throw_input_error(file_, static_cast<int>(e.source().begin.line), "",
+            throw_scene_error(file_, static_cast<int>(e.source().begin.line), "",
                               "TOML syntax error: " + std::string(e.description()));
         }
     }
@@ -90,7 +90,7 @@ class TomlReader {
 
     [[noreturn]] void fail(const toml::node& at, const std::string& field,
                            const std::string& reason) const {
-        throw_input_error(file_, static_cast<int>(at.source().begin.line), field, reason);
+        throw_scene_error(file_, static_cast<int>(at.source().begin.line), field, reason);
     }
 
     void check_keys(const toml::table& table, const std::string& prefix,
@@ -102,7 +102,7 @@ class TomlReader {
             const std::string guess = nearest_name(name, allowed);
             reason += guess.empty() ? " (valid keys: " + joined(allowed) + ")"
                                     : " (did you mean '" + guess + "'?)";
-            throw_input_error(file_, static_cast<int>(key.source().begin.line), prefix, reason);
+            throw_scene_error(file_, static_cast<int>(key.source().begin.line), prefix, reason);
         }
     }
 
@@ -367,7 +367,7 @@ class TomlReader {
                                const std::string& prefix) const {
         const toml::node* v = t.get(key);
         if (v == nullptr)
-            throw_input_error(file_, static_cast<int>(t.source().begin.line), prefix + "." + key,
+            throw_scene_error(file_, static_cast<int>(t.source().begin.line), prefix + "." + key,
                               "missing (required)");
         return *v;
     }
@@ -397,7 +397,7 @@ class TomlReader {
                 generate_discs(scene_, spec, field);
             } catch (const Error& e) {
                 // The generator names the field; add where the block is.
-                throw_input_error(file_, line, "", e.what());
+                throw_scene_error(file_, line, "", e.what());
             }
             origin_.add({first, scene_.discs.size() - first, file_, {}, line, field});
         }
@@ -413,7 +413,7 @@ class TomlReader {
         if (const toml::node* v = t.get("packing_fraction"))
             g.packing_fraction = positive(*v, key("packing_fraction"));
         if (t.get("count") == nullptr && t.get("packing_fraction") == nullptr) {
-            throw_input_error(file_, static_cast<int>(t.source().begin.line), prefix,
+            throw_scene_error(file_, static_cast<int>(t.source().begin.line), prefix,
                               "give count or packing_fraction");
         }
         g.radius = positive(required(t, "radius", prefix), key("radius"));
@@ -440,7 +440,7 @@ class TomlReader {
         try {
             g.validate(prefix);
         } catch (const Error& e) {
-            throw_input_error(file_, static_cast<int>(t.source().begin.line), "", e.what());
+            throw_scene_error(file_, static_cast<int>(t.source().begin.line), "", e.what());
         }
         return g;
     }

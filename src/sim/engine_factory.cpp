@@ -5,18 +5,17 @@
 #include "collide/sim/engine.hpp"
 #include "collide/sim/event.hpp"
 #include "collide/sim/fast_engine.hpp"
-#include "collide/sim/pq/queue_kind.hpp"
+#include "collide/sim/pq/with_queue.hpp"
 #include "collide/sim/time_engine.hpp"
 
 namespace collide {
 
 namespace {
 
-/// The classic loop on the queue named by --pq (every queue kind is compiled in).
+/// The classic loop on the queue chosen by --pq (every queue kind is compiled in).
 std::unique_ptr<Engine> make_classic_engine(const Scene& scene, const EngineOptions& options) {
-    const pq::QueueKind kind = pq::parse_queue_kind(options.pq, "--pq");
     return pq::with_queue<sim::Event, pq::Orientation::min, sim::EventLess>(
-        kind, [&](auto&& queue) -> std::unique_ptr<Engine> {
+        options.pq, [&](auto&& queue) -> std::unique_ptr<Engine> {
             using Queue = std::decay_t<decltype(queue)>;
             return std::make_unique<sim::ClassicEngine<Queue>>(scene, std::move(queue));
         });
@@ -24,26 +23,61 @@ std::unique_ptr<Engine> make_classic_engine(const Scene& scene, const EngineOpti
 
 }  // namespace
 
-void EngineOptions::validate() const {
-    if (engine != "fast" && engine != "classic" && engine != "time") {
-        throw_input_error("--engine", 0, "",
-                          "unknown engine '" + engine + "' (expected fast|classic|time)");
+EngineKind parse_engine_kind(std::string_view text, std::string_view option) {
+    for (const EngineKind kind : {EngineKind::fast, EngineKind::classic, EngineKind::time}) {
+        if (text == to_string(kind)) return kind;
     }
-    (void)pq::parse_queue_kind(pq, "--pq");
-    validate_time_driven_options(*this);  // --dt, --td-detect: one rule, shared with the engine
+    throw_option_error(option, text, "fast, classic or time");
+}
+
+EngineKind parse_event_engine_kind(std::string_view text, std::string_view option) {
+    for (const EngineKind kind : {EngineKind::fast, EngineKind::classic}) {
+        if (text == to_string(kind)) return kind;
+    }
+    throw_option_error(option, text, "an event-driven engine, fast or classic");
+}
+
+std::string_view to_string(EngineKind kind) noexcept {
+    switch (kind) {
+        case EngineKind::fast:
+            return "fast";
+        case EngineKind::classic:
+            return "classic";
+        case EngineKind::time:
+            return "time";
+    }
+    return "fast";
+}
+
+OverlapDetection parse_overlap_detection(std::string_view text, std::string_view option) {
+    for (const OverlapDetection d : {OverlapDetection::all_pairs, OverlapDetection::grid}) {
+        if (text == to_string(d)) return d;
+    }
+    throw_option_error(option, text, "all-pairs or grid");
+}
+
+std::string_view to_string(OverlapDetection detection) noexcept {
+    return detection == OverlapDetection::grid ? "grid" : "all-pairs";
+}
+
+void EngineOptions::validate() const {
+    validate_time_driven_options(*this);  // --dt: one rule, shared with the engine
 }
 
 std::unique_ptr<Engine> make_engine(const Scene& scene, const EngineOptions& options) {
-    if (options.engine == "fast") {
-        // Tiny periodic boxes (under three diameters) have no 3 x 3 grid: the O(N) loop is exact
-        // there.
-        if (!sim::FastEngine::can_simulate(scene))
-            return make_classic_engine(scene, EngineOptions{});
-        return std::make_unique<sim::FastEngine>(scene);
+    switch (options.engine) {
+        case EngineKind::fast:
+            // Tiny periodic boxes (under three diameters) have no 3 x 3 grid: the O(N) loop is
+            // exact there.
+            if (!sim::FastEngine::can_simulate(scene))
+                return make_classic_engine(scene, EngineOptions{});
+            return std::make_unique<sim::FastEngine>(scene);
+        case EngineKind::classic:
+            return make_classic_engine(scene, options);
+        case EngineKind::time:
+            return std::make_unique<TimeEngine>(scene, options);
     }
-    if (options.engine == "classic") return make_classic_engine(scene, options);
-    if (options.engine == "time") return std::make_unique<TimeEngine>(scene, options);
-    throw_input_error("--engine", 0, "", "unknown engine '" + options.engine + "'");
+    throw_runtime_error("make_engine: no such engine kind");
 }
 
 }  // namespace collide

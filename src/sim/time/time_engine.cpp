@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <tuple>
 #include <type_traits>
@@ -36,17 +37,14 @@ double within_step(double t_contact, double h) noexcept {
 
 void validate_time_driven_options(const EngineOptions& options) {
     if (!std::isfinite(options.dt) || options.dt <= 0.0) {
-        throw_input_error("", 0, "--dt",
-                          "must be a finite number > 0 (got " + std::to_string(options.dt) + ")");
-    }
-    if (options.td_detect != "all-pairs" && options.td_detect != "grid") {
-        throw_input_error("", 0, "--td-detect",
-                          "unknown method '" + options.td_detect + "' (use all-pairs or grid)");
+        char value[32];
+        std::snprintf(value, sizeof value, "%g", options.dt);
+        throw_option_error("--dt", value, "a finite time step > 0");
     }
 }
 
 TimeEngine::TimeEngine(const Scene& scene, const EngineOptions& options)
-    : box_(scene.box), dt_(options.dt), use_grid_(options.td_detect == "grid") {
+    : box_(scene.box), dt_(options.dt), use_grid_(options.td_detect == OverlapDetection::grid) {
     validate_time_driven_options(options);
     const std::size_t n = scene.discs.size();
     position_.reserve(n);
