@@ -230,8 +230,8 @@ PanelFrame FrameSource::describe(const Panel& panel) const {
     const Measurements m = panel.engine->measurements();
     const double drift = relative_drift(m.kinetic_energy, panel.initial_energy);
     out.title = panel.title;
-    out.counters = panel.time_driven ? time_driven_counters(m, drift)
-                                     : event_driven_counters(m, drift);
+    out.counters =
+        panel.time_driven ? time_driven_counters(m, drift) : event_driven_counters(m, drift);
     out.drift = {out.snapshot.time, drift};
     out.time_driven = panel.time_driven;
     if (panel.time_driven) {

@@ -3,11 +3,13 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <limits>
 
 #include "collide/error.hpp"
+#include "collide/named_values.hpp"
 #include "collide/sim/pq/queue_kind.hpp"
 
 namespace collide::app {
@@ -307,10 +309,9 @@ std::string hint_option(const std::string& where, std::string_view key) {
 }
 
 RenderMode parse_render_mode(std::string_view text, std::string_view option) {
-    if (text == "both") return RenderMode::both;
-    if (text == "event") return RenderMode::event;
-    if (text == "time") return RenderMode::time;
-    throw_option_error(option, text, "both, event or time");
+    static constexpr std::array<NamedValue<RenderMode>, 3> names{
+        {{"both", RenderMode::both}, {"event", RenderMode::event}, {"time", RenderMode::time}}};
+    return parse_named(text, option, names);
 }
 
 QualityPreset quality_preset(std::string_view letter, std::string_view option) {

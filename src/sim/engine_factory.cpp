@@ -1,6 +1,8 @@
+#include <array>
 #include <type_traits>
 
 #include "collide/error.hpp"
+#include "collide/named_values.hpp"
 #include "collide/sim/classic_engine.hpp"
 #include "collide/sim/engine.hpp"
 #include "collide/sim/event.hpp"
@@ -23,41 +25,35 @@ std::unique_ptr<Engine> make_classic_engine(const Scene& scene, const EngineOpti
 
 }  // namespace
 
+namespace {
+
+constexpr std::array<NamedValue<EngineKind>, 3> engine_names{
+    {{"fast", EngineKind::fast}, {"classic", EngineKind::classic}, {"time", EngineKind::time}}};
+constexpr std::array<NamedValue<EngineKind>, 2> event_engine_names{
+    {{"fast", EngineKind::fast}, {"classic", EngineKind::classic}}};
+constexpr std::array<NamedValue<OverlapDetection>, 2> detection_names{
+    {{"all-pairs", OverlapDetection::all_pairs}, {"grid", OverlapDetection::grid}}};
+
+}  // namespace
+
 EngineKind parse_engine_kind(std::string_view text, std::string_view option) {
-    for (const EngineKind kind : {EngineKind::fast, EngineKind::classic, EngineKind::time}) {
-        if (text == to_string(kind)) return kind;
-    }
-    throw_option_error(option, text, "fast, classic or time");
+    return parse_named(text, option, engine_names);
 }
 
 EngineKind parse_event_engine_kind(std::string_view text, std::string_view option) {
-    for (const EngineKind kind : {EngineKind::fast, EngineKind::classic}) {
-        if (text == to_string(kind)) return kind;
-    }
-    throw_option_error(option, text, "an event-driven engine, fast or classic");
+    return parse_named(text, option, event_engine_names, "an event-driven engine");
 }
 
 std::string_view to_string(EngineKind kind) noexcept {
-    switch (kind) {
-        case EngineKind::fast:
-            return "fast";
-        case EngineKind::classic:
-            return "classic";
-        case EngineKind::time:
-            return "time";
-    }
-    return "fast";
+    return name_of(kind, engine_names);
 }
 
 OverlapDetection parse_overlap_detection(std::string_view text, std::string_view option) {
-    for (const OverlapDetection d : {OverlapDetection::all_pairs, OverlapDetection::grid}) {
-        if (text == to_string(d)) return d;
-    }
-    throw_option_error(option, text, "all-pairs or grid");
+    return parse_named(text, option, detection_names);
 }
 
 std::string_view to_string(OverlapDetection detection) noexcept {
-    return detection == OverlapDetection::grid ? "grid" : "all-pairs";
+    return name_of(detection, detection_names);
 }
 
 void EngineOptions::validate() const {

@@ -78,7 +78,7 @@ TEST_CASE("option matrix: render's numbers, sizes and names") {
     cases.push_back({"gas -q z" + never + ".mp4", "-q"});
     cases.push_back({"gas --mode sideways" + never + ".mp4", "--mode"});
     cases.push_back(
-        {"gas --engine warp" + never + ".mp4", "--engine", "fast or classic, got 'warp'"});
+        {"gas --engine warp" + never + ".mp4", "--engine", "(fast or classic), got 'warp'"});
     cases.push_back({"gas --engine time" + never + ".mp4", "--engine", "event-driven"});
     for (const char* v : {"dary:0", "dary:-1", "dary:99999999999999999999", "indexed:1e3", "heap"})
         cases.push_back({std::string("gas --pq ") + v + never + ".mp4", "--pq", "expected"});
@@ -144,7 +144,7 @@ TEST_CASE("option matrix: bench engine's counts") {
         cases.push_back({std::string("--warmup ") + v, "--warmup"});
     for (const char* v : {"-1", "18446744073709551616", "1e23"})
         cases.push_back({std::string("--seed ") + v, "--seed"});
-    cases.push_back({"--engine time", "--engine", "event-driven engine, fast or classic"});
+    cases.push_back({"--engine time", "--engine", "event-driven engine (fast or classic)"});
     cases.push_back({"--engine classic --pq heap", "--pq", "got 'heap'"});
     cases.push_back({"--eta 2", "--eta", "(0, 0.85], got '2'"});
     expect_refused("bench engine", cases);
