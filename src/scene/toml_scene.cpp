@@ -215,12 +215,7 @@ class TomlReader {
         check_keys(t, "render", render_keys);
         RenderHints& r = scene_.render;
         if (const toml::node* v = t.get("color_mode")) {
-            const std::string mode = text_value(*v, "render.color_mode");
-            if (std::find(color_modes.begin(), color_modes.end(), mode) == color_modes.end()) {
-                fail(*v, "render.color_mode",
-                     "expected one of " + joined(color_modes) + " (got \"" + mode + "\")");
-            }
-            r.color_mode = mode;
+            r.color_mode = one_of(*v, "render.color_mode", color_modes);
         }
         if (const toml::node* v = t.get("trails")) r.trails = boolean(*v, "render.trails");
         if (const toml::node* v = t.get("overlays")) {
