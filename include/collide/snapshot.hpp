@@ -1,9 +1,13 @@
 #pragma once
 /// \file
 /// What an engine hands to the renderer at a frame time: every disc's state at exactly `time`,
-/// plus the time-driven method's failure markers. The renderer sees nothing else of the engines.
+/// plus the time-driven method's failure markers, and (only when asked for, `collide render
+/// --queue`) a view of the event-driven engine's queue. The renderer sees nothing else of the
+/// engines.
 
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -23,6 +27,61 @@ struct DiscState {
     bool escaped = false;  ///< time-driven only: entirely outside a walled box (tunnelled out)
 };
 
+/// What a queued event does (the engines' sim::EventKind, as the renderer may see it).
+enum class QueuedKind : std::uint8_t {
+    pair,   ///< discs a and b touch
+    xwall,  ///< disc a touches the left or right wall
+    ywall,  ///< disc a touches the bottom or top wall
+    cell,   ///< fast engine only: disc a's centre leaves its grid cell (bookkeeping, no collision)
+};
+
+/// One event in an engine's queue. Disc indices are the scene's (as in Snapshot::discs).
+struct QueuedEvent {
+    double t = 0.0;  ///< absolute simulation time the event was predicted for
+    QueuedKind kind = QueuedKind::pair;
+    std::uint32_t a = 0;  ///< the disc (pairs: the smaller index)
+    std::uint32_t b = 0;  ///< pairs: the other disc; otherwise unused
+    /// Invalidated since it was predicted (a disc involved has collided since): the classic loop
+    /// throws it away when it pops it; the fast engine predicts the disc anew.
+    bool stale = false;
+
+    friend bool operator==(const QueuedEvent&, const QueuedEvent&) = default;
+};
+
+/// How the queue stores its events, so that it can be drawn as what it is.
+enum class QueueShape : std::uint8_t {
+    heap,             ///< a d-ary heap in an array: slot i's children are d i + 1 .. d i + d
+    ordered_array,    ///< sorted, the next event last
+    unordered_array,  ///< in insertion order; every pop scans for the next event
+};
+
+/// A read-only picture of an event-driven engine's queue at Snapshot::time, filled only when
+/// asked for (Engine::watch_queue): what comes next, how the queue holds it, what left it.
+struct QueueView {
+    std::string name;  ///< "binary heap", "4-ary heap", "ordered array", ...
+    QueueShape shape = QueueShape::heap;
+    unsigned arity = 2;         ///< heap: children per node
+    bool one_per_disc = false;  ///< the fast engine: each disc holds exactly one pending event
+    std::uint64_t size = 0;     ///< entries in the queue now
+    std::uint64_t stale_entries = 0;  ///< of which invalidated (popped and thrown away later)
+    /// The next valid collisions (pairs and walls, no cell crossings), earliest first, at most the
+    /// number asked for; each collision once (the fast engine holds a pair at both discs).
+    std::vector<QueuedEvent> next;
+    /// Heap: the first slots of its array, in array order (the top levels of the tree, root
+    /// first). Ordered array: the slots nearest the top, the next event first. Unordered array:
+    /// its first slots, in array order.
+    std::vector<QueuedEvent> slots;
+    /// Heap: levels of the tree in `slots` (the last possibly partial).
+    unsigned levels = 0;
+    /// Unordered array: the position of the next event in the array (it may lie beyond `slots`).
+    std::uint64_t top_index = 0;
+    /// The latest events popped off the queue, oldest first (a few), with `stale` telling which
+    /// were thrown away. An event leaves the queue when the simulation reaches its time `t`.
+    std::vector<QueuedEvent> popped;
+    std::uint64_t pops = 0;        ///< events popped so far
+    std::uint64_t stale_pops = 0;  ///< of which stale
+};
+
 struct Snapshot {
     double time = 0.0;  ///< simulation time of this state
     Box box;
@@ -30,6 +89,8 @@ struct Snapshot {
     /// Time-driven failure markers (empty for the event-driven engines).
     std::vector<std::pair<std::uint32_t, std::uint32_t>> overlapping_pairs;
     std::vector<Vec2> missed_collisions;  ///< where a collision went undetected since last frame
+    /// Event-driven engines watching their queue (Engine::watch_queue) only; empty otherwise.
+    std::optional<QueueView> queue;
 };
 
 }  // namespace collide

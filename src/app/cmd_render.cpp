@@ -16,6 +16,7 @@
 #include "collide/error.hpp"
 #include "collide/io/file.hpp"
 #include "collide/scene/load.hpp"
+#include "collide/sim/queue_view.hpp"
 #include "collide/video/output.hpp"
 #include "collide/video/video_writer.hpp"
 #include "commands.hpp"
@@ -57,6 +58,8 @@ struct CliValues {
     std::string dump_rgba;
     bool verbose = false;
     bool no_limits = false;
+    std::string queue;  ///< --queue [K]: the K, or empty for the default
+    double slow_motion = 1.0;
     std::uint64_t seed = 0;
     CLI::Option* seed_opt = nullptr;
 
@@ -75,6 +78,8 @@ struct CliValues {
     CLI::Option* layout_json_opt = nullptr;
     CLI::Option* format_opt = nullptr;
     CLI::Option* trails_opt = nullptr;
+    CLI::Option* queue_opt = nullptr;
+    CLI::Option* slow_motion_opt = nullptr;
 };
 
 template <typename T>
@@ -130,6 +135,12 @@ RenderRequest request_of(const CliValues& v, bool still) {
     r.last_frame = v.last_frame;
     r.still = still;
     r.no_limits = v.no_limits;
+    if (v.queue_opt != nullptr && v.queue_opt->count() > 0) {
+        r.queue = v.queue.empty() ? default_queue_events
+                                  : static_cast<int>(parse_whole_number(v.queue, "--queue", 1,
+                                                                        sim::max_watched_events));
+    }
+    r.slow_motion = if_given(v.slow_motion_opt, v.slow_motion);
     return r;
 }
 
@@ -179,6 +190,15 @@ void add_shared_options(CLI::App& cmd, CliValues& v) {
     v.layout_json_opt = cmd.add_option(
         "--layout-json", v.layout_json,
         "Also write the frame's rectangles (panels, boxes, text lines with pixel heights) as JSON");
+    v.queue_opt = cmd.add_option("--queue", v.queue,
+                                 "Show the event-driven engine's queue: its next K (default 5, "
+                                 "at most 20) collisions in the box, its top levels under it "
+                                 "(after the scene: `render gas --queue`)")
+                      ->expected(0, 1)
+                      ->type_name("[K]");
+    v.slow_motion_opt = cmd.add_option(
+        "--slow-motion", v.slow_motion,
+        "Play F times slower than --speed (or the scene's pace), e.g. 4 to follow single events");
     v.trails_opt = cmd.add_flag("--trails,!--no-trails", v.trails,
                                 "Trails behind tagged discs (default: scene hint, else on)");
     cmd.add_flag("--preview", v.preview, "Show the frames live in a window when a display exists");

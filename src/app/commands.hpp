@@ -22,6 +22,9 @@ void add_pq_command(CLI::App& root);
 /// `collide heap`: animated priority-queue operations (heaps as trees over their arrays).
 void add_heap_command(CLI::App& root);
 
+/// `collide puzzle`: BFS against A* on the sliding puzzle (text, JSON or a video).
+void add_puzzle_command(CLI::App& root);
+
 /// `collide simulate`: run an engine to a time, print measurements, optionally log collisions.
 void add_simulate_command(CLI::App& root);
 

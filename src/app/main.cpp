@@ -27,6 +27,7 @@ std::string memory_advice(const std::string& command) {
     if (command == "simulate") return "use fewer discs, or a shorter --until";
     if (command == "bench") return "use a smaller --n";
     if (command == "pq") return "give fewer --ops";
+    if (command == "puzzle") return "lower --max-nodes, or show A* alone (--method astar)";
     return "use fewer discs (the scene's N, or [[generate]] count)";
 }
 
@@ -53,6 +54,7 @@ int main(int argc, char** argv) {
     collide::app::add_scenes_command(root);
     collide::app::add_pq_command(root);
     collide::app::add_heap_command(root);
+    collide::app::add_puzzle_command(root);
     collide::app::add_render_command(root);
     collide::app::add_thumbnail_command(root);
 

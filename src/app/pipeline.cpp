@@ -195,6 +195,9 @@ FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan, const std::
         Panel panel;
         panel.engine = make_engine(scene, options);
         panel.engine->set_stop_flag(stop);
+        if (!time_driven && plan.queue_events > 0 && !panel.engine->watch_queue(plan.queue_events))
+            throw_option_error("--queue", "the " + std::string(to_string(options.engine)) +
+                                              " engine has no event queue");
         panel.time_driven = time_driven;
         panel.title = std::move(title);
         panel.initial_energy = panel.engine->measurements().kinetic_energy;
@@ -303,6 +306,7 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
         content_.time_text = content_.time_text.substr(0, content_.time_text.find("   ("));
     }
     content_.video_time = video_time;
+    content_.speed = plan_.speed.speed;
     content_.caption = lesson.caption_at(video_time);
     content_.histogram = lesson.histogram;
     const bool conserved = largest_drift_ <= round_off_drift;

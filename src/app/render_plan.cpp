@@ -11,6 +11,7 @@
 #include "collide/error.hpp"
 #include "collide/named_values.hpp"
 #include "collide/sim/pq/queue_kind.hpp"
+#include "collide/sim/queue_view.hpp"
 
 namespace collide::app {
 
@@ -70,6 +71,41 @@ EngineOptions event_engine_options(const RenderRequest& request) {
     options.engine = parse_event_engine_kind(to_string(request.engine));
     options.pq = request.pq;
     return options;
+}
+
+/// --slow-motion F: the video plays F times slower (frames F times closer in simulation time).
+void apply_slow_motion(const RenderRequest& request, RenderPlan& plan) {
+    if (!request.slow_motion) return;
+    const double f = *request.slow_motion;
+    if (!std::isfinite(f) || f < 1.0 || f > max_slow_motion) {
+        throw_option_error("--slow-motion", fmt::format("{}", f),
+                           fmt::format("a factor from 1 to {:g} (times slower)", max_slow_motion));
+    }
+    plan.slow_motion = f;
+    plan.speed.speed /= f;
+    plan.speed.source += fmt::format(", {:g}x slow motion", f);
+}
+
+/// --queue [K]: K upcoming events of the event-driven engine, its queue in a strip (lesson level).
+std::size_t queue_events(const RenderRequest& request, const RenderPlan& plan) {
+    if (!request.queue) return 0;
+    const int k = *request.queue;
+    if (k < 1 || k > static_cast<int>(sim::max_watched_events)) {
+        throw_option_error("--queue", std::to_string(k),
+                           fmt::format("1 to {} upcoming events", sim::max_watched_events));
+    }
+    if (plan.mode == RenderMode::time) {
+        throw_option_error(
+            "--queue",
+            "the time-driven engine has no event queue to show; use --mode both or event");
+    }
+    if (plan.render.overlays != render::OverlayLevel::lesson) {
+        throw_option_error("--queue",
+                           fmt::format("the queue is drawn at the lesson level only, not with "
+                                       "--overlays {}",
+                                       render::overlay_level_name(plan.render.overlays)));
+    }
+    return static_cast<std::size_t>(k);
 }
 
 EngineOptions time_engine_options(const RenderRequest& request, const Scene& scene, double speed,
@@ -446,15 +482,17 @@ RenderPlan plan_render(const RenderRequest& request, const Scene& scene) {
     plan.duration = choose_duration(request, scene);
     plan.speed = choose_speed(scene, request.speed);
     if (!plan.speed.notice.empty()) plan.notices.push_back(plan.speed.notice);
+    const double pace = plan.speed.speed;  // the physics' time scale (default dt)
+    apply_slow_motion(request, plan);
     const FrameClock video = video_clock(plan.duration, plan.speed.speed, plan.fps);
     plan.event_engine = event_engine_options(request);
     std::vector<std::string> dt_notices;
-    plan.time_engine =
-        time_engine_options(request, scene, plan.speed.speed, video.interval, dt_notices);
+    plan.time_engine = time_engine_options(request, scene, pace, video.interval, dt_notices);
     if (plan.mode != RenderMode::event) {
         plan.notices.insert(plan.notices.end(), dt_notices.begin(), dt_notices.end());
     }
     plan.render = render_config(request, scene, plan.width, plan.height);
+    plan.queue_events = queue_events(request, plan);
     plan.render.trail_length = trail_length(scene, video.count);
     plan.render.trail_whole_path = few_tagged_discs(scene);
     check_failure_colors(scene, plan.render, plan.notices);

@@ -138,11 +138,18 @@ struct RenderRequest {
     std::optional<std::string> theme;                          ///< --theme dark|light
     std::optional<std::string> layout_json;                    ///< --layout-json FILE
     std::optional<std::string> format;                         ///< --format mp4|gif|png
-    bool last_frame = false;   ///< --last-frame: write only the last frame as a PNG
-    std::optional<double> at;  ///< thumbnail --at (simulation time)
-    bool still = false;        ///< true for `collide thumbnail` (PNG output)
-    bool no_limits = false;    ///< --no-limits: run even what exceeds WorkLimits
+    bool last_frame = false;            ///< --last-frame: write only the last frame as a PNG
+    std::optional<double> at;           ///< thumbnail --at (simulation time)
+    bool still = false;                 ///< true for `collide thumbnail` (PNG output)
+    bool no_limits = false;             ///< --no-limits: run even what exceeds WorkLimits
+    std::optional<int> queue;           ///< --queue [K]: show the event queue, K events
+    std::optional<double> slow_motion;  ///< --slow-motion F: F times slower than the speed
 };
+
+/// Events `--queue` shows without a number.
+inline constexpr int default_queue_events = 5;
+/// The largest --slow-motion factor (a disc crossing the box in ten seconds would take days).
+inline constexpr double max_slow_motion = 1000.0;
 
 /// What kind of file comes out.
 enum class OutputKind {
@@ -199,6 +206,11 @@ struct RenderPlan {
     std::vector<std::string> notices;   ///< one-line remarks to print before rendering
     LessonPlan lesson;                  ///< what the lesson level shows besides the discs
     std::filesystem::path layout_json;  ///< --layout-json (empty: none)
+    /// --queue: the event-driven panel shows this many upcoming events and its queue (0: off).
+    std::size_t queue_events = 0;
+    /// --slow-motion: speed.speed is the chosen pace divided by this (1: none). The physics (the
+    /// default dt) follows the pace before the slow motion.
+    double slow_motion = 1.0;
 };
 
 /// Default output directory for derived paths.

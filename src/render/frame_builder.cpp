@@ -174,6 +174,7 @@ FrameBuilder::FrameBuilder(const RenderConfig& config)
 
 const FontAtlas& FrameBuilder::atlas(Font font) const {
     if (font == Font::head && head_font_) return *head_font_;
+    if (font == Font::small && small_font_) return *small_font_;
     return *body_font_;
 }
 
@@ -195,6 +196,11 @@ FrameLayout FrameBuilder::layout_for(const FrameContent& frame) const {
     input.color_legend =
         config_.color_mode == ColorMode::speed || config_.color_mode == ColorMode::mass;
     input.counter_rows = config_.overlays == OverlayLevel::full ? counter_rows(frame) : 0;
+    for (std::size_t i = 0; i < frame.panels.size(); ++i) {
+        const Snapshot* snapshot = frame.panels[i].snapshot;
+        if (snapshot != nullptr && snapshot->queue && input.queue_panel < 0)
+            input.queue_panel = static_cast<int>(i);
+    }
     return compute_layout(input);
 }
 
@@ -208,10 +214,17 @@ const DrawList& FrameBuilder::build(const FrameContent& frame) {
     }
     list_.clear();
     video_time_ = frame.video_time;
+    speed_ = frame.speed;
     intro_ = config_.overlays == OverlayLevel::lesson && frame.intro_opacity > 0.0F &&
              !frame.intro_title.empty();
     counter_rows_ = config_.overlays == OverlayLevel::full ? counter_rows(frame) : 0;
     layout_ = layout_for(frame);
+    if (layout_.queue_panel >= 0 && !small_font_) {
+        // Loaded with the first frame that shows a queue, so other videos are unchanged.
+        small_font_.emplace(config_.font_path,
+                            std::round(body_font_->pixel_height() * queue_text_scale));
+        list_.text.push_back({&*small_font_, {}});
+    }
     if (trails_.size() != frame.panels.size()) {
         trails_.assign(frame.panels.size(),
                        TrailHistory(config_.trail_length, config_.trail_whole_path));
@@ -249,6 +262,11 @@ void FrameBuilder::build_panel(std::size_t index, const PanelContent& content,
         trails_[index].draw(list_.under, box, to_pixels, colors_, width, lesson ? 0.35F : 0.0F);
     }
     add_discs(snapshot, panel);
+    if (snapshot.queue && config_.overlays == OverlayLevel::lesson && body_font_) {
+        add_queue_in_box(snapshot, panel);
+        if (layout_.queue_panel == static_cast<int>(index) && !intro_)
+            add_queue_strip(snapshot, layout_.queue_strip);
+    }
     std::size_t hidden = 0;
     if (config_.overlays == OverlayLevel::lesson) {
         markers_[index].update(snapshot, video_time_);
@@ -498,8 +516,9 @@ float FrameBuilder::draw_text(Font font, const TextSlot& slot, std::string_view 
     // Baseline: text of this size centred in the slot (ascent above, the rest below).
     const float baseline =
         slot.rect.y0 + 0.5F * (slot.rect.height() - f.pixel_height()) + f.ascent();
-    TextRun& run = list_.text[font == Font::head && head_font_ ? 1 : 0];
-    return f.add_text(run.glyphs, left, baseline, shown, color);
+    auto run = std::find_if(list_.text.begin(), list_.text.end(),
+                            [&](const TextRun& r) { return r.font == &f; });
+    return f.add_text(run->glyphs, left, baseline, shown, color);
 }
 
 void FrameBuilder::add_lesson_panel_text(std::size_t index, const PanelContent& content,

@@ -35,6 +35,11 @@ struct Palette {
 };
 [[nodiscard]] Palette palette(Theme theme) noexcept;
 
+/// How long an event popped off a panel's queue stays highlighted, in seconds of video.
+inline constexpr double queue_pop_seconds = 0.8;
+/// The queue strip's small text against the lesson body text.
+inline constexpr float queue_text_scale = 0.7F;
+
 /// A failure marker remembered across frames (lesson level).
 struct Marker {
     Vec2 where;         ///< box coordinates
@@ -79,7 +84,7 @@ class FrameBuilder {
     void reset_history();
 
   private:
-    enum class Font { body, head };
+    enum class Font { body, head, small };
     enum class Align { left, centre, right };
     void build_panel(std::size_t index, const PanelContent& content, const PanelLayout& panel);
     void add_box(const PanelLayout& panel, const Box& box, float wall);
@@ -96,6 +101,22 @@ class FrameBuilder {
     void add_lesson_panel_text(std::size_t index, const PanelContent& content,
                                std::size_t hidden_markers);
     void add_column(const FrameContent& frame);
+    // The event queue (Snapshot::queue; frame_builder_queue.cpp).
+    void add_queue_in_box(const Snapshot& snapshot, const PanelLayout& panel);
+    void add_queue_strip(const Snapshot& snapshot, RectF strip);
+    void add_popped(const QueueView& queue, double now, RectF area);
+    void add_queue_tree(const QueueView& queue, double now, RectF area);
+    void add_queue_row(const QueueView& queue, double now, RectF area);
+    void add_leaving_root(const QueueView& queue, double now, PointF root, float node_w,
+                          float node_h);
+    void add_queue_node(const QueuedEvent& event, double now, RectF node, Rgba8 frame_color,
+                        bool stale);
+    /// A label centred at `at` on a plate of the box colour, kept inside `inside`.
+    void add_plate_label(Font font, PointF at, std::string_view text, Rgba8 color, RectF inside);
+    [[nodiscard]] float pop_highlight(const QueuedEvent& popped, double now) const noexcept;
+    [[nodiscard]] Rgba8 next_color() const noexcept;
+    /// A queue node as wide as the widest label among `events` (and a time to go).
+    [[nodiscard]] float node_width(const std::vector<QueuedEvent>& events) const;
     void add_intro(const FrameContent& frame);
     float draw_text(Font font, const TextSlot& slot, std::string_view text, Rgba8 color,
                     Align align = Align::left, float x = -1.0F);
@@ -111,12 +132,15 @@ class FrameBuilder {
     Palette palette_;
     std::optional<FontAtlas> body_font_;
     std::optional<FontAtlas> head_font_;
+    std::optional<FontAtlas> small_font_;  // loaded with the first queue to draw
     std::vector<TrailHistory> trails_;
     std::vector<MarkerMemory> markers_;
     FrameLayout layout_;
     DrawList list_;
     std::vector<Rgb8> colors_;  // per-frame scratch
     double video_time_ = 0.0;
+    double speed_ = 0.0;         // simulation time per second of video (FrameContent::speed)
+    std::vector<RectF> labels_;  // queue labels placed in the current box (add_plate_label)
     double colormap_low_ = 0.0;  // the part of the colormap in use (choose_colormap_range)
     double colormap_high_ = 1.0;
     bool colormap_clear_ = false;  // every colour of [low, high] has 3:1 contrast with the box

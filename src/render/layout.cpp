@@ -76,7 +76,9 @@ FrameLayout lesson_layout(const LayoutInput& in) {
     const float box_top = m + line + gap;
     const float below = gap + head_line + (in.note_line ? line : 0.0F);
     const float caption_top = height - m - line;
-    const float room_h = caption_top - gap - below - box_top;
+    const bool queue = in.queue_panel >= 0 && in.queue_panel < static_cast<int>(in.boxes.size());
+    const float queue_h = queue ? std::round(queue_strip_share * height) : 0.0F;
+    const float room_h = caption_top - gap - below - box_top - (queue ? queue_h + gap : 0.0F);
     // Horizontal: [m box m column m box m] or [m box m column m].
     const auto n = static_cast<float>(in.boxes.size());
     const float column_w =
@@ -132,8 +134,16 @@ FrameLayout lesson_layout(const LayoutInput& in) {
         layout.text.push_back(
             {TextRole::figures, p, {figures_x0, y, figures_x1, y + head_line}, head});
         y += head_line;
-        if (in.note_line)
+        if (in.note_line) {
             layout.text.push_back({TextRole::note, p, {text_x0, y, text_x1, y + line}, body});
+            y += line;
+        }
+        if (queue && p == in.queue_panel) {
+            // Under the figures, across the frame: a tree of events needs the width.
+            layout.queue_panel = p;
+            layout.queue_strip = {m, y + gap, width - m, y + gap + queue_h};
+            layout.text.push_back({TextRole::queue, p, layout.queue_strip, body});
+        }
         layout.panels.push_back(panel);
     }
     const float box_bottom = top + used_h;
@@ -260,6 +270,8 @@ const char* text_role_name(TextRole role) noexcept {
             return "counters";
         case TextRole::strip:
             return "strip";
+        case TextRole::queue:
+            return "queue";
     }
     return "text";
 }

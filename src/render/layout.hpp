@@ -47,7 +47,8 @@ enum class TextRole {
     legend,
     plot_title,
     counters,
-    strip
+    strip,
+    queue  ///< the event queue strip under a panel (its heading line; the strip is queue_strip)
 };
 [[nodiscard]] const char* text_role_name(TextRole role) noexcept;
 
@@ -89,7 +90,9 @@ struct FrameLayout {
     OverlayLevel level = OverlayLevel::none;
     bool compact = false;
     std::vector<PanelLayout> panels;
-    RectF strip;                 // full level: the bottom strip
+    RectF strip;        // full level: the bottom strip
+    RectF queue_strip;  // lesson level with --queue: under the panels, frame-wide
+    int queue_panel = -1;
     ColumnLayout column;         // lesson level
     std::vector<TextSlot> text;  // every text line (lesson, compact); full: header and strip
     float margin = 0.0F;
@@ -112,7 +115,11 @@ struct LayoutInput {
     bool large_plot = false;    ///< lesson: the plot is the subject: a wider column
     bool color_legend = false;  ///< lesson: a colour bar (speed or mass colours) in the column
     int counter_rows = 1;       ///< full: rows of the counter grid
+    int queue_panel = -1;       ///< lesson: this panel shows its event queue in a strip below it
 };
+
+/// Lesson level: the event queue strip's share of the frame height.
+inline constexpr float queue_strip_share = 0.3F;
 
 /// The font size used for a frame height at the full level (px): today's H / 34.
 [[nodiscard]] float font_pixel_height(int frame_height) noexcept;

@@ -197,6 +197,7 @@ void FastEngine::advance_to(double t) {
         const std::uint32_t i = heap_.top();
         const Key key = heap_.top_key();
         ++stats_.pops;
+        if (watch_.on()) watch_.record_pop(queued_event(i, key));
         now_ = key.t;
         process(i, key);
     }
@@ -623,7 +624,51 @@ Snapshot FastEngine::snapshot() const {
         d.color = appearance_.colors[k];
         d.tagged = appearance_.tagged[k] != 0;
     }
+    if (watch_.on()) s.queue = queue_view();
     return s;
+}
+
+QueuedEvent FastEngine::queued_event(std::uint32_t i, const Key& key) const noexcept {
+    QueuedEvent e;
+    e.t = key.t;
+    e.kind = queued_kind(key.kind());
+    e.a = scene_index_[i];
+    if (key.kind() == EventKind::pair) {
+        const std::uint32_t j = key.b();
+        e.b = scene_index_[j];
+        if (e.b < e.a) std::swap(e.a, e.b);
+        e.stale = p_[j].count != cold_[i].pair_count;
+    }
+    return e;
+}
+
+// The indexed 4-ary heap holding one pending event per disc: its top levels, its next
+// collisions. O(N), only for watched engines.
+QueueView FastEngine::queue_view() const {
+    QueueView view;
+    view.shape = QueueShape::heap;
+    view.arity = 4;
+    view.name = "indexed 4-ary heap";
+    view.one_per_disc = true;
+    const std::size_t n = heap_.size();
+    view.size = n;
+    std::vector<QueuedEvent> all;
+    all.reserve(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const Key& key = heap_.key_at(k);
+        all.push_back(queued_event(key.a, key));
+    }
+    view.stale_entries = static_cast<std::uint64_t>(
+        std::count_if(all.begin(), all.end(), [](const QueuedEvent& e) { return e.stale; }));
+    view.levels = shown_tree_levels(view.arity, n);
+    view.slots.assign(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(
+                                                     shown_tree_slots(view.arity, view.levels, n)));
+    keep_next_collisions(all, watch_.next_events());
+    view.next = std::move(all);
+    view.popped = watch_.popped();
+    view.pops = stats_.pops;
+    view.stale_pops = stats_.stale_pops;
+    return view;
 }
 
 Measurements FastEngine::measurements() const {

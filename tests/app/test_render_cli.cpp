@@ -317,3 +317,28 @@ TEST_CASE("thumbnail --layout-json writes the rectangles, with lesson text at le
     }
     CHECK(lines >= 8);
 }
+
+TEST_CASE("render --queue: classic and fast engines show their queue, byte-identical run to run") {
+    TempDir dir("queue");
+    const std::string base =
+        "render gas --size 640x360 --fps 10 --duration 1 --slow-motion 2 --progress none ";
+    for (const char* engine : {"classic --pq binary", "classic --pq ordered", "fast"}) {
+        CAPTURE(engine);
+        const std::string args = base + "--queue 3 --engine " + engine + " -o ";
+        const auto a = run_collide(args + (dir.path / "a.mp4").string());
+        const auto b = run_collide(args + (dir.path / "b.mp4").string());
+        REQUIRE_MESSAGE(a.exit_code == 0, a.output);
+        REQUIRE_MESSAGE(b.exit_code == 0, b.output);
+        const std::string bytes = read_bytes(dir.path / "a.mp4");
+        CHECK(bytes.size() > 1000);
+        CHECK(bytes == read_bytes(dir.path / "b.mp4"));
+    }
+    // The queue changes the picture: the same still with and without it.
+    const std::string still = "thumbnail gas --size 640x360 --at 1 --engine classic -o ";
+    const auto with = run_collide(still + (dir.path / "with.png").string() + " --queue");
+    const auto without = run_collide(still + (dir.path / "without.png").string());
+    REQUIRE_MESSAGE(with.exit_code == 0, with.output);
+    REQUIRE_MESSAGE(without.exit_code == 0, without.output);
+    CHECK(share_of_differing_pixels(collide::video::read_png(dir.path / "with.png"),
+                                    collide::video::read_png(dir.path / "without.png")) > 0.05);
+}

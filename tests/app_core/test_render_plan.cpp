@@ -2,6 +2,8 @@
 // option precedence (command line > scene hint > default).
 #include <doctest/doctest.h>
 
+#include <cmath>
+
 #include "collide/error.hpp"
 #include "pipeline.hpp"
 #include "render_plan.hpp"
@@ -151,6 +153,42 @@ TEST_CASE("plan_render rejects bad options with the option's name") {
     rejects([](RenderRequest& r) { r.color = "rainbow"; }, "--color");
     rejects([](RenderRequest& r) { r.format = "avi"; }, "--format");
     rejects([](RenderRequest& r) { r.engine = EngineKind::time; }, "--engine");
+    rejects([](RenderRequest& r) { r.queue = 0; }, "--queue");
+    rejects([](RenderRequest& r) { r.queue = 21; }, "--queue");
+    rejects(
+        [](RenderRequest& r) {
+            r.queue = 5;
+            r.mode = "time";
+        },
+        "--queue");
+    rejects(
+        [](RenderRequest& r) {
+            r.queue = 5;
+            r.overlays = "none";
+        },
+        "--queue");
+    rejects([](RenderRequest& r) { r.slow_motion = 0.5; }, "--slow-motion");
+    rejects([](RenderRequest& r) { r.slow_motion = 1e9; }, "--slow-motion");
+    rejects([](RenderRequest& r) { r.slow_motion = std::nan(""); }, "--slow-motion");
+}
+
+TEST_CASE("--queue asks for the event queue and --slow-motion slows the video, not the physics") {
+    const Scene scene = two_disc_scene(0.2);
+    RenderRequest request;
+    request.scene = "two";
+    const RenderPlan plain = plan_render(request, scene);
+    CHECK(plain.queue_events == 0);
+    CHECK(plain.slow_motion == 1.0);
+    request.queue = 7;
+    request.slow_motion = 4.0;
+    const RenderPlan slow = plan_render(request, scene);
+    CHECK(slow.queue_events == 7);
+    CHECK(slow.speed.speed == doctest::Approx(plain.speed.speed / 4.0));
+    CHECK(slow.clock.interval == doctest::Approx(plain.clock.interval / 4.0));
+    CHECK(slow.time_engine.dt == plain.time_engine.dt);  // same physics, more frames per step
+    CHECK(slow.lesson.frames_per_step == 4 * plain.lesson.frames_per_step);
+    request.mode = "event";
+    CHECK(plan_render(request, scene).queue_events == 7);
 }
 
 TEST_CASE(

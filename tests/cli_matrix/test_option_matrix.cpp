@@ -98,6 +98,15 @@ TEST_CASE("option matrix: render's numbers, sizes and names") {
     cases.push_back({"gas --last-frame --format gif" + never + ".png", "--format", "png"});
     cases.push_back({"gas --last-frame" + never + ".gif", "-o", "a .png path"});
     cases.push_back({"gas --progress loud" + never + ".mp4", "--progress"});
+    for (const char* v : {"0", "21", "-1", "2.5", "1e3", "x", "99999999999999999999"})
+        cases.push_back({std::string("gas --queue ") + v + never + ".mp4", "--queue"});
+    cases.push_back({"gas --queue --mode time" + never + ".mp4", "--queue"});
+    cases.push_back({"gas --queue 3 --mode time --engine classic" + never + ".mp4", "--queue"});
+    cases.push_back({"gas --queue --overlays none" + never + ".mp4", "--queue"});
+    cases.push_back({"gas --queue --overlays full" + never + ".mp4", "--queue"});
+    for (const char* v : {"0", "0.5", "-2", "nan", "inf", "1e9", "abc"})
+        cases.push_back({std::string("gas --slow-motion ") + v + never + ".mp4", "--slow-motion",
+                         "", v == std::string("abc")});
     expect_refused("render", cases);
 }
 
@@ -111,6 +120,8 @@ TEST_CASE("option matrix: thumbnail --at at every extreme") {
     cases.push_back({"gas --at 1 --seed -1" + never + ".png", "--seed"});
     cases.push_back({"gas" + never + ".gif", "-o", "a .png path"});
     cases.push_back({"gas --engine time" + never + ".png", "--engine", "fast or classic"});
+    cases.push_back({"gas --at 1 --queue 0" + never + ".png", "--queue"});
+    cases.push_back({"gas --at 1 --queue --mode time" + never + ".png", "--queue"});
     expect_refused("thumbnail", cases);
 }
 
@@ -184,4 +195,42 @@ TEST_CASE("option matrix: extreme but valid values run to the end") {
                "simulate gas --until 1 --engine classic --pq dary:2", "check gas",
                "bench engine --n 2 --eta 0.01 --collisions 1 --warmup 0",
                "bench engine --n 64 --collisions 100 --seed 18446744073709551615 --json"});
+}
+
+TEST_CASE("option matrix: puzzle's boards and options") {
+    std::vector<Bad> cases;
+    const std::string out = never + ".mp4";
+    // The board is the positional argument: its errors begin "board".
+    cases.push_back({"\"1 2 3 4 x 6 7 5 8\"" + out, "board", "'x' (token 5)"});
+    cases.push_back({"\"1 2 3 4 9 6 7 5 0\"" + out, "board", "'9' (token 5)"});
+    cases.push_back({"\"1 2 3 4 0 6 7 5 99999999999999999999\"" + out, "board", "(token 9)"});
+    cases.push_back({"\"1 2 3 4 0 6 7 5 5\"" + out, "board", "'5' (token 9)"});
+    cases.push_back({"\"1 2 3\"" + out, "board", "board: 3 tokens"});
+    cases.push_back({"\"\"" + out, "board", "board: 0 tokens"});
+    cases.push_back({"\"1 2 3 4 5 6 8 7 0\"" + out, "board", "cannot be solved"});
+    cases.push_back({"\"2 1 3 0\"" + out, "board", "cannot be solved"});
+    for (const char* v : {"-1", "1001", "1e3", "x"})
+        cases.push_back({std::string("random --moves ") + v + out, "--moves"});
+    for (const char* v : {"1", "5", "-3"})
+        cases.push_back({std::string("random --side ") + v + out, "--side"});
+    for (const char* v : {"-1", "1e23", "0x10"})
+        cases.push_back({std::string("random --seed ") + v + out, "--seed"});
+    cases.push_back({"\"1 2 3 4 0 6 7 5 8\" --seed 3" + out, "--seed"});
+    cases.push_back({"random --heuristic euclid" + out, "--heuristic"});
+    for (const char* v : {"heap", "dary:0", "indexed:5"})
+        cases.push_back({std::string("random --pq ") + v + out, "--pq"});
+    cases.push_back({"random --method dfs" + out, "--method"});
+    for (const char* v : {"0", "-1", "20000001", "1e6"})
+        cases.push_back({std::string("random --max-nodes ") + v + out, "--max-nodes"});
+    cases.push_back({"random --solve -o x.mp4", "--output"});
+    cases.push_back({"random --json --size 854x480", "--size"});
+    cases.push_back({"random --size 320x180" + out, "--size"});
+    cases.push_back({"random -q z" + out, "-q"});
+    cases.push_back({"random --fps 0" + out, "--fps"});
+    cases.push_back({"random --format avi" + out, "--format"});
+    cases.push_back({"random --last-frame" + out, "-o"});
+    cases.push_back({"random --progress loud" + out, "--progress"});
+    cases.push_back(
+        {"random --side 4 --moves 60 --seed 5 --max-nodes 10000 --solve", "--max-nodes"});
+    expect_refused("puzzle", cases);
 }

@@ -3,6 +3,7 @@
 // Regenerate deliberately with COLLIDE_UPDATE_GOLDENS=1 (then LOOK at the new PNGs).
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -113,6 +114,120 @@ TEST_CASE("golden: one panel in scene colours with title and counters") {
     frame.panels = {{&s, "Event-driven (priority queue)", {"events 42", "queue 97"}}};
     frame.time_text = "t = 0.50";
     check_against_golden(renderer.render(frame), "one_panel_scene");
+}
+
+/// A classic engine's queue as the engines report it: a binary heap whose root is stale, the
+/// next collisions (a pair and two walls), and the latest pops, one of them stale and just popped.
+QueueView classic_queue(double now) {
+    QueueView q;
+    q.name = "binary heap";
+    q.shape = QueueShape::heap;
+    q.arity = 2;
+    q.size = 170;
+    q.stale_entries = 121;
+    q.levels = 3;
+    q.slots = {
+        {now + 0.05, QueuedKind::pair, 10, 13, true}, {now + 0.2, QueuedKind::pair, 0, 1},
+        {now + 0.1, QueuedKind::xwall, 2, 0},         {now + 0.3, QueuedKind::pair, 4, 5, true},
+        {now + 0.25, QueuedKind::ywall, 3, 0},        {now + 0.4, QueuedKind::pair, 6, 7},
+        {now + 0.15, QueuedKind::xwall, 8, 0, true}};
+    q.next = {{now + 0.1, QueuedKind::xwall, 2, 0},
+              {now + 0.2, QueuedKind::pair, 0, 1},
+              {now + 0.25, QueuedKind::ywall, 3, 0}};
+    q.popped = {{now - 0.5, QueuedKind::pair, 1, 4},
+                {now - 0.2, QueuedKind::ywall, 5, 0},
+                {now - 0.01, QueuedKind::pair, 3, 9, true}};
+    q.pops = 76;
+    q.stale_pops = 37;
+    return q;
+}
+
+Snapshot queue_snapshot() {
+    Snapshot s = test::gas_snapshot(14, 0.05, {1.0, 1.0, Boundary::walls}, 4, 0.3);
+    s.time = 2.0;
+    s.discs[0].position = {0.3, 0.3};
+    s.discs[1].position = {0.6, 0.45};
+    s.discs[2].position = {0.8, 0.7};
+    s.discs[2].velocity = {0.4, 0.1};
+    s.discs[3].position = {0.2, 0.8};
+    s.discs[3].velocity = {0.0, 0.5};
+    return s;
+}
+
+FrameContent queue_frame(const Snapshot& left, const Snapshot& right) {
+    FrameContent frame;
+    frame.panels = {{&left, "Time-driven", {}}, {&right, "Event-driven", {}}};
+    frame.panels[0].figures = {{"0", "missed", true}};
+    frame.panels[1].figures = {{"39", "collisions", false}};
+    frame.time_text = "t = 2.000";
+    frame.speed = 1.0;
+    frame.video_time = 2.0;
+    return frame;
+}
+
+TEST_CASE("golden: the event queue of the classic loop under the panels, 640x360") {
+    RenderConfig config = test::small_config(true);
+    config.width = 640;
+    config.height = 360;
+    config.overlays = OverlayLevel::lesson;
+    Renderer renderer(config, test::test_backend());
+    const Snapshot left = queue_snapshot();
+    Snapshot right = queue_snapshot();
+    right.queue = classic_queue(right.time);
+    check_against_golden(renderer.render(queue_frame(left, right)), "queue_classic_heap");
+}
+
+TEST_CASE("golden: an ordered array's queue, and the fast engine's in a compact frame") {
+    RenderConfig config = test::small_config(true);
+    config.width = 640;
+    config.height = 360;
+    config.overlays = OverlayLevel::lesson;
+    Renderer renderer(config, test::test_backend());
+    const Snapshot left = queue_snapshot();
+    Snapshot right = queue_snapshot();
+    QueueView q = classic_queue(right.time);
+    q.name = "ordered array";
+    q.shape = QueueShape::ordered_array;
+    std::sort(q.slots.begin(), q.slots.end(),
+              [](const QueuedEvent& a, const QueuedEvent& b) { return a.t < b.t; });
+    right.queue = q;
+    check_against_golden(renderer.render(queue_frame(left, right)), "queue_ordered_array");
+
+    // Compact (thumbnails): the lines in the box only, no labels, no strip.
+    config.width = 320;
+    config.height = 180;
+    Renderer compact(config, test::test_backend());
+    q = classic_queue(right.time);
+    q.name = "indexed 4-ary heap";
+    q.arity = 4;
+    q.levels = 2;
+    q.one_per_disc = true;
+    q.slots.resize(5);
+    right.queue = q;
+    check_against_golden(compact.render(queue_frame(left, right)), "queue_fast_compact");
+}
+
+TEST_CASE("queue: drawn only when the snapshot carries one, the next event in its colour") {
+    RenderConfig config = test::small_config(true);
+    config.width = 640;
+    config.height = 360;
+    config.overlays = OverlayLevel::lesson;
+    Renderer renderer(config, test::test_backend());
+    const Snapshot left = queue_snapshot();
+    Snapshot right = queue_snapshot();
+    const Image without = renderer.render(queue_frame(left, right));
+    right.queue = classic_queue(right.time);
+    Renderer again(config, test::test_backend());
+    const Image with = again.render(queue_frame(left, right));
+    CHECK(with.rgba != without.rgba);
+    // The highlight colour (the next event's tick, ring and label, the heap's root) appears only
+    // with the queue.
+    const Rgb8 next{255, 196, 40};
+    CHECK(test::count_near(without, next, 20) == 0);
+    CHECK(test::count_near(with, next, 20) > 40);
+    // A snapshot without a queue after one with it: the frame is as if it never had one.
+    right.queue.reset();
+    CHECK(again.render(queue_frame(left, right)).rgba == without.rgba);
 }
 
 }  // namespace

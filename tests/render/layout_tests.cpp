@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "frame_builder.hpp"
@@ -111,6 +112,30 @@ TEST_CASE("lesson layout: notes, colour legend, a large plot and one panel never
     const FrameLayout layout = compute_layout(wide);
     CHECK(layout.panels[0].box.width() == doctest::Approx(2.0 * layout.panels[0].box.height()));
     check_nothing_overlaps_text(layout, {1280, 720});
+}
+
+TEST_CASE("lesson layout: the queue strip fits under the panels, clear of every other text") {
+    for (const Size size :
+         {Size{854, 480}, Size{1280, 720}, Size{1920, 1080}, Size{640, 360}, Size{1080, 1080}}) {
+        for (const int panels : {1, 2}) {
+            LayoutInput in = lesson_input(size, panels);
+            in.note_line = panels == 2;
+            in.color_legend = true;
+            in.queue_panel = panels - 1;  // the event-driven panel is the last
+            INFO(size.width << "x" << size.height << ", " << panels << " panels");
+            const FrameLayout layout = compute_layout(in);
+            REQUIRE(layout.queue_panel == panels - 1);
+            const RectF strip = layout.queue_strip;
+            CHECK(strip.height() >= std::round(queue_strip_share * size.height) - 0.5F);
+            CHECK(layout.slots(TextRole::queue).size() == 1);
+            for (const PanelLayout& panel : layout.panels) CHECK(strip.y0 > panel.box.y1);
+            check_nothing_overlaps_text(layout, size);
+        }
+    }
+    // Without a queue panel there is no strip, and the boxes are as before.
+    const FrameLayout plain = compute_layout(lesson_input({1280, 720}));
+    CHECK(plain.queue_panel == -1);
+    CHECK(plain.slots(TextRole::queue).empty());
 }
 
 TEST_CASE("compact layout below 480 px: boxes fill the frame, one line per panel, 9 px capitals") {

@@ -151,6 +151,9 @@ struct FrameContent {
     std::string energy_line;         ///< lesson level: "Energy conserved" (empty: the drift plot)
     std::string cost_heading = "Work so far";
     double video_time = 0.0;  ///< seconds of video at this frame: failure markers fade by it
+    /// Simulation time per second of video (0: unknown). A panel's queue (Snapshot::queue) keeps
+    /// a popped event highlighted for queue_pop_seconds of video by it.
+    double speed = 0.0;
     /// Lesson level: the speed histogram of moving discs in the column (large: it is the subject).
     PlotSize histogram = PlotSize::none;
     bool energy_plot = false;  ///< lesson level: the energy drift plot (energy not conserved)

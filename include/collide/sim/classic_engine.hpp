@@ -19,6 +19,7 @@
 #include "collide/sim/event.hpp"
 #include "collide/sim/kinematics.hpp"
 #include "collide/sim/observables.hpp"
+#include "collide/sim/queue_view.hpp"
 
 namespace collide::sim {
 
@@ -63,7 +64,9 @@ class ClassicEngine final : public Engine {
             poll_stop();
             const Event e = queue_.pop();
             ++stats_.pops;
-            if (!is_valid(e)) {
+            const bool valid = is_valid(e);
+            if (watch_.on()) watch_.record_pop(queued(e, !valid));
+            if (!valid) {
                 ++stats_.stale_pops;
                 continue;
             }
@@ -92,7 +95,13 @@ class ClassicEngine final : public Engine {
             d.tagged = appearance_.tagged[i] != 0;
             s.discs.push_back(d);
         }
+        if (watch_.on()) s.queue = queue_view();
         return s;
+    }
+
+    bool watch_queue(std::size_t next_events) override {
+        watch_.start(next_events);
+        return true;
     }
 
     [[nodiscard]] Measurements measurements() const override {
@@ -136,6 +145,17 @@ class ClassicEngine final : public Engine {
     void set_velocity(std::size_t i, Vec2 v) noexcept {
         vx_[i] = v.x;
         vy_[i] = v.y;
+    }
+
+    /// The queue as it stands (see Engine::watch_queue): O(entries).
+    [[nodiscard]] QueueView queue_view() const {
+        QueueView view;
+        describe_queue(
+            queue_, watch_.next_events(), [this](const Event& e) { return !is_valid(e); }, view);
+        view.popped = watch_.popped();
+        view.pops = stats_.pops;
+        view.stale_pops = stats_.stale_pops;
+        return view;
     }
 
     /// Predicts each pair once (j > i), row by row, looking at the stop flag before each row.
@@ -360,6 +380,7 @@ class ClassicEngine final : public Engine {
     std::uint64_t predictions_ = 0;
     double wall_seconds_ = 0.0;
     CollisionListener listener_;
+    QueueWatch watch_;  ///< off unless a teaching video asked for the queue (watch_queue)
 };
 
 }  // namespace collide::sim

@@ -4,6 +4,7 @@
 /// advance exactly to a frame time, then hand out a snapshot and measurements.
 
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -48,6 +49,16 @@ class Engine {
     [[nodiscard]] virtual Measurements measurements() const = 0;
     /// Called once per resolved collision, in order (events log, determinism tests).
     virtual void set_collision_listener(CollisionListener listener) = 0;
+
+    /// Asks every later snapshot() to carry a QueueView (Snapshot::queue): the next
+    /// `next_events` collisions, the queue's first slots and the events popped from now on. For
+    /// teaching videos (`collide render --queue`); an engine never asked pays nothing measurable.
+    /// Returns false, and does nothing, for an engine that has no event queue (time-driven).
+    /// Throws Error(input) naming `--queue` unless 1 <= next_events <= sim::max_watched_events.
+    virtual bool watch_queue(std::size_t next_events) {
+        (void)next_events;
+        return false;
+    }
 
     /// Makes advance_to() cancellable: the engine polls `stop` (set by another thread or a signal
     /// handler) every few thousand events, or every time step and every few thousand pair tests

@@ -36,6 +36,7 @@
 #include "collide/sim/kinematics.hpp"
 #include "collide/sim/observables.hpp"
 #include "collide/sim/pq/indexed_heap.hpp"
+#include "collide/sim/queue_view.hpp"
 
 namespace collide::sim {
 
@@ -55,6 +56,10 @@ class FastEngine final : public Engine {
     [[nodiscard]] Measurements measurements() const override;
     void set_collision_listener(CollisionListener listener) override {
         listener_ = std::move(listener);
+    }
+    bool watch_queue(std::size_t next_events) override {
+        watch_.start(next_events);
+        return true;
     }
 
     /// Grid cells per axis (for tests and the benchmark report).
@@ -192,6 +197,12 @@ class FastEngine final : public Engine {
     void consider_walls_and_cells(std::uint32_t i, const Particle& pi, double xi, double yi,
                                   Key& best);
 
+    // --- the queue view (watch_queue)
+    /// Disc i's pending event as the view shows it (scene indices; stale when its partner has
+    /// collided since it was predicted).
+    [[nodiscard]] QueuedEvent queued_event(std::uint32_t i, const Key& key) const noexcept;
+    [[nodiscard]] QueueView queue_view() const;
+
     // --- bookkeeping
     void advance_disc(std::uint32_t i) noexcept;
     void link(std::uint32_t i, std::uint32_t cell) noexcept;
@@ -238,6 +249,7 @@ class FastEngine final : public Engine {
     double wall_seconds_ = 0.0;
     std::uint64_t instant_limit_ = 0;  ///< see count_collision_now
     CollisionListener listener_;
+    QueueWatch watch_;  ///< off unless a teaching video asked for the queue (watch_queue)
 };
 
 }  // namespace collide::sim

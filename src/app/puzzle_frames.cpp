@@ -1,0 +1,286 @@
+#include "puzzle_frames.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "collide/error.hpp"
+
+namespace collide::app {
+
+namespace {
+
+using puzzle::Method;
+using puzzle::SearchResult;
+using render::PuzzleMark;
+
+/// Fraction of a move's time the tile takes to slide; the rest holds still.
+constexpr double slide_part = 0.7;
+
+float ease(double x) noexcept {
+    const double t = std::clamp(x, 0.0, 1.0);
+    return static_cast<float>(t * t * (3.0 - 2.0 * t));
+}
+
+std::string plural(std::size_t n, const char* word) {
+    return with_thousands(n) + " " + word + (n == 1 ? "" : "s");
+}
+
+std::string puzzle_name(int side) {
+    return std::to_string(side * side - 1) + "-puzzle";
+}
+
+/// How many entries of the ascending list `indices` are below `step`.
+std::size_t count_below(const std::vector<std::uint32_t>& indices, std::size_t step) {
+    return static_cast<std::size_t>(std::lower_bound(indices.begin(), indices.end(), step) -
+                                    indices.begin());
+}
+
+}  // namespace
+
+std::string with_thousands(std::uint64_t n) {
+    std::string digits = std::to_string(n);
+    for (int i = static_cast<int>(digits.size()) - 3; i > 0; i -= 3)
+        digits.insert(static_cast<std::size_t>(i), ",");
+    return digits;
+}
+
+PuzzleFrames::PuzzleFrames(const puzzle::Board& start, const std::vector<SearchResult>& results)
+    : start_(start) {
+    if (results.empty() || results.size() > 2)
+        throw_runtime_error("puzzle video: needs one or two searches");
+    for (const SearchResult& r : results) {
+        if (!r.solved()) throw_runtime_error("puzzle video: a search without a solution");
+        Side side;
+        side.result = &r;
+        side.deepest.push_back(0);
+        for (std::size_t k = 0; k < r.expansions.size(); ++k) {
+            const std::uint16_t depth = r.nodes[r.expansions[k]].moves;
+            if (side.by_depth.size() <= depth) side.by_depth.resize(depth + 1U);
+            side.by_depth[depth].push_back(static_cast<std::uint32_t>(k));
+            side.deepest.push_back(std::max(side.deepest.back(), depth));
+        }
+        side.path = r.solution_path();
+        most_expansions_ = std::max(most_expansions_, r.expansions.size());
+        longest_solution_ = std::max(longest_solution_, side.path.size() - 1);
+        sides_.push_back(std::move(side));
+    }
+    // About 3 s for a handful of boards, 13 s for the 180,000 of a hardest 8-puzzle's BFS.
+    search_seconds_ =
+        std::min(16.0, 3.0 + 2.0 * std::log10(static_cast<double>(most_expansions_) + 1.0));
+    per_move_ = longest_solution_ == 0
+                    ? 0.8
+                    : std::clamp(12.0 / static_cast<double>(longest_solution_), 0.35, 0.8);
+}
+
+double PuzzleFrames::playback_start() const noexcept {
+    return search_end() + pause_;
+}
+
+double PuzzleFrames::duration() const noexcept {
+    return playback_start() + per_move_ * static_cast<double>(longest_solution_) + outro_;
+}
+
+std::size_t PuzzleFrames::step_at(std::size_t i, double seconds) const noexcept {
+    const std::size_t total = sides_[i].result->expansions.size();
+    const double u = (seconds - intro_) / search_seconds_;
+    if (u <= 0.0) return 0;
+    if (u >= 1.0) return total;
+    const double grown = std::floor(std::pow(static_cast<double>(most_expansions_) + 1.0, u) - 1.0);
+    return std::min(total, static_cast<std::size_t>(std::max(0.0, grown)));
+}
+
+std::string PuzzleFrames::title(const Side& side) const {
+    const SearchResult& r = *side.result;
+    if (r.method == Method::bfs) return "Breadth-first search";
+    return fmt::format("A* ({}, --pq {})", puzzle::to_string(r.heuristic), pq::to_string(r.queue));
+}
+
+std::vector<std::string> PuzzleFrames::counters(const Side& side, std::size_t step) const {
+    const SearchResult& r = *side.result;
+    const bool done = step == r.expansions.size();
+    std::vector<std::string> out{"expanded " + with_thousands(step)};
+
+    // Ids are handed out as boards are enqueued, so the boards enqueued by then are a prefix.
+    std::size_t lo = 0;
+    std::size_t hi = r.nodes.size();
+    while (lo < hi) {
+        const std::size_t mid = lo + (hi - lo) / 2;
+        if (r.enqueued_at(static_cast<std::uint32_t>(mid)) <= step) {
+            lo = mid + 1;
+        } else {
+            hi = mid;
+        }
+    }
+    const std::size_t enqueued = lo;
+    out.push_back("enqueued " + with_thousands(enqueued));
+    if (done) {
+        out.push_back("largest queue " + with_thousands(r.stats.max_queue));
+    } else {
+        out.push_back("in queue " + with_thousands(r.queue_size(step)));
+    }
+    return out;
+}
+
+render::PuzzleBoardView PuzzleFrames::board_view(const Side& side, std::uint32_t id) const {
+    const SearchResult& r = *side.result;
+    const puzzle::Board b = r.board_of(id);
+    render::PuzzleBoardView view;
+    view.side = b.side();
+    for (int i = 0; i < b.cells(); ++i) view.tiles.push_back(static_cast<std::uint8_t>(b.tile(i)));
+    const puzzle::SearchNode& n = r.nodes[id];
+    if (r.method == Method::astar) {
+        view.label = fmt::format("{}+{}={}", n.moves, n.priority - n.moves, n.priority);
+    } else {
+        view.label = "depth " + std::to_string(n.moves);
+    }
+    return view;
+}
+
+render::PuzzlePanelView PuzzleFrames::search_panel(const Side& side, std::size_t step) const {
+    const SearchResult& r = *side.result;
+    const bool done = step == r.expansions.size();
+    render::PuzzlePanelView p;
+    p.title = title(side);
+    p.counters = counters(side, step);
+    if (done) {
+        p.status = fmt::format("solved: {} moves, after {}", r.solution_length(),
+                               plural(r.stats.expanded, "board") + " expanded");
+    } else if (r.method == Method::bfs) {
+        p.status = "level by level: every board d moves away before any d+1";
+    } else {
+        p.status = fmt::format("lowest priority first: moves so far + {} distance",
+                               puzzle::to_string(r.heuristic));
+    }
+
+    // The tree: the deepest rows reached, each with its most recent boards.
+    const std::size_t rows = render::max_puzzle_rows;
+    if (step > 0) {
+        // The deepest rows, but never without the board being expanded: A* may come back up
+        // the tree, and then the rows follow it (keeping up to two deeper rows below it).
+        const std::size_t current = r.nodes[r.expansions[step - 1]].moves;
+        const std::size_t deepest = std::min<std::size_t>(side.deepest[step], current + 2);
+        const std::size_t first = deepest + 1 > rows ? deepest + 1 - rows : 0;
+        std::size_t hidden = 0;
+        for (std::size_t d = 0; d < first; ++d) hidden += count_below(side.by_depth[d], step);
+        if (first > 0) {
+            p.hidden_rows =
+                fmt::format("not drawn: depths 0 to {} ({})", first - 1, plural(hidden, "board"));
+        }
+        if (deepest < side.deepest[step]) {
+            std::size_t below = 0;
+            for (std::size_t d = deepest + 1; d <= side.deepest[step]; ++d)
+                below += count_below(side.by_depth[d], step);
+            p.hidden_rows +=
+                fmt::format("{}{} to {} ({})", p.hidden_rows.empty() ? "not drawn: depths " : ", ",
+                            deepest + 1, side.deepest[step], plural(below, "board"));
+        }
+        std::vector<std::uint32_t> above;  // expansion indices drawn in the row above
+        for (std::size_t d = first; d <= deepest; ++d) {
+            const std::vector<std::uint32_t>& list = side.by_depth[d];
+            const std::size_t count = count_below(list, step);
+            const std::size_t shown = std::min(count, render::max_puzzle_row_boards);
+            render::PuzzleRowView row;
+            row.label = "depth " + std::to_string(d);
+            row.count = plural(count, "board");
+            std::vector<std::uint32_t> picks(
+                list.begin() + static_cast<std::ptrdiff_t>(count - shown),
+                list.begin() + static_cast<std::ptrdiff_t>(count));
+            // Once solved, each row keeps the solution's board in view (leftmost), so the path
+            // from the start to the goal reads down the tree.
+            if (done && d < side.path.size() && !picks.empty()) {
+                const std::uint32_t on_path = r.nodes[side.path[d]].popped;
+                if (std::find(picks.begin(), picks.end(), on_path) == picks.end()) {
+                    picks.erase(picks.begin());
+                    picks.insert(picks.begin(), on_path);
+                }
+            }
+            std::vector<std::uint32_t> here;
+            for (const std::uint32_t k : picks) {
+                const std::uint32_t id = r.expansions[k];
+                render::PuzzleBoardView b = board_view(side, id);
+                if (r.method == Method::bfs) b.label = "#" + with_thousands(k + 1U);
+                if (done && id == r.goal) {
+                    b.mark = PuzzleMark::goal;
+                } else if (k + 1 == step) {
+                    b.mark = PuzzleMark::current;
+                } else if (done &&
+                           std::find(side.path.begin(), side.path.end(), id) != side.path.end()) {
+                    b.mark = PuzzleMark::solution;
+                }
+                const std::uint32_t parent = r.nodes[id].parent;
+                if (parent != puzzle::no_node) {
+                    const auto it = std::find(above.begin(), above.end(), r.nodes[parent].popped);
+                    if (it != above.end()) b.parent = static_cast<int>(it - above.begin());
+                }
+                row.boards.push_back(std::move(b));
+                here.push_back(k);
+            }
+            p.rows.push_back(std::move(row));
+            above = std::move(here);
+        }
+    }
+
+    if (step == 0) {
+        p.board = board_view(side, 0);
+        p.caption = fmt::format("start: manhattan {}, hamming {}", puzzle::manhattan(start_),
+                                puzzle::hamming(start_));
+    }
+
+    // The queue's front.
+    p.queue_title = r.method == Method::bfs ? "FIFO queue" : pq::to_string(r.queue) + " PQ";
+    const std::vector<std::uint32_t> front = r.queue_front(step, render::max_puzzle_queue_shown);
+    for (std::uint32_t id : front) p.queue.push_back(board_view(side, id));
+    const std::size_t size = r.queue_size(step);
+    if (size > front.size()) p.queue_more = "+ " + with_thousands(size - front.size()) + " more";
+    if (size == 0) p.queue_more = "(empty)";
+    return p;
+}
+
+render::PuzzlePanelView PuzzleFrames::playback_panel(const Side& side, double t) const {
+    const SearchResult& r = *side.result;
+    render::PuzzlePanelView p;
+    p.title = title(side);
+    p.counters = counters(side, r.expansions.size());
+    p.status = fmt::format("solution: {}", plural(side.path.size() - 1, "move"));
+    p.playback = true;
+    const std::size_t moves = side.path.size() - 1;
+    const double at = std::max(0.0, t) / per_move_;
+    const auto m = static_cast<std::size_t>(std::floor(at));
+    if (m >= moves) {
+        p.board = board_view(side, side.path.back());
+        p.caption = fmt::format("solved in {}", plural(moves, "move"));
+        p.board.mark = PuzzleMark::goal;
+        return p;
+    }
+    const puzzle::Board before = r.board_of(side.path[m]);
+    const puzzle::Board after = r.board_of(side.path[m + 1]);
+    p.board = board_view(side, side.path[m + 1]);
+    p.slide = {after.blank(), before.blank(), ease((at - static_cast<double>(m)) / slide_part)};
+    const puzzle::Move move = before.move_to(after);
+    p.caption = fmt::format("move {} of {}: {} slides {}", m + 1, moves, move.tile,
+                            puzzle::to_string(move.direction));
+    return p;
+}
+
+render::PuzzleFrameView PuzzleFrames::frame_at(double seconds) const {
+    const double t = std::clamp(seconds, 0.0, duration());
+    render::PuzzleFrameView view;
+    view.heading = fmt::format("{} {}: breadth-first search against A*", puzzle_name(start_.side()),
+                               start_.to_string());
+    if (sides_.size() == 1) {
+        view.heading = fmt::format("{} {}: {}", puzzle_name(start_.side()), start_.to_string(),
+                                   title(sides_.front()));
+    }
+    for (std::size_t i = 0; i < sides_.size(); ++i) {
+        if (t >= playback_start()) {
+            view.panels.push_back(playback_panel(sides_[i], t - playback_start()));
+        } else {
+            view.panels.push_back(search_panel(sides_[i], step_at(i, t)));
+        }
+    }
+    return view;
+}
+
+}  // namespace collide::app

@@ -1,0 +1,71 @@
+#pragma once
+/// \file
+/// `collide puzzle`'s bridge between the recorded searches (collide/sim/puzzle/search.hpp) and
+/// the drawing (collide/render/puzzle_view.hpp): what each panel shows at one moment of the
+/// video, as plain values. Pure: unit-tested in collide_app_core_tests.
+///
+/// The timeline: a moment on the start, then the searches grow on one shared clock (the number
+/// of expansions grows geometrically with time, so the first boards are seen one by one and a
+/// 180,000-board BFS still ends in seconds; a search that is done waits, so the cheaper one is
+/// seen to finish first), a pause, the solutions played back move by move side by side, a hold.
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "collide/render/puzzle_view.hpp"
+#include "collide/sim/puzzle/board.hpp"
+#include "collide/sim/puzzle/search.hpp"
+
+namespace collide::app {
+
+/// "1,234,567".
+[[nodiscard]] std::string with_thousands(std::uint64_t n);
+
+class PuzzleFrames {
+  public:
+    /// `results`: one or two solved searches of `start` (kept by reference: they must outlive
+    /// this object). Throws Error(runtime) for an unsolved one (a caller's bug).
+    PuzzleFrames(const puzzle::Board& start, const std::vector<puzzle::SearchResult>& results);
+
+    /// Seconds of video.
+    [[nodiscard]] double duration() const noexcept;
+    /// When the searches start growing, and when the last one has finished.
+    [[nodiscard]] double search_start() const noexcept { return intro_; }
+    [[nodiscard]] double search_end() const noexcept { return intro_ + search_seconds_; }
+    /// When the playback of the solutions starts.
+    [[nodiscard]] double playback_start() const noexcept;
+
+    /// Expansions shown for search `i` at `seconds` (0 .. its expansions).
+    [[nodiscard]] std::size_t step_at(std::size_t i, double seconds) const noexcept;
+
+    /// The frame at `seconds` (clamped to the video).
+    [[nodiscard]] render::PuzzleFrameView frame_at(double seconds) const;
+
+  private:
+    struct Side {
+        const puzzle::SearchResult* result = nullptr;
+        std::vector<std::vector<std::uint32_t>> by_depth;  ///< expansion indices per depth
+        std::vector<std::uint16_t> deepest;                ///< deepest depth after k expansions
+        std::vector<std::uint32_t> path;                   ///< the solution's node ids
+    };
+
+    [[nodiscard]] render::PuzzlePanelView search_panel(const Side& side, std::size_t step) const;
+    [[nodiscard]] render::PuzzlePanelView playback_panel(const Side& side, double t) const;
+    [[nodiscard]] render::PuzzleBoardView board_view(const Side& side, std::uint32_t id) const;
+    [[nodiscard]] std::string title(const Side& side) const;
+    [[nodiscard]] std::vector<std::string> counters(const Side& side, std::size_t step) const;
+
+    puzzle::Board start_;
+    std::vector<Side> sides_;
+    std::size_t most_expansions_ = 0;
+    std::size_t longest_solution_ = 0;
+    double intro_ = 2.5;           ///< the start, before any expansion
+    double search_seconds_ = 0.0;  ///< the growth of the largest search
+    double pause_ = 2.0;           ///< the finished trees, before the playback
+    double per_move_ = 0.5;        ///< playback seconds per move
+    double outro_ = 2.5;           ///< the solved boards, at the end
+};
+
+}  // namespace collide::app

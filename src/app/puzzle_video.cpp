@@ -1,0 +1,247 @@
+/// `collide puzzle`'s video: options resolved as `collide heap` resolves them (the extension
+/// decides the format unless --format says it; --last-frame writes one PNG; default paths under
+/// out/), then every frame from PuzzleFrames drawn by PuzzleRenderer into the VideoWriter.
+
+#include "puzzle_video.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+
+#include "collide/error.hpp"
+#include "collide/render/puzzle_view.hpp"
+#include "collide/video/output.hpp"
+#include "collide/video/png.hpp"
+#include "collide/video/video_writer.hpp"
+#include "interrupt.hpp"
+#include "progress.hpp"
+#include "puzzle_frames.hpp"
+#include "render_plan.hpp"
+
+namespace collide::app {
+
+namespace {
+
+bool given(const CLI::Option* option) {
+    return option != nullptr && option->count() > 0;
+}
+
+[[noreturn]] void bad_option(const std::string& option, const std::string& why) {
+    throw_input_error(option + ": " + why);
+}
+
+std::string lowercase_extension(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+
+struct Output {
+    std::filesystem::path path;
+    video::VideoFormat format = video::VideoFormat::mp4;
+    bool still = false;
+    bool default_path = false;
+};
+
+Output output_of(const PuzzleVideoCli& v) {
+    Output out;
+    const std::filesystem::path dir = default_output_dir;
+    if (v.last_frame || given(v.at_opt)) {
+        out.still = true;
+        if (given(v.format_opt) && v.format != "png")
+            bad_option("--format", "a single frame is written as png, got '" + v.format + "'");
+        if (given(v.output_opt) && lowercase_extension(v.output) != ".png")
+            bad_option("-o",
+                       "a single frame is a PNG image: give a .png path, got '" + v.output + "'");
+        out.default_path = !given(v.output_opt);
+        out.path = out.default_path ? dir / "puzzle.png" : std::filesystem::path(v.output);
+        return out;
+    }
+    if (given(v.format_opt)) {
+        out.format = video::parse_video_format(v.format, "--format");
+    } else if (given(v.output_opt)) {
+        const std::string ext = lowercase_extension(v.output);
+        if (ext == ".gif") {
+            out.format = video::VideoFormat::gif;
+        } else if (ext != ".mp4") {
+            bad_option("-o", "cannot tell the format of '" + v.output +
+                                 "': use a .mp4 or .gif path, --format png for a directory of "
+                                 "frames, or --last-frame for one PNG");
+        }
+    }
+    if (given(v.output_opt)) {
+        const bool file_format = out.format != video::VideoFormat::png_sequence;
+        if (file_format &&
+            lowercase_extension(v.output) != "." + std::string(video::to_string(out.format)))
+            bad_option("-o", fmt::format("'{}' does not end in .{} (--format {})", v.output,
+                                         video::to_string(out.format), v.format));
+        out.path = v.output;
+        return out;
+    }
+    out.default_path = true;
+    switch (out.format) {
+        case video::VideoFormat::mp4:
+            out.path = dir / "puzzle.mp4";
+            break;
+        case video::VideoFormat::gif:
+            out.path = dir / "puzzle.gif";
+            break;
+        case video::VideoFormat::png_sequence:
+            out.path = dir / "puzzle_frames";
+            break;
+    }
+    return out;
+}
+
+struct Geometry {
+    int width = 1280;
+    int height = 720;
+    int fps = 30;
+};
+
+/// The smallest frame whose text stays legible (the design is laid out for 1280x720).
+constexpr int min_width = 854;
+constexpr int min_height = 480;
+
+Geometry geometry_of(const PuzzleVideoCli& v) {
+    const QualityPreset preset = quality_preset(v.quality, "-q");
+    Geometry g{preset.width, preset.height, preset.fps};
+    if (given(v.size_opt)) {
+        const FrameSize size = parse_frame_size(v.size, "--size");
+        g.width = size.width;
+        g.height = size.height;
+    }
+    if (g.width < min_width || g.height < min_height) {
+        bad_option(given(v.size_opt) ? "--size" : "-q",
+                   fmt::format("{}x{} is too small for legible boards and counters; at least "
+                               "{}x{}",
+                               g.width, g.height, min_width, min_height));
+    }
+    if (given(v.fps_opt)) {
+        if (v.fps < 1 || v.fps > 240)
+            bad_option("--fps", fmt::format("must be 1..240, got {}", v.fps));
+        g.fps = v.fps;
+    }
+    return g;
+}
+
+void print_notice(const std::string& line) {
+    std::fprintf(stderr, "collide: %s\n", line.c_str());
+}
+
+}  // namespace
+
+void add_puzzle_video_options(CLI::App& cmd, PuzzleVideoCli& v) {
+    v.output_opt = cmd.add_option("-o,--output", v.output,
+                                  "Video file (default out/puzzle.mp4, .gif, _frames/ or .png)");
+    v.format_opt =
+        cmd.add_option("--format", v.format, "mp4 (default), gif, or png (a directory of frames)");
+    v.quality_opt =
+        cmd.add_option("-q,--quality", v.quality,
+                       "l 854x480@15, m 1280x720@30 (default), h 1920x1080@60, k 3840x2160@60");
+    v.size_opt = cmd.add_option("--size", v.size,
+                                "Frame size WxH, overrides -q (at least 854x480, e.g. 960x540)");
+    v.fps_opt = cmd.add_option("--fps", v.fps, "Frames per second, overrides -q");
+    v.last_frame_opt =
+        cmd.add_flag("--last-frame", v.last_frame,
+                     "Write only the final frame, as a PNG (-o FILE.png, default out/puzzle.png)");
+    v.at_opt = cmd.add_option("--at", v.at,
+                              "Write only the frame at this many seconds of video, as a PNG (a "
+                              "still for slides; -o FILE.png, default out/puzzle.png)");
+    cmd.add_option("--progress", v.progress,
+                   "Progress on stderr: auto (bar on a terminal), bar, json or none")
+        ->capture_default_str();
+    cmd.add_flag("--verbose", v.verbose, "Show the encoder's own log");
+}
+
+void refuse_video_options(const PuzzleVideoCli& v, const std::string& mode) {
+    (void)parse_progress_mode(v.progress);  // harmless with text, but never a wrong value
+    for (const CLI::Option* o : {v.output_opt, v.format_opt, v.quality_opt, v.size_opt, v.fps_opt,
+                                 v.last_frame_opt, v.at_opt}) {
+        if (given(o)) {
+            bad_option(o->get_name(), mode + " prints text instead of a video; leave " +
+                                          o->get_name() + " out, or " + mode + " out");
+        }
+    }
+}
+
+void validate_puzzle_video(const PuzzleVideoCli& v) {
+    (void)parse_progress_mode(v.progress);
+    (void)geometry_of(v);
+    const Output output = output_of(v);
+    if (!output.default_path) {
+        video::check_output_writable(
+            output.path, !output.still && output.format == video::VideoFormat::png_sequence);
+    }
+}
+
+void render_puzzle_video(const puzzle::Board& start,
+                         const std::vector<puzzle::SearchResult>& results,
+                         const PuzzleVideoCli& v) {
+    const ProgressMode progress_mode = parse_progress_mode(v.progress);
+    const Geometry geometry = geometry_of(v);
+    const PuzzleFrames frames(start, results);
+    if (given(v.at_opt) && !(v.at >= 0.0 && v.at <= frames.duration())) {
+        bad_option("--at", fmt::format("must be within the video, 0..{:.2f} s, got {}",
+                                       frames.duration(), v.at));
+    }
+    const Output output = output_of(v);
+    if (output.default_path) std::filesystem::create_directories(output.path.parent_path());
+    video::check_output_writable(
+        output.path, !output.still && output.format == video::VideoFormat::png_sequence);
+    video::set_libav_verbose(v.verbose);
+
+    render::PuzzleViewConfig config;
+    config.width = geometry.width;
+    config.height = geometry.height;
+    render::PuzzleRenderer renderer(config, render::Backend::automatic, print_notice);
+
+    if (output.still) {
+        const double t = given(v.at_opt) ? v.at : frames.duration();
+        const Image image = renderer.render(frames.frame_at(t));
+        video::write_png(image, output.path);
+        std::printf("%s: %dx%d PNG at %.2f s of a %.2f s video\n", output.path.string().c_str(),
+                    geometry.width, geometry.height, t, frames.duration());
+        return;
+    }
+
+    InterruptGuard interrupts;
+    video::VideoOptions options;
+    options.path = output.path;
+    options.format = output.format;
+    options.width = geometry.width;
+    options.height = geometry.height;
+    options.fps = geometry.fps;
+    options.cancel = &interrupts.flag();
+    video::VideoWriter writer(options);
+    for (const std::string& line : writer.notices()) print_notice(line);
+
+    const auto count = std::max<std::int64_t>(
+        1, std::llround(frames.duration() * static_cast<double>(geometry.fps)));
+    Progress progress(progress_mode, count);
+    try {
+        for (std::int64_t k = 0; k < count; ++k) {
+            interrupts.throw_if_requested();
+            const double t = static_cast<double>(k) / geometry.fps;
+            Image frame = writer.spare_frame();
+            renderer.render(frames.frame_at(t), frame);
+            writer.write(std::move(frame));
+            progress.frame_done(t);
+        }
+        writer.finish();
+    } catch (...) {
+        progress.finish();
+        throw;
+    }
+    progress.finish();
+    std::printf("%s: %.2f s of video, %lld frames, %dx%d @ %g fps\n", output.path.string().c_str(),
+                static_cast<double>(count) / geometry.fps, static_cast<long long>(count),
+                writer.output_width(), writer.output_height(), writer.output_fps());
+}
+
+}  // namespace collide::app

@@ -1,0 +1,446 @@
+// The event queue inside the collision video (`collide render --queue`): the next collisions
+// drawn in the box, and a strip under the panel with the queue as what it is (a heap's top
+// levels as a tree, an array's first slots as a row), the latest pops (stale ones greyed) and
+// their counts. Everything comes from Snapshot::queue; nothing here knows the engines.
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "frame_builder.hpp"
+
+namespace collide::render {
+
+namespace {
+
+Rgba8 faded(Rgba8 c, float opacity) {
+    c.a = static_cast<std::uint8_t>(std::lround(std::clamp(opacity, 0.0F, 1.0F) * c.a));
+    return c;
+}
+
+Rgb8 rgb(Rgba8 c) {
+    return {c.r, c.g, c.b};
+}
+
+/// The next event: amber, far from the failure magenta; darker on the light theme, where the
+/// bright one has too little contrast against white.
+constexpr Rgb8 next_event_dark{255, 196, 40};
+constexpr Rgb8 next_event_light{185, 105, 0};
+
+/// "3-7", "5 wall", "5 cell": what an event involves, in the fewest characters.
+std::string event_label(const QueuedEvent& e) {
+    switch (e.kind) {
+        case QueuedKind::pair:
+            return fmt::format("{}-{}", e.a, e.b);
+        case QueuedKind::xwall:
+        case QueuedKind::ywall:
+            return fmt::format("{} wall", e.a);
+        case QueuedKind::cell:
+            return fmt::format("{} cell", e.a);
+    }
+    return "?";
+}
+
+/// Time to go, short: "0.42", "12.3", "3.1e-05".
+std::string time_to_go(double dt) {
+    if (dt < 0.0) dt = 0.0;
+    if (dt >= 0.01 && dt < 1000.0) return fmt::format("{:.3g}", dt);
+    if (dt == 0.0) return "0";
+    return fmt::format("{:.2g}", dt);
+}
+
+Rgba8 mix(Rgba8 a, Rgba8 b, float t) {
+    const auto lerp = [t](std::uint8_t x, std::uint8_t y) {
+        return static_cast<std::uint8_t>(std::lround(x + (y - x) * std::clamp(t, 0.0F, 1.0F)));
+    };
+    return {lerp(a.r, b.r), lerp(a.g, b.g), lerp(a.b, b.b), lerp(a.a, b.a)};
+}
+
+/// The part of segment a-b inside r (Liang-Barsky); false when none is.
+bool clip_to(RectF r, PointF& a, PointF& b) {
+    double t0 = 0.0;
+    double t1 = 1.0;
+    const double dx = b.x - a.x;
+    const double dy = b.y - a.y;
+    const double p[4] = {-dx, dx, -dy, dy};
+    const double q[4] = {a.x - r.x0, r.x1 - a.x, a.y - r.y0, r.y1 - a.y};
+    for (int k = 0; k < 4; ++k) {
+        if (p[k] == 0.0) {
+            if (q[k] < 0.0) return false;
+            continue;
+        }
+        const double t = q[k] / p[k];
+        if (p[k] < 0.0) {
+            t0 = std::max(t0, t);
+        } else {
+            t1 = std::min(t1, t);
+        }
+    }
+    if (t0 > t1) return false;
+    const PointF a0 = a;
+    a = {static_cast<float>(a0.x + t0 * dx), static_cast<float>(a0.y + t0 * dy)};
+    b = {static_cast<float>(a0.x + t1 * dx), static_cast<float>(a0.y + t1 * dy)};
+    return true;
+}
+
+}  // namespace
+
+Rgba8 FrameBuilder::next_color() const noexcept {
+    return with_alpha(config_.theme == Theme::light ? next_event_light : next_event_dark, 255);
+}
+
+float FrameBuilder::pop_highlight(const QueuedEvent& popped, double now) const noexcept {
+    if (!(speed_ > 0.0)) return 0.0F;
+    const double age = (now - popped.t) / (queue_pop_seconds * speed_);
+    return static_cast<float>(std::clamp(1.0 - age, 0.0, 1.0));
+}
+
+void FrameBuilder::add_plate_label(Font font, PointF at, std::string_view text, Rgba8 color,
+                                   RectF inside) {
+    const FontAtlas& f = atlas(font);
+    const float pad = std::round(0.2F * f.pixel_height());
+    const float w = f.text_width(text) + 2.0F * pad;
+    const float h = std::round(f.pixel_height() * 1.05F);
+    float x0 = std::clamp(at.x - 0.5F * w, inside.x0, std::max(inside.x0, inside.x1 - w));
+    float y0 = std::clamp(at.y - 0.5F * h, inside.y0, std::max(inside.y0, inside.y1 - h));
+    x0 = std::round(x0);
+    y0 = std::round(y0);
+    // Two events close together would print over each other: move the plate up or down to the
+    // nearest free place (labels_ holds the plates placed in this box so far).
+    const auto free_at = [&](float y) {
+        const RectF r{x0, y, x0 + w, y + h};
+        return std::none_of(labels_.begin(), labels_.end(),
+                            [&](const RectF& o) { return overlaps(r, o); });
+    };
+    for (int k = 1; k <= 6 && !free_at(y0); ++k) {
+        const float step =
+            static_cast<float>((k + 1) / 2) * (h + 1.0F) * (k % 2 == 1 ? 1.0F : -1.0F);
+        const float y = y0 + step;
+        if (y >= inside.y0 && y + h <= inside.y1 && free_at(y)) {
+            y0 = y;
+            break;
+        }
+    }
+    const RectF plate{x0, y0, x0 + w, y0 + h};
+    labels_.push_back(plate);
+    list_.over.add_rect(plate, with_alpha(rgb(palette_.box_fill), 215));
+    draw_text(font, {TextRole::queue, -1, plate, f.pixel_height()}, text, color, Align::centre);
+}
+
+// Lines between the discs of the next collisions, ticks on the walls, each with its time to go;
+// the next one thick and in the highlight colour, the later ones thinner and fainter.
+void FrameBuilder::add_queue_in_box(const Snapshot& snapshot, const PanelLayout& panel) {
+    if (intro_) return;
+    const QueueView& queue = *snapshot.queue;
+    const Box& box = snapshot.box;
+    const float body = body_font_->pixel_height();
+    const bool labels = !layout_.compact && small_font_.has_value();
+    const RectF inside = panel.box;
+    labels_.clear();
+    std::vector<std::pair<PointF, bool>> pending(queue.next.size(), {PointF{}, false});
+    // Latest first, so that the next event's line and label end up on top.
+    for (std::size_t r = queue.next.size(); r-- > 0;) {
+        const QueuedEvent& e = queue.next[r];
+        if (e.a >= snapshot.discs.size()) continue;  // defensive: bad view data
+        const bool first = r == 0;
+        const Rgba8 color = first ? next_color() : faded(palette_.text, 0.75F);
+        // Wide enough to be seen from the back of a lecture hall: 5 and 3 px at 720p.
+        const float width = first ? std::max(3.0F, std::round(body / 6.0F))
+                                  : std::max(1.5F, std::round(body / 10.0F));
+        const DiscState& a = snapshot.discs[e.a];
+        const double dt = e.t - snapshot.time;
+        PointF label_at;
+        if (first) {
+            // Rings around the discs of the next event.
+            for (const std::uint32_t k : {e.a, e.b}) {
+                if (k >= snapshot.discs.size() || (k == e.b && e.kind != QueuedKind::pair))
+                    continue;
+                const DiscState& disc = snapshot.discs[k];
+                const PointF c = panel.to_pixels(disc.position, box);
+                const auto radius = static_cast<float>(disc.radius * panel.scale);
+                list_.discs.push_back({c.x, c.y, radius + 0.8F * width, width, color});
+            }
+        }
+        if (e.kind == QueuedKind::pair) {
+            if (e.b >= snapshot.discs.size()) continue;
+            // The nearest images (periodic boxes: the pair may meet across the seam, and then
+            // the line is drawn from each disc to the seam, cut at the box).
+            const Vec2 pa = a.position;
+            const Vec2 d = box.displacement(pa, snapshot.discs[e.b].position);
+            const PointF qa = panel.to_pixels(pa, box);
+            const PointF qb = panel.to_pixels(pa + d, box);
+            label_at = {0.5F * (qa.x + qb.x), 0.5F * (qa.y + qb.y)};
+            const auto line = [&](Vec2 from, Vec2 to) {
+                PointF u = panel.to_pixels(from, box);
+                PointF v = panel.to_pixels(to, box);
+                if (clip_to(inside, u, v)) list_.over.add_line(u, v, width, color);
+            };
+            line(pa, pa + d);
+            if (box.boundary == Boundary::periodic) {
+                const Vec2 pb = snapshot.discs[e.b].position;
+                line(pb, pb - d);
+            }
+        } else if (e.kind == QueuedKind::xwall || e.kind == QueuedKind::ywall) {
+            // Where the disc's centre will be, and the wall point it touches.
+            const Vec2 centre = a.position + a.velocity * dt;
+            const bool x = e.kind == QueuedKind::xwall;
+            Vec2 hit = centre;
+            if (x) hit.x = a.velocity.x > 0.0 ? box.width : 0.0;
+            if (!x) hit.y = a.velocity.y > 0.0 ? box.height : 0.0;
+            const PointF from = panel.to_pixels(a.position, box);
+            const PointF to = panel.to_pixels(hit, box);
+            list_.over.add_line(from, to, std::max(1.0F, 0.5F * width), faded(color, 0.6F));
+            const float half = std::max(static_cast<float>(a.radius * panel.scale), 0.6F * body);
+            const float tick = first ? 2.0F * width : 1.6F * width;
+            if (x) {
+                list_.over.add_line({to.x, to.y - half}, {to.x, to.y + half}, tick, color);
+            } else {
+                list_.over.add_line({to.x - half, to.y}, {to.x + half, to.y}, tick, color);
+            }
+            // The label sits inside the box, a little away from the wall.
+            const float off = 1.2F * body;
+            label_at = {x ? to.x + (a.velocity.x > 0.0 ? -off : off) : to.x,
+                        x ? to.y : to.y + (a.velocity.y > 0.0 ? off : -off)};
+        } else {
+            continue;  // cell crossings are bookkeeping, not collisions
+        }
+        pending[r] = {label_at, true};
+    }
+    if (!labels) return;
+    // Labels after all lines, the next event's first so that it keeps its place.
+    for (std::size_t r = 0; r < queue.next.size(); ++r) {
+        if (!pending[r].second) continue;
+        const bool first = r == 0;
+        add_plate_label(first ? Font::body : Font::small, pending[r].first,
+                        time_to_go(queue.next[r].t - snapshot.time),
+                        first ? next_color() : palette_.text, inside);
+    }
+}
+
+// The strip: a heading, the latest pops on the left, the queue itself on the right.
+void FrameBuilder::add_queue_strip(const Snapshot& snapshot, RectF strip) {
+    const QueueView& queue = *snapshot.queue;
+    const FontAtlas& small = *small_font_;
+    const float line = std::round(small.pixel_height() * 1.2F);
+    const float m = std::round(0.5F * small.pixel_height());
+    list_.over.add_frame(strip, 1.0F, faded(palette_.muted, 0.6F));
+    const RectF inner{strip.x0 + m, strip.y0 + 0.5F * m, strip.x1 - m, strip.y1 - 0.5F * m};
+    std::string heading = fmt::format("Event queue: {}, {} entries", queue.name,
+                                      with_separators(static_cast<long long>(queue.size)));
+    if (queue.one_per_disc) {
+        heading += " (one per disc)";
+    } else if (queue.stale_entries > 0) {
+        heading +=
+            fmt::format(", {} stale", with_separators(static_cast<long long>(queue.stale_entries)));
+    }
+    const TextSlot heading_slot{
+        TextRole::queue, -1, {inner.x0, inner.y0, inner.x1, inner.y0 + line}, small.pixel_height()};
+    const std::string legend =
+        fmt::format("In the box: the next {} collisions queued, time to go", queue.next.size());
+    TextSlot left = heading_slot;
+    left.rect.x1 = inner.x1 - small.text_width(legend) - 2.0F * m;
+    draw_text(Font::small, left, heading, palette_.title);
+    draw_text(Font::small, heading_slot, legend, palette_.muted, Align::right);
+    const float popped_w = std::round(0.3F * inner.width());
+    const RectF body{inner.x0, inner.y0 + line + 0.5F * m, inner.x1, inner.y1};
+    add_popped(queue, snapshot.time, {body.x0, body.y0, body.x0 + popped_w, body.y1});
+    const RectF right{body.x0 + popped_w + m, body.y0, body.x1, body.y1};
+    if (queue.shape == QueueShape::heap) {
+        add_queue_tree(queue, snapshot.time, right);
+    } else {
+        add_queue_row(queue, snapshot.time, right);
+    }
+}
+
+// The latest pops, newest first: the one just popped in the highlight colour (fading), stale
+// ones greyed "thrown away" (classic) or "re-predicted" (fast); the counts at the bottom.
+void FrameBuilder::add_popped(const QueueView& queue, double now, RectF area) {
+    const FontAtlas& small = *small_font_;
+    const float line = std::round(small.pixel_height() * 1.2F);
+    const auto slot = [&](float y) {
+        return TextSlot{TextRole::queue, -1, {area.x0, y, area.x1, y + line}, small.pixel_height()};
+    };
+    float y = area.y0;
+    draw_text(Font::small, slot(y), "Popped (newest first)", palette_.muted);
+    y += line;
+    const float bottom = area.y1 - line;
+    for (std::size_t k = queue.popped.size(); k-- > 0 && y + line <= bottom;) {
+        const QueuedEvent& e = queue.popped[k];
+        const float glow = pop_highlight(e, now);
+        std::string text = event_label(e);
+        Rgba8 color = palette_.text;
+        if (e.stale) {
+            text += queue.one_per_disc ? "  stale: re-predict" : "  stale: thrown away";
+            color = faded(palette_.muted, 0.8F);
+        } else {
+            text += e.kind == QueuedKind::cell ? "  crossing" : "  resolved";
+        }
+        if (glow > 0.0F) {
+            // Just removed: a plate in the highlight colour behind it, fading out.
+            const RectF plate{area.x0 - 2.0F, y + 1.0F, area.x1, y + line - 1.0F};
+            const Rgba8 tint = e.stale ? palette_.muted : next_color();
+            list_.over.add_rect(plate, faded(tint, 0.35F * glow));
+            if (!e.stale) color = mix(color, next_color(), glow);
+        }
+        draw_text(Font::small, slot(y), text, color);
+        y += line;
+    }
+    const std::string counts =
+        queue.one_per_disc
+            ? fmt::format("{} pops, {} stale", with_separators(static_cast<long long>(queue.pops)),
+                          with_separators(static_cast<long long>(queue.stale_pops)))
+            : fmt::format("{} of {} pops stale",
+                          with_separators(static_cast<long long>(queue.stale_pops)),
+                          with_separators(static_cast<long long>(queue.pops)));
+    draw_text(Font::small, slot(bottom), counts, palette_.muted);
+}
+
+float FrameBuilder::node_width(const std::vector<QueuedEvent>& events) const {
+    const FontAtlas& small = *small_font_;
+    float widest = small.text_width("0.0000");  // the longest time to go, "stale"
+    for (const QueuedEvent& e : events) widest = std::max(widest, small.text_width(event_label(e)));
+    return std::round(widest + 0.8F * small.pixel_height());
+}
+
+void FrameBuilder::add_queue_node(const QueuedEvent& event, double now, RectF node,
+                                  Rgba8 frame_color, bool stale) {
+    const FontAtlas& small = *small_font_;
+    list_.over.add_rect(node, palette_.box_fill);
+    list_.over.add_frame(node, frame_color.a == 255 && !stale ? 2.0F : 1.0F, frame_color);
+    const float half = 0.5F * node.height();
+    const Rgba8 text = stale ? faded(palette_.muted, 0.9F) : palette_.title;
+    draw_text(
+        Font::small,
+        {TextRole::queue, -1, {node.x0, node.y0, node.x1, node.y0 + half}, small.pixel_height()},
+        event_label(event), text, Align::centre);
+    draw_text(
+        Font::small,
+        {TextRole::queue, -1, {node.x0, node.y0 + half, node.x1, node.y1}, small.pixel_height()},
+        stale ? "stale" : time_to_go(event.t - now), stale ? text : faded(palette_.text, 0.85F),
+        Align::centre);
+}
+
+// The event just popped, beside the root it was a moment ago, fading out with an arrow away
+// from the tree: "remove the min = get next collision", seen as it happens.
+void FrameBuilder::add_leaving_root(const QueueView& queue, double now, PointF root, float node_w,
+                                    float node_h) {
+    if (queue.popped.empty()) return;
+    const QueuedEvent& e = queue.popped.back();
+    const float glow = pop_highlight(e, now);
+    if (glow <= 0.0F) return;
+    const FontAtlas& small = *small_font_;
+    const float x1 = std::round(root.x - 0.5F * node_w - 1.2F * node_w);
+    const float w = std::round(1.5F * node_w);  // room for "thrown away"
+    const RectF node{x1 - w, std::round(root.y - 0.5F * node_h), x1,
+                     std::round(root.y + 0.5F * node_h)};
+    const Rgba8 color = e.stale ? palette_.muted : next_color();
+    list_.over.add_rect(node, faded(color, 0.25F * glow));
+    list_.over.add_frame(node, 2.0F, faded(color, glow));
+    const float ay = root.y;
+    const float ax0 = std::round(root.x - 0.5F * node_w - 0.2F * node_w);
+    const float ax1 = node.x1 + 0.2F * node_w;
+    list_.over.add_line({ax0, ay}, {ax1, ay}, 2.0F, faded(color, glow));
+    const float head = 0.18F * node_h;
+    list_.over.add_line({ax1, ay}, {ax1 + head, ay - head}, 2.0F, faded(color, glow));
+    list_.over.add_line({ax1, ay}, {ax1 + head, ay + head}, 2.0F, faded(color, glow));
+    const float half = 0.5F * node_h;
+    const Rgba8 text = faded(e.stale ? palette_.muted : palette_.title, glow);
+    draw_text(
+        Font::small,
+        {TextRole::queue, -1, {node.x0, node.y0, node.x1, node.y0 + half}, small.pixel_height()},
+        event_label(e), text, Align::centre);
+    draw_text(
+        Font::small,
+        {TextRole::queue, -1, {node.x0, node.y0 + half, node.x1, node.y1}, small.pixel_height()},
+        e.stale ? "thrown away" : "popped", text, Align::centre);
+}
+
+// A heap's top levels: slot i's children are d i + 1 .. d i + d; the root (the next pop) framed
+// in the highlight colour, stale entries greyed.
+void FrameBuilder::add_queue_tree(const QueueView& queue, double now, RectF area) {
+    if (queue.slots.empty() || queue.levels == 0) return;
+    const FontAtlas& small = *small_font_;
+    const std::size_t d = std::max<unsigned>(queue.arity, 2);
+    const auto levels = static_cast<float>(queue.levels);
+    const float node_h = std::round(2.1F * small.pixel_height());
+    const float level_gap = std::max(
+        4.0F, std::floor((area.height() - levels * node_h) / std::max(levels - 1.0F, 1.0F)));
+    std::size_t widest = 1;
+    for (unsigned l = 1; l < queue.levels; ++l) widest *= d;
+    const float cell_w = area.width() / static_cast<float>(widest);
+    const float node_w = std::min(node_width(queue.slots), cell_w - 3.0F);
+    // Slot i sits at level l, position p within it; its centre is over its subtree's middle.
+    std::vector<PointF> centre(queue.slots.size());
+    std::size_t first = 0;
+    std::size_t width = 1;
+    for (unsigned l = 0; l < queue.levels; ++l) {
+        const float span = area.width() / static_cast<float>(width);
+        for (std::size_t p = 0; p < width && first + p < queue.slots.size(); ++p) {
+            centre[first + p] = {
+                area.x0 + (static_cast<float>(p) + 0.5F) * span,
+                area.y0 + static_cast<float>(l) * (node_h + level_gap) + 0.5F * node_h};
+        }
+        first += width;
+        width *= d;
+    }
+    for (std::size_t i = 1; i < queue.slots.size(); ++i) {
+        const PointF c = centre[i];
+        const PointF parent = centre[(i - 1) / d];
+        list_.over.add_line({parent.x, parent.y + 0.5F * node_h}, {c.x, c.y - 0.5F * node_h}, 1.5F,
+                            faded(palette_.muted, 0.8F));
+    }
+    for (std::size_t i = 0; i < queue.slots.size(); ++i) {
+        const QueuedEvent& e = queue.slots[i];
+        const PointF c = centre[i];
+        const RectF node{std::round(c.x - 0.5F * node_w), std::round(c.y - 0.5F * node_h),
+                         std::round(c.x + 0.5F * node_w), std::round(c.y + 0.5F * node_h)};
+        const Rgba8 frame =
+            i == 0 ? next_color() : (e.stale ? faded(palette_.muted, 0.6F) : palette_.muted);
+        add_queue_node(e, now, node, frame, e.stale);
+    }
+    add_leaving_root(queue, now, centre.front(), node_w, node_h);
+    if (queue.size > queue.slots.size()) {
+        const std::string more = fmt::format(
+            "+{} below", with_separators(static_cast<long long>(queue.size - queue.slots.size())));
+        draw_text(Font::small,
+                  {TextRole::queue,
+                   -1,
+                   {area.x1 - area.width() * 0.4F, area.y0, area.x1,
+                    area.y0 + std::round(small.pixel_height() * 1.2F)},
+                   small.pixel_height()},
+                  more, palette_.muted, Align::right);  // the left of the root is for pops
+    }
+}
+
+// An array queue's first slots in a row: the ordered array from its top (the next event first),
+// the unordered array as stored, with where its next event lies (every pop scans for it).
+void FrameBuilder::add_queue_row(const QueueView& queue, double now, RectF area) {
+    const FontAtlas& small = *small_font_;
+    const float line = std::round(small.pixel_height() * 1.2F);
+    const bool ordered = queue.shape == QueueShape::ordered_array;
+    draw_text(
+        Font::small,
+        {TextRole::queue, -1, {area.x0, area.y0, area.x1, area.y0 + line}, small.pixel_height()},
+        ordered ? "Sorted: the next event is at the end (shown first)"
+                : fmt::format("Stored as pushed; every pop scans for the earliest (slot {})",
+                              queue.top_index),
+        palette_.muted);
+    if (queue.slots.empty()) return;
+    const float node_h = std::round(2.1F * small.pixel_height());
+    const auto n = static_cast<float>(queue.slots.size());
+    const float node_w = std::min(node_width(queue.slots), area.width() / n - 3.0F);
+    const float y0 = std::round(area.y0 + line + 0.5F * (area.height() - line - node_h));
+    for (std::size_t i = 0; i < queue.slots.size(); ++i) {
+        const QueuedEvent& e = queue.slots[i];
+        const float x0 = std::round(area.x0 + static_cast<float>(i) * (area.width() / n));
+        const bool next = ordered ? i == 0 : i == queue.top_index;
+        const Rgba8 frame =
+            next ? next_color() : (e.stale ? faded(palette_.muted, 0.6F) : palette_.muted);
+        add_queue_node(e, now, {x0, y0, x0 + node_w, y0 + node_h}, frame, e.stale);
+    }
+}
+
+}  // namespace collide::render

@@ -1,0 +1,107 @@
+// The puzzle view (puzzle_view.hpp): input checks, highlights by pixel colour, and frames that
+// repeat exactly.
+#include <doctest/doctest.h>
+
+#include <string>
+#include <vector>
+
+#include "collide/error.hpp"
+#include "collide/render/puzzle_view.hpp"
+#include "render_fixtures.hpp"
+
+namespace collide::render {
+namespace {
+
+PuzzleBoardView board(std::vector<std::uint8_t> tiles, PuzzleMark mark = PuzzleMark::plain) {
+    PuzzleBoardView b;
+    b.side = 3;
+    b.tiles = std::move(tiles);
+    b.mark = mark;
+    b.label = "1+3=4";
+    return b;
+}
+
+PuzzlePanelView search_panel(PuzzleMark newest) {
+    PuzzlePanelView p;
+    p.title = "A* (manhattan, --pq binary)";
+    p.counters = {"expanded 2", "enqueued 5", "in queue 3"};
+    p.status = "lowest priority first";
+    PuzzleRowView root;
+    root.label = "depth 0";
+    root.count = "1 board";
+    root.boards.push_back(board({1, 2, 3, 4, 0, 6, 7, 5, 8}));
+    PuzzleRowView next;
+    next.label = "depth 1";
+    next.count = "1 board";
+    next.boards.push_back(board({1, 2, 3, 4, 5, 6, 7, 0, 8}, newest));
+    next.boards.back().parent = 0;
+    p.rows = {root, next};
+    p.queue_title = "binary PQ";
+    p.queue.push_back(board({1, 2, 3, 4, 5, 6, 7, 8, 0}));
+    p.queue_more = "+ 2 more";
+    return p;
+}
+
+PuzzleViewConfig config_of(int width, int height) {
+    PuzzleViewConfig c;
+    c.width = width;
+    c.height = height;
+    return c;
+}
+
+constexpr Rgb8 amber{240, 170, 40};
+constexpr Rgb8 tile{222, 224, 232};
+
+}  // namespace
+
+TEST_CASE("puzzle view: bad frames and configs are input errors") {
+    CHECK_THROWS_AS(config_of(100, 720).validate(), Error);
+    PuzzleRenderer renderer(config_of(854, 480), test::test_backend());
+    PuzzleFrameView none;
+    CHECK_THROWS_AS(renderer.render(none), Error);
+    PuzzleFrameView three;
+    three.panels.assign(3, search_panel(PuzzleMark::plain));
+    CHECK_THROWS_AS(renderer.render(three), Error);
+    PuzzleFrameView wrong;
+    wrong.panels.push_back(search_panel(PuzzleMark::plain));
+    wrong.panels[0].queue[0].tiles.pop_back();  // 8 tiles on a 3x3 board
+    CHECK_THROWS_AS(renderer.render(wrong), Error);
+}
+
+TEST_CASE("puzzle view: tiles, the board being expanded in amber, frames repeat exactly") {
+    PuzzleRenderer renderer(config_of(854, 480), test::test_backend());
+    PuzzleFrameView plain;
+    plain.heading = "8-puzzle 1 2 3 4 0 6 7 5 8";
+    plain.panels = {search_panel(PuzzleMark::plain), search_panel(PuzzleMark::plain)};
+    PuzzleFrameView marked = plain;
+    marked.panels[1].rows[1].boards[0].mark = PuzzleMark::current;
+    const Image a = renderer.render(plain);
+    const Image b = renderer.render(marked);
+    REQUIRE(a.width == 854);
+    REQUIRE(a.height == 480);
+    CHECK(test::count_near(a, tile, 6) > 2000);  // 24 small tiles and more
+    CHECK(test::count_near(a, amber, 30) < test::count_near(b, amber, 30) - 40);
+    // Only the right half changed.
+    CHECK(test::count_near(a, amber, 30, 0, 0, 427, 480) ==
+          test::count_near(b, amber, 30, 0, 0, 427, 480));
+    CHECK(renderer.render(marked).rgba == b.rgba);
+}
+
+TEST_CASE("puzzle view: the playback draws a large board with its sliding tile in amber") {
+    PuzzleRenderer renderer(config_of(854, 480), test::test_backend());
+    PuzzlePanelView p;
+    p.title = "Breadth-first search";
+    p.playback = true;
+    p.board = board({1, 2, 3, 4, 5, 6, 7, 0, 8});
+    p.caption = "move 1 of 2: 5 slides up";
+    PuzzleFrameView still;
+    still.panels = {p};
+    PuzzleFrameView sliding = still;
+    sliding.panels[0].slide = {7, 4, 0.5F};
+    const Image a = renderer.render(still);
+    const Image b = renderer.render(sliding);
+    CHECK(test::count_near(a, amber, 20) < 100);
+    CHECK(test::count_near(b, amber, 20) > 2000);  // one large tile, half way
+}
+
+}  // namespace collide::render
