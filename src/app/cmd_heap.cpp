@@ -114,66 +114,12 @@ void check_legible(const pq::LessonTimeline& timeline, const HeapCli& v) {
                     panels > 1 ? " or fewer implementations" : ""));
 }
 
-std::string lowercase_extension(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext;
-}
-
-/// Where the output goes and as what. The rules of `collide render`: the extension decides the
-/// format unless --format says it; --last-frame writes one PNG; default paths under out/.
-struct HeapOutput {
-    std::filesystem::path path;
-    video::VideoFormat format = video::VideoFormat::mp4;
-    bool still = false;
-    bool default_path = false;
-};
-
-HeapOutput output_of(const HeapCli& v) {
-    HeapOutput out;
-    const std::filesystem::path dir = default_output_dir;
-    if (v.last_frame || given(v.at_opt)) {
-        out.still = true;
-        check_still_output(given(v.format_opt) ? std::optional(v.format) : std::nullopt,
-                           given(v.output_opt) ? std::optional(v.output) : std::nullopt);
-        out.default_path = !given(v.output_opt);
-        out.path = out.default_path ? dir / "heap.png" : std::filesystem::path(v.output);
-        return out;
-    }
-    if (given(v.format_opt)) {
-        out.format = video::parse_video_format(v.format, "--format");
-    } else if (given(v.output_opt)) {
-        const std::string ext = lowercase_extension(v.output);
-        if (ext == ".gif") {
-            out.format = video::VideoFormat::gif;
-        } else if (ext != ".mp4") {
-            throw_option_error("-o", v.output,
-                               "a .mp4 or .gif path (or --format png for a directory of frames, "
-                               "--last-frame for one PNG)");
-        }
-    }
-    if (given(v.output_opt)) {
-        const std::string ext = lowercase_extension(v.output);
-        const bool file_format = out.format != video::VideoFormat::png_sequence;
-        if (file_format && ext != "." + std::string(video::to_string(out.format)))
-            throw_option_error("-o", fmt::format("'{}' does not end in .{} (--format {})", v.output,
-                                                 video::to_string(out.format), v.format));
-        out.path = v.output;
-        return out;
-    }
-    out.default_path = true;
-    switch (out.format) {
-        case video::VideoFormat::mp4:
-            out.path = dir / "heap.mp4";
-            break;
-        case video::VideoFormat::gif:
-            out.path = dir / "heap.gif";
-            break;
-        case video::VideoFormat::png_sequence:
-            out.path = dir / "heap_frames";
-            break;
-    }
-    return out;
+LessonOutput output_of(const HeapCli& v) {
+    const auto if_given = [](const CLI::Option* option, const std::string& value) {
+        return given(option) ? std::optional(value) : std::nullopt;
+    };
+    return lesson_output(if_given(v.format_opt, v.format), if_given(v.output_opt, v.output),
+                         v.last_frame || given(v.at_opt), "heap");
 }
 
 struct FrameGeometry {
@@ -215,7 +161,7 @@ void run(const HeapCli& v) {
             "--at", fmt::format("{}", v.at),
             fmt::format("a time within the video, 0..{:.2f} s", timeline.duration()));
     }
-    const HeapOutput output = output_of(v);
+    const LessonOutput output = output_of(v);
     if (output.default_path) std::filesystem::create_directories(output.path.parent_path());
     video::check_output_writable(
         output.path, !output.still && output.format == video::VideoFormat::png_sequence);

@@ -340,6 +340,55 @@ void check_still_output(const std::optional<std::string>& format,
         throw_option_error("-o", *output, "a .png path (a single frame is a PNG image)");
 }
 
+LessonOutput lesson_output(const std::optional<std::string>& format,
+                           const std::optional<std::string>& output, bool still,
+                           std::string_view stem) {
+    LessonOutput out;
+    const std::filesystem::path dir = default_output_dir;
+    out.still = still;
+    out.default_path = !output;
+    if (still) {
+        check_still_output(format, output);
+        out.path = output ? std::filesystem::path(*output) : dir / (std::string(stem) + ".png");
+        return out;
+    }
+    if (format) {
+        out.format = video::parse_video_format(*format, "--format");
+    } else if (output) {
+        const std::string ext = lowercase_extension(*output);
+        if (ext == ".gif") {
+            out.format = video::VideoFormat::gif;
+        } else if (ext != ".mp4") {
+            throw_option_error("-o", *output,
+                               "a .mp4 or .gif path (or --format png for a directory of frames, "
+                               "--last-frame for one PNG)");
+        }
+    }
+    if (output) {
+        const bool file_format = out.format != video::VideoFormat::png_sequence;
+        if (file_format &&
+            lowercase_extension(*output) != "." + std::string(video::to_string(out.format)))
+            throw_option_error("-o",
+                               fmt::format("'{}' does not end in .{} (--format {})", *output,
+                                           video::to_string(out.format), format.value_or("")));
+        out.path = *output;
+        return out;
+    }
+    const std::string name(stem);
+    switch (out.format) {
+        case video::VideoFormat::mp4:
+            out.path = dir / (name + ".mp4");
+            break;
+        case video::VideoFormat::gif:
+            out.path = dir / (name + ".gif");
+            break;
+        case video::VideoFormat::png_sequence:
+            out.path = dir / (name + "_frames");
+            break;
+    }
+    return out;
+}
+
 std::string hint_option(const std::string& where, std::string_view key) {
     return where.empty() ? fmt::format("scene [render] {}", key) : where;
 }

@@ -48,6 +48,21 @@ inline constexpr int max_fps = 240;
 void check_still_output(const std::optional<std::string>& format,
                         const std::optional<std::string>& output);
 
+/// Where a lesson video of `collide heap` or `collide puzzle` goes and as what.
+struct LessonOutput {
+    std::filesystem::path path;
+    video::VideoFormat format = video::VideoFormat::mp4;
+    bool still = false;         ///< one PNG (--last-frame, --at)
+    bool default_path = false;  ///< derived from `stem` under default_output_dir
+};
+
+/// The rules of `collide render` for a lesson video: a still is a PNG (check_still_output); else
+/// --format decides, or the extension of -o (.mp4, .gif); without -o, out/<stem>.<ext> (a PNG
+/// sequence: out/<stem>_frames). Throws Error(input) naming --format or -o.
+[[nodiscard]] LessonOutput lesson_output(const std::optional<std::string>& format,
+                                         const std::optional<std::string>& output, bool still,
+                                         std::string_view stem);
+
 /// l = 854x480@15, m = 1280x720@30, h = 1920x1080@60, k = 3840x2160@60.
 /// Throws Error(input) naming `option` for any other letter.
 [[nodiscard]] QualityPreset quality_preset(std::string_view letter, std::string_view option = "-q");
