@@ -48,9 +48,10 @@ void BM_TimeEngineCost(benchmark::State& state) {
     const std::size_t n = side * side;
     const collide::Scene scene = lattice_gas(side, radius_for(n, 0.2));
     collide::EngineOptions options;
-    options.engine = "time";
+    options.engine = collide::EngineKind::time;
     options.dt = 1e-3;
-    options.td_detect = state.range(1) == 0 ? "all-pairs" : "grid";
+    options.td_detect = state.range(1) == 0 ? collide::OverlapDetection::all_pairs
+                                            : collide::OverlapDetection::grid;
     const double span = 0.05;
     collide::Measurements last;
     for (auto _ : state) {
@@ -59,7 +60,7 @@ void BM_TimeEngineCost(benchmark::State& state) {
         last = engine.measurements();
         benchmark::DoNotOptimize(last.kinetic_energy);
     }
-    state.SetLabel(options.td_detect);
+    state.SetLabel(std::string(collide::to_string(options.td_detect)));
     state.counters["N"] = static_cast<double>(n);
     state.counters["checks_per_step"] =
         static_cast<double>(last.overlap_checks) / static_cast<double>(last.steps);
@@ -74,9 +75,9 @@ BENCHMARK(BM_TimeEngineCost)
 void BM_TimeEngineMisses(benchmark::State& state) {
     const collide::Scene scene = lattice_gas(20, radius_for(400, 0.2));
     collide::EngineOptions options;
-    options.engine = "time";
+    options.engine = collide::EngineKind::time;
     options.dt = static_cast<double>(state.range(0)) * 1e-4;
-    options.td_detect = "grid";
+    options.td_detect = collide::OverlapDetection::grid;
     collide::Measurements last;
     for (auto _ : state) {
         collide::sim::TimeEngine engine(scene, options);

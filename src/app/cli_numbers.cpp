@@ -26,20 +26,17 @@ std::uint64_t as_usage_error(Parse&& parse) {
 
 std::uint64_t parse_whole_number(std::string_view text, std::string_view option, std::uint64_t min,
                                  std::uint64_t max) {
-    const auto bad = [&](std::string_view why) {
-        throw_input_error(fmt::format("{}: {} (got '{}'): give a whole number from {} to {}",
-                                      option, why, text, min, max));
+    const auto bad = [&](std::string_view how) {
+        throw_option_error(option, text,
+                           fmt::format("a whole number{} from {} to {}", how, min, max));
     };
     std::string_view digits = text;
     if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
-    if (digits.empty()) bad("expected a whole number");
-    if (digits.front() == '-' || digits.front() == '+') bad("expected a whole number");
+    if (digits.empty() || digits.front() == '-' || digits.front() == '+') bad("");
     std::uint64_t value = 0;
     const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-    if (end != digits.data() + digits.size()) bad("expected a whole number in decimal digits");
-    if (error == std::errc::result_out_of_range) bad("out of range");
-    if (error != std::errc{}) bad("expected a whole number");
-    if (value < min || value > max) bad("out of range");
+    if (end != digits.data() + digits.size()) bad(" in decimal digits");
+    if (error != std::errc{} || value < min || value > max) bad("");
     return value;
 }
 

@@ -39,38 +39,44 @@ struct BenchOptions {
     double collisions = 5e6;  ///< collisions timed
     double warmup = -1.0;     ///< collisions before timing; < 0: two per disc
     std::uint64_t seed = 1;
-    EngineOptions engine;
+    std::string engine = "fast";  ///< as typed; engine_options() parses it
+    std::string pq = "binary";
     bool json = false;
     bool no_limits = false;
 
-    void validate() const {
+    /// Checks the counts and parses the engine options into their types. Throws Error(input)
+    /// naming the bad option.
+    [[nodiscard]] EngineOptions engine_options() const {
         if (scene.empty()) {
-            if (!(n >= 2.0 && n <= max_discs && n == std::floor(n)))
-                throw_input_error("--n", 0, "",
-                                  fmt::format("must be a whole number of discs from 2 to {:g}, "
-                                              "got {:g}",
-                                              max_discs, n));
+            if (!(n >= 2.0 && n <= max_discs && n == std::floor(n))) {
+                throw_option_error(
+                    "--n", fmt::format("{:g}", n),
+                    fmt::format("a whole number of discs from 2 to {:g}", max_discs));
+            }
             if (!(eta > 0.0 && eta <= 0.85))
-                throw_input_error("--eta", 0, "", "packing fraction must lie in (0, 0.85]");
+                throw_option_error("--eta", fmt::format("{:g}", eta),
+                                   "a packing fraction in (0, 0.85]");
         }
         if (!(collisions >= 1.0 && collisions <= max_counted)) {
-            throw_input_error("--collisions", 0, "",
-                              fmt::format("must be a number from 1 to {:g}", max_counted));
+            throw_option_error("--collisions", fmt::format("{:g}", collisions),
+                               fmt::format("a number of collisions from 1 to {:g}", max_counted));
         }
-        if (!(warmup <= max_counted) || !std::isfinite(warmup))
-            throw_input_error("--warmup", 0, "",
-                              fmt::format("must be a number up to {:g}", max_counted));
+        if (!(warmup <= max_counted) || !std::isfinite(warmup)) {
+            throw_option_error("--warmup", fmt::format("{:g}", warmup),
+                               fmt::format("a number of collisions up to {:g}", max_counted));
+        }
         const double total = collisions + std::max(0.0, warmup);
         if (!no_limits && total > WorkLimits{}.events) {
-            throw_input_error(
-                "--collisions", 0, "",
+            throw_option_error(
+                "--collisions",
                 fmt::format("{:g} collisions (with the warm-up) is over the limit of {:g} (about "
                             "an hour); ask for fewer, or pass {} to run it anyway",
                             total, WorkLimits{}.events, insist_option));
         }
-        engine.validate();
-        if (engine.engine == "time")
-            throw_input_error("--engine", 0, "", "bench engine measures event-driven engines");
+        EngineOptions options;
+        options.engine = parse_event_engine_kind(engine, "--engine");
+        options.pq = pq::parse_queue_kind(pq, "--pq");
+        return options;
     }
 };
 
@@ -107,8 +113,8 @@ Scene random_fluid(const BenchOptions& options) {
     try {
         validate_scene(scene);  // a few discs at a high packing fraction are too big for the box
     } catch (const Error& e) {
-        throw_input_error(fmt::format("--n {:g} --eta {:g}: no valid fluid: {}", options.n,
-                                      options.eta, e.what()));
+        throw_option_error(fmt::format("--n {:g} --eta {:g}", options.n, options.eta),
+                           fmt::format("no valid fluid: {}", e.what()));
     }
     return scene;
 }
@@ -139,11 +145,11 @@ void run_collisions(Engine& engine, const std::uint64_t& counter, double target)
 }
 
 void run_bench(const BenchOptions& options) {
-    options.validate();
+    const EngineOptions engine_options = options.engine_options();
     const Scene scene = options.scene.empty() ? random_fluid(options) : load_scene(options.scene);
     const double n = static_cast<double>(scene.discs.size());
     const std::uint64_t rss_before = max_rss_bytes();
-    std::unique_ptr<Engine> engine = make_engine(scene, options.engine);
+    std::unique_ptr<Engine> engine = make_engine(scene, engine_options);
     std::uint64_t collisions = 0;
     engine->set_collision_listener([&collisions](const CollisionRecord&) { ++collisions; });
     run_collisions(*engine, collisions, options.warmup >= 0.0 ? options.warmup : 2.0 * n);
@@ -168,7 +174,7 @@ void run_bench(const BenchOptions& options) {
 
     std::vector<ReportField> fields{
         {"scene", scene.name},
-        {"engine", options.engine.engine},
+        {"engine", std::string(to_string(engine_options.engine))},
         {"discs", static_cast<std::uint64_t>(scene.discs.size())},
         {"packing_fraction", m1.packing_fraction},
         {"timed_collisions", static_cast<std::uint64_t>(timed_collisions)},
@@ -189,8 +195,8 @@ void run_bench(const BenchOptions& options) {
         {"energy_relative_change", (m1.kinetic_energy - m0.kinetic_energy) / m0.kinetic_energy},
         {"max_overlap", m1.max_overlap},
     };
-    if (options.engine.engine == "classic")
-        fields.insert(fields.begin() + 2, {"pq", options.engine.pq});
+    if (engine_options.engine == EngineKind::classic)
+        fields.insert(fields.begin() + 2, {"pq", pq::to_string(engine_options.pq)});
     const std::string out = options.json ? format_json(fields) : format_text(fields);
     std::fputs(out.c_str(), stdout);
 }
@@ -209,8 +215,8 @@ void add_bench_command(CLI::App& root) {
     cmd->add_option("--collisions", options->collisions, "Collisions timed (default 5e6)");
     cmd->add_option("--warmup", options->warmup, "Collisions before timing (default: 2 per disc)");
     add_whole_option(*cmd, "--seed", options->seed, 0, UINT64_MAX, "Seed of the random fluid");
-    cmd->add_option("--engine", options->engine.engine, "fast (default) or classic");
-    cmd->add_option("--pq", options->engine.pq, "Classic engine's queue");
+    cmd->add_option("--engine", options->engine, "fast (default) or classic");
+    cmd->add_option("--pq", options->pq, "Classic engine's queue");
     cmd->add_flag("--json", options->json, "Print JSON");
     cmd->add_flag(insist_option, options->no_limits,
                   "Time even more than 10^10 collisions (docs/limits.md)");

@@ -65,14 +65,10 @@ bool given(const CLI::Option* option) {
     return option != nullptr && option->count() > 0;
 }
 
-[[noreturn]] void bad_option(const std::string& option, const std::string& why) {
-    throw_input_error(option + ": " + why);
-}
-
 /// Seconds per step a class can follow: 0.8 s (a slide, then a moment to see where it landed).
 pq::LessonPacing pacing_of(double pace) {
     if (!std::isfinite(pace) || pace <= 0.0 || pace > 60.0)
-        bad_option("--pace", fmt::format("must be in (0, 60] seconds per step, got {}", pace));
+        throw_option_error("--pace", fmt::format("{}", pace), "(0, 60] seconds per step");
     pq::LessonPacing pacing;
     pacing.pace = pace;
     pacing.pause = 0.6 * pace;
@@ -83,14 +79,14 @@ pq::LessonPacing pacing_of(double pace) {
 
 pq::LessonTimeline timeline_of(const HeapCli& v) {
     if (given(v.ops_opt) == given(v.sort_opt))
-        bad_option("--ops", "give either --ops \"P Q E * ...\" or --sort \"S O R T ...\"");
+        throw_option_error("--ops", "give either --ops \"P Q E * ...\" or --sort \"S O R T ...\"");
     if (v.index_base != 0 && v.index_base != 1)
-        bad_option("--index-base", fmt::format("must be 0 or 1, got {}", v.index_base));
+        throw_option_error("--index-base", std::to_string(v.index_base), "0 or 1");
     const auto orientation = v.min ? pq::Orientation::min : pq::Orientation::max;
     const pq::LessonPacing pacing = pacing_of(v.pace);
     if (given(v.sort_opt)) {
         if (given(v.impl_opt))
-            bad_option("--impl", "--sort is heapsort on a binary heap; leave --impl out");
+            throw_option_error("--impl", "--sort is heapsort on a binary heap; leave --impl out");
         const std::vector<pq::TraceKey> keys = pq::parse_sort_keys(v.sort, "--sort");
         return pq::LessonTimeline::heapsort(keys, orientation, v.index_base, pacing);
     }
@@ -99,8 +95,8 @@ pq::LessonTimeline timeline_of(const HeapCli& v) {
     for (const std::string& impl : v.impls) kinds.push_back(pq::parse_queue_kind(impl, "--impl"));
     if (kinds.empty()) kinds.push_back({pq::QueueFamily::binary, 2});
     if (kinds.size() > render::max_heap_panels) {
-        bad_option("--impl", fmt::format("at most {} implementations side by side, got {}",
-                                         render::max_heap_panels, kinds.size()));
+        throw_option_error("--impl", fmt::format("at most {} implementations side by side, got {}",
+                                                 render::max_heap_panels, kinds.size()));
     }
     return pq::LessonTimeline::operations(ops, kinds, orientation, v.index_base, pacing);
 }
@@ -110,77 +106,21 @@ void check_legible(const pq::LessonTimeline& timeline, const HeapCli& v) {
     const std::size_t panels = timeline.panels().size();
     const std::size_t limit = render::max_legible_keys(panels);
     if (timeline.capacity() <= limit) return;
-    bad_option(given(v.sort_opt) ? "--sort" : "--ops",
-               fmt::format("the queue holds up to {} keys at once, but at most {} can be drawn "
-                           "legibly with {} panel{} side by side (keys over ~14 px tall at "
-                           "854x480); use fewer keys{}",
-                           timeline.capacity(), limit, panels, panels == 1 ? "" : "s",
-                           panels > 1 ? " or fewer implementations" : ""));
+    throw_option_error(
+        given(v.sort_opt) ? "--sort" : "--ops",
+        fmt::format("the queue holds up to {} keys at once, but at most {} can be drawn "
+                    "legibly with {} panel{} side by side (keys over ~14 px tall at "
+                    "854x480); use fewer keys{}",
+                    timeline.capacity(), limit, panels, panels == 1 ? "" : "s",
+                    panels > 1 ? " or fewer implementations" : ""));
 }
 
-std::string lowercase_extension(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext;
-}
-
-/// Where the output goes and as what. The rules of `collide render`: the extension decides the
-/// format unless --format says it; --last-frame writes one PNG; default paths under out/.
-struct HeapOutput {
-    std::filesystem::path path;
-    video::VideoFormat format = video::VideoFormat::mp4;
-    bool still = false;
-    bool default_path = false;
-};
-
-HeapOutput output_of(const HeapCli& v) {
-    HeapOutput out;
-    const std::filesystem::path dir = default_output_dir;
-    if (v.last_frame || given(v.at_opt)) {
-        out.still = true;
-        if (given(v.format_opt) && v.format != "png")
-            bad_option("--format", "a single frame is written as png, got '" + v.format + "'");
-        if (given(v.output_opt) && lowercase_extension(v.output) != ".png")
-            bad_option("-o",
-                       "a single frame is a PNG image: give a .png path, got '" + v.output + "'");
-        out.default_path = !given(v.output_opt);
-        out.path = out.default_path ? dir / "heap.png" : std::filesystem::path(v.output);
-        return out;
-    }
-    if (given(v.format_opt)) {
-        out.format = video::parse_video_format(v.format, "--format");
-    } else if (given(v.output_opt)) {
-        const std::string ext = lowercase_extension(v.output);
-        if (ext == ".gif") {
-            out.format = video::VideoFormat::gif;
-        } else if (ext != ".mp4") {
-            bad_option("-o", "cannot tell the format of '" + v.output +
-                                 "': use a .mp4 or .gif path, --format png for a directory of "
-                                 "frames, or --last-frame for one PNG");
-        }
-    }
-    if (given(v.output_opt)) {
-        const std::string ext = lowercase_extension(v.output);
-        const bool file_format = out.format != video::VideoFormat::png_sequence;
-        if (file_format && ext != "." + std::string(video::to_string(out.format)))
-            bad_option("-o", fmt::format("'{}' does not end in .{} (--format {})", v.output,
-                                         video::to_string(out.format), v.format));
-        out.path = v.output;
-        return out;
-    }
-    out.default_path = true;
-    switch (out.format) {
-        case video::VideoFormat::mp4:
-            out.path = dir / "heap.mp4";
-            break;
-        case video::VideoFormat::gif:
-            out.path = dir / "heap.gif";
-            break;
-        case video::VideoFormat::png_sequence:
-            out.path = dir / "heap_frames";
-            break;
-    }
-    return out;
+LessonOutput output_of(const HeapCli& v) {
+    const auto if_given = [](const CLI::Option* option, const std::string& value) {
+        return given(option) ? std::optional(value) : std::nullopt;
+    };
+    return lesson_output(if_given(v.format_opt, v.format), if_given(v.output_opt, v.output),
+                         v.last_frame || given(v.at_opt), "heap");
 }
 
 struct FrameGeometry {
@@ -197,11 +137,7 @@ FrameGeometry geometry_of(const HeapCli& v) {
         g.width = size.width;
         g.height = size.height;
     }
-    if (given(v.fps_opt)) {
-        if (v.fps < 1 || v.fps > 240)
-            bad_option("--fps", fmt::format("must be 1..240, got {}", v.fps));
-        g.fps = v.fps;
-    }
+    if (given(v.fps_opt)) g.fps = checked_fps(v.fps);
     return g;
 }
 
@@ -223,10 +159,11 @@ void run(const HeapCli& v) {
     check_legible(timeline, v);
     const FrameGeometry geometry = geometry_of(v);
     if (given(v.at_opt) && !(v.at >= 0.0 && v.at <= timeline.duration())) {
-        bad_option("--at", fmt::format("must be within the video, 0..{:.2f} s, got {}",
-                                       timeline.duration(), v.at));
+        throw_option_error(
+            "--at", fmt::format("{}", v.at),
+            fmt::format("a time within the video, 0..{:.2f} s", timeline.duration()));
     }
-    const HeapOutput output = output_of(v);
+    const LessonOutput output = output_of(v);
     if (output.default_path) std::filesystem::create_directories(output.path.parent_path());
     video::check_output_writable(
         output.path, !output.still && output.format == video::VideoFormat::png_sequence);

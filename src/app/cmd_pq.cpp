@@ -148,8 +148,8 @@ void print_markdown(const TableSource& table) {
 
 std::vector<pq::QueueKind> queues_of(const std::vector<std::string>& impls) {
     if (impls.size() > max_impls) {
-        throw_input_error(fmt::format("--impl: {} implementations; at most {} (one column each)",
-                                      impls.size(), max_impls));
+        throw_option_error("--impl", fmt::format("{} implementations; at most {} (one column each)",
+                                                 impls.size(), max_impls));
     }
     std::vector<pq::QueueKind> kinds;
     for (const std::string& impl : impls) kinds.push_back(pq::parse_queue_kind(impl, "--impl"));

@@ -97,17 +97,20 @@ render::Backend gl_backend_of(const CliValues& v) {
         for (const render::Backend b : render::available_backends()) {
             available += (available.empty() ? "" : ", ") + std::string(render::backend_name(b));
         }
-        throw_input_error("--gl " + v.gl +
-                          ": this collide was built without it (available: " + available + ")");
+        throw_option_error("--gl", v.gl,
+                           "a backend this collide was built with (" + available + ")");
     }
     if (v.preview && backend != render::Backend::automatic && backend != render::Backend::glfw) {
-        throw_input_error("--gl " + v.gl +
-                          ": --preview renders the frames through glfw (one GL implementation "
-                          "for the frames and the window); drop --gl or --preview");
+        throw_option_error("--gl", "'" + v.gl +
+                                       "' beside --preview: --preview renders the frames through "
+                                       "glfw (one GL implementation for the frames and the "
+                                       "window); drop --gl or --preview");
     }
     return backend;
 }
 
+/// The request as typed, with the names (--engine, --pq, --td-detect) parsed into their types.
+/// Throws Error(input) naming the first bad one.
 RenderRequest request_of(const CliValues& v, bool still) {
     RenderRequest r;
     r.scene = v.scene;
@@ -120,9 +123,9 @@ RenderRequest request_of(const CliValues& v, bool still) {
     r.speed = if_given(v.speed_opt, v.speed);
     r.dt = if_given(v.dt_opt, v.dt);
     r.at = if_given(v.at_opt, v.at);
-    r.engine = v.engine;
-    r.pq = v.pq;
-    r.td_detect = v.td_detect;
+    r.engine = parse_event_engine_kind(v.engine, "--engine");
+    r.pq = pq::parse_queue_kind(v.pq, "--pq");  // a bad --pq is refused even for the fast engine
+    r.td_detect = parse_overlap_detection(v.td_detect, "--td-detect");
     r.color = if_given(v.color_opt, v.color);
     r.trails = if_given(v.trails_opt, v.trails);
     r.overlays = if_given(v.overlays_opt, v.overlays);

@@ -26,17 +26,26 @@ namespace {
 struct SimulateOptions {
     std::string scene;
     double until = 0.0;
-    EngineOptions engine;
+    std::string engine = "fast";  ///< the engine options as typed; engine_options() parses them
+    std::string pq = "binary";
+    double dt = EngineOptions{}.dt;
+    std::string td_detect = "all-pairs";
     std::string events_log;  ///< empty: no log
     bool json = false;
     bool no_limits = false;  ///< --no-limits: run even beyond the work limits
 
-    /// Throws Error(input) naming the bad option.
-    void validate() const {
+    /// The engine options parsed into their types. Throws Error(input) naming the bad option.
+    [[nodiscard]] EngineOptions engine_options() const {
         if (!(until >= 0.0) || !std::isfinite(until)) {
-            throw_input_error("--until", 0, "", "the end time must be a finite number >= 0");
+            throw_option_error("--until", fmt::format("{}", until), "a finite end time >= 0");
         }
-        engine.validate();
+        EngineOptions options;
+        options.engine = parse_engine_kind(engine, "--engine");
+        options.pq = pq::parse_queue_kind(pq, "--pq");
+        options.dt = dt;
+        options.td_detect = parse_overlap_detection(td_detect, "--td-detect");
+        options.validate();
+        return options;
     }
 };
 
@@ -87,18 +96,18 @@ const char* kind_name(CollisionKind kind) {
 }
 
 void run_simulate(const SimulateOptions& options) {
-    options.validate();
+    const EngineOptions engine_options = options.engine_options();
     // Ctrl-C stops the run cleanly (the events log's temporary is removed) however long it is.
     InterruptGuard interrupts;
     const Scene scene = load_scene(options.scene);
-    check_simulate_work(scene, options.engine, options.until, options.no_limits);
+    check_simulate_work(scene, engine_options, options.until, options.no_limits);
     // Open the log before simulating: an unwritable path fails fast, with nothing half written.
     std::unique_ptr<EventsLog> log;
     if (!options.events_log.empty()) {
         log = std::make_unique<EventsLog>(options.events_log);
         log->write("t,kind,a,b\n");
     }
-    std::unique_ptr<Engine> engine = make_engine(scene, options.engine);
+    std::unique_ptr<Engine> engine = make_engine(scene, engine_options);
     if (log) {
         engine->set_collision_listener([&log](const CollisionRecord& r) {
             if (r.kind == CollisionKind::pair) {
@@ -117,8 +126,10 @@ void run_simulate(const SimulateOptions& options) {
     }
     interrupts.throw_if_requested();  // a signal during loading, or too late for a poll
     if (log) log->finish();
-    std::vector<ReportField> fields{{"scene", scene.name}, {"engine", options.engine.engine}};
-    if (options.engine.engine == "classic") fields.push_back({"pq", options.engine.pq});
+    std::vector<ReportField> fields{{"scene", scene.name},
+                                    {"engine", std::string(to_string(engine_options.engine))}};
+    if (engine_options.engine == EngineKind::classic)
+        fields.push_back({"pq", pq::to_string(engine_options.pq)});
     fields.push_back({"discs", static_cast<std::uint64_t>(scene.discs.size())});
     for (ReportField& f : report_fields(engine->measurements())) fields.push_back(std::move(f));
     const std::string out = options.json ? format_json(fields) : format_text(fields);
@@ -134,11 +145,11 @@ void add_simulate_command(CLI::App& root) {
     cmd->add_option("scene", options->scene, "Scene: algs4 .txt, .toml, or a built-in name")
         ->required();
     cmd->add_option("--until", options->until, "Simulation time to stop at")->required();
-    cmd->add_option("--engine", options->engine.engine, "fast (default), classic or time");
-    cmd->add_option("--pq", options->engine.pq,
+    cmd->add_option("--engine", options->engine, "fast (default), classic or time");
+    cmd->add_option("--pq", options->pq,
                     "Classic engine's queue: unordered|ordered|binary|dary:D|indexed[:D]");
-    cmd->add_option("--dt", options->engine.dt, "Time-driven step");
-    cmd->add_option("--td-detect", options->engine.td_detect,
+    cmd->add_option("--dt", options->dt, "Time-driven step");
+    cmd->add_option("--td-detect", options->td_detect,
                     "Time-driven overlap checks: all-pairs|grid");
     cmd->add_option("--events-log", options->events_log,
                     "Write every collision as CSV t,kind,a,b (- for standard output)");

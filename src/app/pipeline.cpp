@@ -148,8 +148,7 @@ void check_captions_fit(const Scene& scene, const RenderPlan& plan) {
 // ------------------------------------------------------------------------------------------------
 // Simulation side
 
-std::vector<std::string> time_driven_counters(const Measurements& m, double /*dt*/,
-                                              double energy_drift) {
+std::vector<std::string> time_driven_counters(const Measurements& m, double energy_drift) {
     // Short "label  value" pairs: the renderer lays them out in a grid of narrow columns.
     return {
         fmt::format("steps  {}", short_count(static_cast<double>(m.steps))),
@@ -221,7 +220,8 @@ FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan, const std::
         panel.engine = make_engine(scene, options);
         panel.engine->set_stop_flag(stop);
         if (!time_driven && plan.queue_events > 0 && !panel.engine->watch_queue(plan.queue_events))
-            throw_input_error("--queue: the " + options.engine + " engine has no event queue");
+            throw_option_error("--queue", "the " + std::string(to_string(options.engine)) +
+                                              " engine has no event queue");
         panel.time_driven = time_driven;
         panel.title = std::move(title);
         panel.initial_energy = panel.engine->measurements().kinetic_energy;
@@ -257,8 +257,8 @@ PanelFrame FrameSource::describe(const Panel& panel) const {
     const Measurements m = panel.engine->measurements();
     const double drift = relative_drift(m.kinetic_energy, panel.initial_energy);
     out.title = panel.title;
-    out.counters = panel.time_driven ? time_driven_counters(m, plan_.time_engine.dt, drift)
-                                     : event_driven_counters(m, drift);
+    out.counters =
+        panel.time_driven ? time_driven_counters(m, drift) : event_driven_counters(m, drift);
     out.drift = {out.snapshot.time, drift};
     out.time_driven = panel.time_driven;
     if (panel.time_driven) {

@@ -76,7 +76,7 @@ class FrameSource {
 };
 
 /// The on-screen counter lines of one engine (pure: unit-tested).
-[[nodiscard]] std::vector<std::string> time_driven_counters(const Measurements& m, double dt,
+[[nodiscard]] std::vector<std::string> time_driven_counters(const Measurements& m,
                                                             double energy_drift);
 [[nodiscard]] std::vector<std::string> event_driven_counters(const Measurements& m,
                                                              double energy_drift);

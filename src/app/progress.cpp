@@ -4,9 +4,11 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "collide/error.hpp"
+#include "collide/named_values.hpp"
 
 namespace collide::app {
 
@@ -28,11 +30,12 @@ std::string clock_text(double seconds) {
 }  // namespace
 
 ProgressMode parse_progress_mode(std::string_view text, std::string_view option) {
-    if (text == "auto") return ProgressMode::automatic;
-    if (text == "bar") return ProgressMode::bar;
-    if (text == "json") return ProgressMode::json;
-    if (text == "none") return ProgressMode::none;
-    throw_input_error(fmt::format("{}: must be auto, bar, json or none, got '{}'", option, text));
+    static constexpr std::array<NamedValue<ProgressMode>, 4> names{
+        {{"auto", ProgressMode::automatic},
+         {"bar", ProgressMode::bar},
+         {"json", ProgressMode::json},
+         {"none", ProgressMode::none}}};
+    return parse_named(text, option, names);
 }
 
 double frames_per_second(const ProgressState& state) noexcept {

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "collide/error.hpp"
 #include "collide/render/puzzle_view.hpp"
@@ -31,71 +32,12 @@ bool given(const CLI::Option* option) {
     return option != nullptr && option->count() > 0;
 }
 
-[[noreturn]] void bad_option(const std::string& option, const std::string& why) {
-    throw_input_error(option + ": " + why);
-}
-
-std::string lowercase_extension(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext;
-}
-
-struct Output {
-    std::filesystem::path path;
-    video::VideoFormat format = video::VideoFormat::mp4;
-    bool still = false;
-    bool default_path = false;
-};
-
-Output output_of(const PuzzleVideoCli& v) {
-    Output out;
-    const std::filesystem::path dir = default_output_dir;
-    if (v.last_frame || given(v.at_opt)) {
-        out.still = true;
-        if (given(v.format_opt) && v.format != "png")
-            bad_option("--format", "a single frame is written as png, got '" + v.format + "'");
-        if (given(v.output_opt) && lowercase_extension(v.output) != ".png")
-            bad_option("-o",
-                       "a single frame is a PNG image: give a .png path, got '" + v.output + "'");
-        out.default_path = !given(v.output_opt);
-        out.path = out.default_path ? dir / "puzzle.png" : std::filesystem::path(v.output);
-        return out;
-    }
-    if (given(v.format_opt)) {
-        out.format = video::parse_video_format(v.format, "--format");
-    } else if (given(v.output_opt)) {
-        const std::string ext = lowercase_extension(v.output);
-        if (ext == ".gif") {
-            out.format = video::VideoFormat::gif;
-        } else if (ext != ".mp4") {
-            bad_option("-o", "cannot tell the format of '" + v.output +
-                                 "': use a .mp4 or .gif path, --format png for a directory of "
-                                 "frames, or --last-frame for one PNG");
-        }
-    }
-    if (given(v.output_opt)) {
-        const bool file_format = out.format != video::VideoFormat::png_sequence;
-        if (file_format &&
-            lowercase_extension(v.output) != "." + std::string(video::to_string(out.format)))
-            bad_option("-o", fmt::format("'{}' does not end in .{} (--format {})", v.output,
-                                         video::to_string(out.format), v.format));
-        out.path = v.output;
-        return out;
-    }
-    out.default_path = true;
-    switch (out.format) {
-        case video::VideoFormat::mp4:
-            out.path = dir / "puzzle.mp4";
-            break;
-        case video::VideoFormat::gif:
-            out.path = dir / "puzzle.gif";
-            break;
-        case video::VideoFormat::png_sequence:
-            out.path = dir / "puzzle_frames";
-            break;
-    }
-    return out;
+LessonOutput output_of(const PuzzleVideoCli& v) {
+    const auto if_given = [](const CLI::Option* option, const std::string& value) {
+        return given(option) ? std::optional(value) : std::nullopt;
+    };
+    return lesson_output(if_given(v.format_opt, v.format), if_given(v.output_opt, v.output),
+                         v.last_frame || given(v.at_opt), "puzzle");
 }
 
 struct Geometry {
@@ -117,16 +59,13 @@ Geometry geometry_of(const PuzzleVideoCli& v) {
         g.height = size.height;
     }
     if (g.width < min_width || g.height < min_height) {
-        bad_option(given(v.size_opt) ? "--size" : "-q",
-                   fmt::format("{}x{} is too small for legible boards and counters; at least "
-                               "{}x{}",
-                               g.width, g.height, min_width, min_height));
+        throw_option_error(
+            given(v.size_opt) ? "--size" : "-q",
+            fmt::format("{}x{} is too small for legible boards and counters; at least "
+                        "{}x{}",
+                        g.width, g.height, min_width, min_height));
     }
-    if (given(v.fps_opt)) {
-        if (v.fps < 1 || v.fps > 240)
-            bad_option("--fps", fmt::format("must be 1..240, got {}", v.fps));
-        g.fps = v.fps;
-    }
+    if (given(v.fps_opt)) g.fps = checked_fps(v.fps);
     return g;
 }
 
@@ -164,8 +103,8 @@ void refuse_video_options(const PuzzleVideoCli& v, const std::string& mode) {
     for (const CLI::Option* o : {v.output_opt, v.format_opt, v.quality_opt, v.size_opt, v.fps_opt,
                                  v.last_frame_opt, v.at_opt}) {
         if (given(o)) {
-            bad_option(o->get_name(), mode + " prints text instead of a video; leave " +
-                                          o->get_name() + " out, or " + mode + " out");
+            throw_option_error(o->get_name(), mode + " prints text instead of a video; leave " +
+                                                  o->get_name() + " out, or " + mode + " out");
         }
     }
 }
@@ -173,7 +112,7 @@ void refuse_video_options(const PuzzleVideoCli& v, const std::string& mode) {
 void validate_puzzle_video(const PuzzleVideoCli& v) {
     (void)parse_progress_mode(v.progress);
     (void)geometry_of(v);
-    const Output output = output_of(v);
+    const LessonOutput output = output_of(v);
     if (!output.default_path) {
         video::check_output_writable(
             output.path, !output.still && output.format == video::VideoFormat::png_sequence);
@@ -187,10 +126,10 @@ void render_puzzle_video(const puzzle::Board& start,
     const Geometry geometry = geometry_of(v);
     const PuzzleFrames frames(start, results);
     if (given(v.at_opt) && !(v.at >= 0.0 && v.at <= frames.duration())) {
-        bad_option("--at", fmt::format("must be within the video, 0..{:.2f} s, got {}",
-                                       frames.duration(), v.at));
+        throw_option_error("--at", fmt::format("{}", v.at),
+                           fmt::format("a time within the video, 0..{:.2f} s", frames.duration()));
     }
-    const Output output = output_of(v);
+    const LessonOutput output = output_of(v);
     if (output.default_path) std::filesystem::create_directories(output.path.parent_path());
     video::check_output_writable(
         output.path, !output.still && output.format == video::VideoFormat::png_sequence);

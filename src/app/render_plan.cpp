@@ -3,11 +3,13 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <limits>
 
 #include "collide/error.hpp"
+#include "collide/named_values.hpp"
 #include "collide/sim/pq/queue_kind.hpp"
 #include "collide/sim/queue_view.hpp"
 
@@ -15,8 +17,6 @@ namespace collide::app {
 
 namespace {
 
-constexpr int min_frame_side = 64;  // the renderer's minimum
-constexpr int max_frame_side = 8192;
 constexpr double max_duration = 3600.0;  // an hour of video is far beyond any lesson
 /// Colour and histogram range in units of the RMS speed: a 2D Maxwell-Boltzmann gas has
 /// P(v > 2.5 v_rms) = exp(-6.25) ~ 0.2 %, so almost every disc gets a distinct colour.
@@ -29,17 +29,13 @@ constexpr double snap_tolerance = 1e-9;
 /// index nor the double k is exact (and an unchecked conversion overflows).
 constexpr double max_countable_frames = 9007199254740992.0;  // 2^53
 
-[[noreturn]] void bad_option(std::string_view option, const std::string& reason) {
-    throw_input_error(fmt::format("{}: {}", option, reason));
-}
-
 bool positive_finite(double x) {
     return std::isfinite(x) && x > 0.0;
 }
 
 void require_positive(double value, std::string_view option, std::string_view what) {
     if (!positive_finite(value))
-        bad_option(option, fmt::format("must be a positive {}, got {}", what, value));
+        throw_option_error(option, fmt::format("{}", value), fmt::format("a positive {}", what));
 }
 
 std::string lowercase_extension(const std::filesystem::path& path) {
@@ -54,12 +50,7 @@ std::string output_stem(const Scene& scene) {
 }
 
 int choose_fps(const RenderRequest& request, const QualityPreset& preset) {
-    if (!request.fps) return preset.fps;
-    if (*request.fps < 1 || *request.fps > max_fps) {
-        bad_option("--fps",
-                   fmt::format("must be 1..{} frames per second, got {}", max_fps, *request.fps));
-    }
-    return *request.fps;
+    return request.fps ? checked_fps(*request.fps) : preset.fps;
 }
 
 double choose_duration(const RenderRequest& request, const Scene& scene) {
@@ -69,17 +60,15 @@ double choose_duration(const RenderRequest& request, const Scene& scene) {
         from_cli ? std::string("--duration") : hint_option(scene.render.duration_at, "duration");
     require_positive(duration, option, "number of seconds");
     if (duration > max_duration)
-        bad_option(option, fmt::format("at most {} seconds, got {}", max_duration, duration));
+        throw_option_error(option, fmt::format("{}", duration),
+                           fmt::format("at most {} seconds", max_duration));
     return duration;
 }
 
 EngineOptions event_engine_options(const RenderRequest& request) {
-    if (request.engine != "fast" && request.engine != "classic") {
-        bad_option("--engine", fmt::format("must be fast or classic, got '{}'", request.engine));
-    }
-    (void)pq::parse_queue_kind(request.pq, "--pq");  // reject a bad --pq even for the fast engine
     EngineOptions options;
-    options.engine = request.engine;
+    // The event panel's engine: a request built in code could still name the time-driven one.
+    options.engine = parse_event_engine_kind(to_string(request.engine));
     options.pq = request.pq;
     return options;
 }
@@ -89,9 +78,8 @@ void apply_slow_motion(const RenderRequest& request, RenderPlan& plan) {
     if (!request.slow_motion) return;
     const double f = *request.slow_motion;
     if (!std::isfinite(f) || f < 1.0 || f > max_slow_motion) {
-        bad_option("--slow-motion",
-                   fmt::format("must be a factor from 1 to {:g} (times slower), got {}",
-                               max_slow_motion, f));
+        throw_option_error("--slow-motion", fmt::format("{}", f),
+                           fmt::format("a factor from 1 to {:g} (times slower)", max_slow_motion));
     }
     plan.slow_motion = f;
     plan.speed.speed /= f;
@@ -103,17 +91,19 @@ std::size_t queue_events(const RenderRequest& request, const RenderPlan& plan) {
     if (!request.queue) return 0;
     const int k = *request.queue;
     if (k < 1 || k > static_cast<int>(sim::max_watched_events)) {
-        bad_option("--queue", fmt::format("shows 1 to {} upcoming events, got {}",
-                                          sim::max_watched_events, k));
+        throw_option_error("--queue", std::to_string(k),
+                           fmt::format("1 to {} upcoming events", sim::max_watched_events));
     }
     if (plan.mode == RenderMode::time) {
-        bad_option("--queue",
-                   "the time-driven engine has no event queue to show; use --mode both or event");
+        throw_option_error(
+            "--queue",
+            "the time-driven engine has no event queue to show; use --mode both or event");
     }
     if (plan.render.overlays != render::OverlayLevel::lesson) {
-        bad_option("--queue", fmt::format("the queue is drawn at the lesson level only, not with "
-                                          "--overlays {}",
-                                          render::overlay_level_name(plan.render.overlays)));
+        throw_option_error("--queue",
+                           fmt::format("the queue is drawn at the lesson level only, not with "
+                                       "--overlays {}",
+                                       render::overlay_level_name(plan.render.overlays)));
     }
     return static_cast<std::size_t>(k);
 }
@@ -121,11 +111,7 @@ std::size_t queue_events(const RenderRequest& request, const RenderPlan& plan) {
 EngineOptions time_engine_options(const RenderRequest& request, const Scene& scene, double speed,
                                   double interval, std::vector<std::string>& notices) {
     EngineOptions options;
-    options.engine = "time";
-    if (request.td_detect != "all-pairs" && request.td_detect != "grid") {
-        bad_option("--td-detect",
-                   fmt::format("must be all-pairs or grid, got '{}'", request.td_detect));
-    }
+    options.engine = EngineKind::time;
     options.td_detect = request.td_detect;
     const bool from_cli = request.dt.has_value();
     // Without a dt anywhere: the scene's own time scale, so -q and --fps never change the physics.
@@ -228,7 +214,7 @@ std::vector<CaptionCue> captions_within(const Scene& scene, double duration, boo
             continue;
         }
         if (!cli_duration) {
-            throw_input_error(cue.file, cue.line, "render.captions.at",
+            throw_scene_error(cue.file, cue.line, "render.captions.at",
                               fmt::format("beyond the video: {:g} s, the video lasts {:g} s "
                                           "(set [render] duration)",
                                           cue.at, duration));
@@ -279,16 +265,8 @@ void check_failure_colors(const Scene& scene, const render::RenderConfig& config
 
 void plan_still_output(const RenderRequest& request, const Scene& scene, RenderPlan& plan) {
     plan.kind = OutputKind::still;
-    if (request.format && *request.format != "png") {
-        bad_option("--format",
-                   fmt::format("a single frame is written as png, got '{}'", *request.format));
-    }
+    check_still_output(request.format, request.output);
     if (request.output) {
-        if (lowercase_extension(*request.output) != ".png") {
-            bad_option("-o",
-                       fmt::format("a single frame is a PNG image: give a .png path, got '{}'",
-                                   *request.output));
-        }
         plan.output = *request.output;
     } else {
         plan.output = std::filesystem::path(default_output_dir) / (output_stem(scene) + ".png");
@@ -301,15 +279,13 @@ video::VideoFormat format_of_path(const std::filesystem::path& path) {
     if (ext == ".mp4") return video::VideoFormat::mp4;
     if (ext == ".gif") return video::VideoFormat::gif;
     if (ext == ".png") {
-        bad_option(
+        throw_option_error(
             "-o",
             fmt::format("'{}' is a single image: use --last-frame or `collide thumbnail` for one "
                         "frame, or --format png for a directory of frames",
                         path.string()));
     }
-    bad_option("-o",
-               fmt::format("cannot tell the format of '{}': use a .mp4 or .gif path, or --format",
-                           path.string()));
+    throw_option_error("-o", path.string(), "a .mp4 or .gif path (or --format to name the format)");
 }
 
 void plan_video_output(const RenderRequest& request, const Scene& scene, RenderPlan& plan) {
@@ -322,8 +298,8 @@ void plan_video_output(const RenderRequest& request, const Scene& scene, RenderP
         const bool other_format = (ext == ".mp4" || ext == ".gif" || ext == ".png") &&
                                   ext != "." + std::string(video::to_string(plan.format));
         if (plan.format != video::VideoFormat::png_sequence && other_format) {
-            bad_option("-o", fmt::format("'{}' ends in {}, but --format is {}", *request.output,
-                                         ext, *request.format));
+            throw_option_error("-o", fmt::format("'{}' ends in {}, but --format is {}",
+                                                 *request.output, ext, *request.format));
         }
     } else if (request.output) {
         plan.format = format_of_path(*request.output);
@@ -349,15 +325,78 @@ void plan_video_output(const RenderRequest& request, const Scene& scene, RenderP
 
 }  // namespace
 
+int checked_fps(int fps, std::string_view option) {
+    if (fps < 1 || fps > max_fps)
+        throw_option_error(option, std::to_string(fps),
+                           fmt::format("1..{} frames per second", max_fps));
+    return fps;
+}
+
+void check_still_output(const std::optional<std::string>& format,
+                        const std::optional<std::string>& output) {
+    if (format && *format != "png")
+        throw_option_error("--format", *format, "png (a single frame is written as png)");
+    if (output && lowercase_extension(*output) != ".png")
+        throw_option_error("-o", *output, "a .png path (a single frame is a PNG image)");
+}
+
+LessonOutput lesson_output(const std::optional<std::string>& format,
+                           const std::optional<std::string>& output, bool still,
+                           std::string_view stem) {
+    LessonOutput out;
+    const std::filesystem::path dir = default_output_dir;
+    out.still = still;
+    out.default_path = !output;
+    if (still) {
+        check_still_output(format, output);
+        out.path = output ? std::filesystem::path(*output) : dir / (std::string(stem) + ".png");
+        return out;
+    }
+    if (format) {
+        out.format = video::parse_video_format(*format, "--format");
+    } else if (output) {
+        const std::string ext = lowercase_extension(*output);
+        if (ext == ".gif") {
+            out.format = video::VideoFormat::gif;
+        } else if (ext != ".mp4") {
+            throw_option_error("-o", *output,
+                               "a .mp4 or .gif path (or --format png for a directory of frames, "
+                               "--last-frame for one PNG)");
+        }
+    }
+    if (output) {
+        const bool file_format = out.format != video::VideoFormat::png_sequence;
+        if (file_format &&
+            lowercase_extension(*output) != "." + std::string(video::to_string(out.format)))
+            throw_option_error("-o",
+                               fmt::format("'{}' does not end in .{} (--format {})", *output,
+                                           video::to_string(out.format), format.value_or("")));
+        out.path = *output;
+        return out;
+    }
+    const std::string name(stem);
+    switch (out.format) {
+        case video::VideoFormat::mp4:
+            out.path = dir / (name + ".mp4");
+            break;
+        case video::VideoFormat::gif:
+            out.path = dir / (name + ".gif");
+            break;
+        case video::VideoFormat::png_sequence:
+            out.path = dir / (name + "_frames");
+            break;
+    }
+    return out;
+}
+
 std::string hint_option(const std::string& where, std::string_view key) {
     return where.empty() ? fmt::format("scene [render] {}", key) : where;
 }
 
 RenderMode parse_render_mode(std::string_view text, std::string_view option) {
-    if (text == "both") return RenderMode::both;
-    if (text == "event") return RenderMode::event;
-    if (text == "time") return RenderMode::time;
-    bad_option(option, fmt::format("must be both, event or time, got '{}'", text));
+    static constexpr std::array<NamedValue<RenderMode>, 3> names{
+        {{"both", RenderMode::both}, {"event", RenderMode::event}, {"time", RenderMode::time}}};
+    return parse_named(text, option, names);
 }
 
 QualityPreset quality_preset(std::string_view letter, std::string_view option) {
@@ -365,16 +404,14 @@ QualityPreset quality_preset(std::string_view letter, std::string_view option) {
     if (letter == "m") return {1280, 720, 30};
     if (letter == "h") return {1920, 1080, 60};
     if (letter == "k") return {3840, 2160, 60};
-    bad_option(option,
-               fmt::format("must be l (480p15), m (720p30), h (1080p60) or k (2160p60), got '{}'",
-                           letter));
+    throw_option_error(option, letter, "l (480p15), m (720p30), h (1080p60) or k (2160p60)");
 }
 
 FrameSize parse_frame_size(std::string_view text, std::string_view option) {
     const auto bad = [&] {
-        bad_option(option,
-                   fmt::format("must be WIDTHxHEIGHT with each in {}..{}, e.g. 1280x720, got '{}'",
-                               min_frame_side, max_frame_side, text));
+        throw_option_error(option, text,
+                           fmt::format("WIDTHxHEIGHT with each in {}..{}, e.g. 1280x720",
+                                       render::min_frame_side, render::max_frame_side));
     };
     const std::size_t x = text.find('x');
     if (x == std::string_view::npos) bad();
@@ -382,7 +419,7 @@ FrameSize parse_frame_size(std::string_view text, std::string_view option) {
     const auto parse = [&](std::string_view part, int& out) {
         const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), out);
         if (part.empty() || error != std::errc{} || end != part.data() + part.size()) bad();
-        if (out < min_frame_side || out > max_frame_side) bad();
+        if (out < render::min_frame_side || out > render::max_frame_side) bad();
     };
     parse(text.substr(0, x), size.width);
     parse(text.substr(x + 1), size.height);
@@ -425,10 +462,11 @@ SpeedChoice choose_speed(const Scene& scene, std::optional<double> cli) {
 FrameClock video_clock(double duration, double speed, int fps) {
     require_positive(duration, "--duration", "number of seconds");
     require_positive(speed, "--speed", "number of simulation time units per second");
-    if (fps < 1) bad_option("--fps", fmt::format("must be >= 1, got {}", fps));
+    if (fps < 1) throw_option_error("--fps", std::to_string(fps), "at least 1 frame per second");
     if (!(duration * fps < max_countable_frames))
-        bad_option("--duration", fmt::format("{:g} s at {} fps is more frames than can be counted",
-                                             duration, fps));
+        throw_option_error(
+            "--duration",
+            fmt::format("{:g} s at {} fps is more frames than can be counted", duration, fps));
     FrameClock clock;
     clock.interval = speed / fps;
     clock.count = std::max<std::int64_t>(1, std::llround(duration * fps));
@@ -438,14 +476,15 @@ FrameClock video_clock(double duration, double speed, int fps) {
 
 FrameClock still_clock(double at, double speed, int fps, std::string_view option) {
     if (!std::isfinite(at) || at < 0.0)
-        bad_option(option, fmt::format("must be a time >= 0, got {}", at));
+        throw_option_error(option, fmt::format("{}", at), "a time >= 0");
     require_positive(speed, "--speed", "number of simulation time units per second");
     FrameClock clock;
     clock.interval = speed / fps;
     const double steps = at / clock.interval;
     // Frame indices are int64 and are counted one by one: beyond 2^53 neither holds.
     if (!(steps < max_countable_frames)) {
-        bad_option(option, fmt::format("t = {:g} is {:.3g} frame intervals ({:g} / {} fps) into "
+        throw_option_error(option,
+                           fmt::format("t = {:g} is {:.3g} frame intervals ({:g} / {} fps) into "
                                        "the video, more than can be counted ({:.3g}): give an "
                                        "earlier time, or a larger --speed",
                                        at, steps, speed, fps, max_countable_frames));
@@ -508,14 +547,14 @@ RenderPlan plan_render(const RenderRequest& request, const Scene& scene) {
     check_failure_colors(scene, plan.render, plan.notices);
     plan.lesson = lesson_plan(request, scene, plan, plan.notices);
     if (request.layout_json) {
-        if (request.layout_json->empty()) bad_option("--layout-json", "needs a file name");
+        if (request.layout_json->empty()) throw_option_error("--layout-json", "needs a file name");
         plan.layout_json = *request.layout_json;
     }
     if (request.still || request.last_frame) {
         plan_still_output(request, scene, plan);
         plan.clock = request.at ? still_clock(*request.at, plan.speed.speed, plan.fps) : video;
     } else {
-        if (request.at) bad_option("--at", "only for `collide thumbnail`");
+        if (request.at) throw_option_error("--at", "only for `collide thumbnail`");
         plan_video_output(request, scene, plan);
         plan.clock = video;
     }
@@ -556,7 +595,8 @@ std::string time_lesson_title(double dt) {
 }
 
 std::string event_lesson_title(const EngineOptions& options) {
-    if (options.engine == "classic") return fmt::format("Event-driven: queue ({})", options.pq);
+    if (options.engine == EngineKind::classic)
+        return fmt::format("Event-driven: queue ({})", pq::to_string(options.pq));
     return "Event-driven: priority queue";
 }
 
@@ -578,8 +618,8 @@ std::string time_panel_title(double dt) {
 }
 
 std::string event_panel_title(const EngineOptions& options) {
-    if (options.engine == "classic")
-        return fmt::format("Event-driven (priority queue: {})", options.pq);
+    if (options.engine == EngineKind::classic)
+        return fmt::format("Event-driven (priority queue: {})", pq::to_string(options.pq));
     return "Event-driven (priority queue)";
 }
 

@@ -40,11 +40,35 @@ struct QualityPreset {
 /// The highest --fps accepted.
 inline constexpr int max_fps = 240;
 
+/// `fps` if it is 1..max_fps; else throws Error(input) naming `option`.
+[[nodiscard]] int checked_fps(int fps, std::string_view option = "--fps");
+
+/// The checks of a single-frame output (a PNG: thumbnail, --last-frame, heap --at): --format, if
+/// given, must be png, and -o, if given, a .png path. Throws Error(input) naming the option.
+void check_still_output(const std::optional<std::string>& format,
+                        const std::optional<std::string>& output);
+
+/// Where a lesson video of `collide heap` or `collide puzzle` goes and as what.
+struct LessonOutput {
+    std::filesystem::path path;
+    video::VideoFormat format = video::VideoFormat::mp4;
+    bool still = false;         ///< one PNG (--last-frame, --at)
+    bool default_path = false;  ///< derived from `stem` under default_output_dir
+};
+
+/// The rules of `collide render` for a lesson video: a still is a PNG (check_still_output); else
+/// --format decides, or the extension of -o (.mp4, .gif); without -o, out/<stem>.<ext> (a PNG
+/// sequence: out/<stem>_frames). Throws Error(input) naming --format or -o.
+[[nodiscard]] LessonOutput lesson_output(const std::optional<std::string>& format,
+                                         const std::optional<std::string>& output, bool still,
+                                         std::string_view stem);
+
 /// l = 854x480@15, m = 1280x720@30, h = 1920x1080@60, k = 3840x2160@60.
 /// Throws Error(input) naming `option` for any other letter.
 [[nodiscard]] QualityPreset quality_preset(std::string_view letter, std::string_view option = "-q");
 
-/// Parses "WxH" (e.g. "1280x720"), both in [64, 8192]. Throws Error(input) naming `option`.
+/// Parses "WxH" (e.g. "1280x720"), both in [render::min_frame_side, render::max_frame_side].
+/// Throws Error(input) naming `option`.
 struct FrameSize {
     int width = 0;
     int height = 0;
@@ -111,30 +135,30 @@ struct FrameClock {
 
 /// Everything the user may type; unset = take the scene hint or the default.
 struct RenderRequest {
-    std::string scene;                       ///< file or built-in name
-    std::optional<std::string> output;       ///< -o
-    std::string mode = "both";               ///< --mode
-    std::optional<std::string> quality;      ///< -q
-    std::optional<std::string> size;         ///< --size WxH
-    std::optional<int> fps;                  ///< --fps
-    std::optional<double> duration;          ///< --duration (seconds of video)
-    std::optional<double> speed;             ///< --speed (simulation time per second of video)
-    std::optional<double> dt;                ///< --dt (time-driven quantum)
-    std::string engine = "fast";             ///< --engine (the event-driven one)
-    std::string pq = "binary";               ///< --pq (classic engine's queue)
-    std::string td_detect = "all-pairs";     ///< --td-detect (time-driven overlap checks)
-    std::optional<std::string> color;        ///< --color
-    std::optional<bool> trails;              ///< --trails / --no-trails
-    std::optional<std::string> overlays;     ///< --overlays none|lesson|full
-    std::optional<std::string> theme;        ///< --theme dark|light
-    std::optional<std::string> layout_json;  ///< --layout-json FILE
-    std::optional<std::string> format;       ///< --format mp4|gif|png
-    bool last_frame = false;                 ///< --last-frame: write only the last frame as a PNG
-    std::optional<double> at;                ///< thumbnail --at (simulation time)
-    bool still = false;                      ///< true for `collide thumbnail` (PNG output)
-    bool no_limits = false;                  ///< --no-limits: run even what exceeds WorkLimits
-    std::optional<int> queue;                ///< --queue [K]: show the event queue, K events
-    std::optional<double> slow_motion;       ///< --slow-motion F: F times slower than the speed
+    std::string scene;                     ///< file or built-in name
+    std::optional<std::string> output;     ///< -o
+    std::string mode = "both";             ///< --mode
+    std::optional<std::string> quality;    ///< -q
+    std::optional<std::string> size;       ///< --size WxH
+    std::optional<int> fps;                ///< --fps
+    std::optional<double> duration;        ///< --duration (seconds of video)
+    std::optional<double> speed;           ///< --speed (simulation time per second of video)
+    std::optional<double> dt;              ///< --dt (time-driven quantum)
+    EngineKind engine = EngineKind::fast;  ///< --engine (the event-driven one: fast or classic)
+    pq::QueueKind pq;                      ///< --pq (classic engine's queue)
+    OverlapDetection td_detect = OverlapDetection::all_pairs;  ///< --td-detect (time-driven)
+    std::optional<std::string> color;                          ///< --color
+    std::optional<bool> trails;                                ///< --trails / --no-trails
+    std::optional<std::string> overlays;                       ///< --overlays none|lesson|full
+    std::optional<std::string> theme;                          ///< --theme dark|light
+    std::optional<std::string> layout_json;                    ///< --layout-json FILE
+    std::optional<std::string> format;                         ///< --format mp4|gif|png
+    bool last_frame = false;            ///< --last-frame: write only the last frame as a PNG
+    std::optional<double> at;           ///< thumbnail --at (simulation time)
+    bool still = false;                 ///< true for `collide thumbnail` (PNG output)
+    bool no_limits = false;             ///< --no-limits: run even what exceeds WorkLimits
+    std::optional<int> queue;           ///< --queue [K]: show the event queue, K events
+    std::optional<double> slow_motion;  ///< --slow-motion F: F times slower than the speed
 };
 
 /// Events `--queue` shows without a number.
@@ -187,8 +211,8 @@ struct RenderPlan {
     double duration = 10.0;  ///< seconds of video (still: the video it is a frame of)
     SpeedChoice speed;
     FrameClock clock;
-    EngineOptions event_engine;  ///< engine "fast" or "classic"
-    EngineOptions time_engine;   ///< engine "time", with the dt in use
+    EngineOptions event_engine;  ///< engine fast or classic
+    EngineOptions time_engine;   ///< engine time, with the dt in use
     render::RenderConfig render;
     OutputKind kind = OutputKind::video;
     video::VideoFormat format = video::VideoFormat::mp4;

@@ -22,7 +22,8 @@ struct Culprits {
 };
 
 [[noreturn]] void refuse(const std::string& culprit, const std::string& reason) {
-    throw_input_error(culprit.empty() ? reason : culprit + ": " + reason);
+    if (culprit.empty()) throw_input_error(reason);
+    throw_option_error(culprit, reason);
 }
 
 std::string insist_advice() {
@@ -130,10 +131,10 @@ RunShape render_run_shape(const RenderPlan& plan) {
     RunShape run;
     run.span = plan.clock.last_time;
     run.event_driven = plan.mode != RenderMode::time;
-    run.cell_grid = plan.event_engine.engine == "fast";
+    run.cell_grid = plan.event_engine.engine == EngineKind::fast;
     run.time_driven = plan.mode != RenderMode::event;
     run.dt = plan.time_engine.dt;
-    run.all_pairs = plan.time_engine.td_detect != "grid";
+    run.all_pairs = plan.time_engine.td_detect == OverlapDetection::all_pairs;
     run.frames = static_cast<double>(plan.clock.count);
     return run;
 }
@@ -179,11 +180,11 @@ void check_simulate_work(const Scene& scene, const EngineOptions& engine, double
                          const WorkLimits& limits) {
     RunShape run;
     run.span = until;
-    run.time_driven = engine.engine == "time";
+    run.time_driven = engine.engine == EngineKind::time;
     run.event_driven = !run.time_driven;
-    run.cell_grid = engine.engine == "fast";
+    run.cell_grid = engine.engine == EngineKind::fast;
     run.dt = engine.dt;
-    run.all_pairs = engine.td_detect != "grid";
+    run.all_pairs = engine.td_detect == OverlapDetection::all_pairs;
     const WorkEstimate work = estimate_work(scene, run);
     Culprits who;
     who.span = "--until";

@@ -6,12 +6,16 @@
 
 #include "backends.hpp"
 #include "collide/error.hpp"
+#include "collide/named_values.hpp"
 
 namespace collide::render {
 namespace {
 
-constexpr std::array all_backends = {Backend::automatic, Backend::osmesa, Backend::egl,
-                                     Backend::egl_device, Backend::glfw};
+constexpr std::array<NamedValue<Backend>, 5> backend_names{{{"auto", Backend::automatic},
+                                                            {"osmesa", Backend::osmesa},
+                                                            {"egl", Backend::egl},
+                                                            {"egl-device", Backend::egl_device},
+                                                            {"glfw", Backend::glfw}}};
 
 std::string names_of(const std::vector<Backend>& backends) {
     std::string out;
@@ -30,28 +34,11 @@ Backend default_offscreen() {
 }  // namespace
 
 std::string_view backend_name(Backend backend) noexcept {
-    switch (backend) {
-        case Backend::automatic:
-            return "auto";
-        case Backend::osmesa:
-            return "osmesa";
-        case Backend::egl:
-            return "egl";
-        case Backend::egl_device:
-            return "egl-device";
-        case Backend::glfw:
-            return "glfw";
-    }
-    return "auto";
+    return name_of(backend, backend_names, "auto");
 }
 
 Backend parse_backend(std::string_view text, std::string_view option) {
-    for (const Backend backend : all_backends) {
-        if (text == backend_name(backend)) return backend;
-    }
-    throw_input_error(std::string(option) + ": unknown GL backend '" + std::string(text) +
-                      "' (expected one of " + names_of({all_backends.begin(), all_backends.end()}) +
-                      ")");
+    return parse_named(text, option, backend_names, "a GL backend");
 }
 
 bool is_available(Backend backend) {
@@ -70,8 +57,8 @@ bool is_available(Backend backend) {
 
 std::vector<Backend> available_backends() {
     std::vector<Backend> out;
-    for (const Backend backend : all_backends) {
-        if (is_available(backend)) out.push_back(backend);
+    for (const NamedValue<Backend>& entry : backend_names) {
+        if (is_available(entry.value)) out.push_back(entry.value);
     }
     return out;
 }

@@ -11,6 +11,7 @@
 #include <string_view>
 
 #include "collide/error.hpp"
+#include "collide/render/renderer.hpp"
 #include "draw_list.hpp"
 #include "font.hpp"
 #include "gl_target.hpp"
@@ -24,9 +25,10 @@ namespace collide::render {
 
 void HeapViewConfig::validate() const {
     const auto check_size = [](const char* field, int value) {
-        if (value < 64 || value > 8192) {
-            throw_input_error(std::string("heap view.") + field + ": must be in [64, 8192], got " +
-                              std::to_string(value));
+        if (value < min_frame_side || value > max_frame_side) {
+            throw_input_error(std::string("heap view.") + field + ": must be in [" +
+                              std::to_string(min_frame_side) + ", " +
+                              std::to_string(max_frame_side) + "], got " + std::to_string(value));
         }
     };
     check_size("width", width);

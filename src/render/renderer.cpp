@@ -3,6 +3,7 @@
 #include "collide/render/renderer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
@@ -10,6 +11,7 @@
 #include <string>
 
 #include "collide/error.hpp"
+#include "collide/named_values.hpp"
 #include "frame_builder.hpp"
 #include "gl_target.hpp"
 
@@ -18,72 +20,55 @@ namespace collide::render {
 // ---------------------------------------------------------------------------------------------
 // Config
 
+namespace {
+
+constexpr std::array<NamedValue<ColorMode>, 4> color_mode_names{{{"scene", ColorMode::scene},
+                                                                 {"speed", ColorMode::speed},
+                                                                 {"mass", ColorMode::mass},
+                                                                 {"tag", ColorMode::tag}}};
+constexpr std::array<NamedValue<OverlayLevel>, 3> overlay_level_names{
+    {{"none", OverlayLevel::none}, {"lesson", OverlayLevel::lesson}, {"full", OverlayLevel::full}}};
+constexpr std::array<NamedValue<Theme>, 2> theme_names{
+    {{"dark", Theme::dark}, {"light", Theme::light}}};
+
+}  // namespace
+
 std::string_view color_mode_name(ColorMode mode) noexcept {
-    switch (mode) {
-        case ColorMode::scene:
-            return "scene";
-        case ColorMode::speed:
-            return "speed";
-        case ColorMode::mass:
-            return "mass";
-        case ColorMode::tag:
-            return "tag";
-    }
-    return "scene";
+    return name_of(mode, color_mode_names, "scene");
 }
 
 ColorMode parse_color_mode(std::string_view text, std::string_view field) {
-    if (text == "scene") return ColorMode::scene;
-    if (text == "speed") return ColorMode::speed;
-    if (text == "mass") return ColorMode::mass;
-    if (text == "tag") return ColorMode::tag;
-    throw_input_error(std::string(field) + ": unknown colour mode '" + std::string(text) +
-                      "' (expected scene, speed, mass or tag)");
+    return parse_named(text, field, color_mode_names, "a colour mode");
 }
 
 std::string_view overlay_level_name(OverlayLevel level) noexcept {
-    switch (level) {
-        case OverlayLevel::none:
-            return "none";
-        case OverlayLevel::lesson:
-            return "lesson";
-        case OverlayLevel::full:
-            return "full";
-    }
-    return "lesson";
+    return name_of(level, overlay_level_names, "lesson");
 }
 
 OverlayLevel parse_overlay_level(std::string_view text, std::string_view field) {
-    if (text == "none") return OverlayLevel::none;
-    if (text == "lesson") return OverlayLevel::lesson;
-    if (text == "full") return OverlayLevel::full;
-    throw_input_error(std::string(field) + ": unknown overlay level '" + std::string(text) +
-                      "' (expected none, lesson or full)");
+    return parse_named(text, field, overlay_level_names, "an overlay level");
 }
 
 std::string_view theme_name(Theme theme) noexcept {
-    return theme == Theme::light ? "light" : "dark";
+    return name_of(theme, theme_names, "dark");
 }
 
 Theme parse_theme(std::string_view text, std::string_view field) {
-    if (text == "dark") return Theme::dark;
-    if (text == "light") return Theme::light;
-    throw_input_error(std::string(field) + ": unknown theme '" + std::string(text) +
-                      "' (expected dark or light)");
+    return parse_named(text, field, theme_names, "a theme");
 }
 
 void RenderConfig::validate() const {
-    constexpr int min_size = 64;
-    constexpr int max_size = 8192;  // well inside every GL implementation's FBO limit
     const auto fail = [](const char* field, const std::string& reason) {
         throw_input_error(std::string("render.") + field + ": " + reason);
     };
-    if (width < min_size || width > max_size) {
-        fail("width", "must be in [64, 8192], got " + std::to_string(width));
-    }
-    if (height < min_size || height > max_size) {
-        fail("height", "must be in [64, 8192], got " + std::to_string(height));
-    }
+    const auto check_side = [&](const char* field, int side) {
+        if (side < min_frame_side || side > max_frame_side) {
+            fail(field, "must be in [" + std::to_string(min_frame_side) + ", " +
+                            std::to_string(max_frame_side) + "], got " + std::to_string(side));
+        }
+    };
+    check_side("width", width);
+    check_side("height", height);
     if (!std::isfinite(speed_min) || speed_min < 0.0) fail("speed_min", "must be finite and >= 0");
     if (!std::isfinite(speed_max) || !(speed_max > speed_min)) {
         fail("speed_max", "must be finite and > speed_min");

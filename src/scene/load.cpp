@@ -50,7 +50,7 @@ Scene load_builtin(const std::string& name, const std::filesystem::path& assets_
         const std::string guess = nearest_name(name, scene_names_in(assets_dir));
         reason +=
             guess.empty() ? " (`collide scenes` lists them)" : " (did you mean '" + guess + "'?)";
-        throw_input_error("'" + name + "': " + reason);
+        throw_scene_error("'" + name + "'", 0, "", reason);
     }
     Scene scene = load_toml_scene(file, options);
     scene.name = name;
@@ -72,18 +72,18 @@ Scene load_scene(const std::string& path_or_name) {
 Scene load_scene(const std::string& path_or_name, const std::filesystem::path& assets_dir,
                  const SceneOptions& options) {
     if (path_or_name.empty())
-        throw_input_error("empty scene path (give a file or a built-in scene name)");
+        throw_scene_error("", 0, "", "empty scene path (give a file or a built-in scene name)");
     const std::filesystem::path path(path_or_name);
     std::error_code ec;
     const bool exists = std::filesystem::exists(path, ec);
     if (!exists && looks_like_name(path_or_name))
         return load_builtin(path_or_name, assets_dir, options);
     if (exists && std::filesystem::is_directory(path, ec))
-        throw_input_error(path_or_name, 0, "", "is a directory, not a scene file");
+        throw_scene_error(path_or_name, 0, "", "is a directory, not a scene file");
     if (has_extension(path, ".txt")) return read_algs4_text(read_scene_file(path), path).scene;
     if (has_extension(path, ".toml")) return load_toml_scene(path, options);
-    if (!exists) throw_input_error(path_or_name, 0, "", "no such file");
-    throw_input_error(path_or_name, 0, "",
+    if (!exists) throw_scene_error(path_or_name, 0, "", "no such file");
+    throw_scene_error(path_or_name, 0, "",
                       "unknown scene format '" + path.extension().string() +
                           "' (expected an algs4 .txt file or a .toml scene)");
 }
@@ -104,7 +104,7 @@ std::vector<BuiltinScene> builtin_scenes(const std::filesystem::path& assets_dir
             const toml::table doc = toml::parse(text, entry.path().string());
             s.description = doc["description"].value_or(std::string());
         } catch (const toml::parse_error& e) {
-            throw_input_error(entry.path().string(), static_cast<int>(e.source().begin.line), "",
+            throw_scene_error(entry.path().string(), static_cast<int>(e.source().begin.line), "",
                               "TOML syntax error: " + std::string(e.description()));
         }
         scenes.push_back(std::move(s));

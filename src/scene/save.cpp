@@ -94,12 +94,12 @@ void save_scene(const Scene& scene, const std::filesystem::path& path,
                 const std::atomic<bool>* cancel) {
     const std::string ext = path.extension().string();
     if (ext != ".toml" && ext != ".txt") {
-        throw_input_error(path.string(), 0, "",
+        throw_scene_error(path.string(), 0, "",
                           "cannot write scenes as '" + ext + "' (use .toml or .txt)");
     }
     if (ext == ".txt" && (scene.box.width != 1.0 || scene.box.height != 1.0 ||
                           scene.box.boundary != Boundary::walls)) {
-        throw_input_error(path.string(), 0, "",
+        throw_scene_error(path.string(), 0, "",
                           "algs4 .txt files describe the unit box with walls only (use .toml)");
     }
     // Everything is formatted before the file is created: an error on the way leaves nothing.

@@ -48,7 +48,7 @@ std::string mebibytes(std::uintmax_t bytes) {
 }
 
 [[noreturn]] void too_large(const std::string& name) {
-    throw_input_error(name, 0, "",
+    throw_scene_error(name, 0, "",
                       "larger than " + mebibytes(max_scene_file_bytes) +
                           ", the most a scene file may have (docs/scenes.md, \"Limits\")");
 }
@@ -60,7 +60,7 @@ std::string read_scene_file(const std::filesystem::path& path) {
     // O_NONBLOCK: opening a FIFO returns at once instead of waiting for a writer.
     const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
     if (fd < 0) {
-        throw_input_error(name, 0, "",
+        throw_scene_error(name, 0, "",
                           "cannot open the scene file: " +
                               std::error_code(errno, std::generic_category()).message());
     }
@@ -71,7 +71,7 @@ std::string read_scene_file(const std::filesystem::path& path) {
                             std::error_code(errno, std::generic_category()).message());
     }
     if (!S_ISREG(info.st_mode)) {
-        throw_input_error(name, 0, "",
+        throw_scene_error(name, 0, "",
                           kind_of(info.st_mode) +
                               ", not a regular file: scenes are read from "
                               "regular files only");
@@ -90,7 +90,7 @@ std::string read_scene_file(const std::filesystem::path& path) {
         const ssize_t got = ::read(file.get(), text.data() + used, text.size() - used);
         if (got < 0) {
             if (errno == EINTR) continue;
-            throw_input_error(
+            throw_scene_error(
                 name, 0, "",
                 "read error: " + std::error_code(errno, std::generic_category()).message());
         }

@@ -78,7 +78,7 @@ class TomlReader {
         try {
             return toml::parse(text, file_);
         } catch (const toml::parse_error& e) {
-            throw_input_error(file_, static_cast<int>(e.source().begin.line), "",
+            throw_scene_error(file_, static_cast<int>(e.source().begin.line), "",
                               "TOML syntax error: " + std::string(e.description()));
         }
     }
@@ -90,7 +90,7 @@ class TomlReader {
 
     [[noreturn]] void fail(const toml::node& at, const std::string& field,
                            const std::string& reason) const {
-        throw_input_error(file_, static_cast<int>(at.source().begin.line), field, reason);
+        throw_scene_error(file_, static_cast<int>(at.source().begin.line), field, reason);
     }
 
     void check_keys(const toml::table& table, const std::string& prefix,
@@ -102,7 +102,7 @@ class TomlReader {
             const std::string guess = nearest_name(name, allowed);
             reason += guess.empty() ? " (valid keys: " + joined(allowed) + ")"
                                     : " (did you mean '" + guess + "'?)";
-            throw_input_error(file_, static_cast<int>(key.source().begin.line), prefix, reason);
+            throw_scene_error(file_, static_cast<int>(key.source().begin.line), prefix, reason);
         }
     }
 
@@ -215,12 +215,7 @@ class TomlReader {
         check_keys(t, "render", render_keys);
         RenderHints& r = scene_.render;
         if (const toml::node* v = t.get("color_mode")) {
-            const std::string mode = text_value(*v, "render.color_mode");
-            if (std::find(color_modes.begin(), color_modes.end(), mode) == color_modes.end()) {
-                fail(*v, "render.color_mode",
-                     "expected one of " + joined(color_modes) + " (got \"" + mode + "\")");
-            }
-            r.color_mode = mode;
+            r.color_mode = one_of(*v, "render.color_mode", color_modes);
         }
         if (const toml::node* v = t.get("trails")) r.trails = boolean(*v, "render.trails");
         if (const toml::node* v = t.get("overlays")) {
@@ -370,7 +365,7 @@ class TomlReader {
                                const std::string& prefix) const {
         const toml::node* v = t.get(key);
         if (v == nullptr)
-            throw_input_error(file_, static_cast<int>(t.source().begin.line), prefix + "." + key,
+            throw_scene_error(file_, static_cast<int>(t.source().begin.line), prefix + "." + key,
                               "missing (required)");
         return *v;
     }
@@ -400,7 +395,7 @@ class TomlReader {
                 generate_discs(scene_, spec, field);
             } catch (const Error& e) {
                 // The generator names the field; add where the block is.
-                throw_input_error(file_, line, "", e.what());
+                throw_scene_error(file_, line, "", e.what());
             }
             origin_.add({first, scene_.discs.size() - first, file_, {}, line, field});
         }
@@ -416,7 +411,7 @@ class TomlReader {
         if (const toml::node* v = t.get("packing_fraction"))
             g.packing_fraction = positive(*v, key("packing_fraction"));
         if (t.get("count") == nullptr && t.get("packing_fraction") == nullptr) {
-            throw_input_error(file_, static_cast<int>(t.source().begin.line), prefix,
+            throw_scene_error(file_, static_cast<int>(t.source().begin.line), prefix,
                               "give count or packing_fraction");
         }
         g.radius = positive(required(t, "radius", prefix), key("radius"));
@@ -443,7 +438,7 @@ class TomlReader {
         try {
             g.validate(prefix);
         } catch (const Error& e) {
-            throw_input_error(file_, static_cast<int>(t.source().begin.line), "", e.what());
+            throw_scene_error(file_, static_cast<int>(t.source().begin.line), "", e.what());
         }
         return g;
     }

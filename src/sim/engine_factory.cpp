@@ -1,22 +1,23 @@
+#include <array>
 #include <type_traits>
 
 #include "collide/error.hpp"
+#include "collide/named_values.hpp"
 #include "collide/sim/classic_engine.hpp"
 #include "collide/sim/engine.hpp"
 #include "collide/sim/event.hpp"
 #include "collide/sim/fast_engine.hpp"
-#include "collide/sim/pq/queue_kind.hpp"
+#include "collide/sim/pq/with_queue.hpp"
 #include "collide/sim/time_engine.hpp"
 
 namespace collide {
 
 namespace {
 
-/// The classic loop on the queue named by --pq (every queue kind is compiled in).
+/// The classic loop on the queue chosen by --pq (every queue kind is compiled in).
 std::unique_ptr<Engine> make_classic_engine(const Scene& scene, const EngineOptions& options) {
-    const pq::QueueKind kind = pq::parse_queue_kind(options.pq, "--pq");
     return pq::with_queue<sim::Event, pq::Orientation::min, sim::EventLess>(
-        kind, [&](auto&& queue) -> std::unique_ptr<Engine> {
+        options.pq, [&](auto&& queue) -> std::unique_ptr<Engine> {
             using Queue = std::decay_t<decltype(queue)>;
             return std::make_unique<sim::ClassicEngine<Queue>>(scene, std::move(queue));
         });
@@ -24,26 +25,55 @@ std::unique_ptr<Engine> make_classic_engine(const Scene& scene, const EngineOpti
 
 }  // namespace
 
+namespace {
+
+constexpr std::array<NamedValue<EngineKind>, 3> engine_names{
+    {{"fast", EngineKind::fast}, {"classic", EngineKind::classic}, {"time", EngineKind::time}}};
+constexpr std::array<NamedValue<EngineKind>, 2> event_engine_names{
+    {{"fast", EngineKind::fast}, {"classic", EngineKind::classic}}};
+constexpr std::array<NamedValue<OverlapDetection>, 2> detection_names{
+    {{"all-pairs", OverlapDetection::all_pairs}, {"grid", OverlapDetection::grid}}};
+
+}  // namespace
+
+EngineKind parse_engine_kind(std::string_view text, std::string_view option) {
+    return parse_named(text, option, engine_names);
+}
+
+EngineKind parse_event_engine_kind(std::string_view text, std::string_view option) {
+    return parse_named(text, option, event_engine_names, "an event-driven engine");
+}
+
+std::string_view to_string(EngineKind kind) noexcept {
+    return name_of(kind, engine_names);
+}
+
+OverlapDetection parse_overlap_detection(std::string_view text, std::string_view option) {
+    return parse_named(text, option, detection_names);
+}
+
+std::string_view to_string(OverlapDetection detection) noexcept {
+    return name_of(detection, detection_names);
+}
+
 void EngineOptions::validate() const {
-    if (engine != "fast" && engine != "classic" && engine != "time") {
-        throw_input_error("--engine", 0, "",
-                          "unknown engine '" + engine + "' (expected fast|classic|time)");
-    }
-    (void)pq::parse_queue_kind(pq, "--pq");
-    validate_time_driven_options(*this);  // --dt, --td-detect: one rule, shared with the engine
+    validate_time_driven_options(*this);  // --dt: one rule, shared with the engine
 }
 
 std::unique_ptr<Engine> make_engine(const Scene& scene, const EngineOptions& options) {
-    if (options.engine == "fast") {
-        // Tiny periodic boxes (under three diameters) have no 3 x 3 grid: the O(N) loop is exact
-        // there.
-        if (!sim::FastEngine::can_simulate(scene))
-            return make_classic_engine(scene, EngineOptions{});
-        return std::make_unique<sim::FastEngine>(scene);
+    switch (options.engine) {
+        case EngineKind::fast:
+            // Tiny periodic boxes (under three diameters) have no 3 x 3 grid: the O(N) loop is
+            // exact there.
+            if (!sim::FastEngine::can_simulate(scene))
+                return make_classic_engine(scene, EngineOptions{});
+            return std::make_unique<sim::FastEngine>(scene);
+        case EngineKind::classic:
+            return make_classic_engine(scene, options);
+        case EngineKind::time:
+            return std::make_unique<sim::TimeEngine>(scene, options);
     }
-    if (options.engine == "classic") return make_classic_engine(scene, options);
-    if (options.engine == "time") return std::make_unique<sim::TimeEngine>(scene, options);
-    throw_input_error("--engine", 0, "", "unknown engine '" + options.engine + "'");
+    throw_runtime_error("make_engine: no such engine kind");
 }
 
 }  // namespace collide

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "collide/error.hpp"
+#include "collide/named_values.hpp"
 #include "collide/video/video_writer.hpp"
 
 namespace collide::video {
@@ -12,6 +13,19 @@ namespace {
 constexpr int max_dimension = 8192;
 constexpr int max_fps = 240;
 constexpr int max_queue_frames = 64;
+constexpr std::array<NamedValue<VideoFormat>, 4> format_names{
+    {{"mp4", VideoFormat::mp4},
+     {"gif", VideoFormat::gif},
+     {"png", VideoFormat::png_sequence},
+     {"png_sequence", VideoFormat::png_sequence}}};
+/// Own names first; the encoders' and the other standards' names are accepted as aliases.
+constexpr std::array<NamedValue<VideoCodec>, 7> codec_names{{{"h264", VideoCodec::h264},
+                                                             {"hevc", VideoCodec::hevc},
+                                                             {"av1", VideoCodec::av1},
+                                                             {"avc", VideoCodec::h264},
+                                                             {"x264", VideoCodec::h264},
+                                                             {"h265", VideoCodec::hevc},
+                                                             {"x265", VideoCodec::hevc}}};
 constexpr std::array<std::string_view, 10> x26x_presets = {
     "ultrafast", "superfast", "veryfast", "faster",   "fast",
     "medium",    "slow",      "slower",   "veryslow", "placebo"};
@@ -66,21 +80,11 @@ void VideoOptions::validate() const {
 }
 
 VideoFormat parse_video_format(std::string_view text, std::string_view field) {
-    const std::string name = lowercase(text);
-    if (name == "mp4") return VideoFormat::mp4;
-    if (name == "gif") return VideoFormat::gif;
-    if (name == "png" || name == "png_sequence") return VideoFormat::png_sequence;
-    throw_input_error("", 0, std::string(field),
-                      "expected mp4, gif or png, got '" + std::string(text) + "'");
+    return parse_named(text, field, format_names, "", NameCase::ignore);
 }
 
 VideoCodec parse_video_codec(std::string_view text, std::string_view field) {
-    const std::string name = lowercase(text);
-    if (name == "h264" || name == "avc" || name == "x264") return VideoCodec::h264;
-    if (name == "hevc" || name == "h265" || name == "x265") return VideoCodec::hevc;
-    if (name == "av1") return VideoCodec::av1;
-    throw_input_error("", 0, std::string(field),
-                      "expected h264, hevc or av1, got '" + std::string(text) + "'");
+    return parse_named(text, field, codec_names, "", NameCase::ignore);
 }
 
 VideoFormat format_from_extension(const std::filesystem::path& path) {
@@ -91,27 +95,11 @@ VideoFormat format_from_extension(const std::filesystem::path& path) {
 }
 
 std::string_view to_string(VideoFormat format) noexcept {
-    switch (format) {
-        case VideoFormat::mp4:
-            return "mp4";
-        case VideoFormat::gif:
-            return "gif";
-        case VideoFormat::png_sequence:
-            return "png";
-    }
-    return "?";
+    return name_of(format, format_names);
 }
 
 std::string_view to_string(VideoCodec codec) noexcept {
-    switch (codec) {
-        case VideoCodec::h264:
-            return "h264";
-        case VideoCodec::hevc:
-            return "hevc";
-        case VideoCodec::av1:
-            return "av1";
-    }
-    return "?";
+    return name_of(codec, codec_names);
 }
 
 std::string_view encoder_name(VideoCodec codec) noexcept {

@@ -135,16 +135,17 @@ TEST_CASE("collide heap: bad options and inputs too big to draw legibly exit 2")
                    "give either --ops"));
     CHECK(contains(run_collide_bad_input("heap --sort \"B A\" --impl ordered" + quick + out),
                    "--impl"));
-    CHECK(contains(run_collide_bad_input("heap --ops P --impl heap" + quick + out),
-                   "--impl: unknown queue 'heap'"));
+    CHECK(contains(
+        run_collide_bad_input("heap --ops P --impl heap" + quick + out),
+        "--impl: expected a queue: unordered, ordered, binary, dary:D or indexed[:D], got 'heap'"));
     CHECK(contains(run_collide_bad_input("heap --ops P --index-base 2" + quick + out),
-                   "--index-base: must be 0 or 1"));
+                   "--index-base: expected 0 or 1, got '2'"));
     CHECK(contains(run_collide_bad_input("heap --ops P --pace 0" + quick + out), "--pace"));
     CHECK(
         contains(run_collide_bad_input("heap --ops P" + quick + "-o " + quoted(dir.path / "x.txt")),
-                 "-o: cannot tell the format"));
+                 "-o: expected a .mp4 or .gif path"));
     CHECK(contains(run_collide_bad_input("heap --ops P --last-frame" + quick + out),
-                   "give a .png path"));
+                   "expected a .png path"));
     CHECK(contains(run_collide_bad_input("heap --ops P" + quick + "-o " +
                                          quoted(dir.path / "missing" / "x.mp4")),
                    "missing"));

@@ -83,7 +83,9 @@ TEST_CASE("removing from an empty queue, an unknown --impl or --format are error
     CHECK(contains(empty.output, "token 3 '*': removes from an empty queue"));
     const auto impl = run_collide("pq --ops A --impl heap");
     CHECK(impl.exit_code == 2);
-    CHECK(contains(impl.output, "--impl: unknown queue 'heap'"));
+    CHECK(contains(
+        impl.output,
+        "--impl: expected a queue: unordered, ordered, binary, dary:D or indexed[:D], got 'heap'"));
     const auto format = run_collide("pq --ops A --format pdf");
     CHECK(format.exit_code == 2);
     CHECK(contains(format.output, "pdf"));

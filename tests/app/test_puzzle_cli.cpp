@@ -118,7 +118,7 @@ TEST_CASE("collide puzzle: bad boards name the token and unsolvable boards and b
     const std::string png = " -o " + quoted(dir.path / "x.png");
     for (const char* at : {"-1", "1e9", "nan"}) {
         CHECK(contains(run_collide_bad_input("puzzle random --at " + std::string(at) + png),
-                       "--at: must be within the video"));
+                       "--at: expected a time within the video"));
     }
     CHECK_FALSE(fs::exists(dir.path / "x.mp4"));
     CHECK_FALSE(fs::exists(dir.path / "x.png"));

@@ -121,7 +121,7 @@ TEST_CASE(
     CHECK(contains(exponent.output, "discs: 400"));
 
     CHECK(contains(run_collide_bad_input("bench engine --n 2.5 --collisions 10"),
-                   "--n: must be a whole number of discs from 2 to 1e+09"));
+                   "--n: expected a whole number of discs from 2 to 1e+09, got '2.5'"));
     // Two discs at packing fraction 0.5 are wider than a quarter of the box.
     CHECK(contains(run_collide_bad_input("bench engine --n 2 --eta 0.5 --collisions 10"),
                    "--n 2 --eta 0.5: no valid fluid"));

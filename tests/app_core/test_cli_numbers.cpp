@@ -28,9 +28,9 @@ TEST_CASE("whole numbers: signs, fractions, exponents, hex and overflow name the
         CHECK(contains(message, "from 0 to 18446744073709551615"));
     }
     CHECK(contains(input_error_message([] { (void)parse_whole_number("241", "--fps", 1, 240); }),
-                   "--fps: out of range (got '241')"));
+                   "--fps: expected a whole number from 1 to 240, got '241'"));
     CHECK(contains(input_error_message([] { (void)parse_whole_number("0", "--fps", 1, 240); }),
-                   "--fps: out of range"));
+                   "--fps: expected a whole number from 1 to 240, got '0'"));
 }
 
 TEST_CASE("whole numbers: an option registered with CLI11 is a usage error when bad") {
@@ -46,6 +46,7 @@ TEST_CASE("whole numbers: an option registered with CLI11 is a usage error when 
         app.parse(std::string("--seed -1"), false);
         FAIL("no error");
     } catch (const CLI::ValidationError& e) {
-        CHECK(contains(e.what(), "--seed: expected a whole number (got '-1')"));
+        CHECK(contains(e.what(),
+                       "--seed: expected a whole number from 0 to 18446744073709551615, got '-1'"));
     }
 }

@@ -152,6 +152,7 @@ TEST_CASE("plan_render rejects bad options with the option's name") {
     rejects([](RenderRequest& r) { r.dt = 0.0; }, "--dt");
     rejects([](RenderRequest& r) { r.color = "rainbow"; }, "--color");
     rejects([](RenderRequest& r) { r.format = "avi"; }, "--format");
+    rejects([](RenderRequest& r) { r.engine = EngineKind::time; }, "--engine");
     rejects([](RenderRequest& r) { r.queue = 0; }, "--queue");
     rejects([](RenderRequest& r) { r.queue = 21; }, "--queue");
     rejects(
@@ -190,6 +191,27 @@ TEST_CASE("--queue asks for the event queue and --slow-motion slows the video, n
     CHECK(plan_render(request, scene).queue_events == 7);
 }
 
+TEST_CASE(
+    "plan_render carries the parsed engine options to both panels, and titles name the queue") {
+    const Scene scene = two_disc_scene(0.1);
+    RenderRequest request;
+    request.scene = "two";
+    request.engine = EngineKind::classic;
+    request.pq = pq::parse_queue_kind("indexed");
+    request.td_detect = OverlapDetection::grid;
+    const RenderPlan plan = plan_render(request, scene);
+    CHECK(plan.event_engine.engine == EngineKind::classic);
+    CHECK(plan.event_engine.pq == pq::QueueKind{pq::QueueFamily::indexed, 4});
+    CHECK(plan.time_engine.engine == EngineKind::time);
+    CHECK(plan.time_engine.td_detect == OverlapDetection::grid);
+    // The canonical spelling, with the arity in use (`--pq indexed` is indexed:4).
+    CHECK(event_panel_title(plan.event_engine) == "Event-driven (priority queue: indexed:4)");
+    CHECK(event_lesson_title(plan.event_engine) == "Event-driven: queue (indexed:4)");
+    request.engine = EngineKind::fast;
+    CHECK(event_lesson_title(plan_render(request, scene).event_engine) ==
+          "Event-driven: priority queue");
+}
+
 TEST_CASE("--format decides for a path without extension, a clashing extension names both") {
     const Scene scene = two_disc_scene(0.1);
     RenderRequest request;
@@ -216,8 +238,8 @@ TEST_CASE("on-screen counters are deterministic counts, the same for the same me
     m.overlap_checks = 1'000'000;
     m.missed_collisions = 7;
     m.escaped = 2;
-    const auto td = time_driven_counters(m, 0.01, 1e-3);
-    CHECK(td == time_driven_counters(m, 0.01, 1e-3));
+    const auto td = time_driven_counters(m, 1e-3);
+    CHECK(td == time_driven_counters(m, 1e-3));
     const auto joined = [](const std::vector<std::string>& lines) {
         std::string all;
         for (const auto& l : lines) all += l + "\n";

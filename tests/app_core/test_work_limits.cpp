@@ -94,7 +94,7 @@ TEST_CASE("work limits: a hint is named by file and line, in check as in render"
     long_video.render.duration = 1e300;
     long_video.render.duration_at = "demo.toml:9: render.duration";
     CHECK(contains(input_error_message([&] { check_scene_hints(long_video); }),
-                   "demo.toml:9: render.duration: at most 3600 seconds"));
+                   "demo.toml:9: render.duration: expected at most 3600 seconds, got '1e+300'"));
 }
 
 TEST_CASE("work limits: check leaves overlap checks (a --td-detect choice) to render") {
@@ -117,7 +117,7 @@ TEST_CASE("work limits: simulate names --until and --dt") {
                    }),
                    "beyond the range of double precision"));
     EngineOptions time;
-    time.engine = "time";
+    time.engine = EngineKind::time;
     time.dt = 1e-300;
     CHECK(
         contains(input_error_message([&] { check_simulate_work(moving_pair(), time, 1.0, true); }),

@@ -19,19 +19,25 @@ using collide::test::run_collide;
 namespace {
 
 struct Bad {
-    std::string args;    ///< options after the subcommand (-o is added for render/thumbnail)
-    std::string option;  ///< what the message must name first
+    std::string args;         ///< options after the subcommand (-o is added for render/thumbnail)
+    std::string option;       ///< what the message must name first
+    std::string detail = "";  ///< more the message must say (what was expected, the value), if any
+    /// CLI11's own usage errors ("Could not convert: --fps = abc", "not expected: 1 --at") name
+    /// the option, but not first.
+    bool usage = false;
 };
 
-/// Runs every case; each must be refused with exit 2, naming `option`, without a sanitizer report.
+/// Runs every case; each must be refused with exit 2, with a message that names `option` first
+/// (and says `detail`), without a sanitizer report.
 void expect_refused(const std::string& command, const std::vector<Bad>& cases) {
     for (const Bad& c : cases) {
         const std::string args = command + " " + c.args;
         CAPTURE(args);
         const auto r = run_collide(args);
         CHECK(r.exit_code == 2);
-        CHECK(contains(r.output, "collide: error: "));
+        CHECK(contains(r.output, c.usage ? "collide: error: " : "collide: error: " + c.option));
         CHECK(contains(r.output, c.option));
+        CHECK(contains(r.output, c.detail));
         CHECK_FALSE(contains(r.output, "runtime error"));  // UBSan
         CHECK_FALSE(contains(r.output, "Sanitizer"));      // ASan, LSan
     }
@@ -71,13 +77,26 @@ TEST_CASE("option matrix: render's numbers, sizes and names") {
         cases.push_back({std::string("gas --seed ") + v + never + ".mp4", "--seed"});
     cases.push_back({"gas -q z" + never + ".mp4", "-q"});
     cases.push_back({"gas --mode sideways" + never + ".mp4", "--mode"});
-    cases.push_back({"gas --engine warp" + never + ".mp4", "--engine"});
+    cases.push_back(
+        {"gas --engine warp" + never + ".mp4", "--engine", "(fast or classic), got 'warp'"});
+    cases.push_back({"gas --engine time" + never + ".mp4", "--engine", "event-driven"});
     for (const char* v : {"dary:0", "dary:-1", "dary:99999999999999999999", "indexed:1e3", "heap"})
-        cases.push_back({std::string("gas --pq ") + v + never + ".mp4", "--pq"});
-    cases.push_back({"gas --td-detect magic" + never + ".mp4", "--td-detect"});
+        cases.push_back({std::string("gas --pq ") + v + never + ".mp4", "--pq", "expected"});
+    cases.push_back(
+        {"gas --pq indexed:5 --engine classic" + never + ".mp4", "--pq", "D = 2, 3, 4 or 8"});
+    cases.push_back({"gas --td-detect magic" + never + ".mp4", "--td-detect",
+                     "expected all-pairs or grid, got 'magic'"});
+    cases.push_back({"gas --gl vulkan" + never + ".mp4", "--gl", "vulkan"});
+    cases.push_back({"gas --overlays loud" + never + ".mp4", "--overlays", "loud"});
+    cases.push_back({"gas --theme sepia" + never + ".mp4", "--theme", "sepia"});
+    cases.push_back({"gas --layout-json ''" + never + ".mp4", "--layout-json"});
+    cases.push_back({"gas" + never + ".avi", "-o", "got '/nonexistent-dir-collide/never.avi'"});
+    cases.push_back({"gas" + never + ".png", "-o", "single image"});
     cases.push_back({"gas --color plaid" + never + ".mp4", "--color"});
     cases.push_back({"gas --format avi" + never + ".mp4", "--format"});
-    cases.push_back({"gas --at 1" + never + ".mp4", "--at"});
+    cases.push_back({"gas --at 1" + never + ".mp4", "--at", "", true});
+    cases.push_back({"gas --last-frame --format gif" + never + ".png", "--format", "png"});
+    cases.push_back({"gas --last-frame" + never + ".gif", "-o", "a .png path"});
     cases.push_back({"gas --progress loud" + never + ".mp4", "--progress"});
     for (const char* v : {"0", "21", "-1", "2.5", "1e3", "x", "99999999999999999999"})
         cases.push_back({std::string("gas --queue ") + v + never + ".mp4", "--queue"});
@@ -86,7 +105,8 @@ TEST_CASE("option matrix: render's numbers, sizes and names") {
     cases.push_back({"gas --queue --overlays none" + never + ".mp4", "--queue"});
     cases.push_back({"gas --queue --overlays full" + never + ".mp4", "--queue"});
     for (const char* v : {"0", "0.5", "-2", "nan", "inf", "1e9", "abc"})
-        cases.push_back({std::string("gas --slow-motion ") + v + never + ".mp4", "--slow-motion"});
+        cases.push_back({std::string("gas --slow-motion ") + v + never + ".mp4", "--slow-motion",
+                         "", v == std::string("abc")});
     expect_refused("render", cases);
 }
 
@@ -98,6 +118,8 @@ TEST_CASE("option matrix: thumbnail --at at every extreme") {
     cases.push_back({"gas --at 1e18 --no-limits" + never + ".png", "--at"});
     cases.push_back({"gas --at 1 --fps 0" + never + ".png", "--fps"});
     cases.push_back({"gas --at 1 --seed -1" + never + ".png", "--seed"});
+    cases.push_back({"gas" + never + ".gif", "-o", "a .png path"});
+    cases.push_back({"gas --engine time" + never + ".png", "--engine", "fast or classic"});
     cases.push_back({"gas --at 1 --queue 0" + never + ".png", "--queue"});
     cases.push_back({"gas --at 1 --queue --mode time" + never + ".png", "--queue"});
     expect_refused("thumbnail", cases);
@@ -106,13 +128,16 @@ TEST_CASE("option matrix: thumbnail --at at every extreme") {
 TEST_CASE("option matrix: simulate's --until, --dt and engines") {
     std::vector<Bad> cases;
     for (const char* v : {"-1", "nan", "inf", "1e300", "1e308", "abc"})
-        cases.push_back({std::string("gas --until ") + v, "--until"});
+        cases.push_back({std::string("gas --until ") + v, "--until", "", v == std::string("abc")});
     for (const char* v : {"0", "-1", "nan", "inf", "1e-300", "1e-9"})
         cases.push_back({std::string("gas --until 10 --engine time --dt ") + v, "--dt"});
     cases.push_back({"gas --until 10 --engine time --dt 1e-300 --no-limits", "--dt"});
-    cases.push_back({"gas --until 1 --engine warp", "--engine"});
-    cases.push_back({"gas --until 1 --engine classic --pq dary:0", "--pq"});
+    cases.push_back(
+        {"gas --until 1 --engine warp", "--engine", "fast, classic or time, got 'warp'"});
+    cases.push_back({"gas --until 1 --engine classic --pq dary:0", "--pq", "from 2 to 64"});
+    cases.push_back({"gas --until 1 --pq heap", "--pq", "got 'heap'"});
     cases.push_back({"gas --until 1 --engine time --td-detect magic", "--td-detect"});
+    cases.push_back({"gas --until -1", "--until", "got '-1'"});
     cases.push_back({"/dev/null --until 1", "/dev/null"});
     cases.push_back({"/ --until 1", "/"});
     expect_refused("simulate", cases);
@@ -130,8 +155,37 @@ TEST_CASE("option matrix: bench engine's counts") {
         cases.push_back({std::string("--warmup ") + v, "--warmup"});
     for (const char* v : {"-1", "18446744073709551616", "1e23"})
         cases.push_back({std::string("--seed ") + v, "--seed"});
-    cases.push_back({"--engine time", "--engine"});
+    cases.push_back({"--engine time", "--engine", "event-driven engine (fast or classic)"});
+    cases.push_back({"--engine classic --pq heap", "--pq", "got 'heap'"});
+    cases.push_back({"--eta 2", "--eta", "(0, 0.85], got '2'"});
     expect_refused("bench engine", cases);
+}
+
+TEST_CASE("option matrix: heap's numbers and names") {
+    const std::string out = " -o /nonexistent-dir-collide/never";
+    std::vector<Bad> cases;
+    for (const char* v : {"0", "-1", "nan", "inf", "61"})
+        cases.push_back({std::string("--ops P --pace ") + v + out + ".mp4", "--pace"});
+    cases.push_back({"--ops P --index-base 2" + out + ".mp4", "--index-base", "0 or 1"});
+    for (const char* v : {"0", "241", "abc"})
+        cases.push_back({std::string("--ops P --fps ") + v + out + ".mp4", "--fps", "",
+                         v == std::string("abc")});
+    cases.push_back({"--ops P --impl heap" + out + ".mp4", "--impl", "got 'heap'"});
+    cases.push_back({"--ops P --impl dary:65" + out + ".mp4", "--impl", "from 2 to 64"});
+    cases.push_back({"--ops P --size 10x10" + out + ".mp4", "--size"});
+    cases.push_back({"--ops P -q z" + out + ".mp4", "-q"});
+    cases.push_back({"--ops P --progress loud" + out + ".mp4", "--progress"});
+    cases.push_back({"--ops P --at -1" + out + ".png", "--at"});
+    cases.push_back({"--ops P --last-frame --format gif" + out + ".png", "--format"});
+    cases.push_back({"--ops P" + out + ".txt", "-o", "a .mp4 or .gif path"});
+    expect_refused("heap", cases);
+}
+
+TEST_CASE("option matrix: pq's implementations") {
+    std::vector<Bad> cases;
+    for (const char* v : {"heap", "dary:1", "dary:65", "indexed:5", "indexed:x", "dary:"})
+        cases.push_back({std::string("--ops A --impl ") + v, "--impl", std::string("got '") + v});
+    expect_refused("pq", cases);
 }
 
 TEST_CASE("option matrix: extreme but valid values run to the end") {
@@ -146,14 +200,15 @@ TEST_CASE("option matrix: extreme but valid values run to the end") {
 TEST_CASE("option matrix: puzzle's boards and options") {
     std::vector<Bad> cases;
     const std::string out = never + ".mp4";
-    cases.push_back({"\"1 2 3 4 x 6 7 5 8\"" + out, "'x' (token 5)"});
-    cases.push_back({"\"1 2 3 4 9 6 7 5 0\"" + out, "'9' (token 5)"});
-    cases.push_back({"\"1 2 3 4 0 6 7 5 99999999999999999999\"" + out, "(token 9)"});
-    cases.push_back({"\"1 2 3 4 0 6 7 5 5\"" + out, "'5' (token 9)"});
-    cases.push_back({"\"1 2 3\"" + out, "board: 3 tokens"});
-    cases.push_back({"\"\"" + out, "board: 0 tokens"});
-    cases.push_back({"\"1 2 3 4 5 6 8 7 0\"" + out, "cannot be solved"});
-    cases.push_back({"\"2 1 3 0\"" + out, "cannot be solved"});
+    // The board is the positional argument: its errors begin "board".
+    cases.push_back({"\"1 2 3 4 x 6 7 5 8\"" + out, "board", "'x' (token 5)"});
+    cases.push_back({"\"1 2 3 4 9 6 7 5 0\"" + out, "board", "'9' (token 5)"});
+    cases.push_back({"\"1 2 3 4 0 6 7 5 99999999999999999999\"" + out, "board", "(token 9)"});
+    cases.push_back({"\"1 2 3 4 0 6 7 5 5\"" + out, "board", "'5' (token 9)"});
+    cases.push_back({"\"1 2 3\"" + out, "board", "board: 3 tokens"});
+    cases.push_back({"\"\"" + out, "board", "board: 0 tokens"});
+    cases.push_back({"\"1 2 3 4 5 6 8 7 0\"" + out, "board", "cannot be solved"});
+    cases.push_back({"\"2 1 3 0\"" + out, "board", "cannot be solved"});
     for (const char* v : {"-1", "1001", "1e3", "x"})
         cases.push_back({std::string("random --moves ") + v + out, "--moves"});
     for (const char* v : {"1", "5", "-3"})

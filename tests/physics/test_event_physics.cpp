@@ -22,7 +22,7 @@ namespace {
 
 std::unique_ptr<Engine> engine_named(const std::string& name, const Scene& scene) {
     EngineOptions options;
-    options.engine = name;
+    options.engine = parse_engine_kind(name);
     return make_engine(scene, options);
 }
 

@@ -114,8 +114,8 @@ TEST_CASE(
     "only") {
     const Scene s = load_scene("tunnelling", COLLIDE_ASSETS_DIR);
     EngineOptions options;
-    options.engine = "time";
-    options.td_detect = "grid";
+    options.engine = EngineKind::time;
+    options.td_detect = OverlapDetection::grid;
     options.dt = *s.render.dt;
     auto coarse = make_engine(s, options);
     coarse->advance_to(1.0);  // 5 s of video at the scene's speed
@@ -125,7 +125,7 @@ TEST_CASE(
     auto fine = make_engine(s, options);
     fine->advance_to(1.0);
     CHECK(escaped_from_chamber(fine->snapshot()) == 0);
-    options.engine = "fast";
+    options.engine = EngineKind::fast;
     auto exact = make_engine(s, options);
     exact->advance_to(1.0);
     CHECK(escaped_from_chamber(exact->snapshot()) == 0);
@@ -134,8 +134,8 @@ TEST_CASE(
 TEST_CASE("built-in library: the dense fluid overwhelms the time-driven method at the scene's dt") {
     const Scene s = load_scene("dense-fluid", COLLIDE_ASSETS_DIR);
     EngineOptions options;
-    options.engine = "time";
-    options.td_detect = "grid";
+    options.engine = EngineKind::time;
+    options.td_detect = OverlapDetection::grid;
     options.dt = *s.render.dt;
     auto coarse = make_engine(s, options);
     coarse->advance_to(0.2);

@@ -29,7 +29,7 @@ using BinaryQueue = pq::DaryHeap<sim::Event, pq::Orientation::min, 2, sim::Event
 
 std::unique_ptr<Engine> engine_named(const std::string& name, const Scene& scene) {
     EngineOptions options;
-    options.engine = name;
+    options.engine = parse_engine_kind(name);
     return make_engine(scene, options);
 }
 
@@ -113,8 +113,8 @@ TEST_CASE("every engine: head-on collision at the corners of the admitted range 
                 for (const std::string name : {"classic", "fast", "time", "time-grid"}) {
                     CAPTURE(name);
                     EngineOptions options;
-                    options.engine = name == "time-grid" ? "time" : name;
-                    if (name == "time-grid") options.td_detect = "grid";
+                    options.engine = parse_engine_kind(name == "time-grid" ? "time" : name);
+                    if (name == "time-grid") options.td_detect = OverlapDetection::grid;
                     options.dt = 0.01 * unit_time;
                     auto engine = make_engine(scene, options);
                     const double energy = engine->measurements().kinetic_energy;
@@ -319,8 +319,8 @@ TEST_CASE("the classic engine pops the identical event sequence whatever the que
                              "dary:5", "indexed", "indexed:2", "indexed:8"}) {
         CAPTURE(kind);
         EngineOptions options;
-        options.engine = "classic";
-        options.pq = kind;
+        options.engine = EngineKind::classic;
+        options.pq = pq::parse_queue_kind(kind);
         auto engine = make_engine(scene, options);
         const auto events = first_collisions(*engine, 400, 0.01, 100.0);
         require_same_events(reference, events, 0.0);
@@ -331,13 +331,30 @@ TEST_CASE("the classic engine pops the identical event sequence whatever the que
     }
 }
 
-TEST_CASE("make_engine names the bad option") {
-    EngineOptions options;
-    options.engine = "warp";
-    CHECK_THROWS_WITH_AS(make_engine(head_on(), options), doctest::Contains("--engine"), Error);
-    options.engine = "classic";
-    options.pq = "fibonacci";
-    CHECK_THROWS_WITH_AS(make_engine(head_on(), options), doctest::Contains("--pq"), Error);
+TEST_CASE("engine names parse into kinds and back, and a bad name is an input error listing them") {
+    for (const EngineKind kind : {EngineKind::fast, EngineKind::classic, EngineKind::time})
+        CHECK(parse_engine_kind(to_string(kind)) == kind);
+    CHECK(parse_event_engine_kind("classic") == EngineKind::classic);
+    for (const auto d : {OverlapDetection::all_pairs, OverlapDetection::grid})
+        CHECK(parse_overlap_detection(to_string(d)) == d);
+    const auto message = [](auto&& parse) {
+        try {
+            parse();
+        } catch (const Error& e) {
+            CHECK(e.kind() == ErrorKind::input);
+            return std::string(e.what());
+        }
+        FAIL("accepted a bad name");
+        return std::string();
+    };
+    CHECK(message([] { (void)parse_engine_kind("warp"); }) ==
+          "--engine: expected fast, classic or time, got 'warp'");
+    CHECK(message([] { (void)parse_event_engine_kind("time", "--engine"); }) ==
+          "--engine: expected an event-driven engine (fast or classic), got 'time'");
+    CHECK(message([] { (void)parse_overlap_detection("octree"); }) ==
+          "--td-detect: expected all-pairs or grid, got 'octree'");
+    CHECK(message([] { (void)parse_engine_kind("Fast", "scene.toml:3: engine"); }) ==
+          "scene.toml:3: engine: expected fast, classic or time, got 'Fast'");
 }
 
 TEST_CASE("fast engine: energy and momentum conserved, no overlap, one queue entry per disc") {

@@ -120,7 +120,7 @@ std::vector<Shape> touching_free_shapes() {
     return shapes;
 }
 
-struct EngineKind {
+struct EngineChoice {
     const char* engine;
     const char* pq;
     const char* td_detect;
@@ -128,21 +128,21 @@ struct EngineKind {
 
 // Every engine, the time-driven one with both detections. The classic engine's queues pop the
 // same sequence (test_engines.cpp); each of them has its own test case below.
-constexpr EngineKind all_engines[] = {{"fast", "binary", "all-pairs"},
-                                      {"classic", "binary", "all-pairs"},
-                                      {"time", "binary", "all-pairs"},
-                                      {"time", "binary", "grid"}};
+constexpr EngineChoice all_engines[] = {{"fast", "binary", "all-pairs"},
+                                        {"classic", "binary", "all-pairs"},
+                                        {"time", "binary", "all-pairs"},
+                                        {"time", "binary", "grid"}};
 
-std::unique_ptr<Engine> make(const EngineKind& kind, const Scene& scene) {
+std::unique_ptr<Engine> make(const EngineChoice& kind, const Scene& scene) {
     EngineOptions options;
-    options.engine = kind.engine;
-    options.pq = kind.pq;
+    options.engine = parse_engine_kind(kind.engine);
+    options.pq = pq::parse_queue_kind(kind.pq);
     options.dt = 1e-3;
-    options.td_detect = kind.td_detect;
+    options.td_detect = parse_overlap_detection(kind.td_detect);
     return make_engine(scene, options);
 }
 
-bool is_time_driven(const EngineKind& kind) {
+bool is_time_driven(const EngineChoice& kind) {
     return std::string(kind.engine) == "time";
 }
 
@@ -201,7 +201,7 @@ TEST_CASE("validation accepts touching discs that can move, and a bend in a row"
 // no instants to get stuck at and simply steps to the end.
 TEST_CASE("every engine refuses or steps through a jam, in finite time") {
     for (const Shape& shape : jammed_shapes()) {
-        for (const EngineKind& kind : all_engines) {
+        for (const EngineChoice& kind : all_engines) {
             CAPTURE(std::string(shape.name));
             CAPTURE(std::string(kind.engine));
             CAPTURE(std::string(kind.td_detect));
@@ -242,7 +242,7 @@ TEST_CASE("the classic engine's queue stays bounded on a jam, whatever the queue
 
 TEST_CASE("every engine simulates touching discs that can move, conserving energy") {
     for (const Shape& shape : touching_free_shapes()) {
-        for (const EngineKind& kind : all_engines) {
+        for (const EngineChoice& kind : all_engines) {
             CAPTURE(std::string(shape.name));
             CAPTURE(std::string(kind.engine));
             CAPTURE(std::string(kind.td_detect));

@@ -19,7 +19,7 @@
 
 #include "collide/error.hpp"
 #include "collide/sim/pq/indexed_heap.hpp"
-#include "collide/sim/pq/queue_kind.hpp"
+#include "collide/sim/pq/with_queue.hpp"
 
 using namespace collide::pq;
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "collide/error.hpp"
-#include "collide/sim/pq/queue_kind.hpp"
+#include "collide/sim/pq/with_queue.hpp"
 
 using namespace collide::pq;
 
@@ -62,7 +62,12 @@ TEST_CASE("parse_queue_kind accepts every documented spelling and round-trips to
 
 TEST_CASE("parse_queue_kind names the option and the bad token") {
     CHECK(error_message("x") ==
-          "--pq: unknown queue 'x' (expected unordered|ordered|binary|dary:D|indexed)");
+          "--pq: expected a queue: unordered, ordered, binary, dary:D or indexed[:D], got 'x'");
+    CHECK(error_message("dary:65") ==
+          "--pq: expected dary:D with D a whole number from 2 to 64, got 'dary:65'");
+    CHECK(error_message("indexed:5") ==
+          "--pq: expected indexed:D with D = 2, 3, 4 or 8 (or indexed alone: D = 4), got "
+          "'indexed:5'");
     CHECK(error_message("dary").find("'dary'") != std::string::npos);
     CHECK(error_message("dary:").find("'dary:'") != std::string::npos);
     CHECK(error_message("dary:1").find("'dary:1'") != std::string::npos);
@@ -75,7 +80,7 @@ TEST_CASE("parse_queue_kind names the option and the bad token") {
         (void)parse_queue_kind("heap", "--impl");
         FAIL("no throw");
     } catch (const collide::Error& e) {
-        CHECK(std::string(e.what()).rfind("--impl: unknown queue 'heap'", 0) == 0);
+        CHECK(std::string(e.what()).rfind("--impl: expected a queue", 0) == 0);
     }
 }
 

@@ -20,14 +20,14 @@ using test::lattice_fluid;
 
 EngineOptions classic_on(const std::string& pq) {
     EngineOptions o;
-    o.engine = "classic";
-    o.pq = pq;
+    o.engine = EngineKind::classic;
+    o.pq = pq::parse_queue_kind(pq);
     return o;
 }
 
 EngineOptions fast() {
     EngineOptions o;
-    o.engine = "fast";
+    o.engine = EngineKind::fast;
     return o;
 }
 
@@ -67,7 +67,7 @@ TEST_CASE("queue view: no view unless asked for, and the time-driven engine has 
         CHECK_FALSE(engine->snapshot().queue.has_value());
     }
     EngineOptions time;
-    time.engine = "time";
+    time.engine = EngineKind::time;
     auto engine = make_engine(scene, time);
     CHECK_FALSE(engine->watch_queue(5));
     engine->advance_to(0.01);
@@ -90,8 +90,8 @@ TEST_CASE("queue view: K out of range is refused naming --queue") {
 TEST_CASE("queue view: the next events shown are the collisions that happen next, in order") {
     const Scene scene = walled_gas();
     for (const EngineOptions& o : every_queue) {
-        CAPTURE(o.engine);
-        CAPTURE(o.pq);
+        CAPTURE(to_string(o.engine));
+        CAPTURE(pq::to_string(o.pq));
         auto engine = make_engine(scene, o);
         REQUIRE(engine->watch_queue(4));
         double t = 0.0;
@@ -116,7 +116,7 @@ TEST_CASE("queue view: the next events shown are the collisions that happen next
             const double next_t = q.next.front().t;
             const auto log = events_until(*engine, next_t);
             REQUIRE_FALSE(log.empty());
-            if (o.engine == "classic") {
+            if (o.engine == EngineKind::classic) {
                 CHECK(same_collision(q.next.front(), log.front()));
             } else {
                 CHECK(log.front().t <= next_t);
@@ -131,8 +131,8 @@ TEST_CASE("queue view: the next events shown are the collisions that happen next
 TEST_CASE("queue view: the shown slots are the queue's own, root first, and the counts match") {
     const Scene scene = walled_gas();
     for (const EngineOptions& o : every_queue) {
-        CAPTURE(o.engine);
-        CAPTURE(o.pq);
+        CAPTURE(to_string(o.engine));
+        CAPTURE(pq::to_string(o.pq));
         auto engine = make_engine(scene, o);
         REQUIRE(engine->watch_queue(5));
         engine->advance_to(0.2);
@@ -155,13 +155,14 @@ TEST_CASE("queue view: the shown slots are the queue's own, root first, and the 
             for (std::size_t i = 1; i < q.slots.size(); ++i)
                 CHECK(q.slots[i - 1].t <= q.slots[i].t);
         }
-        if (o.engine == "fast") {
+        if (o.engine == EngineKind::fast) {
             CHECK(q.one_per_disc);
             CHECK(q.size <= scene.discs.size());
             CHECK(q.name == "indexed 4-ary heap");
         } else {
             CHECK_FALSE(q.one_per_disc);
-            CHECK(q.name == sim::detail::queue_name(q.shape, q.arity, o.pq.starts_with("indexed")));
+            CHECK(q.name == sim::detail::queue_name(q.shape, q.arity,
+                                                    o.pq.family == pq::QueueFamily::indexed));
         }
     }
 }
@@ -193,8 +194,8 @@ TEST_CASE("queue view: pops are recorded in order, the latest last, stale ones f
 TEST_CASE("queue view: watching does not change a single event") {
     const Scene scene = walled_gas();
     for (const EngineOptions& o : every_queue) {
-        CAPTURE(o.engine);
-        CAPTURE(o.pq);
+        CAPTURE(to_string(o.engine));
+        CAPTURE(pq::to_string(o.pq));
         auto plain = make_engine(scene, o);
         auto watched = make_engine(scene, o);
         REQUIRE(watched->watch_queue(sim::max_watched_events));

@@ -19,21 +19,22 @@ using collide::test::lattice_fluid;
 
 namespace {
 
-struct EngineKind {
+struct EngineChoice {
     const char* engine;
     const char* pq;
 };
 
-std::unique_ptr<Engine> make(const std::string& engine, const std::string& pq, const Scene& scene) {
+std::unique_ptr<Engine> make(const std::string& engine, const std::string& queue,
+                             const Scene& scene) {
     EngineOptions options;
-    options.engine = engine;
-    options.pq = pq;
+    options.engine = parse_engine_kind(engine);
+    options.pq = pq::parse_queue_kind(queue);
     options.dt = 1e-3;
     return make_engine(scene, options);
 }
 
 /// An engine that polls `stop`.
-std::unique_ptr<Engine> make_flagged(const EngineKind& kind, const Scene& scene,
+std::unique_ptr<Engine> make_flagged(const EngineChoice& kind, const Scene& scene,
                                      const std::atomic<bool>& stop) {
     auto engine = make(kind.engine, kind.pq, scene);
     engine->set_stop_flag(&stop);
@@ -52,12 +53,13 @@ std::string stop_message(Engine& engine, double t) {
 }
 
 /// The stop is polled in each engine's own loop, whatever the classic engine's queue.
-constexpr EngineKind all_kinds[] = {{"fast", "binary"}, {"classic", "binary"}, {"time", "binary"}};
+constexpr EngineChoice all_kinds[] = {
+    {"fast", "binary"}, {"classic", "binary"}, {"time", "binary"}};
 
 }  // namespace
 
 TEST_CASE("a set stop flag ends an endless advance_to with an error, between two events") {
-    for (const EngineKind kind : all_kinds) {
+    for (const EngineChoice kind : all_kinds) {
         CAPTURE(kind.engine);
         CAPTURE(kind.pq);
         const std::atomic<bool> stop{true};
@@ -75,7 +77,7 @@ TEST_CASE("a set stop flag ends an endless advance_to with an error, between two
 // Scenes are small: the sanitizer build validates every queue after every change, and the
 // classic engine's queue holds dozens of events per disc.
 TEST_CASE("an unset or absent stop flag changes nothing") {
-    for (const EngineKind kind : all_kinds) {
+    for (const EngineChoice kind : all_kinds) {
         CAPTURE(kind.engine);
         CAPTURE(kind.pq);
         const Scene scene = lattice_fluid(5, 0.4, Boundary::walls, 5);
@@ -103,7 +105,8 @@ TEST_CASE("an unset or absent stop flag changes nothing") {
 // The stop lands between two events, so an engine stopped in the middle of a run and then run
 // on (flag cleared) produces the very same collisions as one that was never stopped.
 TEST_CASE("event-driven engines stopped mid-run and resumed give the identical event sequence") {
-    for (const EngineKind kind : {EngineKind{"fast", "binary"}, EngineKind{"classic", "binary"}}) {
+    for (const EngineChoice kind :
+         {EngineChoice{"fast", "binary"}, EngineChoice{"classic", "binary"}}) {
         CAPTURE(kind.engine);
         const Scene scene = lattice_fluid(5, 0.5, Boundary::walls, 9);
         const double end = 0.6;
@@ -200,9 +203,9 @@ TEST_CASE("a time-driven step over many discs stops, and leaves the discs where 
         CAPTURE(std::string(detect));
         const Scene scene = lattice_fluid(142, 0.3, Boundary::walls, 3);
         EngineOptions options;
-        options.engine = "time";
+        options.engine = EngineKind::time;
         options.dt = 1.0;  // one step over 20164 discs
-        options.td_detect = detect;
+        options.td_detect = parse_overlap_detection(detect);
         auto engine = make_engine(scene, options);
         const Snapshot before = engine->snapshot();
         const std::atomic<bool> stop{true};

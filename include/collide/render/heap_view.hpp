@@ -94,8 +94,8 @@ struct HeapFrameView {
 
 /// Everything fixed for a whole video.
 struct HeapViewConfig {
-    int width = 1280;  ///< frame width in pixels, 64..8192
-    int height = 720;  ///< frame height in pixels, 64..8192
+    int width = 1280;  ///< frame width in pixels, min_frame_side..max_frame_side (renderer.hpp)
+    int height = 720;  ///< frame height in pixels, as width
     /// The widest key of the video: node and slot text is sized so that it fits.
     std::string widest_key = "W";
     std::string font_path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";

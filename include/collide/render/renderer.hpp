@@ -64,10 +64,18 @@ enum class Theme {
 [[nodiscard]] ColorMode parse_color_mode(std::string_view text,
                                          std::string_view field = "color_mode");
 
+/// The frame sides the renderers accept, in pixels (every frame size option and config is checked
+/// against these): below 64 no text is legible; 8192 is well inside every GL implementation's
+/// framebuffer limit.
+inline constexpr int min_frame_side = 64;
+inline constexpr int max_frame_side = 8192;
+
 /// Everything that stays fixed for a whole video.
 struct RenderConfig {
-    int width = 1280;  ///< frame width in pixels, >= 64 (encoders want it even; not enforced here)
-    int height = 720;  ///< frame height in pixels, >= 64
+    /// Frame width in pixels, min_frame_side..max_frame_side (encoders want it even; not
+    /// enforced here).
+    int width = 1280;
+    int height = 720;  ///< frame height in pixels, min_frame_side..max_frame_side
     ColorMode color_mode = ColorMode::scene;
     /// Speed range of the colormap, the legend and the histogram, in box units per time unit.
     /// Fixed for the whole video so colours mean the same thing in every frame.

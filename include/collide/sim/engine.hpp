@@ -9,10 +9,12 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <string_view>
 
 #include "collide/error.hpp"
 #include "collide/scene.hpp"
 #include "collide/sim/measurements.hpp"
+#include "collide/sim/pq/queue_kind.hpp"
 #include "collide/snapshot.hpp"
 
 namespace collide {
@@ -94,14 +96,43 @@ class Engine {
     std::uint32_t stop_countdown_ = stop_poll_events;
 };
 
-/// Options shared by the engine factory and the CLI; validate() names the bad field.
-struct EngineOptions {
-    std::string engine = "fast";  ///< "fast", "classic" or "time"
-    std::string pq = "binary";  ///< classic engine's queue: unordered|ordered|binary|dary:D|indexed
-    double dt = 0.01;           ///< time-driven quantum
-    std::string td_detect = "all-pairs";  ///< time-driven overlap checks: "all-pairs" or "grid"
+/// The simulation engines: two event-driven ones and the naive time-driven baseline.
+enum class EngineKind : std::uint8_t {
+    fast,     ///< event-driven on a cell grid (sim::FastEngine)
+    classic,  ///< the lecture's event-driven loop on any queue of the lecture (sim::ClassicEngine)
+    time,     ///< time-driven steps of dt (TimeEngine)
+};
 
-    /// Throws Error(input) naming the option (--engine, --pq, --dt, --td-detect) that is wrong.
+/// How the time-driven engine finds overlapping pairs (same outcome, different cost).
+enum class OverlapDetection : std::uint8_t {
+    all_pairs,  ///< every pair each step: N(N-1)/2 checks, the lecture's naive method
+    grid,       ///< pairs in neighbouring cells only
+};
+
+/// "fast", "classic" or "time". Throws Error(input) naming `option` and listing the names.
+[[nodiscard]] EngineKind parse_engine_kind(std::string_view text,
+                                           std::string_view option = "--engine");
+/// For commands that run an event-driven engine (render's event panel, bench engine): "fast" or
+/// "classic"; "time" is refused like an unknown name, naming `option`.
+[[nodiscard]] EngineKind parse_event_engine_kind(std::string_view text,
+                                                 std::string_view option = "--engine");
+/// The name parse_engine_kind reads ("fast", "classic", "time").
+[[nodiscard]] std::string_view to_string(EngineKind kind) noexcept;
+
+/// "all-pairs" or "grid". Throws Error(input) naming `option` and listing the names.
+[[nodiscard]] OverlapDetection parse_overlap_detection(std::string_view text,
+                                                       std::string_view option = "--td-detect");
+/// The name parse_overlap_detection reads ("all-pairs", "grid").
+[[nodiscard]] std::string_view to_string(OverlapDetection detection) noexcept;
+
+/// Options shared by the engine factory and the CLI, as values parsed where the user typed them.
+struct EngineOptions {
+    EngineKind engine = EngineKind::fast;
+    pq::QueueKind pq;  ///< classic engine's queue (binary by default)
+    double dt = 0.01;  ///< time-driven quantum
+    OverlapDetection td_detect = OverlapDetection::all_pairs;  ///< time-driven overlap checks
+
+    /// Throws Error(input) naming --dt when dt is not finite and > 0 (the names are types already).
     void validate() const;
 };
 
@@ -110,7 +141,7 @@ struct EngineOptions {
 namespace collide {
 
 /// Builds the engine named by options.engine for the scene (validated by the caller).
-/// Throws Error(input) naming the option for an unknown engine or queue kind.
+/// Throws Error(input) naming --dt for a bad time step (EngineOptions::validate).
 [[nodiscard]] std::unique_ptr<Engine> make_engine(const Scene& scene, const EngineOptions& options);
 
 }  // namespace collide

@@ -57,8 +57,8 @@
 
 namespace collide {
 
-/// Throws Error(input) unless options.dt is finite and > 0 (names `--dt`) and options.td_detect
-/// is "all-pairs" or "grid" (names `--td-detect`). The time-driven engine calls it on construction.
+/// Throws Error(input) unless options.dt is finite and > 0 (names `--dt`). The time-driven engine
+/// calls it on construction.
 void validate_time_driven_options(const EngineOptions& options);
 
 }  // namespace collide
@@ -83,7 +83,7 @@ class TimeEngine final : public Engine {
     static constexpr std::size_t max_markers_per_frame = 100000;
 
     /// The scene must be valid (positive radii and masses, finite values). Throws Error(input)
-    /// naming `--dt` or `--td-detect` for bad options (validate_time_driven_options).
+    /// naming `--dt` for a bad time step (validate_time_driven_options).
     TimeEngine(const Scene& scene, const EngineOptions& options);
     ~TimeEngine() override;
 

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "collide/error.hpp"
+#include "collide/sim/pq/with_queue.hpp"
 #include "pq/tokens.hpp"
 
 namespace collide::pq {

@@ -7,6 +7,7 @@
 #include <deque>
 
 #include "board_table.hpp"
+#include "collide/sim/pq/with_queue.hpp"
 
 namespace collide::puzzle {
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <tuple>
 #include <type_traits>
@@ -16,12 +17,9 @@ namespace collide {
 
 void validate_time_driven_options(const EngineOptions& options) {
     if (!std::isfinite(options.dt) || options.dt <= 0.0) {
-        throw_input_error("", 0, "--dt",
-                          "must be a finite number > 0 (got " + std::to_string(options.dt) + ")");
-    }
-    if (options.td_detect != "all-pairs" && options.td_detect != "grid") {
-        throw_input_error("", 0, "--td-detect",
-                          "unknown method '" + options.td_detect + "' (use all-pairs or grid)");
+        char value[32];
+        std::snprintf(value, sizeof value, "%g", options.dt);
+        throw_option_error("--dt", value, "a finite time step > 0");
     }
 }
 
@@ -49,7 +47,10 @@ double within_step(double t_contact, double h) noexcept {
 }  // namespace
 
 TimeEngine::TimeEngine(const Scene& scene, const EngineOptions& options)
-    : core_(scene), box_(scene.box), dt_(options.dt), use_grid_(options.td_detect == "grid") {
+    : core_(scene),
+      box_(scene.box),
+      dt_(options.dt),
+      use_grid_(options.td_detect == OverlapDetection::grid) {
     validate_time_driven_options(options);
     const std::size_t n = scene.discs.size();
     position_.reserve(n);
