@@ -325,7 +325,7 @@ void FrameBuilder::build_panel(std::size_t index, const PanelContent& content,
         add_full_header(content, panel, layout_.panels.size());
     } else if (config_.overlays == OverlayLevel::lesson && !intro_) {
         add_lesson_panel_text(index, content);
-        if (hidden > 0) add_unmarked_note(panel, hidden);
+        if (hidden > 0 && !layout_.compact) add_unmarked_note(panel, hidden);  // one line there
     }
 }
 

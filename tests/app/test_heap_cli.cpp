@@ -106,7 +106,7 @@ TEST_CASE("collide heap --theme light draws dark text on a light page, as collid
     CHECK(brightness(still("--theme dark", "dark2.png")).first == doctest::Approx(dark_mean));
     CHECK(contains(run_collide_bad_input("heap --ops P --theme sepia" + quick + "-o " +
                                          quoted(dir.path / "x.mp4")),
-                   "--theme: unknown theme 'sepia' (expected dark or light)"));
+                   "--theme: expected a theme (dark or light), got 'sepia'"));
     CHECK(!fs::exists(dir.path / "x.mp4"));
 }
 
