@@ -24,7 +24,7 @@
 #include "collide/video/video_writer.hpp"
 #include "commands.hpp"
 #include "heap_frames.hpp"
-#include "interrupt.hpp"
+#include "lesson_video.hpp"
 #include "progress.hpp"
 #include "render_plan.hpp"
 
@@ -141,10 +141,6 @@ FrameGeometry geometry_of(const HeapCli& v) {
     return g;
 }
 
-void print_notice(const std::string& line) {
-    std::fprintf(stderr, "collide: %s\n", line.c_str());
-}
-
 std::string lesson_name(const pq::LessonTimeline& timeline) {
     std::string out;
     for (const pq::LessonPanel& p : timeline.panels()) out += (out.empty() ? "" : ", ") + p.title;
@@ -190,39 +186,13 @@ void run(const HeapCli& v) {
         return;
     }
 
-    InterruptGuard interrupts;
-    video::VideoOptions options;
-    options.path = output.path;
-    options.format = output.format;
-    options.width = geometry.width;
-    options.height = geometry.height;
-    options.fps = geometry.fps;
-    options.cancel = &interrupts.flag();
-    video::VideoWriter writer(options);
-    for (const std::string& line : writer.notices()) print_notice(line);
-
-    const auto frames = std::max<std::int64_t>(
-        1, std::llround(timeline.duration() * static_cast<double>(geometry.fps)));
-    Progress progress(progress_mode, frames);
-    try {
-        for (std::int64_t k = 0; k < frames; ++k) {
-            interrupts.throw_if_requested();
-            const double t = static_cast<double>(k) / geometry.fps;
-            Image frame = writer.spare_frame();
-            renderer.render(heap_frame_at(timeline, show, t), frame);
-            writer.write(std::move(frame));
-            progress.frame_done(t);
-        }
-        writer.finish();
-    } catch (...) {
-        progress.finish();
-        throw;
-    }
-    progress.finish();
+    const LessonVideoSummary written = write_lesson_video(
+        output, {geometry.width, geometry.height, geometry.fps}, progress_mode, timeline.duration(),
+        [&](double t, Image& frame) { renderer.render(heap_frame_at(timeline, show, t), frame); });
     std::printf("%s: %.2f s of video, %lld frames, %dx%d @ %g fps, %s, %zu operations\n",
-                output.path.string().c_str(), static_cast<double>(frames) / geometry.fps,
-                static_cast<long long>(frames), writer.output_width(), writer.output_height(),
-                writer.output_fps(), lesson_name(timeline).c_str(), timeline.op_labels().size());
+                output.path.string().c_str(), static_cast<double>(written.frames) / geometry.fps,
+                static_cast<long long>(written.frames), written.width, written.height, written.fps,
+                lesson_name(timeline).c_str(), timeline.op_labels().size());
 }
 
 }  // namespace

@@ -216,10 +216,6 @@ void add_shared_options(CLI::App& cmd, CliValues& v) {
                  "steps and checks, frames) is beyond the limits of docs/limits.md");
 }
 
-void print_notice(const std::string& line) {
-    std::fprintf(stderr, "collide: %s\n", line.c_str());
-}
-
 /// Everything that can be wrong with the request, found before any frame is drawn.
 RenderPlan validated_plan(const RenderRequest& request, const Scene& scene) {
     RenderPlan plan = plan_render(request, scene);

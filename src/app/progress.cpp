@@ -116,4 +116,8 @@ void Progress::finish() {
     }
 }
 
+void print_notice(const std::string& line) {
+    std::fprintf(stderr, "collide: %s\n", line.c_str());
+}
+
 }  // namespace collide::app

@@ -68,4 +68,7 @@ class Progress {
     bool drawn_ = false;  ///< a bar line is on screen without its newline
 };
 
+/// A notice for the user on stderr, as "collide: LINE" (the writer's and renderer's notices).
+void print_notice(const std::string& line);
+
 }  // namespace collide::app

@@ -19,7 +19,7 @@
 #include "collide/video/output.hpp"
 #include "collide/video/png.hpp"
 #include "collide/video/video_writer.hpp"
-#include "interrupt.hpp"
+#include "lesson_video.hpp"
 #include "progress.hpp"
 #include "puzzle_frames.hpp"
 #include "render_plan.hpp"
@@ -67,10 +67,6 @@ Geometry geometry_of(const PuzzleVideoCli& v) {
     }
     if (given(v.fps_opt)) g.fps = checked_fps(v.fps);
     return g;
-}
-
-void print_notice(const std::string& line) {
-    std::fprintf(stderr, "collide: %s\n", line.c_str());
 }
 
 }  // namespace
@@ -149,38 +145,12 @@ void render_puzzle_video(const puzzle::Board& start,
         return;
     }
 
-    InterruptGuard interrupts;
-    video::VideoOptions options;
-    options.path = output.path;
-    options.format = output.format;
-    options.width = geometry.width;
-    options.height = geometry.height;
-    options.fps = geometry.fps;
-    options.cancel = &interrupts.flag();
-    video::VideoWriter writer(options);
-    for (const std::string& line : writer.notices()) print_notice(line);
-
-    const auto count = std::max<std::int64_t>(
-        1, std::llround(frames.duration() * static_cast<double>(geometry.fps)));
-    Progress progress(progress_mode, count);
-    try {
-        for (std::int64_t k = 0; k < count; ++k) {
-            interrupts.throw_if_requested();
-            const double t = static_cast<double>(k) / geometry.fps;
-            Image frame = writer.spare_frame();
-            renderer.render(frames.frame_at(t), frame);
-            writer.write(std::move(frame));
-            progress.frame_done(t);
-        }
-        writer.finish();
-    } catch (...) {
-        progress.finish();
-        throw;
-    }
-    progress.finish();
+    const LessonVideoSummary written = write_lesson_video(
+        output, {geometry.width, geometry.height, geometry.fps}, progress_mode, frames.duration(),
+        [&](double t, Image& frame) { renderer.render(frames.frame_at(t), frame); });
     std::printf("%s: %.2f s of video, %lld frames, %dx%d @ %g fps\n", output.path.string().c_str(),
-                static_cast<double>(count) / geometry.fps, static_cast<long long>(count),
-                writer.output_width(), writer.output_height(), writer.output_fps());
+                static_cast<double>(written.frames) / geometry.fps,
+                static_cast<long long>(written.frames), written.width, written.height, written.fps);
 }
 
 }  // namespace collide::app
