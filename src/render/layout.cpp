@@ -128,8 +128,11 @@ FrameLayout lesson_layout(const LayoutInput& in) {
         panel.area = {left_of_column ? 0.0F : (i == 0 ? 0.0F : column_mid), 0.0F,
                       left_of_column ? column_mid : width, caption_top - gap};
         const int p = static_cast<int>(i);
+        // The left title and note may start at the frame's margin: when the boxes are inset (the
+        // queue strip makes them smaller) "Time-driven: steps of dt = ..." still fits a line.
+        const float title_x0 = left_of_column ? m : text_x0;
         layout.text.push_back(
-            {TextRole::title, p, {text_x0, top - gap - line, text_x1, top - gap}, body});
+            {TextRole::title, p, {title_x0, top - gap - line, text_x1, top - gap}, body});
         float y = std::max(panel.box.y1, top) + gap;
         // Figures stay under their own box, so the two panels' rows cannot run together.
         const float figures_x0 = left_of_column ? text_x0 : std::max(text_x0, panel.box.x0);
@@ -138,7 +141,7 @@ FrameLayout lesson_layout(const LayoutInput& in) {
             {TextRole::figures, p, {figures_x0, y, figures_x1, y + head_line}, head});
         y += head_line;
         if (in.note_line) {
-            layout.text.push_back({TextRole::note, p, {text_x0, y, text_x1, y + line}, body});
+            layout.text.push_back({TextRole::note, p, {title_x0, y, text_x1, y + line}, body});
             y += line;
         }
         if (queue && p == in.queue_panel) {
