@@ -40,30 +40,13 @@ struct HeapCli {
     bool min = false;
     int index_base = 1;
     double pace = 0.8;
-    std::string output;
-    std::string format;
-    std::string quality = "m";
-    std::string size;
-    int fps = 30;
-    bool last_frame = false;
-    double at = 0.0;
-    std::string progress = "auto";
     std::string theme = "dark";
-    bool verbose = false;
+    LessonVideoCli video;
 
     CLI::Option* ops_opt = nullptr;
     CLI::Option* sort_opt = nullptr;
     CLI::Option* impl_opt = nullptr;
-    CLI::Option* output_opt = nullptr;
-    CLI::Option* format_opt = nullptr;
-    CLI::Option* size_opt = nullptr;
-    CLI::Option* fps_opt = nullptr;
-    CLI::Option* at_opt = nullptr;
 };
-
-bool given(const CLI::Option* option) {
-    return option != nullptr && option->count() > 0;
-}
 
 /// Seconds per step a class can follow: 0.8 s (a slide, then a moment to see where it landed).
 pq::LessonPacing pacing_of(double pace) {
@@ -115,32 +98,6 @@ void check_legible(const pq::LessonTimeline& timeline, const HeapCli& v) {
                     panels > 1 ? " or fewer implementations" : ""));
 }
 
-LessonOutput output_of(const HeapCli& v) {
-    const auto if_given = [](const CLI::Option* option, const std::string& value) {
-        return given(option) ? std::optional(value) : std::nullopt;
-    };
-    return lesson_output(if_given(v.format_opt, v.format), if_given(v.output_opt, v.output),
-                         v.last_frame || given(v.at_opt), "heap");
-}
-
-struct FrameGeometry {
-    int width = 1280;
-    int height = 720;
-    int fps = 30;
-};
-
-FrameGeometry geometry_of(const HeapCli& v) {
-    const QualityPreset preset = quality_preset(v.quality, "-q");
-    FrameGeometry g{preset.width, preset.height, preset.fps};
-    if (given(v.size_opt)) {
-        const FrameSize size = parse_frame_size(v.size, "--size");
-        g.width = size.width;
-        g.height = size.height;
-    }
-    if (given(v.fps_opt)) g.fps = checked_fps(v.fps);
-    return g;
-}
-
 std::string lesson_name(const pq::LessonTimeline& timeline) {
     std::string out;
     for (const pq::LessonPanel& p : timeline.panels()) out += (out.empty() ? "" : ", ") + p.title;
@@ -149,21 +106,21 @@ std::string lesson_name(const pq::LessonTimeline& timeline) {
 
 void run(const HeapCli& v) {
     // Validation: nothing is drawn, and no file is created, until all of it passes.
-    const ProgressMode progress_mode = parse_progress_mode(v.progress);
+    const ProgressMode progress_mode = parse_progress_mode(v.video.progress);
     const render::Theme theme = render::parse_theme(v.theme, "--theme");
     const pq::LessonTimeline timeline = timeline_of(v);
     check_legible(timeline, v);
-    const FrameGeometry geometry = geometry_of(v);
-    if (given(v.at_opt) && !(v.at >= 0.0 && v.at <= timeline.duration())) {
+    const LessonGeometry geometry = lesson_geometry_of(v.video);
+    if (given(v.video.at_opt) && !(v.video.at >= 0.0 && v.video.at <= timeline.duration())) {
         throw_option_error(
-            "--at", fmt::format("{}", v.at),
+            "--at", fmt::format("{}", v.video.at),
             fmt::format("a time within the video, 0..{:.2f} s", timeline.duration()));
     }
-    const LessonOutput output = output_of(v);
+    const LessonOutput output = lesson_output_of(v.video, "heap");
     if (output.default_path) std::filesystem::create_directories(output.path.parent_path());
     video::check_output_writable(
         output.path, !output.still && output.format == video::VideoFormat::png_sequence);
-    video::set_libav_verbose(v.verbose);
+    video::set_libav_verbose(v.video.verbose);
 
     HeapShow show;
     show.min = v.min;
@@ -177,7 +134,7 @@ void run(const HeapCli& v) {
     render::HeapRenderer renderer(config, render::Backend::automatic, print_notice);
 
     if (output.still) {
-        const double t = given(v.at_opt) ? v.at : timeline.duration();
+        const double t = given(v.video.at_opt) ? v.video.at : timeline.duration();
         const Image image = renderer.render(heap_frame_at(timeline, show, t));
         video::write_png(image, output.path);
         std::printf("%s: %dx%d PNG at %.2f s of a %.2f s video of %s\n",
@@ -187,7 +144,7 @@ void run(const HeapCli& v) {
     }
 
     const LessonVideoSummary written = write_lesson_video(
-        output, {geometry.width, geometry.height, geometry.fps}, progress_mode, timeline.duration(),
+        output, geometry, progress_mode, timeline.duration(),
         [&](double t, Image& frame) { renderer.render(heap_frame_at(timeline, show, t), frame); });
     std::printf("%s: %.2f s of video, %lld frames, %dx%d @ %g fps, %s, %zu operations\n",
                 output.path.string().c_str(), static_cast<double>(written.frames) / geometry.fps,
@@ -218,26 +175,10 @@ void add_heap_command(CLI::App& root) {
         ->capture_default_str();
     cmd->add_option("--pace", v->pace, "Seconds per step (a compare, an exchange, ...)")
         ->capture_default_str();
-    v->output_opt = cmd->add_option("-o,--output", v->output,
-                                    "Output file (default out/heap.mp4, .gif, _frames/ or .png)");
-    v->format_opt = cmd->add_option("--format", v->format,
-                                    "mp4 (default), gif, or png (a directory of frames)");
-    cmd->add_option("-q,--quality", v->quality,
-                    "l 854x480@15, m 1280x720@30 (default), h 1920x1080@60, k 3840x2160@60");
-    v->size_opt = cmd->add_option("--size", v->size, "Frame size WxH, overrides -q (e.g. 640x360)");
-    v->fps_opt = cmd->add_option("--fps", v->fps, "Frames per second, overrides -q");
-    cmd->add_flag("--last-frame", v->last_frame,
-                  "Write only the final state, as a PNG (-o FILE.png, default out/heap.png)");
-    v->at_opt = cmd->add_option("--at", v->at,
-                                "Write only the frame at this many seconds of video, as a PNG "
-                                "(a still for slides; -o FILE.png, default out/heap.png)");
-    cmd->add_option("--progress", v->progress,
-                    "Progress on stderr: auto (bar on a terminal), bar, json or none")
-        ->capture_default_str();
+    add_lesson_video_options(*cmd, v->video, "heap", "e.g. 640x360");
     cmd->add_option("--theme", v->theme,
                     "Colours: dark (screens) or light (projectors, print), as in `collide render`")
         ->capture_default_str();
-    cmd->add_flag("--verbose", v->verbose, "Show the encoder's own log");
     cmd->footer(
         "Examples:\n"
         "  collide heap --ops \"P Q E * X A M * P L E *\" -o heap.mp4   # the lecture's trace\n"

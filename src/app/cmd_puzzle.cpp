@@ -47,10 +47,6 @@ struct PuzzleCli {
     CLI::Option* side_opt = nullptr;
 };
 
-bool given(const CLI::Option* option) {
-    return option != nullptr && option->count() > 0;
-}
-
 Board start_board(const PuzzleCli& v) {
     if (v.board == "random") return puzzle::random_board(v.side, v.moves, v.seed);
     for (const CLI::Option* o : {v.moves_opt, v.seed_opt, v.side_opt}) {

@@ -2,8 +2,11 @@
 // The video loop shared by the drawn lessons (`collide heap`, `collide puzzle`): a picture that is
 // a function of time, encoded frame by frame through the one video writer.
 
+#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <functional>
+#include <string>
+#include <string_view>
 
 #include "collide/image.hpp"
 #include "progress.hpp"
@@ -17,6 +20,44 @@ struct LessonGeometry {
     int height = 720;
     int fps = 30;
 };
+
+/// The video options every drawn lesson takes (-o, --format, -q, --size, --fps, --last-frame,
+/// --at, --progress, --verbose), raw as CLI11 stores them.
+struct LessonVideoCli {
+    std::string output;
+    std::string format;
+    std::string quality = "m";
+    std::string size;
+    int fps = 30;
+    bool last_frame = false;
+    double at = 0.0;
+    std::string progress = "auto";
+    bool verbose = false;
+
+    CLI::Option* output_opt = nullptr;
+    CLI::Option* format_opt = nullptr;
+    CLI::Option* quality_opt = nullptr;
+    CLI::Option* size_opt = nullptr;
+    CLI::Option* fps_opt = nullptr;
+    CLI::Option* last_frame_opt = nullptr;
+    CLI::Option* at_opt = nullptr;
+};
+
+/// True when the user gave `option` on the command line.
+[[nodiscard]] bool given(const CLI::Option* option);
+
+/// Registers the video options on `cmd`; `stem` names the default outputs (out/STEM.mp4, ...),
+/// `size_note` goes into --size's help (e.g. "e.g. 640x360").
+void add_lesson_video_options(CLI::App& cmd, LessonVideoCli& v, std::string_view stem,
+                              std::string_view size_note);
+
+/// Where and in which format the lesson goes (lesson_output of what was given).
+[[nodiscard]] LessonOutput lesson_output_of(const LessonVideoCli& v, std::string_view stem);
+
+/// -q, then --size and --fps when given. A frame smaller than `minimum` (when not 0x0) is
+/// refused naming --size or -q, saying it is too small for `what_stays_legible`.
+[[nodiscard]] LessonGeometry lesson_geometry_of(const LessonVideoCli& v, FrameSize minimum = {},
+                                                std::string_view what_stays_legible = {});
 
 /// What was written, for the command's summary line.
 struct LessonVideoSummary {

@@ -28,70 +28,21 @@ namespace collide::app {
 
 namespace {
 
-bool given(const CLI::Option* option) {
-    return option != nullptr && option->count() > 0;
-}
+/// The smallest frame whose text stays legible (the design is laid out for 1280x720).
+constexpr FrameSize min_frame{854, 480};
 
 LessonOutput output_of(const PuzzleVideoCli& v) {
-    const auto if_given = [](const CLI::Option* option, const std::string& value) {
-        return given(option) ? std::optional(value) : std::nullopt;
-    };
-    return lesson_output(if_given(v.format_opt, v.format), if_given(v.output_opt, v.output),
-                         v.last_frame || given(v.at_opt), "puzzle");
+    return lesson_output_of(v, "puzzle");
 }
 
-struct Geometry {
-    int width = 1280;
-    int height = 720;
-    int fps = 30;
-};
-
-/// The smallest frame whose text stays legible (the design is laid out for 1280x720).
-constexpr int min_width = 854;
-constexpr int min_height = 480;
-
-Geometry geometry_of(const PuzzleVideoCli& v) {
-    const QualityPreset preset = quality_preset(v.quality, "-q");
-    Geometry g{preset.width, preset.height, preset.fps};
-    if (given(v.size_opt)) {
-        const FrameSize size = parse_frame_size(v.size, "--size");
-        g.width = size.width;
-        g.height = size.height;
-    }
-    if (g.width < min_width || g.height < min_height) {
-        throw_option_error(
-            given(v.size_opt) ? "--size" : "-q",
-            fmt::format("{}x{} is too small for legible boards and counters; at least "
-                        "{}x{}",
-                        g.width, g.height, min_width, min_height));
-    }
-    if (given(v.fps_opt)) g.fps = checked_fps(v.fps);
-    return g;
+LessonGeometry geometry_of(const PuzzleVideoCli& v) {
+    return lesson_geometry_of(v, min_frame, "legible boards and counters");
 }
 
 }  // namespace
 
 void add_puzzle_video_options(CLI::App& cmd, PuzzleVideoCli& v) {
-    v.output_opt = cmd.add_option("-o,--output", v.output,
-                                  "Video file (default out/puzzle.mp4, .gif, _frames/ or .png)");
-    v.format_opt =
-        cmd.add_option("--format", v.format, "mp4 (default), gif, or png (a directory of frames)");
-    v.quality_opt =
-        cmd.add_option("-q,--quality", v.quality,
-                       "l 854x480@15, m 1280x720@30 (default), h 1920x1080@60, k 3840x2160@60");
-    v.size_opt = cmd.add_option("--size", v.size,
-                                "Frame size WxH, overrides -q (at least 854x480, e.g. 960x540)");
-    v.fps_opt = cmd.add_option("--fps", v.fps, "Frames per second, overrides -q");
-    v.last_frame_opt =
-        cmd.add_flag("--last-frame", v.last_frame,
-                     "Write only the final frame, as a PNG (-o FILE.png, default out/puzzle.png)");
-    v.at_opt = cmd.add_option("--at", v.at,
-                              "Write only the frame at this many seconds of video, as a PNG (a "
-                              "still for slides; -o FILE.png, default out/puzzle.png)");
-    cmd.add_option("--progress", v.progress,
-                   "Progress on stderr: auto (bar on a terminal), bar, json or none")
-        ->capture_default_str();
-    cmd.add_flag("--verbose", v.verbose, "Show the encoder's own log");
+    add_lesson_video_options(cmd, v, "puzzle", "at least 854x480, e.g. 960x540");
 }
 
 void refuse_video_options(const PuzzleVideoCli& v, const std::string& mode) {
@@ -119,7 +70,7 @@ void render_puzzle_video(const puzzle::Board& start,
                          const std::vector<puzzle::SearchResult>& results,
                          const PuzzleVideoCli& v) {
     const ProgressMode progress_mode = parse_progress_mode(v.progress);
-    const Geometry geometry = geometry_of(v);
+    const LessonGeometry geometry = geometry_of(v);
     const PuzzleFrames frames(start, results);
     if (given(v.at_opt) && !(v.at >= 0.0 && v.at <= frames.duration())) {
         throw_option_error("--at", fmt::format("{}", v.at),
@@ -146,7 +97,7 @@ void render_puzzle_video(const puzzle::Board& start,
     }
 
     const LessonVideoSummary written = write_lesson_video(
-        output, {geometry.width, geometry.height, geometry.fps}, progress_mode, frames.duration(),
+        output, geometry, progress_mode, frames.duration(),
         [&](double t, Image& frame) { renderer.render(frames.frame_at(t), frame); });
     std::printf("%s: %.2f s of video, %lld frames, %dx%d @ %g fps\n", output.path.string().c_str(),
                 static_cast<double>(written.frames) / geometry.fps,

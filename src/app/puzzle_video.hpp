@@ -10,29 +10,12 @@
 
 #include "collide/sim/puzzle/board.hpp"
 #include "collide/sim/puzzle/search.hpp"
+#include "lesson_video.hpp"
 
 namespace collide::app {
 
-/// Raw video option values as CLI11 stores them.
-struct PuzzleVideoCli {
-    std::string output;
-    std::string format;
-    std::string quality = "m";
-    std::string size;
-    int fps = 30;
-    bool last_frame = false;
-    double at = 0.0;
-    std::string progress = "auto";
-    bool verbose = false;
-
-    CLI::Option* output_opt = nullptr;
-    CLI::Option* format_opt = nullptr;
-    CLI::Option* quality_opt = nullptr;
-    CLI::Option* size_opt = nullptr;
-    CLI::Option* fps_opt = nullptr;
-    CLI::Option* last_frame_opt = nullptr;
-    CLI::Option* at_opt = nullptr;
-};
+/// The puzzle video's options are the drawn lessons' own (lesson_video.hpp).
+using PuzzleVideoCli = LessonVideoCli;
 
 /// Registers the video options on `cmd`.
 void add_puzzle_video_options(CLI::App& cmd, PuzzleVideoCli& v);
