@@ -48,7 +48,7 @@ struct PuzzleCli {
 };
 
 Board start_board(const PuzzleCli& v) {
-    if (v.board == "random") return puzzle::random_board(v.side, v.moves, v.seed);
+    if (v.board == "random") return puzzle::random_board(v.side, v.moves, v.seed, "--moves");
     for (const CLI::Option* o : {v.moves_opt, v.seed_opt, v.side_opt}) {
         if (given(o)) {
             throw_input_error(o->get_name() + ": only for `collide puzzle random` (the board \"" +
