@@ -76,6 +76,21 @@ add "pq-markdown.txt|pq --ops P_Q_E_*_X_A_M_* --format markdown --impl binary,in
 add "puzzle-solve.txt|puzzle 8_1_3_4_0_2_7_6_5 --solve"
 add "check-gas.txt|check gas"
 add "scenes.txt|scenes"
+# Messages of bad input (stderr and exit code): the fields the simulation library names, spelled
+# as the options the user typed.
+add "err-pq-empty.txt|pq --ops P_*_*"
+add "err-pq-impl.txt|pq --ops P --impl dary:65"
+add "err-heap-token.txt|heap --ops P_?"
+add "err-heap-increase.txt|heap --ops 5_3_3^12"
+add "err-heap-absent.txt|heap --ops 5_3_4^12 --impl indexed"
+add "err-heap-sort.txt|heap --sort S_*"
+add "err-heap-pace.txt|heap --ops P --pace 0"
+add "err-simulate-dt.txt|simulate gas --until 1 --engine time --dt 0"
+add "err-simulate-engine.txt|simulate gas --until 1 --engine warp"
+add "err-simulate-detect.txt|simulate gas --until 1 --engine time --td-detect octree"
+add "err-thumb-pq.txt|thumbnail gas --engine classic --pq x"
+add "err-puzzle-moves.txt|puzzle random --moves -1"
+add "err-puzzle-heuristic.txt|puzzle 1_2_3_4_0_6_7_5_8 --solve --heuristic euclid"
 
 run_case() {  # binary, dir, case
     local bin=$1 dir=$2 spec=$3

@@ -30,7 +30,7 @@ ctest --test-dir build/sim-asan -L unit --output-on-failure -j "$jobs"
 echo "==> [2/4] full build with sanitizers (build/asan)"
 cmake -S . -B build/asan "${common[@]}" -DCMAKE_BUILD_TYPE=Debug -DCOLLIDE_SANITIZE=ON >/dev/null
 cmake --build build/asan -j "$jobs"
-ctest --test-dir build/asan -L 'unit|cli-matrix' -E "^collide_sim_tests:" --output-on-failure \
+ctest --test-dir build/asan -L 'unit|cli-matrix' -E "^collide_(sim|show)_tests:" --output-on-failure \
       -j "$jobs"
 
 echo "==> [3/4] renderer without OSMesa (build/no-osmesa)"

@@ -1,9 +1,9 @@
 /// `collide heap`: animated priority-queue operations for the first half of the lecture (arrays,
 /// binary and d-ary heaps, the indexed heap's increase-key, heapsort), several implementations
 /// side by side, to MP4, GIF, a PNG sequence or one PNG. Validates everything (operations,
-/// options, legibility, destination) before anything is drawn, then renders every frame from
-/// the animation model (collide/sim/pq/heap_lesson.hpp) through HeapRenderer into the same
-/// VideoWriter as `collide render`.
+/// options, legibility, destination) before anything is drawn, then renders every frame of the
+/// lesson (collide/show/heap_lesson.hpp, over the record of collide/sim/pq/heap_lesson.hpp)
+/// through HeapRenderer into the same VideoWriter as `collide render`.
 
 #include <fmt/core.h>
 
@@ -18,12 +18,12 @@
 
 #include "collide/error.hpp"
 #include "collide/render/heap_view.hpp"
+#include "collide/show/heap_lesson.hpp"
 #include "collide/sim/pq/heap_lesson.hpp"
 #include "collide/video/output.hpp"
 #include "collide/video/png.hpp"
 #include "collide/video/video_writer.hpp"
 #include "commands.hpp"
-#include "heap_frames.hpp"
 #include "lesson_video.hpp"
 #include "progress.hpp"
 #include "render_plan.hpp"
@@ -48,30 +48,21 @@ struct HeapCli {
     CLI::Option* impl_opt = nullptr;
 };
 
-/// Seconds per step a class can follow: 0.8 s (a slide, then a moment to see where it landed).
-pq::LessonPacing pacing_of(double pace) {
+/// --pace, checked: (0, 60] seconds per step.
+show::HeapPacing pacing_of(double pace) {
     if (!std::isfinite(pace) || pace <= 0.0 || pace > 60.0)
         throw_option_error("--pace", fmt::format("{}", pace), "(0, 60] seconds per step");
-    pq::LessonPacing pacing;
-    pacing.pace = pace;
-    pacing.pause = 0.6 * pace;
-    pacing.intro = std::max(1.0, 1.5 * pace);
-    pacing.outro = std::max(2.5, 3.0 * pace);
-    return pacing;
+    return show::heap_pacing(pace);
 }
 
-pq::LessonTimeline timeline_of(const HeapCli& v) {
-    if (given(v.ops_opt) == given(v.sort_opt))
-        throw_option_error("--ops", "give either --ops \"P Q E * ...\" or --sort \"S O R T ...\"");
-    if (v.index_base != 0 && v.index_base != 1)
-        throw_option_error("--index-base", std::to_string(v.index_base), "0 or 1");
+/// The record of the operations (or of the heapsort); the options it reads were checked.
+pq::LessonRecord record_of(const HeapCli& v) {
     const auto orientation = v.min ? pq::Orientation::min : pq::Orientation::max;
-    const pq::LessonPacing pacing = pacing_of(v.pace);
     if (given(v.sort_opt)) {
         if (given(v.impl_opt))
             throw_option_error("--impl", "--sort is heapsort on a binary heap; leave --impl out");
         const std::vector<pq::TraceKey> keys = pq::parse_sort_keys(v.sort, "--sort");
-        return pq::LessonTimeline::heapsort(keys, orientation, v.index_base, pacing);
+        return pq::LessonRecord::heapsort(keys, orientation);
     }
     const std::vector<pq::LessonOp> ops = pq::parse_lesson_ops(v.ops, "--ops");
     std::vector<pq::QueueKind> kinds;
@@ -81,40 +72,42 @@ pq::LessonTimeline timeline_of(const HeapCli& v) {
         throw_option_error("--impl", fmt::format("at most {} implementations side by side, got {}",
                                                  render::max_heap_panels, kinds.size()));
     }
-    return pq::LessonTimeline::operations(ops, kinds, orientation, v.index_base, pacing);
+    return pq::LessonRecord::operations(ops, kinds, orientation, "--ops", "--impl");
+}
+
+show::HeapLesson lesson_of(const HeapCli& v) {
+    if (given(v.ops_opt) == given(v.sort_opt))
+        throw_option_error("--ops", "give either --ops \"P Q E * ...\" or --sort \"S O R T ...\"");
+    if (v.index_base != 0 && v.index_base != 1)
+        throw_option_error("--index-base", std::to_string(v.index_base), "0 or 1");
+    const show::HeapPacing pacing = pacing_of(v.pace);
+    return {record_of(v), pacing, v.index_base};
 }
 
 /// Refuses a lesson whose queue holds more keys than the frame can show legibly.
-void check_legible(const pq::LessonTimeline& timeline, const HeapCli& v) {
-    const std::size_t panels = timeline.panels().size();
+void check_legible(const pq::LessonRecord& record, const HeapCli& v) {
+    const std::size_t panels = record.panels().size();
     const std::size_t limit = render::max_legible_keys(panels);
-    if (timeline.capacity() <= limit) return;
+    if (record.capacity() <= limit) return;
     throw_option_error(
         given(v.sort_opt) ? "--sort" : "--ops",
         fmt::format("the queue holds up to {} keys at once, but at most {} can be drawn "
                     "legibly with {} panel{} side by side (keys over ~14 px tall at "
                     "854x480); use fewer keys{}",
-                    timeline.capacity(), limit, panels, panels == 1 ? "" : "s",
+                    record.capacity(), limit, panels, panels == 1 ? "" : "s",
                     panels > 1 ? " or fewer implementations" : ""));
-}
-
-std::string lesson_name(const pq::LessonTimeline& timeline) {
-    std::string out;
-    for (const pq::LessonPanel& p : timeline.panels()) out += (out.empty() ? "" : ", ") + p.title;
-    return out;
 }
 
 void run(const HeapCli& v) {
     // Validation: nothing is drawn, and no file is created, until all of it passes.
     const ProgressMode progress_mode = parse_progress_mode(v.video.progress);
     const render::Theme theme = render::parse_theme(v.theme, "--theme");
-    const pq::LessonTimeline timeline = timeline_of(v);
-    check_legible(timeline, v);
+    const show::HeapLesson lesson = lesson_of(v);
+    check_legible(lesson.record(), v);
     const LessonGeometry geometry = lesson_geometry_of(v.video);
-    if (given(v.video.at_opt) && !(v.video.at >= 0.0 && v.video.at <= timeline.duration())) {
-        throw_option_error(
-            "--at", fmt::format("{}", v.video.at),
-            fmt::format("a time within the video, 0..{:.2f} s", timeline.duration()));
+    if (given(v.video.at_opt) && !(v.video.at >= 0.0 && v.video.at <= lesson.duration())) {
+        throw_option_error("--at", fmt::format("{}", v.video.at),
+                           fmt::format("a time within the video, 0..{:.2f} s", lesson.duration()));
     }
     const LessonOutput output = lesson_output_of(v.video, "heap");
     if (output.default_path) std::filesystem::create_directories(output.path.parent_path());
@@ -122,34 +115,30 @@ void run(const HeapCli& v) {
         output.path, !output.still && output.format == video::VideoFormat::png_sequence);
     video::set_libav_verbose(v.video.verbose);
 
-    HeapShow show;
-    show.min = v.min;
-    show.sort = given(v.sort_opt);
-    show.index_base = v.index_base;
     render::HeapViewConfig config;
     config.width = geometry.width;
     config.height = geometry.height;
-    config.widest_key = widest_key(timeline);
+    config.widest_key = lesson.widest_key();
     config.theme = theme;
     render::HeapRenderer renderer(config, render::Backend::automatic, print_notice);
 
     if (output.still) {
-        const double t = given(v.video.at_opt) ? v.video.at : timeline.duration();
-        const Image image = renderer.render(heap_frame_at(timeline, show, t));
+        const double t = given(v.video.at_opt) ? v.video.at : lesson.duration();
+        const Image image = renderer.render(lesson.frame_at(t));
         video::write_png(image, output.path);
         std::printf("%s: %dx%d PNG at %.2f s of a %.2f s video of %s\n",
                     output.path.string().c_str(), geometry.width, geometry.height, t,
-                    timeline.duration(), lesson_name(timeline).c_str());
+                    lesson.duration(), lesson.name().c_str());
         return;
     }
 
     const LessonVideoSummary written = write_lesson_video(
-        output, geometry, progress_mode, timeline.duration(),
-        [&](double t, Image& frame) { renderer.render(heap_frame_at(timeline, show, t), frame); });
+        output, geometry, progress_mode, lesson.duration(),
+        [&](double t, Image& frame) { renderer.render(lesson.frame_at(t), frame); });
     std::printf("%s: %.2f s of video, %lld frames, %dx%d @ %g fps, %s, %zu operations\n",
                 output.path.string().c_str(), static_cast<double>(written.frames) / geometry.fps,
                 static_cast<long long>(written.frames), written.width, written.height, written.fps,
-                lesson_name(timeline).c_str(), timeline.op_labels().size());
+                lesson.name().c_str(), lesson.op_labels().size());
 }
 
 }  // namespace

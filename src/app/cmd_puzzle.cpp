@@ -14,11 +14,11 @@
 
 #include "cli_numbers.hpp"
 #include "collide/error.hpp"
+#include "collide/show/puzzle_lesson.hpp"
 #include "collide/sim/pq/queue_kind.hpp"
 #include "collide/sim/puzzle/board.hpp"
 #include "collide/sim/puzzle/search.hpp"
 #include "commands.hpp"
-#include "puzzle_frames.hpp"
 #include "puzzle_video.hpp"
 
 namespace collide::app {
@@ -48,7 +48,7 @@ struct PuzzleCli {
 };
 
 Board start_board(const PuzzleCli& v) {
-    if (v.board == "random") return puzzle::random_board(v.side, v.moves, v.seed);
+    if (v.board == "random") return puzzle::random_board(v.side, v.moves, v.seed, "--moves");
     for (const CLI::Option* o : {v.moves_opt, v.seed_opt, v.side_opt}) {
         if (given(o)) {
             throw_input_error(o->get_name() + ": only for `collide puzzle random` (the board \"" +
@@ -75,8 +75,8 @@ void require_solvable(const Board& board) {
             "--pq {}: {} stopped after {} expansions without reaching the goal: the array "
             "queue's O(N) scans would take too long (the limit is {} entries scanned); use a "
             "heap (--pq binary or dary:4) or a board fewer moves from the goal",
-            pq::to_string(r.queue), who, with_thousands(r.stats.expanded),
-            with_thousands(puzzle::SearchLimits{}.max_scan_work)));
+            pq::to_string(r.queue), who, show::with_thousands(r.stats.expanded),
+            show::with_thousands(puzzle::SearchLimits{}.max_scan_work)));
     }
     std::string advice;
     if (r.method == puzzle::Method::bfs && v.method == "both")
@@ -87,9 +87,10 @@ void require_solvable(const Board& board) {
         "--max-nodes: {} stopped after storing {} boards (the node budget, about {} MB) without "
         "reaching the goal, {} moves deep; {}give a board fewer moves from the goal, or raise "
         "--max-nodes (at most {}, about {} bytes a board)",
-        who, with_thousands(r.stats.enqueued), v.max_nodes * puzzle::bytes_per_node / 1'000'000,
-        r.nodes.empty() ? 0 : r.nodes.back().moves, advice, with_thousands(puzzle::max_node_budget),
-        puzzle::bytes_per_node));
+        who, show::with_thousands(r.stats.enqueued),
+        v.max_nodes * puzzle::bytes_per_node / 1'000'000,
+        r.nodes.empty() ? 0 : r.nodes.back().moves, advice,
+        show::with_thousands(puzzle::max_node_budget), puzzle::bytes_per_node));
 }
 
 /// The searches' settings, read from the options before anything runs.
@@ -139,8 +140,9 @@ void print_text(const Board& start, const std::vector<SearchResult>& results) {
     for (const SearchResult& r : results) {
         std::printf("%s\n",
                     fmt::format("{:<{}}  {:>9}  {:>9}  {:>13}  {:>5}", method_title(r), title_width,
-                                with_thousands(r.stats.expanded), with_thousands(r.stats.enqueued),
-                                with_thousands(r.stats.max_queue), r.solution_length())
+                                show::with_thousands(r.stats.expanded),
+                                show::with_thousands(r.stats.enqueued),
+                                show::with_thousands(r.stats.max_queue), r.solution_length())
                         .c_str());
     }
     for (const SearchResult& r : results) {

@@ -44,7 +44,7 @@ struct SimulateOptions {
         options.pq = pq::parse_queue_kind(pq, "--pq");
         options.dt = dt;
         options.td_detect = parse_overlap_detection(td_detect, "--td-detect");
-        options.validate();
+        options.validate("--dt");
         return options;
     }
 };

@@ -1,6 +1,6 @@
 /// `collide puzzle`'s video: options resolved as `collide heap` resolves them (the extension
 /// decides the format unless --format says it; --last-frame writes one PNG; default paths under
-/// out/), then every frame from PuzzleFrames drawn by PuzzleRenderer into the VideoWriter.
+/// out/), then every frame from show::PuzzleLesson drawn by PuzzleRenderer into the VideoWriter.
 
 #include "puzzle_video.hpp"
 
@@ -16,12 +16,12 @@
 
 #include "collide/error.hpp"
 #include "collide/render/puzzle_view.hpp"
+#include "collide/show/puzzle_lesson.hpp"
 #include "collide/video/output.hpp"
 #include "collide/video/png.hpp"
 #include "collide/video/video_writer.hpp"
 #include "lesson_video.hpp"
 #include "progress.hpp"
-#include "puzzle_frames.hpp"
 #include "render_plan.hpp"
 
 namespace collide::app {
@@ -71,7 +71,7 @@ void render_puzzle_video(const puzzle::Board& start,
                          const PuzzleVideoCli& v) {
     const ProgressMode progress_mode = parse_progress_mode(v.progress);
     const LessonGeometry geometry = geometry_of(v);
-    const PuzzleFrames frames(start, results);
+    const show::PuzzleLesson frames(start, results);
     if (given(v.at_opt) && !(v.at >= 0.0 && v.at <= frames.duration())) {
         throw_option_error("--at", fmt::format("{}", v.at),
                            fmt::format("a time within the video, 0..{:.2f} s", frames.duration()));

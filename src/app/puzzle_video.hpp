@@ -2,7 +2,7 @@
 /// \file
 /// The video of `collide puzzle`: its options (the same as `collide heap`'s: -o, --format, -q,
 /// --size, --fps, --last-frame, --progress, --verbose), their validation, and the render loop
-/// from PuzzleFrames through PuzzleRenderer into the VideoWriter.
+/// from show::PuzzleLesson through PuzzleRenderer into the VideoWriter.
 
 #include <CLI/CLI.hpp>
 #include <string>

@@ -68,7 +68,7 @@ double choose_duration(const RenderRequest& request, const Scene& scene) {
 EngineOptions event_engine_options(const RenderRequest& request) {
     EngineOptions options;
     // The event panel's engine: a request built in code could still name the time-driven one.
-    options.engine = parse_event_engine_kind(to_string(request.engine));
+    options.engine = parse_event_engine_kind(to_string(request.engine), "--engine");
     options.pq = request.pq;
     return options;
 }

@@ -93,23 +93,23 @@ struct MarkStyle {
     Rgba8 text;
 };
 
-MarkStyle style_of(SlotMark mark, const HeapPalette& palette) noexcept {
+MarkStyle style_of(view::SlotMark mark, const HeapPalette& palette) noexcept {
     switch (mark) {
-        case SlotMark::plain:
+        case view::SlotMark::plain:
             return {palette.slot, palette.title};
-        case SlotMark::compared:
+        case view::SlotMark::compared:
             return {{240, 170, 40, 255}, dark_text};
-        case SlotMark::moving:
+        case view::SlotMark::moving:
             return {{70, 145, 240, 255}, {255, 255, 255, 255}};
-        case SlotMark::inserted:
+        case view::SlotMark::inserted:
             return {{70, 185, 100, 255}, dark_text};
-        case SlotMark::changed:
+        case view::SlotMark::changed:
             return {{175, 110, 230, 255}, {255, 255, 255, 255}};
-        case SlotMark::best:
+        case view::SlotMark::best:
             return {{40, 175, 175, 255}, dark_text};
-        case SlotMark::leaving:
+        case view::SlotMark::leaving:
             return {{225, 70, 70, 255}, {255, 255, 255, 255}};
-        case SlotMark::sinking:
+        case view::SlotMark::sinking:
             return {{240, 170, 40, 255}, dark_text};
     }
     return {palette.slot, palette.title};
@@ -236,12 +236,12 @@ struct HeapRenderer::Impl {
 
     // ------------------------------------------------------------------ frame
 
-    void check(const HeapFrameView& frame) const {
+    void check(const view::HeapFrameView& frame) const {
         if (frame.panels.empty() || frame.panels.size() > max_heap_panels) {
             throw_input_error("heap view: a frame needs 1 to " + std::to_string(max_heap_panels) +
                               " panels, got " + std::to_string(frame.panels.size()));
         }
-        for (const HeapPanelView& p : frame.panels) {
+        for (const view::HeapPanelView& p : frame.panels) {
             if (p.slots.size() > p.capacity)
                 throw_input_error("heap view: more slots than the panel's capacity");
             if (p.swap && (p.swap->a >= p.slots.size() || p.swap->b >= p.slots.size()))
@@ -250,7 +250,7 @@ struct HeapRenderer::Impl {
         }
     }
 
-    void build(const HeapFrameView& frame) {
+    void build(const view::HeapFrameView& frame) {
         list.clear();  // keeps the text runs (one per font size), emptied
         list.background = colors.background;
         const auto w = static_cast<float>(config.width);
@@ -266,7 +266,7 @@ struct HeapRenderer::Impl {
     }
 
     /// The operations on one line, the current one on an amber tab; returns the strip's height.
-    float build_token_strip(const HeapFrameView& frame, float margin) {
+    float build_token_strip(const view::HeapFrameView& frame, float margin) {
         const FontAtlas& f = font(caption_px() * 1.05F);
         const float height = f.pixel_height() * 2.0F;
         if (frame.tokens.empty()) return margin;
@@ -310,7 +310,7 @@ struct HeapRenderer::Impl {
         return height;
     }
 
-    PanelGeometry layout_panel(const HeapPanelView& p, RectF r) {
+    PanelGeometry layout_panel(const view::HeapPanelView& p, RectF r) {
         PanelGeometry g;
         g.panel = r;
         const float pad = padding();
@@ -384,14 +384,14 @@ struct HeapRenderer::Impl {
         return g;
     }
 
-    [[nodiscard]] PointF slot_centre(const PanelGeometry& g, const HeapPanelView& p,
+    [[nodiscard]] PointF slot_centre(const PanelGeometry& g, const view::HeapPanelView& p,
                                      std::size_t i) const {
         const float apart = i >= p.heap_size ? g.sorted_gap : 0.0F;
         return {g.slots_x0 + (static_cast<float>(i) + 0.5F) * g.slot_size + apart,
                 g.slot_top + 0.5F * g.slot_size};
     }
 
-    void build_panel(const HeapPanelView& p, RectF r) {
+    void build_panel(const view::HeapPanelView& p, RectF r) {
         const PanelGeometry g = layout_panel(p, r);
         under.add_rect(r, colors.panel);
         build_header(p, g);
@@ -401,7 +401,7 @@ struct HeapRenderer::Impl {
         build_caption(p, g);
     }
 
-    static std::string counters_line(const HeapPanelView& p) {
+    static std::string counters_line(const view::HeapPanelView& p) {
         std::string line;
         for (const std::string& c : p.counters) line += (line.empty() ? "" : "    ") + c;
         return line;
@@ -409,7 +409,7 @@ struct HeapRenderer::Impl {
 
     /// Whether the counters fit on one line, judged on four-digit counts so that the layout does
     /// not jump when a count gains a digit.
-    bool counters_fit(const HeapPanelView& p, float width) {
+    bool counters_fit(const view::HeapPanelView& p, float width) {
         std::string widest;
         for (const std::string& c : p.counters) {
             widest += (widest.empty() ? "" : "    ") + c.substr(0, c.find(' ')) + " 0000";
@@ -417,7 +417,7 @@ struct HeapRenderer::Impl {
         return font(caption_px() * 0.85F).text_width(widest) <= width;
     }
 
-    void build_header(const HeapPanelView& p, const PanelGeometry& g) {
+    void build_header(const view::HeapPanelView& p, const PanelGeometry& g) {
         const float pad = padding();
         const FontAtlas& title = font(caption_px() * 1.05F);
         const float room = g.panel.width() - 2.0F * pad;
@@ -438,7 +438,7 @@ struct HeapRenderer::Impl {
 
     /// Where the key of slot i is drawn now (in the tree): its node, or on its way to the other
     /// node of an exchange.
-    [[nodiscard]] static PointF node_position(const HeapPanelView& p, const PanelGeometry& g,
+    [[nodiscard]] static PointF node_position(const view::HeapPanelView& p, const PanelGeometry& g,
                                               std::size_t i) {
         if (p.swap && (i == p.swap->a || i == p.swap->b)) {
             // Along the edge, bowed out to either side so that the two keys pass each other in
@@ -458,19 +458,19 @@ struct HeapRenderer::Impl {
         return g.nodes[i];
     }
 
-    [[nodiscard]] static float alpha_of(const HeapPanelView& p, SlotMark mark) {
-        return mark == SlotMark::inserted || mark == SlotMark::leaving ? p.fade : 1.0F;
+    [[nodiscard]] static float alpha_of(const view::HeapPanelView& p, view::SlotMark mark) {
+        return mark == view::SlotMark::inserted || mark == view::SlotMark::leaving ? p.fade : 1.0F;
     }
 
-    void build_tree(const HeapPanelView& p, const PanelGeometry& g) {
+    void build_tree(const view::HeapPanelView& p, const PanelGeometry& g) {
         const std::size_t in_tree = std::min(p.slots.size(), p.heap_size);
         const float edge_w = std::max(1.5F, 3.0F * unit);
         // Edges between the nodes' places (the slide follows them).
         for (std::size_t i = 1; i < in_tree; ++i) {
             const std::size_t parent = (i - 1) / p.arity;
-            const bool lit = p.slots[i].mark != SlotMark::plain &&
+            const bool lit = p.slots[i].mark != view::SlotMark::plain &&
                              p.slots[parent].mark == p.slots[i].mark &&
-                             p.slots[i].mark != SlotMark::leaving;
+                             p.slots[i].mark != view::SlotMark::leaving;
             under.add_line(g.nodes[parent], g.nodes[i], lit ? 2.2F * edge_w : edge_w,
                            lit ? style_of(p.slots[i].mark, colors).fill : colors.edge);
         }
@@ -491,16 +491,17 @@ struct HeapRenderer::Impl {
         }
     }
 
-    void draw_node(const HeapSlotView& s, PointF c, float radius, float alpha, const FontAtlas& f) {
+    void draw_node(const view::HeapSlotView& s, PointF c, float radius, float alpha,
+                   const FontAtlas& f) {
         const MarkStyle style = style_of(s.mark, colors);
-        const Rgba8 fill = s.mark == SlotMark::plain ? colors.node : style.fill;
+        const Rgba8 fill = s.mark == view::SlotMark::plain ? colors.node : style.fill;
         add_node({c.x, c.y, radius, 0.0F, faded(fill, alpha)});
         add_node(
             {c.x, c.y, radius, std::max(1.5F, 2.5F * unit), faded(colors.node_outline, alpha)});
         centred(f, c, s.key, faded(style.text, alpha));
     }
 
-    void build_array(const HeapPanelView& p, const PanelGeometry& g) {
+    void build_array(const view::HeapPanelView& p, const PanelGeometry& g) {
         const float s = g.slot_size;
         const float outline = std::max(1.0F, 2.0F * unit);
         const FontAtlas& f = key_font(s);
@@ -512,9 +513,10 @@ struct HeapRenderer::Impl {
             const RectF box{c.x - 0.5F * s, g.slot_top, c.x + 0.5F * s, g.slot_top + s};
             Rgba8 fill = colors.background;
             if (i < p.slots.size()) {
-                const SlotMark m = p.slots[i].mark;
+                const view::SlotMark m = p.slots[i].mark;
                 fill = i >= p.heap_size ? colors.sorted_fill : style_of(m, colors).fill;
-                if (m == SlotMark::inserted || m == SlotMark::leaving) fill = faded(fill, p.fade);
+                if (m == view::SlotMark::inserted || m == view::SlotMark::leaving)
+                    fill = faded(fill, p.fade);
                 if (p.swap && (i == p.swap->a || i == p.swap->b)) fill = colors.slot;  // tile away
             }
             under.add_rect(box, fill);
@@ -526,7 +528,7 @@ struct HeapRenderer::Impl {
         // Keys; an exchange slides the two keys as tiles, one over the row and one under it.
         for (std::size_t i = 0; i < p.slots.size(); ++i) {
             PointF c = slot_centre(g, p, i);
-            const SlotMark m = p.slots[i].mark;
+            const view::SlotMark m = p.slots[i].mark;
             Rgba8 color = i >= p.heap_size ? colors.sorted_text : style_of(m, colors).text;
             if (p.swap && (i == p.swap->a || i == p.swap->b)) {
                 const std::size_t other = i == p.swap->a ? p.swap->b : p.swap->a;
@@ -537,7 +539,7 @@ struct HeapRenderer::Impl {
                 c.y += arc;
                 const RectF tile{c.x - 0.46F * s, c.y - 0.46F * s, c.x + 0.46F * s,
                                  c.y + 0.46F * s};
-                under.add_rect(tile, style_of(SlotMark::moving, colors).fill);
+                under.add_rect(tile, style_of(view::SlotMark::moving, colors).fill);
                 under.add_frame(tile, outline, colors.node_outline);
             }
             centred(f, c, p.slots[i].key, faded(color, alpha_of(p, m)));
@@ -556,19 +558,19 @@ struct HeapRenderer::Impl {
 
     /// The indexed heap's map as a table over the array: for each key (in the order of their
     /// handles), the index of the slot that holds it; entries an exchange is updating lit.
-    void build_map(const HeapPanelView& p, const PanelGeometry& g) {
+    void build_map(const view::HeapPanelView& p, const PanelGeometry& g) {
         const FontAtlas& head = font(caption_px() * 0.85F);
         const FontAtlas& f = map_font(g);
         text(head, g.map.x0, g.map.y0 + head.ascent(), "map: key -> index", colors.map_header);
         const float key_y = g.map.y0 + head.line_height() + 0.5F * f.line_height();
         const float index_y = key_y + f.line_height();
         for (std::size_t c = 0; c < p.map.size(); ++c) {
-            const HeapMapRow& row = p.map[c];
+            const view::HeapMapRow& row = p.map[c];
             const float x = g.map.x0 + (static_cast<float>(c) + 0.5F) * g.slot_size;
             if (row.updated) {
                 under.add_rect({x - 0.45F * g.slot_size, index_y - 0.5F * f.line_height(),
                                 x + 0.45F * g.slot_size, index_y + 0.5F * f.line_height()},
-                               style_of(SlotMark::moving, colors).fill);
+                               style_of(view::SlotMark::moving, colors).fill);
             }
             centred(f, {x, key_y}, row.key, colors.title);
             centred(f, {x, index_y}, row.index,
@@ -576,7 +578,7 @@ struct HeapRenderer::Impl {
         }
     }
 
-    void build_caption(const HeapPanelView& p, const PanelGeometry& g) {
+    void build_caption(const view::HeapPanelView& p, const PanelGeometry& g) {
         const float pad = padding();
         const FontAtlas& f = font(caption_px());
         const std::size_t max_lines = g.panel.y1 - g.caption_top > 2.5F * f.line_height() ? 3 : 2;
@@ -591,7 +593,7 @@ struct HeapRenderer::Impl {
 
     // ------------------------------------------------------------------ GL
 
-    void render(const HeapFrameView& frame, Image& out) {
+    void render(const view::HeapFrameView& frame, Image& out) {
         check(frame);
         build(frame);
         target.draw(list);
@@ -612,11 +614,11 @@ HeapRenderer::~HeapRenderer() = default;
 HeapRenderer::HeapRenderer(HeapRenderer&&) noexcept = default;
 HeapRenderer& HeapRenderer::operator=(HeapRenderer&&) noexcept = default;
 
-void HeapRenderer::render(const HeapFrameView& frame, Image& out) {
+void HeapRenderer::render(const view::HeapFrameView& frame, Image& out) {
     impl_->render(frame, out);
 }
 
-Image HeapRenderer::render(const HeapFrameView& frame) {
+Image HeapRenderer::render(const view::HeapFrameView& frame) {
     Image image;
     render(frame, image);
     return image;

@@ -59,21 +59,21 @@ constexpr float small_px = 14.0F;
 constexpr float playback_px = 22.0F;
 constexpr float min_font_px = 9.0F;
 
-Rgba8 mark_color(PuzzleMark mark) noexcept {
+Rgba8 mark_color(view::PuzzleMark mark) noexcept {
     switch (mark) {
-        case PuzzleMark::current:
+        case view::PuzzleMark::current:
             return current_mark;
-        case PuzzleMark::goal:
+        case view::PuzzleMark::goal:
             return goal_mark;
-        case PuzzleMark::solution:
+        case view::PuzzleMark::solution:
             return solution_mark;
-        case PuzzleMark::plain:
+        case view::PuzzleMark::plain:
             break;
     }
     return edge_color;
 }
 
-void check_board(const PuzzleBoardView& b) {
+void check_board(const view::PuzzleBoardView& b) {
     if (b.side < 2 || b.side > 4 ||
         b.tiles.size() != static_cast<std::size_t>(b.side) * static_cast<std::size_t>(b.side)) {
         throw_input_error("puzzle view: a board of side " + std::to_string(b.side) + " has " +
@@ -151,8 +151,8 @@ struct PuzzleRenderer::Impl {
 
     /// A board whose top-left corner is (x, y) with cells `cell` pixels wide; a tile sliding as
     /// `slide` says is drawn between its two cells.
-    void draw_board(const PuzzleBoardView& b, float x, float y, float cell, float font_px,
-                    const PuzzleSlideView& slide = {}) {
+    void draw_board(const view::PuzzleBoardView& b, float x, float y, float cell, float font_px,
+                    const view::PuzzleSlideView& slide = {}) {
         const float gap = std::max(1.0F, std::round(cell * 0.08F));
         const float size = cell * static_cast<float>(b.side);
         list.under.add_rect({x - gap, y - gap, x + size + gap, y + size + gap}, blank_color);
@@ -172,7 +172,7 @@ struct PuzzleRenderer::Impl {
             draw_tile(tile, x + cell * (fx + (tx - fx) * t), y + cell * (fy + (ty - fy) * t), cell,
                       gap, font_px, sliding_tile);
         }
-        if (b.mark != PuzzleMark::plain) {
+        if (b.mark != view::PuzzleMark::plain) {
             const float w = std::max(2.0F, std::round(3.0F * s));
             list.under.add_frame({x - gap - w, y - gap - w, x + size + gap + w, y + size + gap + w},
                                  w, mark_color(b.mark));
@@ -188,7 +188,7 @@ struct PuzzleRenderer::Impl {
              font_px, label, tile_text);
     }
 
-    void draw_panel(const PuzzlePanelView& p, RectF area) {
+    void draw_panel(const view::PuzzlePanelView& p, RectF area) {
         list.under.add_rect(area, panel_color);
         const float x0 = area.x0 + X(14);
         text(x0, area.y0 + Y(30), title_px, p.title, title_color);
@@ -217,28 +217,29 @@ struct PuzzleRenderer::Impl {
         return std::floor(std::min(fit, 26.0F * s));
     }
 
-    void draw_tree(const PuzzlePanelView& p, RectF area) {
+    void draw_tree(const view::PuzzlePanelView& p, RectF area) {
         float top = area.y0;
         if (!p.hidden_rows.empty()) {
             fitted_text(area.x0, top + Y(12), area.width(), small_px, p.hidden_rows, label_color);
             top += Y(22);
         }
-        const std::size_t rows = std::min(p.rows.size(), max_puzzle_rows);
+        const std::size_t rows = std::min(p.rows.size(), view::max_puzzle_rows);
         if (rows == 0) return;
-        const float row_h = (area.y1 - top) / static_cast<float>(max_puzzle_rows);
+        const float row_h = (area.y1 - top) / static_cast<float>(view::max_puzzle_rows);
         const float label_w = X(104);
-        const float slot_w = (area.width() - label_w) / static_cast<float>(max_puzzle_row_boards);
+        const float slot_w =
+            (area.width() - label_w) / static_cast<float>(view::max_puzzle_row_boards);
         // Board centres of the row above, for the edges.
         std::vector<PointF> above;
         for (std::size_t r = 0; r < rows; ++r) {
-            const PuzzleRowView& row = p.rows[r];
+            const view::PuzzleRowView& row = p.rows[r];
             const float y = top + row_h * static_cast<float>(r);
             text(area.x0, y + Y(18), body_px, row.label, title_color);
             text(area.x0, y + Y(36), small_px, row.count, label_color);
             std::vector<PointF> here;
-            const std::size_t n = std::min(row.boards.size(), max_puzzle_row_boards);
+            const std::size_t n = std::min(row.boards.size(), view::max_puzzle_row_boards);
             for (std::size_t i = 0; i < n; ++i) {
-                const PuzzleBoardView& b = row.boards[i];
+                const view::PuzzleBoardView& b = row.boards[i];
                 const float cell = small_cell(b.side, slot_w - X(10), row_h - Y(34));
                 const float size = cell * static_cast<float>(b.side);
                 const float cx = area.x0 + label_w + slot_w * (static_cast<float>(i) + 0.5F);
@@ -260,16 +261,17 @@ struct PuzzleRenderer::Impl {
         }
     }
 
-    void draw_queue(const PuzzlePanelView& p, RectF area) {
+    void draw_queue(const view::PuzzlePanelView& p, RectF area) {
         list.under.add_rect({area.x0 - X(6), area.y0 - Y(4), area.x1 + X(4), area.y1},
                             {38, 40, 52, 255});
         fitted_text(area.x0, area.y0 + Y(16), area.width(), body_px, p.queue_title, title_color);
         float y = area.y0 + Y(30);
-        for (std::size_t i = 0; i < std::min(p.queue.size(), max_puzzle_queue_shown); ++i) {
-            const PuzzleBoardView& b = p.queue[i];
+        for (std::size_t i = 0; i < std::min(p.queue.size(), view::max_puzzle_queue_shown); ++i) {
+            const view::PuzzleBoardView& b = p.queue[i];
             const float cell = small_cell(
                 b.side, area.width() - X(74),
-                (area.y1 - area.y0 - Y(64)) / static_cast<float>(max_puzzle_queue_shown) - Y(14));
+                (area.y1 - area.y0 - Y(64)) / static_cast<float>(view::max_puzzle_queue_shown) -
+                    Y(14));
             draw_board(b, area.x0 + X(4), y, cell, cell / s * 0.8F);
             text(area.x0 + X(4) + cell * static_cast<float>(b.side) + X(10),
                  y + cell * static_cast<float>(b.side) / 2.0F + Y(5), small_px, b.label,
@@ -280,8 +282,8 @@ struct PuzzleRenderer::Impl {
             fitted_text(area.x0, y + Y(12), area.width(), small_px, p.queue_more, label_color);
     }
 
-    void draw_playback(const PuzzlePanelView& p, RectF area) {
-        const PuzzleBoardView& b = p.board;
+    void draw_playback(const view::PuzzlePanelView& p, RectF area) {
+        const view::PuzzleBoardView& b = p.board;
         centred_text((area.x0 + area.x1) / 2.0F, area.y0 + Y(30), playback_px, p.caption,
                      title_color);
         const float room = std::min(area.width() - X(80), area.height() - Y(90));
@@ -292,16 +294,16 @@ struct PuzzleRenderer::Impl {
         draw_board(b, x, y, cell, cell * 0.45F / s, p.slide);
     }
 
-    const DrawList& build(const PuzzleFrameView& frame) {
+    const DrawList& build(const view::PuzzleFrameView& frame) {
         if (frame.panels.empty() || frame.panels.size() > 2)
             throw_input_error("puzzle view: 1 or 2 panels, got " +
                               std::to_string(frame.panels.size()));
-        for (const PuzzlePanelView& p : frame.panels) {
+        for (const view::PuzzlePanelView& p : frame.panels) {
             if (p.playback || !p.board.tiles.empty()) check_board(p.board);
-            for (const PuzzleRowView& row : p.rows) {
-                for (const PuzzleBoardView& b : row.boards) check_board(b);
+            for (const view::PuzzleRowView& row : p.rows) {
+                for (const view::PuzzleBoardView& b : row.boards) check_board(b);
             }
-            for (const PuzzleBoardView& b : p.queue) check_board(b);
+            for (const view::PuzzleBoardView& b : p.queue) check_board(b);
         }
         list.clear();
         text(X(20), Y(34), heading_px, frame.heading, title_color);
@@ -329,13 +331,13 @@ PuzzleRenderer::~PuzzleRenderer() = default;
 PuzzleRenderer::PuzzleRenderer(PuzzleRenderer&&) noexcept = default;
 PuzzleRenderer& PuzzleRenderer::operator=(PuzzleRenderer&&) noexcept = default;
 
-void PuzzleRenderer::render(const PuzzleFrameView& frame, Image& out) {
+void PuzzleRenderer::render(const view::PuzzleFrameView& frame, Image& out) {
     const DrawList& list = impl_->build(frame);
     impl_->target.draw(list);
     impl_->target.read_pixels(list, out);
 }
 
-Image PuzzleRenderer::render(const PuzzleFrameView& frame) {
+Image PuzzleRenderer::render(const view::PuzzleFrameView& frame) {
     Image image;
     render(frame, image);
     return image;

@@ -56,8 +56,8 @@ std::string_view to_string(OverlapDetection detection) noexcept {
     return name_of(detection, detection_names);
 }
 
-void EngineOptions::validate() const {
-    validate_time_driven_options(*this);  // --dt: one rule, shared with the engine
+void EngineOptions::validate(std::string_view dt_field) const {
+    validate_time_driven_options(*this, dt_field);  // one rule, shared with the engine
 }
 
 std::unique_ptr<Engine> make_engine(const Scene& scene, const EngineOptions& options) {

@@ -86,7 +86,7 @@ void FastEngine::choose_grid(const Scene& scene) {
     if (periodic_ && (nx < 3 || ny < 3)) {
         throw_input_error("", 0, nx < 3 ? "box.width" : "box.height",
                           "a periodic box must be at least three disc diameters wide and tall for "
-                          "the fast engine (use --engine classic)");
+                          "the fast engine (the classic engine has no such limit)");
     }
     // Dilute scenes: fewer, larger cells (each must stay at least min_cell wide, so only shrink).
     const double cap = std::max(9.0, max_cells_per_disc * static_cast<double>(scene.discs.size()));

@@ -18,18 +18,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-HeapPanelView binary_panel(const std::vector<std::string>& keys, std::size_t capacity) {
-    HeapPanelView p;
+view::HeapPanelView binary_panel(const std::vector<std::string>& keys, std::size_t capacity) {
+    view::HeapPanelView p;
     p.title = "binary heap (max)";
     p.counters = {"compares 3", "exchanges 2"};
     p.caption = "insert S at a[6]; S > P: exchange";
     p.capacity = capacity;
-    for (const std::string& k : keys) p.slots.push_back({k, SlotMark::plain});
+    for (const std::string& k : keys) p.slots.push_back({k, view::SlotMark::plain});
     return p;
 }
 
-HeapFrameView frame_of(std::vector<HeapPanelView> panels) {
-    HeapFrameView f;
+view::HeapFrameView frame_of(std::vector<view::HeapPanelView> panels) {
+    view::HeapFrameView f;
     f.tokens = {"P", "Q", "E", "*", "X", "S"};
     f.current_token = 5;
     f.panels = std::move(panels);
@@ -141,7 +141,7 @@ TEST_CASE("heap view: panels share one row and the legible limit shrinks with th
 
 TEST_CASE("heap view: bad frames are input errors") {
     HeapRenderer renderer(config_of(160, 90), test::test_backend());
-    const auto kind_of = [&](HeapFrameView f) {
+    const auto kind_of = [&](view::HeapFrameView f) {
         try {
             (void)renderer.render(f);
         } catch (const Error& e) {
@@ -149,11 +149,11 @@ TEST_CASE("heap view: bad frames are input errors") {
         }
         return ErrorKind::runtime;  // nothing thrown: the CHECK below fails
     };
-    CHECK(kind_of(HeapFrameView{}) == ErrorKind::input);
-    HeapPanelView too_many = binary_panel({"A", "B", "C"}, 2);
+    CHECK(kind_of(view::HeapFrameView{}) == ErrorKind::input);
+    view::HeapPanelView too_many = binary_panel({"A", "B", "C"}, 2);
     CHECK(kind_of(frame_of({too_many})) == ErrorKind::input);
-    HeapPanelView bad_swap = binary_panel({"A", "B"}, 3);
-    bad_swap.swap = HeapSwapView{0, 2, 0.5F};
+    view::HeapPanelView bad_swap = binary_panel({"A", "B"}, 3);
+    bad_swap.swap = view::HeapSwapView{0, 2, 0.5F};
     CHECK(kind_of(frame_of({bad_swap})) == ErrorKind::input);
     HeapViewConfig tiny = config_of(32, 90);
     CHECK_THROWS_AS(HeapRenderer(tiny, test::test_backend()), Error);
@@ -161,18 +161,18 @@ TEST_CASE("heap view: bad frames are input errors") {
 
 TEST_CASE("heap view: compared keys light up amber, exchanged ones blue, frames repeat exactly") {
     HeapRenderer renderer(config_of(480, 270), test::test_backend());
-    HeapPanelView plain = binary_panel({"T", "P", "R", "N", "H"}, 7);
+    view::HeapPanelView plain = binary_panel({"T", "P", "R", "N", "H"}, 7);
     const Image before = renderer.render(frame_of({plain}));
-    HeapPanelView compared = plain;
-    compared.slots[1].mark = SlotMark::compared;
-    compared.slots[4].mark = SlotMark::compared;
+    view::HeapPanelView compared = plain;
+    compared.slots[1].mark = view::SlotMark::compared;
+    compared.slots[4].mark = view::SlotMark::compared;
     const Image lit = renderer.render(frame_of({compared}));
     // Two nodes and two slots turn amber (the token tab is amber in both frames).
     CHECK(pixels_near(lit, amber) > pixels_near(before, amber) + 400);
-    HeapPanelView moving = plain;
-    moving.slots[1].mark = SlotMark::moving;
-    moving.slots[4].mark = SlotMark::moving;
-    moving.swap = HeapSwapView{4, 1, 0.5F};
+    view::HeapPanelView moving = plain;
+    moving.slots[1].mark = view::SlotMark::moving;
+    moving.slots[4].mark = view::SlotMark::moving;
+    moving.swap = view::HeapSwapView{4, 1, 0.5F};
     const Image sliding = renderer.render(frame_of({moving}));
     CHECK(pixels_near(sliding, blue) > pixels_near(before, blue) + 400);
     CHECK(renderer.render(frame_of({moving})).rgba == sliding.rgba);  // deterministic
@@ -184,41 +184,44 @@ TEST_CASE("heap view: compared keys light up amber, exchanged ones blue, frames 
 
 TEST_CASE("golden: the lecture's binary heap mid-exchange, 480x270") {
     HeapRenderer renderer(config_of(480, 270), test::test_backend());
-    HeapPanelView p = binary_panel({"T", "P", "R", "N", "H", "O", "A", "E", "I", "G", "S"}, 11);
-    p.slots[10].mark = SlotMark::moving;
-    p.slots[4].mark = SlotMark::moving;
-    p.swap = HeapSwapView{10, 4, 0.4F};
+    view::HeapPanelView p =
+        binary_panel({"T", "P", "R", "N", "H", "O", "A", "E", "I", "G", "S"}, 11);
+    p.slots[10].mark = view::SlotMark::moving;
+    p.slots[4].mark = view::SlotMark::moving;
+    p.swap = view::HeapSwapView{10, 4, 0.4F};
     p.caption = "insert S at a[11]; exchange S and H";
     check_golden(renderer.render(frame_of({p})), "heap_binary_exchange");
 }
 
 TEST_CASE("golden: arrays and a heap side by side, the scan and a shift, 480x270") {
     HeapRenderer renderer(config_of(480, 270), test::test_backend());
-    HeapPanelView unordered;
+    view::HeapPanelView unordered;
     unordered.title = "unordered array (max)";
     unordered.counters = {"compares 2", "exchanges 0"};
     unordered.caption = "scan for the max: X > P, new max X";
     unordered.tree = false;
     unordered.capacity = 7;
-    unordered.slots = {{"P", SlotMark::plain}, {"E", SlotMark::best}, {"X", SlotMark::compared}};
-    HeapPanelView ordered = unordered;
+    unordered.slots = {
+        {"P", view::SlotMark::plain}, {"E", view::SlotMark::best}, {"X", view::SlotMark::compared}};
+    view::HeapPanelView ordered = unordered;
     ordered.title = "ordered array (max)";
     ordered.counters = {"compares 2", "shifts 1"};
     ordered.caption = "insert M at a[3]; shift P right to a[3]";
-    ordered.slots = {{"E", SlotMark::plain}, {"P", SlotMark::moving}, {"M", SlotMark::moving}};
-    ordered.swap = HeapSwapView{1, 2, 0.5F};
-    HeapPanelView heap = binary_panel({"X", "E", "P"}, 7);
-    heap.slots[0].mark = SlotMark::compared;
-    heap.slots[2].mark = SlotMark::compared;
+    ordered.slots = {
+        {"E", view::SlotMark::plain}, {"P", view::SlotMark::moving}, {"M", view::SlotMark::moving}};
+    ordered.swap = view::HeapSwapView{1, 2, 0.5F};
+    view::HeapPanelView heap = binary_panel({"X", "E", "P"}, 7);
+    heap.slots[0].mark = view::SlotMark::compared;
+    heap.slots[2].mark = view::SlotMark::compared;
     check_golden(renderer.render(frame_of({unordered, ordered, heap})), "heap_three_panels");
 }
 
 TEST_CASE("golden: the indexed heap's map and heapsort's sorted part, 480x270") {
     HeapRenderer renderer(config_of(480, 270), test::test_backend());
-    HeapPanelView indexed = binary_panel({"12", "7", "5"}, 4);
+    view::HeapPanelView indexed = binary_panel({"12", "7", "5"}, 4);
     indexed.title = "indexed binary heap (max)";
     indexed.show_map = true;
-    indexed.slots[0].mark = SlotMark::changed;
+    indexed.slots[0].mark = view::SlotMark::changed;
     indexed.map = {{"5", "3", false}, {"12", "1", true}, {"7", "2", false}};
     indexed.caption = "increase 3 to 12: the map says 3 is at a[3]; set a[3] = 12";
     HeapViewConfig config = config_of(480, 270);
@@ -226,13 +229,14 @@ TEST_CASE("golden: the indexed heap's map and heapsort's sorted part, 480x270") 
     HeapRenderer wide_keys(config, test::test_backend());
     check_golden(wide_keys.render(frame_of({indexed})), "heap_indexed_map");
 
-    HeapPanelView sort = binary_panel({"P", "O", "M", "L", "E", "A", "E", "R", "S", "T", "X"}, 11);
+    view::HeapPanelView sort =
+        binary_panel({"P", "O", "M", "L", "E", "A", "E", "R", "S", "T", "X"}, 11);
     sort.title = "heapsort (ascending)";
     sort.heap_size = 7;
-    sort.slots[1].mark = SlotMark::compared;
-    sort.slots[2].mark = SlotMark::compared;
+    sort.slots[1].mark = view::SlotMark::compared;
+    sort.slots[2].mark = view::SlotMark::compared;
     sort.caption = "sortdown; sink P: larger child? O > M";
-    HeapFrameView f = frame_of({sort});
+    view::HeapFrameView f = frame_of({sort});
     f.tokens = {"build", "sortdown"};
     f.current_token = 1;
     check_golden(renderer.render(f), "heap_sortdown");

@@ -12,8 +12,9 @@
 namespace collide::render {
 namespace {
 
-PuzzleBoardView board(std::vector<std::uint8_t> tiles, PuzzleMark mark = PuzzleMark::plain) {
-    PuzzleBoardView b;
+view::PuzzleBoardView board(std::vector<std::uint8_t> tiles,
+                            view::PuzzleMark mark = view::PuzzleMark::plain) {
+    view::PuzzleBoardView b;
     b.side = 3;
     b.tiles = std::move(tiles);
     b.mark = mark;
@@ -21,16 +22,16 @@ PuzzleBoardView board(std::vector<std::uint8_t> tiles, PuzzleMark mark = PuzzleM
     return b;
 }
 
-PuzzlePanelView search_panel(PuzzleMark newest) {
-    PuzzlePanelView p;
+view::PuzzlePanelView search_panel(view::PuzzleMark newest) {
+    view::PuzzlePanelView p;
     p.title = "A* (manhattan, --pq binary)";
     p.counters = {"expanded 2", "enqueued 5", "in queue 3"};
     p.status = "lowest priority first";
-    PuzzleRowView root;
+    view::PuzzleRowView root;
     root.label = "depth 0";
     root.count = "1 board";
     root.boards.push_back(board({1, 2, 3, 4, 0, 6, 7, 5, 8}));
-    PuzzleRowView next;
+    view::PuzzleRowView next;
     next.label = "depth 1";
     next.count = "1 board";
     next.boards.push_back(board({1, 2, 3, 4, 5, 6, 7, 0, 8}, newest));
@@ -57,24 +58,24 @@ constexpr Rgb8 tile{222, 224, 232};
 TEST_CASE("puzzle view: bad frames and configs are input errors") {
     CHECK_THROWS_AS(config_of(100, 720).validate(), Error);
     PuzzleRenderer renderer(config_of(854, 480), test::test_backend());
-    PuzzleFrameView none;
+    view::PuzzleFrameView none;
     CHECK_THROWS_AS(renderer.render(none), Error);
-    PuzzleFrameView three;
-    three.panels.assign(3, search_panel(PuzzleMark::plain));
+    view::PuzzleFrameView three;
+    three.panels.assign(3, search_panel(view::PuzzleMark::plain));
     CHECK_THROWS_AS(renderer.render(three), Error);
-    PuzzleFrameView wrong;
-    wrong.panels.push_back(search_panel(PuzzleMark::plain));
+    view::PuzzleFrameView wrong;
+    wrong.panels.push_back(search_panel(view::PuzzleMark::plain));
     wrong.panels[0].queue[0].tiles.pop_back();  // 8 tiles on a 3x3 board
     CHECK_THROWS_AS(renderer.render(wrong), Error);
 }
 
 TEST_CASE("puzzle view: tiles, the board being expanded in amber, frames repeat exactly") {
     PuzzleRenderer renderer(config_of(854, 480), test::test_backend());
-    PuzzleFrameView plain;
+    view::PuzzleFrameView plain;
     plain.heading = "8-puzzle 1 2 3 4 0 6 7 5 8";
-    plain.panels = {search_panel(PuzzleMark::plain), search_panel(PuzzleMark::plain)};
-    PuzzleFrameView marked = plain;
-    marked.panels[1].rows[1].boards[0].mark = PuzzleMark::current;
+    plain.panels = {search_panel(view::PuzzleMark::plain), search_panel(view::PuzzleMark::plain)};
+    view::PuzzleFrameView marked = plain;
+    marked.panels[1].rows[1].boards[0].mark = view::PuzzleMark::current;
     const Image a = renderer.render(plain);
     const Image b = renderer.render(marked);
     REQUIRE(a.width == 854);
@@ -89,14 +90,14 @@ TEST_CASE("puzzle view: tiles, the board being expanded in amber, frames repeat 
 
 TEST_CASE("puzzle view: the playback draws a large board with its sliding tile in amber") {
     PuzzleRenderer renderer(config_of(854, 480), test::test_backend());
-    PuzzlePanelView p;
+    view::PuzzlePanelView p;
     p.title = "Breadth-first search";
     p.playback = true;
     p.board = board({1, 2, 3, 4, 5, 6, 7, 0, 8});
     p.caption = "move 1 of 2: 5 slides up";
-    PuzzleFrameView still;
+    view::PuzzleFrameView still;
     still.panels = {p};
-    PuzzleFrameView sliding = still;
+    view::PuzzleFrameView sliding = still;
     sliding.panels[0].slide = {7, 4, 0.5F};
     const Image a = renderer.render(still);
     const Image b = renderer.render(sliding);

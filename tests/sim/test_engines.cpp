@@ -348,10 +348,12 @@ TEST_CASE("engine names parse into kinds and back, and a bad name is an input er
         return std::string();
     };
     CHECK(message([] { (void)parse_engine_kind("warp"); }) ==
-          "--engine: expected fast, classic or time, got 'warp'");
+          "engine: expected fast, classic or time, got 'warp'");
     CHECK(message([] { (void)parse_event_engine_kind("time", "--engine"); }) ==
           "--engine: expected an event-driven engine (fast or classic), got 'time'");
     CHECK(message([] { (void)parse_overlap_detection("octree"); }) ==
+          "td_detect: expected all-pairs or grid, got 'octree'");
+    CHECK(message([] { (void)parse_overlap_detection("octree", "--td-detect"); }) ==
           "--td-detect: expected all-pairs or grid, got 'octree'");
     CHECK(message([] { (void)parse_engine_kind("Fast", "scene.toml:3: engine"); }) ==
           "scene.toml:3: engine: expected fast, classic or time, got 'Fast'");

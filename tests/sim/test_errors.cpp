@@ -1,12 +1,19 @@
 // The error helpers every module uses (collide/error.hpp) and the name tables of the options
 // chosen by name (collide/named_values.hpp): the option comes first, then what was expected, then
-// the value as typed.
+// the value as typed. And the simulation library's messages name fields ("dt", "pq"), never a
+// command-line option ("--dt"): its callers pass the spelling their user knows.
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <array>
+#include <cctype>
+#include <filesystem>
+#include <regex>
 #include <string>
+#include <vector>
 
+#include "../support/files.hpp"
 #include "../support/input_error.hpp"
 #include "collide/error.hpp"
 #include "collide/named_values.hpp"
@@ -17,6 +24,50 @@ using collide::test::input_error_message;
 namespace {
 
 enum class Shade { dark, light, grey };
+
+/// Whether the quote at `i` separates digits (1'000'000) rather than opening a character.
+bool digit_separator(const std::string& text, std::size_t i) {
+    return i > 0 && std::isalnum(static_cast<unsigned char>(text[i - 1])) != 0;
+}
+
+/// The string literals of C++ source text, comments left out (no raw strings: the library has
+/// none).
+std::vector<std::string> string_literals(const std::string& text) {
+    std::vector<std::string> out;
+    std::size_t i = 0;
+    while (i < text.size()) {
+        const char c = text[i];
+        if (c == '/' && i + 1 < text.size() && text[i + 1] == '/') {
+            i = text.find('\n', i);
+            if (i == std::string::npos) break;
+        } else if (c == '/' && i + 1 < text.size() && text[i + 1] == '*') {
+            i = text.find("*/", i + 2);
+            if (i == std::string::npos) break;
+            i += 2;
+        } else if (c == '"' || (c == '\'' && !digit_separator(text, i))) {
+            std::string literal;
+            for (++i; i < text.size() && text[i] != c; ++i) {
+                if (text[i] == '\\' && i + 1 < text.size()) literal += text[i++];
+                literal += text[i];
+            }
+            ++i;
+            if (c == '"') out.push_back(literal);
+        } else {
+            ++i;
+        }
+    }
+    return out;
+}
+
+/// The literals of `text` that spell a command-line option ("--dt", "use --engine classic").
+std::vector<std::string> option_spellings(const std::string& text) {
+    static const std::regex option(R"((^|[\s(`'])--[A-Za-z])");
+    std::vector<std::string> out;
+    for (const std::string& literal : string_literals(text)) {
+        if (std::regex_search(literal, option)) out.push_back(literal);
+    }
+    return out;
+}
 
 constexpr std::array<NamedValue<Shade>, 4> shade_names{
     {{"dark", Shade::dark}, {"light", Shade::light}, {"grey", Shade::grey}, {"gray", Shade::grey}}};
@@ -61,4 +112,36 @@ TEST_CASE("named values: a bad name names the option, lists the own names and ec
     CHECK(input_error_message([] {
               (void)parse_named("lights", "--shade", shade_names, "", NameCase::ignore);
           }) == "--shade: expected dark, light or grey, got 'lights'");
+}
+
+TEST_CASE("the scan for option spellings finds them in literals only") {
+    const std::string code =
+        "// --dt in a comment\n"
+        "/* --pq */ throw_input_error(\"--moves: must be 0..\");\n"
+        "f(\"a periodic box (use --engine classic)\", '\"', \"dt\");\n"
+        "g(\"ops\", \"increase-key\", \"a -- b\", --i, 1'000'000);\n"
+        "h(\"--heuristic: unknown\");\n";
+    CHECK(option_spellings(code) ==
+          std::vector<std::string>{"--moves: must be 0..", "a periodic box (use --engine classic)",
+                                   "--heuristic: unknown"});
+}
+
+TEST_CASE("the simulation library's messages name fields, never command-line options") {
+    namespace fs = std::filesystem;
+    const fs::path root = fs::path(COLLIDE_TESTS_DIR).parent_path();
+    // Moves out of the simulation library with the collision video's program (src/show, #27).
+    const std::vector<fs::path> elsewhere{root / "src/sim/queue_view.cpp"};
+    std::size_t files = 0;
+    for (const fs::path& dir : {root / "src/sim", root / "include/collide/sim"}) {
+        REQUIRE(fs::is_directory(dir));
+        for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+            const fs::path& path = entry.path();
+            if (path.extension() != ".cpp" && path.extension() != ".hpp") continue;
+            if (std::find(elsewhere.begin(), elsewhere.end(), path) != elsewhere.end()) continue;
+            ++files;
+            CAPTURE(path.string());
+            CHECK(option_spellings(test::read_all(path)).empty());
+        }
+    }
+    CHECK(files > 40);
 }

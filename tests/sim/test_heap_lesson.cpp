@@ -1,9 +1,10 @@
-// The animation model of `collide heap` (heap_lesson.hpp): parsing, the steps replayed from the
-// queues' records, captions, lock-step timing, and the final state of every implementation
-// against `collide pq`'s trace (run_trace) for the same operations.
+// The record behind `collide heap` (heap_lesson.hpp): parsing, the steps replayed from the queues'
+// records by kind, and the final state of every implementation against `collide pq`'s trace
+// (run_trace) for the same operations. Its words and timing are tested with collide_show.
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -23,19 +24,16 @@ using collide::test::input_error_message;
 #define CHECK_INPUT_ERROR(expr, part) \
     CHECK(contains(input_error_message([&] { (void)(expr); }), part))
 
-const LessonPacing pacing{0.5, 0.25, 1.0, 2.0};
-
 std::vector<QueueKind> every_kind() {
     return {{QueueFamily::unordered, 0}, {QueueFamily::ordered, 0}, {QueueFamily::binary, 2},
             {QueueFamily::dary, 3},      {QueueFamily::dary, 4},    {QueueFamily::dary, 5},
             {QueueFamily::indexed, 2},   {QueueFamily::indexed, 3}, {QueueFamily::indexed, 4}};
 }
 
-/// The last state the animation shows for each panel.
-std::vector<std::vector<std::string>> final_arrays(const LessonTimeline& timeline) {
-    const LessonFrame last = timeline.frame_at(timeline.duration());
+/// The last state of each panel.
+std::vector<std::vector<std::string>> final_arrays(const LessonRecord& record) {
     std::vector<std::vector<std::string>> out;
-    for (const LessonPanelFrame& p : last.panels) out.push_back(p.state->keys);
+    for (const LessonPanel& p : record.panels()) out.push_back(p.ops.back().end.keys);
     return out;
 }
 
@@ -43,8 +41,8 @@ void check_against_pq_trace(const std::string& ops_text, Orientation orientation
     CAPTURE(ops_text);
     const std::vector<QueueKind> kinds = every_kind();
     const Trace trace = run_trace(parse_trace_ops(ops_text), orientation, kinds);
-    const LessonTimeline timeline =
-        LessonTimeline::operations(parse_lesson_ops(ops_text), kinds, orientation, 1, pacing);
+    const LessonRecord timeline =
+        LessonRecord::operations(parse_lesson_ops(ops_text), kinds, orientation);
     const auto arrays = final_arrays(timeline);
     REQUIRE(arrays.size() == kinds.size());
     for (std::size_t k = 0; k < kinds.size(); ++k) {
@@ -73,13 +71,11 @@ std::string random_ops(std::size_t n, std::uint64_t seed) {
     return out;
 }
 
-bool has_caption(const LessonPanel& panel, const std::string& text) {
-    for (const LessonPanelOp& op : panel.ops) {
-        for (const LessonStep& s : op.steps) {
-            if (s.state.caption == text) return true;
-        }
-    }
-    return false;
+/// The kinds of an operation's steps.
+std::vector<LessonStep::Kind> kinds_of(const LessonPanelOp& op) {
+    std::vector<LessonStep::Kind> out;
+    for (const LessonStep& s : op.steps) out.push_back(s.kind);
+    return out;
 }
 
 }  // namespace
@@ -97,14 +93,15 @@ TEST_CASE("heap lesson: operations parse like collide pq's, plus KEY^NEW") {
 }
 
 TEST_CASE("heap lesson: bad tokens are input errors naming the token and its position") {
-    CHECK_INPUT_ERROR(parse_lesson_ops("P Q ? *"), "--ops: token 3 '?'");
+    CHECK_INPUT_ERROR(parse_lesson_ops("P Q ? *"), "ops: token 3 '?'");
+    CHECK_INPUT_ERROR(parse_lesson_ops("P Q ? *", "--ops"), "--ops: token 3 '?'");
     CHECK_INPUT_ERROR(parse_lesson_ops("5 9 3^"), "token 3 '3^': increase-key is KEY^NEW");
     CHECK_INPUT_ERROR(parse_lesson_ops("5 9 ^4"), "token 3 '^4'");
     CHECK_INPUT_ERROR(parse_lesson_ops("5 X"), "token 2 'X': is a word but the first key '5'");
     CHECK_INPUT_ERROR(parse_lesson_ops("5 9 3^Z"), "token 3 '3^Z': is a word");
-    CHECK_INPUT_ERROR(parse_lesson_ops("   "), "--ops: no operations given");
+    CHECK_INPUT_ERROR(parse_lesson_ops("   "), "ops: no operations given");
     CHECK_INPUT_ERROR(parse_lesson_ops("99999999999999999999"), "integer out of range");
-    CHECK_INPUT_ERROR(parse_sort_keys("S O * T", "--sort"), "--sort: token 3 '*'");
+    CHECK_INPUT_ERROR(parse_sort_keys("S O * T"), "sort: token 3 '*'");
     CHECK_INPUT_ERROR(parse_sort_keys("", "--sort"), "--sort: no keys given");
 }
 
@@ -112,11 +109,14 @@ TEST_CASE("heap lesson: operations a queue cannot do are input errors naming the
     const std::vector<QueueKind> binary{{QueueFamily::binary, 2}};
     const std::vector<QueueKind> indexed{{QueueFamily::indexed, 2}};
     const auto run = [](const char* ops, const std::vector<QueueKind>& kinds) {
-        return LessonTimeline::operations(parse_lesson_ops(ops), kinds, Orientation::max, 1,
-                                          pacing);
+        return LessonRecord::operations(parse_lesson_ops(ops), kinds, Orientation::max);
     };
-    CHECK_INPUT_ERROR(run("P * *", binary), "--ops: token 3 '*': removes from an empty queue");
-    CHECK_INPUT_ERROR(run("5 3 3^12", binary), "token 3 '3^12': increase-key needs --impl indexed");
+    CHECK_INPUT_ERROR(run("P * *", binary), "ops: token 3 '*': removes from an empty queue");
+    CHECK_INPUT_ERROR(run("5 3 3^12", binary), "token 3 '3^12': increase-key needs impl indexed");
+    // The caller names the fields as its user knows them.
+    CHECK_INPUT_ERROR(LessonRecord::operations(parse_lesson_ops("5 3 3^12"), binary,
+                                               Orientation::max, "--ops", "--impl"),
+                      "--ops: token 3 '3^12': increase-key needs --impl indexed");
     CHECK_INPUT_ERROR(run("5 3 4^12", indexed), "token 3 '4^12': key 4 is not in the queue");
     CHECK_INPUT_ERROR(run("5 3 3^1", indexed), "token 3 '3^1': increase-key to a smaller key");
     CHECK_INPUT_ERROR(run("5 3 * 5^9", indexed), "key 5 is not in the queue");
@@ -132,55 +132,72 @@ TEST_CASE("heap lesson: every implementation ends where collide pq's trace ends 
     }
 }
 
-TEST_CASE("heap lesson: the lecture's insert of S into a binary heap, in words") {
+TEST_CASE("heap lesson: the lecture's insert of S into a binary heap, step by step") {
     const std::vector<QueueKind> binary{{QueueFamily::binary, 2}};
-    const LessonTimeline t = LessonTimeline::operations(parse_lesson_ops("T P R N H O A E I G S"),
-                                                        binary, Orientation::max, 1, pacing);
+    const LessonRecord t = LessonRecord::operations(parse_lesson_ops("T P R N H O A E I G S"),
+                                                    binary, Orientation::max);
     const LessonPanel& panel = t.panels().front();
     // The heap T P R N H O A E I G, then S swims up past H and P and stops under T.
     CHECK(panel.ops[9].end.keys ==
           std::vector<std::string>{"T", "P", "R", "N", "H", "O", "A", "E", "I", "G"});
     const LessonPanelOp& insert_s = panel.ops[10];
-    REQUIRE(insert_s.steps.size() == 6);  // appear, (compare, exchange) x 2, compare
-    CHECK(insert_s.steps[0].kind == LessonStep::Kind::appear);
-    CHECK(insert_s.steps[0].state.caption == "insert S at a[11]");
-    CHECK(insert_s.steps[1].state.caption == "insert S at a[11]; S > H: exchange");
-    CHECK(insert_s.steps[2].kind == LessonStep::Kind::exchange);
+    using K = LessonStep::Kind;
+    CHECK(kinds_of(insert_s) ==
+          std::vector<K>{K::appear, K::compare, K::exchange, K::compare, K::exchange, K::compare});
+    CHECK(insert_s.steps[0].i == 10);
+    CHECK(insert_s.steps[0].state.keys.back() == "S");  // already in the array
+    CHECK(insert_s.steps[1].i == 10);
+    CHECK(insert_s.steps[1].j == 4);
+    CHECK(insert_s.steps[1].order > 0);  // S > H
     CHECK(insert_s.steps[2].i == 10);
     CHECK(insert_s.steps[2].j == 4);
-    CHECK(insert_s.steps[3].state.caption == "insert S at a[11]; S > P: exchange");
-    CHECK(insert_s.steps[5].state.caption == "insert S at a[11]; S < T: stop");
+    CHECK(insert_s.steps[2].state.keys[10] == "S");  // the state before the exchange
+    CHECK(insert_s.steps[5].order < 0);              // S < T: stop
     CHECK(insert_s.end.keys ==
           std::vector<std::string>{"T", "S", "R", "N", "P", "O", "A", "E", "I", "G", "H"});
-    CHECK(insert_s.end.caption == "insert S: 3 compares, 2 exchanges");
     CHECK(insert_s.end.compares - panel.ops[9].end.compares == 3);
+    CHECK(insert_s.end.exchanges - panel.ops[9].end.exchanges == 2);
+    CHECK(insert_s.removed.empty());
+    CHECK(t.ops().size() == 11);
+    CHECK(!t.heapsort());
 }
 
-TEST_CASE("heap lesson: remove-max exchanges root and last, removes, then sinks (0-based names)") {
+TEST_CASE("heap lesson: remove-max exchanges root and last, removes, then sinks") {
     const std::vector<QueueKind> binary{{QueueFamily::binary, 2}};
-    const LessonTimeline t = LessonTimeline::operations(parse_lesson_ops("P Q E X A *"), binary,
-                                                        Orientation::max, 0, pacing);
+    const LessonRecord t =
+        LessonRecord::operations(parse_lesson_ops("P Q E X A *"), binary, Orientation::max);
     const LessonPanelOp& remove = t.panels().front().ops.back();
     REQUIRE(remove.steps.size() >= 3);
     CHECK(remove.steps[0].kind == LessonStep::Kind::exchange);
     CHECK(remove.steps[0].i == 0);
     CHECK(remove.steps[1].kind == LessonStep::Kind::remove);
-    CHECK(remove.steps[1].state.caption == "remove max: X leaves a[4]");
+    CHECK(remove.steps[1].i == 4);
+    CHECK(remove.steps[1].state.keys[4] == "X");  // the state before it leaves
     CHECK(remove.steps[2].kind == LessonStep::Kind::compare);
-    CHECK(remove.end.caption.rfind("remove max X: ", 0) == 0);
+    CHECK(remove.removed == "X");
 }
 
-TEST_CASE("heap lesson: the arrays show their scan and their shifts") {
+TEST_CASE("heap lesson: the arrays record their scan and their shifts") {
     const std::vector<QueueKind> arrays{{QueueFamily::unordered, 0}, {QueueFamily::ordered, 0}};
-    const LessonTimeline t = LessonTimeline::operations(parse_lesson_ops("P Q E A *"), arrays,
-                                                        Orientation::max, 1, pacing);
+    const LessonRecord t =
+        LessonRecord::operations(parse_lesson_ops("P Q E A *"), arrays, Orientation::max);
     const LessonPanel& unordered = t.panels()[0];
     const LessonPanel& ordered = t.panels()[1];
-    CHECK(has_caption(unordered, "scan for the max: Q > P, new max Q"));
-    CHECK(has_caption(unordered, "remove max: exchange Q with the last, A"));
-    CHECK(unordered.ops.back().steps.front().kind == LessonStep::Kind::compare);
+    // remove max: the scan compares each slot with the max so far, then exchanges it with the last.
+    const LessonPanelOp& scan = unordered.ops.back();
+    REQUIRE(scan.steps.size() >= 2);
+    CHECK(scan.steps.front().kind == LessonStep::Kind::compare);
+    CHECK(scan.steps.front().best == std::optional<std::size_t>(0));
+    CHECK(scan.steps.front().order > 0);  // Q > P: the new max
+    CHECK(scan.steps[1].best == std::optional<std::size_t>(1));
     CHECK(ordered.shifts);
-    CHECK(has_caption(ordered, "insert E at a[3]; P > E: shift P right"));
+    // insert E into P Q (kept ascending: P, Q): E is compared with Q, Q shifts right, ...
+    const LessonPanelOp& insert_e = ordered.ops[2];
+    CHECK(std::count_if(insert_e.steps.begin(), insert_e.steps.end(), [](const LessonStep& s) {
+              return s.kind == LessonStep::Kind::shift;
+          }) == 2);
+    CHECK(std::none_of(insert_e.steps.begin(), insert_e.steps.end(),
+                       [](const LessonStep& s) { return s.kind == LessonStep::Kind::exchange; }));
     CHECK(ordered.ops.back().steps.size() == 1);  // remove max: the last slot leaves
     CHECK(!unordered.tree);
     CHECK(t.panels().size() == 2);
@@ -188,12 +205,18 @@ TEST_CASE("heap lesson: the arrays show their scan and their shifts") {
 
 TEST_CASE("heap lesson: increase-key through the indexed heap's map") {
     const std::vector<QueueKind> indexed{{QueueFamily::indexed, 2}};
-    const LessonTimeline t = LessonTimeline::operations(parse_lesson_ops("5 9 3 7 * 3^12"), indexed,
-                                                        Orientation::max, 1, pacing);
+    const LessonRecord t =
+        LessonRecord::operations(parse_lesson_ops("5 9 3 7 * 3^12"), indexed, Orientation::max);
     const LessonPanel& panel = t.panels().front();
     const LessonPanelOp& increase = panel.ops.back();
-    REQUIRE(!increase.steps.empty());
+    REQUIRE(increase.steps.size() >= 2);
     CHECK(increase.steps[0].kind == LessonStep::Kind::change);
+    CHECK(increase.steps[0].from == "3");
+    CHECK(increase.steps[0].state.keys[increase.steps[0].i] == "12");
+    // Then the new key against the old one, in its own slot.
+    CHECK(increase.steps[1].kind == LessonStep::Kind::compare);
+    CHECK(increase.steps[1].i == increase.steps[1].j);
+    CHECK(increase.steps[1].order > 0);  // 12 > 3
     CHECK(increase.end.keys.front() == "12");
     // The handles follow their keys: handle 2 (the third insert, key 3) is now 12 at the root.
     CHECK(increase.end.handles.front() == 2);
@@ -203,58 +226,40 @@ TEST_CASE("heap lesson: increase-key through the indexed heap's map") {
 
 TEST_CASE("heap lesson: heapsort builds the heap, then sorts down with the sorted part apart") {
     const std::vector<TraceKey> keys = parse_sort_keys("S O R T E X A M P L E");
-    const LessonTimeline t = LessonTimeline::heapsort(keys, Orientation::max, 1, pacing);
-    REQUIRE(t.op_labels().size() == 2);
+    const LessonRecord t = LessonRecord::heapsort(keys, Orientation::max);
+    CHECK(t.heapsort());
+    REQUIRE(t.ops().size() == 2);
+    CHECK(t.ops()[0].kind == LessonOp::Kind::build);
+    CHECK(t.ops()[1].kind == LessonOp::Kind::sortdown);
     const LessonPanel& panel = t.panels().front();
     CHECK(panel.ops[0].end.keys ==
           std::vector<std::string>{"X", "T", "S", "P", "L", "R", "A", "M", "O", "E", "E"});
     CHECK(panel.ops[0].steps.front().kind == LessonStep::Kind::sink);
-    CHECK(panel.ops[0].steps.front().state.caption == "build the heap: sink E at a[5]");
+    CHECK(panel.ops[0].steps.front().i == 4);   // E at a[5]: the last node with a child
+    CHECK(panel.ops[0].steps.front().j == 11);  // in the whole array
     CHECK(panel.ops[1].end.keys ==
           std::vector<std::string>{"A", "E", "E", "L", "M", "O", "P", "R", "S", "T", "X"});
     CHECK(panel.ops[1].end.heap_size == 0);
-    CHECK(panel.ops[1].steps.front().state.caption ==
-          "sortdown: exchange max X with E at a[11]; X is in place");
-    const LessonTimeline down = LessonTimeline::heapsort(keys, Orientation::min, 0, pacing);
+    // The sortdown starts by exchanging the max with the last, then sinks in a smaller heap.
+    const LessonStep& first = panel.ops[1].steps.front();
+    CHECK(first.kind == LessonStep::Kind::exchange);
+    CHECK(first.i == 0);
+    CHECK(first.j == 10);
+    CHECK(panel.ops[1].steps[1].kind == LessonStep::Kind::sink);
+    CHECK(panel.ops[1].steps[1].j == 10);
+    CHECK(panel.ops[1].steps[1].state.heap_size == 10);
+    const LessonRecord down = LessonRecord::heapsort(keys, Orientation::min);
     CHECK(down.panels().front().ops[1].end.keys ==
           std::vector<std::string>{"X", "T", "S", "R", "P", "O", "M", "L", "E", "E", "A"});
 }
 
-TEST_CASE("heap lesson: panels move in lock-step, each operation paced by its longest panel") {
+TEST_CASE("heap lesson: the record holds the most items any panel holds at once") {
     const std::vector<QueueKind> kinds{{QueueFamily::unordered, 0}, {QueueFamily::binary, 2}};
-    const LessonTimeline t =
-        LessonTimeline::operations(parse_lesson_ops("P Q E *"), kinds, Orientation::max, 1, pacing);
-    double expected = pacing.intro + pacing.outro;
-    for (std::size_t op = 0; op < 4; ++op) {
-        std::size_t steps = 0;
-        for (const LessonPanel& p : t.panels()) steps = std::max(steps, p.ops[op].steps.size());
-        expected += static_cast<double>(steps) * pacing.pace + pacing.pause;
-    }
-    CHECK(t.duration() == doctest::Approx(expected));
-    CHECK(!t.frame_at(0.0).started);
-    CHECK(t.frame_at(0.0).panels[0].state->keys.empty());
-    // The first step of the first operation: both panels show P appearing.
-    const LessonFrame f = t.frame_at(pacing.intro + 0.1);
-    CHECK(f.started);
-    CHECK(f.op == 0);
-    for (const LessonPanelFrame& p : f.panels) {
-        REQUIRE(p.step != nullptr);
-        CHECK(p.step->kind == LessonStep::Kind::appear);
-        CHECK(p.progress == doctest::Approx(0.2));
-    }
-    // Counters never go down.
-    std::uint64_t last = 0;
-    for (double s = 0.0; s <= t.duration(); s += 0.05) {
-        const std::uint64_t c = t.frame_at(s).panels[1].state->compares;
-        CHECK(c >= last);
-        last = c;
-    }
+    const LessonRecord t =
+        LessonRecord::operations(parse_lesson_ops("P Q E * A"), kinds, Orientation::min);
     CHECK(t.capacity() == 3);
-}
-
-TEST_CASE("heap lesson: a pace of zero is refused") {
-    const std::vector<QueueKind> binary{{QueueFamily::binary, 2}};
-    CHECK_INPUT_ERROR(LessonTimeline::operations(parse_lesson_ops("P"), binary, Orientation::max, 1,
-                                                 {0.0, 0.1, 0.0, 0.0}),
-                      "--pace");
+    CHECK(t.orientation() == Orientation::min);
+    REQUIRE(t.ops().size() == 5);
+    CHECK(t.ops()[3].spelling == "*");
+    for (const LessonPanel& p : t.panels()) CHECK(p.ops[3].removed == "E");
 }

@@ -60,13 +60,13 @@ TEST_CASE("parse_queue_kind accepts every documented spelling and round-trips to
     }
 }
 
-TEST_CASE("parse_queue_kind names the option and the bad token") {
+TEST_CASE("parse_queue_kind names the field and the bad token") {
     CHECK(error_message("x") ==
-          "--pq: expected a queue: unordered, ordered, binary, dary:D or indexed[:D], got 'x'");
+          "pq: expected a queue: unordered, ordered, binary, dary:D or indexed[:D], got 'x'");
     CHECK(error_message("dary:65") ==
-          "--pq: expected dary:D with D a whole number from 2 to 64, got 'dary:65'");
+          "pq: expected dary:D with D a whole number from 2 to 64, got 'dary:65'");
     CHECK(error_message("indexed:5") ==
-          "--pq: expected indexed:D with D = 2, 3, 4 or 8 (or indexed alone: D = 4), got "
+          "pq: expected indexed:D with D = 2, 3, 4 or 8 (or indexed alone: D = 4), got "
           "'indexed:5'");
     CHECK(error_message("dary").find("'dary'") != std::string::npos);
     CHECK(error_message("dary:").find("'dary:'") != std::string::npos);

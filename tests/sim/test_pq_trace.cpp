@@ -97,10 +97,10 @@ TEST_CASE("numbers compare as numbers, words byte by byte") {
 
 TEST_CASE("bad operation strings name the offending token") {
     CHECK(parse_error("P Q ! *") ==
-          "--ops: token 3 '!': not a key (a word of letters or an integer) nor '*' (remove)");
+          "ops: token 3 '!': not a key (a word of letters or an integer) nor '*' (remove)");
     CHECK(parse_error("P Q1").find("token 2 'Q1'") != std::string::npos);
     CHECK(parse_error("P 3 Q").rfind(
-              "--ops: token 2 '3': is a number but the first key 'P' is a word", 0) == 0);
+              "ops: token 2 '3': is a number but the first key 'P' is a word", 0) == 0);
     CHECK(parse_error("* 4 x").find("token 3 'x': is a word but the first key '4' is a number") !=
           std::string::npos);
     CHECK(parse_error("99999999999999999999")
@@ -117,7 +117,7 @@ TEST_CASE("removing from an empty queue is an input error naming the token") {
         FAIL("no error");
     } catch (const collide::Error& e) {
         CHECK(e.kind() == collide::ErrorKind::input);
-        CHECK(std::string(e.what()) == "--ops: token 3 '*': removes from an empty queue");
+        CHECK(std::string(e.what()) == "ops: token 3 '*': removes from an empty queue");
     }
 }
 
@@ -167,7 +167,7 @@ TEST_CASE("an input error in the trace comes before the first row") {
         FAIL("no error");
     } catch (const collide::Error& e) {
         CHECK(e.kind() == collide::ErrorKind::input);
-        CHECK(std::string(e.what()) == "--ops: token 5 '*': removes from an empty queue");
+        CHECK(std::string(e.what()) == "ops: token 5 '*': removes from an empty queue");
     }
     CHECK(rows == 0);
 }
@@ -177,10 +177,10 @@ TEST_CASE("a trace is at most max_trace_operations operations with words of boun
     for (std::size_t i = 0; i < max_trace_operations; ++i) at_limit += "A ";
     CHECK(parse_trace_ops(at_limit).size() == max_trace_operations);
     CHECK(parse_error(at_limit + "*") ==
-          "--ops: 10001 operations; at most 10000 (a trace is a table to read, one row per "
+          "ops: 10001 operations; at most 10000 (a trace is a table to read, one row per "
           "operation)");
     const std::string longest(max_trace_key_length, 'x');
     CHECK(parse_trace_ops("A " + longest).back().key.word == longest);
     CHECK(parse_error("A " + longest + "y") ==
-          "--ops: token 2 '" + longest + "...': a word of 33 letters; at most 32");
+          "ops: token 2 '" + longest + "...': a word of 33 letters; at most 32");
 }

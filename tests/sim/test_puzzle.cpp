@@ -151,7 +151,7 @@ TEST_CASE("puzzle board: heuristics") {
     CHECK(estimate(Heuristic::hamming, b) == 5);
     CHECK(parse_heuristic("hamming") == Heuristic::hamming);
     CHECK(contains(input_error_message([] { (void)parse_heuristic("euclid"); }),
-                   "--heuristic: unknown heuristic 'euclid'"));
+                   "heuristic: unknown heuristic 'euclid'"));
     // Never more than the true distance (so A* stays optimal).
     for (std::uint64_t seed = 0; seed < 30; ++seed) {
         const Board r = random_board(3, 25, seed);
@@ -169,7 +169,10 @@ TEST_CASE("puzzle board: random boards are deterministic and bounded") {
     for (std::uint64_t seed = 0; seed < 20; ++seed) {
         CHECK(reference_distances().at(digits(random_board(3, 12, seed))) <= 12);
     }
-    CHECK(contains(input_error_message([] { (void)random_board(3, -1, 0); }), "--moves"));
+    CHECK(
+        contains(input_error_message([] { (void)random_board(3, -1, 0); }), "moves: must be 0.."));
+    CHECK(contains(input_error_message([] { (void)random_board(3, -1, 0, "--moves"); }),
+                   "--moves: must be 0.."));
     CHECK(contains(input_error_message([] { (void)random_board(5, 3, 0); }), "side 5"));
 }
 

@@ -82,6 +82,16 @@ bool same_snapshots(const Snapshot& a, const Snapshot& b) {
 
 }  // namespace
 
+TEST_CASE("options: a bad dt is an input error naming the field, as its caller spells it") {
+    EngineOptions options = time_options(0.0);
+    try {
+        options.validate("--dt");
+        FAIL("accepted a bad dt");
+    } catch (const Error& e) {
+        CHECK(std::string(e.what()) == "--dt: expected a finite time step > 0, got '0'");
+    }
+}
+
 TEST_CASE("options: a bad dt is an input error naming the option and the value") {
     const Scene scene = make_scene(1.0, 1.0, {make_disc({0.5, 0.5}, {0.1, 0.0}, 0.05)});
     for (double dt : {0.0, -0.01, std::nan(""), static_cast<double>(INFINITY)}) {
@@ -91,7 +101,7 @@ TEST_CASE("options: a bad dt is an input error naming the option and the value")
             FAIL("accepted a bad dt");
         } catch (const Error& e) {
             CHECK(e.kind() == ErrorKind::input);
-            CHECK(std::string(e.what()).rfind("--dt: expected a finite time step > 0, got '", 0) ==
+            CHECK(std::string(e.what()).rfind("dt: expected a finite time step > 0, got '", 0) ==
                   0);
         }
     }

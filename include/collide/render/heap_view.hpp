@@ -8,12 +8,13 @@
 /// operations on top with the current one marked. Rendered offscreen with OpenGL like the
 /// collision video (same context backends, shaders and text blending), to RGBA images.
 ///
-/// The module sees plain values only (no simulation types): the app fills a HeapFrameView from
-/// the animation model (collide/sim/pq/heap_lesson.hpp) for every frame.
+/// The module sees plain values only (no simulation types): the presentation layer
+/// (collide/show/heap_lesson.hpp) fills a view::HeapFrameView (collide/view/heap.hpp) for every
+/// frame.
 ///
 ///     HeapViewConfig config; config.width = 1280; config.height = 720;
 ///     HeapRenderer renderer(config);
-///     HeapFrameView frame; frame.tokens = {"P", "Q", "*"}; frame.current_token = 1;
+///     view::HeapFrameView frame; frame.tokens = {"P", "Q", "*"}; frame.current_token = 1;
 ///     frame.panels.push_back(panel);   // slots, marks, an exchange under way, caption, counters
 ///     Image image = renderer.render(frame);
 
@@ -27,70 +28,9 @@
 #include "collide/image.hpp"
 #include "collide/render/context.hpp"
 #include "collide/render/renderer.hpp"
+#include "collide/view/heap.hpp"
 
 namespace collide::render {
-
-/// How one key is highlighted.
-enum class SlotMark : std::uint8_t {
-    plain,
-    compared,  ///< one of the two keys being compared
-    moving,    ///< one of the two keys being exchanged (or shifted)
-    inserted,  ///< a key that just appeared
-    changed,   ///< a key just changed (increase-key)
-    best,      ///< the unordered array's scan: the max (min) so far
-    leaving,   ///< the key being removed (fades out over HeapPanelView::fade)
-    sinking,   ///< heapsort's construction: the root of the next sink
-};
-
-/// One slot of a queue's array (and the node of the tree that holds the same key).
-struct HeapSlotView {
-    std::string key;
-    SlotMark mark = SlotMark::plain;
-};
-
-/// Two slots whose keys are on their way to each other's place: at t = 0 each is in its own
-/// slot, at t = 1 in the other's (the app eases t).
-struct HeapSwapView {
-    std::size_t a = 0;
-    std::size_t b = 0;
-    float t = 0.0F;
-};
-
-/// One row of the indexed heap's map: a key and the array index it sits at.
-struct HeapMapRow {
-    std::string key;
-    std::string index;     ///< as shown, e.g. "3"
-    bool updated = false;  ///< its index changes in the exchange under way
-};
-
-/// One queue.
-struct HeapPanelView {
-    std::string title;                  ///< "binary heap (max)"
-    std::vector<std::string> counters;  ///< e.g. {"compares 12", "exchanges 5"}
-    std::string caption;                ///< what happens, wrapped to the panel's width
-    bool tree = true;                   ///< a heap: tree above the array; false: array only
-    unsigned arity = 2;                 ///< children per node (tree only), >= 2
-    /// Slots the layout holds (the most keys the queue ever holds in this video), so that nodes
-    /// keep their places for the whole video. >= slots.size().
-    std::size_t capacity = 0;
-    std::vector<HeapSlotView> slots;  ///< the array, slot 0 first
-    /// Slots [heap_size, slots.size()) are heapsort's sorted part: set apart in the array, not
-    /// in the tree. heap_size >= slots.size() means none.
-    std::size_t heap_size = SIZE_MAX;
-    std::optional<HeapSwapView> swap;  ///< an exchange under way
-    float fade = 1.0F;                 ///< opacity of inserted (fading in) / leaving keys, [0, 1]
-    int index_base = 1;                ///< the index shown under slot 0
-    bool show_map = false;             ///< indexed heap: draw `map` beside the tree
-    std::vector<HeapMapRow> map;
-};
-
-/// One frame.
-struct HeapFrameView {
-    std::vector<std::string> tokens;  ///< the operations, shown in a strip on top
-    /// The operation under way (marked); tokens before it are done. Unset: none yet.
-    std::optional<std::size_t> current_token;
-    std::vector<HeapPanelView> panels;  ///< 1 to max_heap_panels, left to right, top to bottom
-};
 
 /// Everything fixed for a whole video.
 struct HeapViewConfig {
@@ -131,8 +71,8 @@ class HeapRenderer {
     /// Draws one frame, width x height RGBA8, rows top-down, into `out` (resized as needed).
     /// Throws Error(input) for no panels, more than max_heap_panels, more slots than a panel's
     /// capacity or an exchange of slots that do not exist.
-    void render(const HeapFrameView& frame, Image& out);
-    [[nodiscard]] Image render(const HeapFrameView& frame);
+    void render(const view::HeapFrameView& frame, Image& out);
+    [[nodiscard]] Image render(const view::HeapFrameView& frame);
 
   private:
     struct Impl;

@@ -111,17 +111,17 @@ enum class OverlapDetection : std::uint8_t {
 
 /// "fast", "classic" or "time". Throws Error(input) naming `option` and listing the names.
 [[nodiscard]] EngineKind parse_engine_kind(std::string_view text,
-                                           std::string_view option = "--engine");
+                                           std::string_view option = "engine");
 /// For commands that run an event-driven engine (render's event panel, bench engine): "fast" or
 /// "classic"; "time" is refused like an unknown name, naming `option`.
 [[nodiscard]] EngineKind parse_event_engine_kind(std::string_view text,
-                                                 std::string_view option = "--engine");
+                                                 std::string_view option = "engine");
 /// The name parse_engine_kind reads ("fast", "classic", "time").
 [[nodiscard]] std::string_view to_string(EngineKind kind) noexcept;
 
 /// "all-pairs" or "grid". Throws Error(input) naming `option` and listing the names.
 [[nodiscard]] OverlapDetection parse_overlap_detection(std::string_view text,
-                                                       std::string_view option = "--td-detect");
+                                                       std::string_view option = "td_detect");
 /// The name parse_overlap_detection reads ("all-pairs", "grid").
 [[nodiscard]] std::string_view to_string(OverlapDetection detection) noexcept;
 
@@ -132,8 +132,9 @@ struct EngineOptions {
     double dt = 0.01;  ///< time-driven quantum
     OverlapDetection td_detect = OverlapDetection::all_pairs;  ///< time-driven overlap checks
 
-    /// Throws Error(input) naming --dt when dt is not finite and > 0 (the names are types already).
-    void validate() const;
+    /// Throws Error(input) naming `dt_field` when dt is not finite and > 0 (the names are types
+    /// already).
+    void validate(std::string_view dt_field = "dt") const;
 };
 
 }  // namespace collide
@@ -141,7 +142,7 @@ struct EngineOptions {
 namespace collide {
 
 /// Builds the engine named by options.engine for the scene (validated by the caller).
-/// Throws Error(input) naming --dt for a bad time step (EngineOptions::validate).
+/// Throws Error(input) naming `dt` for a bad time step (EngineOptions::validate).
 [[nodiscard]] std::unique_ptr<Engine> make_engine(const Scene& scene, const EngineOptions& options);
 
 }  // namespace collide

@@ -48,6 +48,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -57,9 +58,9 @@
 
 namespace collide {
 
-/// Throws Error(input) unless options.dt is finite and > 0 (names `--dt`). The time-driven engine
-/// calls it on construction.
-void validate_time_driven_options(const EngineOptions& options);
+/// Throws Error(input) unless options.dt is finite and > 0, naming `dt_field`. The time-driven
+/// engine calls it on construction.
+void validate_time_driven_options(const EngineOptions& options, std::string_view dt_field = "dt");
 
 }  // namespace collide
 
@@ -83,7 +84,7 @@ class TimeEngine final : public Engine {
     static constexpr std::size_t max_markers_per_frame = 100000;
 
     /// The scene must be valid (positive radii and masses, finite values). Throws Error(input)
-    /// naming `--dt` for a bad time step (validate_time_driven_options).
+    /// naming `dt` for a bad time step (validate_time_driven_options).
     TimeEngine(const Scene& scene, const EngineOptions& options);
     ~TimeEngine() override;
 

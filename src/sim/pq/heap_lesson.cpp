@@ -25,48 +25,34 @@ using tokens::is_integer;
 using tokens::key_of;
 using tokens::KeyKindCheck;
 
-[[noreturn]] void reject_token(std::string_view option, std::size_t token,
-                               std::string_view spelling, const std::string& why) {
-    tokens::reject(option, token, spelling, why);
-}
-
-// ------------------------------------------------------------------------------------ captions
-
-std::string slot_name(std::size_t i, int base) {
-    return "a[" + std::to_string(static_cast<long long>(i) + base) + "]";
-}
-
-/// "<", ">" or "=": how a compares to b as keys.
-const char* relation(const std::string& a, const std::string& b, bool numeric) {
-    const auto less = [numeric](const std::string& x, const std::string& y) {
-        return numeric ? std::stoll(x) < std::stoll(y) : x < y;
-    };
-    if (less(a, b)) return "<";
-    if (less(b, a)) return ">";
-    return "=";
-}
-
-std::string plural(std::uint64_t n, const char* one, const char* many) {
-    return std::to_string(n) + " " + (n == 1 ? one : many);
+[[noreturn]] void reject_token(std::string_view field, std::size_t token, std::string_view spelling,
+                               const std::string& why) {
+    tokens::reject(field, token, spelling, why);
 }
 
 // ------------------------------------------------------------------------------------ replay
 
+/// How key a orders against key b: < 0, 0 or > 0 (numerically for integer keys).
+int order_of(const std::string& a, const std::string& b, bool numeric) {
+    const auto less = [numeric](const std::string& x, const std::string& y) {
+        return numeric ? std::stoll(x) < std::stoll(y) : x < y;
+    };
+    if (less(a, b)) return -1;
+    if (less(b, a)) return 1;
+    return 0;
+}
+
 /// Turns one panel's record into steps, keeping the array the record implies.
 class Replayer {
   public:
-    Replayer(LessonPanel& panel, Orientation orientation, int base, bool numeric)
-        : panel_(panel), max_(orientation == Orientation::max), base_(base), numeric_(numeric) {}
+    Replayer(LessonPanel& panel, Orientation orientation, bool numeric)
+        : panel_(panel), max_(orientation == Orientation::max), numeric_(numeric) {}
 
     LessonState& state() { return state_; }
 
-    void begin_op(std::string prefix) {
-        prefix_ = std::move(prefix);
+    void begin_op() {
         steps_.clear();
-        op_compares_ = state_.compares;
-        op_exchanges_ = state_.exchanges;
         best_.reset();
-        sinking_.reset();
     }
 
     void appear(const std::string& key, std::size_t handle) {
@@ -75,20 +61,13 @@ class Replayer {
             state_.handles.push_back(handle);
         state_.heap_size = state_.keys.size();
         const std::size_t i = state_.keys.size() - 1;
-        prefix_ += " at " + slot_name(i, base_);
-        std::string what = prefix_;
-        if (panel_.kind.family == QueueFamily::unordered) what += ", the end: nothing else to do";
-        add_step(LessonStep::Kind::appear, i, i, what);
+        add_step(LessonStep::Kind::appear, i, i);
     }
 
     void change(std::size_t i, const std::string& new_key) {
-        const std::string old = state_.keys[i];
-        changed_from_ = old;
+        changed_from_ = state_.keys[i];
         state_.keys[i] = new_key;
-        const std::string slot = slot_name(i, base_);
-        std::string what = prefix_ + ": the map says " + old + " is at " + slot + "; set " + slot +
-                           " = " + new_key;
-        add_step(LessonStep::Kind::change, i, i, what);
+        add_step(LessonStep::Kind::change, i, i).from = changed_from_;
     }
 
     void apply(const QueueEvent& e) {
@@ -104,162 +83,76 @@ class Replayer {
                 remove(e.i);
                 break;
             case QueueEvent::Kind::sink:
-                sink(e.i, e.j);
+                state_.heap_size = e.j;
+                add_step(LessonStep::Kind::sink, e.i, e.j);
                 break;
         }
     }
 
     /// Ends the operation: checks the replayed array against the queue's and stores the steps.
-    void end_op(const std::vector<std::string>& actual, std::string_view summary_head) {
+    void end_op(const std::vector<std::string>& actual, std::string removed = {}) {
         if (actual != state_.keys) {
-            throw_runtime_error("heap lesson: the record of " + panel_.title +
+            throw_runtime_error("heap lesson: the record of " + to_string(panel_.kind) +
                                 " does not reproduce its array (a bug)");
         }
         LessonPanelOp op;
         op.steps = std::move(steps_);
         op.end = state_;
-        const std::uint64_t c = state_.compares - op_compares_;
-        const std::uint64_t x = state_.exchanges - op_exchanges_;
-        op.end.caption =
-            std::string(summary_head) + ": " + plural(c, "compare", "compares") + ", " +
-            plural(x, panel_.shifts ? "shift" : "exchange", panel_.shifts ? "shifts" : "exchanges");
+        op.removed = std::move(removed);
         panel_.ops.push_back(std::move(op));
         steps_.clear();
     }
 
   private:
-    [[nodiscard]] const char* top_word() const { return max_ ? "max" : "min"; }
-    [[nodiscard]] const char* child_word() const { return max_ ? "larger" : "smaller"; }
-    [[nodiscard]] bool comes_first(const std::string& a, const std::string& b) const {
-        const std::string r = relation(a, b, numeric_);
-        return max_ ? r == ">" : r == "<";
-    }
-    [[nodiscard]] std::string vs(const std::string& a, const std::string& b) const {
-        return a + " " + relation(a, b, numeric_) + " " + b;
-    }
-    [[nodiscard]] std::size_t parent(std::size_t i) const { return (i - 1) / panel_.arity; }
-
-    void add_step(LessonStep::Kind kind, std::size_t i, std::size_t j, std::string caption) {
+    LessonStep& add_step(LessonStep::Kind kind, std::size_t i, std::size_t j) {
         LessonStep step;
         step.kind = kind;
         step.i = i;
         step.j = j;
         step.best = best_;
         step.state = state_;
-        step.state.caption = std::move(caption);
         steps_.push_back(std::move(step));
+        return steps_.back();
     }
 
     void compare(std::size_t i, std::size_t j) {
         ++state_.compares;
         const std::string& a = state_.keys[i];
-        const std::string& b = state_.keys[j];
-        std::string what;
-        switch (panel_.kind.family) {
-            case QueueFamily::unordered: {
-                // best_index: slot i against the best so far, j.
-                const bool better = comes_first(a, b);
-                what = std::string("scan for the ") + top_word() + ": " + vs(a, b) +
-                       (better ? ", new " + std::string(top_word()) + " " + a : "");
-                best_ = j;
-                add_step(LessonStep::Kind::compare, i, j, what);
-                if (better) best_ = i;
-                return;
-            }
-            case QueueFamily::ordered: {
-                // The key being inserted (slot i) against its left neighbour (slot j).
-                const bool shift = comes_first(b, a);
-                what = prefix_ + "; " + vs(b, a) +
-                       (shift ? ": shift " + b + " right"
-                              : ": stop, " + a + " stays at " + slot_name(i, base_));
-                break;
-            }
-            default:
-                what = heap_compare_caption(i, j, a, b);
-                break;
+        const std::string& b = i == j ? changed_from_ : state_.keys[j];
+        const int order = order_of(a, b, numeric_);
+        if (panel_.kind.family == QueueFamily::unordered) {
+            // best_index: slot i against the best so far, j.
+            best_ = j;
+            add_step(LessonStep::Kind::compare, i, j).order = order;
+            if (max_ ? order > 0 : order < 0) best_ = i;
+            return;
         }
-        add_step(LessonStep::Kind::compare, i, j, what);
-    }
-
-    std::string heap_compare_caption(std::size_t i, std::size_t j, const std::string& a,
-                                     const std::string& b) const {
-        if (i == j) {  // increase-key: the new key against the old one
-            return prefix_ + "; " + vs(a, changed_from_) +
-                   (max_ ? ": a larger key may have to swim up"
-                         : ": a larger key may have to sink");
-        }
-        const bool siblings = i > 0 && j > 0 && parent(i) == parent(j);
-        if (siblings) {
-            const std::string who = sinking_ ? "sink " + *sinking_ + ": " : "";
-            return prefix_ + "; " + who + child_word() + " child? " + vs(a, b);
-        }
-        // i is the moving key; j its parent (swim) or its best child (sink).
-        const bool up = j < i;
-        const bool moves = up ? comes_first(a, b) : comes_first(b, a);
-        const std::string who = !up && sinking_ ? "sink " + *sinking_ + ": " : "";
-        return prefix_ + "; " + who + vs(a, b) + (moves ? ": exchange" : ": stop");
+        add_step(LessonStep::Kind::compare, i, j).order = order;
     }
 
     void exchange(std::size_t i, std::size_t j, bool shift) {
         ++state_.exchanges;
-        const std::string& a = state_.keys[i];
-        const std::string& b = state_.keys[j];
-        std::string what;
-        if (shift) {
-            what = prefix_ + "; shift " + a + " right to " + slot_name(j, base_);
-        } else if (panel_.kind.family == QueueFamily::unordered) {
-            what = i == j ? std::string("remove ") + top_word() + ": " + a + " is already last"
-                          : std::string("remove ") + top_word() + ": exchange " + a +
-                                " with the last, " + b;
-        } else if (prefix_ == "sortdown" && i == 0) {
-            what = "sortdown: exchange " + std::string(top_word()) + " " + a + " with " + b +
-                   " at " + slot_name(j, base_) + "; " + a + " is in place";
-            sinking_ = b;
-        } else if (i == j) {
-            what = prefix_ + ": " + a + " is the only item";
-        } else if (i == 0 && j + 1 == state_.keys.size() && steps_.empty()) {
-            what = prefix_ + ": exchange the root " + a + " with the last, " + b;
-            sinking_ = b;
-        } else {
-            what = prefix_ + "; exchange " + a + " and " + b;
-        }
-        add_step(LessonStep::Kind::exchange, i, j, what);
+        add_step(shift ? LessonStep::Kind::shift : LessonStep::Kind::exchange, i, j);
         std::swap(state_.keys[i], state_.keys[j]);
         if (!state_.handles.empty()) std::swap(state_.handles[i], state_.handles[j]);
         if (best_ == j) best_ = i;
     }
 
     void remove(std::size_t i) {
-        const std::string key = state_.keys[i];
         best_.reset();
-        add_step(LessonStep::Kind::remove, i, i,
-                 prefix_ + ": " + key + " leaves " + slot_name(i, base_));
+        add_step(LessonStep::Kind::remove, i, i);
         state_.keys.pop_back();
         if (!state_.handles.empty()) state_.handles.pop_back();
         state_.heap_size = state_.keys.size();
     }
 
-    void sink(std::size_t i, std::size_t heap_size) {
-        state_.heap_size = heap_size;
-        sinking_ = state_.keys[i];
-        if (prefix_ == "build the heap") {
-            add_step(LessonStep::Kind::sink, i, i,
-                     "build the heap: sink " + state_.keys[i] + " at " + slot_name(i, base_));
-        }
-    }
-
     LessonPanel& panel_;
     bool max_;
-    int base_;
     bool numeric_;
     LessonState state_;
-    std::string prefix_;
     std::vector<LessonStep> steps_;
-    std::uint64_t op_compares_ = 0;
-    std::uint64_t op_exchanges_ = 0;
     std::optional<std::size_t> best_;
-    std::optional<std::string> sinking_;  ///< the key a sink moves down
-    std::string changed_from_;            ///< increase-key: the key before
+    std::string changed_from_;  ///< increase-key: the key before
 };
 
 // ------------------------------------------------------------------------------------ running
@@ -270,52 +163,22 @@ std::vector<std::string> texts(const auto& keys) {
     return out;
 }
 
-std::string panel_title(const QueueKind& kind) {
-    switch (kind.family) {
-        case QueueFamily::unordered:
-            return "unordered array";
-        case QueueFamily::ordered:
-            return "ordered array";
-        case QueueFamily::binary:
-            return "binary heap";
-        case QueueFamily::dary:
-            return kind.d == 2 ? "binary heap" : std::to_string(kind.d) + "-heap";
-        case QueueFamily::indexed:
-            return "indexed " +
-                   (kind.d == 2 ? std::string("binary heap") : std::to_string(kind.d) + "-heap");
-    }
-    return to_string(kind);
-}
-
-std::string op_prefix(const LessonOp& op, Orientation orientation) {
-    switch (op.kind) {
-        case LessonOp::Kind::insert:
-            return "insert " + op.key.text();
-        case LessonOp::Kind::remove:
-            return orientation == Orientation::max ? "remove max" : "remove min";
-        case LessonOp::Kind::increase:
-            return "increase " + op.key.text() + " to " + op.new_key.text();
-    }
-    return "";
-}
-
 /// What every queue does for one panel, whatever its type: push, pop, the array, the record.
 template <class Q>
-void run_plain(Q q, std::vector<QueueEvent>& log, std::span<const LessonOp> ops,
-               Orientation orientation, Replayer& replay) {
+void run_plain(Q q, std::vector<QueueEvent>& log, std::span<const LessonOp> ops, Replayer& replay) {
     for (const LessonOp& op : ops) {
-        replay.begin_op(op_prefix(op, orientation));
-        std::string head = op_prefix(op, orientation);
+        replay.begin_op();
+        std::string removed;
         if (op.kind == LessonOp::Kind::insert) {
             replay.appear(op.key.text(), 0);
             q.push(op.key);
         } else {
-            head += " " + q.pop().text();
+            removed = q.pop().text();
         }
         for (const QueueEvent& e : log) replay.apply(e);
         log.clear();
         const auto array = q.array();
-        replay.end_op(texts(array), head);
+        replay.end_op(texts(array), std::move(removed));
     }
 }
 
@@ -327,15 +190,15 @@ void run_indexed(std::vector<QueueEvent>& log, std::span<const LessonOp> ops, Re
     Heap heap(inserts, std::less<TraceKey>{}, QueueRecorder(&log));
     std::vector<TraceKey> key_of;  // by handle: the key it was inserted or raised to
     for (const LessonOp& op : ops) {
-        replay.begin_op(op_prefix(op, O));
-        std::string head = op_prefix(op, O);
+        replay.begin_op();
+        std::string removed;
         if (op.kind == LessonOp::Kind::insert) {
             const auto h = static_cast<std::uint32_t>(key_of.size());
             key_of.push_back(op.key);
             replay.appear(op.key.text(), h);
             heap.push(h, op.key);
         } else if (op.kind == LessonOp::Kind::remove) {
-            head += " " + heap.top_key().text();
+            removed = heap.top_key().text();
             heap.pop();
         } else {
             std::uint32_t h = 0;
@@ -352,38 +215,38 @@ void run_indexed(std::vector<QueueEvent>& log, std::span<const LessonOp> ops, Re
         log.clear();
         std::vector<std::string> array;
         for (std::uint32_t h : heap.array()) array.push_back(heap.key(h).text());
-        replay.end_op(array, head);
+        replay.end_op(array, std::move(removed));
     }
 }
 
 template <Orientation O>
-void run_panel(const QueueKind& kind, std::span<const LessonOp> ops, Replayer& replay) {
+void run_panel(const QueueKind& kind, std::span<const LessonOp> ops, std::string_view impl_field,
+               Replayer& replay) {
     std::vector<QueueEvent> log;
     const QueueRecorder rec(&log);
     using K = TraceKey;
     using L = std::less<TraceKey>;
     switch (kind.family) {
         case QueueFamily::unordered:
-            return run_plain(UnorderedArrayPQ<K, O, L, QueueRecorder>(L{}, rec), log, ops, O,
-                             replay);
+            return run_plain(UnorderedArrayPQ<K, O, L, QueueRecorder>(L{}, rec), log, ops, replay);
         case QueueFamily::ordered:
-            return run_plain(OrderedArrayPQ<K, O, L, QueueRecorder>(L{}, rec), log, ops, O, replay);
+            return run_plain(OrderedArrayPQ<K, O, L, QueueRecorder>(L{}, rec), log, ops, replay);
         case QueueFamily::binary:
-            return run_plain(DaryHeap<K, O, 2, L, QueueRecorder>(L{}, rec), log, ops, O, replay);
+            return run_plain(DaryHeap<K, O, 2, L, QueueRecorder>(L{}, rec), log, ops, replay);
         case QueueFamily::dary:
             switch (kind.d) {
                 case 2:
-                    return run_plain(DaryHeap<K, O, 2, L, QueueRecorder>(L{}, rec), log, ops, O,
+                    return run_plain(DaryHeap<K, O, 2, L, QueueRecorder>(L{}, rec), log, ops,
                                      replay);
                 case 3:
-                    return run_plain(DaryHeap<K, O, 3, L, QueueRecorder>(L{}, rec), log, ops, O,
+                    return run_plain(DaryHeap<K, O, 3, L, QueueRecorder>(L{}, rec), log, ops,
                                      replay);
                 case 4:
-                    return run_plain(DaryHeap<K, O, 4, L, QueueRecorder>(L{}, rec), log, ops, O,
+                    return run_plain(DaryHeap<K, O, 4, L, QueueRecorder>(L{}, rec), log, ops,
                                      replay);
                 default:
                     return run_plain(DaryHeap<K, O, 0, L, QueueRecorder>(kind.d, L{}, rec), log,
-                                     ops, O, replay);
+                                     ops, replay);
             }
         case QueueFamily::indexed:
             switch (kind.d) {
@@ -400,13 +263,14 @@ void run_panel(const QueueKind& kind, std::span<const LessonOp> ops, Replayer& r
             }
             break;
     }
-    throw_input_error("--impl: unsupported queue '" + to_string(kind) + "'");
+    throw_input_error(std::string(impl_field) + ": unsupported queue '" + to_string(kind) + "'");
 }
 
 /// Input errors a queue would only meet half-way: removal from an empty queue, increase-key
 /// without `indexed`, of an absent key, or to a smaller key. Checked once on a reference model.
 void check_operations(std::span<const LessonOp> ops, std::span<const QueueKind> impls,
-                      Orientation orientation, std::string_view option) {
+                      Orientation orientation, std::string_view field,
+                      std::string_view impl_field) {
     std::vector<TraceKey> live;  // insertion order
     const bool all_indexed = std::all_of(impls.begin(), impls.end(), [](const QueueKind& k) {
         return k.family == QueueFamily::indexed;
@@ -418,7 +282,7 @@ void check_operations(std::span<const LessonOp> ops, std::span<const QueueKind> 
                 break;
             case LessonOp::Kind::remove: {
                 if (live.empty())
-                    reject_token(option, op.token, op.spelling, "removes from an empty queue");
+                    reject_token(field, op.token, op.spelling, "removes from an empty queue");
                 const auto next = orientation == Orientation::max
                                       ? std::max_element(live.begin(), live.end())
                                       : std::min_element(live.begin(), live.end());
@@ -427,23 +291,27 @@ void check_operations(std::span<const LessonOp> ops, std::span<const QueueKind> 
             }
             case LessonOp::Kind::increase: {
                 if (!all_indexed) {
-                    reject_token(option, op.token, op.spelling,
-                                 "increase-key needs --impl indexed (only the indexed heap finds a "
-                                 "key through its map)");
+                    reject_token(field, op.token, op.spelling,
+                                 "increase-key needs " + std::string(impl_field) +
+                                     " indexed (only the indexed heap finds a key through its "
+                                     "map)");
                 }
                 const auto it = std::find(live.begin(), live.end(), op.key);
                 if (it == live.end()) {
-                    reject_token(option, op.token, op.spelling,
+                    reject_token(field, op.token, op.spelling,
                                  "key " + op.key.text() + " is not in the queue");
                 }
                 if (op.new_key < op.key) {
-                    reject_token(option, op.token, op.spelling,
+                    reject_token(field, op.token, op.spelling,
                                  "increase-key to a smaller key (" + op.new_key.text() + " < " +
                                      op.key.text() + ")");
                 }
                 *it = op.new_key;
                 break;
             }
+            case LessonOp::Kind::build:
+            case LessonOp::Kind::sortdown:
+                throw_runtime_error("heap lesson: heapsort's phases are not operations (a bug)");
         }
     }
 }
@@ -468,12 +336,12 @@ std::size_t most_items(const LessonPanel& panel) {
 
 // ------------------------------------------------------------------------------------ parsing
 
-std::vector<LessonOp> parse_lesson_ops(std::string_view text, std::string_view option) {
+std::vector<LessonOp> parse_lesson_ops(std::string_view text, std::string_view field) {
     const std::vector<std::string_view> words = tokens::split(text);
     if (words.empty())
-        throw_input_error(std::string(option) + ": no operations given (e.g. \"P Q E * X\")");
+        throw_input_error(std::string(field) + ": no operations given (e.g. \"P Q E * X\")");
     std::vector<LessonOp> out;
-    KeyKindCheck kinds(option);
+    KeyKindCheck kinds(field);
     for (std::size_t t = 0; t < words.size(); ++t) {
         LessonOp op;
         op.token = t + 1;
@@ -486,7 +354,7 @@ std::vector<LessonOp> parse_lesson_ops(std::string_view text, std::string_view o
             const auto key = key_of(s.substr(0, caret));
             const auto new_key = key_of(s.substr(caret + 1));
             if (!key || !new_key) {
-                reject_token(option, op.token, s,
+                reject_token(field, op.token, s,
                              "increase-key is KEY^NEW with two keys, e.g. 3^12 or E^Z");
             }
             op.kind = LessonOp::Kind::increase;
@@ -498,7 +366,7 @@ std::vector<LessonOp> parse_lesson_ops(std::string_view text, std::string_view o
             op.key = *key;
             kinds.check(op.key, op.token, s);
         } else {
-            reject_token(option, op.token, s,
+            reject_token(field, op.token, s,
                          is_integer(s) ? "integer out of range"
                                        : "not a key (a word of letters or an integer), '*' "
                                          "(remove) nor KEY^NEW (increase-key)");
@@ -508,16 +376,16 @@ std::vector<LessonOp> parse_lesson_ops(std::string_view text, std::string_view o
     return out;
 }
 
-std::vector<TraceKey> parse_sort_keys(std::string_view text, std::string_view option) {
+std::vector<TraceKey> parse_sort_keys(std::string_view text, std::string_view field) {
     const std::vector<std::string_view> words = tokens::split(text);
     if (words.empty())
-        throw_input_error(std::string(option) + ": no keys given (e.g. \"S O R T E X A M P L E\")");
+        throw_input_error(std::string(field) + ": no keys given (e.g. \"S O R T E X A M P L E\")");
     std::vector<TraceKey> out;
-    KeyKindCheck kinds(option);
+    KeyKindCheck kinds(field);
     for (std::size_t t = 0; t < words.size(); ++t) {
         const auto key = key_of(words[t]);
         if (!key) {
-            reject_token(option, t + 1, words[t],
+            reject_token(field, t + 1, words[t],
                          "heapsort takes keys only (words of letters or integers)");
         }
         kinds.check(*key, t + 1, words[t]);
@@ -528,48 +396,44 @@ std::vector<TraceKey> parse_sort_keys(std::string_view text, std::string_view op
 
 // ------------------------------------------------------------------------------------ timeline
 
-LessonTimeline LessonTimeline::operations(std::span<const LessonOp> ops,
-                                          std::span<const QueueKind> impls, Orientation orientation,
-                                          int index_base, LessonPacing pacing) {
-    check_operations(ops, impls, orientation, "--ops");
-    LessonTimeline out;
-    for (const LessonOp& op : ops) out.labels_.push_back(op.spelling);
+LessonRecord LessonRecord::operations(std::span<const LessonOp> ops,
+                                      std::span<const QueueKind> impls, Orientation orientation,
+                                      std::string_view field, std::string_view impl_field) {
+    check_operations(ops, impls, orientation, field, impl_field);
+    LessonRecord out;
+    out.ops_.assign(ops.begin(), ops.end());
+    out.orientation_ = orientation;
     const bool numeric = numeric_keys(ops);
     for (const QueueKind& kind : impls) {
         LessonPanel panel;
         panel.kind = kind;
-        panel.title = panel_title(kind);
         panel.tree = kind.family != QueueFamily::unordered && kind.family != QueueFamily::ordered;
         panel.arity = panel.tree ? kind.d : 1;
         panel.shifts = kind.family == QueueFamily::ordered;
-        panel.start.caption = panel.title + (orientation == Orientation::max ? ", max" : ", min") +
-                              "-oriented: empty";
-        Replayer replay(panel, orientation, index_base, numeric);
+        Replayer replay(panel, orientation, numeric);
         replay.state() = panel.start;
         if (orientation == Orientation::max) {
-            run_panel<Orientation::max>(kind, ops, replay);
+            run_panel<Orientation::max>(kind, ops, impl_field, replay);
         } else {
-            run_panel<Orientation::min>(kind, ops, replay);
+            run_panel<Orientation::min>(kind, ops, impl_field, replay);
         }
         out.capacity_ = std::max(out.capacity_, most_items(panel));
         out.panels_.push_back(std::move(panel));
     }
-    out.finish_timing(pacing);
     return out;
 }
 
-LessonTimeline LessonTimeline::heapsort(std::span<const TraceKey> keys, Orientation orientation,
-                                        int index_base, LessonPacing pacing) {
-    LessonTimeline out;
-    out.labels_ = {"build", "sortdown"};
+LessonRecord LessonRecord::heapsort(std::span<const TraceKey> keys, Orientation orientation) {
+    LessonRecord out;
+    out.heapsort_ = true;
+    out.orientation_ = orientation;
+    out.ops_.resize(2);
+    out.ops_[0].kind = LessonOp::Kind::build;
+    out.ops_[1].kind = LessonOp::Kind::sortdown;
     LessonPanel panel;
     panel.kind = {QueueFamily::binary, 2};
-    panel.title = "heapsort";
     panel.start.keys = texts(keys);
     panel.start.heap_size = keys.size();
-    panel.start.caption =
-        "heapsort " + std::to_string(keys.size()) + " keys " +
-        (orientation == Orientation::max ? "into ascending order" : "into descending order");
     const bool numeric = !keys.empty() && keys.front().numeric;
 
     // The sort itself, recorded; split at the first exchange of the root with the end.
@@ -591,66 +455,19 @@ LessonTimeline LessonTimeline::heapsort(std::span<const TraceKey> keys, Orientat
         }
     }
 
-    Replayer replay(panel, orientation, index_base, numeric);
+    Replayer replay(panel, orientation, numeric);
     replay.state() = panel.start;
-    replay.begin_op("build the heap");
+    replay.begin_op();
     for (std::size_t e = 0; e < split; ++e) replay.apply(log[e]);
     std::vector<std::string> built = replay.state().keys;
-    replay.end_op(built, "heap built");
-    replay.begin_op("sortdown");
+    replay.end_op(built);
+    replay.begin_op();
     for (std::size_t e = split; e < log.size(); ++e) replay.apply(log[e]);
     replay.state().heap_size = 0;
-    replay.end_op(texts(sorted), "sortdown done");
+    replay.end_op(texts(sorted));
     out.capacity_ = keys.size();
     out.panels_.push_back(std::move(panel));
-    out.finish_timing(pacing);
     return out;
-}
-
-void LessonTimeline::finish_timing(LessonPacing pacing) {
-    if (!(pacing.pace > 0.0) || pacing.pause < 0.0 || pacing.intro < 0.0 || pacing.outro < 0.0)
-        throw_input_error("--pace: must be > 0");
-    pacing_ = pacing;
-    op_start_.clear();
-    double t = pacing.intro;
-    for (std::size_t k = 0; k < labels_.size(); ++k) {
-        op_start_.push_back(t);
-        std::size_t steps = 0;
-        for (const LessonPanel& p : panels_) steps = std::max(steps, p.ops[k].steps.size());
-        t += static_cast<double>(steps) * pacing.pace + pacing.pause;
-    }
-    op_start_.push_back(t);  // the outro starts here
-}
-
-double LessonTimeline::duration() const noexcept {
-    return op_start_.back() + pacing_.outro;
-}
-
-LessonFrame LessonTimeline::frame_at(double seconds) const {
-    LessonFrame frame;
-    seconds = std::clamp(seconds, 0.0, duration());
-    // The operation under way: the last one started at or before `seconds`.
-    const auto after = std::upper_bound(op_start_.begin(), op_start_.end() - 1, seconds);
-    if (after == op_start_.begin()) {
-        frame.op = labels_.size();
-        for (const LessonPanel& p : panels_) frame.panels.push_back({&p.start, nullptr, 0.0});
-        return frame;
-    }
-    frame.started = true;
-    frame.finished = seconds >= op_start_.back();
-    frame.op = static_cast<std::size_t>(after - op_start_.begin()) - 1;
-    const double into = seconds - op_start_[frame.op];
-    const auto step = static_cast<std::size_t>(into / pacing_.pace);
-    for (const LessonPanel& p : panels_) {
-        const LessonPanelOp& op = p.ops[frame.op];
-        if (step < op.steps.size()) {
-            const double progress = into / pacing_.pace - static_cast<double>(step);
-            frame.panels.push_back({&op.steps[step].state, &op.steps[step], progress});
-        } else {
-            frame.panels.push_back({&op.end, nullptr, 0.0});
-        }
-    }
-    return frame;
 }
 
 }  // namespace collide::pq

@@ -261,10 +261,10 @@ int estimate(Heuristic heuristic, const Board& board) noexcept {
     return heuristic == Heuristic::hamming ? hamming(board) : manhattan(board);
 }
 
-Board random_board(int side, int moves, std::uint64_t seed) {
+Board random_board(int side, int moves, std::uint64_t seed, std::string_view moves_field) {
     if (moves < 0 || moves > max_random_moves) {
-        throw_input_error("--moves: must be 0.." + std::to_string(max_random_moves) + ", got " +
-                          std::to_string(moves));
+        throw_input_error(std::string(moves_field) + ": must be 0.." +
+                          std::to_string(max_random_moves) + ", got " + std::to_string(moves));
     }
     Board board = Board::goal(side);
     std::mt19937_64 rng(seed);

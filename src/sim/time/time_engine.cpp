@@ -15,11 +15,11 @@
 
 namespace collide {
 
-void validate_time_driven_options(const EngineOptions& options) {
+void validate_time_driven_options(const EngineOptions& options, std::string_view dt_field) {
     if (!std::isfinite(options.dt) || options.dt <= 0.0) {
         char value[32];
         std::snprintf(value, sizeof value, "%g", options.dt);
-        throw_option_error("--dt", value, "a finite time step > 0");
+        throw_option_error(dt_field, value, "a finite time step > 0");
     }
 }
 

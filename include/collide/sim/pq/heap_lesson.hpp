@@ -1,20 +1,25 @@
 #pragma once
 /// \file
-/// The animation model behind `collide heap`: priority-queue operations turned into a timeline of
-/// small steps a class can follow (a key appears, two keys are compared, two keys exchange, a key
-/// leaves), one panel per implementation, all in lock-step, each step with a caption in words and
-/// the counts of compares and exchanges so far. Pure computation on values: no drawing, no I/O.
+/// The record behind `collide heap`: priority-queue operations run on one or more
+/// implementations, kept as small steps by kind (a key appears, two keys are compared, two keys
+/// exchange or shift, a key leaves, a key changes, a sink starts), one panel per implementation,
+/// with the array and the counts of compares and exchanges at every step. Pure computation on
+/// values and neutral: no words, no timing, no drawing, no I/O. The presentation layer
+/// (collide/show/heap_lesson.hpp) turns the record into captions, pacing and frames.
 ///
 /// The steps come from the queues themselves: each implementation runs the operations with a
 /// QueueRecorder (observer.hpp) and the record is replayed into steps; after every operation the
 /// replayed array is checked against the queue's own array.
 ///
-/// Operations (`--ops`), the tokens of `collide pq` plus one:
+/// Operations (the `ops` field), the tokens of `collide pq` plus one:
 ///   - a key (a word of letters or an integer; all keys of one kind) inserts it;
 ///   - `*` removes the maximum (the minimum for a min-queue);
 ///   - `K^V` raises key K to V (increase-key, through the indexed heap's map from key to index;
 ///     only with `indexed`). With duplicate keys it raises the one inserted first.
-/// `--sort` takes keys only: heapsort, construction then sortdown.
+/// The `sort` field takes keys only: heapsort, construction then sortdown.
+///
+/// Errors name the field they are about ("ops", "sort", "impl"); callers pass the name the user
+/// knows (the app passes its option, "--ops").
 
 #include <cstddef>
 #include <cstdint>
@@ -36,6 +41,8 @@ struct LessonOp {
         insert,    ///< insert `key`
         remove,    ///< remove the max (min)
         increase,  ///< raise `key` to `new_key` (indexed only)
+        build,     ///< heapsort's construction (LessonRecord::heapsort only; never parsed)
+        sortdown,  ///< heapsort's sortdown (LessonRecord::heapsort only; never parsed)
     };
     Kind kind = Kind::insert;
     TraceKey key;
@@ -45,14 +52,14 @@ struct LessonOp {
 };
 
 /// Splits `text` at white space into operations. Throws Error(input)
-/// "<option>: token N 'x': why" for a token that is not a key, `*` or `K^V`, for a key of the
+/// "<field>: token N 'x': why" for a token that is not a key, `*` or `K^V`, for a key of the
 /// other kind than the first key (words and numbers do not mix), and for an empty sequence.
 [[nodiscard]] std::vector<LessonOp> parse_lesson_ops(std::string_view text,
-                                                     std::string_view option = "--ops");
+                                                     std::string_view field = "ops");
 
-/// The keys of `--sort` (no `*`, no `^`), with the same errors.
+/// The keys of a heapsort (no `*`, no `^`), with the same errors.
 [[nodiscard]] std::vector<TraceKey> parse_sort_keys(std::string_view text,
-                                                    std::string_view option = "--sort");
+                                                    std::string_view field = "sort");
 
 /// The array of one panel at one moment.
 struct LessonState {
@@ -61,7 +68,6 @@ struct LessonState {
     /// Slots [heap_size, keys.size()) are heapsort's sorted part, set apart (= keys.size() for
     /// every queue).
     std::size_t heap_size = 0;
-    std::string caption;          ///< what happens, in words
     std::uint64_t compares = 0;   ///< so far
     std::uint64_t exchanges = 0;  ///< so far (the ordered array's shifts count as exchanges)
 };
@@ -70,93 +76,73 @@ struct LessonState {
 struct LessonStep {
     enum class Kind {
         appear,    ///< a new key appears in slot i (already in `state`)
-        compare,   ///< the keys in slots i and j are compared
+        compare,   ///< the keys in slots i and j are compared (`state` counts the compare)
         exchange,  ///< the keys in slots i and j exchange places (`state` is before)
+        shift,     ///< ordered array: the key in slot i moves right to slot j, the key being
+                   ///< inserted from j to i (`state` is before)
         remove,    ///< the key in slot i (the last) leaves (`state` is before)
-        change,    ///< the key in slot i was changed (increase-key; `state` has the new key)
-        sink,      ///< heapsort's construction starts a sink at slot i
+        change,    ///< the key in slot i was changed from `from` (increase-key; `state` has the
+                   ///< new key)
+        sink,      ///< heapsort starts a sink at slot i in a heap of j slots (`state` has
+                   ///< heap_size = j)
     };
     Kind kind = Kind::compare;
     std::size_t i = 0;
     std::size_t j = 0;
-    std::optional<std::size_t> best;  ///< unordered array's scan: the max so far
+    std::optional<std::size_t> best;  ///< unordered array's scan: the max (min) so far
+    /// compare: how the key in slot i orders against the key in slot j (< 0, 0, > 0); for
+    /// i == j (increase-key) the new key against the old one, `from`.
+    int order = 0;
+    std::string from;  ///< change: the key before the change
     LessonState state;
 };
 
 /// One operation in one panel: its steps, then the state it leaves.
 struct LessonPanelOp {
     std::vector<LessonStep> steps;
-    LessonState end;  ///< caption: a summary ("insert S: 2 compares, 1 exchange")
+    LessonState end;
+    std::string removed;  ///< remove: the key that left
 };
 
 /// One panel: an implementation and its operations.
 struct LessonPanel {
     QueueKind kind;
-    std::string
-        title;         ///< "binary heap", "unordered array", "3-heap", "indexed 2-heap", "heapsort"
-    bool tree = true;  ///< drawn as a tree above its array (heaps) or as an array only
-    unsigned arity = 2;              ///< children per node when `tree`
+    bool tree = true;                ///< a heap (a tree over its array) rather than an array alone
+    unsigned arity = 2;              ///< children per node when `tree` (1 for the arrays)
     bool shifts = false;             ///< the ordered array: its exchanges are shifts
     LessonState start;               ///< before the first operation
-    std::vector<LessonPanelOp> ops;  ///< one per LessonTimeline::op_labels entry
-};
-
-/// Pacing of the animation, in seconds of video.
-struct LessonPacing {
-    double pace = 0.8;   ///< one step; > 0
-    double pause = 0.5;  ///< after each operation, >= 0
-    double intro = 1.0;  ///< on the start state, >= 0
-    double outro = 2.5;  ///< on the final state, >= 0
-};
-
-/// Where one panel is at one moment.
-struct LessonPanelFrame {
-    const LessonState* state = nullptr;  ///< never null
-    const LessonStep* step = nullptr;    ///< null while holding a state between steps
-    double progress = 0.0;               ///< in [0, 1): how far into `step`
-};
-
-/// Where the whole lesson is at one moment.
-struct LessonFrame {
-    std::size_t op = 0;    ///< the operation under way or just done (op_labels.size() at the start)
-    bool started = false;  ///< false during the intro
-    bool finished = false;  ///< true during the outro (every operation done)
-    std::vector<LessonPanelFrame> panels;
+    std::vector<LessonPanelOp> ops;  ///< one per LessonRecord::ops entry
 };
 
 /// The whole lesson: panels in lock-step, operation by operation.
-class LessonTimeline {
+class LessonRecord {
   public:
-    /// `--ops`: the operations on each implementation (in the given order, one panel each).
-    /// Throws Error(input) naming the token for a removal from an empty queue, an increase-key
-    /// without `indexed`, of a key not in the queue or to a smaller key; Error(input) for a queue
-    /// kind with_queue rejects.
-    static LessonTimeline operations(std::span<const LessonOp> ops,
-                                     std::span<const QueueKind> impls, Orientation orientation,
-                                     int index_base, LessonPacing pacing);
-    /// `--sort`: heapsort of `keys` (ascending for max, descending for min), one panel, two
-    /// operations (construction, sortdown).
-    static LessonTimeline heapsort(std::span<const TraceKey> keys, Orientation orientation,
-                                   int index_base, LessonPacing pacing);
+    /// `ops` on each implementation (in the given order, one panel each). Throws Error(input)
+    /// naming `field` and the token for a removal from an empty queue, an increase-key without
+    /// an indexed heap (naming `impl_field`), of a key not in the queue or to a smaller key;
+    /// Error(input) naming `impl_field` for a queue kind with_queue rejects.
+    static LessonRecord operations(std::span<const LessonOp> ops, std::span<const QueueKind> impls,
+                                   Orientation orientation, std::string_view field = "ops",
+                                   std::string_view impl_field = "impl");
+    /// Heapsort of `keys` (ascending for max, descending for min), one panel (a binary heap),
+    /// two operations: LessonOp::Kind::build, then LessonOp::Kind::sortdown.
+    static LessonRecord heapsort(std::span<const TraceKey> keys, Orientation orientation);
 
     [[nodiscard]] const std::vector<LessonPanel>& panels() const noexcept { return panels_; }
-    /// One label per operation for the strip of tokens ("P", "*", "3^12"; "build", "sortdown").
-    [[nodiscard]] const std::vector<std::string>& op_labels() const noexcept { return labels_; }
-    /// The most items any panel holds at once (the layout is sized for it).
+    /// The operations, the same for every panel.
+    [[nodiscard]] const std::vector<LessonOp>& ops() const noexcept { return ops_; }
+    [[nodiscard]] Orientation orientation() const noexcept { return orientation_; }
+    /// True for a heapsort (build, sortdown), false for operations.
+    [[nodiscard]] bool heapsort() const noexcept { return heapsort_; }
+    /// The most items any panel holds at once.
     [[nodiscard]] std::size_t capacity() const noexcept { return capacity_; }
-    /// Seconds of video.
-    [[nodiscard]] double duration() const noexcept;
-    /// The state of every panel at `seconds` (clamped to [0, duration()]).
-    [[nodiscard]] LessonFrame frame_at(double seconds) const;
 
   private:
-    void finish_timing(LessonPacing pacing);
-
     std::vector<LessonPanel> panels_;
-    std::vector<std::string> labels_;
-    std::vector<double> op_start_;  ///< seconds at which each operation starts
+    std::vector<LessonOp> ops_;
+    Orientation orientation_ = Orientation::max;
+    bool heapsort_ = false;
     std::size_t capacity_ = 0;
-    LessonPacing pacing_;
 };
 
 }  // namespace collide::pq

@@ -32,8 +32,8 @@ inline constexpr unsigned default_indexed_arity = 4;
 /// Parses `unordered`, `ordered`, `binary`, `dary:D` (2 <= D <= 64; 2, 3, 4 and 8 are compiled
 /// specially, others use a run-time arity) or `indexed[:D]` (D in 2, 3, 4, 8; default 4).
 /// Throws Error(input) naming `option`, what it expected and the bad token, e.g.
-/// `--pq: expected a queue: unordered, ordered, binary, dary:D or indexed[:D], got 'x'`.
-[[nodiscard]] QueueKind parse_queue_kind(std::string_view text, std::string_view option = "--pq");
+/// `pq: expected a queue: unordered, ordered, binary, dary:D or indexed[:D], got 'x'`.
+[[nodiscard]] QueueKind parse_queue_kind(std::string_view text, std::string_view option = "pq");
 
 /// The canonical spelling of a kind (`unordered`, `ordered`, `binary`, `dary:3`, `indexed:4`);
 /// parse_queue_kind(to_string(k)) == k.

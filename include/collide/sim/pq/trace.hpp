@@ -68,7 +68,7 @@ struct TraceOp {
 /// first key's, and Error(input) naming `option` for an empty sequence or one of more than
 /// max_trace_operations operations.
 [[nodiscard]] std::vector<TraceOp> parse_trace_ops(std::string_view ops,
-                                                   std::string_view option = "--ops");
+                                                   std::string_view option = "ops");
 
 /// One line of the lecture's table: the state after one operation.
 struct TraceRow {
@@ -93,7 +93,7 @@ struct Trace {
 /// The most items the queue holds at once during `ops` (so whether rows will be cut short).
 /// Throws Error(input) "<option>: token N '*': removes from an empty queue". O(N), no allocation.
 [[nodiscard]] std::size_t peak_trace_size(std::span<const TraceOp> ops,
-                                          std::string_view option = "--ops");
+                                          std::string_view option = "ops");
 
 /// Receives each row of a trace in order; the row is valid during the call only.
 using TraceVisitor = std::function<void(const TraceRow&)>;
@@ -110,12 +110,12 @@ inline constexpr std::size_t all_trace_entries = std::numeric_limits<std::size_t
 /// not an input problem). Also for step-by-step animations of the heaps.
 void for_each_trace_row(std::span<const TraceOp> ops, Orientation orientation,
                         std::span<const QueueKind> queues, std::size_t max_entries,
-                        const TraceVisitor& visit, std::string_view option = "--ops");
+                        const TraceVisitor& visit, std::string_view option = "ops");
 
 /// The whole table with every array in full (for_each_trace_row collected): memory grows with
 /// the square of the number of operations, so this is for short traces and tests. Throws as
 /// for_each_trace_row.
 [[nodiscard]] Trace run_trace(std::span<const TraceOp> ops, Orientation orientation,
-                              std::span<const QueueKind> queues, std::string_view option = "--ops");
+                              std::span<const QueueKind> queues, std::string_view option = "ops");
 
 }  // namespace collide::pq

@@ -60,7 +60,7 @@ decltype(auto) with_queue(const QueueKind& kind, F&& f) {
             }
             break;
     }
-    throw_input_error("--pq: unsupported queue '" + to_string(kind) + "'");
+    throw_input_error("pq: unsupported queue '" + to_string(kind) + "'");
 }
 
 }  // namespace collide::pq

@@ -121,7 +121,7 @@ enum class Heuristic : std::uint8_t { hamming, manhattan };
 
 /// Parses "hamming" or "manhattan"; throws Error(input) naming `option` otherwise.
 [[nodiscard]] Heuristic parse_heuristic(std::string_view text,
-                                        std::string_view option = "--heuristic");
+                                        std::string_view option = "heuristic");
 [[nodiscard]] std::string_view to_string(Heuristic heuristic) noexcept;
 [[nodiscard]] int estimate(Heuristic heuristic, const Board& board) noexcept;
 
@@ -132,7 +132,8 @@ inline constexpr int max_random_moves = 1000;
 /// never undoing the move just made; the same (side, moves, seed) gives the same board on every
 /// platform (std::mt19937_64's output is specified). Its shortest solution takes at most `moves`
 /// moves, and may take fewer (a random walk can come back near the goal). Throws Error(input)
-/// for a side outside 2..4 or moves outside 0..max_random_moves.
-[[nodiscard]] Board random_board(int side, int moves, std::uint64_t seed);
+/// for a side outside 2..4, or naming `moves_field` for moves outside 0..max_random_moves.
+[[nodiscard]] Board random_board(int side, int moves, std::uint64_t seed,
+                                 std::string_view moves_field = "moves");
 
 }  // namespace collide::puzzle

@@ -1,27 +1,22 @@
-#include "puzzle_frames.hpp"
-
-#include <fmt/core.h>
+#include "collide/show/puzzle_lesson.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "collide/error.hpp"
+#include "collide/show/ease.hpp"
 
-namespace collide::app {
+namespace collide::show {
 
 namespace {
 
 using puzzle::Method;
 using puzzle::SearchResult;
-using render::PuzzleMark;
+using view::PuzzleMark;
 
 /// Fraction of a move's time the tile takes to slide; the rest holds still.
 constexpr double slide_part = 0.7;
-
-float ease(double x) noexcept {
-    const double t = std::clamp(x, 0.0, 1.0);
-    return static_cast<float>(t * t * (3.0 - 2.0 * t));
-}
 
 std::string plural(std::size_t n, const char* word) {
     return with_thousands(n) + " " + word + (n == 1 ? "" : "s");
@@ -40,13 +35,16 @@ std::size_t count_below(const std::vector<std::uint32_t>& indices, std::size_t s
 }  // namespace
 
 std::string with_thousands(std::uint64_t n) {
-    std::string digits = std::to_string(n);
-    for (int i = static_cast<int>(digits.size()) - 3; i > 0; i -= 3)
-        digits.insert(static_cast<std::size_t>(i), ",");
-    return digits;
+    const std::string digits = std::to_string(n);
+    std::string out;
+    for (std::size_t i = 0; i < digits.size(); ++i) {
+        if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+        out += digits[i];
+    }
+    return out;
 }
 
-PuzzleFrames::PuzzleFrames(const puzzle::Board& start, const std::vector<SearchResult>& results)
+PuzzleLesson::PuzzleLesson(const puzzle::Board& start, const std::vector<SearchResult>& results)
     : start_(start) {
     if (results.empty() || results.size() > 2)
         throw_runtime_error("puzzle video: needs one or two searches");
@@ -74,15 +72,15 @@ PuzzleFrames::PuzzleFrames(const puzzle::Board& start, const std::vector<SearchR
                     : std::clamp(12.0 / static_cast<double>(longest_solution_), 0.35, 0.8);
 }
 
-double PuzzleFrames::playback_start() const noexcept {
+double PuzzleLesson::playback_start() const noexcept {
     return search_end() + pause_;
 }
 
-double PuzzleFrames::duration() const noexcept {
+double PuzzleLesson::duration() const noexcept {
     return playback_start() + per_move_ * static_cast<double>(longest_solution_) + outro_;
 }
 
-std::size_t PuzzleFrames::step_at(std::size_t i, double seconds) const noexcept {
+std::size_t PuzzleLesson::step_at(std::size_t i, double seconds) const noexcept {
     const std::size_t total = sides_[i].result->expansions.size();
     const double u = (seconds - intro_) / search_seconds_;
     if (u <= 0.0) return 0;
@@ -91,13 +89,14 @@ std::size_t PuzzleFrames::step_at(std::size_t i, double seconds) const noexcept 
     return std::min(total, static_cast<std::size_t>(std::max(0.0, grown)));
 }
 
-std::string PuzzleFrames::title(const Side& side) const {
+std::string PuzzleLesson::title(const Side& side) const {
     const SearchResult& r = *side.result;
     if (r.method == Method::bfs) return "Breadth-first search";
-    return fmt::format("A* ({}, --pq {})", puzzle::to_string(r.heuristic), pq::to_string(r.queue));
+    return "A* (" + std::string(puzzle::to_string(r.heuristic)) + ", --pq " +
+           pq::to_string(r.queue) + ")";
 }
 
-std::vector<std::string> PuzzleFrames::counters(const Side& side, std::size_t step) const {
+std::vector<std::string> PuzzleLesson::counters(const Side& side, std::size_t step) const {
     const SearchResult& r = *side.result;
     const bool done = step == r.expansions.size();
     std::vector<std::string> out{"expanded " + with_thousands(step)};
@@ -123,39 +122,40 @@ std::vector<std::string> PuzzleFrames::counters(const Side& side, std::size_t st
     return out;
 }
 
-render::PuzzleBoardView PuzzleFrames::board_view(const Side& side, std::uint32_t id) const {
+view::PuzzleBoardView PuzzleLesson::board_view(const Side& side, std::uint32_t id) const {
     const SearchResult& r = *side.result;
     const puzzle::Board b = r.board_of(id);
-    render::PuzzleBoardView view;
+    view::PuzzleBoardView view;
     view.side = b.side();
     for (int i = 0; i < b.cells(); ++i) view.tiles.push_back(static_cast<std::uint8_t>(b.tile(i)));
     const puzzle::SearchNode& n = r.nodes[id];
     if (r.method == Method::astar) {
-        view.label = fmt::format("{}+{}={}", n.moves, n.priority - n.moves, n.priority);
+        view.label = std::to_string(n.moves) + "+" + std::to_string(n.priority - n.moves) + "=" +
+                     std::to_string(n.priority);
     } else {
         view.label = "depth " + std::to_string(n.moves);
     }
     return view;
 }
 
-render::PuzzlePanelView PuzzleFrames::search_panel(const Side& side, std::size_t step) const {
+view::PuzzlePanelView PuzzleLesson::search_panel(const Side& side, std::size_t step) const {
     const SearchResult& r = *side.result;
     const bool done = step == r.expansions.size();
-    render::PuzzlePanelView p;
+    view::PuzzlePanelView p;
     p.title = title(side);
     p.counters = counters(side, step);
     if (done) {
-        p.status = fmt::format("solved: {} moves, after {}", r.solution_length(),
-                               plural(r.stats.expanded, "board") + " expanded");
+        p.status = "solved: " + std::to_string(r.solution_length()) + " moves, after " +
+                   plural(r.stats.expanded, "board") + " expanded";
     } else if (r.method == Method::bfs) {
         p.status = "level by level: every board d moves away before any d+1";
     } else {
-        p.status = fmt::format("lowest priority first: moves so far + {} distance",
-                               puzzle::to_string(r.heuristic));
+        p.status = "lowest priority first: moves so far + " +
+                   std::string(puzzle::to_string(r.heuristic)) + " distance";
     }
 
     // The tree: the deepest rows reached, each with its most recent boards.
-    const std::size_t rows = render::max_puzzle_rows;
+    const std::size_t rows = view::max_puzzle_rows;
     if (step > 0) {
         // The deepest rows, but never without the board being expanded: A* may come back up
         // the tree, and then the rows follow it (keeping up to two deeper rows below it).
@@ -165,23 +165,24 @@ render::PuzzlePanelView PuzzleFrames::search_panel(const Side& side, std::size_t
         std::size_t hidden = 0;
         for (std::size_t d = 0; d < first; ++d) hidden += count_below(side.by_depth[d], step);
         if (first > 0) {
-            p.hidden_rows =
-                fmt::format("not drawn: depths 0 to {} ({})", first - 1, plural(hidden, "board"));
+            p.hidden_rows = "not drawn: depths 0 to " + std::to_string(first - 1) + " (" +
+                            plural(hidden, "board") + ")";
         }
         if (deepest < side.deepest[step]) {
             std::size_t below = 0;
             for (std::size_t d = deepest + 1; d <= side.deepest[step]; ++d)
                 below += count_below(side.by_depth[d], step);
-            p.hidden_rows +=
-                fmt::format("{}{} to {} ({})", p.hidden_rows.empty() ? "not drawn: depths " : ", ",
-                            deepest + 1, side.deepest[step], plural(below, "board"));
+            p.hidden_rows += (p.hidden_rows.empty() ? "not drawn: depths " : ", ") +
+                             std::to_string(deepest + 1) + " to " +
+                             std::to_string(side.deepest[step]) + " (" + plural(below, "board") +
+                             ")";
         }
         std::vector<std::uint32_t> above;  // expansion indices drawn in the row above
         for (std::size_t d = first; d <= deepest; ++d) {
             const std::vector<std::uint32_t>& list = side.by_depth[d];
             const std::size_t count = count_below(list, step);
-            const std::size_t shown = std::min(count, render::max_puzzle_row_boards);
-            render::PuzzleRowView row;
+            const std::size_t shown = std::min(count, view::max_puzzle_row_boards);
+            view::PuzzleRowView row;
             row.label = "depth " + std::to_string(d);
             row.count = plural(count, "board");
             std::vector<std::uint32_t> picks(
@@ -199,7 +200,7 @@ render::PuzzlePanelView PuzzleFrames::search_panel(const Side& side, std::size_t
             std::vector<std::uint32_t> here;
             for (const std::uint32_t k : picks) {
                 const std::uint32_t id = r.expansions[k];
-                render::PuzzleBoardView b = board_view(side, id);
+                view::PuzzleBoardView b = board_view(side, id);
                 if (r.method == Method::bfs) b.label = "#" + with_thousands(k + 1U);
                 if (done && id == r.goal) {
                     b.mark = PuzzleMark::goal;
@@ -224,13 +225,13 @@ render::PuzzlePanelView PuzzleFrames::search_panel(const Side& side, std::size_t
 
     if (step == 0) {
         p.board = board_view(side, 0);
-        p.caption = fmt::format("start: manhattan {}, hamming {}", puzzle::manhattan(start_),
-                                puzzle::hamming(start_));
+        p.caption = "start: manhattan " + std::to_string(puzzle::manhattan(start_)) + ", hamming " +
+                    std::to_string(puzzle::hamming(start_));
     }
 
     // The queue's front.
     p.queue_title = r.method == Method::bfs ? "FIFO queue" : pq::to_string(r.queue) + " PQ";
-    const std::vector<std::uint32_t> front = r.queue_front(step, render::max_puzzle_queue_shown);
+    const std::vector<std::uint32_t> front = r.queue_front(step, view::max_puzzle_queue_shown);
     for (std::uint32_t id : front) p.queue.push_back(board_view(side, id));
     const std::size_t size = r.queue_size(step);
     if (size > front.size()) p.queue_more = "+ " + with_thousands(size - front.size()) + " more";
@@ -238,19 +239,19 @@ render::PuzzlePanelView PuzzleFrames::search_panel(const Side& side, std::size_t
     return p;
 }
 
-render::PuzzlePanelView PuzzleFrames::playback_panel(const Side& side, double t) const {
+view::PuzzlePanelView PuzzleLesson::playback_panel(const Side& side, double t) const {
     const SearchResult& r = *side.result;
-    render::PuzzlePanelView p;
+    view::PuzzlePanelView p;
     p.title = title(side);
     p.counters = counters(side, r.expansions.size());
-    p.status = fmt::format("solution: {}", plural(side.path.size() - 1, "move"));
+    p.status = "solution: " + plural(side.path.size() - 1, "move");
     p.playback = true;
     const std::size_t moves = side.path.size() - 1;
     const double at = std::max(0.0, t) / per_move_;
     const auto m = static_cast<std::size_t>(std::floor(at));
     if (m >= moves) {
         p.board = board_view(side, side.path.back());
-        p.caption = fmt::format("solved in {}", plural(moves, "move"));
+        p.caption = "solved in " + plural(moves, "move");
         p.board.mark = PuzzleMark::goal;
         return p;
     }
@@ -259,20 +260,18 @@ render::PuzzlePanelView PuzzleFrames::playback_panel(const Side& side, double t)
     p.board = board_view(side, side.path[m + 1]);
     p.slide = {after.blank(), before.blank(), ease((at - static_cast<double>(m)) / slide_part)};
     const puzzle::Move move = before.move_to(after);
-    p.caption = fmt::format("move {} of {}: {} slides {}", m + 1, moves, move.tile,
-                            puzzle::to_string(move.direction));
+    p.caption = "move " + std::to_string(m + 1) + " of " + std::to_string(moves) + ": " +
+                std::to_string(move.tile) + " slides " +
+                std::string(puzzle::to_string(move.direction));
     return p;
 }
 
-render::PuzzleFrameView PuzzleFrames::frame_at(double seconds) const {
+view::PuzzleFrameView PuzzleLesson::frame_at(double seconds) const {
     const double t = std::clamp(seconds, 0.0, duration());
-    render::PuzzleFrameView view;
-    view.heading = fmt::format("{} {}: breadth-first search against A*", puzzle_name(start_.side()),
-                               start_.to_string());
-    if (sides_.size() == 1) {
-        view.heading = fmt::format("{} {}: {}", puzzle_name(start_.side()), start_.to_string(),
-                                   title(sides_.front()));
-    }
+    view::PuzzleFrameView view;
+    view.heading = puzzle_name(start_.side()) + " " + start_.to_string() + ": " +
+                   (sides_.size() == 1 ? title(sides_.front())
+                                       : std::string("breadth-first search against A*"));
     for (std::size_t i = 0; i < sides_.size(); ++i) {
         if (t >= playback_start()) {
             view.panels.push_back(playback_panel(sides_[i], t - playback_start()));
@@ -283,4 +282,4 @@ render::PuzzleFrameView PuzzleFrames::frame_at(double seconds) const {
     return view;
 }
 
-}  // namespace collide::app
+}  // namespace collide::show

@@ -1,8 +1,9 @@
 #pragma once
 /// \file
-/// `collide puzzle`'s bridge between the recorded searches (collide/sim/puzzle/search.hpp) and
-/// the drawing (collide/render/puzzle_view.hpp): what each panel shows at one moment of the
-/// video, as plain values. Pure: unit-tested in collide_app_core_tests.
+/// What a class sees of `collide puzzle`: the recorded searches (collide/sim/puzzle/search.hpp)
+/// turned into the painter's view (collide/view/puzzle.hpp) for any moment of the video: titles,
+/// counters, the tree's rows and their labels, the queue's front, captions. Pure: no drawing, no
+/// I/O, no CLI.
 ///
 /// The timeline: a moment on the start, then the searches grow on one shared clock (the number
 /// of expansions grows geometrically with time, so the first boards are seen one by one and a
@@ -14,20 +15,20 @@
 #include <string>
 #include <vector>
 
-#include "collide/render/puzzle_view.hpp"
 #include "collide/sim/puzzle/board.hpp"
 #include "collide/sim/puzzle/search.hpp"
+#include "collide/view/puzzle.hpp"
 
-namespace collide::app {
+namespace collide::show {
 
 /// "1,234,567".
 [[nodiscard]] std::string with_thousands(std::uint64_t n);
 
-class PuzzleFrames {
+class PuzzleLesson {
   public:
     /// `results`: one or two solved searches of `start` (kept by reference: they must outlive
     /// this object). Throws Error(runtime) for an unsolved one (a caller's bug).
-    PuzzleFrames(const puzzle::Board& start, const std::vector<puzzle::SearchResult>& results);
+    PuzzleLesson(const puzzle::Board& start, const std::vector<puzzle::SearchResult>& results);
 
     /// Seconds of video.
     [[nodiscard]] double duration() const noexcept;
@@ -41,7 +42,7 @@ class PuzzleFrames {
     [[nodiscard]] std::size_t step_at(std::size_t i, double seconds) const noexcept;
 
     /// The frame at `seconds` (clamped to the video).
-    [[nodiscard]] render::PuzzleFrameView frame_at(double seconds) const;
+    [[nodiscard]] view::PuzzleFrameView frame_at(double seconds) const;
 
   private:
     struct Side {
@@ -51,9 +52,9 @@ class PuzzleFrames {
         std::vector<std::uint32_t> path;                   ///< the solution's node ids
     };
 
-    [[nodiscard]] render::PuzzlePanelView search_panel(const Side& side, std::size_t step) const;
-    [[nodiscard]] render::PuzzlePanelView playback_panel(const Side& side, double t) const;
-    [[nodiscard]] render::PuzzleBoardView board_view(const Side& side, std::uint32_t id) const;
+    [[nodiscard]] view::PuzzlePanelView search_panel(const Side& side, std::size_t step) const;
+    [[nodiscard]] view::PuzzlePanelView playback_panel(const Side& side, double t) const;
+    [[nodiscard]] view::PuzzleBoardView board_view(const Side& side, std::uint32_t id) const;
     [[nodiscard]] std::string title(const Side& side) const;
     [[nodiscard]] std::vector<std::string> counters(const Side& side, std::size_t step) const;
 
@@ -68,4 +69,4 @@ class PuzzleFrames {
     double outro_ = 2.5;           ///< the solved boards, at the end
 };
 
-}  // namespace collide::app
+}  // namespace collide::show

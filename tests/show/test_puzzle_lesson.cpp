@@ -1,16 +1,16 @@
-// `collide puzzle`'s frames as values (puzzle_frames.hpp): the shared clock of the searches, the
-// tree rows and the queue's front at a moment, the playback of the solutions.
+// `collide puzzle` as a class sees it (collide/show/puzzle_lesson.hpp): the shared clock of the
+// searches, the tree rows and the queue's front at a moment, the playback of the solutions.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <string>
 #include <vector>
 
-#include "puzzle_frames.hpp"
+#include "collide/show/puzzle_lesson.hpp"
 
 using namespace collide;
-using app::PuzzleFrames;
 using puzzle::Board;
+using show::PuzzleLesson;
 
 namespace {
 
@@ -27,18 +27,18 @@ std::vector<std::uint8_t> tiles_of(const Board& b) {
 
 }  // namespace
 
-TEST_CASE("puzzle frames: thousands separators") {
-    CHECK(app::with_thousands(0) == "0");
-    CHECK(app::with_thousands(999) == "999");
-    CHECK(app::with_thousands(1000) == "1,000");
-    CHECK(app::with_thousands(181439) == "181,439");
-    CHECK(app::with_thousands(1234567) == "1,234,567");
+TEST_CASE("puzzle lesson: thousands separators") {
+    CHECK(show::with_thousands(0) == "0");
+    CHECK(show::with_thousands(999) == "999");
+    CHECK(show::with_thousands(1000) == "1,000");
+    CHECK(show::with_thousands(181439) == "181,439");
+    CHECK(show::with_thousands(1234567) == "1,234,567");
 }
 
-TEST_CASE("puzzle frames: one clock, the cheaper search finishes first, both end together") {
+TEST_CASE("puzzle lesson: one clock, the cheaper search finishes first, both end together") {
     const Board start = Board::parse("8 1 3 4 0 2 7 6 5");
     const auto results = both(start);
-    const PuzzleFrames frames(start, results);
+    const PuzzleLesson frames(start, results);
     CHECK(frames.step_at(0, 0.0) == 0);
     CHECK(frames.step_at(1, frames.search_start()) == 0);
     CHECK(frames.step_at(0, frames.search_end()) == results[0].expansions.size());
@@ -56,14 +56,14 @@ TEST_CASE("puzzle frames: one clock, the cheaper search finishes first, both end
     CHECK(frames.duration() > frames.playback_start());
 }
 
-TEST_CASE("puzzle frames: the start, the tree rows and the queue's front during the search") {
+TEST_CASE("puzzle lesson: the start, the tree rows and the queue's front during the search") {
     const Board start = Board::parse("8 1 3 4 0 2 7 6 5");
     const auto results = both(start);
-    const PuzzleFrames frames(start, results);
-    const render::PuzzleFrameView first = frames.frame_at(0.0);
+    const PuzzleLesson frames(start, results);
+    const view::PuzzleFrameView first = frames.frame_at(0.0);
     REQUIRE(first.panels.size() == 2);
     CHECK(first.heading.find("8 1 3 4 0 2 7 6 5") != std::string::npos);
-    for (const render::PuzzlePanelView& p : first.panels) {
+    for (const view::PuzzlePanelView& p : first.panels) {
         CHECK_FALSE(p.playback);
         CHECK(p.rows.empty());
         REQUIRE(p.queue.size() == 1);  // the start waits in the queue
@@ -73,40 +73,40 @@ TEST_CASE("puzzle frames: the start, the tree rows and the queue's front during 
     }
     // Mid-search: rows are consecutive depths, at most max_puzzle_rows, the newest board marked.
     const double mid = (frames.search_start() + frames.search_end()) / 2.0;
-    const render::PuzzlePanelView bfs = frames.frame_at(mid).panels[0];
+    const view::PuzzlePanelView bfs = frames.frame_at(mid).panels[0];
     REQUIRE_FALSE(bfs.rows.empty());
-    CHECK(bfs.rows.size() <= render::max_puzzle_rows);
-    const render::PuzzleRowView& last = bfs.rows.back();
+    CHECK(bfs.rows.size() <= view::max_puzzle_rows);
+    const view::PuzzleRowView& last = bfs.rows.back();
     REQUIRE_FALSE(last.boards.empty());
-    CHECK(last.boards.back().mark == render::PuzzleMark::current);
-    CHECK(bfs.queue.size() == render::max_puzzle_queue_shown);
+    CHECK(last.boards.back().mark == view::PuzzleMark::current);
+    CHECK(bfs.queue.size() == view::max_puzzle_queue_shown);
     CHECK(bfs.queue_more.find("more") != std::string::npos);
-    for (const render::PuzzleRowView& row : bfs.rows) {
-        CHECK(row.boards.size() <= render::max_puzzle_row_boards);
-        for (const render::PuzzleBoardView& b : row.boards) CHECK(b.tiles.size() == 9);
+    for (const view::PuzzleRowView& row : bfs.rows) {
+        CHECK(row.boards.size() <= view::max_puzzle_row_boards);
+        for (const view::PuzzleBoardView& b : row.boards) CHECK(b.tiles.size() == 9);
     }
 }
 
-TEST_CASE("puzzle frames: once solved the path is marked and the playback ends on the goal") {
+TEST_CASE("puzzle lesson: once solved the path is marked and the playback ends on the goal") {
     const Board start = Board::parse("1 2 3 4 0 6 7 5 8");
     const auto results = both(start);
-    const PuzzleFrames frames(start, results);
-    const render::PuzzleFrameView done = frames.frame_at(frames.search_end() + 0.1);
-    for (const render::PuzzlePanelView& p : done.panels) {
+    const PuzzleLesson frames(start, results);
+    const view::PuzzleFrameView done = frames.frame_at(frames.search_end() + 0.1);
+    for (const view::PuzzlePanelView& p : done.panels) {
         CHECK(p.status.find("solved: 2 moves") != std::string::npos);
         REQUIRE(p.rows.size() == 3);
         const auto& last = p.rows.back().boards;
-        CHECK(std::count_if(last.begin(), last.end(), [](const render::PuzzleBoardView& b) {
-                  return b.mark == render::PuzzleMark::goal;
+        CHECK(std::count_if(last.begin(), last.end(), [](const view::PuzzleBoardView& b) {
+                  return b.mark == view::PuzzleMark::goal;
               }) == 1);
-        CHECK(p.rows.front().boards.front().mark == render::PuzzleMark::solution);
+        CHECK(p.rows.front().boards.front().mark == view::PuzzleMark::solution);
     }
-    const render::PuzzlePanelView moving = frames.frame_at(frames.playback_start() + 0.1).panels[1];
+    const view::PuzzlePanelView moving = frames.frame_at(frames.playback_start() + 0.1).panels[1];
     CHECK(moving.playback);
     CHECK(moving.caption == "move 1 of 2: 5 slides up");
     CHECK(moving.slide.from == 7);  // 5 leaves the bottom row for the centre
     CHECK(moving.slide.to == 4);
-    const render::PuzzlePanelView end = frames.frame_at(frames.duration()).panels[0];
+    const view::PuzzlePanelView end = frames.frame_at(frames.duration()).panels[0];
     CHECK(end.board.tiles == tiles_of(Board::goal(3)));
     CHECK(end.caption == "solved in 2 moves");
 }

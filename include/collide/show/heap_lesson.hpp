@@ -1,0 +1,106 @@
+#pragma once
+/// \file
+/// What a class sees of `collide heap`: the record of priority-queue operations
+/// (collide/sim/pq/heap_lesson.hpp, steps by kind) turned into words, pacing and frames. Each
+/// step gets a caption ("insert S at a[11]; S > H: exchange"), each operation a summary
+/// ("insert S: 3 compares, 2 exchanges"), each panel a title; the steps are paced in seconds of
+/// video, all panels in lock-step, each operation as long as its longest panel; and
+/// `frame_at(t)` fills the painter's view (collide/view/heap.hpp) for any moment. Pure: no
+/// drawing, no I/O, no CLI.
+///
+///     const pq::LessonRecord record = pq::LessonRecord::operations(ops, kinds, Orientation::max);
+///     const show::HeapLesson lesson(record, show::heap_pacing(0.8), 1);
+///     for (double t = 0; t < lesson.duration(); t += 1.0 / fps)
+///     painter.render(lesson.frame_at(t));
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "collide/sim/pq/heap_lesson.hpp"
+#include "collide/view/heap.hpp"
+
+namespace collide::show {
+
+/// Pacing of a heap lesson, in seconds of video.
+struct HeapPacing {
+    double pace = 0.8;   ///< one step; > 0
+    double pause = 0.5;  ///< after each operation, >= 0
+    double intro = 1.0;  ///< on the start state, >= 0
+    double outro = 2.5;  ///< on the final state, >= 0
+};
+
+/// The pacing for `pace` seconds per step (0.8 s: a slide, then a moment to see where it
+/// landed): a pause of 0.6 steps after each operation, an intro of at least 1 s and an outro of
+/// at least 2.5 s. `pace` > 0 (the caller checks the range it accepts).
+[[nodiscard]] HeapPacing heap_pacing(double pace) noexcept;
+
+/// The title of a panel showing `kind`: "binary heap", "unordered array", "3-heap",
+/// "indexed binary heap", "indexed 4-heap".
+[[nodiscard]] std::string panel_title(const pq::QueueKind& kind);
+
+/// Where one panel is at one moment.
+struct HeapPanelMoment {
+    const pq::LessonState* state = nullptr;  ///< never null
+    const pq::LessonStep* step = nullptr;    ///< null while holding a state between steps
+    double progress = 0.0;                   ///< in [0, 1): how far into `step`
+    const std::string* caption = nullptr;    ///< what happens, in words; never null
+};
+
+/// Where the whole lesson is at one moment.
+struct HeapMoment {
+    std::size_t op = 0;     ///< the operation under way or just done (ops().size() at the start)
+    bool started = false;   ///< false during the intro
+    bool finished = false;  ///< true during the outro (every operation done)
+    std::vector<HeapPanelMoment> panels;
+};
+
+/// A heap lesson as a class sees it: captions, pacing and frames over a record.
+class HeapLesson {
+  public:
+    /// `index_base`: the index shown for slot 0 (1 as in the lecture's code, 0 as in its
+    /// pseudo-code). Throws Error(input) "pace: must be > 0" for a pace <= 0 or a negative pause,
+    /// intro or outro.
+    HeapLesson(pq::LessonRecord record, HeapPacing pacing, int index_base = 1);
+
+    [[nodiscard]] const pq::LessonRecord& record() const noexcept { return record_; }
+    /// One label per operation for the strip of tokens ("P", "*", "3^12"; "build", "sortdown").
+    [[nodiscard]] const std::vector<std::string>& op_labels() const noexcept { return labels_; }
+    /// The panels' titles joined by ", " ("unordered array, binary heap"), for a summary line.
+    [[nodiscard]] std::string name() const;
+    /// Seconds of video.
+    [[nodiscard]] double duration() const noexcept;
+    /// The state of every panel at `seconds` (clamped to [0, duration()]).
+    [[nodiscard]] HeapMoment moment_at(double seconds) const;
+    /// The frame at `seconds`.
+    [[nodiscard]] view::HeapFrameView frame_at(double seconds) const;
+    /// The widest key label of the lesson (for sizing node text once per video).
+    [[nodiscard]] std::string widest_key() const;
+
+    /// The words of one panel: its title, its caption before the first operation, and per
+    /// operation the caption of each step shown and a summary.
+    struct OpText {
+        std::vector<std::size_t> shown;     ///< indices of the record's steps shown, in order
+        std::vector<std::string> captions;  ///< one per shown step
+        std::string summary;                ///< "insert S: 3 compares, 2 exchanges"
+    };
+    struct PanelText {
+        std::string title;  ///< "binary heap"
+        std::string start;  ///< "binary heap, max-oriented: empty"
+        std::vector<OpText> ops;
+    };
+    [[nodiscard]] const std::vector<PanelText>& text() const noexcept { return text_; }
+
+  private:
+    [[nodiscard]] view::HeapPanelView panel_view(std::size_t panel,
+                                                 const HeapPanelMoment& moment) const;
+
+    pq::LessonRecord record_;
+    std::vector<PanelText> text_;
+    std::vector<std::string> labels_;
+    std::vector<double> op_start_;  ///< seconds at which each operation starts, then the outro
+    HeapPacing pacing_;
+    int index_base_ = 1;
+};
+
+}  // namespace collide::show

@@ -1,0 +1,80 @@
+#pragma once
+/// \file
+/// What one frame of `collide puzzle` shows, as plain values: a heading and one or two panels,
+/// each with its search tree's deepest rows of small boards, the front of its queue, counters,
+/// and later its solution played back on a large board. The presentation layer
+/// (collide/show/puzzle_lesson.hpp) fills it for frame k; the painter
+/// (collide/render/puzzle_view.hpp) draws it. Std-only: no search types, no drawing.
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace collide::view {
+
+/// How a small board is highlighted.
+enum class PuzzleMark : std::uint8_t {
+    plain,
+    current,   ///< the board being expanded now
+    goal,      ///< the goal, once found
+    solution,  ///< on the solution path (shown once the search is done)
+};
+
+/// A board: side x side tiles row by row, 0 the blank.
+struct PuzzleBoardView {
+    int side = 3;
+    std::vector<std::uint8_t> tiles;
+    std::string label;  ///< under the board, e.g. "12 = 4+8" (priority = moves + estimate)
+    PuzzleMark mark = PuzzleMark::plain;
+    /// The row-above board this one was generated from (index in that row's boards), or -1 when
+    /// it is not drawn.
+    int parent = -1;
+};
+
+/// One depth of the search tree.
+struct PuzzleRowView {
+    std::string label;                    ///< e.g. "depth 7"
+    std::string count;                    ///< e.g. "1,234 boards"
+    std::vector<PuzzleBoardView> boards;  ///< the most recent ones, oldest first
+};
+
+/// A tile sliding during the playback: from cell `from` to cell `to`, t in [0, 1].
+struct PuzzleSlideView {
+    int from = -1;
+    int to = -1;
+    float t = 0.0F;
+};
+
+/// One method.
+struct PuzzlePanelView {
+    std::string title;                  ///< "BFS (FIFO queue)"
+    std::vector<std::string> counters;  ///< e.g. {"expanded 120", "enqueued 240", ...}
+    std::string status;                 ///< a line under the counters ("searching", "solved ...")
+    bool playback = false;              ///< true: the large board instead of tree and queue
+
+    // The search.
+    std::string hidden_rows;             ///< a line above the rows for depths not drawn, or ""
+    std::vector<PuzzleRowView> rows;     ///< the deepest rows drawn (at most max_puzzle_rows)
+    std::string queue_title;             ///< "queue: next out first"
+    std::vector<PuzzleBoardView> queue;  ///< its first entries (at most max_puzzle_queue_shown)
+    std::string queue_more;              ///< e.g. "+ 1,234 more"
+
+    // The playback (and, before the search has expanded anything, the start in the tree's place).
+    PuzzleBoardView board;  ///< the large board; no tiles: none
+    PuzzleSlideView slide;  ///< the tile moving, if any
+    std::string caption;    ///< "move 5 of 31: 6 up"
+};
+
+/// One frame: a heading and one or two panels, left to right.
+struct PuzzleFrameView {
+    std::string heading;
+    std::vector<PuzzlePanelView> panels;
+};
+
+/// Rows of the tree and boards per row drawn at most; queue entries shown at most.
+inline constexpr std::size_t max_puzzle_rows = 5;
+inline constexpr std::size_t max_puzzle_row_boards = 5;
+inline constexpr std::size_t max_puzzle_queue_shown = 5;
+
+}  // namespace collide::view

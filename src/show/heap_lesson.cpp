@@ -1,0 +1,443 @@
+#include "collide/show/heap_lesson.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <optional>
+#include <utility>
+
+#include "collide/error.hpp"
+#include "collide/show/ease.hpp"
+
+namespace collide::show {
+
+namespace {
+
+using pq::LessonOp;
+using pq::LessonStep;
+using pq::QueueFamily;
+using view::SlotMark;
+
+// ------------------------------------------------------------------------------------ captions
+
+std::string slot_name(std::size_t i, int base) {
+    return "a[" + std::to_string(static_cast<long long>(i) + base) + "]";
+}
+
+/// "<", ">" or "=" for a step's order (< 0, > 0, 0).
+const char* relation(int order) {
+    if (order < 0) return "<";
+    if (order > 0) return ">";
+    return "=";
+}
+
+std::string plural(std::uint64_t n, const char* one, const char* many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+/// What an operation is called while it runs.
+std::string op_prefix(const LessonOp& op, pq::Orientation orientation) {
+    switch (op.kind) {
+        case LessonOp::Kind::insert:
+            return "insert " + op.key.text();
+        case LessonOp::Kind::remove:
+            return orientation == pq::Orientation::max ? "remove max" : "remove min";
+        case LessonOp::Kind::increase:
+            return "increase " + op.key.text() + " to " + op.new_key.text();
+        case LessonOp::Kind::build:
+            return "build the heap";
+        case LessonOp::Kind::sortdown:
+            return "sortdown";
+    }
+    return "";
+}
+
+/// What an operation is called in its summary.
+std::string op_summary_head(const LessonOp& op, const pq::LessonPanelOp& done,
+                            pq::Orientation orientation) {
+    switch (op.kind) {
+        case LessonOp::Kind::remove:
+            return op_prefix(op, orientation) + " " + done.removed;
+        case LessonOp::Kind::build:
+            return "heap built";
+        case LessonOp::Kind::sortdown:
+            return "sortdown done";
+        default:
+            return op_prefix(op, orientation);
+    }
+}
+
+/// Words for one panel's steps, operation by operation, in the record's order: it keeps what a
+/// caption refers back to (the operation's name with the slot an insert landed in, the key a
+/// sink moves down, the key before an increase-key).
+class Captioner {
+  public:
+    Captioner(const pq::LessonPanel& panel, pq::Orientation orientation, int base)
+        : panel_(panel), max_(orientation == pq::Orientation::max), base_(base) {}
+
+    HeapLesson::OpText op(const LessonOp& op, const pq::LessonPanelOp& done,
+                          const pq::LessonState& before) {
+        op_ = op.kind;
+        prefix_ = op_prefix(op, max_ ? pq::Orientation::max : pq::Orientation::min);
+        sinking_.reset();
+        HeapLesson::OpText text;
+        for (std::size_t s = 0; s < done.steps.size(); ++s) {
+            const bool first = text.shown.empty();
+            std::optional<std::string> caption = step(done.steps[s], first);
+            if (!caption) continue;
+            text.shown.push_back(s);
+            text.captions.push_back(std::move(*caption));
+        }
+        const std::uint64_t c = done.end.compares - before.compares;
+        const std::uint64_t x = done.end.exchanges - before.exchanges;
+        text.summary =
+            op_summary_head(op, done, max_ ? pq::Orientation::max : pq::Orientation::min) + ": " +
+            plural(c, "compare", "compares") + ", " +
+            plural(x, panel_.shifts ? "shift" : "exchange", panel_.shifts ? "shifts" : "exchanges");
+        return text;
+    }
+
+  private:
+    [[nodiscard]] const char* top_word() const { return max_ ? "max" : "min"; }
+    [[nodiscard]] const char* child_word() const { return max_ ? "larger" : "smaller"; }
+    /// Whether a key that orders `order` against another comes out before it.
+    [[nodiscard]] bool comes_first(int order) const { return max_ ? order > 0 : order < 0; }
+    [[nodiscard]] static std::string vs(const std::string& a, const std::string& b, int order) {
+        return a + " " + relation(order) + " " + b;
+    }
+    [[nodiscard]] std::size_t parent(std::size_t i) const { return (i - 1) / panel_.arity; }
+    [[nodiscard]] std::string slot(std::size_t i) const { return slot_name(i, base_); }
+
+    /// The caption of a step, or none for a step not shown (a sortdown's sinks: its exchange
+    /// says which key sinks).
+    std::optional<std::string> step(const LessonStep& s, bool first) {
+        const std::vector<std::string>& keys = s.state.keys;
+        switch (s.kind) {
+            case LessonStep::Kind::appear:
+                prefix_ += " at " + slot(s.i);
+                return prefix_ + (panel_.kind.family == QueueFamily::unordered
+                                      ? ", the end: nothing else to do"
+                                      : "");
+            case LessonStep::Kind::change:
+                changed_from_ = s.from;
+                return prefix_ + ": the map says " + s.from + " is at " + slot(s.i) + "; set " +
+                       slot(s.i) + " = " + keys[s.i];
+            case LessonStep::Kind::compare:
+                return compare(s.i, s.j, keys[s.i], keys[s.j], s.order);
+            case LessonStep::Kind::shift:
+                return prefix_ + "; shift " + keys[s.i] + " right to " + slot(s.j);
+            case LessonStep::Kind::exchange:
+                return exchange(s.i, s.j, keys, first);
+            case LessonStep::Kind::remove:
+                return prefix_ + ": " + keys[s.i] + " leaves " + slot(s.i);
+            case LessonStep::Kind::sink:
+                sinking_ = keys[s.i];
+                if (op_ != LessonOp::Kind::build) return std::nullopt;
+                return "build the heap: sink " + keys[s.i] + " at " + slot(s.i);
+        }
+        return std::nullopt;
+    }
+
+    std::string compare(std::size_t i, std::size_t j, const std::string& a, const std::string& b,
+                        int order) const {
+        switch (panel_.kind.family) {
+            case QueueFamily::unordered:
+                // best_index: slot i against the best so far, j.
+                return std::string("scan for the ") + top_word() + ": " + vs(a, b, order) +
+                       (comes_first(order) ? ", new " + std::string(top_word()) + " " + a : "");
+            case QueueFamily::ordered:
+                // The key being inserted (slot i) against its left neighbour (slot j).
+                return prefix_ + "; " + vs(b, a, -order) +
+                       (comes_first(-order) ? ": shift " + b + " right"
+                                            : ": stop, " + a + " stays at " + slot(i));
+            default:
+                break;
+        }
+        if (i == j) {  // increase-key: the new key against the old one
+            return prefix_ + "; " + vs(a, changed_from_, order) +
+                   (max_ ? ": a larger key may have to swim up"
+                         : ": a larger key may have to sink");
+        }
+        const bool siblings = i > 0 && j > 0 && parent(i) == parent(j);
+        if (siblings) {
+            const std::string who = sinking_ ? "sink " + *sinking_ + ": " : "";
+            return prefix_ + "; " + who + child_word() + " child? " + vs(a, b, order);
+        }
+        // i is the moving key; j its parent (swim) or its best child (sink).
+        const bool up = j < i;
+        const bool moves = up ? comes_first(order) : comes_first(-order);
+        const std::string who = !up && sinking_ ? "sink " + *sinking_ + ": " : "";
+        return prefix_ + "; " + who + vs(a, b, order) + (moves ? ": exchange" : ": stop");
+    }
+
+    std::string exchange(std::size_t i, std::size_t j, const std::vector<std::string>& keys,
+                         bool first) {
+        const std::string& a = keys[i];
+        const std::string& b = keys[j];
+        if (panel_.kind.family == QueueFamily::unordered) {
+            return i == j ? std::string("remove ") + top_word() + ": " + a + " is already last"
+                          : std::string("remove ") + top_word() + ": exchange " + a +
+                                " with the last, " + b;
+        }
+        if (op_ == LessonOp::Kind::sortdown && i == 0) {
+            sinking_ = b;
+            return "sortdown: exchange " + std::string(top_word()) + " " + a + " with " + b +
+                   " at " + slot(j) + "; " + a + " is in place";
+        }
+        if (i == j) return prefix_ + ": " + a + " is the only item";
+        if (i == 0 && j + 1 == keys.size() && first) {
+            sinking_ = b;
+            return prefix_ + ": exchange the root " + a + " with the last, " + b;
+        }
+        return prefix_ + "; exchange " + a + " and " + b;
+    }
+
+    const pq::LessonPanel& panel_;
+    bool max_;
+    int base_;
+    LessonOp::Kind op_ = LessonOp::Kind::insert;
+    std::string prefix_;
+    std::optional<std::string> sinking_;  ///< the key a sink moves down
+    std::string changed_from_;            ///< increase-key: the key before
+};
+
+// ------------------------------------------------------------------------------------ frames
+
+/// Fractions of a step: a slide or a fade takes the first part, the rest holds still so the
+/// class sees where things landed before the next step.
+constexpr double slide_part = 0.8;
+constexpr double fade_part = 0.5;
+
+double part(double progress, double fraction) noexcept {
+    return std::clamp(progress / fraction, 0.0, 1.0);
+}
+
+void mark_step(const LessonStep& step, double progress, view::HeapPanelView& view) {
+    auto& slots = view.slots;
+    const auto mark = [&](std::size_t i, SlotMark m) {
+        if (i < slots.size()) slots[i].mark = m;
+    };
+    switch (step.kind) {
+        case LessonStep::Kind::appear:
+            mark(step.i, SlotMark::inserted);
+            view.fade = ease(part(progress, fade_part));
+            break;
+        case LessonStep::Kind::compare:
+            mark(step.i, SlotMark::compared);
+            mark(step.j, SlotMark::compared);
+            break;
+        case LessonStep::Kind::exchange:
+        case LessonStep::Kind::shift:
+            mark(step.i, SlotMark::moving);
+            mark(step.j, SlotMark::moving);
+            if (step.i != step.j)
+                view.swap = view::HeapSwapView{step.i, step.j, ease(part(progress, slide_part))};
+            break;
+        case LessonStep::Kind::remove:
+            mark(step.i, SlotMark::leaving);
+            view.fade = 1.0F - ease(part(progress, slide_part));
+            break;
+        case LessonStep::Kind::change:
+            mark(step.i, SlotMark::changed);
+            break;
+        case LessonStep::Kind::sink:
+            mark(step.i, SlotMark::sinking);
+            break;
+    }
+    // The unordered array's scan keeps its max so far in view.
+    if (step.best && step.kind == LessonStep::Kind::compare) mark(*step.best, SlotMark::best);
+}
+
+std::vector<view::HeapMapRow> map_rows(const pq::LessonState& state, int index_base,
+                                       const std::optional<view::HeapSwapView>& swap) {
+    std::vector<std::pair<std::size_t, std::size_t>> by_handle;  // (handle, slot)
+    for (std::size_t i = 0; i < state.handles.size(); ++i)
+        by_handle.emplace_back(state.handles[i], i);
+    std::sort(by_handle.begin(), by_handle.end());
+    std::vector<view::HeapMapRow> rows;
+    for (const auto& [handle, slot] : by_handle) {
+        view::HeapMapRow row;
+        row.key = state.keys[slot];
+        row.updated = swap && (slot == swap->a || slot == swap->b);
+        // Once the keys have landed (the step's rest), the lit entries show where they are now:
+        // the picture at rest never contradicts the array.
+        std::size_t shown = slot;
+        if (row.updated && swap->t >= 1.0F) shown = slot == swap->a ? swap->b : swap->a;
+        row.index = std::to_string(static_cast<long long>(shown) + index_base);
+        rows.push_back(std::move(row));
+    }
+    return rows;
+}
+
+}  // namespace
+
+HeapPacing heap_pacing(double pace) noexcept {
+    HeapPacing pacing;
+    pacing.pace = pace;
+    pacing.pause = 0.6 * pace;
+    pacing.intro = std::max(1.0, 1.5 * pace);
+    pacing.outro = std::max(2.5, 3.0 * pace);
+    return pacing;
+}
+
+std::string panel_title(const pq::QueueKind& kind) {
+    switch (kind.family) {
+        case QueueFamily::unordered:
+            return "unordered array";
+        case QueueFamily::ordered:
+            return "ordered array";
+        case QueueFamily::binary:
+            return "binary heap";
+        case QueueFamily::dary:
+            return kind.d == 2 ? "binary heap" : std::to_string(kind.d) + "-heap";
+        case QueueFamily::indexed:
+            return "indexed " +
+                   (kind.d == 2 ? std::string("binary heap") : std::to_string(kind.d) + "-heap");
+    }
+    return to_string(kind);
+}
+
+HeapLesson::HeapLesson(pq::LessonRecord record, HeapPacing pacing, int index_base)
+    : record_(std::move(record)), pacing_(pacing), index_base_(index_base) {
+    if (!(pacing.pace > 0.0) || pacing.pause < 0.0 || pacing.intro < 0.0 || pacing.outro < 0.0)
+        throw_input_error("pace: must be > 0");
+    const bool max = record_.orientation() == pq::Orientation::max;
+    const std::vector<LessonOp>& ops = record_.ops();
+    for (const LessonOp& op : ops) {
+        switch (op.kind) {
+            case LessonOp::Kind::build:
+                labels_.emplace_back("build");
+                break;
+            case LessonOp::Kind::sortdown:
+                labels_.emplace_back("sortdown");
+                break;
+            default:
+                labels_.push_back(op.spelling);
+                break;
+        }
+    }
+    for (const pq::LessonPanel& panel : record_.panels()) {
+        PanelText text;
+        if (record_.heapsort()) {
+            text.title = "heapsort";
+            text.start = "heapsort " + std::to_string(panel.start.keys.size()) + " keys " +
+                         (max ? "into ascending order" : "into descending order");
+        } else {
+            text.title = panel_title(panel.kind);
+            text.start = text.title + (max ? ", max" : ", min") + "-oriented: empty";
+        }
+        Captioner captioner(panel, record_.orientation(), index_base_);
+        const pq::LessonState* before = &panel.start;
+        for (std::size_t k = 0; k < ops.size(); ++k) {
+            text.ops.push_back(captioner.op(ops[k], panel.ops[k], *before));
+            before = &panel.ops[k].end;
+        }
+        text_.push_back(std::move(text));
+    }
+
+    double t = pacing.intro;
+    for (std::size_t k = 0; k < ops.size(); ++k) {
+        op_start_.push_back(t);
+        std::size_t steps = 0;
+        for (const PanelText& p : text_) steps = std::max(steps, p.ops[k].shown.size());
+        t += static_cast<double>(steps) * pacing.pace + pacing.pause;
+    }
+    op_start_.push_back(t);  // the outro starts here
+}
+
+std::string HeapLesson::name() const {
+    std::string out;
+    for (const PanelText& p : text_) out += (out.empty() ? "" : ", ") + p.title;
+    return out;
+}
+
+double HeapLesson::duration() const noexcept {
+    return op_start_.back() + pacing_.outro;
+}
+
+HeapMoment HeapLesson::moment_at(double seconds) const {
+    HeapMoment moment;
+    seconds = std::clamp(seconds, 0.0, duration());
+    const std::vector<pq::LessonPanel>& panels = record_.panels();
+    // The operation under way: the last one started at or before `seconds`.
+    const auto after = std::upper_bound(op_start_.begin(), op_start_.end() - 1, seconds);
+    if (after == op_start_.begin()) {
+        moment.op = labels_.size();
+        for (std::size_t p = 0; p < panels.size(); ++p)
+            moment.panels.push_back({&panels[p].start, nullptr, 0.0, &text_[p].start});
+        return moment;
+    }
+    moment.started = true;
+    moment.finished = seconds >= op_start_.back();
+    moment.op = static_cast<std::size_t>(after - op_start_.begin()) - 1;
+    const double into = seconds - op_start_[moment.op];
+    const auto step = static_cast<std::size_t>(into / pacing_.pace);
+    for (std::size_t p = 0; p < panels.size(); ++p) {
+        const pq::LessonPanelOp& op = panels[p].ops[moment.op];
+        const OpText& text = text_[p].ops[moment.op];
+        if (step < text.shown.size()) {
+            const double progress = into / pacing_.pace - static_cast<double>(step);
+            const pq::LessonStep& s = op.steps[text.shown[step]];
+            moment.panels.push_back({&s.state, &s, progress, &text.captions[step]});
+        } else {
+            moment.panels.push_back({&op.end, nullptr, 0.0, &text.summary});
+        }
+    }
+    return moment;
+}
+
+view::HeapPanelView HeapLesson::panel_view(std::size_t panel, const HeapPanelMoment& moment) const {
+    const pq::LessonPanel& record = record_.panels()[panel];
+    const pq::LessonState& state = *moment.state;
+    const bool min = record_.orientation() == pq::Orientation::min;
+    const bool sort = record_.heapsort();
+    const std::string& title = text_[panel].title;
+    view::HeapPanelView view;
+    view.title = sort ? title + (min ? " (descending)" : " (ascending)")
+                      : title + (min ? " (min)" : " (max)");
+    view.counters = {"compares " + std::to_string(state.compares),
+                     (record.shifts ? "shifts " : "exchanges ") + std::to_string(state.exchanges)};
+    view.caption = *moment.caption;
+    view.tree = record.tree;
+    view.arity = std::max(record.arity, 2U);
+    view.capacity = record_.capacity();
+    view.index_base = index_base_;
+    for (const std::string& key : state.keys) view.slots.push_back({key, SlotMark::plain});
+    if (sort) view.heap_size = state.heap_size;
+    if (moment.step != nullptr) mark_step(*moment.step, moment.progress, view);
+    view.show_map = record.kind.family == QueueFamily::indexed;
+    if (view.show_map) view.map = map_rows(state, index_base_, view.swap);
+    return view;
+}
+
+view::HeapFrameView HeapLesson::frame_at(double seconds) const {
+    const HeapMoment moment = moment_at(seconds);
+    view::HeapFrameView view;
+    view.tokens = labels_;
+    if (moment.finished) {
+        view.current_token = view.tokens.size();  // all done, none under way
+    } else if (moment.started) {
+        view.current_token = moment.op;
+    }
+    for (std::size_t p = 0; p < moment.panels.size(); ++p)
+        view.panels.push_back(panel_view(p, moment.panels[p]));
+    return view;
+}
+
+std::string HeapLesson::widest_key() const {
+    std::string widest = "W";
+    const auto consider = [&](const pq::LessonState& s) {
+        for (const std::string& k : s.keys) {
+            if (k.size() > widest.size()) widest = k;
+        }
+    };
+    for (const pq::LessonPanel& panel : record_.panels()) {
+        consider(panel.start);
+        for (const pq::LessonPanelOp& op : panel.ops) {
+            for (const pq::LessonStep& step : op.steps) consider(step.state);
+            consider(op.end);
+        }
+    }
+    return widest;
+}
+
+}  // namespace collide::show
