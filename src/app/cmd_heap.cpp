@@ -20,7 +20,6 @@
 #include "collide/render/heap_view.hpp"
 #include "collide/sim/pq/heap_lesson.hpp"
 #include "collide/video/output.hpp"
-#include "collide/video/png.hpp"
 #include "collide/video/video_writer.hpp"
 #include "commands.hpp"
 #include "heap_frames.hpp"
@@ -133,19 +132,16 @@ void run(const HeapCli& v) {
     config.theme = theme;
     render::HeapRenderer renderer(config, render::Backend::automatic, print_notice);
 
+    const double still_time = given(v.video.at_opt) ? v.video.at : timeline.duration();
+    const LessonVideoSummary written = write_lesson(
+        output, geometry, progress_mode, timeline.duration(), still_time,
+        [&](double t, Image& frame) { renderer.render(heap_frame_at(timeline, show, t), frame); });
     if (output.still) {
-        const double t = given(v.video.at_opt) ? v.video.at : timeline.duration();
-        const Image image = renderer.render(heap_frame_at(timeline, show, t));
-        video::write_png(image, output.path);
         std::printf("%s: %dx%d PNG at %.2f s of a %.2f s video of %s\n",
-                    output.path.string().c_str(), geometry.width, geometry.height, t,
+                    output.path.string().c_str(), geometry.width, geometry.height, still_time,
                     timeline.duration(), lesson_name(timeline).c_str());
         return;
     }
-
-    const LessonVideoSummary written = write_lesson_video(
-        output, geometry, progress_mode, timeline.duration(),
-        [&](double t, Image& frame) { renderer.render(heap_frame_at(timeline, show, t), frame); });
     std::printf("%s: %.2f s of video, %lld frames, %dx%d @ %g fps, %s, %zu operations\n",
                 output.path.string().c_str(), static_cast<double>(written.frames) / geometry.fps,
                 static_cast<long long>(written.frames), written.width, written.height, written.fps,

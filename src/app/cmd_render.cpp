@@ -306,7 +306,7 @@ void run(const CliValues& values, bool still) {
 
     InterruptGuard interrupts;
     Progress progress(progress_mode, plan.clock.count);
-    PipelineHooks hooks;
+    JobHooks hooks;
     hooks.interrupts = &interrupts;
     hooks.progress = &progress;
     hooks.preview = values.preview;
@@ -315,8 +315,7 @@ void run(const CliValues& values, bool still) {
     hooks.dump_rgba = values.dump_rgba;
     PipelineResult result;
     try {
-        result = plan.kind == OutputKind::still ? render_still(scene, plan, hooks)
-                                                : render_video(scene, plan, hooks);
+        result = run_render(scene, plan, hooks);
     } catch (...) {
         progress.finish();
         interrupts.throw_if_requested();  // whatever noticed it first: one wording, the signal

@@ -8,8 +8,8 @@
 #include <utility>
 
 #include "collide/error.hpp"
-#include "collide/video/video_writer.hpp"
 #include "interrupt.hpp"
+#include "video_job.hpp"
 
 namespace collide::app {
 
@@ -72,39 +72,65 @@ LessonGeometry lesson_geometry_of(const LessonVideoCli& v, FrameSize minimum,
     return g;
 }
 
-LessonVideoSummary write_lesson_video(const LessonOutput& output, const LessonGeometry& geometry,
-                                      ProgressMode progress_mode, double duration,
-                                      const std::function<void(double t, Image& frame)>& draw) {
-    InterruptGuard interrupts;
-    video::VideoOptions options;
-    options.path = output.path;
-    options.format = output.format;
-    options.width = geometry.width;
-    options.height = geometry.height;
-    options.fps = geometry.fps;
-    options.cancel = &interrupts.flag();
-    video::VideoWriter writer(options);
-    for (const std::string& line : writer.notices()) print_notice(line);
+namespace {
 
-    const auto frames =
-        std::max<std::int64_t>(1, std::llround(duration * static_cast<double>(geometry.fps)));
-    Progress progress(progress_mode, frames);
+/// A drawn lesson as the video job's frame program: frame k of a video shows time k / fps; a
+/// still's one frame shows `still_time`.
+class LessonProgram final : public FrameProgram {
+  public:
+    LessonProgram(const LessonDraw& draw, int fps, bool still, double still_time)
+        : draw_(draw), fps_(fps), still_(still), still_time_(still_time) {}
+
+    double frame(std::int64_t k, FrameUse use, Image& image) override {
+        const double t = still_ ? still_time_ : static_cast<double>(k) / fps_;
+        if (use == FrameUse::output) draw_(t, image);
+        return t;
+    }
+
+  private:
+    const LessonDraw& draw_;
+    int fps_;
+    bool still_;
+    double still_time_;
+};
+
+}  // namespace
+
+LessonVideoSummary write_lesson(const LessonOutput& output, const LessonGeometry& geometry,
+                                ProgressMode progress_mode, double duration, double still_time,
+                                const LessonDraw& draw) {
+    InterruptGuard interrupts;
+    VideoJob job;
+    job.output.path = output.path;
+    job.output.format = output.format;
+    job.output.still = output.still;
+    job.width = geometry.width;
+    job.height = geometry.height;
+    job.fps = geometry.fps;
+    job.frames = output.still ? 1
+                              : std::max<std::int64_t>(
+                                    1, std::llround(duration * static_cast<double>(geometry.fps)));
+    Progress progress(progress_mode, job.frames);
+    JobHooks hooks;
+    hooks.interrupts = &interrupts;
+    hooks.progress = &progress;
+    hooks.notice = print_notice;
+    JobResult written;
     try {
-        for (std::int64_t k = 0; k < frames; ++k) {
-            interrupts.throw_if_requested();
-            const double t = static_cast<double>(k) / geometry.fps;
-            Image frame = writer.spare_frame();
-            draw(t, frame);
-            writer.write(std::move(frame));
-            progress.frame_done(t);
-        }
-        writer.finish();
+        written = run_video_job(
+            job,
+            [&](render::Backend /*the lessons' renderers are made by their commands*/) {
+                return std::make_unique<LessonProgram>(draw, geometry.fps, output.still,
+                                                       still_time);
+            },
+            hooks);
     } catch (...) {
         progress.finish();
         throw;
     }
     progress.finish();
-    return {frames, writer.output_width(), writer.output_height(), writer.output_fps()};
+    for (const std::string& line : written.notices) print_notice(line);
+    return {written.frames, written.output_width, written.output_height, written.output_fps};
 }
 
 }  // namespace collide::app

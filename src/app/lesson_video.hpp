@@ -67,11 +67,15 @@ struct LessonVideoSummary {
     double fps = 0.0;
 };
 
-/// Encodes `duration` seconds (at least one frame) to `output`: frame k shows time k / fps, drawn
-/// into the writer's spare frame by `draw`. Ctrl-C stops it between frames; the destination is
-/// only replaced once the video is whole (VideoWriter).
-LessonVideoSummary write_lesson_video(const LessonOutput& output, const LessonGeometry& geometry,
-                                      ProgressMode progress_mode, double duration,
-                                      const std::function<void(double t, Image& frame)>& draw);
+/// A drawn lesson's picture at `t` seconds of video, drawn into `frame` (sized by the drawing).
+using LessonDraw = std::function<void(double t, Image& frame)>;
+
+/// Writes the lesson through the video job (video_job.hpp): a video of `duration` seconds (at
+/// least one frame, frame k showing time k / fps) or, for output.still, the one frame showing
+/// `still_time` as a PNG. Ctrl-C stops it between frames; the destination is only replaced once
+/// the output is whole.
+LessonVideoSummary write_lesson(const LessonOutput& output, const LessonGeometry& geometry,
+                                ProgressMode progress_mode, double duration, double still_time,
+                                const LessonDraw& draw);
 
 }  // namespace collide::app

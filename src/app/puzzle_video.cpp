@@ -17,7 +17,6 @@
 #include "collide/error.hpp"
 #include "collide/render/puzzle_view.hpp"
 #include "collide/video/output.hpp"
-#include "collide/video/png.hpp"
 #include "collide/video/video_writer.hpp"
 #include "lesson_video.hpp"
 #include "progress.hpp"
@@ -87,18 +86,15 @@ void render_puzzle_video(const puzzle::Board& start,
     config.height = geometry.height;
     render::PuzzleRenderer renderer(config, render::Backend::automatic, print_notice);
 
+    const double still_time = given(v.at_opt) ? v.at : frames.duration();
+    const LessonVideoSummary written = write_lesson(
+        output, geometry, progress_mode, frames.duration(), still_time,
+        [&](double t, Image& frame) { renderer.render(frames.frame_at(t), frame); });
     if (output.still) {
-        const double t = given(v.at_opt) ? v.at : frames.duration();
-        const Image image = renderer.render(frames.frame_at(t));
-        video::write_png(image, output.path);
         std::printf("%s: %dx%d PNG at %.2f s of a %.2f s video\n", output.path.string().c_str(),
-                    geometry.width, geometry.height, t, frames.duration());
+                    geometry.width, geometry.height, still_time, frames.duration());
         return;
     }
-
-    const LessonVideoSummary written = write_lesson_video(
-        output, geometry, progress_mode, frames.duration(),
-        [&](double t, Image& frame) { renderer.render(frames.frame_at(t), frame); });
     std::printf("%s: %.2f s of video, %lld frames, %dx%d @ %g fps\n", output.path.string().c_str(),
                 static_cast<double>(written.frames) / geometry.fps,
                 static_cast<long long>(written.frames), written.width, written.height, written.fps);
