@@ -39,7 +39,6 @@ struct HeapCli {
     bool min = false;
     int index_base = 1;
     double pace = 0.8;
-    std::string theme = "dark";
     LessonVideoCli video;
 
     CLI::Option* ops_opt = nullptr;
@@ -106,7 +105,7 @@ std::string lesson_name(const pq::LessonTimeline& timeline) {
 void run(const HeapCli& v) {
     // Validation: nothing is drawn, and no file is created, until all of it passes.
     const ProgressMode progress_mode = parse_progress_mode(v.video.progress);
-    const render::Theme theme = render::parse_theme(v.theme, "--theme");
+    const render::Theme theme = render::parse_theme(v.video.theme, "--theme");
     const pq::LessonTimeline timeline = timeline_of(v);
     check_legible(timeline, v);
     const LessonGeometry geometry = lesson_geometry_of(v.video);
@@ -171,10 +170,7 @@ void add_heap_command(CLI::App& root) {
         ->capture_default_str();
     cmd->add_option("--pace", v->pace, "Seconds per step (a compare, an exchange, ...)")
         ->capture_default_str();
-    add_lesson_video_options(*cmd, v->video, "heap", "e.g. 640x360");
-    cmd->add_option("--theme", v->theme,
-                    "Colours: dark (screens) or light (projectors, print), as in `collide render`")
-        ->capture_default_str();
+    add_lesson_video_options(*cmd, v->video, "heap", "e.g. 640x360", true);
     cmd->footer(
         "Examples:\n"
         "  collide heap --ops \"P Q E * X A M * P L E *\" -o heap.mp4   # the lecture's trace\n"

@@ -13,36 +13,19 @@
 
 namespace collide::app {
 
-bool given(const CLI::Option* option) {
-    return option != nullptr && option->count() > 0;
-}
-
 void add_lesson_video_options(CLI::App& cmd, LessonVideoCli& v, std::string_view stem,
-                              std::string_view size_note) {
-    v.output_opt = cmd.add_option(
-        "-o,--output", v.output,
-        fmt::format("Output file (default out/{}.mp4, .gif, _frames/ or .png)", stem));
-    v.format_opt =
-        cmd.add_option("--format", v.format, "mp4 (default), gif, or png (a directory of frames)");
-    v.quality_opt =
-        cmd.add_option("-q,--quality", v.quality,
-                       "l 854x480@15, m 1280x720@30 (default), h 1920x1080@60, k 3840x2160@60");
-    v.size_opt = cmd.add_option("--size", v.size,
-                                fmt::format("Frame size WxH, overrides -q ({})", size_note));
-    v.fps_opt = cmd.add_option("--fps", v.fps, "Frames per second, overrides -q");
-    v.last_frame_opt = cmd.add_flag(
-        "--last-frame", v.last_frame,
-        fmt::format("Write only the final frame, as a PNG (-o FILE.png, default out/{}.png)",
-                    stem));
-    v.at_opt = cmd.add_option("--at", v.at,
-                              fmt::format("Write only the frame at this many seconds of video, as "
-                                          "a PNG (a still for slides; -o FILE.png, default "
-                                          "out/{}.png)",
-                                          stem));
-    cmd.add_option("--progress", v.progress,
-                   "Progress on stderr: auto (bar on a terminal), bar, json or none")
-        ->capture_default_str();
-    cmd.add_flag("--verbose", v.verbose, "Show the encoder's own log");
+                              std::string_view size_example, bool theme) {
+    const std::string at_help =
+        fmt::format("Write only the frame at this many seconds of video, as a PNG (a still for "
+                    "slides; -o FILE.png, default out/{}.png)",
+                    stem);
+    VideoOptionSet set;
+    set.stem = stem;
+    set.size_example = size_example;
+    set.at_help = at_help;
+    set.theme = theme;
+    set.theme_help = "as in `collide render` (default dark)";
+    add_video_options(cmd, v, set);
 }
 
 LessonOutput lesson_output_of(const LessonVideoCli& v, std::string_view stem) {

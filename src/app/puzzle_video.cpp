@@ -41,7 +41,7 @@ LessonGeometry geometry_of(const PuzzleVideoCli& v) {
 }  // namespace
 
 void add_puzzle_video_options(CLI::App& cmd, PuzzleVideoCli& v) {
-    add_lesson_video_options(cmd, v, "puzzle", "at least 854x480, e.g. 960x540");
+    add_lesson_video_options(cmd, v, "puzzle", "at least 854x480, e.g. 960x540", false);
 }
 
 void refuse_video_options(const PuzzleVideoCli& v, const std::string& mode) {
