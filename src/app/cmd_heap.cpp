@@ -114,7 +114,7 @@ void run(const HeapCli& v) {
             "--at", fmt::format("{}", v.video.at),
             fmt::format("a time within the video, 0..{:.2f} s", timeline.duration()));
     }
-    const LessonOutput output = lesson_output_of(v.video, "heap");
+    const OutputChoice output = lesson_output_of(v.video, "heap");
     if (output.default_path) std::filesystem::create_directories(output.path.parent_path());
     video::check_output_writable(
         output.path, !output.still && output.format == video::VideoFormat::png_sequence);

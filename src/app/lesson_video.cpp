@@ -28,11 +28,11 @@ void add_lesson_video_options(CLI::App& cmd, LessonVideoCli& v, std::string_view
     add_video_options(cmd, v, set);
 }
 
-LessonOutput lesson_output_of(const LessonVideoCli& v, std::string_view stem) {
+OutputChoice lesson_output_of(const LessonVideoCli& v, std::string_view stem) {
     const auto if_given = [](const CLI::Option* option, const std::string& value) {
         return given(option) ? std::optional(value) : std::nullopt;
     };
-    return lesson_output(if_given(v.format_opt, v.format), if_given(v.output_opt, v.output),
+    return resolve_output(if_given(v.format_opt, v.format), if_given(v.output_opt, v.output),
                          v.last_frame || given(v.at_opt), stem);
 }
 
@@ -79,7 +79,7 @@ class LessonProgram final : public FrameProgram {
 
 }  // namespace
 
-LessonVideoSummary write_lesson(const LessonOutput& output, const LessonGeometry& geometry,
+LessonVideoSummary write_lesson(const OutputChoice& output, const LessonGeometry& geometry,
                                 ProgressMode progress_mode, double duration, double still_time,
                                 const LessonDraw& draw) {
     InterruptGuard interrupts;

@@ -31,8 +31,8 @@ using LessonVideoCli = VideoCli;
 void add_lesson_video_options(CLI::App& cmd, LessonVideoCli& v, std::string_view stem,
                               std::string_view size_example, bool theme);
 
-/// Where and in which format the lesson goes (lesson_output of what was given).
-[[nodiscard]] LessonOutput lesson_output_of(const LessonVideoCli& v, std::string_view stem);
+/// Where and in which format the lesson goes (resolve_output of what was given).
+[[nodiscard]] OutputChoice lesson_output_of(const LessonVideoCli& v, std::string_view stem);
 
 /// -q, then --size and --fps when given. A frame smaller than `minimum` (when not 0x0) is
 /// refused naming --size or -q, saying it is too small for `what_stays_legible`.
@@ -54,7 +54,7 @@ using LessonDraw = std::function<void(double t, Image& frame)>;
 /// least one frame, frame k showing time k / fps) or, for output.still, the one frame showing
 /// `still_time` as a PNG. Ctrl-C stops it between frames; the destination is only replaced once
 /// the output is whole.
-LessonVideoSummary write_lesson(const LessonOutput& output, const LessonGeometry& geometry,
+LessonVideoSummary write_lesson(const OutputChoice& output, const LessonGeometry& geometry,
                                 ProgressMode progress_mode, double duration, double still_time,
                                 const LessonDraw& draw);
 

@@ -30,7 +30,7 @@ namespace {
 /// The smallest frame whose text stays legible (the design is laid out for 1280x720).
 constexpr FrameSize min_frame{854, 480};
 
-LessonOutput output_of(const PuzzleVideoCli& v) {
+OutputChoice output_of(const PuzzleVideoCli& v) {
     return lesson_output_of(v, "puzzle");
 }
 
@@ -58,7 +58,7 @@ void refuse_video_options(const PuzzleVideoCli& v, const std::string& mode) {
 void validate_puzzle_video(const PuzzleVideoCli& v) {
     (void)parse_progress_mode(v.progress);
     (void)geometry_of(v);
-    const LessonOutput output = output_of(v);
+    const OutputChoice output = output_of(v);
     if (!output.default_path) {
         video::check_output_writable(
             output.path, !output.still && output.format == video::VideoFormat::png_sequence);
@@ -75,7 +75,7 @@ void render_puzzle_video(const puzzle::Board& start,
         throw_option_error("--at", fmt::format("{}", v.at),
                            fmt::format("a time within the video, 0..{:.2f} s", frames.duration()));
     }
-    const LessonOutput output = output_of(v);
+    const OutputChoice output = output_of(v);
     if (output.default_path) std::filesystem::create_directories(output.path.parent_path());
     video::check_output_writable(
         output.path, !output.still && output.format == video::VideoFormat::png_sequence);

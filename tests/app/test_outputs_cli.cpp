@@ -256,3 +256,62 @@ TEST_CASE("check --export: a read-only filesystem is exit 2 with the reason") {
     CHECK(r.exit_code == 2);
     CHECK(contains(r.output, "Read-only file system"));
 }
+
+TEST_CASE("one output rule for render, thumbnail, heap and puzzle (-o, --format, stills)") {
+    // Every destination lies in a directory that does not exist: a request the rule accepts
+    // then stops at the path ("directory ... does not exist"), one it refuses names -o or
+    // --format; nothing is ever rendered. The same answers for every command.
+    const TempDir dir("outputs_rule");
+    const std::string m = q(dir.path / "missing") + "/";
+    const std::vector<std::string> videos = {
+        "render gas", "heap --ops 'P Q *'", "puzzle '1 2 3 4 5 6 7 0 8'"};
+    struct Case {
+        std::string options;
+        std::string refused;  ///< the option the rule names; empty: accepted
+    };
+    const std::vector<Case> video_cases = {
+        {"-o M/x.mp4", ""},
+        {"-o M/x.GIF", ""},
+        {"-o M/x.avi --format mp4", ""},  // with --format, any extension but another format's
+        {"-o M/x --format gif", ""},
+        {"-o M/x --format png", ""},
+        {"-o M/x.gif --format mp4", "-o"},
+        {"-o M/x.gif --format png", "-o"},  // a directory of frames named .gif misleads
+        {"-o M/x.mp4 --format png", "-o"},
+        {"-o M/x.avi", "-o"},  // without --format, the extension decides
+        {"-o M/x", "-o"},
+        {"-o M/x.png", "-o"},
+        {"-o M/x.mp4 --format avi", "--format"},
+        {"-o M/x.png --last-frame", ""},
+        {"-o M/x.PNG --last-frame", ""},
+        {"-o M/x.mp4 --last-frame", "-o"},
+        {"-o M/x.png --last-frame --format gif", "--format"},
+    };
+    // thumbnail is always a still: the same rule with --last-frame implied.
+    const std::vector<Case> still_cases = {
+        {"-o M/x.png", ""}, {"-o M/x.PNG", ""}, {"-o M/x.mp4", "-o"}, {"-o M/x", "-o"}};
+    const auto check = [&](const std::string& command, const Case& c) {
+        std::string options = c.options;
+        for (std::size_t at = options.find("M/"); at != std::string::npos;
+             at = options.find("M/", at)) {
+            options.replace(at, 2, m);
+            at += m.size();
+        }
+        const RunResult r = run_collide(command + " " + options + " --progress none");
+        INFO(command << " " << c.options << "\n" << r.output);
+        CHECK(r.exit_code == 2);
+        if (c.refused.empty()) {
+            CHECK(contains(r.output, "does not exist"));
+        } else {
+            CHECK(contains(r.output, "error: " + c.refused + ":"));
+        }
+    };
+    for (const std::string& command : videos) {
+        for (const Case& c : video_cases) check(command, c);
+    }
+    for (const Case& c : still_cases) {
+        check("thumbnail gas", c);
+        for (const std::string& command : videos) check(command, {c.options + " --last-frame", c.refused});
+    }
+    CHECK(entries(dir.path).empty());
+}
