@@ -4,6 +4,9 @@
 
 #include <fmt/core.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -242,10 +245,11 @@ std::string engine_costs(const RenderPlan& plan, const PipelineResult& result) {
     return out;
 }
 
-void print_summary(const RenderPlan& plan, const PipelineResult& result, double wall_seconds) {
+void print_summary(const RenderPlan& plan, const PipelineResult& result, double wall_seconds,
+                   std::FILE* out) {
     const std::uintmax_t bytes = size_on_disk(plan.output);
     if (plan.kind == OutputKind::still) {
-        std::printf("%s: %dx%d PNG at t = %.6g (%s), %s, in %.1f s; engines: %s\n",
+        std::fprintf(out, "%s: %dx%d PNG at t = %.6g (%s), %s, in %.1f s; engines: %s\n",
                     plan.output.string().c_str(), result.output_width, result.output_height,
                     result.sim_time,
                     fmt::format("frame {} of a {} fps video", result.frames - 1, plan.fps).c_str(),
@@ -253,13 +257,33 @@ void print_summary(const RenderPlan& plan, const PipelineResult& result, double 
         return;
     }
     const double seconds = static_cast<double>(result.frames) / plan.fps;
-    std::printf(
-        "%s: %.2f s of video, %lld frames, %dx%d @ %g fps, %s, rendered in %.1f s (%.1f fps); "
+    std::fprintf(
+        out, "%s: %.2f s of video, %lld frames, %dx%d @ %g fps, %s, rendered in %.1f s (%.1f fps); "
         "simulation time 0..%.6g; engines: %s\n",
         plan.output.string().c_str(), seconds, static_cast<long long>(result.frames),
         result.output_width, result.output_height, result.output_fps, human_size(bytes).c_str(),
         wall_seconds, wall_seconds > 0.0 ? static_cast<double>(result.frames) / wall_seconds : 0.0,
         result.sim_time, engine_costs(plan, result).c_str());
+}
+
+/// True when `fd` writes to the same file as standard output.
+bool same_file_as_stdout(int fd) {
+    struct stat a {};
+    struct stat b {};
+    return ::fstat(fd, &a) == 0 && ::fstat(STDOUT_FILENO, &b) == 0 && a.st_dev == b.st_dev &&
+           a.st_ino == b.st_ino;
+}
+
+/// The run's outputs must be files of their own (after links), the layout outside a directory
+/// of frames. Throws Error(input) naming both.
+void check_distinct_outputs(const RenderPlan& plan, const CliValues& values) {
+    std::vector<io::NamedOutput> outputs;
+    const bool directory =
+        plan.kind == OutputKind::video && plan.format == video::VideoFormat::png_sequence;
+    outputs.push_back({"-o", plan.output, directory});
+    if (!plan.layout_json.empty()) outputs.push_back({"--layout-json", plan.layout_json, false});
+    if (!values.dump_rgba.empty()) outputs.push_back({"--dump-rgba", values.dump_rgba, false});
+    if (outputs.size() > 1) io::check_distinct_outputs(outputs);
 }
 
 void run(const CliValues& values, bool still) {
@@ -275,10 +299,14 @@ void run(const CliValues& values, bool still) {
     video::set_libav_verbose(values.video.verbose);
     for (const std::string& line : plan.notices) print_notice(line);
     // Its temporary exists from here on, so an unwritable path fails before any frame.
+    check_distinct_outputs(plan, values);
     std::optional<io::OutputFile> layout_file;
     if (!plan.layout_json.empty()) {
         layout_file.emplace(plan.layout_json, io::OutputOptions{"--layout-json", true});
     }
+    // Data on standard output (--layout-json -) is the only thing there: the summary moves aside.
+    const bool data_on_stdout =
+        layout_file && layout_file->is_stream() && same_file_as_stdout(layout_file->fd());
 
     InterruptGuard interrupts;
     Progress progress(progress_mode, plan.clock.count);
@@ -291,19 +319,15 @@ void run(const CliValues& values, bool still) {
     hooks.dump_rgba = values.dump_rgba;
     PipelineResult result;
     try {
-        result = run_render(scene, plan, hooks);
+        result = run_render(scene, plan, hooks, layout_file ? &*layout_file : nullptr);
     } catch (...) {
         progress.finish();
         interrupts.throw_if_requested();  // whatever noticed it first: one wording, the signal
         throw;
     }
     progress.finish();
-    if (layout_file) {
-        layout_file->write(result.layout_json);
-        layout_file->commit();
-    }
     for (const std::string& line : result.notices) print_notice(line);
-    print_summary(plan, result, progress.elapsed_seconds());
+    print_summary(plan, result, progress.elapsed_seconds(), data_on_stdout ? stderr : stdout);
 }
 
 }  // namespace

@@ -355,7 +355,8 @@ class CollisionProgram final : public FrameProgram {
 
 }  // namespace
 
-PipelineResult run_render(const Scene& scene, const RenderPlan& plan, const JobHooks& hooks) {
+PipelineResult run_render(const Scene& scene, const RenderPlan& plan, const JobHooks& hooks,
+                          io::OutputFile* layout_file) {
     check_captions_fit(scene, plan);
     VideoJob job;
     job.output.path = plan.output;
@@ -370,12 +371,17 @@ PipelineResult run_render(const Scene& scene, const RenderPlan& plan, const JobH
     job.title = title_of(plan);
 
     PipelineResult result;
+    JobHooks job_hooks = hooks;
+    job_hooks.before_commit = [&] {
+        if (layout_file != nullptr) layout_file->write(result.layout_json);
+    };
     const JobResult written = run_video_job(
         job,
         [&](render::Backend backend) {
             return std::make_unique<CollisionProgram>(scene, plan, backend, hooks, result);
         },
-        hooks);
+        job_hooks);
+    if (layout_file != nullptr) layout_file->commit();
     result.frames = written.frames;
     result.notices = written.notices;
     result.output_width = written.output_width;

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "collide/io/file.hpp"
 #include "collide/render/renderer.hpp"
 #include "collide/scene.hpp"
 #include "collide/sim/engine.hpp"
@@ -123,7 +124,11 @@ struct PipelineResult {
 /// PNG, every earlier frame time still simulated (so the time-driven engine takes the video's
 /// steps) and the frames that feed the trails drawn, so the image equals the video's frame.
 /// Nothing appears at plan.output unless every frame was produced and the file finished.
-/// Throws Error: input for bad options, runtime for GL/encoder failures or an interrupt.
-PipelineResult run_render(const Scene& scene, const RenderPlan& plan, const JobHooks& hooks);
+/// `layout_file` (may be null: no --layout-json) receives the last frame's rectangles once the
+/// output is complete, before either is put in place: a failure to write one leaves both
+/// destinations untouched. Throws Error: input for bad options, runtime for GL/encoder failures
+/// or an interrupt.
+PipelineResult run_render(const Scene& scene, const RenderPlan& plan, const JobHooks& hooks,
+                          io::OutputFile* layout_file = nullptr);
 
 }  // namespace collide::app

@@ -91,7 +91,9 @@ JobResult run_video(const VideoJob& job, const ProgramFactory& make_program,
     }
     check_interrupt(hooks);
     program->finish();
-    writer.finish();
+    writer.complete();
+    if (hooks.before_commit) hooks.before_commit();
+    writer.commit();
     dump.finish();
     result.notices = writer.notices();
     result.output_width = writer.output_width();
@@ -122,7 +124,9 @@ JobResult run_still(const VideoJob& job, const ProgramFactory& make_program,
     check_interrupt(hooks);
     program->finish();
     if (preview) preview->show(image);
-    video::write_png(image, job.output.path);
+    io::OutputFile png = video::write_png_uncommitted(image, job.output.path);
+    if (hooks.before_commit) hooks.before_commit();
+    png.commit();
     result.output_width = image.width;
     result.output_height = image.height;
     return result;

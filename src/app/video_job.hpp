@@ -80,6 +80,10 @@ struct JobHooks {
     /// Benchmarks only: also append every frame as raw RGBA to this file (for timing libx264
     /// alone on exactly the same frames with the ffmpeg command line).
     std::filesystem::path dump_rgba;
+    /// The run's other outputs (--layout-json): called once every frame is written and the
+    /// output is complete in its temporary, before it is put in place, so that a failure here
+    /// leaves the destination untouched. The caller commits those outputs after the job.
+    std::function<void()> before_commit;
 };
 
 /// What was written, for the summary line.

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "../support/files.hpp"
@@ -270,10 +271,8 @@ TEST_CASE("one output rule for render, thumbnail, heap and puzzle (-o, --format,
         std::string refused;  ///< the option the rule names; empty: accepted
     };
     const std::vector<Case> video_cases = {
-        {"-o M/x.mp4", ""},
-        {"-o M/x.GIF", ""},
+        {"-o M/x.MP4", ""},
         {"-o M/x.avi --format mp4", ""},  // with --format, any extension but another format's
-        {"-o M/x --format gif", ""},
         {"-o M/x --format png", ""},
         {"-o M/x.gif --format mp4", "-o"},
         {"-o M/x.gif --format png", "-o"},  // a directory of frames named .gif misleads
@@ -282,14 +281,11 @@ TEST_CASE("one output rule for render, thumbnail, heap and puzzle (-o, --format,
         {"-o M/x", "-o"},
         {"-o M/x.png", "-o"},
         {"-o M/x.mp4 --format avi", "--format"},
-        {"-o M/x.png --last-frame", ""},
-        {"-o M/x.PNG --last-frame", ""},
-        {"-o M/x.mp4 --last-frame", "-o"},
-        {"-o M/x.png --last-frame --format gif", "--format"},
+        {"-o M/x.png --last-frame --format gif", "--format"},  // a still is a PNG
     };
-    // thumbnail is always a still: the same rule with --last-frame implied.
+    // One frame: thumbnail always, the others with --last-frame.
     const std::vector<Case> still_cases = {
-        {"-o M/x.png", ""}, {"-o M/x.PNG", ""}, {"-o M/x.mp4", "-o"}, {"-o M/x", "-o"}};
+        {"-o M/x.PNG", ""}, {"-o M/x.mp4", "-o"}, {"-o M/x", "-o"}};
     const auto check = [&](const std::string& command, const Case& c) {
         std::string options = c.options;
         for (std::size_t at = options.find("M/"); at != std::string::npos;
@@ -314,4 +310,111 @@ TEST_CASE("one output rule for render, thumbnail, heap and puzzle (-o, --format,
         for (const std::string& command : videos) check(command, {c.options + " --last-frame", c.refused});
     }
     CHECK(entries(dir.path).empty());
+}
+
+TEST_CASE("render: two outputs that are one file (same name, a link, a hard link) are refused") {
+    TempDir dir("outputs_same_file");
+    const fs::path video = dir.path / "x.mp4";
+    write_file(video, "old");
+    fs::create_symlink("x.mp4", dir.path / "link.json");
+    fs::create_hard_link(video, dir.path / "hard.json");
+    for (const std::string layout : {"x.mp4", "link.json", "hard.json"}) {
+        const RunResult r = run_collide("render gas" + small_video + " -o " + q(video) +
+                                        " --layout-json " + q(dir.path / layout));
+        INFO(layout << "\n" << r.output);
+        CHECK(r.exit_code == 2);
+        CHECK(contains(r.output, "is the same file as -o"));
+        CHECK(read_all(video) == "old");
+    }
+    // A layout inside the directory of frames would vanish with the directory it replaces.
+    const RunResult r =
+        run_collide("render gas" + small_video + " --format png -o " + q(dir.path / "frames") +
+                    " --layout-json " + q(dir.path / "frames" / "l.json"));
+    CHECK(r.exit_code == 2);
+    CHECK(contains(r.output, "lies inside -o"));
+    CHECK(entries(dir.path).size() == 3);  // x.mp4, link.json, hard.json: nothing new
+}
+
+TEST_CASE("render: a layout that cannot be written leaves the video untouched") {
+    if (!fs::exists("/dev/full")) COLLIDE_SKIP_TEST("no /dev/full");
+    TempDir dir("outputs_all_or_nothing");
+    const fs::path video = dir.path / "x.mp4";
+    write_file(video, "old");
+    const RunResult r =
+        run_collide("render gas" + small_video + " -o " + q(video) + " --layout-json /dev/full");
+    INFO(r.output);
+    CHECK(r.exit_code == 1);
+    CHECK(contains(r.output, "No space left on device"));
+    CHECK(read_all(video) == "old");  // before: replaced by the new video, then exit 1
+    // The same for a still: neither the PNG nor the layout is put in place.
+    const fs::path still = dir.path / "x.png";
+    const RunResult s = run_collide("thumbnail gas --size 320x180 --progress none -o " + q(still) +
+                                    " --layout-json /dev/full");
+    CHECK(s.exit_code == 1);
+    CHECK(!fs::exists(still));
+}
+
+TEST_CASE("render --layout-json -: standard output holds the JSON and nothing else") {
+    TempDir dir("outputs_stdout_data");
+    const RunResult r = run_collide_shell(std::string("\"") + COLLIDE_EXE + "\" render gas" +
+                                          small_video + " -o " + q(dir.path / "x.mp4") +
+                                          " --layout-json - 2>/dev/null");
+    INFO(r.output);
+    CHECK(r.exit_code == 0);
+    REQUIRE(!r.output.empty());
+    CHECK(r.output.front() == '{');
+    CHECK(r.output.substr(r.output.find_last_not_of('\n')) == "}\n");  // no summary line after
+    CHECK(!contains(r.output, "s of video"));
+    CHECK(fs::exists(dir.path / "x.mp4"));
+}
+
+TEST_CASE("render: destinations that would fail only at the end are refused before rendering") {
+    TempDir dir("outputs_up_front");
+    const auto refused = [&](const std::string& args, const std::string& reason) {
+        const RunResult r = run_collide(args);
+        INFO(args << "\n" << r.output);
+        CHECK(r.exit_code == 2);  // before: the whole render, then exit 1
+        CHECK(contains(r.output, reason));
+        CHECK(!contains(r.output, "s of video"));
+    };
+    // A name longer than the filesystem's NAME_MAX (pathconf): a file, a directory of frames.
+    const std::string long_name(252, 'a');
+    refused("render gas" + small_video + " -o " + q(dir.path / (long_name + ".mp4")),
+            "bytes long");
+    refused("thumbnail gas --size 320x180 -o " + q(dir.path / (long_name + ".png")), "bytes long");
+    // A link whose target ends in '/' or '/.' names a directory, not a file.
+    fs::create_directory(dir.path / "d.mp4");
+    fs::create_symlink("d.mp4/", dir.path / "slash.mp4");
+    fs::create_symlink("d.mp4/.", dir.path / "dot.mp4");
+    refused("render gas" + small_video + " -o " + q(dir.path / "slash.mp4"), "names no file");
+    refused("render gas" + small_video + " -o " + q(dir.path / "dot.mp4"), "names no file");
+    // A bind mount on the same filesystem (same st_dev as its parent): a private mount namespace
+    // where the system allows one (root, or unprivileged user namespaces).
+    fs::create_directory(dir.path / "src");
+    fs::create_directory(dir.path / "frames");
+    write_file(dir.path / "file-src.mp4", "old");
+    write_file(dir.path / "file.mp4", "old");
+    if (run_collide_shell("unshare -m true").exit_code != 0 &&
+        run_collide_shell("unshare -r -m true").exit_code != 0) {
+        COLLIDE_SKIP_TEST("no mount namespace here (unshare -m)");
+    }
+    const std::string unshare =
+        run_collide_shell("unshare -m true").exit_code == 0 ? "unshare -m" : "unshare -r -m";
+    const auto in_namespace = [&](const std::string& source, const std::string& target,
+                                  const std::string& args) {
+        return run_collide_shell(unshare + " sh -c \"mount --bind " + q(dir.path / source) + " " +
+                                 q(dir.path / target) + " && exec '" + COLLIDE_EXE + "' " + args +
+                                 "\"");
+    };
+    for (const auto& [source, target, args] :
+         {std::tuple<std::string, std::string, std::string>{
+              "src", "frames", "--format png -o " + q(dir.path / "frames")},
+          {"file-src.mp4", "file.mp4", "-o " + q(dir.path / "file.mp4")}}) {
+        const RunResult r = in_namespace(source, target, "render gas" + small_video + " " + args);
+        INFO(args << "\n" << r.output);
+        if (contains(r.output, "mount:")) COLLIDE_SKIP_TEST("mount --bind refused here");
+        CHECK(r.exit_code == 2);
+        CHECK(contains(r.output, "is a mount point"));
+    }
+    CHECK(read_all(dir.path / "file.mp4") == "old");
 }

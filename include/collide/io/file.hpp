@@ -32,6 +32,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace collide::io {
 
@@ -176,6 +177,20 @@ class OutputDirectory {
 void check_output_directory(const std::filesystem::path& destination,
                             const OutputDirectory::NamePredicate& replaceable,
                             const std::string& label = "output");
+
+/// One output of a run (for check_distinct_outputs): its label in messages ("-o",
+/// "--layout-json"), its path, and whether it is a directory output (a PNG sequence).
+struct NamedOutput {
+    std::string label;
+    std::filesystem::path path;
+    bool directory = false;
+};
+
+/// Refuses, before anything is written, two outputs of one run that are the same file: after
+/// symbolic links, hard links included, standard output twice ("-" and /dev/stdout) - or a file
+/// inside a directory output, which replaces its directory as a whole. Throws Error(input)
+/// naming both. Creates nothing.
+void check_distinct_outputs(const std::vector<NamedOutput>& outputs);
 
 /// An unnamed scratch file in `directory` (O_TMPFILE, or mkostemp + unlink at once), for data
 /// that must never outlive the process (the GIF writer's frame store). Throws Error(runtime).

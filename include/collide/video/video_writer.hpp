@@ -130,6 +130,10 @@ class VideoWriter {
     /// `options.path`. Throws Error(runtime) on any failure (then nothing is renamed), including
     /// when no frame was written. Calling it twice throws.
     void finish();
+    /// finish() in two steps, for a run with several outputs that puts none in place before all
+    /// are written: complete() does all but the rename (same throws), commit() the rename.
+    void complete();
+    void commit();
 
     /// Human-readable remarks about adjustments made to the request (odd size rounded up, GIF
     /// frame rate reduced, ...), for the app to print; the library itself never prints.
