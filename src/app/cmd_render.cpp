@@ -4,9 +4,6 @@
 
 #include <fmt/core.h>
 
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -266,14 +263,6 @@ void print_summary(const RenderPlan& plan, const PipelineResult& result, double 
         result.sim_time, engine_costs(plan, result).c_str());
 }
 
-/// True when `fd` writes to the same file as standard output.
-bool same_file_as_stdout(int fd) {
-    struct stat a {};
-    struct stat b {};
-    return ::fstat(fd, &a) == 0 && ::fstat(STDOUT_FILENO, &b) == 0 && a.st_dev == b.st_dev &&
-           a.st_ino == b.st_ino;
-}
-
 /// The run's outputs must be files of their own (after links), the layout outside a directory
 /// of frames. Throws Error(input) naming both.
 void check_distinct_outputs(const RenderPlan& plan, const CliValues& values) {
@@ -305,8 +294,7 @@ void run(const CliValues& values, bool still) {
         layout_file.emplace(plan.layout_json, io::OutputOptions{"--layout-json", true});
     }
     // Data on standard output (--layout-json -) is the only thing there: the summary moves aside.
-    const bool data_on_stdout =
-        layout_file && layout_file->is_stream() && same_file_as_stdout(layout_file->fd());
+    const bool data_on_stdout = layout_file && layout_file->is_standard_output();
 
     InterruptGuard interrupts;
     Progress progress(progress_mode, plan.clock.count);

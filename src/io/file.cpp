@@ -469,6 +469,14 @@ OutputFile& OutputFile::operator=(OutputFile&& other) noexcept {
     return *this;
 }
 
+bool OutputFile::is_standard_output() const noexcept {
+    if (!stream_ || !file_) return false;
+    struct stat mine {};
+    struct stat out {};
+    return ::fstat(file_.get(), &mine) == 0 && ::fstat(STDOUT_FILENO, &out) == 0 &&
+           mine.st_dev == out.st_dev && mine.st_ino == out.st_ino;
+}
+
 fs::path OutputFile::reopen_path() const {
     if (proc_fd_available() || temporary_name_.empty()) return proc_fd_path(file_.get());
     return directory_of(follow_links(destination_, label_)) / temporary_name_;

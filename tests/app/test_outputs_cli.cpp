@@ -368,6 +368,19 @@ TEST_CASE("render --layout-json -: standard output holds the JSON and nothing el
     CHECK(fs::exists(dir.path / "x.mp4"));
 }
 
+TEST_CASE("simulate --events-log -: standard output holds the log and nothing else") {
+    const RunResult r = run_collide_shell(std::string("\"") + COLLIDE_EXE +
+                                          "\" simulate gas --until 1 --events-log - 2>/dev/null");
+    CHECK(r.exit_code == 0);
+    CHECK(r.output.rfind("t,kind,a,b\n", 0) == 0);
+    CHECK(!contains(r.output, "discs"));  // the report went to stderr
+    // Two kinds of data on one stream cannot be told apart: refused before anything is written.
+    const RunResult both = run_collide("simulate gas --until 1 --events-log - --json");
+    CHECK(both.exit_code == 2);
+    CHECK(contains(both.output, "--events-log"));
+    CHECK(!contains(both.output, "t,kind,a,b"));
+}
+
 TEST_CASE("render: destinations that would fail only at the end are refused before rendering") {
     TempDir dir("outputs_up_front");
     const auto refused = [&](const std::string& args, const std::string& reason) {

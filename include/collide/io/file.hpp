@@ -100,6 +100,10 @@ class OutputFile {
     [[nodiscard]] const std::filesystem::path& destination() const noexcept { return destination_; }
     /// True when writing straight to standard output or a device/FIFO (see OutputOptions).
     [[nodiscard]] bool is_stream() const noexcept { return stream_; }
+    /// True when this stream is the very file standard output writes to ("-", /dev/stdout, a
+    /// name of the file stdout is redirected to), so that nothing else may go to stdout.
+    /// False once committed or discarded.
+    [[nodiscard]] bool is_standard_output() const noexcept;
     /// The temporary's name in the destination's directory, when it has one (tests).
     [[nodiscard]] const std::string& temporary_name() const noexcept { return temporary_name_; }
 
