@@ -84,7 +84,8 @@ render::Backend gl_backend_of(const CliValues& v) {
         throw_option_error("--gl", v.gl,
                            "a backend this collide was built with (" + available + ")");
     }
-    if (v.video.preview && backend != render::Backend::automatic && backend != render::Backend::glfw) {
+    if (v.video.preview && backend != render::Backend::automatic &&
+        backend != render::Backend::glfw) {
         throw_option_error("--gl", "'" + v.gl +
                                        "' beside --preview: --preview renders the frames through "
                                        "glfw (one GL implementation for the frames and the "
@@ -247,15 +248,16 @@ void print_summary(const RenderPlan& plan, const PipelineResult& result, double 
     const std::uintmax_t bytes = size_on_disk(plan.output);
     if (plan.kind == OutputKind::still) {
         std::fprintf(out, "%s: %dx%d PNG at t = %.6g (%s), %s, in %.1f s; engines: %s\n",
-                    plan.output.string().c_str(), result.output_width, result.output_height,
-                    result.sim_time,
-                    fmt::format("frame {} of a {} fps video", result.frames - 1, plan.fps).c_str(),
-                    human_size(bytes).c_str(), wall_seconds, engine_costs(plan, result).c_str());
+                     plan.output.string().c_str(), result.output_width, result.output_height,
+                     result.sim_time,
+                     fmt::format("frame {} of a {} fps video", result.frames - 1, plan.fps).c_str(),
+                     human_size(bytes).c_str(), wall_seconds, engine_costs(plan, result).c_str());
         return;
     }
     const double seconds = static_cast<double>(result.frames) / plan.fps;
     std::fprintf(
-        out, "%s: %.2f s of video, %lld frames, %dx%d @ %g fps, %s, rendered in %.1f s (%.1f fps); "
+        out,
+        "%s: %.2f s of video, %lld frames, %dx%d @ %g fps, %s, rendered in %.1f s (%.1f fps); "
         "simulation time 0..%.6g; engines: %s\n",
         plan.output.string().c_str(), seconds, static_cast<long long>(result.frames),
         result.output_width, result.output_height, result.output_fps, human_size(bytes).c_str(),

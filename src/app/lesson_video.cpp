@@ -15,10 +15,10 @@ namespace collide::app {
 
 void add_lesson_video_options(CLI::App& cmd, LessonVideoCli& v, std::string_view stem,
                               std::string_view size_example, bool theme) {
-    const std::string at_help =
-        fmt::format("Write only the frame at this many seconds of video, as a PNG (a still for "
-                    "slides; -o FILE.png, default out/{}.png)",
-                    stem);
+    const std::string at_help = fmt::format(
+        "Write only the frame at this many seconds of video, as a PNG (a still for "
+        "slides; -o FILE.png, default out/{}.png)",
+        stem);
     VideoOptionSet set;
     set.stem = stem;
     set.size_example = size_example;
@@ -33,7 +33,7 @@ OutputChoice lesson_output_of(const LessonVideoCli& v, std::string_view stem) {
         return given(option) ? std::optional(value) : std::nullopt;
     };
     return resolve_output(if_given(v.format_opt, v.format), if_given(v.output_opt, v.output),
-                         v.last_frame || given(v.at_opt), stem);
+                          v.last_frame || given(v.at_opt), stem);
 }
 
 LessonGeometry lesson_geometry_of(const LessonVideoCli& v, FrameSize minimum,

@@ -329,7 +329,8 @@ class CollisionProgram final : public FrameProgram {
             case FrameUse::skip:
                 break;
         }
-        if (!plan_.layout_json.empty() && last) result_.layout_json = renderer_.layout_json(content);
+        if (!plan_.layout_json.empty() && last)
+            result_.layout_json = renderer_.layout_json(content);
         result_.sim_time = frame->time;
         return frame->time;
     }

@@ -87,9 +87,9 @@ void render_puzzle_video(const puzzle::Board& start,
     render::PuzzleRenderer renderer(config, render::Backend::automatic, print_notice);
 
     const double still_time = given(v.at_opt) ? v.at : frames.duration();
-    const LessonVideoSummary written = write_lesson(
-        output, geometry, progress_mode, frames.duration(), still_time,
-        [&](double t, Image& frame) { renderer.render(frames.frame_at(t), frame); });
+    const LessonVideoSummary written =
+        write_lesson(output, geometry, progress_mode, frames.duration(), still_time,
+                     [&](double t, Image& frame) { renderer.render(frames.frame_at(t), frame); });
     if (output.still) {
         std::printf("%s: %dx%d PNG at %.2f s of a %.2f s video\n", output.path.string().c_str(),
                     geometry.width, geometry.height, still_time, frames.duration());

@@ -273,8 +273,8 @@ int checked_fps(int fps, std::string_view option) {
 }
 
 OutputChoice resolve_output(const std::optional<std::string>& format,
-                           const std::optional<std::string>& output, bool still,
-                           std::string_view stem) {
+                            const std::optional<std::string>& output, bool still,
+                            std::string_view stem) {
     OutputChoice out;
     const std::filesystem::path dir = default_output_dir;
     out.still = still;
@@ -294,8 +294,8 @@ OutputChoice resolve_output(const std::optional<std::string>& format,
         // format (a .gif written as MP4, or a directory of frames named .mp4, misleads).
         const bool names_a_format = ext == ".mp4" || ext == ".gif" || ext == ".png";
         if (names_a_format && ext != "." + std::string(video::to_string(out.format))) {
-            throw_option_error("-o", fmt::format("'{}' ends in {}, but --format is {}", *output,
-                                                 ext, *format));
+            throw_option_error(
+                "-o", fmt::format("'{}' ends in {}, but --format is {}", *output, ext, *format));
         }
     } else if (ext == ".mp4") {
         out.format = video::VideoFormat::mp4;

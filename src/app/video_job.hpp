@@ -64,8 +64,8 @@ struct VideoJob {
     int width = 1280;
     int height = 720;
     int fps = 30;
-    std::int64_t frames = 1;       ///< >= 1
-    std::int64_t warm_frames = 0;  ///< still: how many frames before the last are drawn
+    std::int64_t frames = 1;        ///< >= 1
+    std::int64_t warm_frames = 0;   ///< still: how many frames before the last are drawn
     std::string title = "collide";  ///< the preview window's title
 };
 

@@ -14,8 +14,9 @@ bool given(const CLI::Option* option) {
 void add_video_options(CLI::App& cmd, VideoCli& v, const VideoOptionSet& set) {
     v.output_opt = cmd.add_option(
         "-o,--output", v.output,
-        set.video ? fmt::format("Output file (default out/{}.mp4, .gif, _frames/ or .png)", set.stem)
-                  : fmt::format("Output file (default out/{}.png)", set.stem));
+        set.video
+            ? fmt::format("Output file (default out/{}.mp4, .gif, _frames/ or .png)", set.stem)
+            : fmt::format("Output file (default out/{}.png)", set.stem));
     if (set.video) {
         v.format_opt = cmd.add_option("--format", v.format,
                                       "mp4 (default), gif, or png (a directory of frames)");
@@ -35,9 +36,10 @@ void add_video_options(CLI::App& cmd, VideoCli& v, const VideoOptionSet& set) {
     }
     if (!set.at_help.empty()) v.at_opt = cmd.add_option("--at", v.at, std::string(set.at_help));
     if (set.theme) {
-        v.theme_opt = cmd.add_option(
-            "--theme", v.theme,
-            fmt::format("Colours: dark (screens) or light (projectors, print); {}", set.theme_help));
+        v.theme_opt =
+            cmd.add_option("--theme", v.theme,
+                           fmt::format("Colours: dark (screens) or light (projectors, print); {}",
+                                       set.theme_help));
     }
     if (set.preview) {
         v.preview_opt = cmd.add_flag("--preview", v.preview,

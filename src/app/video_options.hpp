@@ -39,10 +39,10 @@ struct VideoCli {
 struct VideoOptionSet {
     std::string_view stem;          ///< default outputs: out/STEM.mp4, ... ("<scene>", "heap")
     std::string_view size_example;  ///< in --size's help, e.g. "e.g. 640x360"
-    bool video = true;        ///< false: one PNG only (thumbnail): no --format, no --last-frame
-    std::string_view at_help;  ///< --at's meaning; empty: no --at
-    bool preview = false;      ///< --preview
-    bool theme = true;         ///< --theme
+    bool video = true;            ///< false: one PNG only (thumbnail): no --format, no --last-frame
+    std::string_view at_help;     ///< --at's meaning; empty: no --at
+    bool preview = false;         ///< --preview
+    bool theme = true;            ///< --theme
     std::string_view theme_help;  ///< --theme's default, in words
 };
 

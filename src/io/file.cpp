@@ -206,9 +206,8 @@ bool is_mount_root(int directory, const std::string& name) {
         return (status.stx_attributes & STATX_ATTR_MOUNT_ROOT) != 0;
     // Kernels before 5.8: a different device than the directory's.
     struct stat above {};
-    return ::fstat(directory, &above) == 0 &&
-           (status.stx_dev_major != major(above.st_dev) ||
-            status.stx_dev_minor != minor(above.st_dev));
+    return ::fstat(directory, &above) == 0 && (status.stx_dev_major != major(above.st_dev) ||
+                                               status.stx_dev_minor != minor(above.st_dev));
 }
 
 [[noreturn]] void throw_mount_point(const fs::path& shown, const std::string& label) {

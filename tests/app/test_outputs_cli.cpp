@@ -264,8 +264,8 @@ TEST_CASE("one output rule for render, thumbnail, heap and puzzle (-o, --format,
     // --format; nothing is ever rendered. The same answers for every command.
     const TempDir dir("outputs_rule");
     const std::string m = q(dir.path / "missing") + "/";
-    const std::vector<std::string> videos = {
-        "render gas", "heap --ops 'P Q *'", "puzzle '1 2 3 4 5 6 7 0 8'"};
+    const std::vector<std::string> videos = {"render gas", "heap --ops 'P Q *'",
+                                             "puzzle '1 2 3 4 5 6 7 0 8'"};
     struct Case {
         std::string options;
         std::string refused;  ///< the option the rule names; empty: accepted
@@ -307,7 +307,8 @@ TEST_CASE("one output rule for render, thumbnail, heap and puzzle (-o, --format,
     }
     for (const Case& c : still_cases) {
         check("thumbnail gas", c);
-        for (const std::string& command : videos) check(command, {c.options + " --last-frame", c.refused});
+        for (const std::string& command : videos)
+            check(command, {c.options + " --last-frame", c.refused});
     }
     CHECK(entries(dir.path).empty());
 }
@@ -356,9 +357,9 @@ TEST_CASE("render: a layout that cannot be written leaves the video untouched") 
 
 TEST_CASE("render --layout-json -: standard output holds the JSON and nothing else") {
     TempDir dir("outputs_stdout_data");
-    const RunResult r = run_collide_shell(std::string("\"") + COLLIDE_EXE + "\" render gas" +
-                                          small_video + " -o " + q(dir.path / "x.mp4") +
-                                          " --layout-json - 2>/dev/null");
+    const RunResult r =
+        run_collide_shell(std::string("\"") + COLLIDE_EXE + "\" render gas" + small_video + " -o " +
+                          q(dir.path / "x.mp4") + " --layout-json - 2>/dev/null");
     INFO(r.output);
     CHECK(r.exit_code == 0);
     REQUIRE(!r.output.empty());
@@ -392,8 +393,7 @@ TEST_CASE("render: destinations that would fail only at the end are refused befo
     };
     // A name longer than the filesystem's NAME_MAX (pathconf): a file, a directory of frames.
     const std::string long_name(252, 'a');
-    refused("render gas" + small_video + " -o " + q(dir.path / (long_name + ".mp4")),
-            "bytes long");
+    refused("render gas" + small_video + " -o " + q(dir.path / (long_name + ".mp4")), "bytes long");
     refused("thumbnail gas --size 320x180 -o " + q(dir.path / (long_name + ".png")), "bytes long");
     // A link whose target ends in '/' or '/.' names a directory, not a file.
     fs::create_directory(dir.path / "d.mp4");
