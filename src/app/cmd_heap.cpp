@@ -21,7 +21,6 @@
 #include "collide/show/heap_lesson.hpp"
 #include "collide/sim/pq/heap_lesson.hpp"
 #include "collide/video/output.hpp"
-#include "collide/video/png.hpp"
 #include "collide/video/video_writer.hpp"
 #include "commands.hpp"
 #include "lesson_video.hpp"
@@ -40,7 +39,6 @@ struct HeapCli {
     bool min = false;
     int index_base = 1;
     double pace = 0.8;
-    std::string theme = "dark";
     LessonVideoCli video;
 
     CLI::Option* ops_opt = nullptr;
@@ -101,7 +99,7 @@ void check_legible(const pq::LessonRecord& record, const HeapCli& v) {
 void run(const HeapCli& v) {
     // Validation: nothing is drawn, and no file is created, until all of it passes.
     const ProgressMode progress_mode = parse_progress_mode(v.video.progress);
-    const render::Theme theme = render::parse_theme(v.theme, "--theme");
+    const render::Theme theme = render::parse_theme(v.video.theme, "--theme");
     const show::HeapLesson lesson = lesson_of(v);
     check_legible(lesson.record(), v);
     const LessonGeometry geometry = lesson_geometry_of(v.video);
@@ -109,7 +107,7 @@ void run(const HeapCli& v) {
         throw_option_error("--at", fmt::format("{}", v.video.at),
                            fmt::format("a time within the video, 0..{:.2f} s", lesson.duration()));
     }
-    const LessonOutput output = lesson_output_of(v.video, "heap");
+    const OutputChoice output = lesson_output_of(v.video, "heap");
     if (output.default_path) std::filesystem::create_directories(output.path.parent_path());
     video::check_output_writable(
         output.path, !output.still && output.format == video::VideoFormat::png_sequence);
@@ -122,19 +120,16 @@ void run(const HeapCli& v) {
     config.theme = theme;
     render::HeapRenderer renderer(config, render::Backend::automatic, print_notice);
 
+    const double still_time = given(v.video.at_opt) ? v.video.at : lesson.duration();
+    const LessonVideoSummary written = write_lesson(
+        output, geometry, progress_mode, lesson.duration(), still_time,
+        [&](double t, Image& frame) { renderer.render(lesson.frame_at(t), frame); });
     if (output.still) {
-        const double t = given(v.video.at_opt) ? v.video.at : lesson.duration();
-        const Image image = renderer.render(lesson.frame_at(t));
-        video::write_png(image, output.path);
         std::printf("%s: %dx%d PNG at %.2f s of a %.2f s video of %s\n",
-                    output.path.string().c_str(), geometry.width, geometry.height, t,
+                    output.path.string().c_str(), geometry.width, geometry.height, still_time,
                     lesson.duration(), lesson.name().c_str());
         return;
     }
-
-    const LessonVideoSummary written = write_lesson_video(
-        output, geometry, progress_mode, lesson.duration(),
-        [&](double t, Image& frame) { renderer.render(lesson.frame_at(t), frame); });
     std::printf("%s: %.2f s of video, %lld frames, %dx%d @ %g fps, %s, %zu operations\n",
                 output.path.string().c_str(), static_cast<double>(written.frames) / geometry.fps,
                 static_cast<long long>(written.frames), written.width, written.height, written.fps,
@@ -164,10 +159,7 @@ void add_heap_command(CLI::App& root) {
         ->capture_default_str();
     cmd->add_option("--pace", v->pace, "Seconds per step (a compare, an exchange, ...)")
         ->capture_default_str();
-    add_lesson_video_options(*cmd, v->video, "heap", "e.g. 640x360");
-    cmd->add_option("--theme", v->theme,
-                    "Colours: dark (screens) or light (projectors, print), as in `collide render`")
-        ->capture_default_str();
+    add_lesson_video_options(*cmd, v->video, "heap", "e.g. 640x360", true);
     cmd->footer(
         "Examples:\n"
         "  collide heap --ops \"P Q E * X A M * P L E *\" -o heap.mp4   # the lecture's trace\n"

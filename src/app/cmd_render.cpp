@@ -24,6 +24,7 @@
 #include "pipeline.hpp"
 #include "progress.hpp"
 #include "render_plan.hpp"
+#include "video_options.hpp"
 #include "work_limits.hpp"
 
 namespace collide::app {
@@ -33,30 +34,20 @@ namespace {
 /// Raw option values as CLI11 stores them; `resolve` turns the ones given into a RenderRequest.
 struct CliValues {
     std::string scene;
-    std::string output;
+    VideoCli video;  ///< -o, --format, -q, --size, --fps, --at, --last-frame, --theme, ...
     std::string mode = "both";
-    std::string quality;
-    std::string size;
-    int fps = 0;
     double duration = 0.0;
     double speed = 0.0;
     double dt = 0.0;
-    double at = 0.0;
     std::string engine = "fast";
     std::string pq = "binary";
     std::string td_detect = "all-pairs";
     std::string color;
     std::string overlays;
-    std::string theme;
     std::string layout_json;
-    std::string format;
     bool trails = true;
-    bool last_frame = false;
-    bool preview = false;
     std::string gl = "auto";
-    std::string progress = "auto";
     std::string dump_rgba;
-    bool verbose = false;
     bool no_limits = false;
     std::string queue;  ///< --queue [K]: the K, or empty for the default
     double slow_motion = 1.0;
@@ -64,19 +55,12 @@ struct CliValues {
     CLI::Option* seed_opt = nullptr;
 
     // Options whose absence means "take the scene hint or the default".
-    CLI::Option* output_opt = nullptr;
-    CLI::Option* quality_opt = nullptr;
-    CLI::Option* size_opt = nullptr;
-    CLI::Option* fps_opt = nullptr;
     CLI::Option* duration_opt = nullptr;
     CLI::Option* speed_opt = nullptr;
     CLI::Option* dt_opt = nullptr;
-    CLI::Option* at_opt = nullptr;
     CLI::Option* color_opt = nullptr;
     CLI::Option* overlays_opt = nullptr;
-    CLI::Option* theme_opt = nullptr;
     CLI::Option* layout_json_opt = nullptr;
-    CLI::Option* format_opt = nullptr;
     CLI::Option* trails_opt = nullptr;
     CLI::Option* queue_opt = nullptr;
     CLI::Option* slow_motion_opt = nullptr;
@@ -100,7 +84,8 @@ render::Backend gl_backend_of(const CliValues& v) {
         throw_option_error("--gl", v.gl,
                            "a backend this collide was built with (" + available + ")");
     }
-    if (v.preview && backend != render::Backend::automatic && backend != render::Backend::glfw) {
+    if (v.video.preview && backend != render::Backend::automatic &&
+        backend != render::Backend::glfw) {
         throw_option_error("--gl", "'" + v.gl +
                                        "' beside --preview: --preview renders the frames through "
                                        "glfw (one GL implementation for the frames and the "
@@ -114,25 +99,25 @@ render::Backend gl_backend_of(const CliValues& v) {
 RenderRequest request_of(const CliValues& v, bool still) {
     RenderRequest r;
     r.scene = v.scene;
-    r.output = if_given(v.output_opt, v.output);
+    r.output = if_given(v.video.output_opt, v.video.output);
     r.mode = v.mode;
-    r.quality = if_given(v.quality_opt, v.quality);
-    r.size = if_given(v.size_opt, v.size);
-    r.fps = if_given(v.fps_opt, v.fps);
+    r.quality = if_given(v.video.quality_opt, v.video.quality);
+    r.size = if_given(v.video.size_opt, v.video.size);
+    r.fps = if_given(v.video.fps_opt, v.video.fps);
     r.duration = if_given(v.duration_opt, v.duration);
     r.speed = if_given(v.speed_opt, v.speed);
     r.dt = if_given(v.dt_opt, v.dt);
-    r.at = if_given(v.at_opt, v.at);
+    r.at = if_given(v.video.at_opt, v.video.at);
     r.engine = parse_event_engine_kind(v.engine, "--engine");
     r.pq = pq::parse_queue_kind(v.pq, "--pq");  // a bad --pq is refused even for the fast engine
     r.td_detect = parse_overlap_detection(v.td_detect, "--td-detect");
     r.color = if_given(v.color_opt, v.color);
     r.trails = if_given(v.trails_opt, v.trails);
     r.overlays = if_given(v.overlays_opt, v.overlays);
-    r.theme = if_given(v.theme_opt, v.theme);
+    r.theme = if_given(v.video.theme_opt, v.video.theme);
     r.layout_json = if_given(v.layout_json_opt, v.layout_json);
-    r.format = if_given(v.format_opt, v.format);
-    r.last_frame = v.last_frame;
+    r.format = if_given(v.video.format_opt, v.video.format);
+    r.last_frame = v.video.last_frame;
     r.still = still;
     r.no_limits = v.no_limits;
     if (v.queue_opt != nullptr && v.queue_opt->count() > 0) {
@@ -145,23 +130,23 @@ RenderRequest request_of(const CliValues& v, bool still) {
 }
 
 /// The options `render` and `thumbnail` share.
-void add_shared_options(CLI::App& cmd, CliValues& v) {
+void add_shared_options(CLI::App& cmd, CliValues& v, bool video) {
     v.seed_opt = add_whole_option(cmd, "--seed", v.seed, 0, UINT64_MAX,
                                   "Seed for the scene's random discs ([[generate]] block i gets "
                                   "N + i; default: the scene's)");
     cmd.add_option("scene", v.scene,
                    "Scene: a built-in name (see `collide scenes`), a .toml or an algs4 .txt file")
         ->required();
-    v.output_opt =
-        cmd.add_option("-o,--output", v.output, "Output file (default: out/<scene>.<ext>)");
+    VideoOptionSet set;
+    set.stem = "<scene>";
+    set.size_example = "e.g. 640x360";
+    set.video = video;
+    if (!video) set.at_help = "Simulation time of the frame (default: the video's last frame)";
+    set.preview = true;
+    set.theme_help = "default: scene hint, else dark";
+    add_video_options(cmd, v.video, set);
     cmd.add_option("--mode", v.mode, "both (time-driven left, event-driven right), event or time")
         ->capture_default_str();
-    v.quality_opt =
-        cmd.add_option("-q,--quality", v.quality,
-                       "l 854x480@15, m 1280x720@30 (default), h 1920x1080@60, k 3840x2160@60");
-    v.size_opt = cmd.add_option("--size", v.size, "Frame size WxH, overrides -q (e.g. 640x360)");
-    v.fps_opt =
-        add_whole_option(cmd, "--fps", v.fps, 1, max_fps, "Frames per second, overrides -q");
     v.duration_opt =
         cmd.add_option("--duration", v.duration, "Seconds of video (default: scene hint, else 10)");
     v.speed_opt = cmd.add_option(
@@ -185,9 +170,6 @@ void add_shared_options(CLI::App& cmd, CliValues& v) {
         "--overlays", v.overlays,
         "Text around the boxes: lesson (titles, a few figures, the cost graphic, captions; "
         "default), full (every counter and plot) or none (discs only)");
-    v.theme_opt = cmd.add_option("--theme", v.theme,
-                                 "Colours: dark (screens) or light (projectors, print); default: "
-                                 "scene hint, else dark");
     v.layout_json_opt = cmd.add_option(
         "--layout-json", v.layout_json,
         "Also write the frame's rectangles (panels, boxes, text lines with pixel heights) as JSON");
@@ -202,15 +184,10 @@ void add_shared_options(CLI::App& cmd, CliValues& v) {
         "Play F times slower than --speed (or the scene's pace), e.g. 4 to follow single events");
     v.trails_opt = cmd.add_flag("--trails,!--no-trails", v.trails,
                                 "Trails behind tagged discs (default: scene hint, else on)");
-    cmd.add_flag("--preview", v.preview, "Show the frames live in a window when a display exists");
     cmd.add_option("--gl", v.gl,
                    "GL backend: auto (OSMesa where built, else EGL), osmesa, egl (surfaceless, or "
                    "the GPU), egl-device or glfw (needs a display)")
         ->capture_default_str();
-    cmd.add_option("--progress", v.progress,
-                   "Progress on stderr: auto (bar on a terminal), bar, json or none")
-        ->capture_default_str();
-    cmd.add_flag("--verbose", v.verbose, "Show the encoder's own log");
     cmd.add_flag(insist_option, v.no_limits,
                  "Run even when the estimated work (collisions and cell crossings, time-driven "
                  "steps and checks, frames) is beyond the limits of docs/limits.md");
@@ -266,18 +243,20 @@ std::string engine_costs(const RenderPlan& plan, const PipelineResult& result) {
     return out;
 }
 
-void print_summary(const RenderPlan& plan, const PipelineResult& result, double wall_seconds) {
+void print_summary(const RenderPlan& plan, const PipelineResult& result, double wall_seconds,
+                   std::FILE* out) {
     const std::uintmax_t bytes = size_on_disk(plan.output);
     if (plan.kind == OutputKind::still) {
-        std::printf("%s: %dx%d PNG at t = %.6g (%s), %s, in %.1f s; engines: %s\n",
-                    plan.output.string().c_str(), result.output_width, result.output_height,
-                    result.sim_time,
-                    fmt::format("frame {} of a {} fps video", result.frames - 1, plan.fps).c_str(),
-                    human_size(bytes).c_str(), wall_seconds, engine_costs(plan, result).c_str());
+        std::fprintf(out, "%s: %dx%d PNG at t = %.6g (%s), %s, in %.1f s; engines: %s\n",
+                     plan.output.string().c_str(), result.output_width, result.output_height,
+                     result.sim_time,
+                     fmt::format("frame {} of a {} fps video", result.frames - 1, plan.fps).c_str(),
+                     human_size(bytes).c_str(), wall_seconds, engine_costs(plan, result).c_str());
         return;
     }
     const double seconds = static_cast<double>(result.frames) / plan.fps;
-    std::printf(
+    std::fprintf(
+        out,
         "%s: %.2f s of video, %lld frames, %dx%d @ %g fps, %s, rendered in %.1f s (%.1f fps); "
         "simulation time 0..%.6g; engines: %s\n",
         plan.output.string().c_str(), seconds, static_cast<long long>(result.frames),
@@ -286,9 +265,21 @@ void print_summary(const RenderPlan& plan, const PipelineResult& result, double 
         result.sim_time, engine_costs(plan, result).c_str());
 }
 
+/// The run's outputs must be files of their own (after links), the layout outside a directory
+/// of frames. Throws Error(input) naming both.
+void check_distinct_outputs(const RenderPlan& plan, const CliValues& values) {
+    std::vector<io::NamedOutput> outputs;
+    const bool directory =
+        plan.kind == OutputKind::video && plan.format == video::VideoFormat::png_sequence;
+    outputs.push_back({"-o", plan.output, directory});
+    if (!plan.layout_json.empty()) outputs.push_back({"--layout-json", plan.layout_json, false});
+    if (!values.dump_rgba.empty()) outputs.push_back({"--dump-rgba", values.dump_rgba, false});
+    if (outputs.size() > 1) io::check_distinct_outputs(outputs);
+}
+
 void run(const CliValues& values, bool still) {
     // Validation: nothing is rendered, and no output file is created, until all of it passes.
-    const ProgressMode progress_mode = parse_progress_mode(values.progress);
+    const ProgressMode progress_mode = parse_progress_mode(values.video.progress);
     SceneOptions scene_options;
     if (values.seed_opt != nullptr && values.seed_opt->count() > 0)
         scene_options.seed = values.seed;
@@ -296,39 +287,37 @@ void run(const CliValues& values, bool still) {
     const render::Backend backend = gl_backend_of(values);
     const RenderRequest request = request_of(values, still);
     const RenderPlan plan = validated_plan(request, scene);
-    video::set_libav_verbose(values.verbose);
+    video::set_libav_verbose(values.video.verbose);
     for (const std::string& line : plan.notices) print_notice(line);
     // Its temporary exists from here on, so an unwritable path fails before any frame.
+    check_distinct_outputs(plan, values);
     std::optional<io::OutputFile> layout_file;
     if (!plan.layout_json.empty()) {
         layout_file.emplace(plan.layout_json, io::OutputOptions{"--layout-json", true});
     }
+    // Data on standard output (--layout-json -) is the only thing there: the summary moves aside.
+    const bool data_on_stdout = layout_file && layout_file->is_standard_output();
 
     InterruptGuard interrupts;
     Progress progress(progress_mode, plan.clock.count);
-    PipelineHooks hooks;
+    JobHooks hooks;
     hooks.interrupts = &interrupts;
     hooks.progress = &progress;
-    hooks.preview = values.preview;
+    hooks.preview = values.video.preview;
     hooks.backend = backend;
     hooks.notice = print_notice;
     hooks.dump_rgba = values.dump_rgba;
     PipelineResult result;
     try {
-        result = plan.kind == OutputKind::still ? render_still(scene, plan, hooks)
-                                                : render_video(scene, plan, hooks);
+        result = run_render(scene, plan, hooks, layout_file ? &*layout_file : nullptr);
     } catch (...) {
         progress.finish();
         interrupts.throw_if_requested();  // whatever noticed it first: one wording, the signal
         throw;
     }
     progress.finish();
-    if (layout_file) {
-        layout_file->write(result.layout_json);
-        layout_file->commit();
-    }
     for (const std::string& line : result.notices) print_notice(line);
-    print_summary(plan, result, progress.elapsed_seconds());
+    print_summary(plan, result, progress.elapsed_seconds(), data_on_stdout ? stderr : stdout);
 }
 
 }  // namespace
@@ -338,11 +327,7 @@ void add_render_command(CLI::App& root) {
     CLI::App* cmd = root.add_subcommand(
         "render",
         "Render a teaching video: time-driven (left) and event-driven (right) side by side");
-    add_shared_options(*cmd, *values);
-    values->format_opt = cmd->add_option("--format", values->format,
-                                         "mp4 (default), gif, or png (a directory of frames)");
-    cmd->add_flag("--last-frame", values->last_frame,
-                  "Write only the last frame, as a PNG (-o FILE.png, default out/<scene>.png)");
+    add_shared_options(*cmd, *values, true);
     // Benchmarks only (scripts/bench_pipeline.sh): the frames as raw RGBA for ffmpeg alone.
     cmd->add_option("--dump-rgba", values->dump_rgba, "")->group("");
     cmd->footer(
@@ -359,9 +344,7 @@ void add_thumbnail_command(CLI::App& root) {
     auto values = std::make_shared<CliValues>();
     CLI::App* cmd = root.add_subcommand(
         "thumbnail", "Render one frame as a PNG (fast, no video): for READMEs and CI");
-    add_shared_options(*cmd, *values);
-    values->at_opt = cmd->add_option(
-        "--at", values->at, "Simulation time of the frame (default: the video's last frame)");
+    add_shared_options(*cmd, *values, false);
     cmd->footer(
         "Examples:\n"
         "  collide thumbnail gas --at 2.5 -o gas.png --size 480x270\n"

@@ -56,9 +56,13 @@ class EventsLog {
   public:
     /// Throws Error(input) naming --events-log when the destination cannot be written.
     explicit EventsLog(const std::string& destination)
-        : file_(destination, io::OutputOptions{"--events-log", true}) {
+        : file_(destination, io::OutputOptions{"--events-log", true}),
+          on_standard_output_(file_.is_standard_output()) {
         buffer_.reserve(flush_bytes);
     }
+
+    /// True when the log is written to standard output (which then holds nothing else).
+    [[nodiscard]] bool is_standard_output() const noexcept { return on_standard_output_; }
 
     void write(std::string_view text) {
         buffer_.append(text);
@@ -80,6 +84,7 @@ class EventsLog {
     }
 
     io::OutputFile file_;
+    bool on_standard_output_ = false;
     std::string buffer_;
 };
 
@@ -105,6 +110,11 @@ void run_simulate(const SimulateOptions& options) {
     std::unique_ptr<EventsLog> log;
     if (!options.events_log.empty()) {
         log = std::make_unique<EventsLog>(options.events_log);
+        if (log->is_standard_output() && options.json) {
+            throw_option_error("--events-log", "'" + options.events_log +
+                                                   "' and --json would both write data to "
+                                                   "standard output; give the log a file name");
+        }
         log->write("t,kind,a,b\n");
     }
     std::unique_ptr<Engine> engine = make_engine(scene, engine_options);
@@ -133,7 +143,8 @@ void run_simulate(const SimulateOptions& options) {
     fields.push_back({"discs", static_cast<std::uint64_t>(scene.discs.size())});
     for (ReportField& f : report_fields(engine->measurements())) fields.push_back(std::move(f));
     const std::string out = options.json ? format_json(fields) : format_text(fields);
-    std::fputs(out.c_str(), stdout);
+    // Data on standard output (--events-log -) is the only thing there: the report moves aside.
+    std::fputs(out.c_str(), log && log->is_standard_output() ? stderr : stdout);
 }
 
 }  // namespace

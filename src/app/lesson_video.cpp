@@ -8,49 +8,32 @@
 #include <utility>
 
 #include "collide/error.hpp"
-#include "collide/video/video_writer.hpp"
 #include "interrupt.hpp"
+#include "video_job.hpp"
 
 namespace collide::app {
 
-bool given(const CLI::Option* option) {
-    return option != nullptr && option->count() > 0;
-}
-
 void add_lesson_video_options(CLI::App& cmd, LessonVideoCli& v, std::string_view stem,
-                              std::string_view size_note) {
-    v.output_opt = cmd.add_option(
-        "-o,--output", v.output,
-        fmt::format("Output file (default out/{}.mp4, .gif, _frames/ or .png)", stem));
-    v.format_opt =
-        cmd.add_option("--format", v.format, "mp4 (default), gif, or png (a directory of frames)");
-    v.quality_opt =
-        cmd.add_option("-q,--quality", v.quality,
-                       "l 854x480@15, m 1280x720@30 (default), h 1920x1080@60, k 3840x2160@60");
-    v.size_opt = cmd.add_option("--size", v.size,
-                                fmt::format("Frame size WxH, overrides -q ({})", size_note));
-    v.fps_opt = cmd.add_option("--fps", v.fps, "Frames per second, overrides -q");
-    v.last_frame_opt = cmd.add_flag(
-        "--last-frame", v.last_frame,
-        fmt::format("Write only the final frame, as a PNG (-o FILE.png, default out/{}.png)",
-                    stem));
-    v.at_opt = cmd.add_option("--at", v.at,
-                              fmt::format("Write only the frame at this many seconds of video, as "
-                                          "a PNG (a still for slides; -o FILE.png, default "
-                                          "out/{}.png)",
-                                          stem));
-    cmd.add_option("--progress", v.progress,
-                   "Progress on stderr: auto (bar on a terminal), bar, json or none")
-        ->capture_default_str();
-    cmd.add_flag("--verbose", v.verbose, "Show the encoder's own log");
+                              std::string_view size_example, bool theme) {
+    const std::string at_help = fmt::format(
+        "Write only the frame at this many seconds of video, as a PNG (a still for "
+        "slides; -o FILE.png, default out/{}.png)",
+        stem);
+    VideoOptionSet set;
+    set.stem = stem;
+    set.size_example = size_example;
+    set.at_help = at_help;
+    set.theme = theme;
+    set.theme_help = "as in `collide render` (default dark)";
+    add_video_options(cmd, v, set);
 }
 
-LessonOutput lesson_output_of(const LessonVideoCli& v, std::string_view stem) {
+OutputChoice lesson_output_of(const LessonVideoCli& v, std::string_view stem) {
     const auto if_given = [](const CLI::Option* option, const std::string& value) {
         return given(option) ? std::optional(value) : std::nullopt;
     };
-    return lesson_output(if_given(v.format_opt, v.format), if_given(v.output_opt, v.output),
-                         v.last_frame || given(v.at_opt), stem);
+    return resolve_output(if_given(v.format_opt, v.format), if_given(v.output_opt, v.output),
+                          v.last_frame || given(v.at_opt), stem);
 }
 
 LessonGeometry lesson_geometry_of(const LessonVideoCli& v, FrameSize minimum,
@@ -72,39 +55,65 @@ LessonGeometry lesson_geometry_of(const LessonVideoCli& v, FrameSize minimum,
     return g;
 }
 
-LessonVideoSummary write_lesson_video(const LessonOutput& output, const LessonGeometry& geometry,
-                                      ProgressMode progress_mode, double duration,
-                                      const std::function<void(double t, Image& frame)>& draw) {
-    InterruptGuard interrupts;
-    video::VideoOptions options;
-    options.path = output.path;
-    options.format = output.format;
-    options.width = geometry.width;
-    options.height = geometry.height;
-    options.fps = geometry.fps;
-    options.cancel = &interrupts.flag();
-    video::VideoWriter writer(options);
-    for (const std::string& line : writer.notices()) print_notice(line);
+namespace {
 
-    const auto frames =
-        std::max<std::int64_t>(1, std::llround(duration * static_cast<double>(geometry.fps)));
-    Progress progress(progress_mode, frames);
+/// A drawn lesson as the video job's frame program: frame k of a video shows time k / fps; a
+/// still's one frame shows `still_time`.
+class LessonProgram final : public FrameProgram {
+  public:
+    LessonProgram(const LessonDraw& draw, int fps, bool still, double still_time)
+        : draw_(draw), fps_(fps), still_(still), still_time_(still_time) {}
+
+    double frame(std::int64_t k, FrameUse use, Image& image) override {
+        const double t = still_ ? still_time_ : static_cast<double>(k) / fps_;
+        if (use == FrameUse::output) draw_(t, image);
+        return t;
+    }
+
+  private:
+    const LessonDraw& draw_;
+    int fps_;
+    bool still_;
+    double still_time_;
+};
+
+}  // namespace
+
+LessonVideoSummary write_lesson(const OutputChoice& output, const LessonGeometry& geometry,
+                                ProgressMode progress_mode, double duration, double still_time,
+                                const LessonDraw& draw) {
+    InterruptGuard interrupts;
+    VideoJob job;
+    job.output.path = output.path;
+    job.output.format = output.format;
+    job.output.still = output.still;
+    job.width = geometry.width;
+    job.height = geometry.height;
+    job.fps = geometry.fps;
+    job.frames = output.still ? 1
+                              : std::max<std::int64_t>(
+                                    1, std::llround(duration * static_cast<double>(geometry.fps)));
+    Progress progress(progress_mode, job.frames);
+    JobHooks hooks;
+    hooks.interrupts = &interrupts;
+    hooks.progress = &progress;
+    hooks.notice = print_notice;
+    JobResult written;
     try {
-        for (std::int64_t k = 0; k < frames; ++k) {
-            interrupts.throw_if_requested();
-            const double t = static_cast<double>(k) / geometry.fps;
-            Image frame = writer.spare_frame();
-            draw(t, frame);
-            writer.write(std::move(frame));
-            progress.frame_done(t);
-        }
-        writer.finish();
+        written = run_video_job(
+            job,
+            [&](render::Backend /*the lessons' renderers are made by their commands*/) {
+                return std::make_unique<LessonProgram>(draw, geometry.fps, output.still,
+                                                       still_time);
+            },
+            hooks);
     } catch (...) {
         progress.finish();
         throw;
     }
     progress.finish();
-    return {frames, writer.output_width(), writer.output_height(), writer.output_fps()};
+    for (const std::string& line : written.notices) print_notice(line);
+    return {written.frames, written.output_width, written.output_height, written.output_fps};
 }
 
 }  // namespace collide::app

@@ -11,6 +11,7 @@
 #include "collide/image.hpp"
 #include "progress.hpp"
 #include "render_plan.hpp"
+#include "video_options.hpp"
 
 namespace collide::app {
 
@@ -21,38 +22,17 @@ struct LessonGeometry {
     int fps = 30;
 };
 
-/// The video options every drawn lesson takes (-o, --format, -q, --size, --fps, --last-frame,
-/// --at, --progress, --verbose), raw as CLI11 stores them.
-struct LessonVideoCli {
-    std::string output;
-    std::string format;
-    std::string quality = "m";
-    std::string size;
-    int fps = 30;
-    bool last_frame = false;
-    double at = 0.0;
-    std::string progress = "auto";
-    bool verbose = false;
+/// The lessons' video options are the one set of video options (video_options.hpp).
+using LessonVideoCli = VideoCli;
 
-    CLI::Option* output_opt = nullptr;
-    CLI::Option* format_opt = nullptr;
-    CLI::Option* quality_opt = nullptr;
-    CLI::Option* size_opt = nullptr;
-    CLI::Option* fps_opt = nullptr;
-    CLI::Option* last_frame_opt = nullptr;
-    CLI::Option* at_opt = nullptr;
-};
-
-/// True when the user gave `option` on the command line.
-[[nodiscard]] bool given(const CLI::Option* option);
-
-/// Registers the video options on `cmd`; `stem` names the default outputs (out/STEM.mp4, ...),
-/// `size_note` goes into --size's help (e.g. "e.g. 640x360").
+/// Registers the video options of a drawn lesson on `cmd` (video_options.hpp); `stem` names the
+/// default outputs (out/STEM.mp4, ...), `size_example` goes into --size's help, `theme` says
+/// whether the lesson takes --theme (default dark).
 void add_lesson_video_options(CLI::App& cmd, LessonVideoCli& v, std::string_view stem,
-                              std::string_view size_note);
+                              std::string_view size_example, bool theme);
 
-/// Where and in which format the lesson goes (lesson_output of what was given).
-[[nodiscard]] LessonOutput lesson_output_of(const LessonVideoCli& v, std::string_view stem);
+/// Where and in which format the lesson goes (resolve_output of what was given).
+[[nodiscard]] OutputChoice lesson_output_of(const LessonVideoCli& v, std::string_view stem);
 
 /// -q, then --size and --fps when given. A frame smaller than `minimum` (when not 0x0) is
 /// refused naming --size or -q, saying it is too small for `what_stays_legible`.
@@ -67,11 +47,15 @@ struct LessonVideoSummary {
     double fps = 0.0;
 };
 
-/// Encodes `duration` seconds (at least one frame) to `output`: frame k shows time k / fps, drawn
-/// into the writer's spare frame by `draw`. Ctrl-C stops it between frames; the destination is
-/// only replaced once the video is whole (VideoWriter).
-LessonVideoSummary write_lesson_video(const LessonOutput& output, const LessonGeometry& geometry,
-                                      ProgressMode progress_mode, double duration,
-                                      const std::function<void(double t, Image& frame)>& draw);
+/// A drawn lesson's picture at `t` seconds of video, drawn into `frame` (sized by the drawing).
+using LessonDraw = std::function<void(double t, Image& frame)>;
+
+/// Writes the lesson through the video job (video_job.hpp): a video of `duration` seconds (at
+/// least one frame, frame k showing time k / fps) or, for output.still, the one frame showing
+/// `still_time` as a PNG. Ctrl-C stops it between frames; the destination is only replaced once
+/// the output is whole.
+LessonVideoSummary write_lesson(const OutputChoice& output, const LessonGeometry& geometry,
+                                ProgressMode progress_mode, double duration, double still_time,
+                                const LessonDraw& draw);
 
 }  // namespace collide::app

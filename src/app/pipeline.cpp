@@ -12,10 +12,6 @@
 
 #include "bounded_queue.hpp"
 #include "collide/error.hpp"
-#include "collide/io/file.hpp"
-#include "collide/render/preview.hpp"
-#include "collide/video/png.hpp"
-#include "collide/video/video_writer.hpp"
 
 namespace collide::app {
 
@@ -27,10 +23,6 @@ constexpr std::size_t sim_queue_frames = 4;
 
 double relative_drift(double energy, double initial) {
     return initial > 0.0 ? (energy - initial) / initial : 0.0;
-}
-
-void check_interrupt(const PipelineHooks& hooks) {
-    if (hooks.interrupts != nullptr) hooks.interrupts->throw_if_requested();
 }
 
 /// The simulation thread and the queue it fills. The destructor closes the queue (so a producer
@@ -79,44 +71,8 @@ class SimulationThread {
     std::thread thread_;  // last: started once everything it uses exists
 };
 
-/// Raw RGBA frames appended to a file (benchmarks only), through io::OutputFile like every
-/// output: in place once the video is finished, or a stream ("-", a FIFO, /dev/null).
-class RawDump {
-  public:
-    explicit RawDump(const std::filesystem::path& path) {
-        if (!path.empty()) file_.emplace(path, io::OutputOptions{"--dump-rgba", true});
-    }
-
-    void write(const Image& image) {
-        if (file_) file_->write(image.rgba.data(), image.rgba.size());
-    }
-    void finish() {
-        if (file_) file_->commit();
-    }
-
-  private:
-    std::optional<io::OutputFile> file_;
-};
-
-std::string_view title_of(const RenderPlan& plan) {
+std::string title_of(const RenderPlan& plan) {
     return plan.mode == RenderMode::both ? "collide: time-driven vs event-driven" : "collide";
-}
-
-/// The --preview window: null when not asked for or when there is no display (after a notice).
-std::unique_ptr<render::PreviewWindow> open_preview_if_asked(const RenderPlan& plan,
-                                                             const PipelineHooks& hooks) {
-    if (!hooks.preview) return nullptr;
-    return render::open_preview(plan.width, plan.height, std::string(title_of(plan)).c_str(),
-                                hooks.notice);
-}
-
-/// The backend that renders the frames. With a preview window open it is GLFW, so that one GL
-/// implementation (Mesa's GLX driver) serves both: libOSMesa and the GLX driver share Mesa's
-/// per-thread current context (libglapi), while glvnd skips a glXMakeCurrent that its own records
-/// say changes nothing; after an OSMesa frame the preview then drew and swapped with OSMesa's
-/// context and crashed (issue 22; docs/renderer.md, "Preview").
-render::Backend render_backend(const render::PreviewWindow* preview, const PipelineHooks& hooks) {
-    return preview != nullptr ? render::Backend::glfw : hooks.backend;
 }
 
 /// Every caption of the video fits the caption line of this frame size, or the render stops
@@ -342,94 +298,96 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
     return content_;
 }
 
-PipelineResult render_video(const Scene& scene, const RenderPlan& plan,
-                            const PipelineHooks& hooks) {
-    const std::atomic<bool>* cancel =
-        hooks.interrupts != nullptr ? &hooks.interrupts->flag() : nullptr;
-    video::VideoOptions options;
-    options.path = plan.output;
-    options.format = plan.format;
-    options.width = plan.width;
-    options.height = plan.height;
-    options.fps = plan.fps;
-    options.cancel = cancel;
+namespace {
+
+/// The frames of a render for the video job: simulated on their own thread (SimulationThread),
+/// composed and drawn here, on the thread that owns the GL context.
+class CollisionProgram final : public FrameProgram {
+  public:
+    CollisionProgram(const Scene& scene, const RenderPlan& plan, render::Backend backend,
+                     const JobHooks& hooks, PipelineResult& result)
+        : plan_(plan),
+          interrupts_(hooks.interrupts),
+          result_(result),
+          renderer_(plan.render, backend, hooks.notice),
+          composer_(plan),
+          simulation_(scene, plan,
+                      hooks.interrupts != nullptr ? &hooks.interrupts->flag() : nullptr) {}
+
+    double frame(std::int64_t /*k*/, FrameUse use, Image& image) override {
+        std::optional<SimFrame> frame = simulation_.next();
+        if (!frame) stopped_early();
+        const render::FrameContent& content = composer_.compose(*frame);
+        const bool last = frame->index + 1 == plan_.clock.count;
+        switch (use) {
+            case FrameUse::output:
+                renderer_.render(content, image);
+                break;
+            case FrameUse::warm:
+                renderer_.draw(content);
+                break;
+            case FrameUse::skip:
+                break;
+        }
+        if (!plan_.layout_json.empty() && last)
+            result_.layout_json = renderer_.layout_json(content);
+        result_.sim_time = frame->time;
+        return frame->time;
+    }
+
+    void finish() override { result_.engines = simulation_.finish(); }
+
+  private:
+    /// The simulation ended before the last frame: an interrupt (say so, rather than the
+    /// "simulation stopped" the engines threw on seeing it), its error, or neither.
+    [[noreturn]] void stopped_early() {
+        if (interrupts_ != nullptr) interrupts_->throw_if_requested();
+        (void)simulation_.finish();
+        throw_runtime_error("rendering stopped before the last frame");
+    }
+
+    const RenderPlan& plan_;
+    const InterruptGuard* interrupts_;
+    PipelineResult& result_;
+    render::Renderer renderer_;
+    FrameComposer composer_;
+    SimulationThread simulation_;  // last: its thread starts once everything else exists
+};
+
+}  // namespace
+
+PipelineResult run_render(const Scene& scene, const RenderPlan& plan, const JobHooks& hooks,
+                          io::OutputFile* layout_file) {
     check_captions_fit(scene, plan);
-    video::VideoWriter writer(options);  // validates, checks the path, creates the temporary
-    std::unique_ptr<render::PreviewWindow> preview = open_preview_if_asked(plan, hooks);
-    render::Renderer renderer(plan.render, render_backend(preview.get(), hooks), hooks.notice);
-    RawDump dump(hooks.dump_rgba);
+    VideoJob job;
+    job.output.path = plan.output;
+    job.output.format = plan.format;
+    job.output.still = plan.kind == OutputKind::still;
+    job.width = plan.width;
+    job.height = plan.height;
+    job.fps = plan.fps;
+    job.frames = plan.clock.count;
+    // Only the frames whose positions appear in the trails need drawing before a still's frame.
+    job.warm_frames = (plan.render.trails ? plan.render.trail_length : 1) - 1;
+    job.title = title_of(plan);
 
     PipelineResult result;
-    FrameComposer composer(plan);
-    SimulationThread simulation(scene, plan, cancel);
-    while (std::optional<SimFrame> frame = simulation.next()) {
-        check_interrupt(hooks);
-        Image image = writer.spare_frame();
-        const render::FrameContent& content = composer.compose(*frame);
-        renderer.render(content, image);
-        if (!plan.layout_json.empty() && frame->index + 1 == plan.clock.count) {
-            result.layout_json = renderer.layout_json(content);
-        }
-        // Closing the window stops the preview only: the video is encoded to the end.
-        if (preview && !preview->show(image)) preview.reset();
-        dump.write(image);
-        writer.write(std::move(image));
-        result.frames += 1;
-        result.sim_time = frame->time;
-        if (hooks.progress != nullptr) hooks.progress->frame_done(frame->time);
-    }
-    // Interrupted: say so, rather than the "simulation stopped" the engines threw on seeing it.
-    check_interrupt(hooks);
-    result.engines = simulation.finish();
-    if (result.frames != plan.clock.count)
-        throw_runtime_error("rendering stopped before the last frame");
-    writer.finish();
-    dump.finish();
-    result.notices = writer.notices();
-    result.output_width = writer.output_width();
-    result.output_height = writer.output_height();
-    result.output_fps = writer.output_fps();
-    return result;
-}
-
-PipelineResult render_still(const Scene& scene, const RenderPlan& plan,
-                            const PipelineHooks& hooks) {
-    const std::atomic<bool>* cancel =
-        hooks.interrupts != nullptr ? &hooks.interrupts->flag() : nullptr;
-    check_captions_fit(scene, plan);
-    // Opened first (it stays hidden until it has the image) so the renderer can share its GL.
-    std::unique_ptr<render::PreviewWindow> preview = open_preview_if_asked(plan, hooks);
-    render::Renderer renderer(plan.render, render_backend(preview.get(), hooks), hooks.notice);
-    // Only the frames whose positions appear in the trails need drawing before the last one.
-    const std::int64_t history = plan.render.trails ? plan.render.trail_length : 1;
-    const std::int64_t first_drawn = std::max<std::int64_t>(0, plan.clock.count - history);
-
-    PipelineResult result;
-    FrameComposer composer(plan);
-    Image image;
-    SimulationThread simulation(scene, plan, cancel);
-    while (std::optional<SimFrame> frame = simulation.next()) {
-        check_interrupt(hooks);
-        const render::FrameContent& content = composer.compose(*frame);
-        if (frame->index + 1 == plan.clock.count) {
-            renderer.render(content, image);
-            if (!plan.layout_json.empty()) result.layout_json = renderer.layout_json(content);
-        } else if (frame->index >= first_drawn) {
-            renderer.draw(content);
-        }
-        result.frames += 1;
-        result.sim_time = frame->time;
-        if (hooks.progress != nullptr) hooks.progress->frame_done(frame->time);
-    }
-    // Interrupted: say so, rather than the "simulation stopped" the engines threw on seeing it.
-    check_interrupt(hooks);
-    result.engines = simulation.finish();
-    if (result.frames != plan.clock.count)
-        throw_runtime_error("rendering stopped before the last frame");
-    if (preview) preview->show(image);
-    video::write_png(image, plan.output);
-    result.output_width = image.width;
-    result.output_height = image.height;
+    JobHooks job_hooks = hooks;
+    job_hooks.before_commit = [&] {
+        if (layout_file != nullptr) layout_file->write(result.layout_json);
+    };
+    const JobResult written = run_video_job(
+        job,
+        [&](render::Backend backend) {
+            return std::make_unique<CollisionProgram>(scene, plan, backend, hooks, result);
+        },
+        job_hooks);
+    if (layout_file != nullptr) layout_file->commit();
+    result.frames = written.frames;
+    result.notices = written.notices;
+    result.output_width = written.output_width;
+    result.output_height = written.output_height;
+    result.output_fps = written.output_fps;
     return result;
 }
 

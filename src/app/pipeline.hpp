@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "collide/io/file.hpp"
 #include "collide/render/renderer.hpp"
 #include "collide/scene.hpp"
 #include "collide/sim/engine.hpp"
@@ -25,6 +26,7 @@
 #include "interrupt.hpp"
 #include "progress.hpp"
 #include "render_plan.hpp"
+#include "video_job.hpp"
 
 namespace collide::app {
 
@@ -105,20 +107,6 @@ class FrameComposer {
     int step_phase_ = 0;
 };
 
-/// Outside-world connections of a run. All optional.
-struct PipelineHooks {
-    const InterruptGuard* interrupts =
-        nullptr;  ///< polled between frames; its flag cancels encoding
-    Progress* progress = nullptr;
-    bool preview = false;  ///< show frames in a window when a display exists
-    /// GL backend for the frames; with a preview window open they go through GLFW instead.
-    render::Backend backend = render::Backend::automatic;
-    render::NoticeSink notice;  ///< one-line notices (empty = stderr)
-    /// Benchmarks only: also append every frame as raw RGBA to this file (for timing libx264
-    /// alone on exactly the same frames with the ffmpeg command line).
-    std::filesystem::path dump_rgba;
-};
-
 /// What happened, for the summary line.
 struct PipelineResult {
     std::int64_t frames = 0;
@@ -131,14 +119,16 @@ struct PipelineResult {
     std::string layout_json;  ///< the last frame's rectangles (when plan.layout_json is set)
 };
 
-/// Renders plan.clock's frames into plan.output (MP4, GIF or PNG sequence). Nothing appears at
-/// plan.output unless every frame was encoded and the file finished (temporary + rename).
-/// Throws Error: input for bad options, runtime for GL/encoder failures or an interrupt.
-PipelineResult render_video(const Scene& scene, const RenderPlan& plan, const PipelineHooks& hooks);
-
-/// Renders only the last frame of plan.clock into the PNG plan.output. Every frame time is still
-/// simulated (so the time-driven engine takes the video's steps) and the frames that feed the
-/// trails are drawn, so the image equals the video's frame at that time. Same throws.
-PipelineResult render_still(const Scene& scene, const RenderPlan& plan, const PipelineHooks& hooks);
+/// Renders plan.clock's frames into plan.output through the video job (video_job.hpp): a video
+/// (MP4, GIF or PNG sequence), or for a still (thumbnail, --last-frame) only the last frame as a
+/// PNG, every earlier frame time still simulated (so the time-driven engine takes the video's
+/// steps) and the frames that feed the trails drawn, so the image equals the video's frame.
+/// Nothing appears at plan.output unless every frame was produced and the file finished.
+/// `layout_file` (may be null: no --layout-json) receives the last frame's rectangles once the
+/// output is complete, before either is put in place: a failure to write one leaves both
+/// destinations untouched. Throws Error: input for bad options, runtime for GL/encoder failures
+/// or an interrupt.
+PipelineResult run_render(const Scene& scene, const RenderPlan& plan, const JobHooks& hooks,
+                          io::OutputFile* layout_file = nullptr);
 
 }  // namespace collide::app

@@ -18,7 +18,6 @@
 #include "collide/render/puzzle_view.hpp"
 #include "collide/show/puzzle_lesson.hpp"
 #include "collide/video/output.hpp"
-#include "collide/video/png.hpp"
 #include "collide/video/video_writer.hpp"
 #include "lesson_video.hpp"
 #include "progress.hpp"
@@ -31,7 +30,7 @@ namespace {
 /// The smallest frame whose text stays legible (the design is laid out for 1280x720).
 constexpr FrameSize min_frame{854, 480};
 
-LessonOutput output_of(const PuzzleVideoCli& v) {
+OutputChoice output_of(const PuzzleVideoCli& v) {
     return lesson_output_of(v, "puzzle");
 }
 
@@ -42,7 +41,7 @@ LessonGeometry geometry_of(const PuzzleVideoCli& v) {
 }  // namespace
 
 void add_puzzle_video_options(CLI::App& cmd, PuzzleVideoCli& v) {
-    add_lesson_video_options(cmd, v, "puzzle", "at least 854x480, e.g. 960x540");
+    add_lesson_video_options(cmd, v, "puzzle", "at least 854x480, e.g. 960x540", false);
 }
 
 void refuse_video_options(const PuzzleVideoCli& v, const std::string& mode) {
@@ -59,7 +58,7 @@ void refuse_video_options(const PuzzleVideoCli& v, const std::string& mode) {
 void validate_puzzle_video(const PuzzleVideoCli& v) {
     (void)parse_progress_mode(v.progress);
     (void)geometry_of(v);
-    const LessonOutput output = output_of(v);
+    const OutputChoice output = output_of(v);
     if (!output.default_path) {
         video::check_output_writable(
             output.path, !output.still && output.format == video::VideoFormat::png_sequence);
@@ -76,7 +75,7 @@ void render_puzzle_video(const puzzle::Board& start,
         throw_option_error("--at", fmt::format("{}", v.at),
                            fmt::format("a time within the video, 0..{:.2f} s", frames.duration()));
     }
-    const LessonOutput output = output_of(v);
+    const OutputChoice output = output_of(v);
     if (output.default_path) std::filesystem::create_directories(output.path.parent_path());
     video::check_output_writable(
         output.path, !output.still && output.format == video::VideoFormat::png_sequence);
@@ -87,18 +86,15 @@ void render_puzzle_video(const puzzle::Board& start,
     config.height = geometry.height;
     render::PuzzleRenderer renderer(config, render::Backend::automatic, print_notice);
 
+    const double still_time = given(v.at_opt) ? v.at : frames.duration();
+    const LessonVideoSummary written =
+        write_lesson(output, geometry, progress_mode, frames.duration(), still_time,
+                     [&](double t, Image& frame) { renderer.render(frames.frame_at(t), frame); });
     if (output.still) {
-        const double t = given(v.at_opt) ? v.at : frames.duration();
-        const Image image = renderer.render(frames.frame_at(t));
-        video::write_png(image, output.path);
         std::printf("%s: %dx%d PNG at %.2f s of a %.2f s video\n", output.path.string().c_str(),
-                    geometry.width, geometry.height, t, frames.duration());
+                    geometry.width, geometry.height, still_time, frames.duration());
         return;
     }
-
-    const LessonVideoSummary written = write_lesson_video(
-        output, geometry, progress_mode, frames.duration(),
-        [&](double t, Image& frame) { renderer.render(frames.frame_at(t), frame); });
     std::printf("%s: %.2f s of video, %lld frames, %dx%d @ %g fps\n", output.path.string().c_str(),
                 static_cast<double>(written.frames) / geometry.fps,
                 static_cast<long long>(written.frames), written.width, written.height, written.fps);

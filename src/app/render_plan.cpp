@@ -263,66 +263,6 @@ void check_failure_colors(const Scene& scene, const render::RenderConfig& config
     }
 }
 
-void plan_still_output(const RenderRequest& request, const Scene& scene, RenderPlan& plan) {
-    plan.kind = OutputKind::still;
-    check_still_output(request.format, request.output);
-    if (request.output) {
-        plan.output = *request.output;
-    } else {
-        plan.output = std::filesystem::path(default_output_dir) / (output_stem(scene) + ".png");
-        plan.default_output = true;
-    }
-}
-
-video::VideoFormat format_of_path(const std::filesystem::path& path) {
-    const std::string ext = lowercase_extension(path);
-    if (ext == ".mp4") return video::VideoFormat::mp4;
-    if (ext == ".gif") return video::VideoFormat::gif;
-    if (ext == ".png") {
-        throw_option_error(
-            "-o",
-            fmt::format("'{}' is a single image: use --last-frame or `collide thumbnail` for one "
-                        "frame, or --format png for a directory of frames",
-                        path.string()));
-    }
-    throw_option_error("-o", path.string(), "a .mp4 or .gif path (or --format to name the format)");
-}
-
-void plan_video_output(const RenderRequest& request, const Scene& scene, RenderPlan& plan) {
-    plan.kind = OutputKind::video;
-    if (request.format) {
-        plan.format = video::parse_video_format(*request.format, "--format");
-        // With --format, the path's extension is the user's business, unless it names another
-        // format (a .gif written as MP4 would mislead every player).
-        const std::string ext = request.output ? lowercase_extension(*request.output) : "";
-        const bool other_format = (ext == ".mp4" || ext == ".gif" || ext == ".png") &&
-                                  ext != "." + std::string(video::to_string(plan.format));
-        if (plan.format != video::VideoFormat::png_sequence && other_format) {
-            throw_option_error("-o", fmt::format("'{}' ends in {}, but --format is {}",
-                                                 *request.output, ext, *request.format));
-        }
-    } else if (request.output) {
-        plan.format = format_of_path(*request.output);
-    }
-    if (request.output) {
-        plan.output = *request.output;
-        return;
-    }
-    plan.default_output = true;
-    const std::string stem = output_stem(scene);
-    switch (plan.format) {
-        case video::VideoFormat::mp4:
-            plan.output = std::filesystem::path(default_output_dir) / (stem + ".mp4");
-            break;
-        case video::VideoFormat::gif:
-            plan.output = std::filesystem::path(default_output_dir) / (stem + ".gif");
-            break;
-        case video::VideoFormat::png_sequence:
-            plan.output = std::filesystem::path(default_output_dir) / (stem + "_frames");
-            break;
-    }
-}
-
 }  // namespace
 
 int checked_fps(int fps, std::string_view option) {
@@ -332,45 +272,44 @@ int checked_fps(int fps, std::string_view option) {
     return fps;
 }
 
-void check_still_output(const std::optional<std::string>& format,
-                        const std::optional<std::string>& output) {
-    if (format && *format != "png")
-        throw_option_error("--format", *format, "png (a single frame is written as png)");
-    if (output && lowercase_extension(*output) != ".png")
-        throw_option_error("-o", *output, "a .png path (a single frame is a PNG image)");
-}
-
-LessonOutput lesson_output(const std::optional<std::string>& format,
-                           const std::optional<std::string>& output, bool still,
-                           std::string_view stem) {
-    LessonOutput out;
+OutputChoice resolve_output(const std::optional<std::string>& format,
+                            const std::optional<std::string>& output, bool still,
+                            std::string_view stem) {
+    OutputChoice out;
     const std::filesystem::path dir = default_output_dir;
     out.still = still;
     out.default_path = !output;
+    const std::string ext = output ? lowercase_extension(*output) : "";
     if (still) {
-        check_still_output(format, output);
+        if (format && *format != "png")
+            throw_option_error("--format", *format, "png (a single frame is written as png)");
+        if (output && ext != ".png")
+            throw_option_error("-o", *output, "a .png path (a single frame is a PNG image)");
         out.path = output ? std::filesystem::path(*output) : dir / (std::string(stem) + ".png");
         return out;
     }
     if (format) {
         out.format = video::parse_video_format(*format, "--format");
-    } else if (output) {
-        const std::string ext = lowercase_extension(*output);
-        if (ext == ".gif") {
-            out.format = video::VideoFormat::gif;
-        } else if (ext != ".mp4") {
-            throw_option_error("-o", *output,
-                               "a .mp4 or .gif path (or --format png for a directory of frames, "
-                               "--last-frame for one PNG)");
+        // With --format, the path's extension is the user's business, unless it names another
+        // format (a .gif written as MP4, or a directory of frames named .mp4, misleads).
+        const bool names_a_format = ext == ".mp4" || ext == ".gif" || ext == ".png";
+        if (names_a_format && ext != "." + std::string(video::to_string(out.format))) {
+            throw_option_error(
+                "-o", fmt::format("'{}' ends in {}, but --format is {}", *output, ext, *format));
         }
+    } else if (ext == ".mp4") {
+        out.format = video::VideoFormat::mp4;
+    } else if (ext == ".gif") {
+        out.format = video::VideoFormat::gif;
+    } else if (ext == ".png") {
+        throw_option_error(
+            "-o", fmt::format("'{}' is a single image: use --last-frame (or `collide thumbnail`, "
+                              "--at) for one frame, or --format png for a directory of frames",
+                              *output));
+    } else if (output) {
+        throw_option_error("-o", *output, "a .mp4 or .gif path (or --format to name the format)");
     }
     if (output) {
-        const bool file_format = out.format != video::VideoFormat::png_sequence;
-        if (file_format &&
-            lowercase_extension(*output) != "." + std::string(video::to_string(out.format)))
-            throw_option_error("-o",
-                               fmt::format("'{}' does not end in .{} (--format {})", *output,
-                                           video::to_string(out.format), format.value_or("")));
         out.path = *output;
         return out;
     }
@@ -550,14 +489,15 @@ RenderPlan plan_render(const RenderRequest& request, const Scene& scene) {
         if (request.layout_json->empty()) throw_option_error("--layout-json", "needs a file name");
         plan.layout_json = *request.layout_json;
     }
-    if (request.still || request.last_frame) {
-        plan_still_output(request, scene, plan);
-        plan.clock = request.at ? still_clock(*request.at, plan.speed.speed, plan.fps) : video;
-    } else {
-        if (request.at) throw_option_error("--at", "only for `collide thumbnail`");
-        plan_video_output(request, scene, plan);
-        plan.clock = video;
-    }
+    const bool still = request.still || request.last_frame;
+    if (request.at && !request.still) throw_option_error("--at", "only for `collide thumbnail`");
+    const OutputChoice output =
+        resolve_output(request.format, request.output, still, output_stem(scene));
+    plan.kind = still ? OutputKind::still : OutputKind::video;
+    plan.format = output.format;
+    plan.output = output.path;
+    plan.default_output = output.default_path;
+    plan.clock = still && request.at ? still_clock(*request.at, plan.speed.speed, plan.fps) : video;
     return plan;
 }
 

@@ -43,25 +43,24 @@ inline constexpr int max_fps = 240;
 /// `fps` if it is 1..max_fps; else throws Error(input) naming `option`.
 [[nodiscard]] int checked_fps(int fps, std::string_view option = "--fps");
 
-/// The checks of a single-frame output (a PNG: thumbnail, --last-frame, heap --at): --format, if
-/// given, must be png, and -o, if given, a .png path. Throws Error(input) naming the option.
-void check_still_output(const std::optional<std::string>& format,
-                        const std::optional<std::string>& output);
-
-/// Where a lesson video of `collide heap` or `collide puzzle` goes and as what.
-struct LessonOutput {
+/// Where the output of `render`, `thumbnail`, `heap` or `puzzle` goes and as what.
+struct OutputChoice {
     std::filesystem::path path;
-    video::VideoFormat format = video::VideoFormat::mp4;
-    bool still = false;         ///< one PNG (--last-frame, --at)
-    bool default_path = false;  ///< derived from `stem` under default_output_dir
+    video::VideoFormat format = video::VideoFormat::mp4;  ///< videos only
+    bool still = false;         ///< one PNG (thumbnail, --last-frame, --at)
+    bool default_path = false;  ///< derived from the stem under default_output_dir
 };
 
-/// The rules of `collide render` for a lesson video: a still is a PNG (check_still_output); else
-/// --format decides, or the extension of -o (.mp4, .gif); without -o, out/<stem>.<ext> (a PNG
-/// sequence: out/<stem>_frames). Throws Error(input) naming --format or -o.
-[[nodiscard]] LessonOutput lesson_output(const std::optional<std::string>& format,
-                                         const std::optional<std::string>& output, bool still,
-                                         std::string_view stem);
+/// The one output rule of every video command (docs/outputs.md, "Which file, which format"):
+/// - a still is a PNG: --format, if given, must be png, and -o, if given, end in .png;
+/// - a video: --format decides, and -o may then have any extension but one naming another
+///   format (.mp4, .gif, .png); without --format, -o's extension decides (.mp4, .gif), and
+///   any other is refused (.png with a word on --last-frame and --format png);
+/// - without -o: out/STEM.png, out/STEM.mp4, out/STEM.gif or out/STEM_frames (PNG sequence).
+/// Extensions compare case-insensitively. Throws Error(input) naming --format or -o.
+[[nodiscard]] OutputChoice resolve_output(const std::optional<std::string>& format,
+                                          const std::optional<std::string>& output, bool still,
+                                          std::string_view stem);
 
 /// l = 854x480@15, m = 1280x720@30, h = 1920x1080@60, k = 3840x2160@60.
 /// Throws Error(input) naming `option` for any other letter.

@@ -9,6 +9,7 @@
 #include <sys/file.h>
 #include <sys/random.h>
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <unistd.h>
 
 #include <array>
@@ -169,6 +170,50 @@ File open_parent(const fs::path& path, const fs::path& shown, const std::string&
     if (error == ENOTDIR)
         throw_input_error(what + ": " + quote_path(directory) + " is not a directory");
     throw_create_error(what + ": cannot open its directory " + quote_path(directory), error);
+}
+
+/// A name the link `link` led to that names no file: its target ended in '/', '/.' or '/..'
+/// (the destination's own spelling is checked before links are followed).
+void check_link_target(const fs::path& destination, const fs::path& target,
+                       const std::string& label) {
+    if (target == destination) return;
+    if (!target.has_filename() || target.filename() == "." || target.filename() == "..") {
+        throw_input_error(label + " " + quote_path(destination) + ": its link leads to " +
+                          quote_path(target) +
+                          ", which names no file (it ends with '/', '.' or '..')");
+    }
+}
+
+/// Refuses a name longer than the directory's filesystem allows (pathconf NAME_MAX), which
+/// would otherwise only fail when the finished output is renamed onto it.
+void check_name_length(int directory, const std::string& name, const fs::path& shown,
+                       const std::string& label) {
+    errno = 0;
+    const long limit = ::fpathconf(directory, _PC_NAME_MAX);
+    if (limit <= 0 || name.size() <= static_cast<std::size_t>(limit)) return;
+    throw_input_error(label + " " + quote_path(shown) + ": its name is " +
+                      std::to_string(name.size()) + " bytes long; this filesystem allows " +
+                      std::to_string(limit) + " (a shorter name)");
+}
+
+/// True when `name` in `directory` is the root of a mount (a bind mount of a file or directory
+/// included, even on the same filesystem): the kernel refuses to rename anything onto it.
+bool is_mount_root(int directory, const std::string& name) {
+    struct statx status {};
+    if (::statx(directory, name.c_str(), AT_SYMLINK_NOFOLLOW, STATX_BASIC_STATS, &status) != 0)
+        return false;
+    if ((status.stx_attributes_mask & STATX_ATTR_MOUNT_ROOT) != 0)
+        return (status.stx_attributes & STATX_ATTR_MOUNT_ROOT) != 0;
+    // Kernels before 5.8: a different device than the directory's.
+    struct stat above {};
+    return ::fstat(directory, &above) == 0 && (status.stx_dev_major != major(above.st_dev) ||
+                                               status.stx_dev_minor != minor(above.st_dev));
+}
+
+[[noreturn]] void throw_mount_point(const fs::path& shown, const std::string& label) {
+    throw_input_error(label + " " + quote_path(shown) +
+                      " is a mount point (a bind mount?): an output is put in place by renaming "
+                      "onto it, which the system refuses for a mount point; give another path");
 }
 
 void lock_exclusively(int fd) {
@@ -337,12 +382,16 @@ OutputFile::OutputFile(const fs::path& destination, OutputOptions options)
         throw_input_error(what + " names no file (it ends with '/', '.' or '..')");
     }
     const fs::path target = follow_links(destination, label_);
+    check_link_target(destination, target, label_);
     directory_ = open_parent(target, destination, label_);
     target_name_ = target.filename().native();
+    check_name_length(directory_.get(), target_name_, destination, label_);
 
     struct stat existing {};
     if (::fstatat(directory_.get(), target_name_.c_str(), &existing, AT_SYMLINK_NOFOLLOW) == 0) {
         if (S_ISDIR(existing.st_mode)) throw_input_error(what + " is an existing directory");
+        if (S_ISREG(existing.st_mode) && is_mount_root(directory_.get(), target_name_))
+            throw_mount_point(destination, label_);
         if (!S_ISREG(existing.st_mode)) {
             if (!options.allow_stream) {
                 throw_input_error(what + " is not a regular file (a device, FIFO or socket)");
@@ -417,6 +466,14 @@ OutputFile& OutputFile::operator=(OutputFile&& other) noexcept {
         active_ = std::exchange(other.active_, false);
     }
     return *this;
+}
+
+bool OutputFile::is_standard_output() const noexcept {
+    if (!stream_ || !file_) return false;
+    struct stat mine {};
+    struct stat out {};
+    return ::fstat(file_.get(), &mine) == 0 && ::fstat(STDOUT_FILENO, &out) == 0 &&
+           mine.st_dev == out.st_dev && mine.st_ino == out.st_ino;
 }
 
 fs::path OutputFile::reopen_path() const {
@@ -534,8 +591,9 @@ void check_replaceable(int parent, int fd, const fs::path& path, const fs::path&
     const std::string what = label + " " + quote_path(shown);
     struct stat status {};
     struct stat above {};
-    if (::fstat(fd, &status) == 0 && ::fstat(parent, &above) == 0 &&
-        status.st_dev != above.st_dev) {
+    if ((::fstat(fd, &status) == 0 && ::fstat(parent, &above) == 0 &&
+         status.st_dev != above.st_dev) ||
+        is_mount_root(parent, path.filename().native())) {
         throw_input_error(what +
                           " is a mount point; a directory of frames replaces its "
                           "directory, so give a new directory inside it");
@@ -560,9 +618,11 @@ void check_replaceable(int parent, int fd, const fs::path& path, const fs::path&
 OutputDirectory::OutputDirectory(const fs::path& destination, NamePredicate replaceable,
                                  std::string label)
     : destination_(destination), label_(std::move(label)), replaceable_(std::move(replaceable)) {
-    const fs::path target = follow_links(directory_destination(destination, label_), label_);
+    const fs::path named = directory_destination(destination, label_);
+    const fs::path target = directory_destination(follow_links(named, label_), label_);
     parent_ = open_parent(target, destination, label_);
     target_name_ = target.filename().native();
+    check_name_length(parent_.get(), target_name_, destination, label_);
     const std::string what = label_ + " " + quote_path(destination);
 
     struct stat existing {};
@@ -717,6 +777,82 @@ void check_output_directory(const fs::path& destination,
                             const std::string& label) {
     OutputDirectory probe(destination, replaceable, label);
     probe.discard();
+}
+
+namespace {
+
+/// What an output path stands for, to compare two outputs of a run: an open stream's file, an
+/// existing file's identity, or (not yet existing) its path with every link resolved.
+struct OutputIdentity {
+    bool exists = false;
+    dev_t device = 0;
+    ino_t inode = 0;
+    fs::path resolved;
+};
+
+OutputIdentity identity_of(const NamedOutput& output) {
+    OutputIdentity id;
+    struct stat status {};
+    if (const int stream = standard_stream_fd(output.path); stream >= 0) {
+        if (::fstat(stream, &status) == 0) {
+            id.exists = true;
+            id.device = status.st_dev;
+            id.inode = status.st_ino;
+        }
+        return id;
+    }
+    fs::path path = follow_links(output.path, output.label);
+    if (output.directory) path = directory_destination(path, output.label);
+    std::error_code error;
+    id.resolved = fs::weakly_canonical(fs::absolute(path, error), error);
+    if (error) id.resolved = fs::absolute(path).lexically_normal();
+    if (::stat(path.c_str(), &status) == 0) {
+        id.exists = true;
+        id.device = status.st_dev;
+        id.inode = status.st_ino;
+    }
+    return id;
+}
+
+bool same_output(const OutputIdentity& a, const OutputIdentity& b) {
+    if (a.exists && b.exists) return a.device == b.device && a.inode == b.inode;
+    return !a.resolved.empty() && a.resolved == b.resolved;
+}
+
+/// True when `inner` lies inside the directory `outer` (both resolved).
+bool lies_inside(const fs::path& inner, const fs::path& outer) {
+    if (inner.empty() || outer.empty()) return false;
+    const fs::path relative = inner.lexically_relative(outer);
+    return !relative.empty() && *relative.begin() != ".." && relative != ".";
+}
+
+}  // namespace
+
+void check_distinct_outputs(const std::vector<NamedOutput>& outputs) {
+    std::vector<OutputIdentity> ids;
+    ids.reserve(outputs.size());
+    for (const NamedOutput& output : outputs) ids.push_back(identity_of(output));
+    for (std::size_t i = 0; i < outputs.size(); ++i) {
+        for (std::size_t j = i + 1; j < outputs.size(); ++j) {
+            const NamedOutput& a = outputs[i];
+            const NamedOutput& b = outputs[j];
+            if (same_output(ids[i], ids[j])) {
+                throw_input_error(b.label + " " + quote_path(b.path) + " is the same file as " +
+                                  a.label + " " + quote_path(a.path) +
+                                  ": each output of a run needs a file of its own");
+            }
+            const auto inside = [&](const NamedOutput& dir, const OutputIdentity& dir_id,
+                                    const NamedOutput& file, const OutputIdentity& file_id) {
+                if (!dir.directory || !lies_inside(file_id.resolved, dir_id.resolved)) return;
+                throw_input_error(file.label + " " + quote_path(file.path) + " lies inside " +
+                                  dir.label + " " + quote_path(dir.path) +
+                                  ", which the directory of frames replaces as a whole; give it "
+                                  "a path outside");
+            };
+            inside(a, ids[i], b, ids[j]);
+            inside(b, ids[j], a, ids[i]);
+        }
+    }
 }
 
 File open_scratch_file(const fs::path& directory) {

@@ -30,13 +30,6 @@ constexpr std::array<std::string_view, 10> x26x_presets = {
     "ultrafast", "superfast", "veryfast", "faster",   "fast",
     "medium",    "slow",      "slower",   "veryslow", "placebo"};
 
-std::string lowercase(std::string_view text) {
-    std::string out(text);
-    std::transform(out.begin(), out.end(), out.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return out;
-}
-
 void require_range(std::string_view field, int value, int low, int high) {
     if (value < low || value > high) {
         throw_input_error("", 0, std::string(field),
@@ -85,13 +78,6 @@ VideoFormat parse_video_format(std::string_view text, std::string_view field) {
 
 VideoCodec parse_video_codec(std::string_view text, std::string_view field) {
     return parse_named(text, field, codec_names, "", NameCase::ignore);
-}
-
-VideoFormat format_from_extension(const std::filesystem::path& path) {
-    const std::string extension = lowercase(path.extension().string());
-    if (extension == ".gif") return VideoFormat::gif;
-    if (extension.empty() || extension == ".png") return VideoFormat::png_sequence;
-    return VideoFormat::mp4;
 }
 
 std::string_view to_string(VideoFormat format) noexcept {

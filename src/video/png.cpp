@@ -74,6 +74,10 @@ std::unique_ptr<FrameSink> make_png_sequence_sink(const std::string& stem,
 }  // namespace detail
 
 void write_png(const Image& image, const std::filesystem::path& path) {
+    write_png_uncommitted(image, path).commit();
+}
+
+io::OutputFile write_png_uncommitted(const Image& image, const std::filesystem::path& path) {
     if (image.width <= 0 || image.height <= 0 ||
         image.rgba.size() != image.stride() * static_cast<std::size_t>(image.height)) {
         throw_runtime_error("write_png '" + path.string() + "': image is empty or inconsistent (" +
@@ -82,7 +86,7 @@ void write_png(const Image& image, const std::filesystem::path& path) {
     const std::vector<unsigned char> bytes = detail::encode_png(image, path);
     io::OutputFile file(path);
     file.write(bytes.data(), bytes.size());
-    file.commit();
+    return file;
 }
 
 Image read_png(const std::filesystem::path& path) {

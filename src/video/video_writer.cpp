@@ -113,7 +113,7 @@ class VideoWriter::Impl {
         return spare;
     }
 
-    void finish() {
+    void complete() {
         if (finished_) throw_runtime_error("VideoWriter::finish called twice");
         finished_ = true;  // whatever happens next, no more frames
         {
@@ -128,6 +128,11 @@ class VideoWriter::Impl {
             throw_runtime_error("no frames were written to '" + options_.path.string() + "'");
         }
         sink_->finish();
+    }
+
+    void commit() {
+        if (!finished_) throw_runtime_error("VideoWriter::commit before complete()");
+        if (cancelled()) throw_interrupted();
         if (options_.format == VideoFormat::png_sequence) {
             directory_.commit();
         } else {
@@ -251,7 +256,14 @@ Image VideoWriter::spare_frame() {
     return impl_->spare_frame();
 }
 void VideoWriter::finish() {
-    impl_->finish();
+    impl_->complete();
+    impl_->commit();
+}
+void VideoWriter::complete() {
+    impl_->complete();
+}
+void VideoWriter::commit() {
+    impl_->commit();
 }
 const std::vector<std::string>& VideoWriter::notices() const noexcept {
     return impl_->notices();

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "../support/files.hpp"
@@ -255,4 +256,178 @@ TEST_CASE("check --export: a read-only filesystem is exit 2 with the reason") {
     const RunResult r = run_collide_shell(command);
     CHECK(r.exit_code == 2);
     CHECK(contains(r.output, "Read-only file system"));
+}
+
+TEST_CASE("one output rule for render, thumbnail, heap and puzzle (-o, --format, stills)") {
+    // Every destination lies in a directory that does not exist: a request the rule accepts
+    // then stops at the path ("directory ... does not exist"), one it refuses names -o or
+    // --format; nothing is ever rendered. The same answers for every command.
+    const TempDir dir("outputs_rule");
+    const std::string m = q(dir.path / "missing") + "/";
+    const std::vector<std::string> videos = {"render gas", "heap --ops 'P Q *'",
+                                             "puzzle '1 2 3 4 5 6 7 0 8'"};
+    struct Case {
+        std::string options;
+        std::string refused;  ///< the option the rule names; empty: accepted
+    };
+    const std::vector<Case> video_cases = {
+        {"-o M/x.MP4", ""},
+        {"-o M/x.avi --format mp4", ""},  // with --format, any extension but another format's
+        {"-o M/x --format png", ""},
+        {"-o M/x.gif --format mp4", "-o"},
+        {"-o M/x.gif --format png", "-o"},  // a directory of frames named .gif misleads
+        {"-o M/x.mp4 --format png", "-o"},
+        {"-o M/x.avi", "-o"},  // without --format, the extension decides
+        {"-o M/x", "-o"},
+        {"-o M/x.png", "-o"},
+        {"-o M/x.mp4 --format avi", "--format"},
+        {"-o M/x.png --last-frame --format gif", "--format"},  // a still is a PNG
+    };
+    // One frame: thumbnail always, the others with --last-frame.
+    const std::vector<Case> still_cases = {
+        {"-o M/x.PNG", ""}, {"-o M/x.mp4", "-o"}, {"-o M/x", "-o"}};
+    const auto check = [&](const std::string& command, const Case& c) {
+        std::string options = c.options;
+        for (std::size_t at = options.find("M/"); at != std::string::npos;
+             at = options.find("M/", at)) {
+            options.replace(at, 2, m);
+            at += m.size();
+        }
+        const RunResult r = run_collide(command + " " + options + " --progress none");
+        INFO(command << " " << c.options << "\n" << r.output);
+        CHECK(r.exit_code == 2);
+        if (c.refused.empty()) {
+            CHECK(contains(r.output, "does not exist"));
+        } else {
+            CHECK(contains(r.output, "error: " + c.refused + ":"));
+        }
+    };
+    for (const std::string& command : videos) {
+        for (const Case& c : video_cases) check(command, c);
+    }
+    for (const Case& c : still_cases) {
+        check("thumbnail gas", c);
+        for (const std::string& command : videos)
+            check(command, {c.options + " --last-frame", c.refused});
+    }
+    CHECK(entries(dir.path).empty());
+}
+
+TEST_CASE("render: two outputs that are one file (same name, a link, a hard link) are refused") {
+    TempDir dir("outputs_same_file");
+    const fs::path video = dir.path / "x.mp4";
+    write_file(video, "old");
+    fs::create_symlink("x.mp4", dir.path / "link.json");
+    fs::create_hard_link(video, dir.path / "hard.json");
+    for (const std::string layout : {"x.mp4", "link.json", "hard.json"}) {
+        const RunResult r = run_collide("render gas" + small_video + " -o " + q(video) +
+                                        " --layout-json " + q(dir.path / layout));
+        INFO(layout << "\n" << r.output);
+        CHECK(r.exit_code == 2);
+        CHECK(contains(r.output, "is the same file as -o"));
+        CHECK(read_all(video) == "old");
+    }
+    // A layout inside the directory of frames would vanish with the directory it replaces.
+    const RunResult r =
+        run_collide("render gas" + small_video + " --format png -o " + q(dir.path / "frames") +
+                    " --layout-json " + q(dir.path / "frames" / "l.json"));
+    CHECK(r.exit_code == 2);
+    CHECK(contains(r.output, "lies inside -o"));
+    CHECK(entries(dir.path).size() == 3);  // x.mp4, link.json, hard.json: nothing new
+}
+
+TEST_CASE("render: a layout that cannot be written leaves the video untouched") {
+    if (!fs::exists("/dev/full")) COLLIDE_SKIP_TEST("no /dev/full");
+    TempDir dir("outputs_all_or_nothing");
+    const fs::path video = dir.path / "x.mp4";
+    write_file(video, "old");
+    const RunResult r =
+        run_collide("render gas" + small_video + " -o " + q(video) + " --layout-json /dev/full");
+    INFO(r.output);
+    CHECK(r.exit_code == 1);
+    CHECK(contains(r.output, "No space left on device"));
+    CHECK(read_all(video) == "old");  // before: replaced by the new video, then exit 1
+    // The same for a still: neither the PNG nor the layout is put in place.
+    const fs::path still = dir.path / "x.png";
+    const RunResult s = run_collide("thumbnail gas --size 320x180 --progress none -o " + q(still) +
+                                    " --layout-json /dev/full");
+    CHECK(s.exit_code == 1);
+    CHECK(!fs::exists(still));
+}
+
+TEST_CASE("render --layout-json -: standard output holds the JSON and nothing else") {
+    TempDir dir("outputs_stdout_data");
+    const RunResult r =
+        run_collide_shell(std::string("\"") + COLLIDE_EXE + "\" render gas" + small_video + " -o " +
+                          q(dir.path / "x.mp4") + " --layout-json - 2>/dev/null");
+    INFO(r.output);
+    CHECK(r.exit_code == 0);
+    REQUIRE(!r.output.empty());
+    CHECK(r.output.front() == '{');
+    CHECK(r.output.substr(r.output.find_last_not_of('\n')) == "}\n");  // no summary line after
+    CHECK(!contains(r.output, "s of video"));
+    CHECK(fs::exists(dir.path / "x.mp4"));
+}
+
+TEST_CASE("simulate --events-log -: standard output holds the log and nothing else") {
+    const RunResult r = run_collide_shell(std::string("\"") + COLLIDE_EXE +
+                                          "\" simulate gas --until 1 --events-log - 2>/dev/null");
+    CHECK(r.exit_code == 0);
+    CHECK(r.output.rfind("t,kind,a,b\n", 0) == 0);
+    CHECK(!contains(r.output, "discs"));  // the report went to stderr
+    // Two kinds of data on one stream cannot be told apart: refused before anything is written.
+    const RunResult both = run_collide("simulate gas --until 1 --events-log - --json");
+    CHECK(both.exit_code == 2);
+    CHECK(contains(both.output, "--events-log"));
+    CHECK(!contains(both.output, "t,kind,a,b"));
+}
+
+TEST_CASE("render: destinations that would fail only at the end are refused before rendering") {
+    TempDir dir("outputs_up_front");
+    const auto refused = [&](const std::string& args, const std::string& reason) {
+        const RunResult r = run_collide(args);
+        INFO(args << "\n" << r.output);
+        CHECK(r.exit_code == 2);  // before: the whole render, then exit 1
+        CHECK(contains(r.output, reason));
+        CHECK(!contains(r.output, "s of video"));
+    };
+    // A name longer than the filesystem's NAME_MAX (pathconf): a file, a directory of frames.
+    const std::string long_name(252, 'a');
+    refused("render gas" + small_video + " -o " + q(dir.path / (long_name + ".mp4")), "bytes long");
+    refused("thumbnail gas --size 320x180 -o " + q(dir.path / (long_name + ".png")), "bytes long");
+    // A link whose target ends in '/' or '/.' names a directory, not a file.
+    fs::create_directory(dir.path / "d.mp4");
+    fs::create_symlink("d.mp4/", dir.path / "slash.mp4");
+    fs::create_symlink("d.mp4/.", dir.path / "dot.mp4");
+    refused("render gas" + small_video + " -o " + q(dir.path / "slash.mp4"), "names no file");
+    refused("render gas" + small_video + " -o " + q(dir.path / "dot.mp4"), "names no file");
+    // A bind mount on the same filesystem (same st_dev as its parent): a private mount namespace
+    // where the system allows one (root, or unprivileged user namespaces).
+    fs::create_directory(dir.path / "src");
+    fs::create_directory(dir.path / "frames");
+    write_file(dir.path / "file-src.mp4", "old");
+    write_file(dir.path / "file.mp4", "old");
+    if (run_collide_shell("unshare -m true").exit_code != 0 &&
+        run_collide_shell("unshare -r -m true").exit_code != 0) {
+        COLLIDE_SKIP_TEST("no mount namespace here (unshare -m)");
+    }
+    const std::string unshare =
+        run_collide_shell("unshare -m true").exit_code == 0 ? "unshare -m" : "unshare -r -m";
+    const auto in_namespace = [&](const std::string& source, const std::string& target,
+                                  const std::string& args) {
+        return run_collide_shell(unshare + " sh -c \"mount --bind " + q(dir.path / source) + " " +
+                                 q(dir.path / target) + " && exec '" + COLLIDE_EXE + "' " + args +
+                                 "\"");
+    };
+    for (const auto& [source, target, args] :
+         {std::tuple<std::string, std::string, std::string>{
+              "src", "frames", "--format png -o " + q(dir.path / "frames")},
+          {"file-src.mp4", "file.mp4", "-o " + q(dir.path / "file.mp4")}}) {
+        const RunResult r = in_namespace(source, target, "render gas" + small_video + " " + args);
+        INFO(args << "\n" << r.output);
+        if (contains(r.output, "mount:")) COLLIDE_SKIP_TEST("mount --bind refused here");
+        CHECK(r.exit_code == 2);
+        CHECK(contains(r.output, "is a mount point"));
+    }
+    CHECK(read_all(dir.path / "file.mp4") == "old");
 }

@@ -361,3 +361,51 @@ TEST_CASE("a scratch file has no name from the start") {
     }
     CHECK(entries(dir.path).empty());
 }
+
+TEST_CASE("check_distinct_outputs: one file under two names is refused, distinct files pass") {
+    TempDir dir("io_distinct");
+    const fs::path video = dir.path / "x.mp4";
+    write_file(video, "old");
+    fs::create_symlink("x.mp4", dir.path / "soft.json");
+    fs::create_hard_link(video, dir.path / "hard.json");
+    fs::create_symlink("new.json", dir.path / "dangling.json");
+    const auto refused = [](const std::vector<NamedOutput>& outputs) {
+        return input_error_message([&] { check_distinct_outputs(outputs); });
+    };
+    CHECK(contains(refused({{"-o", video}, {"--layout-json", video}}), "the same file as -o"));
+    CHECK(contains(refused({{"-o", video}, {"--layout-json", dir.path / "soft.json"}}),
+                   "the same file"));
+    CHECK(contains(refused({{"-o", video}, {"--layout-json", dir.path / "hard.json"}}),
+                   "the same file"));
+    CHECK(contains(
+        refused({{"-o", dir.path / "new.json"}, {"--layout-json", dir.path / "dangling.json"}}),
+        "the same file"));
+    CHECK(
+        contains(refused({{"-o", dir.path / "y.mp4"}, {"--layout-json", dir.path / "." / "y.mp4"}}),
+                 "the same file"));
+    CHECK(contains(refused({{"--layout-json", "-"}, {"--dump-rgba", "/dev/stdout"}}),
+                   "the same file"));
+    CHECK(contains(refused({{"-o", dir.path / "frames", true},
+                            {"--layout-json", dir.path / "frames" / "l.json"}}),
+                   "lies inside -o"));
+    CHECK_NOTHROW(check_distinct_outputs({{"-o", video}, {"--layout-json", dir.path / "l.json"}}));
+    CHECK_NOTHROW(check_distinct_outputs(
+        {{"-o", dir.path / "frames", true}, {"--layout-json", dir.path / "frames.json"}}));
+    CHECK(entries(dir.path).size() == 4);  // nothing created
+}
+
+TEST_CASE("OutputFile refuses up front a name over NAME_MAX and a link ending in '/' or '/.'") {
+    TempDir dir("io_up_front");
+    const std::string long_name(256, 'n');
+    CHECK(contains(input_error_message([&] { OutputFile f(dir.path / long_name); }), "bytes long"));
+    CHECK(contains(input_error_message([&] { OutputDirectory d(dir.path / long_name, {}); }),
+                   "bytes long"));
+    fs::create_directory(dir.path / "d");
+    fs::create_symlink("d/", dir.path / "slash");
+    fs::create_symlink("d/.", dir.path / "dot");
+    CHECK(
+        contains(input_error_message([&] { OutputFile f(dir.path / "slash"); }), "names no file"));
+    CHECK(contains(input_error_message([&] { OutputFile f(dir.path / "dot"); }), "names no file"));
+    CHECK(entries(dir.path).size() == 3);
+    CHECK(entries(dir.path / "d").empty());
+}

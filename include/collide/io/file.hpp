@@ -32,6 +32,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace collide::io {
 
@@ -99,6 +100,10 @@ class OutputFile {
     [[nodiscard]] const std::filesystem::path& destination() const noexcept { return destination_; }
     /// True when writing straight to standard output or a device/FIFO (see OutputOptions).
     [[nodiscard]] bool is_stream() const noexcept { return stream_; }
+    /// True when this stream is the very file standard output writes to ("-", /dev/stdout, a
+    /// name of the file stdout is redirected to), so that nothing else may go to stdout.
+    /// False once committed or discarded.
+    [[nodiscard]] bool is_standard_output() const noexcept;
     /// The temporary's name in the destination's directory, when it has one (tests).
     [[nodiscard]] const std::string& temporary_name() const noexcept { return temporary_name_; }
 
@@ -176,6 +181,20 @@ class OutputDirectory {
 void check_output_directory(const std::filesystem::path& destination,
                             const OutputDirectory::NamePredicate& replaceable,
                             const std::string& label = "output");
+
+/// One output of a run (for check_distinct_outputs): its label in messages ("-o",
+/// "--layout-json"), its path, and whether it is a directory output (a PNG sequence).
+struct NamedOutput {
+    std::string label;
+    std::filesystem::path path;
+    bool directory = false;
+};
+
+/// Refuses, before anything is written, two outputs of one run that are the same file: after
+/// symbolic links, hard links included, standard output twice ("-" and /dev/stdout) - or a file
+/// inside a directory output, which replaces its directory as a whole. Throws Error(input)
+/// naming both. Creates nothing.
+void check_distinct_outputs(const std::vector<NamedOutput>& outputs);
 
 /// An unnamed scratch file in `directory` (O_TMPFILE, or mkostemp + unlink at once), for data
 /// that must never outlive the process (the GIF writer's frame store). Throws Error(runtime).

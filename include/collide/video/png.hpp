@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "collide/image.hpp"
+#include "collide/io/file.hpp"
 
 namespace collide::video {
 
@@ -14,6 +15,10 @@ namespace collide::video {
 /// Throws Error(input) naming the path if its directory does not exist or is not writable,
 /// Error(runtime) if the image is empty/inconsistent or the write fails (e.g. a full disk).
 void write_png(const Image& image, const std::filesystem::path& path);
+/// write_png without the final step: the whole PNG in its temporary, put in place by the
+/// returned file's commit() (for a run that commits its outputs only once all are written).
+[[nodiscard]] io::OutputFile write_png_uncommitted(const Image& image,
+                                                   const std::filesystem::path& path);
 
 /// Reads a PNG (any bit depth / channel count stb understands) as RGBA8, rows top-down.
 /// Throws Error(input) naming the path if it cannot be opened or decoded.

@@ -6,7 +6,7 @@
 /// Typical use (the app's `render` command):
 /// \code
 ///   collide::video::VideoOptions options;
-///   options.path = "out.mp4";                      // format follows the extension by default
+///   options.path = "out.mp4";                      // options.format: mp4 by default
 ///   options.width = 1280; options.height = 720; options.fps = 30;
 ///   options.cancel = &interrupts.flag();           // set by the SIGINT/SIGTERM handler
 ///   collide::video::check_output_writable(options.path);   // before rendering anything
@@ -87,9 +87,6 @@ struct VideoOptions {
                                              std::string_view field = "format");
 /// "h264" / "hevc" (or "h265") / "av1" -> codec; throws Error(input) naming `field`.
 [[nodiscard]] VideoCodec parse_video_codec(std::string_view text, std::string_view field = "codec");
-/// Format implied by the path's extension: .gif -> gif, .mp4 (or none of the others) -> mp4,
-/// no extension or .png -> png_sequence.
-[[nodiscard]] VideoFormat format_from_extension(const std::filesystem::path& path);
 [[nodiscard]] std::string_view to_string(VideoFormat format) noexcept;
 [[nodiscard]] std::string_view to_string(VideoCodec codec) noexcept;
 /// The libav encoder name used for `codec` ("libx264", "libx265", "libsvtav1").
@@ -133,6 +130,10 @@ class VideoWriter {
     /// `options.path`. Throws Error(runtime) on any failure (then nothing is renamed), including
     /// when no frame was written. Calling it twice throws.
     void finish();
+    /// finish() in two steps, for a run with several outputs that puts none in place before all
+    /// are written: complete() does all but the rename (same throws), commit() the rename.
+    void complete();
+    void commit();
 
     /// Human-readable remarks about adjustments made to the request (odd size rounded up, GIF
     /// frame rate reduced, ...), for the app to print; the library itself never prints.

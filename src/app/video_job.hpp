@@ -1,0 +1,105 @@
+#pragma once
+/// \file
+/// The one video job of `render`, `thumbnail`, `heap` and `puzzle`: a frame program (frame k ->
+/// image) run through one loop that feeds the preview window, the video writer (MP4, GIF, PNG
+/// sequence) or one PNG, with progress and interrupts.
+///
+///   video:  for k in 0..frames-1: program.frame(k, output) -> preview -> writer  (then finish)
+///   still:  for k in 0..frames-1: program.frame(k, skip | warm | output) -> the last one is
+///           the PNG (--at, --last-frame, thumbnail: the frames before it are the warm-up that
+///           brings simulations and trails to the same state as the video's frame)
+///
+/// The loop knows nothing of what is drawn: each command hands in its program.
+
+#include <atomic>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "collide/image.hpp"
+#include "collide/render/context.hpp"
+#include "collide/render/renderer.hpp"
+#include "collide/video/video_writer.hpp"
+#include "interrupt.hpp"
+#include "progress.hpp"
+
+namespace collide::app {
+
+/// What the job needs frame k for.
+enum class FrameUse {
+    skip,    ///< a still's frame far before the last: only advance the state
+    warm,    ///< a still's frame whose drawing the last one depends on (trails): draw, no pixels
+    output,  ///< draw into the image
+};
+
+/// The pictures of one video. The job calls frame(k) for k = 0, 1, ..., frames - 1, each once.
+class FrameProgram {
+  public:
+    virtual ~FrameProgram() = default;
+    /// Brings the program to frame k and, for FrameUse::output, draws it into `image` (any
+    /// size: the program sizes it). Returns the time frame k shows (for the progress line).
+    virtual double frame(std::int64_t k, FrameUse use, Image& image) = 0;
+    /// After the last frame, before the output is finished: throws when the frames were not
+    /// all produced as they should have been.
+    virtual void finish() {}
+};
+
+/// Makes the program once the preview window (if any) is open: `backend` is the GL backend its
+/// renderer must use (GLFW with a preview window, so one GL implementation serves both).
+using ProgramFactory = std::function<std::unique_ptr<FrameProgram>(render::Backend backend)>;
+
+/// Where the job's output goes and as what.
+struct JobOutput {
+    std::filesystem::path path;
+    video::VideoFormat format = video::VideoFormat::mp4;  ///< videos only
+    bool still = false;  ///< one PNG: the last frame (the frames before it are warm-up)
+};
+
+/// One run: the output, the frame geometry and how many frames.
+struct VideoJob {
+    JobOutput output;
+    int width = 1280;
+    int height = 720;
+    int fps = 30;
+    std::int64_t frames = 1;        ///< >= 1
+    std::int64_t warm_frames = 0;   ///< still: how many frames before the last are drawn
+    std::string title = "collide";  ///< the preview window's title
+};
+
+/// Outside-world connections of a run. All optional.
+struct JobHooks {
+    const InterruptGuard* interrupts = nullptr;  ///< polled between frames; cancels encoding
+    Progress* progress = nullptr;
+    bool preview = false;  ///< show frames in a window when a display exists
+    /// GL backend for the frames; with a preview window open they go through GLFW instead.
+    render::Backend backend = render::Backend::automatic;
+    render::NoticeSink notice;  ///< one-line notices (empty = stderr)
+    /// Benchmarks only: also append every frame as raw RGBA to this file (for timing libx264
+    /// alone on exactly the same frames with the ffmpeg command line).
+    std::filesystem::path dump_rgba;
+    /// The run's other outputs (--layout-json): called once every frame is written and the
+    /// output is complete in its temporary, before it is put in place, so that a failure here
+    /// leaves the destination untouched. The caller commits those outputs after the job.
+    std::function<void()> before_commit;
+};
+
+/// What was written, for the summary line.
+struct JobResult {
+    std::int64_t frames = 0;
+    std::vector<std::string> notices;  ///< from the encoder (size rounded, GIF rate reduced)
+    int output_width = 0;
+    int output_height = 0;
+    double output_fps = 0.0;
+};
+
+/// Runs the job: creates the writer (which checks the destination and creates its temporary),
+/// opens the preview, makes the program, then feeds it every frame in order. Nothing appears at
+/// job.output.path unless every frame was produced and the file finished (temporary + rename).
+/// Throws Error: input for bad options, runtime for GL/encoder failures or an interrupt.
+JobResult run_video_job(const VideoJob& job, const ProgramFactory& make_program,
+                        const JobHooks& hooks);
+
+}  // namespace collide::app

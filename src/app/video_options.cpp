@@ -1,0 +1,54 @@
+#include "video_options.hpp"
+
+#include <fmt/core.h>
+
+#include "cli_numbers.hpp"
+#include "render_plan.hpp"
+
+namespace collide::app {
+
+bool given(const CLI::Option* option) {
+    return option != nullptr && option->count() > 0;
+}
+
+void add_video_options(CLI::App& cmd, VideoCli& v, const VideoOptionSet& set) {
+    v.output_opt = cmd.add_option(
+        "-o,--output", v.output,
+        set.video
+            ? fmt::format("Output file (default out/{}.mp4, .gif, _frames/ or .png)", set.stem)
+            : fmt::format("Output file (default out/{}.png)", set.stem));
+    if (set.video) {
+        v.format_opt = cmd.add_option("--format", v.format,
+                                      "mp4 (default), gif, or png (a directory of frames)");
+    }
+    v.quality_opt =
+        cmd.add_option("-q,--quality", v.quality,
+                       "l 854x480@15, m 1280x720@30 (default), h 1920x1080@60, k 3840x2160@60");
+    v.size_opt = cmd.add_option("--size", v.size,
+                                fmt::format("Frame size WxH, overrides -q ({})", set.size_example));
+    v.fps_opt =
+        add_whole_option(cmd, "--fps", v.fps, 1, max_fps, "Frames per second, overrides -q");
+    if (set.video) {
+        v.last_frame_opt = cmd.add_flag(
+            "--last-frame", v.last_frame,
+            fmt::format("Write only the final frame, as a PNG (-o FILE.png, default out/{}.png)",
+                        set.stem));
+    }
+    if (!set.at_help.empty()) v.at_opt = cmd.add_option("--at", v.at, std::string(set.at_help));
+    if (set.theme) {
+        v.theme_opt =
+            cmd.add_option("--theme", v.theme,
+                           fmt::format("Colours: dark (screens) or light (projectors, print); {}",
+                                       set.theme_help));
+    }
+    if (set.preview) {
+        v.preview_opt = cmd.add_flag("--preview", v.preview,
+                                     "Show the frames live in a window when a display exists");
+    }
+    cmd.add_option("--progress", v.progress,
+                   "Progress on stderr: auto (bar on a terminal), bar, json or none")
+        ->capture_default_str();
+    cmd.add_flag("--verbose", v.verbose, "Show the encoder's own log");
+}
+
+}  // namespace collide::app
