@@ -141,8 +141,7 @@ render::RenderConfig render_config(const RenderRequest& request, const Scene& sc
     if (request.color) {
         config.color_mode = render::parse_color_mode(*request.color, "--color");
     } else if (scene.render.color_mode) {
-        config.color_mode =
-            render::parse_color_mode(*scene.render.color_mode, "scene [render] color_mode");
+        config.color_mode = *scene.render.color_mode;
     }
     // Fixed ranges for the whole video, so colours and histogram bins mean the same in every frame.
     const double top = std::max(max_speed(scene), speed_range_in_rms * rms_speed(scene));
@@ -159,13 +158,12 @@ render::RenderConfig render_config(const RenderRequest& request, const Scene& sc
     if (request.overlays) {
         config.overlays = render::parse_overlay_level(*request.overlays, "--overlays");
     } else if (scene.render.overlays) {
-        config.overlays =
-            render::parse_overlay_level(*scene.render.overlays, "scene [render] overlays");
+        config.overlays = *scene.render.overlays;
     }
     if (request.theme) {
         config.theme = render::parse_theme(*request.theme, "--theme");
     } else if (scene.render.theme) {
-        config.theme = render::parse_theme(*scene.render.theme, "scene [render] theme");
+        config.theme = *scene.render.theme;
     }
     config.validate();
     return config;
@@ -194,13 +192,9 @@ render::PlotSize histogram_size(const Scene& scene) {
     constexpr std::size_t enough_for_a_distribution = 200;
     // "auto": only where it teaches, i.e. where there are enough moving discs; a scene may ask
     // for one anyway ("small"), or make it the subject ("large", e.g. maxwell-boltzmann).
-    const std::string kind = scene.render.histogram.value_or("auto");
-    if (kind == "large") return render::PlotSize::large;
-    if (kind == "small") return render::PlotSize::small;
-    if (kind == "auto" && moving_disc_count(scene) >= enough_for_a_distribution) {
-        return render::PlotSize::small;
-    }
-    return render::PlotSize::none;
+    if (scene.render.histogram) return *scene.render.histogram;
+    if (moving_disc_count(scene) >= enough_for_a_distribution) return PlotSize::small;
+    return PlotSize::none;
 }
 
 /// Captions beyond the video: an error when the video is as long as the scene says (the scene

@@ -112,7 +112,7 @@ TEST_CASE("dt divides the frame interval, or the plan says what the panel will s
 TEST_CASE("plan_render: command line over scene hints over defaults, and the default output path") {
     Scene scene = two_disc_scene(0.1);
     scene.render.duration = 3.0;
-    scene.render.color_mode = "speed";
+    scene.render.color_mode = ColorMode::speed;
     RenderRequest request;
     request.scene = "two";
     RenderPlan plan = plan_render(request, scene);
@@ -347,11 +347,11 @@ TEST_CASE("the speed histogram shows by default with enough moving discs, or whe
     CHECK(moving_disc_count(gas) == 150);
     CHECK(plan_render(request, gas).lesson.histogram == render::PlotSize::none);
     // The scene decides over the default.
-    gas.render.histogram = "small";
+    gas.render.histogram = PlotSize::small;
     CHECK(plan_render(request, gas).lesson.histogram == render::PlotSize::small);
-    gas.render.histogram = "large";
+    gas.render.histogram = PlotSize::large;
     CHECK(plan_render(request, gas).lesson.histogram == render::PlotSize::large);
-    gas.render.histogram = "none";
+    gas.render.histogram = PlotSize::none;
     gas.discs.resize(600, gas.discs.front());
     CHECK(plan_render(request, gas).lesson.histogram == render::PlotSize::none);
 }
