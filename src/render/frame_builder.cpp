@@ -147,18 +147,6 @@ double contrast_ratio(Rgb8 a, Rgb8 b) noexcept {
     return (std::max(la, lb) + 0.05) / (std::min(la, lb) + 0.05);
 }
 
-std::string with_separators(long long value) {
-    const bool negative = value < 0;
-    std::string digits = std::to_string(negative ? -(value + 1) + 1ULL : value + 0ULL);
-    std::string out;
-    const std::size_t n = digits.size();
-    for (std::size_t i = 0; i < n; ++i) {
-        out += digits[i];
-        if ((n - i - 1) % 3 == 0 && i + 1 < n) out += ',';
-    }
-    return negative ? "-" + out : out;
-}
-
 // ---------------------------------------------------------------------------------------------
 // Markers
 

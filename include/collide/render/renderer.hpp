@@ -26,6 +26,7 @@
 #include "collide/image.hpp"
 #include "collide/render/context.hpp"
 #include "collide/collision_view.hpp"
+#include "collide/number_text.hpp"
 #include "collide/render_options.hpp"
 #include "collide/snapshot.hpp"
 
@@ -130,8 +131,7 @@ class Renderer {
     std::unique_ptr<Impl> impl_;
 };
 
-/// "1,234,567": thousands separators, for figures read from the back row.
-[[nodiscard]] std::string with_separators(long long value);
+using collide::with_separators;  // collide/number_text.hpp
 
 /// Each engine's colour (title swatch, cost bar, histogram): time-driven orange, event-driven
 /// blue, the same in every video.
