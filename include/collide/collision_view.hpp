@@ -21,6 +21,17 @@ struct Figure {
     bool failure = false;  ///< drawn in the failure colour when the value is not zero
 };
 
+/// The words of the queue strip (`--queue`) that say how the engine treats its queue: the fast
+/// engine holds one event per disc and re-predicts, the classic one throws stale events away
+/// (filled by show::queue_words from the snapshot's QueueView).
+struct QueueWords {
+    std::string heading;        ///< "Event queue: binary heap, 1,234 entries, 56 stale"
+    std::string legend;         ///< "In the box: the next 5 collisions queued, time to go"
+    std::string stale_popped;   ///< after a stale event in the list of pops
+    std::string stale_leaving;  ///< on a stale event leaving the root ("thrown away")
+    std::string counts;         ///< under the pops: "3 of 40 pops stale"
+};
+
 /// One simulation shown in one panel.
 struct PanelContent {
     PanelContent() = default;
@@ -42,6 +53,7 @@ struct PanelContent {
     std::string cost_label;     ///< the cost graphic's label ("pair tests")
     double cost = 0.0;          ///< work done so far, on the graphic's shared scale
     Rgb8 accent{240, 150, 60};  ///< the engine's colour (title swatch, bar, histogram)
+    QueueWords queue_words;     ///< the queue strip's words (snapshot->queue set)
 };
 
 /// One sample of an energy drift series: relative drift (E(t) - E(0)) / E(0) at time t.

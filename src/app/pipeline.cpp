@@ -159,7 +159,7 @@ FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan, const std::
         Panel panel;
         panel.engine = make_engine(scene, options);
         panel.engine->set_stop_flag(stop);
-        if (!time_driven && plan.queue_events > 0 && !panel.engine->watch_queue(plan.queue_events))
+        if (!time_driven && plan.queue_events > 0 && !panel.engine->watch_queue(show::queue_picture(plan.queue_events)))
             throw_option_error("--queue", "the " + std::string(to_string(options.engine)) +
                                               " engine has no event queue");
         panel.time_driven = time_driven;
@@ -198,6 +198,7 @@ PanelFrame FrameSource::describe(const Panel& panel) const {
     out.time_driven = panel.time_driven;
     out.words = show::panel_words(m, panel.time_driven,
                                   out.snapshot.box.boundary == Boundary::walls, drift);
+    if (out.snapshot.queue) out.queue_words = show::queue_words(*out.snapshot.queue);
     return out;
 }
 
@@ -229,6 +230,7 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
         out.compact_line = panel.words.compact_line;
         out.cost_label = panel.words.cost_label;
         out.cost = panel.words.cost;
+        out.queue_words = panel.queue_words;
         out.accent = render::panel_accent(panel.time_driven);
         out.note.clear();
         out.step_period = 1;

@@ -36,6 +36,7 @@ struct PanelFrame {
     render::DriftPoint drift;  ///< (KE - KE0) / KE0 at this frame
     bool time_driven = false;
     show::PanelWords words;  ///< counters, figures, compact line, cost (collide/show)
+    QueueWords queue_words;  ///< the queue strip's (snapshot.queue set)
 };
 
 /// What the simulation thread hands to the render thread for one frame.

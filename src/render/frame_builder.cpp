@@ -295,7 +295,7 @@ void FrameBuilder::build_panel(std::size_t index, const PanelContent& content,
     if (snapshot.queue && config_.overlays == OverlayLevel::lesson && body_font_) {
         add_queue_in_box(snapshot, panel);
         if (layout_.queue_panel == static_cast<int>(index) && !intro_)
-            add_queue_strip(snapshot, layout_.queue_strip);
+            add_queue_strip(snapshot, content.queue_words, layout_.queue_strip);
     }
     std::size_t hidden = 0;
     if (config_.overlays == OverlayLevel::lesson) {

@@ -106,11 +106,13 @@ class FrameBuilder {
     void add_column(const FrameContent& frame);
     // The event queue (Snapshot::queue; frame_builder_queue.cpp).
     void add_queue_in_box(const Snapshot& snapshot, const PanelLayout& panel);
-    void add_queue_strip(const Snapshot& snapshot, RectF strip);
-    void add_popped(const QueueView& queue, double now, RectF area);
-    void add_queue_tree(const QueueView& queue, double now, RectF area);
+    void add_queue_strip(const Snapshot& snapshot, const QueueWords& words, RectF strip);
+    void add_popped(const QueueView& queue, const QueueWords& words, double now, RectF area);
+    void add_queue_tree(const QueueView& queue, const QueueWords& words, double now,
+                        RectF area);
     void add_queue_row(const QueueView& queue, double now, RectF area);
-    void add_leaving_root(const QueueView& queue, double now, PointF root, float node_w,
+    void add_leaving_root(const QueueView& queue, const QueueWords& words, double now, PointF root,
+                          float node_w,
                           float node_h);
     void add_queue_node(const QueuedEvent& event, double now, RectF node, Rgba8 frame_color,
                         bool stale);

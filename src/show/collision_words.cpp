@@ -143,4 +143,34 @@ PanelWords panel_words(const Measurements& m, bool time_driven, bool walls, doub
     return out;
 }
 
+QueueViewLimits queue_picture(std::size_t next_events) noexcept {
+    QueueViewLimits limits;
+    limits.next_events = next_events;
+    limits.tree_level_nodes = queue_tree_level_nodes;
+    limits.tree_levels = queue_tree_levels;
+    limits.array_slots = queue_array_slots;
+    return limits;
+}
+
+QueueWords queue_words(const QueueView& queue) {
+    const auto separated = [](std::uint64_t n) { return with_separators(static_cast<long long>(n)); };
+    QueueWords out;
+    out.heading = fmt::format("Event queue: {}, {} entries", queue.name, separated(queue.size));
+    if (queue.one_per_disc) {
+        out.heading += " (one per disc)";
+    } else if (queue.stale_entries > 0) {
+        out.heading += fmt::format(", {} stale", separated(queue.stale_entries));
+    }
+    out.legend =
+        fmt::format("In the box: the next {} collisions queued, time to go", queue.next.size());
+    out.stale_popped = queue.one_per_disc ? "  stale: re-predict" : "  stale: thrown away";
+    out.stale_leaving = "thrown away";
+    out.counts = queue.one_per_disc
+                     ? fmt::format("{} pops, {} stale", separated(queue.pops),
+                                   separated(queue.stale_pops))
+                     : fmt::format("{} of {} pops stale", separated(queue.stale_pops),
+                                   separated(queue.pops));
+    return out;
+}
+
 }  // namespace collide::show

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "../support/skip.hpp"
+#include "collide/show/collision.hpp"
 #include "render_fixtures.hpp"
 
 namespace collide::render {
@@ -159,6 +160,8 @@ FrameContent queue_frame(const Snapshot& left, const Snapshot& right) {
     frame.panels = {{&left, "Time-driven", {}}, {&right, "Event-driven", {}}};
     frame.panels[0].figures = {{"0", "missed", true}};
     frame.panels[1].figures = {{"39", "collisions", false}};
+    // The queue strip's words, as the collision video's program writes them.
+    if (right.queue) frame.panels[1].queue_words = show::queue_words(*right.queue);
     frame.time_text = "t = 2.000";
     frame.speed = 1.0;
     frame.video_time = 2.0;

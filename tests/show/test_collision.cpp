@@ -142,3 +142,31 @@ TEST_CASE("each panel's words: the time-driven one counts pair tests, the event-
     CHECK(energy_line(round_off_drift) == "Energy conserved");
     CHECK(energy_line(1e-6) == "Energy not conserved");
 }
+
+TEST_CASE("the queue strip's words: the fast engine re-predicts, the classic one throws away") {
+    QueueView q;
+    q.name = "binary heap";
+    q.size = 1234;
+    q.stale_entries = 56;
+    q.next.resize(5);
+    q.pops = 40;
+    q.stale_pops = 3;
+    const QueueWords classic = queue_words(q);
+    CHECK(classic.heading == "Event queue: binary heap, 1,234 entries, 56 stale");
+    CHECK(classic.legend == "In the box: the next 5 collisions queued, time to go");
+    CHECK(classic.stale_popped == "  stale: thrown away");
+    CHECK(classic.counts == "3 of 40 pops stale");
+    q.one_per_disc = true;
+    const QueueWords fast = queue_words(q);
+    CHECK(fast.heading == "Event queue: binary heap, 1,234 entries (one per disc)");
+    CHECK(fast.stale_popped == "  stale: re-predict");
+    CHECK(fast.counts == "40 pops, 3 stale");
+}
+
+TEST_CASE("the queue picture's budget is the video's, the number of events the caller's") {
+    const QueueViewLimits limits = queue_picture(7);
+    CHECK(limits.next_events == 7);
+    CHECK(limits.tree_level_nodes == queue_tree_level_nodes);
+    CHECK(limits.tree_levels == queue_tree_levels);
+    CHECK(limits.array_slots == queue_array_slots);
+}

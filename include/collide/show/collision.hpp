@@ -6,6 +6,7 @@
 /// note, the energy line and the clock. Pure functions of their arguments (unit-tested in
 /// tests/show): the same measurements give the same strings, on any thread.
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "collide/render_options.hpp"
 #include "collide/sim/engine.hpp"
 #include "collide/sim/measurements.hpp"
+#include "collide/snapshot.hpp"
 
 namespace collide::show {
 
@@ -96,5 +98,17 @@ struct PanelWords {
 /// `drift`: the relative energy drift now; `walls`: the box has walls.
 [[nodiscard]] PanelWords panel_words(const Measurements& m, bool time_driven, bool walls,
                                      double drift);
+
+/// The queue picture's budget (`--queue K`): what fits legibly in a strip under a 720p video.
+/// A heap's tree down to the deepest level with at most 8 nodes and at most 3 levels, an array
+/// queue's first 10 slots, and the next `next_events` collisions in the box.
+inline constexpr std::size_t queue_tree_level_nodes = 8;
+inline constexpr unsigned queue_tree_levels = 3;
+inline constexpr std::size_t queue_array_slots = 10;
+[[nodiscard]] QueueViewLimits queue_picture(std::size_t next_events) noexcept;
+
+/// The queue strip's words for `queue`: the fast engine (one event per disc) re-predicts a
+/// stale event, the classic engine throws it away.
+[[nodiscard]] QueueWords queue_words(const QueueView& queue);
 
 }  // namespace collide::show
