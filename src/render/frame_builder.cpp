@@ -147,6 +147,16 @@ double contrast_ratio(Rgb8 a, Rgb8 b) noexcept {
     return (std::max(la, lb) + 0.05) / (std::min(la, lb) + 0.05);
 }
 
+namespace {
+/// The panels' accents, in panel order: the colours of their plot series.
+std::vector<Rgb8> accents(const FrameContent& frame) {
+    std::vector<Rgb8> out;
+    out.reserve(frame.panels.size());
+    for (const PanelContent& panel : frame.panels) out.push_back(panel.accent);
+    return out;
+}
+}  // namespace
+
 // ---------------------------------------------------------------------------------------------
 // Markers
 
@@ -722,7 +732,7 @@ void FrameBuilder::add_column(const FrameContent& frame) {
                                plot_colors(config_.theme), axis_colors);
     } else if (frame.energy_plot) {
         draw_drift_plot(list_.over, list_.text[0].glyphs, *body_font_, plot, frame.energy_drift,
-                        plot_colors(config_.theme));
+                        accents(frame), plot_colors(config_.theme));
     }
 }
 
@@ -823,9 +833,12 @@ void FrameBuilder::add_full_strip(const FrameContent& frame) {
     add_legend(info);
     std::vector<const Snapshot*> snapshots;
     for (const PanelContent& panel : frame.panels) snapshots.push_back(panel.snapshot);
-    draw_speed_plot(list_.over, text, font, histogram, snapshots, config_.speed_min,
-                    config_.speed_max, plot_colors(config_.theme));
-    draw_drift_plot(list_.over, text, font, drift, frame.energy_drift, plot_colors(config_.theme));
+    // Each panel's series in its engine's accent, whichever panels the frame has.
+    const std::vector<Rgb8> series_colors = accents(frame);
+    draw_speed_plot(list_.over, text, font, histogram, snapshots, series_colors,
+                    config_.speed_min, config_.speed_max, plot_colors(config_.theme));
+    draw_drift_plot(list_.over, text, font, drift, frame.energy_drift, series_colors,
+                    plot_colors(config_.theme));
     const float notes_baseline = strip.y1 - m * 0.5F - line + font.ascent();
     font.add_text(text, columns.x0, notes_baseline, join(frame.notes, "   \xC2\xB7   "),
                   counter_color());
