@@ -13,6 +13,7 @@
 #include "font.hpp"
 #include "layout.hpp"
 #include "plots.hpp"
+#include "theme.hpp"
 #include "trails.hpp"
 
 namespace collide::render {
@@ -21,22 +22,6 @@ namespace collide::render {
 inline constexpr double marker_seconds = 1.0;
 /// At most this many failure markers per panel; the rest are counted ("+N more").
 inline constexpr std::size_t max_markers = 30;
-
-/// Theme colours.
-struct Palette {
-    Rgba8 background;
-    Rgba8 box_fill;
-    Rgba8 wall;
-    Rgba8 periodic_edge;
-    Rgba8 title;
-    Rgba8 text;
-    Rgba8 muted;
-    Rgba8 failure;  ///< reserved for failures: no disc is ever drawn in it
-    Rgba8 outline;  ///< around discs with too little contrast against the box
-};
-[[nodiscard]] Palette palette(Theme theme) noexcept;
-/// A plot's text, axis, curve and zero-line colours in a theme (every level's plots use them).
-[[nodiscard]] PlotColors plot_colors(Theme theme) noexcept;
 
 /// How long an event popped off a panel's queue stays highlighted, in seconds of video.
 inline constexpr double queue_pop_seconds = 0.8;

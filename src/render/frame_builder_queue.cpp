@@ -16,15 +16,6 @@ namespace collide::render {
 
 namespace {
 
-Rgba8 faded(Rgba8 c, float opacity) {
-    c.a = static_cast<std::uint8_t>(std::lround(std::clamp(opacity, 0.0F, 1.0F) * c.a));
-    return c;
-}
-
-Rgb8 rgb(Rgba8 c) {
-    return {c.r, c.g, c.b};
-}
-
 /// The next event: amber, far from the failure magenta; darker on the light theme, where the
 /// bright one has too little contrast against white.
 constexpr Rgb8 next_event_dark{255, 196, 40};
