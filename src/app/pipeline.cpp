@@ -133,13 +133,9 @@ void check_captions_fit(const Scene& scene, const RenderPlan& plan) {
                         "fit (a wider --size, or a shorter caption)",
                         plan.width, plan.height, fit.max_characters));
     };
-    if (!plan.lesson.caption.empty()) {
-        // caption_at is "file:line: render.caption" (empty for a caption not read from a file).
-        const std::string& at = scene.render.caption_at;
-        check(plan.lesson.caption, "", 0, at.empty() ? "render.caption" : at);
-    }
-    for (const CaptionCue& cue : plan.lesson.captions) {
-        check(cue.text, cue.file, cue.line, "render.captions.text");
+    for (const show::CaptionSource& caption :
+         show::captions_shown(plan.lesson, scene.render.caption_at)) {
+        check(caption.text, caption.file, caption.line, caption.field);
     }
 }
 

@@ -555,19 +555,5 @@ std::size_t moving_disc_count(const Scene& scene) {
                       [&](const Disc& d) { return std::isfinite(d.mass) && d.mass < heavy; }));
 }
 
-const std::string& LessonPlan::caption_at(double video_seconds) const noexcept {
-    const std::string* current = &caption;
-    for (const CaptionCue& cue : captions) {
-        if (cue.at > video_seconds) break;
-        current = &cue.text;
-    }
-    return *current;
-}
-
-float LessonPlan::intro_opacity(double video_seconds) const noexcept {
-    if (!(intro_seconds > 0.0) || video_seconds >= intro_seconds) return 0.0F;
-    const double fade = std::min(0.5, 0.5 * intro_seconds);
-    return static_cast<float>(std::clamp((intro_seconds - video_seconds) / fade, 0.0, 1.0));
-}
 
 }  // namespace collide::app

@@ -156,24 +156,10 @@ enum class OutputKind {
     still,  ///< one PNG (thumbnail, --last-frame)
 };
 
-/// The scene's story and the lesson level's choices, resolved once for the whole video.
-struct LessonPlan {
-    std::string title;                 ///< the intro card's title
-    std::string description;           ///< the intro card's text
-    double intro_seconds = 0.0;        ///< how long the card shows (0: none; videos only)
-    std::string caption;               ///< [render] caption, shown when no scripted caption applies
-    std::vector<CaptionCue> captions;  ///< [[render.captions]] within the video
-    render::PlotSize histogram = render::PlotSize::none;
-    int frames_per_step = 1;  ///< time-driven: frames per dt when dt is longer than a frame
+/// The lesson's timeline: intro card, captions, step indicator (collide/show/collision.hpp).
+using show::LessonPlan;
+using show::intro_seconds;
 
-    /// The caption at `video_seconds`: the last cue at or before it, else `caption`.
-    [[nodiscard]] const std::string& caption_at(double video_seconds) const noexcept;
-    /// Opacity of the intro card at `video_seconds` (1, fading to 0 over its last half second).
-    [[nodiscard]] float intro_opacity(double video_seconds) const noexcept;
-};
-
-/// Seconds of the intro card: about 2 s, at most a quarter of a short video.
-inline constexpr double intro_seconds = 2.0;
 /// The default time-driven dt is the simulation time of one 1/30 s video frame at the video's
 /// speed (the -q m frame interval), whatever -q or --fps say: presets never change the physics.
 inline constexpr double reference_fps = 30.0;

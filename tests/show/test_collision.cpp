@@ -170,3 +170,24 @@ TEST_CASE("the queue picture's budget is the video's, the number of events the c
     CHECK(limits.tree_levels == queue_tree_levels);
     CHECK(limits.array_slots == queue_array_slots);
 }
+
+TEST_CASE("the captions to fit: the scene's caption and every cue, each named where written") {
+    LessonPlan lesson;
+    CHECK(captions_shown(lesson, "").empty());
+    lesson.caption = "Always";
+    lesson.captions = {{2.0, "From two", "s.toml", 7}};
+    const std::vector<CaptionSource> shown = captions_shown(lesson, "s.toml:3: render.caption");
+    REQUIRE(shown.size() == 2);
+    CHECK(shown[0].text == "Always");
+    CHECK(shown[0].field == "s.toml:3: render.caption");
+    CHECK(shown[1].file == "s.toml");
+    CHECK(shown[1].line == 7);
+    CHECK(shown[1].field == "render.captions.text");
+    CHECK(captions_shown(lesson, "")[0].field == "render.caption");
+    // The timeline: the caption until the first cue, the intro card fading out at its end.
+    CHECK(lesson.caption_at(1.0) == "Always");
+    CHECK(lesson.caption_at(2.0) == "From two");
+    lesson.intro_seconds = intro_seconds;
+    CHECK(lesson.intro_opacity(0.0) == 1.0F);
+    CHECK(lesson.intro_opacity(intro_seconds) == 0.0F);
+}

@@ -13,6 +13,7 @@
 
 #include "collide/collision_view.hpp"
 #include "collide/render_options.hpp"
+#include "collide/scene.hpp"
 #include "collide/sim/engine.hpp"
 #include "collide/sim/measurements.hpp"
 #include "collide/snapshot.hpp"
@@ -98,6 +99,37 @@ struct PanelWords {
 /// `drift`: the relative energy drift now; `walls`: the box has walls.
 [[nodiscard]] PanelWords panel_words(const Measurements& m, bool time_driven, bool walls,
                                      double drift);
+
+/// The scene's story and the lesson level's choices, resolved once for the whole video.
+struct LessonPlan {
+    std::string title;                 ///< the intro card's title
+    std::string description;           ///< the intro card's text
+    double intro_seconds = 0.0;        ///< how long the card shows (0: none; videos only)
+    std::string caption;               ///< [render] caption, shown when no scripted caption applies
+    std::vector<CaptionCue> captions;  ///< [[render.captions]] within the video
+    PlotSize histogram = PlotSize::none;
+    int frames_per_step = 1;  ///< time-driven: frames per dt when dt is longer than a frame
+
+    /// The caption at `video_seconds`: the last cue at or before it, else `caption`.
+    [[nodiscard]] const std::string& caption_at(double video_seconds) const noexcept;
+    /// Opacity of the intro card at `video_seconds` (1, fading to 0 over its last half second).
+    [[nodiscard]] float intro_opacity(double video_seconds) const noexcept;
+};
+
+/// Seconds of the intro card: about 2 s, at most a quarter of a short video.
+inline constexpr double intro_seconds = 2.0;
+
+/// The captions a video shows, each with where it was written (for an error naming it): the
+/// caption line a whole frame wide must hold every one of them.
+struct CaptionSource {
+    std::string text;
+    std::string file;   ///< "" when not read from a file
+    int line = 0;
+    std::string field;  ///< "render.caption", "render.captions.text" or the caption's file:line
+};
+/// `scene_caption_at`: the scene's RenderHints::caption_at ("file:line: render.caption"), if any.
+[[nodiscard]] std::vector<CaptionSource> captions_shown(const LessonPlan& lesson,
+                                                        const std::string& scene_caption_at);
 
 /// The queue picture's budget (`--queue K`): what fits legibly in a strip under a 720p video.
 /// A heap's tree down to the deepest level with at most 8 nodes and at most 3 levels, an array
