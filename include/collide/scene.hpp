@@ -9,6 +9,7 @@
 
 #include "collide/box.hpp"
 #include "collide/disc.hpp"
+#include "collide/render_options.hpp"
 
 namespace collide {
 
@@ -25,14 +26,15 @@ inline constexpr std::size_t max_caption_chars = 64;
 
 /// Rendering defaults a scene may carry in `[render]`; the CLI overrides every one of them.
 struct RenderHints {
-    std::optional<std::string> color_mode;  ///< "scene", "speed", "mass" (or "tag")
-    std::optional<bool> trails;             ///< draw trails for tagged discs
+    std::optional<ColorMode> color_mode;  ///< "scene", "speed", "mass" (or "tag")
+    std::optional<bool> trails;           ///< draw trails for tagged discs
     /// "none", "lesson" or "full" (true in a file means lesson, false none)
-    std::optional<std::string> overlays;
-    std::optional<std::string> theme;      ///< "dark" or "light"
-    std::optional<std::string> caption;    ///< the caption line for the whole video
-    std::vector<CaptionCue> captions;      ///< scripted captions, `at` increasing
-    std::optional<std::string> histogram;  ///< "auto", "none", "small" or "large"
+    std::optional<OverlayLevel> overlays;
+    std::optional<Theme> theme;          ///< "dark" or "light"
+    std::optional<std::string> caption;  ///< the caption line for the whole video
+    std::vector<CaptionCue> captions;    ///< scripted captions, `at` increasing
+    /// "none", "small" or "large"; unset (or "auto" in a file): where it teaches
+    std::optional<PlotSize> histogram;
     std::optional<double> duration;        ///< seconds of video
     std::optional<double> speed;           ///< simulation time units per second of video
     std::optional<double> dt;              ///< time-driven quantum

@@ -5,6 +5,7 @@
 /// --queue`) a view of the event-driven engine's queue. The renderer sees nothing else of the
 /// engines.
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -80,6 +81,18 @@ struct QueueView {
     std::vector<QueuedEvent> popped;
     std::uint64_t pops = 0;        ///< events popped so far
     std::uint64_t stale_pops = 0;  ///< of which stale
+};
+
+/// How much of a queue a view carries: the caller's picture budget (a video's is in
+/// collide/show/collision.hpp, show::queue_picture; the engines fill the view,
+/// Engine::watch_queue). The view holds the next `next_events` collisions; a heap's slots down
+/// to the deepest level with at most `tree_level_nodes` nodes and at most `tree_levels` levels;
+/// an array queue's first `array_slots` slots.
+struct QueueViewLimits {
+    std::size_t next_events = 0;       ///< 1..sim::max_watched_events
+    std::size_t tree_level_nodes = 0;  ///< >= 1
+    unsigned tree_levels = 0;          ///< >= 1
+    std::size_t array_slots = 0;
 };
 
 struct Snapshot {

@@ -232,13 +232,13 @@ std::string engine_costs(const RenderPlan& plan, const PipelineResult& result) {
     if (plan.mode != RenderMode::event && i < result.engines.size()) {
         const Measurements& m = result.engines[i++];
         out += fmt::format("time-driven {:.2f} s ({} overlap checks)", m.wall_seconds,
-                           short_count(static_cast<double>(m.overlap_checks)));
+                           show::short_count(static_cast<double>(m.overlap_checks)));
     }
     if (plan.mode != RenderMode::time && i < result.engines.size()) {
         const Measurements& m = result.engines[i];
         if (!out.empty()) out += ", ";
         out += fmt::format("event-driven {:.2f} s ({} collisions)", m.wall_seconds,
-                           short_count(static_cast<double>(m.collisions_pair + m.collisions_wall)));
+                           show::short_count(static_cast<double>(m.collisions_pair + m.collisions_wall)));
     }
     return out;
 }

@@ -89,13 +89,9 @@ void check_captions_fit(const Scene& scene, const RenderPlan& plan) {
                         "fit (a wider --size, or a shorter caption)",
                         plan.width, plan.height, fit.max_characters));
     };
-    if (!plan.lesson.caption.empty()) {
-        // caption_at is "file:line: render.caption" (empty for a caption not read from a file).
-        const std::string& at = scene.render.caption_at;
-        check(plan.lesson.caption, "", 0, at.empty() ? "render.caption" : at);
-    }
-    for (const CaptionCue& cue : plan.lesson.captions) {
-        check(cue.text, cue.file, cue.line, "render.captions.text");
+    for (const show::CaptionSource& caption :
+         show::captions_shown(plan.lesson, scene.render.caption_at)) {
+        check(caption.text, caption.file, caption.line, caption.field);
     }
 }
 
@@ -104,69 +100,9 @@ void check_captions_fit(const Scene& scene, const RenderPlan& plan) {
 // ------------------------------------------------------------------------------------------------
 // Simulation side
 
-std::vector<std::string> time_driven_counters(const Measurements& m, double energy_drift) {
-    // Short "label  value" pairs: the renderer lays them out in a grid of narrow columns.
-    return {
-        fmt::format("steps  {}", short_count(static_cast<double>(m.steps))),
-        fmt::format("checks  {}", short_count(static_cast<double>(m.overlap_checks))),
-        fmt::format("collisions  {}",
-                    short_count(static_cast<double>(m.collisions_pair + m.collisions_wall))),
-        fmt::format("overlaps now  {}", m.overlapping_pairs),
-        fmt::format("deepest  {:.2g}", m.max_overlap),
-        fmt::format("missed  {}", m.missed_collisions),
-        fmt::format("escaped  {}", m.escaped),
-        fmt::format("energy drift  {:+.1e}", energy_drift),
-        fmt::format("checks/time  {}",
-                    m.t > 0.0 ? short_count(static_cast<double>(m.overlap_checks) / m.t) : "-"),
-    };
-}
-
-std::vector<std::string> event_driven_counters(const Measurements& m, double energy_drift) {
-    const std::uint64_t queue_ops = m.queue.pushes + m.queue.pops;
-    const double stale_share = m.queue.pops > 0 ? 100.0 * static_cast<double>(m.queue.stale_pops) /
-                                                      static_cast<double>(m.queue.pops)
-                                                : 0.0;
-    const double work = static_cast<double>(m.predictions + queue_ops);
-    return {
-        fmt::format("events  {}", short_count(static_cast<double>(m.events))),
-        fmt::format("collisions  {}",
-                    short_count(static_cast<double>(m.collisions_pair + m.collisions_wall))),
-        fmt::format("predictions  {}", short_count(static_cast<double>(m.predictions))),
-        fmt::format("queue ops  {}", short_count(static_cast<double>(queue_ops))),
-        fmt::format("queue max  {}", m.queue.max_size),
-        fmt::format("stale pops  {:.0f}%", stale_share),
-        fmt::format("overlaps now  {}", m.max_overlap > 0.0 ? "yes" : "0"),
-        fmt::format("energy drift  {:+.1e}", energy_drift),
-        fmt::format("ops/time  {}", m.t > 0.0 ? short_count(work / m.t) : "-"),
-    };
-}
-
 std::vector<std::string> comparison_notes(RenderMode /*mode*/) {
     // The chaos remark belongs to the scenes that need it (their own captions), not every video.
     return {};
-}
-
-namespace {
-std::string count_text(std::uint64_t n) {
-    return render::with_separators(static_cast<long long>(n));
-}
-}  // namespace
-
-std::vector<render::Figure> time_driven_figures(const Measurements& m, bool walls) {
-    std::vector<render::Figure> out = {
-        {count_text(m.missed_collisions), "missed", true},
-        {count_text(m.overlapping_pairs), "overlapping", true},
-    };
-    if (walls && m.escaped > 0) out.push_back({count_text(m.escaped), "left the box", true});
-    out.push_back({count_text(m.collisions_pair + m.collisions_wall), "collisions", false});
-    return out;
-}
-
-std::vector<render::Figure> event_driven_figures(const Measurements& m) {
-    return {
-        {count_text(m.collisions_pair + m.collisions_wall), "collisions", false},
-        {"0", "missed", true},
-    };
 }
 
 FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan, const std::atomic<bool>* stop)
@@ -175,7 +111,7 @@ FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan, const std::
         Panel panel;
         panel.engine = make_engine(scene, options);
         panel.engine->set_stop_flag(stop);
-        if (!time_driven && plan.queue_events > 0 && !panel.engine->watch_queue(plan.queue_events))
+        if (!time_driven && plan.queue_events > 0 && !panel.engine->watch_queue(show::queue_picture(plan.queue_events)))
             throw_option_error("--queue", "the " + std::string(to_string(options.engine)) +
                                               " engine has no event queue");
         panel.time_driven = time_driven;
@@ -183,14 +119,11 @@ FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan, const std::
         panel.initial_energy = panel.engine->measurements().kinetic_energy;
         panels_.push_back(std::move(panel));
     };
-    const bool lesson = plan.render.overlays == render::OverlayLevel::lesson;
+    const OverlayLevel level = plan.render.overlays;
     if (plan.mode != RenderMode::event)
-        add(plan.time_engine, true,
-            lesson ? time_lesson_title(plan.time_engine.dt)
-                   : time_panel_title(plan.time_engine.dt));
+        add(plan.time_engine, true, show::panel_title(true, level, plan.time_engine));
     if (plan.mode != RenderMode::time)
-        add(plan.event_engine, false,
-            lesson ? event_lesson_title(plan.event_engine) : event_panel_title(plan.event_engine));
+        add(plan.event_engine, false, show::panel_title(false, level, plan.event_engine));
 }
 
 SimFrame FrameSource::frame(std::int64_t k) {
@@ -213,22 +146,11 @@ PanelFrame FrameSource::describe(const Panel& panel) const {
     const Measurements m = panel.engine->measurements();
     const double drift = relative_drift(m.kinetic_energy, panel.initial_energy);
     out.title = panel.title;
-    out.counters =
-        panel.time_driven ? time_driven_counters(m, drift) : event_driven_counters(m, drift);
     out.drift = {out.snapshot.time, drift};
     out.time_driven = panel.time_driven;
-    if (panel.time_driven) {
-        out.figures = time_driven_figures(m, out.snapshot.box.boundary == Boundary::walls);
-        out.compact_line = fmt::format("{} missed", count_text(m.missed_collisions));
-        out.cost_label = "pair tests";
-        out.cost = static_cast<double>(m.overlap_checks);
-    } else {
-        out.figures = event_driven_figures(m);
-        out.compact_line =
-            fmt::format("{} collisions", count_text(m.collisions_pair + m.collisions_wall));
-        out.cost_label = "queue steps";
-        out.cost = static_cast<double>(m.queue.pushes + m.queue.pops);
-    }
+    out.words = show::panel_words(m, panel.time_driven,
+                                  out.snapshot.box.boundary == Boundary::walls, drift);
+    if (out.snapshot.queue) out.queue_words = show::queue_words(*out.snapshot.queue);
     return out;
 }
 
@@ -255,11 +177,12 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
         render::PanelContent& out = content_.panels[i];
         out.snapshot = &panel.snapshot;
         out.title = panel.title;
-        out.counters = panel.counters;
-        out.figures = panel.figures;
-        out.compact_line = panel.compact_line;
-        out.cost_label = panel.cost_label;
-        out.cost = panel.cost;
+        out.counters = panel.words.counters;
+        out.figures = panel.words.figures;
+        out.compact_line = panel.words.compact_line;
+        out.cost_label = panel.words.cost_label;
+        out.cost = panel.words.cost;
+        out.queue_words = panel.queue_words;
         out.accent = render::panel_accent(panel.time_driven);
         out.note.clear();
         out.step_period = 1;
@@ -272,7 +195,7 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
             } else {
                 ++step_phase_;
             }
-            out.note = step_note(plan_.time_engine.dt, plan_.clock.interval);
+            out.note = show::step_note(plan_.time_engine.dt, plan_.clock.interval);
             out.step_period = lesson.frames_per_step;
             out.step_phase = std::min(step_phase_, lesson.frames_per_step - 1);
         }
@@ -280,18 +203,14 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
         if (std::isfinite(panel.drift.drift))
             largest_drift_ = std::max(largest_drift_, std::abs(panel.drift.drift));
     }
-    content_.time_text = clock_label(frame.time, plan_.clock, plan_.speed.speed);
-    if (plan_.render.overlays == render::OverlayLevel::lesson) {
-        // Just the time: the column is narrow and the playback rate is no lesson.
-        content_.time_text = content_.time_text.substr(0, content_.time_text.find("   ("));
-    }
+    content_.time_text =
+        show::clock_text(frame.time, plan_.clock, plan_.speed.speed, plan_.render.overlays);
     content_.video_time = video_time;
     content_.speed = plan_.speed.speed;
     content_.caption = lesson.caption_at(video_time);
     content_.histogram = lesson.histogram;
-    const bool conserved = largest_drift_ <= round_off_drift;
-    content_.energy_line = conserved ? "Energy conserved" : "Energy not conserved";
-    content_.energy_plot = !conserved;
+    content_.energy_line = show::energy_line(largest_drift_);
+    content_.energy_plot = largest_drift_ > show::round_off_drift;
     content_.intro_title = lesson.title;
     content_.intro_text = lesson.description;
     content_.intro_opacity = lesson.intro_opacity(video_time);

@@ -21,6 +21,7 @@
 #include "collide/io/file.hpp"
 #include "collide/render/renderer.hpp"
 #include "collide/scene.hpp"
+#include "collide/show/collision.hpp"
 #include "collide/sim/engine.hpp"
 #include "collide/snapshot.hpp"
 #include "interrupt.hpp"
@@ -34,13 +35,10 @@ namespace collide::app {
 struct PanelFrame {
     Snapshot snapshot;
     std::string title;
-    std::vector<std::string> counters;  ///< full level
-    render::DriftPoint drift;           ///< (KE - KE0) / KE0 at this frame
+    render::DriftPoint drift;  ///< (KE - KE0) / KE0 at this frame
     bool time_driven = false;
-    std::vector<render::Figure> figures;  ///< lesson level
-    std::string compact_line;
-    std::string cost_label;
-    double cost = 0.0;
+    show::PanelWords words;  ///< counters, figures, compact line, cost (collide/show)
+    QueueWords queue_words;  ///< the queue strip's (snapshot.queue set)
 };
 
 /// What the simulation thread hands to the render thread for one frame.
@@ -77,20 +75,8 @@ class FrameSource {
     std::vector<Panel> panels_;
 };
 
-/// The on-screen counter lines of one engine (pure: unit-tested).
-[[nodiscard]] std::vector<std::string> time_driven_counters(const Measurements& m,
-                                                            double energy_drift);
-[[nodiscard]] std::vector<std::string> event_driven_counters(const Measurements& m,
-                                                             double energy_drift);
 /// The notice lines under a side-by-side frame: why the pictures differ, what to compare.
 [[nodiscard]] std::vector<std::string> comparison_notes(RenderMode mode);
-
-/// The lesson level's figures in plain words (pure: unit-tested). `walls`: the box has walls
-/// (discs can leave it).
-[[nodiscard]] std::vector<render::Figure> time_driven_figures(const Measurements& m, bool walls);
-[[nodiscard]] std::vector<render::Figure> event_driven_figures(const Measurements& m);
-/// Below this relative drift the energy is conserved up to round-off.
-inline constexpr double round_off_drift = 1e-9;
 
 /// Turns SimFrames into the renderer's FrameContent (render thread), keeping each panel's energy
 /// drift series across frames. The content points into the SimFrame, which must outlive its use.

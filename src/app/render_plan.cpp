@@ -21,10 +21,11 @@ constexpr double max_duration = 3600.0;  // an hour of video is far beyond any l
 /// Colour and histogram range in units of the RMS speed: a 2D Maxwell-Boltzmann gas has
 /// P(v > 2.5 v_rms) = exp(-6.25) ~ 0.2 %, so almost every disc gets a distinct colour.
 constexpr double speed_range_in_rms = 2.5;
-/// Relative tolerance for "dt divides the frame interval" and for snapping a still's time onto
-/// a frame time: far above rounding (1e-16) and far below anything a viewer could see.
-constexpr double divide_tolerance = 1e-6;
+/// Relative tolerance for snapping a still's time onto a frame time: far above rounding (1e-16)
+/// and far below anything a viewer could see ("dt divides the frame interval":
+/// show::divide_tolerance).
 constexpr double snap_tolerance = 1e-9;
+using show::divide_tolerance;
 /// Frames are counted in int64 and their times computed as k * interval: beyond 2^53 neither the
 /// index nor the double k is exact (and an unchecked conversion overflows).
 constexpr double max_countable_frames = 9007199254740992.0;  // 2^53
@@ -141,8 +142,7 @@ render::RenderConfig render_config(const RenderRequest& request, const Scene& sc
     if (request.color) {
         config.color_mode = render::parse_color_mode(*request.color, "--color");
     } else if (scene.render.color_mode) {
-        config.color_mode =
-            render::parse_color_mode(*scene.render.color_mode, "scene [render] color_mode");
+        config.color_mode = *scene.render.color_mode;
     }
     // Fixed ranges for the whole video, so colours and histogram bins mean the same in every frame.
     const double top = std::max(max_speed(scene), speed_range_in_rms * rms_speed(scene));
@@ -159,13 +159,12 @@ render::RenderConfig render_config(const RenderRequest& request, const Scene& sc
     if (request.overlays) {
         config.overlays = render::parse_overlay_level(*request.overlays, "--overlays");
     } else if (scene.render.overlays) {
-        config.overlays =
-            render::parse_overlay_level(*scene.render.overlays, "scene [render] overlays");
+        config.overlays = *scene.render.overlays;
     }
     if (request.theme) {
         config.theme = render::parse_theme(*request.theme, "--theme");
     } else if (scene.render.theme) {
-        config.theme = render::parse_theme(*scene.render.theme, "scene [render] theme");
+        config.theme = *scene.render.theme;
     }
     config.validate();
     return config;
@@ -194,13 +193,9 @@ render::PlotSize histogram_size(const Scene& scene) {
     constexpr std::size_t enough_for_a_distribution = 200;
     // "auto": only where it teaches, i.e. where there are enough moving discs; a scene may ask
     // for one anyway ("small"), or make it the subject ("large", e.g. maxwell-boltzmann).
-    const std::string kind = scene.render.histogram.value_or("auto");
-    if (kind == "large") return render::PlotSize::large;
-    if (kind == "small") return render::PlotSize::small;
-    if (kind == "auto" && moving_disc_count(scene) >= enough_for_a_distribution) {
-        return render::PlotSize::small;
-    }
-    return render::PlotSize::none;
+    if (scene.render.histogram) return *scene.render.histogram;
+    if (moving_disc_count(scene) >= enough_for_a_distribution) return PlotSize::small;
+    return PlotSize::none;
 }
 
 /// Captions beyond the video: an error when the video is as long as the scene says (the scene
@@ -442,21 +437,6 @@ FrameClock still_clock(double at, double speed, int fps, std::string_view option
     return clock;
 }
 
-double last_step_time(double t, double dt) noexcept {
-    if (!positive_finite(dt) || !(t > 0.0)) return t > 0.0 ? t : 0.0;
-    const double steps = std::floor(t / dt * (1.0 + divide_tolerance));
-    const double step_time = steps * dt;
-    // A frame time that is a whole number of steps (within rounding) is returned exactly.
-    if (std::abs(step_time - t) <= divide_tolerance * dt) return t;
-    return std::min(step_time, t);
-}
-
-bool divides(double dt, double interval) noexcept {
-    if (!positive_finite(dt) || !positive_finite(interval)) return false;
-    const double steps = interval / dt;
-    return std::abs(steps - std::round(steps)) <= divide_tolerance * std::max(1.0, steps);
-}
-
 RenderPlan plan_render(const RenderRequest& request, const Scene& scene) {
     RenderPlan plan;
     plan.mode = parse_render_mode(request.mode);
@@ -515,73 +495,5 @@ std::size_t moving_disc_count(const Scene& scene) {
                       [&](const Disc& d) { return std::isfinite(d.mass) && d.mass < heavy; }));
 }
 
-const std::string& LessonPlan::caption_at(double video_seconds) const noexcept {
-    const std::string* current = &caption;
-    for (const CaptionCue& cue : captions) {
-        if (cue.at > video_seconds) break;
-        current = &cue.text;
-    }
-    return *current;
-}
-
-float LessonPlan::intro_opacity(double video_seconds) const noexcept {
-    if (!(intro_seconds > 0.0) || video_seconds >= intro_seconds) return 0.0F;
-    const double fade = std::min(0.5, 0.5 * intro_seconds);
-    return static_cast<float>(std::clamp((intro_seconds - video_seconds) / fade, 0.0, 1.0));
-}
-
-std::string time_lesson_title(double dt) {
-    return fmt::format("Time-driven: steps of dt = {:.3g}", dt);
-}
-
-std::string event_lesson_title(const EngineOptions& options) {
-    if (options.engine == EngineKind::classic)
-        return fmt::format("Event-driven: queue ({})", pq::to_string(options.pq));
-    return "Event-driven: priority queue";
-}
-
-std::string step_note(double dt, double frame_interval) {
-    if (!(dt > frame_interval * (1.0 + 1e-6))) return {};
-    const double frames = dt / frame_interval;
-    if (divides(frame_interval, dt)) {
-        const long n = std::lround(frames);
-        const char* suffix = n % 10 == 2 && n % 100 != 12   ? "nd"
-                             : n % 10 == 3 && n % 100 != 13 ? "rd"
-                                                            : "th";
-        return fmt::format("Moves only every {}{} frame", n, suffix);
-    }
-    return fmt::format("Moves only every {:.2g} frames", frames);
-}
-
-std::string time_panel_title(double dt) {
-    return fmt::format("Time-driven, dt = {:.3g}", dt);
-}
-
-std::string event_panel_title(const EngineOptions& options) {
-    if (options.engine == EngineKind::classic)
-        return fmt::format("Event-driven (priority queue: {})", pq::to_string(options.pq));
-    return "Event-driven (priority queue)";
-}
-
-std::string short_count(double value) {
-    const double magnitude = std::abs(value);
-    if (magnitude >= 1e12 || (magnitude > 0.0 && magnitude < 1.0))
-        return fmt::format("{:.3g}", value);
-    if (magnitude >= 1e9) return fmt::format("{:.2f}G", value / 1e9);
-    if (magnitude >= 1e6) return fmt::format("{:.2f}M", value / 1e6);
-    if (magnitude >= 1e4) return fmt::format("{:.1f}k", value / 1e3);
-    return fmt::format("{:.0f}", value);
-}
-
-std::string clock_label(double t, const FrameClock& clock, double speed) {
-    if (clock.interval >= 1e-3 && clock.last_time < 1e6)
-        return fmt::format("t = {:.3f}   ({:.3g}/s)", t, speed);
-    // Enough significant digits for consecutive frames to differ: one per decade from the frame
-    // interval up to the last frame's time, and two more.
-    const double decades =
-        clock.last_time > clock.interval ? std::log10(clock.last_time / clock.interval) : 0.0;
-    const int digits = std::clamp(static_cast<int>(std::ceil(decades)) + 2, 4, 15);
-    return fmt::format("t = {:.{}g}   ({:.3g}/s)", t, digits, speed);
-}
 
 }  // namespace collide::app

@@ -14,6 +14,7 @@
 
 #include "collide/render/renderer.hpp"
 #include "collide/scene.hpp"
+#include "collide/show/collision.hpp"
 #include "collide/sim/engine.hpp"
 #include "collide/video/video_writer.hpp"
 
@@ -95,17 +96,10 @@ struct SpeedChoice {
 /// a scene where nothing moves falls back to 1 with a notice. O(N).
 [[nodiscard]] SpeedChoice choose_speed(const Scene& scene, std::optional<double> cli);
 
-/// When each frame is taken, in simulation time. Frame k is at exactly k * interval, except the
-/// last one, which is at `last_time` (a thumbnail at a time between two frame times).
-struct FrameClock {
-    double interval = 1.0 / 30.0;  ///< simulation time between frames = speed / fps
-    std::int64_t count = 1;        ///< frames, >= 1
-    double last_time = 0.0;        ///< time of frame count - 1
-
-    [[nodiscard]] double time(std::int64_t k) const noexcept {
-        return k + 1 == count ? last_time : static_cast<double>(k) * interval;
-    }
-};
+/// The frame clock and the time-driven steps between frames (collide/show/collision.hpp).
+using show::FrameClock;
+using show::divides;
+using show::last_step_time;
 
 /// A video of `duration` seconds at `fps`: round(duration * fps) frames (at least 1), frame k at
 /// k * speed / fps. Throws Error(input) if duration, speed or fps is not positive and finite.
@@ -117,16 +111,6 @@ struct FrameClock {
 /// last frame time equals that frame. Throws Error(input) naming `option` for a negative `at`.
 [[nodiscard]] FrameClock still_clock(double at, double speed, int fps,
                                      std::string_view option = "--at");
-
-/// The time of the time-driven engine's last whole step at or before frame time t: the naive
-/// method only has states at multiples of dt, so a frame shows its latest step rather than
-/// shortening steps to land on frame times (which would hide the tunnelling a large dt causes).
-/// Returns t itself when t is a whole number of steps (relative tolerance 1e-6).
-[[nodiscard]] double last_step_time(double t, double dt) noexcept;
-
-/// True when `dt` divides `interval` into a whole number of steps (relative tolerance 1e-6),
-/// i.e. the time-driven engine lands on every frame time without a shorter final step.
-[[nodiscard]] bool divides(double dt, double interval) noexcept;
 
 /// How messages name a scene hint: its "file:line: render.dt" when known (`where`, from
 /// RenderHints), else "scene [render] dt".
@@ -171,24 +155,10 @@ enum class OutputKind {
     still,  ///< one PNG (thumbnail, --last-frame)
 };
 
-/// The scene's story and the lesson level's choices, resolved once for the whole video.
-struct LessonPlan {
-    std::string title;                 ///< the intro card's title
-    std::string description;           ///< the intro card's text
-    double intro_seconds = 0.0;        ///< how long the card shows (0: none; videos only)
-    std::string caption;               ///< [render] caption, shown when no scripted caption applies
-    std::vector<CaptionCue> captions;  ///< [[render.captions]] within the video
-    render::PlotSize histogram = render::PlotSize::none;
-    int frames_per_step = 1;  ///< time-driven: frames per dt when dt is longer than a frame
+/// The lesson's timeline: intro card, captions, step indicator (collide/show/collision.hpp).
+using show::LessonPlan;
+using show::intro_seconds;
 
-    /// The caption at `video_seconds`: the last cue at or before it, else `caption`.
-    [[nodiscard]] const std::string& caption_at(double video_seconds) const noexcept;
-    /// Opacity of the intro card at `video_seconds` (1, fading to 0 over its last half second).
-    [[nodiscard]] float intro_opacity(double video_seconds) const noexcept;
-};
-
-/// Seconds of the intro card: about 2 s, at most a quarter of a short video.
-inline constexpr double intro_seconds = 2.0;
 /// The default time-driven dt is the simulation time of one 1/30 s video frame at the video's
 /// speed (the -q m frame interval), whatever -q or --fps say: presets never change the physics.
 inline constexpr double reference_fps = 30.0;
@@ -233,24 +203,5 @@ inline constexpr const char* default_output_dir = "out";
 /// Resolves `request` against `scene` (already loaded and validated). Throws Error(input) naming
 /// the first bad option. Touches no file: the caller checks that `output` is writable.
 [[nodiscard]] RenderPlan plan_render(const RenderRequest& request, const Scene& scene);
-
-/// Panel titles, fixed text shared by the renderer call and the tests (full level).
-[[nodiscard]] std::string time_panel_title(double dt);
-[[nodiscard]] std::string event_panel_title(const EngineOptions& options);
-/// Lesson-level titles, in plain words.
-[[nodiscard]] std::string time_lesson_title(double dt);
-[[nodiscard]] std::string event_lesson_title(const EngineOptions& options);
-/// The note under the time-driven figures when dt is longer than a frame (empty otherwise).
-[[nodiscard]] std::string step_note(double dt, double frame_interval);
-
-/// "1.23k", "4.56M": short counts for on-screen counters; beyond 10^12, and for fractions below
-/// one, three significant digits ("2.39e+17", "0.00042"), so that no count outgrows its column.
-[[nodiscard]] std::string short_count(double value);
-
-/// The on-screen clock "t = 12.345   (1/s)": three decimals while they tell one frame from the
-/// next and stay short (frame interval >= 1e-3, last frame before 1e6), else as many significant
-/// digits as tell frames apart ("t = 4.9667e-11"): scenes in SI units span picoseconds, and
-/// scenes in astronomical units 1e45 time units.
-[[nodiscard]] std::string clock_label(double t, const FrameClock& clock, double speed);
 
 }  // namespace collide::app

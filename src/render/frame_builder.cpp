@@ -31,50 +31,7 @@ std::string join(const std::vector<std::string>& parts, const char* separator) {
     return out;
 }
 
-Rgba8 faded(Rgba8 c, float opacity) {
-    c.a = static_cast<std::uint8_t>(std::lround(std::clamp(opacity, 0.0F, 1.0F) * c.a));
-    return c;
-}
-
-double linear_channel(int c) {
-    const double v = c / 255.0;
-    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
-}
-
-// sRGB to linear light, tabulated: the contrast rule runs per disc in colour-mapped scenes.
-double channel_luminance(std::uint8_t c) {
-    static const std::array<double, 256> table = [] {
-        std::array<double, 256> t{};
-        for (int i = 0; i < 256; ++i) t[static_cast<std::size_t>(i)] = linear_channel(i);
-        return t;
-    }();
-    return table[c];
-}
-
-double luminance(Rgb8 c) {
-    return 0.2126 * channel_luminance(c.r) + 0.7152 * channel_luminance(c.g) +
-           0.0722 * channel_luminance(c.b);
-}
-
-Rgb8 rgb(Rgba8 c) {
-    return {c.r, c.g, c.b};
-}
-
 }  // namespace
-
-// ---------------------------------------------------------------------------------------------
-// Colours
-
-Palette palette(Theme theme) noexcept {
-    if (theme == Theme::light) {
-        return {{236, 236, 240, 255}, {255, 255, 255, 255}, {40, 40, 48, 255},
-                {150, 150, 170, 255}, {10, 10, 15, 255},    {35, 35, 45, 255},
-                {95, 95, 105, 255},   {215, 0, 170, 255},   {30, 30, 36, 255}};
-    }
-    return {{22, 22, 28, 255},    {34, 36, 46, 255},    {205, 205, 215, 255},
-            {95, 95, 120, 255},   {245, 245, 245, 255}, {215, 215, 222, 255},
-            {150, 150, 160, 255}, {255, 40, 220, 255},  {225, 225, 232, 255}};
-}
 
 CaptionFit fit_caption(const RenderConfig& config, std::string_view caption) {
     if (config.overlays != OverlayLevel::lesson || config.width < compact_width) return {};
@@ -101,63 +58,15 @@ CaptionFit fit_caption(const RenderConfig& config, std::string_view caption) {
     return fit;
 }
 
-PlotColors plot_colors(Theme theme) noexcept {
-    if (theme == Theme::dark) return {};  // the plots' own defaults are the dark theme's
-    const Palette p = palette(theme);
-    // The zero line: halfway between the axis grey and the page, quieter than the axes.
-    const auto mix = [](std::uint8_t a, std::uint8_t b) {
-        return static_cast<std::uint8_t>((static_cast<int>(a) + static_cast<int>(b)) / 2);
-    };
-    const Rgba8 zero{mix(p.muted.r, p.background.r), mix(p.muted.g, p.background.g),
-                     mix(p.muted.b, p.background.b), 255};
-    return {p.text, p.muted, p.title, zero};
-}
-
-Rgb8 panel_accent(bool time_driven) noexcept {
-    return time_driven ? Rgb8{240, 150, 60} : Rgb8{90, 175, 245};
-}
-
-Rgb8 failure_color(Theme theme) noexcept {
-    return rgb(palette(theme).failure);
-}
-
-Rgb8 box_fill_color(Theme theme) noexcept {
-    return rgb(palette(theme).box_fill);
-}
-
-bool near_failure_color(Rgb8 c) noexcept {
-    // Magenta family: red and blue both well above green. Both themes' failure colours are in it.
-    const int r = c.r;
-    const int g = c.g;
-    const int b = c.b;
-    return r > 150 && b > 120 && g < std::min(r, b) - 70;
-}
-
-Rgb8 away_from_failure_color(Rgb8 c) noexcept {
-    if (!near_failure_color(c)) return c;
-    // Towards violet: keep the brightness, pull red down until the colour leaves the family.
-    Rgb8 out = c;
-    while (near_failure_color(out) && out.r > 0) out.r = static_cast<std::uint8_t>(out.r - 5);
+namespace {
+/// The panels' accents, in panel order: the colours of their plot series.
+std::vector<Rgb8> accents(const FrameContent& frame) {
+    std::vector<Rgb8> out;
+    out.reserve(frame.panels.size());
+    for (const PanelContent& panel : frame.panels) out.push_back(panel.accent);
     return out;
 }
-
-double contrast_ratio(Rgb8 a, Rgb8 b) noexcept {
-    const double la = luminance(a);
-    const double lb = luminance(b);
-    return (std::max(la, lb) + 0.05) / (std::min(la, lb) + 0.05);
-}
-
-std::string with_separators(long long value) {
-    const bool negative = value < 0;
-    std::string digits = std::to_string(negative ? -(value + 1) + 1ULL : value + 0ULL);
-    std::string out;
-    const std::size_t n = digits.size();
-    for (std::size_t i = 0; i < n; ++i) {
-        out += digits[i];
-        if ((n - i - 1) % 3 == 0 && i + 1 < n) out += ',';
-    }
-    return negative ? "-" + out : out;
-}
+}  // namespace
 
 // ---------------------------------------------------------------------------------------------
 // Markers
@@ -307,7 +216,7 @@ void FrameBuilder::build_panel(std::size_t index, const PanelContent& content,
     if (snapshot.queue && config_.overlays == OverlayLevel::lesson && body_font_) {
         add_queue_in_box(snapshot, panel);
         if (layout_.queue_panel == static_cast<int>(index) && !intro_)
-            add_queue_strip(snapshot, layout_.queue_strip);
+            add_queue_strip(snapshot, content.queue_words, layout_.queue_strip);
     }
     std::size_t hidden = 0;
     if (config_.overlays == OverlayLevel::lesson) {
@@ -734,7 +643,7 @@ void FrameBuilder::add_column(const FrameContent& frame) {
                                plot_colors(config_.theme), axis_colors);
     } else if (frame.energy_plot) {
         draw_drift_plot(list_.over, list_.text[0].glyphs, *body_font_, plot, frame.energy_drift,
-                        plot_colors(config_.theme));
+                        accents(frame), plot_colors(config_.theme));
     }
 }
 
@@ -835,9 +744,12 @@ void FrameBuilder::add_full_strip(const FrameContent& frame) {
     add_legend(info);
     std::vector<const Snapshot*> snapshots;
     for (const PanelContent& panel : frame.panels) snapshots.push_back(panel.snapshot);
-    draw_speed_plot(list_.over, text, font, histogram, snapshots, config_.speed_min,
-                    config_.speed_max, plot_colors(config_.theme));
-    draw_drift_plot(list_.over, text, font, drift, frame.energy_drift, plot_colors(config_.theme));
+    // Each panel's series in its engine's accent, whichever panels the frame has.
+    const std::vector<Rgb8> series_colors = accents(frame);
+    draw_speed_plot(list_.over, text, font, histogram, snapshots, series_colors,
+                    config_.speed_min, config_.speed_max, plot_colors(config_.theme));
+    draw_drift_plot(list_.over, text, font, drift, frame.energy_drift, series_colors,
+                    plot_colors(config_.theme));
     const float notes_baseline = strip.y1 - m * 0.5F - line + font.ascent();
     font.add_text(text, columns.x0, notes_baseline, join(frame.notes, "   \xC2\xB7   "),
                   counter_color());

@@ -13,6 +13,7 @@
 #include "font.hpp"
 #include "layout.hpp"
 #include "plots.hpp"
+#include "theme.hpp"
 #include "trails.hpp"
 
 namespace collide::render {
@@ -21,22 +22,6 @@ namespace collide::render {
 inline constexpr double marker_seconds = 1.0;
 /// At most this many failure markers per panel; the rest are counted ("+N more").
 inline constexpr std::size_t max_markers = 30;
-
-/// Theme colours.
-struct Palette {
-    Rgba8 background;
-    Rgba8 box_fill;
-    Rgba8 wall;
-    Rgba8 periodic_edge;
-    Rgba8 title;
-    Rgba8 text;
-    Rgba8 muted;
-    Rgba8 failure;  ///< reserved for failures: no disc is ever drawn in it
-    Rgba8 outline;  ///< around discs with too little contrast against the box
-};
-[[nodiscard]] Palette palette(Theme theme) noexcept;
-/// A plot's text, axis, curve and zero-line colours in a theme (every level's plots use them).
-[[nodiscard]] PlotColors plot_colors(Theme theme) noexcept;
 
 /// How long an event popped off a panel's queue stays highlighted, in seconds of video.
 inline constexpr double queue_pop_seconds = 0.8;
@@ -106,11 +91,13 @@ class FrameBuilder {
     void add_column(const FrameContent& frame);
     // The event queue (Snapshot::queue; frame_builder_queue.cpp).
     void add_queue_in_box(const Snapshot& snapshot, const PanelLayout& panel);
-    void add_queue_strip(const Snapshot& snapshot, RectF strip);
-    void add_popped(const QueueView& queue, double now, RectF area);
-    void add_queue_tree(const QueueView& queue, double now, RectF area);
+    void add_queue_strip(const Snapshot& snapshot, const QueueWords& words, RectF strip);
+    void add_popped(const QueueView& queue, const QueueWords& words, double now, RectF area);
+    void add_queue_tree(const QueueView& queue, const QueueWords& words, double now,
+                        RectF area);
     void add_queue_row(const QueueView& queue, double now, RectF area);
-    void add_leaving_root(const QueueView& queue, double now, PointF root, float node_w,
+    void add_leaving_root(const QueueView& queue, const QueueWords& words, double now, PointF root,
+                          float node_w,
                           float node_h);
     void add_queue_node(const QueuedEvent& event, double now, RectF node, Rgba8 frame_color,
                         bool stale);

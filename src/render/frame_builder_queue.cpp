@@ -16,15 +16,6 @@ namespace collide::render {
 
 namespace {
 
-Rgba8 faded(Rgba8 c, float opacity) {
-    c.a = static_cast<std::uint8_t>(std::lround(std::clamp(opacity, 0.0F, 1.0F) * c.a));
-    return c;
-}
-
-Rgb8 rgb(Rgba8 c) {
-    return {c.r, c.g, c.b};
-}
-
 /// The next event: amber, far from the failure magenta; darker on the light theme, where the
 /// bright one has too little contrast against white.
 constexpr Rgb8 next_event_dark{255, 196, 40};
@@ -221,43 +212,37 @@ void FrameBuilder::add_queue_in_box(const Snapshot& snapshot, const PanelLayout&
 }
 
 // The strip: a heading, the latest pops on the left, the queue itself on the right.
-void FrameBuilder::add_queue_strip(const Snapshot& snapshot, RectF strip) {
+void FrameBuilder::add_queue_strip(const Snapshot& snapshot, const QueueWords& words,
+                                   RectF strip) {
     const QueueView& queue = *snapshot.queue;
     const FontAtlas& small = *small_font_;
     const float line = std::round(small.pixel_height() * 1.2F);
     const float m = std::round(0.5F * small.pixel_height());
     list_.over.add_frame(strip, 1.0F, faded(palette_.muted, 0.6F));
     const RectF inner{strip.x0 + m, strip.y0 + 0.5F * m, strip.x1 - m, strip.y1 - 0.5F * m};
-    std::string heading = fmt::format("Event queue: {}, {} entries", queue.name,
-                                      with_separators(static_cast<long long>(queue.size)));
-    if (queue.one_per_disc) {
-        heading += " (one per disc)";
-    } else if (queue.stale_entries > 0) {
-        heading +=
-            fmt::format(", {} stale", with_separators(static_cast<long long>(queue.stale_entries)));
-    }
+    const std::string& heading = words.heading;
     const TextSlot heading_slot{
         TextRole::queue, -1, {inner.x0, inner.y0, inner.x1, inner.y0 + line}, small.pixel_height()};
-    const std::string legend =
-        fmt::format("In the box: the next {} collisions queued, time to go", queue.next.size());
+    const std::string& legend = words.legend;
     TextSlot left = heading_slot;
     left.rect.x1 = inner.x1 - small.text_width(legend) - 2.0F * m;
     draw_text(Font::small, left, heading, palette_.title);
     draw_text(Font::small, heading_slot, legend, palette_.muted, Align::right);
     const float popped_w = std::round(0.3F * inner.width());
     const RectF body{inner.x0, inner.y0 + line + 0.5F * m, inner.x1, inner.y1};
-    add_popped(queue, snapshot.time, {body.x0, body.y0, body.x0 + popped_w, body.y1});
+    add_popped(queue, words, snapshot.time, {body.x0, body.y0, body.x0 + popped_w, body.y1});
     const RectF right{body.x0 + popped_w + m, body.y0, body.x1, body.y1};
     if (queue.shape == QueueShape::heap) {
-        add_queue_tree(queue, snapshot.time, right);
+        add_queue_tree(queue, words, snapshot.time, right);
     } else {
         add_queue_row(queue, snapshot.time, right);
     }
 }
 
 // The latest pops, newest first: the one just popped in the highlight colour (fading), stale
-// ones greyed "thrown away" (classic) or "re-predicted" (fast); the counts at the bottom.
-void FrameBuilder::add_popped(const QueueView& queue, double now, RectF area) {
+// ones greyed with the engine's words (QueueWords, from collide/show); the counts at the bottom.
+void FrameBuilder::add_popped(const QueueView& queue, const QueueWords& words, double now,
+                              RectF area) {
     const FontAtlas& small = *small_font_;
     const float line = std::round(small.pixel_height() * 1.2F);
     const auto slot = [&](float y) {
@@ -273,7 +258,7 @@ void FrameBuilder::add_popped(const QueueView& queue, double now, RectF area) {
         std::string text = event_label(e);
         Rgba8 color = palette_.text;
         if (e.stale) {
-            text += queue.one_per_disc ? "  stale: re-predict" : "  stale: thrown away";
+            text += words.stale_popped;
             color = faded(palette_.muted, 0.8F);
         } else {
             text += e.kind == QueuedKind::cell ? "  crossing" : "  resolved";
@@ -288,14 +273,7 @@ void FrameBuilder::add_popped(const QueueView& queue, double now, RectF area) {
         draw_text(Font::small, slot(y), text, color);
         y += line;
     }
-    const std::string counts =
-        queue.one_per_disc
-            ? fmt::format("{} pops, {} stale", with_separators(static_cast<long long>(queue.pops)),
-                          with_separators(static_cast<long long>(queue.stale_pops)))
-            : fmt::format("{} of {} pops stale",
-                          with_separators(static_cast<long long>(queue.stale_pops)),
-                          with_separators(static_cast<long long>(queue.pops)));
-    draw_text(Font::small, slot(bottom), counts, palette_.muted);
+    draw_text(Font::small, slot(bottom), words.counts, palette_.muted);
 }
 
 float FrameBuilder::node_width(const std::vector<QueuedEvent>& events) const {
@@ -325,15 +303,15 @@ void FrameBuilder::add_queue_node(const QueuedEvent& event, double now, RectF no
 
 // The event just popped, beside the root it was a moment ago, fading out with an arrow away
 // from the tree: "remove the min = get next collision", seen as it happens.
-void FrameBuilder::add_leaving_root(const QueueView& queue, double now, PointF root, float node_w,
-                                    float node_h) {
+void FrameBuilder::add_leaving_root(const QueueView& queue, const QueueWords& words, double now,
+                                    PointF root, float node_w, float node_h) {
     if (queue.popped.empty()) return;
     const QueuedEvent& e = queue.popped.back();
     const float glow = pop_highlight(e, now);
     if (glow <= 0.0F) return;
     const FontAtlas& small = *small_font_;
     const float x1 = std::round(root.x - 0.5F * node_w - 1.2F * node_w);
-    const float w = std::round(1.5F * node_w);  // room for "thrown away"
+    const float w = std::round(1.5F * node_w);  // room for QueueWords::stale_leaving
     const RectF node{x1 - w, std::round(root.y - 0.5F * node_h), x1,
                      std::round(root.y + 0.5F * node_h)};
     const Rgba8 color = e.stale ? palette_.muted : next_color();
@@ -355,12 +333,13 @@ void FrameBuilder::add_leaving_root(const QueueView& queue, double now, PointF r
     draw_text(
         Font::small,
         {TextRole::queue, -1, {node.x0, node.y0 + half, node.x1, node.y1}, small.pixel_height()},
-        e.stale ? "thrown away" : "popped", text, Align::centre);
+        e.stale ? std::string_view(words.stale_leaving) : "popped", text, Align::centre);
 }
 
 // A heap's top levels: slot i's children are d i + 1 .. d i + d; the root (the next pop) framed
 // in the highlight colour, stale entries greyed.
-void FrameBuilder::add_queue_tree(const QueueView& queue, double now, RectF area) {
+void FrameBuilder::add_queue_tree(const QueueView& queue, const QueueWords& words, double now,
+                                  RectF area) {
     if (queue.slots.empty() || queue.levels == 0) return;
     const FontAtlas& small = *small_font_;
     const std::size_t d = std::max<unsigned>(queue.arity, 2);
@@ -401,7 +380,7 @@ void FrameBuilder::add_queue_tree(const QueueView& queue, double now, RectF area
             i == 0 ? next_color() : (e.stale ? faded(palette_.muted, 0.6F) : palette_.muted);
         add_queue_node(e, now, node, frame, e.stale);
     }
-    add_leaving_root(queue, now, centre.front(), node_w, node_h);
+    add_leaving_root(queue, words, now, centre.front(), node_w, node_h);
     if (queue.size > queue.slots.size()) {
         const std::string more = fmt::format(
             "+{} below", with_separators(static_cast<long long>(queue.size - queue.slots.size())));

@@ -152,12 +152,16 @@ double MaxwellBoltzmann::density(double speed) const noexcept {
     return f;
 }
 
-Rgb8 panel_color(std::size_t panel) noexcept {
-    return panel == 0 ? Rgb8{240, 150, 60} : Rgb8{90, 175, 245};
+namespace {
+/// Series p's colour: its panel's accent (the curve's colour for a series without one).
+Rgb8 series_color(const std::vector<Rgb8>& series_colors, std::size_t p, Rgba8 fallback) noexcept {
+    return p < series_colors.size() ? series_colors[p] : Rgb8{fallback.r, fallback.g, fallback.b};
 }
+}  // namespace
 
 void draw_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& font, RectF area,
-                     const std::vector<const Snapshot*>& snapshots, double v_min, double v_max,
+                     const std::vector<const Snapshot*>& snapshots,
+                     const std::vector<Rgb8>& series_colors, double v_min, double v_max,
                      const PlotColors& colors) {
     // The longest title that leaves room for the range label (narrow frames get the short one).
     const std::string range = format_number("v max %.3g", v_max);
@@ -195,7 +199,7 @@ void draw_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& f
     };
     const float bin_width = plot.width() / static_cast<float>(bins);
     for (std::size_t p = 0; p < histograms.size(); ++p) {
-        const Rgba8 color = with_alpha(panel_color(p), 230);
+        const Rgba8 color = with_alpha(series_color(series_colors, p, colors.curve), 230);
         float previous_y = to_y(0.0);
         for (int b = 0; b < bins; ++b) {
             const float x0 = plot.x0 + bin_width * static_cast<float>(b);
@@ -219,7 +223,8 @@ void draw_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& f
 }
 
 void draw_drift_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& font, RectF area,
-                     const std::vector<std::vector<DriftPoint>>& series, const PlotColors& colors) {
+                     const std::vector<std::vector<DriftPoint>>& series,
+                     const std::vector<Rgb8>& series_colors, const PlotColors& colors) {
     double t_min = 0.0;
     double t_max = 0.0;
     double largest = 0.0;
@@ -249,7 +254,7 @@ void draw_drift_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& f
     const auto to_y = [&](double d) { return mid - static_cast<float>(d / scale) * half; };
     const auto column = [&](double t) { return static_cast<std::int64_t>(std::floor(to_x(t))); };
     for (std::size_t p = 0; p < series.size(); ++p) {
-        const Rgba8 color = with_alpha(panel_color(p), 255);
+        const Rgba8 color = with_alpha(series_color(series_colors, p, colors.curve), 255);
         const auto& s = series[p];
         const std::vector<std::size_t> shown = drift_points_to_draw(s, column);
         for (std::size_t k = 1; k < shown.size(); ++k) {
@@ -404,7 +409,7 @@ void draw_moving_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontA
     const float bin_width = plot.width() / static_cast<float>(bins);
     const float base = plot.y1 - axis_height;
     for (std::size_t p = 0; p < histograms.size(); ++p) {
-        const Rgb8 c = p < colors.size() ? colors[p] : panel_color(p);
+        const Rgb8 c = series_color(colors, p, palette.curve);
         const bool outlines = histograms.size() > 1;  // two panels: two step outlines
         const Rgba8 color = with_alpha(c, outlines ? 235 : 220);
         const float width = 2.0F * line_width;

@@ -52,14 +52,13 @@ struct PlotColors {
     Rgba8 zero_line{90, 90, 100, 255};  ///< the drift plot's zero
 };
 
-/// Per-panel series colours (time-driven left, event-driven right).
-[[nodiscard]] Rgb8 panel_color(std::size_t panel) noexcept;
-
 /// Shapes go to `batch`, text to `text`.
-/// Draws the histograms of every snapshot's moving discs (step outlines in panel colours) and
-/// the Maxwell-Boltzmann curve of the last one's inside `area`.
+/// Draws the histograms of every snapshot's moving discs (step outlines in `series_colors`, one
+/// per snapshot: each panel's engine accent) and the Maxwell-Boltzmann curve of the last one's
+/// inside `area`.
 void draw_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& font, RectF area,
-                     const std::vector<const Snapshot*>& snapshots, double v_min, double v_max,
+                     const std::vector<const Snapshot*>& snapshots,
+                     const std::vector<Rgb8>& series_colors, double v_min, double v_max,
                      const PlotColors& colors = {});
 
 /// The indices (increasing) of the points of `series` worth drawing, `column` mapping a time to
@@ -71,11 +70,12 @@ void draw_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& f
 [[nodiscard]] std::vector<std::size_t> drift_points_to_draw(
     const std::vector<DriftPoint>& series, const std::function<std::int64_t(double)>& column);
 
-/// Draws relative energy drift against time, one polyline per series, scaled to the largest
-/// |drift| (labelled), with the zero line.
+/// Draws relative energy drift against time, one polyline per series in `series_colors` (one per
+/// series: each panel's engine accent), scaled to the largest |drift| (labelled), with the zero
+/// line.
 void draw_drift_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& font, RectF area,
                      const std::vector<std::vector<DriftPoint>>& series,
-                     const PlotColors& colors = {});
+                     const std::vector<Rgb8>& series_colors, const PlotColors& colors = {});
 
 /// Discs at least this many times heavier than the lightest disc count as immovable (barriers,
 /// walls of heavy discs): they are not part of the speed distribution.

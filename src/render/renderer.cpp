@@ -3,7 +3,6 @@
 #include "collide/render/renderer.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
@@ -11,7 +10,6 @@
 #include <string>
 
 #include "collide/error.hpp"
-#include "collide/named_values.hpp"
 #include "frame_builder.hpp"
 #include "gl_target.hpp"
 
@@ -19,43 +17,6 @@ namespace collide::render {
 
 // ---------------------------------------------------------------------------------------------
 // Config
-
-namespace {
-
-constexpr std::array<NamedValue<ColorMode>, 4> color_mode_names{{{"scene", ColorMode::scene},
-                                                                 {"speed", ColorMode::speed},
-                                                                 {"mass", ColorMode::mass},
-                                                                 {"tag", ColorMode::tag}}};
-constexpr std::array<NamedValue<OverlayLevel>, 3> overlay_level_names{
-    {{"none", OverlayLevel::none}, {"lesson", OverlayLevel::lesson}, {"full", OverlayLevel::full}}};
-constexpr std::array<NamedValue<Theme>, 2> theme_names{
-    {{"dark", Theme::dark}, {"light", Theme::light}}};
-
-}  // namespace
-
-std::string_view color_mode_name(ColorMode mode) noexcept {
-    return name_of(mode, color_mode_names, "scene");
-}
-
-ColorMode parse_color_mode(std::string_view text, std::string_view field) {
-    return parse_named(text, field, color_mode_names, "a colour mode");
-}
-
-std::string_view overlay_level_name(OverlayLevel level) noexcept {
-    return name_of(level, overlay_level_names, "lesson");
-}
-
-OverlayLevel parse_overlay_level(std::string_view text, std::string_view field) {
-    return parse_named(text, field, overlay_level_names, "an overlay level");
-}
-
-std::string_view theme_name(Theme theme) noexcept {
-    return name_of(theme, theme_names, "dark");
-}
-
-Theme parse_theme(std::string_view text, std::string_view field) {
-    return parse_named(text, field, theme_names, "a theme");
-}
 
 void RenderConfig::validate() const {
     const auto fail = [](const char* field, const std::string& reason) {

@@ -4,10 +4,13 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
 #include "collide/error.hpp"
+#include "collide/named_values.hpp"
+#include "collide/render_options.hpp"
 #include "collide/scene/load.hpp"
 #include "collide/sim/algs4.hpp"
 #include "collide/sim/generate.hpp"
@@ -27,10 +30,6 @@ const Keys generate_keys = {"count", "packing_fraction", "radius", "mass", "temp
 const Keys render_keys = {"color_mode", "trails", "overlays", "duration", "speed",
                           "dt",         "theme",  "caption",  "captions", "histogram"};
 const Keys caption_keys = {"at", "text"};
-const Keys overlay_levels = {"none", "lesson", "full"};
-const Keys themes = {"dark", "light"};
-const Keys histogram_kinds = {"auto", "none", "small", "large"};
-const Keys color_modes = {"scene", "speed", "mass", "tag"};
 
 std::string num(double v) {
     std::ostringstream s;
@@ -68,7 +67,7 @@ class TomlReader {
             validate_scene(scene_, origin_);
             read_generators(*n);
         }
-        if (speed_colored_ && !scene_.render.color_mode) scene_.render.color_mode = "speed";
+        if (speed_colored_ && !scene_.render.color_mode) scene_.render.color_mode = ColorMode::speed;
         validate_scene(scene_, origin_);
         return std::move(scene_);
     }
@@ -215,19 +214,25 @@ class TomlReader {
         check_keys(t, "render", render_keys);
         RenderHints& r = scene_.render;
         if (const toml::node* v = t.get("color_mode")) {
-            r.color_mode = one_of(*v, "render.color_mode", color_modes);
+            r.color_mode = one_of(*v, "render.color_mode", color_mode_names);
         }
         if (const toml::node* v = t.get("trails")) r.trails = boolean(*v, "render.trails");
         if (const toml::node* v = t.get("overlays")) {
             if (v->is_boolean()) {
-                r.overlays = boolean(*v, "render.overlays") ? "lesson" : "none";
+                r.overlays = boolean(*v, "render.overlays") ? OverlayLevel::lesson
+                                                            : OverlayLevel::none;
             } else {
-                r.overlays = one_of(*v, "render.overlays", overlay_levels);
+                r.overlays = one_of(*v, "render.overlays", overlay_level_names);
             }
         }
-        if (const toml::node* v = t.get("theme")) r.theme = one_of(*v, "render.theme", themes);
+        if (const toml::node* v = t.get("theme")) r.theme = one_of(*v, "render.theme", theme_names);
         if (const toml::node* v = t.get("histogram")) {
-            r.histogram = one_of(*v, "render.histogram", histogram_kinds);
+            // "auto" (the default: where it teaches) or a size.
+            if (v->is_string() && v->as_string()->get() == "auto") {
+                r.histogram.reset();
+            } else {
+                r.histogram = one_of(*v, "render.histogram", plot_size_names, "auto");
+            }
         }
         if (const toml::node* v = t.get("caption")) {
             r.caption = caption(*v, "render.caption");
@@ -248,12 +253,19 @@ class TomlReader {
         if (const toml::node* v = t.get("captions")) read_captions(*v);
     }
 
-    std::string one_of(const toml::node& n, const std::string& field, const Keys& allowed) const {
+    /// The value named in `table` (include/collide/render_options.hpp); `also`, when given, is
+    /// one more name the caller handled itself, listed first.
+    template <class E, std::size_t N>
+    E one_of(const toml::node& n, const std::string& field,
+             const std::array<NamedValue<E>, N>& table, std::string_view also = {}) const {
         const std::string value = text_value(n, field);
-        if (std::find(allowed.begin(), allowed.end(), value) == allowed.end()) {
-            fail(n, field, "expected one of " + joined(allowed) + " (got \"" + value + "\")");
+        Keys allowed;
+        if (!also.empty()) allowed.emplace_back(also);
+        for (const NamedValue<E>& entry : table) {
+            if (entry.name == value) return entry.value;
+            allowed.emplace_back(entry.name);
         }
-        return value;
+        fail(n, field, "expected one of " + joined(allowed) + " (got \"" + value + "\")");
     }
 
     std::string caption(const toml::node& n, const std::string& field) const {

@@ -623,7 +623,7 @@ QueueView FastEngine::queue_view() const {
     }
     view.stale_entries = static_cast<std::uint64_t>(
         std::count_if(all.begin(), all.end(), [](const QueuedEvent& e) { return e.stale; }));
-    view.levels = shown_tree_levels(view.arity, n);
+    view.levels = shown_tree_levels(view.arity, n, watch_.limits());
     view.slots.assign(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(
                                                      shown_tree_slots(view.arity, view.levels, n)));
     keep_next_collisions(all, watch_.next_events());

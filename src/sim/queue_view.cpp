@@ -4,13 +4,14 @@
 
 namespace collide::sim {
 
-void QueueWatch::start(std::size_t next_events) {
+void QueueWatch::start(const QueueViewLimits& limits) {
+    const std::size_t next_events = limits.next_events;
     if (next_events < 1 || next_events > max_watched_events) {
         throw_input_error("--queue", 0, "",
                           "shows 1 to " + std::to_string(max_watched_events) +
                               " upcoming events, got " + std::to_string(next_events));
     }
-    next_events_ = next_events;
+    limits_ = limits;
 }
 
 std::vector<QueuedEvent> QueueWatch::popped() const {
@@ -22,14 +23,15 @@ std::vector<QueuedEvent> QueueWatch::popped() const {
     return out;
 }
 
-unsigned shown_tree_levels(std::size_t arity, std::size_t size) noexcept {
+unsigned shown_tree_levels(std::size_t arity, std::size_t size,
+                           const QueueViewLimits& limits) noexcept {
     if (size == 0) return 0;
     unsigned levels = 1;
     std::size_t width = 1;  // nodes in the level below the last one counted
     std::size_t slots = 1;
-    while (slots < size && levels < max_tree_levels) {
+    while (slots < size && levels < limits.tree_levels) {
         width *= std::max<std::size_t>(arity, 2);
-        if (width > max_tree_level_nodes) break;
+        if (width > limits.tree_level_nodes) break;
         slots += width;
         ++levels;
     }

@@ -112,7 +112,7 @@ TEST_CASE("dt divides the frame interval, or the plan says what the panel will s
 TEST_CASE("plan_render: command line over scene hints over defaults, and the default output path") {
     Scene scene = two_disc_scene(0.1);
     scene.render.duration = 3.0;
-    scene.render.color_mode = "speed";
+    scene.render.color_mode = ColorMode::speed;
     RenderRequest request;
     request.scene = "two";
     RenderPlan plan = plan_render(request, scene);
@@ -205,10 +205,10 @@ TEST_CASE(
     CHECK(plan.time_engine.engine == EngineKind::time);
     CHECK(plan.time_engine.td_detect == OverlapDetection::grid);
     // The canonical spelling, with the arity in use (`--pq indexed` is indexed:4).
-    CHECK(event_panel_title(plan.event_engine) == "Event-driven (priority queue: indexed:4)");
-    CHECK(event_lesson_title(plan.event_engine) == "Event-driven: queue (indexed:4)");
+    CHECK(show::event_panel_title(plan.event_engine) == "Event-driven (priority queue: indexed:4)");
+    CHECK(show::event_lesson_title(plan.event_engine) == "Event-driven: queue (indexed:4)");
     request.engine = EngineKind::fast;
-    CHECK(event_lesson_title(plan_render(request, scene).event_engine) ==
+    CHECK(show::event_lesson_title(plan_render(request, scene).event_engine) ==
           "Event-driven: priority queue");
 }
 
@@ -231,59 +231,10 @@ TEST_CASE("--format decides for a path without extension, a clashing extension n
     }
 }
 
-TEST_CASE("on-screen counters are deterministic counts, the same for the same measurements") {
-    Measurements m;
-    m.t = 2.0;
-    m.steps = 200;
-    m.overlap_checks = 1'000'000;
-    m.missed_collisions = 7;
-    m.escaped = 2;
-    const auto td = time_driven_counters(m, 1e-3);
-    CHECK(td == time_driven_counters(m, 1e-3));
-    const auto joined = [](const std::vector<std::string>& lines) {
-        std::string all;
-        for (const auto& l : lines) all += l + "\n";
-        return all;
-    };
-    CHECK(joined(td).find("missed  7") != std::string::npos);
-    CHECK(joined(td).find("escaped  2") != std::string::npos);
-    CHECK(joined(event_driven_counters(m, 0.0)).find("events") != std::string::npos);
-    // No global remark: a scene that needs the chaos remark says so in its own caption.
+TEST_CASE("no global remark under a side-by-side frame") {
+    // A scene that needs the chaos remark says so in its own caption.
     CHECK(comparison_notes(RenderMode::both).empty());
     CHECK(comparison_notes(RenderMode::event).empty());
-}
-
-TEST_CASE("short counts stay short at any magnitude") {
-    CHECK(short_count(0.0) == "0");
-    CHECK(short_count(999.0) == "999");
-    CHECK(short_count(12'345.0) == "12.3k");
-    CHECK(short_count(4.56e6) == "4.56M");
-    CHECK(short_count(7.5e9) == "7.50G");
-    // Per unit of time in scenes written in SI units (picoseconds): no 20-digit "G" counts.
-    CHECK(short_count(2.394e17) == "2.39e+17");
-    CHECK(short_count(4.2e-4) == "0.00042");
-    CHECK(short_count(-3e13) == "-3e+13");
-}
-
-TEST_CASE("the on-screen clock resolves one frame interval, whatever the units") {
-    // Built-in scenes: three decimals, as in every video so far.
-    CHECK(clock_label(12.3456, video_clock(10.0, 1.0, 30), 1.0) == "t = 12.346   (1/s)");
-    // An argon scene in SI units: the video spans 5e-11 s, frames 3.3e-13 s apart.
-    const FrameClock si = video_clock(10.0, 5e-12, 15);
-    CHECK(clock_label(si.time(149), si, 5e-12) == "t = 4.9667e-11   (5e-12/s)");
-    // Huge units: no 46-digit clock.
-    const FrameClock huge = video_clock(10.0, 7e44, 15);
-    CHECK(clock_label(huge.time(149), huge, 7e44) == "t = 6.9533e+45   (7e+44/s)");
-    // Long runs in ordinary units: as many digits as it takes.
-    const FrameClock long_run = video_clock(600.0, 1e4, 30);
-    CHECK(clock_label(long_run.time(12345), long_run, 1e4) == "t = 4115000   (1e+04/s)");
-    for (const FrameClock& clock : {si, huge, long_run}) {
-        for (std::int64_t k = 1; k < clock.count; ++k) {
-            CAPTURE(k);
-            REQUIRE(clock_label(clock.time(k - 1), clock, 1.0) !=
-                    clock_label(clock.time(k), clock, 1.0));
-        }
-    }
 }
 
 TEST_CASE("the default dt comes from the scene, never from the preset or the frame rate") {
@@ -305,8 +256,8 @@ TEST_CASE("the default dt comes from the scene, never from the preset or the fra
     request.fps = 60;
     const RenderPlan plan = plan_render(request, scene);
     CHECK(plan.lesson.frames_per_step == 2);
-    CHECK(step_note(plan.time_engine.dt, plan.clock.interval) == "Moves only every 2nd frame");
-    CHECK(step_note(0.01, 0.02).empty());
+    CHECK(show::step_note(plan.time_engine.dt, plan.clock.interval) == "Moves only every 2nd frame");
+    CHECK(show::step_note(0.01, 0.02).empty());
 }
 
 TEST_CASE("captions follow the scene's schedule, and the intro card fades out after ~2 s") {
@@ -347,11 +298,11 @@ TEST_CASE("the speed histogram shows by default with enough moving discs, or whe
     CHECK(moving_disc_count(gas) == 150);
     CHECK(plan_render(request, gas).lesson.histogram == render::PlotSize::none);
     // The scene decides over the default.
-    gas.render.histogram = "small";
+    gas.render.histogram = PlotSize::small;
     CHECK(plan_render(request, gas).lesson.histogram == render::PlotSize::small);
-    gas.render.histogram = "large";
+    gas.render.histogram = PlotSize::large;
     CHECK(plan_render(request, gas).lesson.histogram == render::PlotSize::large);
-    gas.render.histogram = "none";
+    gas.render.histogram = PlotSize::none;
     gas.discs.resize(600, gas.discs.front());
     CHECK(plan_render(request, gas).lesson.histogram == render::PlotSize::none);
 }
@@ -378,26 +329,6 @@ TEST_CASE("captions beyond the video: an error naming the scene line, or a notic
     bool noticed = false;
     for (const std::string& n : plan.notices) noticed |= n.find("6 s") != std::string::npos;
     CHECK(noticed);
-}
-
-TEST_CASE("lesson figures are plain words with thousands separators") {
-    Measurements m;
-    m.missed_collisions = 12345;
-    m.overlapping_pairs = 3;
-    m.escaped = 0;
-    m.collisions_pair = 1000000;
-    const auto td = time_driven_figures(m, true);
-    REQUIRE(td.size() == 3);  // nobody left the box: no "left the box" figure yet
-    CHECK(td[0].value == "12,345");
-    CHECK(td[0].label == "missed");
-    CHECK(td[0].failure);
-    CHECK(td[2].value == "1,000,000");
-    m.escaped = 4;
-    CHECK(time_driven_figures(m, true).size() == 4);
-    CHECK(time_driven_figures(m, false).size() == 3);  // periodic boxes have nothing to leave
-    const auto ed = event_driven_figures(m);
-    CHECK(ed[0].value == "1,000,000");
-    CHECK(ed[1].value == "0");
 }
 
 TEST_CASE("still_clock refuses a time more frame intervals away than int64 / double can count") {

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "../support/skip.hpp"
+#include "collide/show/collision.hpp"
 #include "render_fixtures.hpp"
 
 namespace collide::render {
@@ -76,6 +77,9 @@ TEST_CASE("golden: two panels with overlays, speed colours and failure markers")
     FrameContent frame;
     frame.panels = {{&left, "Time-driven, dt = 0.05", {"steps 40", "missed 3"}},
                     {&right, "Event-driven", {"events 812"}}};
+    // Each engine's accent, as the app sets it: the plots draw each series in its panel's.
+    frame.panels[0].accent = panel_accent(true);
+    frame.panels[1].accent = panel_accent(false);
     frame.time_text = "t = 2.00";
     frame.energy_drift = {{{0.0, 0.0}, {1.0, 0.01}, {2.0, 0.03}},
                           {{0.0, 0.0}, {1.0, 0.0}, {2.0, 0.0}}};
@@ -159,6 +163,8 @@ FrameContent queue_frame(const Snapshot& left, const Snapshot& right) {
     frame.panels = {{&left, "Time-driven", {}}, {&right, "Event-driven", {}}};
     frame.panels[0].figures = {{"0", "missed", true}};
     frame.panels[1].figures = {{"39", "collisions", false}};
+    // The queue strip's words, as the collision video's program writes them.
+    if (right.queue) frame.panels[1].queue_words = show::queue_words(*right.queue);
     frame.time_text = "t = 2.000";
     frame.speed = 1.0;
     frame.video_time = 2.0;

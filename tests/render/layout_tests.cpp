@@ -293,10 +293,6 @@ Snapshot random_gas(std::size_t count, std::uint32_t seed) {
     return s;
 }
 
-Rgb8 rgb(Rgba8 c) {
-    return {c.r, c.g, c.b};
-}
-
 bool same_rgb(Rgba8 a, Rgba8 b) {
     return a.r == b.r && a.g == b.g && a.b == b.b;
 }

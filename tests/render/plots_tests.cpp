@@ -208,3 +208,36 @@ TEST_CASE("the lesson speed plot in a narrow column: labelled curve, nothing dra
 
 }  // namespace
 }  // namespace collide::render
+
+namespace collide::render {
+namespace {
+
+TEST_CASE("the drift plot draws each series in the colour given for it") {
+    const RenderConfig config;
+    if (!std::filesystem::exists(config.font_path)) {
+        COLLIDE_SKIP_TEST("no DejaVu Sans at " << config.font_path);
+    }
+    const FontAtlas font(config.font_path, 14);
+    const Rgb8 blue{90, 175, 245};
+    const Rgb8 orange{240, 150, 60};
+    const auto count_of = [](const OverlayBatch& batch, Rgb8 c) {
+        return std::count_if(batch.vertices().begin(), batch.vertices().end(),
+                             [&](const OverlayVertex& v) {
+                                 return v.color.r == c.r && v.color.g == c.g && v.color.b == c.b;
+                             });
+    };
+    const std::vector<std::vector<DriftPoint>> one = {{{0.0, 0.0}, {1.0, 1e-3}, {2.0, -1e-3}}};
+    OverlayBatch shapes;
+    OverlayBatch text;
+    draw_drift_plot(shapes, text, font, {0.0F, 0.0F, 300.0F, 120.0F}, one, {blue});
+    CHECK(count_of(shapes, blue) > 0);
+    CHECK(count_of(shapes, orange) == 0);
+    OverlayBatch two_shapes;
+    draw_drift_plot(two_shapes, text, font, {0.0F, 0.0F, 300.0F, 120.0F}, {one[0], one[0]},
+                    {orange, blue});
+    CHECK(count_of(two_shapes, orange) > 0);
+    CHECK(count_of(two_shapes, blue) > 0);
+}
+
+}  // namespace
+}  // namespace collide::render

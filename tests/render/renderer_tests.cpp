@@ -362,3 +362,36 @@ TEST_CASE(
 
 }  // namespace
 }  // namespace collide::render
+
+namespace collide::render {
+namespace {
+
+// `--mode event --overlays full` drew the event-driven engine's plots in the time-driven orange:
+// the strip chose a series' colour by its panel's index, not by the panel's engine.
+TEST_CASE("full level: each plot series is drawn in its panel's engine accent, whatever its index") {
+    RenderConfig config = test::small_config(true);
+    config.width = 640;
+    config.height = 360;
+    const Snapshot s = test::gas_snapshot(40, 0.03, {1.6, 0.9, Boundary::walls}, 5, 1.0);
+    const auto frame_with = [&](Rgb8 accent) {
+        FrameContent frame;
+        frame.panels = {{&s, "Event-driven (priority queue)", {"events 42"}}};
+        frame.panels[0].accent = accent;
+        frame.time_text = "t = 1.000";
+        frame.energy_drift = {{{0.0, 0.0}, {0.5, 2e-3}, {1.0, -1e-3}}};
+        return frame;
+    };
+    const Rgb8 orange = panel_accent(true);
+    const Rgb8 blue = panel_accent(false);
+    Renderer event_only(config, test::test_backend());
+    const Image event = event_only.render(frame_with(blue));
+    test::dump_if_requested(event, "full_event_only_accent");
+    CHECK(count_near(event, orange, 12) == 0);
+    CHECK(count_near(event, blue, 12) > 20);
+    // The same panel as the time-driven engine: its series are orange (the test can fail).
+    Renderer time_only(config, test::test_backend());
+    CHECK(count_near(time_only.render(frame_with(orange)), orange, 12) > 20);
+}
+
+}  // namespace
+}  // namespace collide::render

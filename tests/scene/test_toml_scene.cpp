@@ -95,9 +95,9 @@ duration = 12
 speed = 0.5
 dt = 0.25
 )");
-    CHECK(s.render.color_mode == "mass");
+    CHECK(s.render.color_mode == ColorMode::mass);
     CHECK(s.render.trails == true);
-    CHECK(s.render.overlays == std::optional<std::string>("none"));
+    CHECK(s.render.overlays == OverlayLevel::none);
     CHECK(s.render.duration == 12.0);
     CHECK(s.render.speed == 0.5);
     CHECK(s.render.dt == 0.25);
@@ -132,7 +132,7 @@ color = "#3060e0"
 )");
     CHECK(s.discs.size() == 1 + 955 + 5);
     CHECK(s.discs[1].tag == "gas");
-    CHECK(s.render.color_mode == "speed");
+    CHECK(s.render.color_mode == ColorMode::speed);
     CHECK(norm(s.discs.back().velocity) == doctest::Approx(0.5));
     CHECK(s.discs.back().color == Rgb8{0x30, 0x60, 0xe0});
     // the same text gives the same scene
@@ -311,16 +311,19 @@ at = 5.5
 text = "Second"
 )");
     CHECK(s.description == "What it shows");
-    CHECK(s.render.overlays == std::optional<std::string>("full"));
-    CHECK(s.render.theme == std::optional<std::string>("light"));
-    CHECK(s.render.histogram == std::optional<std::string>("large"));
+    CHECK(s.render.overlays == OverlayLevel::full);
+    CHECK(s.render.theme == Theme::light);
+    CHECK(s.render.histogram == PlotSize::large);
     CHECK(s.render.caption == std::optional<std::string>("The whole video"));
     REQUIRE(s.render.captions.size() == 2);
     CHECK(s.render.captions[1].at == 5.5);
     CHECK(s.render.captions[1].text == "Second");
     CHECK(s.render.captions[1].line == 13);
-    CHECK(parse("[render]\noverlays = true\n").render.overlays ==
-          std::optional<std::string>("lesson"));
+    CHECK(parse("[render]\noverlays = true\n").render.overlays == OverlayLevel::lesson);
+    // "auto" is the default (where it teaches): the same as no histogram key.
+    CHECK_FALSE(parse("[render]\nhistogram = \"auto\"\n").render.histogram.has_value());
+    CHECK(contains(toml_error("[render]\nhistogram = \"huge\"\n"),
+                   "render.histogram: expected one of auto, none, small, large"));
 }
 
 TEST_CASE("toml: bad captions name the file, line and field and say what is allowed") {

@@ -18,6 +18,12 @@ namespace {
 
 using test::lattice_fluid;
 
+/// A picture budget for these tests (a video's is show::queue_picture): the next `k` events,
+/// a heap down to the deepest level of at most 8 nodes and at most 3 levels, 10 array slots.
+QueueViewLimits picture(std::size_t k) {
+    return {k, 8, 3, 10};
+}
+
 EngineOptions classic_on(const std::string& pq) {
     EngineOptions o;
     o.engine = EngineKind::classic;
@@ -69,7 +75,7 @@ TEST_CASE("queue view: no view unless asked for, and the time-driven engine has 
     EngineOptions time;
     time.engine = EngineKind::time;
     auto engine = make_engine(scene, time);
-    CHECK_FALSE(engine->watch_queue(5));
+    CHECK_FALSE(engine->watch_queue(picture(5)));
     engine->advance_to(0.01);
     CHECK_FALSE(engine->snapshot().queue.has_value());
 }
@@ -78,7 +84,7 @@ TEST_CASE("queue view: K out of range is refused naming --queue") {
     auto engine = make_engine(walled_gas(), classic_on("binary"));
     for (const std::size_t k : {std::size_t{0}, sim::max_watched_events + 1}) {
         try {
-            (void)engine->watch_queue(k);
+            (void)engine->watch_queue(picture(k));
             FAIL("accepted --queue " << k);
         } catch (const Error& e) {
             CHECK(e.kind() == ErrorKind::input);
@@ -93,7 +99,7 @@ TEST_CASE("queue view: the next events shown are the collisions that happen next
         CAPTURE(to_string(o.engine));
         CAPTURE(pq::to_string(o.pq));
         auto engine = make_engine(scene, o);
-        REQUIRE(engine->watch_queue(4));
+        REQUIRE(engine->watch_queue(picture(4)));
         double t = 0.0;
         int checked = 0;
         for (int frame = 0; frame < 40; ++frame) {
@@ -134,7 +140,7 @@ TEST_CASE("queue view: the shown slots are the queue's own, root first, and the 
         CAPTURE(to_string(o.engine));
         CAPTURE(pq::to_string(o.pq));
         auto engine = make_engine(scene, o);
-        REQUIRE(engine->watch_queue(5));
+        REQUIRE(engine->watch_queue(picture(5)));
         engine->advance_to(0.2);
         const Measurements m = engine->measurements();
         const QueueView q = *engine->snapshot().queue;
@@ -145,7 +151,7 @@ TEST_CASE("queue view: the shown slots are the queue's own, root first, and the 
         CHECK(q.slots.size() <= q.size);
         if (q.shape == QueueShape::heap) {
             CHECK(q.levels >= 1);
-            CHECK(q.levels <= sim::max_tree_levels);
+            CHECK(q.levels <= picture(5).tree_levels);
             CHECK(q.slots.size() == sim::shown_tree_slots(q.arity, q.levels, q.size));
             // Heap order: no child comes before its parent.
             for (std::size_t i = 1; i < q.slots.size(); ++i)
@@ -170,7 +176,7 @@ TEST_CASE("queue view: the shown slots are the queue's own, root first, and the 
 TEST_CASE("queue view: pops are recorded in order, the latest last, stale ones flagged") {
     const Scene scene = walled_gas();
     auto engine = make_engine(scene, classic_on("binary"));
-    REQUIRE(engine->watch_queue(5));
+    REQUIRE(engine->watch_queue(picture(5)));
     const auto log = events_until(*engine, 0.5);
     const QueueView q = *engine->snapshot().queue;
     REQUIRE(q.pops > sim::watched_pops);
@@ -198,7 +204,7 @@ TEST_CASE("queue view: watching does not change a single event") {
         CAPTURE(pq::to_string(o.pq));
         auto plain = make_engine(scene, o);
         auto watched = make_engine(scene, o);
-        REQUIRE(watched->watch_queue(sim::max_watched_events));
+        REQUIRE(watched->watch_queue(picture(sim::max_watched_events)));
         std::vector<CollisionRecord> a;
         std::vector<CollisionRecord> b;
         for (int frame = 1; frame <= 10; ++frame) {
@@ -217,14 +223,14 @@ TEST_CASE("queue view: watching does not change a single event") {
 }
 
 TEST_CASE("queue view: tree levels keep the deepest level legible") {
-    CHECK(sim::shown_tree_levels(2, 0) == 0);
-    CHECK(sim::shown_tree_levels(2, 1) == 1);
-    CHECK(sim::shown_tree_levels(2, 3) == 2);
-    CHECK(sim::shown_tree_levels(2, 1000) == 3);  // 1 + 2 + 4
+    CHECK(sim::shown_tree_levels(2, 0, picture(5)) == 0);
+    CHECK(sim::shown_tree_levels(2, 1, picture(5)) == 1);
+    CHECK(sim::shown_tree_levels(2, 3, picture(5)) == 2);
+    CHECK(sim::shown_tree_levels(2, 1000, picture(5)) == 3);  // 1 + 2 + 4
     CHECK(sim::shown_tree_slots(2, 3, 1000) == 7);
-    CHECK(sim::shown_tree_levels(4, 1000) == 2);  // 16 in the third level: too many
+    CHECK(sim::shown_tree_levels(4, 1000, picture(5)) == 2);  // 16 in the third level: too many
     CHECK(sim::shown_tree_slots(4, 2, 1000) == 5);
-    CHECK(sim::shown_tree_levels(8, 1000) == 2);
+    CHECK(sim::shown_tree_levels(8, 1000, picture(5)) == 2);
     CHECK(sim::shown_tree_slots(8, 2, 6) == 6);  // a partial last level
 }
 

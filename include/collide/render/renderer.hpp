@@ -25,44 +25,25 @@
 
 #include "collide/image.hpp"
 #include "collide/render/context.hpp"
+#include "collide/collision_view.hpp"
+#include "collide/number_text.hpp"
+#include "collide/render_options.hpp"
 #include "collide/snapshot.hpp"
 
 namespace collide::render {
 
-/// How discs are coloured.
-enum class ColorMode {
-    scene,  ///< the scene's own colour for each disc
-    speed,  ///< |v| through a perceptual colormap over [speed_min, speed_max] (legend shown)
-    mass,   ///< mass through the colormap over [mass_min, mass_max] (log scale)
-    tag,    ///< tagged discs highlighted, the others grey
-};
-
-/// How much is drawn around the boxes (docs/renderer.md, "Layout levels").
-enum class OverlayLevel {
-    none,    ///< discs only: the boxes fill the frame
-    lesson,  ///< the default: titles, two or three figures per panel, the cost graphic, a caption
-    full,    ///< every counter and the plot strip (for experts)
-};
-/// "none" / "lesson" / "full".
-[[nodiscard]] std::string_view overlay_level_name(OverlayLevel level) noexcept;
-/// Parses an overlay level; throws collide::Error (input) naming `field` otherwise.
-[[nodiscard]] OverlayLevel parse_overlay_level(std::string_view text,
-                                               std::string_view field = "overlays");
-
-/// Colours of the background, panels and text.
-enum class Theme {
-    dark,   ///< light discs on dark panels (screens)
-    light,  ///< dark text on white panels (projectors, print)
-};
-[[nodiscard]] std::string_view theme_name(Theme theme) noexcept;
-/// Parses a theme; throws collide::Error (input) naming `field` otherwise.
-[[nodiscard]] Theme parse_theme(std::string_view text, std::string_view field = "theme");
-
-/// "scene" / "speed" / "mass" / "tag".
-[[nodiscard]] std::string_view color_mode_name(ColorMode mode) noexcept;
-/// Parses a colour mode name; throws collide::Error (input) naming `field` otherwise.
-[[nodiscard]] ColorMode parse_color_mode(std::string_view text,
-                                         std::string_view field = "color_mode");
+// The typed options live in the types layer (one name table each); the renderer's code names
+// them unqualified.
+using collide::ColorMode;
+using collide::OverlayLevel;
+using collide::PlotSize;
+using collide::Theme;
+using collide::color_mode_name;
+using collide::overlay_level_name;
+using collide::parse_color_mode;
+using collide::parse_overlay_level;
+using collide::parse_theme;
+using collide::theme_name;
 
 /// The frame sides the renderers accept, in pixels (every frame size option and config is checked
 /// against these): below 64 no text is legible; 8192 is well inside every GL implementation's
@@ -99,69 +80,12 @@ struct RenderConfig {
     void validate() const;
 };
 
-/// A headline figure of the lesson level: a big number and its label in plain words.
-struct Figure {
-    std::string value;     ///< "1,234"
-    std::string label;     ///< "collisions missed"
-    bool failure = false;  ///< drawn in the failure colour when the value is not zero
-};
-
-/// One simulation shown in one panel.
-struct PanelContent {
-    PanelContent() = default;
-    /// The full level's content (what every level needs: the snapshot and a title).
-    PanelContent(const Snapshot* snapshot_, std::string title_,
-                 std::vector<std::string> counters_ = {})
-        : snapshot(snapshot_), title(std::move(title_)), counters(std::move(counters_)) {}
-
-    const Snapshot* snapshot = nullptr;  ///< not owned; must stay valid during render()
-    std::string title;                   ///< e.g. "Event-driven: priority queue of collisions"
-    std::vector<std::string> counters;   ///< full level: lines under the title ("collisions 1234")
-    std::vector<Figure> figures;         ///< lesson level: two or three, most important first
-    std::string compact_line;            ///< compact lesson form: the one line (failure count)
-    std::string note;                    ///< lesson level: a line under the figures (dt > frame)
-    /// Step indicator beside the note: the time-driven state changes every `step_period` frames
-    /// and this frame is `step_phase` (0 = a new step) of them. Period 1 draws none.
-    int step_period = 1;
-    int step_phase = 0;
-    std::string cost_label;     ///< the cost graphic's label ("pair tests")
-    double cost = 0.0;          ///< work done so far, on the graphic's shared scale
-    Rgb8 accent{240, 150, 60};  ///< the engine's colour (title swatch, bar, histogram)
-};
-
-/// Size of a lesson-level plot.
-enum class PlotSize { none, small, large };
-
-/// One sample of an energy drift series: relative drift (E(t) - E(0)) / E(0) at time t.
-struct DriftPoint {
-    double time = 0.0;
-    double drift = 0.0;
-};
-
-/// Everything drawn in one frame. Panels are laid out left to right in the given order (1 or 2
-/// panels; convention: time-driven left, event-driven right). Failure markers are drawn for any
-/// panel whose snapshot carries them (overlapping_pairs, missed_collisions, escaped discs).
-struct FrameContent {
-    std::vector<PanelContent> panels;
-    std::string time_text;  ///< e.g. "t = 3.25   (x0.5 speed)"
-    /// One series per panel (same order as `panels`; may be empty or shorter), oldest first.
-    std::vector<std::vector<DriftPoint>> energy_drift;
-    std::vector<std::string> notes;  ///< full level: notice line(s) at the bottom
-    std::string caption;             ///< lesson level: the caption line at the bottom
-    std::string energy_line;         ///< lesson level: "Energy conserved" (empty: the drift plot)
-    std::string cost_heading = "Work so far";
-    double video_time = 0.0;  ///< seconds of video at this frame: failure markers fade by it
-    /// Simulation time per second of video (0: unknown). A panel's queue (Snapshot::queue) keeps
-    /// a popped event highlighted for queue_pop_seconds of video by it.
-    double speed = 0.0;
-    /// Lesson level: the speed histogram of moving discs in the column (large: it is the subject).
-    PlotSize histogram = PlotSize::none;
-    bool energy_plot = false;  ///< lesson level: the energy drift plot (energy not conserved)
-    /// The scene's title card (intro): drawn over the frame with this opacity (0 = none).
-    std::string intro_title;
-    std::string intro_text;
-    float intro_opacity = 0.0F;
-};
+// The collision video's views (what the painter takes) live in the types layer, filled by the
+// presentation layer (src/show).
+using collide::DriftPoint;
+using collide::Figure;
+using collide::FrameContent;
+using collide::PanelContent;
 
 /// Renders frames with a GL context it owns. Keeps per-panel trail history across frames (it
 /// sees only snapshots), so feed frames in time order; a snapshot whose disc count changes or
@@ -207,8 +131,7 @@ class Renderer {
     std::unique_ptr<Impl> impl_;
 };
 
-/// "1,234,567": thousands separators, for figures read from the back row.
-[[nodiscard]] std::string with_separators(long long value);
+using collide::with_separators;  // collide/number_text.hpp
 
 /// Each engine's colour (title swatch, cost bar, histogram): time-driven orange, event-driven
 /// blue, the same in every video.

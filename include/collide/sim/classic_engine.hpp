@@ -85,8 +85,8 @@ class ClassicEngine final : public Engine {
         return s;
     }
 
-    bool watch_queue(std::size_t next_events) override {
-        watch_.start(next_events);
+    bool watch_queue(const QueueViewLimits& limits) override {
+        watch_.start(limits);
         return true;
     }
 
@@ -113,7 +113,7 @@ class ClassicEngine final : public Engine {
     [[nodiscard]] QueueView queue_view() const {
         QueueView view;
         describe_queue(
-            queue_, watch_.next_events(), [this](const Event& e) { return !is_valid(e); }, view);
+            queue_, watch_.limits(), [this](const Event& e) { return !is_valid(e); }, view);
         view.popped = watch_.popped();
         view.pops = core_.counters().queue.pops;
         view.stale_pops = core_.counters().queue.stale_pops;

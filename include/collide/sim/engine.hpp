@@ -51,12 +51,13 @@ class Engine {
     virtual void set_collision_listener(CollisionListener listener) = 0;
 
     /// Asks every later snapshot() to carry a QueueView (Snapshot::queue): the next
-    /// `next_events` collisions, the queue's first slots and the events popped from now on. For
-    /// teaching videos (`collide render --queue`); an engine never asked pays nothing measurable.
-    /// Returns false, and does nothing, for an engine that has no event queue (time-driven).
-    /// Throws Error(input) naming `--queue` unless 1 <= next_events <= sim::max_watched_events.
-    virtual bool watch_queue(std::size_t next_events) {
-        (void)next_events;
+    /// limits.next_events collisions, the queue's first slots as far as `limits` says and the
+    /// events popped from now on. For teaching videos (`collide render --queue`); an engine never
+    /// asked pays nothing measurable. Returns false, and does nothing, for an engine that has no
+    /// event queue (time-driven). Throws Error(input) naming `--queue` unless
+    /// 1 <= limits.next_events <= sim::max_watched_events.
+    virtual bool watch_queue(const QueueViewLimits& limits) {
+        (void)limits;
         return false;
     }
 

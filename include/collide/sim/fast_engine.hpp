@@ -58,8 +58,8 @@ class FastEngine final : public Engine {
     void set_collision_listener(CollisionListener listener) override {
         core_.set_listener(std::move(listener));
     }
-    bool watch_queue(std::size_t next_events) override {
-        watch_.start(next_events);
+    bool watch_queue(const QueueViewLimits& limits) override {
+        watch_.start(limits);
         return true;
     }
 

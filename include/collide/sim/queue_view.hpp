@@ -26,12 +26,7 @@ namespace collide::sim {
 inline constexpr std::size_t max_watched_events = 20;
 /// Popped events a view carries (the latest ones).
 inline constexpr std::size_t watched_pops = 8;
-/// A heap's tree is shown down to the deepest level that has at most this many nodes, and at
-/// most max_tree_levels levels: what fits legibly in a strip under a 720p video.
-inline constexpr std::size_t max_tree_level_nodes = 8;
-inline constexpr unsigned max_tree_levels = 3;
-/// Slots of an array queue shown.
-inline constexpr std::size_t max_array_slots = 10;
+
 
 [[nodiscard]] constexpr QueuedKind queued_kind(EventKind kind) noexcept {
     switch (kind) {
@@ -55,11 +50,12 @@ inline constexpr std::size_t max_array_slots = 10;
 /// Whether a view was asked for, how many events it shows, and the latest pops (a ring).
 class QueueWatch {
   public:
-    /// Starts watching: later views show `next_events` events. Throws Error(input) naming
-    /// `--queue` unless 1 <= next_events <= max_watched_events.
-    void start(std::size_t next_events);
-    [[nodiscard]] bool on() const noexcept { return next_events_ > 0; }
-    [[nodiscard]] std::size_t next_events() const noexcept { return next_events_; }
+    /// Starts watching: later views carry what `limits` says. Throws Error(input) naming
+    /// `--queue` unless 1 <= limits.next_events <= max_watched_events.
+    void start(const QueueViewLimits& limits);
+    [[nodiscard]] bool on() const noexcept { return limits_.next_events > 0; }
+    [[nodiscard]] std::size_t next_events() const noexcept { return limits_.next_events; }
+    [[nodiscard]] const QueueViewLimits& limits() const noexcept { return limits_; }
 
     void record_pop(const QueuedEvent& e) noexcept {
         ring_[recorded_ % watched_pops] = e;
@@ -69,14 +65,16 @@ class QueueWatch {
     [[nodiscard]] std::vector<QueuedEvent> popped() const;
 
   private:
-    std::size_t next_events_ = 0;
+    QueueViewLimits limits_;
     std::array<QueuedEvent, watched_pops> ring_{};
     std::uint64_t recorded_ = 0;
 };
 
 /// Levels of a d-ary heap of `size` entries shown as a tree: down to the deepest level with at
-/// most max_tree_level_nodes nodes (at least the root when not empty).
-[[nodiscard]] unsigned shown_tree_levels(std::size_t arity, std::size_t size) noexcept;
+/// most limits.tree_level_nodes nodes, at most limits.tree_levels (at least the root when not
+/// empty).
+[[nodiscard]] unsigned shown_tree_levels(std::size_t arity, std::size_t size,
+                                         const QueueViewLimits& limits) noexcept;
 /// Slots in those levels (1 + d + d^2 + ..., at most size).
 [[nodiscard]] std::size_t shown_tree_slots(std::size_t arity, unsigned levels,
                                            std::size_t size) noexcept;
@@ -86,10 +84,11 @@ class QueueWatch {
 void keep_next_collisions(std::vector<QueuedEvent>& events, std::size_t k);
 
 /// Fills the name, shape and slots of `view` for a queue of the lecture holding sim::Event, and
-/// its `next` collisions, counting stale entries with `stale(event)`. O(entries): only for
-/// watched engines, once per frame.
+/// its `next` collisions, counting stale entries with `stale(event)`, as much as `limits` asks.
+/// O(entries): only for watched engines, once per frame.
 template <class Queue, class IsStale>
-void describe_queue(const Queue& queue, std::size_t next_events, IsStale&& stale, QueueView& view);
+void describe_queue(const Queue& queue, const QueueViewLimits& limits, IsStale&& stale,
+                    QueueView& view);
 
 // ---------------------------------------------------------------------------------------------
 
@@ -143,7 +142,8 @@ struct QueueTraits<pq::UnorderedArrayPQ<T, O, Less, Obs>> {
 }  // namespace detail
 
 template <class Queue, class IsStale>
-void describe_queue(const Queue& queue, std::size_t next_events, IsStale&& stale, QueueView& view) {
+void describe_queue(const Queue& queue, const QueueViewLimits& limits, IsStale&& stale,
+                    QueueView& view) {
     using Traits = detail::QueueTraits<Queue>;
     const std::size_t n = queue.size();
     const std::size_t arity = Traits::arity(queue);
@@ -163,17 +163,17 @@ void describe_queue(const Queue& queue, std::size_t next_events, IsStale&& stale
     view.slots.clear();
     switch (Traits::shape) {
         case QueueShape::heap: {
-            view.levels = shown_tree_levels(arity, n);
+            view.levels = shown_tree_levels(arity, n, limits);
             const std::size_t m = shown_tree_slots(arity, view.levels, n);
             view.slots.assign(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(m));
             break;
         }
         case QueueShape::ordered_array:  // the next event is the last slot
-            for (std::size_t k = 0; k < std::min(n, max_array_slots); ++k)
+            for (std::size_t k = 0; k < std::min(n, limits.array_slots); ++k)
                 view.slots.push_back(all[n - 1 - k]);
             break;
         case QueueShape::unordered_array: {
-            const std::size_t m = std::min(n, max_array_slots);
+            const std::size_t m = std::min(n, limits.array_slots);
             view.slots.assign(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(m));
             if (n > 0) {
                 std::size_t best = 0;
@@ -186,7 +186,7 @@ void describe_queue(const Queue& queue, std::size_t next_events, IsStale&& stale
             break;
         }
     }
-    keep_next_collisions(all, next_events);
+    keep_next_collisions(all, limits.next_events);
     view.next = std::move(all);
 }
 

@@ -1,0 +1,90 @@
+#pragma once
+/// \file
+/// The views of a collision video: what the renderer paints for one frame (render::Renderer),
+/// filled by the presentation layer (src/show, collide_show) from the engines' snapshots and
+/// measurements. Plain values (types layer): no GL, no simulation code.
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "collide/disc.hpp"
+#include "collide/render_options.hpp"
+#include "collide/snapshot.hpp"
+
+namespace collide {
+
+/// A headline figure of the lesson level: a big number and its label in plain words.
+struct Figure {
+    std::string value;     ///< "1,234"
+    std::string label;     ///< "collisions missed"
+    bool failure = false;  ///< drawn in the failure colour when the value is not zero
+};
+
+/// The words of the queue strip (`--queue`) that say how the engine treats its queue: the fast
+/// engine holds one event per disc and re-predicts, the classic one throws stale events away
+/// (filled by show::queue_words from the snapshot's QueueView).
+struct QueueWords {
+    std::string heading;        ///< "Event queue: binary heap, 1,234 entries, 56 stale"
+    std::string legend;         ///< "In the box: the next 5 collisions queued, time to go"
+    std::string stale_popped;   ///< after a stale event in the list of pops
+    std::string stale_leaving;  ///< on a stale event leaving the root ("thrown away")
+    std::string counts;         ///< under the pops: "3 of 40 pops stale"
+};
+
+/// One simulation shown in one panel.
+struct PanelContent {
+    PanelContent() = default;
+    /// The full level's content (what every level needs: the snapshot and a title).
+    PanelContent(const Snapshot* snapshot_, std::string title_,
+                 std::vector<std::string> counters_ = {})
+        : snapshot(snapshot_), title(std::move(title_)), counters(std::move(counters_)) {}
+
+    const Snapshot* snapshot = nullptr;  ///< not owned; must stay valid during render()
+    std::string title;                   ///< e.g. "Event-driven: priority queue of collisions"
+    std::vector<std::string> counters;   ///< full level: lines under the title ("collisions 1234")
+    std::vector<Figure> figures;         ///< lesson level: two or three, most important first
+    std::string compact_line;            ///< compact lesson form: the one line (failure count)
+    std::string note;                    ///< lesson level: a line under the figures (dt > frame)
+    /// Step indicator beside the note: the time-driven state changes every `step_period` frames
+    /// and this frame is `step_phase` (0 = a new step) of them. Period 1 draws none.
+    int step_period = 1;
+    int step_phase = 0;
+    std::string cost_label;     ///< the cost graphic's label ("pair tests")
+    double cost = 0.0;          ///< work done so far, on the graphic's shared scale
+    Rgb8 accent{240, 150, 60};  ///< the engine's colour (title swatch, bar, histogram)
+    QueueWords queue_words;     ///< the queue strip's words (snapshot->queue set)
+};
+
+/// One sample of an energy drift series: relative drift (E(t) - E(0)) / E(0) at time t.
+struct DriftPoint {
+    double time = 0.0;
+    double drift = 0.0;
+};
+
+/// Everything drawn in one frame. Panels are laid out left to right in the given order (1 or 2
+/// panels; convention: time-driven left, event-driven right). Failure markers are drawn for any
+/// panel whose snapshot carries them (overlapping_pairs, missed_collisions, escaped discs).
+struct FrameContent {
+    std::vector<PanelContent> panels;
+    std::string time_text;  ///< e.g. "t = 3.25   (x0.5 speed)"
+    /// One series per panel (same order as `panels`; may be empty or shorter), oldest first.
+    std::vector<std::vector<DriftPoint>> energy_drift;
+    std::vector<std::string> notes;  ///< full level: notice line(s) at the bottom
+    std::string caption;             ///< lesson level: the caption line at the bottom
+    std::string energy_line;         ///< lesson level: "Energy conserved" (empty: the drift plot)
+    std::string cost_heading = "Work so far";
+    double video_time = 0.0;  ///< seconds of video at this frame: failure markers fade by it
+    /// Simulation time per second of video (0: unknown). A panel's queue (Snapshot::queue) keeps
+    /// a popped event highlighted for queue_pop_seconds of video by it.
+    double speed = 0.0;
+    /// Lesson level: the speed histogram of moving discs in the column (large: it is the subject).
+    PlotSize histogram = PlotSize::none;
+    bool energy_plot = false;  ///< lesson level: the energy drift plot (energy not conserved)
+    /// The scene's title card (intro): drawn over the frame with this opacity (0 = none).
+    std::string intro_title;
+    std::string intro_text;
+    float intro_opacity = 0.0F;
+};
+
+}  // namespace collide

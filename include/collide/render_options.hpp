@@ -1,0 +1,85 @@
+#pragma once
+/// \file
+/// The typed render options every module shares: how discs are coloured, how much is drawn
+/// around the boxes, the theme and the size of a lesson plot. One name table each: the command
+/// line (`--color`, `--overlays`, `--theme`), the scene's `[render]` table and the renderer parse
+/// and print them through these tables only. Std-only (types layer).
+
+#include <array>
+#include <string_view>
+
+#include "collide/named_values.hpp"
+
+namespace collide {
+
+/// How discs are coloured.
+enum class ColorMode {
+    scene,  ///< the scene's own colour for each disc
+    speed,  ///< |v| through a perceptual colormap over [speed_min, speed_max] (legend shown)
+    mass,   ///< mass through the colormap over [mass_min, mass_max] (log scale)
+    tag,    ///< tagged discs highlighted, the others grey
+};
+
+/// How much is drawn around the boxes (docs/renderer.md, "Layout levels").
+enum class OverlayLevel {
+    none,    ///< discs only: the boxes fill the frame
+    lesson,  ///< the default: titles, two or three figures per panel, the cost graphic, a caption
+    full,    ///< every counter and the plot strip (for experts)
+};
+
+/// Colours of the background, panels and text.
+enum class Theme {
+    dark,   ///< light discs on dark panels (screens)
+    light,  ///< dark text on white panels (projectors, print)
+};
+
+/// Size of a lesson-level plot.
+enum class PlotSize { none, small, large };
+
+/// The names, in the order messages list them.
+inline constexpr std::array<NamedValue<ColorMode>, 4> color_mode_names{{{"scene", ColorMode::scene},
+                                                                        {"speed", ColorMode::speed},
+                                                                        {"mass", ColorMode::mass},
+                                                                        {"tag", ColorMode::tag}}};
+inline constexpr std::array<NamedValue<OverlayLevel>, 3> overlay_level_names{
+    {{"none", OverlayLevel::none}, {"lesson", OverlayLevel::lesson}, {"full", OverlayLevel::full}}};
+inline constexpr std::array<NamedValue<Theme>, 2> theme_names{
+    {{"dark", Theme::dark}, {"light", Theme::light}}};
+inline constexpr std::array<NamedValue<PlotSize>, 3> plot_size_names{
+    {{"none", PlotSize::none}, {"small", PlotSize::small}, {"large", PlotSize::large}}};
+
+/// "scene" / "speed" / "mass" / "tag".
+[[nodiscard]] constexpr std::string_view color_mode_name(ColorMode mode) noexcept {
+    return name_of(mode, color_mode_names, "scene");
+}
+/// Parses a colour mode name; throws collide::Error (input) naming `field` otherwise.
+[[nodiscard]] inline ColorMode parse_color_mode(std::string_view text,
+                                                std::string_view field = "color_mode") {
+    return parse_named(text, field, color_mode_names, "a colour mode");
+}
+
+/// "none" / "lesson" / "full".
+[[nodiscard]] constexpr std::string_view overlay_level_name(OverlayLevel level) noexcept {
+    return name_of(level, overlay_level_names, "lesson");
+}
+/// Parses an overlay level; throws collide::Error (input) naming `field` otherwise.
+[[nodiscard]] inline OverlayLevel parse_overlay_level(std::string_view text,
+                                                      std::string_view field = "overlays") {
+    return parse_named(text, field, overlay_level_names, "an overlay level");
+}
+
+/// "dark" / "light".
+[[nodiscard]] constexpr std::string_view theme_name(Theme theme) noexcept {
+    return name_of(theme, theme_names, "dark");
+}
+/// Parses a theme; throws collide::Error (input) naming `field` otherwise.
+[[nodiscard]] inline Theme parse_theme(std::string_view text, std::string_view field = "theme") {
+    return parse_named(text, field, theme_names, "a theme");
+}
+
+/// "none" / "small" / "large".
+[[nodiscard]] constexpr std::string_view plot_size_name(PlotSize size) noexcept {
+    return name_of(size, plot_size_names, "none");
+}
+
+}  // namespace collide

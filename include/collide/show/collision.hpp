@@ -1,0 +1,146 @@
+#pragma once
+/// \file
+/// The collision video's program (`collide render` / `collide thumbnail`): every word and number
+/// a class reads beside the discs, from the engines' measurements. Titles, the counters of the
+/// full level, the lesson level's figures and compact line, the cost graphic's label, the step
+/// note, the energy line and the clock. Pure functions of their arguments (unit-tested in
+/// tests/show): the same measurements give the same strings, on any thread.
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "collide/collision_view.hpp"
+#include "collide/render_options.hpp"
+#include "collide/scene.hpp"
+#include "collide/sim/engine.hpp"
+#include "collide/sim/measurements.hpp"
+#include "collide/snapshot.hpp"
+
+namespace collide::show {
+
+/// When each frame is taken, in simulation time. Frame k is at exactly k * interval, except the
+/// last one, which is at `last_time` (a thumbnail at a time between two frame times).
+struct FrameClock {
+    double interval = 1.0 / 30.0;  ///< simulation time between frames = speed / fps
+    std::int64_t count = 1;        ///< frames, >= 1
+    double last_time = 0.0;        ///< time of frame count - 1
+
+    [[nodiscard]] double time(std::int64_t k) const noexcept {
+        return k + 1 == count ? last_time : static_cast<double>(k) * interval;
+    }
+};
+
+/// Relative tolerance for "dt divides the frame interval": far above rounding (1e-16) and far
+/// below anything a viewer could see.
+inline constexpr double divide_tolerance = 1e-6;
+
+/// The time of the time-driven engine's last whole step at or before frame time t: the naive
+/// method only has states at multiples of dt, so a frame shows its latest step rather than
+/// shortening steps to land on frame times (which would hide the tunnelling a large dt causes).
+/// Returns t itself when t is a whole number of steps (relative tolerance 1e-6).
+[[nodiscard]] double last_step_time(double t, double dt) noexcept;
+
+/// True when `dt` divides `interval` into a whole number of steps (relative tolerance 1e-6),
+/// i.e. the time-driven engine lands on every frame time without a shorter final step.
+[[nodiscard]] bool divides(double dt, double interval) noexcept;
+
+/// Panel titles of the full level.
+[[nodiscard]] std::string time_panel_title(double dt);
+[[nodiscard]] std::string event_panel_title(const EngineOptions& options);
+/// Lesson-level titles, in plain words.
+[[nodiscard]] std::string time_lesson_title(double dt);
+[[nodiscard]] std::string event_lesson_title(const EngineOptions& options);
+/// The title of a panel at an overlay level (the lesson's plain words, else the full level's).
+[[nodiscard]] std::string panel_title(bool time_driven, OverlayLevel level,
+                                      const EngineOptions& options);
+/// The note under the time-driven figures when dt is longer than a frame (empty otherwise).
+[[nodiscard]] std::string step_note(double dt, double frame_interval);
+
+/// "1.23k", "4.56M": short counts for on-screen counters; beyond 10^12, and for fractions below
+/// one, three significant digits ("2.39e+17", "0.00042"), so that no count outgrows its column.
+[[nodiscard]] std::string short_count(double value);
+
+/// The on-screen clock "t = 12.345   (1/s)": three decimals while they tell one frame from the
+/// next and stay short (frame interval >= 1e-3, last frame before 1e6), else as many significant
+/// digits as tell frames apart ("t = 4.9667e-11"): scenes in SI units span picoseconds, and
+/// scenes in astronomical units 1e45 time units.
+[[nodiscard]] std::string clock_label(double t, const FrameClock& clock, double speed);
+/// The clock as a level shows it: the lesson column is narrow and the playback rate is no
+/// lesson, so it shows the time alone ("t = 12.345"); the full level adds the rate.
+[[nodiscard]] std::string clock_text(double t, const FrameClock& clock, double speed,
+                                     OverlayLevel level);
+
+/// The on-screen counter lines of one engine (full level).
+[[nodiscard]] std::vector<std::string> time_driven_counters(const Measurements& m,
+                                                            double energy_drift);
+[[nodiscard]] std::vector<std::string> event_driven_counters(const Measurements& m,
+                                                             double energy_drift);
+
+/// The lesson level's figures in plain words. `walls`: the box has walls (discs can leave it).
+[[nodiscard]] std::vector<Figure> time_driven_figures(const Measurements& m, bool walls);
+[[nodiscard]] std::vector<Figure> event_driven_figures(const Measurements& m);
+
+/// Below this relative drift the energy is conserved up to round-off.
+inline constexpr double round_off_drift = 1e-9;
+/// The lesson level's energy line ("Energy conserved" while the largest drift so far is
+/// round-off).
+[[nodiscard]] std::string energy_line(double largest_drift);
+
+/// What one panel says at one frame, from its engine's measurements.
+struct PanelWords {
+    std::vector<std::string> counters;  ///< full level
+    std::vector<Figure> figures;        ///< lesson level
+    std::string compact_line;           ///< compact lesson form: the one line
+    std::string cost_label;             ///< the cost graphic's label
+    double cost = 0.0;                  ///< the work it counts ("pair tests", "queue steps")
+};
+/// `drift`: the relative energy drift now; `walls`: the box has walls.
+[[nodiscard]] PanelWords panel_words(const Measurements& m, bool time_driven, bool walls,
+                                     double drift);
+
+/// The scene's story and the lesson level's choices, resolved once for the whole video.
+struct LessonPlan {
+    std::string title;                 ///< the intro card's title
+    std::string description;           ///< the intro card's text
+    double intro_seconds = 0.0;        ///< how long the card shows (0: none; videos only)
+    std::string caption;               ///< [render] caption, shown when no scripted caption applies
+    std::vector<CaptionCue> captions;  ///< [[render.captions]] within the video
+    PlotSize histogram = PlotSize::none;
+    int frames_per_step = 1;  ///< time-driven: frames per dt when dt is longer than a frame
+
+    /// The caption at `video_seconds`: the last cue at or before it, else `caption`.
+    [[nodiscard]] const std::string& caption_at(double video_seconds) const noexcept;
+    /// Opacity of the intro card at `video_seconds` (1, fading to 0 over its last half second).
+    [[nodiscard]] float intro_opacity(double video_seconds) const noexcept;
+};
+
+/// Seconds of the intro card: about 2 s, at most a quarter of a short video.
+inline constexpr double intro_seconds = 2.0;
+
+/// The captions a video shows, each with where it was written (for an error naming it): the
+/// caption line a whole frame wide must hold every one of them.
+struct CaptionSource {
+    std::string text;
+    std::string file;   ///< "" when not read from a file
+    int line = 0;
+    std::string field;  ///< "render.caption", "render.captions.text" or the caption's file:line
+};
+/// `scene_caption_at`: the scene's RenderHints::caption_at ("file:line: render.caption"), if any.
+[[nodiscard]] std::vector<CaptionSource> captions_shown(const LessonPlan& lesson,
+                                                        const std::string& scene_caption_at);
+
+/// The queue picture's budget (`--queue K`): what fits legibly in a strip under a 720p video.
+/// A heap's tree down to the deepest level with at most 8 nodes and at most 3 levels, an array
+/// queue's first 10 slots, and the next `next_events` collisions in the box.
+inline constexpr std::size_t queue_tree_level_nodes = 8;
+inline constexpr unsigned queue_tree_levels = 3;
+inline constexpr std::size_t queue_array_slots = 10;
+[[nodiscard]] QueueViewLimits queue_picture(std::size_t next_events) noexcept;
+
+/// The queue strip's words for `queue`: the fast engine (one event per disc) re-predicts a
+/// stale event, the classic engine throws it away.
+[[nodiscard]] QueueWords queue_words(const QueueView& queue);
+
+}  // namespace collide::show

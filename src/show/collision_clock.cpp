@@ -1,0 +1,55 @@
+// The collision video's clock: frame times, the time-driven engine's steps between them, and the
+// clock a class reads.
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "collide/show/collision.hpp"
+
+namespace collide::show {
+
+namespace {
+bool positive_finite(double x) {
+    return std::isfinite(x) && x > 0.0;
+}
+}  // namespace
+
+double last_step_time(double t, double dt) noexcept {
+    if (!positive_finite(dt) || !(t > 0.0)) return t > 0.0 ? t : 0.0;
+    const double steps = std::floor(t / dt * (1.0 + divide_tolerance));
+    const double step_time = steps * dt;
+    // A frame time that is a whole number of steps (within rounding) is returned exactly.
+    if (std::abs(step_time - t) <= divide_tolerance * dt) return t;
+    return std::min(step_time, t);
+}
+
+bool divides(double dt, double interval) noexcept {
+    if (!positive_finite(dt) || !positive_finite(interval)) return false;
+    const double steps = interval / dt;
+    return std::abs(steps - std::round(steps)) <= divide_tolerance * std::max(1.0, steps);
+}
+
+namespace {
+/// "t = 12.345": the time part of the clock.
+std::string time_part(double t, const FrameClock& clock) {
+    if (clock.interval >= 1e-3 && clock.last_time < 1e6) return fmt::format("t = {:.3f}", t);
+    // Enough significant digits for consecutive frames to differ: one per decade from the frame
+    // interval up to the last frame's time, and two more.
+    const double decades =
+        clock.last_time > clock.interval ? std::log10(clock.last_time / clock.interval) : 0.0;
+    const int digits = std::clamp(static_cast<int>(std::ceil(decades)) + 2, 4, 15);
+    return fmt::format("t = {:.{}g}", t, digits);
+}
+}  // namespace
+
+std::string clock_label(double t, const FrameClock& clock, double speed) {
+    return fmt::format("{}   ({:.3g}/s)", time_part(t, clock), speed);
+}
+
+std::string clock_text(double t, const FrameClock& clock, double speed, OverlayLevel level) {
+    // The lesson's column is narrow and the playback rate is no lesson: just the time.
+    return level == OverlayLevel::lesson ? time_part(t, clock) : clock_label(t, clock, speed);
+}
+
+}  // namespace collide::show

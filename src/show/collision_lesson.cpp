@@ -1,0 +1,37 @@
+// The collision video's lesson timeline: the intro card and the captions over the video.
+#include <algorithm>
+
+#include "collide/show/collision.hpp"
+
+namespace collide::show {
+
+const std::string& LessonPlan::caption_at(double video_seconds) const noexcept {
+    const std::string* current = &caption;
+    for (const CaptionCue& cue : captions) {
+        if (cue.at > video_seconds) break;
+        current = &cue.text;
+    }
+    return *current;
+}
+
+float LessonPlan::intro_opacity(double video_seconds) const noexcept {
+    if (!(intro_seconds > 0.0) || video_seconds >= intro_seconds) return 0.0F;
+    const double fade = std::min(0.5, 0.5 * intro_seconds);
+    return static_cast<float>(std::clamp((intro_seconds - video_seconds) / fade, 0.0, 1.0));
+}
+
+std::vector<CaptionSource> captions_shown(const LessonPlan& lesson,
+                                          const std::string& scene_caption_at) {
+    std::vector<CaptionSource> out;
+    if (!lesson.caption.empty()) {
+        // caption_at is "file:line: render.caption" (empty for a caption not read from a file).
+        out.push_back({lesson.caption, "", 0,
+                       scene_caption_at.empty() ? "render.caption" : scene_caption_at});
+    }
+    for (const CaptionCue& cue : lesson.captions) {
+        out.push_back({cue.text, cue.file, cue.line, "render.captions.text"});
+    }
+    return out;
+}
+
+}  // namespace collide::show

@@ -1,0 +1,176 @@
+// The collision video's words: titles, counters, figures, the compact line, the cost graphic's
+// label, the step note and the energy line.
+#include <fmt/core.h>
+
+#include <cmath>
+#include <cstdint>
+
+#include "collide/number_text.hpp"
+#include "collide/show/collision.hpp"
+#include "collide/sim/pq/queue_kind.hpp"
+
+namespace collide::show {
+
+std::string time_lesson_title(double dt) {
+    return fmt::format("Time-driven: steps of dt = {:.3g}", dt);
+}
+
+std::string event_lesson_title(const EngineOptions& options) {
+    if (options.engine == EngineKind::classic)
+        return fmt::format("Event-driven: queue ({})", pq::to_string(options.pq));
+    return "Event-driven: priority queue";
+}
+
+std::string time_panel_title(double dt) {
+    return fmt::format("Time-driven, dt = {:.3g}", dt);
+}
+
+std::string event_panel_title(const EngineOptions& options) {
+    if (options.engine == EngineKind::classic)
+        return fmt::format("Event-driven (priority queue: {})", pq::to_string(options.pq));
+    return "Event-driven (priority queue)";
+}
+
+std::string panel_title(bool time_driven, OverlayLevel level, const EngineOptions& options) {
+    const bool lesson = level == OverlayLevel::lesson;
+    if (time_driven) return lesson ? time_lesson_title(options.dt) : time_panel_title(options.dt);
+    return lesson ? event_lesson_title(options) : event_panel_title(options);
+}
+
+std::string step_note(double dt, double frame_interval) {
+    if (!(dt > frame_interval * (1.0 + 1e-6))) return {};
+    const double frames = dt / frame_interval;
+    if (divides(frame_interval, dt)) {
+        const long n = std::lround(frames);
+        const char* suffix = n % 10 == 2 && n % 100 != 12   ? "nd"
+                             : n % 10 == 3 && n % 100 != 13 ? "rd"
+                                                            : "th";
+        return fmt::format("Moves only every {}{} frame", n, suffix);
+    }
+    return fmt::format("Moves only every {:.2g} frames", frames);
+}
+
+std::string short_count(double value) {
+    const double magnitude = std::abs(value);
+    if (magnitude >= 1e12 || (magnitude > 0.0 && magnitude < 1.0))
+        return fmt::format("{:.3g}", value);
+    if (magnitude >= 1e9) return fmt::format("{:.2f}G", value / 1e9);
+    if (magnitude >= 1e6) return fmt::format("{:.2f}M", value / 1e6);
+    if (magnitude >= 1e4) return fmt::format("{:.1f}k", value / 1e3);
+    return fmt::format("{:.0f}", value);
+}
+
+std::vector<std::string> time_driven_counters(const Measurements& m, double energy_drift) {
+    // Short "label  value" pairs: the renderer lays them out in a grid of narrow columns.
+    return {
+        fmt::format("steps  {}", short_count(static_cast<double>(m.steps))),
+        fmt::format("checks  {}", short_count(static_cast<double>(m.overlap_checks))),
+        fmt::format("collisions  {}",
+                    short_count(static_cast<double>(m.collisions_pair + m.collisions_wall))),
+        fmt::format("overlaps now  {}", m.overlapping_pairs),
+        fmt::format("deepest  {:.2g}", m.max_overlap),
+        fmt::format("missed  {}", m.missed_collisions),
+        fmt::format("escaped  {}", m.escaped),
+        fmt::format("energy drift  {:+.1e}", energy_drift),
+        fmt::format("checks/time  {}",
+                    m.t > 0.0 ? short_count(static_cast<double>(m.overlap_checks) / m.t) : "-"),
+    };
+}
+
+std::vector<std::string> event_driven_counters(const Measurements& m, double energy_drift) {
+    const std::uint64_t queue_ops = m.queue.pushes + m.queue.pops;
+    const double stale_share = m.queue.pops > 0 ? 100.0 * static_cast<double>(m.queue.stale_pops) /
+                                                      static_cast<double>(m.queue.pops)
+                                                : 0.0;
+    const double work = static_cast<double>(m.predictions + queue_ops);
+    return {
+        fmt::format("events  {}", short_count(static_cast<double>(m.events))),
+        fmt::format("collisions  {}",
+                    short_count(static_cast<double>(m.collisions_pair + m.collisions_wall))),
+        fmt::format("predictions  {}", short_count(static_cast<double>(m.predictions))),
+        fmt::format("queue ops  {}", short_count(static_cast<double>(queue_ops))),
+        fmt::format("queue max  {}", m.queue.max_size),
+        fmt::format("stale pops  {:.0f}%", stale_share),
+        fmt::format("overlaps now  {}", m.max_overlap > 0.0 ? "yes" : "0"),
+        fmt::format("energy drift  {:+.1e}", energy_drift),
+        fmt::format("ops/time  {}", m.t > 0.0 ? short_count(work / m.t) : "-"),
+    };
+}
+
+namespace {
+std::string count_text(std::uint64_t n) {
+    return with_separators(static_cast<long long>(n));
+}
+}  // namespace
+
+std::vector<Figure> time_driven_figures(const Measurements& m, bool walls) {
+    std::vector<Figure> out = {
+        {count_text(m.missed_collisions), "missed", true},
+        {count_text(m.overlapping_pairs), "overlapping", true},
+    };
+    if (walls && m.escaped > 0) out.push_back({count_text(m.escaped), "left the box", true});
+    out.push_back({count_text(m.collisions_pair + m.collisions_wall), "collisions", false});
+    return out;
+}
+
+std::vector<Figure> event_driven_figures(const Measurements& m) {
+    return {
+        {count_text(m.collisions_pair + m.collisions_wall), "collisions", false},
+        {"0", "missed", true},
+    };
+}
+
+std::string energy_line(double largest_drift) {
+    return largest_drift <= round_off_drift ? "Energy conserved" : "Energy not conserved";
+}
+
+PanelWords panel_words(const Measurements& m, bool time_driven, bool walls, double drift) {
+    PanelWords out;
+    if (time_driven) {
+        out.counters = time_driven_counters(m, drift);
+        out.figures = time_driven_figures(m, walls);
+        out.compact_line = fmt::format("{} missed", count_text(m.missed_collisions));
+        out.cost_label = "pair tests";
+        out.cost = static_cast<double>(m.overlap_checks);
+    } else {
+        out.counters = event_driven_counters(m, drift);
+        out.figures = event_driven_figures(m);
+        out.compact_line =
+            fmt::format("{} collisions", count_text(m.collisions_pair + m.collisions_wall));
+        out.cost_label = "queue steps";
+        out.cost = static_cast<double>(m.queue.pushes + m.queue.pops);
+    }
+    return out;
+}
+
+QueueViewLimits queue_picture(std::size_t next_events) noexcept {
+    QueueViewLimits limits;
+    limits.next_events = next_events;
+    limits.tree_level_nodes = queue_tree_level_nodes;
+    limits.tree_levels = queue_tree_levels;
+    limits.array_slots = queue_array_slots;
+    return limits;
+}
+
+QueueWords queue_words(const QueueView& queue) {
+    const auto separated = [](std::uint64_t n) { return with_separators(static_cast<long long>(n)); };
+    QueueWords out;
+    out.heading = fmt::format("Event queue: {}, {} entries", queue.name, separated(queue.size));
+    if (queue.one_per_disc) {
+        out.heading += " (one per disc)";
+    } else if (queue.stale_entries > 0) {
+        out.heading += fmt::format(", {} stale", separated(queue.stale_entries));
+    }
+    out.legend =
+        fmt::format("In the box: the next {} collisions queued, time to go", queue.next.size());
+    out.stale_popped = queue.one_per_disc ? "  stale: re-predict" : "  stale: thrown away";
+    out.stale_leaving = "thrown away";
+    out.counts = queue.one_per_disc
+                     ? fmt::format("{} pops, {} stale", separated(queue.pops),
+                                   separated(queue.stale_pops))
+                     : fmt::format("{} of {} pops stale", separated(queue.stale_pops),
+                                   separated(queue.pops));
+    return out;
+}
+
+}  // namespace collide::show

@@ -1,0 +1,193 @@
+// The collision video's program (collide/show/collision.hpp): titles, counters, figures, the
+// clock and the energy line, as pure functions of measurements and the frame clock.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "collide/show/collision.hpp"
+#include "collide/sim/pq/queue_kind.hpp"
+
+using namespace collide;
+using namespace collide::show;
+
+namespace {
+
+/// The clock of a video of `seconds` at `fps` frames per second and `speed` (as the app's
+/// video_clock makes it).
+FrameClock clock_of(double seconds, double speed, int fps) {
+    FrameClock clock;
+    clock.interval = speed / fps;
+    clock.count = std::llround(seconds * fps);
+    clock.last_time = static_cast<double>(clock.count - 1) * clock.interval;
+    return clock;
+}
+
+}  // namespace
+
+TEST_CASE("on-screen counters are deterministic counts, the same for the same measurements") {
+    Measurements m;
+    m.t = 2.0;
+    m.steps = 200;
+    m.overlap_checks = 1'000'000;
+    m.missed_collisions = 7;
+    m.escaped = 2;
+    const auto td = time_driven_counters(m, 1e-3);
+    CHECK(td == time_driven_counters(m, 1e-3));
+    const auto joined = [](const std::vector<std::string>& lines) {
+        std::string all;
+        for (const auto& l : lines) all += l + "\n";
+        return all;
+    };
+    CHECK(joined(td).find("missed  7") != std::string::npos);
+    CHECK(joined(td).find("escaped  2") != std::string::npos);
+    CHECK(joined(event_driven_counters(m, 0.0)).find("events") != std::string::npos);
+}
+
+TEST_CASE("short counts stay short at any magnitude") {
+    CHECK(short_count(0.0) == "0");
+    CHECK(short_count(999.0) == "999");
+    CHECK(short_count(12'345.0) == "12.3k");
+    CHECK(short_count(4.56e6) == "4.56M");
+    CHECK(short_count(7.5e9) == "7.50G");
+    // Per unit of time in scenes written in SI units (picoseconds): no 20-digit "G" counts.
+    CHECK(short_count(2.394e17) == "2.39e+17");
+    CHECK(short_count(4.2e-4) == "0.00042");
+    CHECK(short_count(-3e13) == "-3e+13");
+}
+
+TEST_CASE("the on-screen clock resolves one frame interval, whatever the units") {
+    // Built-in scenes: three decimals, as in every video so far.
+    CHECK(clock_label(12.3456, clock_of(10.0, 1.0, 30), 1.0) == "t = 12.346   (1/s)");
+    // An argon scene in SI units: the video spans 5e-11 s, frames 3.3e-13 s apart.
+    const FrameClock si = clock_of(10.0, 5e-12, 15);
+    CHECK(clock_label(si.time(149), si, 5e-12) == "t = 4.9667e-11   (5e-12/s)");
+    // Huge units: no 46-digit clock.
+    const FrameClock huge = clock_of(10.0, 7e44, 15);
+    CHECK(clock_label(huge.time(149), huge, 7e44) == "t = 6.9533e+45   (7e+44/s)");
+    // Long runs in ordinary units: as many digits as it takes.
+    const FrameClock long_run = clock_of(600.0, 1e4, 30);
+    CHECK(clock_label(long_run.time(12345), long_run, 1e4) == "t = 4115000   (1e+04/s)");
+    for (const FrameClock& clock : {si, huge, long_run}) {
+        for (std::int64_t k = 1; k < clock.count; ++k) {
+            CAPTURE(k);
+            REQUIRE(clock_label(clock.time(k - 1), clock, 1.0) !=
+                    clock_label(clock.time(k), clock, 1.0));
+        }
+    }
+}
+
+TEST_CASE("the lesson column shows the time alone, the full level its rate too") {
+    const FrameClock clock = clock_of(10.0, 1.0, 30);
+    CHECK(clock_text(2.5, clock, 1.0, OverlayLevel::lesson) == "t = 2.500");
+    CHECK(clock_text(2.5, clock, 1.0, OverlayLevel::full) == "t = 2.500   (1/s)");
+    const FrameClock si = clock_of(10.0, 5e-12, 15);
+    CHECK(clock_text(si.time(149), si, 5e-12, OverlayLevel::lesson) == "t = 4.9667e-11");
+}
+
+TEST_CASE("panel titles: plain words at the lesson level, the queue named for the classic engine") {
+    EngineOptions classic;
+    classic.engine = EngineKind::classic;
+    classic.pq = pq::parse_queue_kind("binary");
+    EngineOptions time;
+    time.engine = EngineKind::time;
+    time.dt = 0.0125;
+    CHECK(panel_title(true, OverlayLevel::lesson, time) == "Time-driven: steps of dt = 0.0125");
+    CHECK(panel_title(true, OverlayLevel::full, time) == "Time-driven, dt = 0.0125");
+    CHECK(panel_title(false, OverlayLevel::lesson, classic).rfind("Event-driven: queue (", 0) == 0);
+    CHECK(panel_title(false, OverlayLevel::none, EngineOptions{}) ==
+          "Event-driven (priority queue)");
+}
+
+TEST_CASE("lesson figures are plain words with thousands separators") {
+    Measurements m;
+    m.missed_collisions = 12345;
+    m.overlapping_pairs = 3;
+    m.escaped = 0;
+    m.collisions_pair = 1000000;
+    const auto td = time_driven_figures(m, true);
+    REQUIRE(td.size() == 3);  // nobody left the box: no "left the box" figure yet
+    CHECK(td[0].value == "12,345");
+    CHECK(td[0].label == "missed");
+    CHECK(td[0].failure);
+    CHECK(td[2].value == "1,000,000");
+    m.escaped = 4;
+    CHECK(time_driven_figures(m, true).size() == 4);
+    CHECK(time_driven_figures(m, false).size() == 3);  // periodic boxes have nothing to leave
+    const auto ed = event_driven_figures(m);
+    CHECK(ed[0].value == "1,000,000");
+    CHECK(ed[1].value == "0");
+}
+
+TEST_CASE("each panel's words: the time-driven one counts pair tests, the event-driven one queue steps") {
+    Measurements m;
+    m.missed_collisions = 1234;
+    m.overlap_checks = 500;
+    m.collisions_pair = 40;
+    m.collisions_wall = 2;
+    m.queue.pushes = 70;
+    m.queue.pops = 30;
+    const PanelWords td = panel_words(m, true, true, 0.0);
+    CHECK(td.compact_line == "1,234 missed");
+    CHECK(td.cost_label == "pair tests");
+    CHECK(td.cost == 500.0);
+    CHECK(td.counters == time_driven_counters(m, 0.0));
+    const PanelWords ed = panel_words(m, false, true, 0.0);
+    CHECK(ed.compact_line == "42 collisions");
+    CHECK(ed.cost_label == "queue steps");
+    CHECK(ed.cost == 100.0);
+    CHECK(energy_line(0.0) == "Energy conserved");
+    CHECK(energy_line(round_off_drift) == "Energy conserved");
+    CHECK(energy_line(1e-6) == "Energy not conserved");
+}
+
+TEST_CASE("the queue strip's words: the fast engine re-predicts, the classic one throws away") {
+    QueueView q;
+    q.name = "binary heap";
+    q.size = 1234;
+    q.stale_entries = 56;
+    q.next.resize(5);
+    q.pops = 40;
+    q.stale_pops = 3;
+    const QueueWords classic = queue_words(q);
+    CHECK(classic.heading == "Event queue: binary heap, 1,234 entries, 56 stale");
+    CHECK(classic.legend == "In the box: the next 5 collisions queued, time to go");
+    CHECK(classic.stale_popped == "  stale: thrown away");
+    CHECK(classic.counts == "3 of 40 pops stale");
+    q.one_per_disc = true;
+    const QueueWords fast = queue_words(q);
+    CHECK(fast.heading == "Event queue: binary heap, 1,234 entries (one per disc)");
+    CHECK(fast.stale_popped == "  stale: re-predict");
+    CHECK(fast.counts == "40 pops, 3 stale");
+}
+
+TEST_CASE("the queue picture's budget is the video's, the number of events the caller's") {
+    const QueueViewLimits limits = queue_picture(7);
+    CHECK(limits.next_events == 7);
+    CHECK(limits.tree_level_nodes == queue_tree_level_nodes);
+    CHECK(limits.tree_levels == queue_tree_levels);
+    CHECK(limits.array_slots == queue_array_slots);
+}
+
+TEST_CASE("the captions to fit: the scene's caption and every cue, each named where written") {
+    LessonPlan lesson;
+    CHECK(captions_shown(lesson, "").empty());
+    lesson.caption = "Always";
+    lesson.captions = {{2.0, "From two", "s.toml", 7}};
+    const std::vector<CaptionSource> shown = captions_shown(lesson, "s.toml:3: render.caption");
+    REQUIRE(shown.size() == 2);
+    CHECK(shown[0].text == "Always");
+    CHECK(shown[0].field == "s.toml:3: render.caption");
+    CHECK(shown[1].file == "s.toml");
+    CHECK(shown[1].line == 7);
+    CHECK(shown[1].field == "render.captions.text");
+    CHECK(captions_shown(lesson, "")[0].field == "render.caption");
+    // The timeline: the caption until the first cue, the intro card fading out at its end.
+    CHECK(lesson.caption_at(1.0) == "Always");
+    CHECK(lesson.caption_at(2.0) == "From two");
+    lesson.intro_seconds = intro_seconds;
+    CHECK(lesson.intro_opacity(0.0) == 1.0F);
+    CHECK(lesson.intro_opacity(intro_seconds) == 0.0F);
+}
