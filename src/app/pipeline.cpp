@@ -127,7 +127,7 @@ void check_captions_fit(const Scene& scene, const RenderPlan& plan) {
         if (text.empty()) return;
         const render::CaptionFit fit = render::fit_caption(plan.render, text);
         if (fit.fits) return;
-        throw_input_error(
+        throw_scene_error(
             file, line, field,
             fmt::format("too long for the caption line of a {}x{} frame: {} of its characters "
                         "fit (a wider --size, or a shorter caption)",
@@ -183,11 +183,6 @@ std::vector<std::string> event_driven_counters(const Measurements& m, double ene
         fmt::format("energy drift  {:+.1e}", energy_drift),
         fmt::format("ops/time  {}", m.t > 0.0 ? short_count(work / m.t) : "-"),
     };
-}
-
-std::vector<std::string> comparison_notes(RenderMode /*mode*/) {
-    // The chaos remark belongs to the scenes that need it (their own captions), not every video.
-    return {};
 }
 
 namespace {
@@ -285,9 +280,7 @@ std::vector<Measurements> FrameSource::measurements() const {
 // ------------------------------------------------------------------------------------------------
 // Render side
 
-FrameComposer::FrameComposer(const RenderPlan& plan) : plan_(plan) {
-    content_.notes = comparison_notes(plan.mode);
-}
+FrameComposer::FrameComposer(const RenderPlan& plan) : plan_(plan) {}
 
 const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
     const LessonPlan& lesson = plan_.lesson;

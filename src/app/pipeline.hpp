@@ -80,8 +80,6 @@ class FrameSource {
                                                             double energy_drift);
 [[nodiscard]] std::vector<std::string> event_driven_counters(const Measurements& m,
                                                              double energy_drift);
-/// The notice lines under a side-by-side frame: why the pictures differ, what to compare.
-[[nodiscard]] std::vector<std::string> comparison_notes(RenderMode mode);
 
 /// The lesson level's figures in plain words (pure: unit-tested). `walls`: the box has walls
 /// (discs can leave it).

@@ -248,9 +248,6 @@ TEST_CASE("on-screen counters are deterministic counts, the same for the same me
     CHECK(joined(td).find("missed  7") != std::string::npos);
     CHECK(joined(td).find("escaped  2") != std::string::npos);
     CHECK(joined(event_driven_counters(m, 0.0)).find("events") != std::string::npos);
-    // No global remark: a scene that needs the chaos remark says so in its own caption.
-    CHECK(comparison_notes(RenderMode::both).empty());
-    CHECK(comparison_notes(RenderMode::event).empty());
 }
 
 TEST_CASE("short counts stay short at any magnitude") {
