@@ -27,9 +27,11 @@ class Error : public std::runtime_error {
     ErrorKind kind_;
 };
 
-/// Throws an input error about a place in a scene file (or another file the user named):
+/// The field-error helper: throws an input error about one field of what the user gave, at a
+/// place in a scene file (or another file the user named) when that is known:
 /// "file:line: field: reason" (parts left empty/zero are omitted), e.g.
-/// "gas.toml:12: generate[0].radius: must be > 0 (got -1)".
+/// "gas.toml:12: generate[0].radius: must be > 0 (got -1)", or "until: the end time must be
+/// finite" for a field with no file (a config field, an argument the app maps to its option).
 [[noreturn]] inline void throw_scene_error(const std::string& file, int line,
                                            const std::string& field, const std::string& reason) {
     std::string msg = file;
@@ -37,13 +39,6 @@ class Error : public std::runtime_error {
     if (!field.empty()) msg += (msg.empty() ? "" : ": ") + field;
     msg += (msg.empty() ? "" : ": ") + reason;
     throw Error(ErrorKind::input, msg);
-}
-
-/// The same as throw_scene_error, for code outside src/app and src/scene that has not moved to
-/// the two helpers yet.
-[[noreturn]] inline void throw_input_error(const std::string& file, int line,
-                                           const std::string& field, const std::string& reason) {
-    throw_scene_error(file, line, field, reason);
 }
 
 /// Throws an input error about an option's value: "OPTION: expected EXPECTED, got 'VALUE'", e.g.

@@ -83,7 +83,7 @@ void check_captions_fit(const Scene& scene, const RenderPlan& plan) {
         if (text.empty()) return;
         const render::CaptionFit fit = render::fit_caption(plan.render, text);
         if (fit.fits) return;
-        throw_input_error(
+        throw_scene_error(
             file, line, field,
             fmt::format("too long for the caption line of a {}x{} frame: {} of its characters "
                         "fit (a wider --size, or a shorter caption)",
@@ -99,11 +99,6 @@ void check_captions_fit(const Scene& scene, const RenderPlan& plan) {
 
 // ------------------------------------------------------------------------------------------------
 // Simulation side
-
-std::vector<std::string> comparison_notes(RenderMode /*mode*/) {
-    // The chaos remark belongs to the scenes that need it (their own captions), not every video.
-    return {};
-}
 
 FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan, const std::atomic<bool>* stop)
     : plan_(plan) {
@@ -163,9 +158,7 @@ std::vector<Measurements> FrameSource::measurements() const {
 // ------------------------------------------------------------------------------------------------
 // Render side
 
-FrameComposer::FrameComposer(const RenderPlan& plan) : plan_(plan) {
-    content_.notes = comparison_notes(plan.mode);
-}
+FrameComposer::FrameComposer(const RenderPlan& plan) : plan_(plan) {}
 
 const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
     const LessonPlan& lesson = plan_.lesson;

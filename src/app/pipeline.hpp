@@ -75,8 +75,6 @@ class FrameSource {
     std::vector<Panel> panels_;
 };
 
-/// The notice lines under a side-by-side frame: why the pictures differ, what to compare.
-[[nodiscard]] std::vector<std::string> comparison_notes(RenderMode mode);
 
 /// Turns SimFrames into the renderer's FrameContent (render thread), keeping each panel's energy
 /// drift series across frames. The content points into the SimFrame, which must outlive its use.

@@ -9,8 +9,8 @@
 namespace collide::render {
 
 /// OSMesa core-profile context (built when COLLIDE_HAVE_OSMESA). Throws collide::Error (runtime)
-/// when Mesa refuses.
-[[nodiscard]] std::unique_ptr<Context> make_osmesa_context(int width, int height);
+/// when Mesa refuses. No size: every frame goes to the renderer's own framebuffer.
+[[nodiscard]] std::unique_ptr<Context> make_osmesa_context();
 
 /// EGL core-profile context without a surface (built when COLLIDE_HAVE_EGL): Backend::egl takes a
 /// hardware GPU device when there is one, else Mesa's surfaceless platform; Backend::egl_device

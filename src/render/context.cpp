@@ -93,7 +93,7 @@ std::unique_ptr<Context> make_context(Backend backend, int width, int height,
     switch (backend) {
         case Backend::osmesa:
 #if COLLIDE_HAVE_OSMESA
-            return make_osmesa_context(width, height);
+            return make_osmesa_context();
 #else
             break;
 #endif

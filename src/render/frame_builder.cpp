@@ -9,6 +9,7 @@
 #include <functional>
 #include <limits>
 
+#include "collide/assert.hpp"
 #include "collide/error.hpp"
 #include "plots.hpp"
 
@@ -125,11 +126,6 @@ const FontAtlas& FrameBuilder::atlas(Font font) const {
     return *body_font_;
 }
 
-void FrameBuilder::reset_history() {
-    for (TrailHistory& trail : trails_) trail.reset();
-    for (MarkerMemory& memory : markers_) memory.reset();
-}
-
 FrameLayout FrameBuilder::layout_for(const FrameContent& frame) const {
     LayoutInput input;
     input.width = config_.width;
@@ -156,12 +152,9 @@ FrameLayout FrameBuilder::layout_for(const FrameContent& frame) const {
 }
 
 const DrawList& FrameBuilder::build(const FrameContent& frame) {
-    if (frame.panels.empty() || frame.panels.size() > 2) {
-        throw_input_error("render: a frame needs 1 or 2 panels, got " +
-                          std::to_string(frame.panels.size()));
-    }
+    COLLIDE_ASSERT(!frame.panels.empty() && frame.panels.size() <= 2, "a frame has 1 or 2 panels");
     for (const PanelContent& panel : frame.panels) {
-        if (panel.snapshot == nullptr) throw_input_error("render: a panel has no snapshot");
+        COLLIDE_ASSERT(panel.snapshot != nullptr, "every panel has a snapshot");
     }
     list_.clear();
     video_time_ = frame.video_time;

@@ -69,7 +69,6 @@ class FrameBuilder {
     /// The layout a frame would get (same rules as build, nothing drawn).
     [[nodiscard]] FrameLayout layout_for(const FrameContent& frame) const;
     [[nodiscard]] const RenderConfig& config() const noexcept { return config_; }
-    void reset_history();
 
   private:
     enum class Font { body, head, small };

@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 
+#include "collide/assert.hpp"
 #include "collide/error.hpp"
 #include "collide/render/renderer.hpp"
 #include "draw_list.hpp"
@@ -236,17 +237,16 @@ struct HeapRenderer::Impl {
 
     // ------------------------------------------------------------------ frame
 
-    void check(const view::HeapFrameView& frame) const {
-        if (frame.panels.empty() || frame.panels.size() > max_heap_panels) {
-            throw_input_error("heap view: a frame needs 1 to " + std::to_string(max_heap_panels) +
-                              " panels, got " + std::to_string(frame.panels.size()));
-        }
+    /// What the caller promises about a frame (the views come from collide's own code, never
+    /// from the user): a broken promise is a bug, caught by COLLIDE_ASSERT.
+    static void check(const view::HeapFrameView& frame) {
+        COLLIDE_ASSERT(!frame.panels.empty() && frame.panels.size() <= max_heap_panels,
+                       "a heap frame has 1 to max_heap_panels panels");
         for (const view::HeapPanelView& p : frame.panels) {
-            if (p.slots.size() > p.capacity)
-                throw_input_error("heap view: more slots than the panel's capacity");
-            if (p.swap && (p.swap->a >= p.slots.size() || p.swap->b >= p.slots.size()))
-                throw_input_error("heap view: an exchange of slots that do not exist");
-            if (p.tree && p.arity < 2) throw_input_error("heap view: a tree needs arity >= 2");
+            COLLIDE_ASSERT(p.slots.size() <= p.capacity, "no more slots than the capacity");
+            COLLIDE_ASSERT(!p.swap || (p.swap->a < p.slots.size() && p.swap->b < p.slots.size()),
+                           "an exchange of slots that exist");
+            COLLIDE_ASSERT(!p.tree || p.arity >= 2, "a tree has arity >= 2");
         }
     }
 

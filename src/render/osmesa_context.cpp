@@ -5,6 +5,7 @@
 
 #include <array>
 #include <memory>
+#include <type_traits>
 #include <vector>
 
 #include "backends.hpp"
@@ -34,22 +35,22 @@ class OsmesaContext final : public Context {
                                                 OSMESA_CONTEXT_MINOR_VERSION,
                                                 3,
                                                 0};
-        context_ = OSMesaCreateContextAttribs(attributes.data(), nullptr);
+        // Owned from here on, so that a failure below (make_current) does not leak it.
+        context_.reset(OSMesaCreateContextAttribs(attributes.data(), nullptr));
         if (context_ == nullptr) {
             throw_runtime_error("OSMesa: failed to create a GL 3.3 core-profile context");
         }
         buffer_.assign(static_cast<std::size_t>(binding_buffer_size) * binding_buffer_size, 0);
         make_current();
     }
-    ~OsmesaContext() override { OSMesaDestroyContext(context_); }
     OsmesaContext(const OsmesaContext&) = delete;
     OsmesaContext& operator=(const OsmesaContext&) = delete;
 
     [[nodiscard]] Backend backend() const noexcept override { return Backend::osmesa; }
 
     void make_current() override {
-        if (!OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, binding_buffer_size,
-                               binding_buffer_size)) {
+        if (!OSMesaMakeCurrent(context_.get(), buffer_.data(), GL_UNSIGNED_BYTE,
+                               binding_buffer_size, binding_buffer_size)) {
             throw_runtime_error("OSMesa: failed to make the context current");
         }
     }
@@ -59,13 +60,16 @@ class OsmesaContext final : public Context {
     }
 
   private:
-    OSMesaContext context_ = nullptr;
+    struct Destroy {
+        void operator()(OSMesaContext context) const noexcept { OSMesaDestroyContext(context); }
+    };
+    std::unique_ptr<std::remove_pointer_t<OSMesaContext>, Destroy> context_;
     std::vector<std::uint32_t> buffer_;  // RGBA8 pixels of the binding buffer
 };
 
 }  // namespace
 
-std::unique_ptr<Context> make_osmesa_context(int /*width*/, int /*height*/) {
+std::unique_ptr<Context> make_osmesa_context() {
     return std::make_unique<OsmesaContext>();
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 
+#include "collide/assert.hpp"
 #include "collide/error.hpp"
 #include "draw_list.hpp"
 #include "font.hpp"
@@ -73,12 +74,11 @@ Rgba8 mark_color(view::PuzzleMark mark) noexcept {
     return edge_color;
 }
 
+/// What the caller promises about a board (a bug when broken: see collide/assert.hpp).
 void check_board(const view::PuzzleBoardView& b) {
-    if (b.side < 2 || b.side > 4 ||
-        b.tiles.size() != static_cast<std::size_t>(b.side) * static_cast<std::size_t>(b.side)) {
-        throw_input_error("puzzle view: a board of side " + std::to_string(b.side) + " has " +
-                          std::to_string(b.tiles.size()) + " tiles");
-    }
+    COLLIDE_ASSERT(
+        b.side >= 2 && b.side <= 4 && b.tiles.size() == static_cast<std::size_t>(b.side * b.side),
+        "a board of side 2 to 4 with side * side tiles");
 }
 
 }  // namespace
@@ -295,9 +295,8 @@ struct PuzzleRenderer::Impl {
     }
 
     const DrawList& build(const view::PuzzleFrameView& frame) {
-        if (frame.panels.empty() || frame.panels.size() > 2)
-            throw_input_error("puzzle view: 1 or 2 panels, got " +
-                              std::to_string(frame.panels.size()));
+        COLLIDE_ASSERT(!frame.panels.empty() && frame.panels.size() <= 2,
+                       "a puzzle frame has 1 or 2 panels");
         for (const view::PuzzlePanelView& p : frame.panels) {
             if (p.playback || !p.board.tiles.empty()) check_board(p.board);
             for (const view::PuzzleRowView& row : p.rows) {

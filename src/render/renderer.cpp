@@ -95,10 +95,6 @@ void Renderer::read_pixels(Image& out) {
     impl_->read_pixels(out);
 }
 
-void Renderer::reset_trails() {
-    impl_->builder.reset_history();
-}
-
 std::string Renderer::layout_json(const FrameContent& frame) const {
     return render::layout_json(impl_->builder.layout_for(frame), config().width, config().height);
 }

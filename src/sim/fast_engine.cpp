@@ -84,7 +84,7 @@ void FastEngine::choose_grid(const Scene& scene) {
     std::uint32_t nx = fit_cells(box_.width, min_cell);
     std::uint32_t ny = fit_cells(box_.height, min_cell);
     if (periodic_ && (nx < 3 || ny < 3)) {
-        throw_input_error("", 0, nx < 3 ? "box.width" : "box.height",
+        throw_scene_error("", 0, nx < 3 ? "box.width" : "box.height",
                           "a periodic box must be at least three disc diameters wide and tall for "
                           "the fast engine (the classic engine has no such limit)");
     }
@@ -148,7 +148,7 @@ std::vector<std::uint32_t> FastEngine::locality_order(const Scene& scene) const 
 void FastEngine::place_discs(const Scene& scene) {
     const std::size_t n = scene.discs.size();
     if (n >= Key::index_mask)
-        throw_input_error("", 0, "discs", "too many discs for the fast engine (at most 2^30 - 2)");
+        throw_scene_error("", 0, "discs", "too many discs for the fast engine (at most 2^30 - 2)");
     scene_index_ = locality_order(scene);
     p_.resize(n);
     cold_.assign(n, Cold{});
@@ -193,6 +193,12 @@ void FastEngine::advance_to(double t) {
         process(i, key);
     }
     now_ = t;
+#ifdef COLLIDE_VALIDATE
+    // The O(N) whole-structure check (cells, heap, one pending event per disc), once per call.
+    if (!check_invariants()) {
+        throw_runtime_error("fast engine: invariants violated at t = " + std::to_string(now_));
+    }
+#endif
 }
 
 void FastEngine::process(std::uint32_t i, const Key& key) {

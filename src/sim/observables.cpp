@@ -138,7 +138,7 @@ double packing_fraction(const std::vector<double>& radii, const Box& box) {
 
 std::vector<std::uint64_t> speed_histogram(const Snapshot& snapshot, std::size_t bins,
                                            double v_max) {
-    if (bins == 0) throw_input_error("", 0, "bins", "a speed histogram needs at least one bin");
+    if (bins == 0) throw_scene_error("", 0, "bins", "a speed histogram needs at least one bin");
     if (v_max <= 0.0) {
         for (const DiscState& d : snapshot.discs) v_max = std::max(v_max, norm(d.velocity));
     }

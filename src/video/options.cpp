@@ -32,7 +32,7 @@ constexpr std::array<std::string_view, 10> x26x_presets = {
 
 void require_range(std::string_view field, int value, int low, int high) {
     if (value < low || value > high) {
-        throw_input_error("", 0, std::string(field),
+        throw_scene_error("", 0, std::string(field),
                           "must be " + std::to_string(low) + ".." + std::to_string(high) +
                               ", got " + std::to_string(value));
     }
@@ -44,14 +44,14 @@ void validate_preset(const VideoOptions& options) {
         const bool digits = std::all_of(options.preset.begin(), options.preset.end(),
                                         [](unsigned char c) { return std::isdigit(c) != 0; });
         if (!digits || options.preset.size() > 2 || std::stoi(options.preset) > 13) {
-            throw_input_error(
+            throw_scene_error(
                 "", 0, "video.preset",
                 "AV1 (SVT-AV1) presets are numbers 0..13, got '" + options.preset + "'");
         }
         return;
     }
     if (std::find(x26x_presets.begin(), x26x_presets.end(), options.preset) == x26x_presets.end()) {
-        throw_input_error("", 0, "video.preset",
+        throw_scene_error("", 0, "video.preset",
                           "expected one of ultrafast superfast veryfast faster fast medium slow "
                           "slower veryslow placebo, got '" +
                               options.preset + "'");
@@ -61,7 +61,7 @@ void validate_preset(const VideoOptions& options) {
 }  // namespace
 
 void VideoOptions::validate() const {
-    if (path.empty()) throw_input_error("", 0, "video.path", "is empty");
+    if (path.empty()) throw_scene_error("", 0, "video.path", "is empty");
     require_range("video.width", width, 1, max_dimension);
     require_range("video.height", height, 1, max_dimension);
     require_range("video.fps", fps, 1, max_fps);

@@ -231,12 +231,6 @@ TEST_CASE("--format decides for a path without extension, a clashing extension n
     }
 }
 
-TEST_CASE("no global remark under a side-by-side frame") {
-    // A scene that needs the chaos remark says so in its own caption.
-    CHECK(comparison_notes(RenderMode::both).empty());
-    CHECK(comparison_notes(RenderMode::event).empty());
-}
-
 TEST_CASE("the default dt comes from the scene, never from the preset or the frame rate") {
     const Scene scene = two_disc_scene(0.2);
     double dt = 0.0;

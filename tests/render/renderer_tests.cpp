@@ -7,7 +7,10 @@
 #include <numbers>
 #include <string>
 
+#include "../support/assert_death.hpp"
+#include "../support/input_error.hpp"
 #include "../support/skip.hpp"
+#include "collide/assert.hpp"
 #include "collide/error.hpp"
 #include "layout.hpp"
 #include "render_fixtures.hpp"
@@ -253,24 +256,31 @@ TEST_CASE("rendering is deterministic and render(frame, out) matches render(fram
     FrameContent frame;
     frame.panels = {{&s, "Event-driven", {"events 12"}}, {&s, "Time-driven", {"steps 3"}}};
     const Image first = renderer.render(frame);
-    renderer.reset_trails();
+    Renderer fresh(test::small_config(true), test::test_backend());  // no trails drawn yet
     Image second;
-    renderer.render(frame, second);
+    fresh.render(frame, second);
     CHECK(first.rgba == second.rgba);
 }
 
-TEST_CASE("bad frames and configs are input errors, not crashes") {
+TEST_CASE("bad frames are failed assertions (programmer errors), not crashes") {
+    if (!asserts_enabled) COLLIDE_SKIP_TEST("assertions are off in this build type");
+    using collide::test::assertion_failure;
+    using collide::test::contains;
     Renderer renderer(test::small_config(false), test::test_backend());
-    FrameContent none;
-    CHECK_THROWS_AS(renderer.draw(none), Error);
+    const auto failure = [&](const FrameContent& frame) {
+        return assertion_failure([&] { renderer.draw(frame); });
+    };
+    CHECK(contains(failure(FrameContent{}), "a frame has 1 or 2 panels"));
+    const Snapshot s = test::gas_snapshot(20, 0.02, {1.0, 1.0, Boundary::walls}, 7);
+    FrameContent three;
+    three.panels = {{&s, "a", {}}, {&s, "b", {}}, {&s, "c", {}}};
+    CHECK(contains(failure(three), "a frame has 1 or 2 panels"));
     FrameContent null_panel;
     null_panel.panels = {{nullptr, "", {}}};
-    try {
-        renderer.draw(null_panel);
-        FAIL("expected an error");
-    } catch (const Error& e) {
-        CHECK(e.kind() == ErrorKind::input);
-    }
+    CHECK(contains(failure(null_panel), "every panel has a snapshot"));
+}
+
+TEST_CASE("bad configs are input errors, not crashes") {
     RenderConfig bad = test::small_config(false);
     bad.width = 10;
     CHECK_THROWS_AS(Renderer(bad, test::test_backend()), Error);

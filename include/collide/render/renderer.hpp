@@ -120,9 +120,6 @@ class Renderer {
     /// pixel height), as JSON (`--layout-json`).
     [[nodiscard]] std::string layout_json(const FrameContent& frame) const;
 
-    /// Forgets all trail and marker history (e.g. after seeking).
-    void reset_trails();
-
     [[nodiscard]] Backend backend() const noexcept;
     [[nodiscard]] const RenderConfig& config() const noexcept;
 

@@ -52,23 +52,24 @@ class ClassicEngine final : public Engine {
         instant_limit_ = instant_collision_limit(n);
     }
 
+    /// The lecture's loop: take the earliest event; skip it if stale; move everyone to its time;
+    /// bounce; predict the discs that bounced anew.
     void advance_to(double t) override {
         const WallClock clock = core_.start_advance(now_, t);
         predict_initial_events();
         while (!queue_.empty() && queue_.top().t <= t) {
             poll_stop();
             const Event e = queue_.pop();
-            ++stats().pops;
-            const bool valid = is_valid(e);
-            if (watch_.on()) watch_.record_pop(queued(e, !valid));
-            if (!valid) {
-                ++stats().stale_pops;
-                continue;
-            }
+            if (!accept(e)) continue;
             move_all_to(e.t);
-            resolve(e);
-            predict(e.a, 0);
-            if (e.kind == EventKind::pair) predict(e.b, 0);
+            if (e.kind == EventKind::pair) {
+                bounce_off(e.a, e.b);
+                predict(e.a);
+                predict(e.b);
+            } else {
+                bounce_off_wall(e.a, e.kind == EventKind::xwall ? 0 : 1);
+                predict(e.a);
+            }
         }
         move_all_to(t);
     }
@@ -128,8 +129,18 @@ class ClassicEngine final : public Engine {
         const auto n = static_cast<std::uint32_t>(position_.size());
         for (; initial_rows_ < n; ++initial_rows_) {
             check_stop();  // one look per row of n - i tests: nothing next to the row's cost
-            predict(initial_rows_, initial_rows_ + 1);
+            predict_row(initial_rows_);
         }
+    }
+
+    /// The stale check of a popped event and its bookkeeping: counts the pop (and the stale
+    /// ones), shows it to a watching queue picture, and says whether the event still holds.
+    [[nodiscard]] bool accept(const Event& e) {
+        ++stats().pops;
+        const bool valid = is_valid(e);
+        if (watch_.on()) watch_.record_pop(queued(e, !valid));
+        if (!valid) ++stats().stale_pops;
+        return valid;
     }
 
     /// Valid when neither disc has collided since the event was predicted.
@@ -153,9 +164,22 @@ class ClassicEngine final : public Engine {
         stats().max_size = std::max<std::uint64_t>(stats().max_size, queue_.size());
     }
 
-    /// The lecture's prediction: disc i against every disc j from `first` on (except itself),
-    /// then against the walls; every event that will happen goes into the queue.
-    void predict(std::uint32_t i, std::uint32_t first) {
+    /// The lecture's prediction: disc i against every other disc, then against the walls; every
+    /// event that will happen goes into the queue. O(N).
+    void predict(std::uint32_t i) {
+        predict_pairs(i, 0);
+        predict_walls(i);
+    }
+
+    /// Row i of the initial triangle: disc i against the discs after it (so that each pair is
+    /// predicted once), then against the walls.
+    void predict_row(std::uint32_t i) {
+        predict_pairs(i, i + 1);
+        predict_walls(i);
+    }
+
+    /// Disc i against every disc j from `first` on, except itself.
+    void predict_pairs(std::uint32_t i, std::uint32_t first) {
         const auto n = static_cast<std::uint32_t>(position_.size());
         core_.counters().predictions += n - first - (first <= i ? 1 : 0);
         const bool periodic = box_.boundary == Boundary::periodic;
@@ -167,7 +191,11 @@ class ClassicEngine final : public Engine {
             const std::uint32_t b = std::max(i, j);
             push(Event{now_ + dt, EventKind::pair, a, b, count_[a], count_[b]});
         }
-        if (periodic) return;
+    }
+
+    /// Disc i against the walls (none in a periodic box).
+    void predict_walls(std::uint32_t i) {
+        if (box_.boundary == Boundary::periodic) return;
         const double tx =
             kinematics::time_to_wall(position_[i].x, velocity_[i].x, radius_[i], box_.width);
         const double ty =
@@ -224,38 +252,42 @@ class ClassicEngine final : public Engine {
         if (++instant_collisions_[i] > instant_limit_) throw_jammed(i, now_, instant_limit_);
     }
 
-    void resolve(const Event& e) {
-        const std::uint32_t a = e.a;
+    /// Discs a and b touch: an elastic collision along the line of centres (nearest image).
+    void bounce_off(std::uint32_t a, std::uint32_t b) {
         count_collision_now(a);
-        if (e.kind == EventKind::pair) count_collision_now(e.b);
+        count_collision_now(b);
+        const Vec2 dr = box_.displacement(position_[a], position_[b]);
+        const Vec2 impulse =
+            kinematics::resolve_pair(velocity_[a], velocity_[b], mass_[a], mass_[b], dr);
+        last_partner_[a] = b;
+        last_partner_[b] = a;
+        collided(EventKind::pair, a, b, std::abs(dot(dr, impulse)));
+    }
+
+    /// Disc a touches a wall across `axis` (0: left or right, 1: bottom or top): that velocity
+    /// component reverses.
+    void bounce_off_wall(std::uint32_t a, int axis) {
+        count_collision_now(a);
+        double& v = axis == 0 ? velocity_[a].x : velocity_[a].y;
+        const double impulse = 2.0 * mass_[a] * std::abs(v);
+        v = -v;
+        last_partner_[a] = no_disc;
+        collided(axis == 0 ? EventKind::xwall : EventKind::ywall, a, no_disc, impulse);
+    }
+
+    /// The bookkeeping of every collision at now_, in one place: the pressure tally (pairs: the
+    /// virial |dr . J|; walls: the impulse 2 m |v| the wall takes), the collision counts that make
+    /// older predictions stale, and the record for the counters and the listener.
+    void collided(EventKind kind, std::uint32_t a, std::uint32_t b, double impulse) {
         ImpulseTally& impulses = core_.counters().impulses;
-        switch (e.kind) {
-            case EventKind::pair: {
-                const std::uint32_t b = e.b;
-                const Vec2 dr = box_.displacement(position_[a], position_[b]);
-                const Vec2 impulse =
-                    kinematics::resolve_pair(velocity_[a], velocity_[b], mass_[a], mass_[b], dr);
-                impulses.virial += std::abs(dot(dr, impulse));
-                ++count_[b];
-                last_partner_[a] = b;
-                last_partner_[b] = a;
-                break;
-            }
-            case EventKind::xwall:
-                impulses.wall_impulse += 2.0 * mass_[a] * std::abs(velocity_[a].x);
-                velocity_[a].x = -velocity_[a].x;
-                last_partner_[a] = no_disc;
-                break;
-            case EventKind::ywall:
-                impulses.wall_impulse += 2.0 * mass_[a] * std::abs(velocity_[a].y);
-                velocity_[a].y = -velocity_[a].y;
-                last_partner_[a] = no_disc;
-                break;
-            case EventKind::cell:
-                break;
+        if (kind == EventKind::pair) {
+            impulses.virial += impulse;
+            ++count_[b];
+        } else {
+            impulses.wall_impulse += impulse;
         }
         ++count_[a];
-        core_.collided(to_record(e.t, e.kind, e.a, e.b));
+        core_.collided(to_record(now_, kind, a, b));
     }
 
     [[nodiscard]] std::uint64_t bytes() const noexcept {

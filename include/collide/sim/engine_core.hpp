@@ -106,8 +106,6 @@ class EngineCore {
         return WallClock(counters_.wall_seconds);
     }
 
-    [[nodiscard]] const Box& box() const noexcept { return box_; }
-    [[nodiscard]] const Appearance& appearance() const noexcept { return appearance_; }
     [[nodiscard]] EngineCounters& counters() noexcept { return counters_; }
     [[nodiscard]] const EngineCounters& counters() const noexcept { return counters_; }
 

@@ -43,7 +43,7 @@ inline constexpr double same_instant_travel = 1e-9;
 /// Throws Error(input) for disc `disc` (0-based, named 1-based as in validation messages), found
 /// jammed at time t by the bound above.
 [[noreturn]] inline void throw_jammed(std::size_t disc, double t, std::uint64_t limit) {
-    throw_input_error("", 0, "disc " + std::to_string(disc + 1),
+    throw_scene_error("", 0, "disc " + std::to_string(disc + 1),
                       "jammed at t = " + std::to_string(t) + ": more than " +
                           std::to_string(limit) +
                           " collisions at one instant (it moved less than 1e-9 of its radius "

@@ -63,14 +63,13 @@ class FastEngine final : public Engine {
         return true;
     }
 
-    /// Grid cells per axis (for tests and the benchmark report).
-    [[nodiscard]] std::uint32_t cells_x() const noexcept { return nx_; }
-    [[nodiscard]] std::uint32_t cells_y() const noexcept { return ny_; }
     /// Number of discs handled as big (separate list).
     [[nodiscard]] std::size_t big_disc_count() const noexcept { return big_.size(); }
     /// Heap memory held by the engine's containers, in bytes (capacities, not sizes).
     [[nodiscard]] std::uint64_t bytes() const noexcept;
-    /// O(N) consistency check (cell membership, heap invariants, one event per disc); for tests.
+    /// O(N) consistency check (cell membership, heap invariants, one event per disc); for tests,
+    /// and run at the end of every advance_to() in COLLIDE_VALIDATE builds (Error(runtime) when
+    /// it fails).
     [[nodiscard]] bool check_invariants() const;
 
   private:

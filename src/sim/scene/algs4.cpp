@@ -100,7 +100,7 @@ struct Reader {
     void read_count(std::string_view text, int line) {
         const auto tokens = split_whitespace(text);
         if (tokens.size() != 1 || !parse_count(tokens[0], expected)) {
-            throw_input_error(
+            throw_scene_error(
                 file, line, "N",
                 "expected the number of discs alone on the first line, got " + quoted(text));
         }
@@ -113,14 +113,14 @@ struct Reader {
         double v = 0.0;
         const NumberParse result = parse_double(token, v);
         if (result == NumberParse::not_a_number) {
-            throw_input_error(file, line, column_names[column], quoted(token) + " is not a number");
+            throw_scene_error(file, line, column_names[column], quoted(token) + " is not a number");
         }
         if (result == NumberParse::too_large) {
-            throw_input_error(file, line, column_names[column],
+            throw_scene_error(file, line, column_names[column],
                               quoted(token) + " is too large for a double (at most 1.8e308)");
         }
         if (!std::isfinite(v))
-            throw_input_error(file, line, column_names[column],
+            throw_scene_error(file, line, column_names[column],
                               "not a finite number (" + std::string(token) + ")");
         return v;
     }
@@ -128,7 +128,7 @@ struct Reader {
     std::uint8_t channel(std::string_view token, int line, std::size_t column) const {
         const double v = number(token, line, column);
         if (v < 0.0 || v > 255.0 || v != std::floor(v)) {
-            throw_input_error(file, line, column_names[column],
+            throw_scene_error(file, line, column_names[column],
                               "colour must be an integer 0..255, got " + std::string(token));
         }
         return static_cast<std::uint8_t>(v);
@@ -137,12 +137,12 @@ struct Reader {
     void read_disc(std::string_view text, int line) {
         const auto t = split_whitespace(text);
         if (t.size() != column_names.size()) {
-            throw_input_error(file, line, "",
+            throw_scene_error(file, line, "",
                               "expected 9 columns (rx ry vx vy radius mass r g b), got " +
                                   std::to_string(t.size()));
         }
         if (parsed.scene.discs.size() >= expected) {
-            throw_input_error(file, line, "N",
+            throw_scene_error(file, line, "N",
                               "more disc lines than N = " + std::to_string(expected) + " (line " +
                                   std::to_string(count_line) + ")");
         }
@@ -158,10 +158,10 @@ struct Reader {
 
     void finish() {
         if (count_line == 0)
-            throw_input_error(file, 0, "N",
+            throw_scene_error(file, 0, "N",
                               "empty file: expected the number of discs on the first line");
         if (parsed.scene.discs.size() != expected) {
-            throw_input_error(file, count_line, "N",
+            throw_scene_error(file, count_line, "N",
                               "N = " + std::to_string(expected) + " but " +
                                   std::to_string(parsed.scene.discs.size()) + " disc lines follow");
         }
@@ -208,7 +208,7 @@ ParsedScene parse_algs4(std::string_view text, const std::string& file_label) {
 ParsedScene parse_algs4(std::istream& in, const std::string& file_label) {
     std::ostringstream text;
     text << in.rdbuf();
-    if (in.bad()) throw_input_error(file_label, 0, "", "read error");
+    if (in.bad()) throw_scene_error(file_label, 0, "", "read error");
     return parse_algs4(std::string_view(text.view()), file_label);
 }
 
@@ -226,12 +226,12 @@ ParsedScene read_algs4_file(const std::filesystem::path& path) {
     std::error_code error;
     const std::filesystem::file_status status = std::filesystem::status(path, error);
     if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
-        throw_input_error(path.string(), 0, "", "not a regular file");
+        throw_scene_error(path.string(), 0, "", "not a regular file");
     if (std::filesystem::is_regular_file(status) &&
         std::filesystem::file_size(path, error) > max_scene_file_bytes)
-        throw_input_error(path.string(), 0, "", "larger than the scene file limit");
+        throw_scene_error(path.string(), 0, "", "larger than the scene file limit");
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw_input_error(path.string(), 0, "", "cannot open the scene file");
+    if (!in) throw_scene_error(path.string(), 0, "", "cannot open the scene file");
     std::ostringstream text;
     text << in.rdbuf();
     return read_algs4_text(text.view(), path);

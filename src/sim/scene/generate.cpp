@@ -38,7 +38,7 @@ std::string num(double v) {
 
 [[noreturn]] void fail(const std::string& prefix, const std::string& field,
                        const std::string& reason) {
-    throw_input_error("", 0, prefix + (field.empty() ? "" : "." + field), reason);
+    throw_scene_error("", 0, prefix + (field.empty() ? "" : "." + field), reason);
 }
 
 // Where generated centres may go.

@@ -44,7 +44,7 @@ std::string location_text(const SourceLocation& where) {
                           const std::string& reason) {
     std::string field = where.field;
     if (!field_suffix.empty()) field += (field.empty() ? "" : " ") + field_suffix;
-    throw_input_error(where.file, where.line, field, reason);
+    throw_scene_error(where.file, where.line, field, reason);
 }
 
 // "1e+200 is outside ..." for a value beyond the range the engines compute with.
@@ -76,17 +76,17 @@ bool in_range(double positive) noexcept {
 
 void check_box(const Box& box) {
     if (!(box.width > 0.0) || !std::isfinite(box.width)) {
-        throw_input_error("", 0, "box.width",
+        throw_scene_error("", 0, "box.width",
                           "must be a finite number > 0 (got " + format_number(box.width) + ")");
     }
     if (!(box.height > 0.0) || !std::isfinite(box.height)) {
-        throw_input_error("", 0, "box.height",
+        throw_scene_error("", 0, "box.height",
                           "must be a finite number > 0 (got " + format_number(box.height) + ")");
     }
     if (box.width > max_scene_magnitude)
-        throw_input_error("", 0, "box.width", out_of_range_reason(box.width, false));
+        throw_scene_error("", 0, "box.width", out_of_range_reason(box.width, false));
     if (box.height > max_scene_magnitude)
-        throw_input_error("", 0, "box.height", out_of_range_reason(box.height, false));
+        throw_scene_error("", 0, "box.height", out_of_range_reason(box.height, false));
 }
 
 bool finite(Vec2 v) noexcept {
