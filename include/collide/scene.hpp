@@ -22,6 +22,13 @@ struct CaptionCue {
 
 /// Longest caption: one line across a 16:9 frame at the lesson text size (docs/scenes.md).
 inline constexpr std::size_t max_caption_chars = 64;
+/// Longest title: two lines of the intro card's heading (docs/scenes.md).
+inline constexpr std::size_t max_title_chars = 120;
+/// Longest description: a short paragraph on the intro card, which shows it whole on every
+/// frame of the intro (docs/scenes.md).
+inline constexpr std::size_t max_description_chars = 600;
+/// Longest tag: a label, never drawn as text (docs/scenes.md).
+inline constexpr std::size_t max_tag_chars = 64;
 
 /// Rendering defaults a scene may carry in `[render]`; the CLI overrides every one of them.
 struct RenderHints {
