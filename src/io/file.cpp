@@ -293,9 +293,26 @@ File& File::operator=(File&& other) noexcept {
     return *this;
 }
 
+namespace {
+/// The registered stop request (set_stop_flag): signal handlers can only reach static storage.
+std::atomic<const std::atomic<bool>*> stop_flag{nullptr};
+
+bool stop_requested() noexcept {
+    const std::atomic<bool>* flag = stop_flag.load();
+    return flag != nullptr && flag->load();
+}
+}  // namespace
+
+void set_stop_flag(const std::atomic<bool>* flag) noexcept {
+    stop_flag.store(flag);
+}
+
 void File::write_all(const void* data, std::size_t size, const fs::path& shown) const {
     const auto* bytes = static_cast<const char*>(data);
     while (size > 0) {
+        // Checked before every write, and again after a write a signal interrupted: a reader
+        // that never reads would otherwise keep this loop (and the process) waiting forever.
+        if (stop_requested()) throw_runtime_error("cannot write " + quote_path(shown) + ": interrupted");
         const ssize_t written = ::write(fd_, bytes, size);
         if (written < 0 && errno == EINTR) continue;
         if (written <= 0) {
@@ -361,7 +378,7 @@ OutputFile::OutputFile(const fs::path& destination, OutputOptions options)
         }
     }
 
-    sweep(directory_.get(), {});
+    sweep(directory_.get(), options.stale_directory_entries);
     create_temporary(options.unnamed_temporary,
                      what + ": cannot create a file in " + quote_path(directory_of(target)));
     lock_exclusively(file_.get());
@@ -558,7 +575,7 @@ void check_replaceable(int parent, int fd, const fs::path& path, const fs::path&
 }  // namespace
 
 OutputDirectory::OutputDirectory(const fs::path& destination, NamePredicate replaceable,
-                                 std::string label)
+                                 std::string label, const NamePredicate& stale_entries)
     : destination_(destination), label_(std::move(label)), replaceable_(std::move(replaceable)) {
     const fs::path target = follow_links(directory_destination(destination, label_), label_);
     parent_ = open_parent(target, destination, label_);
@@ -575,7 +592,7 @@ OutputDirectory::OutputDirectory(const fs::path& destination, NamePredicate repl
         check_replaceable(parent_.get(), old.get(), target, destination, replaceable_, label_);
     }
 
-    sweep(parent_.get(), replaceable_);
+    sweep(parent_.get(), stale_entries ? stale_entries : replaceable_);
     for (int attempt = 0; attempt < max_name_attempts && !temporary_; ++attempt) {
         temporary_name_ = fresh_temporary_name(target_name_);
         if (::mkdirat(parent_.get(), temporary_name_.c_str(), 0700) != 0) {
