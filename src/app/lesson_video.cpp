@@ -9,7 +9,9 @@
 
 #include "collide/error.hpp"
 #include "collide/video/video_writer.hpp"
+#include "cli_numbers.hpp"
 #include "interrupt.hpp"
+#include "render_plan.hpp"
 
 namespace collide::app {
 
@@ -29,7 +31,8 @@ void add_lesson_video_options(CLI::App& cmd, LessonVideoCli& v, std::string_view
                        "l 854x480@15, m 1280x720@30 (default), h 1920x1080@60, k 3840x2160@60");
     v.size_opt = cmd.add_option("--size", v.size,
                                 fmt::format("Frame size WxH, overrides -q ({})", size_note));
-    v.fps_opt = cmd.add_option("--fps", v.fps, "Frames per second, overrides -q");
+    // Decimal digits only, as `render --fps` (CLI11 alone reads 010 as octal, 0x1E as hex).
+    v.fps_opt = add_whole_option(cmd, "--fps", v.fps, 1, max_fps, "Frames per second, overrides -q");
     v.last_frame_opt = cmd.add_flag(
         "--last-frame", v.last_frame,
         fmt::format("Write only the final frame, as a PNG (-o FILE.png, default out/{}.png)",
