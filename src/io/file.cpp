@@ -135,12 +135,58 @@ bool link_is_protected(const fs::path& link, const struct stat& link_status) {
     return shared && link_status.st_uid != ::geteuid() && link_status.st_uid != directory.st_uid;
 }
 
+/// Applies link_is_protected to every directory component of `path` that is a link (and to the
+/// links their targets pass through), as the kernel's path walk does when protected_symlinks is
+/// on: `/tmp/dirlink/notes.csv`, with `dirlink` another user's link to a directory, must not
+/// let a run replace a file in that directory. Throws Error(input).
+void check_directory_links(const fs::path& path, const fs::path& destination,
+                           const std::string& label) {
+    std::vector<fs::path> pending;  // components still to walk, the next one last
+    // Puts the components of `p` before those still pending, its first to be walked next.
+    const auto walk_first = [&pending](const fs::path& p) {
+        const fs::path relative = p.relative_path();
+        const std::vector<fs::path> parts(relative.begin(), relative.end());
+        for (auto it = parts.rbegin(); it != parts.rend(); ++it) pending.push_back(*it);
+    };
+    const fs::path directory = directory_of(path);
+    walk_first(directory);
+    fs::path walked = directory.has_root_path() ? directory.root_path() : fs::path(".");
+    for (int hops = 0; !pending.empty();) {
+        const fs::path part = pending.back();
+        pending.pop_back();
+        if (part.empty() || part == ".") continue;
+        const fs::path next = walked / part;
+        struct stat status {};
+        if (::lstat(next.c_str(), &status) != 0 || !S_ISLNK(status.st_mode) ||
+            next.native().rfind("/proc/", 0) == 0) {
+            walked = next;
+            continue;
+        }
+        if (link_is_protected(next, status)) {
+            throw_input_error(label + " " + quote_path(destination) +
+                              ": refusing to follow the link " + quote_path(next) +
+                              ", which another user owns in a shared (sticky) directory");
+        }
+        if (++hops > max_symlink_hops) return;  // a loop: open() reports it
+        std::error_code error;
+        const fs::path target = fs::read_symlink(next, error);
+        if (error) return;
+        if (target.is_absolute()) walked = target.root_path();
+        // The target's components replace the link's, walked from the link's directory (or the
+        // root), before the rest of the path.
+        walk_first(target);
+    }
+}
+
 /// `destination` with symbolic links followed to the file they name (which need not exist).
 fs::path follow_links(const fs::path& destination, const std::string& label) {
     fs::path path = destination;
     for (int hop = 0; hop < max_symlink_hops; ++hop) {
         struct stat status {};
-        if (::lstat(path.c_str(), &status) != 0 || !S_ISLNK(status.st_mode)) return path;
+        if (::lstat(path.c_str(), &status) != 0 || !S_ISLNK(status.st_mode)) {
+            check_directory_links(path, destination, label);
+            return path;
+        }
         // /proc's links (/dev/stdout leads there) are not paths; open() follows them itself.
         if (path.native().rfind("/proc/", 0) == 0) return path;
         if (link_is_protected(path, status)) {
