@@ -23,6 +23,14 @@ struct CaptionCue {
 
 /// Longest caption: one line across a 16:9 frame at the lesson text size (docs/scenes.md).
 inline constexpr std::size_t max_caption_chars = 64;
+/// Longest title: a file name's length (a scene without a title is titled after its file, and
+/// `check --export` writes that title, which must read back) (docs/scenes.md).
+inline constexpr std::size_t max_title_chars = 255;
+/// Longest description: a short paragraph on the intro card, which shows it whole on every
+/// frame of the intro (docs/scenes.md).
+inline constexpr std::size_t max_description_chars = 600;
+/// Longest tag: a label, never drawn as text (docs/scenes.md).
+inline constexpr std::size_t max_tag_chars = 64;
 
 /// Rendering defaults a scene may carry in `[render]`; the CLI overrides every one of them.
 struct RenderHints {

@@ -31,12 +31,17 @@ void add_check_command(CLI::App& root) {
                     "Also write the scene with every disc explicit: .toml, or .txt (algs4, unit "
                     "box with walls only)");
     cmd->callback([options] {
-        const Scene scene = load_scene(options->scene);  // validates; throws Error(input) -> exit 2
+        // A signal while a large scene loads ends with the one interrupt message (main), and
+        // one while the export is written leaves nothing at the destination, not even a
+        // temporary: the guard turns it into a flag save_scene checks before the rename.
+        InterruptGuard interrupts;
+        const Scene scene = [&] {
+            const StopAtOnce nothing_written_yet(interrupts);
+            return load_scene(options->scene);  // validates; throws Error(input) -> exit 2
+        }();
+        interrupts.throw_if_requested();
         check_scene_hints(scene);  // what `collide render SCENE` would refuse in the hints
         if (!options->export_path.empty()) {
-            // A signal while the file is written leaves nothing at the destination, not even a
-            // temporary: the guard turns it into a flag save_scene checks before the rename.
-            InterruptGuard interrupts;
             try {
                 save_scene(scene, options->export_path, &interrupts.flag());
             } catch (const Error&) {

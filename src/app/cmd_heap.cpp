@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -22,6 +23,7 @@
 #include "collide/sim/pq/heap_lesson.hpp"
 #include "collide/video/output.hpp"
 #include "collide/video/video_writer.hpp"
+#include "cli_numbers.hpp"
 #include "commands.hpp"
 #include "lesson_video.hpp"
 #include "progress.hpp"
@@ -154,8 +156,9 @@ void add_heap_command(CLI::App& root) {
                                   "unordered|ordered|binary|dary:D|indexed[:D] (default binary)")
                       ->delimiter(',');
     cmd->add_flag("--min", v->min, "A min-queue ('*' removes the smallest; --sort: descending)");
-    cmd->add_option("--index-base", v->index_base,
-                    "Index of the first slot: 1 as in the lecture's code, 0 as in its pseudo-code")
+    // Digits only (never octal or hex); 0 or 1 is checked with the other options.
+    add_whole_option(*cmd, "--index-base", v->index_base, 0, std::numeric_limits<int>::max(),
+                     "Index of the first slot: 1 as in the lecture's code, 0 as in its pseudo-code")
         ->capture_default_str();
     cmd->add_option("--pace", v->pace, "Seconds per step (a compare, an exchange, ...)")
         ->capture_default_str();

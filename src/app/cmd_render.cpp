@@ -280,10 +280,16 @@ void check_distinct_outputs(const RenderPlan& plan, const CliValues& values) {
 void run(const CliValues& values, bool still) {
     // Validation: nothing is rendered, and no output file is created, until all of it passes.
     const ProgressMode progress_mode = parse_progress_mode(values.video.progress);
+    // From here a signal is a clean stop with one message (main), even while the scene loads.
+    InterruptGuard interrupts;
     SceneOptions scene_options;
     if (values.seed_opt != nullptr && values.seed_opt->count() > 0)
         scene_options.seed = values.seed;
-    const Scene scene = load_scene(values.scene, scene_assets_dir(), scene_options);
+    const Scene scene = [&] {
+        const StopAtOnce nothing_written_yet(interrupts);
+        return load_scene(values.scene, scene_assets_dir(), scene_options);
+    }();
+    interrupts.throw_if_requested();
     const render::Backend backend = gl_backend_of(values);
     const RenderRequest request = request_of(values, still);
     const RenderPlan plan = validated_plan(request, scene);
@@ -298,7 +304,6 @@ void run(const CliValues& values, bool still) {
     // Data on standard output (--layout-json -) is the only thing there: the summary moves aside.
     const bool data_on_stdout = layout_file && layout_file->is_standard_output();
 
-    InterruptGuard interrupts;
     Progress progress(progress_mode, plan.clock.count);
     JobHooks hooks;
     hooks.interrupts = &interrupts;

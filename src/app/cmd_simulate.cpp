@@ -104,7 +104,10 @@ void run_simulate(const SimulateOptions& options) {
     const EngineOptions engine_options = options.engine_options();
     // Ctrl-C stops the run cleanly (the events log's temporary is removed) however long it is.
     InterruptGuard interrupts;
-    const Scene scene = load_scene(options.scene);
+    const Scene scene = [&] {
+        const StopAtOnce nothing_written_yet(interrupts);
+        return load_scene(options.scene);
+    }();
     check_simulate_work(scene, engine_options, options.until, options.no_limits);
     // Open the log before simulating: an unwritable path fails fast, with nothing half written.
     std::unique_ptr<EventsLog> log;

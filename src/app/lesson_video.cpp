@@ -8,7 +8,10 @@
 #include <utility>
 
 #include "collide/error.hpp"
+#include "collide/video/video_writer.hpp"
+#include "cli_numbers.hpp"
 #include "interrupt.hpp"
+#include "render_plan.hpp"
 #include "video_job.hpp"
 
 namespace collide::app {

@@ -1,5 +1,6 @@
 /// The `collide` command line: parses arguments, runs one subcommand, and is the only place where
-/// errors become messages and exit codes (0 success, 2 bad input or usage, 1 anything else).
+/// errors become messages and exit codes (0 success, 2 bad input or usage, 1 anything else; a run
+/// stopped by a signal ends by that signal after its clean stop: the shell's 130 for Ctrl-C).
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
@@ -10,6 +11,7 @@
 
 #include "collide/error.hpp"
 #include "commands.hpp"
+#include "interrupt.hpp"
 
 namespace {
 
@@ -44,12 +46,28 @@ std::string out_of_memory_message(const CLI::App& root) {
 
 }  // namespace
 
+namespace {
+
+/// A run that a signal stopped ends the same way whatever error the stop surfaced as (a write
+/// that gave up, a loop that polled the flag): one message, then the signal (interrupt.hpp).
+void end_if_interrupted() {
+    if (const int signal_number = collide::app::interrupt_received(); signal_number != 0) {
+        collide::app::end_by_signal(signal_number,
+                                    collide::app::interrupt_message(signal_number));
+    }
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+    collide::app::ignore_file_size_signal();
     CLI::App root{"collide: event-driven vs time-driven hard-disc simulation, rendered to video",
                   "collide"};
     root.set_version_flag("--version", std::string("collide ") + COLLIDE_VERSION);
     root.require_subcommand(0, 1);
-    root.footer("Exit codes: 0 success, 2 bad input or usage, 1 other failure.");
+    root.footer(
+        "Exit codes: 0 success, 2 bad input or usage, 1 other failure; stopped by a signal "
+        "(Ctrl-C): ended by that signal after cleaning up (the shell shows 130).");
     collide::app::add_check_command(root);
     collide::app::add_scenes_command(root);
     collide::app::add_pq_command(root);
@@ -75,12 +93,15 @@ int main(int argc, char** argv) {
         std::fputs("Run with --help for more information.\n", stderr);
         return exit_usage;
     } catch (const collide::Error& e) {
+        end_if_interrupted();
         print_error(e.what());
         return e.exit_code();
     } catch (const std::bad_alloc&) {
+        end_if_interrupted();
         print_error(out_of_memory_message(root));
         return exit_failure;
     } catch (const std::exception& e) {
+        end_if_interrupted();
         print_error(e.what());
         return exit_failure;
     }

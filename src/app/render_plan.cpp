@@ -117,6 +117,17 @@ EngineOptions time_engine_options(const RenderRequest& request, const Scene& sce
     const bool from_cli = request.dt.has_value();
     // Without a dt anywhere: the scene's own time scale, so -q and --fps never change the physics.
     options.dt = request.dt.value_or(scene.render.dt.value_or(default_dt(speed)));
+    if (!from_cli && !scene.render.dt && !positive_finite(options.dt)) {
+        // A speed so small (5e-324) that the step derived from it is 0: name the speed where
+        // the user wrote it, not a dt they never gave.
+        const std::string speed_option =
+            request.speed ? std::string("--speed")
+                          : hint_option(scene.render.speed_at, "speed");
+        throw_option_error(speed_option,
+                           fmt::format("{:g} is too small: the time-driven step it implies "
+                                       "(speed / {:g}) is 0; give a larger speed, or a dt",
+                                       speed, reference_fps));
+    }
     require_positive(options.dt,
                      from_cli ? std::string("--dt") : hint_option(scene.render.dt_at, "dt"),
                      "time step");

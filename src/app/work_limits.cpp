@@ -11,6 +11,10 @@ namespace collide::app {
 
 namespace {
 
+bool is_array_queue(const pq::QueueKind& kind) {
+    return kind.family == pq::QueueFamily::unordered || kind.family == pq::QueueFamily::ordered;
+}
+
 /// What a refusal names and how it advises: the option (or scene hint) that sets the span, the
 /// one that sets dt, and how to ask for a shorter span.
 struct Culprits {
@@ -86,6 +90,25 @@ void refuse_excess(const Scene& scene, const RunShape& run, const WorkExcess& ex
                                    rough_number(run.dt > 0 ? run.span / run.dt : 0.0), run.dt,
                                    limit, who.shorter, insist_advice()));
     }
+    if (excess.what == "pair predictions") {
+        refuse(who.span,
+               fmt::format("the classic engine predicts each event's two discs against all {} "
+                           "discs: simulating t = 0..{:g} would take about {} pair predictions "
+                           "(about {} events), {}; use --engine fast (a cell grid: the same "
+                           "physics, O(1) per event), simulate at most t = {:.3g} ({}), {}",
+                           scene.discs.size(), run.span, rough_number(excess.estimate),
+                           rough_number(collision_rate(scene).total() * run.span), limit,
+                           run.span * excess.fitting_fraction(), who.shorter, insist_advice()));
+    }
+    if (excess.what == "queue steps") {
+        refuse(who.span,
+               fmt::format("an array queue (--pq unordered or ordered) walks its whole array "
+                           "on every removal or insertion: with {} discs, simulating t = 0..{:g} "
+                           "would take about {} queue steps, {}; use --pq binary (or any heap), "
+                           "fewer discs or a shorter run ({}), {}",
+                           scene.discs.size(), run.span, rough_number(excess.estimate), limit,
+                           who.shorter, insist_advice()));
+    }
     refuse(who.span,
            fmt::format("the run would go through about {} frames, {}; {}, {}",
                        rough_number(excess.estimate), limit, frames_advice, insist_advice()));
@@ -132,6 +155,8 @@ RunShape render_run_shape(const RenderPlan& plan) {
     run.span = plan.clock.last_time;
     run.event_driven = plan.mode != RenderMode::time;
     run.cell_grid = plan.event_engine.engine == EngineKind::fast;
+    run.classic = plan.event_engine.engine == EngineKind::classic;
+    run.array_queue = is_array_queue(plan.event_engine.pq);
     run.time_driven = plan.mode != RenderMode::event;
     run.dt = plan.time_engine.dt;
     run.all_pairs = plan.time_engine.td_detect == OverlapDetection::all_pairs;
@@ -183,6 +208,8 @@ void check_simulate_work(const Scene& scene, const EngineOptions& engine, double
     run.time_driven = engine.engine == EngineKind::time;
     run.event_driven = !run.time_driven;
     run.cell_grid = engine.engine == EngineKind::fast;
+    run.classic = engine.engine == EngineKind::classic;
+    run.array_queue = is_array_queue(engine.pq);
     run.dt = engine.dt;
     run.all_pairs = engine.td_detect == OverlapDetection::all_pairs;
     const WorkEstimate work = estimate_work(scene, run);

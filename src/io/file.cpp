@@ -136,12 +136,58 @@ bool link_is_protected(const fs::path& link, const struct stat& link_status) {
     return shared && link_status.st_uid != ::geteuid() && link_status.st_uid != directory.st_uid;
 }
 
+/// Applies link_is_protected to every directory component of `path` that is a link (and to the
+/// links their targets pass through), as the kernel's path walk does when protected_symlinks is
+/// on: `/tmp/dirlink/notes.csv`, with `dirlink` another user's link to a directory, must not
+/// let a run replace a file in that directory. Throws Error(input).
+void check_directory_links(const fs::path& path, const fs::path& destination,
+                           const std::string& label) {
+    std::vector<fs::path> pending;  // components still to walk, the next one last
+    // Puts the components of `p` before those still pending, its first to be walked next.
+    const auto walk_first = [&pending](const fs::path& p) {
+        const fs::path relative = p.relative_path();
+        const std::vector<fs::path> parts(relative.begin(), relative.end());
+        for (auto it = parts.rbegin(); it != parts.rend(); ++it) pending.push_back(*it);
+    };
+    const fs::path directory = directory_of(path);
+    walk_first(directory);
+    fs::path walked = directory.has_root_path() ? directory.root_path() : fs::path(".");
+    for (int hops = 0; !pending.empty();) {
+        const fs::path part = pending.back();
+        pending.pop_back();
+        if (part.empty() || part == ".") continue;
+        const fs::path next = walked / part;
+        struct stat status {};
+        if (::lstat(next.c_str(), &status) != 0 || !S_ISLNK(status.st_mode) ||
+            next.native().rfind("/proc/", 0) == 0) {
+            walked = next;
+            continue;
+        }
+        if (link_is_protected(next, status)) {
+            throw_input_error(label + " " + quote_path(destination) +
+                              ": refusing to follow the link " + quote_path(next) +
+                              ", which another user owns in a shared (sticky) directory");
+        }
+        if (++hops > max_symlink_hops) return;  // a loop: open() reports it
+        std::error_code error;
+        const fs::path target = fs::read_symlink(next, error);
+        if (error) return;
+        if (target.is_absolute()) walked = target.root_path();
+        // The target's components replace the link's, walked from the link's directory (or the
+        // root), before the rest of the path.
+        walk_first(target);
+    }
+}
+
 /// `destination` with symbolic links followed to the file they name (which need not exist).
 fs::path follow_links(const fs::path& destination, const std::string& label) {
     fs::path path = destination;
     for (int hop = 0; hop < max_symlink_hops; ++hop) {
         struct stat status {};
-        if (::lstat(path.c_str(), &status) != 0 || !S_ISLNK(status.st_mode)) return path;
+        if (::lstat(path.c_str(), &status) != 0 || !S_ISLNK(status.st_mode)) {
+            check_directory_links(path, destination, label);
+            return path;
+        }
         // /proc's links (/dev/stdout leads there) are not paths; open() follows them itself.
         if (path.native().rfind("/proc/", 0) == 0) return path;
         if (link_is_protected(path, status)) {
@@ -338,9 +384,26 @@ File& File::operator=(File&& other) noexcept {
     return *this;
 }
 
+namespace {
+/// The registered stop request (set_stop_flag): signal handlers can only reach static storage.
+std::atomic<const std::atomic<bool>*> stop_flag{nullptr};
+
+bool stop_requested() noexcept {
+    const std::atomic<bool>* flag = stop_flag.load();
+    return flag != nullptr && flag->load();
+}
+}  // namespace
+
+void set_stop_flag(const std::atomic<bool>* flag) noexcept {
+    stop_flag.store(flag);
+}
+
 void File::write_all(const void* data, std::size_t size, const fs::path& shown) const {
     const auto* bytes = static_cast<const char*>(data);
     while (size > 0) {
+        // Checked before every write, and again after a write a signal interrupted: a reader
+        // that never reads would otherwise keep this loop (and the process) waiting forever.
+        if (stop_requested()) throw_runtime_error("cannot write " + quote_path(shown) + ": interrupted");
         const ssize_t written = ::write(fd_, bytes, size);
         if (written < 0 && errno == EINTR) continue;
         if (written <= 0) {
@@ -410,7 +473,7 @@ OutputFile::OutputFile(const fs::path& destination, OutputOptions options)
         }
     }
 
-    sweep(directory_.get(), {});
+    sweep(directory_.get(), options.stale_directory_entries);
     create_temporary(options.unnamed_temporary,
                      what + ": cannot create a file in " + quote_path(directory_of(target)));
     lock_exclusively(file_.get());
@@ -616,7 +679,7 @@ void check_replaceable(int parent, int fd, const fs::path& path, const fs::path&
 }  // namespace
 
 OutputDirectory::OutputDirectory(const fs::path& destination, NamePredicate replaceable,
-                                 std::string label)
+                                 std::string label, const NamePredicate& stale_entries)
     : destination_(destination), label_(std::move(label)), replaceable_(std::move(replaceable)) {
     const fs::path named = directory_destination(destination, label_);
     const fs::path target = directory_destination(follow_links(named, label_), label_);
@@ -635,7 +698,7 @@ OutputDirectory::OutputDirectory(const fs::path& destination, NamePredicate repl
         check_replaceable(parent_.get(), old.get(), target, destination, replaceable_, label_);
     }
 
-    sweep(parent_.get(), replaceable_);
+    sweep(parent_.get(), stale_entries ? stale_entries : replaceable_);
     for (int attempt = 0; attempt < max_name_attempts && !temporary_; ++attempt) {
         temporary_name_ = fresh_temporary_name(target_name_);
         if (::mkdirat(parent_.get(), temporary_name_.c_str(), 0700) != 0) {

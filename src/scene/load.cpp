@@ -11,6 +11,7 @@
 
 #include "collide/error.hpp"
 #include "collide/sim/algs4.hpp"
+#include "toml_limits.hpp"
 
 namespace collide {
 
@@ -101,6 +102,7 @@ std::vector<BuiltinScene> builtin_scenes(const std::filesystem::path& assets_dir
         s.name = entry.path().stem().string();
         try {
             const std::string text = read_scene_file(entry.path());
+            check_toml_limits(text, entry.path().string());
             const toml::table doc = toml::parse(text, entry.path().string());
             s.description = doc["description"].value_or(std::string());
         } catch (const toml::parse_error& e) {

@@ -4,6 +4,7 @@
 
 #include "collide/scene/save.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <ostream>
@@ -26,11 +27,40 @@ std::string exact(double v) {
     return buf.data();
 }
 
-// A TOML basic string: quotes, backslashes and control characters escaped.
+/// The length of the valid UTF-8 sequence at `s[i]`, or 0 when the bytes there are not one.
+std::size_t utf8_sequence(const std::string& s, std::size_t i) {
+    const auto lead = static_cast<unsigned char>(s[i]);
+    const std::size_t length = lead >= 0xC2 && lead <= 0xDF   ? 2
+                               : lead >= 0xE0 && lead <= 0xEF ? 3
+                               : lead >= 0xF0 && lead <= 0xF4 ? 4
+                                                              : 0;
+    if (length == 0 || i + length > s.size()) return 0;
+    for (std::size_t k = 1; k < length; ++k) {
+        if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return 0;
+    }
+    const auto second = static_cast<unsigned char>(s[i + 1]);
+    // Overlong forms, UTF-16 surrogates and code points beyond U+10FFFF are not UTF-8 either.
+    if ((lead == 0xE0 && second < 0xA0) || (lead == 0xED && second > 0x9F) ||
+        (lead == 0xF0 && second < 0x90) || (lead == 0xF4 && second > 0x8F)) {
+        return 0;
+    }
+    return length;
+}
+
+// A TOML basic string: quotes, backslashes and control characters escaped; bytes that are not
+// UTF-8 (a title taken from a file name in another encoding) become U+FFFD, since a TOML file
+// must be UTF-8 and the export must read back.
 std::string quoted(const std::string& s) {
     std::string q = "\"";
-    for (const char c : s) {
+    for (std::size_t i = 0; i < s.size();) {
+        const char c = s[i];
         const auto u = static_cast<unsigned char>(c);
+        if (u >= 0x80) {
+            const std::size_t length = utf8_sequence(s, i);
+            q += length == 0 ? std::string("\\uFFFD") : s.substr(i, length);
+            i += std::max<std::size_t>(length, 1);
+            continue;
+        }
         if (c == '"' || c == '\\') {
             q += '\\';
             q += c;
@@ -41,6 +71,7 @@ std::string quoted(const std::string& s) {
         } else {
             q += c;
         }
+        ++i;
     }
     return q + "\"";
 }
@@ -83,6 +114,7 @@ void write_disc(std::ostream& out, const Disc& d) {
 
 void write_toml_scene(std::ostream& out, const Scene& scene) {
     if (!scene.title.empty()) out << "title = " << quoted(scene.title) << "\n";
+    if (!scene.description.empty()) out << "description = " << quoted(scene.description) << "\n";
     out << "\n[box]\nwidth = " << exact(scene.box.width) << "\nheight = " << exact(scene.box.height)
         << "\nboundary = "
         << (scene.box.boundary == Boundary::periodic ? "\"periodic\"" : "\"walls\"") << "\n";

@@ -15,6 +15,7 @@
 #include "collide/sim/algs4.hpp"
 #include "collide/sim/generate.hpp"
 #include "collide/sim/scene_check.hpp"
+#include "toml_limits.hpp"
 
 namespace collide {
 
@@ -38,6 +39,16 @@ std::string num(double v) {
     return s.str();
 }
 
+/// A value as echoed in a message: whole when short, else its start and its length (a 10 MB key
+/// is not worth printing).
+std::string clipped(const std::string& text) {
+    constexpr std::size_t shown = 40;
+    if (text.size() <= shown + 3) return text;
+    std::size_t cut = shown;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;  // UTF-8
+    return text.substr(0, cut) + "... (" + std::to_string(text.size()) + " bytes)";
+}
+
 std::string joined(const Keys& keys) {
     std::string s;
     for (const std::string& k : keys) s += (s.empty() ? "" : ", ") + k;
@@ -53,9 +64,10 @@ class TomlReader {
     Scene read(std::string_view text) {
         toml::table doc = parse(text);
         check_keys(doc, "", top_keys);
-        if (const toml::node* n = doc.get("title")) scene_.title = text_value(*n, "title");
+        if (const toml::node* n = doc.get("title"))
+            scene_.title = bounded_text(*n, "title", max_title_chars);
         if (const toml::node* n = doc.get("description"))
-            scene_.description = text_value(*n, "description");
+            scene_.description = bounded_text(*n, "description", max_description_chars);
         if (const toml::node* n = doc.get("box")) read_box(*n);
         if (const toml::node* n = doc.get("render")) read_render(*n);
         if (const toml::node* n = doc.get("include")) read_includes(*n);
@@ -74,6 +86,7 @@ class TomlReader {
 
   private:
     toml::table parse(std::string_view text) const {
+        check_toml_limits(text, file_);
         try {
             return toml::parse(text, file_);
         } catch (const toml::parse_error& e) {
@@ -97,7 +110,7 @@ class TomlReader {
         for (auto&& [key, value] : table) {
             const std::string name(key.str());
             if (std::find(allowed.begin(), allowed.end(), name) != allowed.end()) continue;
-            std::string reason = "unknown key '" + name + "'";
+            std::string reason = "unknown key '" + clipped(name) + "'";
             const std::string guess = nearest_name(name, allowed);
             reason += guess.empty() ? " (valid keys: " + joined(allowed) + ")"
                                     : " (did you mean '" + guess + "'?)";
@@ -151,6 +164,19 @@ class TomlReader {
         const auto* s = n.as_string();
         if (s == nullptr) fail(n, field, "expected a string");
         return s->get();
+    }
+
+    // Every text a scene carries has a bound, so that no text makes a frame slow to draw.
+    std::string bounded_text(const toml::node& n, const std::string& field,
+                             std::size_t max_chars) const {
+        std::string text = text_value(n, field);
+        const std::size_t chars = utf8_length(text);
+        if (chars > max_chars) {
+            fail(n, field,
+                 "too long: at most " + std::to_string(max_chars) + " characters, got " +
+                     std::to_string(chars) + " (docs/scenes.md, \"Limits\")");
+        }
+        return text;
     }
 
     bool boolean(const toml::node& n, const std::string& field) const {
@@ -265,7 +291,7 @@ class TomlReader {
             if (entry.name == value) return entry.value;
             allowed.emplace_back(entry.name);
         }
-        fail(n, field, "expected one of " + joined(allowed) + " (got \"" + value + "\")");
+        fail(n, field, "expected one of " + joined(allowed) + " (got \"" + clipped(value) + "\")");
     }
 
     std::string caption(const toml::node& n, const std::string& field) const {
@@ -389,7 +415,7 @@ class TomlReader {
         d.radius = positive(required(t, "radius", prefix), prefix + ".radius");
         if (const toml::node* v = t.get("mass")) d.mass = positive(*v, prefix + ".mass");
         if (const toml::node* v = t.get("color")) d.color = rgb(*v, prefix + ".color");
-        if (const toml::node* v = t.get("tag")) d.tag = text_value(*v, prefix + ".tag");
+        if (const toml::node* v = t.get("tag")) d.tag = bounded_text(*v, prefix + ".tag", max_tag_chars);
         return d;
     }
 
@@ -446,7 +472,7 @@ class TomlReader {
             g.seed = static_cast<std::uint64_t>(integer(*v, key("seed"), 0));
         if (seed_override_)
             g.seed = *seed_override_ + index;  // --seed: blocks still get different streams
-        if (const toml::node* v = t.get("tag")) g.tag = text_value(*v, key("tag"));
+        if (const toml::node* v = t.get("tag")) g.tag = bounded_text(*v, key("tag"), max_tag_chars);
         try {
             g.validate(prefix);
         } catch (const Error& e) {
@@ -497,6 +523,12 @@ std::string nearest_name(std::string_view word, const std::vector<std::string>& 
     std::string best;
     std::size_t best_distance = 0;
     for (const std::string& c : candidates) {
+        // The distance is at least the difference in length: a candidate that far off can never
+        // be suggested, and measuring it would cost a table of word x candidate (a 10 MB key:
+        // seconds and a gigabyte).
+        const std::size_t longer = std::max(word.size(), c.size());
+        const std::size_t shorter = std::min(word.size(), c.size());
+        if (longer - shorter > std::max<std::size_t>(1, longer / 3)) continue;
         const std::size_t d = edit_distance(word, c);
         if (best.empty() || d < best_distance) {
             best = c;

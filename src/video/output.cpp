@@ -50,6 +50,12 @@ bool is_sequence_frame_name(std::string_view stem, std::string_view name) {
     return true;
 }
 
+bool is_any_sequence_frame_name(std::string_view name) {
+    const std::size_t underscore = name.rfind('_');
+    return underscore != std::string_view::npos && underscore > 0 &&
+           is_sequence_frame_name(name.substr(0, underscore), name);
+}
+
 std::string sequence_stem(const std::filesystem::path& path) {
     std::filesystem::path p = path;
     while (!p.empty() && !p.has_filename() && p != p.root_path()) p = p.parent_path();

@@ -63,11 +63,15 @@ class VideoWriter::Impl {
         if (options_.format == VideoFormat::png_sequence) {
             check_sequence_name(options_.path);
             const std::string stem = sequence_stem(options_.path);
-            directory_ = io::OutputDirectory(options_.path, [stem](std::string_view name) {
-                return is_sequence_frame_name(stem, name);
-            });
+            // Sweeps the frames directories that killed runs left here, whatever their stem.
+            directory_ = io::OutputDirectory(
+                options_.path,
+                [stem](std::string_view name) { return is_sequence_frame_name(stem, name); },
+                "output", is_any_sequence_frame_name);
         } else {
-            file_ = io::OutputFile(options_.path);
+            io::OutputOptions file_options;
+            file_options.stale_directory_entries = is_any_sequence_frame_name;
+            file_ = io::OutputFile(options_.path, std::move(file_options));
         }
         sink_ = make_sink();
         worker_ = std::thread([this] { encode_loop(); });

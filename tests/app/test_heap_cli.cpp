@@ -159,3 +159,29 @@ TEST_CASE("collide heap: bad options and inputs too big to draw legibly exit 2")
               .exit_code == 0);  // one panel takes up to 36
     CHECK(!fs::exists(dir.path / "x.mp4"));
 }
+
+TEST_CASE("heap and puzzle read --fps as render does: decimal digits, never octal or hex") {
+    // CLI11 alone read `--fps 010` as octal 8 and `--fps 0x1E` as hex 30.
+    TempDir out("heap_fps_digits");
+    const std::string video = (out.path / "h.mp4").string();
+    const auto r = run_collide("heap --ops \"1 2 *\" --size 640x360 --progress none --fps 010 -o '" +
+                               video + "'");
+    CAPTURE(r.output);
+    CHECK(r.exit_code == 0);
+    CHECK(r.output.find("@ 10 fps") != std::string::npos);
+    for (const std::string command :
+         {"heap --ops \"1 2 *\" --last-frame", "puzzle \"1 2 3 4 5 6 7 0 8\" --last-frame"}) {
+        for (const std::string value : {"0x1E", "1e1", "-5", "30.5"}) {
+            const std::string message = run_collide_bad_input(
+                command + " --fps " + value + " -o '" + (out.path / "x.png").string() + "'");
+            CAPTURE(message);
+            CHECK(message.find("--fps: expected a whole number") !=
+                  std::string::npos);
+        }
+    }
+    for (const std::string value : {"0x1", "01x"}) {
+        CHECK(run_collide_bad_input("heap --ops \"1 2 *\" --last-frame --index-base " + value +
+                                    " -o '" + (out.path / "x.png").string() + "'")
+                  .find("--index-base") != std::string::npos);
+    }
+}

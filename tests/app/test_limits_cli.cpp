@@ -195,3 +195,24 @@ TEST_CASE("memory: running out says what ran out and what to lower, exit 1") {
     CHECK(contains(r.output, "use fewer discs"));
     CHECK_FALSE(contains(r.output, "std::bad_alloc"));
 }
+
+TEST_CASE("limits: the classic engine and the array queues are refused where they cannot finish") {
+    TempDir dir("limits_classic");
+    const std::string scene = (dir.path / "big.toml").string();
+    std::ofstream(scene) << "[box]\nwidth = 500\nheight = 500\n[[generate]]\ncount = 200000\n"
+                            "radius = 0.4\n";
+    const std::string classic =
+        run_collide_bad_input("simulate '" + scene + "' --engine classic --until 100");
+    CHECK(contains(classic, "--until: the classic engine predicts"));
+    CHECK(contains(classic, "--engine fast"));
+    CHECK(contains(run_collide_bad_input("simulate '" + scene + "' --engine classic --until 100 "
+                                         "--pq unordered"),
+                   "--until: "));
+    const std::string array = run_collide_bad_input(
+        "render dense-fluid --engine classic --pq unordered --duration 60 -o '" +
+        (dir.path / "x.mp4").string() + "'");
+    CHECK(contains(array, "render.speed: an array queue"));
+    CHECK(contains(array, "--pq binary"));
+    // The fast engine runs the same scene and span.
+    CHECK(run_collide("simulate '" + scene + "' --until 0.001").exit_code == 0);
+}

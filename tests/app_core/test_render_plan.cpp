@@ -339,3 +339,30 @@ TEST_CASE("still_clock refuses a time more frame intervals away than int64 / dou
     }
     CHECK(still_clock(1e12, 1.0, 30).count == 30000000000001);  // far, but countable
 }
+
+TEST_CASE("a speed too small for any time step is named where it was written, not as a dt") {
+    // 5e-324 / 30 is 0: before, "scene [render] dt: expected a positive time step, got '0'",
+    // a field the user never wrote, without file or line.
+    Scene scene = two_disc_scene(0.1);
+    scene.render.speed = 5e-324;
+    scene.render.speed_at = "s.toml:7: render.speed";
+    RenderRequest request;
+    request.scene = "two";
+    try {
+        (void)plan_render(request, scene);
+        FAIL("accepted speed = 5e-324");
+    } catch (const Error& e) {
+        const std::string message = e.what();
+        CAPTURE(message);
+        CHECK(e.exit_code() == 2);
+        CHECK(message.rfind("s.toml:7: render.speed: ", 0) == 0);
+        CHECK(message.find("dt:") == std::string::npos);
+    }
+    request.speed = 5e-324;
+    try {
+        (void)plan_render(request, scene);
+        FAIL("accepted --speed 5e-324");
+    } catch (const Error& e) {
+        CHECK(std::string(e.what()).rfind("--speed: ", 0) == 0);
+    }
+}

@@ -220,6 +220,35 @@ TEST_CASE(
     CHECK(read_all(dir.path / "victim.txt") == "precious");
 }
 
+TEST_CASE("another user's link to a directory in a sticky directory is not followed either") {
+    // Before, the rule applied to the last component only: /tmp/dirlink/notes.csv, with
+    // dirlink someone else's link to a directory, replaced a file in that directory.
+    if (geteuid() != 0) COLLIDE_SKIP_TEST("needs root to give a link another owner");
+    TempDir dir("io_sticky_dir");
+    const fs::path shared = dir.path / "tmp";
+    fs::create_directory(shared);
+    fs::permissions(shared, static_cast<fs::perms>(01777));
+    fs::create_directory(dir.path / "victims");
+    write_file(dir.path / "victims" / "notes.csv", "precious");
+    fs::create_symlink(dir.path / "victims", shared / "dirlink");
+    REQUIRE(lchown((shared / "dirlink").c_str(), 12345, 12345) == 0);
+    // A link of our own on the way to it changes nothing.
+    fs::create_symlink(shared / "dirlink", dir.path / "mine");
+    for (const fs::path& path : {shared / "dirlink" / "notes.csv", dir.path / "mine" / "notes.csv",
+                                 shared / "dirlink" / "." / "new.csv"}) {
+        CAPTURE(path);
+        CHECK(contains(input_error_message([&] { OutputFile file(path); }),
+                       "refusing to follow the link"));
+    }
+    CHECK(read_all(dir.path / "victims" / "notes.csv") == "precious");
+    // Our own link in the same place is followed.
+    fs::create_symlink(dir.path / "victims", shared / "ours");
+    OutputFile ours(shared / "ours" / "notes.csv");
+    ours.write("new");
+    ours.commit();
+    CHECK(read_all(dir.path / "victims" / "notes.csv") == "new");
+}
+
 TEST_CASE("unwritable destinations are input errors with the system's reason") {
     TempDir dir("io_errors");
     CHECK(contains(input_error_message([&] { OutputFile f(dir.path / "missing" / "x.txt"); }),

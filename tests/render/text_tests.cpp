@@ -2,9 +2,15 @@
 // puts the header and the strip; no text, no glyph pixels.
 #include <doctest/doctest.h>
 
+#include <chrono>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
 
 #include "../support/skip.hpp"
+#include "../support/temp_dir.hpp"
 #include "collide/error.hpp"
 #include "font.hpp"
 #include "layout.hpp"
@@ -90,6 +96,66 @@ TEST_CASE("a missing font file is a runtime error naming it") {
     config.font_path = "/nonexistent/font.ttf";
     CHECK_THROWS_WITH_AS(Renderer(config, test::test_backend()),
                          doctest::Contains("/nonexistent/font.ttf"), Error);
+}
+
+TEST_CASE("a truncated or damaged font is a runtime error naming it, not a crash") {
+    // stb_truetype follows the file's offsets unchecked: before, both of these ended in SIGSEGV
+    // (or worse, silently wrong glyphs).
+    const std::string font = RenderConfig{}.font_path;
+    if (!std::filesystem::exists(font)) COLLIDE_SKIP_TEST("no DejaVu Sans at " << font);
+    std::ifstream in(font, std::ios::binary);
+    const std::string data{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    REQUIRE(data.size() > 100000);
+    const collide::test::TempDir dir("font_damage");
+    const auto write = [&](const std::string& name, const std::string& bytes) {
+        const std::filesystem::path path = dir.path / name;
+        std::ofstream(path, std::ios::binary) << bytes;
+        return path.string();
+    };
+    std::string damaged = data;
+    for (std::size_t i = data.size() / 2; i < data.size() / 2 + 4096; ++i) damaged[i] = '\xff';
+    for (const std::string& path :
+         {write("truncated.ttf", data.substr(0, data.size() / 2)),
+          write("short.ttf", data.substr(0, 10)), write("damaged.ttf", damaged)}) {
+        CAPTURE(path);
+        CHECK_THROWS_WITH_AS(FontAtlas(path, 20.0F), doctest::Contains(path.c_str()), Error);
+    }
+    CHECK(FontAtlas(write("whole.ttf", data), 20.0F).line_height() > 0.0F);
+}
+
+TEST_CASE("text larger than 4K lesson text still fits the font atlas") {
+    // `thumbnail --size 8192x4608` asked for glyphs larger than the largest atlas (exit 1).
+    const std::string font = RenderConfig{}.font_path;
+    if (!std::filesystem::exists(font)) COLLIDE_SKIP_TEST("no DejaVu Sans at " << font);
+    for (const float pixels : {90.0F, 200.0F, 400.0F}) {
+        CAPTURE(pixels);
+        const FontAtlas atlas(font, pixels);
+        CHECK(atlas.text_width("W") > 0.5F * pixels);
+    }
+}
+
+TEST_CASE("word wrap is linear in the text, however long its lines") {
+    // Before, each word re-measured the whole line: a word and 300,000 spaces (one endless line
+    // of empty words) took minutes; a description of a megabyte hung the first frame.
+    const std::string font = RenderConfig{}.font_path;
+    if (!std::filesystem::exists(font)) COLLIDE_SKIP_TEST("no DejaVu Sans at " << font);
+    const FontAtlas atlas(font, 16.0F);
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<std::string> spaces = wrap_words(atlas, "a" + std::string(300'000, ' '), 1e9F);
+    const std::vector<std::string> words = wrap_words(atlas, std::string(300'000, 'a'), 100.0F);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    CHECK(seconds < 5.0);
+    CHECK(spaces.size() == 1);
+    CHECK(words.size() == 1);  // one word wider than the line gets a line of its own
+    // The same lines as measuring each candidate line whole.
+    const std::string text = "the quick brown fox jumps over the lazy dog  twice, and again";
+    for (const float width : {40.0F, 90.0F, 150.0F, 400.0F}) {
+        CAPTURE(width);
+        for (const std::string& line : wrap_words(atlas, text, width)) {
+            CHECK((atlas.text_width(line) <= width + 0.01F || line.find(' ') == std::string::npos));
+        }
+    }
 }
 
 TEST_CASE("UTF-8 decoding: multi-byte characters become one code point each") {

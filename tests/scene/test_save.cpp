@@ -72,6 +72,29 @@ TEST_CASE("save: titles and tags with quotes and control characters survive") {
     check_same_discs(scene, back);
 }
 
+TEST_CASE("save: the description is exported, and a title that is not UTF-8 still reads back") {
+    // Before, every export dropped `description`, and a title taken from a file name in
+    // another encoding (bytes that are not UTF-8) made a TOML file `check` refused.
+    Scene scene;
+    scene.title = "caf\xE9 \xC3\xA9 \xED\xA0\x80 end\xC3";  // Latin-1 e, UTF-8 e, a surrogate
+    scene.description = "What it shows: \"quoted\", and \xC3\xA9.";
+    Disc d;
+    d.position = {0.5, 0.5};
+    d.radius = 0.1;
+    scene.discs.push_back(d);
+    std::ostringstream text;
+    write_toml_scene(text, scene);
+    const Scene back = parse_toml_scene(text.str(), "back.toml", ".");
+    CHECK(back.description == scene.description);
+    // Each byte that is not UTF-8 becomes U+FFFD; the rest is kept.
+    CHECK(back.title == "caf\xEF\xBF\xBD \xC3\xA9 \xEF\xBF\xBD\xEF\xBF\xBD\xEF\xBF\xBD end\xEF\xBF\xBD");
+    check_same_discs(scene, back);
+    // Written again, it is the same file: a fixed point.
+    std::ostringstream again;
+    write_toml_scene(again, back);
+    CHECK(parse_toml_scene(again.str(), "again.toml", ".").title == back.title);
+}
+
 TEST_CASE("save: files by extension, through a temporary file, errors leave nothing behind") {
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / "collide_test_save";
     std::filesystem::remove_all(dir);

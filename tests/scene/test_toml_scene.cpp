@@ -361,3 +361,83 @@ TEST_CASE("toml: a number too small for a double reads as 0, as in algs4 files a
     // A UTF-8 byte order mark is accepted here too.
     CHECK(parse("\xEF\xBB\xBF[[disc]]\nposition = [0.5, 0.5]\nradius = 0.1\n").discs.size() == 1);
 }
+
+TEST_CASE("toml: nesting deeper than the limit is refused before the parser recurses into it") {
+    // 50,000 dotted parts overflowed toml++'s stack (SIGSEGV); its own limit covers arrays and
+    // inline tables only. Each form is refused with the file, the line and the depth allowed.
+    std::string dotted = "a";
+    for (int i = 0; i < 50000; ++i) dotted += ".a";
+    std::string header = "title = \"t\"\n[a";
+    for (int i = 0; i < 50000; ++i) header += ".a";
+    header += "]\n";
+    // Inline tables whose keys are dotted: each within the limit, together far beyond it.
+    std::string mixed = "x = ";
+    for (int i = 0; i < 40; ++i) mixed += "{ a.b.c = ";
+    mixed += "1";
+    for (int i = 0; i < 40; ++i) mixed += " }";
+    mixed += "\n";
+    for (const std::string& text : {dotted + " = 1\n", header, "[[a.b]]\n" + mixed}) {
+        const std::string message = toml_error(text);
+        CAPTURE(message.substr(0, 200));
+        CHECK(message.size() < 300);
+        CHECK(contains(message, "nested too deeply: at most 64 levels"));
+    }
+    CHECK(contains(toml_error(header), "s.toml:2: "));
+    // Quoted dots are part of one key, and a string's brackets are text: within the limit.
+    std::string quoted = "title = \"";
+    for (int i = 0; i < 200; ++i) quoted += "[{.";
+    quoted += "\"\n\"";
+    for (int i = 0; i < 200; ++i) quoted += "a.";
+    quoted += "\" = 1\n";
+    const std::string unknown = toml_error(quoted);
+    CHECK(contains(unknown, "unknown key"));
+    CHECK_FALSE(contains(unknown, "nested too deeply"));
+    // An ordinary scene's nesting is far from the limit.
+    CHECK(parse("[render]\n[[render.captions]]\nat = 0\ntext = \"a.b [c] {d}\"\n"
+                "[[disc]]\nposition = [0.5, 0.5]\nradius = 0.1\n")
+              .discs.size() == 1);
+}
+
+TEST_CASE("toml: a scene of millions of tiny values is refused before it is parsed") {
+    // `title = [{},{},...]`: about 3 bytes a value, about 100 bytes each once parsed.
+    std::string text = "title = [";
+    for (int i = 0; i < 2'000'001; ++i) text += "{},";
+    text += "]\n";
+    const std::string message = toml_error(text);
+    CHECK(contains(message, "more than 2000000 values"));
+    CHECK(contains(message, "s.toml:1: "));
+}
+
+TEST_CASE("toml: every scene text has a bound: title, description and tags") {
+    const std::string long_title(256, 'T');
+    const std::string title_error = toml_error("title = \"" + long_title + "\"\n");
+    CHECK(contains(title_error, "s.toml:1: title: too long: at most 255 characters, got 256"));
+    const std::string long_description(1'000'000, 'd');
+    const std::string description_error =
+        toml_error("title = \"t\"\ndescription = \"" + long_description + "\"\n");
+    CHECK(contains(description_error, "s.toml:2: description: too long: at most 600 characters"));
+    CHECK(description_error.size() < 200);
+    CHECK(contains(toml_error("[[disc]]\nposition = [0.5, 0.5]\nradius = 0.1\ntag = \"" +
+                              std::string(65, 'x') + "\"\n"),
+                   "disc[0].tag: too long: at most 64"));
+    // At the bound, in characters (not bytes): accepted.
+    std::string accented;
+    for (int i = 0; i < 600; ++i) accented += "\xC3\xA9";  // é
+    CHECK(parse("description = \"" + accented + "\"\n[[disc]]\nposition = [0.5, 0.5]\n"
+                "radius = 0.1\n")
+              .description == accented);
+}
+
+TEST_CASE("toml: a huge unknown key is refused quickly, its echo cut, without a suggestion") {
+    // Before: a 10 MB key took 34 s and a gigabyte (an edit-distance table against every valid
+    // key) and the whole key came back in the message.
+    const std::string key(2'000'000, 'k');
+    const std::string message = toml_error(key + " = 1\n");
+    CHECK(contains(message, "s.toml:1: unknown key 'kkkk"));
+    CHECK(contains(message, "... (2000000 bytes)"));
+    CHECK(message.size() < 300);
+    CHECK(nearest_name(key, {"title", "description"}).empty());
+    CHECK(nearest_name("titel", {"title", "description"}) == "title");
+    CHECK(contains(toml_error("[render]\ntheme = \"" + std::string(100'000, 'x') + "\"\n"),
+                   "(100000 bytes)"));
+}

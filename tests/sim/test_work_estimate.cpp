@@ -134,3 +134,34 @@ TEST_CASE("work: cell crossings of the fast engine: a lone disc in a periodic bo
     run.cell_grid = true;
     CHECK(first_excess(estimate_work(s, run)).what == "events");
 }
+
+TEST_CASE("work: the classic engine costs 2 N predictions an event, an array queue its length") {
+    // Before, the limits counted events only: 200,000 discs with --engine classic (each event
+    // predicted against every disc) or an unordered queue (each removal scans the whole array)
+    // were accepted and would have run for days.
+    const Scene s = test::lattice_fluid(30, 0.3, Boundary::walls, 1);
+    const double n = static_cast<double>(s.discs.size());
+    RunShape run;
+    run.span = 5.0;
+    run.event_driven = true;
+    const WorkEstimate fast = estimate_work(s, run);
+    CHECK(fast.predictions == 0.0);
+    CHECK(fast.queue_steps == 0.0);
+    run.classic = true;
+    const WorkEstimate classic = estimate_work(s, run);
+    CHECK(classic.collisions == doctest::Approx(fast.collisions));
+    CHECK(classic.predictions ==
+          doctest::Approx(n * (n - 1.0) / 2.0 + fast.collisions * 2.0 * n));
+    CHECK(classic.queue_steps == 0.0);  // a heap: O(log) per operation
+    run.array_queue = true;
+    const WorkEstimate array = estimate_work(s, run);
+    const double pushed = std::max(2.0, classic_finite_fraction * 2.0 * n);
+    CHECK(array.queue_steps ==
+          doctest::Approx(fast.collisions * n + pushed * fast.collisions * fast.collisions / 2.0));
+    // Each is a limit of its own, named when it is the one exceeded.
+    WorkEstimate work;
+    work.predictions = 2e11;
+    CHECK(first_excess(work).what == "pair predictions");
+    work.queue_steps = 1e13;
+    CHECK(first_excess(work).what == "queue steps");
+}

@@ -27,7 +27,22 @@ struct SignalledRun {
     std::chrono::milliseconds settle{500};           ///< run time between started() and the signal
     int repeats = 1;                                 ///< how many times the signal is sent
     std::chrono::milliseconds repeat_gap{0};         ///< between two of them
+    std::vector<int> ignored;  ///< signals the child starts with ignored (as under `nohup`)
+    /// The child leads a process group of its own and the signal goes to the whole group, as a
+    /// terminal's Ctrl-C does (for a shell running a loop of commands).
+    bool process_group = false;
+    /// How long the child may take to end after the signal before the test fails.
+    std::chrono::milliseconds end_timeout{30000};
 };
+
+/// How a run that a signal stopped ends (docs/outputs.md): by that very signal, after its clean
+/// stop (the shell's $? is 128 + its number), or, for SIGQUIT and SIGXCPU, whose default would
+/// dump core, with exit status 128 + its number.
+inline bool ended_by(int status, int signal_number) {
+    if (signal_number == SIGQUIT || signal_number == SIGXCPU)
+        return WIFEXITED(status) && WEXITSTATUS(status) == 128 + signal_number;
+    return WIFSIGNALED(status) && WTERMSIG(status) == signal_number;
+}
 
 /// True when process `pid` has a file open in `directory` (an unnamed O_TMPFILE temporary shows
 /// as "DIR/#INODE (deleted)" in /proc): the way to see that a writer has begun when its
@@ -51,6 +66,8 @@ inline int run_and_signal(const SignalledRun& run, int signal_number) {
     const pid_t child = fork();
     REQUIRE(child >= 0);
     if (child == 0) {
+        for (const int ignored : run.ignored) signal(ignored, SIG_IGN);
+        if (run.process_group) setpgid(0, 0);
         if (!run.log.empty()) {
             const int fd = open(run.log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
             if (fd < 0) _exit(126);
@@ -74,16 +91,16 @@ inline int run_and_signal(const SignalledRun& run, int signal_number) {
     std::this_thread::sleep_for(run.settle);
     for (int sent = 0; sent < run.repeats; ++sent) {
         if (sent > 0) std::this_thread::sleep_for(run.repeat_gap);
-        kill(child, signal_number);
+        kill(run.process_group ? -child : child, signal_number);
     }
     int status = 0;
-    for (int attempt = 0; attempt < 3000; ++attempt) {
+    for (auto waited = std::chrono::milliseconds{0}; waited < run.end_timeout; waited += poll) {
         if (waitpid(child, &status, WNOHANG) == child) return status;
         std::this_thread::sleep_for(poll);
     }
-    kill(child, SIGKILL);
+    kill(run.process_group ? -child : child, SIGKILL);
     waitpid(child, &status, 0);
-    FAIL("the child did not stop within 30 s of the signal");
+    FAIL("the child did not stop within " << run.end_timeout.count() << " ms of the signal");
     return status;
 }
 

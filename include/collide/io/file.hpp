@@ -26,6 +26,7 @@
 
 #include <sys/types.h>
 
+#include <atomic>
 #include <cstddef>
 #include <filesystem>
 #include <functional>
@@ -51,8 +52,9 @@ class File {
     [[nodiscard]] int get() const noexcept { return fd_; }
     [[nodiscard]] explicit operator bool() const noexcept { return fd_ >= 0; }
 
-    /// Writes all `size` bytes (retrying short writes and EINTR). Throws Error(runtime)
-    /// "cannot write 'SHOWN': REASON" (e.g. "No space left on device").
+    /// Writes all `size` bytes (retrying short writes, and EINTR unless a stop was requested:
+    /// see set_stop_flag). Throws Error(runtime) "cannot write 'SHOWN': REASON" (e.g. "No space
+    /// left on device", "interrupted").
     void write_all(const void* data, std::size_t size, const std::filesystem::path& shown) const;
     /// close(2), checked (NFS reports delayed write errors here). Throws Error(runtime).
     void close(const std::filesystem::path& shown);
@@ -60,6 +62,12 @@ class File {
   private:
     int fd_ = -1;
 };
+
+/// Registers the process's stop request (the app's signal handlers set it; null: none). A write
+/// that blocks (a reader of a pipe or FIFO that stopped reading) returns EINTR when a signal
+/// arrives; File::write_all then gives up instead of retrying when the flag is set, so a signal
+/// ends a run whatever its output. The flag must outlive its registration.
+void set_stop_flag(const std::atomic<bool>* flag) noexcept;
 
 /// How an OutputFile may treat its destination.
 struct OutputOptions {
@@ -72,6 +80,10 @@ struct OutputOptions {
     /// Use an unnamed O_TMPFILE temporary where the filesystem supports it. Only tests turn this
     /// off, to exercise the hidden named temporary that other filesystems get.
     bool unnamed_temporary = true;
+    /// Abandoned temporary directories beside the destination (a PNG sequence whose run was
+    /// killed) are swept when every entry satisfies this (see sweep_stale_temporaries); unset:
+    /// they are kept.
+    std::function<bool(std::string_view)> stale_directory_entries{};
 };
 
 /// One output file: a temporary beside the destination (see the file comment), moved onto it by
@@ -148,8 +160,10 @@ class OutputDirectory {
 
     OutputDirectory() = default;
     /// Throws Error(input) naming the path and the reason when the destination is unsuitable.
+    /// Abandoned temporary directories beside it are swept when all their entries satisfy
+    /// `stale_entries` (unset: `replaceable`): a sequence of any name killed earlier.
     OutputDirectory(const std::filesystem::path& destination, NamePredicate replaceable,
-                    std::string label = "output");
+                    std::string label = "output", const NamePredicate& stale_entries = {});
     ~OutputDirectory();
     OutputDirectory(OutputDirectory&& other) noexcept;
     OutputDirectory& operator=(OutputDirectory&& other) noexcept;

@@ -48,7 +48,17 @@ struct RunShape {
     double dt = 0.0;            ///< the time-driven step
     bool all_pairs = true;      ///< time-driven overlap checks: all pairs, else a cell grid
     double frames = 0.0;        ///< frames taken (0 for a run without frames)
+    /// The event-driven engine is the classic one, which predicts each event's two discs against
+    /// all N discs: O(N) work per event where the fast engine's cell grid does O(1).
+    bool classic = false;
+    /// Its queue is an array (unordered or ordered) whose remove or insert costs O(queue size).
+    bool array_queue = false;
 };
+
+/// The share of the classic engine's predictions that are finite and pushed: 0.9 % (brownian,
+/// diffusion) to 7 % (dense-fluid) and 10 % (gas) measured with `collide simulate --json`
+/// (pq_pushes / predictions); the lowest is taken, so the estimate errs on the side of running.
+inline constexpr double classic_finite_fraction = 0.01;
 
 /// The estimated work of a run; every field is >= 0 and may be +inf.
 struct WorkEstimate {
@@ -58,6 +68,13 @@ struct WorkEstimate {
     double pair_checks = 0.0;  ///< time-driven overlap checks: steps * N (N - 1) / 2, or with a
                                ///< grid steps * N * grid_checks_per_disc
     double frames = 0.0;       ///< frames, as given
+    /// The classic engine's pair predictions: N (N - 1) / 2 at the start, then 2 N per event.
+    double predictions = 0.0;
+    /// Entries an array queue walks over. With lazy invalidation the queue keeps every event
+    /// pushed until its time comes: it starts with about N entries and every event adds the
+    /// finite predictions of its two discs, p = max(2, classic_finite_fraction * 2 N), so event k
+    /// costs about N + k p steps: in total events * N + p * events^2 / 2.
+    double queue_steps = 0.0;
     /// span + dt == span: the time-driven engine's clock cannot move by dt at the run's end, so
     /// the run could never finish, however long one waits.
     bool dt_below_resolution = false;
@@ -78,6 +95,8 @@ struct WorkLimits {
     double steps = 1e9;         ///< time-driven steps, whatever their size
     double pair_checks = 1e13;  ///< at ~10^9 checks per second: about three hours
     double frames = 1e7;        ///< frames a run goes through (a still passes all before its own)
+    double predictions = 1e11;  ///< the classic engine's, at ~3 * 10^7 a second: about an hour
+    double queue_steps = 3e12;  ///< an array queue's, at ~10^9 a second (a scan): about an hour
 };
 
 /// Which limit a run exceeds, and by how much.

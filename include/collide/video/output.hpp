@@ -29,6 +29,9 @@ void check_sequence_name(const std::filesystem::path& path);
 /// True for names sequence_frame_name(stem, i) gives for some i: the files a new sequence of
 /// `stem` may replace.
 [[nodiscard]] bool is_sequence_frame_name(std::string_view stem, std::string_view name);
+/// True for the frame names of a sequence of any stem ("<stem>_<5 or more digits>.png"): what an
+/// abandoned sequence's temporary directory holds, swept by the next writer in that directory.
+[[nodiscard]] bool is_any_sequence_frame_name(std::string_view name);
 /// The stem of the frames in the directory `path` ("frames/" and "frames" give "frames").
 [[nodiscard]] std::string sequence_stem(const std::filesystem::path& path);
 

@@ -74,6 +74,12 @@ WorkEstimate estimate_work(const Scene& scene, const RunShape& run) noexcept {
     if (run.event_driven && span > 0.0) {
         work.collisions = collision_rate(scene).total() * span;
         if (run.cell_grid) work.crossings = cell_crossing_rate(scene) * span;
+        const auto n = static_cast<double>(scene.discs.size());
+        if (run.classic) work.predictions = n * (n - 1.0) / 2.0 + work.collisions * 2.0 * n;
+        if (run.classic && run.array_queue) {
+            const double pushed = std::max(2.0, classic_finite_fraction * 2.0 * n);
+            work.queue_steps = work.collisions * n + pushed * work.collisions * work.collisions / 2.0;
+        }
     }
     if (run.time_driven && span > 0.0) {
         work.steps = span / run.dt;
@@ -84,7 +90,8 @@ WorkEstimate estimate_work(const Scene& scene, const RunShape& run) noexcept {
     }
     work.frames = std::max(0.0, run.frames);
     // 0 * inf (no discs, infinite span) is no work, not NaN.
-    for (double* v : {&work.collisions, &work.crossings, &work.steps, &work.pair_checks}) {
+    for (double* v : {&work.collisions, &work.crossings, &work.steps, &work.pair_checks,
+                      &work.predictions, &work.queue_steps}) {
         if (std::isnan(*v)) *v = 0.0;
     }
     return work;
@@ -104,6 +111,8 @@ WorkExcess first_excess(const WorkEstimate& work, const WorkLimits& limits) {
     consider("time-driven steps", work.steps, limits.steps);
     consider("overlap checks", work.pair_checks, limits.pair_checks);
     consider("frames", work.frames, limits.frames);
+    consider("pair predictions", work.predictions, limits.predictions);
+    consider("queue steps", work.queue_steps, limits.queue_steps);
     return worst;
 }
 

@@ -1,0 +1,226 @@
+// Signals and limits the campaign of issue #26 sent at the real program: an interrupt stops a
+// shell loop, `nohup` stays in force, a reader that never reads does not block Ctrl-C, every
+// fatal-by-default signal (SIGUSR1, SIGALRM, SIGXCPU) stops cleanly, a file-size limit is an
+// ordinary failure, a signal while a large scene loads gets the one message, and a PNG
+// sequence's directory abandoned by a killed run is swept by the next run, whatever its name.
+
+#include <doctest/doctest.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "../support/files.hpp"
+#include "../support/skip.hpp"
+#include "../support/signal_child.hpp"
+#include "../support/temp_dir.hpp"
+#include "run_collide.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using collide::test::ended_by;
+using collide::test::entries;
+using collide::test::read_all;
+using collide::test::run_and_signal;
+using collide::test::SignalledRun;
+using collide::test::TempDir;
+using collide::test::write_file;
+
+bool has_hidden_entry(const fs::path& dir) {
+    for (const std::string& name : entries(dir))
+        if (name.front() == '.') return true;
+    return false;
+}
+
+/// `collide render gas` into DIR/out.mp4 whose first frame never comes (--speed 1e300).
+SignalledRun endless_render(const fs::path& out, const fs::path& log) {
+    SignalledRun run;
+    run.argv = {COLLIDE_EXE, "render",     "gas",  "-o",         (out / "out.mp4").string(),
+                "--speed",   "1e300",      "-q",   "l",          "--duration",
+                "1",         "--progress", "none", "--no-limits"};
+    run.log = log;
+    run.started_child = [out](pid_t child) {
+        return has_hidden_entry(out) || collide::test::has_open_file_in(child, out);
+    };
+    return run;
+}
+
+/// The resident memory of process `pid`, in bytes (0 once it is gone).
+long resident_bytes(pid_t pid) {
+    std::ifstream statm("/proc/" + std::to_string(pid) + "/statm");
+    long size = 0;
+    long resident = 0;
+    statm >> size >> resident;
+    return resident * sysconf(_SC_PAGESIZE);
+}
+
+pid_t dead_pid() {
+    const pid_t child = fork();
+    REQUIRE(child >= 0);
+    if (child == 0) _exit(0);
+    waitpid(child, nullptr, 0);
+    return child;
+}
+
+}  // namespace
+
+TEST_CASE("signals: Ctrl-C in a shell loop stops the loop, not just the render") {
+    // The terminal sends SIGINT to the whole foreground group: the shell and collide. A shell
+    // goes on with its loop unless the command died of SIGINT (it assumes the command handled
+    // it): before, collide exited 1 and the loop rendered the next scene.
+    TempDir out("signals_loop");
+    const fs::path log = out.path / "log.txt";
+    const std::string render = std::string("'") + COLLIDE_EXE + "' render gas -o '" +
+                               (out.path / "out.mp4").string() +
+                               "' --speed 1e300 -q l --duration 1 --progress none --no-limits";
+    SignalledRun run;
+    run.argv = {"/bin/bash", "-c", "for i in 1 2; do " + render + "; echo \"next $?\"; done"};
+    run.log = log;
+    run.process_group = true;
+    run.started_child = [&](pid_t) { return read_all(log).find("caption") != std::string::npos; };
+    run.settle = std::chrono::milliseconds(800);
+    const int status = run_and_signal(run, SIGINT);
+    const std::string output = read_all(log);
+    CAPTURE(output);
+    CHECK(output.find("interrupted by SIGINT; nothing was written") != std::string::npos);
+    CHECK(output.find("next") == std::string::npos);  // the loop did not go on
+    CHECK(ended_by(status, SIGINT));                   // the shell itself stopped on it
+    CHECK(entries(out.path) == std::vector<std::string>{"log.txt"});
+}
+
+TEST_CASE("signals: under nohup, SIGHUP stays ignored and the render completes") {
+    TempDir out("signals_nohup");
+    TempDir logs("signals_nohup_log");
+    SignalledRun run;
+    run.argv = {COLLIDE_EXE, "render",     "gas", "-o", (out.path / "out.mp4").string(), "-q", "l",
+                "--duration", "2", "--progress", "none"};
+    run.log = logs.path / "log.txt";
+    run.ignored = {SIGHUP};
+    run.started_child = [&](pid_t child) {
+        return has_hidden_entry(out.path) || collide::test::has_open_file_in(child, out.path);
+    };
+    run.settle = std::chrono::milliseconds(100);
+    const int status = run_and_signal(run, SIGHUP);
+    CAPTURE(read_all(run.log));
+    REQUIRE(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 0);  // before: "interrupted by SIGHUP", exit 1
+    CHECK(entries(out.path) == std::vector<std::string>{"out.mp4"});
+}
+
+TEST_CASE("signals: a reader that never reads does not keep a signal from stopping the run") {
+    // The events log goes to a FIFO whose reader holds it open and never reads: once the pipe
+    // is full, every write blocks. Before, the write loop retried after EINTR and SIGINT and
+    // SIGTERM were ignored for as long as the reader stalled.
+    for (const int signal_number : {SIGINT, SIGTERM}) {
+        CAPTURE(signal_number);
+        TempDir out("signals_stall");
+        const fs::path fifo = out.path / "events.fifo";
+        REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+        const int reader = open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
+        REQUIRE(reader >= 0);
+        SignalledRun run;
+        run.argv = {COLLIDE_EXE, "simulate",     "gas",        "--until",
+                    "1e300",     "--events-log", fifo.string(), "--no-limits"};
+        run.log = out.path / "log.txt";
+        run.started = [] { return true; };
+        run.settle = std::chrono::milliseconds(1000);  // the pipe's 64 KiB fill in milliseconds
+        run.end_timeout = std::chrono::milliseconds(10000);
+        const int status = run_and_signal(run, signal_number);
+        close(reader);
+        CHECK(ended_by(status, signal_number));
+        CHECK(read_all(run.log).find("nothing was written") != std::string::npos);
+    }
+}
+
+TEST_CASE("signals: SIGUSR1, SIGUSR2, SIGALRM and SIGXCPU stop as cleanly as SIGINT") {
+    // Their default kills the process with no message (and, for SIGXCPU, a core dump).
+    for (const int signal_number : {SIGUSR1, SIGUSR2, SIGALRM, SIGXCPU}) {
+        CAPTURE(signal_number);
+        TempDir out("signals_other");
+        TempDir logs("signals_other_log");
+        const fs::path log = logs.path / "log.txt";
+        const int status = run_and_signal(endless_render(out.path, log), signal_number);
+        CHECK(ended_by(status, signal_number));
+        CHECK(read_all(log).find("; nothing was written") != std::string::npos);
+        CHECK(entries(out.path).empty());
+    }
+}
+
+TEST_CASE("signals: a file-size limit is exit 1 with a message and nothing left") {
+    // Before, SIGXFSZ killed every writer (exit 153, no message) and a PNG sequence left its
+    // hidden frames directory behind. `ulimit -f 20`: 10 KB in sh's 512-byte blocks, less than
+    // any one frame or video here.
+    for (const std::string format : {"mp4", "png", "gif"}) {
+        CAPTURE(format);
+        TempDir out("signals_fsize");
+        const std::string target = (out.path / (format == "png" ? "frames" : "out." + format)).string();
+        const collide::test::RunResult r = collide::test::run_collide_env(
+            "ulimit -f 20;", "render gas -q l --duration 1 --progress none --format " + format +
+                                 " -o '" + target + "'");
+        CAPTURE(r.output);
+        CHECK(r.exit_code == 1);
+        CHECK(r.output.find("File too large") != std::string::npos);
+        CHECK(entries(out.path).empty());
+    }
+}
+
+TEST_CASE("signals: a signal while a large scene still loads gets the one interrupt message") {
+    // The moment to signal is read from the child's resident memory, which AddressSanitizer's
+    // own allocations blur.
+    if (collide::test::address_sanitizer) COLLIDE_SKIP_TEST("memory marks differ under ASan");
+    TempDir out("signals_loading");
+    const fs::path scene = out.path / "big.toml";
+    // 1,000,000 generated discs: seconds of loading, in which nothing polls.
+    write_file(scene,
+               "[box]\nwidth = 1400\nheight = 1400\n[[generate]]\ncount = 1000000\nradius = 0.4\n");
+    for (const std::string command : {"check", "render"}) {
+        CAPTURE(command);
+        SignalledRun run;
+        run.argv = {COLLIDE_EXE, command, scene.string()};
+        if (command == "render") {
+            run.argv.insert(run.argv.end(), {"-o", (out.path / "out.mp4").string()});
+        }
+        run.log = out.path / "log.txt";
+        // Under way once generating has taken 180 MB (the program alone, its libraries loaded,
+        // takes about 90): well inside the loading, which goes on to about 280 MB.
+        run.started_child = [](pid_t child) { return resident_bytes(child) > (180L << 20); };
+        run.settle = std::chrono::milliseconds(0);
+        const int status = run_and_signal(run, SIGINT);
+        CHECK(ended_by(status, SIGINT));
+        CHECK(read_all(run.log) == "collide: error: interrupted by SIGINT; nothing was written\n");
+    }
+    CHECK(entries(out.path) == std::vector<std::string>{"big.toml", "log.txt"});
+}
+
+TEST_CASE("signals: a frames directory that a killed run left is swept by the next, any name") {
+    // A PNG sequence is written in a hidden directory; SIGKILL leaves it. The next run writing
+    // into the same directory removes it (the process is gone, nobody holds its lock), whatever
+    // the sequence was called; before, only a sequence of the same name swept it.
+    TempDir out("signals_sweep");
+    const std::string dead = std::to_string(dead_pid());
+    const fs::path abandoned = out.path / (".lecture.collide-" + dead + "-a1b2c3");
+    fs::create_directory(abandoned);
+    write_file(abandoned / "lecture_00000.png", "frame");
+    write_file(abandoned / "lecture_00001.png", "frame");
+    for (const std::string format : {"png", "mp4"}) {
+        CAPTURE(format);
+        fs::create_directory(abandoned);
+        write_file(abandoned / "lecture_00000.png", "frame");
+        const std::string target =
+            (out.path / (format == "png" ? "other" : "other.mp4")).string();
+        const collide::test::RunResult r = collide::test::run_collide(
+            "render gas -q l --duration 0.2 --progress none --format " + format + " -o '" +
+            target + "'");
+        CAPTURE(r.output);
+        CHECK(r.exit_code == 0);
+        CHECK_FALSE(fs::exists(abandoned));
+    }
+}
