@@ -23,6 +23,7 @@
 #include "collide/video/png.hpp"
 #include "collide/video/video_writer.hpp"
 #include "commands.hpp"
+#include "font_search.hpp"
 #include "heap_frames.hpp"
 #include "lesson_video.hpp"
 #include "progress.hpp"
@@ -127,6 +128,7 @@ void run(const HeapCli& v) {
     show.sort = given(v.sort_opt);
     show.index_base = v.index_base;
     render::HeapViewConfig config;
+    config.font_path = find_font(v.video.font);
     config.width = geometry.width;
     config.height = geometry.height;
     config.widest_key = widest_key(timeline);

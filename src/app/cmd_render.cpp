@@ -20,7 +20,9 @@
 #include "collide/video/output.hpp"
 #include "collide/video/video_writer.hpp"
 #include "commands.hpp"
+#include "font_search.hpp"
 #include "interrupt.hpp"
+#include "json_output.hpp"
 #include "pipeline.hpp"
 #include "progress.hpp"
 #include "render_plan.hpp"
@@ -60,6 +62,8 @@ struct CliValues {
     bool no_limits = false;
     std::string queue;  ///< --queue [K]: the K, or empty for the default
     double slow_motion = 1.0;
+    std::string font;
+    bool json = false;  ///< --json: the summary as JSON
     std::uint64_t seed = 0;
     CLI::Option* seed_opt = nullptr;
 
@@ -141,6 +145,7 @@ RenderRequest request_of(const CliValues& v, bool still) {
                                                                         sim::max_watched_events));
     }
     r.slow_motion = if_given(v.slow_motion_opt, v.slow_motion);
+    r.font = v.font;
     return r;
 }
 
@@ -211,6 +216,10 @@ void add_shared_options(CLI::App& cmd, CliValues& v) {
                    "Progress on stderr: auto (bar on a terminal), bar, json or none")
         ->capture_default_str();
     cmd.add_flag("--verbose", v.verbose, "Show the encoder's own log");
+    cmd.add_option("--font", v.font, font_option_help)->type_name("FILE");
+    cmd.add_flag("--json", v.json,
+                 "Print the summary on stdout as JSON (output, kind, frames, size, fps, bytes, "
+                 "times, engines)");
     cmd.add_flag(insist_option, v.no_limits,
                  "Run even when the estimated work (collisions and cell crossings, time-driven "
                  "steps and checks, frames) is beyond the limits of docs/limits.md");
@@ -266,8 +275,50 @@ std::string engine_costs(const RenderPlan& plan, const PipelineResult& result) {
     return out;
 }
 
-void print_summary(const RenderPlan& plan, const PipelineResult& result, double wall_seconds) {
+/// The summary as one JSON object (render/thumbnail --json): the same figures as the line.
+Json summary_json(const RenderPlan& plan, const PipelineResult& result, double wall_seconds,
+                  std::uintmax_t bytes) {
+    const bool still = plan.kind == OutputKind::still;
+    Json engines = Json::array();
+    std::size_t i = 0;
+    if (plan.mode != RenderMode::event && i < result.engines.size()) {
+        const Measurements& m = result.engines[i++];
+        engines.push_back(Json{{"engine", "time-driven"},
+                               {"wall_seconds", m.wall_seconds},
+                               {"overlap_checks", m.overlap_checks}});
+    }
+    if (plan.mode != RenderMode::time && i < result.engines.size()) {
+        const Measurements& m = result.engines[i];
+        engines.push_back(Json{{"engine", "event-driven"},
+                               {"wall_seconds", m.wall_seconds},
+                               {"collisions", m.collisions_pair + m.collisions_wall}});
+    }
+    Json document{{"output", plan.output.string()},
+                  {"kind", still ? "png" : std::string(video::to_string(plan.format))},
+                  {"width", result.output_width},
+                  {"height", result.output_height}};
+    if (still) {
+        document["frame"] = result.frames - 1;
+        document["fps"] = plan.fps;
+    } else {
+        document["frames"] = result.frames;
+        document["fps"] = result.output_fps;
+        document["seconds"] = static_cast<double>(result.frames) / plan.fps;
+    }
+    document["sim_time"] = result.sim_time;
+    document["bytes"] = bytes;
+    document["wall_seconds"] = wall_seconds;
+    document["engines"] = std::move(engines);
+    return document;
+}
+
+void print_summary(const RenderPlan& plan, const PipelineResult& result, double wall_seconds,
+                   bool json) {
     const std::uintmax_t bytes = size_on_disk(plan.output);
+    if (json) {
+        std::fputs(json_text(summary_json(plan, result, wall_seconds, bytes)).c_str(), stdout);
+        return;
+    }
     if (plan.kind == OutputKind::still) {
         std::printf("%s: %dx%d PNG at t = %.6g (%s), %s, in %.1f s; engines: %s\n",
                     plan.output.string().c_str(), result.output_width, result.output_height,
@@ -328,7 +379,7 @@ void run(const CliValues& values, bool still) {
         layout_file->commit();
     }
     for (const std::string& line : result.notices) print_notice(line);
-    print_summary(plan, result, progress.elapsed_seconds());
+    print_summary(plan, result, progress.elapsed_seconds(), values.json);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include "collide/error.hpp"
 #include "collide/video/video_writer.hpp"
+#include "font_search.hpp"
 #include "interrupt.hpp"
 
 namespace collide::app {
@@ -43,6 +44,7 @@ void add_lesson_video_options(CLI::App& cmd, LessonVideoCli& v, std::string_view
                    "Progress on stderr: auto (bar on a terminal), bar, json or none")
         ->capture_default_str();
     cmd.add_flag("--verbose", v.verbose, "Show the encoder's own log");
+    cmd.add_option("--font", v.font, font_option_help)->type_name("FILE");
 }
 
 LessonOutput lesson_output_of(const LessonVideoCli& v, std::string_view stem) {

@@ -33,6 +33,7 @@ struct LessonVideoCli {
     double at = 0.0;
     std::string progress = "auto";
     bool verbose = false;
+    std::string font;  ///< --font FILE (empty: find_font's search)
 
     CLI::Option* output_opt = nullptr;
     CLI::Option* format_opt = nullptr;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_conventions.hpp"
 #include "collide/error.hpp"
 #include "commands.hpp"
 
@@ -47,7 +48,7 @@ std::string out_of_memory_message(const CLI::App& root) {
 int main(int argc, char** argv) {
     CLI::App root{"collide: event-driven vs time-driven hard-disc simulation, rendered to video",
                   "collide"};
-    root.set_version_flag("--version", std::string("collide ") + COLLIDE_VERSION);
+    root.set_version_flag("--version", collide::app::version_text);
     root.require_subcommand(0, 1);
     root.footer("Exit codes: 0 success, 2 bad input or usage, 1 other failure.");
     collide::app::add_check_command(root);
@@ -71,7 +72,7 @@ int main(int argc, char** argv) {
         // --help and --version arrive here as "errors" with exit code 0.
         if (e.get_exit_code() == 0) return root.exit(e);
         // Usage errors read like every other error ("collide: error: ..."), with CLI11's hint.
-        print_error(e.what());
+        print_error(e.what() + collide::app::typo_hint(root, e));
         std::fputs("Run with --help for more information.\n", stderr);
         return exit_usage;
     } catch (const collide::Error& e) {
