@@ -2,14 +2,14 @@
 _collide() {
     local cur prev words cword
     _init_completion || return
-    local commands="render thumbnail check scenes simulate pq heap puzzle bench"
+    local commands="render thumbnail check scenes simulate pq heap puzzle bench compare"
     if [[ $cword -eq 1 ]]; then
         COMPREPLY=($(compgen -W "$commands --help --version" -- "$cur"))
         return
     fi
     local command=${words[1]}
     case $prev in
-        -o|--output|--layout-json|--export|--events-log|--font|--dump-rgba)
+        -o|--output|--layout-json|--export|--events-log|--font|--dump-rgba|--diff)
             _filedir
             return ;;
         --mode) COMPREPLY=($(compgen -W "both event time" -- "$cur")); return ;;

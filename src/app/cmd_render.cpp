@@ -212,8 +212,10 @@ void add_shared_options(CLI::App& cmd, CliValues& v) {
                    "GL backend: auto (OSMesa where built, else EGL), osmesa, egl (surfaceless, or "
                    "the GPU), egl-device or glfw (needs a display)")
         ->capture_default_str();
-    cmd.add_option("--progress", v.progress,
-                   "Progress on stderr: auto (bar on a terminal), bar, json or none")
+    cmd.add_option(
+           "--progress", v.progress,
+           "Progress on stderr: auto (bar on a terminal), bar, plain (a line per tenth, for CI "
+           "logs), json or none")
         ->capture_default_str();
     cmd.add_flag("--verbose", v.verbose, "Show the encoder's own log");
     cmd.add_option("--font", v.font, font_option_help)->type_name("FILE");

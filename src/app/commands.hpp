@@ -35,6 +35,16 @@ void add_bench_command(CLI::App& root);
 /// MP4/GIF/PNG.
 void add_render_command(CLI::App& root);
 
+/// `collide compare A.png B.png [--tolerance T]`: exit 0 if they match, 1 (with a difference
+/// image) if not, 2 on bad input.
+void add_compare_command(CLI::App& root);
+
+/// Thrown by a command whose answer is its exit status (`compare`: 1 = the images differ), after
+/// it has said so on stdout; `main` returns `code` and prints nothing more.
+struct ExitStatus {
+    int code = 1;
+};
+
 /// `collide thumbnail SCENE --at T`: one frame of that video as a PNG, without encoding a video.
 void add_thumbnail_command(CLI::App& root);
 

@@ -40,8 +40,10 @@ void add_lesson_video_options(CLI::App& cmd, LessonVideoCli& v, std::string_view
                                           "a PNG (a still for slides; -o FILE.png, default "
                                           "out/{}.png)",
                                           stem));
-    cmd.add_option("--progress", v.progress,
-                   "Progress on stderr: auto (bar on a terminal), bar, json or none")
+    cmd.add_option(
+           "--progress", v.progress,
+           "Progress on stderr: auto (bar on a terminal), bar, plain (a line per tenth, for CI "
+           "logs), json or none")
         ->capture_default_str();
     cmd.add_flag("--verbose", v.verbose, "Show the encoder's own log");
     cmd.add_option("--font", v.font, font_option_help)->type_name("FILE");

@@ -61,6 +61,7 @@ int main(int argc, char** argv) {
 
     collide::app::add_simulate_command(root);
     collide::app::add_bench_command(root);
+    collide::app::add_compare_command(root);
 
     try {
         root.parse(argc, argv);
@@ -75,6 +76,8 @@ int main(int argc, char** argv) {
         print_error(e.what() + collide::app::typo_hint(root, e));
         std::fputs("Run with --help for more information.\n", stderr);
         return exit_usage;
+    } catch (const collide::app::ExitStatus& status) {
+        return status.code;
     } catch (const collide::Error& e) {
         print_error(e.what());
         return e.exit_code();

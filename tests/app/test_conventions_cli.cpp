@@ -149,3 +149,73 @@ TEST_CASE("--font and $COLLIDE_FONT: a missing file is exit 2 naming the option"
     CHECK(variable.exit_code == 2);
     CHECK(variable.output.find("$COLLIDE_FONT: expected") != std::string::npos);
 }
+
+TEST_CASE("render --progress bar fits COLUMNS=60 and --progress plain writes whole lines") {
+    TempDir dir("conventions_progress");
+    const std::string video = (dir.path / "g.mp4").string();
+    const auto bar = collide::test::run_collide_env(
+        "COLUMNS=60", "render gas -q l --size 160x90 --duration 1 --progress bar -o " + video);
+    REQUIRE(bar.exit_code == 0);
+    int bars = 0;
+    std::string line;
+    for (const char c : bar.output + "\n") {
+        if (c == '\r' || c == '\n') {
+            if (line.rfind("[", 0) == 0) {
+                ++bars;
+                CHECK_MESSAGE(line.size() <= 59, line);
+            }
+            line.clear();
+        } else {
+            line += c;
+        }
+    }
+    CHECK(bars >= 1);
+    const auto plain =
+        run_collide("render gas -q l --size 160x90 --duration 1 --progress plain -o " + video);
+    REQUIRE(plain.exit_code == 0);
+    CHECK(plain.output.find('\r') == std::string::npos);
+    CHECK(plain.output.find("collide: 100% (") != std::string::npos);
+}
+
+TEST_CASE("compare: exit 0 on a match, 1 on a mismatch with a difference image, 2 on bad input") {
+    TempDir dir("conventions_compare");
+    const auto path = [&](const char* name) { return (dir.path / name).string(); };
+    REQUIRE(run_collide("thumbnail gas --at 1 --size 160x90 -o " + path("a.png")).exit_code == 0);
+    REQUIRE(run_collide("thumbnail gas --at 1 --size 160x90 -o " + path("same.png")).exit_code ==
+            0);
+    REQUIRE(run_collide("thumbnail gas --at 2 --size 160x90 -o " + path("b.png")).exit_code == 0);
+    REQUIRE(run_collide("thumbnail gas --at 1 --size 320x180 -o " + path("big.png")).exit_code ==
+            0);
+
+    const auto same = run_collide("compare " + path("a.png") + " " + path("same.png"));
+    CHECK_MESSAGE(same.exit_code == 0, same.output);
+    CHECK(same.output.rfind("match: 14400 pixels", 0) == 0);
+    CHECK(!fs::exists(dir.path / "same.diff.png"));
+
+    const auto differ = run_collide("compare " + path("a.png") + " " + path("b.png"));
+    CHECK_MESSAGE(differ.exit_code == 1, differ.output);
+    CHECK(differ.output.rfind("differ: ", 0) == 0);
+    CHECK(differ.output.find(" of 14400 pixels (") != std::string::npos);
+    CHECK(differ.output.find("difference image: " + path("b.diff.png")) != std::string::npos);
+    REQUIRE(fs::is_regular_file(dir.path / "b.diff.png"));
+    // A tolerance of 255 accepts any difference.
+    CHECK(run_collide("compare " + path("a.png") + " " + path("b.png") + " --tolerance 255")
+              .exit_code == 0);
+    // --diff puts the picture elsewhere.
+    CHECK(run_collide("compare " + path("a.png") + " " + path("b.png") + " --diff " + path("d.png"))
+              .exit_code == 1);
+    CHECK(fs::is_regular_file(dir.path / "d.png"));
+    const auto sizes = run_collide("compare " + path("a.png") + " " + path("big.png"));
+    CHECK(sizes.exit_code == 1);
+    CHECK(sizes.output.find("is 160x90") != std::string::npos);
+
+    std::ofstream(dir.path / "not.png") << "not a png";
+    for (const std::string& args :
+         {path("a.png") + " " + path("none.png"), path("not.png") + " " + path("a.png"),
+          path("a.png") + " " + path("b.png") + " --tolerance 256", path("a.png")}) {
+        CAPTURE(args);
+        const auto bad = run_collide("compare " + args);
+        CHECK_MESSAGE(bad.exit_code == 2, bad.output);
+        CHECK(bad.output.find("collide: error: ") != std::string::npos);
+    }
+}
