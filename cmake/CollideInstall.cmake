@@ -4,6 +4,8 @@
 include(GNUInstallDirs)
 
 install(TARGETS collide RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The drawing commands' program, which `collide` execs (src/app/CMakeLists.txt).
+install(TARGETS collide-draw RUNTIME DESTINATION ${CMAKE_INSTALL_LIBEXECDIR}/collide)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/assets/scenes
         DESTINATION ${CMAKE_INSTALL_DATADIR}/collide
         FILES_MATCHING PATTERN "*.toml")

@@ -10,7 +10,7 @@ packages=(
     libcli11-dev libtomlplusplus-dev libfmt-dev nlohmann-json3-dev doctest-dev libbenchmark-dev
 )
 if [[ "${1:-}" == "--test" ]]; then
-    packages+=(ffmpeg xvfb xauth)
+    packages+=(ffmpeg xvfb xauth clang-format)
 fi
 
 missing=()

@@ -1,12 +1,20 @@
 #include "cli_conventions.hpp"
 
+#include <array>
 #include <sstream>
 #include <string_view>
+#include <utility>
 #include <vector>
 
-#include "collide/render/context.hpp"
+extern "C" {
+#include <libavcodec/version.h>
+#include <libavfilter/version.h>
+#include <libavformat/version.h>
+#include <libavutil/version.h>
+#include <libswscale/version.h>
+}
+
 #include "collide/scene/load.hpp"
-#include "collide/video/libav_versions.hpp"
 #include "collide_build_info.hpp"
 
 namespace collide::app {
@@ -46,15 +54,23 @@ std::string nearest_subcommand(const CLI::App& root, const std::string& word) {
 }  // namespace
 
 std::string version_text() {
-    std::string backends;
-    for (const render::Backend b : render::available_backends()) {
-        if (b == render::Backend::automatic) continue;
-        backends += (backends.empty() ? "" : ", ") + std::string(render::backend_name(b));
+    // Known at build time: `collide` links neither the renderer nor libav (it starts fast), and
+    // collide-draw runs on the same major versions (their sonames).
+    constexpr std::array<std::pair<const char*, const char*>, 5> libraries{{
+        {"libavcodec", AV_STRINGIFY(LIBAVCODEC_VERSION)},
+        {"libavformat", AV_STRINGIFY(LIBAVFORMAT_VERSION)},
+        {"libavutil", AV_STRINGIFY(LIBAVUTIL_VERSION)},
+        {"libswscale", AV_STRINGIFY(LIBSWSCALE_VERSION)},
+        {"libavfilter", AV_STRINGIFY(LIBAVFILTER_VERSION)},
+    }};
+    std::string libav;
+    for (const auto& [name, version] : libraries) {
+        libav += (libav.empty() ? "" : ", ") + std::string(name) + " " + version;
     }
     const DataDir data = data_dir();
     return std::string("collide ") + COLLIDE_VERSION + " (git " + COLLIDE_GIT_REVISION + ")\n" +
-           "GL backends: " + backends + "\n" + "libav: " + video::libav_versions() + "\n" +
-           "data: " + data.path.string() + " (" + data.found_by + ")";
+           "GL backends: " + COLLIDE_GL_BACKENDS_TEXT + "\n" + "libav (built with): " + libav +
+           "\n" + "data: " + data.path.string() + " (" + data.found_by + ")";
 }
 
 std::string typo_hint(const CLI::App& root, const CLI::ParseError& error) {

@@ -7,7 +7,8 @@
 namespace collide::app {
 
 /// `collide --version`: the version, the git revision it was configured from, the GL backends
-/// built, the libav libraries loaded and where the built-in data is.
+/// built, the libav versions it was built with and where the built-in data is (all known without
+/// loading the renderer or libav).
 [[nodiscard]] std::string version_text();
 
 /// For a parse error about an unexpected argument (`collide rendr`, `render gas --durration 5`):

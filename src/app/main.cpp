@@ -54,14 +54,12 @@ int main(int argc, char** argv) {
     collide::app::add_check_command(root);
     collide::app::add_scenes_command(root);
     collide::app::add_pq_command(root);
-    collide::app::add_heap_command(root);
-    collide::app::add_puzzle_command(root);
-    collide::app::add_render_command(root);
-    collide::app::add_thumbnail_command(root);
+    // heap, puzzle, render, thumbnail, compare: here in collide-draw; in collide, an exec of
+    // collide-draw when one of them is the command.
+    collide::app::add_drawing_commands(root, argc, argv);
 
     collide::app::add_simulate_command(root);
     collide::app::add_bench_command(root);
-    collide::app::add_compare_command(root);
 
     try {
         root.parse(argc, argv);

@@ -77,11 +77,17 @@ DataDir find_data_dir() {
     }
     const std::filesystem::path exe = running_executable();
     if (exe.empty()) return {{}, "nowhere: /proc/self/exe cannot be read"};
-    // Installed: PREFIX/bin/collide next to PREFIX/share/collide (the prefix may have moved).
+    // Installed: PREFIX/bin/collide next to PREFIX/share/collide (the prefix may have moved),
+    // or PREFIX/libexec/collide/collide-draw, one level further down.
     const std::filesystem::path installed = exe.parent_path().parent_path() / "share" / "collide";
     std::error_code ec;
     if (std::filesystem::is_directory(installed / "scenes", ec))
         return {installed, "next to the program"};
+    const std::filesystem::path from_libexec =
+        exe.parent_path().parent_path().parent_path() / "share" / "collide";
+    if (exe.parent_path().parent_path().filename() == "libexec" &&
+        std::filesystem::is_directory(from_libexec / "scenes", ec))
+        return {from_libexec, "next to the program"};
 #ifdef COLLIDE_BUILD_TREE
     // Development only: a program that runs from inside its own build tree reads the source
     // tree's assets, so a fresh build works without installing. An installed or moved copy never

@@ -136,7 +136,7 @@ TEST_CASE("--version names the git revision, the GL backends, libav and the data
     CHECK(r.output.find("(git ") != std::string::npos);
     CHECK(r.output.find("\nGL backends: ") != std::string::npos);
     CHECK(r.output.find("glfw") != std::string::npos);
-    CHECK(r.output.find("libavcodec ") != std::string::npos);
+    CHECK(r.output.find("\nlibav (built with): libavcodec ") != std::string::npos);
     CHECK(r.output.find("\ndata: ") != std::string::npos);
 }
 

@@ -15,11 +15,12 @@ deb=$(ls "$tmp"/out/collide_*.deb)
 fail() { echo "FAIL: $*" >&2; exit 1; }
 depends=$(dpkg-deb -f "$deb" Depends)
 echo "Depends: $depends"
-for library in libavcodec libavformat libswscale libosmesa6 libglfw3 fonts-dejavu-core; do
+for library in libavcodec libavformat libavutil libosmesa6 libglfw3 fonts-dejavu-core; do
     [[ $depends == *"$library"* ]] || fail "Depends lacks $library"
 done
 contents=$(dpkg-deb -c "$deb")
 grep -q './usr/bin/collide$' <<<"$contents" || fail "no /usr/bin/collide"
+grep -q './usr/libexec/collide/collide-draw$' <<<"$contents" || fail "no collide-draw"
 grep -q './usr/share/collide/scenes/gas.toml$' <<<"$contents" || fail "no scenes"
 grep -q './usr/share/man/man1/collide.1' <<<"$contents" || fail "no man page"
 grep -q './usr/share/bash-completion/completions/collide$' <<<"$contents" || fail "no completion"

@@ -17,6 +17,7 @@ trap 'rm -rf "$tmp"' EXIT
 mv "$tmp/first" "$tmp/moved"
 prefix=$tmp/moved
 test -x "$prefix/bin/collide"
+test -x "$prefix/libexec/collide/collide-draw"
 test -f "$prefix/share/man/man1/collide.1"
 test -f "$prefix/share/bash-completion/completions/collide"
 test -f "$prefix/share/collide/scenes/gas.toml"

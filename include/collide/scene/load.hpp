@@ -51,7 +51,8 @@ struct DataDir {
 };
 
 /// The data directory, first of: $COLLIDE_DATA_DIR (or the older $COLLIDE_ASSETS_DIR) when set
-/// and not empty; PREFIX/share/collide when the running program is PREFIX/bin/collide (found
+/// and not empty; PREFIX/share/collide when the running program is PREFIX/bin/collide or
+/// PREFIX/libexec/collide/collide-draw (found
 /// through /proc/self/exe, so a moved prefix still works); and, for a program that runs from
 /// inside its own build tree only, the source tree's assets/ (the development fallback). When
 /// nothing is found, the path next to the program (which does not exist; messages name it).
