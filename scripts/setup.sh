@@ -7,10 +7,10 @@ packages=(
     build-essential cmake ninja-build pkg-config python3-glad
     libosmesa6-dev libegl-dev libglfw3-dev libstb-dev fonts-dejavu-core
     libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libavfilter-dev
-    libcli11-dev libtomlplusplus-dev libfmt-dev doctest-dev libbenchmark-dev
+    libcli11-dev libtomlplusplus-dev libfmt-dev nlohmann-json3-dev doctest-dev libbenchmark-dev
 )
 if [[ "${1:-}" == "--test" ]]; then
-    packages+=(ffmpeg xvfb xauth)
+    packages+=(ffmpeg xvfb xauth clang-format)
 fi
 
 missing=()

@@ -12,6 +12,7 @@
 #include "collide/sim/scene_check.hpp"
 #include "commands.hpp"
 #include "interrupt.hpp"
+#include "json_output.hpp"
 #include "work_limits.hpp"
 
 namespace collide::app {
@@ -20,6 +21,7 @@ void add_check_command(CLI::App& root) {
     struct CheckOptions {
         std::string scene;
         std::string export_path;
+        bool json = false;
     };
     auto options = std::make_shared<CheckOptions>();
     CLI::App* cmd = root.add_subcommand(
@@ -30,6 +32,8 @@ void add_check_command(CLI::App& root) {
     cmd->add_option("--export", options->export_path,
                     "Also write the scene with every disc explicit: .toml, or .txt (algs4, unit "
                     "box with walls only)");
+    cmd->add_flag("--json", options->json,
+                  "Print the summary as JSON (scene, name, discs, summary, exported)");
     cmd->callback([options] {
         // A signal while a large scene loads ends with the one interrupt message (main), and
         // one while the export is written leaves nothing at the destination, not even a
@@ -48,6 +52,16 @@ void add_check_command(CLI::App& root) {
                 interrupts.throw_if_requested();
                 throw;
             }
+        }
+        if (options->json) {
+            Json document{{"scene", options->scene},
+                          {"name", scene.name},
+                          {"discs", scene.discs.size()},
+                          {"summary", scene_summary(scene)},
+                          {"exported", nullptr}};
+            if (!options->export_path.empty()) document["exported"] = options->export_path;
+            std::fputs(json_text(document).c_str(), stdout);
+            return;
         }
         std::printf("ok: %s: %s\n", options->scene.c_str(), scene_summary(scene).c_str());
         if (!options->export_path.empty()) std::printf("wrote %s\n", options->export_path.c_str());

@@ -25,6 +25,7 @@
 #include "collide/video/video_writer.hpp"
 #include "cli_numbers.hpp"
 #include "commands.hpp"
+#include "font_search.hpp"
 #include "lesson_video.hpp"
 #include "progress.hpp"
 #include "render_plan.hpp"
@@ -116,6 +117,7 @@ void run(const HeapCli& v) {
     video::set_libav_verbose(v.video.verbose);
 
     render::HeapViewConfig config;
+    config.font_path = find_font(v.video.font);
     config.width = geometry.width;
     config.height = geometry.height;
     config.widest_key = lesson.widest_key();

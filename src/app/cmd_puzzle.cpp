@@ -19,6 +19,7 @@
 #include "collide/sim/puzzle/board.hpp"
 #include "collide/sim/puzzle/search.hpp"
 #include "commands.hpp"
+#include "json_output.hpp"
 #include "puzzle_video.hpp"
 
 namespace collide::app {
@@ -151,36 +152,37 @@ void print_text(const Board& start, const std::vector<SearchResult>& results) {
     }
 }
 
-std::string json_moves(const SearchResult& r) {
-    std::string out;
+Json json_moves(const SearchResult& r) {
+    Json moves = Json::array();
     for (const puzzle::Move& m : r.solution_moves()) {
-        out += fmt::format("{}{{\"tile\": {}, \"direction\": \"{}\"}}", out.empty() ? "" : ", ",
-                           m.tile, puzzle::to_string(m.direction));
+        moves.push_back(Json{{"tile", m.tile}, {"direction", puzzle::to_string(m.direction)}});
     }
-    return "[" + out + "]";
+    return moves;
 }
 
 void print_json(const Board& start, const std::vector<SearchResult>& results) {
-    std::string methods;
+    Json methods = Json::array();
     for (const SearchResult& r : results) {
-        std::string fields =
-            fmt::format("\"method\": \"{}\"", r.method == puzzle::Method::bfs ? "bfs" : "astar");
+        Json method{{"method", r.method == puzzle::Method::bfs ? "bfs" : "astar"}};
         if (r.method == puzzle::Method::astar) {
-            fields += fmt::format(", \"heuristic\": \"{}\", \"pq\": \"{}\"",
-                                  puzzle::to_string(r.heuristic), pq::to_string(r.queue));
+            method["heuristic"] = puzzle::to_string(r.heuristic);
+            method["pq"] = pq::to_string(r.queue);
         }
-        fields += fmt::format(
-            ", \"expanded\": {}, \"enqueued\": {}, \"max_queue\": {}, \"stale\": {}, "
-            "\"parent_skips\": {}, \"solution_length\": {}, \"moves\": {}",
-            r.stats.expanded, r.stats.enqueued, r.stats.max_queue, r.stats.stale,
-            r.stats.parent_skips, r.solution_length(), json_moves(r));
-        methods += fmt::format("{}\n    {{{}}}", methods.empty() ? "" : ",", fields);
+        method["expanded"] = r.stats.expanded;
+        method["enqueued"] = r.stats.enqueued;
+        method["max_queue"] = r.stats.max_queue;
+        method["stale"] = r.stats.stale;
+        method["parent_skips"] = r.stats.parent_skips;
+        method["solution_length"] = r.solution_length();
+        method["moves"] = json_moves(r);
+        methods.push_back(std::move(method));
     }
-    std::printf(
-        "{\n  \"board\": \"%s\",\n  \"side\": %d,\n  \"manhattan\": %d,\n  \"hamming\": "
-        "%d,\n  \"methods\": [%s\n  ]\n}\n",
-        start.to_string().c_str(), start.side(), puzzle::manhattan(start), puzzle::hamming(start),
-        methods.c_str());
+    const Json document{{"board", start.to_string()},
+                        {"side", start.side()},
+                        {"manhattan", puzzle::manhattan(start)},
+                        {"hamming", puzzle::hamming(start)},
+                        {"methods", std::move(methods)}};
+    std::fputs(json_text(document).c_str(), stdout);
 }
 
 void run(const PuzzleCli& v) {

@@ -20,7 +20,9 @@
 #include "collide/video/output.hpp"
 #include "collide/video/video_writer.hpp"
 #include "commands.hpp"
+#include "font_search.hpp"
 #include "interrupt.hpp"
+#include "json_output.hpp"
 #include "pipeline.hpp"
 #include "progress.hpp"
 #include "render_plan.hpp"
@@ -51,6 +53,7 @@ struct CliValues {
     bool no_limits = false;
     std::string queue;  ///< --queue [K]: the K, or empty for the default
     double slow_motion = 1.0;
+    bool json = false;  ///< --json: the summary as JSON
     std::uint64_t seed = 0;
     CLI::Option* seed_opt = nullptr;
 
@@ -126,6 +129,7 @@ RenderRequest request_of(const CliValues& v, bool still) {
                                                                         sim::max_watched_events));
     }
     r.slow_motion = if_given(v.slow_motion_opt, v.slow_motion);
+    r.font = v.video.font;
     return r;
 }
 
@@ -188,6 +192,9 @@ void add_shared_options(CLI::App& cmd, CliValues& v, bool video) {
                    "GL backend: auto (OSMesa where built, else EGL), osmesa, egl (surfaceless, or "
                    "the GPU), egl-device or glfw (needs a display)")
         ->capture_default_str();
+    cmd.add_flag("--json", v.json,
+                 "Print the summary on stdout as JSON (output, kind, frames, size, fps, bytes, "
+                 "times, engines)");
     cmd.add_flag(insist_option, v.no_limits,
                  "Run even when the estimated work (collisions and cell crossings, time-driven "
                  "steps and checks, frames) is beyond the limits of docs/limits.md");
@@ -243,9 +250,51 @@ std::string engine_costs(const RenderPlan& plan, const PipelineResult& result) {
     return out;
 }
 
+/// The summary as one JSON object (render/thumbnail --json): the same figures as the line.
+Json summary_json(const RenderPlan& plan, const PipelineResult& result, double wall_seconds,
+                  std::uintmax_t bytes) {
+    const bool still = plan.kind == OutputKind::still;
+    Json engines = Json::array();
+    std::size_t i = 0;
+    if (plan.mode != RenderMode::event && i < result.engines.size()) {
+        const Measurements& m = result.engines[i++];
+        engines.push_back(Json{{"engine", "time-driven"},
+                               {"wall_seconds", m.wall_seconds},
+                               {"overlap_checks", m.overlap_checks}});
+    }
+    if (plan.mode != RenderMode::time && i < result.engines.size()) {
+        const Measurements& m = result.engines[i];
+        engines.push_back(Json{{"engine", "event-driven"},
+                               {"wall_seconds", m.wall_seconds},
+                               {"collisions", m.collisions_pair + m.collisions_wall}});
+    }
+    Json document{{"output", plan.output.string()},
+                  {"kind", still ? "png" : std::string(video::to_string(plan.format))},
+                  {"width", result.output_width},
+                  {"height", result.output_height}};
+    if (still) {
+        document["frame"] = result.frames - 1;
+        document["fps"] = plan.fps;
+    } else {
+        document["frames"] = result.frames;
+        document["fps"] = result.output_fps;
+        document["seconds"] = static_cast<double>(result.frames) / plan.fps;
+    }
+    document["sim_time"] = result.sim_time;
+    document["bytes"] = bytes;
+    document["wall_seconds"] = wall_seconds;
+    document["engines"] = std::move(engines);
+    return document;
+}
+
+/// The summary line on `out`, or with `json` the JSON object on stdout (--json).
 void print_summary(const RenderPlan& plan, const PipelineResult& result, double wall_seconds,
-                   std::FILE* out) {
+                   std::FILE* out, bool json) {
     const std::uintmax_t bytes = size_on_disk(plan.output);
+    if (json) {
+        std::fputs(json_text(summary_json(plan, result, wall_seconds, bytes)).c_str(), stdout);
+        return;
+    }
     if (plan.kind == OutputKind::still) {
         std::fprintf(out, "%s: %dx%d PNG at t = %.6g (%s), %s, in %.1f s; engines: %s\n",
                      plan.output.string().c_str(), result.output_width, result.output_height,
@@ -303,6 +352,10 @@ void run(const CliValues& values, bool still) {
     }
     // Data on standard output (--layout-json -) is the only thing there: the summary moves aside.
     const bool data_on_stdout = layout_file && layout_file->is_standard_output();
+    if (data_on_stdout && values.json) {
+        throw_option_error("--json", "the JSON summary and --layout-json - cannot share standard "
+                                     "output; write the layout to a file");
+    }
 
     Progress progress(progress_mode, plan.clock.count);
     JobHooks hooks;
@@ -322,7 +375,8 @@ void run(const CliValues& values, bool still) {
     }
     progress.finish();
     for (const std::string& line : result.notices) print_notice(line);
-    print_summary(plan, result, progress.elapsed_seconds(), data_on_stdout ? stderr : stdout);
+    print_summary(plan, result, progress.elapsed_seconds(), data_on_stdout ? stderr : stdout,
+                  values.json);
 }
 
 }  // namespace

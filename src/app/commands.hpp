@@ -35,6 +35,22 @@ void add_bench_command(CLI::App& root);
 /// MP4/GIF/PNG.
 void add_render_command(CLI::App& root);
 
+/// `collide compare A.png B.png [--tolerance T]`: exit 0 if they match, 1 (with a difference
+/// image) if not, 2 on bad input.
+void add_compare_command(CLI::App& root);
+
+/// The commands that draw (heap, puzzle, render, thumbnail, compare). In `collide-draw`
+/// (draw_commands.cpp) they are registered. In `collide` (draw_forward.cpp), which links no GL
+/// and no encoder, the process becomes collide-draw (execv, same arguments) when argv names one
+/// of them, and they are registered for --help and suggestions otherwise.
+void add_drawing_commands(CLI::App& root, int argc, char** argv);
+
+/// Thrown by a command whose answer is its exit status (`compare`: 1 = the images differ), after
+/// it has said so on stdout; `main` returns `code` and prints nothing more.
+struct ExitStatus {
+    int code = 1;
+};
+
 /// `collide thumbnail SCENE --at T`: one frame of that video as a PNG, without encoding a video.
 void add_thumbnail_command(CLI::App& root);
 

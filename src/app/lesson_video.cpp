@@ -10,6 +10,7 @@
 #include "collide/error.hpp"
 #include "collide/video/video_writer.hpp"
 #include "cli_numbers.hpp"
+#include "font_search.hpp"
 #include "interrupt.hpp"
 #include "render_plan.hpp"
 #include "video_job.hpp"

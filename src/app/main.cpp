@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_conventions.hpp"
 #include "collide/error.hpp"
 #include "commands.hpp"
 #include "interrupt.hpp"
@@ -63,7 +64,7 @@ int main(int argc, char** argv) {
     collide::app::ignore_file_size_signal();
     CLI::App root{"collide: event-driven vs time-driven hard-disc simulation, rendered to video",
                   "collide"};
-    root.set_version_flag("--version", std::string("collide ") + COLLIDE_VERSION);
+    root.set_version_flag("--version", collide::app::version_text);
     root.require_subcommand(0, 1);
     root.footer(
         "Exit codes: 0 success, 2 bad input or usage, 1 other failure; stopped by a signal "
@@ -71,10 +72,9 @@ int main(int argc, char** argv) {
     collide::app::add_check_command(root);
     collide::app::add_scenes_command(root);
     collide::app::add_pq_command(root);
-    collide::app::add_heap_command(root);
-    collide::app::add_puzzle_command(root);
-    collide::app::add_render_command(root);
-    collide::app::add_thumbnail_command(root);
+    // heap, puzzle, render, thumbnail, compare: here in collide-draw; in collide, an exec of
+    // collide-draw when one of them is the command.
+    collide::app::add_drawing_commands(root, argc, argv);
 
     collide::app::add_simulate_command(root);
     collide::app::add_bench_command(root);
@@ -89,9 +89,11 @@ int main(int argc, char** argv) {
         // --help and --version arrive here as "errors" with exit code 0.
         if (e.get_exit_code() == 0) return root.exit(e);
         // Usage errors read like every other error ("collide: error: ..."), with CLI11's hint.
-        print_error(e.what());
+        print_error(e.what() + collide::app::typo_hint(root, e));
         std::fputs("Run with --help for more information.\n", stderr);
         return exit_usage;
+    } catch (const collide::app::ExitStatus& status) {
+        return status.code;
     } catch (const collide::Error& e) {
         end_if_interrupted();
         print_error(e.what());

@@ -2,7 +2,9 @@
 
 #include <fmt/core.h>
 
-#include <cmath>
+#include <variant>
+
+#include "json_output.hpp"
 
 namespace collide::app {
 
@@ -46,40 +48,27 @@ std::vector<ReportField> report_fields(const Measurements& m) {
 
 namespace {
 
-/// Shortest round-trip representation; JSON has no inf or nan.
-std::string number(double x, bool json) {
-    if (!std::isfinite(x)) return json ? "null" : fmt::format("{}", x);
-    return fmt::format("{}", x);
-}
-
-std::string value_text(const ReportField& field, bool json) {
+/// Shortest round-trip representation of numbers.
+std::string value_text(const ReportField& field) {
     if (const auto* count = std::get_if<std::uint64_t>(&field.value)) return std::to_string(*count);
-    if (const auto* real = std::get_if<double>(&field.value)) return number(*real, json);
-    const std::string& text = std::get<std::string>(field.value);
-    if (!json) return text;
-    std::string quoted = "\"";
-    for (char ch : text) {
-        if (ch == '"' || ch == '\\') quoted += '\\';
-        quoted += ch;
-    }
-    return quoted + '"';
+    if (const auto* real = std::get_if<double>(&field.value)) return fmt::format("{}", *real);
+    return std::get<std::string>(field.value);
 }
 
 }  // namespace
 
 std::string format_text(const std::vector<ReportField>& fields) {
     std::string out;
-    for (const ReportField& f : fields) out += f.key + ": " + value_text(f, false) + '\n';
+    for (const ReportField& f : fields) out += f.key + ": " + value_text(f) + '\n';
     return out;
 }
 
 std::string format_json(const std::vector<ReportField>& fields) {
-    std::string out = "{\n";
-    for (std::size_t i = 0; i < fields.size(); ++i) {
-        out += "  \"" + fields[i].key + "\": " + value_text(fields[i], true);
-        out += i + 1 < fields.size() ? ",\n" : "\n";
+    Json object = Json::object();
+    for (const ReportField& f : fields) {
+        std::visit([&](const auto& value) { object[f.key] = value; }, f.value);
     }
-    return out + "}\n";
+    return json_text(object);
 }
 
 }  // namespace collide::app

@@ -25,7 +25,8 @@ struct ReportField {
 /// `key: value` lines.
 [[nodiscard]] std::string format_text(const std::vector<ReportField>& fields);
 
-/// One JSON object, one key per line; non-finite numbers become null (JSON has no inf/nan).
+/// One JSON object, one key per line, in the fields' order (json_text: always valid JSON,
+/// whatever bytes a text field holds); non-finite numbers become null (JSON has no inf/nan).
 [[nodiscard]] std::string format_json(const std::vector<ReportField>& fields);
 
 }  // namespace collide::app

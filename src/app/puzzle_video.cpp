@@ -19,6 +19,7 @@
 #include "collide/show/puzzle_lesson.hpp"
 #include "collide/video/output.hpp"
 #include "collide/video/video_writer.hpp"
+#include "font_search.hpp"
 #include "lesson_video.hpp"
 #include "progress.hpp"
 #include "render_plan.hpp"
@@ -82,6 +83,7 @@ void render_puzzle_video(const puzzle::Board& start,
     video::set_libav_verbose(v.verbose);
 
     render::PuzzleViewConfig config;
+    config.font_path = find_font(v.font);
     config.width = geometry.width;
     config.height = geometry.height;
     render::PuzzleRenderer renderer(config, render::Backend::automatic, print_notice);

@@ -12,6 +12,7 @@
 #include "collide/named_values.hpp"
 #include "collide/sim/pq/queue_kind.hpp"
 #include "collide/sim/queue_view.hpp"
+#include "font_search.hpp"
 
 namespace collide::app {
 
@@ -148,6 +149,7 @@ EngineOptions time_engine_options(const RenderRequest& request, const Scene& sce
 render::RenderConfig render_config(const RenderRequest& request, const Scene& scene, int width,
                                    int height) {
     render::RenderConfig config;
+    config.font_path = find_font(request.font);
     config.width = width;
     config.height = height;
     if (request.color) {

@@ -142,6 +142,7 @@ struct RenderRequest {
     bool no_limits = false;             ///< --no-limits: run even what exceeds WorkLimits
     std::optional<int> queue;           ///< --queue [K]: show the event queue, K events
     std::optional<double> slow_motion;  ///< --slow-motion F: F times slower than the speed
+    std::string font;                   ///< --font FILE (empty: find_font's search)
 };
 
 /// Events `--queue` shows without a number.

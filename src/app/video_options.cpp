@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include "cli_numbers.hpp"
+#include "font_search.hpp"
 #include "render_plan.hpp"
 
 namespace collide::app {
@@ -46,9 +47,11 @@ void add_video_options(CLI::App& cmd, VideoCli& v, const VideoOptionSet& set) {
                                      "Show the frames live in a window when a display exists");
     }
     cmd.add_option("--progress", v.progress,
-                   "Progress on stderr: auto (bar on a terminal), bar, json or none")
+                   "Progress on stderr: auto (bar on a terminal), bar, plain (a line per tenth, "
+                   "for CI logs), json or none")
         ->capture_default_str();
     cmd.add_flag("--verbose", v.verbose, "Show the encoder's own log");
+    cmd.add_option("--font", v.font, font_option_help)->type_name("FILE");
 }
 
 }  // namespace collide::app

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// The one set of video options of `render`, `thumbnail`, `heap` and `puzzle` (-o, --format, -q,
-/// --size, --fps, --at, --last-frame, --progress, --preview, --verbose, --theme), registered by
+/// --size, --fps, --at, --last-frame, --progress, --preview, --verbose, --theme, --font), registered by
 /// one function: a command says which of them it takes and how its help names its defaults.
 
 #include <CLI/CLI.hpp>
@@ -23,6 +23,7 @@ struct VideoCli {
     bool preview = false;
     bool verbose = false;
     std::string theme = "dark";
+    std::string font;  ///< --font FILE (empty: find_font's search)
 
     CLI::Option* output_opt = nullptr;
     CLI::Option* format_opt = nullptr;

@@ -18,8 +18,10 @@ constexpr std::uint32_t code_point_count = 224;  // 32..255: ASCII and Latin-1 (
 std::vector<unsigned char> read_font_file(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) {
-        throw_runtime_error("font: cannot open '" + path +
-                            "' (install fonts-dejavu-core, or set the font path)");
+        throw_runtime_error(
+            "font: cannot open '" + path +
+            "' (install fonts-dejavu-core, or give a TrueType font with --font FILE or "
+            "$COLLIDE_FONT)");
     }
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }

@@ -48,6 +48,12 @@ Scene load_builtin(const std::string& name, const std::filesystem::path& assets_
     // Anything there that is not a regular file is refused by name when it is read.
     if (!std::filesystem::exists(file, ec)) {
         std::string reason = "not a scene file and not a built-in scene";
+        if (!std::filesystem::is_directory(scenes_dir(assets_dir), ec)) {
+            throw_scene_error("'" + name + "'", 0, "",
+                              reason + " (no built-in scenes: " + scenes_dir(assets_dir).string() +
+                                  " is not a directory; set COLLIDE_DATA_DIR to collide's data "
+                                  "directory, the one holding scenes/)");
+        }
         const std::string guess = nearest_name(name, scene_names_in(assets_dir));
         reason +=
             guess.empty() ? " (`collide scenes` lists them)" : " (did you mean '" + guess + "'?)";
@@ -58,12 +64,52 @@ Scene load_builtin(const std::string& name, const std::filesystem::path& assets_
     return scene;
 }
 
+std::filesystem::path running_executable() {
+    std::error_code ec;
+    std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (ec) return {};
+    return exe;
+}
+
+DataDir find_data_dir() {
+    for (const char* variable : {"COLLIDE_DATA_DIR", "COLLIDE_ASSETS_DIR"}) {
+        const char* env = std::getenv(variable);
+        if (env != nullptr && *env != '\0') return {env, std::string("$") + variable};
+    }
+    const std::filesystem::path exe = running_executable();
+    if (exe.empty()) return {{}, "nowhere: /proc/self/exe cannot be read"};
+    // Installed: PREFIX/bin/collide next to PREFIX/share/collide (the prefix may have moved),
+    // or PREFIX/libexec/collide/collide-draw, one level further down.
+    const std::filesystem::path installed = exe.parent_path().parent_path() / "share" / "collide";
+    std::error_code ec;
+    if (std::filesystem::is_directory(installed / "scenes", ec))
+        return {installed, "next to the program"};
+    const std::filesystem::path from_libexec =
+        exe.parent_path().parent_path().parent_path() / "share" / "collide";
+    if (exe.parent_path().parent_path().filename() == "libexec" &&
+        std::filesystem::is_directory(from_libexec / "scenes", ec))
+        return {from_libexec, "next to the program"};
+#ifdef COLLIDE_BUILD_TREE
+    // Development only: a program that runs from inside its own build tree reads the source
+    // tree's assets, so a fresh build works without installing. An installed or moved copy never
+    // gets here (its path is not under the build tree).
+    const std::filesystem::path build_tree = COLLIDE_BUILD_TREE;
+    const auto end =
+        std::mismatch(build_tree.begin(), build_tree.end(), exe.begin(), exe.end()).first;
+    if (end == build_tree.end())
+        return {COLLIDE_SOURCE_ASSETS_DIR, "the source tree: a run from the build tree"};
+#endif
+    return {installed, "next to the program"};
+}
+
 }  // namespace
 
+DataDir data_dir() {
+    return find_data_dir();
+}
+
 std::filesystem::path scene_assets_dir() {
-    const char* env = std::getenv("COLLIDE_ASSETS_DIR");
-    if (env != nullptr && *env != '\0') return env;
-    return COLLIDE_SOURCE_ASSETS_DIR;
+    return find_data_dir().path;
 }
 
 Scene load_scene(const std::string& path_or_name) {

@@ -44,8 +44,21 @@ struct BuiltinScene {
 /// scene file cannot be read.
 [[nodiscard]] std::vector<BuiltinScene> builtin_scenes(const std::filesystem::path& assets_dir);
 
-/// The assets directory: $COLLIDE_ASSETS_DIR when set and not empty, else the source tree's
-/// assets/ directory compiled into collide_scene (COLLIDE_SOURCE_ASSETS_DIR).
+/// Where the built-in data (scenes/) is, and how it was found (for messages and --version).
+struct DataDir {
+    std::filesystem::path path;
+    std::string found_by;  ///< "$COLLIDE_DATA_DIR", "next to the program", ...
+};
+
+/// The data directory, first of: $COLLIDE_DATA_DIR (or the older $COLLIDE_ASSETS_DIR) when set
+/// and not empty; PREFIX/share/collide when the running program is PREFIX/bin/collide or
+/// PREFIX/libexec/collide/collide-draw (found
+/// through /proc/self/exe, so a moved prefix still works); and, for a program that runs from
+/// inside its own build tree only, the source tree's assets/ (the development fallback). When
+/// nothing is found, the path next to the program (which does not exist; messages name it).
+[[nodiscard]] DataDir data_dir();
+
+/// data_dir().path: where built-in scene names are looked up (its scenes/ folder).
 [[nodiscard]] std::filesystem::path scene_assets_dir();
 
 /// Parses and validates a TOML scene given as text. `file_label` names it in messages;

@@ -1,0 +1,15 @@
+// `collide-draw`: the drawing commands are registered here (draw_forward.cpp is `collide`'s side).
+
+#include "commands.hpp"
+
+namespace collide::app {
+
+void add_drawing_commands(CLI::App& root, int /*argc*/, char** /*argv*/) {
+    add_heap_command(root);
+    add_puzzle_command(root);
+    add_render_command(root);
+    add_thumbnail_command(root);
+    add_compare_command(root);
+}
+
+}  // namespace collide::app
