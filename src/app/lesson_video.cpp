@@ -7,9 +7,9 @@
 #include <optional>
 #include <utility>
 
+#include "cli_numbers.hpp"
 #include "collide/error.hpp"
 #include "collide/video/video_writer.hpp"
-#include "cli_numbers.hpp"
 #include "interrupt.hpp"
 #include "render_plan.hpp"
 
@@ -32,7 +32,8 @@ void add_lesson_video_options(CLI::App& cmd, LessonVideoCli& v, std::string_view
     v.size_opt = cmd.add_option("--size", v.size,
                                 fmt::format("Frame size WxH, overrides -q ({})", size_note));
     // Decimal digits only, as `render --fps` (CLI11 alone reads 010 as octal, 0x1E as hex).
-    v.fps_opt = add_whole_option(cmd, "--fps", v.fps, 1, max_fps, "Frames per second, overrides -q");
+    v.fps_opt =
+        add_whole_option(cmd, "--fps", v.fps, 1, max_fps, "Frames per second, overrides -q");
     v.last_frame_opt = cmd.add_flag(
         "--last-frame", v.last_frame,
         fmt::format("Write only the final frame, as a PNG (-o FILE.png, default out/{}.png)",

@@ -59,8 +59,7 @@ namespace {
 /// that gave up, a loop that polled the flag): one message, then the signal (interrupt.hpp).
 void end_if_interrupted() {
     if (const int signal_number = collide::app::interrupt_received(); signal_number != 0) {
-        collide::app::end_by_signal(signal_number,
-                                    collide::app::interrupt_message(signal_number));
+        collide::app::end_by_signal(signal_number, collide::app::interrupt_message(signal_number));
     }
 }
 

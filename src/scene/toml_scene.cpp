@@ -277,7 +277,8 @@ class TomlReader {
     std::string one_of(const toml::node& n, const std::string& field, const Keys& allowed) const {
         const std::string value = text_value(n, field);
         if (std::find(allowed.begin(), allowed.end(), value) == allowed.end()) {
-            fail(n, field, "expected one of " + joined(allowed) + " (got \"" + clipped(value) + "\")");
+            fail(n, field,
+                 "expected one of " + joined(allowed) + " (got \"" + clipped(value) + "\")");
         }
         return value;
     }
@@ -403,7 +404,8 @@ class TomlReader {
         d.radius = positive(required(t, "radius", prefix), prefix + ".radius");
         if (const toml::node* v = t.get("mass")) d.mass = positive(*v, prefix + ".mass");
         if (const toml::node* v = t.get("color")) d.color = rgb(*v, prefix + ".color");
-        if (const toml::node* v = t.get("tag")) d.tag = bounded_text(*v, prefix + ".tag", max_tag_chars);
+        if (const toml::node* v = t.get("tag"))
+            d.tag = bounded_text(*v, prefix + ".tag", max_tag_chars);
         return d;
     }
 

@@ -206,7 +206,8 @@ TEST_CASE("limits: the classic engine and the array queues are refused where the
         run_collide_bad_input("simulate '" + scene + "' --engine classic --until 100");
     CHECK(contains(classic, "--until: the classic engine predicts"));
     CHECK(contains(classic, "--engine fast"));
-    CHECK(contains(run_collide_bad_input("simulate '" + scene + "' --engine classic --until 100 "
+    CHECK(contains(run_collide_bad_input("simulate '" + scene +
+                                         "' --engine classic --until 100 "
                                          "--pq unordered"),
                    "--until: "));
     const std::string array = run_collide_bad_input(
