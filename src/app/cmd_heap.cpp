@@ -17,13 +17,13 @@
 #include <string>
 #include <vector>
 
+#include "cli_numbers.hpp"
 #include "collide/error.hpp"
 #include "collide/render/heap_view.hpp"
 #include "collide/show/heap_lesson.hpp"
 #include "collide/sim/pq/heap_lesson.hpp"
 #include "collide/video/output.hpp"
 #include "collide/video/video_writer.hpp"
-#include "cli_numbers.hpp"
 #include "commands.hpp"
 #include "font_search.hpp"
 #include "lesson_video.hpp"

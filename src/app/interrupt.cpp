@@ -2,9 +2,8 @@
 
 #include <unistd.h>
 
-#include <cstdio>
-
 #include <array>
+#include <cstdio>
 #include <cstring>
 #include <string>
 

@@ -8,9 +8,9 @@
 /// (docs/outputs.md).
 
 #include <array>
-#include <cstddef>
 #include <atomic>
 #include <csignal>
+#include <cstddef>
 #include <string>
 
 namespace collide::app {

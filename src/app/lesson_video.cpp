@@ -7,6 +7,7 @@
 #include <optional>
 #include <utility>
 
+#include "cli_numbers.hpp"
 #include "collide/error.hpp"
 #include "collide/video/video_writer.hpp"
 #include "cli_numbers.hpp"

@@ -41,6 +41,13 @@ std::string out_of_memory_message(const CLI::App& root) {
     const std::string command = commands.empty() ? std::string() : commands.front()->get_name();
     std::string message = "out of memory";
     if (!command.empty()) message += " in `collide " + command + "`";
+    // Name the scene the advice is about (`check big.toml`): the user may not know its size.
+    if (!commands.empty()) {
+        const CLI::Option* scene = commands.front()->get_option_no_throw("scene");
+        if (scene != nullptr && scene->count() > 0 && !scene->results().empty()) {
+            message += " with the scene '" + scene->results().front() + "'";
+        }
+    }
     message += ": the run needs more memory than the system would give; " + memory_advice(command);
     return message;
 }
@@ -53,8 +60,7 @@ namespace {
 /// that gave up, a loop that polled the flag): one message, then the signal (interrupt.hpp).
 void end_if_interrupted() {
     if (const int signal_number = collide::app::interrupt_received(); signal_number != 0) {
-        collide::app::end_by_signal(signal_number,
-                                    collide::app::interrupt_message(signal_number));
+        collide::app::end_by_signal(signal_number, collide::app::interrupt_message(signal_number));
     }
 }
 

@@ -122,8 +122,7 @@ EngineOptions time_engine_options(const RenderRequest& request, const Scene& sce
         // A speed so small (5e-324) that the step derived from it is 0: name the speed where
         // the user wrote it, not a dt they never gave.
         const std::string speed_option =
-            request.speed ? std::string("--speed")
-                          : hint_option(scene.render.speed_at, "speed");
+            request.speed ? std::string("--speed") : hint_option(scene.render.speed_at, "speed");
         throw_option_error(speed_option,
                            fmt::format("{:g} is too small: the time-driven step it implies "
                                        "(speed / {:g}) is 0; give a larger speed, or a dt",

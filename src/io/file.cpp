@@ -403,7 +403,8 @@ void File::write_all(const void* data, std::size_t size, const fs::path& shown) 
     while (size > 0) {
         // Checked before every write, and again after a write a signal interrupted: a reader
         // that never reads would otherwise keep this loop (and the process) waiting forever.
-        if (stop_requested()) throw_runtime_error("cannot write " + quote_path(shown) + ": interrupted");
+        if (stop_requested())
+            throw_runtime_error("cannot write " + quote_path(shown) + ": interrupted");
         const ssize_t written = ::write(fd_, bytes, size);
         if (written < 0 && errno == EINTR) continue;
         if (written <= 0) {

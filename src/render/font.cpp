@@ -62,7 +62,8 @@ void check_truetype(const std::vector<unsigned char>& data, const std::string& p
         if (start + length > data.size()) unusable("truncated");
         for (const char* name : {"cmap", "head", "hhea", "hmtx", "loca", "glyf", "maxp"}) {
             std::uint32_t wanted = 0;
-            for (int i = 0; i < 4; ++i) wanted = (wanted << 8) | static_cast<unsigned char>(name[i]);
+            for (int i = 0; i < 4; ++i)
+                wanted = (wanted << 8) | static_cast<unsigned char>(name[i]);
             if (tag == wanted) ++needed;
         }
         if (tag == 0x68656164U) continue;  // 'head'

@@ -415,7 +415,8 @@ class TomlReader {
         d.radius = positive(required(t, "radius", prefix), prefix + ".radius");
         if (const toml::node* v = t.get("mass")) d.mass = positive(*v, prefix + ".mass");
         if (const toml::node* v = t.get("color")) d.color = rgb(*v, prefix + ".color");
-        if (const toml::node* v = t.get("tag")) d.tag = bounded_text(*v, prefix + ".tag", max_tag_chars);
+        if (const toml::node* v = t.get("tag"))
+            d.tag = bounded_text(*v, prefix + ".tag", max_tag_chars);
         return d;
     }
 

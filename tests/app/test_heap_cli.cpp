@@ -164,8 +164,8 @@ TEST_CASE("heap and puzzle read --fps as render does: decimal digits, never octa
     // CLI11 alone read `--fps 010` as octal 8 and `--fps 0x1E` as hex 30.
     TempDir out("heap_fps_digits");
     const std::string video = (out.path / "h.mp4").string();
-    const auto r = run_collide("heap --ops \"1 2 *\" --size 640x360 --progress none --fps 010 -o '" +
-                               video + "'");
+    const auto r = run_collide(
+        "heap --ops \"1 2 *\" --size 640x360 --progress none --fps 010 -o '" + video + "'");
     CAPTURE(r.output);
     CHECK(r.exit_code == 0);
     CHECK(r.output.find("@ 10 fps") != std::string::npos);
@@ -175,8 +175,7 @@ TEST_CASE("heap and puzzle read --fps as render does: decimal digits, never octa
             const std::string message = run_collide_bad_input(
                 command + " --fps " + value + " -o '" + (out.path / "x.png").string() + "'");
             CAPTURE(message);
-            CHECK(message.find("--fps: expected a whole number") !=
-                  std::string::npos);
+            CHECK(message.find("--fps: expected a whole number") != std::string::npos);
         }
     }
     for (const std::string value : {"0x1", "01x"}) {

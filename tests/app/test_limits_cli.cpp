@@ -191,7 +191,8 @@ TEST_CASE("memory: running out says what ran out and what to lower, exit 1") {
     // 20 million discs need about 2 GB; the address space is capped at 1 GB for this run.
     const auto r = run_collide_env("ulimit -v 1000000;", "check '" + scene + "'");
     CHECK(r.exit_code == 1);
-    CHECK(contains(r.output, "collide: error: out of memory in `collide check`"));
+    CHECK(contains(r.output, "collide: error: out of memory in `collide check` with the scene '" +
+                                 scene + "'"));
     CHECK(contains(r.output, "use fewer discs"));
     CHECK_FALSE(contains(r.output, "std::bad_alloc"));
 }
@@ -205,7 +206,8 @@ TEST_CASE("limits: the classic engine and the array queues are refused where the
         run_collide_bad_input("simulate '" + scene + "' --engine classic --until 100");
     CHECK(contains(classic, "--until: the classic engine predicts"));
     CHECK(contains(classic, "--engine fast"));
-    CHECK(contains(run_collide_bad_input("simulate '" + scene + "' --engine classic --until 100 "
+    CHECK(contains(run_collide_bad_input("simulate '" + scene +
+                                         "' --engine classic --until 100 "
                                          "--pq unordered"),
                    "--until: "));
     const std::string array = run_collide_bad_input(

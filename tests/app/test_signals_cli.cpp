@@ -18,8 +18,8 @@
 #include <vector>
 
 #include "../support/files.hpp"
-#include "../support/skip.hpp"
 #include "../support/signal_child.hpp"
+#include "../support/skip.hpp"
 #include "../support/temp_dir.hpp"
 #include "run_collide.hpp"
 
@@ -92,7 +92,7 @@ TEST_CASE("signals: Ctrl-C in a shell loop stops the loop, not just the render")
     CAPTURE(output);
     CHECK(output.find("interrupted by SIGINT; nothing was written") != std::string::npos);
     CHECK(output.find("next") == std::string::npos);  // the loop did not go on
-    CHECK(ended_by(status, SIGINT));                   // the shell itself stopped on it
+    CHECK(ended_by(status, SIGINT));                  // the shell itself stopped on it
     CHECK(entries(out.path) == std::vector<std::string>{"log.txt"});
 }
 
@@ -100,8 +100,9 @@ TEST_CASE("signals: under nohup, SIGHUP stays ignored and the render completes")
     TempDir out("signals_nohup");
     TempDir logs("signals_nohup_log");
     SignalledRun run;
-    run.argv = {COLLIDE_EXE, "render",     "gas", "-o", (out.path / "out.mp4").string(), "-q", "l",
-                "--duration", "2", "--progress", "none"};
+    run.argv = {COLLIDE_EXE, "render", "gas",        "-o", (out.path / "out.mp4").string(),
+                "-q",        "l",      "--duration", "2",  "--progress",
+                "none"};
     run.log = logs.path / "log.txt";
     run.ignored = {SIGHUP};
     run.started_child = [&](pid_t child) {
@@ -127,7 +128,7 @@ TEST_CASE("signals: a reader that never reads does not keep a signal from stoppi
         const int reader = open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
         REQUIRE(reader >= 0);
         SignalledRun run;
-        run.argv = {COLLIDE_EXE, "simulate",     "gas",        "--until",
+        run.argv = {COLLIDE_EXE, "simulate",     "gas",         "--until",
                     "1e300",     "--events-log", fifo.string(), "--no-limits"};
         run.log = out.path / "log.txt";
         run.started = [] { return true; };
@@ -161,7 +162,8 @@ TEST_CASE("signals: a file-size limit is exit 1 with a message and nothing left"
     for (const std::string format : {"mp4", "png", "gif"}) {
         CAPTURE(format);
         TempDir out("signals_fsize");
-        const std::string target = (out.path / (format == "png" ? "frames" : "out." + format)).string();
+        const std::string target =
+            (out.path / (format == "png" ? "frames" : "out." + format)).string();
         const collide::test::RunResult r = collide::test::run_collide_env(
             "ulimit -f 20;", "render gas -q l --duration 1 --progress none --format " + format +
                                  " -o '" + target + "'");
@@ -214,11 +216,10 @@ TEST_CASE("signals: a frames directory that a killed run left is swept by the ne
         CAPTURE(format);
         fs::create_directory(abandoned);
         write_file(abandoned / "lecture_00000.png", "frame");
-        const std::string target =
-            (out.path / (format == "png" ? "other" : "other.mp4")).string();
-        const collide::test::RunResult r = collide::test::run_collide(
-            "render gas -q l --duration 0.2 --progress none --format " + format + " -o '" +
-            target + "'");
+        const std::string target = (out.path / (format == "png" ? "other" : "other.mp4")).string();
+        const collide::test::RunResult r =
+            collide::test::run_collide("render gas -q l --duration 0.2 --progress none --format " +
+                                       format + " -o '" + target + "'");
         CAPTURE(r.output);
         CHECK(r.exit_code == 0);
         CHECK_FALSE(fs::exists(abandoned));

@@ -141,7 +141,8 @@ TEST_CASE("word wrap is linear in the text, however long its lines") {
     if (!std::filesystem::exists(font)) COLLIDE_SKIP_TEST("no DejaVu Sans at " << font);
     const FontAtlas atlas(font, 16.0F);
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<std::string> spaces = wrap_words(atlas, "a" + std::string(300'000, ' '), 1e9F);
+    const std::vector<std::string> spaces =
+        wrap_words(atlas, "a" + std::string(300'000, ' '), 1e9F);
     const std::vector<std::string> words = wrap_words(atlas, std::string(300'000, 'a'), 100.0F);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

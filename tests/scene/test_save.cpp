@@ -87,7 +87,8 @@ TEST_CASE("save: the description is exported, and a title that is not UTF-8 stil
     const Scene back = parse_toml_scene(text.str(), "back.toml", ".");
     CHECK(back.description == scene.description);
     // Each byte that is not UTF-8 becomes U+FFFD; the rest is kept.
-    CHECK(back.title == "caf\xEF\xBF\xBD \xC3\xA9 \xEF\xBF\xBD\xEF\xBF\xBD\xEF\xBF\xBD end\xEF\xBF\xBD");
+    CHECK(back.title ==
+          "caf\xEF\xBF\xBD \xC3\xA9 \xEF\xBF\xBD\xEF\xBF\xBD\xEF\xBF\xBD end\xEF\xBF\xBD");
     check_same_discs(scene, back);
     // Written again, it is the same file: a fixed point.
     std::ostringstream again;

@@ -423,7 +423,8 @@ TEST_CASE("toml: every scene text has a bound: title, description and tags") {
     // At the bound, in characters (not bytes): accepted.
     std::string accented;
     for (int i = 0; i < 600; ++i) accented += "\xC3\xA9";  // é
-    CHECK(parse("description = \"" + accented + "\"\n[[disc]]\nposition = [0.5, 0.5]\n"
+    CHECK(parse("description = \"" + accented +
+                "\"\n[[disc]]\nposition = [0.5, 0.5]\n"
                 "radius = 0.1\n")
               .description == accented);
 }

@@ -150,8 +150,7 @@ TEST_CASE("work: the classic engine costs 2 N predictions an event, an array que
     run.classic = true;
     const WorkEstimate classic = estimate_work(s, run);
     CHECK(classic.collisions == doctest::Approx(fast.collisions));
-    CHECK(classic.predictions ==
-          doctest::Approx(n * (n - 1.0) / 2.0 + fast.collisions * 2.0 * n));
+    CHECK(classic.predictions == doctest::Approx(n * (n - 1.0) / 2.0 + fast.collisions * 2.0 * n));
     CHECK(classic.queue_steps == 0.0);  // a heap: O(log) per operation
     run.array_queue = true;
     const WorkEstimate array = estimate_work(s, run);

@@ -78,7 +78,8 @@ WorkEstimate estimate_work(const Scene& scene, const RunShape& run) noexcept {
         if (run.classic) work.predictions = n * (n - 1.0) / 2.0 + work.collisions * 2.0 * n;
         if (run.classic && run.array_queue) {
             const double pushed = std::max(2.0, classic_finite_fraction * 2.0 * n);
-            work.queue_steps = work.collisions * n + pushed * work.collisions * work.collisions / 2.0;
+            work.queue_steps =
+                work.collisions * n + pushed * work.collisions * work.collisions / 2.0;
         }
     }
     if (run.time_driven && span > 0.0) {
