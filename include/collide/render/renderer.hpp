@@ -25,7 +25,7 @@
 
 #include "collide/image.hpp"
 #include "collide/render/context.hpp"
-#include "collide/collision_view.hpp"
+#include "collide/view/collision.hpp"
 #include "collide/number_text.hpp"
 #include "collide/render_options.hpp"
 #include "collide/snapshot.hpp"

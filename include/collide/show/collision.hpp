@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "collide/collision_view.hpp"
+#include "collide/view/collision.hpp"
 #include "collide/render_options.hpp"
 #include "collide/scene.hpp"
 #include "collide/sim/engine.hpp"
