@@ -51,7 +51,7 @@ struct Measurements {
     std::uint64_t escaped = 0;            ///< discs entirely outside a walled box (tunnelled)
     std::uint64_t overlapping_pairs = 0;  ///< pairs overlapping now
     double energy_drift = 0.0;            ///< (KE - KE0) / KE0
-    std::uint64_t steps = 0;              ///< time quanta taken (the final partial ones included)
+    std::uint64_t steps = 0;              ///< time quanta taken: the state is at steps * dt
     double max_overlap_seen = 0.0;        ///< deepest overlap any check found before rollback
     double seconds_per_time_unit = 0.0;   ///< wall_seconds / t: cost of one simulated time unit
 };
