@@ -91,6 +91,8 @@ const char* kind_name(CollisionKind kind) {
             return "xwall";
         case CollisionKind::ywall:
             return "ywall";
+        case CollisionKind::zwall:
+            return "zwall";
     }
     return "?";
 }

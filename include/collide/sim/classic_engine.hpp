@@ -251,6 +251,7 @@ class ClassicEngine final : public Engine {
                 velocity_[a].y = -velocity_[a].y;
                 last_partner_[a] = no_disc;
                 break;
+            case EventKind::zwall:  // 3D only: the classic loop runs discs
             case EventKind::cell:
                 break;
         }

@@ -32,7 +32,8 @@ struct Measurements {
 
     // --- physics (k_B = 1)
     double kinetic_energy = 0.0;    ///< sum of m v^2 / 2
-    Vec2 momentum;                  ///< sum of m v
+    Vec2 momentum;                  ///< sum of m v (x and y)
+    double momentum_z = 0.0;        ///< 3D only: z component of the sum of m v
     double temperature = 0.0;       ///< kT = KE / N (two degrees of freedom per disc)
     double pressure = 0.0;          ///< virial (periodic) or wall impulse per length per time
     double compressibility = 0.0;   ///< Z = P A / (N k T)

@@ -40,6 +40,7 @@ inline constexpr std::size_t max_array_slots = 10;
         case EventKind::xwall:
             return QueuedKind::xwall;
         case EventKind::ywall:
+        case EventKind::zwall:  // 3D only; queue views are drawn in 2D
             return QueuedKind::ywall;
         case EventKind::cell:
             break;
