@@ -5,11 +5,14 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <utility>
+#include <variant>
 
 #include "collide/error.hpp"
 #include "collide/scene/load.hpp"
 #include "collide/scene/save.hpp"
 #include "collide/sim/scene_check.hpp"
+#include "collide/sim/sphere_check.hpp"
 #include "commands.hpp"
 #include "interrupt.hpp"
 #include "work_limits.hpp"
@@ -31,7 +34,17 @@ void add_check_command(CLI::App& root) {
                     "Also write the scene with every disc explicit: .toml, or .txt (algs4, unit "
                     "box with walls only)");
     cmd->callback([options] {
-        const Scene scene = load_scene(options->scene);  // validates; throws Error(input) -> exit 2
+        // Validates; throws Error(input) -> exit 2.
+        AnyScene any = load_any_scene(options->scene);
+        if (const auto* spheres = std::get_if<SphereScene>(&any)) {
+            if (!options->export_path.empty())
+                throw_option_error("--export",
+                                   "writes 2D scenes only (exporting spheres is not built yet)");
+            std::printf("ok: %s: %s\n", options->scene.c_str(),
+                        sphere_scene_summary(*spheres).c_str());
+            return;
+        }
+        const Scene scene = std::move(std::get<Scene>(any));
         check_scene_hints(scene);  // what `collide render SCENE` would refuse in the hints
         if (!options->export_path.empty()) {
             // A signal while the file is written leaves nothing at the destination, not even a

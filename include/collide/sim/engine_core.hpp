@@ -203,6 +203,7 @@ class BasicEngineCore {
         m.collisions_pair = c.collisions_pair;
         m.collisions_xwall = c.collisions_xwall;
         m.collisions_ywall = c.collisions_ywall;
+        m.collisions_zwall = c.collisions_zwall;
         m.collisions_wall = c.collisions_xwall + c.collisions_ywall + c.collisions_zwall;
         m.cell_crossings = c.cell_crossings;
         m.events = m.collisions_pair + m.collisions_wall + m.cell_crossings;

@@ -27,6 +27,7 @@ struct Measurements {
     std::uint64_t predictions = 0;       ///< collision-time computations (pair + wall)
     std::uint64_t collisions_xwall = 0;  ///< of collisions_wall: left/right walls
     std::uint64_t collisions_ywall = 0;  ///< of collisions_wall: bottom/top walls
+    std::uint64_t collisions_zwall = 0;  ///< of collisions_wall: front/back walls (3D only)
     std::uint64_t cell_crossings = 0;    ///< fast engine: cell-crossing events (part of `events`)
     QueueStats queue;
 
