@@ -16,7 +16,9 @@
 #include "collide/error.hpp"
 #include "collide/scene/load.hpp"
 #include "collide/sim/engine.hpp"
+#include "collide/sim/fast_engine.hpp"
 #include "collide/sim/generate.hpp"
+#include "collide/sim/generate3.hpp"
 #include "collide/sim/scene_check.hpp"
 #include "commands.hpp"
 #include "measurements_report.hpp"
@@ -39,6 +41,7 @@ struct BenchOptions {
     double collisions = 5e6;  ///< collisions timed
     double warmup = -1.0;     ///< collisions before timing; < 0: two per disc
     std::uint64_t seed = 1;
+    int dim = 2;                  ///< 2: discs; 3: spheres (an FCC crystal melted at --eta)
     std::string engine = "fast";  ///< as typed; engine_options() parses it
     std::string pq = "binary";
     bool json = false;
@@ -47,7 +50,21 @@ struct BenchOptions {
     /// Checks the counts and parses the engine options into their types. Throws Error(input)
     /// naming the bad option.
     [[nodiscard]] EngineOptions engine_options() const {
-        if (scene.empty()) {
+        if (dim != 2 && dim != 3)
+            throw_option_error("--dim", fmt::format("{}", dim), "2 (discs) or 3 (spheres)");
+        if (dim == 3 && !scene.empty())
+            throw_option_error("--dim 3",
+                               "the 3D benchmark runs its own FCC fluid; leave out --scene");
+        if (scene.empty() && dim == 3) {
+            if (!(n >= 4.0 && n <= max_discs && n == std::floor(n)))
+                throw_option_error(
+                    "--n", fmt::format("{:g}", n),
+                    fmt::format("a whole number of spheres from 4 to {:g}", max_discs));
+            if (!(eta > 0.0 && eta < fcc_close_packing))
+                throw_option_error(
+                    "--eta", fmt::format("{:g}", eta),
+                    fmt::format("a packing fraction in (0, {:.4f})", fcc_close_packing));
+        } else if (scene.empty()) {
             if (!(n >= 2.0 && n <= max_discs && n == std::floor(n))) {
                 throw_option_error(
                     "--n", fmt::format("{:g}", n),
@@ -76,6 +93,8 @@ struct BenchOptions {
         EngineOptions options;
         options.engine = parse_event_engine_kind(engine, "--engine");
         options.pq = pq::parse_queue_kind(pq, "--pq");
+        if (dim == 3 && options.engine != EngineKind::fast)
+            throw_option_error("--engine", engine, "fast (the only engine that runs spheres yet)");
         return options;
     }
 };
@@ -119,9 +138,25 @@ Scene random_fluid(const BenchOptions& options) {
     return scene;
 }
 
+/// N spheres (rounded to 4 k^3, k unit cells per side) on an FCC lattice at packing fraction
+/// eta in a periodic unit cube, at kT = 1: a crystal that melts below packing 0.49.
+SphereScene fcc_fluid(const BenchOptions& options) {
+    SphereScene scene;
+    const auto cells =
+        static_cast<std::size_t>(std::max(1.0, std::round(std::cbrt(options.n / 4.0))));
+    scene.box = Box3{1.0, 1.0, 1.0, Boundary::periodic};
+    FccSpec spec;
+    spec.cells = {cells, cells, cells};
+    spec.packing_fraction = options.eta;
+    spec.seed = options.seed;
+    generate_fcc(scene, spec);
+    scene.name = fmt::format("fcc-n{}-eta{}", scene.spheres.size(), options.eta);
+    return scene;
+}
+
 /// Advances until `target` more collisions have happened (counted by the listener), in steps
 /// sized from the observed collision rate.
-void run_collisions(Engine& engine, const std::uint64_t& counter, double target) {
+void run_collisions(EngineBase& engine, const std::uint64_t& counter, double target) {
     const std::uint64_t goal = counter + static_cast<std::uint64_t>(target);
     double step = 1e-6;
     while (counter < goal) {
@@ -144,22 +179,20 @@ void run_collisions(Engine& engine, const std::uint64_t& counter, double target)
     }
 }
 
-void run_bench(const BenchOptions& options) {
-    const EngineOptions engine_options = options.engine_options();
-    const Scene scene = options.scene.empty() ? random_fluid(options) : load_scene(options.scene);
-    const double n = static_cast<double>(scene.discs.size());
-    const std::uint64_t rss_before = max_rss_bytes();
-    std::unique_ptr<Engine> engine = make_engine(scene, engine_options);
+/// Warms the engine up, times `options.collisions` collisions and prints the figures.
+void time_engine(const BenchOptions& options, const EngineOptions& engine_options,
+                 EngineBase& engine, const std::string& scene_name, double n, bool periodic,
+                 std::uint64_t rss_before) {
     std::uint64_t collisions = 0;
-    engine->set_collision_listener([&collisions](const CollisionRecord&) { ++collisions; });
-    run_collisions(*engine, collisions, options.warmup >= 0.0 ? options.warmup : 2.0 * n);
+    engine.set_collision_listener([&collisions](const CollisionRecord&) { ++collisions; });
+    run_collisions(engine, collisions, options.warmup >= 0.0 ? options.warmup : 2.0 * n);
     // Before the first measurements() call, whose temporaries would count as engine memory.
     const std::uint64_t rss_after = max_rss_bytes();
-    const Measurements m0 = engine->measurements();
+    const Measurements m0 = engine.measurements();
     const double cpu0 = cpu_seconds();
-    run_collisions(*engine, collisions, options.collisions);
+    run_collisions(engine, collisions, options.collisions);
     const double cpu_timed = cpu_seconds() - cpu0;
-    const Measurements m1 = engine->measurements();
+    const Measurements m1 = engine.measurements();
 
     const double seconds = m1.wall_seconds - m0.wall_seconds;
     const auto delta = [](std::uint64_t a, std::uint64_t b) { return static_cast<double>(a - b); };
@@ -173,9 +206,9 @@ void run_bench(const BenchOptions& options) {
         1.0 + ((m1.compressibility - 1.0) * m1.t - (m0.compressibility - 1.0) * m0.t) / window;
 
     std::vector<ReportField> fields{
-        {"scene", scene.name},
+        {"scene", scene_name},
         {"engine", std::string(to_string(engine_options.engine))},
-        {"discs", static_cast<std::uint64_t>(scene.discs.size())},
+        {options.dim == 3 ? "spheres" : "discs", static_cast<std::uint64_t>(n)},
         {"packing_fraction", m1.packing_fraction},
         {"timed_collisions", static_cast<std::uint64_t>(timed_collisions)},
         {"seconds", seconds},
@@ -187,11 +220,12 @@ void run_bench(const BenchOptions& options) {
         {"cell_crossings_per_collision",
          delta(m1.cell_crossings, m0.cell_crossings) / timed_collisions},
         {"pq_max_size", m1.queue.max_size},
-        {"engine_bytes_per_disc", static_cast<double>(m1.engine_bytes) / n},
-        {"rss_delta_bytes_per_disc", static_cast<double>(rss_after - rss_before) / n},
-        {"compressibility_window", options.scene.empty() || scene.box.boundary == Boundary::periodic
-                                       ? z_window
-                                       : m1.compressibility},
+        {options.dim == 3 ? "engine_bytes_per_sphere" : "engine_bytes_per_disc",
+         static_cast<double>(m1.engine_bytes) / n},
+        {options.dim == 3 ? "rss_delta_bytes_per_sphere" : "rss_delta_bytes_per_disc",
+         static_cast<double>(rss_after - rss_before) / n},
+        {"compressibility_window",
+         options.scene.empty() || periodic ? z_window : m1.compressibility},
         {"energy_relative_change", (m1.kinetic_energy - m0.kinetic_energy) / m0.kinetic_energy},
         {"max_overlap", m1.max_overlap},
     };
@@ -199,6 +233,24 @@ void run_bench(const BenchOptions& options) {
         fields.insert(fields.begin() + 2, {"pq", pq::to_string(engine_options.pq)});
     const std::string out = options.json ? format_json(fields) : format_text(fields);
     std::fputs(out.c_str(), stdout);
+}
+
+void run_bench(const BenchOptions& options) {
+    const EngineOptions engine_options = options.engine_options();
+    if (options.dim == 3) {
+        const SphereScene scene = fcc_fluid(options);
+        const std::uint64_t rss_before = max_rss_bytes();
+        sim::FastSphereEngine engine(scene);
+        time_engine(options, engine_options, engine, scene.name,
+                    static_cast<double>(scene.spheres.size()), true, rss_before);
+        return;
+    }
+    const Scene scene = options.scene.empty() ? random_fluid(options) : load_scene(options.scene);
+    const std::uint64_t rss_before = max_rss_bytes();
+    std::unique_ptr<Engine> engine = make_engine(scene, engine_options);
+    time_engine(options, engine_options, *engine, scene.name,
+                static_cast<double>(scene.discs.size()), scene.box.boundary == Boundary::periodic,
+                rss_before);
 }
 
 }  // namespace
@@ -215,6 +267,9 @@ void add_bench_command(CLI::App& root) {
     cmd->add_option("--collisions", options->collisions, "Collisions timed (default 5e6)");
     cmd->add_option("--warmup", options->warmup, "Collisions before timing (default: 2 per disc)");
     add_whole_option(*cmd, "--seed", options->seed, 0, UINT64_MAX, "Seed of the random fluid");
+    cmd->add_option("--dim", options->dim,
+                    "2 (discs, default) or 3: spheres, an FCC crystal of --n spheres (rounded to "
+                    "4 k^3) melted at packing --eta");
     cmd->add_option("--engine", options->engine, "fast (default) or classic");
     cmd->add_option("--pq", options->pq, "Classic engine's queue");
     cmd->add_flag("--json", options->json, "Print JSON");

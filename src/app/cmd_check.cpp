@@ -5,11 +5,14 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <utility>
+#include <variant>
 
 #include "collide/error.hpp"
 #include "collide/scene/load.hpp"
 #include "collide/scene/save.hpp"
 #include "collide/sim/scene_check.hpp"
+#include "collide/sim/sphere_check.hpp"
 #include "commands.hpp"
 #include "interrupt.hpp"
 #include "json_output.hpp"
@@ -39,11 +42,29 @@ void add_check_command(CLI::App& root) {
         // one while the export is written leaves nothing at the destination, not even a
         // temporary: the guard turns it into a flag save_scene checks before the rename.
         InterruptGuard interrupts;
-        const Scene scene = [&] {
+        AnyScene any = [&] {
             const StopAtOnce nothing_written_yet(interrupts);
-            return load_scene(options->scene);  // validates; throws Error(input) -> exit 2
+            return load_any_scene(options->scene);  // validates; throws Error(input) -> exit 2
         }();
         interrupts.throw_if_requested();
+        if (const auto* spheres = std::get_if<SphereScene>(&any)) {
+            if (!options->export_path.empty())
+                throw_option_error("--export",
+                                   "writes 2D scenes only (exporting spheres is not built yet)");
+            const std::string summary = sphere_scene_summary(*spheres);
+            if (options->json) {
+                const Json document{{"scene", options->scene},
+                                    {"name", spheres->name},
+                                    {"spheres", spheres->spheres.size()},
+                                    {"summary", summary},
+                                    {"exported", nullptr}};
+                std::fputs(json_text(document).c_str(), stdout);
+                return;
+            }
+            std::printf("ok: %s: %s\n", options->scene.c_str(), summary.c_str());
+            return;
+        }
+        const Scene scene = std::move(std::get<Scene>(any));
         check_scene_hints(scene);  // what `collide render SCENE` would refuse in the hints
         if (!options->export_path.empty()) {
             try {

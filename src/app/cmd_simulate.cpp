@@ -6,14 +6,20 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <variant>
+#include <vector>
 
 #include "collide/error.hpp"
 #include "collide/io/file.hpp"
 #include "collide/scene/load.hpp"
 #include "collide/sim/engine.hpp"
+#include "collide/sim/fast_engine.hpp"
+#include "collide/sim/sphere_check.hpp"
 #include "commands.hpp"
 #include "interrupt.hpp"
 #include "measurements_report.hpp"
@@ -96,18 +102,89 @@ const char* kind_name(CollisionKind kind) {
             return "xwall";
         case CollisionKind::ywall:
             return "ywall";
+        case CollisionKind::zwall:
+            return "zwall";
     }
     return "?";
+}
+
+/// Runs `engine` to --until with the events log and the interrupt flag, and prints its report:
+/// `fields` first, then the measurements (`extra` after them).
+void run_to_end(const SimulateOptions& options, InterruptGuard& interrupts, EngineBase& engine,
+                std::unique_ptr<EventsLog>& log, std::vector<ReportField> fields,
+                const std::function<void(const Measurements&, std::vector<ReportField>&)>& extra) {
+    if (log) {
+        engine.set_collision_listener([&log](const CollisionRecord& r) {
+            if (r.kind == CollisionKind::pair) {
+                log->write(fmt::format("{},{},{},{}\n", r.t, kind_name(r.kind), r.a, r.b));
+            } else {
+                log->write(fmt::format("{},{},{},\n", r.t, kind_name(r.kind), r.a));
+            }
+        });
+    }
+    engine.set_stop_flag(&interrupts.flag());
+    try {
+        engine.advance_to(options.until);
+    } catch (const Error&) {
+        interrupts.throw_if_requested();  // say why the engine stopped
+        throw;
+    }
+    interrupts.throw_if_requested();  // a signal during loading, or too late for a poll
+    if (log) log->finish();
+    const Measurements m = engine.measurements();
+    for (ReportField& f : report_fields(m)) fields.push_back(std::move(f));
+    if (extra) extra(m, fields);
+    const std::string out = options.json ? format_json(fields) : format_text(fields);
+    // Data on standard output (--events-log -) is the only thing there: the report moves aside.
+    std::fputs(out.c_str(), log && log->is_standard_output() ? stderr : stdout);
+}
+
+/// `simulate` of a 3D scene: the fast engine on spheres; the measurements with three degrees of
+/// freedom (temperature), Z from the collision virial, packing fraction and mean-square
+/// displacement, plus the z walls and momentum.
+void run_simulate_spheres(const SimulateOptions& options, const EngineOptions& engine_options,
+                          InterruptGuard& interrupts, const SphereScene& scene) {
+    if (engine_options.engine != EngineKind::fast)
+        throw_option_error("--engine", options.engine,
+                           "fast (the only engine that runs spheres yet)");
+    const double collisions = collisions_per_time_unit(scene) * options.until;
+    if (!options.no_limits && collisions > WorkLimits{}.events) {
+        throw_option_error(
+            "--until",
+            fmt::format("{:g} time units of this scene is about {:.3g} collisions, over the limit "
+                        "of {:g} (about an hour); lower --until, or pass {} to run it anyway",
+                        options.until, collisions, WorkLimits{}.events, insist_option));
+    }
+    std::unique_ptr<EventsLog> log;
+    if (!options.events_log.empty()) {
+        log = std::make_unique<EventsLog>(options.events_log);
+        log->write("t,kind,a,b\n");
+    }
+    sim::FastSphereEngine engine(scene);
+    std::vector<ReportField> fields{{"scene", scene.name},
+                                    {"engine", std::string(to_string(engine_options.engine))},
+                                    {"dimension", std::uint64_t{3}},
+                                    {"spheres", static_cast<std::uint64_t>(scene.spheres.size())}};
+    run_to_end(options, interrupts, engine, log, std::move(fields),
+               [](const Measurements& m, std::vector<ReportField>& out) {
+                   out.push_back({"collisions_zwall", m.collisions_zwall});
+                   out.push_back({"momentum_z", m.momentum_z});
+               });
 }
 
 void run_simulate(const SimulateOptions& options) {
     const EngineOptions engine_options = options.engine_options();
     // Ctrl-C stops the run cleanly (the events log's temporary is removed) however long it is.
     InterruptGuard interrupts;
-    const Scene scene = [&] {
+    AnyScene any = [&] {
         const StopAtOnce nothing_written_yet(interrupts);
-        return load_scene(options.scene);
+        return load_any_scene(options.scene);
     }();
+    if (const auto* spheres = std::get_if<SphereScene>(&any)) {
+        run_simulate_spheres(options, engine_options, interrupts, *spheres);
+        return;
+    }
+    const Scene scene = std::move(std::get<Scene>(any));
     check_simulate_work(scene, engine_options, options.until, options.no_limits);
     // Open the log before simulating: an unwritable path fails fast, with nothing half written.
     std::unique_ptr<EventsLog> log;
@@ -121,33 +198,12 @@ void run_simulate(const SimulateOptions& options) {
         log->write("t,kind,a,b\n");
     }
     std::unique_ptr<Engine> engine = make_engine(scene, engine_options);
-    if (log) {
-        engine->set_collision_listener([&log](const CollisionRecord& r) {
-            if (r.kind == CollisionKind::pair) {
-                log->write(fmt::format("{},{},{},{}\n", r.t, kind_name(r.kind), r.a, r.b));
-            } else {
-                log->write(fmt::format("{},{},{},\n", r.t, kind_name(r.kind), r.a));
-            }
-        });
-    }
-    engine->set_stop_flag(&interrupts.flag());
-    try {
-        engine->advance_to(options.until);
-    } catch (const Error&) {
-        interrupts.throw_if_requested();  // say why the engine stopped
-        throw;
-    }
-    interrupts.throw_if_requested();  // a signal during loading, or too late for a poll
-    if (log) log->finish();
     std::vector<ReportField> fields{{"scene", scene.name},
                                     {"engine", std::string(to_string(engine_options.engine))}};
     if (engine_options.engine == EngineKind::classic)
         fields.push_back({"pq", pq::to_string(engine_options.pq)});
     fields.push_back({"discs", static_cast<std::uint64_t>(scene.discs.size())});
-    for (ReportField& f : report_fields(engine->measurements())) fields.push_back(std::move(f));
-    const std::string out = options.json ? format_json(fields) : format_text(fields);
-    // Data on standard output (--events-log -) is the only thing there: the report moves aside.
-    std::fputs(out.c_str(), log && log->is_standard_output() ? stderr : stdout);
+    run_to_end(options, interrupts, *engine, log, std::move(fields), {});
 }
 
 }  // namespace

@@ -127,9 +127,9 @@ SimFrame FrameSource::frame(std::int64_t k) {
     out.time = plan_.clock.time(k);
     out.panels.reserve(panels_.size());
     for (Panel& panel : panels_) {
-        const double target =
-            panel.time_driven ? last_step_time(out.time, plan_.time_engine.dt) : out.time;
-        panel.engine->advance_to(std::max(target, panel.engine->time()));
+        // The time-driven engine takes the whole steps of dt up to the frame time and shows the
+        // latest (TimeEngine::advance_to): every caller gets the same state at the same step.
+        panel.engine->advance_to(std::max(out.time, panel.engine->time()));
         out.panels.push_back(describe(panel));
     }
     return out;

@@ -99,7 +99,6 @@ struct SpeedChoice {
 /// The frame clock and the time-driven steps between frames (collide/show/collision.hpp).
 using show::FrameClock;
 using show::divides;
-using show::last_step_time;
 
 /// A video of `duration` seconds at `fps`: round(duration * fps) frames (at least 1), frame k at
 /// k * speed / fps. Throws Error(input) if duration, speed or fps is not positive and finite.

@@ -135,6 +135,34 @@ Scene load_scene(const std::string& path_or_name, const std::filesystem::path& a
                           "' (expected an algs4 .txt file or a .toml scene)");
 }
 
+AnyScene load_any_scene(const std::string& path_or_name, const SceneOptions& options) {
+    const std::filesystem::path path(path_or_name);
+    std::error_code ec;
+    const bool exists = !path_or_name.empty() && std::filesystem::exists(path, ec);
+    std::filesystem::path file;
+    std::string name;
+    if (!path_or_name.empty() && !exists && looks_like_name(path_or_name)) {
+        file = scenes_dir(scene_assets_dir()) / (path_or_name + ".toml");
+        name = path_or_name;
+        if (!std::filesystem::exists(file, ec))
+            return load_scene(path_or_name, scene_assets_dir(), options);
+    } else if (exists && !std::filesystem::is_directory(path, ec) && has_extension(path, ".toml")) {
+        file = path;
+        name = path.stem().string();
+    } else {
+        return load_scene(path_or_name, scene_assets_dir(), options);
+    }
+    AnyScene any =
+        parse_any_toml_scene(read_scene_file(file), file.string(), file.parent_path(), options);
+    std::visit(
+        [&](auto& scene) {
+            scene.name = name;
+            if (scene.title.empty()) scene.title = name;
+        },
+        any);
+    return any;
+}
+
 std::vector<std::string> builtin_scene_names() {
     return scene_names_in(scene_assets_dir());
 }

@@ -14,6 +14,7 @@
 #include "collide/scene/load.hpp"
 #include "collide/sim/algs4.hpp"
 #include "collide/sim/generate.hpp"
+#include "collide/sim/generate3.hpp"
 #include "collide/sim/scene_check.hpp"
 #include "toml_limits.hpp"
 
@@ -23,8 +24,13 @@ namespace {
 
 using Keys = std::vector<std::string>;
 
-const Keys top_keys = {"title", "description", "include", "box", "disc", "generate", "render"};
-const Keys box_keys = {"width", "height", "boundary"};
+const Keys top_keys = {"title",    "description", "include",   "box",    "disc",
+                       "generate", "render",      "dimension", "sphere", "fcc"};
+const Keys box_keys = {"width", "height", "depth", "boundary"};
+const Keys sphere_keys = {"position", "velocity", "radius", "mass", "color", "tag"};
+const Keys fcc_keys = {"cells", "packing_fraction", "mass", "temperature", "color", "seed", "tag"};
+const Keys generate3_keys = {
+    "count", "packing_fraction", "radius", "mass", "temperature", "color", "seed", "tag"};
 const Keys disc_keys = {"position", "velocity", "radius", "mass", "color", "tag"};
 const Keys generate_keys = {"count", "packing_fraction", "radius", "mass", "temperature",
                             "speed", "region",           "color",  "seed", "tag"};
@@ -61,9 +67,55 @@ class TomlReader {
                std::optional<std::uint64_t> seed_override)
         : file_(std::move(file)), base_dir_(std::move(base_dir)), seed_override_(seed_override) {}
 
+    /// A scene of either dimension (`dimension = 3`: spheres).
+    AnyScene read_any(std::string_view text) {
+        toml::table doc = parse(text);
+        check_keys(doc, "", top_keys);
+        if (dimension(doc) == 3) return read3(doc);
+        return read2(doc);
+    }
+
     Scene read(std::string_view text) {
         toml::table doc = parse(text);
         check_keys(doc, "", top_keys);
+        if (dimension(doc) == 3) {
+            fail(*doc.get("dimension"), "dimension",
+                 "a 3D scene (spheres): `collide check`, `collide simulate` and `collide bench` "
+                 "read it; drawing spheres is not built yet");
+        }
+        return read2(doc);
+    }
+
+  private:
+    int dimension(const toml::table& doc) const {
+        const toml::node* n = doc.get("dimension");
+        if (n == nullptr) return 2;
+        const std::int64_t d = integer(*n, "dimension", 2);
+        if (d != 2 && d != 3) fail(*n, "dimension", "expected 2 (discs) or 3 (spheres)");
+        return static_cast<int>(d);
+    }
+
+    // A key that only a 3D scene has, in a 2D one (or the reverse): named where it is written.
+    void refuse_other_dimension(const toml::table& doc, int dim) const {
+        const Keys keys3 = {"sphere", "fcc"};
+        const Keys keys2 = {"disc", "include"};
+        for (const std::string& key : dim == 2 ? keys3 : keys2) {
+            if (const toml::node* n = doc.get(key)) {
+                fail(*n, key,
+                     dim == 2 ? "a 3D key in a 2D scene (add dimension = 3 for spheres)"
+                              : "a 2D key in a 3D scene (dimension = 3 has [[sphere]], [[fcc]] "
+                                "and [[generate]])");
+            }
+        }
+        if (const toml::node* box = doc.get("box"); box != nullptr && box->is_table() && dim == 2) {
+            if (const toml::node* depth = box->as_table()->get("depth"))
+                fail(*depth, "box.depth",
+                     "a 3D key in a 2D scene (add dimension = 3 for a box with a depth)");
+        }
+    }
+
+    Scene read2(const toml::table& doc) {
+        refuse_other_dimension(doc, 2);
         if (const toml::node* n = doc.get("title"))
             scene_.title = bounded_text(*n, "title", max_title_chars);
         if (const toml::node* n = doc.get("description"))
@@ -84,7 +136,167 @@ class TomlReader {
         return std::move(scene_);
     }
 
-  private:
+    // ---------------------------------------------------------------------------------------
+    // 3D: spheres in a box with a depth.
+
+    SphereScene read3(const toml::table& doc) {
+        refuse_other_dimension(doc, 3);
+        SphereScene s;
+        if (const toml::node* n = doc.get("title"))
+            s.title = bounded_text(*n, "title", max_title_chars);
+        if (const toml::node* n = doc.get("description"))
+            s.description = bounded_text(*n, "description", max_description_chars);
+        if (const toml::node* n = doc.get("box")) {
+            const toml::table& t = table_at(*n, "box");
+            check_keys(t, "box", box_keys);
+            if (const toml::node* v = t.get("width")) s.box.width = box_side(*v, "box.width");
+            if (const toml::node* v = t.get("height")) s.box.height = box_side(*v, "box.height");
+            if (const toml::node* v = t.get("depth")) s.box.depth = box_side(*v, "box.depth");
+            if (const toml::node* v = t.get("boundary")) {
+                const std::string b = text_value(*v, "box.boundary");
+                if (b == "walls") {
+                    s.box.boundary = Boundary::walls;
+                } else if (b == "periodic") {
+                    s.box.boundary = Boundary::periodic;
+                } else {
+                    fail(*v, "box.boundary",
+                         "expected \"walls\" or \"periodic\" (got \"" + b + "\")");
+                }
+            }
+        }
+        if (const toml::node* n = doc.get("render")) read_render(*n);  // kept for the video
+        if (const toml::node* n = doc.get("sphere")) read_spheres(*n, s);
+        if (const toml::node* n = doc.get("fcc")) read_fcc(*n, s);
+        if (const toml::node* n = doc.get("generate")) read_sphere_generators(*n, s);
+        if (s.spheres.empty()) {
+            throw_scene_error(file_, 0, "sphere",
+                              "a 3D scene needs spheres: [[sphere]], [[fcc]] or [[generate]]");
+        }
+        return s;
+    }
+
+    Vec3 triple(const toml::node& n, const std::string& field) const {
+        const toml::array* a = n.as_array();
+        if (a == nullptr || a->size() != 3) fail(n, field, "expected [x, y, z]");
+        return {number(*a->get(0), field + "[0]"), number(*a->get(1), field + "[1]"),
+                number(*a->get(2), field + "[2]")};
+    }
+
+    // Explicit spheres: each inside a walled box, none overlapping another (named at the later
+    // one's line). O(n^2) over the explicit spheres, which a file lists by hand.
+    void read_spheres(const toml::node& n, SphereScene& s) const {
+        const toml::array* a = n.as_array();
+        if (a == nullptr) fail(n, "sphere", "expected [[sphere]] tables");
+        constexpr std::size_t most_explicit = 100'000;
+        if (a->size() > most_explicit)
+            fail(n, "sphere",
+                 "more than " + std::to_string(most_explicit) +
+                     " explicit spheres: use [[fcc]] or [[generate]]");
+        for (std::size_t i = 0; i < a->size(); ++i) {
+            const std::string field = "sphere[" + std::to_string(i) + "]";
+            const toml::table& t = table_at(*a->get(i), field);
+            check_keys(t, field, sphere_keys);
+            Sphere p;
+            const toml::node& at = required(t, "position", field);
+            p.position = triple(at, field + ".position");
+            if (const toml::node* v = t.get("velocity"))
+                p.velocity = triple(*v, field + ".velocity");
+            p.radius = positive(required(t, "radius", field), field + ".radius");
+            if (const toml::node* v = t.get("mass")) p.mass = positive(*v, field + ".mass");
+            if (const toml::node* v = t.get("color")) p.color = rgb(*v, field + ".color");
+            if (const toml::node* v = t.get("tag")) p.tag = text_value(*v, field + ".tag");
+            if (!s.box.contains(p.position, p.radius))
+                fail(at, field + ".position",
+                     "the sphere (radius " + num(p.radius) + ") is not inside the box [0, " +
+                         num(s.box.width) + "] x [0, " + num(s.box.height) + "] x [0, " +
+                         num(s.box.depth) + "]");
+            p.position = s.box.wrap(p.position);
+            for (std::size_t j = 0; j < s.spheres.size(); ++j) {
+                const Sphere& o = s.spheres[j];
+                const double dist = norm(s.box.displacement(o.position, p.position));
+                // Touching within 1e-9 of the contact distance is allowed, as for discs.
+                if (dist < (p.radius + o.radius) * (1.0 - 1e-9))
+                    fail(at, field + ".position",
+                         "overlaps sphere[" + std::to_string(j) + "] (centres " + num(dist) +
+                             " apart, radii add up to " + num(p.radius + o.radius) + ")");
+            }
+            s.spheres.push_back(std::move(p));
+        }
+    }
+
+    void read_fcc(const toml::node& n, SphereScene& s) const {
+        const toml::array* a = n.as_array();
+        if (a == nullptr || a->size() != 1) fail(n, "fcc", "expected one [[fcc]] table");
+        const std::string field = "fcc";
+        const toml::table& t = table_at(*a->get(0), field);
+        check_keys(t, field, fcc_keys);
+        const int line = static_cast<int>(t.source().begin.line);
+        if (!s.spheres.empty())
+            throw_scene_error(file_, line, "fcc",
+                              "an FCC lattice fills the whole box: it cannot share it with "
+                              "[[sphere]] entries");
+        FccSpec spec;
+        const toml::node& cells = required(t, "cells", field);
+        if (const toml::array* c = cells.as_array()) {
+            if (c->size() != 3) fail(cells, "fcc.cells", "expected a count or [nx, ny, nz]");
+            for (std::size_t k = 0; k < 3; ++k)
+                spec.cells[k] = static_cast<std::size_t>(
+                    integer(*c->get(k), "fcc.cells[" + std::to_string(k) + "]", 1));
+        } else {
+            const auto each = static_cast<std::size_t>(integer(cells, "fcc.cells", 1));
+            spec.cells = {each, each, each};
+        }
+        spec.packing_fraction =
+            positive(required(t, "packing_fraction", field), "fcc.packing_fraction");
+        if (const toml::node* v = t.get("mass")) spec.mass = positive(*v, "fcc.mass");
+        if (const toml::node* v = t.get("temperature"))
+            spec.temperature = number(*v, "fcc.temperature");
+        if (const toml::node* v = t.get("color")) spec.color = rgb(*v, "fcc.color");
+        if (const toml::node* v = t.get("seed"))
+            spec.seed = static_cast<std::uint64_t>(integer(*v, "fcc.seed", 0));
+        if (seed_override_) spec.seed = *seed_override_;
+        if (const toml::node* v = t.get("tag")) spec.tag = text_value(*v, "fcc.tag");
+        try {
+            generate_fcc(s, spec, field);
+        } catch (const Error& e) {
+            throw_scene_error(file_, line, "", e.what());  // the generator names the field
+        }
+    }
+
+    void read_sphere_generators(const toml::node& n, SphereScene& s) const {
+        const toml::array* a = n.as_array();
+        if (a == nullptr) fail(n, "generate", "expected [[generate]] tables");
+        for (std::size_t i = 0; i < a->size(); ++i) {
+            const std::string field = "generate[" + std::to_string(i) + "]";
+            const toml::table& t = table_at(*a->get(i), field);
+            check_keys(t, field, generate3_keys);
+            const auto key = [&](const char* name) { return field + "." + name; };
+            SphereGenerateSpec g;
+            g.seed = i + 1;
+            if (const toml::node* v = t.get("count"))
+                g.count = static_cast<std::size_t>(integer(*v, key("count"), 1));
+            if (const toml::node* v = t.get("packing_fraction"))
+                g.packing_fraction = positive(*v, key("packing_fraction"));
+            const int line = static_cast<int>(t.source().begin.line);
+            if (t.get("count") == nullptr && t.get("packing_fraction") == nullptr)
+                throw_scene_error(file_, line, field, "give count or packing_fraction");
+            g.radius = positive(required(t, "radius", field), key("radius"));
+            if (const toml::node* v = t.get("mass")) g.mass = positive(*v, key("mass"));
+            if (const toml::node* v = t.get("temperature"))
+                g.temperature = number(*v, key("temperature"));
+            if (const toml::node* v = t.get("color")) g.color = rgb(*v, key("color"));
+            if (const toml::node* v = t.get("seed"))
+                g.seed = static_cast<std::uint64_t>(integer(*v, key("seed"), 0));
+            if (seed_override_) g.seed = *seed_override_ + i;
+            if (const toml::node* v = t.get("tag")) g.tag = text_value(*v, key("tag"));
+            try {
+                generate_spheres(s, g, field);
+            } catch (const Error& e) {
+                throw_scene_error(file_, line, "", e.what());
+            }
+        }
+    }
+
     toml::table parse(std::string_view text) const {
         check_toml_limits(text, file_);
         try {
@@ -545,6 +757,12 @@ Scene parse_toml_scene(std::string_view text, const std::string& file_label,
                        const std::filesystem::path& base_dir, const SceneOptions& options) {
     TomlReader reader(file_label, base_dir, options.seed);
     return reader.read(text);
+}
+
+AnyScene parse_any_toml_scene(std::string_view text, const std::string& file_label,
+                              const std::filesystem::path& base_dir, const SceneOptions& options) {
+    TomlReader reader(file_label, base_dir, options.seed);
+    return reader.read_any(text);
 }
 
 Scene load_toml_scene(const std::filesystem::path& path, const SceneOptions& options) {

@@ -15,15 +15,6 @@ bool positive_finite(double x) {
 }
 }  // namespace
 
-double last_step_time(double t, double dt) noexcept {
-    if (!positive_finite(dt) || !(t > 0.0)) return t > 0.0 ? t : 0.0;
-    const double steps = std::floor(t / dt * (1.0 + divide_tolerance));
-    const double step_time = steps * dt;
-    // A frame time that is a whole number of steps (within rounding) is returned exactly.
-    if (std::abs(step_time - t) <= divide_tolerance * dt) return t;
-    return std::min(step_time, t);
-}
-
 bool divides(double dt, double interval) noexcept {
     if (!positive_finite(dt) || !positive_finite(interval)) return false;
     const double steps = interval / dt;

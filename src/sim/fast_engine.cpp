@@ -36,7 +36,8 @@ std::uint32_t fit_cells(double extent, double min_cell) {
 
 }  // namespace
 
-bool FastEngine::KeyLess::tie_break(const Key& x, const Key& y) const noexcept {
+template <int D>
+bool BasicFastEngine<D>::KeyLess::tie_break(const Key& x, const Key& y) const noexcept {
     if (x.kind() != y.kind()) return x.kind() < y.kind();
     const auto ids = [this](const Key& k) {
         const std::uint32_t a = (*scene_index)[k.a];
@@ -47,8 +48,12 @@ bool FastEngine::KeyLess::tie_break(const Key& x, const Key& y) const noexcept {
     return ids(x) < ids(y);
 }
 
-FastEngine::FastEngine(const Scene& scene)
-    : core_(scene), box_(scene.box), periodic_(scene.box.boundary == Boundary::periodic) {
+template <int D>
+BasicFastEngine<D>::BasicFastEngine(const SceneType& scene)
+    : core_(scene),
+      box_(scene.box),
+      extent_(Space::extent(scene.box)),
+      periodic_(scene.box.boundary == Boundary::periodic) {
     choose_grid(scene);
     place_discs(scene);
     instant_limit_ = instant_collision_limit(p_.size());
@@ -57,11 +62,12 @@ FastEngine::FastEngine(const Scene& scene)
 
 namespace {
 
-/// The big-disc threshold and the largest small radius of a scene.
-std::pair<double, double> split_radii(const Scene& scene) {
+/// The big-particle threshold and the largest small radius of a scene's particles.
+template <class Particles>
+std::pair<double, double> split_radii(const Particles& particles) {
     std::vector<double> radii;
-    radii.reserve(scene.discs.size());
-    for (const Disc& d : scene.discs) radii.push_back(d.radius);
+    radii.reserve(particles.size());
+    for (const auto& d : particles) radii.push_back(d.radius);
     const double big = big_radius_threshold(radii);
     double small_max = 0.0;
     for (double r : radii) {
@@ -72,51 +78,103 @@ std::pair<double, double> split_radii(const Scene& scene) {
 
 }  // namespace
 
-bool FastEngine::can_simulate(const Scene& scene) {
+template <int D>
+bool BasicFastEngine<D>::can_simulate(const SceneType& scene) {
     if (scene.box.boundary != Boundary::periodic) return true;
-    const double min_cell = 2.0 * split_radii(scene).second * (1.0 + cell_margin);
-    return fit_cells(scene.box.width, min_cell) >= 3 && fit_cells(scene.box.height, min_cell) >= 3;
+    const double min_cell = 2.0 * split_radii(Space::particles(scene)).second * (1.0 + cell_margin);
+    const Vec extent = Space::extent(scene.box);
+    for (int k = 0; k < D; ++k) {
+        if (fit_cells(axis(extent, k), min_cell) < 3) return false;
+    }
+    return true;
 }
 
-void FastEngine::choose_grid(const Scene& scene) {
-    std::tie(big_threshold_, small_radius_max_) = split_radii(scene);
+namespace {
+
+constexpr const char* box_side_names[] = {"box.width", "box.height", "box.depth"};
+
+}  // namespace
+
+template <int D>
+void BasicFastEngine<D>::choose_grid(const SceneType& scene) {
+    const auto& particles = Space::particles(scene);
+    std::tie(big_threshold_, small_radius_max_) = split_radii(particles);
     const double min_cell = 2.0 * small_radius_max_ * (1.0 + cell_margin);
-    std::uint32_t nx = fit_cells(box_.width, min_cell);
-    std::uint32_t ny = fit_cells(box_.height, min_cell);
-    if (periodic_ && (nx < 3 || ny < 3)) {
-        throw_scene_error("", 0, nx < 3 ? "box.width" : "box.height",
-                          "a periodic box must be at least three disc diameters wide and tall for "
-                          "the fast engine (the classic engine has no such limit)");
+    std::array<std::uint32_t, D> n{};
+    for (int k = 0; k < D; ++k) {
+        n[k] = fit_cells(axis(extent_, k), min_cell);
+        if (periodic_ && n[k] < 3) {
+            throw_scene_error("", 0, box_side_names[k],
+                              D == 2 ? "a periodic box must be at least three disc diameters wide "
+                                       "and tall for the fast engine (the classic engine has no "
+                                       "such limit)"
+                                     : "a periodic box must be at least three sphere diameters "
+                                       "wide, tall and deep");
+        }
     }
     // Dilute scenes: fewer, larger cells (each must stay at least min_cell wide, so only shrink).
-    const double cap = std::max(9.0, max_cells_per_disc * static_cast<double>(scene.discs.size()));
-    const double cells = static_cast<double>(nx) * static_cast<double>(ny);
+    const double cap =
+        std::max(D == 2 ? 9.0 : 27.0, max_cells_per_disc * static_cast<double>(particles.size()));
+    double cells = 1.0;
+    for (int k = 0; k < D; ++k) cells *= static_cast<double>(n[k]);
     if (cells > cap) {
-        const double shrink = std::sqrt(cap / cells);
+        const double shrink = D == 2 ? std::sqrt(cap / cells) : std::cbrt(cap / cells);
         const std::uint32_t floor_n = periodic_ ? 3U : 1U;
-        nx = std::max(floor_n, static_cast<std::uint32_t>(static_cast<double>(nx) * shrink));
-        ny = std::max(floor_n, static_cast<std::uint32_t>(static_cast<double>(ny) * shrink));
+        for (int k = 0; k < D; ++k) {
+            n[k] =
+                std::max(floor_n, static_cast<std::uint32_t>(static_cast<double>(n[k]) * shrink));
+        }
     }
-    nx_ = nx;
-    ny_ = ny;
-    cw_ = box_.width / nx_;
-    ch_ = box_.height / ny_;
-    head_.assign(static_cast<std::size_t>(nx_) * ny_, no_disc);
+    n_ = n;
+    std::size_t total = 1;
+    for (int k = 0; k < D; ++k) {
+        axis(cw_, k) = axis(extent_, k) / n_[k];
+        total *= n_[k];
+    }
+    head_.assign(total, no_disc);
 }
 
-std::uint32_t FastEngine::cell_of(double x, double y) const noexcept {
+template <int D>
+std::uint32_t BasicFastEngine<D>::cell_of(Vec x) const noexcept {
     const auto clamp_index = [](double v, std::uint32_t n) {
         if (!(v > 0.0)) return 0U;
         const auto k = static_cast<std::uint32_t>(std::min(v, static_cast<double>(n - 1)));
         return k;
     };
-    return clamp_index(y / ch_, ny_) * nx_ + clamp_index(x / cw_, nx_);
+    std::uint32_t cell = 0;
+    for (int k = D - 1; k >= 0; --k) {
+        cell = cell * n_[k] + clamp_index(axis(x, k) / axis(cw_, k), n_[k]);
+    }
+    return cell;
+}
+
+template <int D>
+typename BasicFastEngine<D>::Coords BasicFastEngine<D>::coords_of(
+    std::uint32_t cell) const noexcept {
+    Coords c{};
+    if constexpr (D == 2) {
+        c[0] = static_cast<std::int64_t>(cell % n_[0]);
+        c[1] = static_cast<std::int64_t>(cell / n_[0]);
+    } else {
+        c[0] = static_cast<std::int64_t>(cell % n_[0]);
+        const std::uint32_t rest = cell / n_[0];
+        c[1] = static_cast<std::int64_t>(rest % n_[1]);
+        c[2] = static_cast<std::int64_t>(rest / n_[1]);
+    }
+    return c;
+}
+
+template <int D>
+std::uint32_t BasicFastEngine<D>::cell_at(const Coords& c) const noexcept {
+    std::int64_t cell = c[D - 1];
+    for (int k = D - 2; k >= 0; --k) cell = cell * n_[k] + c[k];
+    return static_cast<std::uint32_t>(cell);
 }
 
 namespace {
 
 /// Interleaves the bits of x and y (Z-order / Morton code).
-std::uint64_t morton(std::uint32_t x, std::uint32_t y) noexcept {
+std::uint64_t morton2(std::uint32_t x, std::uint32_t y) noexcept {
     const auto spread = [](std::uint64_t v) {
         v &= 0xffffffffULL;
         v = (v | (v << 16)) & 0x0000ffff0000ffffULL;
@@ -129,15 +187,37 @@ std::uint64_t morton(std::uint32_t x, std::uint32_t y) noexcept {
     return spread(x) | (spread(y) << 1);
 }
 
+/// Interleaves the low 21 bits of x, y and z (3D Morton code).
+std::uint64_t morton3(std::uint32_t x, std::uint32_t y, std::uint32_t z) noexcept {
+    const auto spread = [](std::uint64_t v) {
+        v &= 0x1fffffULL;
+        v = (v | (v << 32)) & 0x001f00000000ffffULL;
+        v = (v | (v << 16)) & 0x001f0000ff0000ffULL;
+        v = (v | (v << 8)) & 0x100f00f00f00f00fULL;
+        v = (v | (v << 4)) & 0x10c30c30c30c30c3ULL;
+        v = (v | (v << 2)) & 0x1249249249249249ULL;
+        return v;
+    };
+    return spread(x) | (spread(y) << 1) | (spread(z) << 2);
+}
+
 }  // namespace
 
-std::vector<std::uint32_t> FastEngine::locality_order(const Scene& scene) const {
-    const std::size_t n = scene.discs.size();
+template <int D>
+std::vector<std::uint32_t> BasicFastEngine<D>::locality_order(const SceneType& scene) const {
+    const auto& particles = Space::particles(scene);
+    const std::size_t n = particles.size();
     std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
     for (std::uint32_t k = 0; k < n; ++k) {
-        const Vec2 pos = box_.wrap(scene.discs[k].position);
-        const std::uint32_t cell = cell_of(pos.x, pos.y);
-        keyed[k] = {morton(cell % nx_, cell / nx_), k};
+        const Coords c = coords_of(cell_of(box_.wrap(particles[k].position)));
+        if constexpr (D == 2) {
+            keyed[k] = {morton2(static_cast<std::uint32_t>(c[0]), static_cast<std::uint32_t>(c[1])),
+                        k};
+        } else {
+            keyed[k] = {morton3(static_cast<std::uint32_t>(c[0]), static_cast<std::uint32_t>(c[1]),
+                                static_cast<std::uint32_t>(c[2])),
+                        k};
+        }
     }
     std::sort(keyed.begin(), keyed.end());
     std::vector<std::uint32_t> order(n);
@@ -145,10 +225,14 @@ std::vector<std::uint32_t> FastEngine::locality_order(const Scene& scene) const 
     return order;
 }
 
-void FastEngine::place_discs(const Scene& scene) {
-    const std::size_t n = scene.discs.size();
+template <int D>
+void BasicFastEngine<D>::place_discs(const SceneType& scene) {
+    const auto& particles = Space::particles(scene);
+    const std::size_t n = particles.size();
     if (n >= Key::index_mask)
-        throw_scene_error("", 0, "discs", "too many discs for the fast engine (at most 2^30 - 2)");
+        throw_scene_error("", 0, D == 2 ? "discs" : "spheres",
+                          D == 2 ? "too many discs for the fast engine (at most 2^29 - 2)"
+                                 : "too many spheres for the fast engine (at most 2^29 - 2)");
     scene_index_ = locality_order(scene);
     p_.resize(n);
     cold_.assign(n, Cold{});
@@ -157,18 +241,19 @@ void FastEngine::place_discs(const Scene& scene) {
     heap_.reserve_handles(n);
     // The key and handle arrays are reserved but untouched yet (the position map is not).
     for (std::uint32_t i = 0; i < n; ++i) {
-        const Disc& d = scene.discs[scene_index_[i]];
-        const Vec2 pos = box_.wrap(d.position);
-        p_[i] = Particle{pos.x, pos.y, d.velocity.x, d.velocity.y, 0.0, d.radius, no_disc,
-                         0,     0,     no_disc};
+        const auto& d = particles[scene_index_[i]];
+        const Vec pos = box_.wrap(d.position);
+        p_[i] = Particle{pos, d.velocity, 0.0, d.radius, no_disc, 0, 0, no_disc};
         cold_[i].m = d.mass;
         start_[i] = d.position;
         if (periodic_) {
             // Keep the unwrapped start: image counts measure wrapping from the wrapped position.
-            image_[i].x = static_cast<std::int32_t>(std::floor(d.position.x / box_.width));
-            image_[i].y = static_cast<std::int32_t>(std::floor(d.position.y / box_.height));
+            for (int k = 0; k < D; ++k) {
+                image_[i][k] =
+                    static_cast<std::int32_t>(std::floor(axis(d.position, k) / axis(extent_, k)));
+            }
         }
-        const std::uint32_t cell = cell_of(pos.x, pos.y);
+        const std::uint32_t cell = cell_of(pos);
         p_[i].cell = cell;
         if (is_big(i)) {
             big_.push_back(i);
@@ -181,10 +266,11 @@ void FastEngine::place_discs(const Scene& scene) {
 // ------------------------------------------------------------------------------------------
 // The main loop: pop the earliest pending event, check it, resolve it, predict again.
 
-void FastEngine::advance_to(double t) {
+template <int D>
+void BasicFastEngine<D>::advance_to(double t) {
     const WallClock clock = core_.start_advance(now_, t);
     while (!heap_.empty() && heap_.top_key().t <= t) {
-        poll_stop();
+        this->poll_stop();
         const std::uint32_t i = heap_.top();
         const Key key = heap_.top_key();
         ++stats().pops;
@@ -201,7 +287,8 @@ void FastEngine::advance_to(double t) {
 #endif
 }
 
-void FastEngine::process(std::uint32_t i, const Key& key) {
+template <int D>
+void BasicFastEngine<D>::process(std::uint32_t i, const Key& key) {
     switch (key.kind()) {
         case EventKind::pair: {
             const std::uint32_t j = key.b();
@@ -216,6 +303,7 @@ void FastEngine::process(std::uint32_t i, const Key& key) {
         }
         case EventKind::xwall:
         case EventKind::ywall:
+        case EventKind::zwall:
             process_wall(i, key.kind(), key.t);
             return;
         case EventKind::cell:
@@ -224,15 +312,17 @@ void FastEngine::process(std::uint32_t i, const Key& key) {
     }
 }
 
-void FastEngine::count_collision_now(std::uint32_t i) {
-    // The local clock is the time of the disc's latest event (collision or crossing).
+template <int D>
+void BasicFastEngine<D>::count_collision_now(std::uint32_t i) {
+    // The local clock is the time of the particle's latest event (collision or crossing).
     const Particle& pi = p_[i];
     std::uint32_t& count = cold_[i].instant_collisions;
-    if (!same_instant(now_ - pi.t, {pi.vx, pi.vy}, pi.r)) count = 0;
+    if (!same_instant(now_ - pi.t, pi.v, pi.r)) count = 0;
     if (++count > instant_limit_) throw_jammed(scene_index_[i], now_, instant_limit_);
 }
 
-void FastEngine::process_pair(std::uint32_t i, std::uint32_t j, double t) {
+template <int D>
+void BasicFastEngine<D>::process_pair(std::uint32_t i, std::uint32_t j, double t) {
     count_collision_now(i);
     count_collision_now(j);
     advance_disc(i);
@@ -240,14 +330,8 @@ void FastEngine::process_pair(std::uint32_t i, std::uint32_t j, double t) {
     Particle& pi = p_[i];
     Particle& pj = p_[j];
     // At contact the true image is the nearest one (boxes are wider than 2 sigma).
-    const Vec2 dr = box_.displacement({pi.x, pi.y}, {pj.x, pj.y});
-    Vec2 vi{pi.vx, pi.vy};
-    Vec2 vj{pj.vx, pj.vy};
-    const Vec2 impulse = kinematics::resolve_pair(vi, vj, cold_[i].m, cold_[j].m, dr);
-    pi.vx = vi.x;
-    pi.vy = vi.y;
-    pj.vx = vj.x;
-    pj.vy = vj.y;
+    const Vec dr = box_.displacement(pi.x, pj.x);
+    const Vec impulse = kinematics::resolve_pair(pi.v, pj.v, cold_[i].m, cold_[j].m, dr);
     core_.counters().impulses.virial += std::abs(dot(dr, impulse));
     ++pi.count;
     ++pj.count;
@@ -258,55 +342,42 @@ void FastEngine::process_pair(std::uint32_t i, std::uint32_t j, double t) {
     predict(j);
 }
 
-void FastEngine::process_wall(std::uint32_t i, EventKind kind, double t) {
+template <int D>
+void BasicFastEngine<D>::process_wall(std::uint32_t i, EventKind kind, double t) {
     count_collision_now(i);
     advance_disc(i);
     Particle& pi = p_[i];
-    if (kind == EventKind::xwall) {
-        core_.counters().impulses.wall_impulse += 2.0 * cold_[i].m * std::abs(pi.vx);
-        pi.vx = -pi.vx;
-    } else {
-        core_.counters().impulses.wall_impulse += 2.0 * cold_[i].m * std::abs(pi.vy);
-        pi.vy = -pi.vy;
-    }
+    const int k = static_cast<int>(kind) - static_cast<int>(EventKind::xwall);
+    double& v = axis(pi.v, k);
+    core_.counters().impulses.wall_impulse += 2.0 * cold_[i].m * std::abs(v);
+    v = -v;
     ++pi.count;
     pi.last_partner = no_disc;
     core_.collided(to_record(t, kind, scene_index_[i], no_disc));
     predict(i);
 }
 
-void FastEngine::process_cell(std::uint32_t i, std::uint32_t axis) {
-    // A crossing far from the disc's latest event starts a new instant for the jam count.
-    if (!same_instant(now_ - p_[i].t, {p_[i].vx, p_[i].vy}, p_[i].r))
-        cold_[i].instant_collisions = 0;
+template <int D>
+void BasicFastEngine<D>::process_cell(std::uint32_t i, std::uint32_t axis_index) {
+    // A crossing far from the particle's latest event starts a new instant for the jam count.
+    if (!same_instant(now_ - p_[i].t, p_[i].v, p_[i].r)) cold_[i].instant_collisions = 0;
     advance_disc(i);
     Particle& pi = p_[i];
-    auto cx = static_cast<std::int64_t>(pi.cell % nx_);
-    auto cy = static_cast<std::int64_t>(pi.cell / nx_);
-    if (axis == 0) {
-        cx += pi.vx > 0.0 ? 1 : -1;
-        if (cx == nx_) {
-            cx = 0;
-            pi.x -= box_.width;
-            ++image_[i].x;
-        } else if (cx < 0) {
-            cx = nx_ - 1;
-            pi.x += box_.width;
-            --image_[i].x;
-        }
-    } else {
-        cy += pi.vy > 0.0 ? 1 : -1;
-        if (cy == ny_) {
-            cy = 0;
-            pi.y -= box_.height;
-            ++image_[i].y;
-        } else if (cy < 0) {
-            cy = ny_ - 1;
-            pi.y += box_.height;
-            --image_[i].y;
-        }
+    Coords c = coords_of(pi.cell);
+    const auto k = static_cast<int>(axis_index);
+    const std::int64_t n = n_[k];
+    std::int64_t& ck = c[k];
+    ck += axis(pi.v, k) > 0.0 ? 1 : -1;
+    if (ck == n) {
+        ck = 0;
+        axis(pi.x, k) -= axis(extent_, k);
+        ++image_[i][k];
+    } else if (ck < 0) {
+        ck = n - 1;
+        axis(pi.x, k) += axis(extent_, k);
+        --image_[i][k];
     }
-    const auto cell = static_cast<std::uint32_t>(cy * nx_ + cx);
+    const std::uint32_t cell = cell_at(c);
     if (is_big(i)) {
         pi.cell = cell;
     } else {
@@ -314,32 +385,33 @@ void FastEngine::process_cell(std::uint32_t i, std::uint32_t axis) {
         link(i, cell);
     }
     ++core_.counters().cell_crossings;
-    predict_after_crossing(i, axis);
+    predict_after_crossing(i, axis_index);
 }
 
 // ------------------------------------------------------------------------------------------
 // Prediction: the earliest of i's wall, cell-crossing and pair events, as i's one heap entry.
 
-void FastEngine::predict(std::uint32_t i) {
+template <int D>
+void BasicFastEngine<D>::predict(std::uint32_t i) {
     const Particle& pi = p_[i];
     const double dt = now_ - pi.t;
-    const double xi = pi.x + pi.vx * dt;
-    const double yi = pi.y + pi.vy * dt;
+    const Vec xi = pi.x + pi.v * dt;
     // Pairs first, bounded only by each other (not by the wall and crossing times): the earliest
     // pair is remembered for the crossings to come, so it must be exact.
     Key pair = Key::make(never, i, no_disc, EventKind::pair);
     if (is_big(i)) {
-        scan_ring(i, pi, xi, yi, pair);
+        scan_ring(i, pi, xi, pair);
     } else {
-        scan_small_neighbours(i, pi, xi, yi, pair);
+        scan_small_neighbours(i, pi, xi, pair);
     }
     for (std::uint32_t b : big_) {
-        if (b != i) consider_pair_images(i, pi, xi, yi, b, pair);
+        if (b != i) consider_pair_images(i, pi, xi, b, pair);
     }
-    schedule(i, pi, xi, yi, pair);
+    schedule(i, pi, xi, pair);
 }
 
-void FastEngine::predict_after_crossing(std::uint32_t i, std::uint32_t axis) {
+template <int D>
+void BasicFastEngine<D>::predict_after_crossing(std::uint32_t i, std::uint32_t axis_index) {
     const Particle& pi = p_[i];
     const Cold& ci = cold_[i];
     // A big disc reaches a whole ring of cells; and once the remembered pair's partner has
@@ -353,24 +425,24 @@ void FastEngine::predict_after_crossing(std::uint32_t i, std::uint32_t axis) {
     // (and hold the pair themselves if it is their earliest); discs that collided since predicted
     // again against i. What is new to i is the row or column of cells it now borders.
     Key pair = Key::make(ci.pair_t, i, ci.pair_partner, EventKind::pair);
-    if (axis == 0) {
-        const std::int64_t dx = pi.vx > 0.0 ? 1 : -1;
-        scan_cells(i, pi, pi.x, pi.y, dx, dx, -1, 1, pair);
-    } else {
-        const std::int64_t dy = pi.vy > 0.0 ? 1 : -1;
-        scan_cells(i, pi, pi.x, pi.y, -1, 1, dy, dy, pair);
-    }
-    schedule(i, pi, pi.x, pi.y, pair);
+    Coords lo;
+    Coords hi;
+    lo.fill(-1);
+    hi.fill(1);
+    const auto k = static_cast<int>(axis_index);
+    lo[k] = hi[k] = axis(pi.v, k) > 0.0 ? 1 : -1;
+    scan_cells(i, pi, pi.x, lo, hi, pair);
+    schedule(i, pi, pi.x, pair);
 }
 
-void FastEngine::schedule(std::uint32_t i, const Particle& pi, double xi, double yi,
-                          const Key& pair) {
+template <int D>
+void BasicFastEngine<D>::schedule(std::uint32_t i, const Particle& pi, Vec xi, const Key& pair) {
     Cold& ci = cold_[i];
     ci.pair_t = pair.t;
     ci.pair_partner = pair.t == never ? no_disc : pair.b();
     ci.pair_count = pair.t == never ? 0 : p_[pair.b()].count;
     Key best = pair;
-    consider_walls_and_cells(i, pi, xi, yi, best);
+    consider_walls_and_cells(i, pi, xi, best);
     if (best.t == never) {
         if (heap_.contains(i)) heap_.erase(i);
         return;
@@ -382,34 +454,40 @@ void FastEngine::schedule(std::uint32_t i, const Particle& pi, double xi, double
     stats().max_size = std::max<std::uint64_t>(stats().max_size, heap_.size());
 }
 
-void FastEngine::consider_walls_and_cells(std::uint32_t i, const Particle& pi, double xi, double yi,
-                                          Key& best) {
+template <int D>
+void BasicFastEngine<D>::consider_walls_and_cells(std::uint32_t i, const Particle& pi, Vec xi,
+                                                  Key& best) {
     const auto offer = [&](double dt, EventKind kind, std::uint32_t b) {
         if (dt == never) return;
         const Key k = Key::make(now_ + dt, i, b, kind);
         if (key_less_(k, best)) best = k;
     };
     if (!periodic_) {
-        offer(kinematics::time_to_wall(xi, pi.vx, pi.r, box_.width), EventKind::xwall, no_disc);
-        offer(kinematics::time_to_wall(yi, pi.vy, pi.r, box_.height), EventKind::ywall, no_disc);
-        core_.counters().predictions += 2;
+        for (int k = 0; k < D; ++k) {
+            offer(kinematics::time_to_wall(axis(xi, k), axis(pi.v, k), pi.r, axis(extent_, k)),
+                  static_cast<EventKind>(static_cast<int>(EventKind::xwall) + k), no_disc);
+        }
+        core_.counters().predictions += D;
     }
-    const std::uint32_t cx = pi.cell % nx_;
-    const std::uint32_t cy = pi.cell / nx_;
+    const Coords c = coords_of(pi.cell);
     // Walled boxes have no crossing out of the outer cells (the wall comes first).
-    if (pi.vx > 0.0 && (periodic_ || cx + 1 < nx_)) {
-        offer(std::max(0.0, ((cx + 1) * cw_ - xi) / pi.vx), EventKind::cell, 0);
-    } else if (pi.vx < 0.0 && (periodic_ || cx > 0)) {
-        offer(std::max(0.0, (cx * cw_ - xi) / pi.vx), EventKind::cell, 0);
-    }
-    if (pi.vy > 0.0 && (periodic_ || cy + 1 < ny_)) {
-        offer(std::max(0.0, ((cy + 1) * ch_ - yi) / pi.vy), EventKind::cell, 1);
-    } else if (pi.vy < 0.0 && (periodic_ || cy > 0)) {
-        offer(std::max(0.0, (cy * ch_ - yi) / pi.vy), EventKind::cell, 1);
+    for (int k = 0; k < D; ++k) {
+        const auto ck = static_cast<std::uint32_t>(c[k]);
+        const double v = axis(pi.v, k);
+        const double w = axis(cw_, k);
+        if (v > 0.0 && (periodic_ || ck + 1 < n_[k])) {
+            offer(std::max(0.0, ((ck + 1) * w - axis(xi, k)) / v), EventKind::cell,
+                  static_cast<std::uint32_t>(k));
+        } else if (v < 0.0 && (periodic_ || ck > 0)) {
+            offer(std::max(0.0, (ck * w - axis(xi, k)) / v), EventKind::cell,
+                  static_cast<std::uint32_t>(k));
+        }
     }
 }
 
-inline bool FastEngine::cannot_beat(Vec2 dr, Vec2 dv, double sigma, double best_t) const noexcept {
+template <int D>
+inline bool BasicFastEngine<D>::cannot_beat(Vec dr, Vec dv, double sigma,
+                                            double best_t) const noexcept {
     // Without the square root and the division of time_to_hit: for approaching discs apart,
     // sqrt(b^2 - ac) <= -b, so the contact time is at least c / (-2b). When even that bound is
     // later than the best event so far (by more than any rounding of time_to_hit and of now + dt:
@@ -423,12 +501,13 @@ inline bool FastEngine::cannot_beat(Vec2 dr, Vec2 dv, double sigma, double best_
     return c > -2.0 * b * (interval * (1.0 + 1e-9) + std::abs(best_t) * 1e-14);
 }
 
-inline void FastEngine::consider_pair(std::uint32_t i, const Particle& pi, double xi, double yi,
-                                      std::uint32_t j, double shift_x, double shift_y, Key& best) {
+template <int D>
+inline void BasicFastEngine<D>::consider_pair(std::uint32_t i, const Particle& pi, Vec xi,
+                                              std::uint32_t j, Vec shift, Key& best) {
     const Particle& pj = p_[j];
     const double dtj = now_ - pj.t;
-    const Vec2 dr{pj.x + pj.vx * dtj + shift_x - xi, pj.y + pj.vy * dtj + shift_y - yi};
-    const Vec2 dv{pj.vx - pi.vx, pj.vy - pi.vy};
+    const Vec dr = pj.x + pj.v * dtj + shift - xi;
+    const Vec dv = pj.v - pi.v;
     const double sigma = pi.r + pj.r;
     ++core_.counters().predictions;
     if (pi.last_partner == j && pj.last_partner == i) {
@@ -444,119 +523,175 @@ inline void FastEngine::consider_pair(std::uint32_t i, const Particle& pi, doubl
     if (key_less_(k, best)) best = k;
 }
 
-void FastEngine::consider_pair_images(std::uint32_t i, const Particle& pi, double xi, double yi,
-                                      std::uint32_t j, Key& best) {
+template <int D>
+void BasicFastEngine<D>::consider_pair_images(std::uint32_t i, const Particle& pi, Vec xi,
+                                              std::uint32_t j, Key& best) {
     if (!periodic_) {
-        consider_pair(i, pi, xi, yi, j, 0.0, 0.0, best);
+        consider_pair(i, pi, xi, j, Vec{}, best);
         return;
     }
-    // Pairs with a big disc are not tied to neighbouring cells: try the nine nearest images.
+    // Pairs with a big particle are not tied to neighbouring cells: try the 3^D nearest images.
     const Particle& pj = p_[j];
     const double dtj = now_ - pj.t;
-    const Vec2 base = box_.displacement({xi, yi}, {pj.x + pj.vx * dtj, pj.y + pj.vy * dtj});
-    const double sx = base.x - (pj.x + pj.vx * dtj - xi);
-    const double sy = base.y - (pj.y + pj.vy * dtj - yi);
-    for (int ky = -1; ky <= 1; ++ky) {
-        for (int kx = -1; kx <= 1; ++kx) {
-            consider_pair(i, pi, xi, yi, j, sx + kx * box_.width, sy + ky * box_.height, best);
-        }
-    }
-}
-
-void FastEngine::scan_small_neighbours(std::uint32_t i, const Particle& pi, double xi, double yi,
-                                       Key& best) {
-    scan_cells(i, pi, xi, yi, -1, 1, -1, 1, best);
-}
-
-template <typename Visit>
-[[gnu::always_inline]] inline void FastEngine::for_each_cell(const Particle& pi, std::int64_t x0,
-                                                             std::int64_t x1, std::int64_t y0,
-                                                             std::int64_t y1, Visit&& visit) const {
-    const auto cx = static_cast<std::int64_t>(pi.cell % nx_);
-    const auto cy = static_cast<std::int64_t>(pi.cell / nx_);
-    for (std::int64_t oy = y0; oy <= y1; ++oy) {
-        std::int64_t y = cy + oy;
-        double shift_y = 0.0;
-        if (y < 0 || y >= ny_) {
-            if (!periodic_) continue;
-            shift_y = y < 0 ? -box_.height : box_.height;
-            y = y < 0 ? y + ny_ : y - ny_;
-        }
-        for (std::int64_t ox = x0; ox <= x1; ++ox) {
-            std::int64_t x = cx + ox;
-            double shift_x = 0.0;
-            if (x < 0 || x >= nx_) {
-                if (!periodic_) continue;
-                shift_x = x < 0 ? -box_.width : box_.width;
-                x = x < 0 ? x + nx_ : x - nx_;
+    const Vec base = box_.displacement(xi, pj.x + pj.v * dtj);
+    const Vec s = base - (pj.x + pj.v * dtj - xi);
+    if constexpr (D == 2) {
+        for (int ky = -1; ky <= 1; ++ky) {
+            for (int kx = -1; kx <= 1; ++kx) {
+                consider_pair(i, pi, xi, j, Vec{s.x + kx * box_.width, s.y + ky * box_.height},
+                              best);
             }
-            const std::uint32_t first = head_[static_cast<std::size_t>(y * nx_ + x)];
-            if (first != no_disc) visit(first, shift_x, shift_y);
+        }
+    } else {
+        for (int kz = -1; kz <= 1; ++kz) {
+            for (int ky = -1; ky <= 1; ++ky) {
+                for (int kx = -1; kx <= 1; ++kx) {
+                    consider_pair(
+                        i, pi, xi, j,
+                        Vec{s.x + kx * box_.width, s.y + ky * box_.height, s.z + kz * box_.depth},
+                        best);
+                }
+            }
         }
     }
 }
 
-[[gnu::always_inline]] inline void FastEngine::scan_list(std::uint32_t i, const Particle& pi,
-                                                         double xi, double yi, std::uint32_t first,
-                                                         double shift_x, double shift_y,
-                                                         Key& best) {
+template <int D>
+void BasicFastEngine<D>::scan_small_neighbours(std::uint32_t i, const Particle& pi, Vec xi,
+                                               Key& best) {
+    Coords lo;
+    Coords hi;
+    lo.fill(-1);
+    hi.fill(1);
+    scan_cells(i, pi, xi, lo, hi, best);
+}
+
+template <int D>
+template <typename Visit>
+[[gnu::always_inline]] inline void BasicFastEngine<D>::for_each_cell(const Particle& pi,
+                                                                     const Coords& lo,
+                                                                     const Coords& hi,
+                                                                     Visit&& visit) const {
+    const Coords c = coords_of(pi.cell);
+    // One axis: the wrapped coordinate and the image shift of offset o, or false (no such cell).
+    const auto along = [&](int k, std::int64_t o, std::int64_t& x, double& shift) {
+        x = c[k] + o;
+        shift = 0.0;
+        const auto n = static_cast<std::int64_t>(n_[k]);
+        if (x < 0 || x >= n) {
+            if (!periodic_) return false;
+            shift = x < 0 ? -axis(extent_, k) : axis(extent_, k);
+            x = x < 0 ? x + n : x - n;
+        }
+        return true;
+    };
+    const auto nx = static_cast<std::int64_t>(n_[0]);
+    if constexpr (D == 2) {
+        for (std::int64_t oy = lo[1]; oy <= hi[1]; ++oy) {
+            std::int64_t y;
+            double shift_y;
+            if (!along(1, oy, y, shift_y)) continue;
+            for (std::int64_t ox = lo[0]; ox <= hi[0]; ++ox) {
+                std::int64_t x;
+                double shift_x;
+                if (!along(0, ox, x, shift_x)) continue;
+                const std::uint32_t first = head_[static_cast<std::size_t>(y * nx + x)];
+                if (first != no_disc) visit(first, Vec{shift_x, shift_y});
+            }
+        }
+    } else {
+        const auto ny = static_cast<std::int64_t>(n_[1]);
+        for (std::int64_t oz = lo[2]; oz <= hi[2]; ++oz) {
+            std::int64_t z;
+            double shift_z;
+            if (!along(2, oz, z, shift_z)) continue;
+            for (std::int64_t oy = lo[1]; oy <= hi[1]; ++oy) {
+                std::int64_t y;
+                double shift_y;
+                if (!along(1, oy, y, shift_y)) continue;
+                const std::int64_t row = (z * ny + y) * nx;
+                for (std::int64_t ox = lo[0]; ox <= hi[0]; ++ox) {
+                    std::int64_t x;
+                    double shift_x;
+                    if (!along(0, ox, x, shift_x)) continue;
+                    const std::uint32_t first = head_[static_cast<std::size_t>(row + x)];
+                    if (first != no_disc) visit(first, Vec{shift_x, shift_y, shift_z});
+                }
+            }
+        }
+    }
+}
+
+template <int D>
+[[gnu::always_inline]] inline void BasicFastEngine<D>::scan_list(std::uint32_t i,
+                                                                 const Particle& pi, Vec xi,
+                                                                 std::uint32_t first, Vec shift,
+                                                                 Key& best) {
     for (std::uint32_t j = first; j != no_disc; j = p_[j].next) {
-        if (j != i) consider_pair(i, pi, xi, yi, j, shift_x, shift_y, best);
+        if (j != i) consider_pair(i, pi, xi, j, shift, best);
     }
 }
 
 // Beyond the caches every cell's first disc is a miss, and following the lists one after the
 // other makes those misses wait for each other: asking for all of them before reading any
 // overlaps them (docs/benchmarks.md). The scans and their order are the same either way.
-inline void FastEngine::scan_cells(std::uint32_t i, const Particle& pi, double xi, double yi,
-                                   std::int64_t x0, std::int64_t x1, std::int64_t y0,
-                                   std::int64_t y1, Key& best) {
+template <int D>
+inline void BasicFastEngine<D>::scan_cells(std::uint32_t i, const Particle& pi, Vec xi,
+                                           const Coords& lo, const Coords& hi, Key& best) {
     struct CellVisit {
         std::uint32_t first;
-        double shift_x, shift_y;
+        Vec shift;
     };
-    std::array<CellVisit, 9> visits;  // callers scan at most 3 x 3 cells
+    std::array<CellVisit, D == 2 ? 9 : 27> visits;  // callers scan at most 3^D cells
     std::size_t count = 0;
-    for_each_cell(pi, x0, x1, y0, y1, [&](std::uint32_t first, double sx, double sy) {
+    for_each_cell(pi, lo, hi, [&](std::uint32_t first, Vec shift) {
         __builtin_prefetch(&p_[first]);
-        visits[count++] = {first, sx, sy};
+        visits[count++] = {first, shift};
     });
     for (std::size_t k = 0; k < count; ++k) {
-        scan_list(i, pi, xi, yi, visits[k].first, visits[k].shift_x, visits[k].shift_y, best);
+        scan_list(i, pi, xi, visits[k].first, visits[k].shift, best);
     }
 }
 
-void FastEngine::scan_ring(std::uint32_t i, const Particle& pi, double xi, double yi, Key& best) {
-    // Small discs that can touch big disc i before either leaves its cell lie within
+template <int D>
+void BasicFastEngine<D>::scan_ring(std::uint32_t i, const Particle& pi, Vec xi, Key& best) {
+    // Small particles that can touch big particle i before either leaves its cell lie within
     // 1 + (R + r_small) / cell cells of i's centre cell.
     const double reach = (pi.r + small_radius_max_) * (1.0 + cell_margin);
-    const auto kx = static_cast<std::int64_t>(1 + std::ceil(reach / cw_));
-    const auto ky = static_cast<std::int64_t>(1 + std::ceil(reach / ch_));
-    if (periodic_ && (2 * kx + 1 > nx_ || 2 * ky + 1 > ny_)) {
-        // The ring wraps onto itself: check every small disc (nine images each).
+    Coords lo;
+    Coords hi;
+    bool wraps = false;
+    for (int k = 0; k < D; ++k) {
+        hi[k] = static_cast<std::int64_t>(1 + std::ceil(reach / axis(cw_, k)));
+        lo[k] = -hi[k];
+        wraps = wraps || 2 * hi[k] + 1 > n_[k];
+    }
+    if (periodic_ && wraps) {
+        // The ring wraps onto itself: check every small particle (3^D images each).
         for (std::uint32_t j = 0; j < p_.size(); ++j) {
-            if (j != i && !is_big(j)) consider_pair_images(i, pi, xi, yi, j, best);
+            if (j != i && !is_big(j)) consider_pair_images(i, pi, xi, j, best);
         }
         return;
     }
-    // Big discs are in no cell list, so scan_list's skip of i never applies here.
-    for_each_cell(pi, -kx, kx, -ky, ky, [&](std::uint32_t first, double sx, double sy) {
-        scan_list(i, pi, xi, yi, first, sx, sy, best);
+    // Big particles are in no cell list, so scan_list's skip of i never applies here.
+    for_each_cell(pi, lo, hi, [&](std::uint32_t first, Vec shift) {
+        scan_list(i, pi, xi, first, shift, best);
     });
 }
 
 // ------------------------------------------------------------------------------------------
 // Bookkeeping.
 
-void FastEngine::advance_disc(std::uint32_t i) noexcept {
+template <int D>
+void BasicFastEngine<D>::advance_disc(std::uint32_t i) noexcept {
     Particle& pi = p_[i];
     const double dt = now_ - pi.t;
-    pi.x += pi.vx * dt;
-    pi.y += pi.vy * dt;
+    pi.x += pi.v * dt;
     pi.t = now_;
 }
 
-void FastEngine::link(std::uint32_t i, std::uint32_t cell) noexcept {
+template <int D>
+void BasicFastEngine<D>::link(std::uint32_t i, std::uint32_t cell) noexcept {
     Particle& pi = p_[i];
     pi.cell = cell;
     pi.next = head_[cell];
@@ -565,7 +700,8 @@ void FastEngine::link(std::uint32_t i, std::uint32_t cell) noexcept {
     head_[cell] = i;
 }
 
-void FastEngine::unlink(std::uint32_t i) noexcept {
+template <int D>
+void BasicFastEngine<D>::unlink(std::uint32_t i) noexcept {
     Particle& pi = p_[i];
     const std::uint32_t prev = cold_[i].prev;
     if (prev == no_disc) {
@@ -578,26 +714,40 @@ void FastEngine::unlink(std::uint32_t i) noexcept {
     cold_[i].prev = no_disc;
 }
 
-Vec2 FastEngine::position_at_now(std::uint32_t i) const noexcept {
+template <int D>
+typename BasicFastEngine<D>::Vec BasicFastEngine<D>::position_at_now(
+    std::uint32_t i) const noexcept {
     const Particle& pi = p_[i];
     const double dt = now_ - pi.t;
-    return {pi.x + pi.vx * dt, pi.y + pi.vy * dt};
+    return pi.x + pi.v * dt;
 }
 
 // ------------------------------------------------------------------------------------------
 // Outputs.
 
-Snapshot FastEngine::snapshot() const {
-    Snapshot s = core_.start_snapshot(now_);
+template <int D>
+SnapshotOf<D> BasicFastEngine<D>::snapshot() const {
+    SnapshotOf<D> s = core_.start_snapshot(now_);
     for (std::uint32_t i = 0; i < p_.size(); ++i) {
-        EngineCore::set_motion(s.discs[scene_index_[i]], box_.wrap(position_at_now(i)),
-                               {p_[i].vx, p_[i].vy}, p_[i].r, cold_[i].m);
+        auto& out = [&]() -> auto& {
+            if constexpr (D == 2) {
+                return s.discs[scene_index_[i]];
+            } else {
+                return s.spheres[scene_index_[i]];
+            }
+        }
+        ();
+        BasicEngineCore<D>::set_motion(out, box_.wrap(position_at_now(i)), p_[i].v, p_[i].r,
+                                       cold_[i].m);
     }
-    if (watch_.on()) s.queue = queue_view();
+    if constexpr (D == 2) {
+        if (watch_.on()) s.queue = queue_view();
+    }
     return s;
 }
 
-QueuedEvent FastEngine::queued_event(std::uint32_t i, const Key& key) const noexcept {
+template <int D>
+QueuedEvent BasicFastEngine<D>::queued_event(std::uint32_t i, const Key& key) const noexcept {
     QueuedEvent e;
     e.t = key.t;
     e.kind = queued_kind(key.kind());
@@ -613,7 +763,8 @@ QueuedEvent FastEngine::queued_event(std::uint32_t i, const Key& key) const noex
 
 // The indexed 4-ary heap holding one pending event per disc: its top levels, its next
 // collisions. O(N), only for watched engines.
-QueueView FastEngine::queue_view() const {
+template <int D>
+QueueView BasicFastEngine<D>::queue_view() const {
     QueueView view;
     view.shape = QueueShape::heap;
     view.arity = 4;
@@ -640,41 +791,44 @@ QueueView FastEngine::queue_view() const {
     return view;
 }
 
-Measurements FastEngine::measurements() const {
+template <int D>
+Measurements BasicFastEngine<D>::measurements() const {
     // In the internal order: the sums come out as they always have, bit for bit.
     const std::size_t n = p_.size();
-    std::vector<Vec2> positions(n);
-    std::vector<Vec2> velocities(n);
+    std::vector<Vec> positions(n);
+    std::vector<Vec> velocities(n);
     std::vector<double> masses(n);
     std::vector<double> radii(n);
     for (std::uint32_t i = 0; i < n; ++i) {
         positions[i] = position_at_now(i);
-        velocities[i] = {p_[i].vx, p_[i].vy};
+        velocities[i] = p_[i].v;
         masses[i] = cold_[i].m;
         radii[i] = p_[i].r;
     }
     Measurements m = core_.measurements(now_, velocities, masses, radii, bytes());
     m.max_overlap = max_overlap(positions, radii, box_);
     m.msd = core_.mean_squared_displacement(n, [&](std::size_t i) {
-        const Vec2 unwrapped{positions[i].x + image_[i].x * box_.width,
-                             positions[i].y + image_[i].y * box_.height};
+        Vec unwrapped = positions[i];
+        for (int k = 0; k < D; ++k) axis(unwrapped, k) += image_[i][k] * axis(extent_, k);
         return std::pair{std::size_t{scene_index_[i]}, unwrapped - start_[i]};
     });
     return m;
 }
 
-std::uint64_t FastEngine::bytes() const noexcept {
+template <int D>
+std::uint64_t BasicFastEngine<D>::bytes() const noexcept {
     constexpr std::size_t u32 = sizeof(std::uint32_t);
     std::size_t total = p_.capacity() * sizeof(Particle);
     total += cold_.capacity() * sizeof(Cold);
     total += (big_.capacity() + head_.capacity() + scene_index_.capacity()) * u32;
-    total += image_.capacity() * sizeof(Image) + start_.capacity() * sizeof(Vec2);
+    total += image_.capacity() * sizeof(Image) + start_.capacity() * sizeof(Vec);
     total += heap_.bytes();
     total += core_.bytes();
     return total;
 }
 
-bool FastEngine::check_invariants() const {
+template <int D>
+bool BasicFastEngine<D>::check_invariants() const {
     if (!heap_.check_invariants()) return false;
     std::vector<std::uint8_t> seen(p_.size(), 0);
     for (std::size_t c = 0; c < head_.size(); ++c) {
@@ -700,14 +854,21 @@ bool FastEngine::check_invariants() const {
             return false;
         }
         // The centre lies in its cell, up to the rounding of the crossing times.
-        const Vec2 pos = position_at_now(i);
-        const double cx = static_cast<double>(p_[i].cell % nx_);
-        const double cy = static_cast<double>(p_[i].cell / nx_);
-        const double slack = 1e-9 * (cw_ + ch_);
-        if (pos.x < cx * cw_ - slack || pos.x > (cx + 1) * cw_ + slack) return false;
-        if (pos.y < cy * ch_ - slack || pos.y > (cy + 1) * ch_ + slack) return false;
+        const Vec pos = position_at_now(i);
+        const Coords c = coords_of(p_[i].cell);
+        double slack = 0.0;
+        for (int k = 0; k < D; ++k) slack += axis(cw_, k);
+        slack *= 1e-9;
+        for (int k = 0; k < D; ++k) {
+            const double lo = static_cast<double>(c[k]) * axis(cw_, k);
+            const double hi = static_cast<double>(c[k] + 1) * axis(cw_, k);
+            if (axis(pos, k) < lo - slack || axis(pos, k) > hi + slack) return false;
+        }
     }
     return true;
 }
+
+template class BasicFastEngine<2>;
+template class BasicFastEngine<3>;
 
 }  // namespace collide::sim

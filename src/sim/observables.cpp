@@ -1,6 +1,7 @@
 #include "collide/sim/observables.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -130,10 +131,83 @@ double max_overlap(const std::vector<Vec2>& positions, const std::vector<double>
     return deepest;
 }
 
-double packing_fraction(const std::vector<double>& radii, const Box& box) {
+template <int D>
+double packing_fraction_of(const std::vector<double>& radii, const typename Space<D>::Box& box) {
     double covered = 0.0;
-    for (double r : radii) covered += std::numbers::pi * r * r;
-    return covered / box.area();
+    for (double r : radii) covered += Space<D>::particle_measure(r);
+    return covered / Space<D>::measure(box);
+}
+
+template double packing_fraction_of<2>(const std::vector<double>&, const Box&);
+template double packing_fraction_of<3>(const std::vector<double>&, const Box3&);
+
+double packing_fraction(const std::vector<double>& radii, const Box& box) {
+    return packing_fraction_of<2>(radii, box);
+}
+
+double max_overlap(const std::vector<Vec3>& positions, const std::vector<double>& radii,
+                   const Box3& box) {
+    const std::size_t n = positions.size();
+    if (n < 2) return 0.0;
+    double r_max = 0.0;
+    for (double r : radii) r_max = std::max(r_max, r);
+    // Cells at least one largest diameter wide, at most about 2 per sphere.
+    const auto cap = static_cast<std::size_t>(std::cbrt(2.0 * static_cast<double>(n))) + 1;
+    const std::array<std::size_t, 3> cells{cells_along(box.width, 2.0 * r_max, cap),
+                                           cells_along(box.height, 2.0 * r_max, cap),
+                                           cells_along(box.depth, 2.0 * r_max, cap)};
+    const Vec3 extent = box.extent();
+    std::vector<Vec3> wrapped(n);
+    std::vector<std::array<std::size_t, 3>> coords(n);
+    std::vector<std::size_t> cell_of(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        wrapped[i] = box.wrap(positions[i]);
+        for (int k = 0; k < 3; ++k) {
+            const double w = axis(extent, k) / static_cast<double>(cells[k]);
+            coords[i][k] = std::min(
+                cells[k] - 1, static_cast<std::size_t>(std::max(0.0, axis(wrapped[i], k) / w)));
+        }
+        cell_of[i] = (coords[i][2] * cells[1] + coords[i][1]) * cells[0] + coords[i][0];
+    }
+    const std::size_t total = cells[0] * cells[1] * cells[2];
+    std::vector<std::uint32_t> start(total + 1, 0);
+    for (std::size_t i = 0; i < n; ++i) ++start[cell_of[i] + 1];
+    for (std::size_t c = 0; c < total; ++c) start[c + 1] += start[c];
+    std::vector<std::uint32_t> members(n);
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t i = 0; i < n; ++i) members[fill[cell_of[i]]++] = static_cast<std::uint32_t>(i);
+    const bool periodic = box.boundary == Boundary::periodic;
+    // The neighbouring cells' coordinates along one axis, each once (grids under 3 cells wide).
+    const auto neighbours = [&](std::size_t c, std::size_t count) {
+        std::vector<std::size_t> out;
+        for (long o = -1; o <= 1; ++o) {
+            long x = static_cast<long>(c) + o;
+            if (x < 0 || x >= static_cast<long>(count)) {
+                if (!periodic) continue;
+                x = (x + static_cast<long>(count)) % static_cast<long>(count);
+            }
+            if (std::find(out.begin(), out.end(), static_cast<std::size_t>(x)) == out.end())
+                out.push_back(static_cast<std::size_t>(x));
+        }
+        return out;
+    };
+    double deepest = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t z : neighbours(coords[i][2], cells[2])) {
+            for (std::size_t y : neighbours(coords[i][1], cells[1])) {
+                for (std::size_t x : neighbours(coords[i][0], cells[0])) {
+                    const std::size_t c = (z * cells[1] + y) * cells[0] + x;
+                    for (std::uint32_t k = start[c]; k < start[c + 1]; ++k) {
+                        const std::uint32_t j = members[k];
+                        if (j <= i) continue;
+                        const double dist = norm(box.displacement(wrapped[i], wrapped[j]));
+                        deepest = std::max(deepest, radii[i] + radii[j] - dist);
+                    }
+                }
+            }
+        }
+    }
+    return deepest;
 }
 
 std::vector<std::uint64_t> speed_histogram(const Snapshot& snapshot, std::size_t bins,
@@ -155,32 +229,42 @@ std::vector<std::uint64_t> speed_histogram(const Snapshot& snapshot, std::size_t
     return counts;
 }
 
-void fill_thermodynamics(Measurements& m, const std::vector<Vec2>& velocities,
+template <int D>
+void fill_thermodynamics(Measurements& m, const std::vector<typename Space<D>::Vec>& velocities,
                          const std::vector<double>& masses, const std::vector<double>& radii,
-                         const Box& box, const ImpulseTally& tally) {
+                         const typename Space<D>::Box& box, const ImpulseTally& tally) {
+    using Vec = typename Space<D>::Vec;
     double kinetic = 0.0;
-    Vec2 momentum{};
+    Vec momentum{};
     for (std::size_t i = 0; i < velocities.size(); ++i) {
         kinetic += 0.5 * masses[i] * norm2(velocities[i]);
         momentum += masses[i] * velocities[i];
     }
     const auto n = static_cast<double>(velocities.size());
     m.kinetic_energy = kinetic;
-    m.momentum = momentum;
-    m.temperature = n > 0 ? kinetic / n : 0.0;
-    m.packing_fraction = packing_fraction(radii, box);
+    m.momentum = {momentum.x, momentum.y};
+    if constexpr (D == 3) m.momentum_z = momentum.z;
+    // D degrees of freedom: kT = 2 KE / (D N) (in 2D exactly KE / N: the factors 2 are exact).
+    m.temperature = n > 0 ? 2.0 * kinetic / (D * n) : 0.0;
+    m.packing_fraction = packing_fraction_of<D>(radii, box);
     m.pressure = 0.0;
     m.compressibility = 0.0;
     const double nkt = n * m.temperature;
     if (m.t <= 0.0 || nkt <= 0.0) return;
     if (box.boundary == Boundary::periodic) {
-        m.compressibility = 1.0 + tally.virial / (2.0 * nkt * m.t);
-        m.pressure = m.compressibility * nkt / box.area();
+        m.compressibility = 1.0 + tally.virial / (D * nkt * m.t);
+        m.pressure = m.compressibility * nkt / Space<D>::measure(box);
     } else {
-        const double perimeter = 2.0 * (box.width + box.height);
-        m.pressure = tally.wall_impulse / (perimeter * m.t);
-        m.compressibility = m.pressure * box.area() / nkt;
+        m.pressure = tally.wall_impulse / (Space<D>::wall_measure(box) * m.t);
+        m.compressibility = m.pressure * Space<D>::measure(box) / nkt;
     }
 }
+
+template void fill_thermodynamics<2>(Measurements&, const std::vector<Vec2>&,
+                                     const std::vector<double>&, const std::vector<double>&,
+                                     const Box&, const ImpulseTally&);
+template void fill_thermodynamics<3>(Measurements&, const std::vector<Vec3>&,
+                                     const std::vector<double>&, const std::vector<double>&,
+                                     const Box3&, const ImpulseTally&);
 
 }  // namespace collide::sim

@@ -136,3 +136,55 @@ TEST_CASE("collide check --export freezes a generated scene that checks the same
     CHECK(bad.exit_code == 2);
     CHECK(contains(bad.output, "'/nonexistent-dir' does not exist"));
 }
+
+TEST_CASE("collide check: a 3D scene (dimension = 3) gives a summary of its spheres") {
+    const auto r = run_collide("check " + temp_scene("fcc.toml", R"(dimension = 3
+[box]
+boundary = "periodic"
+[[fcc]]
+cells = 3
+packing_fraction = 0.3
+)"));
+    CHECK(r.exit_code == 0);
+    CHECK(contains(r.output, "N = 108 spheres (3D), eta = 0.3, box 1 x 1 x 1, periodic, kT = 1"));
+    CHECK(contains(r.output, "collisions per time unit"));
+}
+
+TEST_CASE("collide check: bad 3D scenes exit 2 naming file, line and field") {
+    struct Case {
+        const char* file;
+        const char* text;
+        const char* message;
+    };
+    const Case cases[] = {
+        {"overlap3.toml",
+         "dimension = 3\n[[sphere]]\nposition = [0.5, 0.5, 0.5]\nradius = 0.1\n"
+         "[[sphere]]\nposition = [0.5, 0.55, 0.5]\nradius = 0.1\n",
+         "overlap3.toml:6: sphere[1].position: overlaps sphere[0]"},
+        {"outside3.toml",
+         "dimension = 3\n[box]\ndepth = 0.5\n[[sphere]]\nposition = [0.5, 0.5, 0.45]\n"
+         "radius = 0.1\n",
+         "outside3.toml:5: sphere[0].position: the sphere (radius 0.1) is not inside the box"},
+        {"depth2.toml", "[box]\nwidth = 1\ndepth = 1\n",
+         "depth2.toml:3: box.depth: a 3D key in a 2D scene"},
+        {"sphere2.toml", "[[sphere]]\nposition = [0.5, 0.5, 0.5]\nradius = 0.1\n",
+         "sphere2.toml:1: sphere: a 3D key in a 2D scene"},
+        {"disc3.toml", "dimension = 3\n[[disc]]\nposition = [0.5, 0.5]\nradius = 0.1\n",
+         "disc3.toml:2: disc: a 2D key in a 3D scene"},
+        {"dense3.toml",
+         "dimension = 3\n[box]\nboundary = \"periodic\"\n[[generate]]\npacking_fraction = 0.45\n"
+         "radius = 0.05\n",
+         "dense3.toml:4: generate[0].packing_fraction: packing 0.449771 is too dense to generate"},
+        {"fcc3.toml",
+         "dimension = 3\n[box]\ndepth = 0.1\nboundary = \"periodic\"\n[[fcc]]\ncells = 4\n"
+         "packing_fraction = 0.5\n",
+         "fcc3.toml:5: fcc.packing_fraction: packing 0.5 is too dense to generate in this box"},
+        {"dim4.toml", "dimension = 4\n", "dim4.toml:1: dimension: expected 2 (discs) or 3"},
+    };
+    for (const Case& c : cases) {
+        CAPTURE(c.file);
+        const auto r = run_collide("check " + temp_scene(c.file, c.text));
+        CHECK(r.exit_code == 2);
+        CHECK(contains(r.output, c.message));
+    }
+}

@@ -133,3 +133,33 @@ TEST_CASE(
         run_collide_bad_input("bench engine --scene \"" + still.string() + "\" --collisions 10"),
         "no collision happens in this scene"));
 }
+
+TEST_CASE("collide simulate of a 3D scene reports kT (3 dof), Z, packing fraction and MSD") {
+    const std::filesystem::path path =
+        std::filesystem::temp_directory_path() / "collide_e2e_spheres.toml";
+    std::ofstream(path) << "dimension = 3\n[box]\nboundary = \"periodic\"\n[[fcc]]\ncells = 4\n"
+                           "packing_fraction = 0.3\nseed = 2\n";
+    const auto r = run_collide("simulate \"" + path.string() + "\" --until 0.5 --json");
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    CHECK(contains(r.output, "\"dimension\": 3,"));
+    CHECK(contains(r.output, "\"spheres\": 256,"));
+    const auto value = [&](const std::string& key) {
+        const std::size_t at = r.output.find("\"" + key + "\": ");
+        REQUIRE(at != std::string::npos);
+        return std::stod(r.output.substr(at + key.size() + 4));
+    };
+    CHECK(value("temperature") == doctest::Approx(1.0).epsilon(1e-12));  // 2 KE / 3N
+    CHECK(value("packing_fraction") == doctest::Approx(0.3).epsilon(1e-12));
+    CHECK(value("compressibility") > 2.0);  // Carnahan-Starling: 3.97 at 0.3
+    CHECK(value("msd") > 0.0);
+    CHECK(value("max_overlap") < 1e-12);
+    const auto classic =
+        run_collide("simulate \"" + path.string() + "\" --until 0.5 --engine classic");
+    CHECK(classic.exit_code == 2);
+    CHECK(contains(classic.output,
+                   "--engine: expected fast (the only engine that runs spheres yet)"));
+    const auto render = run_collide("thumbnail \"" + path.string() + "\" -o /dev/null");
+    CHECK(render.exit_code == 2);
+    CHECK(contains(render.output, "dimension: a 3D scene (spheres)"));
+}

@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "collide/error.hpp"
+#include "collide/sim/generate.hpp"
+#include "collide/sim/time_engine.hpp"
 #include "pipeline.hpp"
 #include "render_plan.hpp"
 
@@ -79,18 +81,77 @@ TEST_CASE("frame k is at exactly k * speed / fps") {
     CHECK_THROWS_AS((void)video_clock(1.0, -1.0, 30), Error);
 }
 
-TEST_CASE("the time-driven panel shows its last whole step at or before the frame time") {
-    CHECK(last_step_time(0.0, 0.04) == 0.0);
-    CHECK(last_step_time(0.03, 0.04) == 0.0);  // before the first step ends
-    CHECK(last_step_time(0.05, 0.04) == doctest::Approx(0.04));
-    CHECK(last_step_time(0.12, 0.04) == 0.12);  // a whole number of steps: exact
-    CHECK(last_step_time(0.1, 0.01) == 0.1);    // dt divides the interval: lands on t
-    double previous = 0.0;
-    for (int k = 0; k < 200; ++k) {  // never goes backwards from frame to frame
-        const double t = last_step_time(k / 75.0, 0.04);
-        CHECK(t >= previous);
-        CHECK(t <= k / 75.0 + 1e-12);
-        previous = t;
+// Issue #28 item 1: step k of the time-driven engine ends at k dt from t = 0 for every caller.
+// A chaotic gas (dense enough that every step has contacts and misses) amplifies the last bit of
+// any difference, so the states must be equal bit for bit, not approximately.
+TEST_CASE(
+    "render at two frame rates, a thumbnail and simulate give the time-driven engine the same "
+    "steps, counts and states") {
+    Scene scene;
+    scene.name = "chaos";
+    scene.box = Box{1.0, 1.0, Boundary::walls};
+    GenerateSpec spec;
+    spec.count = 300;
+    spec.radius = 0.012;
+    spec.seed = 7;
+    generate_discs(scene, spec);
+    const double dt = 0.0037;  // divides neither frame interval: frames fall between steps
+    const double until = 2.0;
+    const auto state = [](const Snapshot& s) {
+        std::vector<double> out;
+        for (const DiscState& d : s.discs)
+            out.insert(out.end(), {d.position.x, d.position.y, d.velocity.x, d.velocity.y});
+        return out;
+    };
+    struct Result {
+        Measurements m;
+        Snapshot snap;
+    };
+    const auto through_frames = [&](const RenderPlan& plan) {
+        FrameSource source(scene, plan);
+        SimFrame frame;
+        for (std::int64_t k = 0; k < plan.clock.count; ++k) frame = source.frame(k);
+        return Result{source.measurements().front(), frame.panels.front().snapshot};
+    };
+    RenderRequest request;
+    request.scene = "chaos";
+    request.size = "320x180";
+    request.speed = 1.0;
+    request.dt = dt;
+    request.mode = "time";
+    request.duration = until;
+    std::vector<Result> results;
+    for (const int fps : {15, 24}) {  // video clocks ending at 2.0 - 1/fps
+        request.fps = fps;
+        RenderPlan plan = plan_render(request, scene);
+        plan.clock.count += 1;  // and one frame more: exactly `until`
+        plan.clock.last_time = until;
+        results.push_back(through_frames(plan));
+    }
+    request.fps = 30;
+    RenderPlan still = plan_render(request, scene);
+    still.clock = still_clock(until, 1.0, 30);  // the frames of `thumbnail --at 2`
+    results.push_back(through_frames(still));
+    auto simulate = make_engine(scene, still.time_engine);  // `simulate --until 2` does this
+    simulate->advance_to(until);
+    results.push_back({simulate->measurements(), simulate->snapshot()});
+
+    const Result& reference = results.back();
+    const auto steps = sim::TimeEngine::whole_steps(until, dt);
+    CHECK(steps == 540);  // 540 dt = 1.998 <= 2 < 541 dt
+    CHECK(reference.m.steps == steps);
+    CHECK(reference.snap.time == static_cast<double>(steps) * dt);
+    CHECK(reference.m.collisions_pair > 100);  // a run where the last bits matter
+    CHECK(reference.m.missed_collisions > 0);
+    for (const Result& r : results) {
+        CHECK(r.m.steps == reference.m.steps);
+        CHECK(r.snap.time == reference.snap.time);
+        CHECK(r.m.collisions_pair == reference.m.collisions_pair);
+        CHECK(r.m.collisions_wall == reference.m.collisions_wall);
+        CHECK(r.m.missed_collisions == reference.m.missed_collisions);
+        CHECK(r.m.overlap_checks == reference.m.overlap_checks);
+        CHECK(r.m.escaped == reference.m.escaped);
+        CHECK(state(r.snap) == state(reference.snap));
     }
 }
 

@@ -11,6 +11,7 @@
 #include "collide/error.hpp"
 #include "collide/sim/engine.hpp"
 #include "collide/sim/time_engine.hpp"
+#include "scene_fixtures.hpp"
 
 using namespace collide;
 using sim::TimeEngine;
@@ -116,19 +117,60 @@ TEST_CASE("make_engine builds the time-driven engine for engine = time") {
     CHECK(engine->snapshot().discs[0].position.x == doctest::Approx(0.6));
 }
 
-TEST_CASE("advance_to lands exactly on frame times that are not multiples of dt") {
+TEST_CASE("advance_to takes the whole steps up to t, step k ending at k dt from t = 0") {
     const Scene scene = make_scene(1.0, 1.0, {make_disc({0.2, 0.5}, {0.1, 0.0}, 0.05)});
     TimeEngine engine(scene, time_options(0.01));
-    engine.advance_to(1.0 / 30.0);  // 3 full steps and a partial one
+    engine.advance_to(1.0 / 30.0);  // 3 whole steps; the state stays at 0.03
     CHECK(engine.time() == 1.0 / 30.0);
-    CHECK(engine.measurements().steps == 4);
-    engine.advance_to(2.0 / 30.0);  // steps restart from 1/30: again 3 + 1
+    CHECK(engine.measurements().steps == 3);
+    CHECK(engine.snapshot().time == 3 * 0.01);
+    CHECK(engine.measurements().t == 3 * 0.01);
+    engine.advance_to(2.0 / 30.0);  // steps 4..6, not restarted from 1/30
     CHECK(engine.time() == 2.0 / 30.0);
-    CHECK(engine.measurements().steps == 8);
-    CHECK(engine.snapshot().discs[0].position.x == doctest::Approx(0.2 + 0.1 * 2.0 / 30.0));
+    CHECK(engine.measurements().steps == 6);
+    CHECK(engine.snapshot().time == 6 * 0.01);
+    CHECK(engine.snapshot().discs[0].position.x == doctest::Approx(0.2 + 0.1 * 0.06));
     engine.advance_to(engine.time());  // no step at all
-    CHECK(engine.measurements().steps == 8);
+    CHECK(engine.measurements().steps == 6);
+    engine.advance_to(0.069);  // still before step 7 ends
+    CHECK(engine.measurements().steps == 6);
     CHECK_THROWS_AS(engine.advance_to(0.0), Error);
+}
+
+TEST_CASE("whole_steps counts the steps k * dt at or before t, up to rounding") {
+    CHECK(TimeEngine::whole_steps(0.0, 0.04) == 0);
+    CHECK(TimeEngine::whole_steps(-1.0, 0.04) == 0);
+    CHECK(TimeEngine::whole_steps(0.03, 0.04) == 0);
+    CHECK(TimeEngine::whole_steps(0.05, 0.04) == 1);
+    CHECK(TimeEngine::whole_steps(0.12, 0.04) == 3);  // 3 * 0.04 = 0.12000000000000001 > 0.12
+    CHECK(TimeEngine::whole_steps(1.0, 0.1) == 10);
+    std::uint64_t previous = 0;
+    for (int k = 0; k < 300; ++k) {  // never backwards, and step ends never after the frame
+        const double t = k / 75.0;
+        const std::uint64_t steps = TimeEngine::whole_steps(t, 0.04);
+        CHECK(steps >= previous);
+        CHECK(static_cast<double>(steps) * 0.04 <= t + TimeEngine::landing_tolerance * 0.04);
+        CHECK(static_cast<double>(steps + 1) * 0.04 > t + TimeEngine::landing_tolerance * 0.04);
+        previous = steps;
+    }
+    CHECK(TimeEngine::whole_steps(1e300, 1e-300) > 1'000'000'000'000'000'000u);  // no overflow
+}
+
+TEST_CASE("a run in many small calls and one long call take the same steps, bit for bit") {
+    const Scene scene = test::lattice_fluid(12, 0.5, Boundary::periodic, 3, 0.02);
+    TimeEngine once(scene, time_options(0.003));
+    TimeEngine framed(scene, time_options(0.003));
+    once.advance_to(0.5);
+    for (int k = 1; k <= 37; ++k) framed.advance_to(0.5 * k / 37.0);
+    CHECK(once.measurements().steps == framed.measurements().steps);
+    CHECK(once.measurements().collisions_pair == framed.measurements().collisions_pair);
+    CHECK(once.measurements().collisions_pair > 50);
+    const Snapshot a = once.snapshot();
+    const Snapshot b = framed.snapshot();
+    for (std::size_t i = 0; i < a.discs.size(); ++i) {
+        CHECK(a.discs[i].position == b.discs[i].position);
+        CHECK(a.discs[i].velocity == b.discs[i].velocity);
+    }
 }
 
 TEST_CASE("head-on collision of unequal masses matches the analytic result") {
@@ -140,8 +182,6 @@ TEST_CASE("head-on collision of unequal masses matches the analytic result") {
         {make_disc({0.25, 0.5}, {1.0, 0.0}, r, 1.0), make_disc({0.75, 0.5}, {-0.5, 0.0}, r, 3.0)});
     const double t_c = 0.4 / 1.5;
     const double t_end = 0.35;
-    const double x1 = 0.25 + t_c - 1.25 * (t_end - t_c);
-    const double x2 = 0.75 - 0.5 * t_c + 0.25 * (t_end - t_c);
     for (double dt : {0.001, 0.003, 0.007}) {
         CAPTURE(dt);
         TimeEngine engine(scene, time_options(dt));
@@ -149,6 +189,11 @@ TEST_CASE("head-on collision of unequal masses matches the analytic result") {
         engine.set_collision_listener([&](const CollisionRecord& c) { records.push_back(c); });
         engine.advance_to(t_end);
         const Snapshot s = engine.snapshot();
+        // The state is at the latest whole step: 0.35 itself, or 0.348 for dt = 0.003.
+        CHECK(s.time == static_cast<double>(TimeEngine::whole_steps(t_end, dt)) * dt);
+        CHECK(s.time > t_end - dt);
+        const double x1 = 0.25 + t_c - 1.25 * (s.time - t_c);
+        const double x2 = 0.75 - 0.5 * t_c + 0.25 * (s.time - t_c);
         // Between checks the paths are straight, so the rollback finds the exact contact: the
         // time-driven error for one isolated pair is rounding, far below any multiple of dt.
         const double tol = 1e-9 * dt;
@@ -281,22 +326,23 @@ TEST_CASE("tunnelling through a wall: the disc escapes and keeps flying outside"
     TimeEngine careful(scene, time_options(0.025));
     std::vector<CollisionRecord> records;
     careful.set_collision_listener([&](const CollisionRecord& c) { records.push_back(c); });
-    careful.advance_to(0.09);
+    careful.advance_to(0.09);  // three steps: the state is at 0.075
     CHECK(careful.measurements().escaped == 0);
     REQUIRE(records.size() == 1);
     CHECK(records[0].kind == CollisionKind::xwall);
     CHECK(records[0].t == doctest::Approx(0.04));
-    CHECK(careful.snapshot().discs[0].position.x == doctest::Approx(0.99 - 0.05));
+    CHECK(careful.snapshot().time == doctest::Approx(0.075));
+    CHECK(careful.snapshot().discs[0].position.x == doctest::Approx(0.99 - 0.035));
     CHECK(careful.snapshot().discs[0].velocity.x == -1.0);
 }
 
 TEST_CASE("all-pairs performs N(N-1)/2 overlap checks per step") {
     const Scene scene = random_gas(3, 0.02, 1.0, 11, Boundary::walls);  // N = 9
     TimeEngine engine(scene, time_options(0.01));
-    engine.advance_to(0.105);  // 10 full steps and a partial one
+    engine.advance_to(0.105);  // 10 whole steps (the 11th would end after 0.105)
     const Measurements m = engine.measurements();
-    CHECK(m.steps == 11);
-    CHECK(m.overlap_checks == 11 * (9 * 8 / 2));
+    CHECK(m.steps == 10);
+    CHECK(m.overlap_checks == 10 * (9 * 8 / 2));
 }
 
 TEST_CASE("grid and all-pairs give identical results on a random gas") {

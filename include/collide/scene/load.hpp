@@ -9,9 +9,11 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "collide/scene.hpp"
+#include "collide/scene3.hpp"
 
 namespace collide {
 
@@ -66,6 +68,21 @@ struct DataDir {
 [[nodiscard]] Scene parse_toml_scene(std::string_view text, const std::string& file_label,
                                      const std::filesystem::path& base_dir,
                                      const SceneOptions& options = {});
+
+/// A scene of either dimension: discs (Scene) or spheres (SphereScene, `dimension = 3`).
+using AnyScene = std::variant<Scene, SphereScene>;
+
+/// Like parse_toml_scene, but a `dimension = 3` scene comes back as spheres instead of being
+/// refused. 3D scenes are checked as they are read (file:line: field): explicit spheres inside a
+/// walled box and not overlapping, [[fcc]] and [[generate]] not too dense to generate, no 2D key.
+[[nodiscard]] AnyScene parse_any_toml_scene(std::string_view text, const std::string& file_label,
+                                            const std::filesystem::path& base_dir,
+                                            const SceneOptions& options = {});
+
+/// load_scene for commands that also run spheres (check, simulate): a 3D TOML scene (file or
+/// built-in) comes back as a SphereScene; anything else as load_scene gives it.
+[[nodiscard]] AnyScene load_any_scene(const std::string& path_or_name,
+                                      const SceneOptions& options = {});
 
 /// Reads, parses and validates a TOML scene file (named after its stem).
 [[nodiscard]] Scene load_toml_scene(const std::filesystem::path& path,

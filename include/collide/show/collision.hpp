@@ -36,12 +36,6 @@ struct FrameClock {
 /// below anything a viewer could see.
 inline constexpr double divide_tolerance = 1e-6;
 
-/// The time of the time-driven engine's last whole step at or before frame time t: the naive
-/// method only has states at multiples of dt, so a frame shows its latest step rather than
-/// shortening steps to land on frame times (which would hide the tunnelling a large dt causes).
-/// Returns t itself when t is a whole number of steps (relative tolerance 1e-6).
-[[nodiscard]] double last_step_time(double t, double dt) noexcept;
-
 /// True when `dt` divides `interval` into a whole number of steps (relative tolerance 1e-6),
 /// i.e. the time-driven engine lands on every frame time without a shorter final step.
 [[nodiscard]] bool divides(double dt, double interval) noexcept;

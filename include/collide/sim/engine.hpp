@@ -10,17 +10,19 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <type_traits>
 
 #include "collide/error.hpp"
 #include "collide/scene.hpp"
 #include "collide/sim/measurements.hpp"
 #include "collide/sim/pq/queue_kind.hpp"
 #include "collide/snapshot.hpp"
+#include "collide/snapshot3.hpp"
 
 namespace collide {
 
-/// Kinds of collision, as written in `--events-log` (`pair`, `xwall`, `ywall`).
-enum class CollisionKind : std::uint8_t { pair, xwall, ywall };
+/// Kinds of collision, as written in `--events-log` (`pair`, `xwall`, `ywall`; 3D also `zwall`).
+enum class CollisionKind : std::uint8_t { pair, xwall, ywall, zwall };
 
 /// One resolved collision. For walls b is unused (written empty in the CSV).
 struct CollisionRecord {
@@ -32,19 +34,20 @@ struct CollisionRecord {
 
 using CollisionListener = std::function<void(const CollisionRecord&)>;
 
-class Engine {
+/// What every engine offers whatever its dimension: advance to a time, measurements, a collision
+/// listener, the stop flag and (event-driven engines) a view of the queue. Engine (discs) and
+/// SphereEngine (spheres) add the snapshot of their dimension.
+class EngineBase {
   public:
-    virtual ~Engine() = default;
-    Engine() = default;
-    Engine(const Engine&) = delete;
-    Engine& operator=(const Engine&) = delete;
+    virtual ~EngineBase() = default;
+    EngineBase() = default;
+    EngineBase(const EngineBase&) = delete;
+    EngineBase& operator=(const EngineBase&) = delete;
 
     /// Runs the simulation up to exactly time t (>= time()); throws Error if t < time().
     virtual void advance_to(double t) = 0;
     /// Current simulation time.
     [[nodiscard]] virtual double time() const noexcept = 0;
-    /// Every disc at time(), in scene order.
-    [[nodiscard]] virtual Snapshot snapshot() const = 0;
     /// Observables and cost so far.
     [[nodiscard]] virtual Measurements measurements() const = 0;
     /// Called once per resolved collision, in order (events log, determinism tests).
@@ -96,6 +99,24 @@ class Engine {
     const std::atomic<bool>* stop_ = nullptr;
     std::uint32_t stop_countdown_ = stop_poll_events;
 };
+
+/// An engine of discs (2D): the renderer's source.
+class Engine : public EngineBase {
+  public:
+    /// Every disc at time(), in scene order.
+    [[nodiscard]] virtual Snapshot snapshot() const = 0;
+};
+
+/// An engine of spheres (3D, `dimension = 3` scenes).
+class SphereEngine : public EngineBase {
+  public:
+    /// Every sphere at time(), in scene order.
+    [[nodiscard]] virtual SphereSnapshot snapshot() const = 0;
+};
+
+/// The engine interface of dimension D (2: Engine, 3: SphereEngine).
+template <int D>
+using EngineOf = std::conditional_t<D == 2, Engine, SphereEngine>;
 
 /// The simulation engines: two event-driven ones and the naive time-driven baseline.
 enum class EngineKind : std::uint8_t {

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdint>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -17,6 +18,8 @@
 #include "collide/sim/measurements.hpp"
 #include "collide/sim/observables.hpp"
 #include "collide/snapshot.hpp"
+#include "collide/snapshot3.hpp"
+#include "collide/space.hpp"
 
 namespace collide::sim {
 
@@ -26,7 +29,19 @@ struct Appearance {
     std::vector<std::uint8_t> tagged;  ///< 1 when the scene gave the disc a tag
     bool any_tagged = false;
 
-    explicit Appearance(const Scene& scene);
+    explicit Appearance(const Scene& scene) : Appearance(scene.discs) {}
+    explicit Appearance(const SphereScene& scene) : Appearance(scene.spheres) {}
+    /// From the scene's discs or spheres (anything with `color` and `tag`).
+    template <class Particle>
+    explicit Appearance(const std::vector<Particle>& particles) {
+        colors.reserve(particles.size());
+        tagged.reserve(particles.size());
+        for (const Particle& p : particles) {
+            colors.push_back(p.color);
+            tagged.push_back(p.tag.empty() ? 0 : 1);
+            any_tagged = any_tagged || !p.tag.empty();
+        }
+    }
 
     /// Discs that enter the mean squared displacement: the tagged ones, or all when none is.
     [[nodiscard]] bool in_msd(std::size_t i) const noexcept {
@@ -71,6 +86,10 @@ class WallClock {
             r.kind = CollisionKind::ywall;
             r.a = a;
             break;
+        case EventKind::zwall:
+            r.kind = CollisionKind::zwall;
+            r.a = a;
+            break;
         default:
             r.kind = CollisionKind::pair;
             r.a = a < b ? a : b;
@@ -85,18 +104,30 @@ struct EngineCounters {
     std::uint64_t collisions_pair = 0;
     std::uint64_t collisions_xwall = 0;
     std::uint64_t collisions_ywall = 0;
-    std::uint64_t cell_crossings = 0;  ///< fast engine only
-    std::uint64_t predictions = 0;     ///< collision-time computations (pair + wall)
-    QueueStats queue;                  ///< event-driven engines only
-    ImpulseTally impulses;             ///< for pressure
-    double wall_seconds = 0.0;         ///< inside advance_to
+    std::uint64_t collisions_zwall = 0;  ///< 3D only
+    std::uint64_t cell_crossings = 0;    ///< fast engine only
+    std::uint64_t predictions = 0;       ///< collision-time computations (pair + wall)
+    QueueStats queue;                    ///< event-driven engines only
+    ImpulseTally impulses;               ///< for pressure
+    double wall_seconds = 0.0;           ///< inside advance_to
 };
 
-/// The shared part of an engine, held as a member by each: see the file comment.
-class EngineCore {
+/// The snapshot type of dimension D (2: Snapshot of discs, 3: SphereSnapshot).
+template <int D>
+using SnapshotOf = std::conditional_t<D == 2, Snapshot, SphereSnapshot>;
+
+/// The shared part of an engine, held as a member by each: see the file comment. Generic over
+/// the dimension (EngineCore: discs; BasicEngineCore<3>: spheres).
+template <int D>
+class BasicEngineCore {
   public:
+    using Space = collide::Space<D>;
+    using Vec = typename Space::Vec;
+    using BoxType = typename Space::Box;
+
     /// Copies the scene's box and appearance: O(N).
-    explicit EngineCore(const Scene& scene);
+    explicit BasicEngineCore(const typename Space::Scene& scene)
+        : box_(scene.box), appearance_(scene) {}
 
     /// For the first line of advance_to(t) at engine time `now`: the time guard (require_forward:
     /// Error(input) unless now <= t < inf), then a clock that adds the call's wall time to the
@@ -123,17 +154,32 @@ class EngineCore {
             case CollisionKind::ywall:
                 ++counters_.collisions_ywall;
                 break;
+            case CollisionKind::zwall:
+                ++counters_.collisions_zwall;
+                break;
         }
         if (listener_) listener_(record);
     }
 
-    /// A snapshot at time t in scene order, with each disc's colour and tag filled in; the engine
-    /// then sets each disc's motion with set_motion.
-    [[nodiscard]] Snapshot start_snapshot(double t) const;
+    /// A snapshot at time t in scene order, with each particle's colour and tag filled in; the
+    /// engine then sets each one's motion with set_motion.
+    [[nodiscard]] SnapshotOf<D> start_snapshot(double t) const {
+        SnapshotOf<D> s;
+        s.time = t;
+        s.box = box_;
+        auto& items = particles_of(s);
+        items.resize(appearance_.colors.size());
+        for (std::size_t k = 0; k < items.size(); ++k) {
+            items[k].color = appearance_.colors[k];
+            items[k].tagged = appearance_.tagged[k] != 0;
+        }
+        return s;
+    }
 
-    /// A snapshot disc's position (within the box: periodic engines wrap it first), velocity,
+    /// A snapshot particle's position (within the box: periodic engines wrap it first), velocity,
     /// radius and mass.
-    static void set_motion(DiscState& d, Vec2 position, Vec2 velocity, double radius,
+    template <class State>
+    static void set_motion(State& d, Vec position, Vec velocity, double radius,
                            double mass) noexcept {
         d.position = position;
         d.velocity = velocity;
@@ -142,16 +188,38 @@ class EngineCore {
     }
 
     /// The measurements every engine reports the same way, at time t: the counters, the queue,
-    /// the thermodynamics from the discs' velocities, masses and radii (any order, the same for
-    /// the three), and the cost (wall time, rate, `engine_bytes`). The engine adds what only it
-    /// knows (max_overlap, msd, the time-driven figures).
-    [[nodiscard]] Measurements measurements(double t, const std::vector<Vec2>& velocities,
+    /// the thermodynamics from the particles' velocities, masses and radii (any order, the same
+    /// for every engine), and the cost (wall time, rate, `engine_bytes`). The engine adds what
+    /// only it knows (max_overlap, msd, the time-driven figures).
+    [[nodiscard]] Measurements measurements(double t, const std::vector<Vec>& velocities,
                                             const std::vector<double>& masses,
                                             const std::vector<double>& radii,
-                                            std::uint64_t engine_bytes) const;
+                                            std::uint64_t engine_bytes) const {
+        const EngineCounters& c = counters_;
+        Measurements m;
+        m.t = t;
+        m.collisions_pair = c.collisions_pair;
+        m.collisions_xwall = c.collisions_xwall;
+        m.collisions_ywall = c.collisions_ywall;
+        m.collisions_zwall = c.collisions_zwall;
+        m.collisions_wall = c.collisions_xwall + c.collisions_ywall + c.collisions_zwall;
+        m.cell_crossings = c.cell_crossings;
+        m.events = m.collisions_pair + m.collisions_wall + m.cell_crossings;
+        m.predictions = c.predictions;
+        m.queue = c.queue;
+        fill_thermodynamics<D>(m, velocities, masses, radii, box_, c.impulses);
+        m.wall_seconds = c.wall_seconds;
+        if (c.wall_seconds > 0.0) {
+            m.collisions_per_second =
+                static_cast<double>(m.collisions_pair + m.collisions_wall) / c.wall_seconds;
+        }
+        m.engine_bytes = engine_bytes;
+        return m;
+    }
 
-    /// Mean squared displacement over the discs of Appearance::in_msd: `of(i)` returns disc i's
-    /// scene index and its displacement since t = 0, for i in 0 .. n-1 (summed in that order).
+    /// Mean squared displacement over the particles of Appearance::in_msd: `of(i)` returns
+    /// particle i's scene index and its displacement since t = 0, for i in 0 .. n-1 (summed in
+    /// that order).
     template <class DisplacementOf>
     [[nodiscard]] double mean_squared_displacement(std::size_t n, DisplacementOf&& of) const {
         double sum = 0.0;
@@ -169,10 +237,15 @@ class EngineCore {
     [[nodiscard]] std::size_t bytes() const noexcept { return appearance_.bytes(); }
 
   private:
-    Box box_;
+    static auto& particles_of(Snapshot& s) noexcept { return s.discs; }
+    static auto& particles_of(SphereSnapshot& s) noexcept { return s.spheres; }
+
+    BoxType box_;
     Appearance appearance_;
     EngineCounters counters_;
     CollisionListener listener_;
 };
+
+using EngineCore = BasicEngineCore<2>;
 
 }  // namespace collide::sim

@@ -21,7 +21,8 @@ inline constexpr double same_instant_travel = 1e-9;
 
 /// True when a disc of radius r, moving at v for dt since its previous event, is still at that
 /// event's instant (it moved less than same_instant_travel r).
-[[nodiscard]] inline bool same_instant(double dt, Vec2 v, double r) noexcept {
+template <class Vec = Vec2>
+[[nodiscard]] inline bool same_instant(double dt, Vec v, double r) noexcept {
     const double reach = same_instant_travel * r;
     return dt * dt * norm2(v) <= reach * reach;
 }

@@ -15,7 +15,8 @@ enum class EventKind : std::uint8_t {
     pair = 0,   ///< two discs touch
     xwall = 1,  ///< a disc touches the left or right wall
     ywall = 2,  ///< a disc touches the bottom or top wall
-    cell = 3,   ///< fast engine only: a disc's centre leaves its grid cell (b = axis, 0 x / 1 y)
+    zwall = 3,  ///< 3D only: a sphere touches the front or back wall
+    cell = 4,   ///< fast engine only: a centre leaves its grid cell (b = axis, 0 x / 1 y / 2 z)
 };
 
 /// Marks "no disc" in 32-bit disc indices.

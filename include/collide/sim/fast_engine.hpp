@@ -24,12 +24,18 @@
 ///   indices, intrusive cell lists, no allocation per event.
 ///
 /// Periodic boxes need at least three cells per axis (three small-disc diameters); the
-/// constructor throws Error(input) naming `box.width` / `box.height` otherwise.
+/// constructor throws Error(input) naming `box.width` / `box.height` / `box.depth` otherwise.
+///
+/// One code for discs and spheres: BasicFastEngine<D> is a template over the dimension (its
+/// Space: vector, box, scene) and the cell neighbourhood (3^D cells; a crossing scans the 3^(D-1)
+/// cells it newly borders). FastEngine is the 2D engine (discs), FastSphereEngine the 3D one.
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
 #include "collide/scene.hpp"
+#include "collide/scene3.hpp"
 #include "collide/sim/engine.hpp"
 #include "collide/sim/engine_core.hpp"
 #include "collide/sim/engine_support.hpp"
@@ -38,22 +44,30 @@
 #include "collide/sim/observables.hpp"
 #include "collide/sim/pq/indexed_heap.hpp"
 #include "collide/sim/queue_view.hpp"
+#include "collide/space.hpp"
 
 namespace collide::sim {
 
-class FastEngine final : public Engine {
+template <int D>
+class BasicFastEngine final : public EngineOf<D> {
   public:
-    /// Builds the grid and predicts every disc's first event: O(N) expected time and memory.
-    /// Throws Error(input) when a periodic box is too small for a 3 x 3 grid.
-    explicit FastEngine(const Scene& scene);
+    using Space = collide::Space<D>;
+    using Vec = typename Space::Vec;
+    using BoxType = typename Space::Box;
+    using SceneType = typename Space::Scene;
 
-    /// False when the fast engine's grid cannot hold the scene (a periodic box narrower or lower
-    /// than three small-disc diameters); make_engine then falls back to the classic loop.
-    [[nodiscard]] static bool can_simulate(const Scene& scene);
+    /// Builds the grid and predicts every particle's first event: O(N) expected time and memory.
+    /// Throws Error(input) when a periodic box is too small for a grid of 3 cells per axis.
+    explicit BasicFastEngine(const SceneType& scene);
+
+    /// False when the fast engine's grid cannot hold the scene (a periodic box narrower than
+    /// three small-particle diameters along some axis); make_engine then falls back to the
+    /// classic loop.
+    [[nodiscard]] static bool can_simulate(const SceneType& scene);
 
     void advance_to(double t) override;
     [[nodiscard]] double time() const noexcept override { return now_; }
-    [[nodiscard]] Snapshot snapshot() const override;
+    [[nodiscard]] SnapshotOf<D> snapshot() const override;
     [[nodiscard]] Measurements measurements() const override;
     void set_collision_listener(CollisionListener listener) override {
         core_.set_listener(std::move(listener));
@@ -63,7 +77,9 @@ class FastEngine final : public Engine {
         return true;
     }
 
-    /// Number of discs handled as big (separate list).
+    /// Grid cells along one axis (for tests and the benchmark report).
+    [[nodiscard]] std::uint32_t cells_along(int axis) const noexcept { return n_[axis]; }
+    /// Number of particles handled as big (separate list).
     [[nodiscard]] std::size_t big_disc_count() const noexcept { return big_.size(); }
     /// Heap memory held by the engine's containers, in bytes (capacities, not sizes).
     [[nodiscard]] std::uint64_t bytes() const noexcept;
@@ -73,59 +89,61 @@ class FastEngine final : public Engine {
     [[nodiscard]] bool check_invariants() const;
 
   private:
-    /// What a neighbour scan and an event on the disc read, in one cache line. Counters that each
-    /// event reads for both discs sit here too: as separate arrays they cost a cache miss per disc
-    /// and per array at large N (the access pattern jumps across the whole box).
-    struct alignas(64) Particle {
-        double x, y;          ///< position at local time t (periodic: within one cell of the box)
-        double vx, vy;        ///< velocity
+    /// What a neighbour scan and an event on the particle read, in one cache line in 2D (80 bytes
+    /// in 3D). Counters that each event reads for both particles sit here too: as separate arrays
+    /// they cost a cache miss per particle and per array at large N (the access pattern jumps
+    /// across the whole box).
+    struct alignas(D == 2 ? 64 : 16) Particle {
+        Vec x;                ///< position at local time t (periodic: within one cell of the box)
+        Vec v;                ///< velocity
         double t;             ///< local clock: the time the position refers to
         double r;             ///< radius
-        std::uint32_t next;   ///< next disc in the same cell list (no_disc ends it)
-        std::uint32_t cell;   ///< cell of the centre (cy * nx + cx), tracked by cell events
-        std::uint32_t count;  ///< collisions of this disc (invalidates partners' events)
+        std::uint32_t next;   ///< next particle in the same cell list (no_disc ends it)
+        std::uint32_t cell;   ///< cell of the centre (linear index), tracked by cell events
+        std::uint32_t count;  ///< collisions of this particle (invalidates partners' events)
         std::uint32_t last_partner;  ///< see sim::just_collided_slack
     };
-    static_assert(sizeof(Particle) == 64, "one cache line per disc");
+    static_assert(D != 2 || sizeof(Particle) == 64, "one cache line per disc");
 
-    /// What only the disc's own events read (mass at collisions, list links at crossings, its
+    /// What only the particle's own events read (mass at collisions, list links at crossings, its
     /// earliest pair event), kept out of the neighbour scans' cache lines.
     struct Cold {
         double m = 0.0;  ///< mass
-        /// The earliest pair event found by the disc's scans since its last full prediction (+inf:
-        /// none): the pair part of its pending event. A crossing keeps it and scans only the
-        /// newly bordering cells, unless the partner has collided since (then all nine).
+        /// The earliest pair event found by the particle's scans since its last full prediction
+        /// (+inf: none): the pair part of its pending event. A crossing keeps it and scans only
+        /// the newly bordering cells, unless the partner has collided since (then all 3^D).
         double pair_t = kinematics::never;
         std::uint32_t pair_partner = no_disc;
         std::uint32_t pair_count = 0;  ///< the partner's collision count when pair_t was predicted
-        std::uint32_t prev = 0;        ///< previous disc in the cell list (O(1) unlink)
-        /// Collisions in the disc's current instant (sim::same_instant), for the jam bound (see
-        /// count_collision_now); fills the record's padding.
+        std::uint32_t prev = 0;        ///< previous particle in the cell list (O(1) unlink)
+        /// Collisions in the particle's current instant (sim::same_instant), for the jam bound
+        /// (see count_collision_now); fills the record's padding.
         std::uint32_t instant_collisions = 0;
     };
     static_assert(sizeof(Cold) == 32, "the jam counter fits in the padding");
 
-    /// A disc's pending event in 16 bytes (four keys per cache line in the heap): the time, the
-    /// disc that holds it (its heap handle, so the heap keeps no handle array), and the kind
-    /// packed above the second index (pairs: the partner; walls: unused; cells: the axis).
-    /// Hence at most 2^30 - 1 discs.
+    /// A particle's pending event in 16 bytes (four keys per cache line in the heap): the time,
+    /// the particle that holds it (its heap handle, so the heap keeps no handle array), and the
+    /// kind packed above the second index (pairs: the partner; walls: unused; cells: the axis).
+    /// Hence at most 2^29 - 1 particles.
     struct Key {
-        static constexpr std::uint32_t index_mask = (1U << 30) - 1;
+        static constexpr std::uint32_t kind_shift = 29;
+        static constexpr std::uint32_t index_mask = (1U << kind_shift) - 1;
         double t;
         std::uint32_t a;
         std::uint32_t kind_b;
 
         static Key make(double t, std::uint32_t a, std::uint32_t b, EventKind kind) noexcept {
-            return Key{t, a, (static_cast<std::uint32_t>(kind) << 30) | (b & index_mask)};
+            return Key{t, a, (static_cast<std::uint32_t>(kind) << kind_shift) | (b & index_mask)};
         }
         [[nodiscard]] EventKind kind() const noexcept {
-            return static_cast<EventKind>(kind_b >> 30);
+            return static_cast<EventKind>(kind_b >> kind_shift);
         }
         [[nodiscard]] std::uint32_t b() const noexcept { return kind_b & index_mask; }
     };
-    /// Time, then kind, then the discs' scene indices (pairs: smaller, larger; others: disc,
-    /// b): the strict order of sim::EventLess, so ties fall as in the classic engine although
-    /// the fast engine numbers discs internally in space-filling-curve order.
+    /// Time, then kind, then the particles' scene indices (pairs: smaller, larger; others:
+    /// particle, b): the strict order of sim::EventLess, so ties fall as in the classic engine
+    /// although the fast engine numbers particles internally in space-filling-curve order.
     struct KeyLess {
         const std::vector<std::uint32_t>* scene_index = nullptr;
 
@@ -141,54 +159,55 @@ class FastEngine final : public Engine {
     };
     using Heap = pq::IndexedDaryHeap<Key, pq::Orientation::min, 4, KeyLess, KeyOwner>;
 
-    struct Image {
-        std::int32_t x = 0;  ///< times the disc wrapped across the right (+) or left (-) edge
-        std::int32_t y = 0;
-    };
+    /// Times the particle wrapped across the high (+) or low (-) edge, per axis.
+    using Image = std::array<std::int32_t, D>;
+    /// Cell coordinates of a linear cell index, or offsets from a cell.
+    using Coords = std::array<std::int64_t, D>;
 
     // --- construction
-    void choose_grid(const Scene& scene);
-    void place_discs(const Scene& scene);
-    [[nodiscard]] std::vector<std::uint32_t> locality_order(const Scene& scene) const;
-    [[nodiscard]] std::uint32_t cell_of(double x, double y) const noexcept;
+    void choose_grid(const SceneType& scene);
+    void place_discs(const SceneType& scene);
+    [[nodiscard]] std::vector<std::uint32_t> locality_order(const SceneType& scene) const;
+    [[nodiscard]] std::uint32_t cell_of(Vec x) const noexcept;
+    [[nodiscard]] Coords coords_of(std::uint32_t cell) const noexcept;
+    [[nodiscard]] std::uint32_t cell_at(const Coords& c) const noexcept;
 
     // --- the loop's phases
     void process(std::uint32_t i, const Key& key);
     void process_pair(std::uint32_t i, std::uint32_t j, double t);
     void process_wall(std::uint32_t i, EventKind kind, double t);
     void process_cell(std::uint32_t i, std::uint32_t axis);
-    /// Counts a collision of disc i at now_, before it is advanced; throws when i is jammed
+    /// Counts a collision of particle i at now_, before it is advanced; throws when i is jammed
     /// (sim::instant_collision_limit).
     void count_collision_now(std::uint32_t i);
 
     // --- prediction
     void predict(std::uint32_t i);
     void predict_after_crossing(std::uint32_t i, std::uint32_t axis);
-    void schedule(std::uint32_t i, const Particle& pi, double xi, double yi, const Key& pair);
+    void schedule(std::uint32_t i, const Particle& pi, Vec xi, const Key& pair);
     /// True when the pair cannot have an event before best_t (cheap bound, no sqrt or division).
-    [[nodiscard]] bool cannot_beat(Vec2 dr, Vec2 dv, double sigma, double best_t) const noexcept;
-    void consider_pair(std::uint32_t i, const Particle& pi, double xi, double yi, std::uint32_t j,
-                       double shift_x, double shift_y, Key& best);
-    void consider_pair_images(std::uint32_t i, const Particle& pi, double xi, double yi,
-                              std::uint32_t j, Key& best);
-    void scan_small_neighbours(std::uint32_t i, const Particle& pi, double xi, double yi,
-                               Key& best);
-    void scan_cells(std::uint32_t i, const Particle& pi, double xi, double yi, std::int64_t x0,
-                    std::int64_t x1, std::int64_t y0, std::int64_t y1, Key& best);
-    /// Calls visit(first disc, shift x, shift y) for each non-empty cell at offsets x0..x1,
-    /// y0..y1 from pi's cell (shifts: the periodic image of a wrapped-around cell).
+    [[nodiscard]] bool cannot_beat(Vec dr, Vec dv, double sigma, double best_t) const noexcept;
+    void consider_pair(std::uint32_t i, const Particle& pi, Vec xi, std::uint32_t j, Vec shift,
+                       Key& best);
+    void consider_pair_images(std::uint32_t i, const Particle& pi, Vec xi, std::uint32_t j,
+                              Key& best);
+    void scan_small_neighbours(std::uint32_t i, const Particle& pi, Vec xi, Key& best);
+    /// Scans the cells at offsets lo[k] .. hi[k] along each axis k from pi's cell.
+    void scan_cells(std::uint32_t i, const Particle& pi, Vec xi, const Coords& lo, const Coords& hi,
+                    Key& best);
+    /// Calls visit(first particle, shift) for each non-empty cell at offsets lo .. hi from pi's
+    /// cell (shift: the periodic image of a wrapped-around cell). The last axis is the outer
+    /// loop.
     template <typename Visit>
-    void for_each_cell(const Particle& pi, std::int64_t x0, std::int64_t x1, std::int64_t y0,
-                       std::int64_t y1, Visit&& visit) const;
-    void scan_list(std::uint32_t i, const Particle& pi, double xi, double yi, std::uint32_t first,
-                   double shift_x, double shift_y, Key& best);
-    void scan_ring(std::uint32_t i, const Particle& pi, double xi, double yi, Key& best);
-    void consider_walls_and_cells(std::uint32_t i, const Particle& pi, double xi, double yi,
-                                  Key& best);
+    void for_each_cell(const Particle& pi, const Coords& lo, const Coords& hi, Visit&& visit) const;
+    void scan_list(std::uint32_t i, const Particle& pi, Vec xi, std::uint32_t first, Vec shift,
+                   Key& best);
+    void scan_ring(std::uint32_t i, const Particle& pi, Vec xi, Key& best);
+    void consider_walls_and_cells(std::uint32_t i, const Particle& pi, Vec xi, Key& best);
 
     // --- the queue view (watch_queue)
-    /// Disc i's pending event as the view shows it (scene indices; stale when its partner has
-    /// collided since it was predicted).
+    /// Particle i's pending event as the view shows it (scene indices; stale when its partner
+    /// has collided since it was predicted).
     [[nodiscard]] QueuedEvent queued_event(std::uint32_t i, const Key& key) const noexcept;
     [[nodiscard]] QueueView queue_view() const;
 
@@ -197,39 +216,46 @@ class FastEngine final : public Engine {
     void link(std::uint32_t i, std::uint32_t cell) noexcept;
     void unlink(std::uint32_t i) noexcept;
     [[nodiscard]] bool is_big(std::uint32_t i) const noexcept { return p_[i].r > big_threshold_; }
-    [[nodiscard]] Vec2 position_at_now(std::uint32_t i) const noexcept;
+    [[nodiscard]] Vec position_at_now(std::uint32_t i) const noexcept;
 
     [[nodiscard]] QueueStats& stats() noexcept { return core_.counters().queue; }
 
-    EngineCore core_;
-    Box box_;
+    BasicEngineCore<D> core_;
+    BoxType box_;
+    Vec extent_;  ///< the box's sides (width, height[, depth])
     bool periodic_ = false;
     double now_ = 0.0;
 
     // grid
-    std::uint32_t nx_ = 1;
-    std::uint32_t ny_ = 1;
-    double cw_ = 1.0;             ///< cell width
-    double ch_ = 1.0;             ///< cell height
-    double big_threshold_ = 0.0;  ///< radius above which a disc is big (+inf: none)
+    std::array<std::uint32_t, D> n_{};  ///< cells per axis
+    Vec cw_{};                          ///< cell sides
+    double big_threshold_ = 0.0;        ///< radius above which a particle is big (+inf: none)
     double small_radius_max_ = 0.0;
-    std::vector<std::uint32_t> head_;  ///< first disc of each cell list (no_disc: empty)
+    std::vector<std::uint32_t> head_;  ///< first particle of each cell list (no_disc: empty)
 
-    // discs
+    // particles
     std::vector<Particle> p_;
     std::vector<Cold> cold_;
     std::vector<Image> image_;  ///< periodic unwrapping (mean squared displacement)
-    std::vector<Vec2> start_;   ///< positions at t = 0
-    /// Discs are numbered internally along a Z-order curve over the cells, so that neighbours in
-    /// space are mostly neighbours in memory (at 10^5 discs in scene order every neighbour was a
-    /// cache miss). scene_index_[i] is the scene's index of internal disc i.
+    std::vector<Vec> start_;    ///< positions at t = 0
+    /// Particles are numbered internally along a Z-order curve over the cells, so that
+    /// neighbours in space are mostly neighbours in memory (at 10^5 discs in scene order every
+    /// neighbour was a cache miss). scene_index_[i] is the scene's index of internal particle i.
     std::vector<std::uint32_t> scene_index_;
-    std::vector<std::uint32_t> big_;  ///< indices of big discs
+    std::vector<std::uint32_t> big_;  ///< indices of big particles
 
     KeyLess key_less_{&scene_index_};
     Heap heap_{0, key_less_};
     std::uint64_t instant_limit_ = 0;  ///< see count_collision_now
     QueueWatch watch_;  ///< off unless a teaching video asked for the queue (watch_queue)
 };
+
+extern template class BasicFastEngine<2>;
+extern template class BasicFastEngine<3>;
+
+/// The fast engine of discs (`--engine fast`).
+using FastEngine = BasicFastEngine<2>;
+/// The fast engine of spheres (3D scenes).
+using FastSphereEngine = BasicFastEngine<3>;
 
 }  // namespace collide::sim

@@ -2,12 +2,14 @@
 /// \file
 /// The lecture's collision kernels as pure functions on values. "Never" is +infinity.
 /// Shared by every engine (classic, fast, time-driven) so that they resolve collisions
-/// identically and can be compared event by event.
+/// identically and can be compared event by event. The pair kernels are the lecture's formulas
+/// (dv.dr, d, J) in any dimension: templates over the vector type (Vec2 discs, Vec3 spheres).
 
 #include <cmath>
 #include <limits>
 
 #include "collide/vec2.hpp"
+#include "collide/vec3.hpp"
 
 namespace collide::kinematics {
 
@@ -31,8 +33,8 @@ inline constexpr double never = std::numeric_limits<double>::infinity();
 /// negative time for them and never resolves the overlap.
 /// Always inlined: the classic loop calls it for every disc, and GCC -O2 otherwise leaves it out
 /// of line there, where passing the vectors through the stack costs more than the kernel.
-[[nodiscard, gnu::always_inline]] inline double time_to_hit(Vec2 dr, Vec2 dv,
-                                                            double sigma) noexcept {
+template <class Vec = Vec2>
+[[nodiscard, gnu::always_inline]] inline double time_to_hit(Vec dr, Vec dv, double sigma) noexcept {
     const double b = dot(dv, dr);
     const double a = dot(dv, dv);
     const double c = dot(dr, dr) - sigma * sigma;
@@ -50,7 +52,8 @@ inline constexpr double never = std::numeric_limits<double>::infinity();
 /// (disc j receives -J). Along the line of centres, magnitude 2 m_i m_j (dv.dr) / (|dr| (m_i+m_j)).
 /// Uses the actual centre distance |dr| rather than sigma, so the impulse stays normal even when
 /// floating-point leaves the pair a hair apart or overlapping.
-[[nodiscard]] inline Vec2 pair_impulse(Vec2 dr, Vec2 dv, double mi, double mj) noexcept {
+template <class Vec = Vec2>
+[[nodiscard]] inline Vec pair_impulse(Vec dr, Vec dv, double mi, double mj) noexcept {
     const double dist2 = dot(dr, dr);
     if (dist2 <= 0.0) return {};
     const double j_over_dist = 2.0 * mi * mj * dot(dv, dr) / ((mi + mj) * dist2);
@@ -59,8 +62,9 @@ inline constexpr double never = std::numeric_limits<double>::infinity();
 
 /// Elastic pair collision: updates both velocities in place and returns the impulse on disc i
 /// (for the collision virial: r_ij . dp_i). dr = r_j - r_i, at contact.
-inline Vec2 resolve_pair(Vec2& vi, Vec2& vj, double mi, double mj, Vec2 dr) noexcept {
-    const Vec2 impulse = pair_impulse(dr, vj - vi, mi, mj);
+template <class Vec = Vec2>
+inline Vec resolve_pair(Vec& vi, Vec& vj, double mi, double mj, Vec dr) noexcept {
+    const Vec impulse = pair_impulse(dr, vj - vi, mi, mj);
     vi += (1.0 / mi) * impulse;
     vj -= (1.0 / mj) * impulse;
     return impulse;

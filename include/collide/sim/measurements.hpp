@@ -27,12 +27,14 @@ struct Measurements {
     std::uint64_t predictions = 0;       ///< collision-time computations (pair + wall)
     std::uint64_t collisions_xwall = 0;  ///< of collisions_wall: left/right walls
     std::uint64_t collisions_ywall = 0;  ///< of collisions_wall: bottom/top walls
+    std::uint64_t collisions_zwall = 0;  ///< of collisions_wall: front/back walls (3D only)
     std::uint64_t cell_crossings = 0;    ///< fast engine: cell-crossing events (part of `events`)
     QueueStats queue;
 
     // --- physics (k_B = 1)
     double kinetic_energy = 0.0;    ///< sum of m v^2 / 2
-    Vec2 momentum;                  ///< sum of m v
+    Vec2 momentum;                  ///< sum of m v (x and y)
+    double momentum_z = 0.0;        ///< 3D only: z component of the sum of m v
     double temperature = 0.0;       ///< kT = KE / N (two degrees of freedom per disc)
     double pressure = 0.0;          ///< virial (periodic) or wall impulse per length per time
     double compressibility = 0.0;   ///< Z = P A / (N k T)
@@ -51,7 +53,7 @@ struct Measurements {
     std::uint64_t escaped = 0;            ///< discs entirely outside a walled box (tunnelled)
     std::uint64_t overlapping_pairs = 0;  ///< pairs overlapping now
     double energy_drift = 0.0;            ///< (KE - KE0) / KE0
-    std::uint64_t steps = 0;              ///< time quanta taken (the final partial ones included)
+    std::uint64_t steps = 0;              ///< time quanta taken: the state is at steps * dt
     double max_overlap_seen = 0.0;        ///< deepest overlap any check found before rollback
     double seconds_per_time_unit = 0.0;   ///< wall_seconds / t: cost of one simulated time unit
 };

@@ -11,6 +11,7 @@
 #include "collide/box.hpp"
 #include "collide/sim/measurements.hpp"
 #include "collide/snapshot.hpp"
+#include "collide/space.hpp"
 #include "collide/vec2.hpp"
 
 namespace collide::sim {
@@ -43,11 +44,31 @@ struct ImpulseTally {
 };
 
 /// Fills the thermodynamic fields of m (kinetic_energy, momentum, temperature, pressure,
-/// compressibility, packing_fraction) from the discs' velocities and masses at time m.t, with
-/// impulses accumulated over [0, m.t]. Periodic boxes use the collision virial,
-/// Z = 1 + virial / (2 N kT t); walled boxes the wall impulse per unit length and time.
-void fill_thermodynamics(Measurements& m, const std::vector<Vec2>& velocities,
+/// compressibility, packing_fraction) from the particles' velocities and masses at time m.t,
+/// with impulses accumulated over [0, m.t], in D dimensions (D degrees of freedom per particle:
+/// kT = 2 KE / (D N)). Periodic boxes use the collision virial, Z = 1 + virial / (D N kT t),
+/// P = Z N kT / V; walled boxes the wall impulse per unit wall length (2D) or area (3D) and time.
+template <int D>
+void fill_thermodynamics(Measurements& m, const std::vector<typename Space<D>::Vec>& velocities,
                          const std::vector<double>& masses, const std::vector<double>& radii,
-                         const Box& box, const ImpulseTally& tally);
+                         const typename Space<D>::Box& box, const ImpulseTally& tally);
+
+/// The 2D form: fill_thermodynamics<2>.
+inline void fill_thermodynamics(Measurements& m, const std::vector<Vec2>& velocities,
+                                const std::vector<double>& masses, const std::vector<double>& radii,
+                                const Box& box, const ImpulseTally& tally) {
+    fill_thermodynamics<2>(m, velocities, masses, radii, box, tally);
+}
+
+/// Sum of the particles' areas (2D) or volumes (3D) over the box's.
+template <int D>
+[[nodiscard]] double packing_fraction_of(const std::vector<double>& radii,
+                                         const typename Space<D>::Box& box);
+
+/// 3D: the deepest overlap max(0, r_i + r_j - |r_ij|) over all pairs of spheres (minimum image
+/// in periodic boxes), through a temporary cell grid sized by the largest sphere: O(N) for
+/// spheres of similar sizes. Allocates.
+[[nodiscard]] double max_overlap(const std::vector<Vec3>& positions,
+                                 const std::vector<double>& radii, const Box3& box);
 
 }  // namespace collide::sim

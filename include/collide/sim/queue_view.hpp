@@ -35,6 +35,7 @@ inline constexpr std::size_t watched_pops = 8;
         case EventKind::xwall:
             return QueuedKind::xwall;
         case EventKind::ywall:
+        case EventKind::zwall:  // 3D only; queue views are drawn in 2D
             return QueuedKind::ywall;
         case EventKind::cell:
             break;

@@ -5,7 +5,14 @@
 /// pairs back to contact, resolve, continue. Collisions that happen entirely inside one quantum
 /// (fast discs passing through each other, or through a wall) are not fixed: they are measured.
 ///
-/// One step of length h (h = dt, or less for the final step that lands exactly on a frame time):
+/// Step k ends at exactly k dt (computed as k * dt from t = 0, never as a running sum), whoever
+/// calls advance_to and however often: a video at any frame rate, a thumbnail, `simulate` and the
+/// events log see the same state, bit for bit, after the same step. Between steps the engine has
+/// no state: advance_to(t) takes the whole steps that end at or before t, and snapshots and
+/// measurements describe the latest one (time() is t, Snapshot::time and Measurements::t the
+/// step's time).
+///
+/// One step of length h (dt, up to the rounding of k dt - (k - 1) dt):
 ///  1. drift    every disc moves in a straight line for h.
 ///  2. detect   every pair is tested once for overlap (all-pairs: N(N-1)/2 tests, counted in
 ///              Measurements::overlap_checks; `grid`: only pairs in neighbouring cells, with the
@@ -88,14 +95,23 @@ class TimeEngine final : public Engine {
     TimeEngine(const Scene& scene, const EngineOptions& options);
     ~TimeEngine() override;
 
-    /// Runs steps of dt until exactly time t; when t is not a multiple of dt away, the final step
-    /// is shorter and lands exactly on t (a step that would end within 1e-9 dt of t ends on t).
-    /// The next call starts its steps from t. Throws Error(input) (sim::require_forward) if
+    /// A step that would end within this fraction of dt after t still counts as ending at or
+    /// before t: frame times (multiples of 1/30, say) that are whole numbers of steps are not
+    /// exact multiples of dt in floating point.
+    static constexpr double landing_tolerance = 1e-6;
+
+    /// The number of whole steps of dt that end at or before t (step k ends at k * dt, within
+    /// landing_tolerance dt): 0 for t <= 0. O(1).
+    [[nodiscard]] static std::uint64_t whole_steps(double t, double dt) noexcept;
+
+    /// Takes the steps of dt that end at or before t (whole_steps(t, dt)), so that the state is
+    /// the latest whole step's; time() becomes t. Throws Error(input) (sim::require_forward) if
     /// t < time() or t is not finite.
     void advance_to(double t) override;
-    [[nodiscard]] double time() const noexcept override { return time_; }
-    /// Discs at time(), with the escaped flags, the pairs overlapping now and the markers of the
-    /// collisions missed during the last advance_to() call.
+    /// The time asked for by the latest advance_to (the state is at the latest step before it).
+    [[nodiscard]] double time() const noexcept override { return clock_; }
+    /// Discs at the latest whole step (Snapshot::time = k dt), with the escaped flags, the pairs
+    /// overlapping now and the markers of the collisions missed during the last advance_to() call.
     [[nodiscard]] Snapshot snapshot() const override;
     /// Everything measured so far; O(N).
     [[nodiscard]] Measurements measurements() const override;
@@ -151,7 +167,9 @@ class TimeEngine final : public Engine {
     std::vector<double> mass_;
     std::vector<bool> escaped_;
 
-    double time_ = 0.0;
+    double time_ = 0.0;        ///< the state's time: steps_ * dt
+    double clock_ = 0.0;       ///< the time asked for by the latest advance_to (time_ is at most
+                               ///< landing_tolerance dt later)
     double step_start_ = 0.0;  ///< simulation time at which the current step began
     std::vector<Contact> contacts_;
     std::unique_ptr<detail::CellGrid> grid_;
@@ -165,7 +183,7 @@ class TimeEngine final : public Engine {
     std::uint64_t escaped_count_ = 0;
 
     // Counters.
-    std::uint64_t steps_ = 0;
+    std::uint64_t steps_ = 0;  ///< steps taken since t = 0: the state is at steps_ * dt
     std::uint64_t overlap_checks_ = 0;
     std::uint64_t missed_ = 0;
     double max_overlap_seen_ = 0.0;

@@ -29,11 +29,6 @@ namespace collide::sim {
 
 namespace {
 
-/// A step that would end within this fraction of dt before the target time ends on it instead:
-/// frame times (multiples of 1/30, say) are not exact multiples of dt in floating point, and a
-/// sliver step of 1e-17 would only add rounding.
-constexpr double landing_tolerance = 1e-9;
-
 /// Grid cells are widened by this factor over the reach they must cover, so that a pair exactly
 /// `reach` apart cannot land two cells apart through rounding.
 constexpr double cell_margin = 1.0 + 1e-9;
@@ -78,25 +73,40 @@ void TimeEngine::set_collision_listener(CollisionListener listener) {
     core_.set_listener(std::move(listener));
 }
 
+std::uint64_t TimeEngine::whole_steps(double t, double dt) noexcept {
+    if (!(t > 0.0) || !(dt > 0.0)) return 0;
+    // Beyond 2^62 steps nothing could run them anyway (the work limits refuse far less).
+    constexpr double most = 4.6e18;
+    const double ratio = t / dt;
+    if (!(ratio < most)) return static_cast<std::uint64_t>(most);
+    // floor(t / dt), then corrected by the products the engine actually computes, k * dt, so
+    // that the division's rounding cannot disagree with the step ends.
+    auto k = static_cast<std::uint64_t>(std::floor(ratio));
+    const double reach = t + landing_tolerance * dt;
+    while (static_cast<double>(k + 1) * dt <= reach) ++k;
+    while (k > 0 && static_cast<double>(k) * dt > reach) --k;
+    return k;
+}
+
 void TimeEngine::advance_to(double t) {
-    const WallClock clock = core_.start_advance(time_, t);
+    const WallClock clock = core_.start_advance(clock_, t);
     missed_markers_.clear();  // markers are "missed since the previous frame"
-    // Step ends are base + k dt (not a running sum), so rounding does not accumulate.
-    const double base = time_;
-    std::uint64_t k = 0;
-    while (time_ < t) {
-        check_stop();  // once per step: a step over many discs can take milliseconds
-        ++k;
-        double next = base + static_cast<double>(k) * dt_;
-        if (next > t - landing_tolerance * dt_) {
-            next = t;  // the final, possibly partial, step
+    // Step k ends at k dt from t = 0 whoever calls (a video at any fps, a thumbnail, simulate):
+    // the same step gives the same state bit for bit. Only whole steps are taken; the state
+    // stays at the latest one at or before t.
+    const std::uint64_t target = whole_steps(t, dt_);
+    try {
+        while (steps_ < target) {
+            check_stop();  // once per step: a step over many discs can take milliseconds
+            const double next = static_cast<double>(steps_ + 1) * dt_;
+            step(next - time_);
+            time_ = next;
         }
-        if (next <= time_) {
-            continue;  // dt below the resolution of time_: try the next multiple
-        }
-        step(next - time_);
-        time_ = next;
+    } catch (...) {
+        clock_ = std::max(clock_, time_);  // stopped: the clock is where the state is
+        throw;
     }
+    clock_ = t;
     take_census();
 }
 

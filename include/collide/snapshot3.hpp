@@ -1,0 +1,29 @@
+#pragma once
+/// \file
+/// A 3D engine's state at a time: every sphere, in scene order (SphereEngine::snapshot). The 3D
+/// counterpart of Snapshot, for measurements and tests until spheres are rendered.
+
+#include <vector>
+
+#include "collide/box3.hpp"
+#include "collide/disc.hpp"
+#include "collide/vec3.hpp"
+
+namespace collide {
+
+struct SphereState {
+    Vec3 position;  ///< at SphereSnapshot::time; wrapped into the box for periodic boundaries
+    Vec3 velocity;
+    double radius = 0.0;
+    double mass = 0.0;
+    Rgb8 color;
+    bool tagged = false;
+};
+
+struct SphereSnapshot {
+    double time = 0.0;
+    Box3 box;
+    std::vector<SphereState> spheres;  ///< same order as the scene's spheres
+};
+
+}  // namespace collide

@@ -1,0 +1,229 @@
+// Hard spheres in 3D: the FCC and random generators, and the fast engine written once for 2 and
+// 3 dimensions (analytic collisions, conservation, no overlap, the equation of state).
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "collide/error.hpp"
+#include "collide/sim/fast_engine.hpp"
+#include "collide/sim/generate3.hpp"
+
+using namespace collide;
+using sim::FastSphereEngine;
+
+namespace {
+
+SphereScene fcc_fluid(std::size_t cells, double eta, std::uint64_t seed = 1) {
+    SphereScene scene;
+    scene.name = "fcc";
+    scene.box = Box3{1.0, 1.0, 1.0, Boundary::periodic};
+    FccSpec spec;
+    spec.cells = {cells, cells, cells};
+    spec.packing_fraction = eta;
+    spec.seed = seed;
+    generate_fcc(scene, spec);
+    return scene;
+}
+
+Sphere sphere(Vec3 p, Vec3 v, double r, double m = 1.0) {
+    Sphere s;
+    s.position = p;
+    s.velocity = v;
+    s.radius = r;
+    s.mass = m;
+    return s;
+}
+
+std::string error_of(const auto& f) {
+    try {
+        f();
+    } catch (const Error& e) {
+        CHECK(e.exit_code() == 2);
+        return e.what();
+    }
+    return "";
+}
+
+/// Carnahan-Starling: Z = (1 + eta + eta^2 - eta^3) / (1 - eta)^3.
+double carnahan_starling(double eta) {
+    return (1.0 + eta + eta * eta - eta * eta * eta) / std::pow(1.0 - eta, 3.0);
+}
+
+}  // namespace
+
+TEST_CASE("the FCC generator fills the box at the packing fraction, at rest and at kT") {
+    const SphereScene scene = fcc_fluid(3, 0.45, 5);
+    REQUIRE(scene.spheres.size() == 4 * 27);
+    double volume = 0.0;
+    Vec3 momentum{};
+    double kinetic = 0.0;
+    for (const Sphere& s : scene.spheres) {
+        volume += 4.0 / 3.0 * std::numbers::pi * std::pow(s.radius, 3.0);
+        momentum += s.mass * s.velocity;
+        kinetic += 0.5 * s.mass * norm2(s.velocity);
+    }
+    CHECK(volume == doctest::Approx(0.45).epsilon(1e-12));
+    CHECK(norm(momentum) < 1e-12);
+    CHECK(2.0 * kinetic / (3.0 * 108.0) == doctest::Approx(1.0).epsilon(1e-12));
+    // Nearest neighbours at half a face diagonal, apart.
+    const double a = 1.0 / 3.0;
+    CHECK(2.0 * scene.spheres[0].radius < a / std::sqrt(2.0));
+}
+
+TEST_CASE("too dense to generate: the FCC and random generators name the field") {
+    CHECK(error_of([] { (void)fcc_fluid(3, 0.75); }).find("fcc.packing_fraction") !=
+          std::string::npos);
+    SphereScene walled;
+    walled.box = Box3{1.0, 1.0, 1.0, Boundary::walls};
+    FccSpec lattice;
+    lattice.packing_fraction = 0.3;  // outer spheres would cross the walls above pi / 12
+    CHECK(error_of([&] { generate_fcc(walled, lattice); }).find("cross the walls") !=
+          std::string::npos);
+    lattice.packing_fraction = 0.25;
+    CHECK_NOTHROW(generate_fcc(walled, lattice));
+    SphereScene flat;
+    flat.box = Box3{1.0, 1.0, 0.1, Boundary::periodic};  // cells squashed along z
+    FccSpec spec;
+    spec.cells = {4, 4, 4};
+    spec.packing_fraction = 0.5;
+    const std::string squashed = error_of([&] { generate_fcc(flat, spec); });
+    CHECK(squashed.find("fcc.packing_fraction") != std::string::npos);
+    CHECK(squashed.find("too dense to generate") != std::string::npos);
+    SphereScene random;
+    random.box = Box3{1.0, 1.0, 1.0, Boundary::walls};
+    SphereGenerateSpec gen;
+    gen.packing_fraction = 0.4;
+    gen.radius = 0.05;
+    const std::string dense = error_of([&] { generate_spheres(random, gen); });
+    CHECK(dense.find("generate.packing_fraction") != std::string::npos);
+    CHECK(dense.find("[[fcc]]") != std::string::npos);
+}
+
+TEST_CASE("random spheres do not overlap and lie inside a walled box") {
+    SphereScene scene;
+    scene.box = Box3{1.0, 2.0, 1.5, Boundary::walls};
+    SphereGenerateSpec gen;
+    gen.packing_fraction = 0.25;
+    gen.radius = 0.06;
+    gen.seed = 3;
+    generate_spheres(scene, gen);
+    REQUIRE(scene.spheres.size() > 100);
+    std::vector<Vec3> positions;
+    std::vector<double> radii;
+    for (const Sphere& s : scene.spheres) {
+        CHECK(scene.box.contains(s.position, s.radius));
+        positions.push_back(s.position);
+        radii.push_back(s.radius);
+    }
+    CHECK(sim::max_overlap(positions, radii, scene.box) <= 0.0);
+}
+
+TEST_CASE("3D: a head-on collision along a diagonal exchanges the velocities of equal spheres") {
+    SphereScene scene;
+    scene.box = Box3{2.0, 2.0, 2.0, Boundary::walls};
+    const Vec3 u = (1.0 / std::sqrt(3.0)) * Vec3{1.0, 1.0, 1.0};
+    const double r = 0.1;
+    scene.spheres = {sphere(Vec3{1.0, 1.0, 1.0} - 0.5 * u, 0.5 * u, r),
+                     sphere(Vec3{1.0, 1.0, 1.0} + 0.5 * u, -0.5 * u, r)};
+    FastSphereEngine engine(scene);
+    std::vector<CollisionRecord> log;
+    engine.set_collision_listener([&](const CollisionRecord& c) { log.push_back(c); });
+    engine.advance_to(1.0);
+    REQUIRE(!log.empty());
+    CHECK(log[0].kind == CollisionKind::pair);
+    CHECK(log[0].t == doctest::Approx((1.0 - 2.0 * r) / 1.0).epsilon(1e-12));  // gap 0.8 at 1
+    const SphereSnapshot s = engine.snapshot();
+    CHECK(s.spheres[0].velocity.x == doctest::Approx(-0.5 * u.x).epsilon(1e-12));
+    CHECK(s.spheres[1].velocity.z == doctest::Approx(0.5 * u.z).epsilon(1e-12));
+    CHECK(engine.check_invariants());
+}
+
+TEST_CASE("3D: a sphere bounces off the front and back walls (z)") {
+    SphereScene scene;
+    scene.box = Box3{1.0, 1.0, 1.0, Boundary::walls};
+    scene.spheres = {sphere({0.5, 0.5, 0.5}, {0.0, 0.0, 1.0}, 0.1)};
+    FastSphereEngine engine(scene);
+    std::vector<CollisionRecord> log;
+    engine.set_collision_listener([&](const CollisionRecord& c) { log.push_back(c); });
+    engine.advance_to(1.3);
+    REQUIRE(log.size() == 2);
+    CHECK(log[0].kind == CollisionKind::zwall);
+    CHECK(log[0].t == doctest::Approx(0.4));
+    CHECK(log[1].kind == CollisionKind::zwall);
+    CHECK(log[1].t == doctest::Approx(1.2));  // across the box and back: 0.8 more
+    const Measurements m = engine.measurements();
+    CHECK(m.collisions_wall == 2);
+    CHECK(engine.snapshot().spheres[0].position.z == doctest::Approx(0.2));
+}
+
+TEST_CASE("3D fast engine: energy and momentum conserved to round-off, no overlap, invariants") {
+    for (const Boundary boundary : {Boundary::periodic, Boundary::walls}) {
+        CAPTURE(static_cast<int>(boundary));
+        SphereScene scene = fcc_fluid(4, 0.4, 2);
+        double eta = 0.4;
+        if (boundary == Boundary::walls) {
+            // The lattice in the middle of a larger walled box, clear of the walls.
+            scene.box = Box3{1.2, 1.2, 1.2, Boundary::walls};
+            for (Sphere& s : scene.spheres) {
+                s.position += Vec3{0.1, 0.1, 0.1};
+                REQUIRE(scene.box.contains(s.position, s.radius));
+            }
+            eta = 0.4 / (1.2 * 1.2 * 1.2);
+        }
+        FastSphereEngine engine(scene);
+        const Measurements m0 = engine.measurements();
+        CHECK(m0.temperature == doctest::Approx(1.0).epsilon(1e-12));
+        for (int k = 1; k <= 10; ++k) {
+            engine.advance_to(0.02 * k);
+            CHECK(engine.check_invariants());
+        }
+        const Measurements m = engine.measurements();
+        CHECK(m.collisions_pair > 1000);
+        CHECK(std::abs(m.kinetic_energy - m0.kinetic_energy) <= 1e-12 * m0.kinetic_energy);
+        CHECK(m.max_overlap <= 1e-9 * 2.0 * scene.spheres[0].radius);
+        CHECK(m.packing_fraction == doctest::Approx(eta).epsilon(1e-12));
+        CHECK(m.msd > 0.0);
+        if (boundary == Boundary::periodic) {
+            CHECK(std::hypot(m.momentum.x, m.momentum.y, m.momentum_z) < 1e-12);
+        } else {
+            CHECK(m.collisions_wall > 0);
+        }
+    }
+}
+
+TEST_CASE("3D fast engine: the same scene gives the same collisions (determinism)") {
+    const SphereScene scene = fcc_fluid(3, 0.45, 9);
+    std::vector<std::vector<CollisionRecord>> logs(2);
+    for (auto& log : logs) {
+        FastSphereEngine engine(scene);
+        engine.set_collision_listener([&](const CollisionRecord& c) { log.push_back(c); });
+        engine.advance_to(0.1);
+    }
+    REQUIRE(logs[0].size() == logs[1].size());
+    REQUIRE(logs[0].size() > 100);
+    for (std::size_t k = 0; k < logs[0].size(); ++k) {
+        CHECK(logs[0][k].t == logs[1][k].t);
+        CHECK(logs[0][k].a == logs[1][k].a);
+        CHECK(logs[0][k].b == logs[1][k].b);
+    }
+}
+
+// A quick check of the equation of state; tests/physics runs the long one (label slow).
+TEST_CASE("3D fast engine: Z from the collision virial near Carnahan-Starling (N = 500, short)") {
+    for (const double eta : {0.30, 0.45}) {
+        CAPTURE(eta);
+        FastSphereEngine engine(fcc_fluid(5, eta, 4));
+        const double sigma = 2.0 * std::cbrt(eta * 3.0 / (4.0 * std::numbers::pi * 500.0));
+        engine.advance_to(20.0 * sigma);  // melt the crystal (times in sigma / sqrt(kT / m))
+        const Measurements a = engine.measurements();
+        engine.advance_to(a.t + 60.0 * sigma);
+        const Measurements b = engine.measurements();
+        const double z =
+            1.0 + ((b.compressibility - 1.0) * b.t - (a.compressibility - 1.0) * a.t) / (b.t - a.t);
+        CHECK(z == doctest::Approx(carnahan_starling(eta)).epsilon(0.02));
+    }
+}
