@@ -64,8 +64,8 @@ class RecordHash {
 constexpr std::size_t pinned_records = 10000;
 
 /// Hash of the first pinned_records collisions of `engine` on the gas scene, advanced in steps of
-/// 1/30 (frame times: the way the videos drive the engines).
-std::string first_records_hash(EngineKind engine) {
+/// 1/fps (frame times: the way the videos drive the engines).
+std::string first_records_hash(EngineKind engine, int fps = 30) {
     EngineOptions options;
     options.engine = engine;
     auto sim = make_engine(gas_scene(), options);
@@ -74,7 +74,7 @@ std::string first_records_hash(EngineKind engine) {
         if (hash.count() < pinned_records) hash.add(r);
     });
     for (int frame = 1; hash.count() < pinned_records && frame < 1'000'000; ++frame)
-        sim->advance_to(frame / 30.0);
+        sim->advance_to(frame / static_cast<double>(fps));
     REQUIRE(hash.count() == pinned_records);
     char text[19];
     std::snprintf(text, sizeof text, "0x%016llx", static_cast<unsigned long long>(hash.value()));
@@ -91,8 +91,9 @@ TEST_CASE("determinism: the first 10^4 collisions of the gas scene hash as pinne
         CHECK(first_records_hash(EngineKind::classic) == "0xb680243f21d8a984");
     }
     SUBCASE("time-driven (dt = 0.01)") {
-        // Pinned for the stepping as it stands; the generalisation to any dimension changes how
-        // the time-driven engine steps, and re-pins this value when it is merged.
-        CHECK(first_records_hash(EngineKind::time) == "0x83011a74d2e6eec9");
+        // Re-pinned when step k came to end at k * dt from t = 0 for every caller (issue #28):
+        // the frame times no longer change the physics, so any frame rate gives this hash.
+        CHECK(first_records_hash(EngineKind::time) == "0xc75b4cd5ea4149f9");
+        CHECK(first_records_hash(EngineKind::time, 24) == "0xc75b4cd5ea4149f9");
     }
 }

@@ -28,7 +28,7 @@ std::string num(double v) {
 
 [[noreturn]] void fail(const std::string& prefix, const std::string& field,
                        const std::string& reason) {
-    throw_input_error("", 0, prefix + "." + field, reason);
+    throw_scene_error("", 0, prefix + "." + field, reason);
 }
 
 void check_common(const std::string& prefix, double mass, double temperature) {
