@@ -125,9 +125,9 @@ void run(const HeapCli& v) {
     render::HeapRenderer renderer(config, render::Backend::automatic, print_notice);
 
     const double still_time = given(v.video.at_opt) ? v.video.at : lesson.duration();
-    const LessonVideoSummary written = write_lesson(
-        output, geometry, progress_mode, lesson.duration(), still_time,
-        [&](double t, Image& frame) { renderer.render(lesson.frame_at(t), frame); });
+    const LessonVideoSummary written =
+        write_lesson(output, geometry, progress_mode, lesson.duration(), still_time,
+                     [&](double t, Image& frame) { renderer.render(lesson.frame_at(t), frame); });
     if (output.still) {
         std::printf("%s: %dx%d PNG at %.2f s of a %.2f s video of %s\n",
                     output.path.string().c_str(), geometry.width, geometry.height, still_time,

@@ -244,8 +244,9 @@ std::string engine_costs(const RenderPlan& plan, const PipelineResult& result) {
     if (plan.mode != RenderMode::time && i < result.engines.size()) {
         const Measurements& m = result.engines[i];
         if (!out.empty()) out += ", ";
-        out += fmt::format("event-driven {:.2f} s ({} collisions)", m.wall_seconds,
-                           show::short_count(static_cast<double>(m.collisions_pair + m.collisions_wall)));
+        out += fmt::format(
+            "event-driven {:.2f} s ({} collisions)", m.wall_seconds,
+            show::short_count(static_cast<double>(m.collisions_pair + m.collisions_wall)));
     }
     return out;
 }
@@ -353,8 +354,9 @@ void run(const CliValues& values, bool still) {
     // Data on standard output (--layout-json -) is the only thing there: the summary moves aside.
     const bool data_on_stdout = layout_file && layout_file->is_standard_output();
     if (data_on_stdout && values.json) {
-        throw_option_error("--json", "the JSON summary and --layout-json - cannot share standard "
-                                     "output; write the layout to a file");
+        throw_option_error("--json",
+                           "the JSON summary and --layout-json - cannot share standard "
+                           "output; write the layout to a file");
     }
 
     Progress progress(progress_mode, plan.clock.count);

@@ -10,7 +10,6 @@
 #include "cli_numbers.hpp"
 #include "collide/error.hpp"
 #include "collide/video/video_writer.hpp"
-#include "cli_numbers.hpp"
 #include "font_search.hpp"
 #include "interrupt.hpp"
 #include "render_plan.hpp"

@@ -106,7 +106,8 @@ FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan, const std::
         Panel panel;
         panel.engine = make_engine(scene, options);
         panel.engine->set_stop_flag(stop);
-        if (!time_driven && plan.queue_events > 0 && !panel.engine->watch_queue(show::queue_picture(plan.queue_events)))
+        if (!time_driven && plan.queue_events > 0 &&
+            !panel.engine->watch_queue(show::queue_picture(plan.queue_events)))
             throw_option_error("--queue", "the " + std::string(to_string(options.engine)) +
                                               " engine has no event queue");
         panel.time_driven = time_driven;

@@ -75,7 +75,6 @@ class FrameSource {
     std::vector<Panel> panels_;
 };
 
-
 /// Turns SimFrames into the renderer's FrameContent (render thread), keeping each panel's energy
 /// drift series across frames. The content points into the SimFrame, which must outlive its use.
 class FrameComposer {

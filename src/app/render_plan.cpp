@@ -507,5 +507,4 @@ std::size_t moving_disc_count(const Scene& scene) {
                       [&](const Disc& d) { return std::isfinite(d.mass) && d.mass < heavy; }));
 }
 
-
 }  // namespace collide::app

@@ -97,8 +97,8 @@ struct SpeedChoice {
 [[nodiscard]] SpeedChoice choose_speed(const Scene& scene, std::optional<double> cli);
 
 /// The frame clock and the time-driven steps between frames (collide/show/collision.hpp).
-using show::FrameClock;
 using show::divides;
+using show::FrameClock;
 
 /// A video of `duration` seconds at `fps`: round(duration * fps) frames (at least 1), frame k at
 /// k * speed / fps. Throws Error(input) if duration, speed or fps is not positive and finite.
@@ -156,8 +156,8 @@ enum class OutputKind {
 };
 
 /// The lesson's timeline: intro card, captions, step indicator (collide/show/collision.hpp).
-using show::LessonPlan;
 using show::intro_seconds;
+using show::LessonPlan;
 
 /// The default time-driven dt is the simulation time of one 1/30 s video frame at the video's
 /// speed (the -q m frame interval), whatever -q or --fps say: presets never change the physics.

@@ -1,8 +1,9 @@
 #pragma once
 /// \file
 /// The one set of video options of `render`, `thumbnail`, `heap` and `puzzle` (-o, --format, -q,
-/// --size, --fps, --at, --last-frame, --progress, --preview, --verbose, --theme, --font), registered by
-/// one function: a command says which of them it takes and how its help names its defaults.
+/// --size, --fps, --at, --last-frame, --progress, --preview, --verbose, --theme, --font),
+/// registered by one function: a command says which of them it takes and how its help names its
+/// defaults.
 
 #include <CLI/CLI.hpp>
 #include <string>

@@ -739,8 +739,8 @@ void FrameBuilder::add_full_strip(const FrameContent& frame) {
     for (const PanelContent& panel : frame.panels) snapshots.push_back(panel.snapshot);
     // Each panel's series in its engine's accent, whichever panels the frame has.
     const std::vector<Rgb8> series_colors = accents(frame);
-    draw_speed_plot(list_.over, text, font, histogram, snapshots, series_colors,
-                    config_.speed_min, config_.speed_max, plot_colors(config_.theme));
+    draw_speed_plot(list_.over, text, font, histogram, snapshots, series_colors, config_.speed_min,
+                    config_.speed_max, plot_colors(config_.theme));
     draw_drift_plot(list_.over, text, font, drift, frame.energy_drift, series_colors,
                     plot_colors(config_.theme));
     const float notes_baseline = strip.y1 - m * 0.5F - line + font.ascent();

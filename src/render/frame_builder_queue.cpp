@@ -212,8 +212,7 @@ void FrameBuilder::add_queue_in_box(const Snapshot& snapshot, const PanelLayout&
 }
 
 // The strip: a heading, the latest pops on the left, the queue itself on the right.
-void FrameBuilder::add_queue_strip(const Snapshot& snapshot, const QueueWords& words,
-                                   RectF strip) {
+void FrameBuilder::add_queue_strip(const Snapshot& snapshot, const QueueWords& words, RectF strip) {
     const QueueView& queue = *snapshot.queue;
     const FontAtlas& small = *small_font_;
     const float line = std::round(small.pixel_height() * 1.2F);

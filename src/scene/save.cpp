@@ -87,12 +87,15 @@ void write_render(std::ostream& out, const RenderHints& r) {
         !r.caption && r.captions.empty() && !r.histogram)
         return;
     out << "\n[render]\n";
-    if (r.color_mode) out << "color_mode = " << quoted(std::string(color_mode_name(*r.color_mode))) << "\n";
+    if (r.color_mode)
+        out << "color_mode = " << quoted(std::string(color_mode_name(*r.color_mode))) << "\n";
     if (r.trails) out << "trails = " << (*r.trails ? "true" : "false") << "\n";
-    if (r.overlays) out << "overlays = " << quoted(std::string(overlay_level_name(*r.overlays))) << "\n";
+    if (r.overlays)
+        out << "overlays = " << quoted(std::string(overlay_level_name(*r.overlays))) << "\n";
     if (r.theme) out << "theme = " << quoted(std::string(theme_name(*r.theme))) << "\n";
     if (r.caption) out << "caption = " << quoted(*r.caption) << "\n";
-    if (r.histogram) out << "histogram = " << quoted(std::string(plot_size_name(*r.histogram))) << "\n";
+    if (r.histogram)
+        out << "histogram = " << quoted(std::string(plot_size_name(*r.histogram))) << "\n";
     if (r.duration) out << "duration = " << exact(*r.duration) << "\n";
     if (r.speed) out << "speed = " << exact(*r.speed) << "\n";
     if (r.dt) out << "dt = " << exact(*r.dt) << "\n";

@@ -131,7 +131,8 @@ class TomlReader {
             validate_scene(scene_, origin_);
             read_generators(*n);
         }
-        if (speed_colored_ && !scene_.render.color_mode) scene_.render.color_mode = ColorMode::speed;
+        if (speed_colored_ && !scene_.render.color_mode)
+            scene_.render.color_mode = ColorMode::speed;
         validate_scene(scene_, origin_);
         return std::move(scene_);
     }
@@ -457,8 +458,8 @@ class TomlReader {
         if (const toml::node* v = t.get("trails")) r.trails = boolean(*v, "render.trails");
         if (const toml::node* v = t.get("overlays")) {
             if (v->is_boolean()) {
-                r.overlays = boolean(*v, "render.overlays") ? OverlayLevel::lesson
-                                                            : OverlayLevel::none;
+                r.overlays =
+                    boolean(*v, "render.overlays") ? OverlayLevel::lesson : OverlayLevel::none;
             } else {
                 r.overlays = one_of(*v, "render.overlays", overlay_level_names);
             }

@@ -153,7 +153,9 @@ QueueViewLimits queue_picture(std::size_t next_events) noexcept {
 }
 
 QueueWords queue_words(const QueueView& queue) {
-    const auto separated = [](std::uint64_t n) { return with_separators(static_cast<long long>(n)); };
+    const auto separated = [](std::uint64_t n) {
+        return with_separators(static_cast<long long>(n));
+    };
     QueueWords out;
     out.heading = fmt::format("Event queue: {}, {} entries", queue.name, separated(queue.size));
     if (queue.one_per_disc) {
@@ -165,11 +167,11 @@ QueueWords queue_words(const QueueView& queue) {
         fmt::format("In the box: the next {} collisions queued, time to go", queue.next.size());
     out.stale_popped = queue.one_per_disc ? "  stale: re-predict" : "  stale: thrown away";
     out.stale_leaving = "thrown away";
-    out.counts = queue.one_per_disc
-                     ? fmt::format("{} pops, {} stale", separated(queue.pops),
-                                   separated(queue.stale_pops))
-                     : fmt::format("{} of {} pops stale", separated(queue.stale_pops),
-                                   separated(queue.pops));
+    out.counts =
+        queue.one_per_disc
+            ? fmt::format("{} pops, {} stale", separated(queue.pops), separated(queue.stale_pops))
+            : fmt::format("{} of {} pops stale", separated(queue.stale_pops),
+                          separated(queue.pops));
     return out;
 }
 

@@ -311,7 +311,8 @@ TEST_CASE("the default dt comes from the scene, never from the preset or the fra
     request.fps = 60;
     const RenderPlan plan = plan_render(request, scene);
     CHECK(plan.lesson.frames_per_step == 2);
-    CHECK(show::step_note(plan.time_engine.dt, plan.clock.interval) == "Moves only every 2nd frame");
+    CHECK(show::step_note(plan.time_engine.dt, plan.clock.interval) ==
+          "Moves only every 2nd frame");
     CHECK(show::step_note(0.01, 0.02).empty());
 }
 

@@ -378,7 +378,8 @@ namespace {
 
 // `--mode event --overlays full` drew the event-driven engine's plots in the time-driven orange:
 // the strip chose a series' colour by its panel's index, not by the panel's engine.
-TEST_CASE("full level: each plot series is drawn in its panel's engine accent, whatever its index") {
+TEST_CASE(
+    "full level: each plot series is drawn in its panel's engine accent, whatever its index") {
     RenderConfig config = test::small_config(true);
     config.width = 640;
     config.height = 360;

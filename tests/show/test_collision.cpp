@@ -121,7 +121,8 @@ TEST_CASE("lesson figures are plain words with thousands separators") {
     CHECK(ed[1].value == "0");
 }
 
-TEST_CASE("each panel's words: the time-driven one counts pair tests, the event-driven one queue steps") {
+TEST_CASE(
+    "each panel's words: the time-driven one counts pair tests, the event-driven one queue steps") {
     Measurements m;
     m.missed_collisions = 1234;
     m.overlap_checks = 500;

@@ -24,25 +24,25 @@
 #include <vector>
 
 #include "collide/image.hpp"
-#include "collide/render/context.hpp"
-#include "collide/view/collision.hpp"
 #include "collide/number_text.hpp"
+#include "collide/render/context.hpp"
 #include "collide/render_options.hpp"
 #include "collide/snapshot.hpp"
+#include "collide/view/collision.hpp"
 
 namespace collide::render {
 
 // The typed options live in the types layer (one name table each); the renderer's code names
 // them unqualified.
-using collide::ColorMode;
-using collide::OverlayLevel;
-using collide::PlotSize;
-using collide::Theme;
 using collide::color_mode_name;
+using collide::ColorMode;
 using collide::overlay_level_name;
+using collide::OverlayLevel;
 using collide::parse_color_mode;
 using collide::parse_overlay_level;
 using collide::parse_theme;
+using collide::PlotSize;
+using collide::Theme;
 using collide::theme_name;
 
 /// The frame sides the renderers accept, in pixels (every frame size option and config is checked

@@ -11,12 +11,12 @@
 #include <string>
 #include <vector>
 
-#include "collide/view/collision.hpp"
 #include "collide/render_options.hpp"
 #include "collide/scene.hpp"
 #include "collide/sim/engine.hpp"
 #include "collide/sim/measurements.hpp"
 #include "collide/snapshot.hpp"
+#include "collide/view/collision.hpp"
 
 namespace collide::show {
 
@@ -117,7 +117,7 @@ inline constexpr double intro_seconds = 2.0;
 /// caption line a whole frame wide must hold every one of them.
 struct CaptionSource {
     std::string text;
-    std::string file;   ///< "" when not read from a file
+    std::string file;  ///< "" when not read from a file
     int line = 0;
     std::string field;  ///< "render.caption", "render.captions.text" or the caption's file:line
 };

@@ -27,7 +27,6 @@ inline constexpr std::size_t max_watched_events = 20;
 /// Popped events a view carries (the latest ones).
 inline constexpr std::size_t watched_pops = 8;
 
-
 [[nodiscard]] constexpr QueuedKind queued_kind(EventKind kind) noexcept {
     switch (kind) {
         case EventKind::pair:
