@@ -13,6 +13,7 @@
 
 #include "collide/error.hpp"
 #include "scene/disc_grid.hpp"
+#include "scene/generator_errors.hpp"
 #include "scene/random.hpp"
 
 namespace collide {
@@ -29,17 +30,8 @@ constexpr double min_lattice_gap = 1e-6;
 // and falling back to the lattice.
 constexpr double random_attempts_per_disc = 200.0;
 
-std::string num(double v) {
-    std::ostringstream s;
-    s.precision(6);
-    s << v;
-    return s.str();
-}
-
-[[noreturn]] void fail(const std::string& prefix, const std::string& field,
-                       const std::string& reason) {
-    throw_scene_error("", 0, prefix + (field.empty() ? "" : "." + field), reason);
-}
+using detail::fail;
+using detail::num;
 
 // Where generated centres may go.
 struct Placement {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "collide/error.hpp"
+#include "scene/generator_errors.hpp"
 #include "scene/random.hpp"
 
 namespace collide {
@@ -19,17 +20,8 @@ namespace {
 
 using detail::Rng;
 
-std::string num(double v) {
-    std::ostringstream s;
-    s.precision(6);
-    s << v;
-    return s.str();
-}
-
-[[noreturn]] void fail(const std::string& prefix, const std::string& field,
-                       const std::string& reason) {
-    throw_scene_error("", 0, prefix + "." + field, reason);
-}
+using detail::fail;
+using detail::num;
 
 void check_common(const std::string& prefix, double mass, double temperature) {
     if (!(mass > 0.0 && std::isfinite(mass))) fail(prefix, "mass", "must be finite and > 0");
