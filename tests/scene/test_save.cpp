@@ -146,7 +146,8 @@ TEST_CASE("save: an interrupt (the cancel flag) writes nothing and keeps the old
                         std::filesystem::directory_iterator()) == 1);
 }
 
-TEST_CASE("save: a scene from a file name with byte 0xFF exports and loads back as the same scene") {
+TEST_CASE(
+    "save: a scene from a file name with byte 0xFF exports and loads back as the same scene") {
     // The title taken from the file name is display text: the loaded scene already holds it as
     // valid UTF-8 (U+FFFD for the 0xFF byte), so load -> export -> load gives the same scene.
     const test::TempDir dir("save_ff");
