@@ -230,8 +230,12 @@ class CollisionProgram final : public FrameProgram {
     double frame(std::int64_t /*k*/, FrameUse use, Image& image) override {
         std::optional<SimFrame> frame = simulation_.next();
         if (!frame) stopped_early();
+        // A frame is phases (text layout, drawing, read-back) that each take a while at a large
+        // --size: the renderer knows nothing of interrupts, so the flag is polled between them.
+        check_interrupt();
         const render::FrameContent& content = composer_.compose(*frame);
         const bool last = frame->index + 1 == plan_.clock.count;
+        check_interrupt();
         switch (use) {
             case FrameUse::output:
                 renderer_.render(content, image);
@@ -242,6 +246,7 @@ class CollisionProgram final : public FrameProgram {
             case FrameUse::skip:
                 break;
         }
+        check_interrupt();
         if (!plan_.layout_json.empty() && last)
             result_.layout_json = renderer_.layout_json(content);
         result_.sim_time = frame->time;
@@ -251,6 +256,10 @@ class CollisionProgram final : public FrameProgram {
     void finish() override { result_.engines = simulation_.finish(); }
 
   private:
+    void check_interrupt() const {
+        if (interrupts_ != nullptr) interrupts_->throw_if_requested();
+    }
+
     /// The simulation ended before the last frame: an interrupt (say so, rather than the
     /// "simulation stopped" the engines threw on seeing it), its error, or neither.
     [[noreturn]] void stopped_early() {

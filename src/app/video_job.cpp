@@ -76,12 +76,14 @@ JobResult run_video(const VideoJob& job, const ProgramFactory& make_program,
     const std::unique_ptr<FrameProgram> program =
         make(make_program, render_backend(preview.get(), hooks));
     RawDump dump(hooks.dump_rgba);
+    check_interrupt(hooks);  // building the renderer (the font atlas) takes a while
 
     JobResult result;
     for (std::int64_t k = 0; k < job.frames; ++k) {
         check_interrupt(hooks);
         Image image = writer.spare_frame();
         const double time = program->frame(k, FrameUse::output, image);
+        check_interrupt(hooks);  // before the encoder gets a frame drawn while a signal came
         // Closing the window stops the preview only: the video is encoded to the end.
         if (preview && !preview->show(image)) preview.reset();
         dump.write(image);
@@ -108,6 +110,7 @@ JobResult run_still(const VideoJob& job, const ProgramFactory& make_program,
     std::unique_ptr<render::PreviewWindow> preview = open_preview_if_asked(job, hooks);
     const std::unique_ptr<FrameProgram> program =
         make(make_program, render_backend(preview.get(), hooks));
+    check_interrupt(hooks);  // building the renderer (the font atlas) takes a while
     const std::int64_t first_drawn = std::max<std::int64_t>(0, job.frames - 1 - job.warm_frames);
 
     JobResult result;
@@ -124,11 +127,23 @@ JobResult run_still(const VideoJob& job, const ProgramFactory& make_program,
     check_interrupt(hooks);
     program->finish();
     if (preview) preview->show(image);
-    io::OutputFile png = video::write_png_uncommitted(image, job.output.path);
-    if (hooks.before_commit) hooks.before_commit();
-    png.commit();
     result.output_width = image.width;
     result.output_height = image.height;
+    check_interrupt(hooks);
+    // A large frame takes seconds to compress: encoded where an interrupt can cut it short.
+    io::OutputFile png = [&] {
+        if (hooks.interrupts == nullptr)
+            return video::write_png_uncommitted(image, job.output.path);
+        try {
+            return video::write_png_uncommitted(std::move(image), job.output.path,
+                                                hooks.interrupts->flag());
+        } catch (const Error&) {
+            check_interrupt(hooks);  // the app's own message naming the signal
+            throw;
+        }
+    }();
+    if (hooks.before_commit) hooks.before_commit();
+    png.commit();
     return result;
 }
 

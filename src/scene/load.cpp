@@ -157,7 +157,7 @@ AnyScene load_any_scene(const std::string& path_or_name, const SceneOptions& opt
     std::visit(
         [&](auto& scene) {
             scene.name = name;
-            if (scene.title.empty()) scene.title = name;
+            if (scene.title.empty()) scene.title = valid_utf8(name);
         },
         any);
     return any;

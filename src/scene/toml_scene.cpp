@@ -770,7 +770,8 @@ Scene load_toml_scene(const std::filesystem::path& path, const SceneOptions& opt
     const std::string text = read_scene_file(path);
     Scene scene = parse_toml_scene(text, path.string(), path.parent_path(), options);
     scene.name = path.stem().string();
-    if (scene.title.empty()) scene.title = scene.name;
+    // A title from the file name is display text: valid UTF-8, so that an export reads back.
+    if (scene.title.empty()) scene.title = valid_utf8(scene.name);
     return scene;
 }
 

@@ -4,12 +4,16 @@
 #include <stb_image_write.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <future>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "collide/error.hpp"
@@ -84,6 +88,29 @@ io::OutputFile write_png_uncommitted(const Image& image, const std::filesystem::
                             std::to_string(image.width) + "x" + std::to_string(image.height) + ")");
     }
     const std::vector<unsigned char> bytes = detail::encode_png(image, path);
+    io::OutputFile file(path);
+    file.write(bytes.data(), bytes.size());
+    return file;
+}
+
+io::OutputFile write_png_uncommitted(Image&& image, const std::filesystem::path& path,
+                                     const std::atomic<bool>& cancel) {
+    if (image.width <= 0 || image.height <= 0 ||
+        image.rgba.size() != image.stride() * static_cast<std::size_t>(image.height)) {
+        throw_runtime_error("write_png '" + path.string() + "': image is empty or inconsistent (" +
+                            std::to_string(image.width) + "x" + std::to_string(image.height) + ")");
+    }
+    // The task owns the image and the future's state owns the bytes, so the detached thread
+    // touches nothing of this frame once it is abandoned.
+    auto owned = std::make_shared<const Image>(std::move(image));
+    std::packaged_task<std::vector<unsigned char>()> task(
+        [owned, path] { return detail::encode_png(*owned, path); });
+    std::future<std::vector<unsigned char>> encoded = task.get_future();
+    std::thread(std::move(task)).detach();
+    while (encoded.wait_for(std::chrono::milliseconds(10)) != std::future_status::ready) {
+        if (cancel.load()) throw_runtime_error("interrupted; nothing was written");
+    }
+    const std::vector<unsigned char> bytes = encoded.get();
     io::OutputFile file(path);
     file.write(bytes.data(), bytes.size());
     return file;

@@ -225,3 +225,52 @@ TEST_CASE("signals: a frames directory that a killed run left is swept by the ne
         CHECK_FALSE(fs::exists(abandoned));
     }
 }
+
+TEST_CASE("signals: Ctrl-C ends a render of the longest texts at 8192x4608 within a second") {
+    // A frame at the largest --size with every scene text at its longest takes seconds: the
+    // intro card's layout and glyphs, the read-back, and for a thumbnail about 5 s of PNG
+    // compression, in which nothing polled before. The flag is now polled between a frame's
+    // phases and while the PNG is compressed.
+    if (collide::test::address_sanitizer) COLLIDE_SKIP_TEST("frame times differ under ASan");
+    TempDir out("signals_long_frame");
+    const fs::path scene = out.path / "long.toml";
+    std::string captions;
+    for (int at = 0; at < 3; ++at)
+        captions += "[[render.captions]]\nat = " + std::to_string(at) + "\ntext = \"" +
+                    std::string(64, 'e') + "\"\n";
+    std::string description;
+    while (description.size() < 600) description += "Wide words ";
+    description.resize(600);
+    write_file(scene, "title = \"" + std::string(255, 'W') + "\"\ndescription = \"" + description +
+                          "\"\n[box]\nwidth = 1\nheight = 1\n[[generate]]\ncount = 20\n"
+                          "radius = 0.01\n[render]\ncaption = \"" +
+                          std::string(64, 'e') + "\"\n" + captions);
+    const fs::path log = out.path / "log.txt";
+    for (const std::string command : {"thumbnail", "render"}) {
+        CAPTURE(command);
+        SignalledRun run;
+        run.argv = {COLLIDE_EXE,
+                    command,
+                    scene.string(),
+                    "-o",
+                    (out.path / (command == "render" ? "out.mp4" : "out.png")).string(),
+                    "--size",
+                    "8192x4608",
+                    "--progress",
+                    "json"};
+        if (command == "render") run.argv.insert(run.argv.end(), {"--duration", "2"});
+        run.log = log;
+        // Under way: for the thumbnail, its one output frame is drawn and the PNG compression
+        // has begun; for the video, its first progress line is out and every frame is slow.
+        const std::string marker = command == "render" ? "\"frame\":" : "\"frame\":300,";
+        run.started = [&] { return read_all(log).find(marker) != std::string::npos; };
+        run.settle = std::chrono::milliseconds(200);
+        run.end_timeout = std::chrono::milliseconds(1500);
+        const int status = run_and_signal(run, SIGINT);
+        CHECK(ended_by(status, SIGINT));
+        // (a last progress line may follow the message)
+        CHECK(read_all(log).find("collide: error: interrupted by SIGINT; nothing was written\n") !=
+              std::string::npos);
+    }
+    CHECK(entries(out.path) == std::vector<std::string>{"log.txt", "long.toml"});
+}

@@ -145,3 +145,39 @@ TEST_CASE("save: an interrupt (the cancel flag) writes nothing and keeps the old
     CHECK(std::distance(std::filesystem::directory_iterator(dir.path),
                         std::filesystem::directory_iterator()) == 1);
 }
+
+TEST_CASE(
+    "save: a scene from a file name with byte 0xFF exports and loads back as the same scene") {
+    // The title taken from the file name is display text: the loaded scene already holds it as
+    // valid UTF-8 (U+FFFD for the 0xFF byte), so load -> export -> load gives the same scene.
+    const test::TempDir dir("save_ff");
+    const std::filesystem::path toml_file = dir.path / "gas\xFF.toml";
+    {
+        std::ofstream out(toml_file);
+        out << "description = \"two discs\"\n[box]\nwidth = 2\nheight = 1\n"
+               "[render]\ntrails = true\nspeed = 0.5\n"
+               "[[disc]]\nposition = [0.5, 0.5]\nvelocity = [1, 0]\nradius = 0.1\n"
+               "[[disc]]\nposition = [1.5, 0.5]\nvelocity = [-1, 0.25]\nradius = 0.2\n";
+    }
+    const std::filesystem::path txt_file = dir.path / "box\xFF.txt";
+    {
+        std::ofstream out(txt_file);
+        out << "1\n0.5 0.5 0.1 0 0.05 1 255 0 0\n";
+    }
+    for (const std::filesystem::path& file : {toml_file, txt_file}) {
+        CAPTURE(file.filename().string());
+        const Scene scene = load_scene(file.string());
+        CHECK(scene.title == file.stem().string().substr(0, 3) + "\xEF\xBF\xBD");
+        const std::filesystem::path exported = dir.path / (file.stem().string() + "-export.toml");
+        save_scene(scene, exported);
+        const Scene back = load_scene(exported.string());
+        CHECK(back.title == scene.title);
+        CHECK(back.description == scene.description);
+        CHECK(back.box.width == scene.box.width);
+        CHECK(back.box.height == scene.box.height);
+        CHECK(back.render.trails == scene.render.trails);
+        CHECK(back.render.speed == scene.render.speed);
+        CHECK(back.render.dt == scene.render.dt);
+        check_same_discs(scene, back);
+    }
+}

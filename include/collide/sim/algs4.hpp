@@ -36,12 +36,19 @@ struct ParsedScene {
 /// The UTF-8 byte order mark that some editors put at the start of a text file.
 inline constexpr std::string_view utf8_bom = "\xEF\xBB\xBF";
 
+/// `text` as valid UTF-8: every byte that does not belong to a well-formed sequence (overlong
+/// forms, surrogates and code points past U+10FFFF included) becomes U+FFFD. A title taken from a
+/// file name is display text, so a scene holds it this way from the moment it is loaded, and an
+/// exported scene reads back to the same title. O(size).
+[[nodiscard]] std::string valid_utf8(std::string_view text);
+
 /// The largest scene file (or include) collide reads: 512 MiB. An algs4 file with 10^6 discs
 /// written at full precision (write_algs4) is about 150 MB; the cap keeps a mistaken argument
 /// (a disk image, /dev/zero behind a symlink) from being read until memory runs out.
 inline constexpr std::uintmax_t max_scene_file_bytes = std::uintmax_t{512} << 20;
 
-/// Parses algs4 text read from `path` (the scene is named after the file stem), then validates it.
+/// Parses algs4 text read from `path` (the scene is named after the file stem; its title is the
+/// stem through valid_utf8), then validates it.
 [[nodiscard]] ParsedScene read_algs4_text(std::string_view text, const std::filesystem::path& path);
 
 /// Reads an algs4 file (the scene is named after the file stem), then validates it.

@@ -2,6 +2,7 @@
 /// \file
 /// Single PNG files (thumbnails, PNG sequences, test fixtures) through stb_image(_write).
 
+#include <atomic>
 #include <filesystem>
 
 #include "collide/image.hpp"
@@ -19,6 +20,14 @@ void write_png(const Image& image, const std::filesystem::path& path);
 /// returned file's commit() (for a run that commits its outputs only once all are written).
 [[nodiscard]] io::OutputFile write_png_uncommitted(const Image& image,
                                                    const std::filesystem::path& path);
+/// The same for an image the caller gives up, encoded on a thread of its own while this one
+/// polls `cancel` every 10 ms: a large frame takes seconds to compress (8192x4608: about 5 s),
+/// and an interrupt must end the run within a second. Once `cancel` is set it throws
+/// Error(runtime) "interrupted; nothing was written" at once, writes nothing, and leaves the
+/// encoding to finish on its detached thread (which owns the image and its result) and be
+/// dropped: the program is about to exit by its signal.
+[[nodiscard]] io::OutputFile write_png_uncommitted(Image&& image, const std::filesystem::path& path,
+                                                   const std::atomic<bool>& cancel);
 
 /// Reads a PNG (any bit depth / channel count stb understands) as RGBA8, rows top-down.
 /// Throws Error(input) naming the path if it cannot be opened or decoded.

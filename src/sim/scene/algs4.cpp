@@ -212,10 +212,42 @@ ParsedScene parse_algs4(std::istream& in, const std::string& file_label) {
     return parse_algs4(std::string_view(text.view()), file_label);
 }
 
+std::string valid_utf8(std::string_view text) {
+    std::string out;
+    out.reserve(text.size());
+    for (std::size_t i = 0; i < text.size();) {
+        const auto lead = static_cast<unsigned char>(text[i]);
+        if (lead < 0x80) {
+            out += text[i++];
+            continue;
+        }
+        const std::size_t length = lead >= 0xC2 && lead <= 0xDF   ? 2
+                                   : lead >= 0xE0 && lead <= 0xEF ? 3
+                                   : lead >= 0xF0 && lead <= 0xF4 ? 4
+                                                                  : 0;
+        bool ok = length != 0 && i + length <= text.size();
+        for (std::size_t k = 1; ok && k < length; ++k)
+            ok = (static_cast<unsigned char>(text[i + k]) & 0xC0) == 0x80;
+        if (ok) {
+            const auto second = static_cast<unsigned char>(text[i + 1]);
+            ok = !((lead == 0xE0 && second < 0xA0) || (lead == 0xED && second > 0x9F) ||
+                   (lead == 0xF0 && second < 0x90) || (lead == 0xF4 && second > 0x8F));
+        }
+        if (ok) {
+            out.append(text.substr(i, length));
+            i += length;
+        } else {
+            out += "\xEF\xBF\xBD";  // U+FFFD
+            ++i;
+        }
+    }
+    return out;
+}
+
 ParsedScene read_algs4_text(std::string_view text, const std::filesystem::path& path) {
     ParsedScene parsed = parse_algs4(text, path.string());
     parsed.scene.name = path.stem().string();
-    parsed.scene.title = parsed.scene.name;
+    parsed.scene.title = valid_utf8(parsed.scene.name);
     validate_scene(parsed.scene, parsed.origin);
     return parsed;
 }
