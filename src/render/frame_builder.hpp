@@ -41,7 +41,6 @@ class MarkerMemory {
     /// a held time-driven state is not counted again) and forgets markers older than
     /// marker_seconds at `video_time`.
     void update(const Snapshot& snapshot, double video_time);
-    void reset() noexcept;
     /// Markers alive at the last update, oldest first.
     [[nodiscard]] const std::vector<Marker>& markers() const noexcept { return markers_; }
     /// Opacity in [0, 1] of a marker at `video_time` (1 when new, 0 after marker_seconds).
