@@ -95,6 +95,18 @@ void check_captions_fit(const Scene& scene, const RenderPlan& plan) {
     }
 }
 
+/// Engine::watch_queue, its errors about the field `queue` said as the option `--queue`.
+bool watch_queue(Engine& engine, const QueueViewLimits& limits) {
+    try {
+        return engine.watch_queue(limits);
+    } catch (const Error& e) {
+        const std::string_view field = "queue: ";
+        const std::string_view message = e.what();
+        if (e.kind() != ErrorKind::input || !message.starts_with(field)) throw;
+        throw_option_error("--queue", message.substr(field.size()));
+    }
+}
+
 }  // namespace
 
 // ------------------------------------------------------------------------------------------------
@@ -107,7 +119,7 @@ FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan, const std::
         panel.engine = make_engine(scene, options);
         panel.engine->set_stop_flag(stop);
         if (!time_driven && plan.queue_events > 0 &&
-            !panel.engine->watch_queue(show::queue_picture(plan.queue_events)))
+            !watch_queue(*panel.engine, show::queue_picture(plan.queue_events)))
             throw_option_error("--queue", "the " + std::string(to_string(options.engine)) +
                                               " engine has no event queue");
         panel.time_driven = time_driven;

@@ -82,11 +82,6 @@ void MarkerMemory::update(const Snapshot& snapshot, double video_time) {
     std::erase_if(markers_, [&](const Marker& m) { return video_time - m.born >= marker_seconds; });
 }
 
-void MarkerMemory::reset() noexcept {
-    markers_.clear();
-    last_time_.reset();
-}
-
 float MarkerMemory::opacity(const Marker& marker, double video_time) noexcept {
     const double age = video_time - marker.born;
     return static_cast<float>(std::clamp(1.0 - age / marker_seconds, 0.0, 1.0));

@@ -41,7 +41,6 @@ class MarkerMemory {
     /// a held time-driven state is not counted again) and forgets markers older than
     /// marker_seconds at `video_time`.
     void update(const Snapshot& snapshot, double video_time);
-    void reset() noexcept;
     /// Markers alive at the last update, oldest first.
     [[nodiscard]] const std::vector<Marker>& markers() const noexcept { return markers_; }
     /// Opacity in [0, 1] of a marker at `video_time` (1 when new, 0 after marker_seconds).
@@ -93,11 +92,11 @@ class FrameBuilder {
     void add_queue_strip(const Snapshot& snapshot, const QueueWords& words, RectF strip);
     void add_popped(const QueueView& queue, const QueueWords& words, double now, RectF area);
     void add_queue_tree(const QueueView& queue, const QueueWords& words, double now, RectF area);
-    void add_queue_row(const QueueView& queue, double now, RectF area);
+    void add_queue_row(const QueueView& queue, const QueueWords& words, double now, RectF area);
     void add_leaving_root(const QueueView& queue, const QueueWords& words, double now, PointF root,
                           float node_w, float node_h);
-    void add_queue_node(const QueuedEvent& event, double now, RectF node, Rgba8 frame_color,
-                        bool stale);
+    void add_queue_node(const QueuedEvent& event, const QueueWords& words, double now, RectF node,
+                        Rgba8 frame_color, bool stale);
     /// A label centred at `at` on a plate of the box colour, kept inside `inside`.
     void add_plate_label(Font font, PointF at, std::string_view text, Rgba8 color, RectF inside);
     [[nodiscard]] float pop_highlight(const QueuedEvent& popped, double now) const noexcept;

@@ -234,7 +234,7 @@ void FrameBuilder::add_queue_strip(const Snapshot& snapshot, const QueueWords& w
     if (queue.shape == QueueShape::heap) {
         add_queue_tree(queue, words, snapshot.time, right);
     } else {
-        add_queue_row(queue, snapshot.time, right);
+        add_queue_row(queue, words, snapshot.time, right);
     }
 }
 
@@ -248,7 +248,7 @@ void FrameBuilder::add_popped(const QueueView& queue, const QueueWords& words, d
         return TextSlot{TextRole::queue, -1, {area.x0, y, area.x1, y + line}, small.pixel_height()};
     };
     float y = area.y0;
-    draw_text(Font::small, slot(y), "Popped (newest first)", palette_.muted);
+    draw_text(Font::small, slot(y), words.popped_heading, palette_.muted);
     y += line;
     const float bottom = area.y1 - line;
     for (std::size_t k = queue.popped.size(); k-- > 0 && y + line <= bottom;) {
@@ -260,7 +260,7 @@ void FrameBuilder::add_popped(const QueueView& queue, const QueueWords& words, d
             text += words.stale_popped;
             color = faded(palette_.muted, 0.8F);
         } else {
-            text += e.kind == QueuedKind::cell ? "  crossing" : "  resolved";
+            text += e.kind == QueuedKind::cell ? words.crossing_popped : words.resolved_popped;
         }
         if (glow > 0.0F) {
             // Just removed: a plate in the highlight colour behind it, fading out.
@@ -282,8 +282,8 @@ float FrameBuilder::node_width(const std::vector<QueuedEvent>& events) const {
     return std::round(widest + 0.8F * small.pixel_height());
 }
 
-void FrameBuilder::add_queue_node(const QueuedEvent& event, double now, RectF node,
-                                  Rgba8 frame_color, bool stale) {
+void FrameBuilder::add_queue_node(const QueuedEvent& event, const QueueWords& words, double now,
+                                  RectF node, Rgba8 frame_color, bool stale) {
     const FontAtlas& small = *small_font_;
     list_.over.add_rect(node, palette_.box_fill);
     list_.over.add_frame(node, frame_color.a == 255 && !stale ? 2.0F : 1.0F, frame_color);
@@ -296,8 +296,8 @@ void FrameBuilder::add_queue_node(const QueuedEvent& event, double now, RectF no
     draw_text(
         Font::small,
         {TextRole::queue, -1, {node.x0, node.y0 + half, node.x1, node.y1}, small.pixel_height()},
-        stale ? "stale" : time_to_go(event.t - now), stale ? text : faded(palette_.text, 0.85F),
-        Align::centre);
+        stale ? std::string_view(words.stale_slot) : time_to_go(event.t - now),
+        stale ? text : faded(palette_.text, 0.85F), Align::centre);
 }
 
 // The event just popped, beside the root it was a moment ago, fading out with an arrow away
@@ -332,7 +332,7 @@ void FrameBuilder::add_leaving_root(const QueueView& queue, const QueueWords& wo
     draw_text(
         Font::small,
         {TextRole::queue, -1, {node.x0, node.y0 + half, node.x1, node.y1}, small.pixel_height()},
-        e.stale ? std::string_view(words.stale_leaving) : "popped", text, Align::centre);
+        e.stale ? words.stale_leaving : words.fresh_leaving, text, Align::centre);
 }
 
 // A heap's top levels: slot i's children are d i + 1 .. d i + d; the root (the next pop) framed
@@ -377,35 +377,31 @@ void FrameBuilder::add_queue_tree(const QueueView& queue, const QueueWords& word
                          std::round(c.x + 0.5F * node_w), std::round(c.y + 0.5F * node_h)};
         const Rgba8 frame =
             i == 0 ? next_color() : (e.stale ? faded(palette_.muted, 0.6F) : palette_.muted);
-        add_queue_node(e, now, node, frame, e.stale);
+        add_queue_node(e, words, now, node, frame, e.stale);
     }
     add_leaving_root(queue, words, now, centre.front(), node_w, node_h);
-    if (queue.size > queue.slots.size()) {
-        const std::string more = fmt::format(
-            "+{} below", with_separators(static_cast<long long>(queue.size - queue.slots.size())));
+    if (!words.below.empty()) {
         draw_text(Font::small,
                   {TextRole::queue,
                    -1,
                    {area.x1 - area.width() * 0.4F, area.y0, area.x1,
                     area.y0 + std::round(small.pixel_height() * 1.2F)},
                    small.pixel_height()},
-                  more, palette_.muted, Align::right);  // the left of the root is for pops
+                  words.below, palette_.muted, Align::right);  // the left of the root is for pops
     }
 }
 
 // An array queue's first slots in a row: the ordered array from its top (the next event first),
 // the unordered array as stored, with where its next event lies (every pop scans for it).
-void FrameBuilder::add_queue_row(const QueueView& queue, double now, RectF area) {
+void FrameBuilder::add_queue_row(const QueueView& queue, const QueueWords& words, double now,
+                                 RectF area) {
     const FontAtlas& small = *small_font_;
     const float line = std::round(small.pixel_height() * 1.2F);
     const bool ordered = queue.shape == QueueShape::ordered_array;
     draw_text(
         Font::small,
         {TextRole::queue, -1, {area.x0, area.y0, area.x1, area.y0 + line}, small.pixel_height()},
-        ordered ? "Sorted: the next event is at the end (shown first)"
-                : fmt::format("Stored as pushed; every pop scans for the earliest (slot {})",
-                              queue.top_index),
-        palette_.muted);
+        words.row_caption, palette_.muted);
     if (queue.slots.empty()) return;
     const float node_h = std::round(2.1F * small.pixel_height());
     const auto n = static_cast<float>(queue.slots.size());
@@ -417,7 +413,7 @@ void FrameBuilder::add_queue_row(const QueueView& queue, double now, RectF area)
         const bool next = ordered ? i == 0 : i == queue.top_index;
         const Rgba8 frame =
             next ? next_color() : (e.stale ? faded(palette_.muted, 0.6F) : palette_.muted);
-        add_queue_node(e, now, {x0, y0, x0 + node_w, y0 + node_h}, frame, e.stale);
+        add_queue_node(e, words, now, {x0, y0, x0 + node_w, y0 + node_h}, frame, e.stale);
     }
 }
 

@@ -18,6 +18,7 @@
 #include "gl_target.hpp"
 #include "heap_view_layout.hpp"
 #include "overlay_geometry.hpp"
+#include "theme.hpp"
 
 namespace collide::render {
 
@@ -114,12 +115,6 @@ MarkStyle style_of(view::SlotMark mark, const HeapPalette& palette) noexcept {
             return {{240, 170, 40, 255}, dark_text};
     }
     return {palette.slot, palette.title};
-}
-
-Rgba8 faded(Rgba8 c, float alpha) noexcept {
-    c.a = static_cast<std::uint8_t>(
-        std::lround(static_cast<float>(c.a) * std::clamp(alpha, 0.0F, 1.0F)));
-    return c;
 }
 
 PointF lerp(PointF a, PointF b, float t) noexcept {

@@ -172,6 +172,19 @@ QueueWords queue_words(const QueueView& queue) {
             ? fmt::format("{} pops, {} stale", separated(queue.pops), separated(queue.stale_pops))
             : fmt::format("{} of {} pops stale", separated(queue.stale_pops),
                           separated(queue.pops));
+    out.popped_heading = "Popped (newest first)";
+    out.resolved_popped = "  resolved";
+    out.crossing_popped = "  crossing";
+    out.stale_slot = "stale";
+    out.fresh_leaving = "popped";
+    if (queue.size > queue.slots.size())
+        out.below = fmt::format("+{} below", separated(queue.size - queue.slots.size()));
+    if (queue.shape == QueueShape::ordered_array) {
+        out.row_caption = "Sorted: the next event is at the end (shown first)";
+    } else if (queue.shape != QueueShape::heap) {
+        out.row_caption = fmt::format(
+            "Stored as pushed; every pop scans for the earliest (slot {})", queue.top_index);
+    }
     return out;
 }
 

@@ -7,7 +7,7 @@ namespace collide::sim {
 void QueueWatch::start(const QueueViewLimits& limits) {
     const std::size_t next_events = limits.next_events;
     if (next_events < 1 || next_events > max_watched_events) {
-        throw_scene_error("", 0, "--queue",
+        throw_scene_error("", 0, "queue",
                           "shows 1 to " + std::to_string(max_watched_events) +
                               " upcoming events, got " + std::to_string(next_events));
     }

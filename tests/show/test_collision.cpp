@@ -164,6 +164,28 @@ TEST_CASE("the queue strip's words: the fast engine re-predicts, the classic one
     CHECK(fast.counts == "40 pops, 3 stale");
 }
 
+TEST_CASE("the queue strip's fixed legends come from the words, the row caption by shape") {
+    QueueView q;
+    q.size = 1234;
+    q.slots.resize(7);
+    const QueueWords heap = queue_words(q);
+    CHECK(heap.popped_heading == "Popped (newest first)");
+    CHECK(heap.resolved_popped == "  resolved");
+    CHECK(heap.crossing_popped == "  crossing");
+    CHECK(heap.stale_slot == "stale");
+    CHECK(heap.fresh_leaving == "popped");
+    CHECK(heap.below == "+1,227 below");
+    CHECK(heap.row_caption.empty());  // a heap is drawn as a tree, no row
+    q.size = 7;
+    CHECK(queue_words(q).below.empty());  // every entry shown
+    q.shape = QueueShape::ordered_array;
+    CHECK(queue_words(q).row_caption == "Sorted: the next event is at the end (shown first)");
+    q.shape = QueueShape::unordered_array;
+    q.top_index = 4;
+    CHECK(queue_words(q).row_caption ==
+          "Stored as pushed; every pop scans for the earliest (slot 4)");
+}
+
 TEST_CASE("the queue picture's budget is the video's, the number of events the caller's") {
     const QueueViewLimits limits = queue_picture(7);
     CHECK(limits.next_events == 7);

@@ -57,8 +57,8 @@ class EngineBase {
     /// limits.next_events collisions, the queue's first slots as far as `limits` says and the
     /// events popped from now on. For teaching videos (`collide render --queue`); an engine never
     /// asked pays nothing measurable. Returns false, and does nothing, for an engine that has no
-    /// event queue (time-driven). Throws Error(input) naming `--queue` unless
-    /// 1 <= limits.next_events <= sim::max_watched_events.
+    /// event queue (time-driven). Throws Error(input) naming the field `queue` (the app maps it
+    /// to `--queue`) unless 1 <= limits.next_events <= sim::max_watched_events.
     virtual bool watch_queue(const QueueViewLimits& limits) {
         (void)limits;
         return false;

@@ -50,8 +50,8 @@ inline constexpr std::size_t watched_pops = 8;
 /// Whether a view was asked for, how many events it shows, and the latest pops (a ring).
 class QueueWatch {
   public:
-    /// Starts watching: later views carry what `limits` says. Throws Error(input) naming
-    /// `--queue` unless 1 <= limits.next_events <= max_watched_events.
+    /// Starts watching: later views carry what `limits` says. Throws Error(input) naming the
+    /// field `queue` (the app says `--queue`) unless 1 <= limits.next_events <= max_watched_events.
     void start(const QueueViewLimits& limits);
     [[nodiscard]] bool on() const noexcept { return limits_.next_events > 0; }
     [[nodiscard]] std::size_t next_events() const noexcept { return limits_.next_events; }

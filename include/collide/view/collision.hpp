@@ -25,11 +25,18 @@ struct Figure {
 /// engine holds one event per disc and re-predicts, the classic one throws stale events away
 /// (filled by show::queue_words from the snapshot's QueueView).
 struct QueueWords {
-    std::string heading;        ///< "Event queue: binary heap, 1,234 entries, 56 stale"
-    std::string legend;         ///< "In the box: the next 5 collisions queued, time to go"
-    std::string stale_popped;   ///< after a stale event in the list of pops
-    std::string stale_leaving;  ///< on a stale event leaving the root ("thrown away")
-    std::string counts;         ///< under the pops: "3 of 40 pops stale"
+    std::string heading;          ///< "Event queue: binary heap, 1,234 entries, 56 stale"
+    std::string legend;           ///< "In the box: the next 5 collisions queued, time to go"
+    std::string stale_popped;     ///< after a stale event in the list of pops
+    std::string stale_leaving;    ///< on a stale event leaving the root ("thrown away")
+    std::string counts;           ///< under the pops: "3 of 40 pops stale"
+    std::string popped_heading;   ///< over the pops: "Popped (newest first)"
+    std::string resolved_popped;  ///< after a collision in the list of pops ("  resolved")
+    std::string crossing_popped;  ///< after a cell crossing in the list of pops ("  crossing")
+    std::string stale_slot;       ///< under a stale event in the queue, for its time ("stale")
+    std::string fresh_leaving;    ///< on a valid event leaving the root ("popped")
+    std::string below;            ///< beside a heap's top levels: "+1,178 below" (or empty)
+    std::string row_caption;      ///< over an array queue's slots: where its next event is
 };
 
 /// One simulation shown in one panel.
