@@ -14,6 +14,7 @@
 
 #include "collide/box.hpp"
 #include "collide/disc.hpp"
+#include "collide/event_kind.hpp"
 #include "collide/vec2.hpp"
 
 namespace collide {
@@ -28,20 +29,12 @@ struct DiscState {
     bool escaped = false;  ///< time-driven only: entirely outside a walled box (tunnelled out)
 };
 
-/// What a queued event does (the engines' sim::EventKind, as the renderer may see it).
-enum class QueuedKind : std::uint8_t {
-    pair,   ///< discs a and b touch
-    xwall,  ///< disc a touches the left or right wall
-    ywall,  ///< disc a touches the bottom or top wall
-    cell,   ///< fast engine only: disc a's centre leaves its grid cell (bookkeeping, no collision)
-};
-
 /// One event in an engine's queue. Disc indices are the scene's (as in Snapshot::discs).
 struct QueuedEvent {
-    double t = 0.0;  ///< absolute simulation time the event was predicted for
-    QueuedKind kind = QueuedKind::pair;
-    std::uint32_t a = 0;  ///< the disc (pairs: the smaller index)
-    std::uint32_t b = 0;  ///< pairs: the other disc; otherwise unused
+    double t = 0.0;                    ///< absolute simulation time the event was predicted for
+    EventKind kind = EventKind::pair;  ///< never zwall: queue pictures are drawn in 2D
+    std::uint32_t a = 0;               ///< the disc (pairs: the smaller index)
+    std::uint32_t b = 0;               ///< pairs: the other disc; otherwise unused
     /// Invalidated since it was predicted (a disc involved has collided since): the classic loop
     /// throws it away when it pops it; the fast engine predicts the disc anew.
     bool stale = false;

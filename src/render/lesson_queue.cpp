@@ -24,12 +24,13 @@ constexpr Rgb8 next_event_light{185, 105, 0};
 /// "3-7", "5 wall", "5 cell": what an event involves, in the fewest characters.
 std::string event_label(const QueuedEvent& e) {
     switch (e.kind) {
-        case QueuedKind::pair:
+        case EventKind::pair:
             return fmt::format("{}-{}", e.a, e.b);
-        case QueuedKind::xwall:
-        case QueuedKind::ywall:
+        case EventKind::xwall:
+        case EventKind::ywall:
+        case EventKind::zwall:
             return fmt::format("{} wall", e.a);
-        case QueuedKind::cell:
+        case EventKind::cell:
             return fmt::format("{} cell", e.a);
     }
     return "?";
@@ -147,15 +148,14 @@ void LessonPainter::add_queue_in_box(const Snapshot& snapshot, const PanelLayout
         if (first) {
             // Rings around the discs of the next event.
             for (const std::uint32_t k : {e.a, e.b}) {
-                if (k >= snapshot.discs.size() || (k == e.b && e.kind != QueuedKind::pair))
-                    continue;
+                if (k >= snapshot.discs.size() || (k == e.b && e.kind != EventKind::pair)) continue;
                 const DiscState& disc = snapshot.discs[k];
                 const PointF c = panel.to_pixels(disc.position, box);
                 const auto radius = static_cast<float>(disc.radius * panel.scale);
                 list_.discs.push_back({c.x, c.y, radius + 0.8F * width, width, color});
             }
         }
-        if (e.kind == QueuedKind::pair) {
+        if (e.kind == EventKind::pair) {
             if (e.b >= snapshot.discs.size()) continue;
             // The nearest images (periodic boxes: the pair may meet across the seam, and then
             // the line is drawn from each disc to the seam, cut at the box).
@@ -174,10 +174,10 @@ void LessonPainter::add_queue_in_box(const Snapshot& snapshot, const PanelLayout
                 const Vec2 pb = snapshot.discs[e.b].position;
                 line(pb, pb - d);
             }
-        } else if (e.kind == QueuedKind::xwall || e.kind == QueuedKind::ywall) {
+        } else if (e.kind == EventKind::xwall || e.kind == EventKind::ywall) {
             // Where the disc's centre will be, and the wall point it touches.
             const Vec2 centre = a.position + a.velocity * dt;
-            const bool x = e.kind == QueuedKind::xwall;
+            const bool x = e.kind == EventKind::xwall;
             Vec2 hit = centre;
             if (x) hit.x = a.velocity.x > 0.0 ? box.width : 0.0;
             if (!x) hit.y = a.velocity.y > 0.0 ? box.height : 0.0;
@@ -261,7 +261,7 @@ void LessonPainter::add_popped(const QueueView& queue, const QueueWords& words, 
             text += words.stale_popped;
             color = faded(palette_.muted, 0.8F);
         } else {
-            text += e.kind == QueuedKind::cell ? words.crossing_popped : words.resolved_popped;
+            text += e.kind == EventKind::cell ? words.crossing_popped : words.resolved_popped;
         }
         if (glow > 0.0F) {
             // Just removed: a plate in the highlight colour behind it, fading out.

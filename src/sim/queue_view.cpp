@@ -50,7 +50,7 @@ std::size_t shown_tree_slots(std::size_t arity, unsigned levels, std::size_t siz
 
 void keep_next_collisions(std::vector<QueuedEvent>& events, std::size_t k) {
     std::erase_if(events,
-                  [](const QueuedEvent& e) { return e.stale || e.kind == QueuedKind::cell; });
+                  [](const QueuedEvent& e) { return e.stale || e.kind == EventKind::cell; });
     const auto earlier = [](const QueuedEvent& x, const QueuedEvent& y) {
         if (x.t != y.t) return x.t < y.t;
         if (x.kind != y.kind) return x.kind < y.kind;

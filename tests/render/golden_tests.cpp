@@ -131,16 +131,16 @@ QueueView classic_queue(double now) {
     q.stale_entries = 121;
     q.levels = 3;
     q.slots = {
-        {now + 0.05, QueuedKind::pair, 10, 13, true}, {now + 0.2, QueuedKind::pair, 0, 1},
-        {now + 0.1, QueuedKind::xwall, 2, 0},         {now + 0.3, QueuedKind::pair, 4, 5, true},
-        {now + 0.25, QueuedKind::ywall, 3, 0},        {now + 0.4, QueuedKind::pair, 6, 7},
-        {now + 0.15, QueuedKind::xwall, 8, 0, true}};
-    q.next = {{now + 0.1, QueuedKind::xwall, 2, 0},
-              {now + 0.2, QueuedKind::pair, 0, 1},
-              {now + 0.25, QueuedKind::ywall, 3, 0}};
-    q.popped = {{now - 0.5, QueuedKind::pair, 1, 4},
-                {now - 0.2, QueuedKind::ywall, 5, 0},
-                {now - 0.01, QueuedKind::pair, 3, 9, true}};
+        {now + 0.05, EventKind::pair, 10, 13, true}, {now + 0.2, EventKind::pair, 0, 1},
+        {now + 0.1, EventKind::xwall, 2, 0},         {now + 0.3, EventKind::pair, 4, 5, true},
+        {now + 0.25, EventKind::ywall, 3, 0},        {now + 0.4, EventKind::pair, 6, 7},
+        {now + 0.15, EventKind::xwall, 8, 0, true}};
+    q.next = {{now + 0.1, EventKind::xwall, 2, 0},
+              {now + 0.2, EventKind::pair, 0, 1},
+              {now + 0.25, EventKind::ywall, 3, 0}};
+    q.popped = {{now - 0.5, EventKind::pair, 1, 4},
+                {now - 0.2, EventKind::ywall, 5, 0},
+                {now - 0.01, EventKind::pair, 3, 9, true}};
     q.pops = 76;
     q.stale_pops = 37;
     return q;

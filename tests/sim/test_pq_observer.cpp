@@ -33,20 +33,20 @@ struct CountingLess {
     }
 };
 
-/// Replays a queue's events on a shadow array and checks them against the comparator's calls.
+/// Replays a queue's steps on a shadow array and checks them against the comparator's calls.
 struct Shadow {
     std::vector<int> a;
-    std::vector<QueueEvent> events;
+    std::vector<QueueStep> steps;
     std::vector<std::pair<int, int>> calls;
     std::size_t compares = 0;
     std::size_t exchanges = 0;
 
-    /// Applies and clears the events recorded since the last call.
+    /// Applies and clears the steps recorded since the last call.
     void replay() {
         std::size_t call = 0;
-        for (const QueueEvent& e : events) {
+        for (const QueueStep& e : steps) {
             switch (e.kind) {
-                case QueueEvent::Kind::compare: {
+                case QueueStep::Kind::compare: {
                     REQUIRE(call < calls.size());
                     REQUIRE(e.i < a.size());
                     REQUIRE(e.j < a.size());
@@ -61,25 +61,25 @@ struct Shadow {
                     ++compares;
                     break;
                 }
-                case QueueEvent::Kind::exchange:
-                case QueueEvent::Kind::shift:
+                case QueueStep::Kind::exchange:
+                case QueueStep::Kind::shift:
                     REQUIRE(e.i < a.size());
                     REQUIRE(e.j < a.size());
                     std::swap(a[e.i], a[e.j]);
                     ++exchanges;
                     break;
-                case QueueEvent::Kind::remove:
+                case QueueStep::Kind::remove:
                     REQUIRE(e.i + 1 == a.size());
                     a.pop_back();
                     break;
-                case QueueEvent::Kind::sink:
+                case QueueStep::Kind::sink:
                     break;
             }
         }
         // No compare went unreported. Validating builds (COLLIDE_VALIDATE) check the invariants
         // through the same comparator at the end of each mutation: those calls come last.
         if (!validate_heaps) CHECK(call == calls.size());
-        events.clear();
+        steps.clear();
         calls.clear();
     }
 };
@@ -118,7 +118,7 @@ void check_all_plain_queues() {
     const auto run = [](auto make, const char* name, std::uint64_t seed) {
         CAPTURE(name);
         Shadow shadow;
-        check_queue(make(CountingLess{&shadow.calls}, QueueRecorder(&shadow.events)), shadow, seed);
+        check_queue(make(CountingLess{&shadow.calls}, QueueRecorder(&shadow.steps)), shadow, seed);
     };
     run([](CountingLess l,
            QueueRecorder r) { return UnorderedArrayPQ<int, O, CountingLess, QueueRecorder>(l, r); },
@@ -147,7 +147,7 @@ void check_indexed(std::uint64_t seed) {
     Shadow shadow;
     constexpr std::size_t handles = 64;
     IndexedDaryHeap<int, O, D, CountingLess, void, QueueRecorder> q(
-        handles, CountingLess{&shadow.calls}, QueueRecorder(&shadow.events));
+        handles, CountingLess{&shadow.calls}, QueueRecorder(&shadow.steps));
     std::mt19937_64 rng(seed);
     std::vector<std::uint32_t> slot_handle;  // the handle in each shadow slot
     std::vector<std::uint32_t> free;
@@ -202,9 +202,9 @@ TEST_CASE("observer: heapsort reports every sink, compare and exchange") {
         Shadow shadow;
         std::vector<int> v = random_keys(n, 30, n);
         shadow.a = v;
-        heapsort(v.begin(), v.end(), CountingLess{&shadow.calls}, QueueRecorder(&shadow.events));
+        heapsort(v.begin(), v.end(), CountingLess{&shadow.calls}, QueueRecorder(&shadow.steps));
         std::size_t sinks = 0;
-        for (const QueueEvent& e : shadow.events) sinks += e.kind == QueueEvent::Kind::sink;
+        for (const QueueStep& e : shadow.steps) sinks += e.kind == QueueStep::Kind::sink;
         shadow.replay();
         CHECK(shadow.a == v);
         CHECK(std::is_sorted(v.begin(), v.end()));
@@ -216,7 +216,7 @@ TEST_CASE("observer: heapsort reports every sink, compare and exchange") {
 TEST_CASE("observer: a watched heap's lecture pop leaves the same array as the engines' pop") {
     const std::vector<int> keys = random_keys(2000, 100, 21);
     std::mt19937_64 rng(22);
-    std::vector<QueueEvent> log;
+    std::vector<QueueStep> log;
     DaryHeap<int, Orientation::max, 3> plain;
     DaryHeap<int, Orientation::max, 3, std::less<int>, QueueRecorder> watched(std::less<int>{},
                                                                               QueueRecorder(&log));

@@ -51,10 +51,10 @@ std::vector<CollisionRecord> events_until(Engine& engine, double t) {
 }
 
 bool same_collision(const QueuedEvent& e, const CollisionRecord& r) {
-    const bool kind = (e.kind == QueuedKind::pair && r.kind == CollisionKind::pair) ||
-                      (e.kind == QueuedKind::xwall && r.kind == CollisionKind::xwall) ||
-                      (e.kind == QueuedKind::ywall && r.kind == CollisionKind::ywall);
-    return kind && e.t == r.t && e.a == r.a && (e.kind != QueuedKind::pair || e.b == r.b);
+    const bool kind = (e.kind == EventKind::pair && r.kind == CollisionKind::pair) ||
+                      (e.kind == EventKind::xwall && r.kind == CollisionKind::xwall) ||
+                      (e.kind == EventKind::ywall && r.kind == CollisionKind::ywall);
+    return kind && e.t == r.t && e.a == r.a && (e.kind != EventKind::pair || e.b == r.b);
 }
 
 const std::vector<EngineOptions> every_queue = {classic_on("binary"),
@@ -111,7 +111,7 @@ TEST_CASE("queue view: the next events shown are the collisions that happen next
             CHECK(q.next.size() <= 4);
             for (std::size_t k = 0; k < q.next.size(); ++k) {
                 CHECK_FALSE(q.next[k].stale);
-                CHECK(q.next[k].kind != QueuedKind::cell);
+                CHECK(q.next[k].kind != EventKind::cell);
                 CHECK(q.next[k].t >= s.time);
                 if (k > 0) CHECK(q.next[k - 1].t <= q.next[k].t);
             }
@@ -236,9 +236,9 @@ TEST_CASE("queue view: tree levels keep the deepest level legible") {
 
 TEST_CASE("queue view: the next collisions drop stale entries, cell crossings and repeats") {
     std::vector<QueuedEvent> events = {
-        {0.5, QueuedKind::pair, 1, 2, false},       {0.1, QueuedKind::pair, 3, 4, true},
-        {0.2, QueuedKind::cell, 5, 0, false},       {0.3, QueuedKind::xwall, 6, 0, false},
-        {0.5000001, QueuedKind::pair, 1, 2, false}, {0.4, QueuedKind::ywall, 7, 0, false},
+        {0.5, EventKind::pair, 1, 2, false},       {0.1, EventKind::pair, 3, 4, true},
+        {0.2, EventKind::cell, 5, 0, false},       {0.3, EventKind::xwall, 6, 0, false},
+        {0.5000001, EventKind::pair, 1, 2, false}, {0.4, EventKind::ywall, 7, 0, false},
     };
     sim::keep_next_collisions(events, 5);
     REQUIRE(events.size() == 3);

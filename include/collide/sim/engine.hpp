@@ -21,7 +21,9 @@
 
 namespace collide {
 
-/// Kinds of collision, as written in `--events-log` (`pair`, `xwall`, `ywall`; 3D also `zwall`).
+/// What a resolved collision hit, as written in `--events-log` (`pair`, `xwall`, `ywall`; 3D also
+/// `zwall`). Narrower than EventKind (collide/event_kind.hpp), what a queued event does: a cell
+/// crossing is queued like a collision but never resolves as one, so a record cannot say `cell`.
 enum class CollisionKind : std::uint8_t { pair, xwall, ywall, zwall };
 
 /// One resolved collision. For walls b is unused (written empty in the CSV).

@@ -8,16 +8,9 @@
 #include <cstdint>
 #include <limits>
 
-namespace collide::sim {
+#include "collide/event_kind.hpp"
 
-/// What an event does. The order of the enumerators is the tie-break order at equal times.
-enum class EventKind : std::uint8_t {
-    pair = 0,   ///< two discs touch
-    xwall = 1,  ///< a disc touches the left or right wall
-    ywall = 2,  ///< a disc touches the bottom or top wall
-    zwall = 3,  ///< 3D only: a sphere touches the front or back wall
-    cell = 4,   ///< fast engine only: a centre leaves its grid cell (b = axis, 0 x / 1 y / 2 z)
-};
+namespace collide::sim {
 
 /// Marks "no disc" in 32-bit disc indices.
 inline constexpr std::uint32_t no_disc = std::numeric_limits<std::uint32_t>::max();

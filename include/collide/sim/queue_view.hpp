@@ -27,19 +27,10 @@ inline constexpr std::size_t max_watched_events = 20;
 /// Popped events a view carries (the latest ones).
 inline constexpr std::size_t watched_pops = 8;
 
-[[nodiscard]] constexpr QueuedKind queued_kind(EventKind kind) noexcept {
-    switch (kind) {
-        case EventKind::pair:
-            return QueuedKind::pair;
-        case EventKind::xwall:
-            return QueuedKind::xwall;
-        case EventKind::ywall:
-        case EventKind::zwall:  // 3D only; queue views are drawn in 2D
-            return QueuedKind::ywall;
-        case EventKind::cell:
-            break;
-    }
-    return QueuedKind::cell;
+/// The kind a queue picture shows: queue views are drawn in 2D, where a 3D engine's front or
+/// back wall (zwall) is shown as a wall of the y axis.
+[[nodiscard]] constexpr EventKind queued_kind(EventKind kind) noexcept {
+    return kind == EventKind::zwall ? EventKind::ywall : kind;
 }
 
 /// The classic engine's event as the view shows it.

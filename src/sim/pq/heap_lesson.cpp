@@ -70,19 +70,19 @@ class Replayer {
         add_step(LessonStep::Kind::change, i, i).from = changed_from_;
     }
 
-    void apply(const QueueEvent& e) {
+    void apply(const QueueStep& e) {
         switch (e.kind) {
-            case QueueEvent::Kind::compare:
+            case QueueStep::Kind::compare:
                 compare(e.i, e.j);
                 break;
-            case QueueEvent::Kind::exchange:
-            case QueueEvent::Kind::shift:
-                exchange(e.i, e.j, e.kind == QueueEvent::Kind::shift);
+            case QueueStep::Kind::exchange:
+            case QueueStep::Kind::shift:
+                exchange(e.i, e.j, e.kind == QueueStep::Kind::shift);
                 break;
-            case QueueEvent::Kind::remove:
+            case QueueStep::Kind::remove:
                 remove(e.i);
                 break;
-            case QueueEvent::Kind::sink:
+            case QueueStep::Kind::sink:
                 state_.heap_size = e.j;
                 add_step(LessonStep::Kind::sink, e.i, e.j);
                 break;
@@ -165,7 +165,7 @@ std::vector<std::string> texts(const auto& keys) {
 
 /// What every queue does for one panel, whatever its type: push, pop, the array, the record.
 template <class Q>
-void run_plain(Q q, std::vector<QueueEvent>& log, std::span<const LessonOp> ops, Replayer& replay) {
+void run_plain(Q q, std::vector<QueueStep>& log, std::span<const LessonOp> ops, Replayer& replay) {
     for (const LessonOp& op : ops) {
         replay.begin_op();
         std::string removed;
@@ -175,7 +175,7 @@ void run_plain(Q q, std::vector<QueueEvent>& log, std::span<const LessonOp> ops,
         } else {
             removed = q.pop().text();
         }
-        for (const QueueEvent& e : log) replay.apply(e);
+        for (const QueueStep& e : log) replay.apply(e);
         log.clear();
         const auto array = q.array();
         replay.end_op(texts(array), std::move(removed));
@@ -183,7 +183,7 @@ void run_plain(Q q, std::vector<QueueEvent>& log, std::span<const LessonOp> ops,
 }
 
 template <Orientation O, unsigned D>
-void run_indexed(std::vector<QueueEvent>& log, std::span<const LessonOp> ops, Replayer& replay) {
+void run_indexed(std::vector<QueueStep>& log, std::span<const LessonOp> ops, Replayer& replay) {
     using Heap = IndexedDaryHeap<TraceKey, O, D, std::less<TraceKey>, void, QueueRecorder>;
     std::size_t inserts = 0;
     for (const LessonOp& op : ops) inserts += op.kind == LessonOp::Kind::insert;
@@ -211,7 +211,7 @@ void run_indexed(std::vector<QueueEvent>& log, std::span<const LessonOp> ops, Re
             key_of[h] = op.new_key;
             heap.change_key(h, op.new_key);
         }
-        for (const QueueEvent& e : log) replay.apply(e);
+        for (const QueueStep& e : log) replay.apply(e);
         log.clear();
         std::vector<std::string> array;
         for (std::uint32_t h : heap.array()) array.push_back(heap.key(h).text());
@@ -222,7 +222,7 @@ void run_indexed(std::vector<QueueEvent>& log, std::span<const LessonOp> ops, Re
 template <Orientation O>
 void run_panel(const QueueKind& kind, std::span<const LessonOp> ops, std::string_view impl_field,
                Replayer& replay) {
-    std::vector<QueueEvent> log;
+    std::vector<QueueStep> log;
     const QueueRecorder rec(&log);
     using K = TraceKey;
     using L = std::less<TraceKey>;
@@ -438,7 +438,7 @@ LessonRecord LessonRecord::heapsort(std::span<const TraceKey> keys, Orientation 
 
     // The sort itself, recorded; split at the first exchange of the root with the end.
     std::vector<TraceKey> sorted(keys.begin(), keys.end());
-    std::vector<QueueEvent> log;
+    std::vector<QueueStep> log;
     const auto first_is_larger = [](const TraceKey& a, const TraceKey& b) { return b < a; };
     if (orientation == Orientation::max) {
         pq::heapsort(sorted.begin(), sorted.end(), std::less<TraceKey>{}, QueueRecorder(&log));
@@ -449,7 +449,7 @@ LessonRecord LessonRecord::heapsort(std::span<const TraceKey> keys, Orientation 
     const std::size_t n = keys.size();
     std::size_t split = log.size();
     for (std::size_t e = 1; e < log.size(); ++e) {
-        if (log[e].kind == QueueEvent::Kind::sink && log[e].j < n) {
+        if (log[e].kind == QueueStep::Kind::sink && log[e].j < n) {
             split = e - 1;
             break;
         }

@@ -40,37 +40,38 @@ concept QueueObserver = requires(Obs& o, std::size_t i) {
     o.sink_starts(i, i);  ///< heapsort: a sink of slot i in a heap of the first heap_size slots
 };
 
-/// One recorded event.
-struct QueueEvent {
+/// One recorded step of a queue's algorithm on its array (not an event of the simulation: those
+/// are sim::Event, and QueuedEvent in a queue's picture).
+struct QueueStep {
     enum class Kind { compare, exchange, shift, remove, sink };
     Kind kind = Kind::compare;
     std::size_t i = 0;  ///< compare/exchange: first slot; shift: from; remove/sink: the slot
     std::size_t j = 0;  ///< compare/exchange: second slot; shift: to; sink: the heap size
 
-    friend bool operator==(const QueueEvent&, const QueueEvent&) = default;
+    friend bool operator==(const QueueStep&, const QueueStep&) = default;
 };
 
-/// Appends every event to a log the caller owns (the log must outlive the recorder; copies of a
+/// Appends every step to a log the caller owns (the log must outlive the recorder; copies of a
 /// recorder append to the same log).
 class QueueRecorder {
   public:
     static constexpr bool watching = true;
 
-    explicit QueueRecorder(std::vector<QueueEvent>* log = nullptr) noexcept : log_(log) {}
+    explicit QueueRecorder(std::vector<QueueStep>* log = nullptr) noexcept : log_(log) {}
 
-    void compared(std::size_t i, std::size_t j) const { add(QueueEvent::Kind::compare, i, j); }
-    void exchanged(std::size_t i, std::size_t j) const { add(QueueEvent::Kind::exchange, i, j); }
-    void shifted(std::size_t from, std::size_t to) const { add(QueueEvent::Kind::shift, from, to); }
-    void removed(std::size_t i) const { add(QueueEvent::Kind::remove, i, 0); }
+    void compared(std::size_t i, std::size_t j) const { add(QueueStep::Kind::compare, i, j); }
+    void exchanged(std::size_t i, std::size_t j) const { add(QueueStep::Kind::exchange, i, j); }
+    void shifted(std::size_t from, std::size_t to) const { add(QueueStep::Kind::shift, from, to); }
+    void removed(std::size_t i) const { add(QueueStep::Kind::remove, i, 0); }
     void sink_starts(std::size_t i, std::size_t heap_size) const {
-        add(QueueEvent::Kind::sink, i, heap_size);
+        add(QueueStep::Kind::sink, i, heap_size);
     }
 
   private:
-    void add(QueueEvent::Kind kind, std::size_t i, std::size_t j) const {
+    void add(QueueStep::Kind kind, std::size_t i, std::size_t j) const {
         if (log_ != nullptr) log_->push_back({kind, i, j});
     }
-    std::vector<QueueEvent>* log_;
+    std::vector<QueueStep>* log_;
 };
 
 static_assert(QueueObserver<NoObserver>);
