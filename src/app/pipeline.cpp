@@ -158,7 +158,8 @@ PanelFrame FrameSource::describe(const Panel& panel) const {
     out.time_driven = panel.time_driven;
     out.words = show::panel_words(m, panel.time_driven,
                                   out.snapshot.box.boundary == Boundary::walls, drift);
-    if (out.snapshot.queue) out.queue_words = show::queue_words(*out.snapshot.queue);
+    if (out.snapshot.queue)
+        out.queue_words = show::queue_words(*out.snapshot.queue, out.snapshot.time);
     return out;
 }
 
@@ -171,7 +172,12 @@ std::vector<Measurements> FrameSource::measurements() const {
 // ------------------------------------------------------------------------------------------------
 // Render side
 
-FrameComposer::FrameComposer(const RenderPlan& plan) : plan_(plan) {}
+FrameComposer::FrameComposer(const RenderPlan& plan) : plan_(plan) {
+    // The colour scale is fixed for the whole video, and so are its words.
+    const render::RenderConfig& r = plan.render;
+    content_.color_key =
+        show::color_key(r.color_mode, r.speed_min, r.speed_max, r.mass_min, r.mass_max);
+}
 
 const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
     const LessonPlan& lesson = plan_.lesson;

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -100,7 +99,7 @@ void FullPainter::finish_frame(const FrameContent& frame) {
     const RectF drift{histogram.x1 + 2.0F * m, columns.y0, columns.x1, columns.y1};
 
     font.add_text(text, info.x0, info.y0 + font.ascent(), frame.time_text, palette_.title);
-    add_legend(info);
+    add_legend(info, frame.color_key);
     std::vector<const Snapshot*> snapshots;
     for (const PanelContent& panel : frame.panels) snapshots.push_back(panel.snapshot);
     // Each panel's series in its engine's accent, whichever panels the frame has.
@@ -114,17 +113,14 @@ void FullPainter::finish_frame(const FrameContent& frame) {
                   counter_color());
 }
 
-// Colour bar with its fixed range (speed or mass modes) or the tag key.
-void FullPainter::add_legend(RectF info) {
+// Colour bar with its fixed range (speed or mass modes) or the tag key, with the show's words.
+void FullPainter::add_legend(RectF info, const ColorKeyWords& words) {
     const FontAtlas& font = *body_font_;
     OverlayBatch& text = list_.text[0].glyphs;
     const Rgba8 counter = counter_color();
     const float line = font.line_height();
     float y = info.y0 + line * 1.3F;
     if (config_.color_mode == ColorMode::speed || config_.color_mode == ColorMode::mass) {
-        const bool speed = config_.color_mode == ColorMode::speed;
-        const double low = speed ? config_.speed_min : config_.mass_min;
-        const double high = speed ? config_.speed_max : config_.mass_max;
         const float bar_height = std::max(4.0F, std::round(line * 0.5F));
         constexpr int segments = 32;
         const float bar_width = info.width();
@@ -135,19 +131,15 @@ void FullPainter::add_legend(RectF info) {
             list_.over.add_rect({x0, y, x1 + 0.5F, y + bar_height}, with_alpha(c, 255));
         }
         y += bar_height + font.ascent();
-        char low_text[32];
-        char high_text[32];
-        std::snprintf(low_text, sizeof low_text, "%.3g", low);
-        std::snprintf(high_text, sizeof high_text, "%.3g", high);
-        font.add_text(text, info.x0, y, low_text, counter);
-        const std::string caption = speed ? "speed" : "mass (log)";
-        font.add_text(text, info.x0 + 0.5F * (bar_width - font.text_width(caption)), y, caption,
+        font.add_text(text, info.x0, y, words.low_value, counter);
+        font.add_text(text, info.x0 + 0.5F * (bar_width - font.text_width(words.quantity)), y,
+                      words.quantity, counter);
+        font.add_text(text, info.x1 - font.text_width(words.high_value), y, words.high_value,
                       counter);
-        font.add_text(text, info.x1 - font.text_width(high_text), y, high_text, counter);
     } else if (config_.color_mode == ColorMode::tag) {
         const float size = std::round(line * 0.6F);
         list_.over.add_rect({info.x0, y, info.x0 + size, y + size}, with_alpha(tagged_color, 255));
-        font.add_text(text, info.x0 + size * 1.5F, y + size, "tagged", counter);
+        font.add_text(text, info.x0 + size * 1.5F, y + size, words.tagged, counter);
     }
 }
 

@@ -23,7 +23,7 @@ class FullPainter : public MinimalPainter {
                         const PanelLayout& panel) override;
     void finish_frame(const FrameContent& frame) override;
 
-    void add_legend(RectF info);
+    void add_legend(RectF info, const ColorKeyWords& words);
     [[nodiscard]] int counter_rows(const FrameContent& frame) const;
     [[nodiscard]] Rgba8 counter_color() const noexcept;
     [[nodiscard]] int panel_counter_columns(std::size_t panels) const;

@@ -65,7 +65,7 @@ void LessonPainter::add_column(const FrameContent& frame) {
         }
     }
     if (const TextSlot* slot = layout_.slot(TextRole::legend)) {
-        // What the disc colours mean: the colormap from slow (light) to fast (heavy).
+        // What the disc colours mean: the colormap, its ends named (slow .. fast, light .. heavy).
         const RectF bar = layout_.column.legend_bar;
         constexpr int segments = 32;
         for (int s = 0; s < segments; ++s) {
@@ -74,9 +74,8 @@ void LessonPainter::add_column(const FrameContent& frame) {
             list_.over.add_rect({x0, bar.y0, x1 + 0.5F, bar.y1},
                                 with_alpha(shown_colormap((s + 0.5) / segments), 255));
         }
-        const bool speed = config_.color_mode == ColorMode::speed;
-        draw_text(Font::body, *slot, speed ? "slow" : "light", palette_.text);
-        draw_text(Font::body, *slot, speed ? "fast" : "heavy", palette_.text, Align::right);
+        draw_text(Font::body, *slot, frame.color_key.low, palette_.text);
+        draw_text(Font::body, *slot, frame.color_key.high, palette_.text, Align::right);
     }
     const RectF plot = layout_.column.plot;
     if (plot.width() <= 0.0F || plot.height() <= 0.0F) return;

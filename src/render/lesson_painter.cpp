@@ -105,7 +105,7 @@ void LessonPainter::add_marks(std::size_t index, const PanelContent& content,
                               const PanelLayout& panel) {
     const Snapshot& snapshot = *content.snapshot;
     if (snapshot.queue) {
-        add_queue_in_box(snapshot, panel);
+        add_queue_in_box(snapshot, content.queue_words, panel);
         if (layout_.queue_panel == static_cast<int>(index) && !intro_)
             add_queue_strip(snapshot, content.queue_words, layout_.queue_strip);
     }

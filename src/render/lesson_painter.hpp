@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -73,21 +74,23 @@ class LessonPainter : public Painter {
     void add_column(const FrameContent& frame);
     void add_intro(const FrameContent& frame);
     // The event queue (Snapshot::queue; lesson_queue.cpp).
-    void add_queue_in_box(const Snapshot& snapshot, const PanelLayout& panel);
+    void add_queue_in_box(const Snapshot& snapshot, const QueueWords& words,
+                          const PanelLayout& panel);
     void add_queue_strip(const Snapshot& snapshot, const QueueWords& words, RectF strip);
     void add_popped(const QueueView& queue, const QueueWords& words, double now, RectF area);
     void add_queue_tree(const QueueView& queue, const QueueWords& words, double now, RectF area);
-    void add_queue_row(const QueueView& queue, const QueueWords& words, double now, RectF area);
+    void add_queue_row(const QueueView& queue, const QueueWords& words, RectF area);
     void add_leaving_root(const QueueView& queue, const QueueWords& words, double now, PointF root,
                           float node_w, float node_h);
-    void add_queue_node(const QueuedEvent& event, const QueueWords& words, double now, RectF node,
+    /// A slot of the queue: the event's label over its time to go (or the stale word).
+    void add_queue_node(std::string_view label, std::string_view time, RectF node,
                         Rgba8 frame_color, bool stale);
     /// A label centred at `at` on a plate of the box colour, kept inside `inside`.
     void add_plate_label(Font font, PointF at, std::string_view text, Rgba8 color, RectF inside);
     [[nodiscard]] float pop_highlight(const QueuedEvent& popped, double now) const noexcept;
     [[nodiscard]] Rgba8 next_color() const noexcept;
-    /// A queue node as wide as the widest label among `events` (and a time to go).
-    [[nodiscard]] float node_width(const std::vector<QueuedEvent>& events) const;
+    /// A queue node as wide as the widest of `labels` (and a time to go).
+    [[nodiscard]] float node_width(const std::vector<std::string>& labels) const;
 
     std::vector<MarkerMemory> markers_;
     double video_time_ = 0.0;

@@ -1,9 +1,8 @@
 // The event queue inside the collision video (`collide render --queue`): the next collisions
 // drawn in the box, and a strip under the panel with the queue as what it is (a heap's top
 // levels as a tree, an array's first slots as a row), the latest pops (stale ones greyed) and
-// their counts. Everything comes from Snapshot::queue; nothing here knows the engines.
-#include <fmt/core.h>
-
+// their counts. The picture comes from Snapshot::queue, every word and number (the events'
+// labels and times to go too) from QueueWords (src/show); nothing here knows the engines.
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -21,27 +20,10 @@ namespace {
 constexpr Rgb8 next_event_dark{255, 196, 40};
 constexpr Rgb8 next_event_light{185, 105, 0};
 
-/// "3-7", "5 wall", "5 cell": what an event involves, in the fewest characters.
-std::string event_label(const QueuedEvent& e) {
-    switch (e.kind) {
-        case EventKind::pair:
-            return fmt::format("{}-{}", e.a, e.b);
-        case EventKind::xwall:
-        case EventKind::ywall:
-        case EventKind::zwall:
-            return fmt::format("{} wall", e.a);
-        case EventKind::cell:
-            return fmt::format("{} cell", e.a);
-    }
-    return "?";
-}
-
-/// Time to go, short: "0.42", "12.3", "3.1e-05".
-std::string time_to_go(double dt) {
-    if (dt < 0.0) dt = 0.0;
-    if (dt >= 0.01 && dt < 1000.0) return fmt::format("{:.3g}", dt);
-    if (dt == 0.0) return "0";
-    return fmt::format("{:.2g}", dt);
+/// The `i`th of a view's per-event words, empty where the view has fewer (a frame built by hand).
+const std::string& nth(const std::vector<std::string>& words, std::size_t i) {
+    static const std::string none;
+    return i < words.size() ? words[i] : none;
 }
 
 Rgba8 mix(Rgba8 a, Rgba8 b, float t) {
@@ -124,7 +106,8 @@ void LessonPainter::add_plate_label(Font font, PointF at, std::string_view text,
 
 // Lines between the discs of the next collisions, ticks on the walls, each with its time to go;
 // the next one thick and in the highlight colour, the later ones thinner and fainter.
-void LessonPainter::add_queue_in_box(const Snapshot& snapshot, const PanelLayout& panel) {
+void LessonPainter::add_queue_in_box(const Snapshot& snapshot, const QueueWords& words,
+                                     const PanelLayout& panel) {
     if (intro_) return;
     const QueueView& queue = *snapshot.queue;
     const Box& box = snapshot.box;
@@ -148,7 +131,8 @@ void LessonPainter::add_queue_in_box(const Snapshot& snapshot, const PanelLayout
         if (first) {
             // Rings around the discs of the next event.
             for (const std::uint32_t k : {e.a, e.b}) {
-                if (k >= snapshot.discs.size() || (k == e.b && e.kind != EventKind::pair)) continue;
+                if (k >= snapshot.discs.size() || (k == e.b && e.kind != EventKind::pair))
+                    continue;
                 const DiscState& disc = snapshot.discs[k];
                 const PointF c = panel.to_pixels(disc.position, box);
                 const auto radius = static_cast<float>(disc.radius * panel.scale);
@@ -206,8 +190,7 @@ void LessonPainter::add_queue_in_box(const Snapshot& snapshot, const PanelLayout
         if (!pending[r].second) continue;
         const bool first = r == 0;
         add_plate_label(first ? Font::body : Font::small, pending[r].first,
-                        time_to_go(queue.next[r].t - snapshot.time),
-                        first ? next_color() : palette_.text, inside);
+                        nth(words.next_times, r), first ? next_color() : palette_.text, inside);
     }
 }
 
@@ -235,7 +218,7 @@ void LessonPainter::add_queue_strip(const Snapshot& snapshot, const QueueWords& 
     if (queue.shape == QueueShape::heap) {
         add_queue_tree(queue, words, snapshot.time, right);
     } else {
-        add_queue_row(queue, words, snapshot.time, right);
+        add_queue_row(queue, words, right);
     }
 }
 
@@ -255,7 +238,7 @@ void LessonPainter::add_popped(const QueueView& queue, const QueueWords& words, 
     for (std::size_t k = queue.popped.size(); k-- > 0 && y + line <= bottom;) {
         const QueuedEvent& e = queue.popped[k];
         const float glow = pop_highlight(e, now);
-        std::string text = event_label(e);
+        std::string text = nth(words.popped_labels, k);
         Rgba8 color = palette_.text;
         if (e.stale) {
             text += words.stale_popped;
@@ -276,15 +259,15 @@ void LessonPainter::add_popped(const QueueView& queue, const QueueWords& words, 
     draw_text(Font::small, slot(bottom), words.counts, palette_.muted);
 }
 
-float LessonPainter::node_width(const std::vector<QueuedEvent>& events) const {
+float LessonPainter::node_width(const std::vector<std::string>& labels) const {
     const FontAtlas& small = *small_font_;
     float widest = small.text_width("0.0000");  // the longest time to go, "stale"
-    for (const QueuedEvent& e : events) widest = std::max(widest, small.text_width(event_label(e)));
+    for (const std::string& label : labels) widest = std::max(widest, small.text_width(label));
     return std::round(widest + 0.8F * small.pixel_height());
 }
 
-void LessonPainter::add_queue_node(const QueuedEvent& event, const QueueWords& words, double now,
-                                   RectF node, Rgba8 frame_color, bool stale) {
+void LessonPainter::add_queue_node(std::string_view label, std::string_view time, RectF node,
+                                   Rgba8 frame_color, bool stale) {
     const FontAtlas& small = *small_font_;
     list_.over.add_rect(node, palette_.box_fill);
     list_.over.add_frame(node, frame_color.a == 255 && !stale ? 2.0F : 1.0F, frame_color);
@@ -293,12 +276,11 @@ void LessonPainter::add_queue_node(const QueuedEvent& event, const QueueWords& w
     draw_text(
         Font::small,
         {TextRole::queue, -1, {node.x0, node.y0, node.x1, node.y0 + half}, small.pixel_height()},
-        event_label(event), text, Align::centre);
+        label, text, Align::centre);
     draw_text(
         Font::small,
         {TextRole::queue, -1, {node.x0, node.y0 + half, node.x1, node.y1}, small.pixel_height()},
-        stale ? std::string_view(words.stale_slot) : time_to_go(event.t - now),
-        stale ? text : faded(palette_.text, 0.85F), Align::centre);
+        time, stale ? text : faded(palette_.text, 0.85F), Align::centre);
 }
 
 // The event just popped, beside the root it was a moment ago, fading out with an arrow away
@@ -329,7 +311,7 @@ void LessonPainter::add_leaving_root(const QueueView& queue, const QueueWords& w
     draw_text(
         Font::small,
         {TextRole::queue, -1, {node.x0, node.y0, node.x1, node.y0 + half}, small.pixel_height()},
-        event_label(e), text, Align::centre);
+        nth(words.popped_labels, queue.popped.size() - 1), text, Align::centre);
     draw_text(
         Font::small,
         {TextRole::queue, -1, {node.x0, node.y0 + half, node.x1, node.y1}, small.pixel_height()},
@@ -350,7 +332,7 @@ void LessonPainter::add_queue_tree(const QueueView& queue, const QueueWords& wor
     std::size_t widest = 1;
     for (unsigned l = 1; l < queue.levels; ++l) widest *= d;
     const float cell_w = area.width() / static_cast<float>(widest);
-    const float node_w = std::min(node_width(queue.slots), cell_w - 3.0F);
+    const float node_w = std::min(node_width(words.slot_labels), cell_w - 3.0F);
     // Slot i sits at level l, position p within it; its centre is over its subtree's middle.
     std::vector<PointF> centre(queue.slots.size());
     std::size_t first = 0;
@@ -378,7 +360,8 @@ void LessonPainter::add_queue_tree(const QueueView& queue, const QueueWords& wor
                          std::round(c.x + 0.5F * node_w), std::round(c.y + 0.5F * node_h)};
         const Rgba8 frame =
             i == 0 ? next_color() : (e.stale ? faded(palette_.muted, 0.6F) : palette_.muted);
-        add_queue_node(e, words, now, node, frame, e.stale);
+        add_queue_node(nth(words.slot_labels, i),
+                       e.stale ? words.stale_slot : nth(words.slot_times, i), node, frame, e.stale);
     }
     add_leaving_root(queue, words, now, centre.front(), node_w, node_h);
     if (!words.below.empty()) {
@@ -394,8 +377,7 @@ void LessonPainter::add_queue_tree(const QueueView& queue, const QueueWords& wor
 
 // An array queue's first slots in a row: the ordered array from its top (the next event first),
 // the unordered array as stored, with where its next event lies (every pop scans for it).
-void LessonPainter::add_queue_row(const QueueView& queue, const QueueWords& words, double now,
-                                  RectF area) {
+void LessonPainter::add_queue_row(const QueueView& queue, const QueueWords& words, RectF area) {
     const FontAtlas& small = *small_font_;
     const float line = std::round(small.pixel_height() * 1.2F);
     const bool ordered = queue.shape == QueueShape::ordered_array;
@@ -406,7 +388,7 @@ void LessonPainter::add_queue_row(const QueueView& queue, const QueueWords& word
     if (queue.slots.empty()) return;
     const float node_h = std::round(2.1F * small.pixel_height());
     const auto n = static_cast<float>(queue.slots.size());
-    const float node_w = std::min(node_width(queue.slots), area.width() / n - 3.0F);
+    const float node_w = std::min(node_width(words.slot_labels), area.width() / n - 3.0F);
     const float y0 = std::round(area.y0 + line + 0.5F * (area.height() - line - node_h));
     for (std::size_t i = 0; i < queue.slots.size(); ++i) {
         const QueuedEvent& e = queue.slots[i];
@@ -414,7 +396,9 @@ void LessonPainter::add_queue_row(const QueueView& queue, const QueueWords& word
         const bool next = ordered ? i == 0 : i == queue.top_index;
         const Rgba8 frame =
             next ? next_color() : (e.stale ? faded(palette_.muted, 0.6F) : palette_.muted);
-        add_queue_node(e, words, now, {x0, y0, x0 + node_w, y0 + node_h}, frame, e.stale);
+        add_queue_node(nth(words.slot_labels, i),
+                       e.stale ? words.stale_slot : nth(words.slot_times, i),
+                       {x0, y0, x0 + node_w, y0 + node_h}, frame, e.stale);
     }
 }
 

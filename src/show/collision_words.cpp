@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <string>
 
 #include "collide/number_text.hpp"
 #include "collide/show/collision.hpp"
@@ -143,6 +145,31 @@ PanelWords panel_words(const Measurements& m, bool time_driven, bool walls, doub
     return out;
 }
 
+ColorKeyWords color_key(ColorMode mode, double speed_min, double speed_max, double mass_min,
+                        double mass_max) {
+    // Three significant digits, as printf's %.3g writes them ("1.5", "0.001", "1e+04").
+    const auto value = [](double v) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.3g", v);
+        return std::string(text);
+    };
+    ColorKeyWords out;
+    switch (mode) {
+        case ColorMode::speed:
+            out = {"slow", "fast", "speed", value(speed_min), value(speed_max), ""};
+            break;
+        case ColorMode::mass:
+            out = {"light", "heavy", "mass (log)", value(mass_min), value(mass_max), ""};
+            break;
+        case ColorMode::tag:
+            out.tagged = "tagged";
+            break;
+        case ColorMode::scene:
+            break;
+    }
+    return out;
+}
+
 QueueViewLimits queue_picture(std::size_t next_events) noexcept {
     QueueViewLimits limits;
     limits.next_events = next_events;
@@ -152,7 +179,34 @@ QueueViewLimits queue_picture(std::size_t next_events) noexcept {
     return limits;
 }
 
-QueueWords queue_words(const QueueView& queue) {
+namespace {
+
+/// "3-7", "5 wall", "5 cell": what an event involves, in the fewest characters.
+std::string event_label(const QueuedEvent& e) {
+    switch (e.kind) {
+        case EventKind::pair:
+            return fmt::format("{}-{}", e.a, e.b);
+        case EventKind::xwall:
+        case EventKind::ywall:
+        case EventKind::zwall:
+            return fmt::format("{} wall", e.a);
+        case EventKind::cell:
+            return fmt::format("{} cell", e.a);
+    }
+    return "?";
+}
+
+/// Time to go, short: "0.42", "12.3", "3.1e-05".
+std::string time_to_go(double dt) {
+    if (dt < 0.0) dt = 0.0;
+    if (dt >= 0.01 && dt < 1000.0) return fmt::format("{:.3g}", dt);
+    if (dt == 0.0) return "0";
+    return fmt::format("{:.2g}", dt);
+}
+
+}  // namespace
+
+QueueWords queue_words(const QueueView& queue, double now) {
     const auto separated = [](std::uint64_t n) {
         return with_separators(static_cast<long long>(n));
     };
@@ -185,6 +239,12 @@ QueueWords queue_words(const QueueView& queue) {
         out.row_caption = fmt::format(
             "Stored as pushed; every pop scans for the earliest (slot {})", queue.top_index);
     }
+    for (const QueuedEvent& e : queue.next) out.next_times.push_back(time_to_go(e.t - now));
+    for (const QueuedEvent& e : queue.slots) {
+        out.slot_labels.push_back(event_label(e));
+        out.slot_times.push_back(time_to_go(e.t - now));
+    }
+    for (const QueuedEvent& e : queue.popped) out.popped_labels.push_back(event_label(e));
     return out;
 }
 

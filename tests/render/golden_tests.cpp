@@ -84,6 +84,8 @@ TEST_CASE("golden: two panels with overlays, speed colours and failure markers")
     frame.energy_drift = {{{0.0, 0.0}, {1.0, 0.01}, {2.0, 0.03}},
                           {{0.0, 0.0}, {1.0, 0.0}, {2.0, 0.0}}};
     frame.notes = {"red halo: overlap"};
+    frame.color_key = show::color_key(config.color_mode, config.speed_min, config.speed_max,
+                                      config.mass_min, config.mass_max);
     check_against_golden(renderer.render(frame), "two_panels_speed");
 }
 
@@ -164,7 +166,7 @@ FrameContent queue_frame(const Snapshot& left, const Snapshot& right) {
     frame.panels[0].figures = {{"0", "missed", true}};
     frame.panels[1].figures = {{"39", "collisions", false}};
     // The queue strip's words, as the collision video's program writes them.
-    if (right.queue) frame.panels[1].queue_words = show::queue_words(*right.queue);
+    if (right.queue) frame.panels[1].queue_words = show::queue_words(*right.queue, right.time);
     frame.time_text = "t = 2.000";
     frame.speed = 1.0;
     frame.video_time = 2.0;

@@ -152,13 +152,13 @@ TEST_CASE("the queue strip's words: the fast engine re-predicts, the classic one
     q.next.resize(5);
     q.pops = 40;
     q.stale_pops = 3;
-    const QueueWords classic = queue_words(q);
+    const QueueWords classic = queue_words(q, 0.0);
     CHECK(classic.heading == "Event queue: binary heap, 1,234 entries, 56 stale");
     CHECK(classic.legend == "In the box: the next 5 collisions queued, time to go");
     CHECK(classic.stale_popped == "  stale: thrown away");
     CHECK(classic.counts == "3 of 40 pops stale");
     q.one_per_disc = true;
-    const QueueWords fast = queue_words(q);
+    const QueueWords fast = queue_words(q, 0.0);
     CHECK(fast.heading == "Event queue: binary heap, 1,234 entries (one per disc)");
     CHECK(fast.stale_popped == "  stale: re-predict");
     CHECK(fast.counts == "40 pops, 3 stale");
@@ -168,7 +168,7 @@ TEST_CASE("the queue strip's fixed legends come from the words, the row caption 
     QueueView q;
     q.size = 1234;
     q.slots.resize(7);
-    const QueueWords heap = queue_words(q);
+    const QueueWords heap = queue_words(q, 0.0);
     CHECK(heap.popped_heading == "Popped (newest first)");
     CHECK(heap.resolved_popped == "  resolved");
     CHECK(heap.crossing_popped == "  crossing");
@@ -177,13 +177,64 @@ TEST_CASE("the queue strip's fixed legends come from the words, the row caption 
     CHECK(heap.below == "+1,227 below");
     CHECK(heap.row_caption.empty());  // a heap is drawn as a tree, no row
     q.size = 7;
-    CHECK(queue_words(q).below.empty());  // every entry shown
+    CHECK(queue_words(q, 0.0).below.empty());  // every entry shown
     q.shape = QueueShape::ordered_array;
-    CHECK(queue_words(q).row_caption == "Sorted: the next event is at the end (shown first)");
+    CHECK(queue_words(q, 0.0).row_caption == "Sorted: the next event is at the end (shown first)");
     q.shape = QueueShape::unordered_array;
     q.top_index = 4;
-    CHECK(queue_words(q).row_caption ==
+    CHECK(queue_words(q, 0.0).row_caption ==
           "Stored as pushed; every pop scans for the earliest (slot 4)");
+}
+
+TEST_CASE("the queue strip's event labels and times to go are the show's, in the view's order") {
+    QueueView q;
+    QueuedEvent pair;
+    pair.kind = EventKind::pair;
+    pair.a = 17;
+    pair.b = 18;
+    pair.t = 10.42;
+    QueuedEvent wall = pair;
+    wall.kind = EventKind::ywall;
+    wall.a = 5;
+    wall.t = 10.0 + 3.1e-5;
+    QueuedEvent cell = pair;
+    cell.kind = EventKind::cell;
+    cell.a = 9;
+    cell.t = 9.0;  // already past: no negative time to go
+    q.next = {pair, wall};
+    q.slots = {wall, pair, cell};
+    q.popped = {cell, pair};
+    const QueueWords words = queue_words(q, 10.0);
+    CHECK(words.next_times == std::vector<std::string>{"0.42", "3.1e-05"});
+    CHECK(words.slot_labels == std::vector<std::string>{"5 wall", "17-18", "9 cell"});
+    CHECK(words.slot_times == std::vector<std::string>{"3.1e-05", "0.42", "0"});
+    CHECK(words.popped_labels == std::vector<std::string>{"9 cell", "17-18"});
+    q.slots[0].kind = EventKind::xwall;
+    q.slots[0].t = 10.0 + 123.456;
+    CHECK(queue_words(q, 10.0).slot_labels.front() == "5 wall");
+    CHECK(queue_words(q, 10.0).slot_times.front() == "123");
+}
+
+TEST_CASE("the colour key names the colour scale's ends and range in the mode's words") {
+    const ColorKeyWords speed = color_key(ColorMode::speed, 0.0, 1.5, 1.0, 1.0);
+    CHECK(speed.low == "slow");
+    CHECK(speed.high == "fast");
+    CHECK(speed.quantity == "speed");
+    CHECK(speed.low_value == "0");
+    CHECK(speed.high_value == "1.5");
+    CHECK(speed.tagged.empty());
+    const ColorKeyWords mass = color_key(ColorMode::mass, 0.0, 1.5, 0.001, 12345.0);
+    CHECK(mass.low == "light");
+    CHECK(mass.high == "heavy");
+    CHECK(mass.quantity == "mass (log)");
+    CHECK(mass.low_value == "0.001");
+    CHECK(mass.high_value == "1.23e+04");
+    const ColorKeyWords tag = color_key(ColorMode::tag, 0.0, 1.5, 1.0, 1.0);
+    CHECK(tag.tagged == "tagged");
+    CHECK(tag.quantity.empty());
+    const ColorKeyWords scene = color_key(ColorMode::scene, 0.0, 1.5, 1.0, 1.0);
+    CHECK(scene.low.empty());
+    CHECK(scene.tagged.empty());
 }
 
 TEST_CASE("the queue picture's budget is the video's, the number of events the caller's") {

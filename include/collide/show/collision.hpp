@@ -125,6 +125,12 @@ struct CaptionSource {
 [[nodiscard]] std::vector<CaptionSource> captions_shown(const LessonPlan& lesson,
                                                         const std::string& scene_caption_at);
 
+/// The colour key's words for a colour mode: the speed or mass range (the video's fixed colour
+/// scale) under the full level's bar, "slow".."fast" or "light".."heavy" at the lesson's, and
+/// "tagged" beside the tag key. Scene colours need no key (all empty).
+[[nodiscard]] ColorKeyWords color_key(ColorMode mode, double speed_min, double speed_max,
+                                      double mass_min, double mass_max);
+
 /// The queue picture's budget (`--queue K`): what fits legibly in a strip under a 720p video.
 /// A heap's tree down to the deepest level with at most 8 nodes and at most 3 levels, an array
 /// queue's first 10 slots, and the next `next_events` collisions in the box.
@@ -133,8 +139,9 @@ inline constexpr unsigned queue_tree_levels = 3;
 inline constexpr std::size_t queue_array_slots = 10;
 [[nodiscard]] QueueViewLimits queue_picture(std::size_t next_events) noexcept;
 
-/// The queue strip's words for `queue`: the fast engine (one event per disc) re-predicts a
-/// stale event, the classic engine throws it away.
-[[nodiscard]] QueueWords queue_words(const QueueView& queue);
+/// The queue strip's words for `queue` at simulation time `now` (the snapshot's): the fast engine
+/// (one event per disc) re-predicts a stale event, the classic engine throws it away; each event
+/// shown gets its label ("3-7", "5 wall") and its time to go from `now`.
+[[nodiscard]] QueueWords queue_words(const QueueView& queue, double now);
 
 }  // namespace collide::show

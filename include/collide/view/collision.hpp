@@ -23,7 +23,8 @@ struct Figure {
 
 /// The words of the queue strip (`--queue`) that say how the engine treats its queue: the fast
 /// engine holds one event per disc and re-predicts, the classic one throws stale events away
-/// (filled by show::queue_words from the snapshot's QueueView).
+/// (filled by show::queue_words from the snapshot's QueueView), and the label and time to go of
+/// every event it draws.
 struct QueueWords {
     std::string heading;          ///< "Event queue: binary heap, 1,234 entries, 56 stale"
     std::string legend;           ///< "In the box: the next 5 collisions queued, time to go"
@@ -37,6 +38,24 @@ struct QueueWords {
     std::string fresh_leaving;    ///< on a valid event leaving the root ("popped")
     std::string below;            ///< beside a heap's top levels: "+1,178 below" (or empty)
     std::string row_caption;      ///< over an array queue's slots: where its next event is
+    // Each event shown, in the order of the QueueView's lists: what it involves ("3-7",
+    // "5 wall", "5 cell") and its time to go at the snapshot's time ("0.42", "3.1e-05").
+    std::vector<std::string> next_times;     ///< in the box: one per QueueView::next
+    std::vector<std::string> slot_labels;    ///< one per QueueView::slots
+    std::vector<std::string> slot_times;     ///< one per QueueView::slots
+    std::vector<std::string> popped_labels;  ///< one per QueueView::popped
+};
+
+/// What the disc colours mean, in words (filled by show::color_key from the colour mode and its
+/// range): the lesson column's colour bar has its ends named, the full level's strip its range
+/// under the bar, or its key of tagged discs. An empty string draws nothing.
+struct ColorKeyWords {
+    std::string low;         ///< lesson: at the bar's left end ("slow", "light")
+    std::string high;        ///< lesson: at the bar's right end ("fast", "heavy")
+    std::string quantity;    ///< full: under the bar's middle ("speed", "mass (log)")
+    std::string low_value;   ///< full: under the bar's left end, the range's low ("0")
+    std::string high_value;  ///< full: under the bar's right end, the range's high ("1.5")
+    std::string tagged;      ///< full, tag colours: beside the key's swatch ("tagged")
 };
 
 /// One simulation shown in one panel.
@@ -81,6 +100,7 @@ struct FrameContent {
     std::string caption;             ///< lesson level: the caption line at the bottom
     std::string energy_line;         ///< lesson level: "Energy conserved" (empty: the drift plot)
     std::string cost_heading = "Work so far";
+    ColorKeyWords color_key;  ///< what the disc colours mean (colour bar or tag key)
     double video_time = 0.0;  ///< seconds of video at this frame: failure markers fade by it
     /// Simulation time per second of video (0: unknown). A panel's queue (Snapshot::queue) keeps
     /// a popped event highlighted for queue_pop_seconds of video by it.
