@@ -46,77 +46,6 @@ std::size_t max_legible_keys(std::size_t panels) noexcept {
 
 namespace {
 
-// ---------------------------------------------------------------------------------------------
-// Colours: the collision video's themes; highlights chosen to stay apart for colour-blind
-// viewers (amber / blue / green / purple / red differ in lightness too), the same in both themes
-// (their text is chosen against the highlight, not the page).
-
-struct HeapPalette {
-    Rgba8 background;
-    Rgba8 panel;
-    Rgba8 title;
-    Rgba8 counter;
-    Rgba8 caption;
-    Rgba8 edge;
-    Rgba8 slot;          ///< a plain slot's fill
-    Rgba8 slot_outline;  ///< around a slot holding a key
-    Rgba8 empty;         ///< outlines of the capacity's empty places (nodes and slots)
-    Rgba8 node;          ///< a plain node's fill
-    Rgba8 index;
-    Rgba8 node_outline;
-    Rgba8 sorted_fill;
-    Rgba8 sorted_text;
-    Rgba8 token_done;
-    Rgba8 token_todo;
-    Rgba8 map_header;
-};
-
-HeapPalette heap_palette(Theme theme) noexcept {
-    if (theme == Theme::light) {
-        return {{236, 236, 240, 255}, {255, 255, 255, 255}, {10, 10, 15, 255},
-                {55, 55, 65, 255},    {20, 20, 25, 255},    {150, 152, 170, 255},
-                {226, 229, 238, 255}, {85, 88, 105, 255},   {195, 197, 210, 255},
-                {214, 218, 230, 255}, {80, 82, 98, 255},    {40, 40, 50, 255},
-                {205, 207, 216, 255}, {95, 97, 110, 255},   {35, 35, 45, 255},
-                {150, 152, 165, 255}, {75, 77, 95, 255}};
-    }
-    return {{22, 22, 28, 255},    {32, 34, 44, 255},    {245, 245, 245, 255}, {190, 190, 200, 255},
-            {255, 255, 255, 255}, {105, 108, 128, 255}, {52, 56, 74, 255},    {150, 152, 170, 255},
-            {70, 72, 90, 255},    {58, 62, 84, 255},    {165, 168, 185, 255}, {215, 215, 225, 255},
-            {40, 43, 55, 255},    {150, 152, 165, 255}, {200, 200, 210, 255}, {110, 112, 128, 255},
-            {170, 172, 190, 255}};
-}
-
-constexpr Rgba8 token_now_fill{240, 170, 40, 255};
-constexpr Rgba8 dark_text{20, 20, 24, 255};
-
-struct MarkStyle {
-    Rgba8 fill;
-    Rgba8 text;
-};
-
-MarkStyle style_of(view::SlotMark mark, const HeapPalette& palette) noexcept {
-    switch (mark) {
-        case view::SlotMark::plain:
-            return {palette.slot, palette.title};
-        case view::SlotMark::compared:
-            return {{240, 170, 40, 255}, dark_text};
-        case view::SlotMark::moving:
-            return {{70, 145, 240, 255}, {255, 255, 255, 255}};
-        case view::SlotMark::inserted:
-            return {{70, 185, 100, 255}, dark_text};
-        case view::SlotMark::changed:
-            return {{175, 110, 230, 255}, {255, 255, 255, 255}};
-        case view::SlotMark::best:
-            return {{40, 175, 175, 255}, dark_text};
-        case view::SlotMark::leaving:
-            return {{225, 70, 70, 255}, {255, 255, 255, 255}};
-        case view::SlotMark::sinking:
-            return {{240, 170, 40, 255}, dark_text};
-    }
-    return {palette.slot, palette.title};
-}
-
 PointF lerp(PointF a, PointF b, float t) noexcept {
     return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t};
 }
@@ -296,8 +225,8 @@ struct HeapRenderer::Impl {
                 const float pad = 0.3F * f.pixel_height();
                 under.add_rect({x - pad, baseline - 1.05F * f.pixel_height(), x + widths[i] + pad,
                                 baseline + 0.35F * f.pixel_height()},
-                               token_now_fill);
-                color = dark_text;
+                               heap_token_now_fill);
+                color = highlight_dark_text;
             }
             text(f, x, baseline, frame.tokens[i], color);
             x += widths[i] + gap;
@@ -467,7 +396,7 @@ struct HeapRenderer::Impl {
                              p.slots[parent].mark == p.slots[i].mark &&
                              p.slots[i].mark != view::SlotMark::leaving;
             under.add_line(g.nodes[parent], g.nodes[i], lit ? 2.2F * edge_w : edge_w,
-                           lit ? style_of(p.slots[i].mark, colors).fill : colors.edge);
+                           lit ? heap_mark_style(p.slots[i].mark, colors).fill : colors.edge);
         }
         // Empty places of the capacity, faint, so the shape of a full tree shows.
         for (std::size_t i = in_tree; i < g.nodes.size(); ++i) {
@@ -488,7 +417,7 @@ struct HeapRenderer::Impl {
 
     void draw_node(const view::HeapSlotView& s, PointF c, float radius, float alpha,
                    const FontAtlas& f) {
-        const MarkStyle style = style_of(s.mark, colors);
+        const MarkStyle style = heap_mark_style(s.mark, colors);
         const Rgba8 fill = s.mark == view::SlotMark::plain ? colors.node : style.fill;
         add_node({c.x, c.y, radius, 0.0F, faded(fill, alpha)});
         add_node(
@@ -509,7 +438,7 @@ struct HeapRenderer::Impl {
             Rgba8 fill = colors.background;
             if (i < p.slots.size()) {
                 const view::SlotMark m = p.slots[i].mark;
-                fill = i >= p.heap_size ? colors.sorted_fill : style_of(m, colors).fill;
+                fill = i >= p.heap_size ? colors.sorted_fill : heap_mark_style(m, colors).fill;
                 if (m == view::SlotMark::inserted || m == view::SlotMark::leaving)
                     fill = faded(fill, p.fade);
                 if (p.swap && (i == p.swap->a || i == p.swap->b)) fill = colors.slot;  // tile away
@@ -524,7 +453,7 @@ struct HeapRenderer::Impl {
         for (std::size_t i = 0; i < p.slots.size(); ++i) {
             PointF c = slot_centre(g, p, i);
             const view::SlotMark m = p.slots[i].mark;
-            Rgba8 color = i >= p.heap_size ? colors.sorted_text : style_of(m, colors).text;
+            Rgba8 color = i >= p.heap_size ? colors.sorted_text : heap_mark_style(m, colors).text;
             if (p.swap && (i == p.swap->a || i == p.swap->b)) {
                 const std::size_t other = i == p.swap->a ? p.swap->b : p.swap->a;
                 // Over the row clear of its keys; under it only as far as the reserved room.
@@ -534,7 +463,7 @@ struct HeapRenderer::Impl {
                 c.y += arc;
                 const RectF tile{c.x - 0.46F * s, c.y - 0.46F * s, c.x + 0.46F * s,
                                  c.y + 0.46F * s};
-                under.add_rect(tile, style_of(view::SlotMark::moving, colors).fill);
+                under.add_rect(tile, heap_mark_style(view::SlotMark::moving, colors).fill);
                 under.add_frame(tile, outline, colors.node_outline);
             }
             centred(f, c, p.slots[i].key, faded(color, alpha_of(p, m)));
@@ -565,11 +494,12 @@ struct HeapRenderer::Impl {
             if (row.updated) {
                 under.add_rect({x - 0.45F * g.slot_size, index_y - 0.5F * f.line_height(),
                                 x + 0.45F * g.slot_size, index_y + 0.5F * f.line_height()},
-                               style_of(view::SlotMark::moving, colors).fill);
+                               heap_mark_style(view::SlotMark::moving, colors).fill);
             }
             centred(f, {x, key_y}, row.key, colors.title);
-            centred(f, {x, index_y}, row.index,
-                    row.updated ? Rgba8{255, 255, 255, 255} : colors.index);
+            centred(
+                f, {x, index_y}, row.index,
+                row.updated ? heap_mark_style(view::SlotMark::moving, colors).text : colors.index);
         }
     }
 

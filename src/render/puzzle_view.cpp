@@ -14,6 +14,7 @@
 #include "draw_list.hpp"
 #include "font.hpp"
 #include "gl_target.hpp"
+#include "theme.hpp"
 
 namespace collide::render {
 
@@ -31,23 +32,6 @@ void PuzzleViewConfig::validate() const {
 
 namespace {
 
-// The collision video's dark theme. Tiles are light with dark numbers (the most legible pair at
-// a distance); highlights differ in lightness as well as hue, for colour-blind viewers.
-constexpr Rgba8 background_color{22, 22, 28, 255};
-constexpr Rgba8 panel_color{32, 34, 44, 255};
-constexpr Rgba8 title_color{245, 245, 245, 255};
-constexpr Rgba8 counter_color{200, 200, 210, 255};
-constexpr Rgba8 status_color{240, 190, 80, 255};
-constexpr Rgba8 label_color{175, 178, 195, 255};
-constexpr Rgba8 edge_color{105, 108, 128, 255};
-constexpr Rgba8 tile_color{222, 224, 232, 255};
-constexpr Rgba8 tile_text{24, 24, 30, 255};
-constexpr Rgba8 blank_color{48, 50, 64, 255};
-constexpr Rgba8 sliding_tile{240, 170, 40, 255};
-constexpr Rgba8 current_mark{240, 170, 40, 255};
-constexpr Rgba8 goal_mark{80, 200, 110, 255};
-constexpr Rgba8 solution_mark{90, 160, 245, 255};
-
 /// The design space: positions are given for 1280x720 and scaled.
 constexpr float design_width = 1280.0F;
 constexpr float design_height = 720.0F;
@@ -60,20 +44,6 @@ constexpr float small_px = 14.0F;
 constexpr float playback_px = 22.0F;
 constexpr float min_font_px = 9.0F;
 
-Rgba8 mark_color(view::PuzzleMark mark) noexcept {
-    switch (mark) {
-        case view::PuzzleMark::current:
-            return current_mark;
-        case view::PuzzleMark::goal:
-            return goal_mark;
-        case view::PuzzleMark::solution:
-            return solution_mark;
-        case view::PuzzleMark::plain:
-            break;
-    }
-    return edge_color;
-}
-
 /// What the caller promises about a board (a bug when broken: see collide/assert.hpp).
 void check_board(const view::PuzzleBoardView& b) {
     COLLIDE_ASSERT(
@@ -85,6 +55,7 @@ void check_board(const view::PuzzleBoardView& b) {
 
 struct PuzzleRenderer::Impl {
     PuzzleViewConfig config;
+    PuzzlePalette colors = puzzle_palette(Theme::dark);
     GlTarget target;  // owns the context: destroyed first, its objects with it
     float sx = 1.0F;
     float sy = 1.0F;
@@ -100,7 +71,7 @@ struct PuzzleRenderer::Impl {
         s = std::min(sx, sy);
         // Every size the frames use, baked once (a missing font fails here, before any frame).
         for (float px : {heading_px, title_px, body_px, small_px, playback_px}) (void)font(px);
-        list.background = background_color;
+        list.background = colors.background;
     }
 
     int font_key(float design_px) const {
@@ -155,12 +126,12 @@ struct PuzzleRenderer::Impl {
                     const view::PuzzleSlideView& slide = {}) {
         const float gap = std::max(1.0F, std::round(cell * 0.08F));
         const float size = cell * static_cast<float>(b.side);
-        list.under.add_rect({x - gap, y - gap, x + size + gap, y + size + gap}, blank_color);
+        list.under.add_rect({x - gap, y - gap, x + size + gap, y + size + gap}, colors.blank);
         for (int i = 0; i < b.side * b.side; ++i) {
             const int tile = b.tiles[static_cast<std::size_t>(i)];
             if (tile == 0 || i == slide.to) continue;
             draw_tile(tile, x + cell * static_cast<float>(i % b.side),
-                      y + cell * static_cast<float>(i / b.side), cell, gap, font_px, tile_color);
+                      y + cell * static_cast<float>(i / b.side), cell, gap, font_px, colors.tile);
         }
         if (slide.from >= 0 && slide.to >= 0) {
             const int tile = b.tiles[static_cast<std::size_t>(slide.to)];
@@ -170,12 +141,12 @@ struct PuzzleRenderer::Impl {
             const float tx = static_cast<float>(slide.to % b.side);
             const float ty = static_cast<float>(slide.to / b.side);
             draw_tile(tile, x + cell * (fx + (tx - fx) * t), y + cell * (fy + (ty - fy) * t), cell,
-                      gap, font_px, sliding_tile);
+                      gap, font_px, colors.sliding_tile);
         }
         if (b.mark != view::PuzzleMark::plain) {
             const float w = std::max(2.0F, std::round(3.0F * s));
             list.under.add_frame({x - gap - w, y - gap - w, x + size + gap + w, y + size + gap + w},
-                                 w, mark_color(b.mark));
+                                 w, puzzle_mark_color(b.mark, colors));
         }
     }
 
@@ -185,17 +156,17 @@ struct PuzzleRenderer::Impl {
         const FontAtlas& f = font(font_px);
         const std::string label = std::to_string(tile);
         text(x + (cell - f.text_width(label)) / 2.0F, y + (cell + f.ascent() * 0.72F) / 2.0F,
-             font_px, label, tile_text);
+             font_px, label, colors.tile_text);
     }
 
     void draw_panel(const view::PuzzlePanelView& p, RectF area) {
-        list.under.add_rect(area, panel_color);
+        list.under.add_rect(area, colors.panel);
         const float x0 = area.x0 + X(14);
-        text(x0, area.y0 + Y(30), title_px, p.title, title_color);
+        text(x0, area.y0 + Y(30), title_px, p.title, colors.title);
         std::string counters;
         for (const std::string& c : p.counters) counters += (counters.empty() ? "" : "    ") + c;
-        fitted_text(x0, area.y0 + Y(56), area.width() - X(28), body_px, counters, counter_color);
-        fitted_text(x0, area.y0 + Y(80), area.width() - X(28), body_px, p.status, status_color);
+        fitted_text(x0, area.y0 + Y(56), area.width() - X(28), body_px, counters, colors.counter);
+        fitted_text(x0, area.y0 + Y(80), area.width() - X(28), body_px, p.status, colors.status);
         const RectF body{area.x0, area.y0 + Y(96), area.x1, area.y1 - Y(10)};
         if (p.playback) {
             draw_playback(p, body);
@@ -220,7 +191,7 @@ struct PuzzleRenderer::Impl {
     void draw_tree(const view::PuzzlePanelView& p, RectF area) {
         float top = area.y0;
         if (!p.hidden_rows.empty()) {
-            fitted_text(area.x0, top + Y(12), area.width(), small_px, p.hidden_rows, label_color);
+            fitted_text(area.x0, top + Y(12), area.width(), small_px, p.hidden_rows, colors.label);
             top += Y(22);
         }
         const std::size_t rows = std::min(p.rows.size(), view::max_puzzle_rows);
@@ -234,8 +205,8 @@ struct PuzzleRenderer::Impl {
         for (std::size_t r = 0; r < rows; ++r) {
             const view::PuzzleRowView& row = p.rows[r];
             const float y = top + row_h * static_cast<float>(r);
-            text(area.x0, y + Y(18), body_px, row.label, title_color);
-            text(area.x0, y + Y(36), small_px, row.count, label_color);
+            text(area.x0, y + Y(18), body_px, row.label, colors.title);
+            text(area.x0, y + Y(36), small_px, row.count, colors.label);
             std::vector<PointF> here;
             const std::size_t n = std::min(row.boards.size(), view::max_puzzle_row_boards);
             for (std::size_t i = 0; i < n; ++i) {
@@ -251,10 +222,10 @@ struct PuzzleRenderer::Impl {
                     const PointF from =
                         linked ? above[static_cast<std::size_t>(b.parent)] : PointF{cx, by - Y(14)};
                     list.under.add_line(from, to, std::max(1.0F, 1.5F * s),
-                                        linked ? edge_color : Rgba8{70, 72, 90, 255});
+                                        linked ? colors.edge : colors.edge_unlinked);
                 }
                 draw_board(b, cx - size / 2.0F, by, cell, cell / s * 0.8F);
-                centred_text(cx, by + size + Y(17), small_px, b.label, label_color);
+                centred_text(cx, by + size + Y(17), small_px, b.label, colors.label);
                 here.push_back({cx, by + size + Y(22)});
             }
             above = std::move(here);
@@ -263,8 +234,8 @@ struct PuzzleRenderer::Impl {
 
     void draw_queue(const view::PuzzlePanelView& p, RectF area) {
         list.under.add_rect({area.x0 - X(6), area.y0 - Y(4), area.x1 + X(4), area.y1},
-                            {38, 40, 52, 255});
-        fitted_text(area.x0, area.y0 + Y(16), area.width(), body_px, p.queue_title, title_color);
+                            colors.queue_fill);
+        fitted_text(area.x0, area.y0 + Y(16), area.width(), body_px, p.queue_title, colors.title);
         float y = area.y0 + Y(30);
         for (std::size_t i = 0; i < std::min(p.queue.size(), view::max_puzzle_queue_shown); ++i) {
             const view::PuzzleBoardView& b = p.queue[i];
@@ -275,17 +246,17 @@ struct PuzzleRenderer::Impl {
             draw_board(b, area.x0 + X(4), y, cell, cell / s * 0.8F);
             text(area.x0 + X(4) + cell * static_cast<float>(b.side) + X(10),
                  y + cell * static_cast<float>(b.side) / 2.0F + Y(5), small_px, b.label,
-                 title_color);
+                 colors.title);
             y += cell * static_cast<float>(b.side) + Y(14);
         }
         if (!p.queue_more.empty())
-            fitted_text(area.x0, y + Y(12), area.width(), small_px, p.queue_more, label_color);
+            fitted_text(area.x0, y + Y(12), area.width(), small_px, p.queue_more, colors.label);
     }
 
     void draw_playback(const view::PuzzlePanelView& p, RectF area) {
         const view::PuzzleBoardView& b = p.board;
         centred_text((area.x0 + area.x1) / 2.0F, area.y0 + Y(30), playback_px, p.caption,
-                     title_color);
+                     colors.title);
         const float room = std::min(area.width() - X(80), area.height() - Y(90));
         const float cell = std::floor(std::min(room / static_cast<float>(b.side), 120.0F * s));
         const float size = cell * static_cast<float>(b.side);
@@ -305,7 +276,7 @@ struct PuzzleRenderer::Impl {
             for (const view::PuzzleBoardView& b : p.queue) check_board(b);
         }
         list.clear();
-        text(X(20), Y(34), heading_px, frame.heading, title_color);
+        text(X(20), Y(34), heading_px, frame.heading, colors.title);
         const float gap = X(12);
         const float panel_w =
             (X(design_width) - 2 * X(12) - gap * static_cast<float>(frame.panels.size() - 1)) /
