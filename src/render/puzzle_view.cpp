@@ -55,7 +55,7 @@ void check_board(const view::PuzzleBoardView& b) {
 
 struct PuzzleRenderer::Impl {
     PuzzleViewConfig config;
-    PuzzlePalette colors = puzzle_palette(Theme::dark);
+    PuzzlePalette colors;
     GlTarget target;  // owns the context: destroyed first, its objects with it
     float sx = 1.0F;
     float sy = 1.0F;
@@ -65,7 +65,9 @@ struct PuzzleRenderer::Impl {
     DrawList list;
 
     Impl(const PuzzleViewConfig& cfg, std::unique_ptr<Context> context)
-        : config(cfg), target(cfg.width, cfg.height, std::move(context)) {
+        : config(cfg),
+          colors(puzzle_palette(cfg.theme)),
+          target(cfg.width, cfg.height, std::move(context)) {
         sx = static_cast<float>(config.width) / design_width;
         sy = static_cast<float>(config.height) / design_height;
         s = std::min(sx, sy);

@@ -104,7 +104,16 @@ MarkStyle heap_mark_style(view::SlotMark mark, const HeapPalette& palette) noexc
     return {palette.slot, palette.title};
 }
 
-PuzzlePalette puzzle_palette(Theme /*theme*/) noexcept {
+PuzzlePalette puzzle_palette(Theme theme) noexcept {
+    if (theme == Theme::light) {
+        // The collision video's light page; boards keep light tiles in a dark frame (a board
+        // reads the same in both themes), marks and amber text darkened to stand out on white.
+        return {
+            {236, 236, 240, 255}, {255, 255, 255, 255}, {10, 10, 15, 255},    {55, 55, 65, 255},
+            {150, 95, 0, 255},    {80, 82, 98, 255},    {130, 132, 150, 255}, {185, 187, 200, 255},
+            {240, 241, 246, 255}, {222, 224, 232, 255}, {24, 24, 30, 255},    {70, 72, 88, 255},
+            {240, 170, 40, 255},  {205, 125, 0, 255},   {30, 140, 60, 255},   {40, 105, 210, 255}};
+    }
     // The collision video's dark theme.
     return {{22, 22, 28, 255},   {32, 34, 44, 255},    {245, 245, 245, 255}, {200, 200, 210, 255},
             {240, 190, 80, 255}, {175, 178, 195, 255}, {105, 108, 128, 255}, {70, 72, 90, 255},

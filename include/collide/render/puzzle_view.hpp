@@ -19,6 +19,7 @@
 
 #include "collide/image.hpp"
 #include "collide/render/context.hpp"
+#include "collide/render/renderer.hpp"
 #include "collide/view/puzzle.hpp"
 
 namespace collide::render {
@@ -28,6 +29,8 @@ struct PuzzleViewConfig {
     int width = 1280;  ///< frame width in pixels, 320..8192
     int height = 720;  ///< frame height in pixels, 180..8192
     std::string font_path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+    /// dark (screens) or light (projectors, print): the collision video's themes.
+    Theme theme = Theme::dark;
 
     /// Throws Error(input) naming the first bad field.
     void validate() const;
