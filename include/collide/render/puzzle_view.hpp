@@ -19,6 +19,7 @@
 
 #include "collide/image.hpp"
 #include "collide/render/context.hpp"
+#include "collide/render/drawn_text.hpp"
 #include "collide/render/renderer.hpp"
 #include "collide/view/puzzle.hpp"
 
@@ -54,6 +55,10 @@ class PuzzleRenderer {
     /// its side.
     void render(const view::PuzzleFrameView& frame, Image& out);
     [[nodiscard]] Image render(const view::PuzzleFrameView& frame);
+
+    /// Every piece of text of the last frame drawn, in drawing order, with its size (for tests:
+    /// nothing a class reads is smaller than the lesson size).
+    [[nodiscard]] const std::vector<DrawnText>& last_text() const noexcept;
 
   private:
     struct Impl;
