@@ -49,8 +49,8 @@ struct HeapPalette {
     Rgba8 node;          ///< a plain node's fill
     Rgba8 index;
     Rgba8 node_outline;
-    Rgba8 sorted_fill;
-    Rgba8 sorted_text;
+    Rgba8 sorted_fill;  ///< heapsort's sorted part: set apart by its fill, never dimmed
+    Rgba8 sorted_text;  ///< (a sorted array is the result: as legible as any key)
     Rgba8 token_done;
     Rgba8 token_todo;
     Rgba8 map_header;
