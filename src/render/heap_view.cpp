@@ -383,6 +383,22 @@ struct HeapRenderer::Impl {
                                                            : wrap(fitted, p.title, room, 2);
     }
 
+    /// "returned: Q X P M" cut to `width` by leaving out the oldest keys ("returned: ... P M"):
+    /// the newest removals are the ones the caption speaks of.
+    static std::string newest_that_fit(const FontAtlas& f, const std::string& line, float width) {
+        const std::size_t head = line.find(' ');
+        if (head == std::string::npos || f.text_width(line) <= width) return line;
+        std::string rest = line.substr(head + 1);
+        std::string out = line;
+        while (f.text_width(out) > width) {
+            const std::size_t space = rest.find(' ');
+            if (space == std::string::npos) break;
+            rest = rest.substr(space + 1);
+            out = line.substr(0, head) + " ... " + rest;
+        }
+        return out;
+    }
+
     void build_header(const view::HeapPanelView& p, const PanelGeometry& g) {
         const float pad = padding();
         const FontAtlas& title = font(g.title_px);
@@ -393,7 +409,8 @@ struct HeapRenderer::Impl {
         }
         const FontAtlas& small = font(small_px());
         if (!p.returned.empty()) {
-            text(small, g.panel.x0 + pad, g.returned_baseline, p.returned, colors.counter);
+            text(small, g.panel.x0 + pad, g.returned_baseline,
+                 newest_that_fit(small, p.returned, g.panel.width() - 2.0F * pad), colors.counter);
         }
         if (g.counter_lines == 1) {
             text(small, g.panel.x0 + pad, g.counters_baseline, counters_line(p), colors.counter);
@@ -525,7 +542,7 @@ struct HeapRenderer::Impl {
 
     /// The map's text: smaller than the keys, it is the second thing to read.
     const FontAtlas& map_font(const PanelGeometry& g) {
-        return font(std::min(0.42F * g.slot_size, caption_px()));
+        return font(std::max(small_px(), std::min(0.42F * g.slot_size, caption_px())));
     }
 
     /// The indexed heap's map as a table over the array: for each key (in the order of their

@@ -450,7 +450,7 @@ std::string HeapLesson::returned(std::size_t panel, const HeapMoment& moment) co
         if (ops[k].kind != LessonOp::Kind::remove) continue;
         keys += " " + record_.panels()[panel].ops[k].removed;
     }
-    return "returned:" + (keys.empty() ? std::string(" none yet") : keys);
+    return "returned:" + (keys.empty() ? std::string(" -") : keys);
 }
 
 std::string HeapLesson::widest_key() const {

@@ -145,10 +145,10 @@ TEST_CASE("heap lesson: heapsort builds the heap, then sorts down, in words") {
 
 TEST_CASE("heap lesson: the keys removed so far, as the trace's returned column") {
     const HeapLesson t = lesson("P Q E * X A M *", {{pq::QueueFamily::binary, 2}});
-    CHECK(t.frame_at(0.0).panels[0].returned == "returned: none yet");
+    CHECK(t.frame_at(0.0).panels[0].returned == "returned: -");
     CHECK(t.frame_at(t.duration()).panels[0].returned == "returned: Q X");
     // Mid-way through the first removal the key is still leaving, not yet returned.
-    CHECK(t.frame_at(time_of(t, 3, 0, 0.5)).panels[0].returned == "returned: none yet");
+    CHECK(t.frame_at(time_of(t, 3, 0, 0.5)).panels[0].returned == "returned: -");
     CHECK(t.frame_at(time_of(t, 4, 0, 0.5)).panels[0].returned == "returned: Q");
     CHECK(lesson("P Q E", {{pq::QueueFamily::binary, 2}}).frame_at(0.0).panels[0].returned.empty());
 }
