@@ -164,7 +164,7 @@ void add_heap_command(CLI::App& root) {
         ->capture_default_str();
     cmd->add_option("--pace", v->pace, "Seconds per step (a compare, an exchange, ...)")
         ->capture_default_str();
-    add_lesson_video_options(*cmd, v->video, "heap", "e.g. 640x360", true);
+    add_lesson_video_options(*cmd, v->video, "heap", "e.g. 640x360");
     cmd->footer(
         "Examples:\n"
         "  collide heap --ops \"P Q E * X A M * P L E *\" -o heap.mp4   # the lecture's trace\n"

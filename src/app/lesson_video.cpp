@@ -18,7 +18,7 @@
 namespace collide::app {
 
 void add_lesson_video_options(CLI::App& cmd, LessonVideoCli& v, std::string_view stem,
-                              std::string_view size_example, bool theme) {
+                              std::string_view size_example) {
     const std::string at_help = fmt::format(
         "Write only the frame at this many seconds of video, as a PNG (a still for "
         "slides; -o FILE.png, default out/{}.png)",
@@ -27,7 +27,7 @@ void add_lesson_video_options(CLI::App& cmd, LessonVideoCli& v, std::string_view
     set.stem = stem;
     set.size_example = size_example;
     set.at_help = at_help;
-    set.theme = theme;
+    set.theme = true;
     set.theme_help = "as in `collide render` (default dark)";
     add_video_options(cmd, v, set);
 }

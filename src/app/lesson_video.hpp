@@ -26,10 +26,10 @@ struct LessonGeometry {
 using LessonVideoCli = VideoCli;
 
 /// Registers the video options of a drawn lesson on `cmd` (video_options.hpp); `stem` names the
-/// default outputs (out/STEM.mp4, ...), `size_example` goes into --size's help, `theme` says
-/// whether the lesson takes --theme (default dark).
+/// default outputs (out/STEM.mp4, ...), `size_example` goes into --size's help. Every lesson
+/// takes --theme (default dark).
 void add_lesson_video_options(CLI::App& cmd, LessonVideoCli& v, std::string_view stem,
-                              std::string_view size_example, bool theme);
+                              std::string_view size_example);
 
 /// Where and in which format the lesson goes (resolve_output of what was given).
 [[nodiscard]] OutputChoice lesson_output_of(const LessonVideoCli& v, std::string_view stem);

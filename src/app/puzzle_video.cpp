@@ -1,6 +1,7 @@
 /// `collide puzzle`'s video: options resolved as `collide heap` resolves them (the extension
 /// decides the format unless --format says it; --last-frame writes one PNG; default paths under
-/// out/), then every frame from show::PuzzleLesson drawn by PuzzleRenderer into the VideoWriter.
+/// out/; --theme dark or light), then every frame from show::PuzzleLesson drawn by PuzzleRenderer
+/// into the VideoWriter.
 
 #include "puzzle_video.hpp"
 
@@ -42,13 +43,13 @@ LessonGeometry geometry_of(const PuzzleVideoCli& v) {
 }  // namespace
 
 void add_puzzle_video_options(CLI::App& cmd, PuzzleVideoCli& v) {
-    add_lesson_video_options(cmd, v, "puzzle", "at least 854x480, e.g. 960x540", false);
+    add_lesson_video_options(cmd, v, "puzzle", "at least 854x480, e.g. 960x540");
 }
 
 void refuse_video_options(const PuzzleVideoCli& v, const std::string& mode) {
     (void)parse_progress_mode(v.progress);  // harmless with text, but never a wrong value
     for (const CLI::Option* o : {v.output_opt, v.format_opt, v.quality_opt, v.size_opt, v.fps_opt,
-                                 v.last_frame_opt, v.at_opt}) {
+                                 v.last_frame_opt, v.at_opt, v.theme_opt}) {
         if (given(o)) {
             throw_option_error(o->get_name(), mode + " prints text instead of a video; leave " +
                                                   o->get_name() + " out, or " + mode + " out");
@@ -58,6 +59,7 @@ void refuse_video_options(const PuzzleVideoCli& v, const std::string& mode) {
 
 void validate_puzzle_video(const PuzzleVideoCli& v) {
     (void)parse_progress_mode(v.progress);
+    (void)render::parse_theme(v.theme, "--theme");
     (void)geometry_of(v);
     const OutputChoice output = output_of(v);
     if (!output.default_path) {
@@ -86,6 +88,7 @@ void render_puzzle_video(const puzzle::Board& start,
     config.font_path = find_font(v.font);
     config.width = geometry.width;
     config.height = geometry.height;
+    config.theme = render::parse_theme(v.theme, "--theme");
     render::PuzzleRenderer renderer(config, render::Backend::automatic, print_notice);
 
     const double still_time = given(v.at_opt) ? v.at : frames.duration();

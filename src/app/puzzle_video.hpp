@@ -1,8 +1,8 @@
 #pragma once
 /// \file
 /// The video of `collide puzzle`: its options (the same as `collide heap`'s: -o, --format, -q,
-/// --size, --fps, --last-frame, --progress, --verbose), their validation, and the render loop
-/// from show::PuzzleLesson through PuzzleRenderer into the VideoWriter.
+/// --size, --fps, --last-frame, --theme, --progress, --verbose), their validation, and the render
+/// loop from show::PuzzleLesson through PuzzleRenderer into the VideoWriter.
 
 #include <CLI/CLI.hpp>
 #include <string>

@@ -17,6 +17,7 @@
 #include "font.hpp"
 #include "gl_target.hpp"
 #include "heap_view_layout.hpp"
+#include "layout.hpp"
 #include "overlay_geometry.hpp"
 #include "theme.hpp"
 
@@ -46,77 +47,6 @@ std::size_t max_legible_keys(std::size_t panels) noexcept {
 
 namespace {
 
-// ---------------------------------------------------------------------------------------------
-// Colours: the collision video's themes; highlights chosen to stay apart for colour-blind
-// viewers (amber / blue / green / purple / red differ in lightness too), the same in both themes
-// (their text is chosen against the highlight, not the page).
-
-struct HeapPalette {
-    Rgba8 background;
-    Rgba8 panel;
-    Rgba8 title;
-    Rgba8 counter;
-    Rgba8 caption;
-    Rgba8 edge;
-    Rgba8 slot;          ///< a plain slot's fill
-    Rgba8 slot_outline;  ///< around a slot holding a key
-    Rgba8 empty;         ///< outlines of the capacity's empty places (nodes and slots)
-    Rgba8 node;          ///< a plain node's fill
-    Rgba8 index;
-    Rgba8 node_outline;
-    Rgba8 sorted_fill;
-    Rgba8 sorted_text;
-    Rgba8 token_done;
-    Rgba8 token_todo;
-    Rgba8 map_header;
-};
-
-HeapPalette heap_palette(Theme theme) noexcept {
-    if (theme == Theme::light) {
-        return {{236, 236, 240, 255}, {255, 255, 255, 255}, {10, 10, 15, 255},
-                {55, 55, 65, 255},    {20, 20, 25, 255},    {150, 152, 170, 255},
-                {226, 229, 238, 255}, {85, 88, 105, 255},   {195, 197, 210, 255},
-                {214, 218, 230, 255}, {80, 82, 98, 255},    {40, 40, 50, 255},
-                {205, 207, 216, 255}, {95, 97, 110, 255},   {35, 35, 45, 255},
-                {150, 152, 165, 255}, {75, 77, 95, 255}};
-    }
-    return {{22, 22, 28, 255},    {32, 34, 44, 255},    {245, 245, 245, 255}, {190, 190, 200, 255},
-            {255, 255, 255, 255}, {105, 108, 128, 255}, {52, 56, 74, 255},    {150, 152, 170, 255},
-            {70, 72, 90, 255},    {58, 62, 84, 255},    {165, 168, 185, 255}, {215, 215, 225, 255},
-            {40, 43, 55, 255},    {150, 152, 165, 255}, {200, 200, 210, 255}, {110, 112, 128, 255},
-            {170, 172, 190, 255}};
-}
-
-constexpr Rgba8 token_now_fill{240, 170, 40, 255};
-constexpr Rgba8 dark_text{20, 20, 24, 255};
-
-struct MarkStyle {
-    Rgba8 fill;
-    Rgba8 text;
-};
-
-MarkStyle style_of(view::SlotMark mark, const HeapPalette& palette) noexcept {
-    switch (mark) {
-        case view::SlotMark::plain:
-            return {palette.slot, palette.title};
-        case view::SlotMark::compared:
-            return {{240, 170, 40, 255}, dark_text};
-        case view::SlotMark::moving:
-            return {{70, 145, 240, 255}, {255, 255, 255, 255}};
-        case view::SlotMark::inserted:
-            return {{70, 185, 100, 255}, dark_text};
-        case view::SlotMark::changed:
-            return {{175, 110, 230, 255}, {255, 255, 255, 255}};
-        case view::SlotMark::best:
-            return {{40, 175, 175, 255}, dark_text};
-        case view::SlotMark::leaving:
-            return {{225, 70, 70, 255}, {255, 255, 255, 255}};
-        case view::SlotMark::sinking:
-            return {{240, 170, 40, 255}, dark_text};
-    }
-    return {palette.slot, palette.title};
-}
-
 PointF lerp(PointF a, PointF b, float t) noexcept {
     return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t};
 }
@@ -136,7 +66,10 @@ std::vector<std::string> wrap(const FontAtlas& font, const std::string& text, fl
 struct PanelGeometry {
     RectF panel;
     float title_baseline = 0.0F;
+    float title_px = 0.0F;                 ///< the title's font size
+    std::vector<std::string> title_lines;  ///< one, or two in a narrow panel
     float counters_baseline = 0.0F;
+    float returned_baseline = 0.0F;  ///< the keys removed so far (when the panel shows them)
     int counter_lines = 1;  ///< counters side by side, or one under the other in narrow panels
     RectF tree;             ///< the node centres' box (tree panels)
     RectF map;              ///< indexed heap's map column
@@ -161,6 +94,7 @@ struct HeapRenderer::Impl {
     std::map<int, FontAtlas> fonts;       // by pixel height (map nodes: stable addresses)
     std::map<int, std::size_t> text_run;  // pixel height -> its run in list.text
     DrawList list;                        // slots, edges, boxes under the nodes; glyphs
+    std::vector<DrawnText> drawn;         // the frame's text, for last_text()
     OverlayBatch& under = list.under;     // slots, edges, boxes: before the nodes
     OverlayBatch& over = list.over;       // token marker etc.: after the nodes
 
@@ -188,8 +122,8 @@ struct HeapRenderer::Impl {
     // ------------------------------------------------------------------ text
 
     const FontAtlas& font(float pixel_height) {
-        // Atlases hold 224 glyphs up to ~80 px (1024 texels square).
-        const int px = std::clamp(static_cast<int>(std::lround(pixel_height)), 10, 80);
+        // Atlases hold 224 glyphs; 128 px (2048 texels square) is lesson text at 2160p.
+        const int px = std::clamp(static_cast<int>(std::lround(pixel_height)), 10, 128);
         auto it = fonts.find(px);
         if (it == fonts.end())
             it = fonts.emplace(px, FontAtlas(config.font_path, static_cast<float>(px))).first;
@@ -201,6 +135,7 @@ struct HeapRenderer::Impl {
         const auto [run, fresh] = text_run.try_emplace(px, list.text.size());
         if (fresh) list.text.push_back({&f, {}});
         f.add_text(list.text[run->second].glyphs, x, baseline, s, color);
+        drawn.push_back({std::string(s), f.pixel_height() * cap_height_per_pixel_height});
     }
 
     /// Text centred on (cx, cy), by the height of a capital letter.
@@ -208,21 +143,28 @@ struct HeapRenderer::Impl {
         text(f, c.x - 0.5F * f.text_width(s), c.y + 0.36F * f.pixel_height(), s, color);
     }
 
-    /// Text size: as large as the columns allow (21 px at 854x480 for one panel, 16 px for three).
-    [[nodiscard]] float caption_px() const {
-        const float per_column = columns <= 1   ? 32.0F
-                                 : columns == 2 ? 28.0F
-                                 : columns == 3 ? 25.0F
-                                                : 22.0F;
-        return std::max(10.0F, per_column * unit);
+    /// The smallest text a class must read: capitals 2.8 % of the frame height, as in the
+    /// collision video (22 px at 854x480, 33 px at 720p).
+    [[nodiscard]] float lesson_px() const {
+        return lesson_pixel_height(config.width, config.height);
     }
+
+    /// Caption size: as large as the columns allow, never under lesson_px().
+    [[nodiscard]] float caption_px() const {
+        const float per_column = columns <= 1 ? 36.0F : columns == 2 ? 34.0F : 33.0F;
+        return std::max(lesson_px(), per_column * unit);
+    }
+
+    /// Counters, index labels, the map and the strip's labels: the lesson size.
+    [[nodiscard]] float small_px() const { return lesson_px(); }
 
     /// Space inside a panel's edge; tighter when four or more panels share the row.
     [[nodiscard]] float padding() const { return (columns >= 4 ? 7.0F : 12.0F) * unit; }
 
-    /// The key font for boxes of `box` pixels: as large as fits the widest key.
+    /// The key font for boxes of `box` pixels: as large as fits the widest key (a capital 0.53
+    /// of the box: a key is the first thing to read).
     const FontAtlas& key_font(float box) {
-        const float wanted = 0.62F * box;
+        const float wanted = 0.85F * box;
         const FontAtlas& probe = font(wanted);
         const float width = probe.text_width(config.widest_key);
         const float limit = 0.86F * box;
@@ -247,6 +189,7 @@ struct HeapRenderer::Impl {
 
     void build(const view::HeapFrameView& frame) {
         list.clear();  // keeps the text runs (one per font size), emptied
+        drawn.clear();
         list.background = colors.background;
         const auto w = static_cast<float>(config.width);
         const auto h = static_cast<float>(config.height);
@@ -296,8 +239,8 @@ struct HeapRenderer::Impl {
                 const float pad = 0.3F * f.pixel_height();
                 under.add_rect({x - pad, baseline - 1.05F * f.pixel_height(), x + widths[i] + pad,
                                 baseline + 0.35F * f.pixel_height()},
-                               token_now_fill);
-                color = dark_text;
+                               heap_token_now_fill);
+                color = highlight_dark_text;
             }
             text(f, x, baseline, frame.tokens[i], color);
             x += widths[i] + gap;
@@ -309,14 +252,21 @@ struct HeapRenderer::Impl {
         PanelGeometry g;
         g.panel = r;
         const float pad = padding();
-        const FontAtlas& title = font(caption_px() * 1.05F);
-        const FontAtlas& small = font(caption_px() * 0.85F);
+        const FontAtlas& small = font(small_px());
         const FontAtlas& caption = font(caption_px());
+        fit_title(p, r.width() - 2.0F * pad, g);
+        const FontAtlas& title = font(g.title_px);
         g.title_baseline = r.y0 + pad + title.ascent();
-        g.counters_baseline = g.title_baseline + small.line_height() * 1.15F;
+        g.counters_baseline = g.title_baseline +
+                              static_cast<float>(g.title_lines.size() - 1) * title.line_height() +
+                              small.line_height() * 1.15F;
         g.counter_lines = counters_fit(p, r.width() - 2.0F * pad) ? 1 : 2;
-        const float counters_bottom =
+        float counters_bottom =
             g.counters_baseline + static_cast<float>(g.counter_lines - 1) * small.line_height();
+        if (!p.returned.empty()) {
+            g.returned_baseline = counters_bottom + small.line_height();
+            counters_bottom = g.returned_baseline;
+        }
         // Room for captions of ~70 characters (the longest the model writes) at ~0.5 em each.
         const float chars_per_line = (r.width() - 2.0F * pad) / (0.5F * caption.pixel_height());
         const float caption_lines = std::clamp(std::ceil(70.0F / chars_per_line), 2.0F, 4.0F);
@@ -361,14 +311,24 @@ struct HeapRenderer::Impl {
             }
         }
         const RectF tree{r.x0 + pad, counters_bottom + pad, r.x1 - pad, tree_bottom};
-        const std::size_t leaves = std::max<std::size_t>(tree_leaves(p.capacity, p.arity), 1);
         const int levels = std::max(tree_levels(p.capacity, p.arity), 1);
-        const float pitch_x = tree.width() / static_cast<float>(leaves);
         const float pitch_y = tree.height() / static_cast<float>(levels);
-        g.node_radius = std::max(4.0F, std::min({0.42F * pitch_x, 0.4F * pitch_y, 38.0F * unit}));
+        const auto radius = [&](std::size_t columns) {
+            const float pitch_x =
+                tree.width() / static_cast<float>(std::max<std::size_t>(columns, 1));
+            return std::max(4.0F, std::min({0.42F * pitch_x, 0.44F * pitch_y, 38.0F * unit}));
+        };
+        // The textbook picture (each parent over its middle child) when the panel is wide enough
+        // for it at full node size; else the compact one, whose nodes are larger.
+        const bool complete = radius(tree_columns(p.capacity, p.arity, true)) >=
+                              radius(tree_columns(p.capacity, p.arity, false));
+        const std::size_t leaves =
+            std::max<std::size_t>(tree_columns(p.capacity, p.arity, complete), 1);
+        const float pitch_x = tree.width() / static_cast<float>(leaves);
+        g.node_radius = radius(leaves);
         g.tree = {tree.x0 + 0.5F * pitch_x, tree.y0 + g.node_radius, tree.x1 - 0.5F * pitch_x,
                   tree.y1 - g.node_radius};
-        const std::vector<PointF> unit_positions = tree_positions(p.capacity, p.arity);
+        const std::vector<PointF> unit_positions = tree_positions(p.capacity, p.arity, complete);
         for (const PointF& u : unit_positions) {
             g.nodes.push_back(
                 {g.tree.x0 + u.x * g.tree.width(), g.tree.y0 + u.y * g.tree.height()});
@@ -409,22 +369,54 @@ struct HeapRenderer::Impl {
         for (const std::string& c : p.counters) {
             widest += (widest.empty() ? "" : "    ") + c.substr(0, c.find(' ')) + " 0000";
         }
-        return font(caption_px() * 0.85F).text_width(widest) <= width;
+        return font(small_px()).text_width(widest) <= width;
+    }
+
+    /// The title on one line, shrunk as far as the lesson size if need be, else on two.
+    void fit_title(const view::HeapPanelView& p, float room, PanelGeometry& g) {
+        const FontAtlas& title = font(caption_px() * 1.05F);
+        const float width = title.text_width(p.title);
+        g.title_px = width <= room ? title.pixel_height()
+                                   : std::max(small_px(), title.pixel_height() * room / width);
+        const FontAtlas& fitted = font(g.title_px);
+        g.title_lines = fitted.text_width(p.title) <= room ? std::vector<std::string>{p.title}
+                                                           : wrap(fitted, p.title, room, 2);
+    }
+
+    /// "returned: Q X P M" cut to `width` by leaving out the oldest keys ("returned: ... P M"):
+    /// the newest removals are the ones the caption speaks of.
+    static std::string newest_that_fit(const FontAtlas& f, const std::string& line, float width) {
+        const std::size_t head = line.find(' ');
+        if (head == std::string::npos || f.text_width(line) <= width) return line;
+        std::string rest = line.substr(head + 1);
+        std::string out = line;
+        while (f.text_width(out) > width) {
+            const std::size_t space = rest.find(' ');
+            if (space == std::string::npos) break;
+            rest = rest.substr(space + 1);
+            out = line.substr(0, head) + " ... " + rest;
+        }
+        return out;
     }
 
     void build_header(const view::HeapPanelView& p, const PanelGeometry& g) {
         const float pad = padding();
-        const FontAtlas& title = font(caption_px() * 1.05F);
-        const float room = g.panel.width() - 2.0F * pad;
-        const float width = title.text_width(p.title);
-        const FontAtlas& fitted = width <= room ? title : font(title.pixel_height() * room / width);
-        text(fitted, g.panel.x0 + pad, g.title_baseline, p.title, colors.title);
-        const FontAtlas& small = font(caption_px() * 0.85F);
+        const FontAtlas& title = font(g.title_px);
+        float baseline = g.title_baseline;
+        for (const std::string& line : g.title_lines) {
+            text(title, g.panel.x0 + pad, baseline, line, colors.title);
+            baseline += title.line_height();
+        }
+        const FontAtlas& small = font(small_px());
+        if (!p.returned.empty()) {
+            text(small, g.panel.x0 + pad, g.returned_baseline,
+                 newest_that_fit(small, p.returned, g.panel.width() - 2.0F * pad), colors.counter);
+        }
         if (g.counter_lines == 1) {
             text(small, g.panel.x0 + pad, g.counters_baseline, counters_line(p), colors.counter);
             return;
         }
-        float baseline = g.counters_baseline;
+        baseline = g.counters_baseline;
         for (const std::string& c : p.counters) {
             text(small, g.panel.x0 + pad, baseline, c, colors.counter);
             baseline += small.line_height();
@@ -466,8 +458,10 @@ struct HeapRenderer::Impl {
             const bool lit = p.slots[i].mark != view::SlotMark::plain &&
                              p.slots[parent].mark == p.slots[i].mark &&
                              p.slots[i].mark != view::SlotMark::leaving;
+            // An edge comes and goes with its child: a removed key takes its edge with it.
+            const Rgba8 color = lit ? heap_mark_style(p.slots[i].mark, colors).fill : colors.edge;
             under.add_line(g.nodes[parent], g.nodes[i], lit ? 2.2F * edge_w : edge_w,
-                           lit ? style_of(p.slots[i].mark, colors).fill : colors.edge);
+                           faded(color, alpha_of(p, p.slots[i].mark)));
         }
         // Empty places of the capacity, faint, so the shape of a full tree shows.
         for (std::size_t i = in_tree; i < g.nodes.size(); ++i) {
@@ -488,7 +482,7 @@ struct HeapRenderer::Impl {
 
     void draw_node(const view::HeapSlotView& s, PointF c, float radius, float alpha,
                    const FontAtlas& f) {
-        const MarkStyle style = style_of(s.mark, colors);
+        const MarkStyle style = heap_mark_style(s.mark, colors);
         const Rgba8 fill = s.mark == view::SlotMark::plain ? colors.node : style.fill;
         add_node({c.x, c.y, radius, 0.0F, faded(fill, alpha)});
         add_node(
@@ -501,7 +495,7 @@ struct HeapRenderer::Impl {
         const float outline = std::max(1.0F, 2.0F * unit);
         const FontAtlas& f = key_font(s);
         // Index labels: two digits must fit under a slot.
-        const FontAtlas& small = font(std::min(caption_px() * 0.8F, 0.5F * s));
+        const FontAtlas& small = font(small_px());
         // Slot boxes for the whole capacity; index labels under them.
         for (std::size_t i = 0; i < std::max(p.capacity, p.slots.size()); ++i) {
             const PointF c = slot_centre(g, p, i);
@@ -509,7 +503,7 @@ struct HeapRenderer::Impl {
             Rgba8 fill = colors.background;
             if (i < p.slots.size()) {
                 const view::SlotMark m = p.slots[i].mark;
-                fill = i >= p.heap_size ? colors.sorted_fill : style_of(m, colors).fill;
+                fill = i >= p.heap_size ? colors.sorted_fill : heap_mark_style(m, colors).fill;
                 if (m == view::SlotMark::inserted || m == view::SlotMark::leaving)
                     fill = faded(fill, p.fade);
                 if (p.swap && (i == p.swap->a || i == p.swap->b)) fill = colors.slot;  // tile away
@@ -524,7 +518,7 @@ struct HeapRenderer::Impl {
         for (std::size_t i = 0; i < p.slots.size(); ++i) {
             PointF c = slot_centre(g, p, i);
             const view::SlotMark m = p.slots[i].mark;
-            Rgba8 color = i >= p.heap_size ? colors.sorted_text : style_of(m, colors).text;
+            Rgba8 color = i >= p.heap_size ? colors.sorted_text : heap_mark_style(m, colors).text;
             if (p.swap && (i == p.swap->a || i == p.swap->b)) {
                 const std::size_t other = i == p.swap->a ? p.swap->b : p.swap->a;
                 // Over the row clear of its keys; under it only as far as the reserved room.
@@ -534,7 +528,7 @@ struct HeapRenderer::Impl {
                 c.y += arc;
                 const RectF tile{c.x - 0.46F * s, c.y - 0.46F * s, c.x + 0.46F * s,
                                  c.y + 0.46F * s};
-                under.add_rect(tile, style_of(view::SlotMark::moving, colors).fill);
+                under.add_rect(tile, heap_mark_style(view::SlotMark::moving, colors).fill);
                 under.add_frame(tile, outline, colors.node_outline);
             }
             centred(f, c, p.slots[i].key, faded(color, alpha_of(p, m)));
@@ -548,15 +542,15 @@ struct HeapRenderer::Impl {
 
     /// The map's text: smaller than the keys, it is the second thing to read.
     const FontAtlas& map_font(const PanelGeometry& g) {
-        return font(std::min(0.42F * g.slot_size, caption_px()));
+        return font(std::max(small_px(), std::min(0.42F * g.slot_size, caption_px())));
     }
 
     /// The indexed heap's map as a table over the array: for each key (in the order of their
     /// handles), the index of the slot that holds it; entries an exchange is updating lit.
     void build_map(const view::HeapPanelView& p, const PanelGeometry& g) {
-        const FontAtlas& head = font(caption_px() * 0.85F);
+        const FontAtlas& head = font(small_px());
         const FontAtlas& f = map_font(g);
-        text(head, g.map.x0, g.map.y0 + head.ascent(), "map: key -> index", colors.map_header);
+        text(head, g.map.x0, g.map.y0 + head.ascent(), p.map_title, colors.map_header);
         const float key_y = g.map.y0 + head.line_height() + 0.5F * f.line_height();
         const float index_y = key_y + f.line_height();
         for (std::size_t c = 0; c < p.map.size(); ++c) {
@@ -565,11 +559,12 @@ struct HeapRenderer::Impl {
             if (row.updated) {
                 under.add_rect({x - 0.45F * g.slot_size, index_y - 0.5F * f.line_height(),
                                 x + 0.45F * g.slot_size, index_y + 0.5F * f.line_height()},
-                               style_of(view::SlotMark::moving, colors).fill);
+                               heap_mark_style(view::SlotMark::moving, colors).fill);
             }
             centred(f, {x, key_y}, row.key, colors.title);
-            centred(f, {x, index_y}, row.index,
-                    row.updated ? Rgba8{255, 255, 255, 255} : colors.index);
+            centred(
+                f, {x, index_y}, row.index,
+                row.updated ? heap_mark_style(view::SlotMark::moving, colors).text : colors.index);
         }
     }
 
@@ -611,6 +606,10 @@ HeapRenderer& HeapRenderer::operator=(HeapRenderer&&) noexcept = default;
 
 void HeapRenderer::render(const view::HeapFrameView& frame, Image& out) {
     impl_->render(frame, out);
+}
+
+const std::vector<DrawnText>& HeapRenderer::last_text() const noexcept {
+    return impl_->drawn;
 }
 
 Image HeapRenderer::render(const view::HeapFrameView& frame) {

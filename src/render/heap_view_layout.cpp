@@ -6,21 +6,26 @@ namespace collide::render {
 
 namespace {
 
-/// Depth-first: leaves get consecutive x, parents the middle of their children.
-float place(std::size_t i, std::size_t count, unsigned d, float& next_leaf,
+/// Depth-first: leaves get consecutive columns, every node the centre of its subtree's columns.
+/// Returns the first column after the subtree.
+float place(std::size_t i, std::size_t count, unsigned d, float next_leaf,
             std::vector<PointF>& out) {
     const std::size_t first = d * i + 1;
     if (first >= count) {
         out[i].x = next_leaf;
-        next_leaf += 1.0F;
-        return out[i].x;
+        return next_leaf + 1.0F;
     }
     const std::size_t last = std::min(count, first + d) - 1;
-    const float left = place(first, count, d, next_leaf, out);
-    float right = left;
-    for (std::size_t c = first + 1; c <= last; ++c) right = place(c, count, d, next_leaf, out);
-    out[i].x = 0.5F * (left + right);
-    return out[i].x;
+    const float left = next_leaf;
+    for (std::size_t c = first; c <= last; ++c) next_leaf = place(c, count, d, next_leaf, out);
+    out[i].x = 0.5F * (left + next_leaf - 1.0F);
+    return next_leaf;
+}
+
+std::size_t power(unsigned d, int e) noexcept {
+    std::size_t p = 1;
+    for (int k = 0; k < e; ++k) p *= d;
+    return p;
 }
 
 }  // namespace
@@ -43,21 +48,32 @@ std::size_t tree_leaves(std::size_t count, unsigned arity) noexcept {
     return leaves;
 }
 
-std::vector<PointF> tree_positions(std::size_t count, unsigned arity) {
+std::size_t tree_columns(std::size_t count, unsigned arity, bool complete) noexcept {
+    if (!complete) return tree_leaves(count, arity);
+    return count == 0 ? 0 : power(arity, tree_levels(count, arity) - 1);
+}
+
+std::vector<PointF> tree_positions(std::size_t count, unsigned arity, bool complete) {
     std::vector<PointF> out(count);
     if (count == 0) return out;
-    float next_leaf = 0.0F;
-    place(0, count, arity, next_leaf, out);
-    const float span = std::max(1.0F, next_leaf - 1.0F);
+    const float columns = static_cast<float>(tree_columns(count, arity, complete));
+    if (!complete) (void)place(0, count, arity, 0.0F, out);
+    const float span = std::max(1.0F, columns - 1.0F);
     const int levels = tree_levels(count, arity);
     std::size_t level_start = 0;
     std::size_t level_size = 1;
     for (int level = 0; level < levels; ++level) {
         const float y =
             levels == 1 ? 0.5F : static_cast<float>(level) / static_cast<float>(levels - 1);
+        // Complete: a node of this level spans columns / level_size columns.
+        const float slot = columns / static_cast<float>(level_size);
         for (std::size_t i = level_start; i < std::min(count, level_start + level_size); ++i) {
+            if (complete) {
+                out[i].x =
+                    (static_cast<float>(i - level_start) + 0.5F) * slot - 0.5F;  // in columns
+            }
             out[i].y = y;
-            out[i].x = next_leaf <= 1.0F ? 0.5F : out[i].x / span;
+            out[i].x = columns <= 1.0F ? 0.5F : out[i].x / span;
         }
         level_start += level_size;
         level_size *= arity;

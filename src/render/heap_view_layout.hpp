@@ -10,10 +10,16 @@
 namespace collide::render {
 
 /// Node centres of a d-ary heap of `count` nodes in a unit box: x in [0, 1], y in [0, 1] (root at
-/// y = 0, deepest level at y = 1; a single level sits at y = 0.5). Leaves are spread evenly in
-/// depth-first order and each parent sits midway over its first and last child, so the tree is
-/// as wide as its leaves and no two nodes overlap however deep it is.
-[[nodiscard]] std::vector<PointF> tree_positions(std::size_t count, unsigned arity);
+/// y = 0, deepest level at y = 1; a single level sits at y = 0.5), x = 0 and 1 the centres of the
+/// outermost columns (tree_columns). `complete`: the textbook picture, every level spread as if
+/// it were full, so each parent sits over its middle child; it needs d^(levels-1) columns.
+/// Otherwise the compact form: leaves spread evenly in depth-first order, each node centred over
+/// its subtree, as wide as the leaves (no two nodes overlap however deep the tree is).
+[[nodiscard]] std::vector<PointF> tree_positions(std::size_t count, unsigned arity,
+                                                 bool complete = false);
+
+/// Columns of the layout above: d^(levels-1) when complete, else the leaves.
+[[nodiscard]] std::size_t tree_columns(std::size_t count, unsigned arity, bool complete) noexcept;
 
 /// Levels of a d-ary heap of `count` nodes (0 for none).
 [[nodiscard]] int tree_levels(std::size_t count, unsigned arity) noexcept;

@@ -14,6 +14,8 @@
 #include "draw_list.hpp"
 #include "font.hpp"
 #include "gl_target.hpp"
+#include "layout.hpp"
+#include "theme.hpp"
 
 namespace collide::render {
 
@@ -31,48 +33,17 @@ void PuzzleViewConfig::validate() const {
 
 namespace {
 
-// The collision video's dark theme. Tiles are light with dark numbers (the most legible pair at
-// a distance); highlights differ in lightness as well as hue, for colour-blind viewers.
-constexpr Rgba8 background_color{22, 22, 28, 255};
-constexpr Rgba8 panel_color{32, 34, 44, 255};
-constexpr Rgba8 title_color{245, 245, 245, 255};
-constexpr Rgba8 counter_color{200, 200, 210, 255};
-constexpr Rgba8 status_color{240, 190, 80, 255};
-constexpr Rgba8 label_color{175, 178, 195, 255};
-constexpr Rgba8 edge_color{105, 108, 128, 255};
-constexpr Rgba8 tile_color{222, 224, 232, 255};
-constexpr Rgba8 tile_text{24, 24, 30, 255};
-constexpr Rgba8 blank_color{48, 50, 64, 255};
-constexpr Rgba8 sliding_tile{240, 170, 40, 255};
-constexpr Rgba8 current_mark{240, 170, 40, 255};
-constexpr Rgba8 goal_mark{80, 200, 110, 255};
-constexpr Rgba8 solution_mark{90, 160, 245, 255};
-
 /// The design space: positions are given for 1280x720 and scaled.
 constexpr float design_width = 1280.0F;
 constexpr float design_height = 720.0F;
 
-/// Font sizes in design pixels (text never gets smaller than min_font_px on screen).
-constexpr float heading_px = 24.0F;
-constexpr float title_px = 24.0F;
-constexpr float body_px = 17.0F;
-constexpr float small_px = 14.0F;
-constexpr float playback_px = 22.0F;
-constexpr float min_font_px = 9.0F;
+/// Font sizes in design pixels; no text is drawn under the lesson size (Impl::lesson_px).
+constexpr float heading_px = 34.0F;
+constexpr float title_px = 34.0F;
+constexpr float playback_px = 38.0F;
 
-Rgba8 mark_color(view::PuzzleMark mark) noexcept {
-    switch (mark) {
-        case view::PuzzleMark::current:
-            return current_mark;
-        case view::PuzzleMark::goal:
-            return goal_mark;
-        case view::PuzzleMark::solution:
-            return solution_mark;
-        case view::PuzzleMark::plain:
-            break;
-    }
-    return edge_color;
-}
+/// A small board's digits are the lesson size; a cell is this much larger.
+constexpr float cell_per_digit = 1.28F;
 
 /// What the caller promises about a board (a bug when broken: see collide/assert.hpp).
 void check_board(const view::PuzzleBoardView& b) {
@@ -85,30 +56,36 @@ void check_board(const view::PuzzleBoardView& b) {
 
 struct PuzzleRenderer::Impl {
     PuzzleViewConfig config;
+    PuzzlePalette colors;
     GlTarget target;  // owns the context: destroyed first, its objects with it
     float sx = 1.0F;
     float sy = 1.0F;
     float s = 1.0F;                   // scale of sizes (fonts, boards): the smaller of sx and sy
+    float lesson = 10.0F;             // the smallest text, px: capitals 2.8 % of the frame height
     std::map<int, FontAtlas> fonts;   // by pixel height
     std::map<int, std::size_t> runs;  // pixel height -> index in list.text
     DrawList list;
+    std::vector<DrawnText> drawn;  // the frame's text, for last_text()
 
     Impl(const PuzzleViewConfig& cfg, std::unique_ptr<Context> context)
-        : config(cfg), target(cfg.width, cfg.height, std::move(context)) {
+        : config(cfg),
+          colors(puzzle_palette(cfg.theme)),
+          target(cfg.width, cfg.height, std::move(context)) {
         sx = static_cast<float>(config.width) / design_width;
         sy = static_cast<float>(config.height) / design_height;
         s = std::min(sx, sy);
+        lesson = lesson_pixel_height(config.width, config.height);
         // Every size the frames use, baked once (a missing font fails here, before any frame).
-        for (float px : {heading_px, title_px, body_px, small_px, playback_px}) (void)font(px);
-        list.background = background_color;
+        for (float px : {heading_px, title_px, playback_px}) (void)font(design(px));
+        (void)font(lesson);
+        list.background = colors.background;
     }
 
-    int font_key(float design_px) const {
-        return static_cast<int>(std::lround(std::max(min_font_px, design_px * s)));
-    }
+    /// A design size in frame pixels, never under the lesson size.
+    [[nodiscard]] float design(float design_px) const { return std::max(lesson, design_px * s); }
 
-    const FontAtlas& font(float design_px) {
-        const int key = font_key(design_px);
+    const FontAtlas& font(float px) {
+        const int key = static_cast<int>(std::lround(std::max(lesson, px)));
         auto it = fonts.find(key);
         if (it == fonts.end()) {
             it = fonts.try_emplace(key, config.font_path, static_cast<float>(key)).first;
@@ -118,32 +95,46 @@ struct PuzzleRenderer::Impl {
         return it->second;
     }
 
-    OverlayBatch& glyphs(float design_px) {
-        (void)font(design_px);
-        return list.text[runs.at(font_key(design_px))].glyphs;
+    [[nodiscard]] float line(float px) { return font(px).line_height(); }
+
+    /// Text with its baseline at (x, y) in frame pixels, `px` pixels tall; returns the x after it.
+    float text(float x, float y, float px, std::string_view str, Rgba8 color) {
+        const FontAtlas& f = font(px);
+        const int key = static_cast<int>(std::lround(f.pixel_height()));
+        drawn.push_back({std::string(str), f.pixel_height() * cap_height_per_pixel_height});
+        return f.add_text(list.text[runs.at(key)].glyphs, std::round(x), std::round(y), str, color);
     }
 
-    /// Text with its baseline at (x, y) in frame pixels; returns the x after it.
-    float text(float x, float y, float design_px, std::string_view str, Rgba8 color) {
-        const FontAtlas& f = font(design_px);
-        return f.add_text(glyphs(design_px), std::round(x), std::round(y), str, color);
-    }
+    float width_of(float px, std::string_view str) { return font(px).text_width(str); }
 
-    float width_of(float design_px, std::string_view str) {
-        return font(design_px).text_width(str);
-    }
-
-    void centred_text(float cx, float y, float design_px, std::string_view str, Rgba8 color) {
-        text(cx - width_of(design_px, str) / 2.0F, y, design_px, str, color);
+    void centred_text(float cx, float y, float px, std::string_view str, Rgba8 color) {
+        text(cx - width_of(px, str) / 2.0F, y, px, str, color);
     }
 
     /// Text cut with "..." to fit `width` pixels.
-    void fitted_text(float x, float y, float width, float design_px, std::string str, Rgba8 color) {
-        while (str.size() > 3 && width_of(design_px, str) > width) {
+    void fitted_text(float x, float y, float width, float px, std::string str, Rgba8 color) {
+        while (str.size() > 3 && width_of(px, str) > width) {
             str.erase(str.size() - 4);
             str += "...";
         }
-        text(x, y, design_px, str, color);
+        text(x, y, px, str, color);
+    }
+
+    /// Text wrapped to `width` on at most `max_lines` lines from the top `y`; returns the y
+    /// under it.
+    float wrapped_text(float x, float y, float width, float px, const std::string& str,
+                       std::size_t max_lines, Rgba8 color, bool centred = false) {
+        std::vector<std::string> lines = wrap_words(font(px), str, width);
+        if (lines.size() > max_lines) lines.resize(max_lines);
+        for (const std::string& l : lines) {
+            if (centred) {
+                centred_text(x + width / 2.0F, y + font(px).ascent(), px, l, color);
+            } else {
+                fitted_text(x, y + font(px).ascent(), width, px, l, color);
+            }
+            y += line(px);
+        }
+        return y;
     }
 
     [[nodiscard]] float X(float design_x) const { return design_x * sx; }
@@ -155,12 +146,12 @@ struct PuzzleRenderer::Impl {
                     const view::PuzzleSlideView& slide = {}) {
         const float gap = std::max(1.0F, std::round(cell * 0.08F));
         const float size = cell * static_cast<float>(b.side);
-        list.under.add_rect({x - gap, y - gap, x + size + gap, y + size + gap}, blank_color);
+        list.under.add_rect({x - gap, y - gap, x + size + gap, y + size + gap}, colors.blank);
         for (int i = 0; i < b.side * b.side; ++i) {
             const int tile = b.tiles[static_cast<std::size_t>(i)];
             if (tile == 0 || i == slide.to) continue;
             draw_tile(tile, x + cell * static_cast<float>(i % b.side),
-                      y + cell * static_cast<float>(i / b.side), cell, gap, font_px, tile_color);
+                      y + cell * static_cast<float>(i / b.side), cell, gap, font_px, colors.tile);
         }
         if (slide.from >= 0 && slide.to >= 0) {
             const int tile = b.tiles[static_cast<std::size_t>(slide.to)];
@@ -170,12 +161,12 @@ struct PuzzleRenderer::Impl {
             const float tx = static_cast<float>(slide.to % b.side);
             const float ty = static_cast<float>(slide.to / b.side);
             draw_tile(tile, x + cell * (fx + (tx - fx) * t), y + cell * (fy + (ty - fy) * t), cell,
-                      gap, font_px, sliding_tile);
+                      gap, font_px, colors.sliding_tile);
         }
         if (b.mark != view::PuzzleMark::plain) {
-            const float w = std::max(2.0F, std::round(3.0F * s));
+            const float w = std::max(2.0F, std::round(4.0F * s));
             list.under.add_frame({x - gap - w, y - gap - w, x + size + gap + w, y + size + gap + w},
-                                 w, mark_color(b.mark));
+                                 w, puzzle_mark_color(b.mark, colors));
         }
     }
 
@@ -185,113 +176,128 @@ struct PuzzleRenderer::Impl {
         const FontAtlas& f = font(font_px);
         const std::string label = std::to_string(tile);
         text(x + (cell - f.text_width(label)) / 2.0F, y + (cell + f.ascent() * 0.72F) / 2.0F,
-             font_px, label, tile_text);
+             font_px, label, colors.tile_text);
     }
 
-    void draw_panel(const view::PuzzlePanelView& p, RectF area) {
-        list.under.add_rect(area, panel_color);
-        const float x0 = area.x0 + X(14);
-        text(x0, area.y0 + Y(30), title_px, p.title, title_color);
-        std::string counters;
-        for (const std::string& c : p.counters) counters += (counters.empty() ? "" : "    ") + c;
-        fitted_text(x0, area.y0 + Y(56), area.width() - X(28), body_px, counters, counter_color);
-        fitted_text(x0, area.y0 + Y(80), area.width() - X(28), body_px, p.status, status_color);
-        const RectF body{area.x0, area.y0 + Y(96), area.x1, area.y1 - Y(10)};
-        if (p.playback) {
-            draw_playback(p, body);
-        } else {
-            const RectF tree{body.x0 + X(10), body.y0, body.x1 - X(176), body.y1};
-            if (p.rows.empty() && !p.board.tiles.empty()) {
-                draw_playback(p, tree);  // before the first expansion: the start, large
-            } else {
-                draw_tree(p, tree);
-            }
-            draw_queue(p, {body.x1 - X(168), body.y0, body.x1 - X(10), body.y1});
-        }
-    }
-
-    /// Cells of a small board that fits a `width` x `height` box: as large as the box allows up
-    /// to 26 design pixels (a single panel has room for larger boards than two side by side).
+    /// The cell of a small board: its digits at the lesson size, smaller only when a box of
+    /// `width` x `height` cannot hold that (never below the digits' own height).
     [[nodiscard]] float small_cell(int side, float width, float height) const {
         const float fit = std::min(width, height) / static_cast<float>(side);
-        return std::floor(std::min(fit, 26.0F * s));
+        return std::floor(std::max(std::min(fit, cell_per_digit * lesson), 0.9F * lesson));
+    }
+
+    /// The widest board label ("12+19=31"): the width a board's slot needs.
+    [[nodiscard]] float label_room() { return width_of(lesson, "00+00=00"); }
+
+    void draw_panel(const view::PuzzlePanelView& p, RectF area) {
+        list.under.add_rect(area, colors.panel);
+        const float pad = X(14);
+        const float inner = area.width() - 2.0F * pad;
+        const float x0 = area.x0 + pad;
+        // Header: the title (two lines at most), one counter a line, the status.
+        float y = wrapped_text(x0, area.y0 + 0.5F * pad, inner, design(title_px), p.title, 2,
+                               colors.title);
+        for (const std::string& c : p.counters) {
+            fitted_text(x0, y + font(lesson).ascent(), inner, lesson, c, colors.counter);
+            y += line(lesson);
+        }
+        fitted_text(x0, y + font(lesson).ascent(), inner, lesson, p.status, colors.status);
+        y += line(lesson) + 0.5F * pad;
+        const RectF body{x0, y, area.x1 - pad, area.y1 - pad};
+        if (p.playback) {
+            draw_playback(p, body);
+            return;
+        }
+        const float queue_w = std::max(label_room(), 3.0F * cell_per_digit * lesson) + X(8);
+        const RectF tree{body.x0, body.y0, body.x1 - queue_w - X(16), body.y1};
+        if (p.rows.empty() && !p.board.tiles.empty()) {
+            draw_playback(p, tree);  // before the first expansion: the start, large
+        } else {
+            draw_tree(p, tree);
+        }
+        draw_queue(p, {body.x1 - queue_w, body.y0, body.x1, body.y1});
     }
 
     void draw_tree(const view::PuzzlePanelView& p, RectF area) {
+        const float l = line(lesson);
+        const float ascent = font(lesson).ascent();
         float top = area.y0;
         if (!p.hidden_rows.empty()) {
-            fitted_text(area.x0, top + Y(12), area.width(), small_px, p.hidden_rows, label_color);
-            top += Y(22);
+            fitted_text(area.x0, top + ascent, area.width(), lesson, p.hidden_rows, colors.label);
+            top += l;
         }
         const std::size_t rows = std::min(p.rows.size(), view::max_puzzle_rows);
         if (rows == 0) return;
         const float row_h = (area.y1 - top) / static_cast<float>(view::max_puzzle_rows);
-        const float label_w = X(104);
-        const float slot_w =
-            (area.width() - label_w) / static_cast<float>(view::max_puzzle_row_boards);
-        // Board centres of the row above, for the edges.
+        const float slot_w = area.width() / static_cast<float>(view::max_puzzle_row_boards);
+        const float gap = 0.3F * l;
+        // Label centres of the row above, for the edges.
         std::vector<PointF> above;
         for (std::size_t r = 0; r < rows; ++r) {
             const view::PuzzleRowView& row = p.rows[r];
             const float y = top + row_h * static_cast<float>(r);
-            text(area.x0, y + Y(18), body_px, row.label, title_color);
-            text(area.x0, y + Y(36), small_px, row.count, label_color);
+            fitted_text(area.x0, y + ascent, area.width(), lesson, row.label + ": " + row.count,
+                        colors.title);
             std::vector<PointF> here;
             const std::size_t n = std::min(row.boards.size(), view::max_puzzle_row_boards);
             for (std::size_t i = 0; i < n; ++i) {
                 const view::PuzzleBoardView& b = row.boards[i];
-                const float cell = small_cell(b.side, slot_w - X(10), row_h - Y(34));
+                const float cell =
+                    small_cell(b.side, slot_w - X(16), row_h - 2.0F * l - 2.0F * gap);
                 const float size = cell * static_cast<float>(b.side);
-                const float cx = area.x0 + label_w + slot_w * (static_cast<float>(i) + 0.5F);
-                const float by = y + Y(4);
+                const float cx = area.x0 + slot_w * (static_cast<float>(i) + 0.5F);
+                const float by = y + l + gap;
                 if (r > 0) {
-                    const PointF to{cx, by - 2.0F};
                     const bool linked =
                         b.parent >= 0 && static_cast<std::size_t>(b.parent) < above.size();
                     const PointF from =
-                        linked ? above[static_cast<std::size_t>(b.parent)] : PointF{cx, by - Y(14)};
-                    list.under.add_line(from, to, std::max(1.0F, 1.5F * s),
-                                        linked ? edge_color : Rgba8{70, 72, 90, 255});
+                        linked ? above[static_cast<std::size_t>(b.parent)] : PointF{cx, y};
+                    list.under.add_line(from, {cx, by - gap}, std::max(1.5F, 2.5F * s),
+                                        linked ? colors.edge : colors.edge_unlinked);
                 }
-                draw_board(b, cx - size / 2.0F, by, cell, cell / s * 0.8F);
-                centred_text(cx, by + size + Y(17), small_px, b.label, label_color);
-                here.push_back({cx, by + size + Y(22)});
+                draw_board(b, cx - size / 2.0F, by, cell, lesson);
+                centred_text(cx, by + size + gap + ascent, lesson, b.label, colors.label);
+                here.push_back({cx, by + size + gap + l});
             }
             above = std::move(here);
         }
     }
 
     void draw_queue(const view::PuzzlePanelView& p, RectF area) {
-        list.under.add_rect({area.x0 - X(6), area.y0 - Y(4), area.x1 + X(4), area.y1},
-                            {38, 40, 52, 255});
-        fitted_text(area.x0, area.y0 + Y(16), area.width(), body_px, p.queue_title, title_color);
-        float y = area.y0 + Y(30);
-        for (std::size_t i = 0; i < std::min(p.queue.size(), view::max_puzzle_queue_shown); ++i) {
+        const float l = line(lesson);
+        const float ascent = font(lesson).ascent();
+        list.under.add_rect({area.x0 - X(8), area.y0 - Y(4), area.x1 + X(6), area.y1},
+                            colors.queue_fill);
+        fitted_text(area.x0, area.y0 + ascent, area.width(), lesson, p.queue_title, colors.title);
+        const std::size_t shown = view::max_puzzle_queue_shown;
+        const float gap = 0.3F * l;
+        // Room for the entries between the title and two lines of "+N more".
+        const float entry_h = (area.height() - 3.0F * l) / static_cast<float>(shown);
+        float y = area.y0 + l + gap;
+        for (std::size_t i = 0; i < std::min(p.queue.size(), shown); ++i) {
             const view::PuzzleBoardView& b = p.queue[i];
-            const float cell = small_cell(
-                b.side, area.width() - X(74),
-                (area.y1 - area.y0 - Y(64)) / static_cast<float>(view::max_puzzle_queue_shown) -
-                    Y(14));
-            draw_board(b, area.x0 + X(4), y, cell, cell / s * 0.8F);
-            text(area.x0 + X(4) + cell * static_cast<float>(b.side) + X(10),
-                 y + cell * static_cast<float>(b.side) / 2.0F + Y(5), small_px, b.label,
-                 title_color);
-            y += cell * static_cast<float>(b.side) + Y(14);
+            const float cell = small_cell(b.side, area.width(), entry_h - l - 2.0F * gap);
+            const float size = cell * static_cast<float>(b.side);
+            const float cx = 0.5F * (area.x0 + area.x1);
+            draw_board(b, cx - size / 2.0F, y, cell, lesson);
+            centred_text(cx, y + size + gap + ascent, lesson, b.label, colors.title);
+            y += size + l + 2.0F * gap;
         }
         if (!p.queue_more.empty())
-            fitted_text(area.x0, y + Y(12), area.width(), small_px, p.queue_more, label_color);
+            wrapped_text(area.x0, y, area.width(), lesson, p.queue_more, 2, colors.label);
     }
 
     void draw_playback(const view::PuzzlePanelView& p, RectF area) {
         const view::PuzzleBoardView& b = p.board;
-        centred_text((area.x0 + area.x1) / 2.0F, area.y0 + Y(30), playback_px, p.caption,
-                     title_color);
-        const float room = std::min(area.width() - X(80), area.height() - Y(90));
+        const float px = design(playback_px);
+        const float top =
+            wrapped_text(area.x0, area.y0, area.width(), px, p.caption, 2, colors.title, true) +
+            Y(12);
+        const float room = std::min(area.width() - X(40), area.y1 - top - Y(10));
         const float cell = std::floor(std::min(room / static_cast<float>(b.side), 120.0F * s));
         const float size = cell * static_cast<float>(b.side);
         const float x = std::round((area.x0 + area.x1 - size) / 2.0F);
-        const float y = std::round(area.y0 + Y(60));
-        draw_board(b, x, y, cell, cell * 0.45F / s, p.slide);
+        draw_board(b, x, std::round(top), cell, std::max(lesson, cell * 0.45F), p.slide);
     }
 
     const DrawList& build(const view::PuzzleFrameView& frame) {
@@ -305,15 +311,20 @@ struct PuzzleRenderer::Impl {
             for (const view::PuzzleBoardView& b : p.queue) check_board(b);
         }
         list.clear();
-        text(X(20), Y(34), heading_px, frame.heading, title_color);
+        drawn.clear();
+        const float heading = design(heading_px);
+        const float margin = X(12);
+        fitted_text(X(20), Y(8) + font(heading).ascent(), X(design_width) - X(40), heading,
+                    frame.heading, colors.title);
+        const float top = Y(8) + line(heading) + Y(4);
         const float gap = X(12);
         const float panel_w =
-            (X(design_width) - 2 * X(12) - gap * static_cast<float>(frame.panels.size() - 1)) /
+            (X(design_width) - 2 * margin - gap * static_cast<float>(frame.panels.size() - 1)) /
             static_cast<float>(frame.panels.size());
         for (std::size_t i = 0; i < frame.panels.size(); ++i) {
-            const float x0 = X(12) + (panel_w + gap) * static_cast<float>(i);
-            draw_panel(frame.panels[i], {std::round(x0), std::round(Y(50)),
-                                         std::round(x0 + panel_w), std::round(Y(710))});
+            const float x0 = margin + (panel_w + gap) * static_cast<float>(i);
+            draw_panel(frame.panels[i], {std::round(x0), std::round(top), std::round(x0 + panel_w),
+                                         std::round(Y(design_height) - Y(8))});
         }
         return list;
     }
@@ -334,6 +345,10 @@ void PuzzleRenderer::render(const view::PuzzleFrameView& frame, Image& out) {
     const DrawList& list = impl_->build(frame);
     impl_->target.draw(list);
     impl_->target.read_pixels(list, out);
+}
+
+const std::vector<DrawnText>& PuzzleRenderer::last_text() const noexcept {
+    return impl_->drawn;
 }
 
 Image PuzzleRenderer::render(const view::PuzzleFrameView& frame) {

@@ -65,6 +65,76 @@ PlotColors plot_colors(Theme theme) noexcept {
     return {p.text, p.muted, p.title, zero};
 }
 
+HeapPalette heap_palette(Theme theme) noexcept {
+    if (theme == Theme::light) {
+        return {{236, 236, 240, 255}, {255, 255, 255, 255}, {10, 10, 15, 255},
+                {55, 55, 65, 255},    {20, 20, 25, 255},    {150, 152, 170, 255},
+                {226, 229, 238, 255}, {85, 88, 105, 255},   {195, 197, 210, 255},
+                {214, 218, 230, 255}, {80, 82, 98, 255},    {40, 40, 50, 255},
+                {205, 207, 216, 255}, {10, 10, 15, 255},    {35, 35, 45, 255},
+                {150, 152, 165, 255}, {75, 77, 95, 255}};
+    }
+    return {{22, 22, 28, 255},    {32, 34, 44, 255},    {245, 245, 245, 255}, {190, 190, 200, 255},
+            {255, 255, 255, 255}, {105, 108, 128, 255}, {52, 56, 74, 255},    {150, 152, 170, 255},
+            {70, 72, 90, 255},    {58, 62, 84, 255},    {165, 168, 185, 255}, {215, 215, 225, 255},
+            {40, 43, 55, 255},    {245, 245, 245, 255}, {200, 200, 210, 255}, {110, 112, 128, 255},
+            {170, 172, 190, 255}};
+}
+
+MarkStyle heap_mark_style(view::SlotMark mark, const HeapPalette& palette) noexcept {
+    constexpr Rgba8 white{255, 255, 255, 255};
+    switch (mark) {
+        case view::SlotMark::plain:
+            return {palette.slot, palette.title};
+        case view::SlotMark::compared:
+            return {{240, 170, 40, 255}, highlight_dark_text};
+        case view::SlotMark::moving:
+            return {{70, 145, 240, 255}, white};
+        case view::SlotMark::inserted:
+            return {{70, 185, 100, 255}, highlight_dark_text};
+        case view::SlotMark::changed:
+            return {{175, 110, 230, 255}, white};
+        case view::SlotMark::best:
+            return {{40, 175, 175, 255}, highlight_dark_text};
+        case view::SlotMark::leaving:
+            return {{225, 70, 70, 255}, white};
+        case view::SlotMark::sinking:
+            return {{240, 170, 40, 255}, highlight_dark_text};
+    }
+    return {palette.slot, palette.title};
+}
+
+PuzzlePalette puzzle_palette(Theme theme) noexcept {
+    if (theme == Theme::light) {
+        // The collision video's light page; boards keep light tiles in a dark frame (a board
+        // reads the same in both themes), marks and amber text darkened to stand out on white.
+        return {
+            {236, 236, 240, 255}, {255, 255, 255, 255}, {10, 10, 15, 255},    {55, 55, 65, 255},
+            {150, 95, 0, 255},    {80, 82, 98, 255},    {130, 132, 150, 255}, {185, 187, 200, 255},
+            {240, 241, 246, 255}, {222, 224, 232, 255}, {24, 24, 30, 255},    {70, 72, 88, 255},
+            {240, 170, 40, 255},  {205, 125, 0, 255},   {30, 140, 60, 255},   {40, 105, 210, 255}};
+    }
+    // The collision video's dark theme.
+    return {{22, 22, 28, 255},   {32, 34, 44, 255},    {245, 245, 245, 255}, {200, 200, 210, 255},
+            {240, 190, 80, 255}, {175, 178, 195, 255}, {105, 108, 128, 255}, {70, 72, 90, 255},
+            {38, 40, 52, 255},   {222, 224, 232, 255}, {24, 24, 30, 255},    {48, 50, 64, 255},
+            {240, 170, 40, 255}, {240, 170, 40, 255},  {80, 200, 110, 255},  {90, 160, 245, 255}};
+}
+
+Rgba8 puzzle_mark_color(view::PuzzleMark mark, const PuzzlePalette& palette) noexcept {
+    switch (mark) {
+        case view::PuzzleMark::current:
+            return palette.current;
+        case view::PuzzleMark::goal:
+            return palette.goal;
+        case view::PuzzleMark::solution:
+            return palette.solution;
+        case view::PuzzleMark::plain:
+            break;
+    }
+    return palette.edge;
+}
+
 Rgb8 panel_accent(bool time_driven) noexcept {
     return time_driven ? Rgb8{240, 150, 60} : Rgb8{90, 175, 245};
 }

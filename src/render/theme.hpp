@@ -1,9 +1,13 @@
 #pragma once
-// Internal: the renderer's theme module. The palettes of the two themes, the plots' colours in
-// each, and the colour helpers every painter (frame builder, queue strip) shares. The public half
-// (engine accents, the failure colour, the contrast rule) is declared in renderer.hpp.
+// Internal: the renderer's theme module. The palettes of the two themes (the collision video's,
+// the heap lesson's and the puzzle's), the plots' colours in each, the lessons' highlight
+// colours, and the colour helpers every painter (frame builder, queue strip, heap and puzzle
+// views) shares. The public half (engine accents, the failure colour, the contrast rule) is
+// declared in renderer.hpp.
 
 #include "collide/render/renderer.hpp"
+#include "collide/view/heap.hpp"
+#include "collide/view/puzzle.hpp"
 #include "overlay_geometry.hpp"
 #include "plots.hpp"
 
@@ -24,6 +28,77 @@ struct Palette {
 [[nodiscard]] Palette palette(Theme theme) noexcept;
 /// A plot's text, axis, curve and zero-line colours in a theme (every level's plots use them).
 [[nodiscard]] PlotColors plot_colors(Theme theme) noexcept;
+
+// ---------------------------------------------------------------------------------------------
+// The priority-queue lesson (heap_view.cpp): the collision video's page colours; highlights
+// chosen to stay apart for colour-blind viewers (amber / blue / green / purple / red differ in
+// lightness too), the same in both themes (their text is chosen against the highlight, not the
+// page).
+
+/// A heap lesson's colours in one theme.
+struct HeapPalette {
+    Rgba8 background;
+    Rgba8 panel;
+    Rgba8 title;
+    Rgba8 counter;
+    Rgba8 caption;
+    Rgba8 edge;
+    Rgba8 slot;          ///< a plain slot's fill
+    Rgba8 slot_outline;  ///< around a slot holding a key
+    Rgba8 empty;         ///< outlines of the capacity's empty places (nodes and slots)
+    Rgba8 node;          ///< a plain node's fill
+    Rgba8 index;
+    Rgba8 node_outline;
+    Rgba8 sorted_fill;  ///< heapsort's sorted part: set apart by its fill, never dimmed
+    Rgba8 sorted_text;  ///< (a sorted array is the result: as legible as any key)
+    Rgba8 token_done;
+    Rgba8 token_todo;
+    Rgba8 map_header;
+};
+[[nodiscard]] HeapPalette heap_palette(Theme theme) noexcept;
+
+/// The operation under way in the heap lesson's strip: an amber tab with dark text.
+inline constexpr Rgba8 heap_token_now_fill{240, 170, 40, 255};
+/// Text on the light highlights (amber, green, teal).
+inline constexpr Rgba8 highlight_dark_text{20, 20, 24, 255};
+
+/// A highlighted key: its fill (slot and node) and its text.
+struct MarkStyle {
+    Rgba8 fill;
+    Rgba8 text;
+};
+/// How a key marked `mark` is drawn; plain keys take the palette's slot and title colours.
+[[nodiscard]] MarkStyle heap_mark_style(view::SlotMark mark, const HeapPalette& palette) noexcept;
+
+// ---------------------------------------------------------------------------------------------
+// The puzzle (puzzle_view.cpp). Tiles are light with dark numbers (the most legible pair at a
+// distance); highlights differ in lightness as well as hue, for colour-blind viewers.
+
+/// The puzzle's colours in one theme.
+struct PuzzlePalette {
+    Rgba8 background;
+    Rgba8 panel;
+    Rgba8 title;
+    Rgba8 counter;
+    Rgba8 status;
+    Rgba8 label;
+    Rgba8 edge;
+    Rgba8 edge_unlinked;  ///< a tree edge whose parent board is not drawn
+    Rgba8 queue_fill;     ///< behind the queue's front
+    Rgba8 tile;
+    Rgba8 tile_text;
+    Rgba8 blank;  ///< the board's frame and its blank cell
+    Rgba8 sliding_tile;
+    Rgba8 current;   ///< the board being expanded
+    Rgba8 goal;      ///< the goal, once found
+    Rgba8 solution;  ///< boards on the solution path
+};
+[[nodiscard]] PuzzlePalette puzzle_palette(Theme theme) noexcept;
+/// The frame around a board marked `mark` (plain: the edge colour).
+[[nodiscard]] Rgba8 puzzle_mark_color(view::PuzzleMark mark, const PuzzlePalette& palette) noexcept;
+
+// ---------------------------------------------------------------------------------------------
+// Helpers
 
 /// `c` with its alpha scaled by `opacity` (clamped to [0, 1]).
 [[nodiscard]] Rgba8 faded(Rgba8 c, float opacity) noexcept;

@@ -93,6 +93,13 @@ class Captioner {
             op_summary_head(op, done, max_ ? pq::Orientation::max : pq::Orientation::min) + ": " +
             plural(c, "compare", "compares") + ", " +
             plural(x, panel_.shifts ? "shift" : "exchange", panel_.shifts ? "shifts" : "exchanges");
+        if (op.kind == LessonOp::Kind::sortdown) {
+            // The last words of a heapsort: the totals the counters show, so that the screen
+            // never holds two different totals.
+            text.summary +=
+                "; heapsort in all: " + plural(done.end.compares, "compare", "compares") + ", " +
+                plural(done.end.exchanges, "exchange", "exchanges");
+        }
         return text;
     }
 
@@ -119,7 +126,7 @@ class Captioner {
                                       : "");
             case LessonStep::Kind::change:
                 changed_from_ = s.from;
-                return prefix_ + ": the map says " + s.from + " is at " + slot(s.i) + "; set " +
+                return prefix_ + ": qp[] says " + s.from + " is at " + slot(s.i) + "; set " +
                        slot(s.i) + " = " + keys[s.i];
             case LessonStep::Kind::compare:
                 return compare(s.i, s.j, keys[s.i], keys[s.j], s.order);
@@ -405,7 +412,11 @@ view::HeapPanelView HeapLesson::panel_view(std::size_t panel, const HeapPanelMom
     if (sort) view.heap_size = state.heap_size;
     if (moment.step != nullptr) mark_step(*moment.step, moment.progress, view);
     view.show_map = record.kind.family == QueueFamily::indexed;
-    if (view.show_map) view.map = map_rows(state, index_base_, view.swap);
+    if (view.show_map) {
+        // IndexMinPQ's names: keys[i] is the key of handle i, qp[i] the slot of pq[] it is in.
+        view.map_title = "keys[i] / qp[i]";
+        view.map = map_rows(state, index_base_, view.swap);
+    }
     return view;
 }
 
@@ -418,9 +429,28 @@ view::HeapFrameView HeapLesson::frame_at(double seconds) const {
     } else if (moment.started) {
         view.current_token = moment.op;
     }
-    for (std::size_t p = 0; p < moment.panels.size(); ++p)
+    for (std::size_t p = 0; p < moment.panels.size(); ++p) {
         view.panels.push_back(panel_view(p, moment.panels[p]));
+        view.panels.back().returned = returned(p, moment);
+    }
     return view;
+}
+
+std::string HeapLesson::returned(std::size_t panel, const HeapMoment& moment) const {
+    const std::vector<LessonOp>& ops = record_.ops();
+    const bool removes = std::any_of(ops.begin(), ops.end(), [](const LessonOp& op) {
+        return op.kind == LessonOp::Kind::remove;
+    });
+    if (!removes || record_.heapsort()) return "";
+    // An operation's key counts as returned once its steps are done (its summary is shown).
+    const bool op_done = moment.started && moment.panels[panel].step == nullptr;
+    const std::size_t done = !moment.started ? 0 : moment.op + (op_done ? 1 : 0);
+    std::string keys;
+    for (std::size_t k = 0; k < std::min(done, ops.size()); ++k) {
+        if (ops[k].kind != LessonOp::Kind::remove) continue;
+        keys += " " + record_.panels()[panel].ops[k].removed;
+    }
+    return "returned:" + (keys.empty() ? std::string(" -") : keys);
 }
 
 std::string HeapLesson::widest_key() const {

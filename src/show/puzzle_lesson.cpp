@@ -6,6 +6,7 @@
 
 #include "collide/error.hpp"
 #include "collide/show/ease.hpp"
+#include "collide/show/heap_lesson.hpp"
 
 namespace collide::show {
 
@@ -24,6 +25,13 @@ std::string plural(std::size_t n, const char* word) {
 
 std::string puzzle_name(int side) {
     return std::to_string(side * side - 1) + "-puzzle";
+}
+
+/// "Manhattan distance", "Hamming distance": the lecture's names for the estimates.
+std::string estimate_words(puzzle::Heuristic h) {
+    std::string name(puzzle::to_string(h));
+    if (!name.empty()) name[0] = static_cast<char>(name[0] - 'a' + 'A');
+    return name + " distance";
 }
 
 /// How many entries of the ascending list `indices` are below `step`.
@@ -67,17 +75,25 @@ PuzzleLesson::PuzzleLesson(const puzzle::Board& start, const std::vector<SearchR
     // About 3 s for a handful of boards, 13 s for the 180,000 of a hardest 8-puzzle's BFS.
     search_seconds_ =
         std::min(16.0, 3.0 + 2.0 * std::log10(static_cast<double>(most_expansions_) + 1.0));
-    per_move_ = longest_solution_ == 0
-                    ? 0.8
-                    : std::clamp(12.0 / static_cast<double>(longest_solution_), 0.35, 0.8);
+    // The solutions play one after the other, each from its own start.
+    double t = 0.0;
+    for (const Side& side : sides_) {
+        turns_.push_back(t);
+        t += per_move_ * static_cast<double>(side.path.size() - 1) + between_;
+    }
+    playback_length_ = t - between_;
 }
 
 double PuzzleLesson::playback_start() const noexcept {
     return search_end() + pause_;
 }
 
+double PuzzleLesson::playback_turn(std::size_t i) const noexcept {
+    return playback_start() + turns_[i];
+}
+
 double PuzzleLesson::duration() const noexcept {
-    return playback_start() + per_move_ * static_cast<double>(longest_solution_) + outro_;
+    return playback_start() + playback_length_ + outro_;
 }
 
 std::size_t PuzzleLesson::step_at(std::size_t i, double seconds) const noexcept {
@@ -92,28 +108,15 @@ std::size_t PuzzleLesson::step_at(std::size_t i, double seconds) const noexcept 
 std::string PuzzleLesson::title(const Side& side) const {
     const SearchResult& r = *side.result;
     if (r.method == Method::bfs) return "Breadth-first search";
-    return "A* (" + std::string(puzzle::to_string(r.heuristic)) + ", --pq " +
-           pq::to_string(r.queue) + ")";
+    return "A*, " + estimate_words(r.heuristic) + ", " + panel_title(r.queue);
 }
 
 std::vector<std::string> PuzzleLesson::counters(const Side& side, std::size_t step) const {
     const SearchResult& r = *side.result;
     const bool done = step == r.expansions.size();
+    // Two short lines a class can read from the back (the boards enqueued are the sum of the
+    // two, give or take the stale entries: `collide puzzle --solve` prints them all).
     std::vector<std::string> out{"expanded " + with_thousands(step)};
-
-    // Ids are handed out as boards are enqueued, so the boards enqueued by then are a prefix.
-    std::size_t lo = 0;
-    std::size_t hi = r.nodes.size();
-    while (lo < hi) {
-        const std::size_t mid = lo + (hi - lo) / 2;
-        if (r.enqueued_at(static_cast<std::uint32_t>(mid)) <= step) {
-            lo = mid + 1;
-        } else {
-            hi = mid;
-        }
-    }
-    const std::size_t enqueued = lo;
-    out.push_back("enqueued " + with_thousands(enqueued));
     if (done) {
         out.push_back("largest queue " + with_thousands(r.stats.max_queue));
     } else {
@@ -145,13 +148,11 @@ view::PuzzlePanelView PuzzleLesson::search_panel(const Side& side, std::size_t s
     p.title = title(side);
     p.counters = counters(side, step);
     if (done) {
-        p.status = "solved: " + std::to_string(r.solution_length()) + " moves, after " +
-                   plural(r.stats.expanded, "board") + " expanded";
+        p.status = "solved: " + plural(r.solution_length(), "move");
     } else if (r.method == Method::bfs) {
-        p.status = "level by level: every board d moves away before any d+1";
+        p.status = "depth d before depth d+1";
     } else {
-        p.status = "lowest priority first: moves so far + " +
-                   std::string(puzzle::to_string(r.heuristic)) + " distance";
+        p.status = "lowest moves + estimate first";
     }
 
     // The tree: the deepest rows reached, each with its most recent boards.
@@ -162,20 +163,21 @@ view::PuzzlePanelView PuzzleLesson::search_panel(const Side& side, std::size_t s
         const std::size_t current = r.nodes[r.expansions[step - 1]].moves;
         const std::size_t deepest = std::min<std::size_t>(side.deepest[step], current + 2);
         const std::size_t first = deepest + 1 > rows ? deepest + 1 - rows : 0;
-        std::size_t hidden = 0;
-        for (std::size_t d = 0; d < first; ++d) hidden += count_below(side.by_depth[d], step);
-        if (first > 0) {
-            p.hidden_rows = "not drawn: depths 0 to " + std::to_string(first - 1) + " (" +
-                            plural(hidden, "board") + ")";
-        }
-        if (deepest < side.deepest[step]) {
-            std::size_t below = 0;
-            for (std::size_t d = deepest + 1; d <= side.deepest[step]; ++d)
-                below += count_below(side.by_depth[d], step);
-            p.hidden_rows += (p.hidden_rows.empty() ? "not drawn: depths " : ", ") +
-                             std::to_string(deepest + 1) + " to " +
-                             std::to_string(side.deepest[step]) + " (" + plural(below, "board") +
-                             ")";
+        // One short line (the panel is narrow at the lesson's text size): which depths are
+        // left out; their boards are in the counters.
+        const auto range = [](std::size_t from, std::size_t to) {
+            return from == to ? std::to_string(from)
+                              : std::to_string(from) + "-" + std::to_string(to);
+        };
+        std::vector<std::string> left_out;
+        if (first > 0) left_out.push_back(range(0, first - 1));
+        if (deepest < side.deepest[step])
+            left_out.push_back(range(deepest + 1, side.deepest[step]));
+        if (!left_out.empty()) {
+            const bool one =
+                left_out.size() == 1 && left_out.front().find('-') == std::string::npos;
+            p.hidden_rows = std::string(one ? "depth " : "depths ") + left_out.front() +
+                            (left_out.size() > 1 ? ", " + left_out.back() : "") + " not shown";
         }
         std::vector<std::uint32_t> above;  // expansion indices drawn in the row above
         for (std::size_t d = first; d <= deepest; ++d) {
@@ -225,16 +227,16 @@ view::PuzzlePanelView PuzzleLesson::search_panel(const Side& side, std::size_t s
 
     if (step == 0) {
         p.board = board_view(side, 0);
-        p.caption = "start: manhattan " + std::to_string(puzzle::manhattan(start_)) + ", hamming " +
+        p.caption = "start: Manhattan " + std::to_string(puzzle::manhattan(start_)) + ", Hamming " +
                     std::to_string(puzzle::hamming(start_));
     }
 
     // The queue's front.
-    p.queue_title = r.method == Method::bfs ? "FIFO queue" : pq::to_string(r.queue) + " PQ";
+    p.queue_title = "next out";
     const std::vector<std::uint32_t> front = r.queue_front(step, view::max_puzzle_queue_shown);
     for (std::uint32_t id : front) p.queue.push_back(board_view(side, id));
     const std::size_t size = r.queue_size(step);
-    if (size > front.size()) p.queue_more = "+ " + with_thousands(size - front.size()) + " more";
+    if (size > front.size()) p.queue_more = "+" + with_thousands(size - front.size()) + " more";
     if (size == 0) p.queue_more = "(empty)";
     return p;
 }
@@ -247,7 +249,12 @@ view::PuzzlePanelView PuzzleLesson::playback_panel(const Side& side, double t) c
     p.status = "solution: " + plural(side.path.size() - 1, "move");
     p.playback = true;
     const std::size_t moves = side.path.size() - 1;
-    const double at = std::max(0.0, t) / per_move_;
+    if (t < 0.0) {  // the other solution plays first: this one waits on its start
+        p.board = board_view(side, side.path.front());
+        p.caption = "its " + plural(moves, "move") + " come next";
+        return p;
+    }
+    const double at = t / per_move_;
     const auto m = static_cast<std::size_t>(std::floor(at));
     if (m >= moves) {
         p.board = board_view(side, side.path.back());
@@ -274,7 +281,7 @@ view::PuzzleFrameView PuzzleLesson::frame_at(double seconds) const {
                                        : std::string("breadth-first search against A*"));
     for (std::size_t i = 0; i < sides_.size(); ++i) {
         if (t >= playback_start()) {
-            view.panels.push_back(playback_panel(sides_[i], t - playback_start()));
+            view.panels.push_back(playback_panel(sides_[i], t - playback_turn(i)));
         } else {
             view.panels.push_back(search_panel(sides_[i], step_at(i, t)));
         }

@@ -123,3 +123,31 @@ TEST_CASE("collide puzzle: bad boards name the token and unsolvable boards and b
     CHECK_FALSE(fs::exists(dir.path / "x.mp4"));
     CHECK_FALSE(fs::exists(dir.path / "x.png"));
 }
+
+TEST_CASE(
+    "collide puzzle --theme light draws a light page, dark is the default, a bad one exit 2") {
+    TempDir dir("puzzle_theme");
+    const std::string board = "puzzle \"1 2 3 4 0 6 7 5 8\"" + quick;
+    const auto mean_brightness = [&](const std::string& theme, const char* name) {
+        const fs::path png = dir.path / name;
+        const auto r = run_collide(board + "--last-frame " + theme + " -o " + quoted(png));
+        REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+        const collide::Image image = collide::video::read_png(png);
+        double sum = 0.0;
+        for (std::size_t i = 0; i + 3 < image.rgba.size(); i += 4)
+            sum += image.rgba[i] + image.rgba[i + 1] + image.rgba[i + 2];
+        return sum / (3.0 * static_cast<double>(image.rgba.size() / 4));
+    };
+    // The last frame: two large boards of light tiles on the page.
+    const double dark = mean_brightness("", "dark.png");
+    const double light = mean_brightness("--theme light", "light.png");
+    CHECK(dark < 110.0);
+    CHECK(light > 180.0);
+    CHECK(light - dark > 80.0);
+    CHECK(mean_brightness("--theme dark", "dark2.png") == doctest::Approx(dark));
+    CHECK(contains(run_collide_bad_input(board + "--theme sepia -o " + quoted(dir.path / "x.mp4")),
+                   "--theme: expected a theme (dark or light), got 'sepia'"));
+    CHECK(contains(run_collide_bad_input("puzzle \"1 2 3 4 0 6 7 5 8\" --solve --theme light"),
+                   "--theme"));
+    CHECK_FALSE(fs::exists(dir.path / "x.mp4"));
+}

@@ -224,9 +224,10 @@ TEST_CASE("golden: the indexed heap's map and heapsort's sorted part, 480x270") 
     view::HeapPanelView indexed = binary_panel({"12", "7", "5"}, 4);
     indexed.title = "indexed binary heap (max)";
     indexed.show_map = true;
+    indexed.map_title = "keys[i] / qp[i]";
     indexed.slots[0].mark = view::SlotMark::changed;
     indexed.map = {{"5", "3", false}, {"12", "1", true}, {"7", "2", false}};
-    indexed.caption = "increase 3 to 12: the map says 3 is at a[3]; set a[3] = 12";
+    indexed.caption = "increase 3 to 12: qp[] says 3 is at a[3]; set a[3] = 12";
     HeapViewConfig config = config_of(480, 270);
     config.widest_key = "12";
     HeapRenderer wide_keys(config, test::test_backend());
@@ -243,6 +244,24 @@ TEST_CASE("golden: the indexed heap's map and heapsort's sorted part, 480x270") 
     f.tokens = {"build", "sortdown"};
     f.current_token = 1;
     check_golden(renderer.render(f), "heap_sortdown");
+}
+
+TEST_CASE("heap view: a complete d-ary layout puts each parent over its middle child") {
+    // The 3-heap of the lecture's trace (7 keys at most): compact, its root is off its middle
+    // child; complete, every level is spread as if full and the tree is symmetric.
+    CHECK(tree_columns(7, 3, false) == 5);
+    CHECK(tree_columns(7, 3, true) == 9);
+    CHECK(tree_columns(11, 2, true) == 8);
+    const std::vector<PointF> p = tree_positions(7, 3, true);
+    CHECK(p[0].x == doctest::Approx(0.5F));
+    CHECK(p[2].x == doctest::Approx(p[0].x));                    // the middle child under the root
+    CHECK(p[5].x == doctest::Approx(p[1].x));                    // node 1's middle child under it
+    CHECK(p[2].x - p[1].x == doctest::Approx(p[3].x - p[2].x));  // siblings evenly apart
+    CHECK(p[4].x == doctest::Approx(0.0F));                      // the first column
+    // Compact: the root is the centre of the whole tree.
+    const std::vector<PointF> c = tree_positions(7, 3, false);
+    CHECK(c[0].x == doctest::Approx(0.5F));
+    CHECK(c[1].x == doctest::Approx(0.5F * (c[4].x + c[6].x)));
 }
 
 }  // namespace collide::render

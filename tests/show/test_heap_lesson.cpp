@@ -111,7 +111,7 @@ TEST_CASE("heap lesson: increase-key through the indexed heap's map, in words") 
     CHECK(panel.title == "indexed binary heap");
     const HeapLesson::OpText& increase = panel.ops.back();
     REQUIRE(increase.captions.size() >= 2);
-    CHECK(increase.captions[0] == "increase 3 to 12: the map says 3 is at a[3]; set a[3] = 12");
+    CHECK(increase.captions[0] == "increase 3 to 12: qp[] says 3 is at a[3]; set a[3] = 12");
     CHECK(increase.captions[1] == "increase 3 to 12; 12 > 3: a larger key may have to swim up");
     CHECK(t.op_labels().back() == "3^12");
 }
@@ -135,6 +135,22 @@ TEST_CASE("heap lesson: heapsort builds the heap, then sorts down, in words") {
     CHECK(panel.ops[1].shown.size() < sortdown.steps.size());
     for (const std::size_t s : panel.ops[1].shown)
         CHECK(sortdown.steps[s].kind != pq::LessonStep::Kind::sink);
+    // The last words give the totals the counters show: one total on screen, not two.
+    const view::HeapPanelView end = t.frame_at(t.duration()).panels.front();
+    CHECK(end.caption == panel.ops[1].summary);
+    CHECK(contains(end.caption, "heapsort in all: " + end.counters[0].substr(9) + " compares, " +
+                                    end.counters[1].substr(10) + " exchanges"));
+    CHECK(end.returned.empty());  // nothing is removed: the keys stay, sorted
+}
+
+TEST_CASE("heap lesson: the keys removed so far, as the trace's returned column") {
+    const HeapLesson t = lesson("P Q E * X A M *", {{pq::QueueFamily::binary, 2}});
+    CHECK(t.frame_at(0.0).panels[0].returned == "returned: -");
+    CHECK(t.frame_at(t.duration()).panels[0].returned == "returned: Q X");
+    // Mid-way through the first removal the key is still leaving, not yet returned.
+    CHECK(t.frame_at(time_of(t, 3, 0, 0.5)).panels[0].returned == "returned: -");
+    CHECK(t.frame_at(time_of(t, 4, 0, 0.5)).panels[0].returned == "returned: Q");
+    CHECK(lesson("P Q E", {{pq::QueueFamily::binary, 2}}).frame_at(0.0).panels[0].returned.empty());
 }
 
 TEST_CASE("heap lesson: panels move in lock-step, each operation paced by its longest panel") {

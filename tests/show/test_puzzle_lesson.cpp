@@ -69,7 +69,7 @@ TEST_CASE("puzzle lesson: the start, the tree rows and the queue's front during 
         REQUIRE(p.queue.size() == 1);  // the start waits in the queue
         CHECK(p.queue.front().tiles == tiles_of(start));
         CHECK(p.board.tiles == tiles_of(start));  // drawn large until the first expansion
-        CHECK(p.caption == "start: manhattan 10, hamming 5");
+        CHECK(p.caption == "start: Manhattan 10, Hamming 5");
     }
     // Mid-search: rows are consecutive depths, at most max_puzzle_rows, the newest board marked.
     const double mid = (frames.search_start() + frames.search_end()) / 2.0;
@@ -87,6 +87,19 @@ TEST_CASE("puzzle lesson: the start, the tree rows and the queue's front during 
     }
 }
 
+TEST_CASE("puzzle lesson: headings and titles in words, not option syntax") {
+    const Board start = Board::parse("1 2 3 4 0 6 7 5 8");
+    const auto results = both(start);
+    const view::PuzzleFrameView f = PuzzleLesson(start, results).frame_at(0.0);
+    CHECK(f.heading == "8-puzzle 1 2 3 4 0 6 7 5 8: breadth-first search against A*");
+    CHECK(f.panels[0].title == "Breadth-first search");
+    CHECK(f.panels[1].title == "A*, Manhattan distance, binary heap");
+    for (const view::PuzzlePanelView& p : f.panels) {
+        CHECK(p.title.find("--") == std::string::npos);
+        CHECK(p.queue_title.find("--") == std::string::npos);
+    }
+}
+
 TEST_CASE("puzzle lesson: once solved the path is marked and the playback ends on the goal") {
     const Board start = Board::parse("1 2 3 4 0 6 7 5 8");
     const auto results = both(start);
@@ -94,14 +107,24 @@ TEST_CASE("puzzle lesson: once solved the path is marked and the playback ends o
     const view::PuzzleFrameView done = frames.frame_at(frames.search_end() + 0.1);
     for (const view::PuzzlePanelView& p : done.panels) {
         CHECK(p.status.find("solved: 2 moves") != std::string::npos);
-        REQUIRE(p.rows.size() == 3);
+        REQUIRE(p.rows.size() == view::max_puzzle_rows);  // depths 1 and 2; 0 counted above
+        CHECK(p.hidden_rows == "depth 0 not shown");
         const auto& last = p.rows.back().boards;
         CHECK(std::count_if(last.begin(), last.end(), [](const view::PuzzleBoardView& b) {
                   return b.mark == view::PuzzleMark::goal;
               }) == 1);
         CHECK(p.rows.front().boards.front().mark == view::PuzzleMark::solution);
     }
-    const view::PuzzlePanelView moving = frames.frame_at(frames.playback_start() + 0.1).panels[1];
+    // One solution at a time, a second a move: BFS's first while A* waits on its start.
+    CHECK(frames.seconds_per_move() >= 1.0);
+    const view::PuzzleFrameView first = frames.frame_at(frames.playback_start() + 0.1);
+    CHECK(first.panels[0].caption == "move 1 of 2: 5 slides up");
+    CHECK(first.panels[1].caption == "its 2 moves come next");
+    CHECK(first.panels[1].board.tiles == tiles_of(start));
+    CHECK(frames.playback_turn(1) >= frames.playback_start() + 2.0 * frames.seconds_per_move());
+    const view::PuzzleFrameView second = frames.frame_at(frames.playback_turn(1) + 0.1);
+    CHECK(second.panels[0].caption == "solved in 2 moves");
+    const view::PuzzlePanelView moving = second.panels[1];
     CHECK(moving.playback);
     CHECK(moving.caption == "move 1 of 2: 5 slides up");
     CHECK(moving.slide.from == 7);  // 5 leaves the bottom row for the centre

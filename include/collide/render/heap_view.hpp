@@ -27,6 +27,7 @@
 
 #include "collide/image.hpp"
 #include "collide/render/context.hpp"
+#include "collide/render/drawn_text.hpp"
 #include "collide/render/renderer.hpp"
 #include "collide/view/heap.hpp"
 
@@ -73,6 +74,10 @@ class HeapRenderer {
     /// capacity or an exchange of slots that do not exist.
     void render(const view::HeapFrameView& frame, Image& out);
     [[nodiscard]] Image render(const view::HeapFrameView& frame);
+
+    /// Every piece of text of the last frame drawn, in drawing order, with its size (for tests:
+    /// nothing a class reads is smaller than the lesson size).
+    [[nodiscard]] const std::vector<DrawnText>& last_text() const noexcept;
 
   private:
     struct Impl;

@@ -19,6 +19,8 @@
 
 #include "collide/image.hpp"
 #include "collide/render/context.hpp"
+#include "collide/render/drawn_text.hpp"
+#include "collide/render/renderer.hpp"
 #include "collide/view/puzzle.hpp"
 
 namespace collide::render {
@@ -28,6 +30,8 @@ struct PuzzleViewConfig {
     int width = 1280;  ///< frame width in pixels, 320..8192
     int height = 720;  ///< frame height in pixels, 180..8192
     std::string font_path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+    /// dark (screens) or light (projectors, print): the collision video's themes.
+    Theme theme = Theme::dark;
 
     /// Throws Error(input) naming the first bad field.
     void validate() const;
@@ -51,6 +55,10 @@ class PuzzleRenderer {
     /// its side.
     void render(const view::PuzzleFrameView& frame, Image& out);
     [[nodiscard]] Image render(const view::PuzzleFrameView& frame);
+
+    /// Every piece of text of the last frame drawn, in drawing order, with its size (for tests:
+    /// nothing a class reads is smaller than the lesson size).
+    [[nodiscard]] const std::vector<DrawnText>& last_text() const noexcept;
 
   private:
     struct Impl;

@@ -94,6 +94,9 @@ class HeapLesson {
   private:
     [[nodiscard]] view::HeapPanelView panel_view(std::size_t panel,
                                                  const HeapPanelMoment& moment) const;
+    /// The keys panel `panel` has returned by `moment` ("returned: X Q"; "returned: -" before
+    /// the first), as the trace's "returned" column; "" for a lesson without removals.
+    [[nodiscard]] std::string returned(std::size_t panel, const HeapMoment& moment) const;
 
     pq::LessonRecord record_;
     std::vector<PanelText> text_;

@@ -8,7 +8,8 @@
 /// The timeline: a moment on the start, then the searches grow on one shared clock (the number
 /// of expansions grows geometrically with time, so the first boards are seen one by one and a
 /// 180,000-board BFS still ends in seconds; a search that is done waits, so the cheaper one is
-/// seen to finish first), a pause, the solutions played back move by move side by side, a hold.
+/// seen to finish first), a pause, the solutions played back move by move one after the other
+/// (one moving board at a time, a second a move), a hold.
 
 #include <cstddef>
 #include <cstdint>
@@ -37,6 +38,10 @@ class PuzzleLesson {
     [[nodiscard]] double search_end() const noexcept { return intro_ + search_seconds_; }
     /// When the playback of the solutions starts.
     [[nodiscard]] double playback_start() const noexcept;
+    /// When search `i`'s solution starts to play (the first at playback_start()).
+    [[nodiscard]] double playback_turn(std::size_t i) const noexcept;
+    /// Playback seconds per move.
+    [[nodiscard]] double seconds_per_move() const noexcept { return per_move_; }
 
     /// Expansions shown for search `i` at `seconds` (0 .. its expansions).
     [[nodiscard]] std::size_t step_at(std::size_t i, double seconds) const noexcept;
@@ -65,8 +70,11 @@ class PuzzleLesson {
     double intro_ = 2.5;           ///< the start, before any expansion
     double search_seconds_ = 0.0;  ///< the growth of the largest search
     double pause_ = 2.0;           ///< the finished trees, before the playback
-    double per_move_ = 0.5;        ///< playback seconds per move
+    double per_move_ = 1.0;        ///< playback seconds per move: a class follows each one
+    double between_ = 1.0;         ///< between one solution's goal and the next one's start
     double outro_ = 2.5;           ///< the solved boards, at the end
+    std::vector<double> turns_;    ///< when each solution plays, from playback_start()
+    double playback_length_ = 0.0;
 };
 
 }  // namespace collide::show

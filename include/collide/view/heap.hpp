@@ -40,7 +40,8 @@ struct HeapSwapView {
     float t = 0.0F;
 };
 
-/// One row of the indexed heap's map: a key and the array index it sits at.
+/// One column of the indexed heap's map, for one handle i (the lecture's IndexMinPQ): its key,
+/// keys[i], and the array index it sits at, qp[i].
 struct HeapMapRow {
     std::string key;
     std::string index;     ///< as shown, e.g. "3"
@@ -51,9 +52,12 @@ struct HeapMapRow {
 struct HeapPanelView {
     std::string title;                  ///< "binary heap (max)"
     std::vector<std::string> counters;  ///< e.g. {"compares 12", "exchanges 5"}
-    std::string caption;                ///< what happens, wrapped to the panel's width
-    bool tree = true;                   ///< a heap: tree above the array; false: array only
-    unsigned arity = 2;                 ///< children per node (tree only), >= 2
+    /// The keys removed so far, as the trace's "returned" column ("returned: X Q P"); empty:
+    /// the line is not drawn (a lesson without removals).
+    std::string returned;
+    std::string caption;  ///< what happens, wrapped to the panel's width
+    bool tree = true;     ///< a heap: tree above the array; false: array only
+    unsigned arity = 2;   ///< children per node (tree only), >= 2
     /// Slots the layout holds (the most keys the queue ever holds in this video), so that nodes
     /// keep their places for the whole video. >= slots.size().
     std::size_t capacity = 0;
@@ -65,6 +69,7 @@ struct HeapPanelView {
     float fade = 1.0F;                 ///< opacity of inserted (fading in) / leaving keys, [0, 1]
     int index_base = 1;                ///< the index shown under slot 0
     bool show_map = false;             ///< indexed heap: draw `map` beside the tree
+    std::string map_title;             ///< the map's heading, in the lecture's names
     std::vector<HeapMapRow> map;
 };
 

@@ -73,8 +73,9 @@ struct PuzzleFrameView {
 };
 
 /// Rows of the tree and boards per row drawn at most; queue entries shown at most.
-inline constexpr std::size_t max_puzzle_rows = 5;
-inline constexpr std::size_t max_puzzle_row_boards = 5;
-inline constexpr std::size_t max_puzzle_queue_shown = 5;
+/// (Few and large: a board's digits and label are lesson text, capitals 2.8 % of the frame.)
+inline constexpr std::size_t max_puzzle_rows = 2;
+inline constexpr std::size_t max_puzzle_row_boards = 2;
+inline constexpr std::size_t max_puzzle_queue_shown = 2;
 
 }  // namespace collide::view
