@@ -54,7 +54,7 @@ class SimulationThread {
     void run(const Scene& scene, const RenderPlan& plan, const std::atomic<bool>* cancel) {
         try {
             FrameSource source(scene, plan, cancel);
-            for (std::int64_t k = 0; k < plan.clock.count; ++k) {
+            for (std::int64_t k = 0; k < plan.timeline.frame_count(); ++k) {
                 if (cancel != nullptr && cancel->load()) break;
                 if (!queue_.push(source.frame(k))) break;
             }
@@ -137,7 +137,10 @@ FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan, const std::
 SimFrame FrameSource::frame(std::int64_t k) {
     SimFrame out;
     out.index = k;
-    out.time = plan_.clock.time(k);
+    out.sim_frame = plan_.timeline.sim_frame(k);
+    out.time = plan_.clock.time(out.sim_frame);
+    out.moved = out.sim_frame != last_sim_frame_;
+    last_sim_frame_ = out.sim_frame;
     out.panels.reserve(panels_.size());
     for (Panel& panel : panels_) {
         // The time-driven engine takes the whole steps of dt up to the frame time and shows the
@@ -175,6 +178,7 @@ FrameComposer::FrameComposer(const RenderPlan& plan) : plan_(plan) {}
 
 const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
     const LessonPlan& lesson = plan_.lesson;
+    const show::Segment& segment = plan_.timeline.segment_at(frame.index);
     const double video_time = static_cast<double>(frame.index) / plan_.fps;
     content_.panels.resize(frame.panels.size());
     content_.energy_drift.resize(frame.panels.size());
@@ -213,7 +217,9 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
         show::clock_text(frame.time, plan_.clock, plan_.speed.speed, plan_.render.overlays);
     content_.video_time = video_time;
     content_.speed = plan_.speed.speed;
-    content_.caption = lesson.caption_at(video_time);
+    // The card's words are its title (the timeline's caption); beneath it, the scene's caption.
+    content_.caption =
+        segment.kind == show::SegmentKind::card ? lesson.caption_at(video_time) : segment.caption;
     content_.histogram = lesson.histogram;
     content_.energy_line = show::energy_line(largest_drift_);
     content_.energy_plot = largest_drift_ > show::round_off_drift;
@@ -246,7 +252,7 @@ class CollisionProgram final : public FrameProgram {
         // --size: the renderer knows nothing of interrupts, so the flag is polled between them.
         check_interrupt();
         const render::FrameContent& content = composer_.compose(*frame);
-        const bool last = frame->index + 1 == plan_.clock.count;
+        const bool last = frame->index + 1 == plan_.timeline.frame_count();
         check_interrupt();
         switch (use) {
             case FrameUse::output:
@@ -300,7 +306,7 @@ PipelineResult run_render(const Scene& scene, const RenderPlan& plan, const JobH
     job.width = plan.width;
     job.height = plan.height;
     job.fps = plan.fps;
-    job.frames = plan.clock.count;
+    job.frames = plan.timeline.frame_count();
     // Only the frames whose positions appear in the trails need drawing before a still's frame.
     job.warm_frames = (plan.render.trails ? plan.render.trail_length : 1) - 1;
     job.title = title_of(plan);

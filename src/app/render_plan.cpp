@@ -489,7 +489,16 @@ RenderPlan plan_render(const RenderRequest& request, const Scene& scene) {
     plan.format = output.format;
     plan.output = output.path;
     plan.default_output = output.default_path;
+    if (request.timeline_json) {
+        if (request.timeline_json->empty())
+            throw_option_error("--timeline-json", "needs a file name");
+        if (still)
+            throw_option_error("--timeline-json", "only for videos (a still has no timeline)");
+        plan.timeline_json = *request.timeline_json;
+    }
     plan.clock = still && request.at ? still_clock(*request.at, plan.speed.speed, plan.fps) : video;
+    plan.timeline = still ? show::running_timeline(plan.fps, plan.clock.count)
+                          : show::lesson_timeline(plan.lesson, plan.fps, video.count);
     return plan;
 }
 
