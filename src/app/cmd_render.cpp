@@ -48,6 +48,8 @@ struct CliValues {
     std::string overlays;
     std::string layout_json;
     std::string timeline_json;
+    bool no_intro = false;
+    bool no_epilogue = false;
     bool trails = true;
     std::string gl = "auto";
     std::string dump_rgba;
@@ -122,6 +124,8 @@ RenderRequest request_of(const CliValues& v, bool still) {
     r.theme = if_given(v.video.theme_opt, v.video.theme);
     r.layout_json = if_given(v.layout_json_opt, v.layout_json);
     r.timeline_json = if_given(v.timeline_json_opt, v.timeline_json);
+    r.no_intro = v.no_intro;
+    r.no_epilogue = v.no_epilogue;
     r.format = if_given(v.video.format_opt, v.video.format);
     r.last_frame = v.video.last_frame;
     r.still = still;
@@ -440,6 +444,11 @@ void add_render_command(CLI::App& root) {
     add_shared_options(*cmd, *values, true);
     // Benchmarks only (scripts/bench_pipeline.sh): the frames as raw RGBA for ffmpeg alone.
     cmd->add_option("--dump-rgba", values->dump_rgba, "")->group("");
+    cmd->add_flag("--no-intro", values->no_intro,
+                  "No title card: the simulation runs from the first frame (for those who cut "
+                  "their own)");
+    cmd->add_flag("--no-epilogue", values->no_epilogue,
+                  "No summary card at the end: the last frame runs to the end of the video");
     values->timeline_json_opt = cmd->add_option(
         "--timeline-json", values->timeline_json,
         "Also write the video's timeline as JSON: its segments (card, run, hold, replay, "

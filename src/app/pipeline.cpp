@@ -176,6 +176,15 @@ std::vector<Measurements> FrameSource::measurements() const {
 
 FrameComposer::FrameComposer(const RenderPlan& plan) : plan_(plan) {}
 
+void FrameComposer::advance_step_phase(double state_time) {
+    if (state_time != last_step_time_) {
+        last_step_time_ = state_time;
+        step_phase_ = 0;
+    } else {
+        ++step_phase_;
+    }
+}
+
 const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
     const LessonPlan& lesson = plan_.lesson;
     const show::Segment& segment = plan_.timeline.segment_at(frame.index);
@@ -198,24 +207,22 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
         out.step_period = 1;
         out.step_phase = 0;
         if (panel.time_driven && lesson.frames_per_step > 1) {
-            // Which frame of the held step this is: a new state restarts the count.
-            if (panel.snapshot.time != last_step_time_) {
-                last_step_time_ = panel.snapshot.time;
-                step_phase_ = 0;
-            } else {
-                ++step_phase_;
-            }
+            // Which frame of the held step this is: a new state restarts the count (a frozen
+            // frame, a card's or a hold's, is no frame of the step).
+            if (frame.moved) advance_step_phase(panel.snapshot.time);
             out.note = show::step_note(plan_.time_engine.dt, plan_.clock.interval);
             out.step_period = lesson.frames_per_step;
             out.step_phase = std::min(step_phase_, lesson.frames_per_step - 1);
         }
-        content_.energy_drift[i].push_back(panel.drift);
+        if (frame.moved || content_.energy_drift[i].empty())
+            content_.energy_drift[i].push_back(panel.drift);
         if (std::isfinite(panel.drift.drift))
             largest_drift_ = std::max(largest_drift_, std::abs(panel.drift.drift));
     }
     content_.time_text =
         show::clock_text(frame.time, plan_.clock, plan_.speed.speed, plan_.render.overlays);
-    content_.video_time = video_time;
+    // Failure markers fade with the moving picture: a card or a hold keeps them as they are.
+    content_.video_time = static_cast<double>(frame.sim_frame) / plan_.fps;
     content_.speed = plan_.speed.speed;
     // The card's words are its title (the timeline's caption); beneath it, the scene's caption.
     content_.caption =
@@ -256,7 +263,7 @@ class CollisionProgram final : public FrameProgram {
         check_interrupt();
         switch (use) {
             case FrameUse::output:
-                renderer_.render(content, image);
+                output(*frame, content, image);
                 break;
             case FrameUse::warm:
                 renderer_.draw(content);
@@ -278,6 +285,20 @@ class CollisionProgram final : public FrameProgram {
         if (interrupts_ != nullptr) interrupts_->throw_if_requested();
     }
 
+    /// Draws the frame, except inside a hold: there every frame after the first is the first
+    /// one again (the states, the clock, the caption and the markers all stand still), and
+    /// drawing it again would only lengthen the trails by points that stand still too.
+    void output(const SimFrame& frame, const render::FrameContent& content, Image& image) {
+        const show::Segment& segment = plan_.timeline.segment_at(frame.index);
+        const bool hold = segment.kind == show::SegmentKind::hold;
+        if (hold && frame.index > segment.first_frame && !held_.rgba.empty()) {
+            image = held_;
+            return;
+        }
+        renderer_.render(content, image);
+        if (hold) held_ = image;
+    }
+
     /// The simulation ended before the last frame: an interrupt (say so, rather than the
     /// "simulation stopped" the engines threw on seeing it), its error, or neither.
     [[noreturn]] void stopped_early() {
@@ -291,6 +312,7 @@ class CollisionProgram final : public FrameProgram {
     PipelineResult& result_;
     render::Renderer renderer_;
     FrameComposer composer_;
+    Image held_;                   ///< the first frame of the hold under way
     SimulationThread simulation_;  // last: its thread starts once everything else exists
 };
 

@@ -37,8 +37,8 @@ struct PanelFrame {
     std::string title;
     render::DriftPoint drift;  ///< (KE - KE0) / KE0 at this frame
     bool time_driven = false;
-    show::PanelWords words;  ///< counters, figures, compact line, cost (collide/show)
-    QueueWords queue_words;  ///< the queue strip's (snapshot.queue set)
+    show::PanelWords words;     ///< counters, figures, compact line, cost (collide/show)
+    QueueWords queue_words;     ///< the queue strip's (snapshot.queue set)
 };
 
 /// What the simulation thread hands to the render thread for one frame.
@@ -87,6 +87,9 @@ class FrameComposer {
     [[nodiscard]] const render::FrameContent& compose(const SimFrame& frame);
 
   private:
+    /// The time-driven panel's state is at `state_time`: a new step restarts the count.
+    void advance_step_phase(double state_time);
+
     const RenderPlan& plan_;
     render::FrameContent content_;
     double largest_drift_ = 0.0;

@@ -143,6 +143,8 @@ struct RenderRequest {
     std::optional<int> queue;           ///< --queue [K]: show the event queue, K events
     std::optional<double> slow_motion;  ///< --slow-motion F: F times slower than the speed
     std::string font;                   ///< --font FILE (empty: find_font's search)
+    bool no_intro = false;              ///< --no-intro: no title card
+    bool no_epilogue = false;           ///< --no-epilogue: no summary card at the end
 };
 
 /// Events `--queue` shows without a number.

@@ -25,10 +25,13 @@ Timeline lesson_timeline(const LessonPlan& lesson, int fps, std::int64_t frames)
     script.fps = fps;
     script.frames = frames;
     script.card_seconds = lesson.intro_seconds;
-    script.card_waits = false;
+    script.card_waits = true;
     script.card_title = lesson.title;
     script.caption = lesson.caption;
-    for (const CaptionCue& cue : lesson.captions) script.cues.push_back({cue.at, cue.text, 0.0});
+    for (const CaptionCue& cue : lesson.captions)
+        script.cues.push_back({cue.at, cue.text, cue.hold});
+    script.epilogue_seconds = lesson.epilogue_seconds;
+    script.epilogue_caption = "In the end: the final figures side by side";
     return build_timeline(script);
 }
 

@@ -100,6 +100,7 @@ struct LessonPlan {
     std::string title;                 ///< the intro card's title
     std::string description;           ///< the intro card's text
     double intro_seconds = 0.0;        ///< how long the card shows (0: none; videos only)
+    double epilogue_seconds = 0.0;     ///< the summary card at the end (0: none; videos only)
     std::string caption;               ///< [render] caption, shown when no scripted caption applies
     std::vector<CaptionCue> captions;  ///< [[render.captions]] within the video
     PlotSize histogram = PlotSize::none;
