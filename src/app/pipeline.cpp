@@ -12,6 +12,7 @@
 
 #include "bounded_queue.hpp"
 #include "collide/error.hpp"
+#include "collide/show/collision_summary.hpp"
 
 namespace collide::app {
 
@@ -159,6 +160,7 @@ PanelFrame FrameSource::describe(const Panel& panel) const {
     out.title = panel.title;
     out.drift = {out.snapshot.time, drift};
     out.time_driven = panel.time_driven;
+    out.measurements = m;
     out.words = show::panel_words(m, panel.time_driven,
                                   out.snapshot.box.boundary == Boundary::walls, drift);
     if (out.snapshot.queue) out.queue_words = show::queue_words(*out.snapshot.queue);
@@ -233,6 +235,18 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
     content_.intro_title = lesson.title;
     content_.intro_text = lesson.description;
     content_.intro_opacity = lesson.intro_opacity(video_time);
+    content_.summary = {};
+    if (segment.kind == show::SegmentKind::epilogue) {
+        std::vector<show::SummaryPanel> panels;
+        for (const PanelFrame& panel : frame.panels)
+            panels.push_back({panel.measurements, panel.time_driven});
+        const bool walls =
+            !frame.panels.empty() && frame.panels[0].snapshot.box.boundary == Boundary::walls;
+        content_.summary = show::summary_card(
+            panels, walls,
+            show::clock_text(frame.time, plan_.clock, plan_.speed.speed, OverlayLevel::lesson));
+        content_.summary.opacity = show::summary_opacity(video_time - segment.start);
+    }
     return content_;
 }
 

@@ -38,6 +38,7 @@ struct PanelFrame {
     render::DriftPoint drift;  ///< (KE - KE0) / KE0 at this frame
     bool time_driven = false;
     show::PanelWords words;     ///< counters, figures, compact line, cost (collide/show)
+    Measurements measurements;  ///< the engine's, at this frame (the epilogue's card)
     QueueWords queue_words;     ///< the queue strip's (snapshot.queue set)
 };
 

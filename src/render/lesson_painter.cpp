@@ -116,6 +116,7 @@ void LessonPainter::add_marks(std::size_t index, const PanelContent& content,
 void LessonPainter::finish_frame(const FrameContent& frame) {
     if (!layout_.compact && !intro_) add_column(frame);
     if (intro_) add_intro(frame);
+    if (!frame.summary.rows.empty() && frame.summary.opacity > 0.0F) add_summary(frame);
 }
 
 void LessonPainter::add_panel_text(std::size_t index, const PanelContent& content,

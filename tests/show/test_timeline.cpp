@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "collide/show/collision.hpp"
+#include "collide/show/collision_summary.hpp"
 #include "collide/show/timeline.hpp"
 
 using namespace collide;
@@ -163,4 +164,32 @@ TEST_CASE("captions on frames: a cue shows from the first frame at or after its 
     for (std::int64_t k = 0; k < 150; ++k) {
         CHECK(timeline.segment_at(k).caption == lesson.caption_at(static_cast<double>(k) / 15.0));
     }
+}
+
+TEST_CASE("the epilogue's card: the final figures side by side and the work ratio") {
+    Measurements time;
+    time.missed_collisions = 48;
+    time.overlapping_pairs = 3;
+    time.escaped = 2;
+    time.collisions_pair = 100;
+    time.overlap_checks = 400000;
+    Measurements event;
+    event.collisions_pair = 140;
+    event.collisions_wall = 10;
+    event.queue.pushes = 1500;
+    event.queue.pops = 500;
+    const SummaryCard card = summary_card({{time, true}, {event, false}}, true, "t = 3.000");
+    CHECK(card.title == "In the end, at t = 3.000");
+    CHECK(card.columns == std::vector<std::string>{"Time-driven", "Event-driven"});
+    REQUIRE(card.rows.size() == 5);  // missed, overlapping, left the box, collisions, work
+    CHECK(card.rows[0].values == std::vector<std::string>{"48", "0"});
+    CHECK(card.rows[2].label == "discs that left the box");
+    CHECK(card.rows[3].values == std::vector<std::string>{"100", "150"});
+    CHECK(card.footer == "Time-driven: 200 times the work of the queue");
+    // A periodic box has nothing to leave; one panel has nothing to compare.
+    CHECK(summary_card({{time, true}, {event, false}}, false, "t").rows.size() == 4);
+    CHECK(summary_card({{event, false}}, false, "t").footer.empty());
+    CHECK(summary_opacity(0.0) == 0.0F);
+    CHECK(summary_opacity(0.25) == doctest::Approx(0.5));
+    CHECK(summary_opacity(2.0) == 1.0F);
 }
