@@ -11,6 +11,7 @@
 #include "collide/error.hpp"
 #include "collide/named_values.hpp"
 #include "collide/show/collision_summary.hpp"
+#include "collide/show/still_timeline.hpp"
 #include "collide/sim/pq/queue_kind.hpp"
 #include "collide/sim/queue_view.hpp"
 #include "font_search.hpp"
@@ -530,7 +531,7 @@ RenderPlan plan_render(const RenderRequest& request, const Scene& scene) {
         // A still is the simulation at one time: no card, no hold, no summary over it. Without
         // --at it shows the video's last simulation frame.
         plan.clock = request.at ? still_clock(*request.at, plan.speed.speed, plan.fps) : simulation;
-        plan.timeline = show::running_timeline(plan.fps, plan.clock.count);
+        plan.timeline = show::still_timeline(video_timeline, plan.clock.count, plan.lesson.caption);
         plan.lesson.intro_seconds = 0.0;
         plan.lesson.epilogue_seconds = 0.0;
     } else {

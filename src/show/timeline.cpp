@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "collide/assert.hpp"
+#include "collide/show/still_timeline.hpp"
 
 namespace collide::show {
 
@@ -152,6 +153,46 @@ Timeline running_timeline(int fps, std::int64_t frames, std::string caption) {
     script.frames = frames;
     script.caption = std::move(caption);
     return build_timeline(script);
+}
+
+}  // namespace collide::show
+
+namespace collide::show {
+
+Timeline still_timeline(const Timeline& video, std::int64_t frames, const std::string& caption) {
+    // Where each run of the video starts showing its caption, in simulation frames: the state
+    // first shown in a run is read with that run's caption.
+    std::vector<std::pair<std::int64_t, const std::string*>> from;
+    for (const Segment& segment : video.segments) {
+        if (segment.kind != SegmentKind::run) continue;
+        if (from.empty() && segment.sim_frame > 0) from.emplace_back(0, &caption);
+        from.emplace_back(segment.sim_frame, &segment.caption);
+    }
+    Timeline timeline;
+    timeline.fps = video.fps;
+    const std::int64_t count = std::max<std::int64_t>(1, frames);
+    for (std::size_t i = 0; i < std::max<std::size_t>(1, from.size()); ++i) {
+        const std::int64_t first = from.empty() ? 0 : std::min(from[i].first, count);
+        const std::int64_t end = i + 1 < from.size() ? std::min(from[i + 1].first, count) : count;
+        if (end <= first) continue;
+        const std::string& words = from.empty() ? caption : *from[i].second;
+        if (!timeline.segments.empty() && timeline.segments.back().caption == words) {
+            timeline.segments.back().end_frame = end;
+            continue;
+        }
+        Segment segment;
+        segment.first_frame = first;
+        segment.end_frame = end;
+        segment.sim_frame = first;
+        segment.caption = words;
+        timeline.segments.push_back(std::move(segment));
+    }
+    const auto fps = static_cast<double>(timeline.fps);
+    for (Segment& segment : timeline.segments) {
+        segment.start = static_cast<double>(segment.first_frame) / fps;
+        segment.end = static_cast<double>(segment.end_frame) / fps;
+    }
+    return timeline;
 }
 
 }  // namespace collide::show

@@ -8,6 +8,7 @@
 
 #include "collide/show/collision.hpp"
 #include "collide/show/collision_summary.hpp"
+#include "collide/show/still_timeline.hpp"
 #include "collide/show/timeline.hpp"
 
 using namespace collide;
@@ -192,4 +193,19 @@ TEST_CASE("the epilogue's card: the final figures side by side and the work rati
     CHECK(summary_opacity(0.0) == 0.0F);
     CHECK(summary_opacity(0.25) == doctest::Approx(0.5));
     CHECK(summary_opacity(2.0) == 1.0F);
+}
+
+TEST_CASE("a still's frames only run, each with the caption the video reads with that state") {
+    const Timeline video = build_timeline(lesson_script());
+    const Timeline still = still_timeline(video, 60, "Always");
+    check_invariants(still, 60);
+    for (const Segment& s : still.segments) CHECK(s.kind == SegmentKind::run);
+    // Every state the video shows in a run: the same caption in the still.
+    for (std::int64_t k = 0; k < video.frame_count(); ++k) {
+        const Segment& s = video.segment_at(k);
+        if (s.kind != SegmentKind::run) continue;
+        CHECK(still.segment_at(video.sim_frame(k)).caption == s.caption);
+    }
+    CHECK(still.segment_at(0).caption == "Always");  // shown only under the card
+    CHECK(still.segment_at(59).caption == "Later");  // beyond the video: its last caption
 }
