@@ -120,17 +120,20 @@ TEST_CASE(
     request.dt = dt;
     request.mode = "time";
     request.duration = until;
+    request.no_epilogue = true;  // every video frame a new state
     std::vector<Result> results;
     for (const int fps : {15, 24}) {  // video clocks ending at 2.0 - 1/fps
         request.fps = fps;
         RenderPlan plan = plan_render(request, scene);
         plan.clock.count += 1;  // and one frame more: exactly `until`
         plan.clock.last_time = until;
+        plan.timeline = show::running_timeline(fps, plan.clock.count);
         results.push_back(through_frames(plan));
     }
     request.fps = 30;
     RenderPlan still = plan_render(request, scene);
     still.clock = still_clock(until, 1.0, 30);  // the frames of `thumbnail --at 2`
+    still.timeline = show::running_timeline(30, still.clock.count);
     results.push_back(through_frames(still));
     auto simulate = make_engine(scene, still.time_engine);  // `simulate --until 2` does this
     simulate->advance_to(until);
@@ -190,7 +193,7 @@ TEST_CASE("plan_render: command line over scene hints over defaults, and the def
     CHECK(plan.duration == 1.0);
     CHECK(plan.render.color_mode == render::ColorMode::scene);
     CHECK(plan.width == 854);
-    CHECK(plan.clock.count == 15);
+    CHECK(plan.timeline.frame_count() == 15);  // video frames; the simulation's are fewer
 }
 
 TEST_CASE("plan_render rejects bad options with the option's name") {
@@ -444,8 +447,10 @@ TEST_CASE("the video's timeline: the card waits, holds freeze, a still only runs
     request.fps = 10;
     request.last_frame = true;
     const RenderPlan still = plan_render(request, scene);
-    REQUIRE(still.timeline.segments.size() == 1);
-    CHECK(still.timeline.segments[0].kind == show::SegmentKind::run);
+    for (const show::Segment& s : still.timeline.segments) {
+        CHECK(s.kind == show::SegmentKind::run);
+        CHECK(s.moves);
+    }
     CHECK(still.clock.count == plan.clock.count);
     CHECK(still.clock.last_time == plan.clock.last_time);
     // Holds and the card are read where captions are: not at --overlays none.
