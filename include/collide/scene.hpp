@@ -19,6 +19,7 @@ struct CaptionCue {
     std::string text;  ///< at most max_caption_chars characters
     std::string file;  ///< where it was written, for errors found later (beyond the video)
     int line = 0;
+    double hold = 0.0;  ///< seconds of video the picture stays frozen from `at` (0: none)
 };
 
 /// Longest caption: one line across a 16:9 frame at the lesson text size (docs/scenes.md).

@@ -47,6 +47,9 @@ struct CliValues {
     std::string color;
     std::string overlays;
     std::string layout_json;
+    std::string timeline_json;
+    bool no_intro = false;
+    bool no_epilogue = false;
     bool trails = true;
     std::string gl = "auto";
     std::string dump_rgba;
@@ -64,6 +67,7 @@ struct CliValues {
     CLI::Option* color_opt = nullptr;
     CLI::Option* overlays_opt = nullptr;
     CLI::Option* layout_json_opt = nullptr;
+    CLI::Option* timeline_json_opt = nullptr;
     CLI::Option* trails_opt = nullptr;
     CLI::Option* queue_opt = nullptr;
     CLI::Option* slow_motion_opt = nullptr;
@@ -119,6 +123,9 @@ RenderRequest request_of(const CliValues& v, bool still) {
     r.overlays = if_given(v.overlays_opt, v.overlays);
     r.theme = if_given(v.video.theme_opt, v.video.theme);
     r.layout_json = if_given(v.layout_json_opt, v.layout_json);
+    r.timeline_json = if_given(v.timeline_json_opt, v.timeline_json);
+    r.no_intro = v.no_intro;
+    r.no_epilogue = v.no_epilogue;
     r.format = if_given(v.video.format_opt, v.video.format);
     r.last_frame = v.video.last_frame;
     r.still = still;
@@ -251,6 +258,28 @@ std::string engine_costs(const RenderPlan& plan, const PipelineResult& result) {
     return out;
 }
 
+/// The video's timeline (--timeline-json): every segment with its video frames and seconds, the
+/// simulation times it shows and its caption, in order.
+Json timeline_json(const RenderPlan& plan) {
+    Json segments = Json::array();
+    for (const show::Segment& segment : plan.timeline.segments) {
+        segments.push_back(Json{{"kind", show::segment_kind_name(segment.kind)},
+                                {"start", segment.start},
+                                {"end", segment.end},
+                                {"first_frame", segment.first_frame},
+                                {"end_frame", segment.end_frame},
+                                {"sim_start", plan.clock.time(segment.sim_frame)},
+                                {"sim_end", plan.clock.time(segment.last_sim_frame())},
+                                {"moves", segment.moves},
+                                {"caption", segment.caption}});
+    }
+    return Json{{"fps", plan.timeline.fps},
+                {"frames", plan.timeline.frame_count()},
+                {"seconds", static_cast<double>(plan.timeline.frame_count()) / plan.timeline.fps},
+                {"speed", plan.speed.speed},
+                {"segments", std::move(segments)}};
+}
+
 /// The summary as one JSON object (render/thumbnail --json): the same figures as the line.
 Json summary_json(const RenderPlan& plan, const PipelineResult& result, double wall_seconds,
                   std::uintmax_t bytes) {
@@ -323,6 +352,8 @@ void check_distinct_outputs(const RenderPlan& plan, const CliValues& values) {
         plan.kind == OutputKind::video && plan.format == video::VideoFormat::png_sequence;
     outputs.push_back({"-o", plan.output, directory});
     if (!plan.layout_json.empty()) outputs.push_back({"--layout-json", plan.layout_json, false});
+    if (!plan.timeline_json.empty())
+        outputs.push_back({"--timeline-json", plan.timeline_json, false});
     if (!values.dump_rgba.empty()) outputs.push_back({"--dump-rgba", values.dump_rgba, false});
     if (outputs.size() > 1) io::check_distinct_outputs(outputs);
 }
@@ -351,15 +382,31 @@ void run(const CliValues& values, bool still) {
     if (!plan.layout_json.empty()) {
         layout_file.emplace(plan.layout_json, io::OutputOptions{"--layout-json", true});
     }
-    // Data on standard output (--layout-json -) is the only thing there: the summary moves aside.
-    const bool data_on_stdout = layout_file && layout_file->is_standard_output();
+    // Known before any frame: its temporary is filled now and put in place after the video.
+    std::optional<io::OutputFile> timeline_file;
+    if (!plan.timeline_json.empty()) {
+        timeline_file.emplace(plan.timeline_json, io::OutputOptions{"--timeline-json", true});
+        if (!timeline_file->is_standard_output())
+            timeline_file->write(json_text(timeline_json(plan)));
+    }
+    // Data on standard output (--layout-json -, --timeline-json -) is the only thing there: the
+    // summary moves aside, and only one of them can be there.
+    const bool layout_on_stdout = layout_file && layout_file->is_standard_output();
+    const bool timeline_on_stdout = timeline_file && timeline_file->is_standard_output();
+    if (layout_on_stdout && timeline_on_stdout) {
+        throw_option_error("--timeline-json",
+                           "it and --layout-json - cannot share standard output; write one of "
+                           "them to a file");
+    }
+    const bool data_on_stdout = layout_on_stdout || timeline_on_stdout;
     if (data_on_stdout && values.json) {
         throw_option_error("--json",
-                           "the JSON summary and --layout-json - cannot share standard "
-                           "output; write the layout to a file");
+                           fmt::format("the JSON summary and {} - cannot share standard "
+                                       "output; write the data to a file",
+                                       layout_on_stdout ? "--layout-json" : "--timeline-json"));
     }
 
-    Progress progress(progress_mode, plan.clock.count);
+    Progress progress(progress_mode, plan.timeline.frame_count());
     JobHooks hooks;
     hooks.interrupts = &interrupts;
     hooks.progress = &progress;
@@ -376,6 +423,12 @@ void run(const CliValues& values, bool still) {
         throw;
     }
     progress.finish();
+    if (timeline_file) {
+        // On standard output only once the video is whole; a file was filled before the frames.
+        if (timeline_file->is_standard_output())
+            timeline_file->write(json_text(timeline_json(plan)));
+        timeline_file->commit();
+    }
     for (const std::string& line : result.notices) print_notice(line);
     print_summary(plan, result, progress.elapsed_seconds(), data_on_stdout ? stderr : stdout,
                   values.json);
@@ -391,6 +444,15 @@ void add_render_command(CLI::App& root) {
     add_shared_options(*cmd, *values, true);
     // Benchmarks only (scripts/bench_pipeline.sh): the frames as raw RGBA for ffmpeg alone.
     cmd->add_option("--dump-rgba", values->dump_rgba, "")->group("");
+    cmd->add_flag("--no-intro", values->no_intro,
+                  "No title card: the simulation runs from the first frame (for those who cut "
+                  "their own)");
+    cmd->add_flag("--no-epilogue", values->no_epilogue,
+                  "No summary card at the end: the last frame runs to the end of the video");
+    values->timeline_json_opt = cmd->add_option(
+        "--timeline-json", values->timeline_json,
+        "Also write the video's timeline as JSON: its segments (card, run, hold, replay, "
+        "epilogue) with their video and simulation times and captions");
     cmd->footer(
         "Examples:\n"
         "  collide render tunnelling                      # out/tunnelling.mp4, 720p30, side by "

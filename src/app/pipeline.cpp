@@ -12,6 +12,7 @@
 
 #include "bounded_queue.hpp"
 #include "collide/error.hpp"
+#include "collide/show/collision_summary.hpp"
 
 namespace collide::app {
 
@@ -54,7 +55,7 @@ class SimulationThread {
     void run(const Scene& scene, const RenderPlan& plan, const std::atomic<bool>* cancel) {
         try {
             FrameSource source(scene, plan, cancel);
-            for (std::int64_t k = 0; k < plan.clock.count; ++k) {
+            for (std::int64_t k = 0; k < plan.timeline.frame_count(); ++k) {
                 if (cancel != nullptr && cancel->load()) break;
                 if (!queue_.push(source.frame(k))) break;
             }
@@ -137,7 +138,10 @@ FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan, const std::
 SimFrame FrameSource::frame(std::int64_t k) {
     SimFrame out;
     out.index = k;
-    out.time = plan_.clock.time(k);
+    out.sim_frame = plan_.timeline.sim_frame(k);
+    out.time = plan_.clock.time(out.sim_frame);
+    out.moved = out.sim_frame != last_sim_frame_;
+    last_sim_frame_ = out.sim_frame;
     out.panels.reserve(panels_.size());
     for (Panel& panel : panels_) {
         // The time-driven engine takes the whole steps of dt up to the frame time and shows the
@@ -156,6 +160,7 @@ PanelFrame FrameSource::describe(const Panel& panel) const {
     out.title = panel.title;
     out.drift = {out.snapshot.time, drift};
     out.time_driven = panel.time_driven;
+    out.measurements = m;
     out.words = show::panel_words(m, panel.time_driven,
                                   out.snapshot.box.boundary == Boundary::walls, drift);
     if (out.snapshot.queue)
@@ -179,8 +184,18 @@ FrameComposer::FrameComposer(const RenderPlan& plan) : plan_(plan) {
         show::color_key(r.color_mode, r.speed_min, r.speed_max, r.mass_min, r.mass_max);
 }
 
+void FrameComposer::advance_step_phase(double state_time) {
+    if (state_time != last_step_time_) {
+        last_step_time_ = state_time;
+        step_phase_ = 0;
+    } else {
+        ++step_phase_;
+    }
+}
+
 const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
     const LessonPlan& lesson = plan_.lesson;
+    const show::Segment& segment = plan_.timeline.segment_at(frame.index);
     const double video_time = static_cast<double>(frame.index) / plan_.fps;
     content_.panels.resize(frame.panels.size());
     content_.energy_drift.resize(frame.panels.size());
@@ -200,32 +215,44 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
         out.step_period = 1;
         out.step_phase = 0;
         if (panel.time_driven && lesson.frames_per_step > 1) {
-            // Which frame of the held step this is: a new state restarts the count.
-            if (panel.snapshot.time != last_step_time_) {
-                last_step_time_ = panel.snapshot.time;
-                step_phase_ = 0;
-            } else {
-                ++step_phase_;
-            }
+            // Which frame of the held step this is: a new state restarts the count (a frozen
+            // frame, a card's or a hold's, is no frame of the step).
+            if (frame.moved) advance_step_phase(panel.snapshot.time);
             out.note = show::step_note(plan_.time_engine.dt, plan_.clock.interval);
             out.step_period = lesson.frames_per_step;
             out.step_phase = std::min(step_phase_, lesson.frames_per_step - 1);
         }
-        content_.energy_drift[i].push_back(panel.drift);
+        if (frame.moved || content_.energy_drift[i].empty())
+            content_.energy_drift[i].push_back(panel.drift);
         if (std::isfinite(panel.drift.drift))
             largest_drift_ = std::max(largest_drift_, std::abs(panel.drift.drift));
     }
     content_.time_text =
         show::clock_text(frame.time, plan_.clock, plan_.speed.speed, plan_.render.overlays);
-    content_.video_time = video_time;
+    // Failure markers fade with the moving picture: a card or a hold keeps them as they are.
+    content_.video_time = static_cast<double>(frame.sim_frame) / plan_.fps;
     content_.speed = plan_.speed.speed;
-    content_.caption = lesson.caption_at(video_time);
+    // The card's words are its title (the timeline's caption); beneath it, the scene's caption.
+    content_.caption =
+        segment.kind == show::SegmentKind::card ? lesson.caption_at(video_time) : segment.caption;
     content_.histogram = lesson.histogram;
     content_.energy_line = show::energy_line(largest_drift_);
     content_.energy_plot = largest_drift_ > show::round_off_drift;
     content_.intro_title = lesson.title;
     content_.intro_text = lesson.description;
     content_.intro_opacity = lesson.intro_opacity(video_time);
+    content_.summary = {};
+    if (segment.kind == show::SegmentKind::epilogue) {
+        std::vector<show::SummaryPanel> panels;
+        for (const PanelFrame& panel : frame.panels)
+            panels.push_back({panel.measurements, panel.time_driven});
+        const bool walls =
+            !frame.panels.empty() && frame.panels[0].snapshot.box.boundary == Boundary::walls;
+        content_.summary = show::summary_card(
+            panels, walls,
+            show::clock_text(frame.time, plan_.clock, plan_.speed.speed, OverlayLevel::lesson));
+        content_.summary.opacity = show::summary_opacity(video_time - segment.start);
+    }
     return content_;
 }
 
@@ -252,11 +279,11 @@ class CollisionProgram final : public FrameProgram {
         // --size: the renderer knows nothing of interrupts, so the flag is polled between them.
         check_interrupt();
         const render::FrameContent& content = composer_.compose(*frame);
-        const bool last = frame->index + 1 == plan_.clock.count;
+        const bool last = frame->index + 1 == plan_.timeline.frame_count();
         check_interrupt();
         switch (use) {
             case FrameUse::output:
-                renderer_.render(content, image);
+                output(*frame, content, image);
                 break;
             case FrameUse::warm:
                 renderer_.draw(content);
@@ -278,6 +305,20 @@ class CollisionProgram final : public FrameProgram {
         if (interrupts_ != nullptr) interrupts_->throw_if_requested();
     }
 
+    /// Draws the frame, except inside a hold: there every frame after the first is the first
+    /// one again (the states, the clock, the caption and the markers all stand still), and
+    /// drawing it again would only lengthen the trails by points that stand still too.
+    void output(const SimFrame& frame, const render::FrameContent& content, Image& image) {
+        const show::Segment& segment = plan_.timeline.segment_at(frame.index);
+        const bool hold = segment.kind == show::SegmentKind::hold;
+        if (hold && frame.index > segment.first_frame && !held_.rgba.empty()) {
+            image = held_;
+            return;
+        }
+        renderer_.render(content, image);
+        if (hold) held_ = image;
+    }
+
     /// The simulation ended before the last frame: an interrupt (say so, rather than the
     /// "simulation stopped" the engines threw on seeing it), its error, or neither.
     [[noreturn]] void stopped_early() {
@@ -291,6 +332,7 @@ class CollisionProgram final : public FrameProgram {
     PipelineResult& result_;
     render::Renderer renderer_;
     FrameComposer composer_;
+    Image held_;                   ///< the first frame of the hold under way
     SimulationThread simulation_;  // last: its thread starts once everything else exists
 };
 
@@ -306,7 +348,7 @@ PipelineResult run_render(const Scene& scene, const RenderPlan& plan, const JobH
     job.width = plan.width;
     job.height = plan.height;
     job.fps = plan.fps;
-    job.frames = plan.clock.count;
+    job.frames = plan.timeline.frame_count();
     // Only the frames whose positions appear in the trails need drawing before a still's frame.
     job.warm_frames = (plan.render.trails ? plan.render.trail_length : 1) - 1;
     job.title = title_of(plan);

@@ -37,14 +37,17 @@ struct PanelFrame {
     std::string title;
     render::DriftPoint drift;  ///< (KE - KE0) / KE0 at this frame
     bool time_driven = false;
-    show::PanelWords words;  ///< counters, figures, compact line, cost (collide/show)
-    QueueWords queue_words;  ///< the queue strip's (snapshot.queue set)
+    show::PanelWords words;     ///< counters, figures, compact line, cost (collide/show)
+    Measurements measurements;  ///< the engine's, at this frame (the epilogue's card)
+    QueueWords queue_words;     ///< the queue strip's (snapshot.queue set)
 };
 
 /// What the simulation thread hands to the render thread for one frame.
 struct SimFrame {
-    std::int64_t index = 0;
-    double time = 0.0;
+    std::int64_t index = 0;          ///< the video frame
+    std::int64_t sim_frame = 0;      ///< the simulation frame it shows (plan.timeline)
+    double time = 0.0;               ///< the simulation time it shows
+    bool moved = true;               ///< a new state: not a repeat of the previous frame's
     std::vector<PanelFrame> panels;  ///< time-driven first, then event-driven (as the plan says)
 };
 
@@ -57,7 +60,8 @@ class FrameSource {
     /// throws Error(runtime) within a few thousand events, however far its frame time is.
     FrameSource(const Scene& scene, const RenderPlan& plan,
                 const std::atomic<bool>* stop = nullptr);
-    /// Advances every engine to plan.clock.time(k) (k increasing) and describes the frame.
+    /// Advances every engine to the simulation time video frame k shows (plan.timeline, k
+    /// increasing) and describes the frame.
     [[nodiscard]] SimFrame frame(std::int64_t k);
     /// Measurements of each engine now, in panel order.
     [[nodiscard]] std::vector<Measurements> measurements() const;
@@ -73,6 +77,7 @@ class FrameSource {
 
     const RenderPlan& plan_;
     std::vector<Panel> panels_;
+    std::int64_t last_sim_frame_ = -1;
 };
 
 /// Turns SimFrames into the renderer's FrameContent (render thread), keeping each panel's energy
@@ -83,6 +88,9 @@ class FrameComposer {
     [[nodiscard]] const render::FrameContent& compose(const SimFrame& frame);
 
   private:
+    /// The time-driven panel's state is at `state_time`: a new step restarts the count.
+    void advance_step_phase(double state_time);
+
     const RenderPlan& plan_;
     render::FrameContent content_;
     double largest_drift_ = 0.0;

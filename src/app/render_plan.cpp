@@ -10,6 +10,8 @@
 
 #include "collide/error.hpp"
 #include "collide/named_values.hpp"
+#include "collide/show/collision_summary.hpp"
+#include "collide/show/still_timeline.hpp"
 #include "collide/sim/pq/queue_kind.hpp"
 #include "collide/sim/queue_view.hpp"
 #include "font_search.hpp"
@@ -215,7 +217,20 @@ render::PlotSize histogram_size(const Scene& scene) {
 std::vector<CaptionCue> captions_within(const Scene& scene, double duration, bool cli_duration,
                                         std::vector<std::string>& notices) {
     std::vector<CaptionCue> kept;
-    for (const CaptionCue& cue : scene.render.captions) {
+    for (CaptionCue cue : scene.render.captions) {
+        if (cue.at < duration && cue.at + cue.hold > duration) {
+            if (!cli_duration) {
+                throw_scene_error(cue.file, cue.line, "render.captions.hold",
+                                  fmt::format("beyond the video: held from {:g} s for {:g} s, "
+                                              "the video lasts {:g} s (set [render] duration)",
+                                              cue.at, cue.hold, duration));
+            }
+            notices.push_back(
+                fmt::format("the hold at {:g} s is cut short at the end of this "
+                            "{:g} s video",
+                            cue.at, duration));
+            cue.hold = duration - cue.at;
+        }
         if (cue.at < duration) {
             kept.push_back(cue);
             continue;
@@ -239,12 +254,22 @@ LessonPlan lesson_plan(const RenderRequest& request, const Scene& scene, const R
     LessonPlan lesson;
     lesson.title = scene.title;
     lesson.description = scene.description;
-    const bool video = !(request.still || request.last_frame);
-    if (video && !scene.description.empty()) {
+    // The card as the video has it (a still drops it once the video's timeline is known): only
+    // at the lesson level, the one that draws it, where the simulation waits for it.
+    if (!request.no_intro && !scene.description.empty() &&
+        plan.render.overlays == render::OverlayLevel::lesson) {
         lesson.intro_seconds = std::min(intro_seconds, 0.25 * plan.duration);
+    }
+    // The summary card at the end, where the lesson's figures are shown.
+    if (!request.no_epilogue && plan.render.overlays == render::OverlayLevel::lesson) {
+        lesson.epilogue_seconds = std::min(show::epilogue_seconds, 0.2 * plan.duration);
     }
     lesson.caption = scene.render.caption.value_or("");
     lesson.captions = captions_within(scene, plan.duration, request.duration.has_value(), notices);
+    // A hold freezes the picture for its caption to be read: only where captions are shown.
+    if (plan.render.overlays != render::OverlayLevel::lesson) {
+        for (CaptionCue& cue : lesson.captions) cue.hold = 0.0;
+    }
     lesson.histogram = histogram_size(scene);
     const double interval = plan.speed.speed / plan.fps;
     if (plan.time_engine.dt > interval * (1.0 + 1e-6)) {
@@ -489,7 +514,30 @@ RenderPlan plan_render(const RenderRequest& request, const Scene& scene) {
     plan.format = output.format;
     plan.output = output.path;
     plan.default_output = output.default_path;
-    plan.clock = still && request.at ? still_clock(*request.at, plan.speed.speed, plan.fps) : video;
+    if (request.timeline_json) {
+        if (request.timeline_json->empty())
+            throw_option_error("--timeline-json", "needs a file name");
+        if (still)
+            throw_option_error("--timeline-json", "only for videos (a still has no timeline)");
+        plan.timeline_json = *request.timeline_json;
+    }
+    // The video's frames, and the simulation frames they show: fewer than the video's when a
+    // card, a hold or the epilogue freezes the simulation.
+    const show::Timeline video_timeline = show::lesson_timeline(plan.lesson, plan.fps, video.count);
+    FrameClock simulation = video;
+    simulation.count = video_timeline.sim_frame_count();
+    simulation.last_time = static_cast<double>(simulation.count - 1) * simulation.interval;
+    if (still) {
+        // A still is the simulation at one time: no card, no hold, no summary over it. Without
+        // --at it shows the video's last simulation frame.
+        plan.clock = request.at ? still_clock(*request.at, plan.speed.speed, plan.fps) : simulation;
+        plan.timeline = show::still_timeline(video_timeline, plan.clock.count, plan.lesson.caption);
+        plan.lesson.intro_seconds = 0.0;
+        plan.lesson.epilogue_seconds = 0.0;
+    } else {
+        plan.clock = simulation;
+        plan.timeline = video_timeline;
+    }
     return plan;
 }
 

@@ -134,6 +134,7 @@ struct RenderRequest {
     std::optional<std::string> overlays;                       ///< --overlays none|lesson|full
     std::optional<std::string> theme;                          ///< --theme dark|light
     std::optional<std::string> layout_json;                    ///< --layout-json FILE
+    std::optional<std::string> timeline_json;                  ///< --timeline-json FILE
     std::optional<std::string> format;                         ///< --format mp4|gif|png
     bool last_frame = false;            ///< --last-frame: write only the last frame as a PNG
     std::optional<double> at;           ///< thumbnail --at (simulation time)
@@ -142,6 +143,8 @@ struct RenderRequest {
     std::optional<int> queue;           ///< --queue [K]: show the event queue, K events
     std::optional<double> slow_motion;  ///< --slow-motion F: F times slower than the speed
     std::string font;                   ///< --font FILE (empty: find_font's search)
+    bool no_intro = false;              ///< --no-intro: no title card
+    bool no_epilogue = false;           ///< --no-epilogue: no summary card at the end
 };
 
 /// Events `--queue` shows without a number.
@@ -179,17 +182,21 @@ struct RenderPlan {
     int fps = 30;
     double duration = 10.0;  ///< seconds of video (still: the video it is a frame of)
     SpeedChoice speed;
-    FrameClock clock;
+    FrameClock clock;  ///< the simulation frames: frame j at simulation time clock.time(j)
+    /// The video frames (show/timeline.hpp): which simulation frame each shows, and why. A still
+    /// only runs (video frame k shows simulation frame k).
+    show::Timeline timeline;
     EngineOptions event_engine;  ///< engine fast or classic
     EngineOptions time_engine;   ///< engine time, with the dt in use
     render::RenderConfig render;
     OutputKind kind = OutputKind::video;
     video::VideoFormat format = video::VideoFormat::mp4;
     std::filesystem::path output;
-    bool default_output = false;        ///< output derived from the scene name (under out/)
-    std::vector<std::string> notices;   ///< one-line remarks to print before rendering
-    LessonPlan lesson;                  ///< what the lesson level shows besides the discs
-    std::filesystem::path layout_json;  ///< --layout-json (empty: none)
+    bool default_output = false;          ///< output derived from the scene name (under out/)
+    std::vector<std::string> notices;     ///< one-line remarks to print before rendering
+    LessonPlan lesson;                    ///< what the lesson level shows besides the discs
+    std::filesystem::path layout_json;    ///< --layout-json (empty: none)
+    std::filesystem::path timeline_json;  ///< --timeline-json (empty: none)
     /// --queue: the event-driven panel shows this many upcoming events and its queue (0: off).
     std::size_t queue_events = 0;
     /// --slow-motion: speed.speed is the chosen pace divided by this (1: none). The physics (the

@@ -160,7 +160,7 @@ RunShape render_run_shape(const RenderPlan& plan) {
     run.time_driven = plan.mode != RenderMode::event;
     run.dt = plan.time_engine.dt;
     run.all_pairs = plan.time_engine.td_detect == OverlapDetection::all_pairs;
-    run.frames = static_cast<double>(plan.clock.count);
+    run.frames = static_cast<double>(plan.timeline.frame_count());
     return run;
 }
 

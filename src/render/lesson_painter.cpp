@@ -88,10 +88,20 @@ FrameLayout LessonPainter::layout_for(const FrameContent& frame) const {
     return lesson_layout(input);
 }
 
+namespace {
+bool shows_title_card(const FrameContent& frame) {
+    return frame.intro_opacity > 0.0F && !frame.intro_title.empty();
+}
+bool shows_summary(const FrameContent& frame) {
+    return !frame.summary.rows.empty() && frame.summary.opacity > 0.0F;
+}
+}  // namespace
+
 void LessonPainter::begin_frame(const FrameContent& frame) {
     video_time_ = frame.video_time;
     speed_ = frame.speed;
-    intro_ = frame.intro_opacity > 0.0F && !frame.intro_title.empty();
+    // A card covers this frame, the title card or the epilogue's summary: no other text.
+    intro_ = shows_title_card(frame) || shows_summary(frame);
     if (layout_.queue_panel >= 0 && !small_font_) {
         // Loaded with the first frame that shows a queue, so other videos are unchanged.
         load_font(small_font_, std::round(body_font_->pixel_height() * queue_text_scale));
@@ -115,7 +125,8 @@ void LessonPainter::add_marks(std::size_t index, const PanelContent& content,
 
 void LessonPainter::finish_frame(const FrameContent& frame) {
     if (!layout_.compact && !intro_) add_column(frame);
-    if (intro_) add_intro(frame);
+    if (shows_title_card(frame)) add_intro(frame);
+    if (shows_summary(frame)) add_summary(frame);
 }
 
 void LessonPainter::add_panel_text(std::size_t index, const PanelContent& content,

@@ -73,6 +73,7 @@ class LessonPainter : public Painter {
     // The column and the title card (lesson_column.cpp).
     void add_column(const FrameContent& frame);
     void add_intro(const FrameContent& frame);
+    void add_summary(const FrameContent& frame);  // the epilogue's card (lesson_summary.cpp)
     // The event queue (Snapshot::queue; lesson_queue.cpp).
     void add_queue_in_box(const Snapshot& snapshot, const QueueWords& words,
                           const PanelLayout& panel);

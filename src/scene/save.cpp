@@ -102,6 +102,7 @@ void write_render(std::ostream& out, const RenderHints& r) {
     for (const CaptionCue& cue : r.captions) {
         out << "\n[[render.captions]]\nat = " << exact(cue.at) << "\ntext = " << quoted(cue.text)
             << "\n";
+        if (cue.hold > 0.0) out << "hold = " << exact(cue.hold) << "\n";
     }
 }
 

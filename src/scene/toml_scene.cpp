@@ -36,7 +36,7 @@ const Keys generate_keys = {"count", "packing_fraction", "radius", "mass", "temp
                             "speed", "region",           "color",  "seed", "tag"};
 const Keys render_keys = {"color_mode", "trails", "overlays", "duration", "speed",
                           "dt",         "theme",  "caption",  "captions", "histogram"};
-const Keys caption_keys = {"at", "text"};
+const Keys caption_keys = {"at", "text", "hold"};
 
 std::string num(double v) {
     std::ostringstream s;
@@ -553,9 +553,23 @@ class TomlReader {
                          num(*r.duration) + " s");
             }
             cue.text = caption(*text, field + ".text");
+            if (const toml::node* hold = t.get("hold")) read_hold(*hold, field + ".hold", cue);
             cue.file = file_;
             cue.line = static_cast<int>(at->source().begin.line);
             r.captions.push_back(std::move(cue));
+        }
+    }
+
+    // hold = S: seconds of video the picture stays frozen on the caption, within the video.
+    void read_hold(const toml::node& n, const std::string& field, CaptionCue& cue) const {
+        cue.hold = number(n, field);
+        if (!(cue.hold >= 0.0) || !std::isfinite(cue.hold))
+            fail(n, field, "must be >= 0 seconds (got " + num(cue.hold) + ")");
+        const RenderHints& r = scene_.render;
+        if (r.duration && cue.at + cue.hold > *r.duration) {
+            fail(n, field,
+                 "beyond the video: held from " + num(cue.at) + " s for " + num(cue.hold) +
+                     " s, the video lasts " + num(*r.duration) + " s");
         }
     }
 

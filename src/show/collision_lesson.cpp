@@ -20,6 +20,21 @@ float LessonPlan::intro_opacity(double video_seconds) const noexcept {
     return static_cast<float>(std::clamp((intro_seconds - video_seconds) / fade, 0.0, 1.0));
 }
 
+Timeline lesson_timeline(const LessonPlan& lesson, int fps, std::int64_t frames) {
+    TimelineScript script;
+    script.fps = fps;
+    script.frames = frames;
+    script.card_seconds = lesson.intro_seconds;
+    script.card_waits = true;
+    script.card_title = lesson.title;
+    script.caption = lesson.caption;
+    for (const CaptionCue& cue : lesson.captions)
+        script.cues.push_back({cue.at, cue.text, cue.hold});
+    script.epilogue_seconds = lesson.epilogue_seconds;
+    script.epilogue_caption = "In the end: the final figures side by side";
+    return build_timeline(script);
+}
+
 std::vector<CaptionSource> captions_shown(const LessonPlan& lesson,
                                           const std::string& scene_caption_at) {
     std::vector<CaptionSource> out;

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 
 #include "../support/skip.hpp"
@@ -132,10 +133,10 @@ TEST_CASE("render: the same scene and options give a byte-identical file") {
 
 TEST_CASE("render --last-frame equals thumbnail --at the end time") {
     TempDir dir("last");
-    // 1 s at 10 fps and speed 0.5: the last frame (k = 9) is at t = 0.45
+    // 1 s at 10 fps and speed 0.5 without card or summary: the last frame (k = 9) is at t = 0.45
     const auto last = run_collide(
-        "render gas --size 320x180 --fps 10 --duration 1 --speed 0.5 --last-frame "
-        "--progress none -o " +
+        "render gas --size 320x180 --fps 10 --duration 1 --speed 0.5 --last-frame --no-intro "
+        "--no-epilogue --progress none -o " +
         (dir.path / "last.png").string());
     REQUIRE_MESSAGE(last.exit_code == 0, last.output);
     const auto thumb =
@@ -146,6 +147,64 @@ TEST_CASE("render --last-frame equals thumbnail --at the end time") {
     const Image b = collide::video::read_png(dir.path / "thumb.png");
     CHECK(a.width == 320);
     CHECK(share_of_differing_pixels(a, b) == 0.0);
+    // With the card (0.25 s, 3 frames, the simulation waiting) and the summary (0.2 s, 2 frames)
+    // the video shows 6 states: its last simulation frame is at t = 0.25, and --last-frame
+    // shows that state, without the summary card over it.
+    const auto carded = run_collide(
+        "render gas --size 320x180 --fps 10 --duration 1 --speed 0.5 --last-frame "
+        "--progress none -o " +
+        (dir.path / "carded.png").string());
+    REQUIRE_MESSAGE(carded.exit_code == 0, carded.output);
+    CHECK_MESSAGE(carded.output.find("t = 0.25 ") != std::string::npos, carded.output);
+    const auto early =
+        run_collide("thumbnail gas --size 320x180 --fps 10 --speed 0.5 --at 0.25 -o " +
+                    (dir.path / "early.png").string());
+    REQUIRE_MESSAGE(early.exit_code == 0, early.output);
+    CHECK(share_of_differing_pixels(collide::video::read_png(dir.path / "carded.png"),
+                                    collide::video::read_png(dir.path / "early.png")) == 0.0);
+}
+
+TEST_CASE("render: a hold beyond the video exits 2 naming the file, line and field") {
+    TempDir dir("hold");
+    const fs::path scene = dir.path / "h.toml";
+    std::ofstream(scene) << "[box]\nwidth = 1.0\nheight = 1.0\n"
+                            "[[disc]]\nposition = [0.3, 0.5]\nvelocity = [0.1, 0]\nradius = 0.05\n"
+                            "[render]\nduration = 4\n"
+                            "[[render.captions]]\nat = 3\ntext = \"Look\"\nhold = 2\n";
+    const fs::path mp4 = dir.path / "h.mp4";
+    const auto r = run_collide("render " + scene.string() + " --progress none -o " + mp4.string());
+    CHECK(r.exit_code == 2);
+    CHECK_MESSAGE(
+        r.output.find("h.toml:13: render.captions[0].hold: beyond the video") != std::string::npos,
+        r.output);
+    CHECK(!fs::exists(mp4));
+}
+
+TEST_CASE("render --timeline-json: every segment in order, the clock frozen outside runs") {
+    TempDir dir("timeline");
+    const fs::path json = dir.path / "t.json";
+    const auto r = run_collide("render newtons-cradle --size 320x180 --fps 10 --progress none -o " +
+                               (dir.path / "c.mp4").string() + " --timeline-json " + json.string());
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    std::ifstream in(json);
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string t = text.str();
+    // The card, the run, the hold on the first hit, the summary.
+    const std::size_t card = t.find("\"kind\": \"card\"");
+    const std::size_t hold = t.find("\"kind\": \"hold\"");
+    const std::size_t epilogue = t.find("\"kind\": \"epilogue\"");
+    CHECK(card != std::string::npos);
+    CHECK(hold != std::string::npos);
+    CHECK(epilogue != std::string::npos);
+    CHECK(card < hold);
+    CHECK(hold < epilogue);
+    CHECK(t.find("\"caption\": \"First hit: the striker stops, the last disc moves off\"") !=
+          std::string::npos);
+    CHECK(t.find("\"frames\": 170") != std::string::npos);
+    // Only for videos.
+    const auto still = run_collide("thumbnail gas --timeline-json " + json.string());
+    CHECK(still.exit_code == 2);
 }
 
 TEST_CASE("thumbnail: every built-in scene in both modes matches its golden image") {

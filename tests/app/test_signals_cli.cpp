@@ -262,7 +262,9 @@ TEST_CASE("signals: Ctrl-C ends a render of the longest texts at 8192x4608 withi
         run.log = log;
         // Under way: for the thumbnail, its one output frame is drawn and the PNG compression
         // has begun; for the video, its first progress line is out and every frame is slow.
-        const std::string marker = command == "render" ? "\"frame\":" : "\"frame\":300,";
+        // The thumbnail shows the video's last state: of its 300 frames, 60 are the card over
+        // state 0 and 60 the summary over the last, so it goes through states 0..180.
+        const std::string marker = command == "render" ? "\"frame\":" : "\"frame\":181,";
         run.started = [&] { return read_all(log).find(marker) != std::string::npos; };
         run.settle = std::chrono::milliseconds(200);
         run.end_timeout = std::chrono::milliseconds(1500);

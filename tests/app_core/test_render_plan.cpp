@@ -120,17 +120,20 @@ TEST_CASE(
     request.dt = dt;
     request.mode = "time";
     request.duration = until;
+    request.no_epilogue = true;  // every video frame a new state
     std::vector<Result> results;
     for (const int fps : {15, 24}) {  // video clocks ending at 2.0 - 1/fps
         request.fps = fps;
         RenderPlan plan = plan_render(request, scene);
         plan.clock.count += 1;  // and one frame more: exactly `until`
         plan.clock.last_time = until;
+        plan.timeline = show::running_timeline(fps, plan.clock.count);
         results.push_back(through_frames(plan));
     }
     request.fps = 30;
     RenderPlan still = plan_render(request, scene);
     still.clock = still_clock(until, 1.0, 30);  // the frames of `thumbnail --at 2`
+    still.timeline = show::running_timeline(30, still.clock.count);
     results.push_back(through_frames(still));
     auto simulate = make_engine(scene, still.time_engine);  // `simulate --until 2` does this
     simulate->advance_to(until);
@@ -190,7 +193,7 @@ TEST_CASE("plan_render: command line over scene hints over defaults, and the def
     CHECK(plan.duration == 1.0);
     CHECK(plan.render.color_mode == render::ColorMode::scene);
     CHECK(plan.width == 854);
-    CHECK(plan.clock.count == 15);
+    CHECK(plan.timeline.frame_count() == 15);  // video frames; the simulation's are fewer
 }
 
 TEST_CASE("plan_render rejects bad options with the option's name") {
@@ -333,6 +336,10 @@ TEST_CASE("captions follow the scene's schedule, and the intro card fades out af
     CHECK(plan.lesson.intro_opacity(0.0) == 1.0F);
     CHECK(plan.lesson.intro_opacity(1.75) == doctest::Approx(0.5));
     CHECK(plan.lesson.intro_opacity(2.0) == 0.0F);
+    // --no-intro: none.
+    request.no_intro = true;
+    CHECK(plan_render(request, scene).lesson.intro_opacity(0.0) == 0.0F);
+    request.no_intro = false;
     // A still image has no intro card.
     request.still = true;
     CHECK(plan_render(request, scene).lesson.intro_opacity(0.0) == 0.0F);
@@ -385,6 +392,73 @@ TEST_CASE("captions beyond the video: an error naming the scene line, or a notic
     bool noticed = false;
     for (const std::string& n : plan.notices) noticed |= n.find("6 s") != std::string::npos;
     CHECK(noticed);
+}
+
+TEST_CASE("a hold beyond the video: an error naming the scene line, or cut short for --duration") {
+    Scene scene = two_disc_scene(0.2);
+    scene.render.captions = {{8.0, "Held too long", "s.toml", 9, 3.0}};
+    RenderRequest request;  // the default 10 s video
+    try {
+        (void)plan_render(request, scene);
+        FAIL("no error");
+    } catch (const Error& e) {
+        CHECK(e.kind() == ErrorKind::input);
+        const std::string message = e.what();
+        CHECK(message.find("s.toml:9") != std::string::npos);
+        CHECK(message.find("render.captions.hold") != std::string::npos);
+        CHECK(message.find("beyond the video") != std::string::npos);
+    }
+    request.duration = 9.0;
+    scene.render.captions = {{1.0, "Held", "s.toml", 5, 1.0}, {7.0, "Cut", "s.toml", 9, 3.0}};
+    const RenderPlan plan = plan_render(request, scene);
+    REQUIRE(plan.lesson.captions.size() == 2);
+    CHECK(plan.lesson.captions[1].hold == doctest::Approx(2.0));
+}
+
+TEST_CASE("the video's timeline: the card waits, holds freeze, a still only runs") {
+    Scene scene = two_disc_scene(0.2);
+    scene.title = "Two discs";
+    scene.description = "They meet in the middle";
+    scene.render.duration = 10.0;
+    scene.render.captions = {{4.0, "Held", "s.toml", 5, 1.0}};
+    RenderRequest request;
+    request.fps = 10;
+    const RenderPlan plan = plan_render(request, scene);
+    const show::Timeline& timeline = plan.timeline;
+    CHECK(timeline.frame_count() == 100);
+    REQUIRE(timeline.segments.size() >= 4);
+    CHECK(timeline.segments[0].kind == show::SegmentKind::card);
+    CHECK_FALSE(timeline.segments[0].moves);
+    CHECK(timeline.segments[0].end_frame == 20);
+    CHECK(timeline.segment_at(40).kind == show::SegmentKind::hold);
+    CHECK(timeline.segments.back().kind == show::SegmentKind::epilogue);
+    // The simulation clock has as many frames as the video shows states.
+    CHECK(plan.clock.count == timeline.sim_frame_count());
+    CHECK(plan.clock.last_time == doctest::Approx(plan.clock.interval * (plan.clock.count - 1)));
+    // --no-intro, --no-epilogue: the simulation from the first frame to the last.
+    request.no_intro = true;
+    request.no_epilogue = true;
+    const RenderPlan bare = plan_render(request, scene);
+    CHECK(bare.timeline.segments.front().kind == show::SegmentKind::run);
+    CHECK(bare.timeline.segments.back().kind == show::SegmentKind::run);
+    CHECK(bare.timeline.sim_frame_count() == 100 - 10);  // the hold's frames
+    // A still: the video's last simulation frame, only running (no card, hold or summary).
+    request = RenderRequest{};
+    request.fps = 10;
+    request.last_frame = true;
+    const RenderPlan still = plan_render(request, scene);
+    for (const show::Segment& s : still.timeline.segments) {
+        CHECK(s.kind == show::SegmentKind::run);
+        CHECK(s.moves);
+    }
+    CHECK(still.clock.count == plan.clock.count);
+    CHECK(still.clock.last_time == plan.clock.last_time);
+    // Holds and the card are read where captions are: not at --overlays none.
+    request = RenderRequest{};
+    request.fps = 10;
+    request.overlays = "none";
+    for (const show::Segment& s : plan_render(request, scene).timeline.segments)
+        CHECK(s.kind == show::SegmentKind::run);
 }
 
 TEST_CASE("still_clock refuses a time more frame intervals away than int64 / double can count") {

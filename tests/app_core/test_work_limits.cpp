@@ -42,12 +42,20 @@ TEST_CASE("work limits: the render's span is its last frame time, its engines th
     request.speed = 1.0;
     request.fps = 10;
     request.dt = 0.05;
-    const RenderPlan plan = plan_render(request, moving_pair());
-    const RunShape run = render_run_shape(plan);
+    request.no_epilogue = true;
+    RenderPlan plan = plan_render(request, moving_pair());
+    RunShape run = render_run_shape(plan);
     CHECK(run.span == doctest::Approx(1.9));  // frames 0..19 at 0.1
     CHECK(run.time_driven);
     CHECK_FALSE(run.event_driven);
     CHECK(run.dt == 0.05);
+    CHECK(run.frames == 20.0);
+    // The summary's 0.4 s (4 frames) are frozen: the simulation stops 0.4 earlier, the video's
+    // frames stay 20.
+    request.no_epilogue = false;
+    plan = plan_render(request, moving_pair());
+    run = render_run_shape(plan);
+    CHECK(run.span == doctest::Approx(1.5));
     CHECK(run.frames == 20.0);
 }
 

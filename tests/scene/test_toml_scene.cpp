@@ -4,11 +4,13 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "../support/input_error.hpp"
 #include "collide/error.hpp"
 #include "collide/scene/load.hpp"
+#include "collide/scene/save.hpp"
 #include "collide/sim/scene_check.hpp"
 
 using namespace collide;
@@ -350,6 +352,27 @@ TEST_CASE("toml: bad captions name the file, line and field and say what is allo
     CHECK(contains(toml_error("[render]\noverlays = \"some\"\n"), "render.overlays"));
     CHECK(contains(toml_error("[render]\n[[render.captions]]\ntext = \"no time\"\n"),
                    "render.captions[0].at"));
+}
+
+TEST_CASE("toml: a caption's hold freezes the video within it, and reads back") {
+    const Scene s = parse(
+        "[render]\nduration = 10\n[[render.captions]]\nat = 2\ntext = \"Look\"\n"
+        "hold = 1.5\n");
+    REQUIRE(s.render.captions.size() == 1);
+    CHECK(s.render.captions[0].hold == 1.5);
+    std::ostringstream out;
+    write_toml_scene(out, s);
+    CHECK(parse(out.str()).render.captions[0].hold == 1.5);
+    // Beyond the video: the file, the hold's line and its field.
+    const std::string beyond = toml_error(
+        "[render]\nduration = 5\n[[render.captions]]\nat = 4\ntext = \"late\"\nhold = 2\n");
+    CHECK(contains(beyond, "s.toml:6"));
+    CHECK(contains(beyond, "render.captions[0].hold"));
+    CHECK(contains(beyond, "beyond the video"));
+    const std::string negative =
+        toml_error("[render]\n[[render.captions]]\nat = 1\ntext = \"a\"\nhold = -1\n");
+    CHECK(contains(negative, "render.captions[0].hold"));
+    CHECK(contains(negative, ">= 0"));
 }
 
 TEST_CASE("toml: a number too small for a double reads as 0, as in algs4 files and on the CLI") {

@@ -13,6 +13,7 @@
 
 #include "collide/render_options.hpp"
 #include "collide/scene.hpp"
+#include "collide/show/timeline.hpp"
 #include "collide/sim/engine.hpp"
 #include "collide/sim/measurements.hpp"
 #include "collide/snapshot.hpp"
@@ -99,6 +100,7 @@ struct LessonPlan {
     std::string title;                 ///< the intro card's title
     std::string description;           ///< the intro card's text
     double intro_seconds = 0.0;        ///< how long the card shows (0: none; videos only)
+    double epilogue_seconds = 0.0;     ///< the summary card at the end (0: none; videos only)
     std::string caption;               ///< [render] caption, shown when no scripted caption applies
     std::vector<CaptionCue> captions;  ///< [[render.captions]] within the video
     PlotSize histogram = PlotSize::none;
@@ -109,6 +111,10 @@ struct LessonPlan {
     /// Opacity of the intro card at `video_seconds` (1, fading to 0 over its last half second).
     [[nodiscard]] float intro_opacity(double video_seconds) const noexcept;
 };
+
+/// The collision video's timeline (timeline.hpp) of `frames` video frames at `fps`: the intro
+/// card, then the simulation with the captions of `lesson`.
+[[nodiscard]] Timeline lesson_timeline(const LessonPlan& lesson, int fps, std::int64_t frames);
 
 /// Seconds of the intro card: about 2 s, at most a quarter of a short video.
 inline constexpr double intro_seconds = 2.0;

@@ -58,6 +58,22 @@ struct ColorKeyWords {
     std::string tagged;      ///< full, tag colours: beside the key's swatch ("tagged")
 };
 
+/// One line of a summary card: a label, then one value per panel ("collisions missed", "48", "0").
+struct SummaryRow {
+    std::string label;
+    std::vector<std::string> values;
+};
+
+/// The epilogue's card: the final figures of the panels side by side, for a lecturer to leave on
+/// screen.
+struct SummaryCard {
+    std::string title;                 ///< "In the end, after t = 3.000"
+    std::vector<std::string> columns;  ///< one heading per panel, in panel order
+    std::vector<SummaryRow> rows;      ///< empty: no card
+    std::string footer;                ///< one line under the table (the work ratio)
+    float opacity = 0.0F;              ///< fading in over its first half second
+};
+
 /// One simulation shown in one panel.
 struct PanelContent {
     PanelContent() = default;
@@ -112,6 +128,8 @@ struct FrameContent {
     std::string intro_title;
     std::string intro_text;
     float intro_opacity = 0.0F;
+    /// The epilogue's summary card, drawn over the frame (empty rows: none).
+    SummaryCard summary;
 };
 
 }  // namespace collide

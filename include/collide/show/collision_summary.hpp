@@ -1,0 +1,32 @@
+#pragma once
+/// \file
+/// The collision video's epilogue: the final figures of the panels side by side on one card
+/// (missed, overlapping, left the box, collisions, the work and its ratio), for a lecturer to
+/// leave on screen. Pure functions of the engines' measurements.
+
+#include <string>
+#include <vector>
+
+#include "collide/sim/measurements.hpp"
+#include "collide/view/collision.hpp"
+
+namespace collide::show {
+
+/// One panel's final state for the card.
+struct SummaryPanel {
+    Measurements measurements;
+    bool time_driven = false;
+};
+
+/// The card for `panels` (panel order) at the final `time_text` ("t = 3.000"); `walls`: the box
+/// has walls (discs can leave it). Opacity 1; the caller fades it in (summary_opacity).
+[[nodiscard]] SummaryCard summary_card(const std::vector<SummaryPanel>& panels, bool walls,
+                                       const std::string& time_text);
+
+/// The card's opacity `seconds` into the epilogue: fading in over its first half second.
+[[nodiscard]] float summary_opacity(double seconds) noexcept;
+
+/// Seconds of the epilogue: 3 s, at most a fifth of a short video.
+inline constexpr double epilogue_seconds = 3.0;
+
+}  // namespace collide::show

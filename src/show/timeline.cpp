@@ -1,0 +1,198 @@
+// The lesson timeline: a script in seconds of video (card, captions with holds, epilogue) turned
+// into segments on whole video frames, each showing one simulation frame or a run of them.
+#include "collide/show/timeline.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "collide/assert.hpp"
+#include "collide/show/still_timeline.hpp"
+
+namespace collide::show {
+
+std::string_view segment_kind_name(SegmentKind kind) noexcept {
+    switch (kind) {
+        case SegmentKind::card:
+            return "card";
+        case SegmentKind::run:
+            return "run";
+        case SegmentKind::hold:
+            return "hold";
+        case SegmentKind::replay:
+            return "replay";
+        case SegmentKind::epilogue:
+            return "epilogue";
+    }
+    return "run";
+}
+
+std::int64_t Timeline::frame_count() const noexcept {
+    return segments.empty() ? 0 : segments.back().end_frame;
+}
+
+const Segment& Timeline::segment_at(std::int64_t k) const {
+    COLLIDE_ASSERT(!segments.empty() && k >= 0 && k < frame_count(), "a frame of the video");
+    const auto after =
+        std::upper_bound(segments.begin(), segments.end(), k,
+                         [](std::int64_t f, const Segment& s) { return f < s.first_frame; });
+    return *std::prev(after);
+}
+
+std::int64_t Timeline::last_sim_frame() const noexcept {
+    return segments.empty() ? 0 : segments.back().last_sim_frame();
+}
+
+namespace {
+
+/// What one video frame is, before frames of the same kind merge into segments.
+struct FrameLabel {
+    SegmentKind kind = SegmentKind::run;
+    bool moves = true;
+    int caption = -1;  ///< index into the cues; -1: the script's caption (or the kind's own)
+};
+
+std::int64_t whole_frames(double seconds, int fps) {
+    if (!(seconds > 0.0)) return 0;
+    return std::llround(seconds * static_cast<double>(fps));
+}
+
+/// The first video frame whose time k / fps is at or after `seconds`: where a caption timed at
+/// `seconds` appears, and how many frames lie before it.
+std::int64_t first_frame_at(double seconds, int fps) {
+    if (!(seconds > 0.0)) return 0;
+    const auto rate = static_cast<double>(fps);
+    auto k = static_cast<std::int64_t>(std::ceil(seconds * rate));
+    while (k > 0 && static_cast<double>(k - 1) / rate >= seconds) --k;
+    while (static_cast<double>(k) / rate < seconds) ++k;
+    return k;
+}
+
+/// Every frame's label: captions by video time, then the frozen stretches over them.
+std::vector<FrameLabel> label_frames(const TimelineScript& script) {
+    const std::int64_t frames = std::max<std::int64_t>(1, script.frames);
+    std::vector<FrameLabel> labels(static_cast<std::size_t>(frames));
+    const auto at = [&](std::int64_t k) -> FrameLabel& {
+        return labels[static_cast<std::size_t>(k)];
+    };
+    // Frozen stretches leave at least one running frame, taken from the epilogue first.
+    // A card beneath which the simulation runs is no frozen stretch: it may cover every frame.
+    const std::int64_t card = std::min(first_frame_at(script.card_seconds, script.fps),
+                                       script.card_waits ? frames - 1 : frames);
+    const std::int64_t epilogue =
+        std::clamp<std::int64_t>(whole_frames(script.epilogue_seconds, script.fps), 0,
+                                 frames - 1 - std::min(card, frames - 1));
+    const std::int64_t epilogue_start = frames - epilogue;
+
+    for (std::size_t i = 0; i < script.cues.size(); ++i) {
+        const std::int64_t from =
+            std::clamp<std::int64_t>(first_frame_at(script.cues[i].at, script.fps), 0, frames);
+        for (std::int64_t k = from; k < frames; ++k) at(k).caption = static_cast<int>(i);
+    }
+    std::int64_t frozen_until = card;  // holds never overlap the card or each other
+    for (std::size_t i = 0; i < script.cues.size(); ++i) {
+        const std::int64_t length = whole_frames(script.cues[i].hold, script.fps);
+        if (length == 0) continue;
+        const std::int64_t from =
+            std::max(frozen_until, first_frame_at(script.cues[i].at, script.fps));
+        const std::int64_t to = std::min(from + length, epilogue_start);
+        for (std::int64_t k = from; k < to; ++k)
+            at(k) = {SegmentKind::hold, false, static_cast<int>(i)};
+        frozen_until = std::max(frozen_until, to);
+    }
+    for (std::int64_t k = 0; k < card; ++k) at(k) = {SegmentKind::card, !script.card_waits, -1};
+    for (std::int64_t k = epilogue_start; k < frames; ++k)
+        at(k) = {SegmentKind::epilogue, false, -1};
+    return labels;
+}
+
+std::string caption_of(const TimelineScript& script, const FrameLabel& label) {
+    if (label.kind == SegmentKind::card) return script.card_title;
+    if (label.kind == SegmentKind::epilogue) return script.epilogue_caption;
+    if (label.caption < 0) return script.caption;
+    return script.cues[static_cast<std::size_t>(label.caption)].text;
+}
+
+}  // namespace
+
+Timeline build_timeline(const TimelineScript& script) {
+    Timeline timeline;
+    timeline.fps = std::max(1, script.fps);
+    const std::vector<FrameLabel> labels = label_frames(script);
+    std::int64_t last_shown = -1;  // the simulation frame shown by the previous video frame
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+        const FrameLabel& label = labels[i];
+        const auto k = static_cast<std::int64_t>(i);
+        const std::int64_t shown =
+            label.moves ? last_shown + 1 : std::max<std::int64_t>(last_shown, 0);
+        const bool same = i > 0 && labels[i - 1].kind == label.kind &&
+                          labels[i - 1].moves == label.moves &&
+                          labels[i - 1].caption == label.caption;
+        if (!same) {
+            Segment segment;
+            segment.kind = label.kind;
+            segment.first_frame = k;
+            segment.sim_frame = shown;
+            segment.moves = label.moves;
+            segment.caption = caption_of(script, label);
+            timeline.segments.push_back(std::move(segment));
+        }
+        timeline.segments.back().end_frame = k + 1;
+        last_shown = shown;
+    }
+    const auto fps = static_cast<double>(timeline.fps);
+    for (Segment& segment : timeline.segments) {
+        segment.start = static_cast<double>(segment.first_frame) / fps;
+        segment.end = static_cast<double>(segment.end_frame) / fps;
+    }
+    return timeline;
+}
+
+Timeline running_timeline(int fps, std::int64_t frames, std::string caption) {
+    TimelineScript script;
+    script.fps = fps;
+    script.frames = frames;
+    script.caption = std::move(caption);
+    return build_timeline(script);
+}
+
+}  // namespace collide::show
+
+namespace collide::show {
+
+Timeline still_timeline(const Timeline& video, std::int64_t frames, const std::string& caption) {
+    // Where each run of the video starts showing its caption, in simulation frames: the state
+    // first shown in a run is read with that run's caption.
+    std::vector<std::pair<std::int64_t, const std::string*>> from;
+    for (const Segment& segment : video.segments) {
+        if (segment.kind != SegmentKind::run) continue;
+        if (from.empty() && segment.sim_frame > 0) from.emplace_back(0, &caption);
+        from.emplace_back(segment.sim_frame, &segment.caption);
+    }
+    Timeline timeline;
+    timeline.fps = video.fps;
+    const std::int64_t count = std::max<std::int64_t>(1, frames);
+    for (std::size_t i = 0; i < std::max<std::size_t>(1, from.size()); ++i) {
+        const std::int64_t first = from.empty() ? 0 : std::min(from[i].first, count);
+        const std::int64_t end = i + 1 < from.size() ? std::min(from[i + 1].first, count) : count;
+        if (end <= first) continue;
+        const std::string& words = from.empty() ? caption : *from[i].second;
+        if (!timeline.segments.empty() && timeline.segments.back().caption == words) {
+            timeline.segments.back().end_frame = end;
+            continue;
+        }
+        Segment segment;
+        segment.first_frame = first;
+        segment.end_frame = end;
+        segment.sim_frame = first;
+        segment.caption = words;
+        timeline.segments.push_back(std::move(segment));
+    }
+    const auto fps = static_cast<double>(timeline.fps);
+    for (Segment& segment : timeline.segments) {
+        segment.start = static_cast<double>(segment.first_frame) / fps;
+        segment.end = static_cast<double>(segment.end_frame) / fps;
+    }
+    return timeline;
+}
+
+}  // namespace collide::show

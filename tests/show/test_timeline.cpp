@@ -1,0 +1,211 @@
+// The lesson timeline (collide/show/timeline.hpp): segments in order without gaps, the
+// simulation clock frozen outside run segments, every simulation frame shown once in order.
+#include <doctest/doctest.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "collide/show/collision.hpp"
+#include "collide/show/collision_summary.hpp"
+#include "collide/show/still_timeline.hpp"
+#include "collide/show/timeline.hpp"
+
+using namespace collide;
+using namespace collide::show;
+
+namespace {
+
+/// The invariants every timeline keeps, checked frame by frame.
+void check_invariants(const Timeline& timeline, std::int64_t frames) {
+    REQUIRE(!timeline.segments.empty());
+    CHECK(timeline.frame_count() == frames);
+    CHECK(timeline.segments.front().first_frame == 0);
+    for (std::size_t i = 0; i < timeline.segments.size(); ++i) {
+        const Segment& s = timeline.segments[i];
+        CHECK(s.frames() > 0);
+        CHECK(s.start == doctest::Approx(static_cast<double>(s.first_frame) / timeline.fps));
+        CHECK(s.end == doctest::Approx(static_cast<double>(s.end_frame) / timeline.fps));
+        if (i > 0) CHECK(s.first_frame == timeline.segments[i - 1].end_frame);  // no gap
+        // Only a run moves (a card beneath which the simulation runs is the old behaviour).
+        if (s.kind == SegmentKind::hold || s.kind == SegmentKind::replay ||
+            s.kind == SegmentKind::epilogue)
+            CHECK_FALSE(s.moves);
+    }
+    // The simulation frames shown: 0, then each frame the previous or the next one.
+    std::int64_t previous = -1;
+    for (std::int64_t k = 0; k < frames; ++k) {
+        const Segment& s = timeline.segment_at(k);
+        CHECK(s.first_frame <= k);
+        CHECK(k < s.end_frame);
+        const std::int64_t shown = timeline.sim_frame(k);
+        if (k == 0) {
+            CHECK(shown == 0);
+        } else if (s.moves) {
+            CHECK(shown == previous + 1);
+        } else {
+            CHECK(shown == previous);  // frozen: the clock does not move
+        }
+        previous = shown;
+    }
+    CHECK(timeline.last_sim_frame() == previous);
+}
+
+TimelineScript lesson_script() {
+    TimelineScript script;
+    script.fps = 10;
+    script.frames = 100;  // 10 s
+    script.card_seconds = 2.0;
+    script.card_title = "Title";
+    script.caption = "Always";
+    script.cues = {{4.0, "Hold here", 1.5}, {7.0, "Later", 0.0}};
+    script.epilogue_seconds = 2.0;
+    script.epilogue_caption = "Summary";
+    return script;
+}
+
+}  // namespace
+
+TEST_CASE("a run-only timeline shows simulation frame k at video frame k") {
+    const Timeline timeline = running_timeline(30, 45, "Words");
+    check_invariants(timeline, 45);
+    REQUIRE(timeline.segments.size() == 1);
+    CHECK(timeline.segments[0].kind == SegmentKind::run);
+    CHECK(timeline.segments[0].caption == "Words");
+    for (std::int64_t k = 0; k < 45; ++k) CHECK(timeline.sim_frame(k) == k);
+    CHECK(timeline.sim_frame_count() == 45);
+}
+
+TEST_CASE("card, runs split at captions, a hold and the epilogue, in order, no gap") {
+    const Timeline timeline = build_timeline(lesson_script());
+    check_invariants(timeline, 100);
+    std::vector<SegmentKind> kinds;
+    std::vector<std::string> captions;
+    for (const Segment& s : timeline.segments) {
+        kinds.push_back(s.kind);
+        captions.push_back(s.caption);
+    }
+    const std::vector<SegmentKind> expected{SegmentKind::card, SegmentKind::run,
+                                            SegmentKind::hold, SegmentKind::run,
+                                            SegmentKind::run,  SegmentKind::epilogue};
+    CHECK(kinds == expected);
+    CHECK(captions == std::vector<std::string>{"Title", "Always", "Hold here", "Hold here", "Later",
+                                               "Summary"});
+    const std::vector<Segment>& s = timeline.segments;
+    // The card: frames 0..19 frozen on simulation frame 0; the run starts with frame 1.
+    CHECK(s[0].end_frame == 20);
+    CHECK_FALSE(s[0].moves);
+    CHECK(s[0].sim_frame == 0);
+    CHECK(s[1].sim_frame == 1);
+    // The hold from 4 s for 1.5 s, on the state the run showed last.
+    CHECK(s[2].first_frame == 40);
+    CHECK(s[2].end_frame == 55);
+    CHECK(s[2].sim_frame == s[1].last_sim_frame());
+    CHECK(s[3].sim_frame == s[2].sim_frame + 1);
+    // The caption at 7 s, the epilogue over the last 2 s on the final state.
+    CHECK(s[4].first_frame == 70);
+    CHECK(s[5].first_frame == 80);
+    CHECK(s[5].sim_frame == s[4].last_sim_frame());
+    // Simulation frames 0..45: 100 frames less 20 + 15 + 20 frozen, and frame 0 under the card.
+    CHECK(timeline.sim_frame_count() == 100 - 20 - 15 - 20 + 1);
+}
+
+TEST_CASE("a card beneath which the simulation runs moves with it") {
+    TimelineScript script = lesson_script();
+    script.card_waits = false;
+    script.cues.clear();
+    script.epilogue_seconds = 0.0;
+    const Timeline timeline = build_timeline(script);
+    check_invariants(timeline, 100);
+    REQUIRE(timeline.segments.size() == 2);
+    CHECK(timeline.segments[0].moves);
+    for (std::int64_t k = 0; k < 100; ++k) CHECK(timeline.sim_frame(k) == k);
+}
+
+TEST_CASE("frozen stretches never take the whole video, nor overlap") {
+    TimelineScript script = lesson_script();
+    script.frames = 5;  // half a second: card and epilogue would cover it all
+    Timeline timeline = build_timeline(script);
+    check_invariants(timeline, 5);
+    bool runs = false;
+    for (const Segment& s : timeline.segments) runs = runs || s.kind == SegmentKind::run;
+    CHECK(runs);
+    // A hold inside the card starts after it; two holds one after the other, not on top.
+    script = lesson_script();
+    script.cues = {{1.0, "In the card", 1.0}, {2.5, "Next", 1.0}};
+    timeline = build_timeline(script);
+    check_invariants(timeline, 100);
+    REQUIRE(timeline.segments.size() >= 3);
+    CHECK(timeline.segments[1].kind == SegmentKind::hold);
+    CHECK(timeline.segments[1].first_frame == 20);
+    CHECK(timeline.segments[1].end_frame == 30);
+    CHECK(timeline.segments[2].kind == SegmentKind::hold);
+    CHECK(timeline.segments[2].caption == "Next");
+    CHECK(timeline.segments[2].end_frame == 40);
+    // A hold into the epilogue is cut short there.
+    script = lesson_script();
+    script.cues = {{7.5, "Too long", 5.0}};
+    timeline = build_timeline(script);
+    check_invariants(timeline, 100);
+    CHECK(timeline.segment_at(79).kind == SegmentKind::hold);
+    CHECK(timeline.segment_at(80).kind == SegmentKind::epilogue);
+}
+
+TEST_CASE("captions on frames: a cue shows from the first frame at or after its time") {
+    TimelineScript script;
+    script.fps = 15;
+    script.frames = 150;
+    script.caption = "Always";
+    script.cues = {{2.0, "From two", 0.0}, {1.0 / 3.0 + 4.0, "Odd time", 0.0}};
+    const Timeline timeline = build_timeline(script);
+    check_invariants(timeline, 150);
+    LessonPlan lesson;
+    lesson.caption = "Always";
+    lesson.captions = {{2.0, "From two", "", 0}, {1.0 / 3.0 + 4.0, "Odd time", "", 0}};
+    for (std::int64_t k = 0; k < 150; ++k) {
+        CHECK(timeline.segment_at(k).caption == lesson.caption_at(static_cast<double>(k) / 15.0));
+    }
+}
+
+TEST_CASE("the epilogue's card: the final figures side by side and the work ratio") {
+    Measurements time;
+    time.missed_collisions = 48;
+    time.overlapping_pairs = 3;
+    time.escaped = 2;
+    time.collisions_pair = 100;
+    time.overlap_checks = 400000;
+    Measurements event;
+    event.collisions_pair = 140;
+    event.collisions_wall = 10;
+    event.queue.pushes = 1500;
+    event.queue.pops = 500;
+    const SummaryCard card = summary_card({{time, true}, {event, false}}, true, "t = 3.000");
+    CHECK(card.title == "In the end, at t = 3.000");
+    CHECK(card.columns == std::vector<std::string>{"Time-driven", "Event-driven"});
+    REQUIRE(card.rows.size() == 5);  // missed, overlapping, left the box, collisions, work
+    CHECK(card.rows[0].values == std::vector<std::string>{"48", "0"});
+    CHECK(card.rows[2].label == "discs that left the box");
+    CHECK(card.rows[3].values == std::vector<std::string>{"100", "150"});
+    CHECK(card.footer == "Time-driven: 200 times the work of the queue");
+    // A periodic box has nothing to leave; one panel has nothing to compare.
+    CHECK(summary_card({{time, true}, {event, false}}, false, "t").rows.size() == 4);
+    CHECK(summary_card({{event, false}}, false, "t").footer.empty());
+    CHECK(summary_opacity(0.0) == 0.0F);
+    CHECK(summary_opacity(0.25) == doctest::Approx(0.5));
+    CHECK(summary_opacity(2.0) == 1.0F);
+}
+
+TEST_CASE("a still's frames only run, each with the caption the video reads with that state") {
+    const Timeline video = build_timeline(lesson_script());
+    const Timeline still = still_timeline(video, 60, "Always");
+    check_invariants(still, 60);
+    for (const Segment& s : still.segments) CHECK(s.kind == SegmentKind::run);
+    // Every state the video shows in a run: the same caption in the still.
+    for (std::int64_t k = 0; k < video.frame_count(); ++k) {
+        const Segment& s = video.segment_at(k);
+        if (s.kind != SegmentKind::run) continue;
+        CHECK(still.segment_at(video.sim_frame(k)).caption == s.caption);
+    }
+    CHECK(still.segment_at(0).caption == "Always");  // shown only under the card
+    CHECK(still.segment_at(59).caption == "Later");  // beyond the video: its last caption
+}
