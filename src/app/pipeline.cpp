@@ -218,6 +218,8 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
                                                    : std::string();
     content_.time_text =
         show::clock_text(frame.time, plan_.clock, plan_.speed.speed, plan_.render.overlays);
+    content_.time_unit =
+        plan_.render.overlays == OverlayLevel::lesson ? show::time_unit : std::string();
     content_.video_time = video_time;
     content_.speed = plan_.speed.speed;
     content_.caption = lesson.caption_at(video_time);

@@ -183,7 +183,7 @@ std::string work_ratio(double time_work, double event_work) {
     const bool less = time_work >= event_work;
     const double ratio = less ? time_work / event_work : event_work / time_work;
     const std::string times =
-        ratio < 100.0 ? fmt::format("{:.3g}", ratio) : fmt::format("{:.0f}", ratio);
+        ratio < 9.95 ? fmt::format("{:.2g}", ratio) : fmt::format("{:.0f}", ratio);
     if (times == "1") return "the same work";
     return fmt::format("{}x {} work", times, less ? "less" : "more");
 }

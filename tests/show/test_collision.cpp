@@ -80,16 +80,16 @@ TEST_CASE("the on-screen clock resolves one frame interval, whatever the units")
     }
 }
 
-TEST_CASE("the lesson column shows the time and its unit, the full level its rate too") {
+TEST_CASE("the lesson column shows the time (its unit under it), the full level its rate too") {
     const FrameClock clock = clock_of(10.0, 1.0, 30);
     // Frames 1/30 apart: two decimals tell them apart.
-    CHECK(clock_text(2.5, clock, 1.0, OverlayLevel::lesson) == "t = 2.50 time units");
+    CHECK(clock_text(2.5, clock, 1.0, OverlayLevel::lesson) == "t = 2.50");
     CHECK(clock_text(2.5, clock, 1.0, OverlayLevel::full) == "t = 2.500   (1/s)");
     // brownian: 3 time units a second at 30 fps, frames 0.1 apart.
-    CHECK(clock_text(45.0, clock_of(20.0, 3.0, 30), 3.0, OverlayLevel::lesson) ==
-          "t = 45.0 time units");
+    CHECK(clock_text(45.0, clock_of(20.0, 3.0, 30), 3.0, OverlayLevel::lesson) == "t = 45.0");
     const FrameClock si = clock_of(10.0, 5e-12, 15);
-    CHECK(clock_text(si.time(149), si, 5e-12, OverlayLevel::lesson) == "t = 4.9667e-11 time units");
+    CHECK(clock_text(si.time(149), si, 5e-12, OverlayLevel::lesson) == "t = 4.9667e-11");
+    CHECK(std::string(time_unit) == "time units");
     for (const FrameClock& c : {clock, clock_of(20.0, 3.0, 30), clock_of(20.0, 0.05, 15), si}) {
         for (std::int64_t k = 1; k < c.count; ++k) {
             CAPTURE(k);
@@ -188,8 +188,9 @@ TEST_CASE("the work ratio is the engines' counts divided, in words") {
     // queue operations.
     CHECK(work_ratio(2.39e9, 14.0e6 + 1.85e6) == "151x less work");
     CHECK(work_ratio(1000.0, 400.0) == "2.5x less work");
-    CHECK(work_ratio(1000.0, 30.0) == "33.3x less work");
-    CHECK(work_ratio(300.0, 1000.0) == "3.33x more work");
+    CHECK(work_ratio(1000.0, 30.0) == "33x less work");
+    CHECK(work_ratio(300.0, 1000.0) == "3.3x more work");
+    CHECK(work_ratio(998.0, 100.0) == "10x less work");
     CHECK(work_ratio(1000.0, 1000.0) == "the same work");
     CHECK(work_ratio(0.0, 10.0).empty());  // nothing to compare yet
     CHECK(work_ratio(10.0, 0.0).empty());
@@ -200,7 +201,7 @@ TEST_CASE("the work ratio is the engines' counts divided, in words") {
             const std::string words = work_ratio(t, e);
             CAPTURE(words);
             const double shown = std::stod(words.substr(0, words.find('x')));
-            CHECK(std::abs(shown - t / e) <= 0.005 * (t / e) + 0.5);
+            CHECK(std::abs(shown - t / e) <= 0.05 * (t / e) + 0.5);
         }
     }
 }

@@ -65,8 +65,8 @@ inline constexpr double divide_tolerance = 1e-6;
 /// one, three significant digits ("2.39e+17", "0.00042"), so that no count outgrows its column.
 [[nodiscard]] std::string short_count(double value);
 
-/// The clock's unit: scenes are written in units of their own (a box 1 wide, speeds in box
-/// widths per time unit), so the clock says "time units", never seconds.
+/// The clock's unit, under the lesson's clock: scenes are written in units of their own (a box 1
+/// wide, speeds in box widths per time unit), so the clock says "time units", never seconds.
 inline constexpr const char* time_unit = "time units";
 
 /// The on-screen clock "t = 12.345   (1/s)": three decimals while they tell one frame from the
@@ -75,8 +75,8 @@ inline constexpr const char* time_unit = "time units";
 /// scenes in astronomical units 1e45 time units.
 [[nodiscard]] std::string clock_label(double t, const FrameClock& clock, double speed);
 /// The clock as a level shows it: the lesson column is narrow and the playback rate is no
-/// lesson, so it shows the time and its unit alone ("t = 12.35 time units", as many decimals as
-/// tell one frame from the next, at most three); the full level adds the rate.
+/// lesson, so it shows the time alone ("t = 12.35": as many decimals as tell one frame from the
+/// next, at most three; time_unit is a line of its own); the full level adds the rate.
 [[nodiscard]] std::string clock_text(double t, const FrameClock& clock, double speed,
                                      OverlayLevel level);
 
@@ -110,7 +110,8 @@ struct EngineDrift {
 /// leaves the ratio on the cautious side.
 [[nodiscard]] double work_done(const Measurements& m, bool time_driven) noexcept;
 /// "168x less work": how many times less the event-driven engine did (`time_work` /
-/// `event_work`, three significant digits below 100, a whole number above), "2.5x more work"
+/// `event_work`, two significant digits below 10, a whole number above: one narrow line),
+/// "2.5x more work"
 /// when it did more, "" when either is zero (nothing to compare yet).
 [[nodiscard]] std::string work_ratio(double time_work, double event_work);
 

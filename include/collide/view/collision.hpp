@@ -78,6 +78,7 @@ struct DriftPoint {
 struct FrameContent {
     std::vector<PanelContent> panels;
     std::string time_text;  ///< e.g. "t = 3.25   (x0.5 speed)"
+    std::string time_unit;  ///< lesson level: a line under the clock ("time units"; "" for none)
     /// One series per panel (same order as `panels`; may be empty or shorter), oldest first.
     std::vector<std::vector<DriftPoint>> energy_drift;
     std::vector<std::string> notes;  ///< full level: notice line(s) at the bottom
