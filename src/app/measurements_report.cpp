@@ -21,6 +21,7 @@ std::vector<ReportField> report_fields(const Measurements& m) {
         {"predictions", m.predictions},
         {"pq_pushes", m.queue.pushes},
         {"pq_pops", m.queue.pops},
+        {"pq_updates", m.queue.updates},
         {"stale_events", m.queue.stale_pops},
         {"pq_max_size", m.queue.max_size},
         {"kinetic_energy", m.kinetic_energy},

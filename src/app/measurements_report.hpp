@@ -19,7 +19,7 @@ struct ReportField {
 };
 
 /// Every field of Measurements (momentum as momentum_x / momentum_y, the queue statistics as
-/// pq_pushes, pq_pops, stale_events, pq_max_size), in a stable order.
+/// pq_pushes, pq_pops, pq_updates, stale_events, pq_max_size), in a stable order.
 [[nodiscard]] std::vector<ReportField> report_fields(const Measurements& m);
 
 /// `key: value` lines.

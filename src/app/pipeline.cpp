@@ -161,8 +161,9 @@ PanelFrame FrameSource::describe(const Panel& panel) const {
     out.drift = {out.snapshot.time, drift};
     out.time_driven = panel.time_driven;
     out.measurements = m;
-    out.words = show::panel_words(m, panel.time_driven,
-                                  out.snapshot.box.boundary == Boundary::walls, drift);
+    out.words =
+        show::panel_words(m, panel.time_driven, out.snapshot.box.boundary == Boundary::walls, drift,
+                          plan_.event_engine.engine);
     if (out.snapshot.queue)
         out.queue_words = show::queue_words(*out.snapshot.queue, out.snapshot.time);
     return out;
@@ -209,26 +210,34 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
         out.compact_line = panel.words.compact_line;
         out.cost_label = panel.words.cost_label;
         out.cost = panel.words.cost;
+        out.how = frame.panels.size() == 2 ? panel.words.how : std::string();
         out.queue_words = panel.queue_words;
         out.accent = render::panel_accent(panel.time_driven);
-        out.note.clear();
+        out.note = panel.time_driven ? lesson.step_note : std::string();
         out.step_period = 1;
         out.step_phase = 0;
         if (panel.time_driven && lesson.frames_per_step > 1) {
             // Which frame of the held step this is: a new state restarts the count (a frozen
             // frame, a card's or a hold's, is no frame of the step).
             if (frame.moved) advance_step_phase(panel.snapshot.time);
-            out.note = show::step_note(plan_.time_engine.dt, plan_.clock.interval);
             out.step_period = lesson.frames_per_step;
             out.step_phase = std::min(step_phase_, lesson.frames_per_step - 1);
         }
         if (frame.moved || content_.energy_drift[i].empty())
             content_.energy_drift[i].push_back(panel.drift);
+        drifts_.resize(frame.panels.size());
+        drifts_[i].time_driven = panel.time_driven;
         if (std::isfinite(panel.drift.drift))
-            largest_drift_ = std::max(largest_drift_, std::abs(panel.drift.drift));
+            drifts_[i].largest = std::max(drifts_[i].largest, std::abs(panel.drift.drift));
     }
+    // The ratio compares the two engines (time-driven first, as the plan orders them).
+    content_.cost_ratio = frame.panels.size() == 2 ? show::work_ratio(frame.panels[0].words.cost,
+                                                                      frame.panels[1].words.cost)
+                                                   : std::string();
     content_.time_text =
         show::clock_text(frame.time, plan_.clock, plan_.speed.speed, plan_.render.overlays);
+    content_.time_unit =
+        plan_.render.overlays == OverlayLevel::lesson ? show::time_unit : std::string();
     // Failure markers fade with the moving picture: a card or a hold keeps them as they are.
     content_.video_time = static_cast<double>(frame.sim_frame) / plan_.fps;
     content_.speed = plan_.speed.speed;
@@ -236,8 +245,10 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
     content_.caption =
         segment.kind == show::SegmentKind::card ? lesson.caption_at(video_time) : segment.caption;
     content_.histogram = lesson.histogram;
-    content_.energy_line = show::energy_line(largest_drift_);
-    content_.energy_plot = largest_drift_ > show::round_off_drift;
+    content_.energy_line = show::energy_line(drifts_);
+    content_.energy_plot =
+        std::any_of(drifts_.begin(), drifts_.end(),
+                    [](const show::EngineDrift& d) { return d.largest > show::round_off_drift; });
     content_.intro_title = lesson.title;
     content_.intro_text = lesson.description;
     content_.intro_opacity = lesson.intro_opacity(video_time);

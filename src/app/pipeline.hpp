@@ -93,7 +93,7 @@ class FrameComposer {
 
     const RenderPlan& plan_;
     render::FrameContent content_;
-    double largest_drift_ = 0.0;
+    std::vector<show::EngineDrift> drifts_;  ///< per panel: the largest drift so far
     double last_step_time_ = -1.0;
     int step_phase_ = 0;
 };

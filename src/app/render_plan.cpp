@@ -272,9 +272,8 @@ LessonPlan lesson_plan(const RenderRequest& request, const Scene& scene, const R
     }
     lesson.histogram = histogram_size(scene);
     const double interval = plan.speed.speed / plan.fps;
-    if (plan.time_engine.dt > interval * (1.0 + 1e-6)) {
-        lesson.frames_per_step = static_cast<int>(std::lround(plan.time_engine.dt / interval));
-    }
+    lesson.frames_per_step = show::whole_frames_per_step(plan.time_engine.dt, interval);
+    lesson.step_note = show::step_note(plan.time_engine.dt, interval);
     return lesson;
 }
 

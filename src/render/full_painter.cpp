@@ -64,12 +64,14 @@ int FullPainter::counter_rows(const FrameContent& frame) const {
 }
 
 // The header: the title, then the counters in a grid, row by row.
-void FullPainter::add_panel_text(std::size_t /*index*/, const PanelContent& content,
+void FullPainter::add_panel_text(std::size_t index, const PanelContent& content,
                                  const PanelLayout& panel) {
     const FontAtlas& font = *body_font_;
     OverlayBatch& text = list_.text[0].glyphs;
     const float baseline = panel.header.y0 + font.ascent();
     font.add_text(text, panel.header.x0, baseline, content.title, palette_.title);
+    const TextSlot* header = layout_.slot(TextRole::counters, static_cast<int>(index));
+    if (header != nullptr) record_text(*header, content.title);
     const int columns = panel_counter_columns(layout_.panels.size());
     const float column_width = (panel.header.x1 - panel.header.x0) / static_cast<float>(columns);
     const std::size_t shown =
@@ -80,6 +82,7 @@ void FullPainter::add_panel_text(std::size_t /*index*/, const PanelContent& cont
         const auto row = static_cast<float>(1 + k / static_cast<std::size_t>(columns));
         font.add_text(text, panel.header.x0 + column * column_width,
                       baseline + row * font.line_height(), content.counters[k], counter_color());
+        if (header != nullptr) record_text(*header, content.counters[k]);
     }
 }
 
@@ -99,6 +102,8 @@ void FullPainter::finish_frame(const FrameContent& frame) {
     const RectF drift{histogram.x1 + 2.0F * m, columns.y0, columns.x1, columns.y1};
 
     font.add_text(text, info.x0, info.y0 + font.ascent(), frame.time_text, palette_.title);
+    const TextSlot* strip_slot = layout_.slot(TextRole::strip);
+    if (strip_slot != nullptr) record_text(*strip_slot, frame.time_text);
     add_legend(info, frame.color_key);
     std::vector<const Snapshot*> snapshots;
     for (const PanelContent& panel : frame.panels) snapshots.push_back(panel.snapshot);
@@ -109,8 +114,9 @@ void FullPainter::finish_frame(const FrameContent& frame) {
     draw_drift_plot(list_.over, text, font, drift, frame.energy_drift, series_colors,
                     plot_colors(config_.theme));
     const float notes_baseline = strip.y1 - m * 0.5F - line + font.ascent();
-    font.add_text(text, columns.x0, notes_baseline, join(frame.notes, "   \xC2\xB7   "),
-                  counter_color());
+    const std::string notes = join(frame.notes, "   \xC2\xB7   ");
+    font.add_text(text, columns.x0, notes_baseline, notes, counter_color());
+    if (strip_slot != nullptr) record_text(*strip_slot, notes);
 }
 
 // Colour bar with its fixed range (speed or mass modes) or the tag key, with the show's words.

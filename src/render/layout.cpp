@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string_view>
 
 namespace collide::render {
 
@@ -75,6 +76,8 @@ const char* text_role_name(TextRole role) noexcept {
             return "figures";
         case TextRole::note:
             return "note";
+        case TextRole::how:
+            return "how";
         case TextRole::caption:
             return "caption";
         case TextRole::clock:
@@ -85,6 +88,8 @@ const char* text_role_name(TextRole role) noexcept {
             return "cost-label";
         case TextRole::cost_value:
             return "cost-value";
+        case TextRole::cost_ratio:
+            return "cost-ratio";
         case TextRole::energy:
             return "energy";
         case TextRole::legend:
@@ -156,7 +161,33 @@ bool overlaps(RectF a, RectF b) noexcept {
     return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
 }
 
-std::string layout_json(const FrameLayout& layout, int width, int height) {
+namespace {
+/// `text` as a JSON string: quotes, backslashes and control characters escaped (UTF-8 as is).
+std::string json_string(std::string_view text) {
+    std::string out = "\"";
+    for (const char c : text) {
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += c;
+        } else if (static_cast<unsigned char>(c) < 0x20) {
+            out += fmt::format("\\u{:04x}", static_cast<unsigned>(c));
+        } else {
+            out += c;
+        }
+    }
+    return out + "\"";
+}
+
+std::string json_strings(const std::vector<std::string>& strings) {
+    std::string out = "[";
+    for (std::size_t k = 0; k < strings.size(); ++k) {
+        out += (k == 0 ? "" : ", ") + json_string(strings[k]);
+    }
+    return out + "]";
+}
+}  // namespace
+
+std::string layout_json(const FrameLayout& layout, int width, int height, const DrawnText* drawn) {
     const auto rect = [](RectF r) {
         return fmt::format("[{:g}, {:g}, {:g}, {:g}]", r.x0, r.y0, r.x1, r.y1);
     };
@@ -172,13 +203,30 @@ std::string layout_json(const FrameLayout& layout, int width, int height) {
     out += "\n  ],\n  \"column\": " + rect(layout.column.area) + ",\n  \"text\": [";
     for (std::size_t i = 0; i < layout.text.size(); ++i) {
         const TextSlot& t = layout.text[i];
+        const std::string strings = drawn != nullptr && i < drawn->in_slots.size()
+                                        ? ", \"text\": " + json_strings(drawn->in_slots[i])
+                                        : std::string();
         out += fmt::format(
             "{}\n    {{\"role\": \"{}\", \"panel\": {}, \"rect\": {}, "
-            "\"pixel_height\": {:g}, \"cap_height\": {:.1f}}}",
+            "\"pixel_height\": {:g}, \"cap_height\": {:.1f}{}}}",
             i == 0 ? "" : ",", text_role_name(t.role), t.panel, rect(t.rect), t.pixel_height,
-            t.cap_height());
+            t.cap_height(), strings);
     }
-    out += "\n  ]\n}\n";
+    out += "\n  ]";
+    if (drawn != nullptr) {
+        // Text in no slot of the layout: the title card, labels inside a box, the queue's nodes.
+        out += ",\n  \"other_text\": [";
+        for (std::size_t i = 0; i < drawn->elsewhere.size(); ++i) {
+            const auto& [slot, text] = drawn->elsewhere[i];
+            out += fmt::format(
+                "{}\n    {{\"role\": \"{}\", \"panel\": {}, \"rect\": {}, "
+                "\"pixel_height\": {:g}, \"text\": {}}}",
+                i == 0 ? "" : ",", text_role_name(slot.role), slot.panel, rect(slot.rect),
+                slot.pixel_height, json_string(text));
+        }
+        out += "\n  ]";
+    }
+    out += "\n}\n";
     return out;
 }
 

@@ -13,6 +13,7 @@
 //  - full:    today's expert layout: title and counter grid above each box, strip of plots below.
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "collide/box.hpp"
@@ -38,11 +39,13 @@ enum class TextRole {
     title,
     figures,
     note,
+    how,  ///< lesson, two panels: why the panel's work grows as it does (under its figures)
     caption,
     clock,
     cost_heading,
     cost_label,
     cost_value,
+    cost_ratio,  ///< lesson, two panels: "131x less work" under the bars
     energy,
     legend,
     plot_title,
@@ -107,6 +110,13 @@ struct FrameLayout {
     [[nodiscard]] std::vector<const TextSlot*> slots(TextRole role, int panel = -1) const;
 };
 
+/// The strings a frame drew, for `--layout-json`: per slot of FrameLayout::text (same order),
+/// and the text drawn outside every slot (the title card, labels inside a box).
+struct DrawnText {
+    std::vector<std::vector<std::string>> in_slots;
+    std::vector<std::pair<TextSlot, std::string>> elsewhere;
+};
+
 /// What the layout needs to know of a frame besides its size.
 struct LayoutInput {
     int width = 1280;
@@ -114,6 +124,9 @@ struct LayoutInput {
     OverlayLevel level = OverlayLevel::lesson;
     std::vector<Box> boxes;     ///< 1 or 2 panels, left to right (only their shapes matter)
     bool note_line = false;     ///< lesson: a note line under the figures (dt > frame)
+    bool how_line = false;      ///< lesson: a line under each panel's figures (PanelContent::how)
+    bool cost_ratio = false;    ///< lesson: the cost ratio under the bars (two panels)
+    bool clock_unit = false;    ///< lesson: a second clock line for the time's unit
     bool large_plot = false;    ///< lesson: the plot is the subject: a wider column
     bool small_plot = false;    ///< lesson: a plot below the column's text, reaching down
                                 ///< beside the figures row so it is tall enough to read
@@ -157,8 +170,10 @@ inline constexpr float queue_strip_share = 0.3F;
 /// A box of `scale` centred horizontally in [x0, x1] with its top at y0 (whole pixels).
 [[nodiscard]] RectF place_box(const Box& box, double scale, float x0, float x1, float y0);
 
-/// The rectangles as JSON (frame size, level, panels with box and scale, every text slot).
-[[nodiscard]] std::string layout_json(const FrameLayout& layout, int width, int height);
+/// The rectangles as JSON (frame size, level, panels with box and scale, every text slot), with
+/// the strings drawn in each slot ("text") when `drawn` is given, and the text drawn elsewhere.
+[[nodiscard]] std::string layout_json(const FrameLayout& layout, int width, int height,
+                                      const DrawnText* drawn = nullptr);
 
 /// True when the two rectangles share interior area.
 [[nodiscard]] bool overlaps(RectF a, RectF b) noexcept;

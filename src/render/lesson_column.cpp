@@ -13,13 +13,14 @@
 namespace collide::render {
 
 void LessonPainter::add_column(const FrameContent& frame) {
-    if (const TextSlot* slot = layout_.slot(TextRole::clock)) {
-        draw_text(Font::body, *slot, frame.time_text, palette_.title);
-    }
+    const std::vector<const TextSlot*> clock = layout_.slots(TextRole::clock);
+    if (!clock.empty()) draw_text(Font::body, *clock[0], frame.time_text, palette_.title);
+    if (clock.size() > 1) draw_text(Font::body, *clock[1], frame.time_unit, palette_.muted);
     if (const TextSlot* slot = layout_.slot(TextRole::caption); slot && !frame.caption.empty()) {
         draw_text(Font::body, *slot, frame.caption, palette_.title, Align::centre);
     }
-    // The cost graphic: one bar per engine on one scale, so N^2 against log N is seen.
+    // The cost graphic: one bar per engine on one scale, so N^2 against log N is seen; the
+    // smaller bar keeps a visible stub at any ratio (the ratio under the bars says how small).
     double most = 0.0;
     for (const PanelContent& panel : frame.panels) most = std::max(most, panel.cost);
     if (const TextSlot* slot = layout_.slot(TextRole::cost_heading)) {
@@ -36,7 +37,9 @@ void LessonPainter::add_column(const FrameContent& frame) {
                           value->rect.y0 - std::round(0.6F * layout_.margin)};
         list_.over.add_rect(track, faded(palette_.muted, 0.35F));
         if (most > 0.0 && panel.cost > 0.0) {
-            const float w = std::max(2.0F, static_cast<float>(panel.cost / most) * track.width());
+            const float stub = std::max(3.0F, std::round(track.height()));
+            const float w = std::max(std::min(stub, track.width()),
+                                     static_cast<float>(panel.cost / most) * track.width());
             list_.over.add_rect({track.x0, track.y0, track.x0 + w, track.y1},
                                 with_alpha(panel.accent, 255));
         }
@@ -53,6 +56,14 @@ void LessonPainter::add_column(const FrameContent& frame) {
             draw_text(Font::body, *value, words, palette_.title);
         } else {
             draw_text(value_font, *value, shown, palette_.title);
+        }
+    }
+    const std::vector<const TextSlot*> ratio = layout_.slots(TextRole::cost_ratio);
+    if (!ratio.empty() && !frame.cost_ratio.empty()) {
+        const std::vector<std::string> lines =
+            wrap_words(*body_font_, frame.cost_ratio, ratio.front()->rect.width());
+        for (std::size_t k = 0; k < lines.size() && k < ratio.size(); ++k) {
+            draw_text(Font::body, *ratio[k], lines[k], palette_.title);
         }
     }
     const std::vector<const TextSlot*> energy = layout_.slots(TextRole::energy);

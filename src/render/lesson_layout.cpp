@@ -58,9 +58,10 @@ FrameLayout lesson_layout(const LayoutInput& in) {
     const float head_line = std::round(head * 1.2F);
     const float gap = std::round(0.6F * m);
 
-    // Vertical: title | box | figures (| note) ... caption.
+    // Vertical: title | box | figures (| note) (| how) ... caption.
     const float box_top = m + line + gap;
-    const float below = gap + head_line + (in.note_line ? line : 0.0F);
+    const float below =
+        gap + head_line + (in.note_line ? line : 0.0F) + (in.how_line ? line : 0.0F);
     const float caption_top = height - m - line;
     const bool queue = in.queue_panel >= 0 && in.queue_panel < static_cast<int>(in.boxes.size());
     const float queue_h = queue ? std::round(queue_strip_share * height) : 0.0F;
@@ -130,6 +131,10 @@ FrameLayout lesson_layout(const LayoutInput& in) {
             layout.text.push_back({TextRole::note, p, {title_x0, y, text_x1, y + line}, body});
             y += line;
         }
+        if (in.how_line) {
+            layout.text.push_back({TextRole::how, p, {title_x0, y, text_x1, y + line}, body});
+            y += line;
+        }
         if (queue && p == in.queue_panel) {
             // Under the figures, across the frame: a tree of events needs the width.
             layout.queue_panel = p;
@@ -141,8 +146,9 @@ FrameLayout lesson_layout(const LayoutInput& in) {
     const float box_bottom = top + used_h;
     layout.text.push_back({TextRole::caption, -1, {m, caption_top, width - m, height - m}, body});
 
-    // The column: clock, "work so far", one bar per panel (label, bar, value), energy, colour
-    // legend, plot. Groups that do not fit are left out, least important last.
+    // The column: clock (and its unit), "work so far" (or, under two bars, their ratio), one bar
+    // per panel (label, bar, value), energy, colour legend, plot. Groups that do not fit are left
+    // out, least important last.
     ColumnLayout& column = layout.column;
     column.area = {column_x0, top, column_x0 + column_w, box_bottom};
     const float bar_h = std::round(0.45F * line);
@@ -153,10 +159,12 @@ FrameLayout lesson_layout(const LayoutInput& in) {
         y += h;
     };
     if (fits(line)) add(TextRole::clock, -1, line, body);
+    if (in.clock_unit && fits(line)) add(TextRole::clock, -1, line, body);
     const auto panels = static_cast<float>(in.boxes.size());
     // Beside a small plot the work figures are body sized: the plot needs the height.
     const float value_line = in.small_plot ? line : head_line;
     const float value_px = in.small_plot ? body : head;
+    // Under two bars their ratio ("131x less work") says what the heading would.
     const float cost_h = gap + line + panels * (line + bar_h + gap + value_line);
     const float energy_h = gap + 2.0F * line;
     if (in.large_plot) {
@@ -170,7 +178,7 @@ FrameLayout lesson_layout(const LayoutInput& in) {
     }
     if (fits(cost_h)) {
         y += gap;
-        add(TextRole::cost_heading, -1, line, body);
+        if (!in.cost_ratio) add(TextRole::cost_heading, -1, line, body);
         const float bars_top = y;
         for (std::size_t i = 0; i < in.boxes.size(); ++i) {
             add(TextRole::cost_label, static_cast<int>(i), line, body);
@@ -178,6 +186,7 @@ FrameLayout lesson_layout(const LayoutInput& in) {
             add(TextRole::cost_value, static_cast<int>(i), value_line, value_px);
         }
         column.bars = {column_x0, bars_top, column_x0 + column_w, y};
+        if (in.cost_ratio) add(TextRole::cost_ratio, -1, line, body);
     }
     if (fits(energy_h)) {
         y += gap;

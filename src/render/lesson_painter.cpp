@@ -2,8 +2,12 @@
 // text (title with the engine's swatch, headline figures, the note with its step indicator).
 #include "lesson_painter.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
+#include <iterator>
 #include <string>
+#include <vector>
 
 namespace collide::render {
 
@@ -72,7 +76,10 @@ FrameLayout LessonPainter::layout_for(const FrameContent& frame) const {
     input.boxes = panel_boxes(frame);
     for (const PanelContent& panel : frame.panels) {
         if (!panel.note.empty()) input.note_line = true;
+        if (!panel.how.empty()) input.how_line = true;
     }
+    input.cost_ratio = frame.panels.size() == 2;
+    input.clock_unit = !frame.time_unit.empty();
     input.large_plot = frame.histogram == PlotSize::large;
     input.small_plot = frame.histogram == PlotSize::small;
     // Speed colours beside a speed plot: the plot's axis is the colour bar (speed_axis_colors).
@@ -85,6 +92,8 @@ FrameLayout LessonPainter::layout_for(const FrameContent& frame) const {
         if (snapshot != nullptr && snapshot->queue && input.queue_panel < 0)
             input.queue_panel = static_cast<int>(i);
     }
+    // The queue strip takes the height a how line would: its own words say how the queue works.
+    if (input.queue_panel >= 0) input.how_line = false;
     return lesson_layout(input);
 }
 
@@ -154,24 +163,13 @@ void LessonPainter::add_panel_text(std::size_t index, const PanelContent& conten
         draw_text(Font::body, *slot, content.title, palette_.title, Align::left,
                   slot->rect.x0 + 1.6F * sw);
     }
+    const TextSlot* how = layout_.slot(TextRole::how, p);
+    bool how_taken = false;
     if (const TextSlot* slot = layout_.slot(TextRole::figures, p)) {
-        float x = slot->rect.x0;
-        const float gap = head_font_->pixel_height();
-        for (const Figure& figure : content.figures) {
-            const float need =
-                head_font_->text_width(figure.value) + body_font_->text_width(" " + figure.label);
-            if (x + need > slot->rect.x1) break;  // the least important figures go first
-            const bool alarm = figure.failure && figure.value != "0";
-            x = draw_text(Font::head, *slot, figure.value,
-                          alarm ? palette_.failure : palette_.title, Align::left, x);
-            // Body text on the headline's baseline.
-            const float baseline = slot->rect.y0 +
-                                   0.5F * (slot->rect.height() - head_font_->pixel_height()) +
-                                   head_font_->ascent();
-            x = body_font_->add_text(list_.text[0].glyphs, x, baseline, " " + figure.label,
-                                     palette_.text);
-            x += gap;
-        }
+        how_taken = add_figures(content.figures, *slot, how);
+    }
+    if (how != nullptr && !how_taken && !content.how.empty()) {
+        draw_text(Font::body, *how, content.how, palette_.text);
     }
     if (const TextSlot* slot = layout_.slot(TextRole::note, p); slot && !content.note.empty()) {
         float right = slot->rect.x1;
@@ -198,6 +196,76 @@ void LessonPainter::add_panel_text(std::size_t index, const PanelContent& conten
     }
     // More failures than markers (one line there; the compact form has no room).
     if (hidden_ > 0) add_unmarked_note(panel, hidden_);
+}
+
+namespace {
+/// The figures to show: all that fit `room` in order; failures are never dropped (item 2 of issue
+/// #28), the others go first, least important (last) first.
+std::vector<const Figure*> figures_within(const std::vector<Figure>& figures, float room,
+                                          const std::function<float(const Figure&)>& width) {
+    std::vector<const Figure*> kept;
+    for (const Figure& f : figures) kept.push_back(&f);
+    const auto total = [&] {
+        float sum = 0.0F;
+        for (const Figure* f : kept) sum += width(*f);
+        return sum;
+    };
+    while (total() > room) {
+        const auto other =
+            std::find_if(kept.rbegin(), kept.rend(), [](const Figure* f) { return !f->failure; });
+        if (other == kept.rend()) break;
+        kept.erase(std::next(other).base());
+    }
+    return kept;
+}
+}  // namespace
+
+bool LessonPainter::add_figures(const std::vector<Figure>& figures, const TextSlot& slot,
+                                const TextSlot* overflow) {
+    // Headline values while every failure fits the row that way; else body-sized values, and
+    // failures that still do not fit continue on the how line (`overflow`), which they take.
+    const float gap = head_font_->pixel_height();
+    const auto width_in = [&](const FontAtlas& value_font) {
+        return [&value_font, this, gap](const Figure& f) {
+            return value_font.text_width(f.value) + body_font_->text_width(" " + f.label) + gap;
+        };
+    };
+    const float room = slot.rect.width() + gap;  // no gap after the last figure
+    std::vector<const Figure*> shown = figures_within(figures, room, width_in(*head_font_));
+    Font value_font = Font::head;
+    const auto fits = [&](const std::vector<const Figure*>& list, const FontAtlas& font) {
+        float sum = 0.0F;
+        for (const Figure* f : list) sum += width_in(font)(*f);
+        return sum <= room;
+    };
+    if (!fits(shown, *head_font_)) {
+        value_font = Font::body;
+        shown = figures_within(figures, room, width_in(*body_font_));
+    }
+    bool overflowed = false;
+    float x = slot.rect.x0;
+    const TextSlot* row = &slot;
+    for (const Figure* figure : shown) {
+        const FontAtlas& vf = atlas(value_font);
+        const float need = width_in(vf)(*figure) - gap;
+        if (x + need > row->rect.x1) {
+            if (row != &slot || overflow == nullptr) break;  // no room left anywhere
+            row = overflow;  // the next line: failures are never dropped
+            x = row->rect.x0;
+            overflowed = true;
+        }
+        const bool alarm = figure->failure && figure->value != "0";
+        x = draw_text(value_font, *row, figure->value, alarm ? palette_.failure : palette_.title,
+                      Align::left, x);
+        // Body text on the value's baseline.
+        const float baseline =
+            row->rect.y0 + 0.5F * (row->rect.height() - vf.pixel_height()) + vf.ascent();
+        const std::string label = " " + figure->label;
+        x = body_font_->add_text(list_.text[0].glyphs, x, baseline, label, palette_.text);
+        record_text(*row, label, true);
+        x += gap;
+    }
+    return overflowed;
 }
 
 }  // namespace collide::render

@@ -67,6 +67,9 @@ class LessonPainter : public Painter {
     void finish_frame(const FrameContent& frame) override;
 
     void choose_colormap_range();
+    /// The headline figures in `slot`; true when some continued on `overflow` (the how line).
+    bool add_figures(const std::vector<Figure>& figures, const TextSlot& slot,
+                     const TextSlot* overflow);
     // Failure markers (lesson_marks.cpp).
     std::size_t add_failures(std::size_t index, const Snapshot& snapshot, const PanelLayout& panel);
     void add_unmarked_note(const PanelLayout& panel, std::size_t hidden);

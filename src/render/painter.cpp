@@ -62,6 +62,8 @@ const DrawList& Painter::build(const FrameContent& frame) {
     }
     list_.clear();
     layout_ = layout_for(frame);
+    drawn_.in_slots.assign(layout_.text.size(), {});
+    drawn_.elsewhere.clear();
     begin_frame(frame);
     if (trails_.size() != frame.panels.size()) {
         trails_.assign(frame.panels.size(),
@@ -224,6 +226,34 @@ void Painter::add_periodic_images(const DiscState& disc, const PanelLayout& pane
 // ---------------------------------------------------------------------------------------------
 // Text
 
+void Painter::record_text(const TextSlot& slot, std::string_view text, bool continues) {
+    if (text.empty()) return;
+    std::vector<TextSlot>& slots = layout_.text;
+    std::size_t at = slots.size();
+    if (!slots.empty() && &slot >= slots.data() && &slot < slots.data() + slots.size()) {
+        at = static_cast<std::size_t>(&slot - slots.data());
+    } else {
+        const auto holds = [&](const TextSlot& s) {
+            return s.role == slot.role && (s.panel == slot.panel || slot.panel == -1) &&
+                   slot.rect.x0 >= s.rect.x0 && slot.rect.x0 < s.rect.x1 &&
+                   slot.rect.y0 >= s.rect.y0 && slot.rect.y0 < s.rect.y1;
+        };
+        at = static_cast<std::size_t>(std::find_if(slots.begin(), slots.end(), holds) -
+                                      slots.begin());
+    }
+    if (at == slots.size()) {
+        drawn_.elsewhere.emplace_back(slot, std::string(text));
+        return;
+    }
+    if (drawn_.in_slots.size() < slots.size()) drawn_.in_slots.resize(slots.size());
+    std::vector<std::string>& strings = drawn_.in_slots[at];
+    if (continues && !strings.empty()) {
+        strings.back() += text;
+    } else {
+        strings.emplace_back(text);
+    }
+}
+
 float Painter::draw_text(Font font, const TextSlot& slot, std::string_view text, Rgba8 color,
                          Align align, float x) {
     const FontAtlas& f = atlas(font);
@@ -242,6 +272,7 @@ float Painter::draw_text(Font font, const TextSlot& slot, std::string_view text,
         slot.rect.y0 + 0.5F * (slot.rect.height() - f.pixel_height()) + f.ascent();
     auto run = std::find_if(list_.text.begin(), list_.text.end(),
                             [&](const TextRun& r) { return r.font == &f; });
+    record_text(slot, shown);
     return f.add_text(run->glyphs, left, baseline, shown, color);
 }
 

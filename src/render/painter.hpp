@@ -52,6 +52,8 @@ class Painter {
     [[nodiscard]] virtual FrameLayout layout_for(const FrameContent& frame) const = 0;
 
     [[nodiscard]] const FrameLayout& layout() const noexcept { return layout_; }
+    /// The strings drawn in the last built frame, by text slot (`--layout-json`).
+    [[nodiscard]] const DrawnText& drawn_text() const noexcept { return drawn_; }
     [[nodiscard]] const DrawList& draw_list() const noexcept { return list_; }
     [[nodiscard]] const RenderConfig& config() const noexcept { return config_; }
 
@@ -77,6 +79,11 @@ class Painter {
 
     /// Loads a font of `pixel_height` into `slot` and gives it a text run in the draw list.
     void load_font(std::optional<FontAtlas>& slot, float pixel_height);
+    /// Remembers `text` as drawn in `slot` (draw_text does; text drawn otherwise says so):
+    /// in the layout's slot it is, or lies in (a slot made for a part of one: a queue node, the
+    /// note beside its step indicator), else as text of its own. `continues`: the rest of the
+    /// slot's last string (a figure's label after its value).
+    void record_text(const TextSlot& slot, std::string_view text, bool continues = false);
     /// One line of text in `slot`, cut with an ellipsis where it would spill out; starts at `x`
     /// when given (left aligned). Returns the x after the last glyph.
     float draw_text(Font font, const TextSlot& slot, std::string_view text, Rgba8 color,
@@ -98,6 +105,7 @@ class Painter {
     std::optional<FontAtlas> head_font_;
     std::optional<FontAtlas> small_font_;
     FrameLayout layout_;
+    DrawnText drawn_;
     DrawList list_;
     double colormap_low_ = 0.0;  // the part of the colormap in use
     double colormap_high_ = 1.0;

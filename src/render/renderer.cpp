@@ -65,6 +65,13 @@ void Renderer::read_pixels(Image& out) {
 }
 
 std::string Renderer::layout_json(const FrameContent& frame) const {
+    // The frame just drawn: its layout and the strings drawn in it. Before any frame, the
+    // rectangles alone.
+    if (impl_->builder.layout().panels.size() == frame.panels.size() &&
+        !impl_->builder.layout().panels.empty()) {
+        return render::layout_json(impl_->builder.layout(), config().width, config().height,
+                                   &impl_->builder.drawn_text());
+    }
     return render::layout_json(impl_->builder.layout_for(frame), config().width, config().height);
 }
 

@@ -38,9 +38,21 @@ std::string clock_label(double t, const FrameClock& clock, double speed) {
     return fmt::format("{}   ({:.3g}/s)", time_part(t, clock), speed);
 }
 
+namespace {
+/// The lesson's clock: as many decimals as tell one frame from the next, at most three (a class
+/// reads "t = 45.0", not "t = 45.000", when frames are 0.1 apart).
+std::string lesson_clock(double t, const FrameClock& clock) {
+    if (!(clock.interval >= 1e-3 && clock.last_time < 1e6)) return time_part(t, clock);
+    const int decimals =
+        std::clamp(static_cast<int>(std::ceil(-std::log10(clock.interval) - 1e-9)), 0, 3);
+    return fmt::format("t = {:.{}f}", t, decimals);
+}
+}  // namespace
+
 std::string clock_text(double t, const FrameClock& clock, double speed, OverlayLevel level) {
-    // The lesson's column is narrow and the playback rate is no lesson: just the time.
-    return level == OverlayLevel::lesson ? time_part(t, clock) : clock_label(t, clock, speed);
+    // The lesson's column is narrow and the playback rate is no lesson: the time alone (its unit,
+    // time_unit, goes on a line of its own).
+    return level == OverlayLevel::lesson ? lesson_clock(t, clock) : clock_label(t, clock, speed);
 }
 
 }  // namespace collide::show

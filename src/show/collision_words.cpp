@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "collide/number_text.hpp"
@@ -13,8 +14,24 @@
 
 namespace collide::show {
 
+std::string dt_text(double dt) {
+    std::string decimal = fmt::format("{:.3g}", dt);
+    if (!(std::isfinite(dt) && dt > 0.0)) return decimal;
+    // Exact in three digits (0.05, 0.0125): as written.
+    if (std::abs(std::strtod(decimal.c_str(), nullptr) - dt) <= 1e-9 * dt) return decimal;
+    // A whole fraction with a small denominator (the default dt = speed / 30): 1/30, 2/75.
+    constexpr int largest_denominator = 1000;
+    for (int q = 2; q <= largest_denominator; ++q) {
+        const double p = dt * q;
+        const double whole = std::round(p);
+        if (whole >= 1.0 && whole < 1000.0 && std::abs(p - whole) <= 1e-9 * p)
+            return fmt::format("{:.0f}/{}", whole, q);
+    }
+    return decimal;
+}
+
 std::string time_lesson_title(double dt) {
-    return fmt::format("Time-driven: steps of dt = {:.3g}", dt);
+    return fmt::format("Time-driven: steps of dt = {}", dt_text(dt));
 }
 
 std::string event_lesson_title(const EngineOptions& options) {
@@ -24,7 +41,7 @@ std::string event_lesson_title(const EngineOptions& options) {
 }
 
 std::string time_panel_title(double dt) {
-    return fmt::format("Time-driven, dt = {:.3g}", dt);
+    return fmt::format("Time-driven, dt = {}", dt_text(dt));
 }
 
 std::string event_panel_title(const EngineOptions& options) {
@@ -39,8 +56,14 @@ std::string panel_title(bool time_driven, OverlayLevel level, const EngineOption
     return lesson ? event_lesson_title(options) : event_panel_title(options);
 }
 
+namespace {
+/// The largest number of steps in "Moves on q of every p frames": beyond it the pattern is too
+/// long to see, and the note says "about".
+constexpr int largest_step_pattern = 12;
+}  // namespace
+
 std::string step_note(double dt, double frame_interval) {
-    if (!(dt > frame_interval * (1.0 + 1e-6))) return {};
+    if (!(dt > frame_interval * (1.0 + divide_tolerance))) return {};
     const double frames = dt / frame_interval;
     if (divides(frame_interval, dt)) {
         const long n = std::lround(frames);
@@ -49,7 +72,20 @@ std::string step_note(double dt, double frame_interval) {
                                                             : "th";
         return fmt::format("Moves only every {}{} frame", n, suffix);
     }
-    return fmt::format("Moves only every {:.2g} frames", frames);
+    // q steps take p frames: the state changes on q of every p frames (1.5 frames a step: on
+    // 2 of every 3).
+    for (int q = 2; q <= largest_step_pattern; ++q) {
+        const double p = frames * q;
+        if (std::abs(p - std::round(p)) <= divide_tolerance * p)
+            return fmt::format("Moves on {} of every {:.0f} frames", q, std::round(p));
+    }
+    return fmt::format("Moves about once every {:.2g} frames", frames);
+}
+
+int whole_frames_per_step(double dt, double frame_interval) noexcept {
+    if (!(dt > frame_interval * (1.0 + divide_tolerance)) || !divides(frame_interval, dt)) return 1;
+    const double frames = std::round(dt / frame_interval);
+    return frames < 1e6 ? static_cast<int>(frames) : 1;
 }
 
 std::string short_count(double value) {
@@ -80,11 +116,11 @@ std::vector<std::string> time_driven_counters(const Measurements& m, double ener
 }
 
 std::vector<std::string> event_driven_counters(const Measurements& m, double energy_drift) {
-    const std::uint64_t queue_ops = m.queue.pushes + m.queue.pops;
+    const std::uint64_t queue_ops = m.queue.pushes + m.queue.pops + m.queue.updates;
     const double stale_share = m.queue.pops > 0 ? 100.0 * static_cast<double>(m.queue.stale_pops) /
                                                       static_cast<double>(m.queue.pops)
                                                 : 0.0;
-    const double work = static_cast<double>(m.predictions + queue_ops);
+    const double work = work_done(m, false);
     return {
         fmt::format("events  {}", short_count(static_cast<double>(m.events))),
         fmt::format("collisions  {}",
@@ -122,25 +158,63 @@ std::vector<Figure> event_driven_figures(const Measurements& m) {
     };
 }
 
-std::string energy_line(double largest_drift) {
-    return largest_drift <= round_off_drift ? "Energy conserved" : "Energy not conserved";
+std::string energy_line(const std::vector<EngineDrift>& panels) {
+    if (panels.empty()) return {};
+    const auto conserved = [](const EngineDrift& d) { return d.largest <= round_off_drift; };
+    if (panels.size() == 1)
+        return conserved(panels[0]) ? "Energy conserved" : "Energy not conserved";
+    std::size_t kept = 0;
+    for (const EngineDrift& d : panels) kept += conserved(d) ? 1 : 0;
+    if (kept == panels.size()) return "Both conserve energy";
+    if (kept == 0) return "Neither conserves energy";
+    for (const EngineDrift& d : panels) {
+        if (!conserved(d))
+            return d.time_driven ? "Time-driven: energy drifts" : "Event-driven: energy drifts";
+    }
+    return {};
 }
 
-PanelWords panel_words(const Measurements& m, bool time_driven, bool walls, double drift) {
+double work_done(const Measurements& m, bool time_driven) noexcept {
+    const auto n = [](std::uint64_t count) { return static_cast<double>(count); };
+    if (time_driven) return n(m.overlap_checks) + n(m.predictions);
+    return n(m.predictions) + n(m.queue.pushes) + n(m.queue.pops) + n(m.queue.updates);
+}
+
+std::string work_ratio(double time_work, double event_work) {
+    if (!(time_work > 0.0) || !(event_work > 0.0)) return {};
+    const bool less = time_work >= event_work;
+    const double ratio = less ? time_work / event_work : event_work / time_work;
+    const std::string times =
+        ratio < 9.95 ? fmt::format("{:.2g}", ratio) : fmt::format("{:.0f}", ratio);
+    if (times == "1") return "the same work";
+    return fmt::format("{}x {} work", times, less ? "less" : "more");
+}
+
+namespace {
+/// Why an engine's work grows as it does, in a line under its figures.
+std::string how_it_works(bool time_driven, EngineKind engine) {
+    if (time_driven) return "Each step tests all N\u00b2/2 pairs";
+    if (engine == EngineKind::classic) return "Each event: 2N pairs, log N queue";
+    return "Each event: a few pairs, log N queue";
+}
+}  // namespace
+
+PanelWords panel_words(const Measurements& m, bool time_driven, bool walls, double drift,
+                       EngineKind engine) {
     PanelWords out;
+    out.cost = work_done(m, time_driven);
+    out.how = how_it_works(time_driven, engine);
     if (time_driven) {
         out.counters = time_driven_counters(m, drift);
         out.figures = time_driven_figures(m, walls);
         out.compact_line = fmt::format("{} missed", count_text(m.missed_collisions));
         out.cost_label = "pair tests";
-        out.cost = static_cast<double>(m.overlap_checks);
     } else {
         out.counters = event_driven_counters(m, drift);
         out.figures = event_driven_figures(m);
         out.compact_line =
             fmt::format("{} collisions", count_text(m.collisions_pair + m.collisions_wall));
-        out.cost_label = "queue steps";
-        out.cost = static_cast<double>(m.queue.pushes + m.queue.pops);
+        out.cost_label = "pairs + queue";
     }
     return out;
 }

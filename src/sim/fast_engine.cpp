@@ -444,10 +444,15 @@ void BasicFastEngine<D>::schedule(std::uint32_t i, const Particle& pi, Vec xi, c
     Key best = pair;
     consider_walls_and_cells(i, pi, xi, best);
     if (best.t == never) {
-        if (heap_.contains(i)) heap_.erase(i);
+        if (heap_.contains(i)) {
+            heap_.erase(i);
+            ++stats().updates;
+        }
         return;
     }
-    if (!heap_.contains(i)) {
+    if (heap_.contains(i)) {
+        ++stats().updates;
+    } else {
         ++stats().pushes;
     }
     heap_.push_or_change(i, best);

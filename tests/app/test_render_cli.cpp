@@ -1,12 +1,14 @@
 // End-to-end tests of `collide render` and `collide thumbnail`: the files a user gets, read back.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "../support/skip.hpp"
 #include "../support/temp_dir.hpp"
@@ -410,6 +412,75 @@ TEST_CASE("thumbnail --layout-json writes the rectangles, with lesson text at le
         ++lines;
     }
     CHECK(lines >= 8);
+}
+
+namespace {
+/// The strings --layout-json gives for every slot of `role`, in the file's order.
+std::vector<std::string> texts_of(const std::string& json, const std::string& role) {
+    std::vector<std::string> out;
+    const std::string key = "\"role\": \"" + role + "\"";
+    for (std::size_t at = json.find(key); at != std::string::npos; at = json.find(key, at + 1)) {
+        const std::size_t end = json.find('}', at);
+        std::size_t q = json.find("\"text\": [", at);
+        if (q == std::string::npos || q > end) continue;
+        q += 9;
+        while (json[q] != ']') {
+            const std::size_t open = json.find('"', q);
+            const std::size_t close = json.find('"', open + 1);
+            out.push_back(json.substr(open + 1, close - open - 1));
+            q = close + 1;
+            while (json[q] == ',' || json[q] == ' ') ++q;
+        }
+    }
+    return out;
+}
+
+/// 1,234,567 as a number.
+double count_in(const std::string& text) {
+    std::string digits;
+    for (const char c : text) {
+        if (c >= '0' && c <= '9') digits += c;
+    }
+    return digits.empty() ? -1.0 : std::stod(digits);
+}
+
+/// The number after "key": in a `collide simulate --json` output.
+double json_number(const std::string& json, const std::string& key) {
+    const std::size_t at = json.find("\"" + key + "\": ");
+    return at == std::string::npos ? -1.0 : std::stod(json.substr(at + key.size() + 4));
+}
+}  // namespace
+
+TEST_CASE("the cost graphic's numbers and ratio on screen are the engines' counts (issue #28)") {
+    TempDir dir("ratio");
+    const fs::path json = dir.path / "layout.json";
+    const auto r = run_collide("thumbnail gas --at 3 --size 1280x720 -o " +
+                               (dir.path / "t.png").string() + " --layout-json " + json.string());
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    const std::string text = read_bytes(json);
+    const std::vector<std::string> values = texts_of(text, "cost-value");
+    REQUIRE(values.size() == 2);
+    const std::vector<std::string> ratio = texts_of(text, "cost-ratio");
+    REQUIRE(ratio.size() == 1);
+    // The same unit on both sides: pair computations (overlap tests and contact times against
+    // predictions), plus the event-driven engine's queue operations.
+    const auto time =
+        run_collide("simulate gas --until 3 --json --engine time --dt 0.033333333333333333");
+    const auto event = run_collide("simulate gas --until 3 --json --engine fast");
+    REQUIRE_MESSAGE(time.exit_code == 0, time.output);
+    REQUIRE_MESSAGE(event.exit_code == 0, event.output);
+    const double time_work =
+        json_number(time.output, "overlap_checks") + json_number(time.output, "predictions");
+    const double event_work =
+        json_number(event.output, "predictions") + json_number(event.output, "pq_pushes") +
+        json_number(event.output, "pq_pops") + json_number(event.output, "pq_updates");
+    CHECK(count_in(values[0]) == time_work);
+    CHECK(count_in(values[1]) == event_work);
+    CAPTURE(ratio[0]);
+    REQUIRE(ratio[0].find("x less work") != std::string::npos);
+    const double shown = std::stod(ratio[0]);
+    const double exact = time_work / event_work;
+    CHECK(std::abs(shown - exact) <= 0.005 * exact + 0.5);
 }
 
 TEST_CASE("render --queue: classic and fast engines show their queue, byte-identical run to run") {

@@ -51,8 +51,8 @@ TEST_CASE("collide simulate --json prints every measurement key") {
              {"\"t\": 5.5", "\"events\"", "\"collisions_pair\": 1", "\"collisions_wall\": 2",
               "\"kinetic_energy\"", "\"pressure\"", "\"compressibility\"", "\"packing_fraction\"",
               "\"max_overlap\": 0", "\"collisions_per_second\"", "\"pq_max_size\"",
-              "\"stale_events\"", "\"overlap_checks\"", "\"missed_collisions\"", "\"escaped\"",
-              "\"energy_drift\"", "\"msd\"", "\"temperature\""}) {
+              "\"pq_updates\"", "\"stale_events\"", "\"overlap_checks\"", "\"missed_collisions\"",
+              "\"escaped\"", "\"energy_drift\"", "\"msd\"", "\"temperature\""}) {
             CHECK_MESSAGE(contains(r.output, key), key);
         }
     }

@@ -216,6 +216,47 @@ TEST_CASE("layout JSON names every text line with its pixel height") {
     CHECK(json.find("\"box\": [") != std::string::npos);
 }
 
+TEST_CASE("lesson layout: the how lines, the work ratio and the clock's unit fit (issue #28)") {
+    for (const Size size : {Size{854, 480}, Size{1280, 720}, Size{1920, 1080}, Size{3840, 2160}}) {
+        INFO(size.width << "x" << size.height);
+        LayoutInput in = lesson_input(size);
+        in.how_line = true;
+        in.cost_ratio = true;
+        in.clock_unit = true;
+        const FrameLayout layout = compute_layout(in);
+        const float frame = static_cast<float>(size.width) * static_cast<float>(size.height);
+        // The how line costs the boxes a line of height where they are height-bound: 54.8 % of
+        // the frame at 854x480 (55.6 % without it).
+        CHECK((area(layout.panels[0].box) + area(layout.panels[1].box)) / frame >= 0.54F);
+        CHECK(layout.slots(TextRole::how).size() == 2);
+        CHECK(layout.slots(TextRole::clock).size() == 2);
+        CHECK(layout.slots(TextRole::cost_ratio).size() == 1);
+        CHECK(layout.slot(TextRole::cost_heading) == nullptr);  // the ratio says it
+        CHECK(layout.slots(TextRole::cost_value).size() == 2);
+        CHECK(layout.slots(TextRole::energy).size() == 2);  // still room for the energy line
+        for (const TextSlot* how : layout.slots(TextRole::how)) {
+            CHECK(how->cap_height() >= 0.028F * static_cast<float>(size.height) - 0.01F);
+        }
+        check_nothing_overlaps_text(layout, size);
+    }
+}
+
+TEST_CASE("layout JSON carries every text line's strings beside its rectangle") {
+    const FrameLayout layout = compute_layout(lesson_input({1280, 720}));
+    DrawnText drawn;
+    drawn.in_slots.assign(layout.text.size(), {});
+    drawn.in_slots[0] = {"Time-driven: \"dt\" \\ 1/30", "second"};
+    drawn.elsewhere.push_back({layout.text[0], "a label\nin a box"});
+    const std::string json = layout_json(layout, 1280, 720, &drawn);
+    CHECK(json.find("\"text\": [\"Time-driven: \\\"dt\\\" \\\\ 1/30\", \"second\"]") !=
+          std::string::npos);
+    CHECK(json.find("\"text\": []") != std::string::npos);  // a slot with nothing drawn
+    CHECK(json.find("\"other_text\": [") != std::string::npos);
+    CHECK(json.find("\"text\": \"a label\\u000ain a box\"") != std::string::npos);
+    // Without strings: the rectangles alone, as before.
+    CHECK(layout_json(layout, 1280, 720).find("\"text\": [\"") == std::string::npos);
+}
+
 TEST_CASE("figures have thousands separators") {
     CHECK(with_separators(0) == "0");
     CHECK(with_separators(999) == "999");

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -79,12 +80,48 @@ TEST_CASE("the on-screen clock resolves one frame interval, whatever the units")
     }
 }
 
-TEST_CASE("the lesson column shows the time alone, the full level its rate too") {
+TEST_CASE("the lesson column shows the time (its unit under it), the full level its rate too") {
     const FrameClock clock = clock_of(10.0, 1.0, 30);
-    CHECK(clock_text(2.5, clock, 1.0, OverlayLevel::lesson) == "t = 2.500");
+    // Frames 1/30 apart: two decimals tell them apart.
+    CHECK(clock_text(2.5, clock, 1.0, OverlayLevel::lesson) == "t = 2.50");
     CHECK(clock_text(2.5, clock, 1.0, OverlayLevel::full) == "t = 2.500   (1/s)");
+    // brownian: 3 time units a second at 30 fps, frames 0.1 apart.
+    CHECK(clock_text(45.0, clock_of(20.0, 3.0, 30), 3.0, OverlayLevel::lesson) == "t = 45.0");
     const FrameClock si = clock_of(10.0, 5e-12, 15);
     CHECK(clock_text(si.time(149), si, 5e-12, OverlayLevel::lesson) == "t = 4.9667e-11");
+    CHECK(std::string(time_unit) == "time units");
+    for (const FrameClock& c : {clock, clock_of(20.0, 3.0, 30), clock_of(20.0, 0.05, 15), si}) {
+        for (std::int64_t k = 1; k < c.count; ++k) {
+            CAPTURE(k);
+            REQUIRE(clock_text(c.time(k - 1), c, 1.0, OverlayLevel::lesson) !=
+                    clock_text(c.time(k), c, 1.0, OverlayLevel::lesson));
+        }
+    }
+}
+
+TEST_CASE("dt reads as written, or as the whole fraction it is") {
+    CHECK(dt_text(0.05) == "0.05");
+    CHECK(dt_text(0.0125) == "0.0125");
+    CHECK(dt_text(1.0 / 30.0) == "1/30");  // not 0.0333
+    CHECK(dt_text(0.2 / 30.0) == "1/150");
+    CHECK(dt_text(2.0 / 75.0) == "2/75");
+    CHECK(dt_text(0.1 / 3.0 * 2.0) == "1/15");
+    CHECK(dt_text(std::numbers::pi / 100.0) == "0.0314");  // no fraction: three digits
+    CHECK(dt_text(1e-13 / 3.0) == "3.33e-14");
+    CHECK(time_lesson_title(1.0 / 30.0) == "Time-driven: steps of dt = 1/30");
+}
+
+TEST_CASE("the step note says what a class sees happen") {
+    CHECK(step_note(0.01, 0.02).empty());  // shorter than a frame
+    CHECK(step_note(0.02, 0.01) == "Moves only every 2nd frame");
+    CHECK(step_note(0.03, 0.01) == "Moves only every 3rd frame");
+    // dense-fluid at 30 fps: dt = 0.01, frames 0.2 / 30 apart: 1.5 frames a step.
+    CHECK(step_note(0.01, 0.2 / 30.0) == "Moves on 2 of every 3 frames");
+    CHECK(step_note(0.025, 0.01) == "Moves on 2 of every 5 frames");
+    CHECK(step_note(std::numbers::pi / 100.0, 0.01) == "Moves about once every 3.1 frames");
+    CHECK(whole_frames_per_step(0.02, 0.01) == 2);
+    CHECK(whole_frames_per_step(0.01, 0.2 / 30.0) == 1);  // no fixed pattern of one
+    CHECK(whole_frames_per_step(0.01, 0.02) == 1);
 }
 
 TEST_CASE("panel titles: plain words at the lesson level, the queue named for the classic engine") {
@@ -121,27 +158,63 @@ TEST_CASE("lesson figures are plain words with thousands separators") {
     CHECK(ed[1].value == "0");
 }
 
-TEST_CASE(
-    "each panel's words: the time-driven one counts pair tests, the event-driven one queue steps") {
+TEST_CASE("each panel's work is pair computations: tests and predictions, plus queue operations") {
     Measurements m;
     m.missed_collisions = 1234;
     m.overlap_checks = 500;
+    m.predictions = 9;
     m.collisions_pair = 40;
     m.collisions_wall = 2;
     m.queue.pushes = 70;
     m.queue.pops = 30;
+    m.queue.updates = 25;
     const PanelWords td = panel_words(m, true, true, 0.0);
     CHECK(td.compact_line == "1,234 missed");
     CHECK(td.cost_label == "pair tests");
-    CHECK(td.cost == 500.0);
+    CHECK(td.cost == 509.0);  // overlap tests and contact times
     CHECK(td.counters == time_driven_counters(m, 0.0));
+    CHECK(td.how.find("N\u00b2/2") != std::string::npos);
     const PanelWords ed = panel_words(m, false, true, 0.0);
     CHECK(ed.compact_line == "42 collisions");
-    CHECK(ed.cost_label == "queue steps");
-    CHECK(ed.cost == 100.0);
-    CHECK(energy_line(0.0) == "Energy conserved");
-    CHECK(energy_line(round_off_drift) == "Energy conserved");
-    CHECK(energy_line(1e-6) == "Energy not conserved");
+    CHECK(ed.cost_label == "pairs + queue");
+    CHECK(ed.cost == 134.0);  // predictions, pushes, pops and updates
+    CHECK(ed.how.find("log N") != std::string::npos);
+    CHECK(panel_words(m, false, true, 0.0, EngineKind::classic).how.find("2N") !=
+          std::string::npos);
+}
+
+TEST_CASE("the work ratio is the engines' counts divided, in words") {
+    // brownian at t = 60 (issue #28): 2.39 G pair tests against 14 M predictions and 1.85 M
+    // queue operations.
+    CHECK(work_ratio(2.39e9, 14.0e6 + 1.85e6) == "151x less work");
+    CHECK(work_ratio(1000.0, 400.0) == "2.5x less work");
+    CHECK(work_ratio(1000.0, 30.0) == "33x less work");
+    CHECK(work_ratio(300.0, 1000.0) == "3.3x more work");
+    CHECK(work_ratio(998.0, 100.0) == "10x less work");
+    CHECK(work_ratio(1000.0, 1000.0) == "the same work");
+    CHECK(work_ratio(0.0, 10.0).empty());  // nothing to compare yet
+    CHECK(work_ratio(10.0, 0.0).empty());
+    // The ratio of the words is the ratio of the counts, at any size.
+    for (double t : {1e3, 3.7e5, 2.39e9, 8.1e12}) {
+        for (double e : {7.0, 1.3e3, 4.4e6}) {
+            if (t < e) continue;
+            const std::string words = work_ratio(t, e);
+            CAPTURE(words);
+            const double shown = std::stod(words.substr(0, words.find('x')));
+            CHECK(std::abs(shown - t / e) <= 0.05 * (t / e) + 0.5);
+        }
+    }
+}
+
+TEST_CASE("the energy line names the engine that does not conserve energy") {
+    CHECK(energy_line({}).empty());
+    CHECK(energy_line({{false, 0.0}}) == "Energy conserved");
+    CHECK(energy_line({{true, round_off_drift}}) == "Energy conserved");
+    CHECK(energy_line({{true, 1e-6}}) == "Energy not conserved");
+    CHECK(energy_line({{true, 0.0}, {false, 1e-12}}) == "Both conserve energy");
+    CHECK(energy_line({{true, 1e-3}, {false, 1e-12}}) == "Time-driven: energy drifts");
+    CHECK(energy_line({{true, 0.0}, {false, 1e-3}}) == "Event-driven: energy drifts");
+    CHECK(energy_line({{true, 1e-3}, {false, 1e-3}}) == "Neither conserves energy");
 }
 
 TEST_CASE("the queue strip's words: the fast engine re-predicts, the classic one throws away") {

@@ -116,8 +116,9 @@ class Renderer {
     void draw(const FrameContent& frame);
     void read_pixels(Image& out);
 
-    /// The rectangles this frame would be laid out in (panels, boxes, every text line with its
-    /// pixel height), as JSON (`--layout-json`).
+    /// The rectangles `frame` is laid out in (panels, boxes, every text line with its pixel
+    /// height) and, once it was drawn (call after render or draw), the strings drawn in each
+    /// line, as JSON (`--layout-json`).
     [[nodiscard]] std::string layout_json(const FrameContent& frame) const;
 
     [[nodiscard]] Backend backend() const noexcept;

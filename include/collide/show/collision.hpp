@@ -41,6 +41,10 @@ inline constexpr double divide_tolerance = 1e-6;
 /// i.e. the time-driven engine lands on every frame time without a shorter final step.
 [[nodiscard]] bool divides(double dt, double interval) noexcept;
 
+/// dt as a class reads it: three significant digits ("0.05", "0.0125") where they are exact,
+/// else a whole fraction when dt is one ("1/30" rather than "0.0333").
+[[nodiscard]] std::string dt_text(double dt);
+
 /// Panel titles of the full level.
 [[nodiscard]] std::string time_panel_title(double dt);
 [[nodiscard]] std::string event_panel_title(const EngineOptions& options);
@@ -50,12 +54,21 @@ inline constexpr double divide_tolerance = 1e-6;
 /// The title of a panel at an overlay level (the lesson's plain words, else the full level's).
 [[nodiscard]] std::string panel_title(bool time_driven, OverlayLevel level,
                                       const EngineOptions& options);
-/// The note under the time-driven figures when dt is longer than a frame (empty otherwise).
+/// The note under the time-driven figures when dt is longer than a frame (empty otherwise): what
+/// a class sees happen, "Moves only every 2nd frame", or "Moves on 2 of every 3 frames" when a
+/// step is one and a half frames long.
 [[nodiscard]] std::string step_note(double dt, double frame_interval);
+/// Frames per step for the step indicator: n when a step is exactly n > 1 frames, else 1 (no
+/// indicator: with 1.5 frames a step, the held frames do not repeat in a fixed pattern of one).
+[[nodiscard]] int whole_frames_per_step(double dt, double frame_interval) noexcept;
 
 /// "1.23k", "4.56M": short counts for on-screen counters; beyond 10^12, and for fractions below
 /// one, three significant digits ("2.39e+17", "0.00042"), so that no count outgrows its column.
 [[nodiscard]] std::string short_count(double value);
+
+/// The clock's unit, under the lesson's clock: scenes are written in units of their own (a box 1
+/// wide, speeds in box widths per time unit), so the clock says "time units", never seconds.
+inline constexpr const char* time_unit = "time units";
 
 /// The on-screen clock "t = 12.345   (1/s)": three decimals while they tell one frame from the
 /// next and stay short (frame interval >= 1e-3, last frame before 1e6), else as many significant
@@ -63,7 +76,8 @@ inline constexpr double divide_tolerance = 1e-6;
 /// scenes in astronomical units 1e45 time units.
 [[nodiscard]] std::string clock_label(double t, const FrameClock& clock, double speed);
 /// The clock as a level shows it: the lesson column is narrow and the playback rate is no
-/// lesson, so it shows the time alone ("t = 12.345"); the full level adds the rate.
+/// lesson, so it shows the time alone ("t = 12.35": as many decimals as tell one frame from the
+/// next, at most three; time_unit is a line of its own); the full level adds the rate.
 [[nodiscard]] std::string clock_text(double t, const FrameClock& clock, double speed,
                                      OverlayLevel level);
 
@@ -79,9 +93,28 @@ inline constexpr double divide_tolerance = 1e-6;
 
 /// Below this relative drift the energy is conserved up to round-off.
 inline constexpr double round_off_drift = 1e-9;
-/// The lesson level's energy line ("Energy conserved" while the largest drift so far is
-/// round-off).
-[[nodiscard]] std::string energy_line(double largest_drift);
+/// One panel's largest relative energy drift so far.
+struct EngineDrift {
+    bool time_driven = false;
+    double largest = 0.0;
+};
+/// The lesson level's energy line, naming the engine when the two panels differ: "Energy
+/// conserved" (one panel), "Both conserve energy", "Time-driven: energy drifts", "Neither
+/// conserves energy" (drift beyond round-off counts as not conserved).
+[[nodiscard]] std::string energy_line(const std::vector<EngineDrift>& panels);
+
+/// The work of the cost graphic, in one unit on both sides: pair computations. The time-driven
+/// engine's pair overlap tests (N(N-1)/2 a step) and its contact-time computations; the
+/// event-driven engine's predictions (a collision time of a disc with a disc or a wall) and its
+/// queue operations (pushes, pops and in-place updates, each a sift of up to log N levels). The
+/// time-driven engine's per-disc wall checks (N a step, a comparison each) are not counted: that
+/// leaves the ratio on the cautious side.
+[[nodiscard]] double work_done(const Measurements& m, bool time_driven) noexcept;
+/// "168x less work": how many times less the event-driven engine did (`time_work` /
+/// `event_work`, two significant digits below 10, a whole number above: one narrow line),
+/// "2.5x more work"
+/// when it did more, "" when either is zero (nothing to compare yet).
+[[nodiscard]] std::string work_ratio(double time_work, double event_work);
 
 /// What one panel says at one frame, from its engine's measurements.
 struct PanelWords {
@@ -89,11 +122,14 @@ struct PanelWords {
     std::vector<Figure> figures;        ///< lesson level
     std::string compact_line;           ///< compact lesson form: the one line
     std::string cost_label;             ///< the cost graphic's label
-    double cost = 0.0;                  ///< the work it counts ("pair tests", "queue steps")
+    double cost = 0.0;                  ///< the work it counts (work_done)
+    std::string how;  ///< lesson level: why its work grows as it does (under the figures)
 };
-/// `drift`: the relative energy drift now; `walls`: the box has walls.
+/// `drift`: the relative energy drift now; `walls`: the box has walls; `engine`: which
+/// event-driven engine (the classic one predicts against every disc, the fast one its
+/// neighbours).
 [[nodiscard]] PanelWords panel_words(const Measurements& m, bool time_driven, bool walls,
-                                     double drift);
+                                     double drift, EngineKind engine = EngineKind::fast);
 
 /// The scene's story and the lesson level's choices, resolved once for the whole video.
 struct LessonPlan {
@@ -104,7 +140,8 @@ struct LessonPlan {
     std::string caption;               ///< [render] caption, shown when no scripted caption applies
     std::vector<CaptionCue> captions;  ///< [[render.captions]] within the video
     PlotSize histogram = PlotSize::none;
-    int frames_per_step = 1;  ///< time-driven: frames per dt when dt is longer than a frame
+    int frames_per_step = 1;  ///< time-driven: the step indicator's period (whole_frames_per_step)
+    std::string step_note;    ///< time-driven: the step note (step_note; empty: dt <= a frame)
 
     /// The caption at `video_seconds`: the last cue at or before it, else `caption`.
     [[nodiscard]] const std::string& caption_at(double video_seconds) const noexcept;

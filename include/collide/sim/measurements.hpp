@@ -15,7 +15,10 @@ struct QueueStats {
     std::uint64_t pushes = 0;
     std::uint64_t pops = 0;
     std::uint64_t stale_pops = 0;  ///< popped events invalidated since they were predicted
-    std::uint64_t max_size = 0;    ///< largest number of entries held at once
+    /// Entries re-ordered or removed in place (the fast engine's indexed heap changes a disc's
+    /// key instead of pushing a new event): a sift of log N steps each, like a push or a pop.
+    std::uint64_t updates = 0;
+    std::uint64_t max_size = 0;  ///< largest number of entries held at once
 };
 
 struct Measurements {

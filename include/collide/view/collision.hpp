@@ -88,6 +88,9 @@ struct PanelContent {
     std::vector<Figure> figures;         ///< lesson level: two or three, most important first
     std::string compact_line;            ///< compact lesson form: the one line (failure count)
     std::string note;                    ///< lesson level: a line under the figures (dt > frame)
+    /// Lesson level, two panels: why this engine's work grows as it does, a line under the
+    /// figures ("Each step tests all N^2/2 pairs").
+    std::string how;
     /// Step indicator beside the note: the time-driven state changes every `step_period` frames
     /// and this frame is `step_phase` (0 = a new step) of them. Period 1 draws none.
     int step_period = 1;
@@ -110,6 +113,7 @@ struct DriftPoint {
 struct FrameContent {
     std::vector<PanelContent> panels;
     std::string time_text;  ///< e.g. "t = 3.25   (x0.5 speed)"
+    std::string time_unit;  ///< lesson level: a line under the clock ("time units"; "" for none)
     /// One series per panel (same order as `panels`; may be empty or shorter), oldest first.
     std::vector<std::vector<DriftPoint>> energy_drift;
     std::vector<std::string> notes;  ///< full level: notice line(s) at the bottom
@@ -117,6 +121,8 @@ struct FrameContent {
     std::string energy_line;         ///< lesson level: "Energy conserved" (empty: the drift plot)
     std::string cost_heading = "Work so far";
     ColorKeyWords color_key;  ///< what the disc colours mean (colour bar or tag key)
+    /// Under the bars, two panels: "168x less work" (show::work_ratio of the panels' costs).
+    std::string cost_ratio;
     double video_time = 0.0;  ///< seconds of video at this frame: failure markers fade by it
     /// Simulation time per second of video (0: unknown). A panel's queue (Snapshot::queue) keeps
     /// a popped event highlighted for queue_pop_seconds of video by it.
