@@ -2,8 +2,8 @@
 /// \file
 /// What an event-driven engine's event does: one enumeration for the engines' queues
 /// (sim::Event, the fast engine's keys) and for the picture of a queue the renderer draws
-/// (QueuedEvent in snapshot.hpp). A resolved collision has its own, narrower kind
-/// (CollisionKind, collide/sim/engine.hpp): a cell crossing is queued like a collision but is never one.
+/// (QueuedEvent in snapshot.hpp). A resolved collision has its own, narrower kind (CollisionKind,
+/// collide/sim/engine.hpp): a cell crossing is queued like a collision but is never one.
 
 #include <cstdint>
 
