@@ -5,10 +5,11 @@
 /// is octal 8, all without a word. These accept plain decimal digits only, in a stated range, and
 /// name the option otherwise (exit 2).
 
-#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <string>
 #include <string_view>
+
+#include "cli_fwd.hpp"
 
 namespace collide::app {
 

@@ -2,7 +2,6 @@
 // The video loop shared by the drawn lessons (`collide heap`, `collide puzzle`): a picture that is
 // a function of time, encoded frame by frame through the one video writer.
 
-#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <functional>
 #include <string>

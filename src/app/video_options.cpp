@@ -2,6 +2,8 @@
 
 #include <fmt/core.h>
 
+#include <CLI/CLI.hpp>
+
 #include "cli_numbers.hpp"
 #include "font_search.hpp"
 #include "render_plan.hpp"

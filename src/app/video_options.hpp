@@ -5,9 +5,10 @@
 /// registered by one function: a command says which of them it takes and how its help names its
 /// defaults.
 
-#include <CLI/CLI.hpp>
 #include <string>
 #include <string_view>
+
+#include "cli_fwd.hpp"
 
 namespace collide::app {
 

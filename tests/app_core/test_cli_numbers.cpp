@@ -1,6 +1,7 @@
 // Whole-number options: decimal digits in a stated range, nothing CLI11's strtoull would bend.
 #include <doctest/doctest.h>
 
+#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <string>
 
