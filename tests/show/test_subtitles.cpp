@@ -33,7 +33,7 @@ TEST_CASE("the title card, then each caption as it changes, within the video") {
     CHECK(cues[2].text == "Chaos");
 }
 
-TEST_CASE("without an intro card the title shows alone, briefly; no words, no cues") {
+TEST_CASE("without an intro card the title shows alone, briefly, and no words make no cues") {
     LessonPlan lesson;
     lesson.title = "Gas";
     lesson.caption = "Discs in a box";
