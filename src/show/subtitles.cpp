@@ -25,9 +25,10 @@ Cues cues_from_steps(const std::vector<TimedText>& steps, double video_seconds) 
 
 Cues subtitle_cues(const LessonPlan& lesson, double video_seconds) {
     if (!(video_seconds > 0.0)) return {};
-    const double title_end = lesson.intro_seconds > 0.0 ? std::min(lesson.intro_seconds, video_seconds)
-                             : lesson.title.empty()     ? 0.0
-                                                        : std::min(intro_seconds, 0.25 * video_seconds);
+    const double title_end = lesson.intro_seconds > 0.0
+                                 ? std::min(lesson.intro_seconds, video_seconds)
+                             : lesson.title.empty() ? 0.0
+                                                    : std::min(intro_seconds, 0.25 * video_seconds);
     std::vector<TimedText> steps;
     std::string title = lesson.title;
     if (lesson.intro_seconds > 0.0 && !lesson.description.empty()) {

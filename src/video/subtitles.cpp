@@ -22,8 +22,8 @@ std::string lowercase(std::string_view text) {
 std::string timestamp(double seconds, char separator) {
     const long long ms = std::llround(std::max(0.0, seconds) * 1000.0);
     char text[40];
-    std::snprintf(text, sizeof text, "%02lld:%02lld:%02lld%c%03lld", ms / 3600000,
-                  ms / 60000 % 60, ms / 1000 % 60, separator, ms % 1000);
+    std::snprintf(text, sizeof text, "%02lld:%02lld:%02lld%c%03lld", ms / 3600000, ms / 60000 % 60,
+                  ms / 1000 % 60, separator, ms % 1000);
     return text;
 }
 

@@ -52,7 +52,9 @@ std::string capture(const std::string& cmd) {
     return out;
 }
 
-bool have_ffprobe() { return std::system("ffprobe -version >/dev/null 2>&1") == 0; }
+bool have_ffprobe() {
+    return std::system("ffprobe -version >/dev/null 2>&1") == 0;
+}
 
 /// One cue of a parsed subtitle file.
 struct ParsedCue {
@@ -136,8 +138,9 @@ std::string without_markup(const std::string& text) {
 
 }  // namespace
 
-TEST_CASE("render: the MP4 carries the title, description and captions as a tagged subtitle "
-          "track, and the sidecars parse") {
+TEST_CASE(
+    "render: the MP4 carries the title, description and captions as a tagged subtitle "
+    "track, and the sidecars parse") {
     if (!have_ffprobe()) COLLIDE_SKIP_TEST("ffprobe is not installed");
     TempDir dir("subtitles");
     const fs::path scene = dir.path / "scene.toml";
@@ -156,8 +159,8 @@ TEST_CASE("render: the MP4 carries the title, description and captions as a tagg
     CHECK(probe.find("TAG:language=pol") != std::string::npos);
     // The track read back by FFmpeg, as SubRip: the texts and their times (FFmpeg adds the
     // track's font as a <font> tag and ends the lines inside a cue with CRLF: both go).
-    const std::string track = without_markup(
-        capture("ffmpeg -v error -i " + out.string() + " -map 0:s:0 -f srt - 2>&1"));
+    const std::string track =
+        without_markup(capture("ffmpeg -v error -i " + out.string() + " -map 0:s:0 -f srt - 2>&1"));
     const std::vector<ParsedCue> embedded = parse_subtitles(track, false);
     REQUIRE(embedded.size() == 3);
     CHECK(embedded[0].text == "Zderzenia: Δt ≈ 0.01 s\nGaz w pudełku; σ → η");
@@ -180,17 +183,16 @@ TEST_CASE("render: the MP4 carries the title, description and captions as a tagg
 
     // SubRip beside a GIF; --subtitles none leaves the MP4 without a track.
     const fs::path srt = dir.path / "t.srt";
-    const auto gif = run_collide("render " + scene.string() +
-                                 " --size 160x90 --fps 5 --progress none --format gif -o " +
-                                 (dir.path / "t.gif").string() + " --subtitles-file " +
-                                 srt.string());
+    const auto gif = run_collide(
+        "render " + scene.string() + " --size 160x90 --fps 5 --progress none --format gif -o " +
+        (dir.path / "t.gif").string() + " --subtitles-file " + srt.string());
     REQUIRE_MESSAGE(gif.exit_code == 0, gif.output);
     const std::vector<ParsedCue> srt_cues = parse_subtitles(collide::test::read_all(srt), false);
     CHECK(srt_cues.size() == 3);
     const fs::path plain = dir.path / "plain.mp4";
-    const auto none = run_collide("render " + scene.string() +
-                                  " --size 160x90 --fps 5 --progress none --subtitles none -o " +
-                                  plain.string());
+    const auto none =
+        run_collide("render " + scene.string() +
+                    " --size 160x90 --fps 5 --progress none --subtitles none -o " + plain.string());
     REQUIRE_MESSAGE(none.exit_code == 0, none.output);
     CHECK(capture("ffprobe -v error -select_streams s -show_entries stream=codec_name -of "
                   "default=nw=1 " +
@@ -211,8 +213,7 @@ TEST_CASE("render: a bad language, sidecar name or sidecar path exits 2 and writ
         {mp4 + "--lang xx", "--lang: 'xx' is not an ISO 639 language code"},
         {mp4 + "--lang polish", "--lang: 'polish' is not an ISO 639 language code"},
         {mp4 + "--subtitles-file " + (dir.path / "t.txt").string(), "must end in .vtt"},
-        {mp4 + "--subtitles-file " + (dir.path / "missing" / "t.vtt").string(),
-         "--subtitles-file"},
+        {mp4 + "--subtitles-file " + (dir.path / "missing" / "t.vtt").string(), "--subtitles-file"},
         {mp4 + "--subtitles-file " + out.string(), "--subtitles-file"},
         {mp4 + "--subtitles burn", "--subtitles: expected embed or none"},
         {"-o " + (dir.path / "t.gif").string() + " --subtitles embed",
@@ -233,10 +234,10 @@ TEST_CASE("render: a bad language, sidecar name or sidecar path exits 2 and writ
 TEST_CASE("heap and puzzle videos carry their step captions as subtitles") {
     TempDir dir("lesson_subtitles");
     const fs::path srt = dir.path / "heap.srt";
-    const auto heap = run_collide("heap --ops \"P Q E * X\" --size 480x270 --fps 10 --progress "
-                                  "none --lang en -o " +
-                                  (dir.path / "heap.mp4").string() + " --subtitles-file " +
-                                  srt.string());
+    const auto heap = run_collide(
+        "heap --ops \"P Q E * X\" --size 480x270 --fps 10 --progress "
+        "none --lang en -o " +
+        (dir.path / "heap.mp4").string() + " --subtitles-file " + srt.string());
     REQUIRE_MESSAGE(heap.exit_code == 0, heap.output);
     const std::vector<ParsedCue> cues = parse_subtitles(collide::test::read_all(srt), false);
     REQUIRE(cues.size() > 5);
@@ -250,10 +251,10 @@ TEST_CASE("heap and puzzle videos carry their step captions as subtitles") {
                   .find("TAG:language=eng") != std::string::npos);
     }
     const fs::path vtt = dir.path / "puzzle.vtt";
-    const auto puzzle = run_collide("puzzle \"1 2 3 4 5 6 0 7 8\" --size 854x480 --fps 10 "
-                                    "--progress none -o " +
-                                    (dir.path / "puzzle.mp4").string() + " --subtitles-file " +
-                                    vtt.string());
+    const auto puzzle = run_collide(
+        "puzzle \"1 2 3 4 5 6 0 7 8\" --size 854x480 --fps 10 "
+        "--progress none -o " +
+        (dir.path / "puzzle.mp4").string() + " --subtitles-file " + vtt.string());
     REQUIRE_MESSAGE(puzzle.exit_code == 0, puzzle.output);
     CHECK(!parse_subtitles(collide::test::read_all(vtt), true).empty());
 }

@@ -12,8 +12,10 @@ LessonPlan lesson_with_captions() {
     lesson.description = "A cue ball scatters a rack";
     lesson.intro_seconds = 2.0;
     lesson.caption = "Every collision counts";
-    lesson.captions = {{1.0, "Under the card", "", 0}, {4.0, "Chaos", "", 0},
-                       {6.0, "Chaos", "", 0}, {12.0, "After the end", "", 0}};
+    lesson.captions = {{1.0, "Under the card", "", 0},
+                       {4.0, "Chaos", "", 0},
+                       {6.0, "Chaos", "", 0},
+                       {12.0, "After the end", "", 0}};
     return lesson;
 }
 
@@ -48,8 +50,8 @@ TEST_CASE("without an intro card the title shows alone, briefly, and no words ma
 }
 
 TEST_CASE("cues never overlap and never end before they start") {
-    const Cues cues = cues_from_steps({{0.0, "a"}, {0.0, "b"}, {1.0, ""}, {2.0, "c"}, {5.0, "d"}},
-                                      3.0);
+    const Cues cues =
+        cues_from_steps({{0.0, "a"}, {0.0, "b"}, {1.0, ""}, {2.0, "c"}, {5.0, "d"}}, 3.0);
     REQUIRE(cues.size() == 2);
     CHECK(cues[0].text == "b");
     CHECK(cues[0].end == 1.0);

@@ -21,8 +21,8 @@ TEST_CASE("language tags: ISO 639-1 and both ISO 639-2 forms become the MP4's co
     CHECK(subtitle_language("und") == "und");
     for (const char* bad : {"xx", "", "e", "english", "pl-PL", "qqq", "p1"}) {
         CAPTURE(bad);
-        CHECK_THROWS_WITH_AS((void)subtitle_language(bad, "--lang"),
-                             doctest::Contains("--lang: '"), Error);
+        CHECK_THROWS_WITH_AS((void)subtitle_language(bad, "--lang"), doctest::Contains("--lang: '"),
+                             Error);
     }
 }
 

@@ -16,8 +16,7 @@ namespace collide::video {
 /// code ("pl"), a three-letter ISO 639-2 code in either form ("ger" or "deu"), any case.
 /// Throws Error(input) naming `field` for anything else ("--lang: 'xx' is not an ISO 639
 /// language code ...").
-[[nodiscard]] std::string subtitle_language(std::string_view tag,
-                                            std::string_view field = "lang");
+[[nodiscard]] std::string subtitle_language(std::string_view tag, std::string_view field = "lang");
 
 /// The sidecar formats: WebVTT (browsers' <track>) and SubRip (.srt: most players and editors).
 enum class SubtitleFormat { webvtt, srt };
