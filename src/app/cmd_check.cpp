@@ -3,27 +3,107 @@
 /// scene back out with every disc explicit (generated discs frozen; algs4 <-> TOML conversion).
 
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <memory>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <variant>
+#include <vector>
 
 #include "collide/error.hpp"
 #include "collide/scene/load.hpp"
 #include "collide/scene/save.hpp"
 #include "collide/sim/scene_check.hpp"
 #include "collide/sim/sphere_check.hpp"
+#include "collide/text/font_face.hpp"
 #include "commands.hpp"
+#include "font_search.hpp"
 #include "interrupt.hpp"
 #include "json_output.hpp"
 #include "work_limits.hpp"
 
 namespace collide::app {
+namespace {
+
+/// One text of the scene a student reads, and where it was written ("file:line: field").
+struct ScreenText {
+    std::string where;
+    const std::string* text;
+};
+
+/// The line of a top-level `key = ...` in a TOML scene file (top-level keys come before the
+/// first [table] header), or 0 when the file has none or is not TOML (a built-in name, algs4).
+int top_level_key_line(const std::string& scene_arg, std::string_view key) {
+    if (std::filesystem::path(scene_arg).extension() != ".toml") return 0;
+    std::ifstream in(scene_arg);
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+        const std::size_t start = line.find_first_not_of(" \t");
+        if (start == std::string::npos) continue;
+        if (line[start] == '[') return 0;
+        if (line.compare(start, key.size(), key) != 0) continue;
+        const std::size_t after = line.find_first_not_of(" \t", start + key.size());
+        if (after != std::string::npos && line[after] == '=') return number;
+    }
+    return 0;
+}
+
+/// The scene's on-screen texts: the title (the intro card, the header), the description, the
+/// caption line and each scripted caption.
+std::vector<ScreenText> screen_texts(const Scene& scene, const std::string& scene_arg) {
+    const auto top_level = [&scene_arg](const char* key) {
+        const int line = top_level_key_line(scene_arg, key);
+        return line > 0 ? scene_arg + ":" + std::to_string(line) + ": " + key
+                        : scene_arg + ": " + key;
+    };
+    std::vector<ScreenText> out{{top_level("title"), &scene.title},
+                                {top_level("description"), &scene.description}};
+    if (scene.render.caption) {
+        const std::string& at = scene.render.caption_at;
+        out.push_back({at.empty() ? scene_arg + ": render.caption" : at, &*scene.render.caption});
+    }
+    for (std::size_t i = 0; i < scene.render.captions.size(); ++i) {
+        const CaptionCue& cue = scene.render.captions[i];
+        const std::string field = "render.captions[" + std::to_string(i) + "].text";
+        out.push_back({(cue.file.empty() ? scene_arg : cue.file + ":" + std::to_string(cue.line)) +
+                           ": " + field,
+                       &cue.text});
+    }
+    return out;
+}
+
+/// Warns (stderr) about each character of the scene's on-screen text that the font the drawing
+/// commands would use lacks: it would be drawn as '?'. A font that cannot be opened is a warning
+/// too: checking a scene needs no font, drawing it does.
+void warn_missing_characters(const Scene& scene, const std::string& scene_arg,
+                             const std::string& font_option) {
+    const std::string path = find_font(font_option);
+    std::optional<text::FontFace> font;
+    try {
+        font.emplace(path);
+    } catch (const Error& e) {
+        std::fprintf(stderr, "warning: the scene's characters were not checked: %s\n", e.what());
+        return;
+    }
+    for (const ScreenText& t : screen_texts(scene, scene_arg)) {
+        for (const std::uint32_t cp : text::missing_characters(*font, *t.text)) {
+            std::fprintf(stderr, "warning: %s: %s is not in the font %s (%s): it is drawn as '?'\n",
+                         t.where.c_str(), text::describe_character(cp).c_str(),
+                         font->name().c_str(), path.c_str());
+        }
+    }
+}
+
+}  // namespace
 
 void add_check_command(CLI::App& root) {
     struct CheckOptions {
         std::string scene;
         std::string export_path;
+        std::string font;
         bool json = false;
     };
     auto options = std::make_shared<CheckOptions>();
@@ -35,6 +115,9 @@ void add_check_command(CLI::App& root) {
     cmd->add_option("--export", options->export_path,
                     "Also write the scene with every disc explicit: .toml, or .txt (algs4, unit "
                     "box with walls only)");
+    cmd->add_option(
+        "--font", options->font,
+        std::string(font_option_help) + "; the scene's text is checked for characters it lacks");
     cmd->add_flag("--json", options->json,
                   "Print the summary as JSON (scene, name, discs, summary, exported)");
     cmd->callback([options] {
@@ -66,6 +149,7 @@ void add_check_command(CLI::App& root) {
         }
         const Scene scene = std::move(std::get<Scene>(any));
         check_scene_hints(scene);  // what `collide render SCENE` would refuse in the hints
+        warn_missing_characters(scene, options->scene, options->font);
         if (!options->export_path.empty()) {
             try {
                 save_scene(scene, options->export_path, &interrupts.flag());

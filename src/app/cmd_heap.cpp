@@ -21,6 +21,7 @@
 #include "collide/error.hpp"
 #include "collide/render/heap_view.hpp"
 #include "collide/show/heap_lesson.hpp"
+#include "collide/show/subtitles.hpp"
 #include "collide/sim/pq/heap_lesson.hpp"
 #include "collide/video/output.hpp"
 #include "collide/video/video_writer.hpp"
@@ -111,6 +112,7 @@ void run(const HeapCli& v) {
                            fmt::format("a time within the video, 0..{:.2f} s", lesson.duration()));
     }
     const OutputChoice output = lesson_output_of(v.video, "heap");
+    const SubtitleOutput subtitles = subtitle_output_of(v.video, output);
     if (output.default_path) std::filesystem::create_directories(output.path.parent_path());
     video::check_output_writable(
         output.path, !output.still && output.format == video::VideoFormat::png_sequence);
@@ -125,9 +127,10 @@ void run(const HeapCli& v) {
     render::HeapRenderer renderer(config, render::Backend::automatic, print_notice);
 
     const double still_time = given(v.video.at_opt) ? v.video.at : lesson.duration();
-    const LessonVideoSummary written =
-        write_lesson(output, geometry, progress_mode, lesson.duration(), still_time,
-                     [&](double t, Image& frame) { renderer.render(lesson.frame_at(t), frame); });
+    const LessonVideoSummary written = write_lesson(
+        output, geometry, progress_mode, lesson.duration(), still_time,
+        [&](double t, Image& frame) { renderer.render(lesson.frame_at(t), frame); }, subtitles,
+        output.still ? Cues{} : show::heap_subtitle_cues(lesson, geometry.fps));
     if (output.still) {
         std::printf("%s: %dx%d PNG at %.2f s of a %.2f s video of %s\n",
                     output.path.string().c_str(), geometry.width, geometry.height, still_time,

@@ -155,6 +155,7 @@ void add_shared_options(CLI::App& cmd, CliValues& v, bool video) {
     if (!video) set.at_help = "Simulation time of the frame (default: the video's last frame)";
     set.preview = true;
     set.theme_help = "default: scene hint, else dark";
+    set.subtitles = true;
     add_video_options(cmd, v.video, set);
     cmd.add_option("--mode", v.mode, "both (time-driven left, event-driven right), event or time")
         ->capture_default_str();
@@ -346,7 +347,8 @@ void print_summary(const RenderPlan& plan, const PipelineResult& result, double 
 
 /// The run's outputs must be files of their own (after links), the layout outside a directory
 /// of frames. Throws Error(input) naming both.
-void check_distinct_outputs(const RenderPlan& plan, const CliValues& values) {
+void check_distinct_outputs(const RenderPlan& plan, const CliValues& values,
+                            const SubtitleOutput& subtitles) {
     std::vector<io::NamedOutput> outputs;
     const bool directory =
         plan.kind == OutputKind::video && plan.format == video::VideoFormat::png_sequence;
@@ -355,6 +357,7 @@ void check_distinct_outputs(const RenderPlan& plan, const CliValues& values) {
     if (!plan.timeline_json.empty())
         outputs.push_back({"--timeline-json", plan.timeline_json, false});
     if (!values.dump_rgba.empty()) outputs.push_back({"--dump-rgba", values.dump_rgba, false});
+    if (!subtitles.file.empty()) outputs.push_back({"--subtitles-file", subtitles.file, false});
     if (outputs.size() > 1) io::check_distinct_outputs(outputs);
 }
 
@@ -374,10 +377,12 @@ void run(const CliValues& values, bool still) {
     const render::Backend backend = gl_backend_of(values);
     const RenderRequest request = request_of(values, still);
     const RenderPlan plan = validated_plan(request, scene);
+    const SubtitleOutput subtitles = subtitle_output_of(
+        values.video, {plan.output, plan.format, plan.kind == OutputKind::still, false});
     video::set_libav_verbose(values.video.verbose);
     for (const std::string& line : plan.notices) print_notice(line);
     // Its temporary exists from here on, so an unwritable path fails before any frame.
-    check_distinct_outputs(plan, values);
+    check_distinct_outputs(plan, values, subtitles);
     std::optional<io::OutputFile> layout_file;
     if (!plan.layout_json.empty()) {
         layout_file.emplace(plan.layout_json, io::OutputOptions{"--layout-json", true});
@@ -416,7 +421,7 @@ void run(const CliValues& values, bool still) {
     hooks.dump_rgba = values.dump_rgba;
     PipelineResult result;
     try {
-        result = run_render(scene, plan, hooks, layout_file ? &*layout_file : nullptr);
+        result = run_render(scene, plan, hooks, layout_file ? &*layout_file : nullptr, subtitles);
     } catch (...) {
         progress.finish();
         interrupts.throw_if_requested();  // whatever noticed it first: one wording, the signal

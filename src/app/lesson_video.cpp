@@ -30,6 +30,7 @@ void add_lesson_video_options(CLI::App& cmd, LessonVideoCli& v, std::string_view
     set.at_help = at_help;
     set.theme = true;
     set.theme_help = "as in `collide render` (default dark)";
+    set.subtitles = true;
     add_video_options(cmd, v, set);
 }
 
@@ -86,7 +87,8 @@ class LessonProgram final : public FrameProgram {
 
 LessonVideoSummary write_lesson(const OutputChoice& output, const LessonGeometry& geometry,
                                 ProgressMode progress_mode, double duration, double still_time,
-                                const LessonDraw& draw) {
+                                const LessonDraw& draw, const SubtitleOutput& subtitles,
+                                const Cues& cues) {
     InterruptGuard interrupts;
     VideoJob job;
     job.output.path = output.path;
@@ -98,6 +100,10 @@ LessonVideoSummary write_lesson(const OutputChoice& output, const LessonGeometry
     job.frames = output.still ? 1
                               : std::max<std::int64_t>(
                                     1, std::llround(duration * static_cast<double>(geometry.fps)));
+    if (!output.still) {
+        job.output.subtitles = subtitles;
+        job.output.cues = cues;
+    }
     Progress progress(progress_mode, job.frames);
     JobHooks hooks;
     hooks.interrupts = &interrupts;

@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "collide/cue.hpp"
 #include "collide/image.hpp"
 #include "progress.hpp"
 #include "render_plan.hpp"
@@ -53,8 +54,11 @@ using LessonDraw = std::function<void(double t, Image& frame)>;
 /// least one frame, frame k showing time k / fps) or, for output.still, the one frame showing
 /// `still_time` as a PNG. Ctrl-C stops it between frames; the destination is only replaced once
 /// the output is whole.
+/// `subtitles` and `cues` (videos only): the lesson's step captions as a subtitle track and/or
+/// a sidecar file (video_job.hpp).
 LessonVideoSummary write_lesson(const OutputChoice& output, const LessonGeometry& geometry,
                                 ProgressMode progress_mode, double duration, double still_time,
-                                const LessonDraw& draw);
+                                const LessonDraw& draw, const SubtitleOutput& subtitles = {},
+                                const Cues& cues = {});
 
 }  // namespace collide::app

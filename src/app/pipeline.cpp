@@ -13,6 +13,7 @@
 #include "bounded_queue.hpp"
 #include "collide/error.hpp"
 #include "collide/show/collision_summary.hpp"
+#include "collide/show/subtitles.hpp"
 
 namespace collide::app {
 
@@ -350,7 +351,7 @@ class CollisionProgram final : public FrameProgram {
 }  // namespace
 
 PipelineResult run_render(const Scene& scene, const RenderPlan& plan, const JobHooks& hooks,
-                          io::OutputFile* layout_file) {
+                          io::OutputFile* layout_file, const SubtitleOutput& subtitles) {
     check_captions_fit(scene, plan);
     VideoJob job;
     job.output.path = plan.output;
@@ -363,6 +364,11 @@ PipelineResult run_render(const Scene& scene, const RenderPlan& plan, const JobH
     // Only the frames whose positions appear in the trails need drawing before a still's frame.
     job.warm_frames = (plan.render.trails ? plan.render.trail_length : 1) - 1;
     job.title = title_of(plan);
+    if (!job.output.still) {
+        job.output.subtitles = subtitles;
+        job.output.cues =
+            show::subtitle_cues(plan.lesson, static_cast<double>(job.frames) / job.fps);
+    }
 
     PipelineResult result;
     JobHooks job_hooks = hooks;

@@ -119,7 +119,10 @@ struct PipelineResult {
 /// output is complete, before either is put in place: a failure to write one leaves both
 /// destinations untouched. Throws Error: input for bad options, runtime for GL/encoder failures
 /// or an interrupt.
+/// `subtitles`: the video's cues (show::subtitle_cues of the lesson) go into the MP4 and/or a
+/// sidecar as it says; the sidecar too appears only with the video.
 PipelineResult run_render(const Scene& scene, const RenderPlan& plan, const JobHooks& hooks,
-                          io::OutputFile* layout_file = nullptr);
+                          io::OutputFile* layout_file = nullptr,
+                          const SubtitleOutput& subtitles = {});
 
 }  // namespace collide::app

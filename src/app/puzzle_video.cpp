@@ -18,6 +18,7 @@
 #include "collide/error.hpp"
 #include "collide/render/puzzle_view.hpp"
 #include "collide/show/puzzle_lesson.hpp"
+#include "collide/show/subtitles.hpp"
 #include "collide/video/output.hpp"
 #include "collide/video/video_writer.hpp"
 #include "font_search.hpp"
@@ -48,8 +49,9 @@ void add_puzzle_video_options(CLI::App& cmd, PuzzleVideoCli& v) {
 
 void refuse_video_options(const PuzzleVideoCli& v, const std::string& mode) {
     (void)parse_progress_mode(v.progress);  // harmless with text, but never a wrong value
-    for (const CLI::Option* o : {v.output_opt, v.format_opt, v.quality_opt, v.size_opt, v.fps_opt,
-                                 v.last_frame_opt, v.at_opt, v.theme_opt}) {
+    for (const CLI::Option* o :
+         {v.output_opt, v.format_opt, v.quality_opt, v.size_opt, v.fps_opt, v.last_frame_opt,
+          v.at_opt, v.theme_opt, v.subtitles_opt, v.subtitles_file_opt}) {
         if (given(o)) {
             throw_option_error(o->get_name(), mode + " prints text instead of a video; leave " +
                                                   o->get_name() + " out, or " + mode + " out");
@@ -62,6 +64,7 @@ void validate_puzzle_video(const PuzzleVideoCli& v) {
     (void)render::parse_theme(v.theme, "--theme");
     (void)geometry_of(v);
     const OutputChoice output = output_of(v);
+    (void)subtitle_output_of(v, output);
     if (!output.default_path) {
         video::check_output_writable(
             output.path, !output.still && output.format == video::VideoFormat::png_sequence);
@@ -79,6 +82,7 @@ void render_puzzle_video(const puzzle::Board& start,
                            fmt::format("a time within the video, 0..{:.2f} s", frames.duration()));
     }
     const OutputChoice output = output_of(v);
+    const SubtitleOutput subtitles = subtitle_output_of(v, output);
     if (output.default_path) std::filesystem::create_directories(output.path.parent_path());
     video::check_output_writable(
         output.path, !output.still && output.format == video::VideoFormat::png_sequence);
@@ -92,9 +96,10 @@ void render_puzzle_video(const puzzle::Board& start,
     render::PuzzleRenderer renderer(config, render::Backend::automatic, print_notice);
 
     const double still_time = given(v.at_opt) ? v.at : frames.duration();
-    const LessonVideoSummary written =
-        write_lesson(output, geometry, progress_mode, frames.duration(), still_time,
-                     [&](double t, Image& frame) { renderer.render(frames.frame_at(t), frame); });
+    const LessonVideoSummary written = write_lesson(
+        output, geometry, progress_mode, frames.duration(), still_time,
+        [&](double t, Image& frame) { renderer.render(frames.frame_at(t), frame); }, subtitles,
+        output.still ? Cues{} : show::puzzle_subtitle_cues(frames, geometry.fps));
     if (output.still) {
         std::printf("%s: %dx%d PNG at %.2f s of a %.2f s video\n", output.path.string().c_str(),
                     geometry.width, geometry.height, still_time, frames.duration());

@@ -8,6 +8,7 @@
 #include "collide/io/file.hpp"
 #include "collide/render/preview.hpp"
 #include "collide/video/png.hpp"
+#include "collide/video/subtitles.hpp"
 
 namespace collide::app {
 
@@ -62,8 +63,36 @@ std::unique_ptr<FrameProgram> make(const ProgramFactory& make_program, render::B
     return program;
 }
 
+/// --subtitles-file: created (its temporary) before any frame, so an unwritable path fails
+/// first; written and put in place with the video, never without it.
+class SubtitleSidecar {
+  public:
+    explicit SubtitleSidecar(const JobOutput& output) {
+        if (output.subtitles.file.empty()) return;
+        format_ = video::subtitle_format_of(output.subtitles.file, "--subtitles-file");
+        io::check_distinct_outputs(
+            {{"-o", output.path, output.format == video::VideoFormat::png_sequence},
+             {"--subtitles-file", output.subtitles.file, false}});
+        file_.emplace(output.subtitles.file, io::OutputOptions{"--subtitles-file", false});
+    }
+    /// Writes the cues into the temporary (before the video is put in place).
+    void write(const Cues& cues) {
+        if (!file_) return;
+        const std::string text = video::subtitle_file_text(cues, format_);
+        file_->write(text.data(), text.size());
+    }
+    void commit() {
+        if (file_) file_->commit();
+    }
+
+  private:
+    video::SubtitleFormat format_ = video::SubtitleFormat::webvtt;
+    std::optional<io::OutputFile> file_;
+};
+
 JobResult run_video(const VideoJob& job, const ProgramFactory& make_program,
                     const JobHooks& hooks) {
+    SubtitleSidecar sidecar(job.output);
     video::VideoOptions options;
     options.path = job.output.path;
     options.format = job.output.format;
@@ -71,6 +100,10 @@ JobResult run_video(const VideoJob& job, const ProgramFactory& make_program,
     options.height = job.height;
     options.fps = job.fps;
     options.cancel = hooks.interrupts != nullptr ? &hooks.interrupts->flag() : nullptr;
+    if (job.output.subtitles.embed && job.output.format == video::VideoFormat::mp4) {
+        options.subtitles = job.output.cues;
+        options.subtitle_language = job.output.subtitles.language;
+    }
     video::VideoWriter writer(options);  // validates, checks the path, creates the temporary
     std::unique_ptr<render::PreviewWindow> preview = open_preview_if_asked(job, hooks);
     const std::unique_ptr<FrameProgram> program =
@@ -94,8 +127,10 @@ JobResult run_video(const VideoJob& job, const ProgramFactory& make_program,
     check_interrupt(hooks);
     program->finish();
     writer.complete();
+    sidecar.write(job.output.cues);
     if (hooks.before_commit) hooks.before_commit();
     writer.commit();
+    sidecar.commit();
     dump.finish();
     result.notices = writer.notices();
     result.output_width = writer.output_width();

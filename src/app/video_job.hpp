@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "collide/cue.hpp"
 #include "collide/image.hpp"
 #include "collide/render/context.hpp"
 #include "collide/render/renderer.hpp"
@@ -51,11 +52,22 @@ class FrameProgram {
 /// renderer must use (GLFW with a preview window, so one GL implementation serves both).
 using ProgramFactory = std::function<std::unique_ptr<FrameProgram>(render::Backend backend)>;
 
+/// A video's subtitles as outputs (--subtitles, --lang, --subtitles-file, checked).
+struct SubtitleOutput {
+    bool embed = false;            ///< an MP4 gets a subtitle track (other formats have none)
+    std::string language = "und";  ///< ISO 639-2/T, the track's language tag
+    std::filesystem::path file;    ///< a WebVTT (.vtt) or SubRip (.srt) file too; empty: none
+};
+
 /// Where the job's output goes and as what.
 struct JobOutput {
     std::filesystem::path path;
     video::VideoFormat format = video::VideoFormat::mp4;  ///< videos only
     bool still = false;  ///< one PNG: the last frame (the frames before it are warm-up)
+    /// Videos: the words on screen as timed text (collide_show makes them), written as
+    /// `subtitles` says; the sidecar file is all or nothing with the video.
+    Cues cues;
+    SubtitleOutput subtitles;
 };
 
 /// One run: the output, the frame geometry and how many frames.

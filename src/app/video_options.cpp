@@ -5,6 +5,8 @@
 #include <CLI/CLI.hpp>
 
 #include "cli_numbers.hpp"
+#include "collide/error.hpp"
+#include "collide/video/subtitles.hpp"
 #include "font_search.hpp"
 #include "render_plan.hpp"
 
@@ -52,8 +54,41 @@ void add_video_options(CLI::App& cmd, VideoCli& v, const VideoOptionSet& set) {
                    "Progress on stderr: auto (bar on a terminal), bar, plain (a line per tenth, "
                    "for CI logs), json or none")
         ->capture_default_str();
+    if (set.video && set.subtitles) {
+        v.subtitles_opt = cmd.add_option(
+            "--subtitles", v.subtitles,
+            "embed (default: an MP4 carries the title, description and captions as a subtitle "
+            "track) or none");
+        cmd.add_option(
+            "--lang", v.lang,
+            "The subtitles' language, ISO 639: en, pl, cs, de, el, ru, ... (default und: "
+            "undetermined)");
+        v.subtitles_file_opt = cmd.add_option(
+            "--subtitles-file", v.subtitles_file,
+            "Also write the subtitles beside the video: F.vtt (WebVTT) or F.srt (SubRip)");
+    }
     cmd.add_flag("--verbose", v.verbose, "Show the encoder's own log");
     cmd.add_option("--font", v.font, font_option_help)->type_name("FILE");
+}
+
+SubtitleOutput subtitle_output_of(const VideoCli& v, const OutputChoice& output) {
+    SubtitleOutput out;
+    if (v.subtitles != "embed" && v.subtitles != "none")
+        throw_option_error("--subtitles", v.subtitles, "embed or none");
+    out.language = video::subtitle_language(v.lang, "--lang");
+    if (given(v.subtitles_file_opt)) {
+        if (output.still) throw_option_error("--subtitles-file", "a still (PNG) has no subtitles");
+        out.file = v.subtitles_file;
+        (void)video::subtitle_format_of(out.file, "--subtitles-file");
+    }
+    const bool mp4 = !output.still && output.format == video::VideoFormat::mp4;
+    if (given(v.subtitles_opt) && v.subtitles == "embed" && !mp4) {
+        throw_option_error("--subtitles",
+                           "embed: only an MP4 carries a subtitle track (use --subtitles-file "
+                           "F.vtt beside a GIF or PNG frames)");
+    }
+    out.embed = mp4 && v.subtitles == "embed";
+    return out;
 }
 
 }  // namespace collide::app

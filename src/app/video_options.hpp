@@ -9,6 +9,8 @@
 #include <string_view>
 
 #include "cli_fwd.hpp"
+#include "render_plan.hpp"
+#include "video_job.hpp"
 
 namespace collide::app {
 
@@ -25,7 +27,10 @@ struct VideoCli {
     bool preview = false;
     bool verbose = false;
     std::string theme = "dark";
-    std::string font;  ///< --font FILE (empty: find_font's search)
+    std::string font;                 ///< --font FILE (empty: find_font's search)
+    std::string subtitles = "embed";  ///< --subtitles embed|none
+    std::string lang = "und";         ///< --lang: the subtitles' language
+    std::string subtitles_file;       ///< --subtitles-file F.vtt|F.srt
 
     CLI::Option* output_opt = nullptr;
     CLI::Option* format_opt = nullptr;
@@ -36,6 +41,8 @@ struct VideoCli {
     CLI::Option* last_frame_opt = nullptr;
     CLI::Option* preview_opt = nullptr;
     CLI::Option* theme_opt = nullptr;
+    CLI::Option* subtitles_opt = nullptr;
+    CLI::Option* subtitles_file_opt = nullptr;
 };
 
 /// What differs between the commands: which options they take and how their help reads.
@@ -47,6 +54,7 @@ struct VideoOptionSet {
     bool preview = false;         ///< --preview
     bool theme = true;            ///< --theme
     std::string_view theme_help;  ///< --theme's default, in words
+    bool subtitles = false;       ///< --subtitles, --lang, --subtitles-file (videos only)
 };
 
 /// True when the user gave `option` on the command line.
@@ -54,5 +62,10 @@ struct VideoOptionSet {
 
 /// Registers the options `set` names on `cmd`, into `v`.
 void add_video_options(CLI::App& cmd, VideoCli& v, const VideoOptionSet& set);
+
+/// --subtitles, --lang and --subtitles-file checked against the output: embedding is the default
+/// for an MP4 (other formats have no subtitle track: asking for one there is refused, as is a
+/// sidecar for a still). Throws Error(input) naming the option.
+[[nodiscard]] SubtitleOutput subtitle_output_of(const VideoCli& v, const OutputChoice& output);
 
 }  // namespace collide::app

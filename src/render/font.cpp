@@ -1,178 +1,189 @@
 #include "font.hpp"
 
-#include <stb_truetype.h>
+#include <hb-ft.h>
+#include <hb.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <iterator>
+#include <cstring>
+#include <functional>
+#include <unordered_map>
+#include <utility>
 
 #include "collide/error.hpp"
+#include "collide/text/font_face.hpp"
 
 namespace collide::render {
 namespace {
 
-constexpr std::uint32_t first_code_point = 32;
-constexpr std::uint32_t code_point_count = 224;  // 32..255: ASCII and Latin-1 (×, ², ±, ·)
+/// Rasterising: light hinting (vertical only, so glyph widths and the shaper's advances agree)
+/// keeps stems and the baseline on whole pixels, crisp at the 10 px of a 320x180 thumbnail; the
+/// outlines always, never a font's embedded bitmaps (those exist at some sizes only).
+constexpr FT_Int32 raster_flags = FT_LOAD_RENDER | FT_LOAD_TARGET_LIGHT | FT_LOAD_NO_BITMAP;
 
-std::vector<unsigned char> read_font_file(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        throw_runtime_error(
-            "font: cannot open '" + path +
-            "' (install fonts-dejavu-core, or give a TrueType font with --font FILE or "
-            "$COLLIDE_FONT)");
+/// Shaped runs kept: every distinct string of a few hundred frames (titles, labels, counters
+/// that tick); past that the cache starts over rather than grow with a long video's counters.
+constexpr std::size_t max_cached_runs = 4096;
+
+struct HbFontDeleter {
+    void operator()(hb_font_t* f) const noexcept { hb_font_destroy(f); }
+};
+struct HbBufferDeleter {
+    void operator()(hb_buffer_t* b) const noexcept { hb_buffer_destroy(b); }
+};
+
+struct StringHash {
+    using is_transparent = void;
+    std::size_t operator()(std::string_view s) const noexcept {
+        return std::hash<std::string_view>{}(s);
     }
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+};
+
+/// The atlas width: a power of two holding a row of about a dozen glyphs of the size, so that
+/// shelves are few; tall text gets wide rows, never a glyph wider than the atlas.
+int atlas_width_for(float pixel_height) {
+    int width = 256;
+    while (static_cast<float>(width) < 12.0F * pixel_height && width < 16384) width *= 2;
+    return width;
 }
 
-std::uint32_t big_endian(const std::vector<unsigned char>& data, std::size_t at, int bytes) {
-    std::uint32_t value = 0;
-    for (int i = 0; i < bytes; ++i) value = (value << 8) | data[at + static_cast<std::size_t>(i)];
-    return value;
-}
+/// A glyph rasterised into the atlas.
+struct AtlasGlyph {
+    int left = 0;  // pixels from the pen to the bitmap's left column
+    int top = 0;   // pixels from the baseline up to the bitmap's top row
+    std::uint16_t u = 0, v = 0, width = 0, height = 0;
+};
 
-/// stb_truetype trusts every offset in the file: a truncated or corrupt font makes it read far
-/// beyond the data (SIGSEGV). So before it sees the file: the table directory must lie within
-/// it, every table too, the tables stb_truetype needs must be there, and each table (but
-/// 'head', which holds the whole file's adjustment) must match its checksum, which catches
-/// damage inside a table as well.
-void check_truetype(const std::vector<unsigned char>& data, const std::string& path) {
-    const auto unusable = [&path](const std::string& why) {
-        throw_runtime_error("font: '" + path + "' is not a usable TrueType font (" + why +
-                            "); reinstall fonts-dejavu-core");
-    };
-    constexpr std::size_t directory_header = 12;
-    constexpr std::size_t record_size = 16;
-    if (data.size() < directory_header + 4) unusable("too short");
-    std::size_t offset = 0;
-    if (big_endian(data, 0, 4) == 0x74746366U) {  // 'ttcf': a collection; its first font
-        offset = big_endian(data, 12, 4);
-    }
-    if (offset > data.size() || data.size() - offset < directory_header) unusable("truncated");
-    const std::size_t tables = big_endian(data, offset + 4, 2);
-    if (data.size() - offset - directory_header < tables * record_size) unusable("truncated");
-    int needed = 0;
-    for (std::size_t t = 0; t < tables; ++t) {
-        const std::size_t record = offset + directory_header + t * record_size;
-        const std::uint32_t tag = big_endian(data, record, 4);
-        const std::uint32_t checksum = big_endian(data, record + 4, 4);
-        const std::uint64_t start = big_endian(data, record + 8, 4);
-        const std::uint64_t length = big_endian(data, record + 12, 4);
-        if (start + length > data.size()) unusable("truncated");
-        for (const char* name : {"cmap", "head", "hhea", "hmtx", "loca", "glyf", "maxp"}) {
-            std::uint32_t wanted = 0;
-            for (int i = 0; i < 4; ++i)
-                wanted = (wanted << 8) | static_cast<unsigned char>(name[i]);
-            if (tag == wanted) ++needed;
-        }
-        if (tag == 0x68656164U) continue;  // 'head'
-        std::uint32_t sum = 0;
-        for (std::uint64_t at = start; at < start + length; at += 4) {
-            std::uint32_t word = 0;
-            for (std::uint64_t b = at; b < at + 4; ++b) {
-                word = (word << 8) | (b < start + length ? data[static_cast<std::size_t>(b)] : 0U);
-            }
-            sum += word;
-        }
-        if (sum != checksum) unusable("damaged: a table's checksum does not match");
-    }
-    if (needed < 7) unusable("tables missing");
-}
+/// One glyph of a shaped run: which atlas glyph, where relative to the pen, how far it moves.
+struct PlacedGlyph {
+    std::uint32_t atlas_glyph;
+    float x_offset, y_offset;  // pixels; y up, as the shaper gives them
+    float advance;
+};
 
 }  // namespace
 
-std::vector<std::uint32_t> decode_utf8(std::string_view text) {
-    std::vector<std::uint32_t> out;
-    out.reserve(text.size());
-    for (std::size_t i = 0; i < text.size();) {
-        const auto byte = static_cast<unsigned char>(text[i]);
-        int extra = 0;
-        std::uint32_t cp = 0;
-        if (byte < 0x80) {
-            cp = byte;
-        } else if ((byte & 0xE0) == 0xC0) {
-            cp = byte & 0x1F;
-            extra = 1;
-        } else if ((byte & 0xF0) == 0xE0) {
-            cp = byte & 0x0F;
-            extra = 2;
-        } else if ((byte & 0xF8) == 0xF0) {
-            cp = byte & 0x07;
-            extra = 3;
-        } else {
-            out.push_back(0xFFFD);
-            ++i;
-            continue;
+struct FontAtlas::Cache {
+    text::FontFace face;
+    std::unique_ptr<hb_font_t, HbFontDeleter> shaper;
+    std::unique_ptr<hb_buffer_t, HbBufferDeleter> buffer{hb_buffer_create()};
+    FT_UInt question_mark = 0;  // drawn for a character the font lacks
+
+    std::unordered_map<FT_UInt, std::uint32_t> glyph_of;  // font glyph -> index in glyphs
+    std::vector<AtlasGlyph> glyphs;
+    std::unordered_map<std::string, std::vector<PlacedGlyph>, StringHash, std::equal_to<>> runs;
+
+    // The atlas: rows of `width` bytes, filled shelf by shelf (left to right, then a new shelf
+    // below the tallest glyph of the last one).
+    std::vector<std::uint8_t> bitmap;
+    int width = 256;
+    int shelf_x = 0, shelf_y = 0, shelf_height = 0;
+
+    explicit Cache(const std::string& path) : face(path) {}
+
+    std::uint32_t atlas_glyph(FT_UInt index);
+    const std::vector<PlacedGlyph>& shape(std::string_view text);
+};
+
+std::uint32_t FontAtlas::Cache::atlas_glyph(FT_UInt index) {
+    if (const auto it = glyph_of.find(index); it != glyph_of.end()) return it->second;
+    AtlasGlyph g;
+    const FT_Face f = face.face();
+    // A glyph FreeType cannot load (a damaged outline the table checks let through) is blank.
+    if (FT_Load_Glyph(f, index, raster_flags) == 0 &&
+        f->glyph->bitmap.pixel_mode == FT_PIXEL_MODE_GRAY) {
+        const FT_Bitmap& b = f->glyph->bitmap;
+        const int w = std::min(static_cast<int>(b.width), width);
+        const int h = static_cast<int>(b.rows);
+        if (shelf_x + w > width) {
+            shelf_y += shelf_height;
+            shelf_x = 0;
+            shelf_height = 0;
         }
-        if (i + static_cast<std::size_t>(extra) >= text.size() && extra > 0) {
-            out.push_back(0xFFFD);  // truncated sequence at the end
-            break;
+        const std::size_t rows_needed = static_cast<std::size_t>(shelf_y + h);
+        if (bitmap.size() < rows_needed * static_cast<std::size_t>(width))
+            bitmap.resize(rows_needed * static_cast<std::size_t>(width), 0);
+        for (int y = 0; y < h; ++y) {
+            const unsigned char* src = b.buffer + static_cast<std::ptrdiff_t>(y) * b.pitch;
+            std::memcpy(bitmap.data() + static_cast<std::size_t>(shelf_y + y) * width + shelf_x,
+                        src, static_cast<std::size_t>(w));
         }
-        bool valid = true;
-        for (int k = 1; k <= extra; ++k) {
-            const auto next = static_cast<unsigned char>(text[i + static_cast<std::size_t>(k)]);
-            if ((next & 0xC0) != 0x80) {
-                valid = false;
-                break;
-            }
-            cp = (cp << 6) | (next & 0x3F);
-        }
-        if (!valid) {
-            out.push_back(0xFFFD);
-            ++i;
-            continue;
-        }
-        out.push_back(cp);
-        i += static_cast<std::size_t>(extra) + 1;
+        g = {f->glyph->bitmap_left,
+             f->glyph->bitmap_top,
+             static_cast<std::uint16_t>(shelf_x),
+             static_cast<std::uint16_t>(shelf_y),
+             static_cast<std::uint16_t>(w),
+             static_cast<std::uint16_t>(h)};
+        shelf_x += w;
+        shelf_height = std::max(shelf_height, h);
+        // Texel coordinates are 16 bits: past that, glyphs draw blank rather than wrong.
+        if (shelf_y + h > 65535) g.width = g.height = 0;
     }
-    return out;
+    glyphs.push_back(g);
+    const auto slot = static_cast<std::uint32_t>(glyphs.size() - 1);
+    glyph_of.emplace(index, slot);
+    return slot;
 }
 
-FontAtlas::FontAtlas(const std::string& path, float pixel_height) : pixel_height_(pixel_height) {
-    const std::vector<unsigned char> data = read_font_file(path);
-    check_truetype(data, path);
-    stbtt_fontinfo info;
-    if (data.empty() ||
-        stbtt_InitFont(&info, data.data(), stbtt_GetFontOffsetForIndex(data.data(), 0)) == 0) {
-        throw_runtime_error("font: '" + path + "' is not a usable TrueType font");
-    }
-    int ascent = 0, descent = 0, gap = 0;
-    stbtt_GetFontVMetrics(&info, &ascent, &descent, &gap);
-    ascent_ = static_cast<float>(ascent) * stbtt_ScaleForPixelHeight(&info, pixel_height);
-
-    // 224 glyphs fit 256x256 up to ~20 px, 512x512 up to ~48 px, 1024 up to ~90 px (4K lesson
-    // text); larger text (frames beyond 4K) gets the next size that holds them all.
-    atlas_size_ = pixel_height <= 20.0F   ? 256
-                  : pixel_height <= 48.0F ? 512
-                  : pixel_height <= 88.0F ? 1024
-                                          : 2048;
-    constexpr int largest_atlas = 8192;
-    std::vector<stbtt_bakedchar> baked(code_point_count);
-    for (;; atlas_size_ *= 2) {
-        bitmap_.assign(static_cast<std::size_t>(atlas_size_) * atlas_size_, 0);
-        const int rows_used = stbtt_BakeFontBitmap(
-            data.data(), static_cast<int>(stbtt_GetFontOffsetForIndex(data.data(), 0)),
-            pixel_height, bitmap_.data(), atlas_size_, atlas_size_,
-            static_cast<int>(first_code_point), static_cast<int>(code_point_count), baked.data());
-        if (rows_used > 0) break;
-        if (atlas_size_ >= largest_atlas) {
-            throw_runtime_error("font: glyphs of '" + path + "' do not fit the atlas at this size");
+const std::vector<PlacedGlyph>& FontAtlas::Cache::shape(std::string_view text) {
+    if (const auto it = runs.find(text); it != runs.end()) return it->second;
+    if (runs.size() >= max_cached_runs) runs.clear();
+    hb_buffer_t* b = buffer.get();
+    hb_buffer_clear_contents(b);
+    hb_buffer_add_utf8(b, text.data(), static_cast<int>(text.size()), 0,
+                       static_cast<int>(text.size()));
+    hb_buffer_guess_segment_properties(b);
+    hb_shape(shaper.get(), b, nullptr, 0);
+    unsigned count = 0;
+    const hb_glyph_info_t* info = hb_buffer_get_glyph_infos(b, &count);
+    const hb_glyph_position_t* pos = hb_buffer_get_glyph_positions(b, &count);
+    std::vector<PlacedGlyph> run;
+    run.reserve(count);
+    constexpr float from_26_6 = 1.0F / 64.0F;
+    for (unsigned i = 0; i < count; ++i) {
+        FT_UInt index = info[i].codepoint;
+        float advance = static_cast<float>(pos[i].x_advance) * from_26_6;
+        if (index == 0) {  // the font lacks the character: '?' as before, never a box
+            index = question_mark;
+            advance =
+                static_cast<float>(hb_font_get_glyph_h_advance(shaper.get(), index)) * from_26_6;
         }
+        run.push_back({atlas_glyph(index), static_cast<float>(pos[i].x_offset) * from_26_6,
+                       static_cast<float>(pos[i].y_offset) * from_26_6, advance});
     }
-    glyphs_.reserve(code_point_count);
-    for (const stbtt_bakedchar& b : baked) {
-        // stbtt bakes each glyph box at whole-pixel offsets; the atlas is at most 1024 texels.
-        glyphs_.push_back({b.xoff, b.yoff, b.x0, b.y0, static_cast<std::uint16_t>(b.x1 - b.x0),
-                           static_cast<std::uint16_t>(b.y1 - b.y0), b.xadvance});
-    }
+    return runs.emplace(std::string(text), std::move(run)).first->second;
 }
 
-const FontAtlas::Glyph& FontAtlas::glyph(std::uint32_t code_point) const noexcept {
-    if (code_point < first_code_point || code_point >= first_code_point + code_point_count) {
-        code_point = '?';
+FontAtlas::FontAtlas(const std::string& path, float pixel_height)
+    : pixel_height_(pixel_height), cache_(std::make_unique<Cache>(path)) {
+    const FT_Face f = cache_->face.face();
+    // `pixel_height` is the ascender-to-descender height (what stb_truetype's
+    // ScaleForPixelHeight meant, so sizes and layouts stay those of before); FreeType wants
+    // the em, in 26.6 pixels.
+    const double units = static_cast<double>(f->ascender) - static_cast<double>(f->descender);
+    const double em = static_cast<double>(pixel_height) * f->units_per_EM / units;
+    const auto em_26_6 = static_cast<FT_F26Dot6>(std::lround(em * 64.0));
+    if (!(units > 0.0) || em_26_6 <= 0 || FT_Set_Char_Size(f, em_26_6, em_26_6, 72, 72) != 0) {
+        throw_runtime_error("font: '" + path + "' cannot be drawn at " +
+                            std::to_string(pixel_height) + " pixels");
     }
-    return glyphs_[code_point - first_code_point];
+    ascent_ = static_cast<float>(static_cast<double>(f->ascender) * em / f->units_per_EM);
+    cache_->shaper.reset(hb_ft_font_create_referenced(f));
+    // Unhinted advances: widths scale with the size, as a layout measured them.
+    hb_ft_font_set_load_flags(cache_->shaper.get(), FT_LOAD_DEFAULT | FT_LOAD_NO_HINTING);
+    cache_->question_mark = FT_Get_Char_Index(f, '?');
+    cache_->width = atlas_width_for(pixel_height);
+}
+
+FontAtlas::~FontAtlas() = default;
+FontAtlas::FontAtlas(FontAtlas&& other) noexcept = default;
+FontAtlas& FontAtlas::operator=(FontAtlas&& other) noexcept = default;
+
+const std::vector<std::uint8_t>& FontAtlas::bitmap() const noexcept {
+    return cache_->bitmap;
+}
+int FontAtlas::atlas_size() const noexcept {
+    return cache_->width;
 }
 
 float FontAtlas::add_text(OverlayBatch& batch, float x, float baseline_y, std::string_view text,
@@ -182,27 +193,27 @@ float FontAtlas::add_text(OverlayBatch& batch, float x, float baseline_y, std::s
     // reaches (ceil(edge - 1/2)), the column a rasteriser fills first for a quad there.
     float pen = std::round(x);
     const float base = std::round(baseline_y);
-    for (const std::uint32_t cp : decode_utf8(text)) {
-        const Glyph& g = glyph(cp);
+    for (const PlacedGlyph& p : cache_->shape(text)) {
+        const AtlasGlyph& g = cache_->glyphs[p.atlas_glyph];
         if (g.width > 0 && g.height > 0) {
-            batch.add_glyph({static_cast<int>(std::ceil(pen + g.x_offset - 0.5F)),
-                             static_cast<int>(base + g.y_offset), g.u, g.v, g.width, g.height,
-                             color});
+            batch.add_glyph({static_cast<int>(std::ceil(pen + p.x_offset - 0.5F)) + g.left,
+                             static_cast<int>(base - std::round(p.y_offset)) - g.top, g.u, g.v,
+                             g.width, g.height, color});
         }
-        pen += g.advance;
+        pen += p.advance;
     }
     return pen;
 }
 
 float FontAtlas::text_width(std::string_view text) const {
     float width = 0.0F;
-    for (const std::uint32_t cp : decode_utf8(text)) width += glyph(cp).advance;
+    for (const PlacedGlyph& p : cache_->shape(text)) width += p.advance;
     return width;
 }
 
 std::vector<std::string> wrap_words(const FontAtlas& font, const std::string& text, float width) {
-    // Widths add up (glyph advances, no kerning), so each word is measured once and the line's
-    // width kept as a sum: linear in the text, however long its lines.
+    // Each word is measured once and the line's width kept as a sum (kerning across a space is
+    // left out: a fraction of a pixel): linear in the text, however long its lines.
     const float space = font.text_width(" ");
     std::vector<std::string> lines;
     std::string line;
@@ -228,6 +239,10 @@ std::vector<std::string> wrap_words(const FontAtlas& font, const std::string& te
     }
     if (!line.empty()) lines.push_back(line);
     return lines;
+}
+
+std::vector<std::uint32_t> decode_utf8(std::string_view text) {
+    return text::decode_utf8(text);
 }
 
 }  // namespace collide::render

@@ -1,8 +1,9 @@
 #pragma once
-// Internal: a glyph atlas baked from a TrueType file with stb_truetype (Latin-1, one size), and
-// text layout into overlay quads.
+// Internal: text shaped with HarfBuzz and rasterised with FreeType at one size, glyph by glyph as
+// text first needs them, into a coverage atlas; and text layout into overlay quads.
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -11,40 +12,44 @@
 
 namespace collide::render {
 
+/// One font at one pixel size. Every script the font covers is shaped (ligatures, marks,
+/// kerning, right-to-left runs); a character the font lacks is drawn as '?' (`collide check`
+/// warns about those). Glyphs are rasterised once, when text first uses them, and shaped runs
+/// are cached, so a frame's text costs lookups. Move-only; one thread at a time (the caches are
+/// filled by the const calls).
 class FontAtlas {
   public:
-    /// Bakes code points 32..255 of the font at `pixel_height`. Throws collide::Error (runtime)
-    /// when the file is missing or is not a usable TrueType font.
+    /// Opens the font (TrueType or OpenType). Throws collide::Error (runtime) naming `path`
+    /// when the file is missing or is not a usable font.
     FontAtlas(const std::string& path, float pixel_height);
+    ~FontAtlas();
+    FontAtlas(FontAtlas&& other) noexcept;
+    FontAtlas& operator=(FontAtlas&& other) noexcept;
+    FontAtlas(const FontAtlas&) = delete;
+    FontAtlas& operator=(const FontAtlas&) = delete;
 
-    /// Appends `text` (UTF-8; unknown characters become '?') with its baseline at `baseline_y`
-    /// starting at `x`. Returns the x after the last glyph.
+    /// Appends `text` (UTF-8) with its baseline at `baseline_y` starting at `x`. Returns the x
+    /// after the last glyph.
     float add_text(OverlayBatch& batch, float x, float baseline_y, std::string_view text,
                    Rgba8 color) const;
     /// The advance width of `text` in pixels.
     [[nodiscard]] float text_width(std::string_view text) const;
 
+    /// The height stb_truetype's ScaleForPixelHeight meant: ascender to descender, in pixels.
     [[nodiscard]] float pixel_height() const noexcept { return pixel_height_; }
     [[nodiscard]] float ascent() const noexcept { return ascent_; }
     [[nodiscard]] float line_height() const noexcept { return pixel_height_ * 1.2F; }
 
-    /// The single-channel atlas (atlas_size x atlas_size bytes) to upload as a texture.
-    [[nodiscard]] const std::vector<std::uint8_t>& bitmap() const noexcept { return bitmap_; }
-    [[nodiscard]] int atlas_size() const noexcept { return atlas_size_; }
+    /// The single-channel atlas, atlas_size() bytes a row, holding every glyph drawn so far.
+    /// It grows by rows as text needs new glyphs, so take it after the last add_text.
+    [[nodiscard]] const std::vector<std::uint8_t>& bitmap() const noexcept;
+    [[nodiscard]] int atlas_size() const noexcept;
 
   private:
-    struct Glyph {
-        float x_offset, y_offset;  // top-left pixel relative to the pen (whole pixels, y down)
-        std::uint16_t u, v, width, height;  // texels in the atlas
-        float advance;
-    };
-    [[nodiscard]] const Glyph& glyph(std::uint32_t code_point) const noexcept;
-
+    struct Cache;  // the face, the shaper and the caches (font.cpp)
     float pixel_height_ = 0.0F;
     float ascent_ = 0.0F;
-    int atlas_size_ = 0;
-    std::vector<std::uint8_t> bitmap_;
-    std::vector<Glyph> glyphs_;  // code points 32..255
+    std::unique_ptr<Cache> cache_;
 };
 
 /// Greedy word wrap: the words of `text` (split at spaces) in lines no wider than `width` pixels

@@ -6,8 +6,11 @@ extern "C" {
 #include <libavutil/opt.h>
 }
 
+#include <cmath>
+#include <cstring>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "av_handles.hpp"
 #include "frame_sink.hpp"
@@ -48,6 +51,41 @@ const AVCodec* find_encoder(const VideoOptions& options) {
         throw_runtime_error("'" + name + "' is not a video encoder");
     }
     return codec;
+}
+
+/// The ASS header libavcodec's mov_text encoder parses its one style from (it takes dialog
+/// lines in ASS form): white 16 px text at the bottom centre, what players draw by default.
+constexpr const char* subtitle_style_header =
+    "[Script Info]\r\nScriptType: v4.00+\r\nPlayResX: 384\r\nPlayResY: 288\r\n\r\n"
+    "[V4+ Styles]\r\nFormat: Name, Fontname, Fontsize, PrimaryColour, SecondaryColour, "
+    "OutlineColour, BackColour, Bold, Italic, Underline, StrikeOut, ScaleX, ScaleY, Spacing, "
+    "Angle, BorderStyle, Outline, Shadow, Alignment, MarginL, MarginR, MarginV, Encoding\r\n"
+    "Style: Default,Sans,16,&Hffffff,&Hffffff,&H0,&H0,0,0,0,0,100,100,0,0,1,1,0,2,10,10,10,0"
+    "\r\n\r\n[Events]\r\nFormat: Layer, Start, End, Style, Name, MarginL, MarginR, MarginV, "
+    "Effect, Text\r\n";
+
+/// A cue's plain text as the ASS dialog line the encoder reads. Its parser treats "\n", "\N"
+/// and "{\" as markup and nothing else: line breaks become "\N", and an invisible word joiner
+/// (U+2060) keeps a literal backslash-n or brace-backslash plain text.
+std::string ass_dialog(const std::string& text) {
+    std::string out = "0,0,Default,,0,0,0,,";
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        const char next = i + 1 < text.size() ? text[i + 1] : '\0';
+        if (c == '\r') continue;
+        if (c == '\n') {
+            out += "\\N";
+            continue;
+        }
+        out += c;
+        if ((c == '\\' && (next == 'n' || next == 'N')) || (c == '{' && next == '\\'))
+            out += "\u2060";
+    }
+    return out;
+}
+
+std::int64_t milliseconds(double seconds) {
+    return std::llround(seconds * 1000.0);
 }
 
 class Mp4Sink final : public FrameSink {
@@ -164,6 +202,7 @@ class Mp4Sink final : public FrameSink {
         if (options_.codec == VideoCodec::hevc) {
             stream_->codecpar->codec_tag = MKTAG('h', 'v', 'c', '1');  // what Apple players want
         }
+        if (!options_.subtitles.empty()) add_subtitle_stream();
         check_av(avio_open(&format_->pb, temporary_.c_str(), AVIO_FLAG_WRITE),
                  "cannot open '" + shown() + "' for writing");
         AVDictionary* muxer_options = nullptr;
@@ -172,12 +211,70 @@ class Mp4Sink final : public FrameSink {
         const int header = avformat_write_header(format_.get(), &muxer_options);
         av_dict_free(&muxer_options);
         check_av(header, "cannot write the header of '" + shown() + "'");
+        write_subtitles();
 
         frame_->format = AV_PIX_FMT_YUV420P;
         frame_->width = geometry_.output_width;
         frame_->height = geometry_.output_height;
         check_av(av_frame_get_buffer(frame_.get(), 0), "cannot allocate a video frame");
         opened_ = true;
+    }
+
+    /// The subtitle track: a mov_text encoder (its sample description, the 'tx3g' box, is the
+    /// stream's extradata) in milliseconds, tagged with the language.
+    void add_subtitle_stream() {
+        const AVCodec* text_encoder = avcodec_find_encoder(AV_CODEC_ID_MOV_TEXT);
+        if (text_encoder == nullptr)
+            throw_runtime_error("this FFmpeg build has no mov_text (MP4 subtitle) encoder");
+        text_codec_.reset(check_alloc(avcodec_alloc_context3(text_encoder), "AVCodecContext"));
+        text_codec_->time_base = AVRational{1, 1000};
+        text_codec_->width = geometry_.output_width;  // the text box spans the picture
+        text_codec_->height = geometry_.output_height;
+        const std::size_t header_size = std::strlen(subtitle_style_header);
+        // Freed by avcodec_free_context: allocated with av_malloc, as libavcodec expects.
+        auto* header = static_cast<std::uint8_t*>(av_mallocz(header_size + 1));
+        text_codec_->subtitle_header = check_alloc(header, "subtitle header");
+        std::memcpy(header, subtitle_style_header, header_size);
+        text_codec_->subtitle_header_size = static_cast<int>(header_size);
+        check_av(avcodec_open2(text_codec_.get(), text_encoder, nullptr),
+                 "cannot open the mov_text subtitle encoder");
+        text_stream_ = check_alloc(avformat_new_stream(format_.get(), nullptr), "AVStream");
+        text_stream_->time_base = text_codec_->time_base;
+        check_av(avcodec_parameters_from_context(text_stream_->codecpar, text_codec_.get()),
+                 "cannot copy subtitle encoder parameters");
+        av_dict_set(&text_stream_->metadata, "language", options_.subtitle_language.c_str(), 0);
+    }
+
+    /// Every cue, encoded and handed to the interleaving muxer (which puts them among the
+    /// video's packets by time; the muxer fills the gaps between cues with empty samples).
+    void write_subtitles() {
+        if (text_stream_ == nullptr) return;
+        std::vector<std::uint8_t> buffer;
+        for (const Cue& cue : options_.subtitles) {
+            std::string dialog = ass_dialog(cue.text);
+            AVSubtitleRect rect{};
+            rect.type = SUBTITLE_ASS;
+            rect.ass = dialog.data();
+            AVSubtitleRect* rects[] = {&rect};
+            AVSubtitle subtitle{};
+            subtitle.num_rects = 1;
+            subtitle.rects = rects;
+            subtitle.end_display_time =
+                static_cast<std::uint32_t>(milliseconds(cue.end) - milliseconds(cue.start));
+            buffer.resize(1024 + 4 * dialog.size());
+            const int size =
+                check_av(avcodec_encode_subtitle(text_codec_.get(), buffer.data(),
+                                                 static_cast<int>(buffer.size()), &subtitle),
+                         "cannot encode a subtitle");
+            check_av(av_new_packet(packet_.get(), size), "cannot allocate a subtitle packet");
+            std::memcpy(packet_->data, buffer.data(), static_cast<std::size_t>(size));
+            packet_->pts = packet_->dts = milliseconds(cue.start);
+            packet_->duration = milliseconds(cue.end) - milliseconds(cue.start);
+            av_packet_rescale_ts(packet_.get(), text_codec_->time_base, text_stream_->time_base);
+            packet_->stream_index = text_stream_->index;
+            check_av(av_interleaved_write_frame(format_.get(), packet_.get()),
+                     "cannot write '" + shown() + "'");
+        }
     }
 
     /// Sends `frame` (null = flush) and writes every packet the encoder has ready.
@@ -201,7 +298,9 @@ class Mp4Sink final : public FrameSink {
     const AVCodec* encoder_ = nullptr;
     FormatContextPtr format_;
     CodecContextPtr codec_;
-    AVStream* stream_ = nullptr;  ///< owned by format_
+    AVStream* stream_ = nullptr;       ///< owned by format_
+    CodecContextPtr text_codec_;       ///< the subtitle encoder, when there are cues
+    AVStream* text_stream_ = nullptr;  ///< owned by format_
     FramePtr frame_;
     PacketPtr packet_;
     Image padded_;  ///< reused buffer for odd-sized input grown to even size

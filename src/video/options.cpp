@@ -1,10 +1,12 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <string>
 
 #include "collide/error.hpp"
 #include "collide/named_values.hpp"
+#include "collide/video/subtitles.hpp"
 #include "collide/video/video_writer.hpp"
 
 namespace collide::video {
@@ -58,6 +60,24 @@ void validate_preset(const VideoOptions& options) {
     }
 }
 
+/// Cues in order, each within [0, inf) and after the previous one's end: one subtitle at a time,
+/// what an MP4 text track can hold.
+void validate_cues(const Cues& cues) {
+    double previous_end = 0.0;
+    for (std::size_t i = 0; i < cues.size(); ++i) {
+        const Cue& cue = cues[i];
+        const std::string field = "video.subtitles[" + std::to_string(i) + "]";
+        if (!(cue.start >= previous_end) || !(cue.end > cue.start) || !std::isfinite(cue.end)) {
+            throw_scene_error("", 0, field,
+                              "must start at or after the previous cue's end and end after it "
+                              "starts, got " +
+                                  std::to_string(cue.start) + ".." + std::to_string(cue.end) +
+                                  " s");
+        }
+        previous_end = cue.end;
+    }
+}
+
 }  // namespace
 
 void VideoOptions::validate() const {
@@ -70,6 +90,13 @@ void VideoOptions::validate() const {
         require_range("video.crf", crf, 0, codec == VideoCodec::av1 ? 63 : 51);
     }
     validate_preset(*this);
+    validate_cues(subtitles);
+    if (video::subtitle_language(subtitle_language, "video.subtitle_language") !=
+        subtitle_language) {
+        throw_scene_error(
+            "", 0, "video.subtitle_language",
+            "must be an ISO 639-2/T code such as eng or pol, got '" + subtitle_language + "'");
+    }
 }
 
 VideoFormat parse_video_format(std::string_view text, std::string_view field) {

@@ -1,5 +1,5 @@
-// Text through stb_truetype: titles, counters and the time produce glyph pixels where the layout
-// puts the header and the strip; no text, no glyph pixels.
+// Text through HarfBuzz and FreeType: titles, counters and the time produce glyph pixels where the
+// layout puts the header and the strip; no text, no glyph pixels.
 #include <doctest/doctest.h>
 
 #include <chrono>
@@ -99,8 +99,8 @@ TEST_CASE("a missing font file is a runtime error naming it") {
 }
 
 TEST_CASE("a truncated or damaged font is a runtime error naming it, not a crash") {
-    // stb_truetype follows the file's offsets unchecked: before, both of these ended in SIGSEGV
-    // (or worse, silently wrong glyphs).
+    // Under stb_truetype both of these ended in SIGSEGV; FreeType survives them but would draw
+    // what the damage says (wrong or missing glyphs), so the font is checked before use.
     const std::string font = RenderConfig{}.font_path;
     if (!std::filesystem::exists(font)) COLLIDE_SKIP_TEST("no DejaVu Sans at " << font);
     std::ifstream in(font, std::ios::binary);

@@ -26,6 +26,7 @@
 #include <string_view>
 #include <vector>
 
+#include "collide/cue.hpp"
 #include "collide/image.hpp"
 #include "collide/video/output.hpp"
 
@@ -73,6 +74,12 @@ struct VideoOptions {
     /// Frames queued between `write()` and the encoder thread (bounded: `write` blocks when the
     /// encoder falls behind, so memory stays at about queue_frames * width * height * 4 bytes).
     int queue_frames = 4;
+    /// MP4 only: a subtitle track (mov_text, what MP4 players and ffmpeg read) carrying these
+    /// cues, in order, not overlapping, within the video; empty = no track. GIF and PNG have
+    /// no subtitle track (write a sidecar with subtitle_file_text instead).
+    Cues subtitles;
+    /// The track's language tag, ISO 639-2/T ("eng", "pol"; subtitle_language() makes one).
+    std::string subtitle_language = "und";
     /// Cancellation hook: when it points to a flag that becomes true (the app's SIGINT/SIGTERM
     /// handler sets it), `write`/`finish` throw Error(runtime, "interrupted") and the temporary
     /// output is deleted. Must outlive the writer. Lock-free, so a signal handler may set it.

@@ -1,0 +1,60 @@
+#pragma once
+/// \file
+/// A font file opened with FreeType, without GL: which characters it has (for `collide check`)
+/// and the face the renderer rasterises glyphs from. collide_text links FreeType only, so the
+/// program `collide` may use it (no GL, no libav among its NEEDED entries).
+
+#include <ft2build.h>
+#include FT_FREETYPE_H
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace collide::text {
+
+/// One font file (TrueType, OpenType or the first font of a collection) opened with FreeType:
+/// the library instance and the face, owned together. Move-only; not shared between threads.
+class FontFace {
+  public:
+    /// Reads and checks the file (every table within the file and matching its checksum: a
+    /// damaged font is refused here, not met as wrong glyphs later). Throws collide::Error
+    /// (runtime) naming `path` when it cannot be read or is not a usable font.
+    explicit FontFace(const std::string& path);
+    ~FontFace();
+    FontFace(FontFace&& other) noexcept;
+    FontFace& operator=(FontFace&& other) noexcept;
+    FontFace(const FontFace&) = delete;
+    FontFace& operator=(const FontFace&) = delete;
+
+    /// True when the font maps `code_point` to a glyph of its own (not the "missing" box).
+    [[nodiscard]] bool has_character(std::uint32_t code_point) const;
+    /// "DejaVu Sans"-like: the family and style names the file gives.
+    [[nodiscard]] std::string name() const;
+    [[nodiscard]] const std::string& path() const noexcept { return path_; }
+    /// The FreeType face, for the renderer's rasteriser; owned by this object.
+    [[nodiscard]] FT_Face face() const noexcept { return face_; }
+
+  private:
+    void release() noexcept;
+
+    std::string path_;
+    std::vector<unsigned char> data_;  // FreeType reads the face from here: lives as long
+    FT_Library library_ = nullptr;
+    FT_Face face_ = nullptr;
+};
+
+/// Decodes UTF-8 into code points; malformed bytes become U+FFFD.
+[[nodiscard]] std::vector<std::uint32_t> decode_utf8(std::string_view text);
+
+/// The characters of `text` (UTF-8) that `font` has no glyph for, each once, in the order they
+/// first appear. Characters drawn as nothing need no glyph (controls, spaces of zero width,
+/// joiners, variation selectors) and are never reported.
+[[nodiscard]] std::vector<std::uint32_t> missing_characters(const FontFace& font,
+                                                            std::string_view text);
+
+/// A character for a message: "'Δ' (U+0394)", or "U+0007" alone for one that cannot be shown.
+[[nodiscard]] std::string describe_character(std::uint32_t code_point);
+
+}  // namespace collide::text

@@ -1,0 +1,37 @@
+#pragma once
+/// \file
+/// Subtitles as the encoder writes them: cues (plain text with times, collide/cue.hpp) tagged
+/// with a language, as an MP4 subtitle track (VideoOptions::subtitles) or as a WebVTT or SubRip
+/// file beside the video. Nothing here knows what the words mean or where they came from.
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "collide/cue.hpp"
+
+namespace collide::video {
+
+/// The ISO 639-2/T code (what MP4 stores: "pol", "deu", "und") for `tag`: a two-letter ISO 639-1
+/// code ("pl"), a three-letter ISO 639-2 code in either form ("ger" or "deu"), any case.
+/// Throws Error(input) naming `field` for anything else ("--lang: 'xx' is not an ISO 639
+/// language code ...").
+[[nodiscard]] std::string subtitle_language(std::string_view tag, std::string_view field = "lang");
+
+/// The sidecar formats: WebVTT (browsers' <track>) and SubRip (.srt: most players and editors).
+enum class SubtitleFormat { webvtt, srt };
+
+/// The format a sidecar's name asks for: ".vtt" or ".srt" (any case). Throws Error(input) naming
+/// `field` for another extension.
+[[nodiscard]] SubtitleFormat subtitle_format_of(const std::filesystem::path& path,
+                                                std::string_view field = "subtitles_file");
+
+/// The cues as a WebVTT file ("WEBVTT", then "HH:MM:SS.mmm --> HH:MM:SS.mmm" blocks; '&', '<'
+/// and '>' escaped; an empty line inside a text, which would end its cue, dropped).
+[[nodiscard]] std::string webvtt_text(const Cues& cues);
+/// The cues as a SubRip file (numbered blocks, "HH:MM:SS,mmm --> HH:MM:SS,mmm", CRLF-free UTF-8).
+[[nodiscard]] std::string srt_text(const Cues& cues);
+/// One of the two, by `format`.
+[[nodiscard]] std::string subtitle_file_text(const Cues& cues, SubtitleFormat format);
+
+}  // namespace collide::video

@@ -1,0 +1,260 @@
+// Text in every language and captions that travel: `collide check` names a character the font
+// lacks; `collide render` puts the title, description and captions into the MP4 as a subtitle
+// track with a language tag, and into a WebVTT or SubRip file beside it, all or nothing.
+#include <doctest/doctest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "../support/files.hpp"
+#include "../support/skip.hpp"
+#include "../support/temp_dir.hpp"
+#include "run_collide.hpp"
+
+namespace fs = std::filesystem;
+using collide::test::run_collide;
+using collide::test::TempDir;
+
+namespace {
+
+/// A small scene whose words are Polish, Greek and mathematics.
+constexpr const char* scene_text = R"(title = "Zderzenia: Δt ≈ 0.01 s"
+description = "Gaz w pudełku; σ → η"
+disc = [
+  { position = [0.3, 0.5], velocity = [0.5, 0], radius = 0.05, mass = 1 },
+  { position = [0.7, 0.5], velocity = [-0.5, 0], radius = 0.05, mass = 1 },
+]
+
+[box]
+width = 1.0
+height = 1.0
+boundary = "walls"
+
+[render]
+duration = 4.0
+caption = "Kule się zderzają"
+
+[[render.captions]]
+at = 2.5
+text = "Energia ± 0: E = ½mv²"
+)";
+
+std::string capture(const std::string& cmd) {
+    std::string out;
+    FILE* pipe = popen(cmd.c_str(), "r");
+    if (pipe == nullptr) return out;
+    char buf[512];
+    while (std::fgets(buf, sizeof buf, pipe) != nullptr) out += buf;
+    pclose(pipe);
+    return out;
+}
+
+bool have_ffprobe() {
+    return std::system("ffprobe -version >/dev/null 2>&1") == 0;
+}
+
+/// One cue of a parsed subtitle file.
+struct ParsedCue {
+    double start = 0.0;
+    double end = 0.0;
+    std::string text;
+};
+
+/// "HH:MM:SS.mmm" (or ',' before the milliseconds) in seconds; -1 when malformed.
+double parse_time(const std::string& t) {
+    int h = 0, m = 0, s = 0, ms = 0;
+    char sep = 0;
+    if (t.size() != 12 || std::sscanf(t.c_str(), "%2d:%2d:%2d%c%3d", &h, &m, &s, &sep, &ms) != 5)
+        return -1.0;
+    if (m > 59 || s > 59) return -1.0;
+    return h * 3600.0 + m * 60.0 + s + ms / 1000.0;
+}
+
+/// A strict reader of the two formats as we write them: WebVTT (the "WEBVTT" line, then blocks
+/// "start --> end" + text lines) or SubRip (numbered blocks 1, 2, ... with ',' in the times).
+/// Blocks are separated by one empty line; times increase and never overlap. Fails the test
+/// case (REQUIRE) on anything else.
+std::vector<ParsedCue> parse_subtitles(const std::string& file_text, bool webvtt) {
+    std::vector<std::string> lines;
+    std::size_t start = 0;
+    while (start < file_text.size()) {
+        const std::size_t end = file_text.find('\n', start);
+        REQUIRE(end != std::string::npos);  // every line ends with a newline
+        lines.push_back(file_text.substr(start, end - start));
+        start = end + 1;
+    }
+    std::size_t i = 0;
+    if (webvtt) {
+        REQUIRE(!lines.empty());
+        REQUIRE(lines[0] == "WEBVTT");
+        i = 1;
+    }
+    std::vector<ParsedCue> cues;
+    while (i < lines.size()) {
+        if (webvtt || !cues.empty()) {
+            REQUIRE(lines[i].empty());  // the blank line between blocks
+            ++i;
+        }
+        REQUIRE(i < lines.size());
+        if (!webvtt) {
+            REQUIRE(lines[i] == std::to_string(cues.size() + 1));
+            ++i;
+        }
+        REQUIRE(i < lines.size());
+        const std::string& timing = lines[i++];
+        REQUIRE(timing.size() == 29);
+        REQUIRE(timing.substr(12, 5) == " --> ");
+        const char sep = webvtt ? '.' : ',';
+        CHECK(timing[8] == sep);
+        ParsedCue cue{parse_time(timing.substr(0, 12)), parse_time(timing.substr(17)), ""};
+        REQUIRE(cue.start >= 0.0);
+        REQUIRE(cue.end > cue.start);
+        if (!cues.empty()) CHECK(cue.start >= cues.back().end);
+        while (i < lines.size() && !lines[i].empty()) {
+            if (!cue.text.empty()) cue.text += '\n';
+            cue.text += lines[i++];
+        }
+        REQUIRE(!cue.text.empty());
+        cues.push_back(cue);
+    }
+    return cues;
+}
+
+/// `text` without carriage returns, without <...> tags and with one newline at the end.
+std::string without_markup(const std::string& text) {
+    std::string out;
+    bool in_tag = false;
+    for (const char c : text) {
+        if (c == '<') in_tag = true;
+        if (!in_tag && c != '\r') out += c;
+        if (c == '>') in_tag = false;
+    }
+    while (!out.empty() && out.back() == '\n') out.pop_back();
+    return out + '\n';
+}
+
+}  // namespace
+
+TEST_CASE(
+    "render: the MP4 carries the title, description and captions as a tagged subtitle "
+    "track, and the sidecars parse") {
+    if (!have_ffprobe()) COLLIDE_SKIP_TEST("ffprobe is not installed");
+    TempDir dir("subtitles");
+    const fs::path scene = dir.path / "scene.toml";
+    collide::test::write_file(scene, scene_text);
+    const fs::path out = dir.path / "t.mp4";
+    const fs::path vtt = dir.path / "t.vtt";
+    const auto r = run_collide("render " + scene.string() +
+                               " --size 320x180 --fps 10 --progress none --lang pl -o " +
+                               out.string() + " --subtitles-file " + vtt.string());
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    const std::string probe = capture(
+        "ffprobe -v error -select_streams s -show_entries stream=codec_name:stream_tags=language "
+        "-of default=nw=1 " +
+        out.string());
+    CHECK(probe.find("codec_name=mov_text") != std::string::npos);
+    CHECK(probe.find("TAG:language=pol") != std::string::npos);
+    // The track read back by FFmpeg, as SubRip: the texts and their times (FFmpeg adds the
+    // track's font as a <font> tag and ends the lines inside a cue with CRLF: both go).
+    const std::string track =
+        without_markup(capture("ffmpeg -v error -i " + out.string() + " -map 0:s:0 -f srt - 2>&1"));
+    const std::vector<ParsedCue> embedded = parse_subtitles(track, false);
+    REQUIRE(embedded.size() == 3);
+    CHECK(embedded[0].text == "Zderzenia: Δt ≈ 0.01 s\nGaz w pudełku; σ → η");
+    CHECK(embedded[0].start == doctest::Approx(0.0));
+    CHECK(embedded[0].end == doctest::Approx(1.0));  // the intro card: a quarter of 4 s
+    CHECK(embedded[1].text == "Kule się zderzają");
+    CHECK(embedded[1].start == doctest::Approx(1.0));
+    CHECK(embedded[2].text == "Energia ± 0: E = ½mv²");
+    CHECK(embedded[2].start == doctest::Approx(2.5));
+    CHECK(embedded[2].end == doctest::Approx(4.0));
+
+    const std::vector<ParsedCue> sidecar = parse_subtitles(collide::test::read_all(vtt), true);
+    REQUIRE(sidecar.size() == embedded.size());
+    for (std::size_t i = 0; i < sidecar.size(); ++i) {
+        CAPTURE(i);
+        CHECK(sidecar[i].text == embedded[i].text);
+        CHECK(sidecar[i].start == doctest::Approx(embedded[i].start));
+        CHECK(sidecar[i].end == doctest::Approx(embedded[i].end));
+    }
+
+    // SubRip beside a GIF; --subtitles none leaves the MP4 without a track.
+    const fs::path srt = dir.path / "t.srt";
+    const auto gif = run_collide(
+        "render " + scene.string() + " --size 160x90 --fps 5 --progress none --format gif -o " +
+        (dir.path / "t.gif").string() + " --subtitles-file " + srt.string());
+    REQUIRE_MESSAGE(gif.exit_code == 0, gif.output);
+    const std::vector<ParsedCue> srt_cues = parse_subtitles(collide::test::read_all(srt), false);
+    CHECK(srt_cues.size() == 3);
+    const fs::path plain = dir.path / "plain.mp4";
+    const auto none =
+        run_collide("render " + scene.string() +
+                    " --size 160x90 --fps 5 --progress none --subtitles none -o " + plain.string());
+    REQUIRE_MESSAGE(none.exit_code == 0, none.output);
+    CHECK(capture("ffprobe -v error -select_streams s -show_entries stream=codec_name -of "
+                  "default=nw=1 " +
+                  plain.string())
+              .empty());
+}
+
+TEST_CASE("render: a bad language, sidecar name or sidecar path exits 2 and writes nothing") {
+    TempDir dir("subtitles_bad");
+    const fs::path out = dir.path / "t.mp4";
+    const std::string base = "render billiards --size 160x90 --fps 5 --duration 1 --progress none ";
+    const std::string mp4 = "-o " + out.string() + " ";
+    struct Case {
+        std::string args;
+        std::string message;
+    };
+    const std::vector<Case> cases = {
+        {mp4 + "--lang xx", "--lang: 'xx' is not an ISO 639 language code"},
+        {mp4 + "--lang polish", "--lang: 'polish' is not an ISO 639 language code"},
+        {mp4 + "--subtitles-file " + (dir.path / "t.txt").string(), "must end in .vtt"},
+        {mp4 + "--subtitles-file " + (dir.path / "missing" / "t.vtt").string(), "--subtitles-file"},
+        {mp4 + "--subtitles-file " + out.string(), "--subtitles-file"},
+        {mp4 + "--subtitles burn", "--subtitles: expected embed or none"},
+        {"-o " + (dir.path / "t.gif").string() + " --subtitles embed",
+         "only an MP4 carries a subtitle track"},
+        {"--last-frame -o " + (dir.path / "t.png").string() + " --subtitles-file " +
+             (dir.path / "t.vtt").string(),
+         "a still (PNG) has no subtitles"},
+    };
+    for (const Case& c : cases) {
+        CAPTURE(c.args);
+        const auto r = run_collide(base + c.args);
+        CHECK(r.exit_code == 2);
+        CHECK_MESSAGE(r.output.find(c.message) != std::string::npos, r.output);
+        CHECK(collide::test::entries(dir.path).empty());
+    }
+}
+
+TEST_CASE("heap and puzzle videos carry their step captions as subtitles") {
+    TempDir dir("lesson_subtitles");
+    const fs::path srt = dir.path / "heap.srt";
+    const auto heap = run_collide(
+        "heap --ops \"P Q E * X\" --size 480x270 --fps 10 --progress "
+        "none --lang en -o " +
+        (dir.path / "heap.mp4").string() + " --subtitles-file " + srt.string());
+    REQUIRE_MESSAGE(heap.exit_code == 0, heap.output);
+    const std::vector<ParsedCue> cues = parse_subtitles(collide::test::read_all(srt), false);
+    REQUIRE(cues.size() > 5);
+    bool exchange = false;
+    for (const ParsedCue& cue : cues) exchange |= cue.text.find("insert") != std::string::npos;
+    CHECK(exchange);
+    if (have_ffprobe()) {
+        CHECK(capture("ffprobe -v error -select_streams s -show_entries stream_tags=language -of "
+                      "default=nw=1 " +
+                      (dir.path / "heap.mp4").string())
+                  .find("TAG:language=eng") != std::string::npos);
+    }
+    const fs::path vtt = dir.path / "puzzle.vtt";
+    const auto puzzle = run_collide(
+        "puzzle \"1 2 3 4 5 6 0 7 8\" --size 854x480 --fps 10 "
+        "--progress none -o " +
+        (dir.path / "puzzle.mp4").string() + " --subtitles-file " + vtt.string());
+    REQUIRE_MESSAGE(puzzle.exit_code == 0, puzzle.output);
+    CHECK(!parse_subtitles(collide::test::read_all(vtt), true).empty());
+}
