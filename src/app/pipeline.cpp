@@ -177,6 +177,13 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
     const LessonPlan& lesson = plan_.lesson;
     const double video_time = static_cast<double>(frame.index) / plan_.fps;
     content_.panels.resize(frame.panels.size());
+    if (marks_.size() != frame.panels.size()) {
+        // The wrap note of a periodic box is said once, by the last panel (the first one's
+        // legend line has the marks to name).
+        marks_.clear();
+        for (std::size_t i = 0; i < frame.panels.size(); ++i)
+            marks_.emplace_back(show::mark_budget, i + 1 == frame.panels.size());
+    }
     content_.energy_drift.resize(frame.panels.size());
     for (std::size_t i = 0; i < frame.panels.size(); ++i) {
         const PanelFrame& panel = frame.panels[i];
@@ -189,7 +196,7 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
         out.cost_label = panel.words.cost_label;
         out.cost = panel.words.cost;
         out.queue_words = panel.queue_words;
-        out.accent = render::panel_accent(panel.time_driven);
+        out.accent = render::panel_accent(panel.time_driven, plan_.render.theme);
         out.note.clear();
         out.step_period = 1;
         out.step_phase = 0;
@@ -204,6 +211,14 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
             out.note = show::step_note(plan_.time_engine.dt, plan_.clock.interval);
             out.step_period = lesson.frames_per_step;
             out.step_phase = std::min(step_phase_, lesson.frames_per_step - 1);
+        }
+        if (plan_.render.overlays == OverlayLevel::lesson) {
+            // The failure marks and their legend: which failures get a mark is decided in show.
+            const bool last_panel = i + 1 == frame.panels.size();
+            marks_[i].update(panel.snapshot, video_time);
+            out.marks = marks_[i].marks();
+            out.mark_words = marks_[i].words();
+            out.mark_line = show::mark_line(panel.time_driven, last_panel, panel.snapshot.box);
         }
         content_.energy_drift[i].push_back(panel.drift);
         if (std::isfinite(panel.drift.drift))

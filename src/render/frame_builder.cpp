@@ -129,6 +129,7 @@ FrameLayout FrameBuilder::layout_for(const FrameContent& frame) const {
     for (const PanelContent& panel : frame.panels) {
         input.boxes.push_back(panel.snapshot != nullptr ? panel.snapshot->box : Box{});
         if (!panel.note.empty()) input.note_line = true;
+        input.mark_lines.push_back(panel.mark_line);
     }
     input.large_plot = frame.histogram == PlotSize::large;
     input.small_plot = frame.histogram == PlotSize::small;
@@ -198,7 +199,13 @@ void FrameBuilder::build_panel(std::size_t index, const PanelContent& content,
                                 ? std::max(2.0F, std::round(text_px / 8.0F))
                                 : std::max(1.0F, wall * 1.5F);
         const bool lesson = config_.overlays == OverlayLevel::lesson;
-        trails_[index].draw(list_.under, box, to_pixels, colors_, width, lesson ? 0.35F : 0.0F);
+        if (lesson) {  // every trail keeps 3:1 against the box down to its faintest segment
+            const float share =
+                legible_trails(colors_, snapshot.discs, config_.theme, trail_colors_);
+            trails_[index].draw(list_.under, box, to_pixels, trail_colors_, width, share);
+        } else {
+            trails_[index].draw(list_.under, box, to_pixels, colors_, width, 0.0F);
+        }
     }
     add_discs(snapshot, panel);
     if (snapshot.queue && config_.overlays == OverlayLevel::lesson && body_font_) {
@@ -206,10 +213,8 @@ void FrameBuilder::build_panel(std::size_t index, const PanelContent& content,
         if (layout_.queue_panel == static_cast<int>(index) && !intro_)
             add_queue_strip(snapshot, content.queue_words, layout_.queue_strip);
     }
-    std::size_t hidden = 0;
     if (config_.overlays == OverlayLevel::lesson) {
-        markers_[index].update(snapshot, video_time_);
-        hidden = add_lesson_failures(index, snapshot, panel);
+        add_lesson_marks(content, panel);  // chosen by the presentation layer
     } else {
         add_classic_failures(snapshot, panel, wall);
     }
@@ -222,7 +227,7 @@ void FrameBuilder::build_panel(std::size_t index, const PanelContent& content,
         add_full_header(content, panel, layout_.panels.size());
     } else if (config_.overlays == OverlayLevel::lesson && !intro_) {
         add_lesson_panel_text(index, content);
-        if (hidden > 0 && !layout_.compact) add_unmarked_note(panel, hidden);  // one line there
+        add_mark_legend(index, content);  // under the figures, outside the box
     }
 }
 
@@ -230,6 +235,11 @@ void FrameBuilder::add_box(const PanelLayout& panel, const Box& box, float wall)
     add_box_fill(panel.box);
     const RectF outline{panel.box.x0 - wall, panel.box.y0 - wall, panel.box.x1 + wall,
                         panel.box.y1 + wall};
+    if (box.boundary == Boundary::periodic && config_.overlays == OverlayLevel::lesson) {
+        // Dashed: the edges are no walls, discs pass through and come back on the other side.
+        add_dashed_frame(list_.under, outline, wall, edge_dash(wall), palette_.wrap_edge);
+        return;
+    }
     list_.under.add_frame(outline, wall,
                           box.boundary == Boundary::walls ? palette_.wall : palette_.periodic_edge);
 }
@@ -566,7 +576,8 @@ void FrameBuilder::add_column(const FrameContent& frame) {
         const TextSlot* label = layout_.slot(TextRole::cost_label, p);
         const TextSlot* value = layout_.slot(TextRole::cost_value, p);
         if (label == nullptr || value == nullptr) continue;
-        draw_text(Font::body, *label, panel.cost_label, with_alpha(panel.accent, 255));
+        draw_text(Font::body, *label, panel.cost_label,
+                  with_alpha(accent_text(panel.accent, config_.theme), 255));
         const RectF track{label->rect.x0, label->rect.y1, label->rect.x1,
                           value->rect.y0 - std::round(0.6F * layout_.margin)};
         list_.over.add_rect(track, faded(palette_.muted, 0.35F));

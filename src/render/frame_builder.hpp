@@ -10,6 +10,7 @@
 
 #include "collide/render/renderer.hpp"
 #include "draw_list.hpp"
+#include "failure_marks.hpp"
 #include "font.hpp"
 #include "layout.hpp"
 #include "plots.hpp"
@@ -86,6 +87,11 @@ class FrameBuilder {
     void add_legend(RectF info);
     void add_lesson_panel_text(std::size_t index, const PanelContent& content);
     void add_unmarked_note(const PanelLayout& panel, std::size_t hidden);
+    // The lesson's failure marks and their legend (failure_marks.cpp).
+    [[nodiscard]] MarkStyle mark_style() const;
+    void add_lesson_marks(const PanelContent& content, const PanelLayout& panel);
+    void add_mark_legend(std::size_t index, const PanelContent& content);
+    [[nodiscard]] static float edge_dash(float wall) noexcept;
     void add_column(const FrameContent& frame);
     // The event queue (Snapshot::queue; frame_builder_queue.cpp).
     void add_queue_in_box(const Snapshot& snapshot, const PanelLayout& panel);
@@ -123,7 +129,8 @@ class FrameBuilder {
     std::vector<MarkerMemory> markers_;
     FrameLayout layout_;
     DrawList list_;
-    std::vector<Rgb8> colors_;  // per-frame scratch
+    std::vector<Rgb8> colors_;        // per-frame scratch
+    std::vector<Rgb8> trail_colors_;  // per-frame scratch: lesson trails (legible_trails)
     double video_time_ = 0.0;
     double speed_ = 0.0;         // simulation time per second of video (FrameContent::speed)
     std::vector<RectF> labels_;  // queue labels placed in the current box (add_plate_label)

@@ -38,6 +38,7 @@ enum class TextRole {
     title,
     figures,
     note,
+    marks,  ///< lesson: the failure marks' legend under a panel's figures (and note)
     caption,
     clock,
     cost_heading,
@@ -112,8 +113,11 @@ struct LayoutInput {
     int width = 1280;
     int height = 720;
     OverlayLevel level = OverlayLevel::lesson;
-    std::vector<Box> boxes;     ///< 1 or 2 panels, left to right (only their shapes matter)
-    bool note_line = false;     ///< lesson: a note line under the figures (dt > frame)
+    std::vector<Box> boxes;  ///< 1 or 2 panels, left to right (only their shapes matter)
+    bool note_line = false;  ///< lesson: a note line under the figures (dt > frame)
+    /// Lesson: per panel, a legend line for its failure marks (under the note). The left one of
+    /// two panels takes the frame's width when the right one has none.
+    std::vector<bool> mark_lines;
     bool large_plot = false;    ///< lesson: the plot is the subject: a wider column
     bool small_plot = false;    ///< lesson: a plot below the column's text, reaching down
                                 ///< beside the figures row so it is tall enough to read
