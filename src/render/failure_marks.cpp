@@ -1,11 +1,11 @@
-// The lesson's failure marks by kind, the legend line that names them, and dashed periodic edges.
+// The lesson's failure marks by kind, the legend's symbols, and dashed periodic edges.
 #include "failure_marks.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "frame_builder.hpp"
+#include "theme.hpp"
 
 namespace collide::render {
 
@@ -72,8 +72,8 @@ void paint_failure_marks(DrawList& list, const std::vector<FailureMark>& marks,
                 break;
             case FailureKind::overlapping: {
                 // Arms of a cross as long as the pair is wide, the whole cross inside the box.
-                const float arm = std::min(0.8F * size, 0.5F * std::min(panel.box.width(),
-                                                                        panel.box.height()));
+                const float arm =
+                    std::min(0.8F * size, 0.5F * std::min(panel.box.width(), panel.box.height()));
                 const float reach = arm + style.stroke;
                 const PointF at{std::clamp(c.x, panel.box.x0 + reach, panel.box.x1 - reach),
                                 std::clamp(c.y, panel.box.y0 + reach, panel.box.y1 - reach)};
@@ -107,8 +107,8 @@ void paint_mark_symbol(OverlayBatch& batch, FailureKind kind, PointF centre, flo
         case FailureKind::left_box:
             // Pointing up and out, as from the box's top edge (the legend sits under the box:
             // a sideways arrow would read as "next").
-            add_arrow(batch, {centre.x, centre.y + half}, {centre.x, centre.y - half},
-                      style.stroke, style.color);
+            add_arrow(batch, {centre.x, centre.y + half}, {centre.x, centre.y - half}, style.stroke,
+                      style.color);
             break;
     }
 }
@@ -146,64 +146,7 @@ void add_dashed_frame(OverlayBatch& batch, RectF r, float width, float dash, Rgb
     });
 }
 
-// ---------------------------------------------------------------------------------------------
-// The frame builder's part: the style at this frame size, the marks and the legend line.
-
-MarkStyle FrameBuilder::mark_style() const {
-    const float text_px = body_font_ ? body_font_->pixel_height() : 8.0F;
-    MarkStyle style;
-    style.min_radius = 0.45F * text_px;
-    style.stroke = std::max(2.0F, std::round(text_px / 9.0F));
-    // The wall is drawn outside the box; the tip reaches a little beyond it, short of the text.
-    const float wall = std::max(1.0F, std::round(text_px / 12.0F));
-    style.reach = std::max(wall + 1.0F, std::round(0.6F * layout_.margin) - 1.0F);
-    style.color = palette_.failure;
-    style.floor = mark_floor(config_.theme);
-    return style;
-}
-
-void FrameBuilder::add_lesson_marks(const PanelContent& content, const PanelLayout& panel) {
-    paint_failure_marks(list_, content.marks, panel, content.snapshot->box, mark_style());
-}
-
-void FrameBuilder::add_mark_legend(std::size_t index, const PanelContent& content) {
-    const TextSlot* slot = layout_.slot(TextRole::marks, static_cast<int>(index));
-    if (slot == nullptr) return;
-    const MarkWords& words = content.mark_words;
-    const FontAtlas& font = atlas(Font::body);
-    const MarkStyle style = mark_style();
-    const float symbol = std::round(0.75F * font.pixel_height());
-    const float space = std::round(0.35F * font.pixel_height());
-    const float gap = std::round(0.9F * font.pixel_height());
-    const float cy = 0.5F * (slot->rect.y0 + slot->rect.y1);
-    float x = slot->rect.x0;
-    // Each entry whole or not at all: the kinds first, then the count of the unmarked, then the
-    // wrap note.
-    const auto fits = [&](float width) { return x + width <= slot->rect.x1; };
-    for (const MarkLegendItem& item : words.items) {
-        const float need = symbol + space + font.text_width(item.name);
-        if (!fits(need)) return;
-        paint_mark_symbol(list_.over, item.kind, {x + 0.5F * symbol, cy}, symbol, style);
-        draw_text(Font::body, *slot, item.name, palette_.text, Align::left, x + symbol + space);
-        x += need + gap;
-    }
-    if (!words.unmarked.empty()) {
-        const float need = font.text_width(words.unmarked);
-        if (!fits(need)) return;
-        draw_text(Font::body, *slot, words.unmarked, palette_.failure, Align::left, x);
-        x += need + gap;
-    }
-    if (!words.wraps.empty()) {
-        const float sample = 2.0F * symbol;
-        const float need = sample + space + font.text_width(words.wraps);
-        if (!fits(need)) return;
-        const float wall = std::max(1.0F, std::round(font.pixel_height() / 12.0F));
-        add_dashed_line(list_.over, x, x + sample, cy, wall, edge_dash(wall), palette_.wrap_edge);
-        draw_text(Font::body, *slot, words.wraps, palette_.text, Align::left, x + sample + space);
-    }
-}
-
-float FrameBuilder::edge_dash(float wall) noexcept {
+float edge_dash(float wall) noexcept {
     return std::max(4.0F, 3.0F * wall);
 }
 

@@ -39,6 +39,9 @@ void add_ring(OverlayBatch& batch, PointF centre, float radius, float width, Rgb
 /// a dash (the corners drawn), dashes and gaps about `dash` long.
 void add_dashed_frame(OverlayBatch& batch, RectF r, float width, float dash, Rgba8 color);
 
+/// The dash (and gap) length of a periodic edge `wall` pixels thick.
+[[nodiscard]] float edge_dash(float wall) noexcept;
+
 /// A horizontal dashed segment from (x0, y) to (x1, y), `width` thick (the legend's sample).
 void add_dashed_line(OverlayBatch& batch, float x0, float x1, float y, float width, float dash,
                      Rgba8 color);

@@ -138,13 +138,28 @@ inline constexpr float queue_strip_share = 0.3F;
 /// width and the font size, never on the counters' text, so the layout stays put.
 [[nodiscard]] int counter_columns(float panel_width, float font_pixel_height) noexcept;
 
-/// Lays out a frame. Pure and cheap (a few dozen rectangles).
+/// The lesson level's layout (lesson_layout.cpp; the compact form below compact_width). Pure and
+/// cheap (a few dozen rectangles).
+[[nodiscard]] FrameLayout lesson_layout(const LayoutInput& input);
+
+/// The layout of levels full (`with_text`) and none: `boxes.size()` panels side by side; with
+/// text each header holds the title and `counter_rows` rows of counters (lines of
+/// `line_height`), and a strip runs below the panels.
+[[nodiscard]] FrameLayout classic_layout(int frame_width, int frame_height, bool with_text,
+                                         const std::vector<Box>& boxes, float line_height,
+                                         int counter_rows);
+
+/// The layout of `input.level` (tests and tools; each painter calls its level's own function).
 [[nodiscard]] FrameLayout compute_layout(const LayoutInput& input);
 
-/// The full/none layout of today (kept for the `full` level and tests): `boxes.size()` panels
-/// side by side, each header holding the title and `counter_rows` rows of counters.
+/// The full/none layout of `config`'s size and level (tests): classic_layout.
 [[nodiscard]] FrameLayout compute_layout(const RenderConfig& config, const std::vector<Box>& boxes,
                                          float line_height, int counter_rows = 1);
+
+/// Pixels per scene unit for a box in a room of this size (never 0 for a usable room).
+[[nodiscard]] double fit_scale(const Box& box, float room_width, float room_height);
+/// A box of `scale` centred horizontally in [x0, x1] with its top at y0 (whole pixels).
+[[nodiscard]] RectF place_box(const Box& box, double scale, float x0, float x1, float y0);
 
 /// The rectangles as JSON (frame size, level, panels with box and scale, every text slot).
 [[nodiscard]] std::string layout_json(const FrameLayout& layout, int width, int height);

@@ -201,8 +201,8 @@ void FailureMarks::choose(const Snapshot& snapshot, double video_time) {
         candidates[2].push_back({FailureKind::left_box, l->exit.where, l->exit.out, ring, 1.0F});
     }
 
-    const std::array<std::size_t, kinds> shares = fair_shares(
-        {candidates[0].size(), candidates[1].size(), candidates[2].size()}, budget_);
+    const std::array<std::size_t, kinds> shares =
+        fair_shares({candidates[0].size(), candidates[1].size(), candidates[2].size()}, budget_);
     marks_.clear();
     std::size_t total = 0;
     for (std::size_t k = 0; k < kinds; ++k) {

@@ -77,8 +77,8 @@ TEST_CASE("a failure of each kind is drawn with its own mark, and the legend nam
              {FailureKind::missed, FailureKind::overlapping, FailureKind::left_box})
             words.items.push_back({kind, show::failure_name(kind)});
         const Lesson r = render_marks(s, marks, words, theme);
-        test::dump_if_requested(r.image, std::string("marks_by_kind_") +
-                                             std::string(theme_name(theme)));
+        test::dump_if_requested(r.image,
+                                std::string("marks_by_kind_") + std::string(theme_name(theme)));
         const Rgb8 failure = failure_color(theme);
         const PanelLayout& panel = r.layout.panels.at(0);
         const auto near = [&](PointF p, int half) {
@@ -157,8 +157,8 @@ TEST_CASE("a periodic box's edges are dashed, a walled box's solid") {
         bool last = false;
         for (int x = px(panel.box.x0) + 2; x < px(panel.box.x1) - 2; ++x) {
             const Rgb8 c = rgb_at(r.image, x, y);
-            const bool on = std::abs(c.r - edge.r) + std::abs(c.g - edge.g) +
-                                std::abs(c.b - edge.b) < 30;
+            const bool on =
+                std::abs(c.r - edge.r) + std::abs(c.g - edge.g) + std::abs(c.b - edge.b) < 30;
             if (x > px(panel.box.x0) + 2 && on != last) ++changes;
             last = on;
         }

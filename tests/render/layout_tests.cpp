@@ -225,16 +225,16 @@ TEST_CASE("figures have thousands separators") {
     CHECK(with_separators(-45000) == "-45,000");
 }
 
-TEST_CASE("failure markers persist and fade over one second of video, whatever the frame rate") {
+TEST_CASE("failure marks persist and fade over one second of video, whatever the frame rate") {
     for (const int fps : {15, 30, 60}) {
         INFO(fps << " fps");
-        MarkerMemory memory;
+        show::FailureMarks marks;  // the presentation layer keeps them; the painter draws them
         Snapshot s;
         s.time = 0.5;
         s.missed_collisions = {{0.2, 0.3}};
-        memory.update(s, 0.0);
-        REQUIRE(memory.markers().size() == 1);
-        // The time-driven state is held (same time) for a while: the marker is not added again.
+        marks.update(s, 0.0);
+        REQUIRE(marks.marks().size() == 1);
+        // The time-driven state is held (same time) for a while: the mark is not added again.
         s.missed_collisions = {{0.2, 0.3}};
         int frames_alive = 1;
         for (int k = 1; k < 3 * fps; ++k) {
@@ -243,11 +243,10 @@ TEST_CASE("failure markers persist and fade over one second of video, whatever t
                 s.time += 0.04;
                 s.missed_collisions.clear();
             }
-            memory.update(s, video);
-            if (memory.markers().empty()) break;
-            CHECK(memory.markers().size() == 1);
-            CHECK(MarkerMemory::opacity(memory.markers()[0], video) ==
-                  doctest::Approx(1.0 - video).epsilon(1e-6));
+            marks.update(s, video);
+            if (marks.marks().empty()) break;
+            CHECK(marks.marks().size() == 1);
+            CHECK(marks.marks()[0].opacity == doctest::Approx(1.0 - video).epsilon(1e-6));
             ++frames_alive;
         }
         // Alive for one second of video: fps frames (within one frame).

@@ -25,8 +25,8 @@ DiscState disc(Vec2 p, Vec2 v = {}, double r = 0.01) {
 }
 
 std::size_t count_kind(const std::vector<FailureMark>& marks, FailureKind kind) {
-    return static_cast<std::size_t>(
-        std::count_if(marks.begin(), marks.end(), [&](const FailureMark& m) { return m.kind == kind; }));
+    return static_cast<std::size_t>(std::count_if(
+        marks.begin(), marks.end(), [&](const FailureMark& m) { return m.kind == kind; }));
 }
 
 /// A unit box with `missed` missed collisions, `pairs` overlapping pairs and `gone` discs
@@ -42,8 +42,8 @@ Snapshot failing(std::size_t missed, std::size_t pairs, std::size_t gone, double
         s.overlapping_pairs.emplace_back(2 * k, 2 * k + 1);
     }
     for (std::size_t k = 0; k < gone; ++k) {
-        DiscState d = disc({1.2, 0.1 + 0.8 * static_cast<double>(k) / static_cast<double>(gone + 1)},
-                           {1.0, 0.0});
+        DiscState d = disc(
+            {1.2, 0.1 + 0.8 * static_cast<double>(k) / static_cast<double>(gone + 1)}, {1.0, 0.0});
         d.escaped = true;
         s.discs.push_back(d);
     }

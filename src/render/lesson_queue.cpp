@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "frame_builder.hpp"
+#include "lesson_painter.hpp"
 
 namespace collide::render {
 
@@ -74,18 +74,18 @@ bool clip_to(RectF r, PointF& a, PointF& b) {
 
 }  // namespace
 
-Rgba8 FrameBuilder::next_color() const noexcept {
+Rgba8 LessonPainter::next_color() const noexcept {
     return with_alpha(next_event_color(config_.theme), 255);
 }
 
-float FrameBuilder::pop_highlight(const QueuedEvent& popped, double now) const noexcept {
+float LessonPainter::pop_highlight(const QueuedEvent& popped, double now) const noexcept {
     if (!(speed_ > 0.0)) return 0.0F;
     const double age = (now - popped.t) / (queue_pop_seconds * speed_);
     return static_cast<float>(std::clamp(1.0 - age, 0.0, 1.0));
 }
 
-void FrameBuilder::add_plate_label(Font font, PointF at, std::string_view text, Rgba8 color,
-                                   RectF inside) {
+void LessonPainter::add_plate_label(Font font, PointF at, std::string_view text, Rgba8 color,
+                                    RectF inside) {
     const FontAtlas& f = atlas(font);
     const float pad = std::round(0.2F * f.pixel_height());
     const float w = f.text_width(text) + 2.0F * pad;
@@ -118,7 +118,7 @@ void FrameBuilder::add_plate_label(Font font, PointF at, std::string_view text, 
 
 // Lines between the discs of the next collisions, ticks on the walls, each with its time to go;
 // the next one thick and in the highlight colour, the later ones thinner and fainter.
-void FrameBuilder::add_queue_in_box(const Snapshot& snapshot, const PanelLayout& panel) {
+void LessonPainter::add_queue_in_box(const Snapshot& snapshot, const PanelLayout& panel) {
     if (intro_) return;
     const QueueView& queue = *snapshot.queue;
     const Box& box = snapshot.box;
@@ -207,7 +207,8 @@ void FrameBuilder::add_queue_in_box(const Snapshot& snapshot, const PanelLayout&
 }
 
 // The strip: a heading, the latest pops on the left, the queue itself on the right.
-void FrameBuilder::add_queue_strip(const Snapshot& snapshot, const QueueWords& words, RectF strip) {
+void LessonPainter::add_queue_strip(const Snapshot& snapshot, const QueueWords& words,
+                                    RectF strip) {
     const QueueView& queue = *snapshot.queue;
     const FontAtlas& small = *small_font_;
     const float line = std::round(small.pixel_height() * 1.2F);
@@ -235,8 +236,8 @@ void FrameBuilder::add_queue_strip(const Snapshot& snapshot, const QueueWords& w
 
 // The latest pops, newest first: the one just popped in the highlight colour (fading), stale
 // ones greyed with the engine's words (QueueWords, from collide/show); the counts at the bottom.
-void FrameBuilder::add_popped(const QueueView& queue, const QueueWords& words, double now,
-                              RectF area) {
+void LessonPainter::add_popped(const QueueView& queue, const QueueWords& words, double now,
+                               RectF area) {
     const FontAtlas& small = *small_font_;
     const float line = std::round(small.pixel_height() * 1.2F);
     const auto slot = [&](float y) {
@@ -270,15 +271,15 @@ void FrameBuilder::add_popped(const QueueView& queue, const QueueWords& words, d
     draw_text(Font::small, slot(bottom), words.counts, palette_.muted);
 }
 
-float FrameBuilder::node_width(const std::vector<QueuedEvent>& events) const {
+float LessonPainter::node_width(const std::vector<QueuedEvent>& events) const {
     const FontAtlas& small = *small_font_;
     float widest = small.text_width("0.0000");  // the longest time to go, "stale"
     for (const QueuedEvent& e : events) widest = std::max(widest, small.text_width(event_label(e)));
     return std::round(widest + 0.8F * small.pixel_height());
 }
 
-void FrameBuilder::add_queue_node(const QueuedEvent& event, const QueueWords& words, double now,
-                                  RectF node, Rgba8 frame_color, bool stale) {
+void LessonPainter::add_queue_node(const QueuedEvent& event, const QueueWords& words, double now,
+                                   RectF node, Rgba8 frame_color, bool stale) {
     const FontAtlas& small = *small_font_;
     list_.over.add_rect(node, palette_.box_fill);
     list_.over.add_frame(node, frame_color.a == 255 && !stale ? 2.0F : 1.0F, frame_color);
@@ -297,8 +298,8 @@ void FrameBuilder::add_queue_node(const QueuedEvent& event, const QueueWords& wo
 
 // The event just popped, beside the root it was a moment ago, fading out with an arrow away
 // from the tree: "remove the min = get next collision", seen as it happens.
-void FrameBuilder::add_leaving_root(const QueueView& queue, const QueueWords& words, double now,
-                                    PointF root, float node_w, float node_h) {
+void LessonPainter::add_leaving_root(const QueueView& queue, const QueueWords& words, double now,
+                                     PointF root, float node_w, float node_h) {
     if (queue.popped.empty()) return;
     const QueuedEvent& e = queue.popped.back();
     const float glow = pop_highlight(e, now);
@@ -332,8 +333,8 @@ void FrameBuilder::add_leaving_root(const QueueView& queue, const QueueWords& wo
 
 // A heap's top levels: slot i's children are d i + 1 .. d i + d; the root (the next pop) framed
 // in the highlight colour, stale entries greyed.
-void FrameBuilder::add_queue_tree(const QueueView& queue, const QueueWords& words, double now,
-                                  RectF area) {
+void LessonPainter::add_queue_tree(const QueueView& queue, const QueueWords& words, double now,
+                                   RectF area) {
     if (queue.slots.empty() || queue.levels == 0) return;
     const FontAtlas& small = *small_font_;
     const std::size_t d = std::max<unsigned>(queue.arity, 2);
@@ -388,8 +389,8 @@ void FrameBuilder::add_queue_tree(const QueueView& queue, const QueueWords& word
 
 // An array queue's first slots in a row: the ordered array from its top (the next event first),
 // the unordered array as stored, with where its next event lies (every pop scans for it).
-void FrameBuilder::add_queue_row(const QueueView& queue, const QueueWords& words, double now,
-                                 RectF area) {
+void LessonPainter::add_queue_row(const QueueView& queue, const QueueWords& words, double now,
+                                  RectF area) {
     const FontAtlas& small = *small_font_;
     const float line = std::round(small.pixel_height() * 1.2F);
     const bool ordered = queue.shape == QueueShape::ordered_array;

@@ -1,0 +1,154 @@
+// The full level (today's expert layout): a header of title and counters above each box, a strip
+// of clock, legend and plots below the panels.
+#include "full_painter.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "plots.hpp"
+
+namespace collide::render {
+
+namespace {
+
+std::string join(const std::vector<std::string>& parts, const char* separator) {
+    std::string out;
+    for (const std::string& part : parts) {
+        if (!out.empty()) out += separator;
+        out += part;
+    }
+    return out;
+}
+
+}  // namespace
+
+FullPainter::FullPainter(const RenderConfig& config) : MinimalPainter(config) {
+    load_font(body_font_, font_pixel_height(config_.height));
+    use_classic_style();
+}
+
+FrameLayout FullPainter::layout_for(const FrameContent& frame) const {
+    return classic_layout(config_.width, config_.height, true, panel_boxes(frame),
+                          font_pixel_height(config_.height) * 1.2F, counter_rows(frame));
+}
+
+void FullPainter::begin_frame(const FrameContent& frame) {
+    counter_rows_ = counter_rows(frame);
+}
+
+Rgba8 FullPainter::counter_color() const noexcept {
+    // The full level's dimmer counter grey on dark; the theme's text colour on light.
+    return config_.theme == Theme::dark ? Rgba8{190, 190, 200, 255} : palette_.text;
+}
+
+int FullPainter::panel_counter_columns(std::size_t panels) const {
+    const float panel_width =
+        static_cast<float>(config_.width) / static_cast<float>(std::max<std::size_t>(panels, 1));
+    return counter_columns(panel_width, body_font_->pixel_height());
+}
+
+/// Rows of the counter grid: enough for the panel with the most counters, but the header never
+/// takes more than about 30% of the frame height (counters come most important first).
+int FullPainter::counter_rows(const FrameContent& frame) const {
+    const auto columns = static_cast<std::size_t>(panel_counter_columns(frame.panels.size()));
+    std::size_t rows = 0;
+    for (const PanelContent& panel : frame.panels) {
+        rows = std::max(rows, (panel.counters.size() + columns - 1) / columns);
+    }
+    const float line = body_font_->line_height();
+    const auto fit = static_cast<std::size_t>(
+        std::max(0.0F, std::floor(0.30F * static_cast<float>(config_.height) / line) - 1.0F));
+    return static_cast<int>(std::min(rows, fit));
+}
+
+// The header: the title, then the counters in a grid, row by row.
+void FullPainter::add_panel_text(std::size_t /*index*/, const PanelContent& content,
+                                 const PanelLayout& panel) {
+    const FontAtlas& font = *body_font_;
+    OverlayBatch& text = list_.text[0].glyphs;
+    const float baseline = panel.header.y0 + font.ascent();
+    font.add_text(text, panel.header.x0, baseline, content.title, palette_.title);
+    const int columns = panel_counter_columns(layout_.panels.size());
+    const float column_width = (panel.header.x1 - panel.header.x0) / static_cast<float>(columns);
+    const std::size_t shown =
+        std::min(content.counters.size(),
+                 static_cast<std::size_t>(columns) * static_cast<std::size_t>(counter_rows_));
+    for (std::size_t k = 0; k < shown; ++k) {
+        const auto column = static_cast<float>(k % static_cast<std::size_t>(columns));
+        const auto row = static_cast<float>(1 + k / static_cast<std::size_t>(columns));
+        font.add_text(text, panel.header.x0 + column * column_width,
+                      baseline + row * font.line_height(), content.counters[k], counter_color());
+    }
+}
+
+// The strip: clock and legend, the speed histogram, the energy drift plot, the notice line.
+void FullPainter::finish_frame(const FrameContent& frame) {
+    const FontAtlas& font = *body_font_;
+    OverlayBatch& text = list_.text[0].glyphs;
+    const RectF strip = layout_.strip;
+    const float m = layout_.margin * 1.5F;
+    const float line = font.line_height();
+    const RectF columns{strip.x0 + m, strip.y0 + m * 0.5F, strip.x1 - m,
+                        strip.y1 - m * 0.5F - line};
+    const float info_width = 0.26F * columns.width();
+    const float plot_width = 0.5F * (columns.width() - info_width) - m;
+    const RectF info{columns.x0, columns.y0, columns.x0 + info_width - m, columns.y1};
+    const RectF histogram{info.x1 + m, columns.y0, info.x1 + m + plot_width, columns.y1};
+    const RectF drift{histogram.x1 + 2.0F * m, columns.y0, columns.x1, columns.y1};
+
+    font.add_text(text, info.x0, info.y0 + font.ascent(), frame.time_text, palette_.title);
+    add_legend(info);
+    std::vector<const Snapshot*> snapshots;
+    for (const PanelContent& panel : frame.panels) snapshots.push_back(panel.snapshot);
+    // Each panel's series in its engine's accent, whichever panels the frame has.
+    const std::vector<Rgb8> series_colors = accents(frame);
+    draw_speed_plot(list_.over, text, font, histogram, snapshots, series_colors, config_.speed_min,
+                    config_.speed_max, plot_colors(config_.theme));
+    draw_drift_plot(list_.over, text, font, drift, frame.energy_drift, series_colors,
+                    plot_colors(config_.theme));
+    const float notes_baseline = strip.y1 - m * 0.5F - line + font.ascent();
+    font.add_text(text, columns.x0, notes_baseline, join(frame.notes, "   \xC2\xB7   "),
+                  counter_color());
+}
+
+// Colour bar with its fixed range (speed or mass modes) or the tag key.
+void FullPainter::add_legend(RectF info) {
+    const FontAtlas& font = *body_font_;
+    OverlayBatch& text = list_.text[0].glyphs;
+    const Rgba8 counter = counter_color();
+    const float line = font.line_height();
+    float y = info.y0 + line * 1.3F;
+    if (config_.color_mode == ColorMode::speed || config_.color_mode == ColorMode::mass) {
+        const bool speed = config_.color_mode == ColorMode::speed;
+        const double low = speed ? config_.speed_min : config_.mass_min;
+        const double high = speed ? config_.speed_max : config_.mass_max;
+        const float bar_height = std::max(4.0F, std::round(line * 0.5F));
+        constexpr int segments = 32;
+        const float bar_width = info.width();
+        for (int s = 0; s < segments; ++s) {
+            const float x0 = info.x0 + bar_width * static_cast<float>(s) / segments;
+            const float x1 = info.x0 + bar_width * static_cast<float>(s + 1) / segments;
+            const Rgb8 c = colormap((s + 0.5) / segments);
+            list_.over.add_rect({x0, y, x1 + 0.5F, y + bar_height}, with_alpha(c, 255));
+        }
+        y += bar_height + font.ascent();
+        char low_text[32];
+        char high_text[32];
+        std::snprintf(low_text, sizeof low_text, "%.3g", low);
+        std::snprintf(high_text, sizeof high_text, "%.3g", high);
+        font.add_text(text, info.x0, y, low_text, counter);
+        const std::string caption = speed ? "speed" : "mass (log)";
+        font.add_text(text, info.x0 + 0.5F * (bar_width - font.text_width(caption)), y, caption,
+                      counter);
+        font.add_text(text, info.x1 - font.text_width(high_text), y, high_text, counter);
+    } else if (config_.color_mode == ColorMode::tag) {
+        const float size = std::round(line * 0.6F);
+        list_.over.add_rect({info.x0, y, info.x0 + size, y + size}, with_alpha(tagged_color, 255));
+        font.add_text(text, info.x0 + size * 1.5F, y + size, "tagged", counter);
+    }
+}
+
+}  // namespace collide::render

@@ -1,0 +1,213 @@
+// The lesson level's layout (layout.hpp): title above each box, figures (and a note) below it,
+// the column beside the boxes, the caption line, the queue strip; the compact form below
+// compact_width. Pure arithmetic.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "layout.hpp"
+
+namespace collide::render {
+
+namespace {
+
+/// The lesson form below compact_width: boxes fill the frame under one line per panel.
+FrameLayout compact_layout(const LayoutInput& in, float body) {
+    FrameLayout layout;
+    layout.level = OverlayLevel::lesson;
+    layout.compact = true;
+    layout.body_pixel_height = body;
+    layout.headline_pixel_height = body;
+    const auto width = static_cast<float>(in.width);
+    const auto height = static_cast<float>(in.height);
+    const float m = std::max(2.0F, std::round(std::min(width, height) * 0.012F));
+    layout.margin = m;
+    const float line = std::round(body * 1.2F);
+    const auto n = static_cast<float>(in.boxes.size());
+    const float room_w = (width - (n + 1.0F) * m) / n;
+    const float top = m + line + std::max(3.0F, m);  // clear of the box's wall
+    const float room_h = height - top - m;
+    for (std::size_t i = 0; i < in.boxes.size(); ++i) {
+        PanelLayout panel;
+        const float x0 = m + static_cast<float>(i) * (room_w + m);
+        panel.area = {x0 - 0.5F * m, 0.0F, x0 + room_w + 0.5F * m, height};
+        panel.scale = fit_scale(in.boxes[i], room_w, room_h);
+        panel.box = place_box(in.boxes[i], panel.scale, x0, x0 + room_w, top);
+        layout.panels.push_back(panel);
+        layout.text.push_back(
+            {TextRole::figures, static_cast<int>(i), {x0, m, x0 + room_w, m + line}, body});
+    }
+    return layout;
+}
+
+}  // namespace
+
+FrameLayout lesson_layout(const LayoutInput& in) {
+    const float body = lesson_pixel_height(in.width, in.height);
+    if (in.width < compact_width) return compact_layout(in, body);
+    FrameLayout layout;
+    layout.level = OverlayLevel::lesson;
+    const float head = std::round(body * headline_scale);
+    layout.body_pixel_height = body;
+    layout.headline_pixel_height = head;
+    const auto width = static_cast<float>(in.width);
+    const auto height = static_cast<float>(in.height);
+    const float m = std::max(3.0F, std::round(height * 0.014F));
+    layout.margin = m;
+    const float line = std::round(body * 1.25F);
+    const float head_line = std::round(head * 1.2F);
+    const float gap = std::round(0.6F * m);
+
+    // Vertical: title | box | figures (| note) (| marks) ... caption.
+    const float box_top = m + line + gap;
+    const auto wants_marks = [&](std::size_t i) {
+        return i < in.mark_lines.size() && in.mark_lines[i];
+    };
+    const bool mark_line = wants_marks(0) || wants_marks(1);
+    const float below = gap + head_line + (in.note_line ? line : 0.0F) + (mark_line ? line : 0.0F);
+    const float caption_top = height - m - line;
+    const bool queue = in.queue_panel >= 0 && in.queue_panel < static_cast<int>(in.boxes.size());
+    const float queue_h = queue ? std::round(queue_strip_share * height) : 0.0F;
+    const float room_h = caption_top - gap - below - box_top - (queue ? queue_h + gap : 0.0F);
+    // Horizontal: [m box m column m box m] or [m box m column m].
+    const auto n = static_cast<float>(in.boxes.size());
+    const float column_w =
+        std::round(in.large_plot ? 0.30F * width : std::max(0.15F * width, 6.5F * body));
+    const float room_w = (width - column_w - (n + 2.0F) * m) / n;
+
+    double scale = std::numeric_limits<double>::max();
+    for (const Box& box : in.boxes) scale = std::min(scale, fit_scale(box, room_w, room_h));
+    float used_w = column_w + (n + 2.0F) * m;
+    float used_h = 0.0F;
+    for (const Box& box : in.boxes) {
+        used_w += static_cast<float>(box.width * scale);
+        used_h = std::max(used_h, static_cast<float>(box.height * scale));
+    }
+    const float dx = std::round(0.5F * (width - used_w));
+    const float dy = std::round(0.5F * (room_h - used_h));  // centre the stack vertically
+
+    float x = dx + m;
+    std::vector<float> box_x0;
+    float column_x0 = 0.0F;
+    for (std::size_t i = 0; i < in.boxes.size(); ++i) {
+        if (i == 1) {  // the column sits between two boxes
+            column_x0 = x;
+            x += column_w + m;
+        }
+        box_x0.push_back(x);
+        x += static_cast<float>(in.boxes[i].width * scale) + m;
+    }
+    if (in.boxes.size() == 1) column_x0 = x;
+    const float column_mid = column_x0 + 0.5F * column_w;
+
+    const float top = box_top + dy;
+    for (std::size_t i = 0; i < in.boxes.size(); ++i) {
+        PanelLayout panel;
+        panel.scale = scale;
+        const float bw = static_cast<float>(in.boxes[i].width * scale);
+        panel.box = place_box(in.boxes[i], scale, box_x0[i], box_x0[i] + bw, top);
+        // Text of a panel may reach to the column's middle (two panels) or the frame's edge.
+        const bool left_of_column = i == 0 && in.boxes.size() == 2;
+        const float text_x0 = left_of_column ? std::max(m, panel.box.x0 - m)
+                                             : (i == 0 ? panel.box.x0 : column_mid + 0.5F * m);
+        // The right one of two panels may reach the frame's edge; a single panel's text stops
+        // short of the column on its right.
+        const float text_x1 = left_of_column         ? column_mid - 0.5F * m
+                              : in.boxes.size() == 2 ? width - m
+                                                     : std::min(width - m, panel.box.x1 + m);
+        panel.area = {left_of_column ? 0.0F : (i == 0 ? 0.0F : column_mid), 0.0F,
+                      left_of_column ? column_mid : width, caption_top - gap};
+        const int p = static_cast<int>(i);
+        // The left title and note may start at the frame's margin: when the boxes are inset (the
+        // queue strip makes them smaller) "Time-driven: steps of dt = ..." still fits a line.
+        const float title_x0 = left_of_column ? m : text_x0;
+        layout.text.push_back(
+            {TextRole::title, p, {title_x0, top - gap - line, text_x1, top - gap}, body});
+        float y = std::max(panel.box.y1, top) + gap;
+        // Figures stay under their own box, so the two panels' rows cannot run together.
+        const float figures_x0 = left_of_column ? text_x0 : std::max(text_x0, panel.box.x0);
+        const float figures_x1 = left_of_column ? std::min(text_x1, panel.box.x1) : text_x1;
+        layout.text.push_back(
+            {TextRole::figures, p, {figures_x0, y, figures_x1, y + head_line}, head});
+        y += head_line;
+        if (in.note_line) {
+            layout.text.push_back({TextRole::note, p, {title_x0, y, text_x1, y + line}, body});
+            y += line;
+        }
+        if (mark_line) {
+            const float x1 = left_of_column && !wants_marks(1) ? width - m : text_x1;
+            if (wants_marks(i))
+                layout.text.push_back({TextRole::marks, p, {title_x0, y, x1, y + line}, body});
+            y += line;
+        }
+        if (queue && p == in.queue_panel) {
+            // Under the figures, across the frame: a tree of events needs the width.
+            layout.queue_panel = p;
+            layout.queue_strip = {m, y + gap, width - m, y + gap + queue_h};
+            layout.text.push_back({TextRole::queue, p, layout.queue_strip, body});
+        }
+        layout.panels.push_back(panel);
+    }
+    const float box_bottom = top + used_h;
+    layout.text.push_back({TextRole::caption, -1, {m, caption_top, width - m, height - m}, body});
+
+    // The column: clock, "work so far", one bar per panel (label, bar, value), energy, colour
+    // legend, plot. Groups that do not fit are left out, least important last.
+    ColumnLayout& column = layout.column;
+    column.area = {column_x0, top, column_x0 + column_w, box_bottom};
+    const float bar_h = std::round(0.45F * line);
+    float y = top;
+    const auto fits = [&](float h) { return y + h <= column.area.y1; };
+    const auto add = [&](TextRole role, int panel, float h, float px) {
+        layout.text.push_back({role, panel, {column_x0, y, column_x0 + column_w, y + h}, px});
+        y += h;
+    };
+    if (fits(line)) add(TextRole::clock, -1, line, body);
+    const auto panels = static_cast<float>(in.boxes.size());
+    // Beside a small plot the work figures are body sized: the plot needs the height.
+    const float value_line = in.small_plot ? line : head_line;
+    const float value_px = in.small_plot ? body : head;
+    const float cost_h = gap + line + panels * (line + bar_h + gap + value_line);
+    const float energy_h = gap + 2.0F * line;
+    if (in.large_plot) {
+        // The plot is the subject: it comes first and takes what the energy line leaves, and
+        // the cost graphic's room too unless the plot keeps at least 7 lines beside it.
+        const float rest = column.area.y1 - y - energy_h;
+        const bool with_cost = rest - cost_h >= 7.0F * line;
+        const float h = std::max(0.0F, with_cost ? rest - cost_h : rest);
+        column.plot = {column_x0, y + gap, column_x0 + column_w, y + h};
+        y += h;
+    }
+    if (fits(cost_h)) {
+        y += gap;
+        add(TextRole::cost_heading, -1, line, body);
+        const float bars_top = y;
+        for (std::size_t i = 0; i < in.boxes.size(); ++i) {
+            add(TextRole::cost_label, static_cast<int>(i), line, body);
+            y += bar_h + gap;  // the bar itself
+            add(TextRole::cost_value, static_cast<int>(i), value_line, value_px);
+        }
+        column.bars = {column_x0, bars_top, column_x0 + column_w, y};
+    }
+    if (fits(energy_h)) {
+        y += gap;
+        add(TextRole::energy, -1, line, body);  // "Energy" / "conserved": two narrow lines
+        add(TextRole::energy, -1, line, body);
+    }
+    if (in.color_legend && fits(gap + bar_h + line)) {
+        y += gap;
+        column.legend_bar = {column_x0, y, column_x0 + column_w, y + bar_h};
+        y += bar_h;
+        add(TextRole::legend, -1, line, body);
+    }
+    y += gap;
+    // A small plot may reach down beside the figures row: the figures stay under their own box,
+    // so that strip between (or beside) the boxes is free.
+    const float plot_bottom = in.small_plot ? column.area.y1 + gap + head_line : column.area.y1;
+    if (!in.large_plot && plot_bottom - y > 3.0F * line) {
+        column.plot = {column_x0, y, column_x0 + column_w, plot_bottom};
+    }
+    return layout;
+}
+
+}  // namespace collide::render

@@ -1,0 +1,72 @@
+#pragma once
+// Internal: the painter of overlay level lesson (docs/renderer.md): per panel a title line above
+// its box and a row of headline figures below it, a column beside the boxes (clock, cost graphic,
+// energy, colour legend, plot), a caption line, the title card, the failure marks chosen by the
+// presentation layer (a ring, a cross, an arrow out of the edge) with their legend under the
+// box, and the event queue (`--queue`). Below compact_width one line of text per panel. Its
+// files: lesson_painter.cpp (the phases, panel text), lesson_layout.cpp (where things go),
+// lesson_marks.cpp (the marks' style and legend), lesson_column.cpp (column and title card),
+// lesson_queue.cpp (the event queue).
+
+#include <cstddef>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "failure_marks.hpp"
+#include "painter.hpp"
+
+namespace collide::render {
+
+/// How long an event popped off a panel's queue stays highlighted, in seconds of video.
+inline constexpr double queue_pop_seconds = 0.8;
+/// The queue strip's small text against the lesson body text.
+inline constexpr float queue_text_scale = 0.7F;
+
+class LessonPainter : public Painter {
+  public:
+    /// Loads the body font (and the headline font outside the compact form). Throws
+    /// collide::Error (runtime) when the font cannot be loaded.
+    explicit LessonPainter(const RenderConfig& config);
+
+    [[nodiscard]] FrameLayout layout_for(const FrameContent& frame) const override;
+
+  private:
+    void begin_frame(const FrameContent& frame) override;
+    void add_marks(std::size_t index, const PanelContent& content,
+                   const PanelLayout& panel) override;
+    void add_panel_text(std::size_t index, const PanelContent& content,
+                        const PanelLayout& panel) override;
+    void finish_frame(const FrameContent& frame) override;
+
+    void choose_colormap_range();
+    // Failure marks and their legend (lesson_marks.cpp; the shapes: failure_marks.hpp).
+    [[nodiscard]] MarkStyle mark_style() const;
+    void add_mark_legend(std::size_t index, const PanelContent& content);
+    // The column and the title card (lesson_column.cpp).
+    void add_column(const FrameContent& frame);
+    void add_intro(const FrameContent& frame);
+    // The event queue (Snapshot::queue; lesson_queue.cpp).
+    void add_queue_in_box(const Snapshot& snapshot, const PanelLayout& panel);
+    void add_queue_strip(const Snapshot& snapshot, const QueueWords& words, RectF strip);
+    void add_popped(const QueueView& queue, const QueueWords& words, double now, RectF area);
+    void add_queue_tree(const QueueView& queue, const QueueWords& words, double now, RectF area);
+    void add_queue_row(const QueueView& queue, const QueueWords& words, double now, RectF area);
+    void add_leaving_root(const QueueView& queue, const QueueWords& words, double now, PointF root,
+                          float node_w, float node_h);
+    void add_queue_node(const QueuedEvent& event, const QueueWords& words, double now, RectF node,
+                        Rgba8 frame_color, bool stale);
+    /// A label centred at `at` on a plate of the box colour, kept inside `inside`.
+    void add_plate_label(Font font, PointF at, std::string_view text, Rgba8 color, RectF inside);
+    [[nodiscard]] float pop_highlight(const QueuedEvent& popped, double now) const noexcept;
+    [[nodiscard]] Rgba8 next_color() const noexcept;
+    /// A queue node as wide as the widest label among `events` (and a time to go).
+    [[nodiscard]] float node_width(const std::vector<QueuedEvent>& events) const;
+
+    double video_time_ = 0.0;
+    double speed_ = 0.0;         // simulation time per second of video (FrameContent::speed)
+    std::vector<RectF> labels_;  // queue labels placed in the current box (add_plate_label)
+    bool intro_ = false;         // the title card covers this frame: no other text
+};
+
+}  // namespace collide::render

@@ -1,0 +1,261 @@
+// What every painter shares: the phases of a frame, fonts and text, the box, disc colours and
+// discs. Everything here is plain CPU arithmetic.
+#include "painter.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "collide/assert.hpp"
+#include "failure_marks.hpp"
+
+namespace collide::render {
+
+namespace {
+
+constexpr Rgb8 untagged_color{120, 122, 135};
+constexpr Rgba8 escaped_ring_color{255, 70, 70, 255};
+
+}  // namespace
+
+Painter::Painter(const RenderConfig& config) : config_(config), palette_(palette(config.theme)) {
+    config_.validate();
+    list_.background = palette_.background;
+    list_.fill_color = palette_.box_fill;
+}
+
+void Painter::load_font(std::optional<FontAtlas>& slot, float pixel_height) {
+    slot.emplace(config_.font_path, pixel_height);
+    list_.text.push_back({&*slot, {}});
+}
+
+const FontAtlas& Painter::atlas(Font font) const {
+    if (font == Font::head && head_font_) return *head_font_;
+    if (font == Font::small && small_font_) return *small_font_;
+    return *body_font_;
+}
+
+float Painter::body_pixel_height() const noexcept {
+    return body_font_ ? body_font_->pixel_height() : 0.0F;
+}
+
+std::vector<Box> Painter::panel_boxes(const FrameContent& frame) {
+    std::vector<Box> boxes;
+    for (const PanelContent& panel : frame.panels) {
+        boxes.push_back(panel.snapshot != nullptr ? panel.snapshot->box : Box{});
+    }
+    return boxes;
+}
+
+std::vector<Rgb8> Painter::accents(const FrameContent& frame) {
+    std::vector<Rgb8> out;
+    out.reserve(frame.panels.size());
+    for (const PanelContent& panel : frame.panels) out.push_back(panel.accent);
+    return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The phases of a frame
+
+const DrawList& Painter::build(const FrameContent& frame) {
+    COLLIDE_ASSERT(!frame.panels.empty() && frame.panels.size() <= 2, "a frame has 1 or 2 panels");
+    for (const PanelContent& panel : frame.panels) {
+        COLLIDE_ASSERT(panel.snapshot != nullptr, "every panel has a snapshot");
+    }
+    list_.clear();
+    layout_ = layout_for(frame);
+    begin_frame(frame);
+    if (trails_.size() != frame.panels.size()) {
+        trails_.assign(frame.panels.size(),
+                       TrailHistory(config_.trail_length, config_.trail_whole_path));
+    }
+    for (std::size_t i = 0; i < frame.panels.size(); ++i) {
+        paint_panel(i, frame.panels[i], layout_.panels[i]);
+    }
+    finish_frame(frame);
+    return list_;
+}
+
+void Painter::paint_panel(std::size_t index, const PanelContent& content,
+                          const PanelLayout& panel) {
+    const Snapshot& snapshot = *content.snapshot;
+    const Box& box = snapshot.box;
+    add_box(panel, box);
+    colors_.resize(snapshot.discs.size());
+    for (std::size_t k = 0; k < snapshot.discs.size(); ++k) {
+        colors_[k] = disc_color(snapshot.discs[k]);
+    }
+    if (config_.trails) {
+        trails_[index].update(snapshot);
+        const auto to_pixels = [&](Vec2 p) { return panel.to_pixels(p, box); };
+        if (style_.legible_trails) {  // every trail keeps 3:1 down to its faintest segment
+            const float fade =
+                legible_trails(colors_, snapshot.discs, config_.theme, trail_colors_);
+            trails_[index].draw(list_.under, box, to_pixels, trail_colors_, style_.trail_width,
+                                std::max(fade, style_.trail_fade));
+        } else {
+            trails_[index].draw(list_.under, box, to_pixels, colors_, style_.trail_width,
+                                style_.trail_fade);
+        }
+    }
+    add_discs(snapshot, panel);
+    add_marks(index, content, panel);
+    const bool clip_to_box = style_.clip_to_box || box.boundary == Boundary::periodic;
+    list_.disc_groups.push_back({list_.discs.size(), clip_to_box ? panel.box : panel.area});
+    add_panel_text(index, content, panel);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The box
+
+void Painter::add_box(const PanelLayout& panel, const Box& box) {
+    add_box_fill(panel.box);
+    const float wall = style_.wall;
+    const RectF outline{panel.box.x0 - wall, panel.box.y0 - wall, panel.box.x1 + wall,
+                        panel.box.y1 + wall};
+    if (box.boundary == Boundary::periodic && style_.dashed_periodic_edges) {
+        // Dashed: the edges are no walls, discs pass through and come back on the other side.
+        add_dashed_frame(list_.under, outline, wall, edge_dash(wall), palette_.wrap_edge);
+        return;
+    }
+    list_.under.add_frame(outline, wall,
+                          box.boundary == Boundary::walls ? palette_.wall : palette_.periodic_edge);
+}
+
+// The opaque box background, as if drawn with under.add_rect(box, fill). Shading ~0.7 Mpx of
+// blended quad cost llvmpipe ~1.8 ms CPU per 720p frame; clearing the interior is a memory fill
+// (GlTarget::clear_background). A quad covers the pixels whose centres lie inside it: every
+// pixel of the integer interior [ceil x0, floor x1) x [ceil y0, floor y1) is at least half a
+// pixel inside, so the clear paints the same pixels there; the strips outside the interior keep
+// the quad's own (possibly fractional) outer edges, so the rasteriser decides those pixels.
+void Painter::add_box_fill(RectF box) {
+    const RectF inner{std::ceil(box.x0), std::ceil(box.y0), std::floor(box.x1), std::floor(box.y1)};
+    if (!(inner.x0 < inner.x1 && inner.y0 < inner.y1)) {
+        list_.under.add_rect(box, palette_.box_fill);
+        return;
+    }
+    list_.fill_clears.push_back(inner);
+    const auto strip = [&](RectF r) {
+        if (r.x0 < r.x1 && r.y0 < r.y1) list_.under.add_rect(r, palette_.box_fill);
+    };
+    strip({box.x0, box.y0, inner.x0, box.y1});      // left, full height
+    strip({inner.x1, box.y0, box.x1, box.y1});      // right, full height
+    strip({inner.x0, box.y0, inner.x1, inner.y0});  // top, between the two
+    strip({inner.x0, inner.y1, inner.x1, box.y1});  // bottom, between the two
+}
+
+// ---------------------------------------------------------------------------------------------
+// Discs
+
+Rgb8 Painter::disc_color(const DiscState& disc) const noexcept {
+    switch (config_.color_mode) {
+        case ColorMode::scene:
+            return away_from_failure_color(disc.color);
+        case ColorMode::speed:
+            return shown_colormap((norm(disc.velocity) - config_.speed_min) /
+                                  (config_.speed_max - config_.speed_min));
+        case ColorMode::mass: {
+            if (!(config_.mass_max > config_.mass_min)) return shown_colormap(0.5);
+            return shown_colormap(std::log(disc.mass / config_.mass_min) /
+                                  std::log(config_.mass_max / config_.mass_min));
+        }
+        case ColorMode::tag:
+            return disc.tagged ? tagged_color : untagged_color;
+    }
+    return disc.color;
+}
+
+Rgb8 Painter::shown_colormap(double t) const noexcept {
+    if (!(t > 0.0)) t = 0.0;
+    if (t > 1.0) t = 1.0;
+    return colormap(colormap_low_ + (colormap_high_ - colormap_low_) * t);
+}
+
+void Painter::add_discs(const Snapshot& snapshot, const PanelLayout& panel) {
+    const Box& box = snapshot.box;
+    const bool periodic = box.boundary == Boundary::periodic;
+    const Rgb8 fill = rgb(palette_.box_fill);
+    // Outlines only where a colour is too close to the box (contrast is checked once per colour
+    // run: scenes have a handful of colours, colormaps change slowly).
+    // Colormap colours are all clear of the box already (LessonPainter::choose_colormap_range)
+    // unless no part of the map was: then, and for scene and tag colours, each colour is checked.
+    const bool mapped =
+        config_.color_mode == ColorMode::speed || config_.color_mode == ColorMode::mass;
+    const bool check = style_.outline_faint_discs && !(mapped && colormap_clear_);
+    Rgb8 last_color{0, 0, 0};
+    bool last_needs_outline = check && contrast_ratio(last_color, fill) < min_disc_contrast;
+    for (std::size_t k = 0; k < snapshot.discs.size(); ++k) {
+        const DiscState& disc = snapshot.discs[k];
+        if (style_.escaped_as_marks && disc.escaped) continue;  // marked at the box edge instead
+        const Rgb8 c = colors_[k];
+        if (check && (c.r != last_color.r || c.g != last_color.g || c.b != last_color.b)) {
+            last_color = c;
+            last_needs_outline = contrast_ratio(c, fill) < min_disc_contrast;
+        }
+        const Rgba8 color = with_alpha(c, 255);
+        const auto radius = static_cast<float>(disc.radius * panel.scale);
+        Vec2 position = disc.position;
+        if (disc.escaped) {
+            const double slack_x = (panel.box.x0 - panel.area.x0) / panel.scale - disc.radius;
+            const double slack_y = (panel.box.y0 - panel.area.y0) / panel.scale - disc.radius;
+            position.x =
+                std::clamp(position.x, -std::max(0.0, slack_x), box.width + std::max(0.0, slack_x));
+            position.y = std::clamp(position.y, -std::max(0.0, slack_y),
+                                    box.height + std::max(0.0, slack_y));
+        }
+        const PointF p = panel.to_pixels(position, box);
+        list_.discs.push_back({p.x, p.y, radius, 0.0F, color});
+        if (periodic) add_periodic_images(disc, panel, box, color, 0.0F);
+        if (last_needs_outline && radius >= 2.0F) {
+            const float ring = std::max(1.0F, std::min(2.0F, radius * 0.2F));
+            list_.discs.push_back({p.x, p.y, radius, ring, palette_.outline});
+            if (periodic) add_periodic_images(disc, panel, box, palette_.outline, ring);
+        }
+        if (disc.escaped) {
+            list_.discs.push_back(
+                {p.x, p.y, radius + 3.0F, std::max(1.5F, radius * 0.25F), escaped_ring_color});
+        }
+    }
+}
+
+// A disc straddling an edge of a periodic box shows on both sides (scissored to the box).
+void Painter::add_periodic_images(const DiscState& disc, const PanelLayout& panel, const Box& box,
+                                  Rgba8 color, float style) {
+    const double r = disc.radius;
+    const Vec2 p = disc.position;
+    const int sx = p.x - r < 0.0 ? 1 : (p.x + r > box.width ? -1 : 0);
+    const int sy = p.y - r < 0.0 ? 1 : (p.y + r > box.height ? -1 : 0);
+    const auto radius = static_cast<float>(r * panel.scale);
+    const auto add = [&](int ix, int iy) {
+        const PointF c = panel.to_pixels({p.x + ix * box.width, p.y + iy * box.height}, box);
+        list_.discs.push_back({c.x, c.y, radius, style, color});
+    };
+    if (sx != 0) add(sx, 0);
+    if (sy != 0) add(0, sy);
+    if (sx != 0 && sy != 0) add(sx, sy);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Text
+
+float Painter::draw_text(Font font, const TextSlot& slot, std::string_view text, Rgba8 color,
+                         Align align, float x) {
+    const FontAtlas& f = atlas(font);
+    std::string shown(text);
+    const float room = slot.rect.x1 - (x >= 0.0F ? x : slot.rect.x0);
+    if (f.text_width(shown) > room) {  // never spill out of the slot: cut with an ellipsis
+        while (!shown.empty() && f.text_width(shown + "...") > room) shown.pop_back();
+        shown = shown.empty() ? std::string() : shown + "...";
+    }
+    const float width = f.text_width(shown);
+    float left = x >= 0.0F ? x : slot.rect.x0;
+    if (align == Align::centre) left = slot.rect.x0 + 0.5F * (slot.rect.width() - width);
+    if (align == Align::right) left = slot.rect.x1 - width;
+    // Baseline: text of this size centred in the slot (ascent above, the rest below).
+    const float baseline =
+        slot.rect.y0 + 0.5F * (slot.rect.height() - f.pixel_height()) + f.ascent();
+    auto run = std::find_if(list_.text.begin(), list_.text.end(),
+                            [&](const TextRun& r) { return r.font == &f; });
+    return f.add_text(run->glyphs, left, baseline, shown, color);
+}
+
+}  // namespace collide::render
