@@ -178,11 +178,11 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
     const double video_time = static_cast<double>(frame.index) / plan_.fps;
     content_.panels.resize(frame.panels.size());
     if (marks_.size() != frame.panels.size()) {
-        // The wrap note of a periodic box is said once, by the last panel (the first one's
-        // legend line has the marks to name).
+        // The wrap note of a periodic box is said once, by the first panel: its legend line
+        // takes the frame's width when the other panel (event-driven: no failures) has none.
         marks_.clear();
         for (std::size_t i = 0; i < frame.panels.size(); ++i)
-            marks_.emplace_back(show::mark_budget, i + 1 == frame.panels.size());
+            marks_.emplace_back(show::mark_budget, i == 0);
     }
     content_.energy_drift.resize(frame.panels.size());
     for (std::size_t i = 0; i < frame.panels.size(); ++i) {
@@ -214,11 +214,10 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
         }
         if (plan_.render.overlays == OverlayLevel::lesson) {
             // The failure marks and their legend: which failures get a mark is decided in show.
-            const bool last_panel = i + 1 == frame.panels.size();
             marks_[i].update(panel.snapshot, video_time);
             out.marks = marks_[i].marks();
             out.mark_words = marks_[i].words();
-            out.mark_line = show::mark_line(panel.time_driven, last_panel, panel.snapshot.box);
+            out.mark_line = show::mark_line(panel.time_driven, i == 0, panel.snapshot.box);
         }
         content_.energy_drift[i].push_back(panel.drift);
         if (std::isfinite(panel.drift.drift))

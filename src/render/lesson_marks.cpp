@@ -30,7 +30,7 @@ void LessonPainter::add_mark_legend(std::size_t index, const PanelContent& conte
     const MarkStyle style = mark_style();
     const float symbol = std::round(0.75F * font.pixel_height());
     const float space = std::round(0.35F * font.pixel_height());
-    const float gap = std::round(0.9F * font.pixel_height());
+    const float gap = std::round(0.7F * font.pixel_height());
     const float cy = 0.5F * (slot->rect.y0 + slot->rect.y1);
     float x = slot->rect.x0;
     // Each entry whole or not at all: the kinds first, then the count of the unmarked, then the

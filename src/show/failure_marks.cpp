@@ -60,7 +60,7 @@ std::string wrap_words() {
 
 std::string unmarked_words(std::size_t unmarked) {
     if (unmarked == 0) return {};
-    return "+" + with_separators(static_cast<long long>(unmarked)) + " more not marked";
+    return "+" + with_separators(static_cast<long long>(unmarked)) + " not marked";
 }
 
 bool mark_line(bool time_driven, bool says_wrap, const Box& box) {

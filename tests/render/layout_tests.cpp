@@ -342,7 +342,7 @@ TEST_CASE(
         REQUIRE(legend != nullptr);
         const int count = glyphs_inside(list, legend->rect, failure);
         if (pairs > show::mark_budget) {
-            CHECK(count >= 10);  // "+25 more not marked"
+            CHECK(count >= 10);  // "+25 not marked"
         } else {
             CHECK(count == 0);
         }

@@ -159,7 +159,7 @@ TEST_CASE("a budget over many failures: fair between kinds, the rest counted in 
     CHECK(count_kind(m, FailureKind::missed) == 4);
     CHECK(count_kind(m, FailureKind::overlapping) == 13);
     CHECK(count_kind(m, FailureKind::left_box) == 13);
-    CHECK(marks.words().unmarked == "+234 more not marked");
+    CHECK(marks.words().unmarked == "+234 not marked");
 }
 
 TEST_CASE("a missed collision's ring stays one second of video and fades; a held state adds none") {

@@ -68,7 +68,7 @@ struct MarkLegendItem {
 struct MarkWords {
     std::vector<MarkLegendItem> items;  ///< the kinds marked so far, in order of first appearance
     std::string wraps;     ///< periodic box, said once (first panel): "edges wrap around"
-    std::string unmarked;  ///< failures this frame without a mark: "+12 more not marked"
+    std::string unmarked;  ///< failures this frame without a mark: "+12 not marked"
 };
 
 /// One simulation shown in one panel.
