@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <utility>
 
 #include "collide/number_text.hpp"
 
@@ -176,8 +177,8 @@ void FailureMarks::remember(const Snapshot& snapshot, double video_time) {
 
 void FailureMarks::choose(const Snapshot& snapshot, double video_time) {
     const Box& box = snapshot.box;
-    // Candidates of each kind, most preferred first: the newest rings, the pairs in the
-    // engine's order, the discs that left most recently.
+    // Candidates of each kind, most preferred first: the newest rings, the pairs scrambled, the
+    // discs that left most recently.
     std::array<std::vector<FailureMark>, kinds> candidates;
     const double ring = missed_mark_radii * mean_radius(snapshot);
     for (auto it = missed_.rbegin(); it != missed_.rend(); ++it) {
@@ -185,7 +186,17 @@ void FailureMarks::choose(const Snapshot& snapshot, double video_time) {
             static_cast<float>(std::clamp(1.0 - (video_time - it->born) / mark_seconds, 0.0, 1.0));
         candidates[0].push_back({FailureKind::missed, it->where, {}, ring, opacity});
     }
-    for (const auto& [a, b] : snapshot.overlapping_pairs) {
+    // Overlapping pairs have no "newest": taken in a scrambled order of the pair (a fixed hash),
+    // not the engine's index order, which follows the discs' starting lattice (a dense fluid's
+    // first pairs all straddle one seam).
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs = snapshot.overlapping_pairs;
+    const auto scramble = [](std::pair<std::uint32_t, std::uint32_t> p) {
+        return (static_cast<std::uint64_t>(p.first) * 0x9E3779B97F4A7C15ULL) ^
+               (static_cast<std::uint64_t>(p.second) * 0xC2B2AE3D27D4EB4FULL);
+    };
+    std::sort(pairs.begin(), pairs.end(),
+              [&](const auto& x, const auto& y) { return scramble(x) < scramble(y); });
+    for (const auto& [a, b] : pairs) {
         if (a >= snapshot.discs.size() || b >= snapshot.discs.size()) continue;
         const DiscState& da = snapshot.discs[a];
         const DiscState& db = snapshot.discs[b];
