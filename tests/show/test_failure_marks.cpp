@@ -162,7 +162,7 @@ TEST_CASE("a budget over many failures: fair between kinds, the rest counted in 
     CHECK(marks.words().unmarked == "+234 not marked");
 }
 
-TEST_CASE("a missed collision's ring stays one second of video and fades; a held state adds none") {
+TEST_CASE("a missed collision's ring stays one second of video and fades, a held state adds none") {
     FailureMarks marks;
     Snapshot s = failing(1, 0, 0, 0.5);
     marks.update(s, 0.0);
