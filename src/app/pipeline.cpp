@@ -200,6 +200,13 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
     const show::Segment& segment = plan_.timeline.segment_at(frame.index);
     const double video_time = static_cast<double>(frame.index) / plan_.fps;
     content_.panels.resize(frame.panels.size());
+    if (marks_.size() != frame.panels.size()) {
+        // The wrap note of a periodic box is said once, by the first panel: its legend line
+        // takes the frame's width when the other panel (event-driven: no failures) has none.
+        marks_.clear();
+        for (std::size_t i = 0; i < frame.panels.size(); ++i)
+            marks_.emplace_back(show::mark_budget, i == 0);
+    }
     content_.energy_drift.resize(frame.panels.size());
     for (std::size_t i = 0; i < frame.panels.size(); ++i) {
         const PanelFrame& panel = frame.panels[i];
@@ -213,7 +220,7 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
         out.cost = panel.words.cost;
         out.how = frame.panels.size() == 2 ? panel.words.how : std::string();
         out.queue_words = panel.queue_words;
-        out.accent = render::panel_accent(panel.time_driven);
+        out.accent = render::panel_accent(panel.time_driven, plan_.render.theme);
         out.note = panel.time_driven ? lesson.step_note : std::string();
         out.step_period = 1;
         out.step_phase = 0;
@@ -223,6 +230,14 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
             if (frame.moved) advance_step_phase(panel.snapshot.time);
             out.step_period = lesson.frames_per_step;
             out.step_phase = std::min(step_phase_, lesson.frames_per_step - 1);
+        }
+        if (plan_.render.overlays == OverlayLevel::lesson) {
+            // The failure marks and their legend: which failures get a mark is decided in show.
+            // They fade with the moving picture (a card or a hold keeps them as they are).
+            marks_[i].update(panel.snapshot, static_cast<double>(frame.sim_frame) / plan_.fps);
+            out.marks = marks_[i].marks();
+            out.mark_words = marks_[i].words();
+            out.mark_line = show::mark_line(panel.time_driven, i == 0, panel.snapshot.box);
         }
         if (frame.moved || content_.energy_drift[i].empty())
             content_.energy_drift[i].push_back(panel.drift);

@@ -22,6 +22,7 @@
 #include "collide/render/renderer.hpp"
 #include "collide/scene.hpp"
 #include "collide/show/collision.hpp"
+#include "collide/show/failure_marks.hpp"
 #include "collide/sim/engine.hpp"
 #include "collide/snapshot.hpp"
 #include "interrupt.hpp"
@@ -94,6 +95,7 @@ class FrameComposer {
     const RenderPlan& plan_;
     render::FrameContent content_;
     std::vector<show::EngineDrift> drifts_;  ///< per panel: the largest drift so far
+    std::vector<show::FailureMarks> marks_;  ///< per panel (lesson level)
     double last_step_time_ = -1.0;
     int step_phase_ = 0;
 };

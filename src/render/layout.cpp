@@ -78,6 +78,8 @@ const char* text_role_name(TextRole role) noexcept {
             return "note";
         case TextRole::how:
             return "how";
+        case TextRole::marks:
+            return "marks";
         case TextRole::caption:
             return "caption";
         case TextRole::clock:

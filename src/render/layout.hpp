@@ -40,6 +40,7 @@ enum class TextRole {
     figures,
     note,
     how,  ///< lesson, two panels: why the panel's work grows as it does (under its figures)
+    marks,  ///< lesson: the failure marks' legend under a panel's figures (and note)
     caption,
     clock,
     cost_heading,
@@ -127,6 +128,9 @@ struct LayoutInput {
     bool how_line = false;      ///< lesson: a line under each panel's figures (PanelContent::how)
     bool cost_ratio = false;    ///< lesson: the cost ratio under the bars (two panels)
     bool clock_unit = false;    ///< lesson: a second clock line for the time's unit
+    /// Lesson: per panel, a legend line for its failure marks (under the note). The left one of
+    /// two panels takes the frame's width when the right one has none.
+    std::vector<bool> mark_lines;
     bool large_plot = false;    ///< lesson: the plot is the subject: a wider column
     bool small_plot = false;    ///< lesson: a plot below the column's text, reaching down
                                 ///< beside the figures row so it is tall enough to read

@@ -32,7 +32,8 @@ void LessonPainter::add_column(const FrameContent& frame) {
         const TextSlot* label = layout_.slot(TextRole::cost_label, p);
         const TextSlot* value = layout_.slot(TextRole::cost_value, p);
         if (label == nullptr || value == nullptr) continue;
-        draw_text(Font::body, *label, panel.cost_label, with_alpha(panel.accent, 255));
+        draw_text(Font::body, *label, panel.cost_label,
+                  with_alpha(accent_text(panel.accent, config_.theme), 255));
         const RectF track{label->rect.x0, label->rect.y1, label->rect.x1,
                           value->rect.y0 - std::round(0.6F * layout_.margin)};
         list_.over.add_rect(track, faded(palette_.muted, 0.35F));

@@ -58,10 +58,14 @@ FrameLayout lesson_layout(const LayoutInput& in) {
     const float head_line = std::round(head * 1.2F);
     const float gap = std::round(0.6F * m);
 
-    // Vertical: title | box | figures (| note) (| how) ... caption.
+    // Vertical: title | box | figures (| note) (| marks) (| how) ... caption.
     const float box_top = m + line + gap;
-    const float below =
-        gap + head_line + (in.note_line ? line : 0.0F) + (in.how_line ? line : 0.0F);
+    const auto wants_marks = [&](std::size_t i) {
+        return i < in.mark_lines.size() && in.mark_lines[i];
+    };
+    const bool mark_line = wants_marks(0) || wants_marks(1);
+    const float below = gap + head_line + (in.note_line ? line : 0.0F) +
+                        (mark_line ? line : 0.0F) + (in.how_line ? line : 0.0F);
     const float caption_top = height - m - line;
     const bool queue = in.queue_panel >= 0 && in.queue_panel < static_cast<int>(in.boxes.size());
     const float queue_h = queue ? std::round(queue_strip_share * height) : 0.0F;
@@ -129,6 +133,12 @@ FrameLayout lesson_layout(const LayoutInput& in) {
         y += head_line;
         if (in.note_line) {
             layout.text.push_back({TextRole::note, p, {title_x0, y, text_x1, y + line}, body});
+            y += line;
+        }
+        if (mark_line) {
+            const float x1 = left_of_column && !wants_marks(1) ? width - m : text_x1;
+            if (wants_marks(i))
+                layout.text.push_back({TextRole::marks, p, {title_x0, y, x1, y + line}, body});
             y += line;
         }
         if (in.how_line) {

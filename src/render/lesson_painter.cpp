@@ -46,6 +46,8 @@ LessonPainter::LessonPainter(const RenderConfig& config) : Painter(config) {
     style_.outline_faint_discs = true;
     style_.escaped_as_marks = true;
     style_.clip_to_box = true;  // everything of a panel stays inside its box, clear of the text
+    style_.dashed_periodic_edges = true;
+    style_.legible_trails = true;
     choose_colormap_range();
 }
 
@@ -77,6 +79,7 @@ FrameLayout LessonPainter::layout_for(const FrameContent& frame) const {
     for (const PanelContent& panel : frame.panels) {
         if (!panel.note.empty()) input.note_line = true;
         if (!panel.how.empty()) input.how_line = true;
+        input.mark_lines.push_back(panel.mark_line);
     }
     input.cost_ratio = frame.panels.size() == 2;
     input.clock_unit = !frame.time_unit.empty();
@@ -115,9 +118,6 @@ void LessonPainter::begin_frame(const FrameContent& frame) {
         // Loaded with the first frame that shows a queue, so other videos are unchanged.
         load_font(small_font_, std::round(body_font_->pixel_height() * queue_text_scale));
     }
-    if (markers_.size() != frame.panels.size()) {
-        markers_.assign(frame.panels.size(), MarkerMemory{});
-    }
 }
 
 void LessonPainter::add_marks(std::size_t index, const PanelContent& content,
@@ -128,8 +128,8 @@ void LessonPainter::add_marks(std::size_t index, const PanelContent& content,
         if (layout_.queue_panel == static_cast<int>(index) && !intro_)
             add_queue_strip(snapshot, content.queue_words, layout_.queue_strip);
     }
-    markers_[index].update(snapshot, video_time_);
-    hidden_ = add_failures(index, snapshot, panel);
+    // The marks the presentation layer chose (show::FailureMarks), each kind its own shape.
+    paint_failure_marks(list_, content.marks, panel, snapshot.box, mark_style());
 }
 
 void LessonPainter::finish_frame(const FrameContent& frame) {
@@ -194,8 +194,7 @@ void LessonPainter::add_panel_text(std::size_t index, const PanelContent& conten
         shortened.rect.x1 = right;
         draw_text(Font::body, shortened, content.note, palette_.text);
     }
-    // More failures than markers (one line there; the compact form has no room).
-    if (hidden_ > 0) add_unmarked_note(panel, hidden_);
+    add_mark_legend(index, content);  // under the figures, outside the box
 }
 
 namespace {

@@ -1,11 +1,12 @@
 #pragma once
 // Internal: the painter of overlay level lesson (docs/renderer.md): per panel a title line above
 // its box and a row of headline figures below it, a column beside the boxes (clock, cost graphic,
-// energy, colour legend, plot), a caption line, the title card, failure markers that persist and
-// fade over about a second of video, and the event queue (`--queue`). Below compact_width one
-// line of text per panel. Its files: lesson_painter.cpp (the phases, panel text),
-// lesson_layout.cpp (where things go), lesson_marks.cpp (failure markers), lesson_column.cpp
-// (column and title card), lesson_queue.cpp (the event queue).
+// energy, colour legend, plot), a caption line, the title card, the failure marks chosen by the
+// presentation layer (a ring, a cross, an arrow out of the edge) with their legend under the
+// box, and the event queue (`--queue`). Below compact_width one line of text per panel. Its
+// files: lesson_painter.cpp (the phases, panel text), lesson_layout.cpp (where things go),
+// lesson_marks.cpp (the marks' style and legend), lesson_column.cpp (column and title card),
+// lesson_queue.cpp (the event queue).
 
 #include <cstddef>
 #include <optional>
@@ -13,42 +14,15 @@
 #include <string_view>
 #include <vector>
 
+#include "failure_marks.hpp"
 #include "painter.hpp"
 
 namespace collide::render {
-
-/// How long a failure marker stays on screen, in seconds of video (fading out).
-inline constexpr double marker_seconds = 1.0;
-/// At most this many failure markers per panel; the rest are counted ("+N more").
-inline constexpr std::size_t max_markers = 30;
 
 /// How long an event popped off a panel's queue stays highlighted, in seconds of video.
 inline constexpr double queue_pop_seconds = 0.8;
 /// The queue strip's small text against the lesson body text.
 inline constexpr float queue_text_scale = 0.7F;
-
-/// A failure marker remembered across frames (lesson level).
-struct Marker {
-    Vec2 where;         ///< box coordinates
-    double born = 0.0;  ///< video seconds when it appeared
-};
-
-/// Failure markers of one panel, kept across frames so they persist and fade with video time.
-class MarkerMemory {
-  public:
-    /// Adds the snapshot's missed collisions if the snapshot is a new state (its time changed;
-    /// a held time-driven state is not counted again) and forgets markers older than
-    /// marker_seconds at `video_time`.
-    void update(const Snapshot& snapshot, double video_time);
-    /// Markers alive at the last update, oldest first.
-    [[nodiscard]] const std::vector<Marker>& markers() const noexcept { return markers_; }
-    /// Opacity in [0, 1] of a marker at `video_time` (1 when new, 0 after marker_seconds).
-    [[nodiscard]] static float opacity(const Marker& marker, double video_time) noexcept;
-
-  private:
-    std::vector<Marker> markers_;
-    std::optional<double> last_time_;
-};
 
 class LessonPainter : public Painter {
   public:
@@ -70,9 +44,9 @@ class LessonPainter : public Painter {
     /// The headline figures in `slot`; true when some continued on `overflow` (the how line).
     bool add_figures(const std::vector<Figure>& figures, const TextSlot& slot,
                      const TextSlot* overflow);
-    // Failure markers (lesson_marks.cpp).
-    std::size_t add_failures(std::size_t index, const Snapshot& snapshot, const PanelLayout& panel);
-    void add_unmarked_note(const PanelLayout& panel, std::size_t hidden);
+    // Failure marks and their legend (lesson_marks.cpp; the shapes: failure_marks.hpp).
+    [[nodiscard]] MarkStyle mark_style() const;
+    void add_mark_legend(std::size_t index, const PanelContent& content);
     // The column and the title card (lesson_column.cpp).
     void add_column(const FrameContent& frame);
     void add_intro(const FrameContent& frame);
@@ -96,12 +70,10 @@ class LessonPainter : public Painter {
     /// A queue node as wide as the widest of `labels` (and a time to go).
     [[nodiscard]] float node_width(const std::vector<std::string>& labels) const;
 
-    std::vector<MarkerMemory> markers_;
     double video_time_ = 0.0;
     double speed_ = 0.0;         // simulation time per second of video (FrameContent::speed)
     std::vector<RectF> labels_;  // queue labels placed in the current box (add_plate_label)
     bool intro_ = false;         // the title card covers this frame: no other text
-    std::size_t hidden_ = 0;     // failures of the current panel not circled (add_failures)
 };
 
 }  // namespace collide::render

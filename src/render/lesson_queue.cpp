@@ -15,11 +15,6 @@ namespace collide::render {
 
 namespace {
 
-/// The next event: amber, far from the failure magenta; darker on the light theme, where the
-/// bright one has too little contrast against white.
-constexpr Rgb8 next_event_dark{255, 196, 40};
-constexpr Rgb8 next_event_light{185, 105, 0};
-
 /// The `i`th of a view's per-event words, empty where the view has fewer (a frame built by hand).
 const std::string& nth(const std::vector<std::string>& words, std::size_t i) {
     static const std::string none;
@@ -63,7 +58,7 @@ bool clip_to(RectF r, PointF& a, PointF& b) {
 }  // namespace
 
 Rgba8 LessonPainter::next_color() const noexcept {
-    return with_alpha(config_.theme == Theme::light ? next_event_light : next_event_dark, 255);
+    return with_alpha(next_event_color(config_.theme), 255);
 }
 
 float LessonPainter::pop_highlight(const QueuedEvent& popped, double now) const noexcept {
@@ -242,7 +237,7 @@ void LessonPainter::add_popped(const QueueView& queue, const QueueWords& words, 
         Rgba8 color = palette_.text;
         if (e.stale) {
             text += words.stale_popped;
-            color = faded(palette_.muted, 0.8F);
+            color = palette_.muted;  // muted, not faded: text keeps 4.5:1 (theme.cpp)
         } else {
             text += e.kind == EventKind::cell ? words.crossing_popped : words.resolved_popped;
         }
@@ -272,7 +267,7 @@ void LessonPainter::add_queue_node(std::string_view label, std::string_view time
     list_.over.add_rect(node, palette_.box_fill);
     list_.over.add_frame(node, frame_color.a == 255 && !stale ? 2.0F : 1.0F, frame_color);
     const float half = 0.5F * node.height();
-    const Rgba8 text = stale ? faded(palette_.muted, 0.9F) : palette_.title;
+    const Rgba8 text = stale ? palette_.muted : palette_.title;
     draw_text(
         Font::small,
         {TextRole::queue, -1, {node.x0, node.y0, node.x1, node.y0 + half}, small.pixel_height()},

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "collide/assert.hpp"
+#include "failure_marks.hpp"
 
 namespace collide::render {
 
@@ -88,8 +89,15 @@ void Painter::paint_panel(std::size_t index, const PanelContent& content,
     if (config_.trails) {
         trails_[index].update(snapshot);
         const auto to_pixels = [&](Vec2 p) { return panel.to_pixels(p, box); };
-        trails_[index].draw(list_.under, box, to_pixels, colors_, style_.trail_width,
-                            style_.trail_fade);
+        if (style_.legible_trails) {  // every trail keeps 3:1 down to its faintest segment
+            const float fade =
+                legible_trails(colors_, snapshot.discs, config_.theme, trail_colors_);
+            trails_[index].draw(list_.under, box, to_pixels, trail_colors_, style_.trail_width,
+                                std::max(fade, style_.trail_fade));
+        } else {
+            trails_[index].draw(list_.under, box, to_pixels, colors_, style_.trail_width,
+                                style_.trail_fade);
+        }
     }
     add_discs(snapshot, panel);
     add_marks(index, content, panel);
@@ -106,6 +114,11 @@ void Painter::add_box(const PanelLayout& panel, const Box& box) {
     const float wall = style_.wall;
     const RectF outline{panel.box.x0 - wall, panel.box.y0 - wall, panel.box.x1 + wall,
                         panel.box.y1 + wall};
+    if (box.boundary == Boundary::periodic && style_.dashed_periodic_edges) {
+        // Dashed: the edges are no walls, discs pass through and come back on the other side.
+        add_dashed_frame(list_.under, outline, wall, edge_dash(wall), palette_.wrap_edge);
+        return;
+    }
     list_.under.add_frame(outline, wall,
                           box.boundary == Boundary::walls ? palette_.wall : palette_.periodic_edge);
 }

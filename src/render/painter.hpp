@@ -36,6 +36,10 @@ struct PanelStyle {
     /// Discs are clipped to the box (otherwise only in periodic boxes, at the seam; escaped discs
     /// then show outside a walled box).
     bool clip_to_box = false;
+    /// A periodic box's edges are dashed (palette wrap_edge) rather than a solid frame.
+    bool dashed_periodic_edges = false;
+    /// Trails take a colour and fading floor that keep 3:1 against the box (legible_trails).
+    bool legible_trails = false;
 };
 
 class Painter {
@@ -121,7 +125,8 @@ class Painter {
     [[nodiscard]] Rgb8 disc_color(const DiscState& disc) const noexcept;
 
     std::vector<TrailHistory> trails_;
-    std::vector<Rgb8> colors_;  // per-frame scratch
+    std::vector<Rgb8> colors_;        // per-frame scratch
+    std::vector<Rgb8> trail_colors_;  // per-frame scratch: legible trails
 };
 
 }  // namespace collide::render

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 namespace collide::render {
 
@@ -46,11 +47,12 @@ Palette palette(Theme theme) noexcept {
     if (theme == Theme::light) {
         return {{236, 236, 240, 255}, {255, 255, 255, 255}, {40, 40, 48, 255},
                 {150, 150, 170, 255}, {10, 10, 15, 255},    {35, 35, 45, 255},
-                {95, 95, 105, 255},   {215, 0, 170, 255},   {30, 30, 36, 255}};
+                {95, 95, 105, 255},   {190, 0, 150, 255},   {30, 30, 36, 255},
+                {110, 110, 135, 255}};
     }
-    return {{22, 22, 28, 255},    {34, 36, 46, 255},    {205, 205, 215, 255},
-            {95, 95, 120, 255},   {245, 245, 245, 255}, {215, 215, 222, 255},
-            {150, 150, 160, 255}, {255, 40, 220, 255},  {225, 225, 232, 255}};
+    return {{22, 22, 28, 255},    {34, 36, 46, 255},    {205, 205, 215, 255}, {95, 95, 120, 255},
+            {245, 245, 245, 255}, {215, 215, 222, 255}, {150, 150, 160, 255}, {255, 40, 220, 255},
+            {225, 225, 232, 255}, {130, 130, 160, 255}};
 }
 
 PlotColors plot_colors(Theme theme) noexcept {
@@ -135,8 +137,16 @@ Rgba8 puzzle_mark_color(view::PuzzleMark mark, const PuzzlePalette& palette) noe
     return palette.edge;
 }
 
-Rgb8 panel_accent(bool time_driven) noexcept {
-    return time_driven ? Rgb8{240, 150, 60} : Rgb8{90, 175, 245};
+Rgb8 panel_accent(bool time_driven, Theme theme) noexcept {
+    const Rgb8 accent = time_driven ? Rgb8{240, 150, 60} : Rgb8{90, 175, 245};
+    if (theme == Theme::dark) return accent;
+    return with_contrast(accent, rgb(palette(theme).background), mark_contrast);
+}
+
+Rgb8 next_event_color(Theme theme) noexcept {
+    // Amber, far from the failure magenta; darker on the light theme, where the bright one has
+    // too little contrast against white.
+    return theme == Theme::light ? Rgb8{150, 80, 0} : Rgb8{255, 196, 40};
 }
 
 Rgb8 failure_color(Theme theme) noexcept {
@@ -167,6 +177,125 @@ double contrast_ratio(Rgb8 a, Rgb8 b) noexcept {
     const double la = luminance(a);
     const double lb = luminance(b);
     return (std::max(la, lb) + 0.05) / (std::min(la, lb) + 0.05);
+}
+
+Rgb8 blend(Rgb8 color, Rgb8 background, float opacity) noexcept {
+    // The GL blend (SRC_ALPHA, ONE_MINUS_SRC_ALPHA) on 8-bit channels, alpha quantised as stored.
+    const float a =
+        static_cast<float>(std::lround(std::clamp(opacity, 0.0F, 1.0F) * 255.0F)) / 255.0F;
+    const auto mix = [a](std::uint8_t c, std::uint8_t b) {
+        return static_cast<std::uint8_t>(
+            std::lround(a * static_cast<float>(c) + (1.0F - a) * static_cast<float>(b)));
+    };
+    return {mix(color.r, background.r), mix(color.g, background.g), mix(color.b, background.b)};
+}
+
+float least_opacity(Rgb8 color, Rgb8 background, double ratio) noexcept {
+    if (contrast_ratio(color, background) < ratio) return 1.0F;
+    int low = 0;  // contrast grows with opacity: the first alpha step that keeps the ratio
+    int high = 255;
+    while (low < high) {
+        const int mid = (low + high) / 2;
+        if (contrast_ratio(blend(color, background, static_cast<float>(mid) / 255.0F),
+                           background) >= ratio) {
+            high = mid;
+        } else {
+            low = mid + 1;
+        }
+    }
+    return static_cast<float>(high) / 255.0F;
+}
+
+Rgb8 with_contrast(Rgb8 color, Rgb8 background, double ratio) noexcept {
+    const Rgb8 black{0, 0, 0};
+    const Rgb8 white{255, 255, 255};
+    const Rgb8 target =
+        contrast_ratio(black, background) >= contrast_ratio(white, background) ? black : white;
+    Rgb8 out = color;
+    for (int step = 1; step <= 20 && contrast_ratio(out, background) < ratio; ++step) {
+        out = blend(target, color, static_cast<float>(step) / 20.0F);
+    }
+    return out;
+}
+
+float mark_floor(Theme theme) noexcept {
+    const Palette p = palette(theme);
+    return least_opacity(rgb(p.failure), rgb(p.box_fill), mark_contrast);
+}
+
+Rgb8 accent_text(Rgb8 accent, Theme theme) noexcept {
+    return with_contrast(accent, rgb(palette(theme).background), text_contrast);
+}
+
+TrailLook trail_look(Rgb8 disc, Theme theme) noexcept {
+    const Rgb8 fill = rgb(palette(theme).box_fill);
+    // Clear of the box by a margin, so that the trail can still fade to a third of its alpha
+    // and keep 3:1 at its faintest.
+    TrailLook look;
+    look.color = with_contrast(disc, fill, 2.0 * text_contrast);
+    const float least = least_opacity(look.color, fill, mark_contrast);
+    // Half a step over: the trail truncates its alpha to whole steps.
+    look.min_share = std::clamp((least * 255.0F + 0.5F) / trail_max_alpha, 0.35F, 1.0F);
+    return look;
+}
+
+float legible_trails(const std::vector<Rgb8>& colors, const std::vector<DiscState>& discs,
+                     Theme theme, std::vector<Rgb8>& out) {
+    out = colors;
+    float share = 0.35F;
+    for (std::size_t k = 0; k < discs.size() && k < colors.size(); ++k) {
+        if (!discs[k].tagged) continue;
+        const TrailLook look = trail_look(colors[k], theme);
+        out[k] = look.color;
+        share = std::max(share, look.min_share);
+    }
+    return share;
+}
+
+std::vector<ColorPair> color_pairs(Theme theme) {
+    const Palette p = palette(theme);
+    const Rgb8 page = rgb(p.background);
+    const Rgb8 box = rgb(p.box_fill);
+    const PlotColors plot = plot_colors(theme);
+    std::vector<ColorPair> pairs = {
+        {"title on the page", rgb(p.title), page, text_contrast},
+        {"text on the page", rgb(p.text), page, text_contrast},
+        {"muted text on the page (cost heading, queue labels)", rgb(p.muted), page, text_contrast},
+        {"failure figure and count on the page", rgb(p.failure), page, text_contrast},
+        {"plot labels on the page", rgb(plot.label), page, text_contrast},
+        {"plot axes on the page", rgb(plot.axis), page, mark_contrast},
+        {"plot curve on the page", rgb(plot.curve), page, mark_contrast},
+        {"wall against the page", rgb(p.wall), page, mark_contrast},
+        {"wall against the box", rgb(p.wall), box, mark_contrast},
+        {"dashed periodic edge against the page", rgb(p.wrap_edge), page, mark_contrast},
+        {"dashed periodic edge against the box", rgb(p.wrap_edge), box, mark_contrast},
+        {"disc outline on the box", rgb(p.outline), box, mark_contrast},
+        {"failure mark on the box", rgb(p.failure), box, mark_contrast},
+        {"fading failure ring at its faintest", blend(rgb(p.failure), box, mark_floor(theme)), box,
+         mark_contrast},
+        {"legend symbol on the page", rgb(p.failure), page, mark_contrast},
+        {"queue labels on a box plate", rgb(p.text), box, text_contrast},
+        {"muted queue labels on a box plate", rgb(p.muted), box, text_contrast},
+        {"queue: the next event's label on the page", next_event_color(theme), page, text_contrast},
+        {"queue: the next event's label on a box plate", next_event_color(theme), box,
+         text_contrast},
+        {"queue: a queued event's label in the box (text at 75 %)", blend(rgb(p.text), box, 0.75F),
+         box, text_contrast},
+        {"queue: a slot's time on the page (text at 85 %)", blend(rgb(p.text), page, 0.85F), page,
+         text_contrast},
+        {"queue: the tree's edges on the page (muted at 80 %)", blend(rgb(p.muted), page, 0.8F),
+         page, mark_contrast},
+    };
+    for (const bool time_driven : {true, false}) {
+        const Rgb8 accent = panel_accent(time_driven, theme);
+        pairs.push_back({time_driven ? "time-driven cost label on the page"
+                                     : "event-driven cost label on the page",
+                         accent_text(accent, theme), page, text_contrast});
+        pairs.push_back({time_driven ? "time-driven bar and curve on the page"
+                                     : "event-driven bar and curve on the page",
+                         accent, page, mark_contrast});
+    }
+    return pairs;
 }
 
 }  // namespace collide::render

@@ -5,6 +5,8 @@
 #include <optional>
 #include <utility>
 
+#include "theme.hpp"
+
 namespace collide::render {
 
 bool wraps_between(const Box& box, Vec2 a, Vec2 b) noexcept {
@@ -75,7 +77,7 @@ void TrailHistory::update(const Snapshot& snapshot) {
 void TrailHistory::draw(OverlayBatch& batch, const Box& box,
                         const std::function<PointF(Vec2)>& to_pixels,
                         const std::vector<Rgb8>& colors, float width, float min_share) const {
-    constexpr float max_alpha = 200.0F;
+    constexpr float max_alpha = trail_max_alpha;
     for (std::size_t k = 0; k < tagged_.size(); ++k) {
         const std::deque<Vec2>& path = paths_[k];
         const Rgb8 color = colors[tagged_[k]];

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "../support/skip.hpp"
+#include "collide/show/failure_marks.hpp"
 #include "frame_builder.hpp"
 #include "layout.hpp"
 
@@ -265,16 +266,16 @@ TEST_CASE("figures have thousands separators") {
     CHECK(with_separators(-45000) == "-45,000");
 }
 
-TEST_CASE("failure markers persist and fade over one second of video, whatever the frame rate") {
+TEST_CASE("failure marks persist and fade over one second of video, whatever the frame rate") {
     for (const int fps : {15, 30, 60}) {
         INFO(fps << " fps");
-        MarkerMemory memory;
+        show::FailureMarks marks;  // the presentation layer keeps them; the painter draws them
         Snapshot s;
         s.time = 0.5;
         s.missed_collisions = {{0.2, 0.3}};
-        memory.update(s, 0.0);
-        REQUIRE(memory.markers().size() == 1);
-        // The time-driven state is held (same time) for a while: the marker is not added again.
+        marks.update(s, 0.0);
+        REQUIRE(marks.marks().size() == 1);
+        // The time-driven state is held (same time) for a while: the mark is not added again.
         s.missed_collisions = {{0.2, 0.3}};
         int frames_alive = 1;
         for (int k = 1; k < 3 * fps; ++k) {
@@ -283,11 +284,10 @@ TEST_CASE("failure markers persist and fade over one second of video, whatever t
                 s.time += 0.04;
                 s.missed_collisions.clear();
             }
-            memory.update(s, video);
-            if (memory.markers().empty()) break;
-            CHECK(memory.markers().size() == 1);
-            CHECK(MarkerMemory::opacity(memory.markers()[0], video) ==
-                  doctest::Approx(1.0 - video).epsilon(1e-6));
+            marks.update(s, video);
+            if (marks.marks().empty()) break;
+            CHECK(marks.marks().size() == 1);
+            CHECK(marks.marks()[0].opacity == doctest::Approx(1.0 - video).epsilon(1e-6));
             ++frames_alive;
         }
         // Alive for one second of video: fps frames (within one frame).
@@ -351,7 +351,8 @@ int glyphs_inside(const DrawList& list, RectF r, Rgba8 color) {
     return n;
 }
 
-TEST_CASE("more failures than markers: the box says how many more are not circled") {
+TEST_CASE(
+    "more failures than marks: the legend under the box counts the rest, the box holds none") {
     const RenderConfig defaults;
     if (!std::filesystem::exists(defaults.font_path)) {
         COLLIDE_SKIP_TEST("no DejaVu Sans at " << defaults.font_path);
@@ -361,30 +362,43 @@ TEST_CASE("more failures than markers: the box says how many more are not circle
     config.height = 720;
     config.overlays = OverlayLevel::lesson;
     const Rgba8 failure = palette(config.theme).failure;
-    for (const std::size_t pairs : {std::size_t{10}, max_markers + 25}) {
+    for (const std::size_t pairs : {std::size_t{10}, show::mark_budget + 25}) {
         INFO(pairs << " overlapping pairs");
         FrameBuilder builder(config);
         Snapshot left = random_gas(2 * pairs, 3);
         for (std::size_t k = 0; k < pairs; ++k)
             left.overlapping_pairs.emplace_back(2 * k, 2 * k + 1);
         const Snapshot right = random_gas(2 * pairs, 4);
+        show::FailureMarks marks;
+        marks.update(left, 0.0);
         FrameContent frame;
         frame.panels = {{&left, "Time-driven", {}}, {&right, "Event-driven", {}}};
+        frame.panels[0].marks = marks.marks();
+        frame.panels[0].mark_words = marks.words();
+        frame.panels[0].mark_line = true;
         frame.time_text = "t = 1.00";
         const DrawList& list = builder.build(frame);
-        std::size_t rings = 0;
-        for (const DiscInstance& d : list.discs) {
-            if (d.style > 0.0F && same_rgb(d.color, failure)) ++rings;
-        }
-        CHECK(rings == std::min(pairs, max_markers));
-        const RectF box = builder.layout().panels.at(0).box;
-        const int note = glyphs_inside(list, box, failure);
-        if (pairs > max_markers) {
-            CHECK(note >= 10);  // "+25 more not circled"
+        CHECK(marks.marks().size() == std::min(pairs, show::mark_budget));
+        const TextSlot* legend = builder.layout().slot(TextRole::marks, 0);
+        REQUIRE(legend != nullptr);
+        const int count = glyphs_inside(list, legend->rect, failure);
+        if (pairs > show::mark_budget) {
+            CHECK(count >= 10);  // "+25 not marked"
         } else {
-            CHECK(note == 0);
+            CHECK(count == 0);
         }
-        CHECK(glyphs_inside(list, builder.layout().panels.at(1).box, failure) == 0);
+        // Nothing but the simulation (and its marks) in either box: no text there.
+        for (const PanelLayout& panel : builder.layout().panels) {
+            for (const TextRun& run : list.text) {
+                for (const GlyphBox& g : run.glyphs.glyphs()) {
+                    const bool inside = static_cast<float>(g.x) >= panel.box.x0 &&
+                                        static_cast<float>(g.x) < panel.box.x1 &&
+                                        static_cast<float>(g.y) >= panel.box.y0 &&
+                                        static_cast<float>(g.y) < panel.box.y1;
+                    CHECK_FALSE(inside);
+                }
+            }
+        }
     }
 }
 

@@ -12,6 +12,7 @@
 #include "../support/skip.hpp"
 #include "collide/assert.hpp"
 #include "collide/error.hpp"
+#include "collide/show/failure_marks.hpp"
 #include "layout.hpp"
 #include "render_fixtures.hpp"
 
@@ -313,6 +314,9 @@ LessonFrame render_lesson(const Snapshot& snapshot, Theme theme = Theme::dark) {
     FrameContent frame;
     frame.panels = {{&snapshot, "Event-driven", {}}};
     frame.panels[0].figures = {{"0", "missed", true}};
+    show::FailureMarks marks;  // as the app chooses them
+    marks.update(snapshot, 0.0);
+    frame.panels[0].marks = marks.marks();
     LessonFrame out;
     out.image = renderer.render(frame);
     LayoutInput in;

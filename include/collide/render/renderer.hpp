@@ -132,8 +132,8 @@ class Renderer {
 using collide::with_separators;  // collide/number_text.hpp
 
 /// Each engine's colour (title swatch, cost bar, histogram): time-driven orange, event-driven
-/// blue, the same in every video.
-[[nodiscard]] Rgb8 panel_accent(bool time_driven) noexcept;
+/// blue, the same in every video; on the light theme darkened until it keeps 3:1 on the page.
+[[nodiscard]] Rgb8 panel_accent(bool time_driven, Theme theme = Theme::dark) noexcept;
 
 /// The colour reserved for failures (missed collisions, overlaps, escapes) in a theme.
 [[nodiscard]] Rgb8 failure_color(Theme theme) noexcept;

@@ -4,6 +4,7 @@
 /// filled by the presentation layer (src/show, collide_show) from the engines' snapshots and
 /// measurements. Plain values (types layer): no GL, no simulation code.
 
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -74,6 +75,37 @@ struct SummaryCard {
     float opacity = 0.0F;              ///< fading in over its first half second
 };
 
+/// The kinds of failure a lesson marks, each with a mark of its own (the legend names them).
+enum class FailureKind : std::uint8_t {
+    missed,       ///< a collision the time-driven engine stepped over: a ring where it happened
+    overlapping,  ///< two discs overlapping now: a cross on the pair
+    left_box,     ///< a disc that left a walled box: an arrow out of the edge where it left
+};
+
+/// One failure mark in a panel's box (lesson level). Which failures get one is decided by the
+/// presentation layer (show::FailureMarks); the renderer paints what it is handed.
+struct FailureMark {
+    FailureKind kind = FailureKind::missed;
+    Vec2
+        where;  ///< box coordinates: the collision, the pair's midpoint, the exit point on the edge
+    Vec2 out;   ///< left_box: outward normal of the edge crossed, (+-1, 0) or (0, +-1)
+    double size = 0.0;     ///< box units: the mark's radius (missed, overlapping)
+    float opacity = 1.0F;  ///< 1 when new; a missed ring fades to 0 over its second of video
+};
+
+/// One entry of a panel's mark legend: a kind's mark and its name.
+struct MarkLegendItem {
+    FailureKind kind = FailureKind::missed;
+    std::string name;  ///< "missed collision"
+};
+
+/// The words of a panel's mark legend (a line under its figures, outside the box).
+struct MarkWords {
+    std::vector<MarkLegendItem> items;  ///< the kinds marked so far, in order of first appearance
+    std::string wraps;     ///< periodic box, said once (first panel): "edges wrap around"
+    std::string unmarked;  ///< failures this frame without a mark: "+12 not marked"
+};
+
 /// One simulation shown in one panel.
 struct PanelContent {
     PanelContent() = default;
@@ -99,6 +131,10 @@ struct PanelContent {
     double cost = 0.0;          ///< work done so far, on the graphic's shared scale
     Rgb8 accent{240, 150, 60};  ///< the engine's colour (title swatch, bar, histogram)
     QueueWords queue_words;     ///< the queue strip's words (snapshot->queue set)
+    /// Lesson level: the failure marks in the box (the full level marks from the snapshot).
+    std::vector<FailureMark> marks;
+    MarkWords mark_words;    ///< the mark legend's words
+    bool mark_line = false;  ///< reserve the legend's line (the same on every frame of a video)
 };
 
 /// One sample of an energy drift series: relative drift (E(t) - E(0)) / E(0) at time t.
@@ -108,8 +144,9 @@ struct DriftPoint {
 };
 
 /// Everything drawn in one frame. Panels are laid out left to right in the given order (1 or 2
-/// panels; convention: time-driven left, event-driven right). Failure markers are drawn for any
-/// panel whose snapshot carries them (overlapping_pairs, missed_collisions, escaped discs).
+/// panels; convention: time-driven left, event-driven right). Full level: failure markers are
+/// drawn for any panel whose snapshot carries them (overlapping_pairs, missed_collisions,
+/// escaped discs); lesson level: the panel's `marks`.
 struct FrameContent {
     std::vector<PanelContent> panels;
     std::string time_text;  ///< e.g. "t = 3.25   (x0.5 speed)"
