@@ -252,28 +252,34 @@ class BasicClassicEngine final : public EngineOf<D> {
     }
 
     /// time_to_hit in a periodic box: the earliest of the 3^D nearest images of j, so that a
-    /// pair meeting across the seam is found even when another image is nearer now.
+    /// pair meeting across the seam is found even when another image is nearer now. A pair that
+    /// has just collided skips only the image it still touches: in a small box (a few diameters
+    /// across) it can meet again through another image before either hits anything else, and
+    /// nothing would predict that meeting later (the classic loop predicts a disc only after its
+    /// own collisions).
     [[nodiscard]] double time_to_hit_nearest_image(std::uint32_t i,
                                                    std::uint32_t j) const noexcept {
         const double sigma = radius_[i] + radius_[j];
         const Vec dr = box_.displacement(position_[i], position_[j]);
-        if (just_collided(i, j, dr, sigma)) return kinematics::never;
+        const bool after_contact = just_collided(i, j, dr, sigma);
         const Vec dv = velocity_[j] - velocity_[i];
         double best = kinematics::never;
+        const auto consider = [&](Vec image) {
+            if (after_contact && just_collided(i, j, image, sigma)) return;
+            best = std::min(best, kinematics::time_to_hit(image, dv, sigma));
+        };
         if constexpr (D == 2) {
             for (int ky = -1; ky <= 1; ++ky) {
                 for (int kx = -1; kx <= 1; ++kx) {
-                    const Vec2 image{dr.x + kx * box_.width, dr.y + ky * box_.height};
-                    best = std::min(best, kinematics::time_to_hit(image, dv, sigma));
+                    consider(Vec2{dr.x + kx * box_.width, dr.y + ky * box_.height});
                 }
             }
         } else {
             for (int kz = -1; kz <= 1; ++kz) {
                 for (int ky = -1; ky <= 1; ++ky) {
                     for (int kx = -1; kx <= 1; ++kx) {
-                        const Vec3 image{dr.x + kx * box_.width, dr.y + ky * box_.height,
-                                         dr.z + kz * box_.depth};
-                        best = std::min(best, kinematics::time_to_hit(image, dv, sigma));
+                        consider(Vec3{dr.x + kx * box_.width, dr.y + ky * box_.height,
+                                      dr.z + kz * box_.depth});
                     }
                 }
             }
