@@ -201,7 +201,8 @@ TEST_CASE("3D time-driven: a head-on collision along a diagonal, rolled back to 
     }
 }
 
-TEST_CASE("3D time-driven: a sphere bounces off the front and back walls; too fast, it escapes") {
+TEST_CASE(
+    "3D time-driven: a sphere bounces off the front and back walls, or escapes when too fast") {
     SphereScene scene;
     scene.box = Box3{1.0, 1.0, 1.0, Boundary::walls};
     scene.spheres = {sphere({0.5, 0.5, 0.5}, {0.0, 0.0, 1.0}, 0.1)};

@@ -83,6 +83,15 @@ bool BasicCellGrid<D>::build(const BoxType& box, const std::vector<Vec>& positio
         cells_ *= n_[k];
     }
 
+    half_step_.clear();
+    for (const Cell& offset : half_neighbourhood()) {
+        std::ptrdiff_t step = 0;
+        for (int k = D - 1; k >= 0; --k) {
+            step = step * static_cast<std::ptrdiff_t>(n_[k]) + offset[k];
+        }
+        half_step_.push_back(step);
+    }
+
     // Counting sort by cell: stable, so ids stay ascending within a cell (deterministic order).
     cell_start_.assign(cells_ + 1, 0);
     cell_id_.resize(positions.size());

@@ -35,10 +35,11 @@ class BasicCellGrid {
         for (std::size_t home = 0; home < cells_; ++home) {
             visit_within(home, visit);
             // Half of the 3^D - 1 neighbours (2D: E, NW, N, NE) so that every pair of cells
-            // meets once.
-            for (const Cell& off : half) {
-                std::size_t other = 0;
-                if (neighbour(c, off, other)) visit_across(home, other, visit);
+            // meets once. Away from the edges a neighbour is a fixed step in the linear index.
+            const bool inside = interior(c);
+            for (std::size_t o = 0; o < half.size(); ++o) {
+                std::size_t other = home + static_cast<std::size_t>(half_step_[o]);
+                if (inside || neighbour(c, half[o], other)) visit_across(home, other, visit);
             }
             next_cell(c);
         }
@@ -62,6 +63,14 @@ class BasicCellGrid {
             if (++c[k] < static_cast<int>(n_[k])) return;
             c[k] = 0;
         }
+    }
+    /// No coordinate of c on the grid's edge: every neighbour is inside, without wrapping.
+    [[nodiscard]] bool interior(const Cell& c) const noexcept {
+        bool inside = true;
+        for (int k = 0; k < D; ++k) {
+            inside = inside && c[k] > 0 && static_cast<std::size_t>(c[k]) + 1 < n_[k];
+        }
+        return inside;
     }
     [[nodiscard]] std::size_t cell_of(Vec p) const noexcept;
     [[nodiscard]] bool neighbour(const Cell& c, const Cell& offset,
@@ -93,9 +102,11 @@ class BasicCellGrid {
 
     BoxType box_;
     bool periodic_ = false;
-    std::array<std::size_t, D> n_{};         ///< cells per axis
-    std::size_t cells_ = 0;                  ///< product of n_
-    std::array<double, D> side_{};           ///< cell sides
+    std::array<std::size_t, D> n_{};  ///< cells per axis
+    std::size_t cells_ = 0;           ///< product of n_
+    std::array<double, D> side_{};    ///< cell sides
+    /// The linear-index step to each half_neighbourhood() offset from an interior cell.
+    std::vector<std::ptrdiff_t> half_step_;
     std::vector<std::uint32_t> cell_start_;  ///< particles of cell c are sorted_[cell_start_[c]
                                              ///< .. cell_start_[c + 1])
     std::vector<std::uint32_t> sorted_;      ///< particle ids ordered by cell, ascending in one
