@@ -240,8 +240,8 @@ void run_bench(const BenchOptions& options) {
     if (options.dim == 3) {
         const SphereScene scene = fcc_fluid(options);
         const std::uint64_t rss_before = max_rss_bytes();
-        sim::FastSphereEngine engine(scene);
-        time_engine(options, engine_options, engine, scene.name,
+        std::unique_ptr<SphereEngine> engine = make_engine(scene, engine_options);
+        time_engine(options, engine_options, *engine, scene.name,
                     static_cast<double>(scene.spheres.size()), true, rss_before);
         return;
     }

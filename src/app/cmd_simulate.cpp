@@ -139,33 +139,25 @@ void run_to_end(const SimulateOptions& options, InterruptGuard& interrupts, Engi
     std::fputs(out.c_str(), log && log->is_standard_output() ? stderr : stdout);
 }
 
-/// `simulate` of a 3D scene: the fast engine on spheres; the measurements with three degrees of
-/// freedom (temperature), Z from the collision virial, packing fraction and mean-square
-/// displacement, plus the z walls and momentum.
+/// `simulate` of a 3D scene: any engine on spheres (make_engine); the measurements with three
+/// degrees of freedom (temperature), Z from the collision virial, packing fraction and
+/// mean-square displacement, plus the z walls and momentum.
 void run_simulate_spheres(const SimulateOptions& options, const EngineOptions& engine_options,
                           InterruptGuard& interrupts, const SphereScene& scene) {
-    if (engine_options.engine != EngineKind::fast)
-        throw_option_error("--engine", options.engine,
-                           "fast (the only engine that runs spheres yet)");
-    const double collisions = collisions_per_time_unit(scene) * options.until;
-    if (!options.no_limits && collisions > WorkLimits{}.events) {
-        throw_option_error(
-            "--until",
-            fmt::format("{:g} time units of this scene is about {:.3g} collisions, over the limit "
-                        "of {:g} (about an hour); lower --until, or pass {} to run it anyway",
-                        options.until, collisions, WorkLimits{}.events, insist_option));
-    }
+    check_simulate_work(scene, engine_options, options.until, options.no_limits);
     std::unique_ptr<EventsLog> log;
     if (!options.events_log.empty()) {
         log = std::make_unique<EventsLog>(options.events_log);
         log->write("t,kind,a,b\n");
     }
-    sim::FastSphereEngine engine(scene);
+    std::unique_ptr<SphereEngine> engine = make_engine(scene, engine_options);
     std::vector<ReportField> fields{{"scene", scene.name},
-                                    {"engine", std::string(to_string(engine_options.engine))},
-                                    {"dimension", std::uint64_t{3}},
-                                    {"spheres", static_cast<std::uint64_t>(scene.spheres.size())}};
-    run_to_end(options, interrupts, engine, log, std::move(fields),
+                                    {"engine", std::string(to_string(engine_options.engine))}};
+    if (engine_options.engine == EngineKind::classic)
+        fields.push_back({"pq", pq::to_string(engine_options.pq)});
+    fields.push_back({"dimension", std::uint64_t{3}});
+    fields.push_back({"spheres", static_cast<std::uint64_t>(scene.spheres.size())});
+    run_to_end(options, interrupts, *engine, log, std::move(fields),
                [](const Measurements& m, std::vector<ReportField>& out) {
                    out.push_back({"collisions_zwall", m.collisions_zwall});
                    out.push_back({"momentum_z", m.momentum_z});

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "collide/error.hpp"
+#include "collide/sim/sphere_check.hpp"
 
 namespace collide::app {
 
@@ -56,21 +57,49 @@ void check_finishable(const RunShape& run, const WorkEstimate& work, const Culpr
     }
 }
 
-void refuse_excess(const Scene& scene, const RunShape& run, const WorkExcess& excess,
+// What a refusal says about a scene of either dimension: its particles' count and name, its
+// kinetic-theory collision and cell-crossing rates.
+std::size_t particle_count(const Scene& scene) {
+    return scene.discs.size();
+}
+std::size_t particle_count(const SphereScene& scene) {
+    return scene.spheres.size();
+}
+const char* particle_word(const Scene&) {
+    return "discs";
+}
+const char* particle_word(const SphereScene&) {
+    return "spheres";
+}
+double collisions_per_time(const Scene& scene) {
+    return collision_rate(scene).total();
+}
+double collisions_per_time(const SphereScene& scene) {
+    return collisions_per_time_unit(scene);
+}
+double crossings_per_time(const Scene& scene) {
+    return cell_crossing_rate(scene);
+}
+double crossings_per_time(const SphereScene& scene) {
+    return sphere_crossing_rate(scene);
+}
+
+template <class SceneType>
+void refuse_excess(const SceneType& scene, const RunShape& run, const WorkExcess& excess,
                    const Culprits& who, const std::string& frames_advice) {
     const std::string limit = fmt::format("over the limit of {}", rough_number(excess.limit));
+    const char* particles = particle_word(scene);
     if (excess.what == "events") {
-        const CollisionRate rate = collision_rate(scene);
         const std::string crossings =
             run.cell_grid
-                ? fmt::format(" and {} cell crossings", rough_number(cell_crossing_rate(scene)))
+                ? fmt::format(" and {} cell crossings", rough_number(crossings_per_time(scene)))
                 : std::string();
         refuse(who.span,
                fmt::format("simulating t = 0..{:g} would take about {} events (kinetic-theory "
-                           "estimate for N = {} discs: {} collisions{} per time unit), {}; "
+                           "estimate for N = {} {}: {} collisions{} per time unit), {}; "
                            "simulate at most t = {:.3g} ({}), {}",
-                           run.span, rough_number(excess.estimate), scene.discs.size(),
-                           rough_number(rate.total()), crossings, limit,
+                           run.span, rough_number(excess.estimate), particle_count(scene),
+                           particles, rough_number(collisions_per_time(scene)), crossings, limit,
                            run.span * excess.fitting_fraction(), who.shorter, insist_advice()));
     }
     if (excess.what == "time-driven steps") {
@@ -83,31 +112,34 @@ void refuse_excess(const Scene& scene, const RunShape& run, const WorkExcess& ex
     }
     if (excess.what == "overlap checks") {
         const char* method = run.all_pairs ? "all-pairs" : "grid";
-        refuse(who.dt, fmt::format("the time-driven engine ({} overlap checks, {} discs) would "
-                                   "make about {} checks in {} steps of dt = {:g}, {}; use "
-                                   "--td-detect grid, a larger dt or a shorter run ({}), {}",
-                                   method, scene.discs.size(), rough_number(excess.estimate),
-                                   rough_number(run.dt > 0 ? run.span / run.dt : 0.0), run.dt,
-                                   limit, who.shorter, insist_advice()));
+        refuse(who.dt,
+               fmt::format("the time-driven engine ({} overlap checks, {} {}) would "
+                           "make about {} checks in {} steps of dt = {:g}, {}; use "
+                           "--td-detect grid, a larger dt or a shorter run ({}), {}",
+                           method, particle_count(scene), particles, rough_number(excess.estimate),
+                           rough_number(run.dt > 0 ? run.span / run.dt : 0.0), run.dt, limit,
+                           who.shorter, insist_advice()));
     }
     if (excess.what == "pair predictions") {
         refuse(who.span,
-               fmt::format("the classic engine predicts each event's two discs against all {} "
-                           "discs: simulating t = 0..{:g} would take about {} pair predictions "
+               fmt::format("the classic engine predicts each event's two {} against all {} "
+                           "{}: simulating t = 0..{:g} would take about {} pair predictions "
                            "(about {} events), {}; use --engine fast (a cell grid: the same "
                            "physics, O(1) per event), simulate at most t = {:.3g} ({}), {}",
-                           scene.discs.size(), run.span, rough_number(excess.estimate),
-                           rough_number(collision_rate(scene).total() * run.span), limit,
+                           particles, particle_count(scene), particles, run.span,
+                           rough_number(excess.estimate),
+                           rough_number(collisions_per_time(scene) * run.span), limit,
                            run.span * excess.fitting_fraction(), who.shorter, insist_advice()));
     }
     if (excess.what == "queue steps") {
-        refuse(who.span,
-               fmt::format("an array queue (--pq unordered or ordered) walks its whole array "
-                           "on every removal or insertion: with {} discs, simulating t = 0..{:g} "
-                           "would take about {} queue steps, {}; use --pq binary (or any heap), "
-                           "fewer discs or a shorter run ({}), {}",
-                           scene.discs.size(), run.span, rough_number(excess.estimate), limit,
-                           who.shorter, insist_advice()));
+        refuse(
+            who.span,
+            fmt::format("an array queue (--pq unordered or ordered) walks its whole array "
+                        "on every removal or insertion: with {} {}, simulating t = 0..{:g} "
+                        "would take about {} queue steps, {}; use --pq binary (or any heap), "
+                        "fewer {} or a shorter run ({}), {}",
+                        particle_count(scene), particles, run.span, rough_number(excess.estimate),
+                        limit, particles, who.shorter, insist_advice()));
     }
     refuse(who.span,
            fmt::format("the run would go through about {} frames, {}; {}, {}",
@@ -201,8 +233,11 @@ void check_scene_hints(const Scene& scene, const WorkLimits& limits) {
     refuse_excess(scene, run, excess, who, "");
 }
 
-void check_simulate_work(const Scene& scene, const EngineOptions& engine, double until, bool insist,
-                         const WorkLimits& limits) {
+namespace {
+
+template <class SceneType>
+void check_simulate_work_of(const SceneType& scene, const EngineOptions& engine, double until,
+                            bool insist, const WorkLimits& limits) {
     RunShape run;
     run.span = until;
     run.time_driven = engine.engine == EngineKind::time;
@@ -222,6 +257,18 @@ void check_simulate_work(const Scene& scene, const EngineOptions& engine, double
     const WorkExcess excess = first_excess(work, limits);
     if (excess.what.empty()) return;
     refuse_excess(scene, run, excess, who, "");
+}
+
+}  // namespace
+
+void check_simulate_work(const Scene& scene, const EngineOptions& engine, double until, bool insist,
+                         const WorkLimits& limits) {
+    check_simulate_work_of(scene, engine, until, insist, limits);
+}
+
+void check_simulate_work(const SphereScene& scene, const EngineOptions& engine, double until,
+                         bool insist, const WorkLimits& limits) {
+    check_simulate_work_of(scene, engine, until, insist, limits);
 }
 
 }  // namespace collide::app

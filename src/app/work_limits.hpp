@@ -10,6 +10,7 @@
 #include <string>
 
 #include "collide/scene.hpp"
+#include "collide/scene3.hpp"
 #include "collide/sim/engine.hpp"
 #include "collide/sim/work_estimate.hpp"
 #include "render_plan.hpp"
@@ -37,5 +38,8 @@ void check_scene_hints(const Scene& scene, const WorkLimits& limits = {});
 /// can never finish (always), naming --until or --dt. Throws Error(input).
 void check_simulate_work(const Scene& scene, const EngineOptions& engine, double until, bool insist,
                          const WorkLimits& limits = {});
+/// The same for a 3D scene (every engine runs spheres), naming spheres.
+void check_simulate_work(const SphereScene& scene, const EngineOptions& engine, double until,
+                         bool insist, const WorkLimits& limits = {});
 
 }  // namespace collide::app

@@ -6,7 +6,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "collide/error.hpp"
 #include "collide/named_values.hpp"
@@ -16,6 +19,7 @@
 #include "collide/sim/generate.hpp"
 #include "collide/sim/generate3.hpp"
 #include "collide/sim/scene_check.hpp"
+#include "collide/space.hpp"
 #include "toml_limits.hpp"
 
 namespace collide {
@@ -30,7 +34,7 @@ const Keys box_keys = {"width", "height", "depth", "boundary"};
 const Keys sphere_keys = {"position", "velocity", "radius", "mass", "color", "tag"};
 const Keys fcc_keys = {"cells", "packing_fraction", "mass", "temperature", "color", "seed", "tag"};
 const Keys generate3_keys = {
-    "count", "packing_fraction", "radius", "mass", "temperature", "color", "seed", "tag"};
+    "count", "packing_fraction", "radius", "mass", "temperature", "region", "color", "seed", "tag"};
 const Keys disc_keys = {"position", "velocity", "radius", "mass", "color", "tag"};
 const Keys generate_keys = {"count", "packing_fraction", "radius", "mass", "temperature",
                             "speed", "region",           "color",  "seed", "tag"};
@@ -193,6 +197,8 @@ class TomlReader {
             fail(n, "sphere",
                  "more than " + std::to_string(most_explicit) +
                      " explicit spheres: use [[fcc]] or [[generate]]");
+        std::vector<std::pair<std::size_t, std::size_t>> contacts;  // touching pairs (j < i)
+        std::vector<const toml::node*> velocity_at;  // per sphere, null without a velocity
         for (std::size_t i = 0; i < a->size(); ++i) {
             const std::string field = "sphere[" + std::to_string(i) + "]";
             const toml::table& t = table_at(*a->get(i), field);
@@ -215,13 +221,71 @@ class TomlReader {
             for (std::size_t j = 0; j < s.spheres.size(); ++j) {
                 const Sphere& o = s.spheres[j];
                 const double dist = norm(s.box.displacement(o.position, p.position));
+                const double sigma = p.radius + o.radius;
                 // Touching within 1e-9 of the contact distance is allowed, as for discs.
-                if (dist < (p.radius + o.radius) * (1.0 - 1e-9))
+                if (dist < sigma * (1.0 - contact_tolerance))
                     fail(at, field + ".position",
                          "overlaps sphere[" + std::to_string(j) + "] (centres " + num(dist) +
-                             " apart, radii add up to " + num(p.radius + o.radius) + ")");
+                             " apart, radii add up to " + num(sigma) + ")");
+                if (dist <= sigma * (1.0 + contact_tolerance)) contacts.emplace_back(j, i);
             }
             s.spheres.push_back(std::move(p));
+            velocity_at.push_back(t.get("velocity"));
+        }
+        refuse_sphere_jams(s, contacts, velocity_at);
+    }
+
+    // A sphere in a straight row of touching spheres from wall to wall (or alone as wide as the
+    // box) that moves along the row: the row cannot move, so the engines would collide at t = 0
+    // forever. Named at its velocity, as 2D scenes name such discs (scene_check.cpp). Walled
+    // boxes only; other jams (rings around a periodic box, bent rows) are caught by the engines
+    // (sim::instant_collision_limit).
+    void refuse_sphere_jams(const SphereScene& s,
+                            const std::vector<std::pair<std::size_t, std::size_t>>& contacts,
+                            const std::vector<const toml::node*>& velocity_at) const {
+        if (s.box.boundary != Boundary::walls) return;
+        const std::size_t n = s.spheres.size();
+        const double straight = std::sqrt(contact_tolerance);  // as rows of discs
+        for (int k = 0; k < 3; ++k) {
+            std::vector<std::size_t> parent(n);
+            for (std::size_t i = 0; i < n; ++i) parent[i] = i;
+            const auto find = [&](std::size_t i) {
+                while (parent[i] != i) i = parent[i] = parent[parent[i]];
+                return i;
+            };
+            for (const auto& [i, j] : contacts) {
+                Vec3 d = s.spheres[j].position - s.spheres[i].position;
+                axis(d, k) = 0.0;  // what is left is the offset across the row
+                if (norm(d) > straight * (s.spheres[i].radius + s.spheres[j].radius)) continue;
+                parent[std::max(find(i), find(j))] = std::min(find(i), find(j));
+            }
+            std::vector<std::uint8_t> walls(n, 0);  // 1: touches the low wall, 2: the high one
+            std::vector<std::size_t> size(n, 0);
+            const double extent = axis(s.box.extent(), k);
+            for (std::size_t i = 0; i < n; ++i) {
+                const Sphere& q = s.spheres[i];
+                const double slack = contact_tolerance * q.radius;
+                const std::size_t root = find(i);
+                if (axis(q.position, k) - q.radius <= slack) walls[root] |= 1;
+                if (axis(q.position, k) + q.radius >= extent - slack) walls[root] |= 2;
+                ++size[root];
+            }
+            for (std::size_t i = 0; i < n; ++i) {
+                const std::size_t root = find(i);
+                if (walls[root] != 3 || axis(s.spheres[i].velocity, k) == 0.0) continue;
+                const std::string name(1, "xyz"[k]);
+                const std::string where =
+                    size[root] == 1 ? "it is as wide as the box along " + name
+                                    : "it is wedged between the walls " + name + " = 0 and " +
+                                          name + " = " + num(extent) + " in a straight row of " +
+                                          std::to_string(size[root]) + " touching spheres";
+                fail(*velocity_at[i], "sphere[" + std::to_string(i) + "].velocity",
+                     "jammed: " + where + ", so it cannot move along " + name +
+                         ", but its velocity has a " + name +
+                         " component (the engines would collide at t = 0 forever); leave a "
+                         "gap, or give it no velocity along " +
+                         name);
+            }
         }
     }
 
@@ -290,6 +354,13 @@ class TomlReader {
                 g.seed = static_cast<std::uint64_t>(integer(*v, key("seed"), 0));
             if (seed_override_) g.seed = *seed_override_ + i;
             if (const toml::node* v = t.get("tag")) g.tag = text_value(*v, key("tag"));
+            if (const toml::node* v = t.get("region")) {
+                const toml::array* corners = v->as_array();
+                if (corners == nullptr || corners->size() != 2)
+                    fail(*v, key("region"), "expected [[x0, y0, z0], [x1, y1, z1]]");
+                g.region_min = triple(*corners->get(0), key("region") + "[0]");
+                g.region_max = triple(*corners->get(1), key("region") + "[1]");
+            }
             try {
                 generate_spheres(s, g, field);
             } catch (const Error& e) {

@@ -9,18 +9,40 @@
 #include "collide/sim/fast_engine.hpp"
 #include "collide/sim/pq/with_queue.hpp"
 #include "collide/sim/time_engine.hpp"
+#include "collide/space.hpp"
 
 namespace collide {
 
 namespace {
 
 /// The classic loop on the queue chosen by --pq (every queue kind is compiled in).
-std::unique_ptr<Engine> make_classic_engine(const Scene& scene, const EngineOptions& options) {
+template <int D>
+std::unique_ptr<EngineOf<D>> make_classic_engine(const typename Space<D>::Scene& scene,
+                                                 const EngineOptions& options) {
     return pq::with_queue<sim::Event, pq::Orientation::min, sim::EventLess>(
-        options.pq, [&](auto&& queue) -> std::unique_ptr<Engine> {
+        options.pq, [&](auto&& queue) -> std::unique_ptr<EngineOf<D>> {
             using Queue = std::decay_t<decltype(queue)>;
-            return std::make_unique<sim::ClassicEngine<Queue>>(scene, std::move(queue));
+            return std::make_unique<sim::BasicClassicEngine<D, Queue>>(scene, std::move(queue));
         });
+}
+
+/// make_engine for either dimension: one choice of engine for discs and spheres.
+template <int D>
+std::unique_ptr<EngineOf<D>> make_engine_of(const typename Space<D>::Scene& scene,
+                                            const EngineOptions& options) {
+    switch (options.engine) {
+        case EngineKind::fast:
+            // Tiny periodic boxes (under three diameters) have no 3^D grid: the O(N) loop is
+            // exact there.
+            if (!sim::BasicFastEngine<D>::can_simulate(scene))
+                return make_classic_engine<D>(scene, EngineOptions{});
+            return std::make_unique<sim::BasicFastEngine<D>>(scene);
+        case EngineKind::classic:
+            return make_classic_engine<D>(scene, options);
+        case EngineKind::time:
+            return std::make_unique<sim::BasicTimeEngine<D>>(scene, options);
+    }
+    throw_runtime_error("make_engine: no such engine kind");
 }
 
 }  // namespace
@@ -61,19 +83,11 @@ void EngineOptions::validate(std::string_view dt_field) const {
 }
 
 std::unique_ptr<Engine> make_engine(const Scene& scene, const EngineOptions& options) {
-    switch (options.engine) {
-        case EngineKind::fast:
-            // Tiny periodic boxes (under three diameters) have no 3 x 3 grid: the O(N) loop is
-            // exact there.
-            if (!sim::FastEngine::can_simulate(scene))
-                return make_classic_engine(scene, EngineOptions{});
-            return std::make_unique<sim::FastEngine>(scene);
-        case EngineKind::classic:
-            return make_classic_engine(scene, options);
-        case EngineKind::time:
-            return std::make_unique<sim::TimeEngine>(scene, options);
-    }
-    throw_runtime_error("make_engine: no such engine kind");
+    return make_engine_of<2>(scene, options);
+}
+
+std::unique_ptr<SphereEngine> make_engine(const SphereScene& scene, const EngineOptions& options) {
+    return make_engine_of<3>(scene, options);
 }
 
 }  // namespace collide

@@ -150,6 +150,34 @@ packing_fraction = 0.3
     CHECK(contains(r.output, "collisions per time unit"));
 }
 
+TEST_CASE("collide check: a 3D row from wall to wall may move across itself, not along") {
+    const auto r = run_collide("check " + temp_scene("across3.toml", R"(dimension = 3
+[[sphere]]
+position = [0.5, 0.25, 0.5]
+radius = 0.25
+velocity = [0.5, 0, -0.2]
+[[sphere]]
+position = [0.5, 0.75, 0.5]
+radius = 0.25
+velocity = [-0.5, 0, 0.3]
+)"));
+    CHECK(r.exit_code == 0);
+    CHECK(contains(r.output, "N = 2 spheres (3D)"));
+}
+
+TEST_CASE("collide check: a 3D [[generate]] region is a box inside the box") {
+    const auto r = run_collide("check " + temp_scene("region.toml", R"(dimension = 3
+[box]
+depth = 2
+[[generate]]
+packing_fraction = 0.2
+radius = 0.05
+region = [[0, 0, 1], [1, 1, 2]]
+)"));
+    CHECK(r.exit_code == 0);
+    CHECK(contains(r.output, "N = 382 spheres (3D), eta = 0.1"));
+}
+
 TEST_CASE("collide check: bad 3D scenes exit 2 naming file, line and field") {
     struct Case {
         const char* file;
@@ -180,6 +208,22 @@ TEST_CASE("collide check: bad 3D scenes exit 2 naming file, line and field") {
          "packing_fraction = 0.5\n",
          "fcc3.toml:5: fcc.packing_fraction: packing 0.5 is too dense to generate in this box"},
         {"dim4.toml", "dimension = 4\n", "dim4.toml:1: dimension: expected 2 (discs) or 3"},
+        {"wide3.toml",
+         "dimension = 3\n[box]\ndepth = 0.2\n[[sphere]]\nposition = [0.5, 0.5, 0.1]\n"
+         "radius = 0.1\nvelocity = [0.3, 0, 0.5]\n",
+         "wide3.toml:7: sphere[0].velocity: jammed: it is as wide as the box along z"},
+        {"row3.toml",
+         "dimension = 3\n[[sphere]]\nposition = [0.5, 0.25, 0.5]\nradius = 0.25\n"
+         "[[sphere]]\nposition = [0.5, 0.75, 0.5]\nradius = 0.25\nvelocity = [0, 1, 0]\n",
+         "row3.toml:8: sphere[1].velocity: jammed: it is wedged between the walls y = 0 and y = 1 "
+         "in a straight row of 2 touching spheres"},
+        {"region3.toml",
+         "dimension = 3\n[[generate]]\ncount = 10\nradius = 0.05\n"
+         "region = [[0, 0, 0], [1, 1, 2]]\n",
+         "region3.toml:2: generate[0].region: the region must lie inside the box"},
+        {"region2d3.toml",
+         "dimension = 3\n[[generate]]\ncount = 10\nradius = 0.05\nregion = [[0, 0], [1, 1]]\n",
+         "region2d3.toml:5: generate[0].region[0]: expected [x, y, z]"},
     };
     for (const Case& c : cases) {
         CAPTURE(c.file);

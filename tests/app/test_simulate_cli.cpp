@@ -154,11 +154,30 @@ TEST_CASE("collide simulate of a 3D scene reports kT (3 dof), Z, packing fractio
     CHECK(value("compressibility") > 2.0);  // Carnahan-Starling: 3.97 at 0.3
     CHECK(value("msd") > 0.0);
     CHECK(value("max_overlap") < 1e-12);
-    const auto classic =
-        run_collide("simulate \"" + path.string() + "\" --until 0.5 --engine classic");
-    CHECK(classic.exit_code == 2);
-    CHECK(contains(classic.output,
-                   "--engine: expected fast (the only engine that runs spheres yet)"));
+    // Every engine runs spheres: the classic loop makes as many collisions as the fast engine
+    // (not the same ones after some 10^3: chaos amplifies their different rounding), the
+    // time-driven one reports its steps and what it missed.
+    const auto classic = run_collide("simulate \"" + path.string() +
+                                     "\" --until 0.5 --engine classic --pq indexed --json");
+    INFO(classic.output);
+    REQUIRE(classic.exit_code == 0);
+    CHECK(contains(classic.output, "\"pq\": \"indexed:4\","));
+    const std::size_t at = classic.output.find("\"collisions_pair\": ");
+    REQUIRE(at != std::string::npos);
+    CHECK(std::stod(classic.output.substr(at + 19)) ==
+          doctest::Approx(value("collisions_pair")).epsilon(0.02));
+    const auto timed =
+        run_collide("simulate \"" + path.string() +
+                    "\" --until 0.5 --engine time --dt 0.005 --td-detect grid --json");
+    INFO(timed.output);
+    REQUIRE(timed.exit_code == 0);
+    CHECK(contains(timed.output, "\"steps\": 100,"));
+    CHECK(contains(timed.output, "\"missed_collisions\": "));
+    // The work limits hold in 3D: all pairs of 256 spheres for 10^9 steps is refused.
+    const auto refused =
+        run_collide("simulate \"" + path.string() + "\" --until 1e3 --engine time --dt 1e-6");
+    CHECK(refused.exit_code == 2);
+    CHECK(contains(refused.output, "256 spheres"));
     const auto render = run_collide("thumbnail \"" + path.string() + "\" -o /dev/null");
     CHECK(render.exit_code == 2);
     CHECK(contains(render.output, "dimension: a 3D scene (spheres)"));

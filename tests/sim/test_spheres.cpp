@@ -122,6 +122,66 @@ TEST_CASE("random spheres do not overlap and lie inside a walled box") {
     CHECK(sim::max_overlap(positions, radii, scene.box) <= 0.0);
 }
 
+TEST_CASE("random spheres in a region (a box inside the box) lie entirely inside it") {
+    SphereScene scene;
+    scene.box = Box3{1.0, 1.0, 2.0, Boundary::walls};
+    SphereGenerateSpec gen;
+    gen.packing_fraction = 0.2;  // of the region: twice the spheres the half box's share gives
+    gen.radius = 0.04;
+    gen.seed = 9;
+    gen.region_min = {0.0, 0.0, 1.0};
+    gen.region_max = Vec3{1.0, 1.0, 2.0};
+    generate_spheres(scene, gen);
+    const double one = 4.0 / 3.0 * std::numbers::pi * std::pow(gen.radius, 3.0);
+    CHECK(static_cast<double>(scene.spheres.size()) == std::round(0.2 * 1.0 / one));
+    for (const Sphere& s : scene.spheres) {
+        CHECK(s.position.z - s.radius >= 1.0);
+        CHECK(scene.box.contains(s.position, s.radius));
+    }
+    // A second block in the other half avoids the first.
+    gen.region_min = {0.0, 0.0, 0.0};
+    gen.region_max = Vec3{1.0, 1.0, 1.0};
+    gen.seed = 10;
+    const std::size_t first = scene.spheres.size();
+    generate_spheres(scene, gen);
+    REQUIRE(scene.spheres.size() == 2 * first);
+    std::vector<Vec3> positions;
+    std::vector<double> radii;
+    for (const Sphere& s : scene.spheres) {
+        positions.push_back(s.position);
+        radii.push_back(s.radius);
+    }
+    CHECK(sim::max_overlap(positions, radii, scene.box) <= 0.0);
+}
+
+TEST_CASE("bad 3D regions name generate.region") {
+    SphereScene scene;
+    scene.box = Box3{1.0, 1.0, 1.0, Boundary::walls};
+    SphereGenerateSpec gen;
+    gen.count = 10;
+    gen.radius = 0.05;
+    gen.region_max = Vec3{1.0, 1.0, 1.5};  // deeper than the box
+    std::string e = error_of([&] { generate_spheres(scene, gen); });
+    CHECK(e.find("generate.region") != std::string::npos);
+    CHECK(e.find("inside the box") != std::string::npos);
+    gen.region_min = {0.5, 0.0, 0.0};
+    gen.region_max = Vec3{0.4, 1.0, 1.0};  // upside down along x
+    e = error_of([&] { generate_spheres(scene, gen); });
+    CHECK(e.find("generate.region") != std::string::npos);
+    CHECK(e.find("second corner") != std::string::npos);
+    gen.region_min = {0.0, 0.0, 0.0};
+    gen.region_max = Vec3{0.05, 1.0, 1.0};  // thinner than a sphere
+    e = error_of([&] { generate_spheres(scene, gen); });
+    CHECK(e.find("generate.radius") != std::string::npos);
+    CHECK(e.find("does not fit the region") != std::string::npos);
+    gen.count = 0;
+    gen.packing_fraction = 0.4;  // of a small region: too dense there although the box is not
+    gen.region_max = Vec3{0.5, 0.5, 0.5};
+    e = error_of([&] { generate_spheres(scene, gen); });
+    CHECK(e.find("generate.packing_fraction") != std::string::npos);
+    CHECK(e.find("of the region is too dense") != std::string::npos);
+}
+
 TEST_CASE("3D: a head-on collision along a diagonal exchanges the velocities of equal spheres") {
     SphereScene scene;
     scene.box = Box3{2.0, 2.0, 2.0, Boundary::walls};

@@ -7,8 +7,14 @@
 /// O(N) per event and a queue that fills with stale events: it exists for teaching and as the
 /// test oracle of the fast engine. A template over the queue type, so that every queue of the
 /// priority-queue lecture can drive it (the strict event order makes them all agree exactly).
+///
+/// One code for discs and spheres: BasicClassicEngine<D, Queue> is a template over the dimension
+/// (its Space: vector, box, scene); a wall event per axis (zwall in 3D) and, in a periodic box,
+/// the 3^D nearest images of a partner. ClassicEngine<Queue> is the 2D engine (discs),
+/// ClassicSphereEngine<Queue> the 3D one.
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -21,24 +27,34 @@
 #include "collide/sim/kinematics.hpp"
 #include "collide/sim/observables.hpp"
 #include "collide/sim/queue_view.hpp"
+#include "collide/space.hpp"
 
 namespace collide::sim {
 
 /// Queue: a min-queue of sim::Event ordered by sim::EventLess with push(Event), pop() -> Event,
 /// top(), empty() and size() (e.g. pq::DaryHeap<Event, Orientation::min, 2, EventLess>).
-template <class Queue>
-class ClassicEngine final : public Engine {
+template <int D, class Queue>
+class BasicClassicEngine final : public EngineOf<D> {
   public:
+    using Space = collide::Space<D>;
+    using Vec = typename Space::Vec;
+    using BoxType = typename Space::Box;
+    using SceneType = typename Space::Scene;
+
     /// Copies the scene (validated by the caller): O(N). The first advance_to() predicts every
     /// initial event: O(N^2) time, O(number of predicted events) memory.
-    explicit ClassicEngine(const Scene& scene, Queue queue = Queue{})
-        : core_(scene), box_(scene.box), queue_(std::move(queue)) {
-        const std::size_t n = scene.discs.size();
+    explicit BasicClassicEngine(const SceneType& scene, Queue queue = Queue{})
+        : core_(scene),
+          box_(scene.box),
+          extent_(Space::extent(scene.box)),
+          queue_(std::move(queue)) {
+        const auto& particles = Space::particles(scene);
+        const std::size_t n = particles.size();
         position_.reserve(n);
         velocity_.reserve(n);
         radius_.reserve(n);
         mass_.reserve(n);
-        for (const Disc& d : scene.discs) {
+        for (const auto& d : particles) {
             position_.push_back(d.position);
             velocity_.push_back(d.velocity);
             radius_.push_back(d.radius);
@@ -58,7 +74,7 @@ class ClassicEngine final : public Engine {
         const WallClock clock = core_.start_advance(now_, t);
         predict_initial_events();
         while (!queue_.empty() && queue_.top().t <= t) {
-            poll_stop();
+            this->poll_stop();
             const Event e = queue_.pop();
             if (!accept(e)) continue;
             move_all_to(e.t);
@@ -67,7 +83,7 @@ class ClassicEngine final : public Engine {
                 predict(e.a);
                 predict(e.b);
             } else {
-                bounce_off_wall(e.a, e.kind == EventKind::xwall ? 0 : 1);
+                bounce_off_wall(e.a, wall_axis(e.kind));
                 predict(e.a);
             }
         }
@@ -76,13 +92,23 @@ class ClassicEngine final : public Engine {
 
     [[nodiscard]] double time() const noexcept override { return now_; }
 
-    [[nodiscard]] Snapshot snapshot() const override {
-        Snapshot s = core_.start_snapshot(now_);
+    [[nodiscard]] SnapshotOf<D> snapshot() const override {
+        SnapshotOf<D> s = core_.start_snapshot(now_);
         for (std::size_t i = 0; i < position_.size(); ++i) {
-            EngineCore::set_motion(s.discs[i], box_.wrap(position_[i]), velocity_[i], radius_[i],
-                                   mass_[i]);
+            auto& out = [&]() -> auto& {
+                if constexpr (D == 2) {
+                    return s.discs[i];
+                } else {
+                    return s.spheres[i];
+                }
+            }
+            ();
+            BasicEngineCore<D>::set_motion(out, box_.wrap(position_[i]), velocity_[i], radius_[i],
+                                           mass_[i]);
         }
-        if (watch_.on()) s.queue = queue_view();
+        if constexpr (D == 2) {
+            if (watch_.on()) s.queue = queue_view();
+        }
         return s;
     }
 
@@ -128,7 +154,7 @@ class ClassicEngine final : public Engine {
     void predict_initial_events() {
         const auto n = static_cast<std::uint32_t>(position_.size());
         for (; initial_rows_ < n; ++initial_rows_) {
-            check_stop();  // one look per row of n - i tests: nothing next to the row's cost
+            this->check_stop();  // one look per row of n - i tests: nothing next to the row's cost
             predict_row(initial_rows_);
         }
     }
@@ -193,49 +219,76 @@ class ClassicEngine final : public Engine {
         }
     }
 
-    /// Disc i against the walls (none in a periodic box).
+    /// The wall event of each axis (0 x, 1 y, 2 z) and back.
+    [[nodiscard]] static constexpr EventKind wall_kind(int axis) noexcept {
+        return static_cast<EventKind>(static_cast<int>(EventKind::xwall) + axis);
+    }
+    [[nodiscard]] static constexpr int wall_axis(EventKind kind) noexcept {
+        return static_cast<int>(kind) - static_cast<int>(EventKind::xwall);
+    }
+
+    /// Disc i against the walls of each axis in turn (none in a periodic box).
     void predict_walls(std::uint32_t i) {
         if (box_.boundary == Boundary::periodic) return;
-        const double tx =
-            kinematics::time_to_wall(position_[i].x, velocity_[i].x, radius_[i], box_.width);
-        const double ty =
-            kinematics::time_to_wall(position_[i].y, velocity_[i].y, radius_[i], box_.height);
-        core_.counters().predictions += 2;
-        if (tx != kinematics::never)
-            push(Event{now_ + tx, EventKind::xwall, i, no_disc, count_[i], 0});
-        if (ty != kinematics::never)
-            push(Event{now_ + ty, EventKind::ywall, i, no_disc, count_[i], 0});
+        std::array<double, D> t{};
+        for (int k = 0; k < D; ++k) {
+            t[k] = kinematics::time_to_wall(axis(position_[i], k), axis(velocity_[i], k),
+                                            radius_[i], axis(extent_, k));
+        }
+        core_.counters().predictions += D;
+        for (int k = 0; k < D; ++k) {
+            if (t[k] != kinematics::never)
+                push(Event{now_ + t[k], wall_kind(k), i, no_disc, count_[i], 0});
+        }
     }
 
     /// Time until i and j touch in a walled box (kinematics::time_to_hit), or never for a pair
     /// that has just collided with each other.
     [[nodiscard]] double time_to_hit(std::uint32_t i, std::uint32_t j) const noexcept {
-        const Vec2 dr = position_[j] - position_[i];
+        const Vec dr = position_[j] - position_[i];
         const double sigma = radius_[i] + radius_[j];
         if (just_collided(i, j, dr, sigma)) return kinematics::never;
         return kinematics::time_to_hit(dr, velocity_[j] - velocity_[i], sigma);
     }
 
-    /// time_to_hit in a periodic box: the earliest of the nine nearest images of j, so that a
-    /// pair meeting across the seam is found even when another image is nearer now.
+    /// time_to_hit in a periodic box: the earliest of the 3^D nearest images of j, so that a
+    /// pair meeting across the seam is found even when another image is nearer now. A pair that
+    /// has just collided skips only the image it still touches: in a small box (a few diameters
+    /// across) it can meet again through another image before either hits anything else, and
+    /// nothing would predict that meeting later (the classic loop predicts a disc only after its
+    /// own collisions).
     [[nodiscard]] double time_to_hit_nearest_image(std::uint32_t i,
                                                    std::uint32_t j) const noexcept {
         const double sigma = radius_[i] + radius_[j];
-        const Vec2 dr = box_.displacement(position_[i], position_[j]);
-        if (just_collided(i, j, dr, sigma)) return kinematics::never;
-        const Vec2 dv = velocity_[j] - velocity_[i];
+        const Vec dr = box_.displacement(position_[i], position_[j]);
+        const bool after_contact = just_collided(i, j, dr, sigma);
+        const Vec dv = velocity_[j] - velocity_[i];
         double best = kinematics::never;
-        for (int ky = -1; ky <= 1; ++ky) {
-            for (int kx = -1; kx <= 1; ++kx) {
-                const Vec2 image{dr.x + kx * box_.width, dr.y + ky * box_.height};
-                best = std::min(best, kinematics::time_to_hit(image, dv, sigma));
+        const auto consider = [&](Vec image) {
+            if (after_contact && just_collided(i, j, image, sigma)) return;
+            best = std::min(best, kinematics::time_to_hit(image, dv, sigma));
+        };
+        if constexpr (D == 2) {
+            for (int ky = -1; ky <= 1; ++ky) {
+                for (int kx = -1; kx <= 1; ++kx) {
+                    consider(Vec2{dr.x + kx * box_.width, dr.y + ky * box_.height});
+                }
+            }
+        } else {
+            for (int kz = -1; kz <= 1; ++kz) {
+                for (int ky = -1; ky <= 1; ++ky) {
+                    for (int kx = -1; kx <= 1; ++kx) {
+                        consider(Vec3{dr.x + kx * box_.width, dr.y + ky * box_.height,
+                                      dr.z + kz * box_.depth});
+                    }
+                }
             }
         }
         return best;
     }
 
     /// See sim::just_collided_slack: a pair still touching after colliding with each other.
-    [[nodiscard]] bool just_collided(std::uint32_t i, std::uint32_t j, Vec2 dr,
+    [[nodiscard]] bool just_collided(std::uint32_t i, std::uint32_t j, Vec dr,
                                      double sigma) const noexcept {
         if (last_partner_[i] != j || last_partner_[j] != i) return false;
         const double reach = sigma * (1.0 + just_collided_slack);
@@ -256,23 +309,23 @@ class ClassicEngine final : public Engine {
     void bounce_off(std::uint32_t a, std::uint32_t b) {
         count_collision_now(a);
         count_collision_now(b);
-        const Vec2 dr = box_.displacement(position_[a], position_[b]);
-        const Vec2 impulse =
+        const Vec dr = box_.displacement(position_[a], position_[b]);
+        const Vec impulse =
             kinematics::resolve_pair(velocity_[a], velocity_[b], mass_[a], mass_[b], dr);
         last_partner_[a] = b;
         last_partner_[b] = a;
         collided(EventKind::pair, a, b, std::abs(dot(dr, impulse)));
     }
 
-    /// Disc a touches a wall across `axis` (0: left or right, 1: bottom or top): that velocity
-    /// component reverses.
-    void bounce_off_wall(std::uint32_t a, int axis) {
+    /// Disc a touches a wall across axis k (0: left or right, 1: bottom or top, 2: front or
+    /// back): that velocity component reverses.
+    void bounce_off_wall(std::uint32_t a, int k) {
         count_collision_now(a);
-        double& v = axis == 0 ? velocity_[a].x : velocity_[a].y;
+        double& v = axis(velocity_[a], k);
         const double impulse = 2.0 * mass_[a] * std::abs(v);
         v = -v;
         last_partner_[a] = no_disc;
-        collided(axis == 0 ? EventKind::xwall : EventKind::ywall, a, no_disc, impulse);
+        collided(wall_kind(k), a, no_disc, impulse);
     }
 
     /// The bookkeeping of every collision at now_, in one place: the pressure tally (pairs: the
@@ -292,7 +345,7 @@ class ClassicEngine final : public Engine {
 
     [[nodiscard]] std::uint64_t bytes() const noexcept {
         const std::size_t vecs =
-            (position_.capacity() + velocity_.capacity() + start_.capacity()) * sizeof(Vec2);
+            (position_.capacity() + velocity_.capacity() + start_.capacity()) * sizeof(Vec);
         const std::size_t scalars =
             (radius_.capacity() + mass_.capacity() + instant_t_.capacity()) * sizeof(double) +
             (count_.capacity() + last_partner_.capacity() + instant_collisions_.capacity()) *
@@ -301,16 +354,17 @@ class ClassicEngine final : public Engine {
         return vecs + scalars + core_.bytes() + core_.counters().queue.max_size * sizeof(Event);
     }
 
-    EngineCore core_;
-    Box box_;
+    BasicEngineCore<D> core_;
+    BoxType box_;
+    Vec extent_;  ///< the box's sides (width, height[, depth])
     Queue queue_;
     double now_ = 0.0;
     // Positions (unwrapped in periodic boxes, for the displacement) and velocities.
-    std::vector<Vec2> position_;
-    std::vector<Vec2> velocity_;
+    std::vector<Vec> position_;
+    std::vector<Vec> velocity_;
     std::vector<double> radius_;
     std::vector<double> mass_;
-    std::vector<Vec2> start_;                  ///< positions at t = 0 (mean squared displacement)
+    std::vector<Vec> start_;                   ///< positions at t = 0 (mean squared displacement)
     std::vector<std::uint32_t> count_;         ///< collisions per disc (lazy invalidation)
     std::vector<std::uint32_t> last_partner_;  ///< see just_collided
     std::vector<double> instant_t_;            ///< time of each disc's latest collision
@@ -319,5 +373,12 @@ class ClassicEngine final : public Engine {
     std::uint32_t initial_rows_ = 0;                 ///< see predict_initial_events
     QueueWatch watch_;  ///< off unless a teaching video asked for the queue (watch_queue)
 };
+
+/// The lecture's loop on discs (`--engine classic`).
+template <class Queue>
+using ClassicEngine = BasicClassicEngine<2, Queue>;
+/// The lecture's loop on spheres (3D scenes).
+template <class Queue>
+using ClassicSphereEngine = BasicClassicEngine<3, Queue>;
 
 }  // namespace collide::sim

@@ -14,6 +14,7 @@
 
 #include "collide/error.hpp"
 #include "collide/scene.hpp"
+#include "collide/scene3.hpp"
 #include "collide/sim/measurements.hpp"
 #include "collide/sim/pq/queue_kind.hpp"
 #include "collide/snapshot.hpp"
@@ -168,5 +169,8 @@ namespace collide {
 /// Builds the engine named by options.engine for the scene (validated by the caller).
 /// Throws Error(input) naming `dt` for a bad time step (EngineOptions::validate).
 [[nodiscard]] std::unique_ptr<Engine> make_engine(const Scene& scene, const EngineOptions& options);
+/// The same for spheres (a `dimension = 3` scene): every engine runs in 3D.
+[[nodiscard]] std::unique_ptr<SphereEngine> make_engine(const SphereScene& scene,
+                                                        const EngineOptions& options);
 
 }  // namespace collide

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "collide/scene3.hpp"
@@ -36,13 +37,16 @@ struct FccSpec {
 };
 
 /// One `[[generate]]` block of a 3D scene: spheres of one radius and mass at random positions in
-/// the whole box, without overlaps.
+/// a region of the box (a box itself: two opposite corners; the whole box by default), without
+/// overlaps.
 struct SphereGenerateSpec {
     std::size_t count = 0;          ///< spheres; 0 => derived from packing_fraction
-    double packing_fraction = 0.0;  ///< of the box (used when count == 0)
+    double packing_fraction = 0.0;  ///< of the region (used when count == 0)
     double radius = 0.05;           ///< > 0
     double mass = 1.0;
     double temperature = 1.0;
+    Vec3 region_min{0.0, 0.0, 0.0};  ///< region corners; default = the whole box
+    std::optional<Vec3> region_max;  ///< unset => (width, height, depth)
     Rgb8 color{48, 96, 224};
     std::string tag;
     std::uint64_t seed = 1;
@@ -54,10 +58,11 @@ struct SphereGenerateSpec {
 /// than max_generated_spheres. O(N).
 void generate_fcc(SphereScene& scene, const FccSpec& spec, const std::string& prefix = "fcc");
 
-/// Appends randomly placed spheres that avoid every sphere already there and lie inside the box
-/// (a periodic box wraps). Throws Error(input) naming `prefix`.field for a bad spec, a packing
-/// fraction above max_random_sphere_packing ("too dense to generate at random: use [[fcc]]") or
-/// a placement that fails. O(N) expected (cell grid).
+/// Appends randomly placed spheres that avoid every sphere already there and lie entirely inside
+/// the region (a region equal to a periodic box wraps around). Throws Error(input) naming
+/// `prefix`.field for a bad spec (`region`: corners not finite, not ordered, or outside the box),
+/// a packing fraction of the region or of the box above max_random_sphere_packing ("too dense to
+/// generate at random: use [[fcc]]") or a placement that fails. O(N) expected (cell grid).
 void generate_spheres(SphereScene& scene, const SphereGenerateSpec& spec,
                       const std::string& prefix = "generate");
 

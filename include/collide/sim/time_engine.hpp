@@ -51,6 +51,11 @@
 /// measurements() report them. Missed-collision markers accumulate during one advance_to() call
 /// and are cleared when the next call starts, so each snapshot (one per frame) carries the misses
 /// since the previous frame.
+///
+/// One code for discs and spheres: BasicTimeEngine<D> is a template over the dimension (its
+/// Space: vector, box, scene), with a wall contact per axis (zwall in 3D), the all-pairs sweep
+/// over D coordinates and a grid of 3^D-cell neighbourhoods. TimeEngine is the 2D engine (discs),
+/// TimeSphereEngine the 3D one.
 
 #include <cstddef>
 #include <cstdint>
@@ -62,6 +67,7 @@
 #include "collide/scene.hpp"
 #include "collide/sim/engine.hpp"
 #include "collide/sim/engine_core.hpp"
+#include "collide/space.hpp"
 
 namespace collide {
 
@@ -74,15 +80,23 @@ void validate_time_driven_options(const EngineOptions& options, std::string_view
 namespace collide::sim {
 
 namespace detail {
-class CellGrid;
-class PairSweep;
+template <int D>
+class BasicCellGrid;
+template <int D>
+class BasicPairSweep;
 }  // namespace detail
 
 /// The time-driven engine (`--engine time`). Deterministic: the same scene and options give the
 /// same snapshots and the same collision records. Cost per step: all-pairs O(N^2), grid about
 /// O(N) for a gas (cells are at least 2 r_max + 2 v_max h wide, so fast discs make them large).
-class TimeEngine final : public Engine {
+template <int D>
+class BasicTimeEngine final : public EngineOf<D> {
   public:
+    using Space = collide::Space<D>;
+    using Vec = typename Space::Vec;
+    using BoxType = typename Space::Box;
+    using SceneType = typename Space::Scene;
+
     /// Relative tolerance on the contact distance sigma under which two discs count as touching,
     /// not overlapping, in the census: rollback leaves a pair at contact up to rounding (~1e-16).
     static constexpr double contact_slack = 1e-9;
@@ -92,8 +106,8 @@ class TimeEngine final : public Engine {
 
     /// The scene must be valid (positive radii and masses, finite values). Throws Error(input)
     /// naming `dt` for a bad time step (validate_time_driven_options).
-    TimeEngine(const Scene& scene, const EngineOptions& options);
-    ~TimeEngine() override;
+    BasicTimeEngine(const SceneType& scene, const EngineOptions& options);
+    ~BasicTimeEngine() override;
 
     /// A step that would end within this fraction of dt after t still counts as ending at or
     /// before t: frame times (multiples of 1/30, say) that are whole numbers of steps are not
@@ -112,7 +126,7 @@ class TimeEngine final : public Engine {
     [[nodiscard]] double time() const noexcept override { return clock_; }
     /// Discs at the latest whole step (Snapshot::time = k dt), with the escaped flags, the pairs
     /// overlapping now and the markers of the collisions missed during the last advance_to() call.
-    [[nodiscard]] Snapshot snapshot() const override;
+    [[nodiscard]] SnapshotOf<D> snapshot() const override;
     /// Everything measured so far; O(N).
     [[nodiscard]] Measurements measurements() const override;
     /// Called for every resolved contact, in processing order, with the contact time solved in the
@@ -140,7 +154,9 @@ class TimeEngine final : public Engine {
     /// COLLIDE_VALIDATE builds, after every step: finite state, kinetic energy conserved (every
     /// resolution is elastic). Throws Error(runtime) naming the broken invariant. O(N).
     void validate_state() const;
-    void move(std::uint32_t i, Vec2 delta);
+    void move(std::uint32_t i, Vec delta);
+    /// Entirely past a wall line along some axis (an escape, in a walled box).
+    [[nodiscard]] bool is_outside(Vec p, double r) const noexcept;
     [[nodiscard]] double max_speed() const noexcept;
     [[nodiscard]] double kinetic_energy() const noexcept;
     /// Heap memory held by the engine's containers (capacity), for Measurements::engine_bytes.
@@ -152,17 +168,18 @@ class TimeEngine final : public Engine {
     template <typename PairVisitor>
     void for_each_candidate_pair(double h, PairVisitor&& visit);
 
-    EngineCore core_;
-    Box box_;
+    BasicEngineCore<D> core_;
+    BoxType box_;
+    Vec extent_;  ///< the box's sides (width, height[, depth])
     double dt_;
     bool use_grid_;
     double max_radius_ = 0.0;
     double initial_energy_ = 0.0;
 
     // Per-disc state, in scene order.
-    std::vector<Vec2> position_;
-    std::vector<Vec2> velocity_;
-    std::vector<Vec2> displacement_;  ///< unwrapped displacement since t = 0 (mean squared displ.)
+    std::vector<Vec> position_;
+    std::vector<Vec> velocity_;
+    std::vector<Vec> displacement_;  ///< unwrapped displacement since t = 0 (mean squared displ.)
     std::vector<double> radius_;
     std::vector<double> mass_;
     std::vector<bool> escaped_;
@@ -172,13 +189,13 @@ class TimeEngine final : public Engine {
                                ///< landing_tolerance dt later)
     double step_start_ = 0.0;  ///< simulation time at which the current step began
     std::vector<Contact> contacts_;
-    std::unique_ptr<detail::CellGrid> grid_;
-    std::unique_ptr<detail::PairSweep> sweep_;                         ///< all-pairs detection
+    std::unique_ptr<detail::BasicCellGrid<D>> grid_;
+    std::unique_ptr<detail::BasicPairSweep<D>> sweep_;                 ///< all-pairs detection
     std::vector<std::pair<std::uint32_t, std::uint32_t>> candidates_;  ///< from sweep_, reused
 
     // Failure markers and census (recomputed after each advance_to).
     std::vector<std::pair<std::uint32_t, std::uint32_t>> overlapping_pairs_;
-    std::vector<Vec2> missed_markers_;
+    std::vector<Vec> missed_markers_;
     double max_overlap_ = 0.0;
     std::uint64_t escaped_count_ = 0;
 
@@ -188,5 +205,13 @@ class TimeEngine final : public Engine {
     std::uint64_t missed_ = 0;
     double max_overlap_seen_ = 0.0;
 };
+
+extern template class BasicTimeEngine<2>;
+extern template class BasicTimeEngine<3>;
+
+/// The time-driven engine of discs (`--engine time`).
+using TimeEngine = BasicTimeEngine<2>;
+/// The time-driven engine of spheres (3D scenes).
+using TimeSphereEngine = BasicTimeEngine<3>;
 
 }  // namespace collide::sim

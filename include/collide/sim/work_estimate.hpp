@@ -7,6 +7,7 @@
 /// The estimates are orders of magnitude, not predictions: collisions come from the kinetic
 /// theory of a hard-disc gas (see collision_rate), steps from span / dt.
 
+#include <cstddef>
 #include <string>
 
 #include "collide/scene.hpp"
@@ -86,6 +87,13 @@ inline constexpr double grid_checks_per_disc = 10.0;
 
 /// Estimates the work of `run` on `scene`. O(N) (one pass for the collision rate).
 [[nodiscard]] WorkEstimate estimate_work(const Scene& scene, const RunShape& run) noexcept;
+
+/// What estimate_work does once it has the scene's rates: the work of `run` on `particles`
+/// discs or spheres that collide collisions_per_time times and cross cells crossings_per_time
+/// times per time unit. The part that does not depend on the dimension (3D: sphere_check.hpp).
+[[nodiscard]] WorkEstimate estimate_work_at_rates(double collisions_per_time,
+                                                  double crossings_per_time, std::size_t particles,
+                                                  const RunShape& run) noexcept;
 
 /// The most work a run may take without the user insisting (`--no-limits`): each limit is about
 /// an hour or more of computing on a laptop core, far beyond any lesson's video.

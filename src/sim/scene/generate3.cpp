@@ -123,18 +123,54 @@ void generate_fcc(SphereScene& scene, const FccSpec& spec, const std::string& pr
     thermal_velocities(scene.spheres, first, spec.temperature, rng);
 }
 
+namespace {
+
+/// Where a [[generate]] block places its spheres: the region's corners and volume.
+struct Region {
+    Vec3 lo;
+    Vec3 hi;
+    double volume = 0.0;
+    bool wraps = false;  ///< the region is the whole periodic box: centres anywhere
+};
+
+/// The block's region (the whole box by default), checked: finite corners, the second above the
+/// first along every axis, both inside the box.
+Region resolve_region(const Box3& box, const SphereGenerateSpec& spec, const std::string& prefix) {
+    const Vec3 lo = spec.region_min;
+    const Vec3 hi = spec.region_max.value_or(box.extent());
+    const auto finite = [](Vec3 v) {
+        return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+    };
+    if (!finite(lo) || !finite(hi)) fail(prefix, "region", "corners must be finite numbers");
+    if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z))
+        fail(prefix, "region",
+             "the second corner must lie above the first along x, y and z (a box: "
+             "[[x0, y0, z0], [x1, y1, z1]])");
+    if (lo.x < 0.0 || lo.y < 0.0 || lo.z < 0.0 || hi.x > box.width || hi.y > box.height ||
+        hi.z > box.depth)
+        fail(prefix, "region",
+             "the region must lie inside the box [0, " + num(box.width) + "] x [0, " +
+                 num(box.height) + "] x [0, " + num(box.depth) + "]");
+    Region r{lo, hi, (hi.x - lo.x) * (hi.y - lo.y) * (hi.z - lo.z), false};
+    r.wraps = box.boundary == Boundary::periodic && lo == Vec3{} && hi == box.extent();
+    return r;
+}
+
+}  // namespace
+
 void generate_spheres(SphereScene& scene, const SphereGenerateSpec& spec,
                       const std::string& prefix) {
     check_common(prefix, spec.mass, spec.temperature);
     if (!(spec.radius > 0.0 && std::isfinite(spec.radius)))
         fail(prefix, "radius", "must be finite and > 0");
     const Box3& box = scene.box;
+    const Region where = resolve_region(box, spec, prefix);
     const double volume = 4.0 / 3.0 * std::numbers::pi * spec.radius * spec.radius * spec.radius;
     double wanted = static_cast<double>(spec.count);
     if (spec.count == 0) {
         if (!(spec.packing_fraction > 0.0))
             fail(prefix, "count", "give a count or a packing_fraction > 0");
-        wanted = std::round(spec.packing_fraction * box.volume() / volume);
+        wanted = std::round(spec.packing_fraction * where.volume / volume);
     }
     if (wanted > static_cast<double>(max_generated_spheres))
         fail(prefix, spec.count == 0 ? "packing_fraction" : "count",
@@ -147,16 +183,24 @@ void generate_spheres(SphereScene& scene, const SphereGenerateSpec& spec,
         occupied += 4.0 / 3.0 * std::numbers::pi * s.radius * s.radius * s.radius;
         r_max = std::max(r_max, s.radius);
     }
-    const double eta = (occupied + static_cast<double>(count) * volume) / box.volume();
+    // The block's own packing of its region, and the box's with it: neither above the limit.
+    const double eta_region = static_cast<double>(count) * volume / where.volume;
+    const double eta_box = (occupied + static_cast<double>(count) * volume) / box.volume();
+    const double eta = std::max(eta_region, eta_box);
     if (eta > max_random_sphere_packing)
         fail(prefix, spec.count == 0 ? "packing_fraction" : "count",
-             "packing " + num(eta) + " is too dense to generate at random (at most " +
-                 num(max_random_sphere_packing) + "): start a dense fluid from [[fcc]]");
+             "packing " + num(eta) + (eta_region > eta_box ? " of the region" : "") +
+                 " is too dense to generate at random (at most " + num(max_random_sphere_packing) +
+                 "): start a dense fluid from [[fcc]]");
     const bool periodic = box.boundary == Boundary::periodic;
-    const double margin = periodic ? 0.0 : spec.radius;
-    if (!periodic &&
-        (box.width <= 2 * margin || box.height <= 2 * margin || box.depth <= 2 * margin))
-        fail(prefix, "radius", "a sphere of radius " + num(spec.radius) + " does not fit the box");
+    // Centres anywhere in a region that is the whole periodic box; else a radius inside it.
+    const double margin = where.wraps ? 0.0 : spec.radius;
+    const Vec3 lo = where.lo + Vec3{margin, margin, margin};
+    const Vec3 hi = where.hi - Vec3{margin, margin, margin};
+    if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z))
+        fail(prefix, "radius",
+             "a sphere of radius " + num(spec.radius) + " does not fit the " +
+                 (spec.region_max || spec.region_min != Vec3{} ? "region" : "box"));
     // A hash grid of cells at least 2 r_max wide over every sphere placed.
     const double cell = 2.0 * r_max;
     const auto key = [&](Vec3 p) {
@@ -222,9 +266,7 @@ void generate_spheres(SphereScene& scene, const SphereGenerateSpec& spec,
                  "could place only " + num(static_cast<double>(scene.spheres.size() - first)) +
                      " of " + num(static_cast<double>(count)) +
                      " spheres at random: lower the packing or use [[fcc]]");
-        const Vec3 p{rng.uniform(margin, box.width - margin),
-                     rng.uniform(margin, box.height - margin),
-                     rng.uniform(margin, box.depth - margin)};
+        const Vec3 p{rng.uniform(lo.x, hi.x), rng.uniform(lo.y, hi.y), rng.uniform(lo.z, hi.z)};
         if (!free_at(p, spec.radius)) continue;
         Sphere s;
         s.position = p;

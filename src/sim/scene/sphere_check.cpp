@@ -1,5 +1,6 @@
 #include "collide/sim/sphere_check.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -49,6 +50,26 @@ double collisions_per_time_unit(const SphereScene& scene) noexcept {
     const double per_sphere = 4.0 * density * m.diameter * m.diameter * contact *
                               std::sqrt(std::numbers::pi * m.kt / m.mass);
     return 0.5 * n * per_sphere;
+}
+
+double sphere_crossing_rate(const SphereScene& scene) noexcept {
+    const std::size_t n = scene.spheres.size();
+    if (n == 0) return 0.0;
+    double crossing_speed = 0.0;
+    for (const Sphere& s : scene.spheres) {
+        crossing_speed += std::abs(s.velocity.x) + std::abs(s.velocity.y) + std::abs(s.velocity.z);
+    }
+    const double diameter = means(scene).diameter;
+    const double volume = scene.box.volume();
+    const double cells = std::min(volume / (diameter * diameter * diameter),
+                                  std::max(27.0, 2.0 * static_cast<double>(n)));
+    return crossing_speed / std::cbrt(volume / std::max(1.0, cells));
+}
+
+WorkEstimate estimate_work(const SphereScene& scene, const RunShape& run) noexcept {
+    return estimate_work_at_rates(collisions_per_time_unit(scene),
+                                  run.cell_grid ? sphere_crossing_rate(scene) : 0.0,
+                                  scene.spheres.size(), run);
 }
 
 std::string sphere_scene_summary(const SphereScene& scene) {

@@ -69,12 +69,19 @@ double cell_crossing_rate(const Scene& scene) noexcept {
 }
 
 WorkEstimate estimate_work(const Scene& scene, const RunShape& run) noexcept {
+    return estimate_work_at_rates(collision_rate(scene).total(),
+                                  run.cell_grid ? cell_crossing_rate(scene) : 0.0,
+                                  scene.discs.size(), run);
+}
+
+WorkEstimate estimate_work_at_rates(double collisions_per_time, double crossings_per_time,
+                                    std::size_t particles, const RunShape& run) noexcept {
     WorkEstimate work;
     const double span = std::max(0.0, run.span);
     if (run.event_driven && span > 0.0) {
-        work.collisions = collision_rate(scene).total() * span;
-        if (run.cell_grid) work.crossings = cell_crossing_rate(scene) * span;
-        const auto n = static_cast<double>(scene.discs.size());
+        work.collisions = collisions_per_time * span;
+        if (run.cell_grid) work.crossings = crossings_per_time * span;
+        const auto n = static_cast<double>(particles);
         if (run.classic) work.predictions = n * (n - 1.0) / 2.0 + work.collisions * 2.0 * n;
         if (run.classic && run.array_queue) {
             const double pushed = std::max(2.0, classic_finite_fraction * 2.0 * n);
@@ -85,7 +92,7 @@ WorkEstimate estimate_work(const Scene& scene, const RunShape& run) noexcept {
     if (run.time_driven && span > 0.0) {
         work.steps = span / run.dt;
         work.dt_below_resolution = !(span + run.dt > span);
-        const auto n = static_cast<double>(scene.discs.size());
+        const auto n = static_cast<double>(particles);
         const double per_step = run.all_pairs ? n * (n - 1.0) / 2.0 : n * grid_checks_per_disc;
         work.pair_checks = work.steps * per_step;
     }

@@ -8,8 +8,10 @@ namespace collide::sim::detail {
 namespace {
 
 /// Cells per axis never exceed this: a huge grid of empty cells costs more than it saves, and
-/// larger cells are always correct (they only add candidate pairs).
-constexpr std::size_t max_cells_per_axis = 2048;
+/// larger cells are always correct (they only add candidate pairs). 2048^2 cells in 2D, 256^3 in
+/// 3D (16 M list heads).
+template <int D>
+constexpr std::size_t max_cells_per_axis = D == 2 ? 2048 : 256;
 
 std::size_t cells_along(double extent, double reach, std::size_t cap) {
     if (!(reach > 0.0) || !std::isfinite(reach)) {
@@ -34,32 +36,70 @@ std::size_t clamped_index(double x, double w, std::size_t n) {
     return static_cast<std::size_t>(k);
 }
 
+/// About 4 cells per particle at most (2D: 2 sqrt N per axis; 3D: (4 N)^(1/3)): finer grids
+/// would be mostly empty.
+template <int D>
+std::size_t per_axis_cap(std::size_t n) {
+    const auto count = static_cast<double>(n);
+    const double fit = D == 2 ? 2.0 * std::sqrt(count) : std::cbrt(4.0 * count);
+    return std::clamp<std::size_t>(static_cast<std::size_t>(fit) + 1, 1, max_cells_per_axis<D>);
+}
+
 }  // namespace
 
-bool CellGrid::build(const Box& box, const std::vector<Vec2>& positions, double reach) {
+template <int D>
+const std::vector<typename BasicCellGrid<D>::Cell>& BasicCellGrid<D>::half_neighbourhood() {
+    static const std::vector<Cell> offsets = [] {
+        std::vector<Cell> out;
+        Cell o{};
+        o.fill(-1);
+        for (;;) {
+            // "After" zero: the last non-zero component is positive.
+            int last = 0;
+            for (int k = D - 1; k >= 0 && last == 0; --k) last = o[k];
+            if (last > 0) out.push_back(o);
+            int k = 0;
+            while (k < D && ++o[k] > 1) o[k++] = -1;
+            if (k == D) break;
+        }
+        return out;
+    }();
+    return offsets;
+}
+
+template <int D>
+bool BasicCellGrid<D>::build(const BoxType& box, const std::vector<Vec>& positions, double reach) {
     box_ = box;
     periodic_ = box.boundary == Boundary::periodic;
-    // About 4 cells per disc at most: finer grids would be mostly empty.
-    const auto per_axis_cap = std::clamp<std::size_t>(
-        static_cast<std::size_t>(2.0 * std::sqrt(static_cast<double>(positions.size()))) + 1, 1,
-        max_cells_per_axis);
-    nx_ = cells_along(box.width, reach, per_axis_cap);
-    ny_ = cells_along(box.height, reach, per_axis_cap);
-    if (periodic_ && (nx_ < 3 || ny_ < 3)) {
-        return false;
+    const std::size_t cap = per_axis_cap<D>(positions.size());
+    const Vec extent = Space<D>::extent(box);
+    cells_ = 1;
+    for (int k = 0; k < D; ++k) {
+        n_[k] = cells_along(axis(extent, k), reach, cap);
+        if (periodic_ && n_[k] < 3) {
+            return false;
+        }
+        side_[k] = axis(extent, k) / static_cast<double>(n_[k]);
+        cells_ *= n_[k];
     }
-    cell_w_ = box.width / static_cast<double>(nx_);
-    cell_h_ = box.height / static_cast<double>(ny_);
+
+    half_step_.clear();
+    for (const Cell& offset : half_neighbourhood()) {
+        std::ptrdiff_t step = 0;
+        for (int k = D - 1; k >= 0; --k) {
+            step = step * static_cast<std::ptrdiff_t>(n_[k]) + offset[k];
+        }
+        half_step_.push_back(step);
+    }
 
     // Counting sort by cell: stable, so ids stay ascending within a cell (deterministic order).
-    const std::size_t cells = nx_ * ny_;
-    cell_start_.assign(cells + 1, 0);
+    cell_start_.assign(cells_ + 1, 0);
     cell_id_.resize(positions.size());
     for (std::size_t i = 0; i < positions.size(); ++i) {
         cell_id_[i] = static_cast<std::uint32_t>(cell_of(positions[i]));
         ++cell_start_[cell_id_[i] + 1];
     }
-    for (std::size_t c = 0; c < cells; ++c) {
+    for (std::size_t c = 0; c < cells_; ++c) {
         cell_start_[c + 1] += cell_start_[c];
     }
     sorted_.resize(positions.size());
@@ -70,33 +110,36 @@ bool CellGrid::build(const Box& box, const std::vector<Vec2>& positions, double 
     return true;
 }
 
-std::size_t CellGrid::cell_of(Vec2 p) const noexcept {
-    const Vec2 q = box_.wrap(p);  // identity for walls
-    return clamped_index(q.x, cell_w_, nx_) + nx_ * clamped_index(q.y, cell_h_, ny_);
+template <int D>
+std::size_t BasicCellGrid<D>::cell_of(Vec p) const noexcept {
+    const Vec q = box_.wrap(p);  // identity for walls
+    std::size_t cell = 0;
+    for (int k = D - 1; k >= 0; --k) {
+        cell = cell * n_[k] + clamped_index(axis(q, k), side_[k], n_[k]);
+    }
+    return cell;
 }
 
-bool CellGrid::neighbour(std::size_t cx, std::size_t cy, int ox, int oy,
-                         std::size_t& out) const noexcept {
-    auto shift = [this](std::size_t c, int o, std::size_t n, std::size_t& result) {
-        const auto moved = static_cast<long long>(c) + o;
-        const auto count = static_cast<long long>(n);
-        if (moved >= 0 && moved < count) {
-            result = static_cast<std::size_t>(moved);
-            return true;
+template <int D>
+bool BasicCellGrid<D>::neighbour(const Cell& c, const Cell& offset,
+                                 std::size_t& out) const noexcept {
+    std::size_t cell = 0;
+    for (int k = D - 1; k >= 0; --k) {
+        const auto count = static_cast<long long>(n_[k]);
+        long long moved = static_cast<long long>(c[k]) + offset[k];
+        if (moved < 0 || moved >= count) {
+            if (!periodic_) {
+                return false;
+            }
+            moved = (moved + count) % count;
         }
-        if (!periodic_) {
-            return false;
-        }
-        result = static_cast<std::size_t>((moved + count) % count);
-        return true;
-    };
-    std::size_t nx = 0;
-    std::size_t ny = 0;
-    if (!shift(cx, ox, nx_, nx) || !shift(cy, oy, ny_, ny)) {
-        return false;
+        cell = cell * n_[k] + static_cast<std::size_t>(moved);
     }
-    out = nx + nx_ * ny;
+    out = cell;
     return true;
 }
+
+template class BasicCellGrid<2>;
+template class BasicCellGrid<3>;
 
 }  // namespace collide::sim::detail

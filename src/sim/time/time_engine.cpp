@@ -39,41 +39,52 @@ double within_step(double t_contact, double h) noexcept {
     return std::clamp(t_contact, 0.0, h);
 }
 
+/// The wall contact of axis k (0 x, 1 y, 2 z).
+constexpr CollisionKind wall_kind(int k) noexcept {
+    return static_cast<CollisionKind>(static_cast<int>(CollisionKind::xwall) + k);
+}
+
 }  // namespace
 
-TimeEngine::TimeEngine(const Scene& scene, const EngineOptions& options)
+template <int D>
+BasicTimeEngine<D>::BasicTimeEngine(const SceneType& scene, const EngineOptions& options)
     : core_(scene),
       box_(scene.box),
+      extent_(Space::extent(scene.box)),
       dt_(options.dt),
       use_grid_(options.td_detect == OverlapDetection::grid) {
     validate_time_driven_options(options);
-    const std::size_t n = scene.discs.size();
+    const auto& particles = Space::particles(scene);
+    const std::size_t n = particles.size();
     position_.reserve(n);
     velocity_.reserve(n);
     radius_.reserve(n);
     mass_.reserve(n);
-    for (const Disc& disc : scene.discs) {
+    for (const auto& disc : particles) {
         position_.push_back(box_.wrap(disc.position));
         velocity_.push_back(disc.velocity);
         radius_.push_back(disc.radius);
         mass_.push_back(disc.mass);
         max_radius_ = std::max(max_radius_, disc.radius);
     }
-    displacement_.assign(n, Vec2{});
+    displacement_.assign(n, Vec{});
     escaped_.assign(n, false);
-    grid_ = std::make_unique<detail::CellGrid>();
-    sweep_ = std::make_unique<detail::PairSweep>();
+    grid_ = std::make_unique<detail::BasicCellGrid<D>>();
+    sweep_ = std::make_unique<detail::BasicPairSweep<D>>();
     initial_energy_ = kinetic_energy();
     take_census();
 }
 
-TimeEngine::~TimeEngine() = default;
+template <int D>
+BasicTimeEngine<D>::~BasicTimeEngine() = default;
 
-void TimeEngine::set_collision_listener(CollisionListener listener) {
+template <int D>
+void BasicTimeEngine<D>::set_collision_listener(CollisionListener listener) {
     core_.set_listener(std::move(listener));
 }
 
-std::uint64_t TimeEngine::whole_steps(double t, double dt) noexcept {
+template <int D>
+std::uint64_t BasicTimeEngine<D>::whole_steps(double t, double dt) noexcept {
     if (!(t > 0.0) || !(dt > 0.0)) return 0;
     // Beyond 2^62 steps nothing could run them anyway (the work limits refuse far less).
     constexpr double most = 4.6e18;
@@ -88,7 +99,8 @@ std::uint64_t TimeEngine::whole_steps(double t, double dt) noexcept {
     return k;
 }
 
-void TimeEngine::advance_to(double t) {
+template <int D>
+void BasicTimeEngine<D>::advance_to(double t) {
     const WallClock clock = core_.start_advance(clock_, t);
     missed_markers_.clear();  // markers are "missed since the previous frame"
     // Step k ends at k dt from t = 0 whoever calls (a video at any fps, a thumbnail, simulate):
@@ -97,7 +109,7 @@ void TimeEngine::advance_to(double t) {
     const std::uint64_t target = whole_steps(t, dt_);
     try {
         while (steps_ < target) {
-            check_stop();  // once per step: a step over many discs can take milliseconds
+            this->check_stop();  // once per step: a step over many discs can take milliseconds
             const double next = static_cast<double>(steps_ + 1) * dt_;
             step(next - time_);
             time_ = next;
@@ -111,7 +123,8 @@ void TimeEngine::advance_to(double t) {
 }
 
 // One quantum, as the lecture lists it: move everyone, check for overlaps, roll back, resolve.
-void TimeEngine::step(double h) {
+template <int D>
+void BasicTimeEngine<D>::step(double h) {
     step_start_ = time_;
     drift(h);
     contacts_.clear();
@@ -130,26 +143,29 @@ void TimeEngine::step(double h) {
 #endif
 }
 
-void TimeEngine::drift(double h) {
+template <int D>
+void BasicTimeEngine<D>::drift(double h) {
     for (std::uint32_t i = 0; i < position_.size(); ++i) {
         move(i, h * velocity_[i]);
     }
 }
 
-void TimeEngine::move(std::uint32_t i, Vec2 delta) {
+template <int D>
+void BasicTimeEngine<D>::move(std::uint32_t i, Vec delta) {
     position_[i] += delta;
     displacement_[i] += delta;
 }
 
+template <int D>
 template <typename PairVisitor>
-void TimeEngine::for_each_candidate_pair(double h, PairVisitor&& visit) {
+void BasicTimeEngine<D>::for_each_candidate_pair(double h, PairVisitor&& visit) {
     // A pair that touches at any moment of the step ends at most 2 r_max + 2 v_max h apart, so a
     // grid with that reach sees every overlap and every miss.
     if (use_grid_ &&
         grid_->build(box_, position_, (2.0 * max_radius_ + 2.0 * max_speed() * h) * cell_margin)) {
         // Cells as wide as the fast discs' reach can hold most of the discs: poll here too.
         grid_->for_each_pair([&](std::uint32_t i, std::uint32_t j) {
-            if (++overlap_checks_ % detail::sweep_stop_poll_pairs == 0) check_stop();
+            if (++overlap_checks_ % detail::sweep_stop_poll_pairs == 0) this->check_stop();
             visit(i, j);
         });
         return;
@@ -157,8 +173,8 @@ void TimeEngine::for_each_candidate_pair(double h, PairVisitor&& visit) {
     // The lecture's all-pairs loop: N(N-1)/2 checks. The sweep tests every pair against a
     // conservative bound in a vectorised loop; the exact tests (visit) run on the few it keeps,
     // in the same (i, j) order as the plain double loop, so the results are the same.
-    if (!sweep_->find(box_, position_, velocity_, radius_, h, candidates_, stop_flag())) {
-        throw_stopped();
+    if (!sweep_->find(box_, position_, velocity_, radius_, h, candidates_, this->stop_flag())) {
+        this->throw_stopped();
     }
     const auto n = static_cast<std::uint64_t>(position_.size());
     overlap_checks_ += n < 2 ? 0 : n * (n - 1) / 2;
@@ -167,16 +183,17 @@ void TimeEngine::for_each_candidate_pair(double h, PairVisitor&& visit) {
     }
 }
 
-void TimeEngine::detect_pair_contacts(double h) {
+template <int D>
+void BasicTimeEngine<D>::detect_pair_contacts(double h) {
     struct Miss {
         std::uint32_t i;
         std::uint32_t j;
-        Vec2 where;
+        Vec where;
     };
     std::vector<Miss> misses;
     for_each_candidate_pair(h, [&](std::uint32_t i, std::uint32_t j) {
-        const Vec2 dr = box_.displacement(position_[i], position_[j]);
-        const Vec2 dv = velocity_[j] - velocity_[i];
+        const Vec dr = box_.displacement(position_[i], position_[j]);
+        const Vec dv = velocity_[j] - velocity_[i];
         const double sigma = radius_[i] + radius_[j];
         const double dist2 = norm2(dr);
         if (dist2 < sigma * sigma) {
@@ -195,11 +212,11 @@ void TimeEngine::detect_pair_contacts(double h) {
         if (dot(dv, dr) < 0.0) {
             return;
         }
-        const Vec2 dr0 = dr - h * dv;
+        const Vec dr0 = dr - h * dv;
         const double t_contact = kinematics::time_to_hit(dr0, dv, sigma);
         if (t_contact < h) {
-            const Vec2 pi = position_[i] - (h - t_contact) * velocity_[i];
-            const Vec2 where = pi + (radius_[i] / sigma) * (dr0 + t_contact * dv);
+            const Vec pi = position_[i] - (h - t_contact) * velocity_[i];
+            const Vec where = pi + (radius_[i] / sigma) * (dr0 + t_contact * dv);
             misses.push_back({i, j, box_.wrap(where)});
         }
     });
@@ -214,39 +231,41 @@ void TimeEngine::detect_pair_contacts(double h) {
     }
 }
 
-void TimeEngine::detect_wall_contacts(double h) {
+template <int D>
+void BasicTimeEngine<D>::detect_wall_contacts(double h) {
     if (box_.boundary != Boundary::walls) {
         return;
     }
-    // A disc touches a wall when it straddles the wall's segment; one entirely past it does not.
+    // A disc touches a wall when it straddles the wall's segment (a sphere: the wall's face);
+    // one entirely past it does not.
     auto straddles = [](double p, double line, double r) { return p > line - r && p < line + r; };
     auto alongside = [](double q, double extent, double r) { return q > -r && q < extent + r; };
-    for (std::uint32_t i = 0; i < position_.size(); ++i) {
-        const Vec2 p = position_[i];
-        const Vec2 v = velocity_[i];
-        const double r = radius_[i];
-        const bool hits_x =
-            alongside(p.y, box_.height, r) &&
-            ((v.x < 0.0 && straddles(p.x, 0.0, r)) || (v.x > 0.0 && straddles(p.x, box_.width, r)));
-        const bool hits_y =
-            alongside(p.x, box_.width, r) && ((v.y < 0.0 && straddles(p.y, 0.0, r)) ||
-                                              (v.y > 0.0 && straddles(p.y, box_.height, r)));
-        if (hits_x) {
-            ++core_.counters().predictions;
-            const double t_contact =
-                within_step(kinematics::time_to_wall(p.x - h * v.x, v.x, r, box_.width), h);
-            contacts_.push_back({t_contact, CollisionKind::xwall, i, 0});
+    const auto hits_wall = [&](Vec p, Vec v, double r, int k) {
+        for (int m = 0; m < D; ++m) {
+            if (m != k && !alongside(axis(p, m), axis(extent_, m), r)) return false;
         }
-        if (hits_y) {
+        const double vk = axis(v, k);
+        return (vk < 0.0 && straddles(axis(p, k), 0.0, r)) ||
+               (vk > 0.0 && straddles(axis(p, k), axis(extent_, k), r));
+    };
+    for (std::uint32_t i = 0; i < position_.size(); ++i) {
+        const Vec p = position_[i];
+        const Vec v = velocity_[i];
+        const double r = radius_[i];
+        for (int k = 0; k < D; ++k) {  // x, then y (then z): the contacts' order
+            if (!hits_wall(p, v, r, k)) continue;
             ++core_.counters().predictions;
+            const double pk = axis(p, k);
+            const double vk = axis(v, k);
             const double t_contact =
-                within_step(kinematics::time_to_wall(p.y - h * v.y, v.y, r, box_.height), h);
-            contacts_.push_back({t_contact, CollisionKind::ywall, i, 0});
+                within_step(kinematics::time_to_wall(pk - h * vk, vk, r, axis(extent_, k)), h);
+            contacts_.push_back({t_contact, wall_kind(k), i, 0});
         }
     }
 }
 
-void TimeEngine::resolve_contacts(double h) {
+template <int D>
+void BasicTimeEngine<D>::resolve_contacts(double h) {
     std::sort(contacts_.begin(), contacts_.end(), [](const Contact& x, const Contact& y) {
         return std::tie(x.t_estimate, x.kind, x.a, x.b) < std::tie(y.t_estimate, y.kind, y.a, y.b);
     });
@@ -259,11 +278,12 @@ void TimeEngine::resolve_contacts(double h) {
     }
 }
 
-void TimeEngine::resolve_pair_contact(const Contact& contact, double h) {
+template <int D>
+void BasicTimeEngine<D>::resolve_pair_contact(const Contact& contact, double h) {
     const std::uint32_t a = contact.a;
     const std::uint32_t b = contact.b;
-    const Vec2 dr = box_.displacement(position_[a], position_[b]);
-    const Vec2 dv = velocity_[b] - velocity_[a];
+    const Vec dr = box_.displacement(position_[a], position_[b]);
+    const Vec dv = velocity_[b] - velocity_[a];
     const double sigma = radius_[a] + radius_[b];
     // An earlier contact of this step may have separated the pair already.
     if (norm2(dr) >= sigma * sigma || dot(dv, dr) >= 0.0) {
@@ -274,8 +294,8 @@ void TimeEngine::resolve_pair_contact(const Contact& contact, double h) {
     const double back = h - t_contact;
     move(a, -back * velocity_[a]);
     move(b, -back * velocity_[b]);
-    const Vec2 contact_dr = box_.displacement(position_[a], position_[b]);
-    const Vec2 impulse =
+    const Vec contact_dr = box_.displacement(position_[a], position_[b]);
+    const Vec impulse =
         kinematics::resolve_pair(velocity_[a], velocity_[b], mass_[a], mass_[b], contact_dr);
     core_.counters().impulses.virial += std::fabs(dot(contact_dr, impulse));
     move(a, back * velocity_[a]);
@@ -283,12 +303,13 @@ void TimeEngine::resolve_pair_contact(const Contact& contact, double h) {
     core_.collided({step_start_ + t_contact, CollisionKind::pair, a, b});
 }
 
-void TimeEngine::resolve_wall_contact(const Contact& contact, double h) {
+template <int D>
+void BasicTimeEngine<D>::resolve_wall_contact(const Contact& contact, double h) {
     const std::uint32_t i = contact.a;
-    const bool x_axis = contact.kind == CollisionKind::xwall;
-    const double p = x_axis ? position_[i].x : position_[i].y;
-    double& v = x_axis ? velocity_[i].x : velocity_[i].y;
-    const double extent = x_axis ? box_.width : box_.height;
+    const int k = static_cast<int>(contact.kind) - static_cast<int>(CollisionKind::xwall);
+    const double p = axis(position_[i], k);
+    double& v = axis(velocity_[i], k);
+    const double extent = axis(extent_, k);
     const double r = radius_[i];
     // Still touching the wall it moves towards? (a pair collision may have turned it round)
     const bool towards_wall =
@@ -306,11 +327,12 @@ void TimeEngine::resolve_wall_contact(const Contact& contact, double h) {
     core_.collided({step_start_ + t_contact, contact.kind, i, 0});
 }
 
-void TimeEngine::wrap_positions() {
+template <int D>
+void BasicTimeEngine<D>::wrap_positions() {
     if (box_.boundary != Boundary::periodic) {
         return;
     }
-    for (Vec2& p : position_) {
+    for (Vec& p : position_) {
         p = box_.wrap(p);
     }
 }
@@ -318,7 +340,8 @@ void TimeEngine::wrap_positions() {
 // After each advance_to: which pairs overlap now, how deep, and which discs are out of the box.
 // Reporting only, so its pair tests are not counted in overlap_checks: they are not the lecture's
 // checks, and whatever the detection, a grid finds the overlapping pairs in about O(N).
-void TimeEngine::take_census() {
+template <int D>
+void BasicTimeEngine<D>::take_census() {
     overlapping_pairs_.clear();
     max_overlap_ = 0.0;
     const auto census_pair = [&](std::uint32_t i, std::uint32_t j) {
@@ -331,8 +354,9 @@ void TimeEngine::take_census() {
     };
     // Cells no smaller than one disc's share of the box, so that tiny discs do not make a grid of
     // mostly empty cells (larger cells only add candidates).
-    const double share =
-        std::sqrt(box_.area() / static_cast<double>(std::max<std::size_t>(1, position_.size())));
+    const double per_particle =
+        Space::measure(box_) / static_cast<double>(std::max<std::size_t>(1, position_.size()));
+    const double share = D == 2 ? std::sqrt(per_particle) : std::cbrt(per_particle);
     if (grid_->build(box_, position_, std::max(2.0 * max_radius_, share) * cell_margin)) {
         grid_->for_each_pair(census_pair);
     } else {  // a periodic box under three cells wide
@@ -346,22 +370,22 @@ void TimeEngine::take_census() {
     // touches the wall and is reflected at the next check, so it is not (yet) an escape.
     escaped_count_ = 0;
     for (std::size_t i = 0; i < position_.size(); ++i) {
-        const Vec2 p = position_[i];
-        const double r = radius_[i];
-        escaped_[i] = box_.boundary == Boundary::walls &&
-                      (p.x <= -r || p.x >= box_.width + r || p.y <= -r || p.y >= box_.height + r);
+        escaped_[i] = box_.boundary == Boundary::walls && is_outside(position_[i], radius_[i]);
         if (escaped_[i]) {
             ++escaped_count_;
         }
     }
 }
 
-void TimeEngine::validate_state() const {
+template <int D>
+void BasicTimeEngine<D>::validate_state() const {
     for (std::size_t i = 0; i < position_.size(); ++i) {
-        const Vec2 p = position_[i];
-        const Vec2 v = velocity_[i];
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(v.x) ||
-            !std::isfinite(v.y)) {
+        bool finite = true;
+        for (int k = 0; k < D; ++k) {
+            finite = finite && std::isfinite(axis(position_[i], k)) &&
+                     std::isfinite(axis(velocity_[i], k));
+        }
+        if (!finite) {
             throw_runtime_error("time-driven engine: disc " + std::to_string(i) +
                                 " has a non-finite state at t = " + std::to_string(time_));
         }
@@ -377,15 +401,26 @@ void TimeEngine::validate_state() const {
     }
 }
 
-double TimeEngine::max_speed() const noexcept {
+template <int D>
+bool BasicTimeEngine<D>::is_outside(Vec p, double r) const noexcept {
+    bool outside = false;
+    for (int k = 0; k < D; ++k) {
+        outside = outside || axis(p, k) <= -r || axis(p, k) >= axis(extent_, k) + r;
+    }
+    return outside;
+}
+
+template <int D>
+double BasicTimeEngine<D>::max_speed() const noexcept {
     double v2 = 0.0;
-    for (const Vec2& v : velocity_) {
+    for (const Vec& v : velocity_) {
         v2 = std::max(v2, norm2(v));
     }
     return std::sqrt(v2);
 }
 
-std::uint64_t TimeEngine::bytes() const noexcept {
+template <int D>
+std::uint64_t BasicTimeEngine<D>::bytes() const noexcept {
     auto held = [](const auto& v) {
         return static_cast<std::uint64_t>(v.capacity() *
                                           sizeof(typename std::decay_t<decltype(v)>::value_type));
@@ -396,7 +431,8 @@ std::uint64_t TimeEngine::bytes() const noexcept {
            core_.bytes();
 }
 
-double TimeEngine::kinetic_energy() const noexcept {
+template <int D>
+double BasicTimeEngine<D>::kinetic_energy() const noexcept {
     double e = 0.0;
     for (std::size_t i = 0; i < velocity_.size(); ++i) {
         e += 0.5 * mass_[i] * norm2(velocity_[i]);
@@ -404,11 +440,19 @@ double TimeEngine::kinetic_energy() const noexcept {
     return e;
 }
 
-Snapshot TimeEngine::snapshot() const {
-    Snapshot snap = core_.start_snapshot(time_);
+template <int D>
+SnapshotOf<D> BasicTimeEngine<D>::snapshot() const {
+    SnapshotOf<D> snap = core_.start_snapshot(time_);
     for (std::size_t i = 0; i < position_.size(); ++i) {
-        DiscState& d = snap.discs[i];
-        EngineCore::set_motion(d, position_[i], velocity_[i], radius_[i], mass_[i]);
+        auto& d = [&]() -> auto& {
+            if constexpr (D == 2) {
+                return snap.discs[i];
+            } else {
+                return snap.spheres[i];
+            }
+        }
+        ();
+        BasicEngineCore<D>::set_motion(d, position_[i], velocity_[i], radius_[i], mass_[i]);
         d.escaped = escaped_[i];
     }
     snap.overlapping_pairs = overlapping_pairs_;
@@ -416,7 +460,8 @@ Snapshot TimeEngine::snapshot() const {
     return snap;
 }
 
-Measurements TimeEngine::measurements() const {
+template <int D>
+Measurements BasicTimeEngine<D>::measurements() const {
     Measurements m = core_.measurements(time_, velocity_, mass_, radius_, bytes());
     m.max_overlap = max_overlap_;
     m.msd = core_.mean_squared_displacement(displacement_.size(), [this](std::size_t i) {
@@ -433,5 +478,8 @@ Measurements TimeEngine::measurements() const {
         initial_energy_ > 0.0 ? (m.kinetic_energy - initial_energy_) / initial_energy_ : 0.0;
     return m;
 }
+
+template class BasicTimeEngine<2>;
+template class BasicTimeEngine<3>;
 
 }  // namespace collide::sim
