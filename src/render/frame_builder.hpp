@@ -29,7 +29,7 @@ class FrameBuilder {
     /// The layout of the last built frame.
     [[nodiscard]] const FrameLayout& layout() const noexcept { return painter_->layout(); }
     /// The strings drawn in the last built frame, by text slot.
-    [[nodiscard]] const DrawnText& drawn_text() const noexcept { return painter_->drawn_text(); }
+    [[nodiscard]] const SlotTexts& drawn_text() const noexcept { return painter_->drawn_text(); }
     /// The draw list of the last built frame.
     [[nodiscard]] const DrawList& draw_list() const noexcept { return painter_->draw_list(); }
     /// The layout a frame would get (same rules as build, nothing drawn).

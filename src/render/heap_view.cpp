@@ -482,7 +482,7 @@ struct HeapRenderer::Impl {
 
     void draw_node(const view::HeapSlotView& s, PointF c, float radius, float alpha,
                    const FontAtlas& f) {
-        const MarkStyle style = heap_mark_style(s.mark, colors);
+        const KeyStyle style = heap_mark_style(s.mark, colors);
         const Rgba8 fill = s.mark == view::SlotMark::plain ? colors.node : style.fill;
         add_node({c.x, c.y, radius, 0.0F, faded(fill, alpha)});
         add_node(

@@ -189,7 +189,7 @@ std::string json_strings(const std::vector<std::string>& strings) {
 }
 }  // namespace
 
-std::string layout_json(const FrameLayout& layout, int width, int height, const DrawnText* drawn) {
+std::string layout_json(const FrameLayout& layout, int width, int height, const SlotTexts* drawn) {
     const auto rect = [](RectF r) {
         return fmt::format("[{:g}, {:g}, {:g}, {:g}]", r.x0, r.y0, r.x1, r.y1);
     };

@@ -113,7 +113,7 @@ struct FrameLayout {
 
 /// The strings a frame drew, for `--layout-json`: per slot of FrameLayout::text (same order),
 /// and the text drawn outside every slot (the title card, labels inside a box).
-struct DrawnText {
+struct SlotTexts {
     std::vector<std::vector<std::string>> in_slots;
     std::vector<std::pair<TextSlot, std::string>> elsewhere;
 };
@@ -177,7 +177,7 @@ inline constexpr float queue_strip_share = 0.3F;
 /// The rectangles as JSON (frame size, level, panels with box and scale, every text slot), with
 /// the strings drawn in each slot ("text") when `drawn` is given, and the text drawn elsewhere.
 [[nodiscard]] std::string layout_json(const FrameLayout& layout, int width, int height,
-                                      const DrawnText* drawn = nullptr);
+                                      const SlotTexts* drawn = nullptr);
 
 /// True when the two rectangles share interior area.
 [[nodiscard]] bool overlaps(RectF a, RectF b) noexcept;

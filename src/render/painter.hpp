@@ -57,7 +57,7 @@ class Painter {
 
     [[nodiscard]] const FrameLayout& layout() const noexcept { return layout_; }
     /// The strings drawn in the last built frame, by text slot (`--layout-json`).
-    [[nodiscard]] const DrawnText& drawn_text() const noexcept { return drawn_; }
+    [[nodiscard]] const SlotTexts& drawn_text() const noexcept { return drawn_; }
     [[nodiscard]] const DrawList& draw_list() const noexcept { return list_; }
     [[nodiscard]] const RenderConfig& config() const noexcept { return config_; }
 
@@ -109,7 +109,7 @@ class Painter {
     std::optional<FontAtlas> head_font_;
     std::optional<FontAtlas> small_font_;
     FrameLayout layout_;
-    DrawnText drawn_;
+    SlotTexts drawn_;
     DrawList list_;
     double colormap_low_ = 0.0;  // the part of the colormap in use
     double colormap_high_ = 1.0;

@@ -83,7 +83,7 @@ HeapPalette heap_palette(Theme theme) noexcept {
             {170, 172, 190, 255}};
 }
 
-MarkStyle heap_mark_style(view::SlotMark mark, const HeapPalette& palette) noexcept {
+KeyStyle heap_mark_style(view::SlotMark mark, const HeapPalette& palette) noexcept {
     constexpr Rgba8 white{255, 255, 255, 255};
     switch (mark) {
         case view::SlotMark::plain:

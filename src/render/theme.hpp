@@ -112,12 +112,12 @@ inline constexpr Rgba8 heap_token_now_fill{240, 170, 40, 255};
 inline constexpr Rgba8 highlight_dark_text{20, 20, 24, 255};
 
 /// A highlighted key: its fill (slot and node) and its text.
-struct MarkStyle {
+struct KeyStyle {
     Rgba8 fill;
     Rgba8 text;
 };
 /// How a key marked `mark` is drawn; plain keys take the palette's slot and title colours.
-[[nodiscard]] MarkStyle heap_mark_style(view::SlotMark mark, const HeapPalette& palette) noexcept;
+[[nodiscard]] KeyStyle heap_mark_style(view::SlotMark mark, const HeapPalette& palette) noexcept;
 
 // ---------------------------------------------------------------------------------------------
 // The puzzle (puzzle_view.cpp). Tiles are light with dark numbers (the most legible pair at a

@@ -244,7 +244,7 @@ TEST_CASE("lesson layout: the how lines, the work ratio and the clock's unit fit
 
 TEST_CASE("layout JSON carries every text line's strings beside its rectangle") {
     const FrameLayout layout = compute_layout(lesson_input({1280, 720}));
-    DrawnText drawn;
+    SlotTexts drawn;
     drawn.in_slots.assign(layout.text.size(), {});
     drawn.in_slots[0] = {"Time-driven: \"dt\" \\ 1/30", "second"};
     drawn.elsewhere.push_back({layout.text[0], "a label\nin a box"});
