@@ -39,7 +39,7 @@ enum class TextRole {
     title,
     figures,
     note,
-    how,  ///< lesson, two panels: why the panel's work grows as it does (under its figures)
+    how,    ///< lesson, two panels: why the panel's work grows as it does (under its figures)
     marks,  ///< lesson: the failure marks' legend under a panel's figures (and note)
     caption,
     clock,
@@ -123,11 +123,11 @@ struct LayoutInput {
     int width = 1280;
     int height = 720;
     OverlayLevel level = OverlayLevel::lesson;
-    std::vector<Box> boxes;     ///< 1 or 2 panels, left to right (only their shapes matter)
-    bool note_line = false;     ///< lesson: a note line under the figures (dt > frame)
-    bool how_line = false;      ///< lesson: a line under each panel's figures (PanelContent::how)
-    bool cost_ratio = false;    ///< lesson: the cost ratio under the bars (two panels)
-    bool clock_unit = false;    ///< lesson: a second clock line for the time's unit
+    std::vector<Box> boxes;   ///< 1 or 2 panels, left to right (only their shapes matter)
+    bool note_line = false;   ///< lesson: a note line under the figures (dt > frame)
+    bool how_line = false;    ///< lesson: a line under each panel's figures (PanelContent::how)
+    bool cost_ratio = false;  ///< lesson: the cost ratio under the bars (two panels)
+    bool clock_unit = false;  ///< lesson: a second clock line for the time's unit
     /// Lesson: per panel, a legend line for its failure marks (under the note). The left one of
     /// two panels takes the frame's width when the right one has none.
     std::vector<bool> mark_lines;

@@ -64,8 +64,8 @@ FrameLayout lesson_layout(const LayoutInput& in) {
         return i < in.mark_lines.size() && in.mark_lines[i];
     };
     const bool mark_line = wants_marks(0) || wants_marks(1);
-    const float below = gap + head_line + (in.note_line ? line : 0.0F) +
-                        (mark_line ? line : 0.0F) + (in.how_line ? line : 0.0F);
+    const float below = gap + head_line + (in.note_line ? line : 0.0F) + (mark_line ? line : 0.0F) +
+                        (in.how_line ? line : 0.0F);
     const float caption_top = height - m - line;
     const bool queue = in.queue_panel >= 0 && in.queue_panel < static_cast<int>(in.boxes.size());
     const float queue_h = queue ? std::round(queue_strip_share * height) : 0.0F;

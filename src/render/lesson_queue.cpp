@@ -126,8 +126,7 @@ void LessonPainter::add_queue_in_box(const Snapshot& snapshot, const QueueWords&
         if (first) {
             // Rings around the discs of the next event.
             for (const std::uint32_t k : {e.a, e.b}) {
-                if (k >= snapshot.discs.size() || (k == e.b && e.kind != EventKind::pair))
-                    continue;
+                if (k >= snapshot.discs.size() || (k == e.b && e.kind != EventKind::pair)) continue;
                 const DiscState& disc = snapshot.discs[k];
                 const PointF c = panel.to_pixels(disc.position, box);
                 const auto radius = static_cast<float>(disc.radius * panel.scale);
