@@ -313,9 +313,9 @@ struct HeapRenderer::Impl {
         const RectF tree{r.x0 + pad, counters_bottom + pad, r.x1 - pad, tree_bottom};
         const int levels = std::max(tree_levels(p.capacity, p.arity), 1);
         const float pitch_y = tree.height() / static_cast<float>(levels);
-        const auto radius = [&](std::size_t columns) {
+        const auto radius = [&](std::size_t across) {
             const float pitch_x =
-                tree.width() / static_cast<float>(std::max<std::size_t>(columns, 1));
+                tree.width() / static_cast<float>(std::max<std::size_t>(across, 1));
             return std::max(4.0F, std::min({0.42F * pitch_x, 0.44F * pitch_y, 38.0F * unit}));
         };
         // The textbook picture (each parent over its middle child) when the panel is wide enough

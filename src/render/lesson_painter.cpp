@@ -139,7 +139,7 @@ void LessonPainter::finish_frame(const FrameContent& frame) {
 }
 
 void LessonPainter::add_panel_text(std::size_t index, const PanelContent& content,
-                                   const PanelLayout& panel) {
+                                   const PanelLayout& /*panel*/) {
     if (intro_) return;  // the title card covers the frame
     const int p = static_cast<int>(index);
     const Rgba8 accent = with_alpha(content.accent, 255);

@@ -1,4 +1,5 @@
-// The collision video's epilogue card: the final figures side by side, and the work ratio.
+// The collision video's epilogue card: the final figures side by side, and the work ratio in the
+// running cost graphic's unit.
 #include "collide/show/collision_summary.hpp"
 
 #include <fmt/core.h>
@@ -17,25 +18,19 @@ std::string count(std::uint64_t n) {
     return with_separators(static_cast<long long>(n));
 }
 
-/// The work a panel did, in its own unit: pair tests (time-driven), queue steps (event-driven).
-std::uint64_t work(const SummaryPanel& panel) {
-    const Measurements& m = panel.measurements;
-    return panel.time_driven ? m.overlap_checks : m.queue.pushes + m.queue.pops;
-}
-
-/// "The time-driven side did 286 times the work": the ratio of the two panels' work, or ""
-/// without both panels (or without work to compare).
-std::string work_ratio(const std::vector<SummaryPanel>& panels) {
+/// "Event-driven: 13x less work": the two panels' work in the unit of the running cost graphic
+/// (pair computations plus queue operations, show::work_done), or "" without both panels (or
+/// without work to compare).
+std::string footer(const std::vector<SummaryPanel>& panels) {
     const auto time = std::find_if(panels.begin(), panels.end(),
                                    [](const SummaryPanel& p) { return p.time_driven; });
     const auto event = std::find_if(panels.begin(), panels.end(),
                                     [](const SummaryPanel& p) { return !p.time_driven; });
     if (time == panels.end() || event == panels.end()) return "";
-    const auto t = static_cast<double>(work(*time));
-    const auto e = static_cast<double>(work(*event));
-    if (!(t > 0.0) || !(e > 0.0)) return "";
-    if (t >= e) return fmt::format("Time-driven: {:.3g} times the work of the queue", t / e);
-    return fmt::format("Event-driven: {:.3g} times the work of the steps", e / t);
+    const std::string ratio =
+        work_ratio(work_done(time->measurements, true), work_done(event->measurements, false));
+    if (ratio.empty()) return "";
+    return fmt::format("Event-driven: {}", ratio);
 }
 
 }  // namespace
@@ -58,14 +53,15 @@ SummaryCard summary_card(const std::vector<SummaryPanel>& panels, bool walls,
         overlapping.values.push_back(panel.time_driven ? count(m.overlapping_pairs) : "0");
         left.values.push_back(panel.time_driven ? count(m.escaped) : "0");
         collisions.values.push_back(count(m.collisions_pair + m.collisions_wall));
-        cost.values.push_back(fmt::format("{} {}", short_count(static_cast<double>(work(panel))),
-                                          panel.time_driven ? "pair tests" : "queue steps"));
+        // The running cost graphic's unit and label, so the card repeats what the bars said.
+        cost.values.push_back(fmt::format("{} {}", short_count(work_done(m, panel.time_driven)),
+                                          panel.time_driven ? "pair tests" : "pairs + queue"));
     }
     card.rows = {missed, overlapping};
     if (walls) card.rows.push_back(left);
     card.rows.push_back(collisions);
     card.rows.push_back(cost);
-    card.footer = work_ratio(panels);
+    card.footer = footer(panels);
     return card;
 }
 

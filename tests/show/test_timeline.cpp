@@ -186,7 +186,12 @@ TEST_CASE("the epilogue's card: the final figures side by side and the work rati
     CHECK(card.rows[0].values == std::vector<std::string>{"48", "0"});
     CHECK(card.rows[2].label == "discs that left the box");
     CHECK(card.rows[3].values == std::vector<std::string>{"100", "150"});
-    CHECK(card.footer == "Time-driven: 200 times the work of the queue");
+    // The cost graphic's unit: overlap tests against predictions plus queue operations.
+    CHECK(card.rows[4].values ==
+          std::vector<std::string>{"400.0k pair tests", "2000 pairs + queue"});
+    CHECK(card.footer == "Event-driven: 200x less work");
+    CHECK(card.footer ==
+          "Event-driven: " + work_ratio(work_done(time, true), work_done(event, false)));
     // A periodic box has nothing to leave; one panel has nothing to compare.
     CHECK(summary_card({{time, true}, {event, false}}, false, "t").rows.size() == 4);
     CHECK(summary_card({{event, false}}, false, "t").footer.empty());
