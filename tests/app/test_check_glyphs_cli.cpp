@@ -8,6 +8,7 @@
 #include "../support/files.hpp"
 #include "../support/skip.hpp"
 #include "../support/temp_dir.hpp"
+#include "multilingual_scene.hpp"
 #include "run_collide.hpp"
 
 namespace fs = std::filesystem;
@@ -16,26 +17,7 @@ using collide::test::TempDir;
 
 namespace {
 
-constexpr const char* scene_text = R"(title = "Zderzenia: Δt ≈ 0.01 s"
-description = "Gaz w pudełku; σ → η"
-disc = [
-  { position = [0.3, 0.5], velocity = [0.5, 0], radius = 0.05, mass = 1 },
-  { position = [0.7, 0.5], velocity = [-0.5, 0], radius = 0.05, mass = 1 },
-]
-
-[box]
-width = 1.0
-height = 1.0
-boundary = "walls"
-
-[render]
-duration = 4.0
-caption = "Kule się zderzają"
-
-[[render.captions]]
-at = 2.5
-text = "Energia ± 0: E = ½mv²"
-)";
+constexpr const char* scene_text = collide::test::multilingual_scene;
 
 }  // namespace
 

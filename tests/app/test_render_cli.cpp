@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/shell.hpp"
 #include "../support/skip.hpp"
 #include "../support/temp_dir.hpp"
 #include "collide/image.hpp"
@@ -18,6 +19,8 @@
 
 namespace fs = std::filesystem;
 using collide::Image;
+using collide::test::capture;
+using collide::test::have_ffprobe;
 using collide::test::run_collide;
 
 namespace {
@@ -27,21 +30,6 @@ using collide::test::TempDir;
 std::string read_bytes(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-/// Runs a shell command and returns its standard output.
-std::string capture(const std::string& cmd) {
-    std::string out;
-    FILE* pipe = popen(cmd.c_str(), "r");
-    if (pipe == nullptr) return out;
-    char buf[512];
-    while (std::fgets(buf, sizeof buf, pipe) != nullptr) out += buf;
-    pclose(pipe);
-    return out;
-}
-
-bool have_ffprobe() {
-    return std::system("ffprobe -version >/dev/null 2>&1") == 0;
 }
 
 /// Share of pixels where some channel differs by more than 2 (the golden-image tolerance).

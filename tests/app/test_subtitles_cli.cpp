@@ -10,8 +10,10 @@
 #include <vector>
 
 #include "../support/files.hpp"
+#include "../support/shell.hpp"
 #include "../support/skip.hpp"
 #include "../support/temp_dir.hpp"
+#include "multilingual_scene.hpp"
 #include "run_collide.hpp"
 
 namespace fs = std::filesystem;
@@ -20,41 +22,9 @@ using collide::test::TempDir;
 
 namespace {
 
-/// A small scene whose words are Polish, Greek and mathematics.
-constexpr const char* scene_text = R"(title = "Zderzenia: Δt ≈ 0.01 s"
-description = "Gaz w pudełku; σ → η"
-disc = [
-  { position = [0.3, 0.5], velocity = [0.5, 0], radius = 0.05, mass = 1 },
-  { position = [0.7, 0.5], velocity = [-0.5, 0], radius = 0.05, mass = 1 },
-]
-
-[box]
-width = 1.0
-height = 1.0
-boundary = "walls"
-
-[render]
-duration = 4.0
-caption = "Kule się zderzają"
-
-[[render.captions]]
-at = 2.5
-text = "Energia ± 0: E = ½mv²"
-)";
-
-std::string capture(const std::string& cmd) {
-    std::string out;
-    FILE* pipe = popen(cmd.c_str(), "r");
-    if (pipe == nullptr) return out;
-    char buf[512];
-    while (std::fgets(buf, sizeof buf, pipe) != nullptr) out += buf;
-    pclose(pipe);
-    return out;
-}
-
-bool have_ffprobe() {
-    return std::system("ffprobe -version >/dev/null 2>&1") == 0;
-}
+using collide::test::capture;
+using collide::test::have_ffprobe;
+constexpr const char* scene_text = collide::test::multilingual_scene;
 
 /// One cue of a parsed subtitle file.
 struct ParsedCue {
