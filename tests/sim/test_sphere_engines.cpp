@@ -18,6 +18,7 @@
 #include "collide/sim/engine.hpp"
 #include "collide/sim/generate3.hpp"
 #include "collide/sim/time_engine.hpp"
+#include "sphere_fixtures.hpp"
 
 using namespace collide;
 
@@ -32,17 +33,7 @@ Sphere sphere(Vec3 p, Vec3 v, double r, double m = 1.0) {
     return s;
 }
 
-SphereScene fcc_fluid(std::size_t cells, double eta, std::uint64_t seed) {
-    SphereScene scene;
-    scene.name = "fcc";
-    scene.box = Box3{1.0, 1.0, 1.0, Boundary::periodic};
-    FccSpec spec;
-    spec.cells = {cells, cells, cells};
-    spec.packing_fraction = eta;
-    spec.seed = seed;
-    generate_fcc(scene, spec);
-    return scene;
-}
+using collide::test::fcc_fluid;
 
 /// Random spheres of two masses in a walled box that is not a cube (every wall kind occurs).
 SphereScene walled_gas(std::uint64_t seed) {

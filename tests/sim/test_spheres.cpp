@@ -11,23 +11,14 @@
 #include "collide/error.hpp"
 #include "collide/sim/fast_engine.hpp"
 #include "collide/sim/generate3.hpp"
+#include "sphere_fixtures.hpp"
 
 using namespace collide;
 using sim::FastSphereEngine;
 
 namespace {
 
-SphereScene fcc_fluid(std::size_t cells, double eta, std::uint64_t seed = 1) {
-    SphereScene scene;
-    scene.name = "fcc";
-    scene.box = Box3{1.0, 1.0, 1.0, Boundary::periodic};
-    FccSpec spec;
-    spec.cells = {cells, cells, cells};
-    spec.packing_fraction = eta;
-    spec.seed = seed;
-    generate_fcc(scene, spec);
-    return scene;
-}
+using collide::test::fcc_fluid;
 
 Sphere sphere(Vec3 p, Vec3 v, double r, double m = 1.0) {
     Sphere s;
