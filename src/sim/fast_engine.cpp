@@ -173,6 +173,14 @@ std::uint32_t BasicFastEngine<D>::cell_at(const Coords& c) const noexcept {
 
 namespace {
 
+/// The vector with components s (the cell scan's plain storage of a periodic image shift).
+[[nodiscard]] constexpr Vec2 vec_of(const std::array<double, 2>& s) noexcept {
+    return Vec2{s[0], s[1]};
+}
+[[nodiscard]] constexpr Vec3 vec_of(const std::array<double, 3>& s) noexcept {
+    return Vec3{s[0], s[1], s[2]};
+}
+
 /// Interleaves the bits of x and y (Z-order / Morton code).
 std::uint64_t morton2(std::uint32_t x, std::uint32_t y) noexcept {
     const auto spread = [](std::uint64_t v) {
@@ -574,9 +582,13 @@ void BasicFastEngine<D>::scan_small_neighbours(std::uint32_t i, const Particle& 
 template <int D>
 template <typename Visit>
 [[gnu::always_inline]] inline void BasicFastEngine<D>::for_each_cell(const Particle& pi,
-                                                                     const Coords& lo,
-                                                                     const Coords& hi,
+                                                                     const Coords& lo_in,
+                                                                     const Coords& hi_in,
                                                                      Visit&& visit) const {
+    // Local copies: through the references the bounds were reloaded from memory on every
+    // iteration (the visitor's stores might alias them).
+    const Coords lo = lo_in;
+    const Coords hi = hi_in;
     const Coords c = coords_of(pi.cell);
     // One axis: the wrapped coordinate and the image shift of offset o, or false (no such cell).
     const auto along = [&](int k, std::int64_t o, std::int64_t& x, double& shift) {
@@ -643,18 +655,22 @@ template <int D>
 template <int D>
 inline void BasicFastEngine<D>::scan_cells(std::uint32_t i, const Particle& pi, Vec xi,
                                            const Coords& lo, const Coords& hi, Key& best) {
+    // Plain members, no Vec: Vec's default member initialisers would zero all 3^D entries on
+    // every call (tens of instructions per prediction for entries never read).
     struct CellVisit {
         std::uint32_t first;
-        Vec shift;
+        std::array<double, D> shift;
     };
     std::array<CellVisit, D == 2 ? 9 : 27> visits;  // callers scan at most 3^D cells
     std::size_t count = 0;
     for_each_cell(pi, lo, hi, [&](std::uint32_t first, Vec shift) {
         __builtin_prefetch(&p_[first]);
-        visits[count++] = {first, shift};
+        CellVisit& visit = visits[count++];
+        visit.first = first;
+        for (int k = 0; k < D; ++k) visit.shift[static_cast<std::size_t>(k)] = axis(shift, k);
     });
     for (std::size_t k = 0; k < count; ++k) {
-        scan_list(i, pi, xi, visits[k].first, visits[k].shift, best);
+        scan_list(i, pi, xi, visits[k].first, vec_of(visits[k].shift), best);
     }
 }
 
