@@ -459,7 +459,7 @@ struct HeapRenderer::Impl {
                              p.slots[parent].mark == p.slots[i].mark &&
                              p.slots[i].mark != view::SlotMark::leaving;
             // An edge comes and goes with its child: a removed key takes its edge with it.
-            const Rgba8 color = lit ? heap_mark_style(p.slots[i].mark, colors).fill : colors.edge;
+            const Rgba8 color = lit ? heap_lit_edge(p.slots[i].mark, colors) : colors.edge;
             under.add_line(g.nodes[parent], g.nodes[i], lit ? 2.2F * edge_w : edge_w,
                            faded(color, alpha_of(p, p.slots[i].mark)));
         }
@@ -562,9 +562,7 @@ struct HeapRenderer::Impl {
                                heap_mark_style(view::SlotMark::moving, colors).fill);
             }
             centred(f, {x, key_y}, row.key, colors.title);
-            centred(
-                f, {x, index_y}, row.index,
-                row.updated ? heap_mark_style(view::SlotMark::moving, colors).text : colors.index);
+            centred(f, {x, index_y}, row.index, row.updated ? heap_map_update_text : colors.index);
         }
     }
 

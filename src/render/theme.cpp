@@ -70,16 +70,16 @@ PlotColors plot_colors(Theme theme) noexcept {
 HeapPalette heap_palette(Theme theme) noexcept {
     if (theme == Theme::light) {
         return {{236, 236, 240, 255}, {255, 255, 255, 255}, {10, 10, 15, 255},
-                {55, 55, 65, 255},    {20, 20, 25, 255},    {150, 152, 170, 255},
+                {55, 55, 65, 255},    {20, 20, 25, 255},    {128, 130, 148, 255},
                 {226, 229, 238, 255}, {85, 88, 105, 255},   {195, 197, 210, 255},
                 {214, 218, 230, 255}, {80, 82, 98, 255},    {40, 40, 50, 255},
                 {205, 207, 216, 255}, {10, 10, 15, 255},    {35, 35, 45, 255},
-                {150, 152, 165, 255}, {75, 77, 95, 255}};
+                {100, 102, 116, 255}, {75, 77, 95, 255}};
     }
     return {{22, 22, 28, 255},    {32, 34, 44, 255},    {245, 245, 245, 255}, {190, 190, 200, 255},
             {255, 255, 255, 255}, {105, 108, 128, 255}, {52, 56, 74, 255},    {150, 152, 170, 255},
             {70, 72, 90, 255},    {58, 62, 84, 255},    {165, 168, 185, 255}, {215, 215, 225, 255},
-            {40, 43, 55, 255},    {245, 245, 245, 255}, {200, 200, 210, 255}, {110, 112, 128, 255},
+            {40, 43, 55, 255},    {245, 245, 245, 255}, {200, 200, 210, 255}, {138, 140, 156, 255},
             {170, 172, 190, 255}};
 }
 
@@ -106,6 +106,12 @@ KeyStyle heap_mark_style(view::SlotMark mark, const HeapPalette& palette) noexce
     return {palette.slot, palette.title};
 }
 
+Rgba8 heap_lit_edge(view::SlotMark mark, const HeapPalette& palette) noexcept {
+    const Rgb8 c =
+        with_contrast(rgb(heap_mark_style(mark, palette).fill), rgb(palette.panel), mark_contrast);
+    return {c.r, c.g, c.b, 255};
+}
+
 PuzzlePalette puzzle_palette(Theme theme) noexcept {
     if (theme == Theme::light) {
         // The collision video's light page; boards keep light tiles in a dark frame (a board
@@ -114,7 +120,7 @@ PuzzlePalette puzzle_palette(Theme theme) noexcept {
             {236, 236, 240, 255}, {255, 255, 255, 255}, {10, 10, 15, 255},    {55, 55, 65, 255},
             {150, 95, 0, 255},    {80, 82, 98, 255},    {130, 132, 150, 255}, {185, 187, 200, 255},
             {240, 241, 246, 255}, {222, 224, 232, 255}, {24, 24, 30, 255},    {70, 72, 88, 255},
-            {240, 170, 40, 255},  {205, 125, 0, 255},   {30, 140, 60, 255},   {40, 105, 210, 255}};
+            {240, 170, 40, 255},  {180, 105, 0, 255},   {30, 140, 60, 255},   {40, 105, 210, 255}};
     }
     // The collision video's dark theme.
     return {{22, 22, 28, 255},   {32, 34, 44, 255},    {245, 245, 245, 255}, {200, 200, 210, 255},
@@ -294,6 +300,83 @@ std::vector<ColorPair> color_pairs(Theme theme) {
         pairs.push_back({time_driven ? "time-driven bar and curve on the page"
                                      : "event-driven bar and curve on the page",
                          accent, page, mark_contrast});
+    }
+    return pairs;
+}
+
+std::vector<ColorPair> heap_color_pairs(Theme theme) {
+    const HeapPalette p = heap_palette(theme);
+    const Rgb8 page = rgb(p.background);
+    const Rgb8 panel = rgb(p.panel);
+    std::vector<ColorPair> pairs = {
+        {"heap: operations to come on the page", rgb(p.token_todo), page, text_contrast},
+        {"heap: operations done on the page", rgb(p.token_done), page, text_contrast},
+        {"heap: the operation under way on its tab", rgb(highlight_dark_text),
+         rgb(heap_token_now_fill), text_contrast},
+        {"heap: title on the panel", rgb(p.title), panel, text_contrast},
+        {"heap: counters on the panel", rgb(p.counter), panel, text_contrast},
+        {"heap: caption on the panel", rgb(p.caption), panel, text_contrast},
+        {"heap: map heading on the panel", rgb(p.map_header), panel, text_contrast},
+        {"heap: slot indices and 'sorted' on the panel", rgb(p.index), panel, text_contrast},
+        {"heap: map keys on the panel", rgb(p.title), panel, text_contrast},
+        {"heap: a map entry being updated, on its tab", rgb(heap_map_update_text),
+         rgb(heap_mark_style(view::SlotMark::moving, p).fill), text_contrast},
+        {"heap: a plain key in its slot", rgb(p.title), rgb(p.slot), large_text_contrast},
+        {"heap: a plain key in its node", rgb(p.title), rgb(p.node), large_text_contrast},
+        {"heap: a sorted key in its slot", rgb(p.sorted_text), rgb(p.sorted_fill),
+         large_text_contrast},
+        {"heap: a key in an empty slot (the page's colour)", rgb(p.title), page,
+         large_text_contrast},
+        {"heap: tree edges on the panel", rgb(p.edge), panel, mark_contrast},
+        {"heap: node outlines on the panel", rgb(p.node_outline), panel, mark_contrast},
+        {"heap: slot outlines on the panel", rgb(p.slot_outline), panel, mark_contrast},
+    };
+    for (const view::SlotMark mark :
+         {view::SlotMark::compared, view::SlotMark::moving, view::SlotMark::inserted,
+          view::SlotMark::changed, view::SlotMark::best, view::SlotMark::leaving,
+          view::SlotMark::sinking}) {
+        const KeyStyle style = heap_mark_style(mark, p);
+        pairs.push_back({"heap: a highlighted key on its fill", rgb(style.text), rgb(style.fill),
+                         large_text_contrast});
+        pairs.push_back({"heap: a lit tree edge on the panel", rgb(heap_lit_edge(mark, p)), panel,
+                         mark_contrast});
+    }
+    return pairs;
+}
+
+std::vector<ColorPair> puzzle_color_pairs(Theme theme) {
+    const PuzzlePalette p = puzzle_palette(theme);
+    const Rgb8 page = rgb(p.background);
+    const Rgb8 panel = rgb(p.panel);
+    const Rgb8 queue = rgb(p.queue_fill);
+    std::vector<ColorPair> pairs = {
+        {"puzzle: heading on the page", rgb(p.title), page, text_contrast},
+        {"puzzle: title, rows and caption on the panel", rgb(p.title), panel, text_contrast},
+        {"puzzle: counters on the panel", rgb(p.counter), panel, text_contrast},
+        {"puzzle: status on the panel", rgb(p.status), panel, text_contrast},
+        {"puzzle: board labels on the panel", rgb(p.label), panel, text_contrast},
+        {"puzzle: the queue's title and labels on its fill", rgb(p.title), queue, text_contrast},
+        {"puzzle: '+N more' on the queue's fill", rgb(p.label), queue, text_contrast},
+        {"puzzle: tile numbers", rgb(p.tile_text), rgb(p.tile), text_contrast},
+        {"puzzle: a sliding tile's number", rgb(p.tile_text), rgb(p.sliding_tile), text_contrast},
+        {"puzzle: tree edges on the panel", rgb(p.edge), panel, mark_contrast},
+    };
+    // A board reads by its outer edge: its light tiles on a dark page, its dark frame on a light
+    // one; whichever stands out more must keep 3:1.
+    for (const Rgb8 under : {panel, queue}) {
+        const Rgb8 edge = contrast_ratio(rgb(p.tile), under) >= contrast_ratio(rgb(p.blank), under)
+                              ? rgb(p.tile)
+                              : rgb(p.blank);
+        pairs.push_back(
+            {"puzzle: a board's outer edge (tiles or frame)", edge, under, mark_contrast});
+    }
+    for (const view::PuzzleMark mark :
+         {view::PuzzleMark::current, view::PuzzleMark::goal, view::PuzzleMark::solution}) {
+        const Rgb8 frame = rgb(puzzle_mark_color(mark, p));
+        pairs.push_back(
+            {"puzzle: a marked board's frame on the panel", frame, panel, mark_contrast});
+        pairs.push_back(
+            {"puzzle: a marked board's frame on the queue's fill", frame, queue, mark_contrast});
     }
     return pairs;
 }

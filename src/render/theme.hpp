@@ -39,6 +39,8 @@ struct Palette {
 /// trails, walls and edges (WCAG's 3:1 for graphics a reader must see).
 inline constexpr double text_contrast = 4.5;
 inline constexpr double mark_contrast = 3.0;
+/// WCAG's 3:1 for large text (18 pt and up): the heap's keys, its largest text.
+inline constexpr double large_text_contrast = 3.0;
 
 /// A colour a painter draws over a background, with the contrast it must keep.
 struct ColorPair {
@@ -118,6 +120,11 @@ struct KeyStyle {
 };
 /// How a key marked `mark` is drawn; plain keys take the palette's slot and title colours.
 [[nodiscard]] KeyStyle heap_mark_style(view::SlotMark mark, const HeapPalette& palette) noexcept;
+/// A tree edge lit in `mark`'s colour: the fill, darkened or lightened until it keeps 3:1 on
+/// the panel (the light theme's amber and green are too faint on white as lines).
+[[nodiscard]] Rgba8 heap_lit_edge(view::SlotMark mark, const HeapPalette& palette) noexcept;
+/// The map's entry being updated, small text on the moving blue: dark (white keeps only 3.2:1).
+inline constexpr Rgba8 heap_map_update_text{20, 20, 24, 255};
 
 // ---------------------------------------------------------------------------------------------
 // The puzzle (puzzle_view.cpp). Tiles are light with dark numbers (the most legible pair at a
@@ -145,6 +152,11 @@ struct PuzzlePalette {
 [[nodiscard]] PuzzlePalette puzzle_palette(Theme theme) noexcept;
 /// The frame around a board marked `mark` (plain: the edge colour).
 [[nodiscard]] Rgba8 puzzle_mark_color(view::PuzzleMark mark, const PuzzlePalette& palette) noexcept;
+
+/// Every colour pair the heap lesson's and the puzzle's painters use in a theme (heap_view.cpp,
+/// puzzle_view.cpp), for the test that checks them all, as color_pairs does for collisions.
+[[nodiscard]] std::vector<ColorPair> heap_color_pairs(Theme theme);
+[[nodiscard]] std::vector<ColorPair> puzzle_color_pairs(Theme theme);
 
 // ---------------------------------------------------------------------------------------------
 // Helpers

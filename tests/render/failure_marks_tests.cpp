@@ -180,6 +180,20 @@ TEST_CASE("contrast: every colour pair the painters use, in both themes") {
     }
 }
 
+TEST_CASE("contrast: every colour pair of the heap lesson and the puzzle, in both themes") {
+    for (const Theme theme : {Theme::dark, Theme::light}) {
+        std::vector<ColorPair> pairs = heap_color_pairs(theme);
+        const std::vector<ColorPair> puzzle = puzzle_color_pairs(theme);
+        pairs.insert(pairs.end(), puzzle.begin(), puzzle.end());
+        CHECK(pairs.size() > 40);
+        for (const ColorPair& pair : pairs) {
+            const double ratio = contrast_ratio(pair.color, pair.background);
+            INFO(theme_name(theme) << ": " << std::string(pair.what) << " " << ratio << ":1");
+            CHECK(ratio >= pair.minimum);
+        }
+    }
+}
+
 TEST_CASE("contrast: trails keep 3:1 down to their faintest segment, whatever the disc colour") {
     std::vector<Rgb8> colors = {{240, 240, 240}, {255, 255, 255}, {0, 0, 0},     {32, 32, 32},
                                 {242, 194, 48},  {32, 80, 192},   {208, 48, 32}, {96, 32, 128},
