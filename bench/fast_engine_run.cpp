@@ -43,9 +43,7 @@ int main(int argc, char** argv) {
 
     FastEngine engine(scene);
     std::uint64_t collisions = 0;
-    engine.set_collision_listener([&collisions](const CollisionRecord&) {
-        ++collisions;
-    });
+    engine.set_collision_listener([&collisions](const CollisionRecord&) { ++collisions; });
     const auto run = [&](double more) {
         const std::uint64_t goal = collisions + static_cast<std::uint64_t>(more);
         double step = 1e-6;
