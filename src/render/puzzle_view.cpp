@@ -236,8 +236,8 @@ struct PuzzleRenderer::Impl {
         for (std::size_t r = 0; r < rows; ++r) {
             const view::PuzzleRowView& row = p.rows[r];
             const float y = top + row_h * static_cast<float>(r);
-            fitted_text(area.x0, y + ascent, area.width(), lesson, row.label + ": " + row.count,
-                        colors.title);
+            const std::string label = row.label + ": " + row.count;
+            fitted_text(area.x0, y + ascent, area.width(), lesson, label, colors.title);
             std::vector<PointF> here;
             const std::size_t n = std::min(row.boards.size(), view::max_puzzle_row_boards);
             for (std::size_t i = 0; i < n; ++i) {
@@ -258,6 +258,15 @@ struct PuzzleRenderer::Impl {
                 draw_board(b, cx - size / 2.0F, by, cell, lesson);
                 centred_text(cx, by + size + gap + ascent, lesson, b.label, colors.label);
                 here.push_back({cx, by + size + gap + l});
+            }
+            // The edges into this row pass the row's label: a plate in the panel's colour, drawn
+            // over them down to where they end, keeps the label clear and leaves no stub.
+            if (r > 0) {
+                const float pad = 0.2F * l;
+                list.under.add_rect(
+                    {area.x0 - pad, y + ascent - l + pad,
+                     area.x0 + std::min(width_of(lesson, label), area.width()) + pad, y + l},
+                    colors.panel);
             }
             above = std::move(here);
         }
