@@ -76,7 +76,8 @@ Chapters timeline_chapters(const Timeline& timeline, double card_fade) {
         const Part part = part_of(segment.kind);
         const bool same = last_caption != nullptr && part == last_part &&
                           (part == Part::replay || *last_caption == segment.caption);
-        if (!same) chapters.push_back({segment.start, segment.end, chapter_title(part, segment.caption)});
+        if (!same)
+            chapters.push_back({segment.start, segment.end, chapter_title(part, segment.caption)});
         chapters.back().end = segment.end;
         chapters.back().still = static_cast<double>(segment.end_frame - 1) / fps;
         if (part == Part::card && card_fade > 0.0) {

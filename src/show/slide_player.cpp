@@ -2,11 +2,11 @@
 // stops at each chapter's end. Everything it needs is in the page or beside it (file://).
 #include "collide/show/slide_player.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <string_view>
 #include <utility>
 #include <vector>
-#include <algorithm>
 
 #include "collide/show/chapters.hpp"
 
@@ -50,7 +50,8 @@ std::string js_string(std::string_view text) {
             char escaped[8];
             std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
             out += escaped;
-        } else if (c == 0xE2 && i + 2 < text.size() && static_cast<unsigned char>(text[i + 1]) == 0x80 &&
+        } else if (c == 0xE2 && i + 2 < text.size() &&
+                   static_cast<unsigned char>(text[i + 1]) == 0x80 &&
                    (static_cast<unsigned char>(text[i + 2]) == 0xA8 ||
                     static_cast<unsigned char>(text[i + 2]) == 0xA9)) {
             out += static_cast<unsigned char>(text[i + 2]) == 0xA8 ? "\\u2028" : "\\u2029";
@@ -304,15 +305,14 @@ std::string slide_page_html(const SlidePage& page) {
         track = "<track kind=\"subtitles\" src=\"" + html_escaped(page.subtitles) +
                 "\" srclang=\"" + html_escaped(page.language) + "\" label=\"Subtitles\" default>";
     }
-    return filled(
-        page_template,
-        {{"TITLE", html_escaped(page.title.empty() ? "collide" : one_line(page.title))},
-         {"LANG", html_escaped(page.language.empty() ? "und" : page.language)},
-         {"VIDEO", html_escaped(page.video)},
-         {"TRACK", track},
-         {"CHAPTERS", js_array(page.chapters)},
-         {"CUES", js_array(page.cues)},
-         {"FPS", std::to_string(page.fps > 0 ? page.fps : 30)}});
+    return filled(page_template,
+                  {{"TITLE", html_escaped(page.title.empty() ? "collide" : one_line(page.title))},
+                   {"LANG", html_escaped(page.language.empty() ? "und" : page.language)},
+                   {"VIDEO", html_escaped(page.video)},
+                   {"TRACK", track},
+                   {"CHAPTERS", js_array(page.chapters)},
+                   {"CUES", js_array(page.cues)},
+                   {"FPS", std::to_string(page.fps > 0 ? page.fps : 30)}});
 }
 
 }  // namespace collide::show

@@ -22,8 +22,8 @@
 namespace fs = std::filesystem;
 using collide::test::capture;
 using collide::test::have_ffprobe;
-using collide::test::ParsedCue;
 using collide::test::parse_subtitles;
+using collide::test::ParsedCue;
 using collide::test::run_collide;
 using collide::test::TempDir;
 
@@ -45,10 +45,10 @@ const std::vector<Expected> expected_chapters = {
 
 /// The chapters ffprobe reads from `file`: "start_time=", "end_time=", "TAG:title=" lines.
 std::vector<ParsedCue> probed_chapters(const fs::path& file) {
-    std::istringstream lines(capture(
-        "ffprobe -v error -show_entries chapter=start_time,end_time:chapter_tags=title -of "
-        "default=nw=1 " +
-        file.string()));
+    std::istringstream lines(
+        capture("ffprobe -v error -show_entries chapter=start_time,end_time:chapter_tags=title -of "
+                "default=nw=1 " +
+                file.string()));
     std::vector<ParsedCue> chapters;
     std::string line;
     while (std::getline(lines, line)) {
@@ -90,8 +90,8 @@ TEST_CASE("render: the MP4 carries the timeline's chapters, and the chapters fil
     collide::test::write_file(scene, collide::test::multilingual_scene);
     const fs::path out = dir.path / "t.mp4";
     const fs::path vtt = dir.path / "chapters.vtt";
-    const auto r = run_collide(render_args(scene) + "-o " + out.string() + " --chapters-file " +
-                               vtt.string());
+    const auto r =
+        run_collide(render_args(scene) + "-o " + out.string() + " --chapters-file " + vtt.string());
     REQUIRE_MESSAGE(r.exit_code == 0, r.output);
 
     const std::vector<ParsedCue> probed = probed_chapters(out);
@@ -149,8 +149,8 @@ TEST_CASE("render --slides: a folder with the page, the video, a still per chapt
     REQUIRE_MESSAGE(r.exit_code == 0, r.output);
     CHECK(collide::test::entries(slides) ==
           std::vector<std::string>{"chapter-01.png", "chapter-02.png", "chapter-03.png",
-                                   "chapter-04.png", "chapters.vtt", "index.html",
-                                   "subtitles.vtt", "video.mp4"});
+                                   "chapter-04.png", "chapters.vtt", "index.html", "subtitles.vtt",
+                                   "video.mp4"});
     CHECK(collide::test::read_all(slides / "video.mp4") == collide::test::read_all(out));
     for (int i = 1; i <= 4; ++i) {
         CAPTURE(i);
@@ -204,7 +204,8 @@ TEST_CASE("render --slides, --chapters, --chapters-file: bad input exits 2 and w
         {mp4 + "--chapters-file " + (dir.path / "c.srt").string(), "a WebVTT file name (.vtt)"},
         {mp4 + "--chapters-file " + out.string(), "--chapters-file"},
         {mp4 + "--chapters list", "--chapters: expected embed or none"},
-        {"-o " + (dir.path / "t.gif").string() + " --chapters embed", "only an MP4 carries chapters"},
+        {"-o " + (dir.path / "t.gif").string() + " --chapters embed",
+         "only an MP4 carries chapters"},
         {mp4 + "--slides " + dir.path.string(), "--slides"},
     };
     for (const Case& c : cases) {
@@ -269,13 +270,13 @@ TEST_CASE("the slide player in headless Chromium from file:// stops at chapter e
     // The page's ?test script presses the right arrow twice and the left arrow once, logging
     // where the video stopped; --virtual-time-budget lets the page run that long, then the DOM
     // (with the log) is printed. Its own profile folder: nothing of the user's is touched.
-    const std::string dom = capture(
-        "timeout 120 " + chromium +
-        " --headless --no-sandbox --disable-gpu --no-first-run --mute-audio"
-        " --autoplay-policy=no-user-gesture-required --virtual-time-budget=20000"
-        " --user-data-dir=" +
-        (dir.path / "profile").string() + " --dump-dom 'file://" + slides.string() +
-        "/index.html?test' 2>/dev/null");
+    const std::string dom =
+        capture("timeout 120 " + chromium +
+                " --headless --no-sandbox --disable-gpu --no-first-run --mute-audio"
+                " --autoplay-policy=no-user-gesture-required --virtual-time-budget=20000"
+                " --user-data-dir=" +
+                (dir.path / "profile").string() + " --dump-dom 'file://" + slides.string() +
+                "/index.html?test' 2>/dev/null");
     const std::size_t open = dom.find("<pre id=\"test-log\"");
     REQUIRE_MESSAGE(open != std::string::npos, dom);
     const std::size_t from = dom.find('>', open) + 1;

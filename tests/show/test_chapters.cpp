@@ -62,7 +62,7 @@ TEST_CASE("chapters: the card, each caption (its hold and run together), the epi
     CHECK(timeline_chapters(Timeline{}).empty());
 }
 
-TEST_CASE("chapters: a replay is one chapter of its own; words missing get the part's name") {
+TEST_CASE("chapters: a replay is one chapter of its own and missing words get the part's name") {
     Timeline timeline;
     timeline.fps = 10;
     timeline.segments = {segment(SegmentKind::card, 0, 10, ""),
