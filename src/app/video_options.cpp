@@ -72,12 +72,16 @@ void add_video_options(CLI::App& cmd, VideoCli& v, const VideoOptionSet& set) {
             "embed (default: an MP4 carries chapters at the title card, each caption, the replay "
             "and the epilogue) or none");
         v.chapters_file_opt = cmd.add_option("--chapters-file", v.chapters_file,
-                                             "Also write the chapters beside the video: F.vtt");
-        v.slides_opt = cmd.add_option(
-            "--slides", v.slides,
-            "Also write a slide player: DIR/index.html plays the video and stops at each "
-            "chapter's end (right arrow, space: go on; left: back; F: full screen), with a PNG "
-            "per chapter; works offline. DIR must be new, empty or an earlier slide folder");
+                                             "Also write the chapters beside the video: F.vtt")
+                                  ->type_name("F.vtt");
+        v.slides_opt =
+            cmd.add_option(
+                   "--slides", v.slides,
+                   "Also write a slide player: DIR/index.html plays the video and stops at each "
+                   "chapter's end (right arrow, space: go on; left: back; F: full screen), with a "
+                   "PNG "
+                   "per chapter; works offline. DIR must be new, empty or an earlier slide folder")
+                ->type_name("DIR");
     }
     cmd.add_flag("--verbose", v.verbose, "Show the encoder's own log");
     cmd.add_option("--font", v.font, font_option_help)->type_name("FILE");
