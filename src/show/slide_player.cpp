@@ -179,10 +179,14 @@ function finish() {
   show();
 }
 
+// Stops at the chapter's still: checked every animation frame while playing (timeupdate alone
+// comes only every quarter second or so).
+function check() {
+  if (state === "playing" && (video.currentTime >= stopTime(current) || video.ended)) finish();
+}
 function watch() {
-  if (state !== "playing") return;
-  if (video.currentTime >= stopTime(current) || video.ended) { finish(); return; }
-  requestAnimationFrame(watch);
+  check();
+  if (state === "playing") requestAnimationFrame(watch);
 }
 
 function play() {
@@ -250,19 +254,25 @@ else subtitlesFromPage();
 document.addEventListener("keydown", function (event) {
   if (event.altKey || event.ctrlKey || event.metaKey) return;
   const key = event.key;
-  if (key === "ArrowRight" || key === " " || key === "PageDown" || key === "Enter") goOn();
-  else if (key === "ArrowLeft" || key === "PageUp" || key === "Backspace") goBack();
+  if (key === "ArrowRight" || key === " " || key === "PageDown") goOn();
+  else if (key === "ArrowLeft" || key === "PageUp") goBack();
   else if (key === "f" || key === "F") toggleFullScreen();
   else if (key === "s" || key === "S") toggleSubtitles();
   else return;
   event.preventDefault();
 });
 video.addEventListener("click", goOn);
-video.addEventListener("timeupdate", watch);
-document.getElementById("next").addEventListener("click", goOn);
-document.getElementById("back").addEventListener("click", goBack);
-document.getElementById("subs").addEventListener("click", toggleSubtitles);
-document.getElementById("full").addEventListener("click", toggleFullScreen);
+video.addEventListener("timeupdate", check);
+video.addEventListener("ended", check);
+// A clicked button gives its focus back, so that space goes on rather than clicking it again.
+function button(id, action) {
+  const element = document.getElementById(id);
+  element.addEventListener("click", function () { action(); element.blur(); });
+}
+button("next", goOn);
+button("back", goBack);
+button("subs", toggleSubtitles);
+button("full", toggleFullScreen);
 show();
 
 // ?test: play two chapters by pressing the keys a lecturer would, and log what happened.
