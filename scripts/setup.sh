@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages collide needs, only those that are missing (silent and fast
-# when everything is there). Usage: scripts/setup.sh [--test]   (--test adds ffmpeg and xvfb)
+# when everything is there). Usage: scripts/setup.sh [--test]   (--test adds ffmpeg, xvfb and chromium)
 set -euo pipefail
 
 packages=(
@@ -11,7 +11,7 @@ packages=(
     libcli11-dev libtomlplusplus-dev libfmt-dev nlohmann-json3-dev doctest-dev libbenchmark-dev
 )
 if [[ "${1:-}" == "--test" ]]; then
-    packages+=(ffmpeg xvfb xauth clang-format)
+    packages+=(ffmpeg xvfb xauth clang-format chromium)
 fi
 
 missing=()

@@ -113,6 +113,7 @@ void run(const HeapCli& v) {
     }
     const OutputChoice output = lesson_output_of(v.video, "heap");
     const SubtitleOutput subtitles = subtitle_output_of(v.video, output);
+    const ChapterOutput chapters = chapter_output_of(v.video, output, lesson.name());
     if (output.default_path) std::filesystem::create_directories(output.path.parent_path());
     video::check_output_writable(
         output.path, !output.still && output.format == video::VideoFormat::png_sequence);
@@ -130,7 +131,7 @@ void run(const HeapCli& v) {
     const LessonVideoSummary written = write_lesson(
         output, geometry, progress_mode, lesson.duration(), still_time,
         [&](double t, Image& frame) { renderer.render(lesson.frame_at(t), frame); }, subtitles,
-        output.still ? Cues{} : show::heap_subtitle_cues(lesson, geometry.fps));
+        output.still ? Cues{} : show::heap_subtitle_cues(lesson, geometry.fps), chapters);
     if (output.still) {
         std::printf("%s: %dx%d PNG at %.2f s of a %.2f s video of %s\n",
                     output.path.string().c_str(), geometry.width, geometry.height, still_time,

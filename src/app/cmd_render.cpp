@@ -348,7 +348,7 @@ void print_summary(const RenderPlan& plan, const PipelineResult& result, double 
 /// The run's outputs must be files of their own (after links), the layout outside a directory
 /// of frames. Throws Error(input) naming both.
 void check_distinct_outputs(const RenderPlan& plan, const CliValues& values,
-                            const SubtitleOutput& subtitles) {
+                            const SubtitleOutput& subtitles, const ChapterOutput& chapters) {
     std::vector<io::NamedOutput> outputs;
     const bool directory =
         plan.kind == OutputKind::video && plan.format == video::VideoFormat::png_sequence;
@@ -358,6 +358,8 @@ void check_distinct_outputs(const RenderPlan& plan, const CliValues& values,
         outputs.push_back({"--timeline-json", plan.timeline_json, false});
     if (!values.dump_rgba.empty()) outputs.push_back({"--dump-rgba", values.dump_rgba, false});
     if (!subtitles.file.empty()) outputs.push_back({"--subtitles-file", subtitles.file, false});
+    if (!chapters.file.empty()) outputs.push_back({"--chapters-file", chapters.file, false});
+    if (!chapters.slides.empty()) outputs.push_back({"--slides", chapters.slides, true});
     if (outputs.size() > 1) io::check_distinct_outputs(outputs);
 }
 
@@ -379,10 +381,13 @@ void run(const CliValues& values, bool still) {
     const RenderPlan plan = validated_plan(request, scene);
     const SubtitleOutput subtitles = subtitle_output_of(
         values.video, {plan.output, plan.format, plan.kind == OutputKind::still, false});
+    const ChapterOutput chapters = chapter_output_of(
+        values.video, {plan.output, plan.format, plan.kind == OutputKind::still, false},
+        scene.title);
     video::set_libav_verbose(values.video.verbose);
     for (const std::string& line : plan.notices) print_notice(line);
     // Its temporary exists from here on, so an unwritable path fails before any frame.
-    check_distinct_outputs(plan, values, subtitles);
+    check_distinct_outputs(plan, values, subtitles, chapters);
     std::optional<io::OutputFile> layout_file;
     if (!plan.layout_json.empty()) {
         layout_file.emplace(plan.layout_json, io::OutputOptions{"--layout-json", true});
@@ -421,7 +426,8 @@ void run(const CliValues& values, bool still) {
     hooks.dump_rgba = values.dump_rgba;
     PipelineResult result;
     try {
-        result = run_render(scene, plan, hooks, layout_file ? &*layout_file : nullptr, subtitles);
+        result = run_render(scene, plan, hooks, layout_file ? &*layout_file : nullptr, subtitles,
+                            chapters);
     } catch (...) {
         progress.finish();
         interrupts.throw_if_requested();  // whatever noticed it first: one wording, the signal

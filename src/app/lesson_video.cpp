@@ -10,6 +10,7 @@
 
 #include "cli_numbers.hpp"
 #include "collide/error.hpp"
+#include "collide/show/chapters.hpp"
 #include "collide/video/video_writer.hpp"
 #include "font_search.hpp"
 #include "interrupt.hpp"
@@ -88,7 +89,7 @@ class LessonProgram final : public FrameProgram {
 LessonVideoSummary write_lesson(const OutputChoice& output, const LessonGeometry& geometry,
                                 ProgressMode progress_mode, double duration, double still_time,
                                 const LessonDraw& draw, const SubtitleOutput& subtitles,
-                                const Cues& cues) {
+                                const Cues& cues, const ChapterOutput& chapters) {
     InterruptGuard interrupts;
     VideoJob job;
     job.output.path = output.path;
@@ -103,6 +104,10 @@ LessonVideoSummary write_lesson(const OutputChoice& output, const LessonGeometry
     if (!output.still) {
         job.output.subtitles = subtitles;
         job.output.cues = cues;
+        job.output.chapter_output = chapters;
+        job.output.chapters = show::chapters_from_cues(
+            cues, static_cast<double>(job.frames) / static_cast<double>(geometry.fps),
+            geometry.fps);
     }
     Progress progress(progress_mode, job.frames);
     JobHooks hooks;

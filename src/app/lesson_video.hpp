@@ -55,10 +55,11 @@ using LessonDraw = std::function<void(double t, Image& frame)>;
 /// `still_time` as a PNG. Ctrl-C stops it between frames; the destination is only replaced once
 /// the output is whole.
 /// `subtitles` and `cues` (videos only): the lesson's step captions as a subtitle track and/or
-/// a sidecar file (video_job.hpp).
+/// a sidecar file (video_job.hpp); `chapters`: one chapter per step caption
+/// (show::chapters_from_cues) in the MP4, a chapters file and/or a slide folder.
 LessonVideoSummary write_lesson(const OutputChoice& output, const LessonGeometry& geometry,
                                 ProgressMode progress_mode, double duration, double still_time,
                                 const LessonDraw& draw, const SubtitleOutput& subtitles = {},
-                                const Cues& cues = {});
+                                const Cues& cues = {}, const ChapterOutput& chapters = {});
 
 }  // namespace collide::app

@@ -12,6 +12,7 @@
 
 #include "bounded_queue.hpp"
 #include "collide/error.hpp"
+#include "collide/show/chapters.hpp"
 #include "collide/show/collision_summary.hpp"
 #include "collide/show/subtitles.hpp"
 
@@ -366,7 +367,8 @@ class CollisionProgram final : public FrameProgram {
 }  // namespace
 
 PipelineResult run_render(const Scene& scene, const RenderPlan& plan, const JobHooks& hooks,
-                          io::OutputFile* layout_file, const SubtitleOutput& subtitles) {
+                          io::OutputFile* layout_file, const SubtitleOutput& subtitles,
+                          const ChapterOutput& chapters) {
     check_captions_fit(scene, plan);
     VideoJob job;
     job.output.path = plan.output;
@@ -383,6 +385,9 @@ PipelineResult run_render(const Scene& scene, const RenderPlan& plan, const JobH
         job.output.subtitles = subtitles;
         job.output.cues =
             show::subtitle_cues(plan.lesson, static_cast<double>(job.frames) / job.fps);
+        job.output.chapter_output = chapters;
+        job.output.chapters =
+            show::timeline_chapters(plan.timeline, plan.lesson.intro_fade_seconds());
     }
 
     PipelineResult result;

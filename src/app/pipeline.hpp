@@ -123,8 +123,10 @@ struct PipelineResult {
 /// or an interrupt.
 /// `subtitles`: the video's cues (show::subtitle_cues of the lesson) go into the MP4 and/or a
 /// sidecar as it says; the sidecar too appears only with the video.
+/// `chapters`: the timeline's chapters (show::timeline_chapters) go into the MP4, a chapters
+/// file and/or a slide folder as it says, likewise only with the video.
 PipelineResult run_render(const Scene& scene, const RenderPlan& plan, const JobHooks& hooks,
                           io::OutputFile* layout_file = nullptr,
-                          const SubtitleOutput& subtitles = {});
+                          const SubtitleOutput& subtitles = {}, const ChapterOutput& chapters = {});
 
 }  // namespace collide::app

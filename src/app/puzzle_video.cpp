@@ -51,7 +51,8 @@ void refuse_video_options(const PuzzleVideoCli& v, const std::string& mode) {
     (void)parse_progress_mode(v.progress);  // harmless with text, but never a wrong value
     for (const CLI::Option* o :
          {v.output_opt, v.format_opt, v.quality_opt, v.size_opt, v.fps_opt, v.last_frame_opt,
-          v.at_opt, v.theme_opt, v.subtitles_opt, v.subtitles_file_opt}) {
+          v.at_opt, v.theme_opt, v.subtitles_opt, v.subtitles_file_opt, v.chapters_opt,
+          v.chapters_file_opt, v.slides_opt}) {
         if (given(o)) {
             throw_option_error(o->get_name(), mode + " prints text instead of a video; leave " +
                                                   o->get_name() + " out, or " + mode + " out");
@@ -65,6 +66,7 @@ void validate_puzzle_video(const PuzzleVideoCli& v) {
     (void)geometry_of(v);
     const OutputChoice output = output_of(v);
     (void)subtitle_output_of(v, output);
+    (void)chapter_output_of(v, output, "");
     if (!output.default_path) {
         video::check_output_writable(
             output.path, !output.still && output.format == video::VideoFormat::png_sequence);
@@ -83,6 +85,7 @@ void render_puzzle_video(const puzzle::Board& start,
     }
     const OutputChoice output = output_of(v);
     const SubtitleOutput subtitles = subtitle_output_of(v, output);
+    const ChapterOutput chapters = chapter_output_of(v, output, "8-puzzle");
     if (output.default_path) std::filesystem::create_directories(output.path.parent_path());
     video::check_output_writable(
         output.path, !output.still && output.format == video::VideoFormat::png_sequence);
@@ -99,7 +102,7 @@ void render_puzzle_video(const puzzle::Board& start,
     const LessonVideoSummary written = write_lesson(
         output, geometry, progress_mode, frames.duration(), still_time,
         [&](double t, Image& frame) { renderer.render(frames.frame_at(t), frame); }, subtitles,
-        output.still ? Cues{} : show::puzzle_subtitle_cues(frames, geometry.fps));
+        output.still ? Cues{} : show::puzzle_subtitle_cues(frames, geometry.fps), chapters);
     if (output.still) {
         std::printf("%s: %dx%d PNG at %.2f s of a %.2f s video\n", output.path.string().c_str(),
                     geometry.width, geometry.height, still_time, frames.duration());

@@ -1,16 +1,35 @@
 #include "video_job.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include "collide/error.hpp"
 #include "collide/io/file.hpp"
 #include "collide/render/preview.hpp"
+#include "collide/show/slide_player.hpp"
 #include "collide/video/png.hpp"
 #include "collide/video/subtitles.hpp"
 
 namespace collide::app {
+
+bool is_slide_file_name(std::string_view name) {
+    if (name == "index.html" || name == "video.mp4" || name == "subtitles.vtt" ||
+        name == "chapters.vtt")
+        return true;
+    constexpr std::string_view prefix = "chapter-";
+    constexpr std::string_view suffix = ".png";
+    if (name.size() <= prefix.size() + suffix.size() || name.substr(0, prefix.size()) != prefix ||
+        name.substr(name.size() - suffix.size()) != suffix)
+        return false;
+    const std::string_view digits =
+        name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
+    return std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
 
 namespace {
 
@@ -90,9 +109,137 @@ class SubtitleSidecar {
     std::optional<io::OutputFile> file_;
 };
 
+/// --chapters-file: like the subtitle sidecar, a WebVTT chapters file put in place with the video.
+class ChapterSidecar {
+  public:
+    explicit ChapterSidecar(const JobOutput& output) {
+        if (output.chapter_output.file.empty()) return;
+        file_.emplace(output.chapter_output.file, io::OutputOptions{"--chapters-file", false});
+    }
+    void write(const Chapters& chapters) {
+        if (!file_) return;
+        const std::string text = video::webvtt_chapters_text(chapters);
+        file_->write(text.data(), text.size());
+    }
+    void commit() {
+        if (file_) file_->commit();
+    }
+
+  private:
+    std::optional<io::OutputFile> file_;
+};
+
+constexpr const char* slide_page = "index.html";
+constexpr const char* slide_video = "video.mp4";
+constexpr const char* slide_subtitles = "subtitles.vtt";
+constexpr const char* slide_chapters = "chapters.vtt";
+
+/// "chapter-01.png", ... (at least two digits).
+std::string still_name(std::size_t chapter) {
+    char name[40];
+    std::snprintf(name, sizeof name, "chapter-%02zu.png", chapter + 1);
+    return name;
+}
+
+/// --slides DIR: a hidden folder beside DIR, made before any frame (so an unusable DIR fails
+/// first), that gets a still of each chapter's last frame as the frames pass, then the page,
+/// the subtitles, the chapters and a copy of the finished video, and goes in DIR's place last.
+class SlideFolder {
+  public:
+    explicit SlideFolder(const VideoJob& job) {
+        const ChapterOutput& out = job.output.chapter_output;
+        if (out.slides.empty()) return;
+        if (job.output.chapters.empty())
+            throw_option_error("--slides", "this video has no chapters to stop at");
+        folder_.emplace(out.slides, is_slide_file_name, "--slides");
+        const auto fps = static_cast<double>(job.fps);
+        for (std::size_t i = 0; i < job.output.chapters.size(); ++i) {
+            const std::int64_t still = std::llround(job.output.chapters[i].still * fps);
+            stills_.push_back({std::clamp<std::int64_t>(still, 0, job.frames - 1), i});
+        }
+    }
+
+    /// Video frame k: written as the still of every chapter that ends with it.
+    void offer(std::int64_t k, const Image& image) {
+        while (folder_ && next_ < stills_.size() && stills_[next_].frame <= k) {
+            write(still_name(stills_[next_].chapter), video::png_bytes(image, "--slides still"));
+            ++next_;
+        }
+    }
+
+    /// The page, the subtitles and the chapters (before the video is put in place).
+    void complete(const VideoJob& job) {
+        if (!folder_) return;
+        show::SlidePage page;
+        page.title = job.output.chapter_output.title;
+        page.video = slide_video;
+        page.language = job.output.chapter_output.language;
+        page.cues = job.output.cues;
+        page.chapters = job.output.chapters;
+        page.fps = job.fps;
+        if (!job.output.cues.empty()) {
+            page.subtitles = slide_subtitles;
+            write(slide_subtitles, video::webvtt_text(job.output.cues));
+        }
+        write(slide_chapters, video::webvtt_chapters_text(job.output.chapters));
+        write(slide_page, show::slide_page_html(page));
+    }
+
+    /// Copies the finished video in and puts the folder in place.
+    void commit(const std::filesystem::path& video_path) {
+        if (!folder_) return;
+        std::ifstream in(video_path, std::ios::binary);
+        if (!in)
+            throw_runtime_error("--slides: cannot read the video '" + video_path.string() + "'");
+        const io::File file = folder_->create_file(slide_video);
+        std::vector<char> buffer(1 << 20);
+        while (in) {
+            in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+            const auto got = static_cast<std::size_t>(in.gcount());
+            if (got > 0) file.write_all(buffer.data(), got, slide_video);
+        }
+        if (in.bad())
+            throw_runtime_error("--slides: cannot read the video '" + video_path.string() + "'");
+        folder_->commit();
+    }
+
+  private:
+    struct Still {
+        std::int64_t frame;
+        std::size_t chapter;
+    };
+
+    template <typename Bytes>
+    void write(const std::string& name, const Bytes& bytes) {
+        io::File file = folder_->create_file(name);
+        file.write_all(bytes.data(), bytes.size(), name);
+        file.close(name);
+    }
+
+    std::optional<io::OutputDirectory> folder_;
+    std::vector<Still> stills_;  ///< by frame (chapters are in order)
+    std::size_t next_ = 0;
+};
+
+/// The job's outputs are files of their own, none inside the slide folder.
+void check_distinct(const JobOutput& output) {
+    std::vector<io::NamedOutput> outputs{
+        {"-o", output.path, output.format == video::VideoFormat::png_sequence}};
+    if (!output.subtitles.file.empty())
+        outputs.push_back({"--subtitles-file", output.subtitles.file, false});
+    if (!output.chapter_output.file.empty())
+        outputs.push_back({"--chapters-file", output.chapter_output.file, false});
+    if (!output.chapter_output.slides.empty())
+        outputs.push_back({"--slides", output.chapter_output.slides, true});
+    if (outputs.size() > 1) io::check_distinct_outputs(outputs);
+}
+
 JobResult run_video(const VideoJob& job, const ProgramFactory& make_program,
                     const JobHooks& hooks) {
+    check_distinct(job.output);
     SubtitleSidecar sidecar(job.output);
+    ChapterSidecar chapter_file(job.output);
+    SlideFolder slides(job);
     video::VideoOptions options;
     options.path = job.output.path;
     options.format = job.output.format;
@@ -104,6 +251,8 @@ JobResult run_video(const VideoJob& job, const ProgramFactory& make_program,
         options.subtitles = job.output.cues;
         options.subtitle_language = job.output.subtitles.language;
     }
+    if (job.output.chapter_output.embed && job.output.format == video::VideoFormat::mp4)
+        options.chapters = job.output.chapters;
     video::VideoWriter writer(options);  // validates, checks the path, creates the temporary
     std::unique_ptr<render::PreviewWindow> preview = open_preview_if_asked(job, hooks);
     const std::unique_ptr<FrameProgram> program =
@@ -120,6 +269,7 @@ JobResult run_video(const VideoJob& job, const ProgramFactory& make_program,
         // Closing the window stops the preview only: the video is encoded to the end.
         if (preview && !preview->show(image)) preview.reset();
         dump.write(image);
+        slides.offer(k, image);
         writer.write(std::move(image));
         result.frames += 1;
         frame_done(hooks, time);
@@ -128,9 +278,13 @@ JobResult run_video(const VideoJob& job, const ProgramFactory& make_program,
     program->finish();
     writer.complete();
     sidecar.write(job.output.cues);
+    chapter_file.write(job.output.chapters);
+    slides.complete(job);
     if (hooks.before_commit) hooks.before_commit();
     writer.commit();
     sidecar.commit();
+    chapter_file.commit();
+    slides.commit(job.output.path);
     dump.finish();
     result.notices = writer.notices();
     result.output_width = writer.output_width();

@@ -17,6 +17,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "collide/cue.hpp"
@@ -59,6 +60,18 @@ struct SubtitleOutput {
     std::filesystem::path file;    ///< a WebVTT (.vtt) or SubRip (.srt) file too; empty: none
 };
 
+/// A video's chapters as outputs (--chapters, --chapters-file, --slides, checked).
+struct ChapterOutput {
+    bool embed = false;            ///< an MP4 carries chapters (other formats have none)
+    std::filesystem::path file;    ///< a WebVTT chapters file too; empty: none
+    std::filesystem::path slides;  ///< the slide player's folder (MP4 only); empty: none
+    std::string language = "und";  ///< the slide page's subtitle language (--lang as given)
+    std::string title;             ///< the slide page's title (the lesson's)
+};
+
+/// The files of a slide folder, by name: the names a folder written by --slides holds.
+[[nodiscard]] bool is_slide_file_name(std::string_view name);
+
 /// Where the job's output goes and as what.
 struct JobOutput {
     std::filesystem::path path;
@@ -68,6 +81,10 @@ struct JobOutput {
     /// `subtitles` says; the sidecar file is all or nothing with the video.
     Cues cues;
     SubtitleOutput subtitles;
+    /// Videos: the chapters (collide_show makes them), written as `chapter_output` says; the
+    /// chapters file and the slide folder are put in place with the video.
+    Chapters chapters;
+    ChapterOutput chapter_output;
 };
 
 /// One run: the output, the frame geometry and how many frames.

@@ -6,6 +6,7 @@
 
 #include "cli_numbers.hpp"
 #include "collide/error.hpp"
+#include "collide/io/file.hpp"
 #include "collide/video/subtitles.hpp"
 #include "font_search.hpp"
 #include "render_plan.hpp"
@@ -66,6 +67,21 @@ void add_video_options(CLI::App& cmd, VideoCli& v, const VideoOptionSet& set) {
         v.subtitles_file_opt = cmd.add_option(
             "--subtitles-file", v.subtitles_file,
             "Also write the subtitles beside the video: F.vtt (WebVTT) or F.srt (SubRip)");
+        v.chapters_opt = cmd.add_option(
+            "--chapters", v.chapters,
+            "embed (default: an MP4 carries chapters at the title card, each caption, the replay "
+            "and the epilogue) or none");
+        v.chapters_file_opt = cmd.add_option("--chapters-file", v.chapters_file,
+                                             "Also write the chapters beside the video: F.vtt")
+                                  ->type_name("F.vtt");
+        v.slides_opt =
+            cmd.add_option(
+                   "--slides", v.slides,
+                   "Also write a slide player: DIR/index.html plays the video and stops at each "
+                   "chapter's end (right arrow, space: go on; left: back; F: full screen), with a "
+                   "PNG "
+                   "per chapter; works offline. DIR must be new, empty or an earlier slide folder")
+                ->type_name("DIR");
     }
     cmd.add_flag("--verbose", v.verbose, "Show the encoder's own log");
     cmd.add_option("--font", v.font, font_option_help)->type_name("FILE");
@@ -88,6 +104,61 @@ SubtitleOutput subtitle_output_of(const VideoCli& v, const OutputChoice& output)
                            "F.vtt beside a GIF or PNG frames)");
     }
     out.embed = mp4 && v.subtitles == "embed";
+    return out;
+}
+
+namespace {
+
+/// An existing slide folder is replaced as a whole: only one that holds nothing but the files a
+/// slide folder has (an earlier one), so nothing the user did not name is ever deleted.
+void refuse_foreign_files(const std::filesystem::path& folder) {
+    std::error_code error;
+    if (!std::filesystem::is_directory(folder, error)) return;  // new, or io's checks say why
+    for (std::filesystem::directory_iterator it(folder, error), end; !error && it != end;
+         it.increment(error)) {
+        const std::string name = it->path().filename().string();
+        if (is_slide_file_name(name) && it->is_regular_file(error)) continue;
+        throw_option_error("--slides",
+                           fmt::format("'{}' holds '{}', which is not part of a slide folder; the "
+                                       "folder is replaced as a whole, so give a new or empty one "
+                                       "(or remove it first)",
+                                       folder.string(), name));
+    }
+}
+
+}  // namespace
+
+ChapterOutput chapter_output_of(const VideoCli& v, const OutputChoice& output, std::string title) {
+    ChapterOutput out;
+    if (v.chapters != "embed" && v.chapters != "none")
+        throw_option_error("--chapters", v.chapters, "embed or none");
+    const bool mp4 = !output.still && output.format == video::VideoFormat::mp4;
+    if (given(v.chapters_opt) && v.chapters == "embed" && !mp4) {
+        throw_option_error("--chapters",
+                           "embed: only an MP4 carries chapters (use --chapters-file F.vtt "
+                           "beside a GIF or PNG frames)");
+    }
+    out.embed = mp4 && v.chapters == "embed";
+    if (given(v.chapters_file_opt)) {
+        if (output.still) throw_option_error("--chapters-file", "a still (PNG) has no chapters");
+        out.file = v.chapters_file;
+        if (video::subtitle_format_of(out.file, "--chapters-file") != video::SubtitleFormat::webvtt)
+            throw_option_error("--chapters-file", v.chapters_file, "a WebVTT file name (.vtt)");
+    }
+    if (given(v.slides_opt)) {
+        if (!mp4) {
+            throw_option_error("--slides",
+                               output.still ? "a still (PNG) has no chapters to step through"
+                                            : "the slide player plays an MP4; write one (-o "
+                                              "F.mp4, the default) instead of a GIF or PNG frames");
+        }
+        if (v.slides.empty()) throw_option_error("--slides", "expected a folder name");
+        out.slides = v.slides;
+        refuse_foreign_files(out.slides);
+        io::check_output_directory(out.slides, is_slide_file_name, "--slides");
+    }
+    out.language = v.lang;
+    out.title = std::move(title);
     return out;
 }
 

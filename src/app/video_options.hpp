@@ -31,6 +31,9 @@ struct VideoCli {
     std::string subtitles = "embed";  ///< --subtitles embed|none
     std::string lang = "und";         ///< --lang: the subtitles' language
     std::string subtitles_file;       ///< --subtitles-file F.vtt|F.srt
+    std::string chapters = "embed";   ///< --chapters embed|none
+    std::string chapters_file;        ///< --chapters-file F.vtt
+    std::string slides;               ///< --slides DIR
 
     CLI::Option* output_opt = nullptr;
     CLI::Option* format_opt = nullptr;
@@ -43,6 +46,9 @@ struct VideoCli {
     CLI::Option* theme_opt = nullptr;
     CLI::Option* subtitles_opt = nullptr;
     CLI::Option* subtitles_file_opt = nullptr;
+    CLI::Option* chapters_opt = nullptr;
+    CLI::Option* chapters_file_opt = nullptr;
+    CLI::Option* slides_opt = nullptr;
 };
 
 /// What differs between the commands: which options they take and how their help reads.
@@ -54,7 +60,8 @@ struct VideoOptionSet {
     bool preview = false;         ///< --preview
     bool theme = true;            ///< --theme
     std::string_view theme_help;  ///< --theme's default, in words
-    bool subtitles = false;       ///< --subtitles, --lang, --subtitles-file (videos only)
+    /// --subtitles, --lang, --subtitles-file, --chapters, --chapters-file, --slides (videos only)
+    bool subtitles = false;
 };
 
 /// True when the user gave `option` on the command line.
@@ -67,5 +74,12 @@ void add_video_options(CLI::App& cmd, VideoCli& v, const VideoOptionSet& set);
 /// for an MP4 (other formats have no subtitle track: asking for one there is refused, as is a
 /// sidecar for a still). Throws Error(input) naming the option.
 [[nodiscard]] SubtitleOutput subtitle_output_of(const VideoCli& v, const OutputChoice& output);
+
+/// --chapters, --chapters-file and --slides checked against the output: chapters go into an MP4
+/// by default; --chapters embed needs an MP4, a chapters file a video and a .vtt name, the slide
+/// folder an MP4 and a DIR that is new, empty or an earlier slide folder (checked here, before
+/// anything is drawn). `title`: the slide page's title. Throws Error(input) naming the option.
+[[nodiscard]] ChapterOutput chapter_output_of(const VideoCli& v, const OutputChoice& output,
+                                              std::string title);
 
 }  // namespace collide::app

@@ -14,9 +14,13 @@ const std::string& LessonPlan::caption_at(double video_seconds) const noexcept {
     return *current;
 }
 
+double LessonPlan::intro_fade_seconds() const noexcept {
+    return intro_seconds > 0.0 ? std::min(0.5, 0.5 * intro_seconds) : 0.0;
+}
+
 float LessonPlan::intro_opacity(double video_seconds) const noexcept {
     if (!(intro_seconds > 0.0) || video_seconds >= intro_seconds) return 0.0F;
-    const double fade = std::min(0.5, 0.5 * intro_seconds);
+    const double fade = intro_fade_seconds();
     return static_cast<float>(std::clamp((intro_seconds - video_seconds) / fade, 0.0, 1.0));
 }
 

@@ -203,6 +203,7 @@ class Mp4Sink final : public FrameSink {
             stream_->codecpar->codec_tag = MKTAG('h', 'v', 'c', '1');  // what Apple players want
         }
         if (!options_.subtitles.empty()) add_subtitle_stream();
+        add_chapters();
         check_av(avio_open(&format_->pb, temporary_.c_str(), AVIO_FLAG_WRITE),
                  "cannot open '" + shown() + "' for writing");
         AVDictionary* muxer_options = nullptr;
@@ -243,6 +244,30 @@ class Mp4Sink final : public FrameSink {
         check_av(avcodec_parameters_from_context(text_stream_->codecpar, text_codec_.get()),
                  "cannot copy subtitle encoder parameters");
         av_dict_set(&text_stream_->metadata, "language", options_.subtitle_language.c_str(), 0);
+    }
+
+    /// The chapters, in milliseconds, on the format context before the header is written (the
+    /// mov muxer reads them there). libavformat has no public function that adds one
+    /// (avpriv_new_chapter is internal), so they are made the way avformat_free_context frees
+    /// them: the array and each AVChapter from av_malloc, the title in the chapter's metadata,
+    /// nb_chapters counting the complete ones (the context frees those and the array).
+    void add_chapters() {
+        if (options_.chapters.empty()) return;
+        AVFormatContext& format = *format_;
+        format.chapters = static_cast<AVChapter**>(
+            check_alloc(av_calloc(options_.chapters.size(), sizeof(AVChapter*)), "chapters"));
+        format.nb_chapters = 0;
+        for (const Chapter& source : options_.chapters) {
+            auto* chapter =
+                static_cast<AVChapter*>(check_alloc(av_mallocz(sizeof(AVChapter)), "AVChapter"));
+            chapter->id = static_cast<std::int64_t>(format.nb_chapters) + 1;
+            chapter->time_base = AVRational{1, 1000};
+            chapter->start = milliseconds(source.start);
+            chapter->end = milliseconds(source.end);
+            format.chapters[format.nb_chapters++] = chapter;  // owned by the context from here
+            check_av(av_dict_set(&chapter->metadata, "title", source.title.c_str(), 0),
+                     "cannot set a chapter's title");
+        }
     }
 
     /// Every cue, encoded and handed to the interleaving muxer (which puts them among the

@@ -78,6 +78,25 @@ void validate_cues(const Cues& cues) {
     }
 }
 
+/// Chapters in order, each non-empty, with a title, and none starting before the previous end.
+void validate_chapters(const Chapters& chapters) {
+    double previous_end = 0.0;
+    for (std::size_t i = 0; i < chapters.size(); ++i) {
+        const Chapter& chapter = chapters[i];
+        const std::string field = "video.chapters[" + std::to_string(i) + "]";
+        if (!(chapter.start >= previous_end) || !(chapter.end > chapter.start) ||
+            !std::isfinite(chapter.end)) {
+            throw_scene_error("", 0, field,
+                              "must start at or after the previous chapter's end and end after "
+                              "it starts, got " +
+                                  std::to_string(chapter.start) + ".." +
+                                  std::to_string(chapter.end) + " s");
+        }
+        if (chapter.title.empty()) throw_scene_error("", 0, field + ".title", "is empty");
+        previous_end = chapter.end;
+    }
+}
+
 }  // namespace
 
 void VideoOptions::validate() const {
@@ -91,6 +110,7 @@ void VideoOptions::validate() const {
     }
     validate_preset(*this);
     validate_cues(subtitles);
+    validate_chapters(chapters);
     if (video::subtitle_language(subtitle_language, "video.subtitle_language") !=
         subtitle_language) {
         throw_scene_error(

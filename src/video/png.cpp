@@ -77,6 +77,10 @@ std::unique_ptr<FrameSink> make_png_sequence_sink(const std::string& stem,
 
 }  // namespace detail
 
+std::vector<unsigned char> png_bytes(const Image& image, const std::filesystem::path& shown_as) {
+    return detail::encode_png(image, shown_as);
+}
+
 void write_png(const Image& image, const std::filesystem::path& path) {
     write_png_uncommitted(image, path).commit();
 }

@@ -100,6 +100,14 @@ std::string srt_text(const Cues& cues) {
     return out;
 }
 
+std::string webvtt_chapters_text(const Chapters& chapters) {
+    Cues cues;
+    cues.reserve(chapters.size());
+    for (const Chapter& chapter : chapters)
+        cues.push_back({chapter.start, chapter.end, chapter.title});
+    return webvtt_text(cues);
+}
+
 std::string subtitle_file_text(const Cues& cues, SubtitleFormat format) {
     return format == SubtitleFormat::webvtt ? webvtt_text(cues) : srt_text(cues);
 }

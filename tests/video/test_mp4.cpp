@@ -221,3 +221,45 @@ TEST_CASE("AV1 MP4 round trip when libsvtav1 is available") {
     }
     CHECK(dir.entries() == std::vector<std::string>{"clip.mp4"});
 }
+
+TEST_CASE("chapters: the MP4 lists them back with their titles and times, the video unchanged") {
+    ScratchDirectory dir;
+    VideoOptions options = mp4_options(dir / "chapters.mp4", 64, 48, 10);
+    options.chapters = {
+        {0.0, 0.4, "Zderzenia: Δt ≈ 0.01 s"}, {0.4, 0.9, "Kule"}, {0.9, 1.2, "End"}};
+    encode_pattern(options, 12);
+
+    AVFormatContext* format = nullptr;
+    REQUIRE(avformat_open_input(&format, options.path.c_str(), nullptr, nullptr) >= 0);
+    std::unique_ptr<AVFormatContext*, void (*)(AVFormatContext**)> owner(&format,
+                                                                         avformat_close_input);
+    REQUIRE(avformat_find_stream_info(format, nullptr) >= 0);
+    REQUIRE(format->nb_chapters == 3);
+    for (unsigned int i = 0; i < format->nb_chapters; ++i) {
+        CAPTURE(i);
+        const AVChapter* chapter = format->chapters[i];
+        const AVDictionaryEntry* title = av_dict_get(chapter->metadata, "title", nullptr, 0);
+        REQUIRE(title != nullptr);
+        CHECK(std::string(title->value) == options.chapters[i].title);
+        CHECK(static_cast<double>(chapter->start) * av_q2d(chapter->time_base) ==
+              doctest::Approx(options.chapters[i].start).epsilon(0.002));
+        CHECK(static_cast<double>(chapter->end) * av_q2d(chapter->time_base) ==
+              doctest::Approx(options.chapters[i].end).epsilon(0.002));
+    }
+    const Decoded decoded = decode_file(options.path);
+    CHECK(decoded.frames.size() == 12);
+}
+
+TEST_CASE("chapters: out of order, empty or untitled ones are refused, naming the field") {
+    ScratchDirectory dir;
+    VideoOptions options = mp4_options(dir / "bad.mp4", 64, 48, 10);
+    options.chapters = {{0.0, 1.0, "a"}, {0.5, 2.0, "b"}};
+    CHECK_THROWS_WITH_AS(options.validate(), doctest::Contains("video.chapters[1]"),
+                         collide::Error);
+    options.chapters = {{0.0, 0.0, "a"}};
+    CHECK_THROWS_WITH_AS(options.validate(), doctest::Contains("video.chapters[0]"),
+                         collide::Error);
+    options.chapters = {{0.0, 1.0, ""}};
+    CHECK_THROWS_WITH_AS(options.validate(), doctest::Contains("video.chapters[0].title"),
+                         collide::Error);
+}

@@ -50,5 +50,13 @@ TEST_CASE("SubRip: numbered blocks, comma before the milliseconds, empty cues le
           "\n2\n00:00:03,000 --> 00:00:04,000\na -> b\nline 2\n");
 }
 
+TEST_CASE("WebVTT chapters: one cue per chapter, its title as the text") {
+    const Chapters chapters = {{0.0, 2.0, "Title <card>"}, {2.0, 61.5, "Kule się zderzają"}};
+    CHECK(webvtt_chapters_text(chapters) ==
+          "WEBVTT\n"
+          "\n00:00:00.000 --> 00:00:02.000\nTitle &lt;card&gt;\n"
+          "\n00:00:02.000 --> 00:01:01.500\nKule się zderzają\n");
+}
+
 }  // namespace
 }  // namespace collide::video

@@ -145,7 +145,10 @@ struct LessonPlan {
 
     /// The caption at `video_seconds`: the last cue at or before it, else `caption`.
     [[nodiscard]] const std::string& caption_at(double video_seconds) const noexcept;
-    /// Opacity of the intro card at `video_seconds` (1, fading to 0 over its last half second).
+    /// Seconds at the intro card's end over which it fades out (half a second, less on a short
+    /// card; 0 without one).
+    [[nodiscard]] double intro_fade_seconds() const noexcept;
+    /// Opacity of the intro card at `video_seconds` (1, fading to 0 over intro_fade_seconds).
     [[nodiscard]] float intro_opacity(double video_seconds) const noexcept;
 };
 

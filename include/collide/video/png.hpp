@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <filesystem>
+#include <vector>
 
 #include "collide/image.hpp"
 #include "collide/io/file.hpp"
@@ -28,6 +29,12 @@ void write_png(const Image& image, const std::filesystem::path& path);
 /// dropped: the program is about to exit by its signal.
 [[nodiscard]] io::OutputFile write_png_uncommitted(Image&& image, const std::filesystem::path& path,
                                                    const std::atomic<bool>& cancel);
+
+/// `image` as the bytes of an RGBA PNG file (for a caller that writes them where it chooses, e.g.
+/// into an io::OutputDirectory). `shown_as` names it in the error. Throws Error(runtime) if the
+/// image cannot be encoded.
+[[nodiscard]] std::vector<unsigned char> png_bytes(const Image& image,
+                                                   const std::filesystem::path& shown_as);
 
 /// Reads a PNG (any bit depth / channel count stb understands) as RGBA8, rows top-down.
 /// Throws Error(input) naming the path if it cannot be opened or decoded.

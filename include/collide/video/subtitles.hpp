@@ -31,6 +31,9 @@ enum class SubtitleFormat { webvtt, srt };
 [[nodiscard]] std::string webvtt_text(const Cues& cues);
 /// The cues as a SubRip file (numbered blocks, "HH:MM:SS,mmm --> HH:MM:SS,mmm", CRLF-free UTF-8).
 [[nodiscard]] std::string srt_text(const Cues& cues);
+/// Chapters as a WebVTT chapters file (what a <track kind="chapters"> reads): one cue per
+/// chapter, its title as the text, in the same form as webvtt_text.
+[[nodiscard]] std::string webvtt_chapters_text(const Chapters& chapters);
 /// One of the two, by `format`.
 [[nodiscard]] std::string subtitle_file_text(const Cues& cues, SubtitleFormat format);
 

@@ -80,6 +80,10 @@ struct VideoOptions {
     Cues subtitles;
     /// The track's language tag, ISO 639-2/T ("eng", "pol"; subtitle_language() makes one).
     std::string subtitle_language = "und";
+    /// MP4 only: chapters (what players list for navigation; FFmpeg's mov muxer writes them as a
+    /// chapter text track and a Nero 'chpl' box), in order, back to back, within the video;
+    /// empty = none. Ignored for GIF and PNG.
+    Chapters chapters;
     /// Cancellation hook: when it points to a flag that becomes true (the app's SIGINT/SIGTERM
     /// handler sets it), `write`/`finish` throw Error(runtime, "interrupted") and the temporary
     /// output is deleted. Must outlive the writer. Lock-free, so a signal handler may set it.

@@ -1,0 +1,30 @@
+#pragma once
+/// \file
+/// A video's chapters: where players let a class jump to and where the slide player stops, with
+/// the titles they list. Made here from the lesson's timeline (a collision video) or from the
+/// step captions (heap and puzzle videos), so the encoder only ever sees titled times.
+
+#include "collide/cue.hpp"
+#include "collide/show/timeline.hpp"
+
+namespace collide::show {
+
+/// A collision video's chapters, one per stretch of the timeline a class would name: the title
+/// card (its title), each caption (the run and the hold that show it are one chapter), the
+/// replay and the epilogue. Back to back from 0 to the video's end, at the segments' frame
+/// times; titles are one line (a caption's line breaks become spaces). Each chapter's still is
+/// its last frame; the card's is its last frame before the fade-out of `card_fade` seconds at
+/// its end (LessonPlan::intro_fade_seconds). Empty for an empty timeline.
+[[nodiscard]] Chapters timeline_chapters(const Timeline& timeline, double card_fade = 0.0);
+
+/// Chapters from subtitle cues (heap and puzzle videos: one per step caption): each starts
+/// where its cue starts (the first at 0) and ends where the next begins, the last at
+/// `video_seconds`; the title is the cue's text on one line (a panel per line becomes
+/// "line / line"); the still is its last frame at `fps`. Empty when there are no cues.
+[[nodiscard]] Chapters chapters_from_cues(const Cues& cues, double video_seconds, int fps);
+
+/// `text` as one line: line breaks become `separator`, runs of spaces one space, no spaces at
+/// either end.
+[[nodiscard]] std::string one_line(const std::string& text, std::string_view separator = " ");
+
+}  // namespace collide::show

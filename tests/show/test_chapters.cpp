@@ -1,0 +1,138 @@
+// Chapters (collide/show/chapters.hpp) from the lesson timeline and from step cues, and the slide
+// player's page (collide/show/slide_player.hpp).
+#include <doctest/doctest.h>
+
+#include <string>
+#include <vector>
+
+#include "collide/show/chapters.hpp"
+#include "collide/show/slide_player.hpp"
+#include "collide/show/timeline.hpp"
+
+using namespace collide;
+using namespace collide::show;
+
+namespace {
+
+/// 10 s at 10 fps: a 2 s card, "Always", a held caption at 4 s, another at 7 s, a 2 s epilogue.
+TimelineScript lesson_script() {
+    TimelineScript script;
+    script.fps = 10;
+    script.frames = 100;
+    script.card_seconds = 2.0;
+    script.card_title = "Gas in a box";
+    script.caption = "Always";
+    script.cues = {{4.0, "Hold\nhere", 1.5}, {7.0, "Later", 0.0}};
+    script.epilogue_seconds = 2.0;
+    script.epilogue_caption = "In the end";
+    return script;
+}
+
+Segment segment(SegmentKind kind, std::int64_t first, std::int64_t end, std::string caption) {
+    Segment s;
+    s.kind = kind;
+    s.first_frame = first;
+    s.end_frame = end;
+    s.start = static_cast<double>(first) / 10.0;
+    s.end = static_cast<double>(end) / 10.0;
+    s.moves = kind == SegmentKind::run;
+    s.caption = std::move(caption);
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("chapters: the card, each caption (its hold and run together), the epilogue") {
+    const Chapters chapters = timeline_chapters(build_timeline(lesson_script()), 0.5);
+    REQUIRE(chapters.size() == 5);
+    const std::vector<std::string> titles{"Gas in a box", "Always", "Hold here", "Later",
+                                          "In the end"};
+    const std::vector<double> starts{0.0, 2.0, 4.0, 7.0, 8.0};
+    const std::vector<double> ends{2.0, 4.0, 7.0, 8.0, 10.0};
+    // The last frame of each, the card's before its last half second fades it out.
+    const std::vector<double> stills{1.5, 3.9, 6.9, 7.9, 9.9};
+    for (std::size_t i = 0; i < chapters.size(); ++i) {
+        CAPTURE(i);
+        CHECK(chapters[i].title == titles[i]);
+        CHECK(chapters[i].start == doctest::Approx(starts[i]));
+        CHECK(chapters[i].end == doctest::Approx(ends[i]));
+        CHECK(chapters[i].still == doctest::Approx(stills[i]));
+    }
+    CHECK(timeline_chapters(build_timeline(lesson_script())).front().still == doctest::Approx(1.9));
+    CHECK(timeline_chapters(Timeline{}).empty());
+}
+
+TEST_CASE("chapters: a replay is one chapter of its own and missing words get the part's name") {
+    Timeline timeline;
+    timeline.fps = 10;
+    timeline.segments = {segment(SegmentKind::card, 0, 10, ""),
+                         segment(SegmentKind::run, 10, 30, ""),
+                         segment(SegmentKind::replay, 30, 40, "a missed collision"),
+                         segment(SegmentKind::replay, 40, 45, "slowly"),
+                         segment(SegmentKind::run, 45, 50, ""),
+                         segment(SegmentKind::epilogue, 50, 60, "")};
+    const Chapters chapters = timeline_chapters(timeline);
+    REQUIRE(chapters.size() == 5);
+    CHECK(chapters[0].title == "Title");
+    CHECK(chapters[1].title == "The simulation runs");
+    CHECK(chapters[2].title == "Replay: a missed collision");
+    CHECK(chapters[2].start == doctest::Approx(3.0));
+    CHECK(chapters[2].end == doctest::Approx(4.5));
+    CHECK(chapters[3].title == "The simulation runs");
+    CHECK(chapters[4].title == "The final figures");
+    CHECK(chapters[4].end == doctest::Approx(6.0));
+}
+
+TEST_CASE("chapters from step cues: back to back from 0, one line each, repeats merged") {
+    const Cues cues = {{0.5, 1.0, "insert P"},
+                       {1.0, 2.0, "binary heap: swim\nd-ary heap: swim"},
+                       {2.0, 3.0, "binary heap: swim\nd-ary heap: swim"},
+                       {3.5, 4.0, "delete the maximum"},
+                       {9.0, 9.5, "past the end"}};
+    const Chapters chapters = chapters_from_cues(cues, 5.0, 10);
+    REQUIRE(chapters.size() == 3);
+    CHECK(chapters[0].start == 0.0);
+    CHECK(chapters[0].end == 1.0);
+    CHECK(chapters[1].title == "binary heap: swim / d-ary heap: swim");
+    CHECK(chapters[1].end == 3.5);
+    CHECK(chapters[2].title == "delete the maximum");
+    CHECK(chapters[2].end == 5.0);
+    CHECK(chapters[0].still == doctest::Approx(0.9));
+    CHECK(chapters[2].still == doctest::Approx(4.9));
+    CHECK(chapters_from_cues({}, 5.0, 10).empty());
+}
+
+TEST_CASE("one_line: line breaks become the separator, spaces collapse, ends trimmed") {
+    CHECK(one_line("  a  b \n\n c\r\n") == "a b c");
+    CHECK(one_line("x\ny", " / ") == "x / y");
+    CHECK(one_line("") == "");
+}
+
+TEST_CASE("the slide page: the video, the track, the chapters as data, nothing fetched") {
+    SlidePage page;
+    page.title = "Zderzenia </title> & \"more\"";
+    page.video = "video.mp4";
+    page.subtitles = "subtitles.vtt";
+    page.language = "pl";
+    page.cues = {{0.0, 1.0, "Δt ≈ 0.01 </script>"}};
+    page.chapters = {{0.0, 1.0, "Tytuł", 0.5}, {1.0, 2.5, "He said \"go\"\\ @CUES@", 2.4}};
+    page.fps = 15;
+    const std::string html = slide_page_html(page);
+    CHECK(html.find("<title>Zderzenia &lt;/title&gt; &amp; &quot;more&quot;</title>") !=
+          std::string::npos);
+    CHECK(html.find("<video id=\"video\" src=\"video.mp4\"") != std::string::npos);
+    CHECK(html.find("<track kind=\"subtitles\" src=\"subtitles.vtt\" srclang=\"pl\"") !=
+          std::string::npos);
+    CHECK(html.find("{start: 1, end: 2.5, still: 2.4, text: \"He said \\\"go\\\"\\\\ @CUES@\"}") !=
+          std::string::npos);
+    CHECK(html.find("Δt ≈ 0.01 \\u003c/script\\u003e") != std::string::npos);
+    CHECK(html.find("const frame = 1 / 15;") != std::string::npos);
+    // One closing script tag (the page's own): no text can end the script early.
+    CHECK(html.find("</script>") == html.rfind("</script>"));
+    // Self-contained: nothing from the network.
+    CHECK(html.find("http") == std::string::npos);
+    CHECK(html.find("<link") == std::string::npos);
+    CHECK(html.find("<script src") == std::string::npos);
+    page.subtitles.clear();
+    CHECK(slide_page_html(page).find("<track kind") == std::string::npos);
+}
