@@ -1,3 +1,7 @@
+// The video options' registration: no GL and no encoder, so that `collide` (which draws nothing)
+// links it too (collide_app_options); what checks them against the encoder is elsewhere
+// (subtitle_options.cpp).
+
 #include "video_options.hpp"
 
 #include <fmt/core.h>
@@ -5,10 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli_numbers.hpp"
-#include "collide/error.hpp"
-#include "collide/video/subtitles.hpp"
 #include "font_search.hpp"
-#include "render_plan.hpp"
 
 namespace collide::app {
 
@@ -69,26 +70,6 @@ void add_video_options(CLI::App& cmd, VideoCli& v, const VideoOptionSet& set) {
     }
     cmd.add_flag("--verbose", v.verbose, "Show the encoder's own log");
     cmd.add_option("--font", v.font, font_option_help)->type_name("FILE");
-}
-
-SubtitleOutput subtitle_output_of(const VideoCli& v, const OutputChoice& output) {
-    SubtitleOutput out;
-    if (v.subtitles != "embed" && v.subtitles != "none")
-        throw_option_error("--subtitles", v.subtitles, "embed or none");
-    out.language = video::subtitle_language(v.lang, "--lang");
-    if (given(v.subtitles_file_opt)) {
-        if (output.still) throw_option_error("--subtitles-file", "a still (PNG) has no subtitles");
-        out.file = v.subtitles_file;
-        (void)video::subtitle_format_of(out.file, "--subtitles-file");
-    }
-    const bool mp4 = !output.still && output.format == video::VideoFormat::mp4;
-    if (given(v.subtitles_opt) && v.subtitles == "embed" && !mp4) {
-        throw_option_error("--subtitles",
-                           "embed: only an MP4 carries a subtitle track (use --subtitles-file "
-                           "F.vtt beside a GIF or PNG frames)");
-    }
-    out.embed = mp4 && v.subtitles == "embed";
-    return out;
 }
 
 }  // namespace collide::app
