@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "collide/render/renderer.hpp"
+#include "collide/show/plot_words.hpp"
 
 namespace {
 
@@ -81,6 +82,13 @@ struct Scenario {
             std::vector<DriftPoint> series;
             for (int i = 0; i < 200; ++i) series.push_back({0.01 * i, 1e-4 * i * p});
             frame.energy_drift.push_back(series);
+        }
+        // The plots' words and the costs' values as the presentation layer writes them.
+        frame.speed_plot = show::speed_plot_words(config(overlays).speed_max);
+        frame.drift_plot = show::drift_plot_words(frame.energy_drift);
+        for (PanelContent& panel : frame.panels) {
+            panel.cost_text = show::cost_text(panel.cost);
+            panel.cost_words = show::cost_in_words(panel.cost);
         }
     }
 

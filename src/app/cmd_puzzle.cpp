@@ -1,7 +1,9 @@
 /// `collide puzzle`: breadth-first search against A* on the sliding puzzle (the second lecture's
 /// application of priority queues), as text (`--solve`), JSON (`--json`) or a side-by-side video.
 /// The board and every option are validated, and both searches run (within their node budget),
-/// before anything is printed or drawn; the searches live in collide_sim (sim/puzzle/).
+/// before anything is printed or drawn; the searches live in collide_sim (sim/puzzle/). Compiled
+/// into both programs: `collide` answers --solve and --json itself, and hands a video to
+/// collide-draw (PuzzleVideoMaker, puzzle_options.hpp).
 
 #include <fmt/core.h>
 
@@ -10,6 +12,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli_numbers.hpp"
@@ -20,7 +23,7 @@
 #include "collide/sim/puzzle/search.hpp"
 #include "commands.hpp"
 #include "json_output.hpp"
-#include "puzzle_video.hpp"
+#include "puzzle_options.hpp"
 
 namespace collide::app {
 
@@ -185,7 +188,7 @@ void print_json(const Board& start, const std::vector<SearchResult>& results) {
     std::fputs(json_text(document).c_str(), stdout);
 }
 
-void run(const PuzzleCli& v) {
+void run(const PuzzleCli& v, const PuzzleVideoMaker& video) {
     if (v.method != "both" && v.method != "bfs" && v.method != "astar")
         throw_input_error("--method: expected both, bfs or astar, got '" + v.method + "'");
     const Board start = start_board(v);
@@ -195,7 +198,7 @@ void run(const PuzzleCli& v) {
     if (v.json || v.solve) {
         refuse_video_options(v.video, v.json ? "--json" : "--solve");
     } else {
-        validate_puzzle_video(v.video);
+        video.check(v.video);
     }
     const std::vector<SearchResult> results = run_searches(start, settings, v);
     if (v.json) {
@@ -203,13 +206,13 @@ void run(const PuzzleCli& v) {
     } else if (v.solve) {
         print_text(start, results);
     } else {
-        render_puzzle_video(start, results, v.video);
+        video.draw(start, results, v.video);
     }
 }
 
 }  // namespace
 
-void add_puzzle_command(CLI::App& root) {
+void add_puzzle_command(CLI::App& root, PuzzleVideoMaker video) {
     auto v = std::make_shared<PuzzleCli>();
     CLI::App* cmd = root.add_subcommand(
         "puzzle",
@@ -246,7 +249,7 @@ void add_puzzle_command(CLI::App& root) {
         "  collide puzzle \"8 1 3 4 0 2 7 6 5\" --heuristic hamming --solve\n"
         "  collide puzzle random --moves 20 --seed 3 --json\n"
         "See docs/puzzle.md.");
-    cmd->callback([v] { run(*v); });
+    cmd->callback([v, video = std::move(video)] { run(*v, video); });
 }
 
 }  // namespace collide::app

@@ -26,6 +26,7 @@
 #include "pipeline.hpp"
 #include "progress.hpp"
 #include "render_plan.hpp"
+#include "subtitle_options.hpp"
 #include "video_options.hpp"
 #include "work_limits.hpp"
 

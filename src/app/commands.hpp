@@ -5,6 +5,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "puzzle_options.hpp"
+
 namespace collide::app {
 
 // Subcommands register here as their issues land, e.g.
@@ -22,8 +24,9 @@ void add_pq_command(CLI::App& root);
 /// `collide heap`: animated priority-queue operations (heaps as trees over their arrays).
 void add_heap_command(CLI::App& root);
 
-/// `collide puzzle`: BFS against A* on the sliding puzzle (text, JSON or a video).
-void add_puzzle_command(CLI::App& root);
+/// `collide puzzle`: BFS against A* on the sliding puzzle (text, JSON or a video); `video` makes
+/// the video (collide-draw: draws it; collide: hands the command line to collide-draw).
+void add_puzzle_command(CLI::App& root, PuzzleVideoMaker video);
 
 /// `collide simulate`: run an engine to a time, print measurements, optionally log collisions.
 void add_simulate_command(CLI::App& root);
@@ -42,7 +45,8 @@ void add_compare_command(CLI::App& root);
 /// The commands that draw (heap, puzzle, render, thumbnail, compare). In `collide-draw`
 /// (draw_commands.cpp) they are registered. In `collide` (draw_forward.cpp), which links no GL
 /// and no encoder, the process becomes collide-draw (execv, same arguments) when argv names one
-/// of them, and they are registered for --help and suggestions otherwise.
+/// of them, and they are registered for --help and suggestions otherwise; `puzzle` is registered
+/// whole, answers --solve and --json itself and becomes collide-draw for a video only.
 void add_drawing_commands(CLI::App& root, int argc, char** argv);
 
 /// Thrown by a command whose answer is its exit status (`compare`: 1 = the images differ), after

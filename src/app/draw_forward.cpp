@@ -1,7 +1,8 @@
 // `collide`'s side of the drawing commands: it links no GL and no encoder, so that commands that
 // draw nothing start fast; a drawing command becomes `collide-draw` (execv: the same process,
 // arguments, signals and exit status), found next to this program (the build tree) or in
-// ../libexec/collide (an install).
+// ../libexec/collide (an install). `puzzle` is parsed here whole: --solve and --json print text
+// and run here; only its video becomes collide-draw, once its command line has parsed.
 
 #include <unistd.h>
 
@@ -14,28 +15,13 @@
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <utility>
 
 #include "commands.hpp"
 
 namespace collide::app {
 
 namespace {
-
-struct DrawingCommand {
-    std::string_view name;
-    std::string_view description;
-};
-
-// The descriptions are the commands' own (cmd_*.cpp), for `collide --help`.
-constexpr std::array<DrawingCommand, 5> drawing_commands{{
-    {"heap", "Animate priority-queue operations: heaps as trees over their arrays, step by step"},
-    {"puzzle", "Breadth-first search against A* on the 8-puzzle (n x n up to 4x4), side by side"},
-    {"render", "Render a teaching video: time-driven (left) and event-driven (right) side by side"},
-    {"thumbnail", "Render one frame as a PNG (fast, no video): for READMEs and CI"},
-    {"compare",
-     "Compare two PNG images: exit 0 if they match, 1 if not (writing a difference image), 2 on "
-     "bad input"},
-}};
 
 /// The subcommand argv names: its first word that is not an option (the root takes no values).
 std::string_view command_of(int argc, char** argv) {
@@ -53,20 +39,57 @@ std::filesystem::path drawing_program() {
     return exe.parent_path().parent_path() / "libexec" / "collide" / "collide-draw";
 }
 
+/// Becomes collide-draw with the same arguments; returns only by exiting 1 when it cannot.
+[[noreturn]] void run_drawing_program(char** argv, std::string_view command) {
+    const std::filesystem::path program = drawing_program();
+    execv(program.c_str(), argv);
+    std::fprintf(stderr, "collide: error: cannot run %s for `collide %s`: %s\n", program.c_str(),
+                 std::string(command).c_str(), std::strerror(errno));
+    std::exit(1);
+}
+
+/// `collide puzzle`, whole: --solve and --json run here; a video becomes collide-draw once the
+/// command line has parsed, before any search (collide-draw parses it again and draws it).
+void add_puzzle_here(CLI::App& root, char** argv) {
+    PuzzleVideoMaker video;
+    video.check = [argv](const PuzzleVideoCli& /*collide-draw checks them*/) {
+        run_drawing_program(argv, "puzzle");
+    };
+    // No `draw`: `check` never returns.
+    add_puzzle_command(root, std::move(video));
+}
+
+struct DrawingCommand {
+    std::string_view name;
+    std::string_view description;  ///< for `collide --help`
+    /// Registers the whole command here (it execs collide-draw only to draw); null: the command
+    /// execs collide-draw as soon as argv names it.
+    void (*add_here)(CLI::App& root, char** argv) = nullptr;
+};
+
+// The descriptions are the commands' own (cmd_*.cpp), for `collide --help`.
+constexpr std::array<DrawingCommand, 5> drawing_commands{{
+    {"heap", "Animate priority-queue operations: heaps as trees over their arrays, step by step"},
+    {"puzzle", {}, add_puzzle_here},  // registered with its own description (cmd_puzzle.cpp)
+    {"render", "Render a teaching video: time-driven (left) and event-driven (right) side by side"},
+    {"thumbnail", "Render one frame as a PNG (fast, no video): for READMEs and CI"},
+    {"compare",
+     "Compare two PNG images: exit 0 if they match, 1 if not (writing a difference image), 2 on "
+     "bad input"},
+}};
+
 }  // namespace
 
 void add_drawing_commands(CLI::App& root, int argc, char** argv) {
     const std::string_view command = command_of(argc, argv);
     for (const DrawingCommand& c : drawing_commands) {
-        if (command == c.name) {
-            const std::filesystem::path program = drawing_program();
-            execv(program.c_str(), argv);
-            std::fprintf(stderr, "collide: error: cannot run %s for `collide %s`: %s\n",
-                         program.c_str(), std::string(c.name).c_str(), std::strerror(errno));
-            std::exit(1);
-        }
+        if (command == c.name && c.add_here == nullptr) run_drawing_program(argv, c.name);
     }
     for (const DrawingCommand& c : drawing_commands) {
+        if (c.add_here != nullptr) {
+            c.add_here(root, argv);
+            continue;
+        }
         root.add_subcommand(std::string(c.name), std::string(c.description))
             ->prefix_command()
             ->allow_extras();

@@ -9,8 +9,10 @@
 
 #include "collide/cue.hpp"
 #include "collide/image.hpp"
+#include "lesson_options.hpp"
 #include "progress.hpp"
 #include "render_plan.hpp"
+#include "subtitle_options.hpp"
 #include "video_options.hpp"
 
 namespace collide::app {
@@ -21,15 +23,6 @@ struct LessonGeometry {
     int height = 720;
     int fps = 30;
 };
-
-/// The lessons' video options are the one set of video options (video_options.hpp).
-using LessonVideoCli = VideoCli;
-
-/// Registers the video options of a drawn lesson on `cmd` (video_options.hpp); `stem` names the
-/// default outputs (out/STEM.mp4, ...), `size_example` goes into --size's help. Every lesson
-/// takes --theme (default dark).
-void add_lesson_video_options(CLI::App& cmd, LessonVideoCli& v, std::string_view stem,
-                              std::string_view size_example);
 
 /// Where and in which format the lesson goes (resolve_output of what was given).
 [[nodiscard]] OutputChoice lesson_output_of(const LessonVideoCli& v, std::string_view stem);

@@ -14,6 +14,7 @@
 #include "collide/error.hpp"
 #include "collide/show/chapters.hpp"
 #include "collide/show/collision_summary.hpp"
+#include "collide/show/plot_words.hpp"
 #include "collide/show/subtitles.hpp"
 
 namespace collide::app {
@@ -185,6 +186,7 @@ FrameComposer::FrameComposer(const RenderPlan& plan) : plan_(plan) {
     const render::RenderConfig& r = plan.render;
     content_.color_key =
         show::color_key(r.color_mode, r.speed_min, r.speed_max, r.mass_min, r.mass_max);
+    content_.speed_plot = show::speed_plot_words(r.speed_max);
 }
 
 void FrameComposer::advance_step_phase(double state_time) {
@@ -219,6 +221,8 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
         out.compact_line = panel.words.compact_line;
         out.cost_label = panel.words.cost_label;
         out.cost = panel.words.cost;
+        out.cost_text = panel.words.cost_text;
+        out.cost_words = panel.words.cost_words;
         out.how = frame.panels.size() == 2 ? panel.words.how : std::string();
         out.queue_words = panel.queue_words;
         out.accent = render::panel_accent(panel.time_driven, plan_.render.theme);
@@ -266,6 +270,7 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
     content_.energy_plot =
         std::any_of(drifts_.begin(), drifts_.end(),
                     [](const show::EngineDrift& d) { return d.largest > show::round_off_drift; });
+    content_.drift_plot = show::drift_plot_words(content_.energy_drift);
     content_.intro_title = lesson.title;
     content_.intro_text = lesson.description;
     content_.intro_opacity = lesson.intro_opacity(video_time);

@@ -1,28 +1,17 @@
 #pragma once
 /// \file
-/// The video of `collide puzzle`: its options (the same as `collide heap`'s: -o, --format, -q,
-/// --size, --fps, --last-frame, --theme, --progress, --verbose), their validation, and the render
-/// loop from show::PuzzleLesson through PuzzleRenderer into the VideoWriter.
+/// The video of `collide puzzle` (collide-draw only): its options' validation, and the render loop
+/// from show::PuzzleLesson through PuzzleRenderer into the VideoWriter. The options themselves
+/// are registered by puzzle_options.hpp.
 
-#include <CLI/CLI.hpp>
-#include <string>
 #include <vector>
 
 #include "collide/sim/puzzle/board.hpp"
 #include "collide/sim/puzzle/search.hpp"
 #include "lesson_video.hpp"
+#include "puzzle_options.hpp"
 
 namespace collide::app {
-
-/// The puzzle video's options are the drawn lessons' own (lesson_video.hpp).
-using PuzzleVideoCli = LessonVideoCli;
-
-/// Registers the video options on `cmd`.
-void add_puzzle_video_options(CLI::App& cmd, PuzzleVideoCli& v);
-
-/// Throws Error(input) naming the first video option given although `mode` (--solve, --json)
-/// prints text instead.
-void refuse_video_options(const PuzzleVideoCli& v, const std::string& mode);
 
 /// Checks every video option and the destination before any search or drawing. Throws
 /// Error(input) naming the option.
@@ -31,5 +20,8 @@ void validate_puzzle_video(const PuzzleVideoCli& v);
 /// Renders the video (or its last frame) of `results` (one or two solved searches of `start`).
 void render_puzzle_video(const puzzle::Board& start,
                          const std::vector<puzzle::SearchResult>& results, const PuzzleVideoCli& v);
+
+/// The two above, as `collide puzzle` takes them.
+[[nodiscard]] PuzzleVideoMaker drawn_puzzle_video();
 
 }  // namespace collide::app

@@ -15,6 +15,7 @@
 #include "collide/sim/pq/queue_kind.hpp"
 #include "collide/sim/queue_view.hpp"
 #include "font_search.hpp"
+#include "video_options.hpp"
 
 namespace collide::app {
 

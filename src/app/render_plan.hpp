@@ -38,10 +38,7 @@ struct QualityPreset {
     int fps = 30;
 };
 
-/// The highest --fps accepted.
-inline constexpr int max_fps = 240;
-
-/// `fps` if it is 1..max_fps; else throws Error(input) naming `option`.
+/// `fps` if it is 1..max_fps (video_options.hpp); else throws Error(input) naming `option`.
 [[nodiscard]] int checked_fps(int fps, std::string_view option = "--fps");
 
 /// Where the output of `render`, `thumbnail`, `heap` or `puzzle` goes and as what.

@@ -1,3 +1,7 @@
+// The video options' registration: no GL and no encoder, so that `collide` (which draws nothing)
+// links it too (collide_app_options); what checks them against the encoder is elsewhere
+// (subtitle_options.cpp).
+
 #include "video_options.hpp"
 
 #include <fmt/core.h>
@@ -5,11 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli_numbers.hpp"
-#include "collide/error.hpp"
-#include "collide/io/file.hpp"
-#include "collide/video/subtitles.hpp"
 #include "font_search.hpp"
-#include "render_plan.hpp"
 
 namespace collide::app {
 
@@ -85,81 +85,6 @@ void add_video_options(CLI::App& cmd, VideoCli& v, const VideoOptionSet& set) {
     }
     cmd.add_flag("--verbose", v.verbose, "Show the encoder's own log");
     cmd.add_option("--font", v.font, font_option_help)->type_name("FILE");
-}
-
-SubtitleOutput subtitle_output_of(const VideoCli& v, const OutputChoice& output) {
-    SubtitleOutput out;
-    if (v.subtitles != "embed" && v.subtitles != "none")
-        throw_option_error("--subtitles", v.subtitles, "embed or none");
-    out.language = video::subtitle_language(v.lang, "--lang");
-    if (given(v.subtitles_file_opt)) {
-        if (output.still) throw_option_error("--subtitles-file", "a still (PNG) has no subtitles");
-        out.file = v.subtitles_file;
-        (void)video::subtitle_format_of(out.file, "--subtitles-file");
-    }
-    const bool mp4 = !output.still && output.format == video::VideoFormat::mp4;
-    if (given(v.subtitles_opt) && v.subtitles == "embed" && !mp4) {
-        throw_option_error("--subtitles",
-                           "embed: only an MP4 carries a subtitle track (use --subtitles-file "
-                           "F.vtt beside a GIF or PNG frames)");
-    }
-    out.embed = mp4 && v.subtitles == "embed";
-    return out;
-}
-
-namespace {
-
-/// An existing slide folder is replaced as a whole: only one that holds nothing but the files a
-/// slide folder has (an earlier one), so nothing the user did not name is ever deleted.
-void refuse_foreign_files(const std::filesystem::path& folder) {
-    std::error_code error;
-    if (!std::filesystem::is_directory(folder, error)) return;  // new, or io's checks say why
-    for (std::filesystem::directory_iterator it(folder, error), end; !error && it != end;
-         it.increment(error)) {
-        const std::string name = it->path().filename().string();
-        if (is_slide_file_name(name) && it->is_regular_file(error)) continue;
-        throw_option_error("--slides",
-                           fmt::format("'{}' holds '{}', which is not part of a slide folder; the "
-                                       "folder is replaced as a whole, so give a new or empty one "
-                                       "(or remove it first)",
-                                       folder.string(), name));
-    }
-}
-
-}  // namespace
-
-ChapterOutput chapter_output_of(const VideoCli& v, const OutputChoice& output, std::string title) {
-    ChapterOutput out;
-    if (v.chapters != "embed" && v.chapters != "none")
-        throw_option_error("--chapters", v.chapters, "embed or none");
-    const bool mp4 = !output.still && output.format == video::VideoFormat::mp4;
-    if (given(v.chapters_opt) && v.chapters == "embed" && !mp4) {
-        throw_option_error("--chapters",
-                           "embed: only an MP4 carries chapters (use --chapters-file F.vtt "
-                           "beside a GIF or PNG frames)");
-    }
-    out.embed = mp4 && v.chapters == "embed";
-    if (given(v.chapters_file_opt)) {
-        if (output.still) throw_option_error("--chapters-file", "a still (PNG) has no chapters");
-        out.file = v.chapters_file;
-        if (video::subtitle_format_of(out.file, "--chapters-file") != video::SubtitleFormat::webvtt)
-            throw_option_error("--chapters-file", v.chapters_file, "a WebVTT file name (.vtt)");
-    }
-    if (given(v.slides_opt)) {
-        if (!mp4) {
-            throw_option_error("--slides",
-                               output.still ? "a still (PNG) has no chapters to step through"
-                                            : "the slide player plays an MP4; write one (-o "
-                                              "F.mp4, the default) instead of a GIF or PNG frames");
-        }
-        if (v.slides.empty()) throw_option_error("--slides", "expected a folder name");
-        out.slides = v.slides;
-        refuse_foreign_files(out.slides);
-        io::check_output_directory(out.slides, is_slide_file_name, "--slides");
-    }
-    out.language = v.lang;
-    out.title = std::move(title);
-    return out;
 }
 
 }  // namespace collide::app

@@ -3,16 +3,18 @@
 /// The one set of video options of `render`, `thumbnail`, `heap` and `puzzle` (-o, --format, -q,
 /// --size, --fps, --at, --last-frame, --progress, --preview, --verbose, --theme, --font),
 /// registered by one function: a command says which of them it takes and how its help names its
-/// defaults.
+/// defaults. Registration only (collide_app_options: no GL, no encoder, so that `collide` links it
+/// too); subtitle_options.hpp checks the subtitle options against the output.
 
 #include <string>
 #include <string_view>
 
 #include "cli_fwd.hpp"
-#include "render_plan.hpp"
-#include "video_job.hpp"
 
 namespace collide::app {
+
+/// The highest --fps accepted.
+inline constexpr int max_fps = 240;
 
 /// The video options, raw as CLI11 stores them; an option's pointer tells whether it was given.
 struct VideoCli {
@@ -69,17 +71,5 @@ struct VideoOptionSet {
 
 /// Registers the options `set` names on `cmd`, into `v`.
 void add_video_options(CLI::App& cmd, VideoCli& v, const VideoOptionSet& set);
-
-/// --subtitles, --lang and --subtitles-file checked against the output: embedding is the default
-/// for an MP4 (other formats have no subtitle track: asking for one there is refused, as is a
-/// sidecar for a still). Throws Error(input) naming the option.
-[[nodiscard]] SubtitleOutput subtitle_output_of(const VideoCli& v, const OutputChoice& output);
-
-/// --chapters, --chapters-file and --slides checked against the output: chapters go into an MP4
-/// by default; --chapters embed needs an MP4, a chapters file a video and a .vtt name, the slide
-/// folder an MP4 and a DIR that is new, empty or an earlier slide folder (checked here, before
-/// anything is drawn). `title`: the slide page's title. Throws Error(input) naming the option.
-[[nodiscard]] ChapterOutput chapter_output_of(const VideoCli& v, const OutputChoice& output,
-                                              std::string title);
 
 }  // namespace collide::app

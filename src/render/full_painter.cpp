@@ -110,9 +110,9 @@ void FullPainter::finish_frame(const FrameContent& frame) {
     // Each panel's series in its engine's accent, whichever panels the frame has.
     const std::vector<Rgb8> series_colors = accents(frame);
     draw_speed_plot(list_.over, text, font, histogram, snapshots, series_colors, config_.speed_min,
-                    config_.speed_max, plot_colors(config_.theme));
-    draw_drift_plot(list_.over, text, font, drift, frame.energy_drift, series_colors,
-                    plot_colors(config_.theme));
+                    config_.speed_max, frame.speed_plot, plot_colors(config_.theme));
+    draw_drift_plot(list_.over, text, font, drift, frame.energy_drift, frame.drift_plot,
+                    series_colors, plot_colors(config_.theme));
     const float notes_baseline = strip.y1 - m * 0.5F - line + font.ascent();
     const std::string notes = join(frame.notes, "   \xC2\xB7   ");
     font.add_text(text, columns.x0, notes_baseline, notes, counter_color());

@@ -2,7 +2,6 @@
 // legend, a plot) and the title card drawn over the whole frame.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <functional>
 #include <string>
 #include <vector>
@@ -44,19 +43,13 @@ void LessonPainter::add_column(const FrameContent& frame) {
             list_.over.add_rect({track.x0, track.y0, track.x0 + w, track.y1},
                                 with_alpha(panel.accent, 255));
         }
-        const auto count = static_cast<long long>(std::llround(std::min(panel.cost, 9.0e18)));
-        std::string shown = with_separators(count);
         const Font value_font =
             value->pixel_height >= head_font_->pixel_height() ? Font::head : Font::body;
-        if (atlas(value_font).text_width(shown) > value->rect.width()) {
+        if (atlas(value_font).text_width(panel.cost_text) > value->rect.width()) {
             // Too many digits for the column: in words, in the body font.
-            char words[48];
-            const double c = panel.cost;
-            std::snprintf(words, sizeof words, c >= 1e9 ? "%.3g billion" : "%.3g million",
-                          c >= 1e9 ? c / 1e9 : c / 1e6);
-            draw_text(Font::body, *value, words, palette_.title);
+            draw_text(Font::body, *value, panel.cost_words, palette_.title);
         } else {
-            draw_text(value_font, *value, shown, palette_.title);
+            draw_text(value_font, *value, panel.cost_text, palette_.title);
         }
     }
     const std::vector<const TextSlot*> ratio = layout_.slots(TextRole::cost_ratio);
@@ -103,11 +96,11 @@ void LessonPainter::add_column(const FrameContent& frame) {
             axis_colors = [this](double t) { return shown_colormap(t); };
         }
         draw_moving_speed_plot(list_.over, list_.text[0].glyphs, *body_font_, plot, snapshots,
-                               colors, config_.speed_min, config_.speed_max,
+                               colors, config_.speed_min, config_.speed_max, frame.speed_plot,
                                plot_colors(config_.theme), axis_colors);
     } else if (frame.energy_plot) {
         draw_drift_plot(list_.over, list_.text[0].glyphs, *body_font_, plot, frame.energy_drift,
-                        accents(frame), plot_colors(config_.theme));
+                        frame.drift_plot, accents(frame), plot_colors(config_.theme));
     }
 }
 

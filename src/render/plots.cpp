@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <string>
 
@@ -13,10 +12,14 @@ namespace {
 // Beyond this many distinct masses, one curve at the mean mass is a fair summary.
 constexpr std::size_t max_mass_groups = 16;
 
-std::string format_number(const char* format, double value) {
-    char text[48];
-    std::snprintf(text, sizeof text, format, value);
-    return text;
+/// The first of `choices` (longest first) no wider than `room`, else the last; "" for none.
+const std::string& first_that_fits(const FontAtlas& font, const std::vector<std::string>& choices,
+                                   float room) {
+    static const std::string none;
+    for (const std::string& choice : choices) {
+        if (font.text_width(choice) <= room) return choice;
+    }
+    return choices.empty() ? none : choices.back();
 }
 
 struct PlotFrame {
@@ -162,15 +165,11 @@ Rgb8 series_color(const std::vector<Rgb8>& series_colors, std::size_t p, Rgba8 f
 void draw_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& font, RectF area,
                      const std::vector<const Snapshot*>& snapshots,
                      const std::vector<Rgb8>& series_colors, double v_min, double v_max,
-                     const PlotColors& colors) {
+                     const SpeedPlotWords& words, const PlotColors& colors) {
     // The longest title that leaves room for the range label (narrow frames get the short one).
-    const std::string range = format_number("v max %.3g", v_max);
+    const std::string& range = words.range;
     const float room = area.width() - font.text_width(range) - font.pixel_height();
-    std::string title = "speed distribution vs Maxwell-Boltzmann";
-    for (const char* shorter : {"speeds vs Maxwell-Boltzmann", "speeds vs MB"}) {
-        if (font.text_width(title) <= room) break;
-        title = shorter;
-    }
+    const std::string& title = first_that_fits(font, words.titles, room);
     const bool show_range = font.text_width(title) <= room;
     const PlotFrame frame = draw_axes(batch, text, font, area, title, colors);
     const RectF plot = frame.plot;
@@ -224,29 +223,25 @@ void draw_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& f
 
 void draw_drift_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& font, RectF area,
                      const std::vector<std::vector<DriftPoint>>& series,
-                     const std::vector<Rgb8>& series_colors, const PlotColors& colors) {
+                     const DriftPlotWords& words, const std::vector<Rgb8>& series_colors,
+                     const PlotColors& colors) {
     double t_min = 0.0;
     double t_max = 0.0;
-    double largest = 0.0;
     bool any = false;
     for (const auto& s : series) {
         for (const DriftPoint& p : s) {
-            if (!std::isfinite(p.drift) || !std::isfinite(p.time)) continue;
+            if (!is_finite(p)) continue;
             t_min = any ? std::min(t_min, p.time) : p.time;
             t_max = any ? std::max(t_max, p.time) : p.time;
-            largest = std::max(largest, std::abs(p.drift));
             any = true;
         }
     }
-    // A floor on the scale: round-off drift must not fill the plot.
-    constexpr double smallest_scale = 1e-12;
-    const double scale = std::max(largest, smallest_scale);
-    const PlotFrame frame = draw_axes(
-        batch, text, font, area, "energy drift  " + format_number("\xC2\xB1%.2g", scale), colors);
+    const double scale = words.scale;
+    const PlotFrame frame = draw_axes(batch, text, font, area, words.title, colors);
     const RectF plot = frame.plot;
     const float mid = 0.5F * (plot.y0 + plot.y1 - frame.line_width);
     batch.add_rect({plot.x0, mid, plot.x1, mid + 1.0F}, colors.zero_line);
-    if (!any || !(t_max > t_min)) return;
+    if (!any || !(t_max > t_min) || !(scale > 0.0)) return;
     const auto to_x = [&](double t) {
         return plot.x0 + static_cast<float>((t - t_min) / (t_max - t_min)) * plot.width();
     };
@@ -284,11 +279,10 @@ Snapshot moving_discs(const Snapshot& snapshot) {
     return out;
 }
 
-SpeedPlotLayout speed_plot_layout(const FontAtlas& font, RectF area) {
+SpeedPlotLayout speed_plot_layout(const FontAtlas& font, RectF area, const SpeedPlotWords& words) {
     SpeedPlotLayout out;
     const float line = font.line_height();
-    out.curve_name = "Maxwell-Boltzmann";
-    if (font.text_width(out.curve_name) > area.width()) out.curve_name = "Maxwell";
+    out.curve_name = first_that_fits(font, words.curve_names, area.width());
     const float name_width = std::min(font.text_width(out.curve_name), area.width());
     // A title, and the curve's name on its own line, only above a data area of at least four
     // lines: in a narrow column the axis word ("speed") says enough and the name goes inside
@@ -296,9 +290,7 @@ SpeedPlotLayout speed_plot_layout(const FontAtlas& font, RectF area) {
     float top = area.y0;
     const bool roomy = area.height() - 3.0F * line >= 4.0F * line;
     if (roomy) {
-        out.title_text = font.text_width("Speeds of moving discs") <= area.width()
-                             ? "Speeds of moving discs"
-                             : "Speeds";
+        out.title_text = first_that_fits(font, words.lesson_titles, area.width());
         out.title = {area.x0, top, area.x1, top + line};
         top += line;
         out.curve_label = {area.x1 - name_width, top, area.x1, top + line};
@@ -316,9 +308,9 @@ SpeedPlotLayout speed_plot_layout(const FontAtlas& font, RectF area) {
 void draw_moving_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& font,
                             RectF area, const std::vector<const Snapshot*>& snapshots,
                             const std::vector<Rgb8>& colors, double v_min, double v_max,
-                            const PlotColors& palette,
+                            const SpeedPlotWords& words, const PlotColors& palette,
                             const std::function<Rgb8(double)>& axis_colors) {
-    const SpeedPlotLayout parts = speed_plot_layout(font, area);
+    const SpeedPlotLayout parts = speed_plot_layout(font, area, words);
     if (!parts.title_text.empty()) {
         font.add_text(text, parts.title.x0, parts.title.y0 + font.ascent(), parts.title_text,
                       palette.label);
@@ -434,14 +426,14 @@ void draw_moving_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontA
                   parts.curve_name, palette.curve);
     // The speed axis: "0  speed  0.5", or "slow ... fast" where the three do not fit apart.
     const float baseline = parts.axis.y0 + font.ascent() + 2.0F;
-    const std::string high = format_number("%.2g", v_max);
-    const std::string axis = "speed";
+    const std::string& high = words.axis_high;
+    const std::string& axis = words.axis_quantity;
     const float space = font.pixel_height();
-    const bool numbers =
-        font.text_width("0") + font.text_width(axis) + font.text_width(high) + 2.0F * space <=
-        plot.width();
-    const std::string left = numbers ? "0" : "slow";
-    const std::string right = numbers ? high : "fast";
+    const bool numbers = font.text_width(words.axis_low) + font.text_width(axis) +
+                             font.text_width(high) + 2.0F * space <=
+                         plot.width();
+    const std::string& left = numbers ? words.axis_low : words.axis_slow;
+    const std::string& right = numbers ? high : words.axis_fast;
     font.add_text(text, plot.x0, baseline, left, palette.label);
     if (numbers) {
         font.add_text(text, plot.x0 + 0.5F * (plot.width() - font.text_width(axis)), baseline, axis,

@@ -55,11 +55,12 @@ struct PlotColors {
 /// Shapes go to `batch`, text to `text`.
 /// Draws the histograms of every snapshot's moving discs (step outlines in `series_colors`, one
 /// per snapshot: each panel's engine accent) and the Maxwell-Boltzmann curve of the last one's
-/// inside `area`.
+/// inside `area`, under the first of `words.titles` that leaves room for `words.range` (the
+/// range only when it fits).
 void draw_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& font, RectF area,
                      const std::vector<const Snapshot*>& snapshots,
                      const std::vector<Rgb8>& series_colors, double v_min, double v_max,
-                     const PlotColors& colors = {});
+                     const SpeedPlotWords& words, const PlotColors& colors = {});
 
 /// The indices (increasing) of the points of `series` worth drawing, `column` mapping a time to
 /// its pixel column: of each run of consecutive points in one column, the first, the lowest, the
@@ -71,11 +72,12 @@ void draw_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& f
     const std::vector<DriftPoint>& series, const std::function<std::int64_t(double)>& column);
 
 /// Draws relative energy drift against time, one polyline per series in `series_colors` (one per
-/// series: each panel's engine accent), scaled to the largest |drift| (labelled), with the zero
-/// line.
+/// series: each panel's engine accent), +-`words.scale` over the plot's height, under
+/// `words.title`, with the zero line (no polylines for a scale that is not positive).
 void draw_drift_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& font, RectF area,
                      const std::vector<std::vector<DriftPoint>>& series,
-                     const std::vector<Rgb8>& series_colors, const PlotColors& colors = {});
+                     const DriftPlotWords& words, const std::vector<Rgb8>& series_colors,
+                     const PlotColors& colors = {});
 
 /// Discs at least this many times heavier than the lightest disc count as immovable (barriers,
 /// walls of heavy discs): they are not part of the speed distribution.
@@ -90,7 +92,8 @@ inline constexpr double immovable_mass_ratio = 1000.0;
 /// Where the lesson speed plot puts its parts inside its area (pure, tested): where the area is
 /// tall enough, a title line and the curve's name on a line of its own above the data area;
 /// otherwise the name inside the data area's top right corner (bars and curve stay below it);
-/// the axis labels' line under the data area.
+/// the axis labels' line under the data area. The title and the name are the first of `words`'
+/// lesson_titles and curve_names as wide as the area at most (else the last).
 struct SpeedPlotLayout {
     RectF title;        ///< empty when there is no room for a title line
     RectF data;         ///< histogram bars and the curve
@@ -99,17 +102,20 @@ struct SpeedPlotLayout {
     std::string title_text;
     std::string curve_name;  ///< "Maxwell-Boltzmann", or "Maxwell" where that does not fit
 };
-[[nodiscard]] SpeedPlotLayout speed_plot_layout(const FontAtlas& font, RectF area);
+[[nodiscard]] SpeedPlotLayout speed_plot_layout(const FontAtlas& font, RectF area,
+                                                const SpeedPlotWords& words);
 
 /// Lesson plot: histograms of the moving discs' speeds (one per snapshot, in `colors`) on the
 /// fixed range [v_min, v_max] and a fixed height, with the labelled Maxwell-Boltzmann curve of
 /// the last snapshot's moving discs and the axis labelled. Shapes go to `batch`, text to `text`.
 /// With `axis_colors` (t in [0, 1] from v_min to v_max to a colour) the speed axis is drawn as a
-/// colour bar: the discs' speed colours, so no separate colour legend is needed.
+/// colour bar: the discs' speed colours, so no separate colour legend is needed. The words are
+/// `words`' lesson ones; the axis says "0  speed  v_max", or "slow .. fast" where that does not
+/// fit.
 void draw_moving_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& font,
                             RectF area, const std::vector<const Snapshot*>& snapshots,
                             const std::vector<Rgb8>& colors, double v_min, double v_max,
-                            const PlotColors& palette,
+                            const SpeedPlotWords& words, const PlotColors& palette,
                             const std::function<Rgb8(double)>& axis_colors = {});
 
 }  // namespace collide::render

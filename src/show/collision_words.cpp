@@ -10,6 +10,7 @@
 
 #include "collide/number_text.hpp"
 #include "collide/show/collision.hpp"
+#include "collide/show/plot_words.hpp"
 #include "collide/sim/pq/queue_kind.hpp"
 
 namespace collide::show {
@@ -203,6 +204,8 @@ PanelWords panel_words(const Measurements& m, bool time_driven, bool walls, doub
                        EngineKind engine) {
     PanelWords out;
     out.cost = work_done(m, time_driven);
+    out.cost_text = cost_text(out.cost);
+    out.cost_words = cost_in_words(out.cost);
     out.how = how_it_works(time_driven, engine);
     if (time_driven) {
         out.counters = time_driven_counters(m, drift);

@@ -1,5 +1,6 @@
-// `collide puzzle` end to end: the text and JSON reports, the video (byte-identical from run to
-// run; its last frame equal to --last-frame), and bad boards and options refused with exit 2.
+// `collide puzzle` end to end: the text and JSON reports (answered by `collide` itself, without
+// collide-draw), the video (byte-identical from run to run; its last frame equal to
+// --last-frame), and bad boards and options refused with exit 2.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 
 using collide::test::run_collide;
 using collide::test::run_collide_bad_input;
+using collide::test::run_command;
 using collide::test::TempDir;
 namespace fs = std::filesystem;
 
@@ -68,6 +70,35 @@ TEST_CASE("collide puzzle --solve and --json: both methods find the 31 moves of 
     REQUIRE(a.exit_code == 0);
     CHECK(a.output == b.output);
     CHECK_FALSE(contains(a.output, "\"bfs\""));
+}
+
+TEST_CASE("collide puzzle --solve and --json run in `collide` alone: no collide-draw, no GL") {
+    // A copy of `collide` with no collide-draw beside it or in ../libexec/collide: the text modes
+    // answer as the build tree's program does, and only a video asks for the drawing program.
+    TempDir dir("puzzle_alone");
+    const fs::path alone = dir.path / "bin" / "collide";
+    fs::create_directories(alone.parent_path());
+    fs::copy_file(COLLIDE_EXE, alone);
+    const auto run_alone = [&](const std::string& args) {
+        return run_command(quoted(alone) + " " + args + " 2>&1");
+    };
+    for (const std::string args : {"puzzle \"8 1 3 4 0 2 7 6 5\" --solve",
+                                   "puzzle random --moves 20 --seed 3 --json --pq dary:3"}) {
+        CAPTURE(args);
+        const auto here = run_alone(args);
+        REQUIRE_MESSAGE(here.exit_code == 0, here.output);
+        CHECK(here.output == run_collide(args).output);
+    }
+    CHECK(contains(run_alone("puzzle \"8 1 3 4 0 2 7 6 5\" --solve").output, "A*: "));
+    // Bad options of the text modes are refused by `collide` itself (exit 2, the usual words).
+    const auto refused = run_alone("puzzle \"1 2 3 4 0 6 7 5 8\" --json -o x.mp4");
+    CHECK(refused.exit_code == 2);
+    CHECK(contains(refused.output, "--json prints text instead of a video"));
+    // A video is collide-draw's: here it is missing, and the message says so.
+    const auto video = run_alone("puzzle \"1 2 3 4 0 6 7 5 8\" -o " + quoted(dir.path / "p.mp4"));
+    CHECK(video.exit_code == 1);
+    CHECK(contains(video.output, "collide-draw for `collide puzzle`"));
+    CHECK_FALSE(fs::exists(dir.path / "p.mp4"));
 }
 
 TEST_CASE("collide puzzle renders byte-identical videos whose last frame is --last-frame's") {

@@ -86,6 +86,7 @@ TEST_CASE("golden: two panels with overlays, speed colours and failure markers")
     frame.notes = {"red halo: overlap"};
     frame.color_key = show::color_key(config.color_mode, config.speed_min, config.speed_max,
                                       config.mass_min, config.mass_max);
+    test::add_show_words(frame, config.speed_max);
     check_against_golden(renderer.render(frame), "two_panels_speed");
 }
 
@@ -114,11 +115,13 @@ TEST_CASE("golden: periodic box with trails crossing the seam, overlays off") {
 }
 
 TEST_CASE("golden: one panel in scene colours with title and counters") {
-    Renderer renderer(test::small_config(true), test::test_backend());
+    const RenderConfig config = test::small_config(true);
+    Renderer renderer(config, test::test_backend());
     const Snapshot s = test::gas_snapshot(25, 0.05, {1.6, 0.9, Boundary::walls}, 3, 0.5);
     FrameContent frame;
     frame.panels = {{&s, "Event-driven (priority queue)", {"events 42", "queue 97"}}};
     frame.time_text = "t = 0.50";
+    test::add_show_words(frame, config.speed_max);
     check_against_golden(renderer.render(frame), "one_panel_scene");
 }
 
@@ -170,6 +173,7 @@ FrameContent queue_frame(const Snapshot& left, const Snapshot& right) {
     frame.time_text = "t = 2.000";
     frame.speed = 1.0;
     frame.video_time = 2.0;
+    test::add_show_words(frame, RenderConfig{}.speed_max);
     return frame;
 }
 

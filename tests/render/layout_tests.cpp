@@ -11,6 +11,7 @@
 #include "collide/show/failure_marks.hpp"
 #include "frame_builder.hpp"
 #include "layout.hpp"
+#include "render_fixtures.hpp"
 
 namespace collide::render {
 namespace {
@@ -424,6 +425,7 @@ TEST_CASE("every plot follows the theme: the light full level's strip has no dar
         frame.energy_line = "Energy conserved";
         frame.energy_drift = {{{0.0, 0.0}, {1.0, 0.01}, {2.0, 0.03}}, {{0.0, 0.0}, {2.0, 0.0}}};
         frame.histogram = PlotSize::small;
+        test::add_show_words(frame, config.speed_max);
         const DrawList& list = builder.build(frame);
         const Rgb8 page = rgb(palette(Theme::light).background);
         const PlotColors dark;  // the dark theme's plot colours

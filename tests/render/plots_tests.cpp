@@ -1,4 +1,6 @@
-// The strip's plot statistics and the drift plot's thinning, tested as pure functions.
+// The strip's plot statistics and the drift plot's thinning, tested as pure functions; how the
+// plots place and choose the words they are handed (the words themselves are collide_show's,
+// tested in tests/show/test_plot_words.cpp).
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -11,6 +13,7 @@
 #include <vector>
 
 #include "../support/skip.hpp"
+#include "collide/show/plot_words.hpp"
 #include "layout.hpp"
 #include "plots.hpp"
 
@@ -167,10 +170,12 @@ TEST_CASE("the lesson speed plot in a narrow column: labelled curve, nothing dra
          {RectF{532.0F, 420.0F, 747.0F, 575.0F}, RectF{800.0F, 100.0F, 1184.0F, 420.0F}}) {
         INFO("plot " << area.width() << " x " << area.height());
         const FontAtlas font(config.font_path, lesson_pixel_height(1280, 720));
-        const SpeedPlotLayout parts = speed_plot_layout(font, area);
+        const SpeedPlotWords words = show::speed_plot_words(0.35);
+        const SpeedPlotLayout parts = speed_plot_layout(font, area, words);
         CHECK(parts.title_text.empty() == (area.height() < 200.0F));  // no room for a title
         CHECK(parts.curve_label.width() <= area.width());
-        CHECK(parts.curve_name.rfind("Maxwell", 0) == 0);
+        CHECK(std::count(words.curve_names.begin(), words.curve_names.end(), parts.curve_name) ==
+              1);
         CHECK(parts.data.height() >= 2.0F * font.line_height());
         // Two panels' histograms, one hotter (its bins pile up under the name if not cut).
         const Snapshot cool = maxwellian_gas(800, 0.01, 1);
@@ -178,7 +183,7 @@ TEST_CASE("the lesson speed plot in a narrow column: labelled curve, nothing dra
         OverlayBatch shapes;
         OverlayBatch text;
         draw_moving_speed_plot(shapes, text, font, area, {&hot, &cool},
-                               {{240, 150, 60}, {90, 175, 245}}, 0.0, 0.35, PlotColors{});
+                               {{240, 150, 60}, {90, 175, 245}}, 0.0, 0.35, words, PlotColors{});
         const std::vector<OverlayVertex>& v = shapes.vertices();
         REQUIRE(v.size() % 3 == 0);
         REQUIRE(v.size() > 100);  // bars and curve were drawn
@@ -229,14 +234,95 @@ TEST_CASE("the drift plot draws each series in the colour given for it") {
     const std::vector<std::vector<DriftPoint>> one = {{{0.0, 0.0}, {1.0, 1e-3}, {2.0, -1e-3}}};
     OverlayBatch shapes;
     OverlayBatch text;
-    draw_drift_plot(shapes, text, font, {0.0F, 0.0F, 300.0F, 120.0F}, one, {blue});
+    const DriftPlotWords words{1e-3, "drift"};
+    draw_drift_plot(shapes, text, font, {0.0F, 0.0F, 300.0F, 120.0F}, one, words, {blue});
     CHECK(count_of(shapes, blue) > 0);
     CHECK(count_of(shapes, orange) == 0);
     OverlayBatch two_shapes;
-    draw_drift_plot(two_shapes, text, font, {0.0F, 0.0F, 300.0F, 120.0F}, {one[0], one[0]},
+    draw_drift_plot(two_shapes, text, font, {0.0F, 0.0F, 300.0F, 120.0F}, {one[0], one[0]}, words,
                     {orange, blue});
     CHECK(count_of(two_shapes, orange) > 0);
     CHECK(count_of(two_shapes, blue) > 0);
+}
+
+}  // namespace
+}  // namespace collide::render
+
+namespace collide::render {
+namespace {
+
+/// The glyphs' horizontal extent, or an empty box for none.
+RectF glyph_extent(const OverlayBatch& text) {
+    if (text.glyphs().empty()) return {};
+    RectF r{1e9F, 1e9F, -1e9F, -1e9F};
+    for (const GlyphBox& g : text.glyphs()) {
+        r.x0 = std::min(r.x0, static_cast<float>(g.x));
+        r.y0 = std::min(r.y0, static_cast<float>(g.y));
+        r.x1 = std::max(r.x1, static_cast<float>(g.x + g.width));
+        r.y1 = std::max(r.y1, static_cast<float>(g.y + g.height));
+    }
+    return r;
+}
+
+TEST_CASE("the speed plot layout takes the first of the words handed that fits, else the last") {
+    const RenderConfig config;
+    if (!std::filesystem::exists(config.font_path)) {
+        COLLIDE_SKIP_TEST("no DejaVu Sans at " << config.font_path);
+    }
+    const FontAtlas font(config.font_path, 14);
+    SpeedPlotWords words;
+    words.lesson_titles = {"A title far too long for any plot column of this frame", "Short", "S"};
+    words.curve_names = {"A curve name far too long for the column", "Curve"};
+    const RectF narrow{0.0F, 0.0F, 160.0F, 400.0F};
+    SpeedPlotLayout parts = speed_plot_layout(font, narrow, words);
+    CHECK(parts.title_text == "Short");
+    CHECK(parts.curve_name == "Curve");
+    const RectF wide{0.0F, 0.0F, 2000.0F, 400.0F};
+    parts = speed_plot_layout(font, wide, words);
+    CHECK(parts.title_text == words.lesson_titles.front());
+    CHECK(parts.curve_name == words.curve_names.front());
+    // Nothing fits a sliver: the last (shortest) one, never nothing.
+    parts = speed_plot_layout(font, {0.0F, 0.0F, 4.0F, 400.0F}, words);
+    CHECK(parts.title_text == "S");
+    CHECK(parts.curve_name == "Curve");
+}
+
+TEST_CASE("the drift plot scales its series by the scale it is handed and writes its title") {
+    const RenderConfig config;
+    if (!std::filesystem::exists(config.font_path)) {
+        COLLIDE_SKIP_TEST("no DejaVu Sans at " << config.font_path);
+    }
+    const FontAtlas font(config.font_path, 14);
+    const Rgb8 blue{90, 175, 245};
+    const std::vector<std::vector<DriftPoint>> one = {{{0.0, 0.0}, {1.0, 1e-3}, {2.0, -1e-3}}};
+    const RectF area{0.0F, 0.0F, 300.0F, 120.0F};
+    // The vertical extent of the series' strokes at a scale.
+    const auto extent = [&](double scale) {
+        OverlayBatch shapes;
+        OverlayBatch text;
+        draw_drift_plot(shapes, text, font, area, one, {scale, "energy drift"}, {blue});
+        float y0 = 1e9F;
+        float y1 = -1e9F;
+        for (const OverlayVertex& v : shapes.vertices()) {
+            if (v.color.r != blue.r || v.color.g != blue.g || v.color.b != blue.b) continue;
+            y0 = std::min(y0, v.y);
+            y1 = std::max(y1, v.y);
+        }
+        return y1 > y0 ? y1 - y0 : 0.0F;
+    };
+    // The series spans the plot at its own largest |drift|, half of it at twice that.
+    const float full = extent(1e-3);
+    CHECK(full > 60.0F);
+    CHECK(extent(2e-3) == doctest::Approx(0.5F * full).epsilon(0.1));
+    // No scale (0): the frame and the title, no series.
+    CHECK(extent(0.0) == 0.0F);
+    OverlayBatch shapes;
+    OverlayBatch with_title;
+    draw_drift_plot(shapes, with_title, font, area, one, {1e-3, "energy drift"}, {blue});
+    OverlayBatch without_title;
+    draw_drift_plot(shapes, without_title, font, area, one, {1e-3, ""}, {blue});
+    CHECK(with_title.glyphs().size() > without_title.glyphs().size());
+    CHECK(glyph_extent(with_title).y1 <= area.y0 + font.line_height() + 1.0F);  // a title line
 }
 
 }  // namespace

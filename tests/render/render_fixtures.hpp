@@ -11,6 +11,7 @@
 
 #include "collide/image.hpp"
 #include "collide/render/renderer.hpp"
+#include "collide/show/plot_words.hpp"
 #include "collide/snapshot.hpp"
 #include "collide/video/png.hpp"
 
@@ -99,6 +100,17 @@ inline int count_near(const Image& image, Rgb8 color, int tolerance, int x0 = 0,
         }
     }
     return count;
+}
+
+/// The plots' words and the cost graphic's values, as the app's FrameComposer fills them from the
+/// presentation layer (collide_show) for a video whose speed range tops at `speed_max`.
+inline void add_show_words(FrameContent& frame, double speed_max) {
+    frame.speed_plot = show::speed_plot_words(speed_max);
+    frame.drift_plot = show::drift_plot_words(frame.energy_drift);
+    for (PanelContent& panel : frame.panels) {
+        panel.cost_text = show::cost_text(panel.cost);
+        panel.cost_words = show::cost_in_words(panel.cost);
+    }
 }
 
 }  // namespace collide::render::test

@@ -394,6 +394,7 @@ TEST_CASE(
         frame.panels[0].accent = accent;
         frame.time_text = "t = 1.000";
         frame.energy_drift = {{{0.0, 0.0}, {0.5, 2e-3}, {1.0, -1e-3}}};
+        test::add_show_words(frame, config.speed_max);
         return frame;
     };
     const Rgb8 orange = panel_accent(true);

@@ -123,6 +123,8 @@ struct PanelWords {
     std::string compact_line;           ///< compact lesson form: the one line
     std::string cost_label;             ///< the cost graphic's label
     double cost = 0.0;                  ///< the work it counts (work_done)
+    std::string cost_text;              ///< the work in digits (cost_text, plot_words.hpp)
+    std::string cost_words;             ///< the work in words (cost_in_words)
     std::string how;  ///< lesson level: why its work grows as it does (under the figures)
 };
 /// `drift`: the relative energy drift now; `walls`: the box has walls; `engine`: which

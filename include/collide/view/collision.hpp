@@ -12,6 +12,7 @@
 #include "collide/disc.hpp"
 #include "collide/render_options.hpp"
 #include "collide/snapshot.hpp"
+#include "collide/view/plots.hpp"
 
 namespace collide {
 
@@ -129,6 +130,8 @@ struct PanelContent {
     int step_phase = 0;
     std::string cost_label;     ///< the cost graphic's label ("pair tests")
     double cost = 0.0;          ///< work done so far, on the graphic's shared scale
+    std::string cost_text;      ///< the cost under its bar: "12,345,678"
+    std::string cost_words;     ///< instead, where its digits do not fit: "12.3 million"
     Rgb8 accent{240, 150, 60};  ///< the engine's colour (title swatch, bar, histogram)
     QueueWords queue_words;     ///< the queue strip's words (snapshot->queue set)
     /// Lesson level: the failure marks in the box (the full level marks from the snapshot).
@@ -166,7 +169,9 @@ struct FrameContent {
     double speed = 0.0;
     /// Lesson level: the speed histogram of moving discs in the column (large: it is the subject).
     PlotSize histogram = PlotSize::none;
-    bool energy_plot = false;  ///< lesson level: the energy drift plot (energy not conserved)
+    bool energy_plot = false;   ///< lesson level: the energy drift plot (energy not conserved)
+    SpeedPlotWords speed_plot;  ///< the speed plot's words (the video's, fixed)
+    DriftPlotWords drift_plot;  ///< the drift plot's scale and title (of `energy_drift`)
     /// The scene's title card (intro): drawn over the frame with this opacity (0 = none).
     std::string intro_title;
     std::string intro_text;

@@ -1,0 +1,27 @@
+#include "puzzle_options.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include "collide/error.hpp"
+#include "progress.hpp"
+
+namespace collide::app {
+
+void add_puzzle_video_options(CLI::App& cmd, PuzzleVideoCli& v) {
+    add_lesson_video_options(cmd, v, "puzzle", "at least 854x480, e.g. 960x540");
+}
+
+void refuse_video_options(const PuzzleVideoCli& v, const std::string& mode) {
+    (void)parse_progress_mode(v.progress);  // harmless with text, but never a wrong value
+    for (const CLI::Option* o :
+         {v.output_opt, v.format_opt, v.quality_opt, v.size_opt, v.fps_opt, v.last_frame_opt,
+          v.at_opt, v.theme_opt, v.subtitles_opt, v.subtitles_file_opt, v.chapters_opt,
+          v.chapters_file_opt, v.slides_opt}) {
+        if (given(o)) {
+            throw_option_error(o->get_name(), mode + " prints text instead of a video; leave " +
+                                                  o->get_name() + " out, or " + mode + " out");
+        }
+    }
+}
+
+}  // namespace collide::app
