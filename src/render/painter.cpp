@@ -81,6 +81,14 @@ void Painter::paint_panel(std::size_t index, const PanelContent& content,
                           const PanelLayout& panel) {
     const Snapshot& snapshot = *content.snapshot;
     const Box& box = snapshot.box;
+    if (content.spheres != nullptr) {  // a 3D panel: the snapshot's box is the screen box
+        add_box_fill(panel.box);
+        add_spheres(*content.spheres, panel, box);
+        add_marks(index, content, panel);
+        list_.disc_groups.push_back({list_.discs.size(), panel.box});
+        add_panel_text(index, content, panel);
+        return;
+    }
     add_box(panel, box);
     colors_.resize(snapshot.discs.size());
     for (std::size_t k = 0; k < snapshot.discs.size(); ++k) {
@@ -149,21 +157,25 @@ void Painter::add_box_fill(RectF box) {
 // Discs
 
 Rgb8 Painter::disc_color(const DiscState& disc) const noexcept {
+    return particle_color(disc.color, norm(disc.velocity), disc.mass, disc.tagged);
+}
+
+Rgb8 Painter::particle_color(Rgb8 color, double speed, double mass, bool tagged) const noexcept {
     switch (config_.color_mode) {
         case ColorMode::scene:
-            return away_from_failure_color(disc.color);
+            return away_from_failure_color(color);
         case ColorMode::speed:
-            return shown_colormap((norm(disc.velocity) - config_.speed_min) /
+            return shown_colormap((speed - config_.speed_min) /
                                   (config_.speed_max - config_.speed_min));
         case ColorMode::mass: {
             if (!(config_.mass_max > config_.mass_min)) return shown_colormap(0.5);
-            return shown_colormap(std::log(disc.mass / config_.mass_min) /
+            return shown_colormap(std::log(mass / config_.mass_min) /
                                   std::log(config_.mass_max / config_.mass_min));
         }
         case ColorMode::tag:
-            return disc.tagged ? tagged_color : untagged_color;
+            return tagged ? tagged_color : untagged_color;
     }
-    return disc.color;
+    return color;
 }
 
 Rgb8 Painter::shown_colormap(double t) const noexcept {
@@ -217,6 +229,38 @@ void Painter::add_discs(const Snapshot& snapshot, const PanelLayout& panel) {
                 {p.x, p.y, radius + 3.0F, std::max(1.5F, radius * 0.25F), escaped_ring_color});
         }
     }
+}
+
+// Spheres, as the camera (show::SphereCamera) placed them: the box's edges that lie behind them
+// under, the ones in front over; the spheres far to near in their own group, lit in the shader.
+void Painter::add_spheres(const SphereView& view, const PanelLayout& panel, const Box& screen) {
+    const float edge_width = std::max(1.0F, style_.wall);
+    Rgba8 front = palette_.wall;
+    front.a = 150;  // over the spheres: present, but not hiding them
+    for (const BoxEdge& e : view.edges) {
+        const PointF a = panel.to_pixels(e.from, screen);
+        const PointF b = panel.to_pixels(e.to, screen);
+        if (e.front) {
+            list_.over.add_line(a, b, edge_width, front);
+        } else {
+            list_.under.add_line(a, b, edge_width, palette_.wall);
+        }
+    }
+    for (const SphereSprite& sphere : view.spheres) {
+        const PointF p = panel.to_pixels(sphere.at, screen);
+        const Rgb8 c = particle_color(sphere.color, sphere.speed, sphere.mass, sphere.tagged);
+        list_.spheres.push_back({p.x, p.y, static_cast<float>(sphere.radius * panel.scale),
+                                 static_cast<float>(sphere.depth),
+                                 static_cast<float>(sphere.radius_depth), with_alpha(c, 255)});
+    }
+    SphereLight light;
+    light.x = static_cast<float>(view.light_x);
+    light.y = static_cast<float>(view.light_y);
+    light.z = static_cast<float>(view.light_z);
+    light.ambient = static_cast<float>(view.ambient);
+    light.depth_cue = static_cast<float>(view.depth_cue);
+    light.cue_color = palette_.box_fill;
+    list_.sphere_groups.push_back({list_.spheres.size(), panel.box, light});
 }
 
 // A disc straddling an edge of a periodic box shows on both sides (scissored to the box).
