@@ -15,6 +15,20 @@ namespace {
 constexpr Rgb8 untagged_color{120, 122, 135};
 constexpr Rgba8 escaped_ring_color{255, 70, 70, 255};
 
+/// A segment from a to b drawn as dashes about `dash` long, a dash at both ends.
+void add_dashed_segment(OverlayBatch& batch, PointF a, PointF b, float width, float dash,
+                        Rgba8 color) {
+    const float length = std::hypot(b.x - a.x, b.y - a.y);
+    if (!(length > 0.0F) || !(dash > 0.0F)) return;
+    int pieces = std::max(1, static_cast<int>(std::lround(length / dash)));
+    if (pieces % 2 == 0) ++pieces;
+    const auto at = [&](int k) {
+        const float t = static_cast<float>(k) / static_cast<float>(pieces);
+        return PointF{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+    };
+    for (int k = 0; k < pieces; k += 2) batch.add_line(at(k), at(k + 1), width, color);
+}
+
 }  // namespace
 
 Painter::Painter(const RenderConfig& config) : config_(config), palette_(palette(config.theme)) {
@@ -237,13 +251,19 @@ void Painter::add_spheres(const SphereView& view, const PanelLayout& panel, cons
     const float edge_width = std::max(1.0F, style_.wall);
     Rgba8 front = palette_.wall;
     front.a = 150;  // over the spheres: present, but not hiding them
+    // A periodic box's edges are no walls: dashed, as in 2D (the legend says "edges wrap").
+    const bool dashed = screen.boundary == Boundary::periodic && style_.dashed_periodic_edges;
+    const Rgba8 back = dashed ? palette_.wrap_edge : palette_.wall;
+    if (dashed) front = Rgba8{back.r, back.g, back.b, 150};
     for (const BoxEdge& e : view.edges) {
         const PointF a = panel.to_pixels(e.from, screen);
         const PointF b = panel.to_pixels(e.to, screen);
-        if (e.front) {
-            list_.over.add_line(a, b, edge_width, front);
+        OverlayBatch& batch = e.front ? list_.over : list_.under;
+        const Rgba8 color = e.front ? front : back;
+        if (dashed) {
+            add_dashed_segment(batch, a, b, edge_width, edge_dash(edge_width), color);
         } else {
-            list_.under.add_line(a, b, edge_width, palette_.wall);
+            batch.add_line(a, b, edge_width, color);
         }
     }
     for (const SphereSprite& sphere : view.spheres) {

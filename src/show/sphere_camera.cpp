@@ -33,8 +33,8 @@ double largest_radius(const SphereSnapshot& s) noexcept {
 /// Half the depth range: the box's half diagonal and a sphere radius, so every surface point of a
 /// sphere inside the box has a depth in [0, 1].
 double depth_half_range(const Box3& box, double radius) noexcept {
-    return 0.5 * std::sqrt(box.width * box.width + box.height * box.height +
-                           box.depth * box.depth) +
+    return 0.5 *
+               std::sqrt(box.width * box.width + box.height * box.height + box.depth * box.depth) +
            radius;
 }
 
@@ -106,7 +106,15 @@ void project(const SphereSnapshot& snapshot, Camera camera, ProjectedPanel& out)
         view.spheres.begin(), view.spheres.end(),
         [](const SphereSprite& a, const SphereSprite& b) { return a.depth > b.depth; });
 
-    s.overlapping_pairs = snapshot.overlapping_pairs;
+    // A pair that overlaps across a periodic box's edge has its spheres on opposite sides of the
+    // screen: no point between them is where they meet, so only pairs that touch directly are
+    // handed on (the figures still count every pair: they come from the measurements).
+    s.overlapping_pairs.clear();
+    for (const auto& [i, j] : snapshot.overlapping_pairs) {
+        const Vec3 a = snapshot.spheres[i].position;
+        const Vec3 b = snapshot.spheres[j].position;
+        if (norm2(box.displacement(a, b)) == norm2(b - a)) s.overlapping_pairs.emplace_back(i, j);
+    }
     s.missed_collisions.clear();
     for (const Vec3& m : snapshot.missed_collisions) {
         double depth = 0.0;
@@ -121,7 +129,8 @@ void project(const SphereSnapshot& snapshot, Camera camera, ProjectedPanel& out)
     for (int k = 0; k < 8; ++k) {
         const Vec3 p{(k & 1) != 0 ? box.width : 0.0, (k & 2) != 0 ? box.height : 0.0,
                      (k & 4) != 0 ? box.depth : 0.0};
-        corner[static_cast<std::size_t>(k)] = to_screen(p, corner_depth[static_cast<std::size_t>(k)]);
+        corner[static_cast<std::size_t>(k)] =
+            to_screen(p, corner_depth[static_cast<std::size_t>(k)]);
     }
     const auto nearest = static_cast<int>(
         std::min_element(corner_depth.begin(), corner_depth.end()) - corner_depth.begin());
