@@ -24,8 +24,7 @@ SphereState sphere_at(Vec3 p, double r, Vec3 v = {}) {
 SphereSnapshot two_spheres() {
     SphereSnapshot s;
     s.box = Box3{1.0, 1.0, 1.0, Boundary::walls};
-    s.spheres = {sphere_at({0.5, 0.5, 0.2}, 0.1, {0.3, 0.4, 1.2}),
-                 sphere_at({0.5, 0.5, 0.8}, 0.1)};
+    s.spheres = {sphere_at({0.5, 0.5, 0.2}, 0.1, {0.3, 0.4, 1.2}), sphere_at({0.5, 0.5, 0.8}, 0.1)};
     return s;
 }
 
