@@ -41,6 +41,8 @@ struct CliValues {
     VideoCli video;  ///< -o, --format, -q, --size, --fps, --at, --last-frame, --theme, ...
     std::string mode = "both";
     std::string camera = "fixed";
+    double slab = 0.0;
+    CLI::Option* slab_opt = nullptr;
     double duration = 0.0;
     double speed = 0.0;
     double dt = 0.0;
@@ -112,6 +114,7 @@ RenderRequest request_of(const CliValues& v, bool still) {
     r.output = if_given(v.video.output_opt, v.video.output);
     r.mode = v.mode;
     r.camera = v.camera;
+    r.slab = if_given(v.slab_opt, v.slab);
     r.quality = if_given(v.video.quality_opt, v.video.quality);
     r.size = if_given(v.video.size_opt, v.video.size);
     r.fps = if_given(v.video.fps_opt, v.video.fps);
@@ -167,6 +170,9 @@ void add_shared_options(CLI::App& cmd, CliValues& v, bool video) {
                    "3D scenes: fixed, or orbit (the view turns slowly round the box, once every "
                    "40 s of video)")
         ->capture_default_str();
+    v.slab_opt = cmd.add_option("--slab", v.slab,
+                                "3D scenes: show only a slice W box units thick through the box's "
+                                "centre, facing the camera (the inside of a dense system)");
     v.duration_opt =
         cmd.add_option("--duration", v.duration, "Seconds of video (default: scene hint, else 10)");
     v.speed_opt = cmd.add_option(

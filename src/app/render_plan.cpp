@@ -483,6 +483,10 @@ RenderPlan plan_render(const RenderRequest& request, const Scene& scene) {
     RenderPlan plan;
     plan.mode = parse_render_mode(request.mode);
     plan.camera = parse_camera_motion(request.camera);
+    if (request.slab) {
+        require_positive(*request.slab, "--slab", "thickness in box units");
+        plan.slab = *request.slab;
+    }
     const QualityPreset preset =
         request.quality ? quality_preset(*request.quality) : QualityPreset{};
     const FrameSize size =

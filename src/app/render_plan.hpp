@@ -126,6 +126,7 @@ struct RenderRequest {
     std::optional<std::string> output;     ///< -o
     std::string mode = "both";             ///< --mode
     std::string camera = "fixed";          ///< --camera (3D scenes): fixed or orbit
+    std::optional<double> slab;            ///< --slab W (3D scenes): a slice W box units thick
     std::optional<std::string> quality;    ///< -q
     std::optional<std::string> size;       ///< --size WxH
     std::optional<int> fps;                ///< --fps
@@ -210,6 +211,8 @@ struct RenderPlan {
     double slow_motion = 1.0;
     /// --camera: how a 3D scene is seen (a 2D scene ignores it).
     show::CameraMotion camera = show::CameraMotion::fixed;
+    /// --slab: the thickness of the slice of spheres shown, box units (0: every sphere).
+    double slab = 0.0;
 };
 
 /// Default output directory for derived paths.

@@ -40,8 +40,9 @@ double depth_half_range(const Box3& box, double radius) noexcept {
 
 }  // namespace
 
-Camera camera_at(CameraMotion motion, double video_seconds) noexcept {
+Camera camera_at(CameraMotion motion, double video_seconds, double slab) noexcept {
     Camera c;
+    c.slab = slab;
     if (motion == CameraMotion::orbit)
         c.yaw += 2.0 * std::numbers::pi * std::fmod(video_seconds / orbit_seconds, 1.0);
     return c;
@@ -81,10 +82,13 @@ void project(const SphereSnapshot& snapshot, Camera camera, ProjectedPanel& out)
     s.dimension = 3;
     s.discs.resize(snapshot.spheres.size());
     SphereView& view = out.view;
-    view.spheres.resize(snapshot.spheres.size());
+    view.spheres.clear();
+    view.spheres.reserve(snapshot.spheres.size());
+    // The slab: a depth range about the centre (depth 0.5) of half width slab / 2.
+    const double slab_half_depth = camera.slab > 0.0 ? camera.slab / (4.0 * half_depth) : 1.0;
     for (std::size_t i = 0; i < snapshot.spheres.size(); ++i) {
         const SphereState& p = snapshot.spheres[i];
-        SphereSprite& sprite = view.spheres[i];
+        SphereSprite sprite;
         sprite.at = to_screen(p.position, sprite.depth);
         sprite.radius = p.radius;
         sprite.radius_depth = p.radius / (2.0 * half_depth);
@@ -92,6 +96,7 @@ void project(const SphereSnapshot& snapshot, Camera camera, ProjectedPanel& out)
         sprite.mass = p.mass;
         sprite.color = p.color;
         sprite.tagged = p.tagged;
+        if (std::abs(sprite.depth - 0.5) <= slab_half_depth) view.spheres.push_back(sprite);
         DiscState& d = s.discs[i];
         d.position = sprite.at;
         d.velocity = {p.velocity.x, std::hypot(p.velocity.y, p.velocity.z)};

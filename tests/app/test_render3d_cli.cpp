@@ -68,3 +68,14 @@ TEST_CASE("a bad --camera exits 2 naming the option and the choices") {
     CHECK(contains(r.output, "fixed or orbit"));
     CHECK_FALSE(fs::exists("/tmp/collide_never.png"));
 }
+
+TEST_CASE("a bad --slab exits 2 naming the option") {
+    for (const char* value : {"0", "-0.5", "nan"}) {
+        CAPTURE(value);
+        const auto r = run_collide(std::string("thumbnail gas-3d --slab ") + value +
+                                   " -o /tmp/collide_never.png");
+        CHECK(r.exit_code == 2);
+        CHECK(contains(r.output, "--slab"));
+    }
+    CHECK_FALSE(fs::exists("/tmp/collide_never.png"));
+}

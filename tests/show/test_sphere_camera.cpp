@@ -101,3 +101,24 @@ TEST_CASE("a stand-in scene keeps the box, the hints and every sphere's speed") 
 
 }  // namespace
 }  // namespace collide::show
+
+namespace collide::show {
+namespace {
+
+TEST_CASE("a slab keeps the spheres within half its thickness of the centre plane, all the discs") {
+    SphereSnapshot s;
+    s.box = Box3{1.0, 1.0, 1.0, Boundary::walls};
+    // Seen from the front, depth runs along z: 0.5 is on the centre plane, 0.2 and 0.85 are not.
+    s.spheres = {sphere_at({0.5, 0.5, 0.2}, 0.05), sphere_at({0.3, 0.5, 0.55}, 0.05),
+                 sphere_at({0.7, 0.5, 0.85}, 0.05)};
+    const ProjectedPanel all = project(s, Camera{0.0, 0.0, 0.0});
+    CHECK(all.view.spheres.size() == 3);
+    const ProjectedPanel slab = project(s, Camera{0.0, 0.0, 0.2});
+    REQUIRE(slab.view.spheres.size() == 1);
+    CHECK(slab.view.spheres[0].at.x == doctest::Approx(all.view.spheres[1].at.x));
+    CHECK(slab.screen.discs.size() == 3);  // the figures and the plot still count every sphere
+    CHECK(camera_at(CameraMotion::orbit, 2.0, 0.3).slab == 0.3);
+}
+
+}  // namespace
+}  // namespace collide::show

@@ -29,11 +29,15 @@ inline constexpr double orbit_seconds = 40.0;
 struct Camera {
     double yaw = 0.6;     ///< about 35 degrees: one corner of the box towards the viewer
     double pitch = 0.42;  ///< about 24 degrees from above
+    /// `--slab W`: only the spheres whose centres lie within W/2 (box units) of the plane through
+    /// the box's centre that faces the camera, so that the inside of a dense system shows; 0: all.
+    double slab = 0.0;
 };
 
 /// The camera of a frame shown `video_seconds` into the moving picture (a card or a hold does not
 /// turn it): the fixed view, or the fixed view turned by a whole turn per orbit_seconds.
-[[nodiscard]] Camera camera_at(CameraMotion motion, double video_seconds) noexcept;
+[[nodiscard]] Camera camera_at(CameraMotion motion, double video_seconds,
+                               double slab = 0.0) noexcept;
 
 /// A panel of spheres as the camera sees it: the view the renderer paints and the stand-in
 /// snapshot that carries the panel's box (the screen box: the same for every camera angle, so the
