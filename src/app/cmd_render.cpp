@@ -223,9 +223,10 @@ void add_shared_options(CLI::App& cmd, CliValues& v, bool video) {
 }
 
 /// Everything that can be wrong with the request, found before any frame is drawn.
-RenderPlan validated_plan(const RenderRequest& request, const Scene& scene) {
+RenderPlan validated_plan(const RenderRequest& request, const Scene& scene,
+                          const SphereScene* spheres) {
     RenderPlan plan = plan_render(request, scene);
-    check_render_work(plan, request, scene);
+    check_render_work(plan, request, scene, {}, spheres);
     // The default directory is ours to create; a user-given one must exist already.
     if (plan.default_output) std::filesystem::create_directories(plan.output.parent_path());
     const bool directory =
@@ -398,7 +399,7 @@ void run(const CliValues& values, bool still) {
     interrupts.throw_if_requested();
     const render::Backend backend = gl_backend_of(values);
     const RenderRequest request = request_of(values, still);
-    const RenderPlan plan = validated_plan(request, scene);
+    const RenderPlan plan = validated_plan(request, scene, spheres);
     const SubtitleOutput subtitles = subtitle_output_of(
         values.video, {plan.output, plan.format, plan.kind == OutputKind::still, false});
     video::set_libav_verbose(values.video.verbose);
