@@ -28,7 +28,7 @@ std::string read_bytes(const fs::path& p) {
 }  // namespace
 
 TEST_CASE("collide check: the built-in 3D scenes load and are ok") {
-    for (const char* name : {"gas-3d", "alder-wainwright", "alder-wainwright-solid"}) {
+    for (const char* name : {"gas-3d", "alder-wainwright", "spheres-freeze"}) {
         CAPTURE(name);
         const auto r = run_collide(std::string("check ") + name);
         CHECK(r.exit_code == 0);
