@@ -63,7 +63,7 @@ int px(float v) {
     return static_cast<int>(std::floor(v));
 }
 
-TEST_CASE("a sphere is lit at its centre and shaded towards its rim; the box shows around it") {
+TEST_CASE("a sphere is lit at its centre and shaded towards its rim with the box around it") {
     SphereSnapshot s;
     s.box = Box3{1.0, 1.0, 1.0, Boundary::walls};
     s.spheres = {sphere_at({0.5, 0.5, 0.5}, 0.2, red)};
