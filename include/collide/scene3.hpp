@@ -2,13 +2,14 @@
 /// \file
 /// A 3D scene: hard spheres in a box with a depth (`dimension = 3` in a TOML scene). The
 /// simulation library runs it with the same engines as the 2D Scene, written once for both
-/// dimensions (collide/space.hpp); rendering spheres is not built yet.
+/// dimensions (collide/space.hpp), and drawn as shaded spheres by `collide render`.
 
 #include <string>
 #include <vector>
 
 #include "collide/box3.hpp"
 #include "collide/disc.hpp"
+#include "collide/scene.hpp"
 #include "collide/vec3.hpp"
 
 namespace collide {
@@ -29,6 +30,7 @@ struct SphereScene {
     std::string description;
     Box3 box;
     std::vector<Sphere> spheres;
+    RenderHints render;  ///< `[render]`, as a 2D scene's (collide render draws spheres)
 };
 
 }  // namespace collide

@@ -97,6 +97,11 @@ struct Snapshot {
     std::vector<Vec2> missed_collisions;  ///< where a collision went undetected since last frame
     /// Event-driven engines watching their queue (Engine::watch_queue) only; empty otherwise.
     std::optional<QueueView> queue;
+    /// The dimension of the particles the discs stand for: 2 (discs), or 3 when they stand in
+    /// for spheres seen by a camera (show::SphereCamera): positions projected onto the screen,
+    /// velocities (vx, |(vy, vz)|) so that a disc's speed is its sphere's, and the speed plot's
+    /// Maxwell-Boltzmann curve is the 3D one.
+    int dimension = 2;
 };
 
 }  // namespace collide

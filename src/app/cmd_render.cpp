@@ -11,11 +11,13 @@
 #include <optional>
 #include <string>
 #include <system_error>
+#include <variant>
 
 #include "cli_numbers.hpp"
 #include "collide/error.hpp"
 #include "collide/io/file.hpp"
 #include "collide/scene/load.hpp"
+#include "collide/show/sphere_camera.hpp"
 #include "collide/sim/queue_view.hpp"
 #include "collide/video/output.hpp"
 #include "collide/video/video_writer.hpp"
@@ -39,6 +41,9 @@ struct CliValues {
     std::string scene;
     VideoCli video;  ///< -o, --format, -q, --size, --fps, --at, --last-frame, --theme, ...
     std::string mode = "both";
+    std::string camera = "fixed";
+    double slab = 0.0;
+    CLI::Option* slab_opt = nullptr;
     double duration = 0.0;
     double speed = 0.0;
     double dt = 0.0;
@@ -109,6 +114,8 @@ RenderRequest request_of(const CliValues& v, bool still) {
     r.scene = v.scene;
     r.output = if_given(v.video.output_opt, v.video.output);
     r.mode = v.mode;
+    r.camera = v.camera;
+    r.slab = if_given(v.slab_opt, v.slab);
     r.quality = if_given(v.video.quality_opt, v.video.quality);
     r.size = if_given(v.video.size_opt, v.video.size);
     r.fps = if_given(v.video.fps_opt, v.video.fps);
@@ -160,6 +167,13 @@ void add_shared_options(CLI::App& cmd, CliValues& v, bool video) {
     add_video_options(cmd, v.video, set);
     cmd.add_option("--mode", v.mode, "both (time-driven left, event-driven right), event or time")
         ->capture_default_str();
+    cmd.add_option("--camera", v.camera,
+                   "3D scenes: fixed, or orbit (the view turns slowly round the box, once every "
+                   "40 s of video)")
+        ->capture_default_str();
+    v.slab_opt = cmd.add_option("--slab", v.slab,
+                                "3D scenes: show only a slice W box units thick through the box's "
+                                "centre, facing the camera (the inside of a dense system)");
     v.duration_opt =
         cmd.add_option("--duration", v.duration, "Seconds of video (default: scene hint, else 10)");
     v.speed_opt = cmd.add_option(
@@ -210,9 +224,10 @@ void add_shared_options(CLI::App& cmd, CliValues& v, bool video) {
 }
 
 /// Everything that can be wrong with the request, found before any frame is drawn.
-RenderPlan validated_plan(const RenderRequest& request, const Scene& scene) {
+RenderPlan validated_plan(const RenderRequest& request, const Scene& scene,
+                          const SphereScene* spheres) {
     RenderPlan plan = plan_render(request, scene);
-    check_render_work(plan, request, scene);
+    check_render_work(plan, request, scene, {}, spheres);
     // The default directory is ours to create; a user-given one must exist already.
     if (plan.default_output) std::filesystem::create_directories(plan.output.parent_path());
     const bool directory =
@@ -372,14 +387,22 @@ void run(const CliValues& values, bool still) {
     SceneOptions scene_options;
     if (values.seed_opt != nullptr && values.seed_opt->count() > 0)
         scene_options.seed = values.seed;
-    const Scene scene = [&] {
+    const AnyScene any_scene = [&] {
         const StopAtOnce nothing_written_yet(interrupts);
-        return load_scene(values.scene, scene_assets_dir(), scene_options);
+        return load_any_scene(values.scene, scene_options);
     }();
+    // A 3D scene is planned through discs standing in for its spheres (the same pace, speeds
+    // and hints) and drawn as spheres (show::SphereCamera).
+    const SphereScene* spheres = std::get_if<SphereScene>(&any_scene);
+    std::optional<Scene> stand_in;
+    if (spheres != nullptr) stand_in = show::stand_in_scene(*spheres);
+    const Scene& scene = spheres != nullptr ? *stand_in : std::get<Scene>(any_scene);
+    if (spheres != nullptr && values.queue_opt != nullptr && values.queue_opt->count() > 0)
+        throw_option_error("--queue", "not for 3D scenes yet: the queue picture is drawn in 2D");
     interrupts.throw_if_requested();
     const render::Backend backend = gl_backend_of(values);
     const RenderRequest request = request_of(values, still);
-    const RenderPlan plan = validated_plan(request, scene);
+    const RenderPlan plan = validated_plan(request, scene, spheres);
     const SubtitleOutput subtitles = subtitle_output_of(
         values.video, {plan.output, plan.format, plan.kind == OutputKind::still, false});
     const ChapterOutput chapters = chapter_output_of(
@@ -428,7 +451,7 @@ void run(const CliValues& values, bool still) {
     PipelineResult result;
     try {
         result = run_render(scene, plan, hooks, layout_file ? &*layout_file : nullptr, subtitles,
-                            chapters);
+                            chapters, spheres);
     } catch (...) {
         progress.finish();
         interrupts.throw_if_requested();  // whatever noticed it first: one wording, the signal

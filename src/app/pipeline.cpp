@@ -33,9 +33,10 @@ double relative_drift(double energy, double initial) {
 /// blocked on a full queue wakes up) and joins, so no path out of a run leaves a thread behind.
 class SimulationThread {
   public:
-    SimulationThread(const Scene& scene, const RenderPlan& plan, const std::atomic<bool>* cancel)
+    SimulationThread(const Scene& scene, const RenderPlan& plan, const std::atomic<bool>* cancel,
+                     const SphereScene* spheres)
         : queue_(sim_queue_frames),
-          thread_([this, &scene, &plan, cancel] { run(scene, plan, cancel); }) {}
+          thread_([this, &scene, &plan, cancel, spheres] { run(scene, plan, cancel, spheres); }) {}
     ~SimulationThread() {
         queue_.close();
         if (thread_.joinable()) thread_.join();
@@ -55,9 +56,10 @@ class SimulationThread {
     }
 
   private:
-    void run(const Scene& scene, const RenderPlan& plan, const std::atomic<bool>* cancel) {
+    void run(const Scene& scene, const RenderPlan& plan, const std::atomic<bool>* cancel,
+             const SphereScene* spheres) {
         try {
-            FrameSource source(scene, plan, cancel);
+            FrameSource source(scene, plan, cancel, spheres);
             for (std::int64_t k = 0; k < plan.timeline.frame_count(); ++k) {
                 if (cancel != nullptr && cancel->load()) break;
                 if (!queue_.push(source.frame(k))) break;
@@ -100,7 +102,7 @@ void check_captions_fit(const Scene& scene, const RenderPlan& plan) {
 }
 
 /// Engine::watch_queue, its errors about the field `queue` said as the option `--queue`.
-bool watch_queue(Engine& engine, const QueueViewLimits& limits) {
+bool watch_queue(EngineBase& engine, const QueueViewLimits& limits) {
     try {
         return engine.watch_queue(limits);
     } catch (const Error& e) {
@@ -116,19 +118,24 @@ bool watch_queue(Engine& engine, const QueueViewLimits& limits) {
 // ------------------------------------------------------------------------------------------------
 // Simulation side
 
-FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan, const std::atomic<bool>* stop)
+FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan, const std::atomic<bool>* stop,
+                         const SphereScene* spheres)
     : plan_(plan) {
     const auto add = [&](const EngineOptions& options, bool time_driven, std::string title) {
         Panel panel;
-        panel.engine = make_engine(scene, options);
-        panel.engine->set_stop_flag(stop);
+        if (spheres != nullptr) {
+            panel.sphere_engine = make_engine(*spheres, options);
+        } else {
+            panel.engine = make_engine(scene, options);
+        }
+        panel.base().set_stop_flag(stop);
         if (!time_driven && plan.queue_events > 0 &&
-            !watch_queue(*panel.engine, show::queue_picture(plan.queue_events)))
+            !watch_queue(panel.base(), show::queue_picture(plan.queue_events)))
             throw_option_error("--queue", "the " + std::string(to_string(options.engine)) +
                                               " engine has no event queue");
         panel.time_driven = time_driven;
         panel.title = std::move(title);
-        panel.initial_energy = panel.engine->measurements().kinetic_energy;
+        panel.initial_energy = panel.base().measurements().kinetic_energy;
         panels_.push_back(std::move(panel));
     };
     const OverlayLevel level = plan.render.overlays;
@@ -146,19 +153,31 @@ SimFrame FrameSource::frame(std::int64_t k) {
     out.moved = out.sim_frame != last_sim_frame_;
     last_sim_frame_ = out.sim_frame;
     out.panels.reserve(panels_.size());
+    // The camera turns with the moving picture (a card or a hold keeps it where it is).
+    const double video_seconds = static_cast<double>(out.sim_frame) / plan_.fps;
     for (Panel& panel : panels_) {
         // The time-driven engine takes the whole steps of dt up to the frame time and shows the
         // latest (TimeEngine::advance_to): every caller gets the same state at the same step.
-        panel.engine->advance_to(std::max(out.time, panel.engine->time()));
-        out.panels.push_back(describe(panel));
+        EngineBase& engine = panel.base();
+        engine.advance_to(std::max(out.time, engine.time()));
+        out.panels.push_back(describe(panel, video_seconds));
     }
     return out;
 }
 
-PanelFrame FrameSource::describe(const Panel& panel) const {
+PanelFrame FrameSource::describe(const Panel& panel, double video_seconds) const {
     PanelFrame out;
-    out.snapshot = panel.engine->snapshot();
-    const Measurements m = panel.engine->measurements();
+    if (panel.sphere_engine) {
+        show::ProjectedPanel projected =
+            show::project(panel.sphere_engine->snapshot(),
+                          show::camera_at(plan_.camera, video_seconds, plan_.slab));
+        out.snapshot = std::move(projected.screen);
+        out.view = std::move(projected.view);
+        out.spheres = true;
+    } else {
+        out.snapshot = panel.engine->snapshot();
+    }
+    const Measurements m = panel.base().measurements();
     const double drift = relative_drift(m.kinetic_energy, panel.initial_energy);
     out.title = panel.title;
     out.drift = {out.snapshot.time, drift};
@@ -174,7 +193,7 @@ PanelFrame FrameSource::describe(const Panel& panel) const {
 
 std::vector<Measurements> FrameSource::measurements() const {
     std::vector<Measurements> out;
-    for (const Panel& panel : panels_) out.push_back(panel.engine->measurements());
+    for (const Panel& panel : panels_) out.push_back(panel.base().measurements());
     return out;
 }
 
@@ -215,6 +234,7 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
         const PanelFrame& panel = frame.panels[i];
         render::PanelContent& out = content_.panels[i];
         out.snapshot = &panel.snapshot;
+        out.spheres = panel.spheres ? &panel.view : nullptr;
         out.title = panel.title;
         out.counters = panel.words.counters;
         out.figures = panel.words.figures;
@@ -296,14 +316,14 @@ namespace {
 class CollisionProgram final : public FrameProgram {
   public:
     CollisionProgram(const Scene& scene, const RenderPlan& plan, render::Backend backend,
-                     const JobHooks& hooks, PipelineResult& result)
+                     const JobHooks& hooks, PipelineResult& result, const SphereScene* spheres)
         : plan_(plan),
           interrupts_(hooks.interrupts),
           result_(result),
           renderer_(plan.render, backend, hooks.notice),
           composer_(plan),
           simulation_(scene, plan,
-                      hooks.interrupts != nullptr ? &hooks.interrupts->flag() : nullptr) {}
+                      hooks.interrupts != nullptr ? &hooks.interrupts->flag() : nullptr, spheres) {}
 
     double frame(std::int64_t /*k*/, FrameUse use, Image& image) override {
         std::optional<SimFrame> frame = simulation_.next();
@@ -373,7 +393,7 @@ class CollisionProgram final : public FrameProgram {
 
 PipelineResult run_render(const Scene& scene, const RenderPlan& plan, const JobHooks& hooks,
                           io::OutputFile* layout_file, const SubtitleOutput& subtitles,
-                          const ChapterOutput& chapters) {
+                          const ChapterOutput& chapters, const SphereScene* spheres) {
     check_captions_fit(scene, plan);
     VideoJob job;
     job.output.path = plan.output;
@@ -403,7 +423,7 @@ PipelineResult run_render(const Scene& scene, const RenderPlan& plan, const JobH
     const JobResult written = run_video_job(
         job,
         [&](render::Backend backend) {
-            return std::make_unique<CollisionProgram>(scene, plan, backend, hooks, result);
+            return std::make_unique<CollisionProgram>(scene, plan, backend, hooks, result, spheres);
         },
         job_hooks);
     if (layout_file != nullptr) layout_file->commit();

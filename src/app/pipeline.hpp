@@ -21,8 +21,10 @@
 #include "collide/io/file.hpp"
 #include "collide/render/renderer.hpp"
 #include "collide/scene.hpp"
+#include "collide/scene3.hpp"
 #include "collide/show/collision.hpp"
 #include "collide/show/failure_marks.hpp"
+#include "collide/show/sphere_camera.hpp"
 #include "collide/sim/engine.hpp"
 #include "collide/snapshot.hpp"
 #include "interrupt.hpp"
@@ -34,7 +36,11 @@ namespace collide::app {
 
 /// One simulation's state at a frame time, with its on-screen figures.
 struct PanelFrame {
+    /// The engine's discs; for a 3D scene the discs standing in for its spheres on the screen
+    /// (show::project), and `view` the spheres themselves.
     Snapshot snapshot;
+    bool spheres = false;  ///< a 3D scene: `view` is drawn
+    SphereView view;
     std::string title;
     render::DriftPoint drift;  ///< (KE - KE0) / KE0 at this frame
     bool time_driven = false;
@@ -59,8 +65,10 @@ class FrameSource {
     /// Builds the engines (time-driven and/or event-driven per plan.mode). Throws Error(input)
     /// for engine options make_engine rejects. Once `stop` is set (nullptr: never), frame()
     /// throws Error(runtime) within a few thousand events, however far its frame time is.
-    FrameSource(const Scene& scene, const RenderPlan& plan,
-                const std::atomic<bool>* stop = nullptr);
+    /// `spheres` (nullptr: none): a 3D scene, run instead of `scene` (which then only stands in
+    /// for it: show::stand_in_scene) and seen through plan.camera.
+    FrameSource(const Scene& scene, const RenderPlan& plan, const std::atomic<bool>* stop = nullptr,
+                const SphereScene* spheres = nullptr);
     /// Advances every engine to the simulation time video frame k shows (plan.timeline, k
     /// increasing) and describes the frame.
     [[nodiscard]] SimFrame frame(std::int64_t k);
@@ -69,12 +77,16 @@ class FrameSource {
 
   private:
     struct Panel {
-        std::unique_ptr<Engine> engine;
+        std::unique_ptr<Engine> engine;               ///< discs
+        std::unique_ptr<SphereEngine> sphere_engine;  ///< or spheres
+        [[nodiscard]] EngineBase& base() const {
+            return engine ? static_cast<EngineBase&>(*engine) : *sphere_engine;
+        }
         bool time_driven = false;
         std::string title;
         double initial_energy = 0.0;
     };
-    [[nodiscard]] PanelFrame describe(const Panel& panel) const;
+    [[nodiscard]] PanelFrame describe(const Panel& panel, double video_seconds) const;
 
     const RenderPlan& plan_;
     std::vector<Panel> panels_;
@@ -125,8 +137,11 @@ struct PipelineResult {
 /// sidecar as it says; the sidecar too appears only with the video.
 /// `chapters`: the timeline's chapters (show::timeline_chapters) go into the MP4, a chapters
 /// file and/or a slide folder as it says, likewise only with the video.
+/// `spheres` (nullptr: none): a 3D scene drawn as spheres, `scene` its stand-in
+/// (show::stand_in_scene).
 PipelineResult run_render(const Scene& scene, const RenderPlan& plan, const JobHooks& hooks,
                           io::OutputFile* layout_file = nullptr,
-                          const SubtitleOutput& subtitles = {}, const ChapterOutput& chapters = {});
+                          const SubtitleOutput& subtitles = {}, const ChapterOutput& chapters = {},
+                          const SphereScene* spheres = nullptr);
 
 }  // namespace collide::app

@@ -370,6 +370,12 @@ RenderMode parse_render_mode(std::string_view text, std::string_view option) {
     return parse_named(text, option, names);
 }
 
+show::CameraMotion parse_camera_motion(std::string_view text, std::string_view option) {
+    static constexpr std::array<NamedValue<show::CameraMotion>, 2> names{
+        {{"fixed", show::CameraMotion::fixed}, {"orbit", show::CameraMotion::orbit}}};
+    return parse_named(text, option, names);
+}
+
 QualityPreset quality_preset(std::string_view letter, std::string_view option) {
     if (letter == "l") return {854, 480, 15};
     if (letter == "m") return {1280, 720, 30};
@@ -477,6 +483,11 @@ FrameClock still_clock(double at, double speed, int fps, std::string_view option
 RenderPlan plan_render(const RenderRequest& request, const Scene& scene) {
     RenderPlan plan;
     plan.mode = parse_render_mode(request.mode);
+    plan.camera = parse_camera_motion(request.camera);
+    if (request.slab) {
+        require_positive(*request.slab, "--slab", "thickness in box units");
+        plan.slab = *request.slab;
+    }
     const QualityPreset preset =
         request.quality ? quality_preset(*request.quality) : QualityPreset{};
     const FrameSize size =

@@ -15,6 +15,7 @@
 #include "collide/render/renderer.hpp"
 #include "collide/scene.hpp"
 #include "collide/show/collision.hpp"
+#include "collide/show/sphere_camera.hpp"
 #include "collide/sim/engine.hpp"
 #include "collide/video/video_writer.hpp"
 
@@ -30,6 +31,10 @@ enum class RenderMode {
 /// "both" / "event" / "time"; throws Error(input) naming `option` otherwise.
 [[nodiscard]] RenderMode parse_render_mode(std::string_view text,
                                            std::string_view option = "--mode");
+
+/// "fixed" / "orbit" (`--camera`, 3D scenes); throws Error(input) naming `option` otherwise.
+[[nodiscard]] show::CameraMotion parse_camera_motion(std::string_view text,
+                                                     std::string_view option = "--camera");
 
 /// A frame size and rate preset, as in manim's -ql/-qm/-qh/-qk.
 struct QualityPreset {
@@ -117,6 +122,8 @@ struct RenderRequest {
     std::string scene;                     ///< file or built-in name
     std::optional<std::string> output;     ///< -o
     std::string mode = "both";             ///< --mode
+    std::string camera = "fixed";          ///< --camera (3D scenes): fixed or orbit
+    std::optional<double> slab;            ///< --slab W (3D scenes): a slice W box units thick
     std::optional<std::string> quality;    ///< -q
     std::optional<std::string> size;       ///< --size WxH
     std::optional<int> fps;                ///< --fps
@@ -199,6 +206,10 @@ struct RenderPlan {
     /// --slow-motion: speed.speed is the chosen pace divided by this (1: none). The physics (the
     /// default dt) follows the pace before the slow motion.
     double slow_motion = 1.0;
+    /// --camera: how a 3D scene is seen (a 2D scene ignores it).
+    show::CameraMotion camera = show::CameraMotion::fixed;
+    /// --slab: the thickness of the slice of spheres shown, box units (0: every sphere).
+    double slab = 0.0;
 };
 
 /// Default output directory for derived paths.

@@ -197,17 +197,22 @@ RunShape render_run_shape(const RenderPlan& plan) {
 }
 
 void check_render_work(const RenderPlan& plan, const RenderRequest& request, const Scene& scene,
-                       const WorkLimits& limits) {
+                       const WorkLimits& limits, const SphereScene* spheres) {
     const RunShape run = render_run_shape(plan);
-    const WorkEstimate work = estimate_work(scene, run);
+    const WorkEstimate work =
+        spheres != nullptr ? estimate_work(*spheres, run) : estimate_work(scene, run);
     const Culprits who = render_culprits(plan, request, scene);
     check_finishable(run, work, who);
     if (request.no_limits) return;
     const WorkExcess excess = first_excess(work, limits);
     if (excess.what.empty()) return;
-    refuse_excess(scene, run, excess, who,
-                  fmt::format("give --at <= {:.3g}, or a larger --speed",
-                              run.span * excess.fitting_fraction()));
+    const std::string instead = fmt::format("give --at <= {:.3g}, or a larger --speed",
+                                            run.span * excess.fitting_fraction());
+    if (spheres != nullptr) {
+        refuse_excess(*spheres, run, excess, who, instead);
+    } else {
+        refuse_excess(scene, run, excess, who, instead);
+    }
 }
 
 void check_scene_hints(const Scene& scene, const WorkLimits& limits) {

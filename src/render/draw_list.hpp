@@ -20,6 +20,24 @@ struct DiscInstance {
 };
 static_assert(sizeof(DiscInstance) == 20);
 
+/// The vertex layout of shaders/sphere.vert: one sphere impostor (24 bytes).
+struct SphereInstance {
+    float x, y;          ///< centre, frame pixels
+    float radius;        ///< pixels
+    float depth;         ///< the centre's depth, 0 (near) .. 1 (far)
+    float radius_depth;  ///< the radius in depth units
+    Rgba8 color;
+};
+static_assert(sizeof(SphereInstance) == 24);
+
+/// How one panel's spheres are lit (SphereView's light, in the painter's colours).
+struct SphereLight {
+    float x = -0.45F, y = 0.6F, z = 0.66F;  ///< towards the light, unit
+    float ambient = 0.3F;
+    float depth_cue = 0.5F;
+    Rgba8 cue_color;  ///< far spheres fade towards it
+};
+
 /// Text of one font: glyphs (OverlayBatch::glyphs) blended over everything after the readback.
 struct TextRun {
     const FontAtlas* font = nullptr;
@@ -27,7 +45,8 @@ struct TextRun {
 };
 
 /// Everything one frame draws, in drawing order: background (and whole-pixel fills cleared to
-/// `fill_color`), `under` triangles, discs (per group, scissored), `over` triangles, then text.
+/// `fill_color`), `under` triangles, spheres (per group, scissored, depth-tested), discs (per
+/// group, scissored), `over` triangles, then text.
 struct DrawList {
     Rgba8 background{22, 22, 28, 255};
     Rgba8 fill_color{34, 36, 46, 255};
@@ -39,6 +58,15 @@ struct DrawList {
         RectF clip;           ///< scissor rectangle of the group
     };
     std::vector<DiscGroup> disc_groups;
+    /// Spheres (3D panels), drawn after `under` and before the discs, with a depth test, far to
+    /// near per group.
+    std::vector<SphereInstance> spheres;
+    struct SphereGroup {
+        std::size_t end = 0;  ///< spheres [previous group's end, end)
+        RectF clip;           ///< scissor rectangle of the group
+        SphereLight light;
+    };
+    std::vector<SphereGroup> sphere_groups;
     OverlayBatch over;          ///< triangles over the discs (must hold no glyphs)
     std::vector<TextRun> text;  ///< blended last, run by run
 

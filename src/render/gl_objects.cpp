@@ -32,6 +32,12 @@ GlObject make_framebuffer(const GladGLContext& gl) {
     return {gl, name, [](const GladGLContext& g, GLuint n) { g.DeleteFramebuffers(1, &n); }};
 }
 
+GlObject make_renderbuffer(const GladGLContext& gl) {
+    GLuint name = 0;
+    gl.GenRenderbuffers(1, &name);
+    return {gl, name, [](const GladGLContext& g, GLuint n) { g.DeleteRenderbuffers(1, &n); }};
+}
+
 namespace {
 
 GlObject compile_shader(const GladGLContext& gl, GLenum type, const char* source,

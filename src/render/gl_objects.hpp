@@ -46,6 +46,7 @@ class GlObject {
 [[nodiscard]] GlObject make_vertex_array(const GladGLContext& gl);
 [[nodiscard]] GlObject make_texture(const GladGLContext& gl);
 [[nodiscard]] GlObject make_framebuffer(const GladGLContext& gl);
+[[nodiscard]] GlObject make_renderbuffer(const GladGLContext& gl);
 /// Compiles and links a program; throws collide::Error (runtime) with the GL info log, naming
 /// `what` (e.g. "disc shader").
 [[nodiscard]] GlObject make_program(const GladGLContext& gl, const char* vertex_source,

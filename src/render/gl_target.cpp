@@ -22,6 +22,8 @@ void DrawList::clear() {
     under.clear();
     discs.clear();
     disc_groups.clear();
+    spheres.clear();
+    sphere_groups.clear();
     over.clear();
     for (TextRun& run : text) run.glyphs.clear();
 }
@@ -133,6 +135,7 @@ void GlTarget::draw(const DrawList& list) {
     const auto under_count = static_cast<GLsizei>(list.under.vertices().size());
     if (under_count > 0) gl.DrawArrays(GL_TRIANGLES, 0, under_count);
 
+    submit_spheres(list, frame_w, frame_h);
     submit_discs(list, frame_w, frame_h);
 
     const auto over_count = static_cast<GLsizei>(list.over.vertices().size());
@@ -242,6 +245,81 @@ void GlTarget::submit_discs(const DrawList& list, float frame_w, float frame_h) 
         }
     }
     gl.Disable(GL_SCISSOR_TEST);
+}
+
+// The depth buffer and the sphere program, once: only a video with spheres needs them.
+void GlTarget::create_depth_buffer() {
+    depth_buffer_ = make_renderbuffer(gl);
+    gl.BindRenderbuffer(GL_RENDERBUFFER, depth_buffer_.get());
+    gl.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width_, height_);
+    gl.BindRenderbuffer(GL_RENDERBUFFER, 0);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
+    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                               depth_buffer_.get());
+    if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        throw_runtime_error("GL: the framebuffer with a depth buffer is incomplete");
+    }
+    sphere_program_ = make_program(gl, shaders::sphere_vert, shaders::sphere_frag, "sphere shader");
+    sphere_frame_size_ = gl.GetUniformLocation(sphere_program_.get(), "frame_size");
+    sphere_light_dir_ = gl.GetUniformLocation(sphere_program_.get(), "light_dir");
+    sphere_ambient_ = gl.GetUniformLocation(sphere_program_.get(), "ambient");
+    sphere_depth_cue_ = gl.GetUniformLocation(sphere_program_.get(), "depth_cue");
+    sphere_cue_color_ = gl.GetUniformLocation(sphere_program_.get(), "cue_color");
+    sphere_vertex_array_ = make_vertex_array(gl);
+    sphere_buffer_ = make_buffer(gl);
+    gl.BindVertexArray(sphere_vertex_array_.get());
+    gl.BindBuffer(GL_ARRAY_BUFFER, sphere_buffer_.get());
+    constexpr auto stride = static_cast<GLsizei>(sizeof(SphereInstance));
+    const auto at = [](std::size_t offset) { return reinterpret_cast<const void*>(offset); };
+    gl.VertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, stride, at(offsetof(SphereInstance, x)));
+    gl.VertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, stride, at(offsetof(SphereInstance, radius)));
+    gl.VertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride, at(offsetof(SphereInstance, depth)));
+    gl.VertexAttribPointer(3, 1, GL_FLOAT, GL_FALSE, stride,
+                           at(offsetof(SphereInstance, radius_depth)));
+    gl.VertexAttribPointer(4, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
+                           at(offsetof(SphereInstance, color)));
+    for (GLuint location = 0; location < 5; ++location) gl.EnableVertexAttribArray(location);
+    gl.BindVertexArray(0);
+}
+
+// Per group (a panel), scissored to it, with a depth test: six vertices per sphere (a quad).
+void GlTarget::submit_spheres(const DrawList& list, float frame_w, float frame_h) {
+    if (list.spheres.empty()) return;
+    if (depth_buffer_.get() == 0) create_depth_buffer();
+    sphere_vertices_.clear();
+    for (const SphereInstance& s : list.spheres)
+        sphere_vertices_.insert(sphere_vertices_.end(), vertices_per_disc, s);
+    gl.UseProgram(sphere_program_.get());
+    gl.Uniform2f(sphere_frame_size_, frame_w, frame_h);
+    gl.BindVertexArray(sphere_vertex_array_.get());
+    gl.BindBuffer(GL_ARRAY_BUFFER, sphere_buffer_.get());
+    gl.BufferData(GL_ARRAY_BUFFER,
+                  static_cast<GLsizeiptr>(sphere_vertices_.size() * sizeof(SphereInstance)),
+                  sphere_vertices_.data(), GL_STREAM_DRAW);
+    gl.DepthMask(GL_TRUE);
+    gl.ClearDepth(1.0);
+    gl.Clear(GL_DEPTH_BUFFER_BIT);
+    gl.Enable(GL_DEPTH_TEST);
+    gl.DepthFunc(GL_LESS);
+    gl.Enable(GL_SCISSOR_TEST);
+    std::size_t first = 0;
+    for (const DrawList::SphereGroup& group : list.sphere_groups) {
+        const std::size_t end = std::min(group.end, list.spheres.size());
+        if (end > first) {
+            const SphereLight& l = group.light;
+            gl.Uniform3f(sphere_light_dir_, l.x, l.y, l.z);
+            gl.Uniform1f(sphere_ambient_, l.ambient);
+            gl.Uniform1f(sphere_depth_cue_, l.depth_cue);
+            gl.Uniform3f(sphere_cue_color_, l.cue_color.r / 255.0F, l.cue_color.g / 255.0F,
+                         l.cue_color.b / 255.0F);
+            scissor_to(group.clip);
+            gl.DrawArrays(GL_TRIANGLES, static_cast<GLint>(first * vertices_per_disc),
+                          static_cast<GLsizei>((end - first) * vertices_per_disc));
+        }
+        first = std::max(first, end);
+    }
+    gl.Disable(GL_SCISSOR_TEST);
+    gl.Disable(GL_DEPTH_TEST);
 }
 
 // Whole pixels covering r (window coordinates, which are also the colour texture's).

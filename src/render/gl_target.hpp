@@ -67,6 +67,8 @@ class GlTarget {
     void build_disc_vertices(const DrawList& list);
     [[nodiscard]] bool fits_point_sprite(const DiscInstance& disc) const noexcept;
     void submit_discs(const DrawList& list, float frame_w, float frame_h);
+    void create_depth_buffer();
+    void submit_spheres(const DrawList& list, float frame_w, float frame_h);
     static PixelRect pixels_covering(RectF r);
     void scissor_to(RectF r);
 
@@ -83,6 +85,18 @@ class GlTarget {
     GlObject disc_buffer_;
     GlObject overlay_vertex_array_;
     GlObject overlay_buffer_;
+    // Spheres (3D panels): their program, vertices and the depth buffer, made at the first frame
+    // that has spheres (a 2D video never allocates a depth buffer).
+    GlObject sphere_program_;
+    GlObject sphere_vertex_array_;
+    GlObject sphere_buffer_;
+    GlObject depth_buffer_;
+    GLint sphere_frame_size_ = -1;
+    GLint sphere_light_dir_ = -1;
+    GLint sphere_ambient_ = -1;
+    GLint sphere_depth_cue_ = -1;
+    GLint sphere_cue_color_ = -1;
+    std::vector<SphereInstance> sphere_vertices_;
     GLint disc_frame_size_ = -1;
     GLint disc_as_points_ = -1;
     GLint overlay_frame_size_ = -1;

@@ -15,6 +15,20 @@ namespace {
 constexpr Rgb8 untagged_color{120, 122, 135};
 constexpr Rgba8 escaped_ring_color{255, 70, 70, 255};
 
+/// A segment from a to b drawn as dashes about `dash` long, a dash at both ends.
+void add_dashed_segment(OverlayBatch& batch, PointF a, PointF b, float width, float dash,
+                        Rgba8 color) {
+    const float length = std::hypot(b.x - a.x, b.y - a.y);
+    if (!(length > 0.0F) || !(dash > 0.0F)) return;
+    int pieces = std::max(1, static_cast<int>(std::lround(length / dash)));
+    if (pieces % 2 == 0) ++pieces;
+    const auto at = [&](int k) {
+        const float t = static_cast<float>(k) / static_cast<float>(pieces);
+        return PointF{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+    };
+    for (int k = 0; k < pieces; k += 2) batch.add_line(at(k), at(k + 1), width, color);
+}
+
 }  // namespace
 
 Painter::Painter(const RenderConfig& config) : config_(config), palette_(palette(config.theme)) {
@@ -81,6 +95,14 @@ void Painter::paint_panel(std::size_t index, const PanelContent& content,
                           const PanelLayout& panel) {
     const Snapshot& snapshot = *content.snapshot;
     const Box& box = snapshot.box;
+    if (content.spheres != nullptr) {  // a 3D panel: the snapshot's box is the screen box
+        add_box_fill(panel.box);
+        add_spheres(*content.spheres, panel, box);
+        add_marks(index, content, panel);
+        list_.disc_groups.push_back({list_.discs.size(), panel.box});
+        add_panel_text(index, content, panel);
+        return;
+    }
     add_box(panel, box);
     colors_.resize(snapshot.discs.size());
     for (std::size_t k = 0; k < snapshot.discs.size(); ++k) {
@@ -149,21 +171,25 @@ void Painter::add_box_fill(RectF box) {
 // Discs
 
 Rgb8 Painter::disc_color(const DiscState& disc) const noexcept {
+    return particle_color(disc.color, norm(disc.velocity), disc.mass, disc.tagged);
+}
+
+Rgb8 Painter::particle_color(Rgb8 color, double speed, double mass, bool tagged) const noexcept {
     switch (config_.color_mode) {
         case ColorMode::scene:
-            return away_from_failure_color(disc.color);
+            return away_from_failure_color(color);
         case ColorMode::speed:
-            return shown_colormap((norm(disc.velocity) - config_.speed_min) /
+            return shown_colormap((speed - config_.speed_min) /
                                   (config_.speed_max - config_.speed_min));
         case ColorMode::mass: {
             if (!(config_.mass_max > config_.mass_min)) return shown_colormap(0.5);
-            return shown_colormap(std::log(disc.mass / config_.mass_min) /
+            return shown_colormap(std::log(mass / config_.mass_min) /
                                   std::log(config_.mass_max / config_.mass_min));
         }
         case ColorMode::tag:
-            return disc.tagged ? tagged_color : untagged_color;
+            return tagged ? tagged_color : untagged_color;
     }
-    return disc.color;
+    return color;
 }
 
 Rgb8 Painter::shown_colormap(double t) const noexcept {
@@ -217,6 +243,44 @@ void Painter::add_discs(const Snapshot& snapshot, const PanelLayout& panel) {
                 {p.x, p.y, radius + 3.0F, std::max(1.5F, radius * 0.25F), escaped_ring_color});
         }
     }
+}
+
+// Spheres, as the camera (show::SphereCamera) placed them: the box's edges that lie behind them
+// under, the ones in front over; the spheres far to near in their own group, lit in the shader.
+void Painter::add_spheres(const SphereView& view, const PanelLayout& panel, const Box& screen) {
+    const float edge_width = std::max(1.0F, style_.wall);
+    Rgba8 front = palette_.wall;
+    front.a = 150;  // over the spheres: present, but not hiding them
+    // A periodic box's edges are no walls: dashed, as in 2D (the legend says "edges wrap").
+    const bool dashed = screen.boundary == Boundary::periodic && style_.dashed_periodic_edges;
+    const Rgba8 back = dashed ? palette_.wrap_edge : palette_.wall;
+    if (dashed) front = Rgba8{back.r, back.g, back.b, 150};
+    for (const BoxEdge& e : view.edges) {
+        const PointF a = panel.to_pixels(e.from, screen);
+        const PointF b = panel.to_pixels(e.to, screen);
+        OverlayBatch& batch = e.front ? list_.over : list_.under;
+        const Rgba8 color = e.front ? front : back;
+        if (dashed) {
+            add_dashed_segment(batch, a, b, edge_width, edge_dash(edge_width), color);
+        } else {
+            batch.add_line(a, b, edge_width, color);
+        }
+    }
+    for (const SphereSprite& sphere : view.spheres) {
+        const PointF p = panel.to_pixels(sphere.at, screen);
+        const Rgb8 c = particle_color(sphere.color, sphere.speed, sphere.mass, sphere.tagged);
+        list_.spheres.push_back({p.x, p.y, static_cast<float>(sphere.radius * panel.scale),
+                                 static_cast<float>(sphere.depth),
+                                 static_cast<float>(sphere.radius_depth), with_alpha(c, 255)});
+    }
+    SphereLight light;
+    light.x = static_cast<float>(view.light_x);
+    light.y = static_cast<float>(view.light_y);
+    light.z = static_cast<float>(view.light_z);
+    light.ambient = static_cast<float>(view.ambient);
+    light.depth_cue = static_cast<float>(view.depth_cue);
+    light.cue_color = palette_.box_fill;
+    list_.sphere_groups.push_back({list_.spheres.size(), panel.box, light});
 }
 
 // A disc straddling an edge of a periodic box shows on both sides (scissored to the box).

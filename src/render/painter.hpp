@@ -123,6 +123,12 @@ class Painter {
     void add_periodic_images(const DiscState& disc, const PanelLayout& panel, const Box& box,
                              Rgba8 color, float style);
     [[nodiscard]] Rgb8 disc_color(const DiscState& disc) const noexcept;
+    /// The colour of a disc or sphere in the colour mode: from its scene colour, speed, mass
+    /// or tag.
+    [[nodiscard]] Rgb8 particle_color(Rgb8 color, double speed, double mass,
+                                      bool tagged) const noexcept;
+    /// A panel of spheres: the box's back edges, the lit spheres, the front edges.
+    void add_spheres(const SphereView& view, const PanelLayout& panel, const Box& screen);
 
     std::vector<TrailHistory> trails_;
     std::vector<Rgb8> colors_;        // per-frame scratch

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <string>
 
 namespace collide::render {
@@ -137,7 +138,8 @@ MaxwellBoltzmann::MaxwellBoltzmann(const Snapshot& snapshot, double heavy) {
     }
     if (discs == 0) return;
     const auto n = static_cast<double>(discs);
-    kT_ = kinetic / n;
+    dimension_ = snapshot.dimension == 3 ? 3 : 2;
+    kT_ = dimension_ == 3 ? 2.0 * kinetic / (3.0 * n) : kinetic / n;
     if (many_masses) {
         groups_.push_back({mass_sum / n, 1.0});
     } else {
@@ -149,6 +151,14 @@ MaxwellBoltzmann::MaxwellBoltzmann(const Snapshot& snapshot, double heavy) {
 double MaxwellBoltzmann::density(double speed) const noexcept {
     if (!(kT_ > 0.0) || speed < 0.0) return 0.0;
     double f = 0.0;
+    if (dimension_ == 3) {
+        for (const Group& g : groups_) {
+            const double a = g.mass / kT_;
+            f += g.weight * std::sqrt(2.0 / std::numbers::pi) * a * std::sqrt(a) * speed * speed *
+                 std::exp(-0.5 * a * speed * speed);
+        }
+        return f;
+    }
     for (const Group& g : groups_) {
         f += g.weight * (g.mass * speed / kT_) * std::exp(-g.mass * speed * speed / (2.0 * kT_));
     }

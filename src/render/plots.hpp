@@ -25,7 +25,9 @@ namespace collide::render {
 
 /// The 2D Maxwell-Boltzmann speed density of a snapshot's temperature, kT = mean kinetic
 /// energy per disc (k_B = 1): with several masses a mixture, one term per mass weighted by its
-/// share of discs: f(v) = sum_g (n_g/N) (m_g v / kT) exp(-m_g v^2 / 2kT).
+/// share of discs: f(v) = sum_g (n_g/N) (m_g v / kT) exp(-m_g v^2 / 2kT). For discs standing in
+/// for spheres (Snapshot::dimension 3) the 3D law: kT = 2/3 of the mean kinetic energy and
+/// f(v) = sum_g (n_g/N) sqrt(2/pi) (m_g/kT)^(3/2) v^2 exp(-m_g v^2 / 2kT).
 class MaxwellBoltzmann {
   public:
     /// Over the discs lighter than `heavy` (all finite-mass discs by default).
@@ -40,6 +42,7 @@ class MaxwellBoltzmann {
         double weight;  // share of discs with this mass
     };
     double kT_ = 0.0;
+    int dimension_ = 2;
     std::vector<Group> groups_;
 };
 

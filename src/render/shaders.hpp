@@ -7,4 +7,6 @@ extern const char* const overlay_vert;
 extern const char* const overlay_frag;
 extern const char* const present_vert;
 extern const char* const present_frag;
+extern const char* const sphere_vert;
+extern const char* const sphere_frag;
 }  // namespace collide::render::shaders

@@ -33,8 +33,8 @@ const Keys top_keys = {"title",    "description", "include",   "box",    "disc",
 const Keys box_keys = {"width", "height", "depth", "boundary"};
 const Keys sphere_keys = {"position", "velocity", "radius", "mass", "color", "tag"};
 const Keys fcc_keys = {"cells", "packing_fraction", "mass", "temperature", "color", "seed", "tag"};
-const Keys generate3_keys = {
-    "count", "packing_fraction", "radius", "mass", "temperature", "region", "color", "seed", "tag"};
+const Keys generate3_keys = {"count", "packing_fraction", "radius", "mass", "temperature",
+                             "speed", "region",           "color",  "seed", "tag"};
 const Keys disc_keys = {"position", "velocity", "radius", "mass", "color", "tag"};
 const Keys generate_keys = {"count", "packing_fraction", "radius", "mass", "temperature",
                             "speed", "region",           "color",  "seed", "tag"};
@@ -84,8 +84,8 @@ class TomlReader {
         check_keys(doc, "", top_keys);
         if (dimension(doc) == 3) {
             fail(*doc.get("dimension"), "dimension",
-                 "a 3D scene (spheres): `collide check`, `collide simulate` and `collide bench` "
-                 "read it; drawing spheres is not built yet");
+                 "a 3D scene (spheres): `collide check`, `simulate`, `render` and `thumbnail` "
+                 "read it; this reader takes discs only");
         }
         return read2(doc);
     }
@@ -169,7 +169,7 @@ class TomlReader {
                 }
             }
         }
-        if (const toml::node* n = doc.get("render")) read_render(*n);  // kept for the video
+        if (const toml::node* n = doc.get("render")) read_render(*n);
         if (const toml::node* n = doc.get("sphere")) read_spheres(*n, s);
         if (const toml::node* n = doc.get("fcc")) read_fcc(*n, s);
         if (const toml::node* n = doc.get("generate")) read_sphere_generators(*n, s);
@@ -177,6 +177,8 @@ class TomlReader {
             throw_scene_error(file_, 0, "sphere",
                               "a 3D scene needs spheres: [[sphere]], [[fcc]] or [[generate]]");
         }
+        s.render = std::move(scene_.render);
+        if (speed_colored_ && !s.render.color_mode) s.render.color_mode = ColorMode::speed;
         return s;
     }
 
@@ -349,6 +351,9 @@ class TomlReader {
             if (const toml::node* v = t.get("mass")) g.mass = positive(*v, key("mass"));
             if (const toml::node* v = t.get("temperature"))
                 g.temperature = number(*v, key("temperature"));
+            if (const toml::node* v = t.get("speed")) g.speed = number(*v, key("speed"));
+            if (t.get("temperature") != nullptr && g.speed)
+                fail(*t.get("speed"), key("speed"), "give temperature or speed, not both");
             if (const toml::node* v = t.get("color")) g.color = rgb(*v, key("color"));
             if (const toml::node* v = t.get("seed"))
                 g.seed = static_cast<std::uint64_t>(integer(*v, key("seed"), 0));

@@ -178,7 +178,5 @@ TEST_CASE("collide simulate of a 3D scene reports kT (3 dof), Z, packing fractio
         run_collide("simulate \"" + path.string() + "\" --until 1e3 --engine time --dt 1e-6");
     CHECK(refused.exit_code == 2);
     CHECK(contains(refused.output, "256 spheres"));
-    const auto render = run_collide("thumbnail \"" + path.string() + "\" -o /dev/null");
-    CHECK(render.exit_code == 2);
-    CHECK(contains(render.output, "dimension: a 3D scene (spheres)"));
+    // Drawing it (thumbnail, render) is tested in test_render3d_cli.cpp.
 }

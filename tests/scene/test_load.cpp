@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
+#include <variant>
 
 #include "../support/input_error.hpp"
 #include "../support/temp_dir.hpp"
@@ -60,8 +62,9 @@ TEST_CASE("built-in library: the required scenes exist, each described and valid
     const std::vector<BuiltinScene> scenes = builtin_scenes(COLLIDE_ASSETS_DIR);
     std::vector<std::string> names;
     for (const BuiltinScene& s : scenes) names.push_back(s.name);
-    for (const char* required : {"gas", "brownian", "diffusion", "billiards", "newtons-cradle",
-                                 "maxwell-boltzmann", "tunnelling", "dense-fluid"}) {
+    for (const char* required :
+         {"gas", "brownian", "diffusion", "billiards", "newtons-cradle", "maxwell-boltzmann",
+          "tunnelling", "dense-fluid", "gas-3d", "alder-wainwright", "spheres-freeze"}) {
         CAPTURE(required);
         CHECK(std::find(names.begin(), names.end(), required) != names.end());
     }
@@ -69,7 +72,19 @@ TEST_CASE("built-in library: the required scenes exist, each described and valid
         CAPTURE(b.name);
         CHECK(!b.description.empty());
         CHECK(b.description.find('\n') == std::string::npos);
-        const Scene s = load_scene(b.name, COLLIDE_ASSETS_DIR);  // throws if invalid
+        const std::filesystem::path file =
+            std::filesystem::path(COLLIDE_ASSETS_DIR) / "scenes" / (b.name + ".toml");
+        std::ifstream in(file);
+        const std::string text{std::istreambuf_iterator<char>(in),
+                               std::istreambuf_iterator<char>()};
+        // Either dimension; throws if invalid.
+        const AnyScene any = parse_any_toml_scene(text, file.string(), file.parent_path());
+        if (const auto* spheres = std::get_if<SphereScene>(&any)) {
+            CHECK(!spheres->title.empty());
+            CHECK(!spheres->spheres.empty());
+            continue;
+        }
+        const Scene s = load_scene(b.name, COLLIDE_ASSETS_DIR);
         CHECK(s.name == b.name);
         CHECK(!s.title.empty());
         CHECK(!s.discs.empty());

@@ -45,6 +45,9 @@ struct SphereGenerateSpec {
     double radius = 0.05;           ///< > 0
     double mass = 1.0;
     double temperature = 1.0;
+    /// Every sphere at this speed in a random direction instead of Maxwell-Boltzmann velocities
+    /// (a gas far from equilibrium, to watch it relax); >= 0. Unset: the temperature's.
+    std::optional<double> speed;
     Vec3 region_min{0.0, 0.0, 0.0};  ///< region corners; default = the whole box
     std::optional<Vec3> region_max;  ///< unset => (width, height, depth)
     Rgb8 color{48, 96, 224};

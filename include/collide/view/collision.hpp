@@ -13,6 +13,7 @@
 #include "collide/render_options.hpp"
 #include "collide/snapshot.hpp"
 #include "collide/view/plots.hpp"
+#include "collide/view/spheres.hpp"
 
 namespace collide {
 
@@ -116,11 +117,15 @@ struct PanelContent {
         : snapshot(snapshot_), title(std::move(title_)), counters(std::move(counters_)) {}
 
     const Snapshot* snapshot = nullptr;  ///< not owned; must stay valid during render()
-    std::string title;                   ///< e.g. "Event-driven: priority queue of collisions"
-    std::vector<std::string> counters;   ///< full level: lines under the title ("collisions 1234")
-    std::vector<Figure> figures;         ///< lesson level: two or three, most important first
-    std::string compact_line;            ///< compact lesson form: the one line (failure count)
-    std::string note;                    ///< lesson level: a line under the figures (dt > frame)
+    /// A panel of spheres (3D scene): drawn instead of the snapshot's discs, which then stand in
+    /// for the spheres (projected positions, the spheres' speeds) and its box is the screen box
+    /// the camera sees. nullptr for discs. Not owned; must stay valid during render().
+    const SphereView* spheres = nullptr;
+    std::string title;                  ///< e.g. "Event-driven: priority queue of collisions"
+    std::vector<std::string> counters;  ///< full level: lines under the title ("collisions 1234")
+    std::vector<Figure> figures;        ///< lesson level: two or three, most important first
+    std::string compact_line;           ///< compact lesson form: the one line (failure count)
+    std::string note;                   ///< lesson level: a line under the figures (dt > frame)
     /// Lesson level, two panels: why this engine's work grows as it does, a line under the
     /// figures ("Each step tests all N^2/2 pairs").
     std::string how;

@@ -53,6 +53,19 @@ void thermal_velocities(std::vector<Sphere>& spheres, std::size_t first, double 
     for (std::size_t i = first; i < spheres.size(); ++i) spheres[i].velocity *= scale;
 }
 
+/// Every sphere first .. end at `speed` in a direction uniform over the sphere of directions.
+void same_speed(std::vector<Sphere>& spheres, std::size_t first, double speed, Rng& rng) {
+    for (std::size_t i = first; i < spheres.size(); ++i) {
+        Vec3 d{};
+        double length = 0.0;
+        while (!(length > 1e-12)) {  // a normal triple has an isotropic direction
+            d = {rng.normal(), rng.normal(), rng.normal()};
+            length = norm(d);
+        }
+        spheres[i].velocity = (speed / length) * d;
+    }
+}
+
 }  // namespace
 
 void generate_fcc(SphereScene& scene, const FccSpec& spec, const std::string& prefix) {
@@ -161,6 +174,8 @@ Region resolve_region(const Box3& box, const SphereGenerateSpec& spec, const std
 void generate_spheres(SphereScene& scene, const SphereGenerateSpec& spec,
                       const std::string& prefix) {
     check_common(prefix, spec.mass, spec.temperature);
+    if (spec.speed && !(*spec.speed >= 0.0 && std::isfinite(*spec.speed)))
+        fail(prefix, "speed", "must be finite and >= 0");
     if (!(spec.radius > 0.0 && std::isfinite(spec.radius)))
         fail(prefix, "radius", "must be finite and > 0");
     const Box3& box = scene.box;
@@ -277,7 +292,11 @@ void generate_spheres(SphereScene& scene, const SphereGenerateSpec& spec,
         scene.spheres.push_back(s);
         insert(scene.spheres.size() - 1);
     }
-    thermal_velocities(scene.spheres, first, spec.temperature, rng);
+    if (spec.speed) {
+        same_speed(scene.spheres, first, *spec.speed, rng);
+    } else {
+        thermal_velocities(scene.spheres, first, spec.temperature, rng);
+    }
 }
 
 }  // namespace collide
