@@ -26,6 +26,7 @@
 #include "pipeline.hpp"
 #include "progress.hpp"
 #include "render_plan.hpp"
+#include "replay_plan.hpp"
 #include "video_options.hpp"
 #include "work_limits.hpp"
 
@@ -48,6 +49,7 @@ struct CliValues {
     std::string overlays;
     std::string layout_json;
     std::string timeline_json;
+    std::string replay;
     bool no_intro = false;
     bool no_epilogue = false;
     bool trails = true;
@@ -68,6 +70,7 @@ struct CliValues {
     CLI::Option* overlays_opt = nullptr;
     CLI::Option* layout_json_opt = nullptr;
     CLI::Option* timeline_json_opt = nullptr;
+    CLI::Option* replay_opt = nullptr;
     CLI::Option* trails_opt = nullptr;
     CLI::Option* queue_opt = nullptr;
     CLI::Option* slow_motion_opt = nullptr;
@@ -124,6 +127,7 @@ RenderRequest request_of(const CliValues& v, bool still) {
     r.theme = if_given(v.video.theme_opt, v.video.theme);
     r.layout_json = if_given(v.layout_json_opt, v.layout_json);
     r.timeline_json = if_given(v.timeline_json_opt, v.timeline_json);
+    r.replay = if_given(v.replay_opt, v.replay);
     r.no_intro = v.no_intro;
     r.no_epilogue = v.no_epilogue;
     r.format = if_given(v.video.format_opt, v.video.format);
@@ -212,6 +216,9 @@ void add_shared_options(CLI::App& cmd, CliValues& v, bool video) {
 RenderPlan validated_plan(const RenderRequest& request, const Scene& scene) {
     RenderPlan plan = plan_render(request, scene);
     check_render_work(plan, request, scene);
+    // Within the limits: the plan again, with the failures it replays (they take simulating).
+    plan = plan_render(request, scene,
+                       [&](const RenderPlan& draft) { return find_replays(scene, draft); });
     // The default directory is ours to create; a user-given one must exist already.
     if (plan.default_output) std::filesystem::create_directories(plan.output.parent_path());
     const bool directory =
@@ -454,6 +461,11 @@ void add_render_command(CLI::App& root) {
                   "their own)");
     cmd->add_flag("--no-epilogue", values->no_epilogue,
                   "No summary card at the end: the last frame runs to the end of the video");
+    values->replay_opt = cmd->add_option(
+        "--replay", values->replay,
+        "Replay the time-driven panel's failures, zoomed in and slowly: none, first (the default "
+        "at the lesson level, when the scene fails) or all (each failed step it records, as long "
+        "as they fit)");
     values->timeline_json_opt = cmd->add_option(
         "--timeline-json", values->timeline_json,
         "Also write the video's timeline as JSON: its segments (card, run, hold, replay, "
