@@ -26,10 +26,9 @@ std::optional<CollisionRecord> matching_hit(const show::ReplayFailure& failure,
     double best_gap = std::numeric_limits<double>::infinity();
     for (const CollisionRecord& hit : hits) {
         if (hit.t < from || hit.t > to) continue;
-        const bool same =
-            wall ? hit.kind != CollisionKind::pair && hit.a == f.a
-                 : hit.kind == CollisionKind::pair && std::min(hit.a, hit.b) == f.a &&
-                       std::max(hit.a, hit.b) == f.b;
+        const bool same = wall ? hit.kind != CollisionKind::pair && hit.a == f.a
+                               : hit.kind == CollisionKind::pair && std::min(hit.a, hit.b) == f.a &&
+                                     std::max(hit.a, hit.b) == f.b;
         const double gap = std::abs(hit.t - failure.contact_time());
         if (same && gap < best_gap) {
             best = hit;

@@ -20,8 +20,7 @@ namespace collide::app {
 /// event-driven panel, its collision of the same discs at that moment. Empty for
 /// ReplayChoice::none or a scene that does not fail within plan.clock. Once `stop` is set
 /// (nullptr: never) throws Error(runtime) within a step or a few thousand events.
-[[nodiscard]] std::vector<show::ReplayFailure> find_replays(const Scene& scene,
-                                                            const RenderPlan& plan,
-                                                            const std::atomic<bool>* stop = nullptr);
+[[nodiscard]] std::vector<show::ReplayFailure> find_replays(
+    const Scene& scene, const RenderPlan& plan, const std::atomic<bool>* stop = nullptr);
 
 }  // namespace collide::app

@@ -8,8 +8,7 @@
 
 namespace collide::render {
 
-void LessonPainter::add_replay(const ReplayView& replay, const PanelLayout& panel,
-                               const Box& box) {
+void LessonPainter::add_replay(const ReplayView& replay, const PanelLayout& panel, const Box& box) {
     if (intro_) return;
     const float body = body_font_->pixel_height();
     const float stroke = std::max(2.0F, std::round(body / 7.0F));

@@ -26,11 +26,11 @@ bool through_wall(const ReplayFailure& failure) {
 /// disc that moved most (the one that jumped) where it was, the other placed relative to it.
 struct Geometry {
     bool swapped = false;  ///< the mover is the record's disc b
-    Vec2 a0, a1;  ///< the mover at step k and where its straight move took it
-    Vec2 b0, b1;  ///< the other disc likewise (a wall failure: the mover again)
+    Vec2 a0, a1;           ///< the mover at step k and where its straight move took it
+    Vec2 b0, b1;           ///< the other disc likewise (a wall failure: the mover again)
     double ra = 0.0;
     double rb = 0.0;
-    Vec2 where;  ///< the contact (pair) or the wall crossing
+    Vec2 where;             ///< the contact (pair) or the wall crossing
     double fraction = 0.0;  ///< the contact's share of the step, in [0, 1]
 };
 
@@ -122,10 +122,9 @@ ReplayView time_driven_view(const ReplayFailure& failure, const Geometry& g, con
     if (p.move >= g.fraction && p.move > 0.0) {
         view.ghosts.push_back({lerp(g.a0, g.a1, g.fraction), g.ra, false, true, o});
         if (!wall) view.ghosts.push_back({lerp(g.b0, g.b1, g.fraction), g.rb, false, true, o});
-        BoxLabel hit{g.where, wall ? fmt::format("wall t = {}, unseen",
-                                                 time_words(failure.contact_time()))
-                                   : fmt::format("hit t = {}, unseen",
-                                                 time_words(failure.contact_time()))};
+        BoxLabel hit{g.where,
+                     wall ? fmt::format("wall t = {}, unseen", time_words(failure.contact_time()))
+                          : fmt::format("hit t = {}, unseen", time_words(failure.contact_time()))};
         hit.failure = true;
         hit.side = side_across(move, g.where, view_centre);
         hit.opacity = o;
@@ -203,7 +202,8 @@ std::vector<TimelineReplay> replay_cues(const std::vector<ReplayFailure>& failur
 BoxZoom replay_target(const ReplayFailure& failure, const Box& box) {
     const Geometry g = geometry(failure, box);
     const double r = std::max(g.ra, through_wall(failure) ? g.ra : g.rb);
-    Vec2 low{std::min({g.a0.x, g.a1.x, g.b0.x, g.b1.x}), std::min({g.a0.y, g.a1.y, g.b0.y, g.b1.y})};
+    Vec2 low{std::min({g.a0.x, g.a1.x, g.b0.x, g.b1.x}),
+             std::min({g.a0.y, g.a1.y, g.b0.y, g.b1.y})};
     Vec2 high{std::max({g.a0.x, g.a1.x, g.b0.x, g.b1.x}),
               std::max({g.a0.y, g.a1.y, g.b0.y, g.b1.y})};
     low = low - Vec2{r, r};
@@ -225,9 +225,8 @@ ReplayFrame replay_frame(const ReplayFailure& failure, const Box& box, double se
     ReplayFrame frame;
     // Enlarging by equal factors each frame, the spot sliding to the middle as it grows.
     const double m = std::pow(target.magnification, p.zoom);
-    const double slide = target.magnification > 1.0
-                             ? (1.0 - 1.0 / m) / (1.0 - 1.0 / target.magnification)
-                             : 1.0;
+    const double slide =
+        target.magnification > 1.0 ? (1.0 - 1.0 / m) / (1.0 - 1.0 / target.magnification) : 1.0;
     const Vec2 middle{0.5 * box.width, 0.5 * box.height};
     frame.zoom.centre = lerp(middle, target.centre, slide);
     frame.zoom.magnification = m;
@@ -238,9 +237,8 @@ ReplayFrame replay_frame(const ReplayFailure& failure, const Box& box, double se
 
 const ReplayFailure* replay_at(const std::vector<ReplayFailure>& failures,
                                std::int64_t sim_frame) noexcept {
-    const auto it = std::find_if(failures.begin(), failures.end(), [&](const ReplayFailure& f) {
-        return f.sim_frame == sim_frame;
-    });
+    const auto it = std::find_if(failures.begin(), failures.end(),
+                                 [&](const ReplayFailure& f) { return f.sim_frame == sim_frame; });
     return it == failures.end() ? nullptr : &*it;
 }
 

@@ -74,7 +74,8 @@ TEST_CASE("a replay follows the first frame that shows its simulation frame, fro
         // The frame before shows simulation frame 15 running, for the first time.
         CHECK(timeline.sim_frame(s.first_frame - 1) == 15);
         CHECK(timeline.segment_at(s.first_frame - 1).moves);
-        for (std::int64_t k = s.first_frame; k < s.end_frame; ++k) CHECK(timeline.sim_frame(k) == 15);
+        for (std::int64_t k = s.first_frame; k < s.end_frame; ++k)
+            CHECK(timeline.sim_frame(k) == 15);
         CHECK(timeline.sim_frame(s.end_frame) == 16);  // then it resumes
     }
     CHECK(replays == 1);
@@ -131,7 +132,8 @@ TEST_CASE("replay frames: the ghosts at steps k and k + 1 are the engine's state
     CHECK_FALSE(has_ghost(start.time_driven, at_k1, false));
     CHECK(start.zoom.magnification > 1.0);
     // Held: both checks, the jump between them and where they touched.
-    const ReplayFrame held = replay_frame(failure, scene.box, 0.5 * (replay_slow_end + replay_hold_end));
+    const ReplayFrame held =
+        replay_frame(failure, scene.box, 0.5 * (replay_slow_end + replay_hold_end));
     CHECK(has_ghost(held.time_driven, at_k, false));
     CHECK(has_ghost(held.time_driven, at_k1, false));
     REQUIRE(!held.time_driven.lines.empty());
@@ -146,10 +148,12 @@ TEST_CASE("replay frames: the ghosts at steps k and k + 1 are the engine's state
     CHECK(std::abs(at_k.x - target.centre.x) < half);
     CHECK(std::abs(at_k1.x - target.centre.x) < half);
     // Halfway through the slow move the disc overlaps the other one: in the failure colour.
-    const double middle = replay_zoom_in + failure.step.contact / dt * (replay_slow_end - replay_zoom_in) + 0.05;
+    const double middle =
+        replay_zoom_in + failure.step.contact / dt * (replay_slow_end - replay_zoom_in) + 0.05;
     const ReplayFrame moving = replay_frame(failure, scene.box, middle);
     bool overlapping = false;
-    for (const GhostDisc& g : moving.time_driven.ghosts) overlapping = overlapping || (g.filled && g.failure);
+    for (const GhostDisc& g : moving.time_driven.ghosts)
+        overlapping = overlapping || (g.filled && g.failure);
     CHECK(overlapping);
     // The end: back to the whole box.
     const ReplayFrame end = replay_frame(failure, scene.box, replay_seconds);
@@ -170,8 +174,7 @@ TEST_CASE("replay words: the caption, the checks, and the event-driven predictio
     std::vector<std::string> time_words;
     for (const BoxLabel& l : held.time_driven.labels) time_words.push_back(l.text);
     CHECK(time_words.at(0) == "check t = 0.1");
-    CHECK(std::find(time_words.begin(), time_words.end(), "check t = 0.2") !=
-          time_words.end());
+    CHECK(std::find(time_words.begin(), time_words.end(), "check t = 0.2") != time_words.end());
     CHECK(std::find(time_words.begin(), time_words.end(), "hit t = 0.13, unseen") !=
           time_words.end());
     REQUIRE(!held.event_driven.labels.empty());

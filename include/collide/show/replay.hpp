@@ -9,7 +9,8 @@
 /// renderer only paints (BoxZoom, ReplayView).
 ///
 ///   seconds into the replay  0 ..... zoom_in ........... slow_end ......... hold_end ... length
-///                            zoom in, step k shown   the disc moves k -> k+1   all shown   zoom out
+///                            zoom in, step k shown   the disc moves k -> k+1   all shown   zoom
+///                            out
 
 #include <cstdint>
 #include <optional>
