@@ -213,12 +213,20 @@ void add_shared_options(CLI::App& cmd, CliValues& v, bool video) {
 }
 
 /// Everything that can be wrong with the request, found before any frame is drawn.
-RenderPlan validated_plan(const RenderRequest& request, const Scene& scene) {
+RenderPlan validated_plan(const RenderRequest& request, const Scene& scene,
+                          const InterruptGuard& interrupts) {
     RenderPlan plan = plan_render(request, scene);
     check_render_work(plan, request, scene);
-    // Within the limits: the plan again, with the failures it replays (they take simulating).
-    plan = plan_render(request, scene,
-                       [&](const RenderPlan& draft) { return find_replays(scene, draft); });
+    // Within the limits: the plan again, with the failures it replays (they take simulating,
+    // which a signal stops: then the signal is what ends the run).
+    plan = plan_render(request, scene, [&](const RenderPlan& draft) {
+        try {
+            return find_replays(scene, draft, &interrupts.flag());
+        } catch (const Error&) {
+            interrupts.throw_if_requested();
+            throw;
+        }
+    });
     // The default directory is ours to create; a user-given one must exist already.
     if (plan.default_output) std::filesystem::create_directories(plan.output.parent_path());
     const bool directory =
@@ -383,7 +391,7 @@ void run(const CliValues& values, bool still) {
     interrupts.throw_if_requested();
     const render::Backend backend = gl_backend_of(values);
     const RenderRequest request = request_of(values, still);
-    const RenderPlan plan = validated_plan(request, scene);
+    const RenderPlan plan = validated_plan(request, scene, interrupts);
     const SubtitleOutput subtitles = subtitle_output_of(
         values.video, {plan.output, plan.format, plan.kind == OutputKind::still, false});
     video::set_libav_verbose(values.video.verbose);
