@@ -197,7 +197,8 @@ TEST_CASE("render --timeline-json: every segment in order, the clock frozen outs
     CHECK(still.exit_code == 2);
 }
 
-TEST_CASE("render --replay: tunnelling replays its first failure, frozen; none replays nothing") {
+TEST_CASE(
+    "render --replay: tunnelling replays its first failure, frozen, and none replays nothing") {
     TempDir dir("replay");
     const fs::path json = dir.path / "t.json";
     const std::string common = "render tunnelling --size 480x270 --fps 10 --progress none -o " +

@@ -76,8 +76,7 @@ TEST_CASE("the replayed step is the first failure, shown after the first frame s
         CHECK(segment.sim_frame == failure.sim_frame);
         CHECK(plan.timeline.sim_frame(segment.first_frame - 1) == failure.sim_frame);
         CHECK(plan.timeline.sim_frame(segment.end_frame - 1) == failure.sim_frame);
-        CHECK(segment.frames() ==
-              static_cast<std::int64_t>(show::replay_seconds * plan.fps + 0.5));
+        CHECK(segment.frames() == static_cast<std::int64_t>(show::replay_seconds * plan.fps + 0.5));
     }
     CHECK(replays == 1);
     const double after_step = static_cast<double>(failure.step.step + 1) * 0.1;
@@ -85,7 +84,7 @@ TEST_CASE("the replayed step is the first failure, shown after the first frame s
     CHECK(plan.clock.time(failure.sim_frame - 1) < after_step - 1e-9);
 }
 
-TEST_CASE("--replay all replays each failed step; none and a still replay nothing") {
+TEST_CASE("--replay all replays each failed step, none replays nothing, a bad value throws") {
     const Scene scene = tunnel_scene();
     RenderRequest request = tunnel_request();
     request.replay = "all";
