@@ -36,6 +36,13 @@ enum class Theme {
 /// Size of a lesson-level plot.
 enum class PlotSize { none, small, large };
 
+/// Which failures of the time-driven panel a lesson replays (zoomed in, slowly).
+enum class ReplayChoice {
+    none,   ///< no replay
+    first,  ///< the default: the first failure, if the video shows one
+    all,    ///< every failure the engine records (one per step, a few), as long as they fit
+};
+
 /// The names, in the order messages list them.
 inline constexpr std::array<NamedValue<ColorMode>, 4> color_mode_names{{{"scene", ColorMode::scene},
                                                                         {"speed", ColorMode::speed},
@@ -47,6 +54,8 @@ inline constexpr std::array<NamedValue<Theme>, 2> theme_names{
     {{"dark", Theme::dark}, {"light", Theme::light}}};
 inline constexpr std::array<NamedValue<PlotSize>, 3> plot_size_names{
     {{"none", PlotSize::none}, {"small", PlotSize::small}, {"large", PlotSize::large}}};
+inline constexpr std::array<NamedValue<ReplayChoice>, 3> replay_choice_names{
+    {{"none", ReplayChoice::none}, {"first", ReplayChoice::first}, {"all", ReplayChoice::all}}};
 
 /// "scene" / "speed" / "mass" / "tag".
 [[nodiscard]] constexpr std::string_view color_mode_name(ColorMode mode) noexcept {
@@ -80,6 +89,16 @@ inline constexpr std::array<NamedValue<PlotSize>, 3> plot_size_names{
 /// "none" / "small" / "large".
 [[nodiscard]] constexpr std::string_view plot_size_name(PlotSize size) noexcept {
     return name_of(size, plot_size_names, "none");
+}
+
+/// "none" / "first" / "all".
+[[nodiscard]] constexpr std::string_view replay_choice_name(ReplayChoice choice) noexcept {
+    return name_of(choice, replay_choice_names, "first");
+}
+/// Parses a replay choice; throws collide::Error (input) naming `field` otherwise.
+[[nodiscard]] inline ReplayChoice parse_replay_choice(std::string_view text,
+                                                      std::string_view field = "replay") {
+    return parse_named(text, field, replay_choice_names, "a replay choice");
 }
 
 }  // namespace collide

@@ -44,9 +44,10 @@ struct RenderHints {
     std::vector<CaptionCue> captions;    ///< scripted captions, `at` increasing
     /// "none", "small" or "large"; unset (or "auto" in a file): where it teaches
     std::optional<PlotSize> histogram;
-    std::optional<double> duration;  ///< seconds of video
-    std::optional<double> speed;     ///< simulation time units per second of video
-    std::optional<double> dt;        ///< time-driven quantum
+    std::optional<double> duration;      ///< seconds of video
+    std::optional<double> speed;         ///< simulation time units per second of video
+    std::optional<double> dt;            ///< time-driven quantum
+    std::optional<ReplayChoice> replay;  ///< "none", "first" or "all": failures replayed
     /// Where each numeric hint was written, "file:line: render.dt", so that a hint the CLI
     /// refuses (too long, too much work) is named where the user can fix it; empty = unknown.
     std::string duration_at;

@@ -28,6 +28,7 @@
 #include "pipeline.hpp"
 #include "progress.hpp"
 #include "render_plan.hpp"
+#include "replay_plan.hpp"
 #include "subtitle_options.hpp"
 #include "video_options.hpp"
 #include "work_limits.hpp"
@@ -54,6 +55,7 @@ struct CliValues {
     std::string overlays;
     std::string layout_json;
     std::string timeline_json;
+    std::string replay;
     bool no_intro = false;
     bool no_epilogue = false;
     bool trails = true;
@@ -74,6 +76,7 @@ struct CliValues {
     CLI::Option* overlays_opt = nullptr;
     CLI::Option* layout_json_opt = nullptr;
     CLI::Option* timeline_json_opt = nullptr;
+    CLI::Option* replay_opt = nullptr;
     CLI::Option* trails_opt = nullptr;
     CLI::Option* queue_opt = nullptr;
     CLI::Option* slow_motion_opt = nullptr;
@@ -132,6 +135,7 @@ RenderRequest request_of(const CliValues& v, bool still) {
     r.theme = if_given(v.video.theme_opt, v.video.theme);
     r.layout_json = if_given(v.layout_json_opt, v.layout_json);
     r.timeline_json = if_given(v.timeline_json_opt, v.timeline_json);
+    r.replay = if_given(v.replay_opt, v.replay);
     r.no_intro = v.no_intro;
     r.no_epilogue = v.no_epilogue;
     r.format = if_given(v.video.format_opt, v.video.format);
@@ -225,9 +229,22 @@ void add_shared_options(CLI::App& cmd, CliValues& v, bool video) {
 
 /// Everything that can be wrong with the request, found before any frame is drawn.
 RenderPlan validated_plan(const RenderRequest& request, const Scene& scene,
-                          const SphereScene* spheres) {
+                          const SphereScene* spheres, const InterruptGuard& interrupts) {
     RenderPlan plan = plan_render(request, scene);
     check_render_work(plan, request, scene, {}, spheres);
+    // Within the limits: the plan again, with the failures it replays (they take simulating,
+    // which a signal stops: then the signal is what ends the run). Spheres have no replay yet:
+    // `scene` is only their flat stand-in, whose physics is not the video's.
+    if (spheres == nullptr) {
+        plan = plan_render(request, scene, [&](const RenderPlan& draft) {
+            try {
+                return find_replays(scene, draft, &interrupts.flag());
+            } catch (const Error&) {
+                interrupts.throw_if_requested();
+                throw;
+            }
+        });
+    }
     // The default directory is ours to create; a user-given one must exist already.
     if (plan.default_output) std::filesystem::create_directories(plan.output.parent_path());
     const bool directory =
@@ -402,7 +419,7 @@ void run(const CliValues& values, bool still) {
     interrupts.throw_if_requested();
     const render::Backend backend = gl_backend_of(values);
     const RenderRequest request = request_of(values, still);
-    const RenderPlan plan = validated_plan(request, scene, spheres);
+    const RenderPlan plan = validated_plan(request, scene, spheres, interrupts);
     const SubtitleOutput subtitles = subtitle_output_of(
         values.video, {plan.output, plan.format, plan.kind == OutputKind::still, false});
     const ChapterOutput chapters = chapter_output_of(
@@ -484,6 +501,11 @@ void add_render_command(CLI::App& root) {
                   "their own)");
     cmd->add_flag("--no-epilogue", values->no_epilogue,
                   "No summary card at the end: the last frame runs to the end of the video");
+    values->replay_opt = cmd->add_option(
+        "--replay", values->replay,
+        "Replay the time-driven panel's failures, zoomed in and slowly: none, first (the default "
+        "at the lesson level, when the scene fails) or all (each failed step it records, as long "
+        "as they fit)");
     values->timeline_json_opt = cmd->add_option(
         "--timeline-json", values->timeline_json,
         "Also write the video's timeline as JSON: its segments (card, run, hold, replay, "

@@ -15,6 +15,7 @@
 #include "collide/show/chapters.hpp"
 #include "collide/show/collision_summary.hpp"
 #include "collide/show/plot_words.hpp"
+#include "collide/show/replay.hpp"
 #include "collide/show/subtitles.hpp"
 
 namespace collide::app {
@@ -230,6 +231,16 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
             marks_.emplace_back(show::mark_budget, i == 0);
     }
     content_.energy_drift.resize(frame.panels.size());
+    // A replay: both panels zoom onto the failure's spot, each with its own marks (collide/show).
+    const show::ReplayFailure* replay = segment.kind == show::SegmentKind::replay
+                                            ? show::replay_at(plan_.replays, segment.sim_frame)
+                                            : nullptr;
+    std::optional<show::ReplayFrame> replay_frame;
+    if (replay != nullptr && !frame.panels.empty()) {
+        replay_frame =
+            show::replay_frame(*replay, frame.panels[0].snapshot.box,
+                               static_cast<double>(frame.index - segment.first_frame) / plan_.fps);
+    }
     for (std::size_t i = 0; i < frame.panels.size(); ++i) {
         const PanelFrame& panel = frame.panels[i];
         render::PanelContent& out = content_.panels[i];
@@ -264,6 +275,10 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
             out.mark_words = marks_[i].words();
             out.mark_line = show::mark_line(panel.time_driven, i == 0, panel.snapshot.box);
         }
+        out.zoom = replay_frame ? replay_frame->zoom : BoxZoom{};
+        out.replay = !replay_frame       ? ReplayView{}
+                     : panel.time_driven ? replay_frame->time_driven
+                                         : replay_frame->event_driven;
         if (frame.moved || content_.energy_drift[i].empty())
             content_.energy_drift[i].push_back(panel.drift);
         drifts_.resize(frame.panels.size());

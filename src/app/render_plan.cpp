@@ -278,6 +278,33 @@ LessonPlan lesson_plan(const RenderRequest& request, const Scene& scene, const R
     return lesson;
 }
 
+/// Which failures are replayed: --replay, else the scene's hint, else the first. None where the
+/// video cannot show one: no time-driven panel, or not the lesson level (the replay's words and
+/// marks are the lesson's).
+ReplayChoice replay_choice(const RenderRequest& request, const Scene& scene,
+                           const RenderPlan& plan) {
+    ReplayChoice choice = scene.render.replay.value_or(ReplayChoice::first);
+    if (request.replay) choice = parse_replay_choice(*request.replay, "--replay");
+    if (plan.mode == RenderMode::event || plan.render.overlays != render::OverlayLevel::lesson)
+        return ReplayChoice::none;
+    return choice;
+}
+
+/// The simulation frames a video of `video`'s frames shows on `timeline`.
+FrameClock simulation_clock(const FrameClock& video, const show::Timeline& timeline) {
+    FrameClock simulation = video;
+    simulation.count = timeline.sim_frame_count();
+    simulation.last_time = static_cast<double>(simulation.count - 1) * simulation.interval;
+    return simulation;
+}
+
+bool has_replay(const show::Timeline& timeline, std::int64_t sim_frame) {
+    return std::any_of(
+        timeline.segments.begin(), timeline.segments.end(), [&](const show::Segment& segment) {
+            return segment.kind == show::SegmentKind::replay && segment.sim_frame == sim_frame;
+        });
+}
+
 /// Scene colours too close to the reserved failure colour are shifted (by the renderer); say so.
 void check_failure_colors(const Scene& scene, const render::RenderConfig& config,
                           std::vector<std::string>& notices) {
@@ -480,7 +507,8 @@ FrameClock still_clock(double at, double speed, int fps, std::string_view option
     return clock;
 }
 
-RenderPlan plan_render(const RenderRequest& request, const Scene& scene) {
+RenderPlan plan_render(const RenderRequest& request, const Scene& scene,
+                       const ReplayFinder& find_replays) {
     RenderPlan plan;
     plan.mode = parse_render_mode(request.mode);
     plan.camera = parse_camera_motion(request.camera);
@@ -532,19 +560,33 @@ RenderPlan plan_render(const RenderRequest& request, const Scene& scene) {
             throw_option_error("--timeline-json", "only for videos (a still has no timeline)");
         plan.timeline_json = *request.timeline_json;
     }
+    plan.replay = replay_choice(request, scene, plan);
     // The video's frames, and the simulation frames they show: fewer than the video's when a
-    // card, a hold or the epilogue freezes the simulation.
-    const show::Timeline video_timeline = show::lesson_timeline(plan.lesson, plan.fps, video.count);
-    FrameClock simulation = video;
-    simulation.count = video_timeline.sim_frame_count();
-    simulation.last_time = static_cast<double>(simulation.count - 1) * simulation.interval;
+    // card, a hold, a replay or the epilogue freezes the simulation.
+    show::Timeline video_timeline = show::lesson_timeline(plan.lesson, plan.fps, video.count);
+    FrameClock simulation = simulation_clock(video, video_timeline);
+    if (find_replays && plan.replay != ReplayChoice::none) {
+        // The failures of the simulation the video would show without them; each replay then
+        // freezes the simulation a while, so the video shows fewer simulation frames.
+        plan.clock = simulation;
+        plan.replays = find_replays(plan);
+        plan.lesson.replays = show::replay_cues(plan.replays);
+        video_timeline = show::lesson_timeline(plan.lesson, plan.fps, video.count);
+        simulation = simulation_clock(video, video_timeline);
+        // Only the replays the timeline holds (one past the video's end is none).
+        std::erase_if(plan.replays, [&](const show::ReplayFailure& failure) {
+            return !has_replay(video_timeline, failure.sim_frame);
+        });
+        plan.lesson.replays = show::replay_cues(plan.replays);
+    }
     if (still) {
-        // A still is the simulation at one time: no card, no hold, no summary over it. Without
-        // --at it shows the video's last simulation frame.
+        // A still is the simulation at one time: no card, no hold, no replay, no summary over it.
+        // Without --at it shows the video's last simulation frame.
         plan.clock = request.at ? still_clock(*request.at, plan.speed.speed, plan.fps) : simulation;
         plan.timeline = show::still_timeline(video_timeline, plan.clock.count, plan.lesson.caption);
         plan.lesson.intro_seconds = 0.0;
         plan.lesson.epilogue_seconds = 0.0;
+        plan.replays.clear();
     } else {
         plan.clock = simulation;
         plan.timeline = video_timeline;

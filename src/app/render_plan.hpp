@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -16,6 +17,7 @@
 #include "collide/scene.hpp"
 #include "collide/show/collision.hpp"
 #include "collide/show/sphere_camera.hpp"
+#include "collide/show/replay.hpp"
 #include "collide/sim/engine.hpp"
 #include "collide/video/video_writer.hpp"
 
@@ -149,6 +151,7 @@ struct RenderRequest {
     std::string font;                   ///< --font FILE (empty: find_font's search)
     bool no_intro = false;              ///< --no-intro: no title card
     bool no_epilogue = false;           ///< --no-epilogue: no summary card at the end
+    std::optional<std::string> replay;  ///< --replay none|first|all
 };
 
 /// Events `--queue` shows without a number.
@@ -210,13 +213,26 @@ struct RenderPlan {
     show::CameraMotion camera = show::CameraMotion::fixed;
     /// --slab: the thickness of the slice of spheres shown, box units (0: every sphere).
     double slab = 0.0;
+    /// Which failures of the time-driven panel are replayed (--replay, the scene's hint, else
+    /// first); none where no replay can be shown (no time-driven panel, not the lesson level).
+    ReplayChoice replay = ReplayChoice::first;
+    /// The failures replayed (plan_render's ReplayFinder), in the order the video shows them.
+    std::vector<show::ReplayFailure> replays;
 };
 
 /// Default output directory for derived paths.
 inline constexpr const char* default_output_dir = "out";
 
+/// Finds the failures a plan's video replays (replay_plan.hpp: it runs the engines), from the
+/// plan's choice (RenderPlan::replay) and its simulation frames without replays
+/// (RenderPlan::clock).
+using ReplayFinder = std::function<std::vector<show::ReplayFailure>(const RenderPlan&)>;
+
 /// Resolves `request` against `scene` (already loaded and validated). Throws Error(input) naming
-/// the first bad option. Touches no file: the caller checks that `output` is writable.
-[[nodiscard]] RenderPlan plan_render(const RenderRequest& request, const Scene& scene);
+/// the first bad option. Touches no file: the caller checks that `output` is writable. Without
+/// `find_replays` (or with --replay none) the video replays nothing; with it, the timeline and
+/// the clock make room for the replays it finds.
+[[nodiscard]] RenderPlan plan_render(const RenderRequest& request, const Scene& scene,
+                                     const ReplayFinder& find_replays = {});
 
 }  // namespace collide::app

@@ -17,6 +17,14 @@ double fit_scale(const Box& box, float room_width, float room_height) {
                              static_cast<double>(std::max(room_height, 1.0F)) / box.height));
 }
 
+void PanelLayout::zoom_into(Vec2 centre, double magnification, const Box& b) noexcept {
+    if (!(magnification > 1.0)) return;
+    scale *= magnification;
+    shift = {centre.x - 0.5 * b.width / magnification,
+             centre.y + 0.5 * b.height / magnification - b.height};
+    zoomed = true;
+}
+
 RectF place_box(const Box& box, double scale, float x0, float x1, float y0) {
     const auto w = static_cast<float>(box.width * scale);
     const auto h = static_cast<float>(box.height * scale);

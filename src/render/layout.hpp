@@ -74,12 +74,19 @@ struct PanelLayout {
     RectF header;        // full level only
     RectF box;           // the box [0,W]x[0,H] in pixels, aspect ratio preserved
     double scale = 1.0;  // pixels per box unit
+    /// A zoom (zoom_into): the box point drawn at the rectangle's top-left corner is
+    /// (shift.x, height + shift.y); (0, 0) without a zoom.
+    Vec2 shift{0.0, 0.0};
+    bool zoomed = false;  // zoom_into enlarged the box: what lies outside it is not drawn
 
     /// Box coordinates (y up) to frame pixels (y down).
     [[nodiscard]] PointF to_pixels(Vec2 p, const Box& b) const noexcept {
-        return {box.x0 + static_cast<float>(p.x * scale),
-                box.y0 + static_cast<float>((b.height - p.y) * scale)};
+        return {box.x0 + static_cast<float>((p.x - shift.x) * scale),
+                box.y0 + static_cast<float>((b.height - (p.y - shift.y)) * scale)};
     }
+    /// Shows the part of box `b` around `centre`, `magnification` times larger, in the same
+    /// rectangle (a replay's zoom); a magnification of 1 or less changes nothing.
+    void zoom_into(Vec2 centre, double magnification, const Box& b) noexcept;
 };
 
 /// The lesson column's pieces (empty rectangles when absent).

@@ -124,12 +124,15 @@ void LessonPainter::add_marks(std::size_t index, const PanelContent& content,
                               const PanelLayout& panel) {
     const Snapshot& snapshot = *content.snapshot;
     if (snapshot.queue) {
-        add_queue_in_box(snapshot, content.queue_words, panel);
+        // Zoomed in (a replay), the queue's lines would reach out of the box.
+        if (!panel.zoomed) add_queue_in_box(snapshot, content.queue_words, panel);
         if (layout_.queue_panel == static_cast<int>(index) && !intro_)
             add_queue_strip(snapshot, content.queue_words, layout_.queue_strip);
     }
-    // The marks the presentation layer chose (show::FailureMarks), each kind its own shape.
-    paint_failure_marks(list_, content.marks, panel, snapshot.box, mark_style());
+    // The marks the presentation layer chose (show::FailureMarks), each kind its own shape;
+    // during a replay, the replay's own marks instead.
+    if (!panel.zoomed) paint_failure_marks(list_, content.marks, panel, snapshot.box, mark_style());
+    if (!content.replay.empty()) add_replay(content.replay, panel, snapshot.box);
 }
 
 void LessonPainter::finish_frame(const FrameContent& frame) {

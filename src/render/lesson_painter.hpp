@@ -6,7 +6,7 @@
 // box, and the event queue (`--queue`). Below compact_width one line of text per panel. Its
 // files: lesson_painter.cpp (the phases, panel text), lesson_layout.cpp (where things go),
 // lesson_marks.cpp (the marks' style and legend), lesson_column.cpp (column and title card),
-// lesson_queue.cpp (the event queue).
+// lesson_queue.cpp (the event queue), lesson_replay.cpp (a replay's marks).
 
 #include <cstddef>
 #include <optional>
@@ -23,6 +23,9 @@ namespace collide::render {
 inline constexpr double queue_pop_seconds = 0.8;
 /// The queue strip's small text against the lesson body text.
 inline constexpr float queue_text_scale = 0.7F;
+
+/// The part of segment a-b inside r (Liang-Barsky); false when none is.
+bool clip_to(RectF r, PointF& a, PointF& b);
 
 class LessonPainter : public Painter {
   public:
@@ -63,6 +66,8 @@ class LessonPainter : public Painter {
     /// A slot of the queue: the event's label over its time to go (or the stale word).
     void add_queue_node(std::string_view label, std::string_view time, RectF node,
                         Rgba8 frame_color, bool stale);
+    /// A replay's ghosts, jump and labels over a (zoomed) box (lesson_replay.cpp).
+    void add_replay(const ReplayView& replay, const PanelLayout& panel, const Box& box);
     /// A label centred at `at` on a plate of the box colour, kept inside `inside`.
     void add_plate_label(Font font, PointF at, std::string_view text, Rgba8 color, RectF inside);
     [[nodiscard]] float pop_highlight(const QueuedEvent& popped, double now) const noexcept;

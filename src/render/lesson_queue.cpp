@@ -28,7 +28,9 @@ Rgba8 mix(Rgba8 a, Rgba8 b, float t) {
     return {lerp(a.r, b.r), lerp(a.g, b.g), lerp(a.b, b.b), lerp(a.a, b.a)};
 }
 
-/// The part of segment a-b inside r (Liang-Barsky); false when none is.
+}  // namespace
+
+// The part of segment a-b inside r (Liang-Barsky); false when none is.
 bool clip_to(RectF r, PointF& a, PointF& b) {
     double t0 = 0.0;
     double t1 = 1.0;
@@ -54,8 +56,6 @@ bool clip_to(RectF r, PointF& a, PointF& b) {
     b = {static_cast<float>(a0.x + t1 * dx), static_cast<float>(a0.y + t1 * dy)};
     return true;
 }
-
-}  // namespace
 
 Rgba8 LessonPainter::next_color() const noexcept {
     return with_alpha(next_event_color(config_.theme), 255);

@@ -85,7 +85,12 @@ const DrawList& Painter::build(const FrameContent& frame) {
                        TrailHistory(config_.trail_length, config_.trail_whole_path));
     }
     for (std::size_t i = 0; i < frame.panels.size(); ++i) {
-        paint_panel(i, frame.panels[i], layout_.panels[i]);
+        // A replay's zoom: the same rectangle shows a part of the box, enlarged.
+        const PanelContent& panel = frame.panels[i];
+        if (panel.zoom.active())
+            layout_.panels[i].zoom_into(panel.zoom.centre, panel.zoom.magnification,
+                                        panel.snapshot->box);
+        paint_panel(i, panel, layout_.panels[i]);
     }
     finish_frame(frame);
     return list_;
@@ -108,7 +113,8 @@ void Painter::paint_panel(std::size_t index, const PanelContent& content,
     for (std::size_t k = 0; k < snapshot.discs.size(); ++k) {
         colors_[k] = disc_color(snapshot.discs[k]);
     }
-    if (config_.trails) {
+    // Trails are triangles under the discs, not clipped: a zoomed box leaves them out.
+    if (config_.trails && !panel.zoomed) {
         trails_[index].update(snapshot);
         const auto to_pixels = [&](Vec2 p) { return panel.to_pixels(p, box); };
         if (style_.legible_trails) {  // every trail keeps 3:1 down to its faintest segment
@@ -121,9 +127,10 @@ void Painter::paint_panel(std::size_t index, const PanelContent& content,
                                 style_.trail_fade);
         }
     }
-    add_discs(snapshot, panel);
+    add_discs(snapshot, panel, content.replay);
     add_marks(index, content, panel);
-    const bool clip_to_box = style_.clip_to_box || box.boundary == Boundary::periodic;
+    const bool clip_to_box =
+        style_.clip_to_box || box.boundary == Boundary::periodic || panel.zoomed;
     list_.disc_groups.push_back({list_.discs.size(), clip_to_box ? panel.box : panel.area});
     add_panel_text(index, content, panel);
 }
@@ -198,7 +205,11 @@ Rgb8 Painter::shown_colormap(double t) const noexcept {
     return colormap(colormap_low_ + (colormap_high_ - colormap_low_) * t);
 }
 
-void Painter::add_discs(const Snapshot& snapshot, const PanelLayout& panel) {
+void Painter::add_discs(const Snapshot& snapshot, const PanelLayout& panel,
+                        const ReplayView& replay) {
+    const auto listed = [](const std::vector<std::uint32_t>& list, std::size_t k) {
+        return std::find(list.begin(), list.end(), k) != list.end();
+    };
     const Box& box = snapshot.box;
     const bool periodic = box.boundary == Boundary::periodic;
     const Rgb8 fill = rgb(palette_.box_fill);
@@ -214,12 +225,15 @@ void Painter::add_discs(const Snapshot& snapshot, const PanelLayout& panel) {
     for (std::size_t k = 0; k < snapshot.discs.size(); ++k) {
         const DiscState& disc = snapshot.discs[k];
         if (style_.escaped_as_marks && disc.escaped) continue;  // marked at the box edge instead
+        if (!replay.hidden.empty() && listed(replay.hidden, k)) continue;  // a replay's ghost
         const Rgb8 c = colors_[k];
         if (check && (c.r != last_color.r || c.g != last_color.g || c.b != last_color.b)) {
             last_color = c;
             last_needs_outline = contrast_ratio(c, fill) < min_disc_contrast;
         }
-        const Rgba8 color = with_alpha(c, 255);
+        // A replay draws the eye to its discs: the others faint.
+        const bool faint = !replay.focus.empty() && !listed(replay.focus, k);
+        const Rgba8 color = with_alpha(c, faint ? 70 : 255);
         const auto radius = static_cast<float>(disc.radius * panel.scale);
         Vec2 position = disc.position;
         if (disc.escaped) {

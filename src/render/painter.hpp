@@ -119,7 +119,7 @@ class Painter {
     void paint_panel(std::size_t index, const PanelContent& content, const PanelLayout& panel);
     void add_box(const PanelLayout& panel, const Box& box);
     void add_box_fill(RectF box);
-    void add_discs(const Snapshot& snapshot, const PanelLayout& panel);
+    void add_discs(const Snapshot& snapshot, const PanelLayout& panel, const ReplayView& replay);
     void add_periodic_images(const DiscState& disc, const PanelLayout& panel, const Box& box,
                              Rgba8 color, float style);
     [[nodiscard]] Rgb8 disc_color(const DiscState& disc) const noexcept;

@@ -38,8 +38,8 @@ const Keys generate3_keys = {"count", "packing_fraction", "radius", "mass", "tem
 const Keys disc_keys = {"position", "velocity", "radius", "mass", "color", "tag"};
 const Keys generate_keys = {"count", "packing_fraction", "radius", "mass", "temperature",
                             "speed", "region",           "color",  "seed", "tag"};
-const Keys render_keys = {"color_mode", "trails", "overlays", "duration", "speed",
-                          "dt",         "theme",  "caption",  "captions", "histogram"};
+const Keys render_keys = {"color_mode", "trails",  "overlays", "duration",  "speed", "dt",
+                          "theme",      "caption", "captions", "histogram", "replay"};
 const Keys caption_keys = {"at", "text", "hold"};
 
 std::string num(double v) {
@@ -541,6 +541,8 @@ class TomlReader {
             }
         }
         if (const toml::node* v = t.get("theme")) r.theme = one_of(*v, "render.theme", theme_names);
+        if (const toml::node* v = t.get("replay"))
+            r.replay = one_of(*v, "render.replay", replay_choice_names);
         if (const toml::node* v = t.get("histogram")) {
             // "auto" (the default: where it teaches) or a size.
             if (v->is_string() && v->as_string()->get() == "auto") {

@@ -34,6 +34,7 @@ Timeline lesson_timeline(const LessonPlan& lesson, int fps, std::int64_t frames)
     script.caption = lesson.caption;
     for (const CaptionCue& cue : lesson.captions)
         script.cues.push_back({cue.at, cue.text, cue.hold});
+    script.replays = lesson.replays;
     script.epilogue_seconds = lesson.epilogue_seconds;
     script.epilogue_caption = "In the end: the final figures side by side";
     return build_timeline(script);

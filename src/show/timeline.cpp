@@ -49,6 +49,7 @@ struct FrameLabel {
     SegmentKind kind = SegmentKind::run;
     bool moves = true;
     int caption = -1;  ///< index into the cues; -1: the script's caption (or the kind's own)
+    int replay = -1;   ///< index into the replays (a replay frame)
 };
 
 std::int64_t whole_frames(double seconds, int fps) {
@@ -65,6 +66,32 @@ std::int64_t first_frame_at(double seconds, int fps) {
     while (k > 0 && static_cast<double>(k - 1) / rate >= seconds) --k;
     while (static_cast<double>(k) / rate < seconds) ++k;
     return k;
+}
+
+/// Each replay over the frames after the running frame that first shows its simulation frame:
+/// the simulation frames shown are counted as the labels go, so holds before it delay it.
+void place_replays(const TimelineScript& script, std::int64_t epilogue_start,
+                   std::vector<FrameLabel>& labels) {
+    std::size_t next = 0;
+    std::int64_t shown = -1;
+    for (std::int64_t k = 0; k < epilogue_start && next < script.replays.size(); ++k) {
+        const FrameLabel& label = labels[static_cast<std::size_t>(k)];
+        shown = label.moves ? shown + 1 : std::max<std::int64_t>(shown, 0);
+        while (next < script.replays.size() && script.replays[next].after_sim_frame < shown) ++next;
+        if (next == script.replays.size()) break;
+        const TimelineReplay& replay = script.replays[next];
+        if (label.kind != SegmentKind::run || !label.moves || replay.after_sim_frame != shown)
+            continue;
+        const std::int64_t length = whole_frames(replay.seconds, script.fps);
+        if (length > 0 && k + 1 + length <= epilogue_start) {
+            for (std::int64_t f = k + 1; f <= k + length; ++f) {
+                labels[static_cast<std::size_t>(f)] = {SegmentKind::replay, false, -1,
+                                                       static_cast<int>(next)};
+            }
+            k += length;
+        }
+        ++next;
+    }
 }
 
 /// Every frame's label: captions by video time, then the frozen stretches over them.
@@ -102,12 +129,15 @@ std::vector<FrameLabel> label_frames(const TimelineScript& script) {
     for (std::int64_t k = 0; k < card; ++k) at(k) = {SegmentKind::card, !script.card_waits, -1};
     for (std::int64_t k = epilogue_start; k < frames; ++k)
         at(k) = {SegmentKind::epilogue, false, -1};
+    place_replays(script, epilogue_start, labels);
     return labels;
 }
 
 std::string caption_of(const TimelineScript& script, const FrameLabel& label) {
     if (label.kind == SegmentKind::card) return script.card_title;
     if (label.kind == SegmentKind::epilogue) return script.epilogue_caption;
+    if (label.kind == SegmentKind::replay)
+        return script.replays[static_cast<std::size_t>(label.replay)].caption;
     if (label.caption < 0) return script.caption;
     return script.cues[static_cast<std::size_t>(label.caption)].text;
 }
@@ -124,9 +154,9 @@ Timeline build_timeline(const TimelineScript& script) {
         const auto k = static_cast<std::int64_t>(i);
         const std::int64_t shown =
             label.moves ? last_shown + 1 : std::max<std::int64_t>(last_shown, 0);
-        const bool same = i > 0 && labels[i - 1].kind == label.kind &&
-                          labels[i - 1].moves == label.moves &&
-                          labels[i - 1].caption == label.caption;
+        const bool same =
+            i > 0 && labels[i - 1].kind == label.kind && labels[i - 1].moves == label.moves &&
+            labels[i - 1].caption == label.caption && labels[i - 1].replay == label.replay;
         if (!same) {
             Segment segment;
             segment.kind = label.kind;

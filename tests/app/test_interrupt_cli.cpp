@@ -37,12 +37,15 @@ bool has_hidden_entry(const fs::path& dir) {
 }
 
 /// `collide render gas` into out/out.mp4 with an endless first frame (--speed 1e300; --no-limits,
-/// or the work estimate would refuse to start it).
+/// or the work estimate would refuse to start it). --replay none: the search for failures to
+/// replay runs before the writer opens its temporary (and polls the same flag); this is the
+/// render's own simulation.
 SignalledRun endless_render(const fs::path& out, const fs::path& log) {
     SignalledRun run;
-    run.argv = {COLLIDE_EXE, "render",     "gas",  "-o",         (out / "out.mp4").string(),
-                "--speed",   "1e300",      "-q",   "l",          "--duration",
-                "1",         "--progress", "none", "--no-limits"};
+    run.argv = {COLLIDE_EXE, "render",     "gas",  "-o",          (out / "out.mp4").string(),
+                "--speed",   "1e300",      "-q",   "l",           "--duration",
+                "1",         "--progress", "none", "--no-limits", "--replay",
+                "none"};
     run.log = log;
     // The writer's temporary is open (unnamed where the filesystem has O_TMPFILE).
     run.started_child = [out](pid_t child) {

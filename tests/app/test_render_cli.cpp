@@ -197,6 +197,60 @@ TEST_CASE("render --timeline-json: every segment in order, the clock frozen outs
     CHECK(still.exit_code == 2);
 }
 
+TEST_CASE(
+    "render --replay: tunnelling replays its first failure, frozen, and none replays nothing") {
+    TempDir dir("replay");
+    const fs::path json = dir.path / "t.json";
+    const std::string common = "render tunnelling --size 480x270 --fps 10 --progress none -o " +
+                               (dir.path / "t.mp4").string() + " --timeline-json " + json.string();
+    const auto read = [&] {
+        std::ifstream in(json);
+        std::stringstream text;
+        text << in.rdbuf();
+        return text.str();
+    };
+    const auto r = run_collide(common);
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    const std::string t = read();
+    const std::size_t replay = t.find("\"kind\": \"replay\"");
+    REQUIRE_MESSAGE(replay != std::string::npos, t);
+    CHECK(t.find("\"kind\": \"replay\"", replay + 1) == std::string::npos);  // only the first
+    CHECK(t.find("\"caption\": \"Between two checks the disc jumped through: no overlap was "
+                 "ever seen\"") != std::string::npos);
+    // The simulation clock stands still during the replay.
+    const std::size_t start = t.find("\"sim_start\": ", replay);
+    const std::size_t end = t.find("\"sim_end\": ", replay);
+    REQUIRE(start != std::string::npos);
+    REQUIRE(end != std::string::npos);
+    const double sim_start = std::stod(t.substr(start + 13));
+    const double sim_end = std::stod(t.substr(end + 11));
+    CHECK(sim_start == sim_end);
+    CHECK(t.find("\"moves\": false", replay) < t.find("\"kind\"", replay + 1));
+
+    const auto none = run_collide(common + " --replay none");
+    REQUIRE_MESSAGE(none.exit_code == 0, none.output);
+    CHECK(read().find("\"kind\": \"replay\"") == std::string::npos);
+}
+
+TEST_CASE("render --replay and [render] replay: a bad value exits 2 naming the option or field") {
+    TempDir dir("replay-bad");
+    const fs::path mp4 = dir.path / "x.mp4";
+    const auto option =
+        run_collide("render tunnelling --replay some --progress none -o " + mp4.string());
+    CHECK(option.exit_code == 2);
+    CHECK_MESSAGE(option.output.find("--replay") != std::string::npos, option.output);
+    const fs::path scene = dir.path / "r.toml";
+    std::ofstream(scene) << "[box]\nwidth = 1.0\nheight = 1.0\n"
+                            "[[disc]]\nposition = [0.3, 0.5]\nvelocity = [0.1, 0]\nradius = 0.05\n"
+                            "[render]\nreplay = \"some\"\n";
+    const auto hint =
+        run_collide("render " + scene.string() + " --progress none -o " + mp4.string());
+    CHECK(hint.exit_code == 2);
+    CHECK_MESSAGE(hint.output.find("r.toml:9") != std::string::npos, hint.output);
+    CHECK_MESSAGE(hint.output.find("render.replay") != std::string::npos, hint.output);
+    CHECK(!fs::exists(mp4));
+}
+
 TEST_CASE("thumbnail: every built-in scene in both modes matches its golden image") {
     TempDir dir("golden");
     const std::string list = run_collide("scenes").output;

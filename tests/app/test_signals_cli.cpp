@@ -40,12 +40,14 @@ bool has_hidden_entry(const fs::path& dir) {
     return false;
 }
 
-/// `collide render gas` into DIR/out.mp4 whose first frame never comes (--speed 1e300).
+/// `collide render gas` into DIR/out.mp4 whose first frame never comes (--speed 1e300);
+/// --replay none: the search for failures to replay would run before the writer's temporary.
 SignalledRun endless_render(const fs::path& out, const fs::path& log) {
     SignalledRun run;
-    run.argv = {COLLIDE_EXE, "render",     "gas",  "-o",         (out / "out.mp4").string(),
-                "--speed",   "1e300",      "-q",   "l",          "--duration",
-                "1",         "--progress", "none", "--no-limits"};
+    run.argv = {COLLIDE_EXE, "render",     "gas",  "-o",          (out / "out.mp4").string(),
+                "--speed",   "1e300",      "-q",   "l",           "--duration",
+                "1",         "--progress", "none", "--no-limits", "--replay",
+                "none"};
     run.log = log;
     run.started_child = [out](pid_t child) {
         return has_hidden_entry(out) || collide::test::has_open_file_in(child, out);
@@ -78,9 +80,9 @@ TEST_CASE("signals: Ctrl-C in a shell loop stops the loop, not just the render")
     // it): before, collide exited 1 and the loop rendered the next scene.
     TempDir out("signals_loop");
     const fs::path log = out.path / "log.txt";
-    const std::string render = std::string("'") + COLLIDE_EXE + "' render gas -o '" +
-                               (out.path / "out.mp4").string() +
-                               "' --speed 1e300 -q l --duration 1 --progress none --no-limits";
+    const std::string render =
+        std::string("'") + COLLIDE_EXE + "' render gas -o '" + (out.path / "out.mp4").string() +
+        "' --speed 1e300 -q l --duration 1 --progress none --no-limits --replay none";
     SignalledRun run;
     run.argv = {"/bin/bash", "-c", "for i in 1 2; do " + render + "; echo \"next $?\"; done"};
     run.log = log;

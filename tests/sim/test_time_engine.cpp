@@ -336,6 +336,62 @@ TEST_CASE("tunnelling through a wall: the disc escapes and keeps flying outside"
     CHECK(careful.snapshot().discs[0].velocity.x == -1.0);
 }
 
+TEST_CASE("failure records: the first failing step, its pair and their states before and after") {
+    // Rests first: step 0 (0..0.1) ends with the pair 0.1 apart; step 1 swaps them (missed).
+    const Scene scene = make_scene(
+        1.0, 1.0,
+        {make_disc({0.35, 0.5}, {1.0, 0.0}, 0.01), make_disc({0.65, 0.5}, {-1.0, 0.0}, 0.01),
+         make_disc({0.1, 0.1}, {0.0, 0.0}, 0.01)});
+    TimeEngine engine(scene, time_options(0.1));
+    engine.advance_to(0.1);
+    const Snapshot before = engine.snapshot();
+    CHECK(engine.failures().empty());
+    engine.advance_to(0.2);
+    const Snapshot after = engine.snapshot();
+    REQUIRE(engine.failures().size() == 1);
+    const sim::StepFailure& f = engine.failures().front();
+    CHECK(f.kind == sim::StepFailureKind::missed_pair);
+    CHECK(f.step == 1);
+    CHECK(f.a == 0);
+    CHECK(f.b == 1);
+    // The states at k dt and (k + 1) dt, as the engine showed them.
+    CHECK(f.before_a.x == doctest::Approx(before.discs[0].position.x).epsilon(1e-12));
+    CHECK(f.before_b.x == doctest::Approx(before.discs[1].position.x).epsilon(1e-12));
+    CHECK(f.after_a == after.discs[0].position);
+    CHECK(f.after_b == after.discs[1].position);
+    CHECK(f.motion_a.x == doctest::Approx(0.1));
+    CHECK(f.radius_a == 0.01);
+    CHECK(f.contact == doctest::Approx(0.04));  // 0.1 apart, closing at 2, touching at 0.02
+    CHECK(f.where.x == doctest::Approx(0.5));
+    CHECK(f.where.y == doctest::Approx(0.5));
+    CHECK(engine.measurements().missed_collisions == 1);
+}
+
+TEST_CASE("failure records: a disc through a wall, and at most max_failure_records steps") {
+    const Scene scene = make_scene(1.0, 1.0, {make_disc({0.95, 0.5}, {1.0, 0.0}, 0.01)});
+    TimeEngine engine(scene, time_options(0.1));
+    engine.advance_to(0.5);
+    REQUIRE(engine.failures().size() == 1);  // once outside, it fails no more
+    const sim::StepFailure& f = engine.failures().front();
+    CHECK(f.kind == sim::StepFailureKind::left_box);
+    CHECK(f.step == 0);
+    CHECK(f.a == 0);
+    CHECK(f.before_a.x == doctest::Approx(0.95));
+    CHECK(f.after_a.x == doctest::Approx(1.05));
+    CHECK(f.contact == doctest::Approx(0.05));  // the centre crosses x = 1
+    CHECK(f.where.x == doctest::Approx(1.0));
+
+    // Many discs leaving one per step: only the first few steps are recorded.
+    std::vector<Disc> discs;
+    for (int i = 0; i < 20; ++i)
+        discs.push_back(make_disc({0.95 - 0.1 * (i % 9), 0.04 + 0.045 * i}, {1.0, 0.0}, 0.01));
+    TimeEngine many(make_scene(1.0, 1.0, discs), time_options(0.1));
+    many.advance_to(1.0);
+    CHECK(many.failures().size() == TimeEngine::max_failure_records);
+    for (std::size_t i = 1; i < many.failures().size(); ++i)
+        CHECK(many.failures()[i].step > many.failures()[i - 1].step);
+}
+
 TEST_CASE("all-pairs performs N(N-1)/2 overlap checks per step") {
     const Scene scene = random_gas(3, 0.02, 1.0, 11, Boundary::walls);  // N = 9
     TimeEngine engine(scene, time_options(0.01));

@@ -144,6 +144,8 @@ struct LessonPlan {
     PlotSize histogram = PlotSize::none;
     int frames_per_step = 1;  ///< time-driven: the step indicator's period (whole_frames_per_step)
     std::string step_note;    ///< time-driven: the step note (step_note; empty: dt <= a frame)
+    /// Failures replayed (show/replay.hpp: replay_cues), simulation frames increasing.
+    std::vector<TimelineReplay> replays;
 
     /// The caption at `video_seconds`: the last cue at or before it, else `caption`.
     [[nodiscard]] const std::string& caption_at(double video_seconds) const noexcept;

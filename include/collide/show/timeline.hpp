@@ -85,6 +85,14 @@ struct TimelineCue {
     double hold = 0.0;  ///< seconds of video the picture stays frozen from `at` (0: none)
 };
 
+/// A replay on the timeline: right after the video frame that first shows simulation frame
+/// `after_sim_frame`, `seconds` of video frozen on it while a failure is shown again.
+struct TimelineReplay {
+    std::int64_t after_sim_frame = 0;
+    double seconds = 0.0;
+    std::string caption;
+};
+
 /// What the video is to show, in seconds of video.
 struct TimelineScript {
     int fps = 30;
@@ -94,6 +102,10 @@ struct TimelineScript {
     std::string card_title;         ///< the card segment's caption
     std::string caption;            ///< shown where no cue applies
     std::vector<TimelineCue> cues;  ///< `at` increasing
+    /// Replays, `after_sim_frame` increasing: each takes the frames after its simulation frame
+    /// is first shown (over a hold there); one that would not end before the epilogue, or whose
+    /// frame is never shown running, is left out.
+    std::vector<TimelineReplay> replays;
     double epilogue_seconds = 0.0;  ///< the last seconds, frozen on the final state (0: none)
     std::string epilogue_caption;   ///< the epilogue segment's caption
 };

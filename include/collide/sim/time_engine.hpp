@@ -46,6 +46,13 @@
 /// Measurements::missed_collisions and its contact point is kept as a marker in
 /// Snapshot::missed_collisions. Wall tunnelling is reported through `escaped` instead.
 ///
+/// Reporting only, too: the first few steps in which the method failed (a pair missed as above,
+/// or a disc that crossed a wall line of a walled box during the step and ended entirely past
+/// it) are kept as StepFailure records, one per step, so that a lesson can show that step again:
+/// of the step's missed pairs (in id order; else its escaped discs, in id order) the first whose
+/// discs were in no contact of the step (their state after it is where the drift took them),
+/// else the first.
+///
 /// After each advance_to() a census finds the pairs overlapping now (by more than
 /// TimeEngine::contact_slack of their contact distance) and the deepest overlap; snapshot() and
 /// measurements() report them. Missed-collision markers accumulate during one advance_to() call
@@ -78,6 +85,42 @@ void validate_time_driven_options(const EngineOptions& options, std::string_view
 }  // namespace collide
 
 namespace collide::sim {
+
+/// What went wrong in a step (StepFailure).
+enum class StepFailureKind {
+    missed_pair,  ///< two discs' straight paths touched during the step, no check saw it
+    left_box,     ///< a disc crossed a wall line during the step and ended entirely past it
+};
+
+/// One step of the time-driven method that failed, as the engine saw it: the step from
+/// step * dt to (step + 1) * dt and the discs involved (b: pairs only), with their states at
+/// both ends of the step. Plain data, neutral: a lesson decides what to draw of it.
+template <int D>
+struct BasicStepFailure {
+    using Vec = typename Space<D>::Vec;
+    StepFailureKind kind = StepFailureKind::missed_pair;
+    std::uint64_t step = 0;  ///< k: the state before is at k dt, after at (k + 1) dt
+    std::uint32_t a = 0;
+    std::uint32_t b = 0;  ///< pairs only (a < b)
+    /// Positions at k dt (the straight paths traced back over the step: p - h v).
+    Vec before_a{};
+    Vec before_b{};
+    /// Positions at (k + 1) dt: the engine's state after the step (wrapped, resolved).
+    Vec after_a{};
+    Vec after_b{};
+    /// The straight move of each disc during the step (h v, not wrapped): before + motion is
+    /// where the drift took it, before any contact of the step was resolved.
+    Vec motion_a{};
+    Vec motion_b{};
+    double radius_a = 0.0;
+    double radius_b = 0.0;
+    /// Time into the step at which the straight paths touched (pair) or the disc's centre
+    /// crossed the wall line (left_box), in [0, h].
+    double contact = 0.0;
+    /// Where: the contact point of the two discs (pair), the centre's crossing of the wall line
+    /// (left_box), at `contact` along the straight paths (not wrapped).
+    Vec where{};
+};
 
 namespace detail {
 template <int D>
@@ -133,6 +176,14 @@ class BasicTimeEngine final : public EngineOf<D> {
     /// step (for walls, b = 0).
     void set_collision_listener(CollisionListener listener) override;
 
+    /// At most this many StepFailure records are kept (the earliest failing steps).
+    static constexpr std::size_t max_failure_records = 8;
+    /// The earliest steps that failed so far, one record per step, in step order (at most
+    /// max_failure_records). O(1).
+    [[nodiscard]] const std::vector<BasicStepFailure<D>>& failures() const noexcept {
+        return failures_;
+    }
+
   private:
     /// A contact found by the overlap checks of one step, waiting to be resolved.
     struct Contact {
@@ -151,6 +202,15 @@ class BasicTimeEngine final : public EngineOf<D> {
     void resolve_wall_contact(const Contact& contact, double h);
     void wrap_positions();
     void take_census();
+    /// Records disc i as the step's failure if it went through a wall during the step.
+    void record_escape(std::uint32_t i, double h);
+    /// The step's failure record (if the step failed and records are still kept) gets the
+    /// states after the step.
+    void finish_failure_record();
+    /// True while failing steps are still recorded.
+    [[nodiscard]] bool recording_failures() const noexcept {
+        return failures_.size() < max_failure_records;
+    }
     /// COLLIDE_VALIDATE builds, after every step: finite state, kinetic energy conserved (every
     /// resolution is elastic). Throws Error(runtime) naming the broken invariant. O(N).
     void validate_state() const;
@@ -198,6 +258,11 @@ class BasicTimeEngine final : public EngineOf<D> {
     std::vector<Vec> missed_markers_;
     double max_overlap_ = 0.0;
     std::uint64_t escaped_count_ = 0;
+    std::vector<BasicStepFailure<D>> failures_;
+    /// The current step's failures, while records are kept (at most max_step_candidates).
+    std::vector<BasicStepFailure<D>> step_candidates_;
+    static constexpr std::size_t max_step_candidates = 64;
+    bool step_failed_ = false;  ///< the current step failed (step_candidates_ holds its failures)
 
     // Counters.
     std::uint64_t steps_ = 0;  ///< steps taken since t = 0: the state is at steps_ * dt
@@ -211,6 +276,8 @@ extern template class BasicTimeEngine<3>;
 
 /// The time-driven engine of discs (`--engine time`).
 using TimeEngine = BasicTimeEngine<2>;
+/// A failed step of the time-driven engine of discs.
+using StepFailure = BasicStepFailure<2>;
 /// The time-driven engine of spheres (3D scenes).
 using TimeSphereEngine = BasicTimeEngine<3>;
 

@@ -108,6 +108,61 @@ struct MarkWords {
     std::string unmarked;  ///< failures this frame without a mark: "+12 not marked"
 };
 
+/// A part of a panel's box shown enlarged (a replay's zoom): the box point drawn at the centre
+/// of the panel's box rectangle, and how many times larger than the whole box it is drawn.
+struct BoxZoom {
+    Vec2 centre;
+    double magnification = 1.0;  ///< 1: the whole box, as always
+    [[nodiscard]] bool active() const noexcept { return magnification > 1.0; }
+};
+
+/// A disc drawn where it was or where it went (a replay's ghosts), box coordinates.
+struct GhostDisc {
+    Vec2 where;
+    double radius = 0.0;   ///< box units
+    bool filled = false;   ///< filled (a disc in motion) or an outline (a state checked)
+    bool failure = false;  ///< in the failure colour (else the text colour)
+    float opacity = 1.0F;
+};
+
+/// A straight segment in the box (a replay's jump), box coordinates.
+struct BoxLine {
+    Vec2 from;
+    Vec2 to;
+    bool failure = false;  ///< in the failure colour (else the text colour)
+    float opacity = 1.0F;
+};
+
+/// Where a label's plate sits around its point.
+enum class LabelSide : std::uint8_t { above, below, left, right };
+
+/// Words at a point of the box (a replay's labels), drawn on a plate on one side of `at`, clear
+/// of a disc of radius `clear` there.
+struct BoxLabel {
+    Vec2 at;
+    std::string text;
+    bool failure = false;  ///< in the failure colour (else the text colour)
+    LabelSide side = LabelSide::above;
+    float opacity = 1.0F;
+    double clear = 0.0;  ///< box units: the plate keeps this far from `at`
+};
+
+/// What a replay draws over one panel's box (lesson level): filled by show::replay_frame.
+struct ReplayView {
+    std::string heading;  ///< at the top of the box ("Replay: one step, 9x enlarged")
+    std::vector<GhostDisc> ghosts;
+    std::vector<BoxLine> lines;
+    std::vector<BoxLabel> labels;
+    /// The failure's discs (Snapshot::discs indices): the others are drawn faint. Empty: none.
+    std::vector<std::uint32_t> focus;
+    /// Discs left out of the snapshot's picture (the ghosts show them instead).
+    std::vector<std::uint32_t> hidden;
+    [[nodiscard]] bool empty() const noexcept {
+        return heading.empty() && ghosts.empty() && lines.empty() && labels.empty() &&
+               focus.empty() && hidden.empty();
+    }
+};
+
 /// One simulation shown in one panel.
 struct PanelContent {
     PanelContent() = default;
@@ -143,6 +198,10 @@ struct PanelContent {
     std::vector<FailureMark> marks;
     MarkWords mark_words;    ///< the mark legend's words
     bool mark_line = false;  ///< reserve the legend's line (the same on every frame of a video)
+    /// Lesson level, during a replay: the part of the box drawn enlarged (inactive: all of it)
+    /// and what the replay draws over it.
+    BoxZoom zoom;
+    ReplayView replay;
 };
 
 /// One sample of an energy drift series: relative drift (E(t) - E(0)) / E(0) at time t.

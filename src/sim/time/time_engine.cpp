@@ -126,6 +126,8 @@ void BasicTimeEngine<D>::advance_to(double t) {
 template <int D>
 void BasicTimeEngine<D>::step(double h) {
     step_start_ = time_;
+    step_failed_ = false;
+    step_candidates_.clear();
     drift(h);
     contacts_.clear();
     try {
@@ -137,6 +139,7 @@ void BasicTimeEngine<D>::step(double h) {
     detect_wall_contacts(h);
     resolve_contacts(h);
     wrap_positions();
+    finish_failure_record();
     ++steps_;
 #ifdef COLLIDE_VALIDATE
     validate_state();
@@ -189,6 +192,7 @@ void BasicTimeEngine<D>::detect_pair_contacts(double h) {
         std::uint32_t i;
         std::uint32_t j;
         Vec where;
+        double t_contact;
     };
     std::vector<Miss> misses;
     for_each_candidate_pair(h, [&](std::uint32_t i, std::uint32_t j) {
@@ -217,13 +221,39 @@ void BasicTimeEngine<D>::detect_pair_contacts(double h) {
         if (t_contact < h) {
             const Vec pi = position_[i] - (h - t_contact) * velocity_[i];
             const Vec where = pi + (radius_[i] / sigma) * (dr0 + t_contact * dv);
-            misses.push_back({i, j, box_.wrap(where)});
+            misses.push_back({i, j, box_.wrap(where), t_contact});
         }
     });
     // Grid and all-pairs visit pairs in different orders; report misses in id order either way.
     std::sort(misses.begin(), misses.end(),
               [](const Miss& a, const Miss& b) { return std::tie(a.i, a.j) < std::tie(b.i, b.j); });
     missed_ += misses.size();
+    if (!misses.empty() && recording_failures() && !step_failed_) {
+        // The step's candidates, in id order, as their paths went during the drift: the record
+        // takes the first whose discs no contact of the step moved (finish_failure_record).
+        for (const Miss& miss : misses) {
+            if (step_candidates_.size() == max_step_candidates) break;
+            BasicStepFailure<D> failure;
+            failure.kind = StepFailureKind::missed_pair;
+            failure.step = steps_;
+            failure.a = miss.i;
+            failure.b = miss.j;
+            failure.motion_a = h * velocity_[miss.i];
+            failure.motion_b = h * velocity_[miss.j];
+            failure.before_a = position_[miss.i] - failure.motion_a;
+            failure.before_b = position_[miss.j] - failure.motion_b;
+            failure.radius_a = radius_[miss.i];
+            failure.radius_b = radius_[miss.j];
+            failure.contact = miss.t_contact;
+            const double sigma = radius_[miss.i] + radius_[miss.j];
+            const Vec dr0 = box_.displacement(failure.before_a, failure.before_b);
+            const Vec dv = velocity_[miss.j] - velocity_[miss.i];
+            failure.where = failure.before_a + miss.t_contact * velocity_[miss.i] +
+                            (radius_[miss.i] / sigma) * (dr0 + miss.t_contact * dv);
+            step_candidates_.push_back(failure);
+        }
+        step_failed_ = true;
+    }
     for (const Miss& miss : misses) {
         if (missed_markers_.size() < max_markers_per_frame) {
             missed_markers_.push_back(miss.where);
@@ -252,6 +282,7 @@ void BasicTimeEngine<D>::detect_wall_contacts(double h) {
         const Vec p = position_[i];
         const Vec v = velocity_[i];
         const double r = radius_[i];
+        if (recording_failures() && !step_failed_) record_escape(i, h);
         for (int k = 0; k < D; ++k) {  // x, then y (then z): the contacts' order
             if (!hits_wall(p, v, r, k)) continue;
             ++core_.counters().predictions;
@@ -262,6 +293,61 @@ void BasicTimeEngine<D>::detect_wall_contacts(double h) {
             contacts_.push_back({t_contact, wall_kind(k), i, 0});
         }
     }
+}
+
+// Reporting only: a disc entirely past a wall line now that was not at the start of the step
+// went through the wall during it (the checks never saw it straddle the wall).
+template <int D>
+void BasicTimeEngine<D>::record_escape(std::uint32_t i, double h) {
+    const Vec p = position_[i];
+    const Vec motion = h * velocity_[i];
+    const double r = radius_[i];
+    if (!is_outside(p, r) || is_outside(p - motion, r)) return;
+    const Vec before = p - motion;
+    // When the centre crossed the wall line it ended beyond (the latest such crossing).
+    double crossed = 0.0;
+    for (int k = 0; k < D; ++k) {
+        const double vk = axis(velocity_[i], k);
+        const double line = axis(p, k) > axis(extent_, k) ? axis(extent_, k) : 0.0;
+        if (vk == 0.0 || (axis(p, k) >= 0.0 && axis(p, k) <= axis(extent_, k))) continue;
+        crossed = std::max(crossed, std::clamp((line - axis(before, k)) / vk, 0.0, h));
+    }
+    BasicStepFailure<D> failure;
+    failure.kind = StepFailureKind::left_box;
+    failure.step = steps_;
+    failure.a = i;
+    failure.b = i;
+    failure.motion_a = motion;
+    failure.motion_b = motion;
+    failure.before_a = before;
+    failure.before_b = before;
+    failure.radius_a = r;
+    failure.radius_b = r;
+    failure.contact = crossed;
+    failure.where = before + crossed * velocity_[i];
+    step_candidates_.push_back(failure);
+    step_failed_ = true;
+}
+
+template <int D>
+void BasicTimeEngine<D>::finish_failure_record() {
+    if (!step_failed_) return;
+    // The clearest failure of the step: one whose discs no contact of the step moved (their
+    // state after the step is where the straight move took them), else the first.
+    const auto moved = [&](std::uint32_t i) {
+        return std::any_of(contacts_.begin(), contacts_.end(), [&](const Contact& c) {
+            return c.a == i || (c.kind == CollisionKind::pair && c.b == i);
+        });
+    };
+    const auto clear =
+        std::find_if(step_candidates_.begin(), step_candidates_.end(),
+                     [&](const BasicStepFailure<D>& f) { return !moved(f.a) && !moved(f.b); });
+    BasicStepFailure<D> failure =
+        clear != step_candidates_.end() ? *clear : step_candidates_.front();
+    failure.after_a = position_[failure.a];
+    failure.after_b = position_[failure.b];
+    failures_.push_back(failure);
+    step_candidates_.clear();
 }
 
 template <int D>

@@ -1,0 +1,26 @@
+#pragma once
+/// \file
+/// Which failures a `collide render` video replays (issue #29, item 4): a run of the time-driven
+/// engine over the video's simulation frames finds the steps that failed (sim::StepFailure), and
+/// a run of the event-driven engine the collision it handled at each of those moments. Runs
+/// before the video (its timeline makes room for the replays): a scene with a failure in its
+/// first steps costs a few steps; one without runs the time-driven engine over the whole video.
+
+#include <atomic>
+#include <vector>
+
+#include "collide/scene.hpp"
+#include "collide/show/replay.hpp"
+#include "render_plan.hpp"
+
+namespace collide::app {
+
+/// The failures `plan` replays (plan.replay: the first, or all the engine records), each with
+/// the simulation frame after which it is shown (on plan.clock) and, when the plan has an
+/// event-driven panel, its collision of the same discs at that moment. Empty for
+/// ReplayChoice::none or a scene that does not fail within plan.clock. Once `stop` is set
+/// (nullptr: never) throws Error(runtime) within a step or a few thousand events.
+[[nodiscard]] std::vector<show::ReplayFailure> find_replays(
+    const Scene& scene, const RenderPlan& plan, const std::atomic<bool>* stop = nullptr);
+
+}  // namespace collide::app

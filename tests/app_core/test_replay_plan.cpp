@@ -1,0 +1,104 @@
+// Which failures a video replays (replay_plan.hpp) and where its timeline puts them: the step
+// replayed is the first the time-driven engine failed, the replay follows the first frame that
+// shows the state after it, the simulation clock stands still during it.
+#include <doctest/doctest.h>
+
+#include <cstdint>
+
+#include "collide/sim/time_engine.hpp"
+#include "render_plan.hpp"
+#include "replay_plan.hpp"
+
+using namespace collide;
+using namespace collide::app;
+
+namespace {
+
+/// A fast disc through a resting heavy one (dt = 0.1 steps over it), later a second one.
+Scene tunnel_scene() {
+    Scene s;
+    s.name = "tunnel";
+    s.box = Box{2.0, 1.0, Boundary::walls};
+    s.discs.push_back(Disc{{0.15, 0.5}, {1.0, 0.0}, 0.01, 1.0, {}, ""});
+    s.discs.push_back(Disc{{0.5, 0.5}, {0.0, 0.0}, 0.01, 1e5, {}, ""});
+    s.discs.push_back(Disc{{0.15, 0.2}, {1.0, 0.0}, 0.01, 1.0, {}, ""});
+    s.discs.push_back(Disc{{0.7, 0.2}, {0.0, 0.0}, 0.01, 1e5, {}, ""});
+    return s;
+}
+
+RenderRequest tunnel_request() {
+    RenderRequest request;
+    request.scene = "tunnel";
+    request.duration = 30.0;
+    request.speed = 0.1;
+    request.dt = 0.1;
+    request.output = "unused.mp4";
+    return request;
+}
+
+ReplayFinder finder(const Scene& scene) {
+    return [&scene](const RenderPlan& draft) { return find_replays(scene, draft); };
+}
+
+/// The first step after which the engine's count of missed collisions is not zero (found by
+/// counting, not from its failure records).
+std::uint64_t first_missed_step(const Scene& scene, double dt) {
+    EngineOptions options;
+    options.engine = EngineKind::time;
+    options.dt = dt;
+    sim::TimeEngine engine(scene, options);
+    for (std::uint64_t k = 1; k < 1000; ++k) {
+        engine.advance_to(static_cast<double>(k) * dt);
+        if (engine.measurements().missed_collisions > 0) return k - 1;
+    }
+    return 0;
+}
+
+}  // namespace
+
+TEST_CASE("the replayed step is the first failure, shown after the first frame showing k + 1") {
+    const Scene scene = tunnel_scene();
+    const RenderPlan plan = plan_render(tunnel_request(), scene, finder(scene));
+    REQUIRE(plan.replays.size() == 1);
+    const show::ReplayFailure& failure = plan.replays.front();
+    CHECK(failure.step.step == first_missed_step(scene, 0.1));
+    CHECK(failure.step.a == 0);
+    CHECK(failure.step.b == 1);
+    // The event-driven engine's collision of the same pair, at the straight paths' contact.
+    REQUIRE(failure.predicted.has_value());
+    CHECK(failure.predicted->time == doctest::Approx(failure.contact_time()).epsilon(1e-9));
+    // The replay segment: right after the first frame showing step k + 1, frozen on it.
+    int replays = 0;
+    for (const show::Segment& segment : plan.timeline.segments) {
+        if (segment.kind != show::SegmentKind::replay) continue;
+        ++replays;
+        CHECK_FALSE(segment.moves);
+        CHECK(segment.sim_frame == failure.sim_frame);
+        CHECK(plan.timeline.sim_frame(segment.first_frame - 1) == failure.sim_frame);
+        CHECK(plan.timeline.sim_frame(segment.end_frame - 1) == failure.sim_frame);
+        CHECK(segment.frames() == static_cast<std::int64_t>(show::replay_seconds * plan.fps + 0.5));
+    }
+    CHECK(replays == 1);
+    const double after_step = static_cast<double>(failure.step.step + 1) * 0.1;
+    CHECK(plan.clock.time(failure.sim_frame) >= after_step - 1e-9);
+    CHECK(plan.clock.time(failure.sim_frame - 1) < after_step - 1e-9);
+}
+
+TEST_CASE("--replay all replays each failed step, none replays nothing, a bad value throws") {
+    const Scene scene = tunnel_scene();
+    RenderRequest request = tunnel_request();
+    request.replay = "all";
+    const RenderPlan all = plan_render(request, scene, finder(scene));
+    CHECK(all.replays.size() == 2);
+    request.replay = "none";
+    const RenderPlan none = plan_render(request, scene, finder(scene));
+    CHECK(none.replays.empty());
+    for (const show::Segment& segment : none.timeline.segments)
+        CHECK(segment.kind != show::SegmentKind::replay);
+    request.replay = "sometimes";
+    CHECK_THROWS_AS((void)plan_render(request, scene, finder(scene)), Error);
+    // The lesson level only: a full-level video has no replay.
+    request.replay.reset();
+    request.overlays = "full";
+    CHECK(plan_render(request, scene, finder(scene)).replays.empty());
+}
