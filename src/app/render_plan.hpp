@@ -16,8 +16,8 @@
 #include "collide/render/renderer.hpp"
 #include "collide/scene.hpp"
 #include "collide/show/collision.hpp"
-#include "collide/show/sphere_camera.hpp"
 #include "collide/show/replay.hpp"
+#include "collide/show/sphere_camera.hpp"
 #include "collide/sim/engine.hpp"
 #include "collide/video/video_writer.hpp"
 

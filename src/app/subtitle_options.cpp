@@ -1,11 +1,11 @@
 #include "subtitle_options.hpp"
 
+#include <fmt/format.h>
+
 #include <filesystem>
 #include <string>
 #include <system_error>
 #include <utility>
-
-#include <fmt/format.h>
 
 #include "collide/error.hpp"
 #include "collide/io/file.hpp"
