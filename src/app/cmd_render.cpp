@@ -227,30 +227,34 @@ void add_shared_options(CLI::App& cmd, CliValues& v, bool video) {
                  "steps and checks, frames) is beyond the limits of docs/limits.md");
 }
 
-/// Everything that can be wrong with the request, found before any frame is drawn.
+/// Everything that can be wrong with the request, found before any frame is drawn (and before
+/// the replay search, which may simulate for long: a bad output path is refused at once).
 RenderPlan validated_plan(const RenderRequest& request, const Scene& scene,
-                          const SphereScene* spheres, const InterruptGuard& interrupts) {
+                          const SphereScene* spheres) {
     RenderPlan plan = plan_render(request, scene);
     check_render_work(plan, request, scene, {}, spheres);
-    // Within the limits: the plan again, with the failures it replays (they take simulating,
-    // which a signal stops: then the signal is what ends the run). Spheres have no replay yet:
-    // `scene` is only their flat stand-in, whose physics is not the video's.
-    if (spheres == nullptr) {
-        plan = plan_render(request, scene, [&](const RenderPlan& draft) {
-            try {
-                return find_replays(scene, draft, &interrupts.flag());
-            } catch (const Error&) {
-                interrupts.throw_if_requested();
-                throw;
-            }
-        });
-    }
     // The default directory is ours to create; a user-given one must exist already.
     if (plan.default_output) std::filesystem::create_directories(plan.output.parent_path());
     const bool directory =
         plan.kind == OutputKind::video && plan.format == video::VideoFormat::png_sequence;
     video::check_output_writable(plan.output, directory);
     return plan;
+}
+
+/// The valid plan again, with the failures it replays: they take simulating (within the work
+/// limits just checked), which a signal stops, and then the signal is what ends the run. Spheres
+/// have no replay yet: `scene` is only their flat stand-in, whose physics is not the video's.
+RenderPlan with_replays(RenderPlan plan, const RenderRequest& request, const Scene& scene,
+                        const SphereScene* spheres, const InterruptGuard& interrupts) {
+    if (spheres != nullptr) return plan;
+    return plan_render(request, scene, [&](const RenderPlan& draft) {
+        try {
+            return find_replays(scene, draft, &interrupts.flag());
+        } catch (const Error&) {
+            interrupts.throw_if_requested();
+            throw;
+        }
+    });
 }
 
 std::string human_size(std::uintmax_t bytes) {
@@ -419,12 +423,13 @@ void run(const CliValues& values, bool still) {
     interrupts.throw_if_requested();
     const render::Backend backend = gl_backend_of(values);
     const RenderRequest request = request_of(values, still);
-    const RenderPlan plan = validated_plan(request, scene, spheres, interrupts);
+    const RenderPlan checked = validated_plan(request, scene, spheres);
     const SubtitleOutput subtitles = subtitle_output_of(
-        values.video, {plan.output, plan.format, plan.kind == OutputKind::still, false});
+        values.video, {checked.output, checked.format, checked.kind == OutputKind::still, false});
     const ChapterOutput chapters = chapter_output_of(
-        values.video, {plan.output, plan.format, plan.kind == OutputKind::still, false},
+        values.video, {checked.output, checked.format, checked.kind == OutputKind::still, false},
         scene.title);
+    const RenderPlan plan = with_replays(checked, request, scene, spheres, interrupts);
     video::set_libav_verbose(values.video.verbose);
     for (const std::string& line : plan.notices) print_notice(line);
     // Its temporary exists from here on, so an unwritable path fails before any frame.
