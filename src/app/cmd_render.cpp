@@ -424,11 +424,10 @@ void run(const CliValues& values, bool still) {
     const render::Backend backend = gl_backend_of(values);
     const RenderRequest request = request_of(values, still);
     const RenderPlan checked = validated_plan(request, scene, spheres);
-    const SubtitleOutput subtitles = subtitle_output_of(
-        values.video, {checked.output, checked.format, checked.kind == OutputKind::still, false});
-    const ChapterOutput chapters = chapter_output_of(
-        values.video, {checked.output, checked.format, checked.kind == OutputKind::still, false},
-        scene.title);
+    const OutputChoice output{checked.output, checked.format, checked.kind == OutputKind::still,
+                              false};
+    const SubtitleOutput subtitles = subtitle_output_of(values.video, output);
+    const ChapterOutput chapters = chapter_output_of(values.video, output, scene.title);
     const RenderPlan plan = with_replays(checked, request, scene, spheres, interrupts);
     video::set_libav_verbose(values.video.verbose);
     for (const std::string& line : plan.notices) print_notice(line);

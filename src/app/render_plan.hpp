@@ -54,6 +54,11 @@ struct OutputChoice {
     video::VideoFormat format = video::VideoFormat::mp4;  ///< videos only
     bool still = false;         ///< one PNG (thumbnail, --last-frame, --at)
     bool default_path = false;  ///< derived from the stem under default_output_dir
+
+    /// A video written as MP4: the only output that carries subtitle and chapter tracks.
+    [[nodiscard]] bool mp4_video() const noexcept {
+        return !still && format == video::VideoFormat::mp4;
+    }
 };
 
 /// The one output rule of every video command (docs/outputs.md, "Which file, which format"):

@@ -23,7 +23,7 @@ SubtitleOutput subtitle_output_of(const VideoCli& v, const OutputChoice& output)
         out.file = v.subtitles_file;
         (void)video::subtitle_format_of(out.file, "--subtitles-file");
     }
-    const bool mp4 = !output.still && output.format == video::VideoFormat::mp4;
+    const bool mp4 = output.mp4_video();
     if (given(v.subtitles_opt) && v.subtitles == "embed" && !mp4) {
         throw_option_error("--subtitles",
                            "embed: only an MP4 carries a subtitle track (use --subtitles-file "
@@ -58,7 +58,7 @@ ChapterOutput chapter_output_of(const VideoCli& v, const OutputChoice& output, s
     ChapterOutput out;
     if (v.chapters != "embed" && v.chapters != "none")
         throw_option_error("--chapters", v.chapters, "embed or none");
-    const bool mp4 = !output.still && output.format == video::VideoFormat::mp4;
+    const bool mp4 = output.mp4_video();
     if (given(v.chapters_opt) && v.chapters == "embed" && !mp4) {
         throw_option_error("--chapters",
                            "embed: only an MP4 carries chapters (use --chapters-file F.vtt "
