@@ -423,8 +423,7 @@ PipelineResult run_render(const Scene& scene, const RenderPlan& plan, const JobH
     job.title = title_of(plan);
     if (!job.output.still) {
         job.output.subtitles = subtitles;
-        job.output.cues =
-            show::subtitle_cues(plan.lesson, static_cast<double>(job.frames) / job.fps);
+        job.output.cues = show::subtitle_cues(plan.timeline, plan.lesson);
         job.output.chapter_output = chapters;
         job.output.chapters =
             show::timeline_chapters(plan.timeline, plan.lesson.intro_fade_seconds());

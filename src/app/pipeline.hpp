@@ -133,7 +133,7 @@ struct PipelineResult {
 /// output is complete, before either is put in place: a failure to write one leaves both
 /// destinations untouched. Throws Error: input for bad options, runtime for GL/encoder failures
 /// or an interrupt.
-/// `subtitles`: the video's cues (show::subtitle_cues of the lesson) go into the MP4 and/or a
+/// `subtitles`: the video's cues (show::subtitle_cues of the timeline) go into the MP4 and/or a
 /// sidecar as it says; the sidecar too appears only with the video.
 /// `chapters`: the timeline's chapters (show::timeline_chapters) go into the MP4, a chapters
 /// file and/or a slide folder as it says, likewise only with the video.

@@ -1,4 +1,4 @@
-// A video's subtitle cues: the title card, then the captions, as plain timed text.
+// A video's subtitle cues: the words on screen segment by segment, as plain timed text.
 #include "collide/show/subtitles.hpp"
 
 #include <algorithm>
@@ -23,23 +23,50 @@ Cues cues_from_steps(const std::vector<TimedText>& steps, double video_seconds) 
     return cues;
 }
 
-Cues subtitle_cues(const LessonPlan& lesson, double video_seconds) {
+namespace {
+
+/// The words on screen during `segment`: a card shows the title and the description.
+std::string segment_words(const Segment& segment, const LessonPlan& lesson) {
+    if (segment.kind != SegmentKind::card) return segment.caption;
+    std::string words = lesson.title;
+    if (!lesson.description.empty())
+        words += words.empty() ? lesson.description : "\n" + lesson.description;
+    return words;
+}
+
+/// Without a card the title is named first, briefly: the steps before `title_end` give way to
+/// it, and the words on screen at `title_end` follow.
+std::vector<TimedText> title_first(std::vector<TimedText> steps, const std::string& title,
+                                   double title_end) {
+    std::vector<TimedText> out{{0.0, title}};
+    std::string at_end;
+    for (TimedText& step : steps) {
+        if (step.start <= title_end) {
+            at_end = std::move(step.text);
+        } else {
+            if (out.size() == 1) out.push_back({title_end, std::move(at_end)});
+            out.push_back(std::move(step));
+        }
+    }
+    if (out.size() == 1) out.push_back({title_end, std::move(at_end)});
+    return out;
+}
+
+}  // namespace
+
+Cues subtitle_cues(const Timeline& timeline, const LessonPlan& lesson) {
+    const double video_seconds =
+        static_cast<double>(timeline.frame_count()) / std::max(1, timeline.fps);
     if (!(video_seconds > 0.0)) return {};
-    const double title_end = lesson.intro_seconds > 0.0
-                                 ? std::min(lesson.intro_seconds, video_seconds)
-                             : lesson.title.empty() ? 0.0
-                                                    : std::min(intro_seconds, 0.25 * video_seconds);
     std::vector<TimedText> steps;
-    std::string title = lesson.title;
-    if (lesson.intro_seconds > 0.0 && !lesson.description.empty()) {
-        title += title.empty() ? lesson.description : "\n" + lesson.description;
+    bool card = false;
+    for (const Segment& segment : timeline.segments) {
+        card = card || segment.kind == SegmentKind::card;
+        steps.push_back({segment.start, segment_words(segment, lesson)});
     }
-    steps.push_back({0.0, title});
-    // The caption on screen when the title's cue ends, then each scripted change after it.
-    steps.push_back({title_end, lesson.caption_at(title_end)});
-    for (const CaptionCue& cue : lesson.captions) {
-        if (cue.at > title_end) steps.push_back({cue.at, cue.text});
-    }
+    if (!card && !lesson.title.empty())
+        steps = title_first(std::move(steps), lesson.title,
+                            std::min(intro_seconds, 0.25 * video_seconds));
     return cues_from_steps(steps, video_seconds);
 }
 

@@ -160,7 +160,7 @@ TEST_CASE("render --slides: a folder with the page, the video, a still per chapt
         CHECK(size.second == 180);
     }
     CHECK(parse_subtitles(collide::test::read_all(slides / "chapters.vtt"), true).size() == 4);
-    CHECK(parse_subtitles(collide::test::read_all(slides / "subtitles.vtt"), true).size() == 3);
+    CHECK(parse_subtitles(collide::test::read_all(slides / "subtitles.vtt"), true).size() == 4);
     const std::string page = collide::test::read_all(slides / "index.html");
     CHECK(page.find("src=\"video.mp4\"") != std::string::npos);
     CHECK(page.find("<track kind=\"subtitles\" src=\"subtitles.vtt\" srclang=\"pl\"") !=
@@ -285,7 +285,8 @@ TEST_CASE("the slide player in headless Chromium from file:// stops at chapter e
     CHECK(log.find("error") == std::string::npos);
     REQUIRE(log.find("end") != std::string::npos);
     CHECK(log_line(log, "chapters") == std::vector<std::string>{"4"});
-    CHECK(log_line(log, "subtitles") == std::vector<std::string>{"3"});
+    // The card, two captions and the epilogue's words: the track says what each chapter shows.
+    CHECK(log_line(log, "subtitles") == std::vector<std::string>{"4"});
     // The first press plays the title card and stops before it fades (1 s card, its last 0.5 s
     // fading: the frame at 0.5 s, shown from its middle); the second plays the first caption's
     // chapter to its last frame (2.4 s). Each time still paused 0.3 s later.

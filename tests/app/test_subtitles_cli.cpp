@@ -56,7 +56,7 @@ TEST_CASE(
     const std::string track =
         without_markup(capture("ffmpeg -v error -i " + out.string() + " -map 0:s:0 -f srt - 2>&1"));
     const std::vector<ParsedCue> embedded = parse_subtitles(track, false);
-    REQUIRE(embedded.size() == 3);
+    REQUIRE(embedded.size() == 4);
     CHECK(embedded[0].text == "Zderzenia: Δt ≈ 0.01 s\nGaz w pudełku; σ → η");
     CHECK(embedded[0].start == doctest::Approx(0.0));
     CHECK(embedded[0].end == doctest::Approx(1.0));  // the intro card: a quarter of 4 s
@@ -64,7 +64,11 @@ TEST_CASE(
     CHECK(embedded[1].start == doctest::Approx(1.0));
     CHECK(embedded[2].text == "Energia ± 0: E = ½mv²");
     CHECK(embedded[2].start == doctest::Approx(2.5));
-    CHECK(embedded[2].end == doctest::Approx(4.0));
+    // The epilogue's words, as on screen, from where the caption before them ends.
+    CHECK(embedded[3].text == "In the end: the final figures side by side");
+    CHECK(embedded[3].start == doctest::Approx(embedded[2].end));
+    CHECK(embedded[3].start > 2.5);
+    CHECK(embedded[3].end == doctest::Approx(4.0));
 
     const std::vector<ParsedCue> sidecar = parse_subtitles(collide::test::read_all(vtt), true);
     REQUIRE(sidecar.size() == embedded.size());
@@ -82,7 +86,7 @@ TEST_CASE(
         (dir.path / "t.gif").string() + " --subtitles-file " + srt.string());
     REQUIRE_MESSAGE(gif.exit_code == 0, gif.output);
     const std::vector<ParsedCue> srt_cues = parse_subtitles(collide::test::read_all(srt), false);
-    CHECK(srt_cues.size() == 3);
+    CHECK(srt_cues.size() == 4);
     const fs::path plain = dir.path / "plain.mp4";
     const auto none =
         run_collide("render " + scene.string() +

@@ -2,21 +2,23 @@
 /// \file
 /// What a video's subtitle track says and when: the words a student reads on screen, as plain
 /// timed text (collide::Cue) for an MP4 subtitle stream or a WebVTT/SRT file beside the video.
-/// Made here, from the lesson's schedule, so the encoder only ever sees text with times.
+/// Made here, from the lesson's timeline, so the encoder only ever sees text with times.
 
 #include "collide/cue.hpp"
 #include "collide/show/collision.hpp"
 #include "collide/show/heap_lesson.hpp"
 #include "collide/show/puzzle_lesson.hpp"
+#include "collide/show/timeline.hpp"
 
 namespace collide::show {
 
-/// A collision video's cues, in order and never overlapping, within [0, `video_seconds`]:
-///  - the title (with the description, as on the intro card) from 0 for the intro card's time,
-///    or, when the video has no intro card, for min(2 s, a quarter of the video);
-///  - then the caption on screen (`lesson.caption_at`), one cue per change of text; a caption
-///    that began under the title card shows from the card's end. Empty captions make no cue.
-[[nodiscard]] Cues subtitle_cues(const LessonPlan& lesson, double video_seconds);
+/// A collision video's cues, in order and never overlapping, within the timeline's video:
+///  - the title card's segment: the title with the description, as on the card;
+///  - every other segment (run, hold, replay, epilogue): the caption it shows, one cue per change
+///    of text, so a replay's and the epilogue's words are in the track as on screen;
+///  - a video without a card names its title alone first, for min(2 s, a quarter of the video),
+///    then the caption on screen at that moment. Empty captions make no cue.
+[[nodiscard]] Cues subtitle_cues(const Timeline& timeline, const LessonPlan& lesson);
 
 /// Cues from a list of (start, text) steps that each last until the next one, the last until
 /// `video_seconds` (heap and puzzle videos' step captions). Equal neighbours merge; empty texts
