@@ -26,6 +26,17 @@ std::string_view segment_kind_name(SegmentKind kind) noexcept {
     return "run";
 }
 
+double caption_reading_seconds(std::string_view caption) noexcept {
+    std::size_t words = 0;
+    bool in_word = false;
+    for (const char c : caption) {
+        const bool space = c == ' ' || c == '\n' || c == '\t';
+        if (!space && !in_word) ++words;
+        in_word = !space;
+    }
+    return std::clamp(0.5 + 0.3 * static_cast<double>(words), 1.5, 4.0);
+}
+
 std::int64_t Timeline::frame_count() const noexcept {
     return segments.empty() ? 0 : segments.back().end_frame;
 }
@@ -68,14 +79,40 @@ std::int64_t first_frame_at(double seconds, int fps) {
     return k;
 }
 
+std::string caption_of(const TimelineScript& script, const FrameLabel& label) {
+    if (label.kind == SegmentKind::card) return script.card_title;
+    if (label.kind == SegmentKind::epilogue) return script.epilogue_caption;
+    if (label.kind == SegmentKind::replay)
+        return script.replays[static_cast<std::size_t>(label.replay)].caption;
+    if (label.caption < 0) return script.caption;
+    return script.cues[static_cast<std::size_t>(label.caption)].text;
+}
+
+/// How many frames up to and including frame k have shown the caption frame k shows (runs and
+/// holds: a card or a replay before it is not reading time).
+std::int64_t frames_read(const std::vector<FrameLabel>& labels, std::int64_t k) {
+    const int caption = labels[static_cast<std::size_t>(k)].caption;
+    std::int64_t first = k;
+    while (first > 0) {
+        const FrameLabel& before = labels[static_cast<std::size_t>(first - 1)];
+        if (before.caption != caption ||
+            (before.kind != SegmentKind::run && before.kind != SegmentKind::hold))
+            break;
+        --first;
+    }
+    return k + 1 - first;
+}
+
 /// Each replay over the frames after the running frame that first shows its simulation frame:
-/// the simulation frames shown are counted as the labels go, so holds before it delay it.
+/// the simulation frames shown are counted as the labels go, so holds before it delay it. When
+/// the caption on screen appeared too recently to be read, the picture first holds on it (its
+/// reading time, caption_reading_seconds), then the replay begins.
 void place_replays(const TimelineScript& script, std::int64_t epilogue_start,
                    std::vector<FrameLabel>& labels) {
     std::size_t next = 0;
     std::int64_t shown = -1;
     for (std::int64_t k = 0; k < epilogue_start && next < script.replays.size(); ++k) {
-        const FrameLabel& label = labels[static_cast<std::size_t>(k)];
+        const FrameLabel label = labels[static_cast<std::size_t>(k)];
         shown = label.moves ? shown + 1 : std::max<std::int64_t>(shown, 0);
         while (next < script.replays.size() && script.replays[next].after_sim_frame < shown) ++next;
         if (next == script.replays.size()) break;
@@ -83,12 +120,17 @@ void place_replays(const TimelineScript& script, std::int64_t epilogue_start,
         if (label.kind != SegmentKind::run || !label.moves || replay.after_sim_frame != shown)
             continue;
         const std::int64_t length = whole_frames(replay.seconds, script.fps);
-        if (length > 0 && k + 1 + length <= epilogue_start) {
-            for (std::int64_t f = k + 1; f <= k + length; ++f) {
+        const std::int64_t lead = std::max<std::int64_t>(
+            0, whole_frames(caption_reading_seconds(caption_of(script, label)), script.fps) -
+                   frames_read(labels, k));
+        if (length > 0 && k + 1 + lead + length <= epilogue_start) {
+            for (std::int64_t f = k + 1; f <= k + lead; ++f)
+                labels[static_cast<std::size_t>(f)] = {SegmentKind::hold, false, label.caption};
+            for (std::int64_t f = k + lead + 1; f <= k + lead + length; ++f) {
                 labels[static_cast<std::size_t>(f)] = {SegmentKind::replay, false, -1,
                                                        static_cast<int>(next)};
             }
-            k += length;
+            k += lead + length;
         }
         ++next;
     }
@@ -131,15 +173,6 @@ std::vector<FrameLabel> label_frames(const TimelineScript& script) {
         at(k) = {SegmentKind::epilogue, false, -1};
     place_replays(script, epilogue_start, labels);
     return labels;
-}
-
-std::string caption_of(const TimelineScript& script, const FrameLabel& label) {
-    if (label.kind == SegmentKind::card) return script.card_title;
-    if (label.kind == SegmentKind::epilogue) return script.epilogue_caption;
-    if (label.kind == SegmentKind::replay)
-        return script.replays[static_cast<std::size_t>(label.replay)].caption;
-    if (label.caption < 0) return script.caption;
-    return script.cues[static_cast<std::size_t>(label.caption)].text;
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // the failing disc at steps k and k + 1 exactly where the engine had it.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -83,6 +84,47 @@ TEST_CASE("a replay follows the first frame that shows its simulation frame, fro
     for (std::size_t i = 1; i < timeline.segments.size(); ++i)
         CHECK(timeline.segments[i].first_frame == timeline.segments[i - 1].end_frame);
     CHECK(timeline.frame_count() == 100);
+}
+
+TEST_CASE("a replay waits until the caption just shown has been read, holding the picture") {
+    TimelineScript script = script_with_replay(12, 2.0);
+    const std::string words = "Each step moves a disc five times the thickness of a barrier";
+    script.cues = {{2.0, words, 0.0}};
+    // Card 0..10 (sim 0); sim 1 at frame 10, the caption from frame 20 (sim 11), sim 12 at 21.
+    const Timeline timeline = build_timeline(script);
+    const auto replay =
+        std::find_if(timeline.segments.begin(), timeline.segments.end(),
+                     [](const Segment& s) { return s.kind == SegmentKind::replay; });
+    REQUIRE(replay != timeline.segments.end());
+    REQUIRE(replay != timeline.segments.begin());
+    const Segment& lead = *std::prev(replay);
+    CHECK(lead.kind == SegmentKind::hold);
+    CHECK(lead.caption == words);
+    CHECK_FALSE(lead.moves);
+    CHECK(lead.sim_frame == 12);
+    CHECK(timeline.sim_frame(lead.first_frame - 1) == 12);  // it follows the failure's frame
+    CHECK(replay->sim_frame == 12);
+    CHECK(replay->start - 2.0 == doctest::Approx(caption_reading_seconds(words)));
+    CHECK(caption_reading_seconds(words) > 1.5);
+    CHECK(timeline.sim_frame(replay->end_frame) == 13);
+    // A caption read long enough before gets no hold: the replay follows the failure's frame.
+    const Timeline read = build_timeline(script_with_replay(40, 2.0));
+    const auto later = std::find_if(read.segments.begin(), read.segments.end(),
+                                    [](const Segment& s) { return s.kind == SegmentKind::replay; });
+    REQUIRE(later != read.segments.end());
+    CHECK(read.segment_at(later->first_frame - 1).moves);
+}
+
+TEST_CASE("caption reading time: about 200 words a minute, between 1.5 s and 4 s") {
+    CHECK(caption_reading_seconds("") == 1.5);
+    CHECK(caption_reading_seconds("Hold") == 1.5);
+    CHECK(caption_reading_seconds("one two three four five six seven eight") ==
+          doctest::Approx(2.9));
+    CHECK(caption_reading_seconds(std::string(200, 'a') + std::string(" b").append(60, ' ')) ==
+          1.5);
+    std::string many;
+    for (int i = 0; i < 40; ++i) many += "word ";
+    CHECK(caption_reading_seconds(many) == 4.0);
 }
 
 TEST_CASE("a replay that would run into the epilogue, or a frame never shown, is left out") {

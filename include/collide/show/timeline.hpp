@@ -85,8 +85,13 @@ struct TimelineCue {
     double hold = 0.0;  ///< seconds of video the picture stays frozen from `at` (0: none)
 };
 
+/// Seconds a class needs to read `caption` before the picture changes its subject: half a second
+/// and 0.3 s a word (about 200 words a minute), at least 1.5 s and at most 4 s.
+[[nodiscard]] double caption_reading_seconds(std::string_view caption) noexcept;
+
 /// A replay on the timeline: right after the video frame that first shows simulation frame
-/// `after_sim_frame`, `seconds` of video frozen on it while a failure is shown again.
+/// `after_sim_frame`, `seconds` of video frozen on it while a failure is shown again. When the
+/// caption on screen then appeared less than its reading time before, a hold on it comes first.
 struct TimelineReplay {
     std::int64_t after_sim_frame = 0;
     double seconds = 0.0;
