@@ -294,6 +294,7 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
         show::clock_text(frame.time, plan_.clock, plan_.speed.speed, plan_.render.overlays);
     content_.time_unit =
         plan_.render.overlays == OverlayLevel::lesson ? show::time_unit : std::string();
+    content_.cost_heading = show::cost_heading;
     // Failure markers fade with the moving picture: a card or a hold keeps them as they are.
     content_.video_time = static_cast<double>(frame.sim_frame) / plan_.fps;
     content_.speed = plan_.speed.speed;

@@ -68,7 +68,7 @@ void render_puzzle_video(const puzzle::Board& start,
     }
     const OutputChoice output = output_of(v);
     const SubtitleOutput subtitles = subtitle_output_of(v, output);
-    const ChapterOutput chapters = chapter_output_of(v, output, "8-puzzle");
+    const ChapterOutput chapters = chapter_output_of(v, output, frames.name());
     if (output.default_path) std::filesystem::create_directories(output.path.parent_path());
     video::check_output_writable(
         output.path, !output.still && output.format == video::VideoFormat::png_sequence);

@@ -105,6 +105,10 @@ std::size_t PuzzleLesson::step_at(std::size_t i, double seconds) const noexcept 
     return std::min(total, static_cast<std::size_t>(std::max(0.0, grown)));
 }
 
+std::string PuzzleLesson::name() const {
+    return "8-puzzle";
+}
+
 std::string PuzzleLesson::title(const Side& side) const {
     const SearchResult& r = *side.result;
     if (r.method == Method::bfs) return "Breadth-first search";

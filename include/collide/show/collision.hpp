@@ -70,6 +70,9 @@ inline constexpr double divide_tolerance = 1e-6;
 /// wide, speeds in box widths per time unit), so the clock says "time units", never seconds.
 inline constexpr const char* time_unit = "time units";
 
+/// The cost graphic's heading where no ratio of two engines stands under its bars (one panel).
+inline constexpr const char* cost_heading = "Work so far";
+
 /// The on-screen clock "t = 12.345   (1/s)": three decimals while they tell one frame from the
 /// next and stay short (frame interval >= 1e-3, last frame before 1e6), else as many significant
 /// digits as tell frames apart ("t = 4.9667e-11"): scenes in SI units span picoseconds, and

@@ -49,6 +49,9 @@ class PuzzleLesson {
     /// The frame at `seconds` (clamped to the video).
     [[nodiscard]] view::PuzzleFrameView frame_at(double seconds) const;
 
+    /// The video's name, for a slide page's title: "8-puzzle".
+    [[nodiscard]] std::string name() const;
+
   private:
     struct Side {
         const puzzle::SearchResult* result = nullptr;

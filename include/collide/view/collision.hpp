@@ -223,8 +223,8 @@ struct FrameContent {
     std::vector<std::string> notes;  ///< full level: notice line(s) at the bottom
     std::string caption;             ///< lesson level: the caption line at the bottom
     std::string energy_line;         ///< lesson level: "Energy conserved" (empty: the drift plot)
-    std::string cost_heading = "Work so far";
-    ColorKeyWords color_key;  ///< what the disc colours mean (colour bar or tag key)
+    std::string cost_heading;  ///< lesson level, one panel: the cost graphic's heading ("" none)
+    ColorKeyWords color_key;   ///< what the disc colours mean (colour bar or tag key)
     /// Under the bars, two panels: "168x less work" (show::work_ratio of the panels' costs).
     std::string cost_ratio;
     double video_time = 0.0;  ///< seconds of video at this frame: failure markers fade by it
