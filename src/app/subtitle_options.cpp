@@ -33,27 +33,6 @@ SubtitleOutput subtitle_output_of(const VideoCli& v, const OutputChoice& output)
     return out;
 }
 
-namespace {
-
-/// An existing slide folder is replaced as a whole: only one that holds nothing but the files a
-/// slide folder has (an earlier one), so nothing the user did not name is ever deleted.
-void refuse_foreign_files(const std::filesystem::path& folder) {
-    std::error_code error;
-    if (!std::filesystem::is_directory(folder, error)) return;  // new, or io's checks say why
-    for (std::filesystem::directory_iterator it(folder, error), end; !error && it != end;
-         it.increment(error)) {
-        const std::string name = it->path().filename().string();
-        if (is_slide_file_name(name) && it->is_regular_file(error)) continue;
-        throw_option_error("--slides",
-                           fmt::format("'{}' holds '{}', which is not part of a slide folder; the "
-                                       "folder is replaced as a whole, so give a new or empty one "
-                                       "(or remove it first)",
-                                       folder.string(), name));
-    }
-}
-
-}  // namespace
-
 ChapterOutput chapter_output_of(const VideoCli& v, const OutputChoice& output, std::string title) {
     ChapterOutput out;
     if (v.chapters != "embed" && v.chapters != "none")
@@ -80,7 +59,8 @@ ChapterOutput chapter_output_of(const VideoCli& v, const OutputChoice& output, s
         }
         if (v.slides.empty()) throw_option_error("--slides", "expected a folder name");
         out.slides = v.slides;
-        refuse_foreign_files(out.slides);
+        // An existing slide folder is replaced as a whole: only one holding nothing but a slide
+        // folder's files (an earlier one), so nothing the user did not name is ever deleted.
         io::check_output_directory(out.slides, is_slide_file_name, "--slides");
     }
     out.language = v.lang;

@@ -629,7 +629,7 @@ fs::path directory_destination(const fs::path& destination, const std::string& l
     if (path.empty()) throw_input_error(label + ": the path is empty");
     if (path == path.root_path() || path.filename() == "." || path.filename() == "..") {
         throw_input_error(what +
-                          ": a directory of frames is written as a new directory of its own; give "
+                          ": a directory output is written as a new directory of its own; give "
                           "it a name (e.g. frames), not '.', '..' or '/'");
     }
     return path;
@@ -659,19 +659,19 @@ void check_replaceable(int parent, int fd, const fs::path& path, const fs::path&
          status.st_dev != above.st_dev) ||
         is_mount_root(parent, path.filename().native())) {
         throw_input_error(what +
-                          " is a mount point; a directory of frames replaces its "
+                          " is a mount point; a directory output replaces its "
                           "directory, so give a new directory inside it");
     }
     if (contains_working_directory(path)) {
         throw_input_error(what +
                           " is the current directory or one of its parents; give a new "
-                          "directory for the frames (e.g. frames)");
+                          "directory for the output (e.g. frames)");
     }
     std::string offender;
     if (!holds_only(fd, replaceable, &offender)) {
         throw_input_error(what + " holds other files (" + quote_path(offender) +
-                          "): a directory of frames replaces the whole directory, so it must be "
-                          "new, empty, or hold only an earlier sequence of the same name; give a "
+                          "): a directory output replaces the whole directory, so it must be "
+                          "new, empty, or hold only an earlier output of the same kind; give a "
                           "new directory, e.g. " +
                           quote_path(shown / "frames"));
     }
@@ -910,8 +910,7 @@ void check_distinct_outputs(const std::vector<NamedOutput>& outputs) {
                 if (!dir.directory || !lies_inside(file_id.resolved, dir_id.resolved)) return;
                 throw_input_error(file.label + " " + quote_path(file.path) + " lies inside " +
                                   dir.label + " " + quote_path(dir.path) +
-                                  ", which the directory of frames replaces as a whole; give it "
-                                  "a path outside");
+                                  ", which is replaced as a whole; give it a path outside");
             };
             inside(a, ids[i], b, ids[j]);
             inside(b, ids[j], a, ids[i]);

@@ -197,7 +197,7 @@ TEST_CASE("render --slides, --chapters, --chapters-file: bad input exits 2 and w
              (dir.path / "s").string(),
          "--slides: a still (PNG) has no chapters"},
         {mp4 + "--slides " + (dir.path / "missing" / "s").string(), "--slides"},
-        {mp4 + "--slides " + keep.string(), "which is not part of a slide folder"},
+        {mp4 + "--slides " + keep.string(), "holds other files ('notes.txt')"},
         {mp4 + "--slides " + out.string() + ".d --chapters-file " +
              (dir.path / "missing" / "c.vtt").string(),
          "--chapters-file"},
