@@ -228,33 +228,39 @@ void add_shared_options(CLI::App& cmd, CliValues& v, bool video) {
 }
 
 /// Everything that can be wrong with the request, found before any frame is drawn (and before
-/// the replay search, which may simulate for long: a bad output path is refused at once).
-RenderPlan validated_plan(const RenderRequest& request, const Scene& scene,
+/// the replay search, which may simulate for long: a bad output path is refused at once): the
+/// plan `draft` (plan_without_frames) with its frames laid out without replays.
+RenderPlan validated_plan(RenderPlan draft, const RenderRequest& request, const Scene& scene,
                           const SphereScene* spheres) {
-    RenderPlan plan = plan_render(request, scene);
-    check_render_work(plan, request, scene, {}, spheres);
+    lay_out_frames(draft, request);
+    check_render_work(draft, request, scene, {}, spheres);
     // The default directory is ours to create; a user-given one must exist already.
-    if (plan.default_output) std::filesystem::create_directories(plan.output.parent_path());
+    if (draft.default_output) std::filesystem::create_directories(draft.output.parent_path());
     const bool directory =
-        plan.kind == OutputKind::video && plan.format == video::VideoFormat::png_sequence;
-    video::check_output_writable(plan.output, directory);
-    return plan;
+        draft.kind == OutputKind::video && draft.format == video::VideoFormat::png_sequence;
+    video::check_output_writable(draft.output, directory);
+    return draft;
 }
 
-/// The valid plan again, with the failures it replays: they take simulating (within the work
-/// limits just checked), which a signal stops, and then the signal is what ends the run. Spheres
-/// have no replay yet: `scene` is only their flat stand-in, whose physics is not the video's.
-RenderPlan with_replays(RenderPlan plan, const RenderRequest& request, const Scene& scene,
+/// The plan `draft` with its frames laid out around the failures it replays: they take
+/// simulating (within the work limits validated_plan checked), which a signal stops, and then
+/// the signal is what ends the run. Spheres have no replay yet: `scene` is only their flat
+/// stand-in, whose physics is not the video's.
+RenderPlan with_replays(RenderPlan draft, const RenderRequest& request, const Scene& scene,
                         const SphereScene* spheres, const InterruptGuard& interrupts) {
-    if (spheres != nullptr) return plan;
-    return plan_render(request, scene, [&](const RenderPlan& draft) {
+    if (spheres != nullptr) {
+        lay_out_frames(draft, request);
+        return draft;
+    }
+    lay_out_frames(draft, request, [&](const RenderPlan& plan) {
         try {
-            return find_replays(scene, draft, &interrupts.flag());
+            return find_replays(scene, plan, &interrupts.flag());
         } catch (const Error&) {
             interrupts.throw_if_requested();
             throw;
         }
     });
+    return draft;
 }
 
 std::string human_size(std::uintmax_t bytes) {
@@ -423,12 +429,13 @@ void run(const CliValues& values, bool still) {
     interrupts.throw_if_requested();
     const render::Backend backend = gl_backend_of(values);
     const RenderRequest request = request_of(values, still);
-    const RenderPlan checked = validated_plan(request, scene, spheres);
+    const RenderPlan draft = plan_without_frames(request, scene);
+    const RenderPlan checked = validated_plan(draft, request, scene, spheres);
     const OutputChoice output{checked.output, checked.format, checked.kind == OutputKind::still,
                               false};
     const SubtitleOutput subtitles = subtitle_output_of(values.video, output);
     const ChapterOutput chapters = chapter_output_of(values.video, output, scene.title);
-    const RenderPlan plan = with_replays(checked, request, scene, spheres, interrupts);
+    const RenderPlan plan = with_replays(draft, request, scene, spheres, interrupts);
     video::set_libav_verbose(values.video.verbose);
     for (const std::string& line : plan.notices) print_notice(line);
     // Its temporary exists from here on, so an unwritable path fails before any frame.

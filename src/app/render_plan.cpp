@@ -507,8 +507,7 @@ FrameClock still_clock(double at, double speed, int fps, std::string_view option
     return clock;
 }
 
-RenderPlan plan_render(const RenderRequest& request, const Scene& scene,
-                       const ReplayFinder& find_replays) {
+RenderPlan plan_without_frames(const RenderRequest& request, const Scene& scene) {
     RenderPlan plan;
     plan.mode = parse_render_mode(request.mode);
     plan.camera = parse_camera_motion(request.camera);
@@ -561,6 +560,13 @@ RenderPlan plan_render(const RenderRequest& request, const Scene& scene,
         plan.timeline_json = *request.timeline_json;
     }
     plan.replay = replay_choice(request, scene, plan);
+    return plan;
+}
+
+void lay_out_frames(RenderPlan& plan, const RenderRequest& request,
+                    const ReplayFinder& find_replays) {
+    const FrameClock video = video_clock(plan.duration, plan.speed.speed, plan.fps);
+    const bool still = plan.kind == OutputKind::still;
     // The video's frames, and the simulation frames they show: fewer than the video's when a
     // card, a hold, a replay or the epilogue freezes the simulation.
     show::Timeline video_timeline = show::lesson_timeline(plan.lesson, plan.fps, video.count);
@@ -591,6 +597,12 @@ RenderPlan plan_render(const RenderRequest& request, const Scene& scene,
         plan.clock = simulation;
         plan.timeline = video_timeline;
     }
+}
+
+RenderPlan plan_render(const RenderRequest& request, const Scene& scene,
+                       const ReplayFinder& find_replays) {
+    RenderPlan plan = plan_without_frames(request, scene);
+    lay_out_frames(plan, request, find_replays);
     return plan;
 }
 

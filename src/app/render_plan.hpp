@@ -240,4 +240,14 @@ using ReplayFinder = std::function<std::vector<show::ReplayFailure>(const Render
 [[nodiscard]] RenderPlan plan_render(const RenderRequest& request, const Scene& scene,
                                      const ReplayFinder& find_replays = {});
 
+/// plan_render in two steps, so that a plan can be checked before its replays are looked for
+/// (which may simulate for long) without resolving the request twice:
+/// everything but the frames (clock, timeline, replays; the output and every option checked) ...
+[[nodiscard]] RenderPlan plan_without_frames(const RenderRequest& request, const Scene& scene);
+/// ... then the frames: the timeline and the simulation frames it shows, making room for the
+/// replays `find_replays` finds (none without it). `plan` comes from plan_without_frames, once:
+/// a still's plan loses its card and summary here.
+void lay_out_frames(RenderPlan& plan, const RenderRequest& request,
+                    const ReplayFinder& find_replays = {});
+
 }  // namespace collide::app
