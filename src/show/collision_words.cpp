@@ -140,6 +140,11 @@ namespace {
 std::string count_text(std::uint64_t n) {
     return with_separators(static_cast<long long>(n));
 }
+
+/// "collisions", or "collision" beside a 1: the figure reads "1 collision".
+const char* collisions_word(std::uint64_t n) {
+    return n == 1 ? "collision" : "collisions";
+}
 }  // namespace
 
 std::vector<Figure> time_driven_figures(const Measurements& m, bool walls) {
@@ -148,13 +153,15 @@ std::vector<Figure> time_driven_figures(const Measurements& m, bool walls) {
         {count_text(m.overlapping_pairs), "overlapping", true},
     };
     if (walls && m.escaped > 0) out.push_back({count_text(m.escaped), "left the box", true});
-    out.push_back({count_text(m.collisions_pair + m.collisions_wall), "collisions", false});
+    const std::uint64_t collisions = m.collisions_pair + m.collisions_wall;
+    out.push_back({count_text(collisions), collisions_word(collisions), false});
     return out;
 }
 
 std::vector<Figure> event_driven_figures(const Measurements& m) {
+    const std::uint64_t collisions = m.collisions_pair + m.collisions_wall;
     return {
-        {count_text(m.collisions_pair + m.collisions_wall), "collisions", false},
+        {count_text(collisions), collisions_word(collisions), false},
         {"0", "missed", true},
     };
 }

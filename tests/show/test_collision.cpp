@@ -155,7 +155,13 @@ TEST_CASE("lesson figures are plain words with thousands separators") {
     CHECK(time_driven_figures(m, false).size() == 3);  // periodic boxes have nothing to leave
     const auto ed = event_driven_figures(m);
     CHECK(ed[0].value == "1,000,000");
+    CHECK(ed[0].label == "collisions");
     CHECK(ed[1].value == "0");
+    // One collision is "1 collision", in both panels.
+    m.collisions_pair = 0;
+    m.collisions_wall = 1;
+    CHECK(event_driven_figures(m)[0].label == "collision");
+    CHECK(time_driven_figures(m, false).back().label == "collision");
 }
 
 TEST_CASE("each panel's work is pair computations: tests and predictions, plus queue operations") {
