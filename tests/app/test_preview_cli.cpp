@@ -53,6 +53,22 @@ const std::string video_args = "render gas --size 320x180 --fps 15 --duration 4 
 
 }  // namespace
 
+TEST_CASE("display: ffplay plays the MP4 with its subtitle track drawn to the end and silently") {
+    if (!have_display()) {
+        COLLIDE_SKIP_TEST("DISPLAY is not set (the xvfb ctest entry runs this under xvfb-run)");
+    }
+    if (shell("command -v ffplay").empty()) COLLIDE_SKIP_TEST("ffplay is not installed");
+    TempDir dir("ffplay");
+    const fs::path out = dir.path / "gas.mp4";
+    const auto r = run_collide(video_args + " --lang en -o " + out.string());
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    // ffplay draws text subtitles through libass (-vf subtitles, as mpv does by default).
+    const std::string played = shell(
+        "timeout 120 ffplay -autoexit -nostats -loglevel error -vf subtitles=" + out.string() +
+        " " + out.string() + "; echo \"exit $?\"");
+    CHECK_MESSAGE(played == "exit 0\n", played);
+}
+
 TEST_CASE("display: render --preview encodes the same file as without it") {
     if (!have_display()) {
         COLLIDE_SKIP_TEST("DISPLAY is not set (the xvfb ctest entry runs this under xvfb-run)");

@@ -3,6 +3,7 @@
 // track with a language tag, and into a WebVTT or SubRip file beside it, all or nothing.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -13,6 +14,7 @@
 #include "../support/shell.hpp"
 #include "../support/skip.hpp"
 #include "../support/temp_dir.hpp"
+#include "collide/video/png.hpp"
 #include "multilingual_scene.hpp"
 #include "run_collide.hpp"
 #include "subtitle_file.hpp"
@@ -96,6 +98,50 @@ TEST_CASE(
                   "default=nw=1 " +
                   plain.string())
               .empty());
+}
+
+TEST_CASE(
+    "render: a player shows the track over the video (libass, as ffplay -vf subtitles and mpv)") {
+    if (!have_ffprobe()) COLLIDE_SKIP_TEST("ffmpeg is not installed");
+    TempDir dir("subtitles_player");
+    const fs::path scene = dir.path / "scene.toml";
+    collide::test::write_file(scene, scene_text);
+    const fs::path out = dir.path / "t.mp4";
+    const auto r =
+        run_collide("render " + scene.string() +
+                    " --size 640x360 --fps 10 --progress none --lang pl -o " + out.string());
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    // The frame at 2.8 s (the caption "Energia ± 0: E = ½mv²" on screen) as decoded, and as a
+    // player draws it with the MP4's own subtitle track over it.
+    const fs::path raw = dir.path / "raw.png";
+    const fs::path shown = dir.path / "shown.png";
+    REQUIRE(std::system(
+                ("ffmpeg -v error -y -ss 2.8 -i " + out.string() + " -frames:v 1 " + raw.string())
+                    .c_str()) == 0);
+    REQUIRE(std::system(("ffmpeg -v error -y -i " + out.string() + " -vf \"subtitles=" +
+                         out.string() + ",select=gte(t\\,2.8)\" -frames:v 1 " + shown.string())
+                            .c_str()) == 0);
+    const collide::Image a = collide::video::read_png(raw);
+    const collide::Image b = collide::video::read_png(shown);
+    REQUIRE(a.width == b.width);
+    REQUIRE(a.height == b.height);
+    std::size_t changed = 0;
+    int top = a.height;
+    for (int y = 0; y < a.height; ++y) {
+        for (int x = 0; x < a.width; ++x) {
+            const std::uint8_t* p = a.pixel(x, y);
+            const std::uint8_t* q = b.pixel(x, y);
+            bool differs = false;
+            for (int c = 0; c < 3; ++c) differs |= std::abs(int(p[c]) - int(q[c])) > 8;
+            if (!differs) continue;
+            ++changed;
+            top = std::min(top, y);
+        }
+    }
+    // The caption's text is drawn (a line of glyphs: over 0.3 % of the frame), at the bottom, as
+    // players place subtitles, and nothing else of the picture changes.
+    CHECK(changed > static_cast<std::size_t>(a.width * a.height) * 3 / 1000);
+    CHECK(top > a.height * 3 / 4);
 }
 
 TEST_CASE("render: a bad language, sidecar name or sidecar path exits 2 and writes nothing") {
