@@ -48,6 +48,9 @@ struct RenderHints {
     std::optional<double> speed;         ///< simulation time units per second of video
     std::optional<double> dt;            ///< time-driven quantum
     std::optional<ReplayChoice> replay;  ///< "none", "first" or "all": failures replayed
+    /// Only failures involving a disc with this tag are replayed (a barrier's, the scene's
+    /// subject); unset: any failure.
+    std::optional<std::string> replay_tag;
     /// Where each numeric hint was written, "file:line: render.dt", so that a hint the CLI
     /// refuses (too long, too much work) is named where the user can fix it; empty = unknown.
     std::string duration_at;

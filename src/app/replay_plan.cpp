@@ -88,19 +88,38 @@ void add_predictions(const Scene& scene, const RenderPlan& plan,
 
 }  // namespace
 
+bool shows_replay_tag(const Scene& scene, const sim::StepFailure& step) {
+    if (!scene.render.replay_tag) return true;
+    const auto tagged = [&](std::uint32_t i) {
+        return i < scene.discs.size() && scene.discs[i].tag == *scene.render.replay_tag;
+    };
+    return tagged(step.a) || (step.kind == sim::StepFailureKind::missed_pair && tagged(step.b));
+}
+
 std::vector<show::ReplayFailure> find_replays(const Scene& scene, const RenderPlan& plan,
                                               const std::atomic<bool>* stop) {
     if (plan.replay == ReplayChoice::none || plan.mode == RenderMode::event) return {};
     const std::size_t wanted =
         plan.replay == ReplayChoice::first ? 1 : sim::TimeEngine::max_failure_records;
+    const auto shown = [&scene](const sim::StepFailure& step) {
+        return shows_replay_tag(scene, step);
+    };
     sim::TimeEngine engine(scene, plan.time_engine);
     engine.set_stop_flag(stop);
-    // Frame by frame, as the video takes them, until enough steps have failed.
-    for (std::int64_t j = 0; j < plan.clock.count && engine.failures().size() < wanted; ++j)
+    // Frame by frame, as the video takes them, until enough steps have failed (or the engine
+    // keeps no more records).
+    const auto enough = [&] {
+        const auto& failures = engine.failures();
+        return failures.size() >= sim::TimeEngine::max_failure_records ||
+               static_cast<std::size_t>(std::count_if(failures.begin(), failures.end(), shown)) >=
+                   wanted;
+    };
+    for (std::int64_t j = 0; j < plan.clock.count && !enough(); ++j)
         engine.advance_to(std::max(plan.clock.time(j), engine.time()));
     std::vector<show::ReplayFailure> out;
     for (const sim::StepFailure& step : engine.failures()) {
         if (out.size() == wanted) break;
+        if (!shown(step)) continue;
         show::ReplayFailure failure;
         failure.step = step;
         failure.dt = plan.time_engine.dt;

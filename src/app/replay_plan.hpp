@@ -15,8 +15,13 @@
 
 namespace collide::app {
 
-/// The failures `plan` replays (plan.replay: the first, or all the engine records), each with
-/// the simulation frame after which it is shown (on plan.clock) and, when the plan has an
+/// True when `step` may be replayed: the scene names no replay_tag, or a disc of the step (the
+/// pair's either, the disc that left the box) carries it.
+[[nodiscard]] bool shows_replay_tag(const Scene& scene, const sim::StepFailure& step);
+
+/// The failures `plan` replays (plan.replay: the first, or all the engine records, of those
+/// shows_replay_tag keeps: with a replay_tag, none when the engine's first records have none), each
+/// with the simulation frame after which it is shown (on plan.clock) and, when the plan has an
 /// event-driven panel, its collision of the same discs at that moment. Empty for
 /// ReplayChoice::none or a scene that does not fail within plan.clock. Once `stop` is set
 /// (nullptr: never) throws Error(runtime) within a step or a few thousand events.

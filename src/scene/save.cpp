@@ -84,7 +84,7 @@ std::string hex_color(Rgb8 c) {
 
 void write_render(std::ostream& out, const RenderHints& r) {
     if (!r.color_mode && !r.trails && !r.overlays && !r.duration && !r.speed && !r.dt && !r.theme &&
-        !r.caption && r.captions.empty() && !r.histogram && !r.replay)
+        !r.caption && r.captions.empty() && !r.histogram && !r.replay && !r.replay_tag)
         return;
     out << "\n[render]\n";
     if (r.color_mode)
@@ -100,6 +100,7 @@ void write_render(std::ostream& out, const RenderHints& r) {
     if (r.speed) out << "speed = " << exact(*r.speed) << "\n";
     if (r.dt) out << "dt = " << exact(*r.dt) << "\n";
     if (r.replay) out << "replay = " << quoted(std::string(replay_choice_name(*r.replay))) << "\n";
+    if (r.replay_tag) out << "replay_tag = " << quoted(*r.replay_tag) << "\n";
     for (const CaptionCue& cue : r.captions) {
         out << "\n[[render.captions]]\nat = " << exact(cue.at) << "\ntext = " << quoted(cue.text)
             << "\n";

@@ -38,8 +38,8 @@ const Keys generate3_keys = {"count", "packing_fraction", "radius", "mass", "tem
 const Keys disc_keys = {"position", "velocity", "radius", "mass", "color", "tag"};
 const Keys generate_keys = {"count", "packing_fraction", "radius", "mass", "temperature",
                             "speed", "region",           "color",  "seed", "tag"};
-const Keys render_keys = {"color_mode", "trails",  "overlays", "duration",  "speed", "dt",
-                          "theme",      "caption", "captions", "histogram", "replay"};
+const Keys render_keys = {"color_mode", "trails",  "overlays", "duration",  "speed",  "dt",
+                          "theme",      "caption", "captions", "histogram", "replay", "replay_tag"};
 const Keys caption_keys = {"at", "text", "hold"};
 
 std::string num(double v) {
@@ -138,6 +138,7 @@ class TomlReader {
         if (speed_colored_ && !scene_.render.color_mode)
             scene_.render.color_mode = ColorMode::speed;
         validate_scene(scene_, origin_);
+        check_replay_tag();
         return std::move(scene_);
     }
 
@@ -385,6 +386,21 @@ class TomlReader {
     }
 
     // "file:line: field", the prefix of messages about a value checked later (render hints).
+    /// A replay_tag names discs the replay is to show: some disc must carry it.
+    void check_replay_tag() const {
+        const std::optional<std::string>& tag = scene_.render.replay_tag;
+        if (!tag || replay_tag_node_ == nullptr) return;
+        const bool carried = std::any_of(scene_.discs.begin(), scene_.discs.end(),
+                                         [&](const Disc& d) { return d.tag == *tag; });
+        if (!carried) {
+            fail(*replay_tag_node_, "render.replay_tag",
+                 "no disc has the tag \"" + *tag +
+                     "\" (give the discs the replay is to show "
+                     "tag = \"" +
+                     *tag + "\")");
+        }
+    }
+
     std::string where(const toml::node& at, const std::string& field) const {
         return file_ + ":" + std::to_string(at.source().begin.line) + ": " + field;
     }
@@ -543,6 +559,10 @@ class TomlReader {
         if (const toml::node* v = t.get("theme")) r.theme = one_of(*v, "render.theme", theme_names);
         if (const toml::node* v = t.get("replay"))
             r.replay = one_of(*v, "render.replay", replay_choice_names);
+        if (const toml::node* v = t.get("replay_tag")) {
+            r.replay_tag = bounded_text(*v, "render.replay_tag", max_tag_chars);
+            replay_tag_node_ = v;
+        }
         if (const toml::node* v = t.get("histogram")) {
             // "auto" (the default: where it teaches) or a size.
             if (v->is_string() && v->as_string()->get() == "auto") {
@@ -800,7 +820,8 @@ class TomlReader {
     Scene scene_;
     SceneOrigin origin_;
     bool speed_colored_ = false;
-    std::uintmax_t included_bytes_ = 0;  ///< read through `include` so far
+    const toml::node* replay_tag_node_ = nullptr;  ///< render.replay_tag, for its error
+    std::uintmax_t included_bytes_ = 0;            ///< read through `include` so far
 };
 
 // Optimal string alignment distance: insertions, deletions, substitutions and swaps of two

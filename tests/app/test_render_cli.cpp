@@ -249,6 +249,22 @@ TEST_CASE("render --replay and [render] replay: a bad value exits 2 naming the o
     CHECK_MESSAGE(hint.output.find("r.toml:9") != std::string::npos, hint.output);
     CHECK_MESSAGE(hint.output.find("render.replay") != std::string::npos, hint.output);
     CHECK(!fs::exists(mp4));
+    // A replay_tag no disc carries is named where it was written, by `check` too.
+    std::ofstream(scene) << "[box]\nwidth = 1.0\nheight = 1.0\n"
+                            "[[disc]]\nposition = [0.3, 0.5]\nradius = 0.05\ntag = \"wall\"\n"
+                            "[render]\nreplay_tag = \"barrier\"\n";
+    for (const std::string& command :
+         {"render " + scene.string() + " --progress none -o " + mp4.string(),
+          "check " + scene.string()}) {
+        const auto tag = run_collide(command);
+        CAPTURE(command);
+        CHECK(tag.exit_code == 2);
+        CHECK_MESSAGE(tag.output.find("r.toml:9") != std::string::npos, tag.output);
+        CHECK_MESSAGE(tag.output.find("render.replay_tag: no disc has the tag \"barrier\"") !=
+                          std::string::npos,
+                      tag.output);
+    }
+    CHECK(!fs::exists(mp4));
 }
 
 TEST_CASE("thumbnail: every built-in scene in both modes matches its golden image") {

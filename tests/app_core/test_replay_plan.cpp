@@ -102,3 +102,22 @@ TEST_CASE("--replay all replays each failed step, none replays nothing, a bad va
     request.overlays = "full";
     CHECK(plan_render(request, scene, finder(scene)).replays.empty());
 }
+
+TEST_CASE("a replay_tag replays the first failure of a disc with that tag, skipping the others") {
+    // Discs 0 -> 1 fail first, 2 -> 3 later: tagging 3 makes the later failure the replayed one.
+    Scene scene = tunnel_scene();
+    scene.discs[3].tag = "barrier";
+    scene.render.replay_tag = "barrier";
+    const RenderPlan plan = plan_render(tunnel_request(), scene, finder(scene));
+    REQUIRE(plan.replays.size() == 1);
+    const show::ReplayFailure& failure = plan.replays.front();
+    CHECK(failure.step.a == 2);
+    CHECK(failure.step.b == 3);
+    CHECK(failure.step.step > first_missed_step(scene, 0.1));
+    CHECK(shows_replay_tag(scene, failure.step));
+    // A tag no failing disc carries: nothing replayed (the untagged failures are not shown).
+    scene.discs[3].tag.clear();
+    scene.discs[3].tag = "other";
+    scene.render.replay_tag = "nobody";
+    CHECK(plan_render(tunnel_request(), scene, finder(scene)).replays.empty());
+}
