@@ -7,6 +7,7 @@
 
 #include <vector>
 
+#include "code_panel.hpp"
 #include "collide/render/renderer.hpp"
 #include "collide/view/heap.hpp"
 #include "collide/view/puzzle.hpp"
@@ -123,6 +124,9 @@ struct KeyStyle {
 /// A tree edge lit in `mark`'s colour: the fill, darkened or lightened until it keeps 3:1 on
 /// the panel (the light theme's amber and green are too faint on white as lines).
 [[nodiscard]] Rgba8 heap_lit_edge(view::SlotMark mark, const HeapPalette& palette) noexcept;
+/// The pseudocode column of `collide heap --code` (code_panel.hpp): the panel's colours, the
+/// current line on the strip's amber tab with its dark text, the chevron in the title's colour.
+[[nodiscard]] CodeColors heap_code_colors(const HeapPalette& palette) noexcept;
 /// The map's entry being updated, small text on the moving blue: dark (white keeps only 3.2:1).
 inline constexpr Rgba8 heap_map_update_text{20, 20, 24, 255};
 
