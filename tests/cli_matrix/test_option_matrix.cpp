@@ -178,6 +178,9 @@ TEST_CASE("option matrix: heap's numbers and names") {
     cases.push_back({"--ops P --at -1" + out + ".png", "--at"});
     cases.push_back({"--ops P --last-frame --format gif" + out + ".png", "--format"});
     cases.push_back({"--ops P" + out + ".txt", "-o", "a .mp4 or .gif path"});
+    // --code: one heap's pseudocode; none for arrays or several panels.
+    cases.push_back({"--ops P --code --impl ordered" + out + ".mp4", "--code", "one heap"});
+    cases.push_back({"--ops P --code --impl binary,dary:3" + out + ".mp4", "--code", "one heap"});
     expect_refused("heap", cases);
 }
 
