@@ -13,7 +13,9 @@ constexpr float indent_share = 1.1F;
 /// Room for the chevron left of the lines, in font heights.
 constexpr float gutter_share = 0.9F;
 
-float inset(const FontAtlas& f) { return f.pixel_height() * (pad_share + gutter_share); }
+float inset(const FontAtlas& f) {
+    return f.pixel_height() * (pad_share + gutter_share);
+}
 
 /// `s` cut to `width` pixels, ending in "...".
 std::string fitted(const FontAtlas& f, const std::string& s, float width) {
@@ -28,9 +30,9 @@ std::string fitted(const FontAtlas& f, const std::string& s, float width) {
 float code_panel_width(const view::CodeView& code, const FontAtlas& font) {
     float widest = font.text_width(code.title);
     for (const view::CodeLineView& line : code.lines) {
-        widest = std::max(widest, static_cast<float>(line.indent) * indent_share *
-                                          font.pixel_height() +
-                                      font.text_width(line.text));
+        widest =
+            std::max(widest, static_cast<float>(line.indent) * indent_share * font.pixel_height() +
+                                 font.text_width(line.text));
     }
     return widest + inset(font) + pad_share * font.pixel_height();
 }
@@ -45,9 +47,9 @@ void paint_code(const view::CodeView& code, RectF area, const FontAtlas& font,
     const std::size_t rows = code.lines.size() + (code.title.empty() ? 0 : 1);
     // Lines 1.2 font heights apart, closer when the panel is short (never overlapping).
     const float room = area.height() - 2.0F * pad;
-    const float step =
-        rows == 0 ? font.line_height()
-                  : std::clamp(room / static_cast<float>(rows), px, font.line_height());
+    const float step = rows == 0
+                           ? font.line_height()
+                           : std::clamp(room / static_cast<float>(rows), px, font.line_height());
     float baseline = area.y0 + pad + font.ascent();
     if (!code.title.empty()) {
         text(font, area.x0 + pad, baseline, fitted(font, code.title, right - area.x0 - pad),

@@ -23,7 +23,7 @@ struct CodeColors {
     /// The plate's outline: the plate's colour moved until it keeps 3:1 on the panel (the plate
     /// itself where it already does), so the bar stands out in either theme.
     Rgba8 plate_edge;
-    Rgba8 marker;   ///< the chevron beside the current line, on `panel`
+    Rgba8 marker;  ///< the chevron beside the current line, on `panel`
 };
 
 /// Draws text: (font, x, baseline, text, colour); the painter records what it drew.

@@ -37,9 +37,9 @@ struct Line {
 
 /// The words that turn around with the orientation.
 struct Words {
-    const char* first;    ///< "larger": the child that comes out first
-    const char* holds;    ///< ">=": a key that stays where it is against one below it
-    const char* top;      ///< "max"
+    const char* first;  ///< "larger": the child that comes out first
+    const char* holds;  ///< ">=": a key that stays where it is against one below it
+    const char* top;    ///< "max"
 };
 
 Words words_of(pq::Orientation orientation) {
@@ -139,8 +139,7 @@ Role role_of(const pq::LessonPanel& panel, LessonOp::Kind op, pq::Orientation or
         case LessonStep::Kind::compare: {
             if (step.i == step.j) return Role::check_key;  // increase-key: new against old
             const std::size_t d = panel.arity;
-            const bool siblings =
-                step.i > 0 && step.j > 0 && (step.i - 1) / d == (step.j - 1) / d;
+            const bool siblings = step.i > 0 && step.j > 0 && (step.i - 1) / d == (step.j - 1) / d;
             if (siblings) return Role::pick_child;
             return swim ? Role::swim_stop : Role::sink_stop;
         }
@@ -155,8 +154,8 @@ Role role_of(const pq::LessonPanel& panel, LessonOp::Kind op, pq::Orientation or
             }
             if (op == LessonOp::Kind::sortdown) {
                 // Every round of the sortdown is its exchange, then the sink it starts.
-                const bool next_sinks = s + 1 < done.steps.size() &&
-                                        done.steps[s + 1].kind == LessonStep::Kind::sink;
+                const bool next_sinks =
+                    s + 1 < done.steps.size() && done.steps[s + 1].kind == LessonStep::Kind::sink;
                 return next_sinks ? Role::sortdown_swap : Role::sink_exchange;
             }
             return swim ? Role::swim_exchange : Role::sink_exchange;

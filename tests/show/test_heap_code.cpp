@@ -31,8 +31,7 @@ HeapLesson with_code(pq::LessonRecord record) {
 
 HeapLesson ops_lesson(const char* ops, pq::QueueKind kind, pq::Orientation orientation) {
     const std::vector<pq::QueueKind> kinds{kind};
-    return with_code(
-        pq::LessonRecord::operations(pq::parse_lesson_ops(ops), kinds, orientation));
+    return with_code(pq::LessonRecord::operations(pq::parse_lesson_ops(ops), kinds, orientation));
 }
 
 HeapLesson sort_lesson(const char* keys, pq::Orientation orientation) {
@@ -77,7 +76,8 @@ std::vector<std::string> expected_words(const HeapLesson& lesson, std::size_t op
             if (step.i > 0 && step.j > 0 && parent(step.i) == parent(step.j))
                 return {max ? "larger child" : "smaller child"};
             // A key against its parent (swim) or against its child (sink).
-            if (step.i > 0 && parent(step.i) == step.j) return {max ? "a[p] >= a[k]" : "a[p] <= a[k]", "stop"};
+            if (step.i > 0 && parent(step.i) == step.j)
+                return {max ? "a[p] >= a[k]" : "a[p] <= a[k]", "stop"};
             REQUIRE(parent(step.j) == step.i);
             return {max ? "a[k] >= a[j]" : "a[k] <= a[j]", "stop"};
         case LessonStep::Kind::exchange: {
@@ -116,8 +116,8 @@ std::size_t check_frames(const HeapLesson& lesson) {
         const std::size_t op = moment.started ? moment.op : 0;
         REQUIRE(op < record.ops().size());
         CAPTURE(t);
-        CHECK(contains(code.lines.front().text, header_of(record.ops()[op].kind,
-                                                            record.orientation())));
+        CHECK(contains(code.lines.front().text,
+                       header_of(record.ops()[op].kind, record.orientation())));
         const LessonStep* step = moment.panels.front().step;
         if (step == nullptr) {
             CHECK_FALSE(code.current.has_value());  // intro, pauses and outro: no line under way
@@ -208,13 +208,13 @@ TEST_CASE("heap code: heapsort's two passes, construction then sortdown, in one 
 TEST_CASE("heap code: only one heap panel can show its code") {
     const std::vector<pq::QueueKind> two{{pq::QueueFamily::unordered, 1},
                                          {pq::QueueFamily::binary, 2}};
-    HeapLesson lesson(pq::LessonRecord::operations(pq::parse_lesson_ops("P Q *"), two,
-                                                   pq::Orientation::max),
-                      pacing, 1);
+    HeapLesson lesson(
+        pq::LessonRecord::operations(pq::parse_lesson_ops("P Q *"), two, pq::Orientation::max),
+        pacing, 1);
     CHECK_FALSE(show::heap_code_fits(lesson.record()));
     CHECK(contains(input_error_message([&] { lesson.show_code(true); }), "code:"));
     CHECK_FALSE(lesson.frame_at(1.5).code.has_value());  // without --code: no listing
     const std::vector<pq::QueueKind> array{{pq::QueueFamily::ordered, 1}};
-    CHECK_FALSE(show::heap_code_fits(pq::LessonRecord::operations(
-        pq::parse_lesson_ops("P Q *"), array, pq::Orientation::max)));
+    CHECK_FALSE(show::heap_code_fits(
+        pq::LessonRecord::operations(pq::parse_lesson_ops("P Q *"), array, pq::Orientation::max)));
 }
