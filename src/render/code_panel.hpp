@@ -1,11 +1,13 @@
 #pragma once
 // Internal: the pseudocode panel of `--code` (collide/view/code.hpp), painted into a rectangle
-// of any lesson frame (the heap lesson's, the collision video's queue, the puzzle's). It paints
-// what it is handed: the listing's lines at one font size, the current one on a plate with a
-// chevron beside it (so that it reads without colour).
+// of a lesson frame (the heap lesson's, the collision video's beside its queue). It paints what
+// it is handed: the listing's lines at one font size, the current one on a plate with a chevron
+// beside it (so that it reads without colour).
 
+#include <cstddef>
 #include <functional>
 #include <string_view>
+#include <vector>
 
 #include "collide/view/code.hpp"
 #include "font.hpp"
@@ -26,15 +28,21 @@ struct CodeColors {
     Rgba8 marker;  ///< the chevron beside the current line, on `panel`
 };
 
-/// Draws text: (font, x, baseline, text, colour); the painter records what it drew.
-using CodeText = std::function<void(const FontAtlas&, float, float, std::string_view, Rgba8)>;
+/// Draws one row's text: (row index, the row's rectangle, x where the text starts, the text
+/// (already cut to fit), colour); the text sits in the row as Painter::draw_text centres it
+/// (baseline = y0 + (height - pixel height) / 2 + ascent). The painter records what it drew.
+using CodeText = std::function<void(std::size_t, RectF, float, std::string_view, Rgba8)>;
+
+/// The rows of a panel of `count` rows (the title's included) in `area`, for text of
+/// `pixel_height`: 1.2 heights apart, closer (down to one height) when the area is short. Pure:
+/// layouts call it for their text slots, paint_code for its text.
+[[nodiscard]] std::vector<RectF> code_rows(RectF area, float pixel_height, std::size_t count);
 
 /// The width a panel needs for `code` in `font`, padding included (the widest line, indented).
 [[nodiscard]] float code_panel_width(const view::CodeView& code, const FontAtlas& font);
 
-/// Paints `code` into `area`: its fill (into `under`), the title and the lines in `font` (a
-/// line wider than the panel is cut and ends in "..."; lines closer together, down to the
-/// font's height, when the panel is short), the current line's plate and chevron.
+/// Paints `code` into `area`: its fill (into `under`), the title and the lines in `font` (a line
+/// wider than the panel is cut and ends in "..."), the current line's plate and chevron.
 void paint_code(const view::CodeView& code, RectF area, const FontAtlas& font,
                 const CodeColors& colors, OverlayBatch& under, const CodeText& text);
 

@@ -210,11 +210,15 @@ struct HeapRenderer::Impl {
             build_panel(frame.panels[p], rects[p]);
         }
         if (frame.code) {
-            const CodeText draw = [this](const FontAtlas& f, float x, float baseline,
-                                         std::string_view s,
-                                         Rgba8 color) { text(f, x, baseline, s, color); };
-            paint_code(*frame.code, {w - margin - code_w, strip_h, w - margin, h - margin},
-                       font(small_px()), heap_code_colors(colors), under, draw);
+            const FontAtlas& f = font(small_px());
+            const CodeText draw = [this, &f](std::size_t, RectF row, float x, std::string_view s,
+                                             Rgba8 color) {
+                // As Painter::draw_text places text in a slot: centred by the font's height.
+                text(f, x, row.y0 + 0.5F * (row.height() - f.pixel_height()) + f.ascent(), s,
+                     color);
+            };
+            paint_code(*frame.code, {w - margin - code_w, strip_h, w - margin, h - margin}, f,
+                       heap_code_colors(colors), under, draw);
         }
     }
 

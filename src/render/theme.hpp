@@ -33,6 +33,10 @@ struct Palette {
 /// A plot's text, axis, curve and zero-line colours in a theme (every level's plots use them).
 [[nodiscard]] PlotColors plot_colors(Theme theme) noexcept;
 
+/// The pseudocode column of `render --queue --code` (code_panel.hpp): the box's fill as its
+/// panel, the current line on the heap lesson's amber plate with dark text.
+[[nodiscard]] CodeColors code_colors(const Palette& palette) noexcept;
+
 /// The queue strip's colour for the next event (amber, far from the failure colour).
 [[nodiscard]] Rgb8 next_event_color(Theme theme) noexcept;
 
