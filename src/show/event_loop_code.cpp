@@ -8,9 +8,12 @@ namespace collide::show {
 view::CodeView event_loop_code() {
     view::CodeView code;
     code.title = "event-driven loop";
-    code.lines = {{0, "while the queue is not empty:"}, {1, "e = delete the minimum"},
-                  {1, "if e is invalidated: skip it"},  {1, "move all discs to e's time"},
-                  {1, "resolve e"},                     {1, "predict e's discs' next events"}};
+    code.lines = {{0, "while the queue is not empty:"},
+                  {1, "e = delete the minimum"},
+                  {1, "if e is invalidated: skip it"},
+                  {1, "move all discs to e's time"},
+                  {1, "resolve e"},
+                  {1, "predict e's discs' next events"}};
     return code;
 }
 
