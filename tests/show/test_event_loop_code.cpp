@@ -67,7 +67,7 @@ TEST_CASE("event loop code: a stale pop stops at the check: it is skipped, nothi
           std::vector<LoopLine>{LoopLine::pop, LoopLine::check, LoopLine::move});
 }
 
-TEST_CASE("event loop code: the newest pop decides; before any pop the discs move") {
+TEST_CASE("event loop code: the newest pop decides, and before any pop the discs move") {
     const double speed = 0.05;
     QueueView q;
     CHECK(event_loop_line(q, 0.0, speed) == LoopLine::move);
