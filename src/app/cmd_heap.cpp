@@ -20,6 +20,7 @@
 #include "cli_numbers.hpp"
 #include "collide/error.hpp"
 #include "collide/render/heap_view.hpp"
+#include "collide/show/heap_code.hpp"
 #include "collide/show/heap_lesson.hpp"
 #include "collide/show/subtitles.hpp"
 #include "collide/sim/pq/heap_lesson.hpp"
@@ -43,6 +44,7 @@ struct HeapCli {
     bool min = false;
     int index_base = 1;
     double pace = 0.8;
+    bool code = false;
     LessonVideoCli video;
 
     CLI::Option* ops_opt = nullptr;
@@ -83,21 +85,33 @@ show::HeapLesson lesson_of(const HeapCli& v) {
     if (v.index_base != 0 && v.index_base != 1)
         throw_option_error("--index-base", std::to_string(v.index_base), "0 or 1");
     const show::HeapPacing pacing = pacing_of(v.pace);
-    return {record_of(v), pacing, v.index_base};
+    show::HeapLesson lesson(record_of(v), pacing, v.index_base);
+    if (v.code) {
+        if (!show::heap_code_fits(lesson.record())) {
+            throw_option_error("--code",
+                               "shows the code of one heap beside it; give a single "
+                               "heap (--impl binary, dary:D or indexed), or --sort");
+        }
+        lesson.show_code(true);
+    }
+    return lesson;
 }
 
 /// Refuses a lesson whose queue holds more keys than the frame can show legibly.
 void check_legible(const pq::LessonRecord& record, const HeapCli& v) {
     const std::size_t panels = record.panels().size();
-    const std::size_t limit = render::max_legible_keys(panels);
+    const std::size_t limit = render::max_legible_keys(panels, v.code);
     if (record.capacity() <= limit) return;
     throw_option_error(
         given(v.sort_opt) ? "--sort" : "--ops",
         fmt::format("the queue holds up to {} keys at once, but at most {} can be drawn "
                     "legibly with {} panel{} side by side (keys over ~14 px tall at "
-                    "854x480); use fewer keys{}",
+                    "854x480){}; use fewer keys{}",
                     record.capacity(), limit, panels, panels == 1 ? "" : "s",
-                    panels > 1 ? " or fewer implementations" : ""));
+                    v.code ? " beside the code" : "",
+                    panels > 1 ? " or fewer implementations"
+                    : v.code   ? " or leave out --code"
+                               : ""));
 }
 
 void run(const HeapCli& v) {
@@ -124,6 +138,7 @@ void run(const HeapCli& v) {
     config.width = geometry.width;
     config.height = geometry.height;
     config.widest_key = lesson.widest_key();
+    if (lesson.shows_code()) config.code_lines = lesson.code_lines();
     config.theme = theme;
     render::HeapRenderer renderer(config, render::Backend::automatic, print_notice);
 
@@ -168,6 +183,9 @@ void add_heap_command(CLI::App& root) {
         ->capture_default_str();
     cmd->add_option("--pace", v->pace, "Seconds per step (a compare, an exchange, ...)")
         ->capture_default_str();
+    cmd->add_flag("--code", v->code,
+                  "Show the operation's pseudocode beside the heap, the line under way marked "
+                  "(one heap panel: binary, dary:D, indexed, or --sort)");
     add_lesson_video_options(*cmd, v->video, "heap", "e.g. 640x360");
     cmd->footer(
         "Examples:\n"
@@ -176,6 +194,7 @@ void add_heap_command(CLI::App& root) {
         "  collide heap --ops \"P Q E * X A M *\" --impl unordered,ordered,binary\n"
         "  collide heap --ops \"5 9 3 7 * 3^12\" --impl indexed       # increase-key\n"
         "  collide heap --sort \"S O R T E X A M P L E\" -o heapsort.mp4\n"
+        "  collide heap --ops \"P Q E * X A M *\" --code           # swim and sink as code\n"
         "See docs/heap.md for a whole lesson.");
     cmd->callback([v] { run(*v); });
 }

@@ -58,6 +58,7 @@ struct CliValues {
     std::string replay;
     bool no_intro = false;
     bool no_epilogue = false;
+    bool code = false;
     bool trails = true;
     std::string gl = "auto";
     std::string dump_rgba;
@@ -148,6 +149,7 @@ RenderRequest request_of(const CliValues& v, bool still) {
                                                                         sim::max_watched_events));
     }
     r.slow_motion = if_given(v.slow_motion_opt, v.slow_motion);
+    r.code = v.code;
     r.font = v.video.font;
     return r;
 }
@@ -210,6 +212,10 @@ void add_shared_options(CLI::App& cmd, CliValues& v, bool video) {
                                  "(after the scene: `render gas --queue`)")
                       ->expected(0, 1)
                       ->type_name("[K]");
+    cmd.add_flag(
+        "--code", v.code,
+        "With --queue: the event-driven loop's pseudocode beside the boxes, the line under "
+        "way marked; each pop walks its lines (default --slow-motion 16)");
     v.slow_motion_opt = cmd.add_option(
         "--slow-motion", v.slow_motion,
         "Play F times slower than --speed (or the scene's pace), e.g. 4 to follow single events");
@@ -424,6 +430,10 @@ void run(const CliValues& values, bool still) {
     std::optional<Scene> stand_in;
     if (spheres != nullptr) stand_in = show::stand_in_scene(*spheres);
     const Scene& scene = spheres != nullptr ? *stand_in : std::get<Scene>(any_scene);
+    if (spheres != nullptr && values.code)
+        throw_option_error("--code",
+                           "not for 3D scenes yet: the loop is shown beside the queue "
+                           "picture, drawn in 2D");
     if (spheres != nullptr && values.queue_opt != nullptr && values.queue_opt->count() > 0)
         throw_option_error("--queue", "not for 3D scenes yet: the queue picture is drawn in 2D");
     interrupts.throw_if_requested();

@@ -14,6 +14,7 @@
 #include "collide/error.hpp"
 #include "collide/show/chapters.hpp"
 #include "collide/show/collision_summary.hpp"
+#include "collide/show/event_loop_code.hpp"
 #include "collide/show/plot_words.hpp"
 #include "collide/show/replay.hpp"
 #include "collide/show/subtitles.hpp"
@@ -241,9 +242,15 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
             show::replay_frame(*replay, frame.panels[0].snapshot.box,
                                static_cast<double>(frame.index - segment.first_frame) / plan_.fps);
     }
+    content_.code.reset();
     for (std::size_t i = 0; i < frame.panels.size(); ++i) {
         const PanelFrame& panel = frame.panels[i];
         render::PanelContent& out = content_.panels[i];
+        if (plan_.code && panel.snapshot.queue && !content_.code) {
+            // --code: the loop's line under way, from the queue's latest pop.
+            content_.code = show::event_loop_view(*panel.snapshot.queue, panel.snapshot.time,
+                                                  plan_.speed.speed);
+        }
         out.snapshot = &panel.snapshot;
         out.spheres = panel.spheres ? &panel.view : nullptr;
         out.title = panel.title;

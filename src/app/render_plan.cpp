@@ -80,8 +80,13 @@ EngineOptions event_engine_options(const RenderRequest& request) {
 
 /// --slow-motion F: the video plays F times slower (frames F times closer in simulation time).
 void apply_slow_motion(const RenderRequest& request, RenderPlan& plan) {
-    if (!request.slow_motion) return;
-    const double f = *request.slow_motion;
+    // --code walks each pop through the loop's lines: it needs pops further apart.
+    const std::optional<double> factor =
+        request.slow_motion
+            ? request.slow_motion
+            : (request.code ? std::optional<double>(default_code_slow_motion) : std::nullopt);
+    if (!factor) return;
+    const double f = *factor;
     if (!std::isfinite(f) || f < 1.0 || f > max_slow_motion) {
         throw_option_error("--slow-motion", fmt::format("{}", f),
                            fmt::format("a factor from 1 to {:g} (times slower)", max_slow_motion));
@@ -111,6 +116,28 @@ std::size_t queue_events(const RenderRequest& request, const RenderPlan& plan) {
                                        render::overlay_level_name(plan.render.overlays)));
     }
     return static_cast<std::size_t>(k);
+}
+
+/// --code: the event-driven loop beside the queue picture; the lesson level, --queue and a
+/// frame of at least min_code_frame_width pixels (checked before --queue, so that the message
+/// names the option given).
+bool code_of(const RenderRequest& request, const RenderPlan& plan) {
+    if (!request.code) return false;
+    if (plan.render.overlays != render::OverlayLevel::lesson) {
+        throw_option_error("--code",
+                           fmt::format("the code is drawn at the lesson level only, not with "
+                                       "--overlays {}",
+                                       render::overlay_level_name(plan.render.overlays)));
+    }
+    if (!request.queue) {
+        throw_option_error("--code", "shows the event-driven loop beside its queue; add --queue");
+    }
+    if (plan.width < min_code_frame_width) {
+        throw_option_error("--code", fmt::format("needs a frame at least {} pixels wide (-q l or "
+                                                 "larger), got {}x{}",
+                                                 min_code_frame_width, plan.width, plan.height));
+    }
+    return true;
 }
 
 EngineOptions time_engine_options(const RenderRequest& request, const Scene& scene, double speed,
@@ -535,6 +562,7 @@ RenderPlan plan_without_frames(const RenderRequest& request, const Scene& scene)
         plan.notices.insert(plan.notices.end(), dt_notices.begin(), dt_notices.end());
     }
     plan.render = render_config(request, scene, plan.width, plan.height);
+    plan.code = code_of(request, plan);
     plan.queue_events = queue_events(request, plan);
     plan.render.trail_length = trail_length(scene, video.count);
     plan.render.trail_whole_path = few_tagged_discs(scene);

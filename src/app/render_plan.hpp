@@ -153,6 +153,7 @@ struct RenderRequest {
     bool no_limits = false;             ///< --no-limits: run even what exceeds WorkLimits
     std::optional<int> queue;           ///< --queue [K]: show the event queue, K events
     std::optional<double> slow_motion;  ///< --slow-motion F: F times slower than the speed
+    bool code = false;                  ///< --code: the event-driven loop beside the queue
     std::string font;                   ///< --font FILE (empty: find_font's search)
     bool no_intro = false;              ///< --no-intro: no title card
     bool no_epilogue = false;           ///< --no-epilogue: no summary card at the end
@@ -161,6 +162,11 @@ struct RenderRequest {
 
 /// Events `--queue` shows without a number.
 inline constexpr int default_queue_events = 5;
+/// `--code` without `--slow-motion`: slow enough that a pop's walk through the loop's lines
+/// (4 x show::code_line_seconds) mostly ends before the next pop (gas: ~0.7 pops a second).
+inline constexpr double default_code_slow_motion = 16.0;
+/// `--code`: the narrowest frame that holds the loop's lines beside the boxes (-q l).
+inline constexpr int min_code_frame_width = 854;
 /// The largest --slow-motion factor (a disc crossing the box in ten seconds would take days).
 inline constexpr double max_slow_motion = 1000.0;
 
@@ -211,6 +217,8 @@ struct RenderPlan {
     std::filesystem::path timeline_json;  ///< --timeline-json (empty: none)
     /// --queue: the event-driven panel shows this many upcoming events and its queue (0: off).
     std::size_t queue_events = 0;
+    /// --code: the event-driven loop's pseudocode beside the queue, its line under way marked.
+    bool code = false;
     /// --slow-motion: speed.speed is the chosen pace divided by this (1: none). The physics (the
     /// default dt) follows the pace before the slow motion.
     double slow_motion = 1.0;

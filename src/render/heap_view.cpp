@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 
+#include "code_panel.hpp"
 #include "collide/assert.hpp"
 #include "collide/error.hpp"
 #include "collide/render/renderer.hpp"
@@ -40,9 +41,10 @@ void HeapViewConfig::validate() const {
     if (widest_key.empty()) throw_input_error("heap view.widest_key: must not be empty");
 }
 
-std::size_t max_legible_keys(std::size_t panels) noexcept {
+std::size_t max_legible_keys(std::size_t panels, bool code) noexcept {
     constexpr std::size_t keys_per_frame_width = 36;
-    return keys_per_frame_width / panel_columns(panels);
+    constexpr std::size_t keys_beside_code = 21;  // 60 % of the width
+    return (code ? keys_beside_code : keys_per_frame_width) / panel_columns(panels);
 }
 
 namespace {
@@ -98,8 +100,9 @@ struct HeapRenderer::Impl {
     OverlayBatch& under = list.under;     // slots, edges, boxes: before the nodes
     OverlayBatch& over = list.over;       // token marker etc.: after the nodes
 
-    float unit = 1.0F;        // pixels per 1/720 of the frame height
-    std::size_t columns = 1;  // of the panel grid in the frame being built
+    float unit = 1.0F;         // pixels per 1/720 of the frame height
+    bool beside_code = false;  // the frame being built has a code column (--code)
+    std::size_t columns = 1;   // of the panel grid in the frame being built
 
     Impl(const HeapViewConfig& cfg, std::unique_ptr<Context> ctx)
         : config(cfg),
@@ -194,13 +197,39 @@ struct HeapRenderer::Impl {
         const auto w = static_cast<float>(config.width);
         const auto h = static_cast<float>(config.height);
         columns = panel_columns(frame.panels.size());
+        beside_code = frame.code.has_value();
         const float margin = (columns >= 4 ? 8.0F : 14.0F) * unit;
         const float strip_h = build_token_strip(frame, margin);
+        // --code: the listing takes a fixed column on the right, the same in every frame, so
+        // that the tree keeps its place when the operation (and its listing) changes.
+        const float code_w = frame.code ? code_width(*frame.code) : 0.0F;
+        const float panels_x1 = w - margin - (frame.code ? code_w + margin : 0.0F);
         const std::vector<RectF> rects =
-            panel_rects(frame.panels.size(), {margin, strip_h, w - margin, h - margin}, margin);
+            panel_rects(frame.panels.size(), {margin, strip_h, panels_x1, h - margin}, margin);
         for (std::size_t p = 0; p < frame.panels.size(); ++p) {
             build_panel(frame.panels[p], rects[p]);
         }
+        if (frame.code) {
+            const FontAtlas& f = font(small_px());
+            const CodeText draw = [this, &f](std::size_t, RectF row, float x, std::string_view s,
+                                             Rgba8 color) {
+                // As Painter::draw_text places text in a slot: centred by the font's height.
+                text(f, x, row.y0 + 0.5F * (row.height() - f.pixel_height()) + f.ascent(), s,
+                     color);
+            };
+            paint_code(*frame.code, {w - margin - code_w, strip_h, w - margin, h - margin}, f,
+                       heap_code_colors(colors), under, draw);
+        }
+    }
+
+    /// The code column's width (--code): the widest line of the video's listings at the lesson
+    /// size, at most 45 % of the frame (a longer line is cut).
+    float code_width(const view::CodeView& code) {
+        view::CodeView sizing;
+        sizing.title = code.title;
+        sizing.lines = config.code_lines.empty() ? code.lines : config.code_lines;
+        const float widest = code_panel_width(sizing, font(small_px()));
+        return std::ceil(std::min(widest, 0.45F * static_cast<float>(config.width)));
     }
 
     /// The operations on one line, the current one on an amber tab; returns the strip's height.
@@ -282,6 +311,12 @@ struct HeapRenderer::Impl {
         const float tallest = p.tree ? (deep ? 0.085F : 0.11F) : 0.16F;
         g.slot_size = std::min(inner_w / (static_cast<float>(slots) + gap_slots),
                                tallest * static_cast<float>(config.height));
+        if (p.show_map && beside_code) {
+            // Beside the code the panel is narrow: the map would go between the tree and the
+            // array and squeeze the tree; slightly smaller slots keep it beside the array.
+            const float beside = (inner_w - 3.0F * pad) / (2.0F * static_cast<float>(slots));
+            if (beside >= 0.75F * g.slot_size) g.slot_size = std::min(g.slot_size, beside);
+        }
         const float index_h = small.line_height();
         // Under the index labels: room for the key that dips under the row in an exchange.
         g.slot_top = g.caption_top - pad - index_h - 1.45F * g.slot_size;

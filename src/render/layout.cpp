@@ -112,6 +112,8 @@ const char* text_role_name(TextRole role) noexcept {
             return "strip";
         case TextRole::queue:
             return "queue";
+        case TextRole::code:
+            return "code";
     }
     return "text";
 }

@@ -52,7 +52,8 @@ enum class TextRole {
     plot_title,
     counters,
     strip,
-    queue  ///< the event queue strip under a panel (its heading line; the strip is queue_strip)
+    queue,  ///< the event queue strip under a panel (its heading line; the strip is queue_strip)
+    code    ///< lesson, --code: a line of the pseudocode column (its title first)
 };
 [[nodiscard]] const char* text_role_name(TextRole role) noexcept;
 
@@ -107,6 +108,7 @@ struct FrameLayout {
     RectF queue_strip;  // lesson level with --queue: under the panels, frame-wide
     int queue_panel = -1;
     ColumnLayout column;         // lesson level
+    RectF code;                  // lesson level with --code: the pseudocode column
     std::vector<TextSlot> text;  // every text line (lesson, compact); full: header and strip
     float margin = 0.0F;
     float body_pixel_height = 0.0F;      ///< 0 at level none
@@ -144,6 +146,10 @@ struct LayoutInput {
     bool color_legend = false;  ///< lesson: a colour bar (speed or mass colours) in the column
     int counter_rows = 1;       ///< full: rows of the counter grid
     int queue_panel = -1;       ///< lesson: this panel shows its event queue in a strip below it
+    /// Lesson, --code: rows of the pseudocode column on the right (its title included; 0: no
+    /// column) and the column's width in pixels; everything else lays out in what is left.
+    std::size_t code_rows = 0;
+    float code_width = 0.0F;
 };
 
 /// Lesson level: the event queue strip's share of the frame height.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "code_panel.hpp"
 #include "layout.hpp"
 
 namespace collide::render {
@@ -50,9 +51,13 @@ FrameLayout lesson_layout(const LayoutInput& in) {
     const float head = std::round(body * headline_scale);
     layout.body_pixel_height = body;
     layout.headline_pixel_height = head;
-    const auto width = static_cast<float>(in.width);
     const auto height = static_cast<float>(in.height);
     const float m = std::max(3.0F, std::round(height * 0.014F));
+    // --code: a column on the right edge for the pseudocode, beside the boxes and their
+    // column; the queue strip and the caption under them keep the frame's width.
+    const auto full_width = static_cast<float>(in.width);
+    const float code_w = in.code_rows > 0 ? std::ceil(in.code_width) : 0.0F;
+    const float width = full_width - (code_w > 0.0F ? code_w + m : 0.0F);
     layout.margin = m;
     const float line = std::round(body * 1.25F);
     const float head_line = std::round(head * 1.2F);
@@ -148,13 +153,23 @@ FrameLayout lesson_layout(const LayoutInput& in) {
         if (queue && p == in.queue_panel) {
             // Under the figures, across the frame: a tree of events needs the width.
             layout.queue_panel = p;
-            layout.queue_strip = {m, y + gap, width - m, y + gap + queue_h};
+            layout.queue_strip = {m, y + gap, full_width - m, y + gap + queue_h};
             layout.text.push_back({TextRole::queue, p, layout.queue_strip, body});
         }
         layout.panels.push_back(panel);
     }
     const float box_bottom = top + used_h;
-    layout.text.push_back({TextRole::caption, -1, {m, caption_top, width - m, height - m}, body});
+    layout.text.push_back(
+        {TextRole::caption, -1, {m, caption_top, full_width - m, height - m}, body});
+    if (code_w > 0.0F) {
+        // As tall as its rows (1.2 lines each and the padding), down to the strip at most.
+        const float bottom =
+            layout.queue_panel >= 0 ? layout.queue_strip.y0 - gap : caption_top - gap;
+        const float rows_h = (static_cast<float>(in.code_rows) * 1.2F + 1.2F) * body;
+        layout.code = {width, m, width + code_w, std::min(bottom, m + std::ceil(rows_h))};
+        for (const RectF& row : code_rows(layout.code, body, in.code_rows))
+            layout.text.push_back({TextRole::code, -1, row, body});
+    }
 
     // The column: clock (and its unit), "work so far" (or, under two bars, their ratio), one bar
     // per panel (label, bar, value), energy, colour legend, plot. Groups that do not fit are left

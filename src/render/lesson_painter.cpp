@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "code_panel.hpp"
+
 namespace collide::render {
 
 CaptionFit fit_caption(const RenderConfig& config, std::string_view caption) {
@@ -97,7 +99,19 @@ FrameLayout LessonPainter::layout_for(const FrameContent& frame) const {
     }
     // The queue strip takes the height a how line would: its own words say how the queue works.
     if (input.queue_panel >= 0) input.how_line = false;
+    if (frame.code) {
+        input.code_rows = frame.code->lines.size() + (frame.code->title.empty() ? 0 : 1);
+        input.code_width = code_panel_width(*frame.code, *body_font_);
+    }
     return lesson_layout(input);
+}
+
+void LessonPainter::add_code(const view::CodeView& code) {
+    const std::vector<const TextSlot*> rows = layout_.slots(TextRole::code);
+    const CodeText draw = [&](std::size_t row, RectF, float x, std::string_view s, Rgba8 color) {
+        if (row < rows.size()) (void)draw_text(Font::body, *rows[row], s, color, Align::left, x);
+    };
+    paint_code(code, layout_.code, atlas(Font::body), code_colors(palette_), list_.under, draw);
 }
 
 namespace {
@@ -137,6 +151,7 @@ void LessonPainter::add_marks(std::size_t index, const PanelContent& content,
 
 void LessonPainter::finish_frame(const FrameContent& frame) {
     if (!layout_.compact && !intro_) add_column(frame);
+    if (frame.code && !intro_ && layout_.code.width() > 0.0F) add_code(*frame.code);
     if (shows_title_card(frame)) add_intro(frame);
     if (shows_summary(frame)) add_summary(frame);
 }

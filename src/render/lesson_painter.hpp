@@ -52,6 +52,8 @@ class LessonPainter : public Painter {
     void add_mark_legend(std::size_t index, const PanelContent& content);
     // The column and the title card (lesson_column.cpp).
     void add_column(const FrameContent& frame);
+    /// --code: the pseudocode column (code_panel.hpp) in the layout's `code` rectangle.
+    void add_code(const view::CodeView& code);
     void add_intro(const FrameContent& frame);
     void add_summary(const FrameContent& frame);  // the epilogue's card (lesson_summary.cpp)
     // The event queue (Snapshot::queue; lesson_queue.cpp).

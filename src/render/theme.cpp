@@ -106,6 +106,20 @@ KeyStyle heap_mark_style(view::SlotMark mark, const HeapPalette& palette) noexce
     return {palette.slot, palette.title};
 }
 
+CodeColors code_colors(const Palette& palette) noexcept {
+    const Rgb8 edge = with_contrast(rgb(heap_token_now_fill), rgb(palette.box_fill), mark_contrast);
+    return {palette.box_fill,    palette.muted,       palette.text,
+            highlight_dark_text, heap_token_now_fill, {edge.r, edge.g, edge.b, 255},
+            palette.title};
+}
+
+CodeColors heap_code_colors(const HeapPalette& palette) noexcept {
+    const Rgb8 edge = with_contrast(rgb(heap_token_now_fill), rgb(palette.panel), mark_contrast);
+    return {palette.panel,       palette.map_header,  palette.counter,
+            highlight_dark_text, heap_token_now_fill, {edge.r, edge.g, edge.b, 255},
+            palette.title};
+}
+
 Rgba8 heap_lit_edge(view::SlotMark mark, const HeapPalette& palette) noexcept {
     const Rgb8 c =
         with_contrast(rgb(heap_mark_style(mark, palette).fill), rgb(palette.panel), mark_contrast);
@@ -292,6 +306,16 @@ std::vector<ColorPair> color_pairs(Theme theme) {
         {"queue: the tree's edges on the page (muted at 80 %)", blend(rgb(p.muted), page, 0.8F),
          page, mark_contrast},
     };
+    const CodeColors code = code_colors(p);
+    pairs.push_back(
+        {"code: the title on its panel", rgb(code.title), rgb(code.panel), text_contrast});
+    pairs.push_back({"code: a line on its panel", rgb(code.text), rgb(code.panel), text_contrast});
+    pairs.push_back(
+        {"code: the current line on its plate", rgb(code.current), rgb(code.plate), text_contrast});
+    pairs.push_back({"code: the current line's chevron on the panel", rgb(code.marker),
+                     rgb(code.panel), mark_contrast});
+    pairs.push_back({"code: the current line's plate edge on the panel", rgb(code.plate_edge),
+                     rgb(code.panel), mark_contrast});
     for (const bool time_driven : {true, false}) {
         const Rgb8 accent = panel_accent(time_driven, theme);
         pairs.push_back({time_driven ? "time-driven cost label on the page"
@@ -331,6 +355,18 @@ std::vector<ColorPair> heap_color_pairs(Theme theme) {
         {"heap: node outlines on the panel", rgb(p.node_outline), panel, mark_contrast},
         {"heap: slot outlines on the panel", rgb(p.slot_outline), panel, mark_contrast},
     };
+    const CodeColors code = heap_code_colors(p);
+    const Rgb8 code_panel = rgb(code.panel);
+    pairs.push_back(
+        {"heap code: the title on its panel", rgb(code.title), code_panel, text_contrast});
+    pairs.push_back({"heap code: a line on its panel", rgb(code.text), code_panel, text_contrast});
+    pairs.push_back({"heap code: the current line on its plate", rgb(code.current), rgb(code.plate),
+                     text_contrast});
+    pairs.push_back({"heap code: the current line's chevron on the panel", rgb(code.marker),
+                     code_panel, mark_contrast});
+    // The plate must stand out from the panel too: it is the bar the eye finds first.
+    pairs.push_back({"heap code: the current line's plate edge on the panel", rgb(code.plate_edge),
+                     code_panel, mark_contrast});
     for (const view::SlotMark mark :
          {view::SlotMark::compared, view::SlotMark::moving, view::SlotMark::inserted,
           view::SlotMark::changed, view::SlotMark::best, view::SlotMark::leaving,

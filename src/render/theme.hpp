@@ -7,6 +7,7 @@
 
 #include <vector>
 
+#include "code_panel.hpp"
 #include "collide/render/renderer.hpp"
 #include "collide/view/heap.hpp"
 #include "collide/view/puzzle.hpp"
@@ -31,6 +32,10 @@ struct Palette {
 [[nodiscard]] Palette palette(Theme theme) noexcept;
 /// A plot's text, axis, curve and zero-line colours in a theme (every level's plots use them).
 [[nodiscard]] PlotColors plot_colors(Theme theme) noexcept;
+
+/// The pseudocode column of `render --queue --code` (code_panel.hpp): the box's fill as its
+/// panel, the current line on the heap lesson's amber plate with dark text.
+[[nodiscard]] CodeColors code_colors(const Palette& palette) noexcept;
 
 /// The queue strip's colour for the next event (amber, far from the failure colour).
 [[nodiscard]] Rgb8 next_event_color(Theme theme) noexcept;
@@ -123,6 +128,9 @@ struct KeyStyle {
 /// A tree edge lit in `mark`'s colour: the fill, darkened or lightened until it keeps 3:1 on
 /// the panel (the light theme's amber and green are too faint on white as lines).
 [[nodiscard]] Rgba8 heap_lit_edge(view::SlotMark mark, const HeapPalette& palette) noexcept;
+/// The pseudocode column of `collide heap --code` (code_panel.hpp): the panel's colours, the
+/// current line on the strip's amber tab with its dark text, the chevron in the title's colour.
+[[nodiscard]] CodeColors heap_code_colors(const HeapPalette& palette) noexcept;
 /// The map's entry being updated, small text on the moving blue: dark (white keeps only 3.2:1).
 inline constexpr Rgba8 heap_map_update_text{20, 20, 24, 255};
 

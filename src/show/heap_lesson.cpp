@@ -7,6 +7,7 @@
 
 #include "collide/error.hpp"
 #include "collide/show/ease.hpp"
+#include "collide/show/heap_code.hpp"
 
 namespace collide::show {
 
@@ -433,7 +434,43 @@ view::HeapFrameView HeapLesson::frame_at(double seconds) const {
         view.panels.push_back(panel_view(p, moment.panels[p]));
         view.panels.back().returned = returned(p, moment);
     }
+    if (code_) view.code = code_at(moment);
     return view;
+}
+
+void HeapLesson::show_code(bool on) {
+    if (on && !heap_code_fits(record_))
+        throw_input_error("code: shows the code of one heap; give a single heap implementation");
+    code_ = on;
+}
+
+std::vector<view::CodeLineView> HeapLesson::code_lines() const {
+    std::vector<view::CodeLineView> out;
+    std::vector<LessonOp::Kind> seen;
+    for (const LessonOp& op : record_.ops()) {
+        if (std::find(seen.begin(), seen.end(), op.kind) != seen.end()) continue;
+        seen.push_back(op.kind);
+        for (view::CodeLineView& line : heap_code(op.kind, record_.orientation()))
+            out.push_back(std::move(line));
+    }
+    return out;
+}
+
+view::CodeView HeapLesson::code_at(const HeapMoment& moment) const {
+    const std::vector<LessonOp>& ops = record_.ops();
+    view::CodeView code;
+    code.title = "pseudocode";
+    if (ops.empty()) return code;
+    // The intro shows the first operation's listing; the outro keeps the last one's.
+    const std::size_t op = std::min(moment.started ? moment.op : 0, ops.size() - 1);
+    code.lines = heap_code(ops[op].kind, record_.orientation());
+    if (!moment.started || moment.panels.empty() || moment.panels.front().step == nullptr)
+        return code;
+    const pq::LessonPanelOp& done = record_.panels().front().ops[op];
+    const auto s = static_cast<std::size_t>(moment.panels.front().step - done.steps.data());
+    code.current =
+        heap_code_line(record_.panels().front(), ops[op].kind, record_.orientation(), done, s);
+    return code;
 }
 
 std::string HeapLesson::returned(std::size_t panel, const HeapMoment& moment) const {

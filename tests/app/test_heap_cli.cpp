@@ -184,3 +184,51 @@ TEST_CASE("heap and puzzle read --fps as render does: decimal digits, never octa
                   .find("--index-base") != std::string::npos);
     }
 }
+
+TEST_CASE("collide heap --code: the pseudocode beside the heap, its line under way on a plate") {
+    TempDir dir("heap_code");
+    // 320x180 is the compact form; the code needs the lesson's 16:9 frame at its smallest.
+    const std::string frame = " --size 854x480 --pace 1 --progress none ";
+    const auto still = [&](const std::string& options, const char* name) {
+        const fs::path png = dir.path / name;
+        const auto r =
+            run_collide("heap --ops \"P Q E *\"" + frame + options + " -o " + quoted(png));
+        REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+        return collide::video::read_png(png);
+    };
+    // Pixels of the current line's amber plate in the right 40 % of the frame, under the strip.
+    const auto plate_pixels = [](const collide::Image& image) {
+        int n = 0;
+        for (int y = image.height / 6; y < image.height; ++y) {
+            for (int x = image.width * 3 / 5; x < image.width; ++x) {
+                const std::uint8_t* p = image.pixel(x, y);
+                n += p[0] == 240 && p[1] == 170 && p[2] == 40;
+            }
+        }
+        return n;
+    };
+    // 2 s: the first insert's first step (after the 1.5 s intro) is under way.
+    const collide::Image code = still("--code --at 2", "code.png");
+    const collide::Image plain = still("--at 2", "plain.png");
+    CHECK(code.rgba != plain.rgba);
+    CHECK(plate_pixels(code) > 2000);  // a bar across the column, not a speck
+    CHECK(plate_pixels(plain) == 0);
+    // The last frame: every operation done, no line under way.
+    CHECK(plate_pixels(still("--code --last-frame", "last.png")) == 0);
+}
+
+TEST_CASE("collide heap --code: where no code can be shown, exit 2 naming --code") {
+    TempDir dir("heap_code_bad");
+    const std::string out = " -o " + quoted(dir.path / "x.mp4");
+    CHECK(contains(
+        run_collide_bad_input("heap --ops \"P Q *\" --code --impl unordered" + quick + out),
+        "--code: shows the code of one heap"));
+    CHECK(contains(
+        run_collide_bad_input("heap --ops \"P Q *\" --code --impl binary,dary:3" + quick + out),
+        "--code: shows the code of one heap"));
+    // 22 keys at once: one panel takes 36, but beside the code only 21.
+    const std::string keys = "\"A B C D E F G H I J K L M N O P Q R S T U V\"";
+    CHECK(contains(run_collide_bad_input("heap --ops " + keys + " --code" + quick + out),
+                   "at most 21 can be drawn legibly with 1 panel side by side"));
+    CHECK(fs::is_empty(dir.path));  // nothing written
+}

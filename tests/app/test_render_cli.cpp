@@ -565,3 +565,55 @@ TEST_CASE("render --queue: classic and fast engines show their queue, byte-ident
     CHECK(share_of_differing_pixels(collide::video::read_png(dir.path / "with.png"),
                                     collide::video::read_png(dir.path / "without.png")) > 0.05);
 }
+
+TEST_CASE("render --queue --code: the loop's lines in --layout-json, lesson size, one marked") {
+    TempDir dir("queue_code");
+    const fs::path json = dir.path / "layout.json";
+    const auto r =
+        run_collide("thumbnail gas --queue --code --mode event --at 1 --size 1280x720 -o " +
+                    (dir.path / "c.png").string() + " --layout-json " + json.string());
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    std::ifstream in(json);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::vector<std::string> lines = texts_of(text, "code");
+    REQUIRE(lines.size() == 7);  // the title and the loop's six lines
+    CHECK(lines[0] == "event-driven loop");
+    CHECK(lines[2] == "e = delete the minimum");
+    CHECK(lines[3] == "if e is invalidated: skip it");
+    CHECK(lines[5] == "resolve e");
+    // Every slot (the code's too) is lesson text: capitals >= 2.8 % of 720.
+    for (std::size_t at = 0; (at = text.find("\"cap_height\": ", at)) != std::string::npos;) {
+        at += 14;
+        CHECK(std::stod(text.substr(at)) >= 20.1);
+    }
+    // Without --code, no code slot.
+    const auto plain = run_collide("thumbnail gas --queue --mode event --at 1 --size 1280x720 -o " +
+                                   (dir.path / "p.png").string() + " --layout-json " +
+                                   (dir.path / "p.json").string());
+    REQUIRE_MESSAGE(plain.exit_code == 0, plain.output);
+    std::ifstream pin(dir.path / "p.json");
+    const std::string ptext((std::istreambuf_iterator<char>(pin)),
+                            std::istreambuf_iterator<char>());
+    CHECK(texts_of(ptext, "code").empty());
+}
+
+TEST_CASE("render --code where it cannot be shown: exit 2 naming --code, nothing written") {
+    TempDir dir("queue_code_bad");
+    const auto contains = [](const std::string& haystack, const std::string& needle) {
+        return haystack.find(needle) != std::string::npos;
+    };
+    using collide::test::run_collide_bad_input;
+    const std::string out = " -o " + (dir.path / "x.mp4").string();
+    CHECK(contains(run_collide_bad_input("render gas --code" + out),
+                   "--code: shows the event-driven loop beside its queue; add --queue"));
+    CHECK(contains(run_collide_bad_input("render gas --queue --code --overlays full" + out),
+                   "--code: the code is drawn at the lesson level only, not with --overlays "
+                   "full"));
+    CHECK(contains(run_collide_bad_input("render gas --queue --code --overlays none" + out),
+                   "--code: the code is drawn at the lesson level only"));
+    CHECK(contains(run_collide_bad_input("render gas --queue --code --size 640x360" + out),
+                   "--code: needs a frame at least 854 pixels wide"));
+    CHECK(contains(run_collide_bad_input("render gas-3d --queue --code" + out),
+                   "--code: not for 3D scenes"));
+    CHECK(fs::is_empty(dir.path));
+}

@@ -104,6 +104,12 @@ TEST_CASE("option matrix: render's numbers, sizes and names") {
     cases.push_back({"gas --queue 3 --mode time --engine classic" + never + ".mp4", "--queue"});
     cases.push_back({"gas --queue --overlays none" + never + ".mp4", "--queue"});
     cases.push_back({"gas --queue --overlays full" + never + ".mp4", "--queue"});
+    // --code: the loop beside the queue, at the lesson level, in a frame of 854 px or more.
+    cases.push_back({"gas --code" + never + ".mp4", "--code", "add --queue"});
+    cases.push_back({"gas --queue --code --overlays none" + never + ".mp4", "--code", "lesson"});
+    cases.push_back({"gas --queue --code --overlays full" + never + ".mp4", "--code", "lesson"});
+    cases.push_back({"gas --queue --code --size 640x360" + never + ".mp4", "--code", "854 pixels"});
+    cases.push_back({"gas-3d --queue --code" + never + ".mp4", "--code", "3D"});
     for (const char* v : {"0", "0.5", "-2", "nan", "inf", "1e9", "abc"})
         cases.push_back({std::string("gas --slow-motion ") + v + never + ".mp4", "--slow-motion",
                          "", v == std::string("abc")});
@@ -178,6 +184,9 @@ TEST_CASE("option matrix: heap's numbers and names") {
     cases.push_back({"--ops P --at -1" + out + ".png", "--at"});
     cases.push_back({"--ops P --last-frame --format gif" + out + ".png", "--format"});
     cases.push_back({"--ops P" + out + ".txt", "-o", "a .mp4 or .gif path"});
+    // --code: one heap's pseudocode; none for arrays or several panels.
+    cases.push_back({"--ops P --code --impl ordered" + out + ".mp4", "--code", "one heap"});
+    cases.push_back({"--ops P --code --impl binary,dary:3" + out + ".mp4", "--code", "one heap"});
     expect_refused("heap", cases);
 }
 

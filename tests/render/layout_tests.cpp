@@ -184,6 +184,35 @@ TEST_CASE("lesson layout: the queue strip fits under the panels, clear of every 
     CHECK(plain.slots(TextRole::queue).empty());
 }
 
+TEST_CASE("lesson layout: --code's column sits right of boxes and column, over the queue strip") {
+    for (const Size size : {Size{854, 480}, Size{1280, 720}, Size{1920, 1080}}) {
+        for (const int panels : {1, 2}) {
+            LayoutInput in = lesson_input(size, panels);
+            in.color_legend = true;
+            in.queue_panel = panels - 1;
+            in.code_rows = 7;
+            in.code_width = 0.38F * static_cast<float>(size.width);
+            INFO(size.width << "x" << size.height << ", " << panels << " panels");
+            const FrameLayout layout = compute_layout(in);
+            check_nothing_overlaps_text(layout, size);
+            const RectF code = layout.code;
+            REQUIRE(code.width() >= in.code_width - 0.5F);
+            CHECK(code.x1 <= static_cast<float>(size.width));
+            CHECK(layout.slots(TextRole::code).size() == 7);
+            for (const TextSlot* row : layout.slots(TextRole::code)) {
+                CHECK(row->rect.y1 <= code.y1 + 0.5F);
+                CHECK(row->cap_height() >= 0.028F * static_cast<float>(size.height) - 0.01F);
+            }
+            for (const PanelLayout& panel : layout.panels) CHECK_FALSE(overlaps(code, panel.box));
+            CHECK_FALSE(overlaps(code, layout.column.area));
+            CHECK_FALSE(overlaps(code, layout.queue_strip));
+            // The strip under it keeps the frame's width.
+            CHECK(layout.queue_strip.x1 > code.x0);
+        }
+    }
+    CHECK(compute_layout(lesson_input({1280, 720})).slots(TextRole::code).empty());
+}
+
 TEST_CASE("compact layout below 480 px: boxes fill the frame, one line per panel, 9 px capitals") {
     for (const Size size : {Size{320, 180}, Size{426, 240}, Size{160, 90}}) {
         INFO(size.width << "x" << size.height);

@@ -50,6 +50,7 @@ std::string check_heap(const show::HeapLesson& lesson) {
         config.width = f.width;
         config.height = f.height;
         config.widest_key = lesson.widest_key();
+        if (lesson.shows_code()) config.code_lines = lesson.code_lines();
         HeapRenderer renderer(config, test::test_backend());
         Image image;
         for (double t = 0.0; t <= lesson.duration(); t += f.every) {
@@ -95,6 +96,59 @@ TEST_CASE("lesson text: the heap lessons of docs/heap.md write nothing under 2.8
                                                     pq::Orientation::max),
                          show::heap_pacing(0.8), 1));
     CHECK_MESSAGE(sort.empty(), sort);
+}
+
+TEST_CASE("lesson text: heap --code's listings are lesson text, and every line fits its column") {
+    const auto with_code = [](show::HeapLesson lesson) {
+        lesson.show_code(true);
+        return lesson;
+    };
+    const char* trace = "P Q E * X A M * P L E *";
+    const std::string heap = check_heap(with_code(heap_lesson(trace, "binary")));
+    CHECK_MESSAGE(heap.empty(), heap);
+    const std::string dary = check_heap(
+        with_code(heap_lesson("T P R N H O A E I G S * *", "dary:3", pq::Orientation::min)));
+    CHECK_MESSAGE(dary.empty(), dary);
+    const std::string up = check_heap(with_code(heap_lesson("5 9 3 7 * 3^12", "indexed:2")));
+    CHECK_MESSAGE(up.empty(), up);
+    const std::string down =
+        check_heap(with_code(heap_lesson("1 5 3 9 7 1^8", "indexed:2", pq::Orientation::min)));
+    CHECK_MESSAGE(down.empty(), down);
+    for (const pq::Orientation o : {pq::Orientation::max, pq::Orientation::min}) {
+        const show::HeapLesson sort = with_code(show::HeapLesson(
+            pq::LessonRecord::heapsort(pq::parse_sort_keys("S O R T E X A M P L E"), o),
+            show::heap_pacing(0.8), 1));
+        const std::string small = check_heap(sort);
+        CHECK_MESSAGE(small.empty(), small);
+    }
+    // No line of any listing is cut ("..."): each fits the code column at -q l and -q m.
+    for (const Frame& f : frames) {
+        const show::HeapLesson lessons[] = {
+            with_code(heap_lesson(trace, "binary")),
+            with_code(heap_lesson("1 5 3 9 7 1^8", "indexed:2", pq::Orientation::min)),
+            with_code(show::HeapLesson(
+                pq::LessonRecord::heapsort(pq::parse_sort_keys("S O R T E X A M P L E"),
+                                           pq::Orientation::min),
+                show::heap_pacing(0.8), 1))};
+        for (const show::HeapLesson& lesson : lessons) {
+            HeapViewConfig config;
+            config.width = f.width;
+            config.height = f.height;
+            config.code_lines = lesson.code_lines();
+            HeapRenderer renderer(config, test::test_backend());
+            for (double t = 0.0; t <= lesson.duration(); t += 4.0) {
+                const view::HeapFrameView frame = lesson.frame_at(t);
+                (void)renderer.render(frame);
+                REQUIRE(frame.code);
+                for (const view::CodeLineView& line : frame.code->lines) {
+                    bool drawn_whole = false;
+                    for (const DrawnText& d : renderer.last_text())
+                        drawn_whole |= d.text == line.text;
+                    CHECK_MESSAGE(drawn_whole, f.height << "p: '" << line.text << "' was cut");
+                }
+            }
+        }
+    }
 }
 
 TEST_CASE("lesson text: the puzzle writes nothing under 2.8 % capitals, digits and labels too") {

@@ -39,6 +39,10 @@ struct HeapViewConfig {
     int height = 720;  ///< frame height in pixels, as width
     /// The widest key of the video: node and slot text is sized so that it fits.
     std::string widest_key = "W";
+    /// `--code`: every line of every listing the video shows, so that the code column is as
+    /// wide as the widest of them in every frame (the tree keeps its place when the listing
+    /// changes). Empty: each frame's own listing decides.
+    std::vector<view::CodeLineView> code_lines;
     std::string font_path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
     /// dark (screens) or light (projectors, print): the collision video's themes.
     Theme theme = Theme::dark;
@@ -53,8 +57,9 @@ inline constexpr std::size_t max_heap_panels = 6;
 /// The most keys a queue may hold at once when `panels` queues share the frame (side by side)
 /// and still be drawn legibly: 36 / panels (36 for one panel, 12 for three, 7 for five: the
 /// lecture's trace holds 7), which keeps array slots over ~21 px wide and keys over ~13 px tall
-/// at 854x480 (-q l), half as much again at 720p.
-[[nodiscard]] std::size_t max_legible_keys(std::size_t panels) noexcept;
+/// at 854x480 (-q l), half as much again at 720p. With `code` (the pseudocode column takes 40 %
+/// of the width) 21 / panels.
+[[nodiscard]] std::size_t max_legible_keys(std::size_t panels, bool code = false) noexcept;
 
 /// Draws lesson frames with a GL context it owns. Not thread-safe; one per thread.
 class HeapRenderer {

@@ -74,6 +74,17 @@ class HeapLesson {
     [[nodiscard]] HeapMoment moment_at(double seconds) const;
     /// The frame at `seconds`.
     [[nodiscard]] view::HeapFrameView frame_at(double seconds) const;
+    /// The pseudocode of `moment` (heap_code.hpp): the listing of the operation under way (the
+    /// first during the intro, the last during the outro) and the line its step carries out.
+    [[nodiscard]] view::CodeView code_at(const HeapMoment& moment) const;
+    /// Every line of every listing the lesson's operations show (the painter sizes its code
+    /// column once for the video by them).
+    [[nodiscard]] std::vector<view::CodeLineView> code_lines() const;
+
+    /// Whether frames carry the pseudocode (`--code`). Throws Error(input) "code: ..." when the
+    /// lesson cannot show it (heap_code_fits: one panel, a heap).
+    void show_code(bool on);
+    [[nodiscard]] bool shows_code() const noexcept { return code_; }
     /// The widest key label of the lesson (for sizing node text once per video).
     [[nodiscard]] std::string widest_key() const;
 
@@ -104,6 +115,7 @@ class HeapLesson {
     std::vector<double> op_start_;  ///< seconds at which each operation starts, then the outro
     HeapPacing pacing_;
     int index_base_ = 1;
+    bool code_ = false;
 };
 
 }  // namespace collide::show

@@ -5,6 +5,7 @@
 /// measurements. Plain values (types layer): no GL, no simulation code.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "collide/disc.hpp"
 #include "collide/render_options.hpp"
 #include "collide/snapshot.hpp"
+#include "collide/view/code.hpp"
 #include "collide/view/plots.hpp"
 #include "collide/view/spheres.hpp"
 
@@ -242,6 +244,9 @@ struct FrameContent {
     float intro_opacity = 0.0F;
     /// The epilogue's summary card, drawn over the frame (empty rows: none).
     SummaryCard summary;
+    /// Lesson level, `--code`: the event-driven loop's pseudocode in a column on the right, the
+    /// line under way marked; unset: no column (the frame as without the option).
+    std::optional<view::CodeView> code;
 };
 
 }  // namespace collide

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "collide/view/code.hpp"
+
 namespace collide::view {
 
 /// How one key is highlighted.
@@ -79,6 +81,9 @@ struct HeapFrameView {
     /// The operation under way (marked); tokens before it are done. Unset: none yet.
     std::optional<std::size_t> current_token;
     std::vector<HeapPanelView> panels;  ///< 1 to max_heap_panels, left to right, top to bottom
+    /// `--code`: the pseudocode of the operation under way, drawn beside the panels; unset:
+    /// none (the frame as without the option).
+    std::optional<CodeView> code;
 };
 
 }  // namespace collide::view

@@ -1,0 +1,40 @@
+#include "collide/show/event_loop_code.hpp"
+
+#include <cmath>
+#include <iterator>
+
+namespace collide::show {
+
+view::CodeView event_loop_code() {
+    view::CodeView code;
+    code.title = "event-driven loop";
+    code.lines = {{0, "while the queue is not empty:"},
+                  {1, "e = delete the minimum"},
+                  {1, "if e is invalidated: skip it"},
+                  {1, "move all discs to e's time"},
+                  {1, "resolve e"},
+                  {1, "predict e's discs' next events"}};
+    return code;
+}
+
+LoopLine event_loop_line(const QueueView& queue, double now, double speed) noexcept {
+    if (queue.popped.empty() || !(speed > 0.0)) return LoopLine::move;
+    const QueuedEvent& last = queue.popped.back();
+    const double age = (now - last.t) / speed / code_line_seconds;  // in lines of the walk
+    if (!(age >= 0.0)) return LoopLine::move;
+    // A valid event's walk skips the move: the discs have just arrived at its time.
+    static constexpr LoopLine valid[] = {LoopLine::pop, LoopLine::check, LoopLine::resolve,
+                                         LoopLine::predict};
+    static constexpr LoopLine stale[] = {LoopLine::pop, LoopLine::check};
+    const auto step = static_cast<std::size_t>(std::floor(age));
+    if (last.stale) return step < std::size(stale) ? stale[step] : LoopLine::move;
+    return step < std::size(valid) ? valid[step] : LoopLine::move;
+}
+
+view::CodeView event_loop_view(const QueueView& queue, double now, double speed) {
+    view::CodeView code = event_loop_code();
+    code.current = static_cast<std::size_t>(event_loop_line(queue, now, speed));
+    return code;
+}
+
+}  // namespace collide::show
