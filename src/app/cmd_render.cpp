@@ -43,6 +43,8 @@ struct CliValues {
     VideoCli video;  ///< -o, --format, -q, --size, --fps, --at, --last-frame, --theme, ...
     std::string mode = "both";
     std::string camera = "fixed";
+    std::string projection = "ortho";
+    CLI::Option* projection_opt = nullptr;
     double slab = 0.0;
     CLI::Option* slab_opt = nullptr;
     double duration = 0.0;
@@ -119,6 +121,7 @@ RenderRequest request_of(const CliValues& v, bool still) {
     r.mode = v.mode;
     r.camera = v.camera;
     r.slab = if_given(v.slab_opt, v.slab);
+    r.projection = if_given(v.projection_opt, v.projection);
     r.quality = if_given(v.video.quality_opt, v.video.quality);
     r.size = if_given(v.video.size_opt, v.video.size);
     r.fps = if_given(v.video.fps_opt, v.video.fps);
@@ -175,6 +178,11 @@ void add_shared_options(CLI::App& cmd, CliValues& v, bool video) {
                    "3D scenes: fixed, or orbit (the view turns slowly round the box, once every "
                    "40 s of video)")
         ->capture_default_str();
+    v.projection_opt =
+        cmd.add_option("--projection", v.projection,
+                       "3D scenes: ortho (parallel rays: every sphere as large as it is) or "
+                       "perspective (an eye near the box: near spheres larger, edges converge)")
+            ->capture_default_str();
     v.slab_opt = cmd.add_option("--slab", v.slab,
                                 "3D scenes: show only a slice W box units thick through the box's "
                                 "centre, facing the camera (the inside of a dense system)");

@@ -403,6 +403,13 @@ show::CameraMotion parse_camera_motion(std::string_view text, std::string_view o
     return parse_named(text, option, names);
 }
 
+show::Projection parse_projection(std::string_view text, std::string_view option) {
+    static constexpr std::array<NamedValue<show::Projection>, 2> names{
+        {{"ortho", show::Projection::orthographic},
+         {"perspective", show::Projection::perspective}}};
+    return parse_named(text, option, names);
+}
+
 QualityPreset quality_preset(std::string_view letter, std::string_view option) {
     if (letter == "l") return {854, 480, 15};
     if (letter == "m") return {1280, 720, 30};
@@ -512,6 +519,7 @@ RenderPlan plan_render(const RenderRequest& request, const Scene& scene,
     RenderPlan plan;
     plan.mode = parse_render_mode(request.mode);
     plan.camera = parse_camera_motion(request.camera);
+    if (request.projection) plan.projection = parse_projection(*request.projection);
     if (request.slab) {
         require_positive(*request.slab, "--slab", "thickness in box units");
         plan.slab = *request.slab;
