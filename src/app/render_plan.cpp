@@ -398,9 +398,7 @@ RenderMode parse_render_mode(std::string_view text, std::string_view option) {
 }
 
 show::CameraMotion parse_camera_motion(std::string_view text, std::string_view option) {
-    static constexpr std::array<NamedValue<show::CameraMotion>, 2> names{
-        {{"fixed", show::CameraMotion::fixed}, {"orbit", show::CameraMotion::orbit}}};
-    return parse_named(text, option, names);
+    return parse_named(text, option, camera_motion_names);
 }
 
 show::Projection parse_projection(std::string_view text, std::string_view option) {
@@ -514,16 +512,34 @@ FrameClock still_clock(double at, double speed, int fps, std::string_view option
     return clock;
 }
 
+/// A 3D scene's camera: the options, else the scene's [render] hints, else a fixed orthographic
+/// view of every sphere.
+void choose_camera(const RenderRequest& request, const Scene& scene, RenderPlan& plan) {
+    const RenderHints& hints = scene.render;
+    if (request.camera) {
+        plan.camera = parse_camera_motion(*request.camera);
+    } else if (hints.camera) {
+        plan.camera = *hints.camera;
+    }
+    if (request.projection) {
+        plan.projection = parse_projection(*request.projection);
+    } else if (hints.projection) {
+        plan.projection = *hints.projection;
+    }
+    if (request.slab) {
+        require_positive(*request.slab, "--slab", "thickness in box units");
+        plan.slab = *request.slab;
+    } else if (hints.slab) {
+        require_positive(*hints.slab, hint_option(hints.slab_at, "slab"), "thickness in box units");
+        plan.slab = *hints.slab;
+    }
+}
+
 RenderPlan plan_render(const RenderRequest& request, const Scene& scene,
                        const ReplayFinder& find_replays) {
     RenderPlan plan;
     plan.mode = parse_render_mode(request.mode);
-    plan.camera = parse_camera_motion(request.camera);
-    if (request.projection) plan.projection = parse_projection(*request.projection);
-    if (request.slab) {
-        require_positive(*request.slab, "--slab", "thickness in box units");
-        plan.slab = *request.slab;
-    }
+    choose_camera(request, scene, plan);
     const QualityPreset preset =
         request.quality ? quality_preset(*request.quality) : QualityPreset{};
     const FrameSize size =

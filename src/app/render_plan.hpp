@@ -134,7 +134,7 @@ struct RenderRequest {
     std::string scene;                      ///< file or built-in name
     std::optional<std::string> output;      ///< -o
     std::string mode = "both";              ///< --mode
-    std::string camera = "fixed";           ///< --camera (3D scenes): fixed or orbit
+    std::optional<std::string> camera;      ///< --camera (3D scenes): fixed or orbit
     std::optional<double> slab;             ///< --slab W (3D scenes): a slice W box units thick
     std::optional<std::string> projection;  ///< --projection (3D scenes): ortho or perspective
     std::optional<std::string> quality;     ///< -q
@@ -220,11 +220,11 @@ struct RenderPlan {
     /// --slow-motion: speed.speed is the chosen pace divided by this (1: none). The physics (the
     /// default dt) follows the pace before the slow motion.
     double slow_motion = 1.0;
-    /// --camera: how a 3D scene is seen (a 2D scene ignores it).
+    /// --camera, else the scene's hint: how a 3D scene is seen (a 2D scene ignores it).
     show::CameraMotion camera = show::CameraMotion::fixed;
-    /// --projection: the 3D camera's projection (a 2D scene ignores it).
+    /// --projection, else the scene's hint: the 3D camera's projection (2D ignores it).
     show::Projection projection = show::Projection::orthographic;
-    /// --slab: the thickness of the slice of spheres shown, box units (0: every sphere).
+    /// --slab, else the hint: the thickness of the slice of spheres shown, box units (0: all).
     double slab = 0.0;
     /// Which failures of the time-driven panel are replayed (--replay, the scene's hint, else
     /// first); none where no replay can be shown (no time-driven panel, not the lesson level).

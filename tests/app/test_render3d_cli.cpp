@@ -137,3 +137,33 @@ TEST_CASE("thumbnail --gl: OSMesa and EGL surfaceless give the same 3D still, bo
         CHECK(read_bytes(o) == read_bytes(e));
     }
 }
+
+TEST_CASE("[render] camera, projection and slab of a 3D scene: hints the options override") {
+    TempDir dir("hints3d");
+    const std::string spheres =
+        "dimension = 3\n[box]\nboundary = \"periodic\"\n[[fcc]]\ncells = 3\npacking_fraction = "
+        "0.3\nseed = 2\n";
+    const auto write = [&](const std::string& name, const std::string& text) {
+        const fs::path p = dir.path / name;
+        std::ofstream(p) << text;
+        return p.string();
+    };
+    const std::string plain = write("plain.toml", spheres);
+    const std::string hinted =
+        write("hinted.toml",
+              spheres + "[render]\ncamera = \"orbit\"\nprojection = \"perspective\"\nslab = 0.5\n");
+    const auto thumb = [&](const std::string& scene, const std::string& extra,
+                           const std::string& name) {
+        const fs::path out = dir.path / (name + ".png");
+        const auto r = run_collide("thumbnail " + scene + " --size 320x180 --at 1 " + extra +
+                                   " -o " + out.string());
+        REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+        return read_bytes(out);
+    };
+    const std::string by_options =
+        thumb(plain, "--camera orbit --projection perspective --slab 0.5", "options");
+    CHECK(thumb(hinted, "", "hints") == by_options);
+    CHECK(thumb(hinted, "--camera fixed --projection ortho --slab 100", "overridden") ==
+          thumb(plain, "", "plain"));
+    CHECK(thumb(plain, "", "plain2") != by_options);
+}

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 
+#include "collide/render_options.hpp"
 #include "collide/scene.hpp"
 #include "collide/scene3.hpp"
 #include "collide/snapshot.hpp"
@@ -17,12 +18,11 @@
 
 namespace collide::show {
 
-/// `--camera`: a fixed view, or one that turns slowly about the box's vertical axis.
-enum class CameraMotion : std::uint8_t { fixed, orbit };
-
-/// `--projection`: parallel rays (every sphere as large as it is, the box's edges parallel), or
-/// a perspective from an eye at a finite distance (near spheres larger, the edges converge).
-enum class Projection : std::uint8_t { orthographic, perspective };
+/// `--camera`: a fixed view, or one that turns slowly about the box's vertical axis (the enum
+/// lives with the other render options, so that a scene file can name it).
+using CameraMotion = collide::CameraMotion;
+/// `--projection`: orthographic or perspective.
+using Projection = collide::Projection;
 
 /// The perspective eye's distance from the box's centre, in half diagonals of the box: the whole
 /// box in a field of view of about 40 degrees, near corners about 1.5 times larger than the centre
