@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 #include <numeric>
+#include <vector>
 
 namespace collide::show {
 
@@ -220,6 +221,10 @@ void project(const SphereSnapshot& snapshot, Camera camera, ProjectedPanel& out)
     view.spheres.reserve(snapshot.spheres.size());
     // The slab: a depth range about the centre (depth 0.5) of half width slab / 2.
     const double slab_half_depth = camera.slab > 0.0 ? camera.slab / (4.0 * half_depth) : 1.0;
+    const auto in_slab = [&](double depth) { return std::abs(depth - 0.5) <= slab_half_depth; };
+    // Which spheres the picture shows: a failure is marked only where its spheres are seen (the
+    // figures still count every failure: they come from the measurements).
+    std::vector<bool> shown(snapshot.spheres.size(), false);
     for (std::size_t i = 0; i < snapshot.spheres.size(); ++i) {
         const SphereState& p = snapshot.spheres[i];
         const Vec3 c = rotate.apply(p.position - centre);
@@ -235,8 +240,10 @@ void project(const SphereSnapshot& snapshot, Camera camera, ProjectedPanel& out)
         sprite.mass = p.mass;
         sprite.color = p.color;
         sprite.tagged = p.tagged;
-        if (std::abs(sprite.depth - 0.5) <= slab_half_depth && lens.sees(c.z, p.radius))
+        if (in_slab(sprite.depth) && lens.sees(c.z, p.radius)) {
             view.spheres.push_back(sprite);
+            shown[i] = true;
+        }
         DiscState& d = s.discs[i];
         d.position = sprite.at;
         d.velocity = {p.velocity.x, std::hypot(p.velocity.y, p.velocity.z)};
@@ -258,12 +265,14 @@ void project(const SphereSnapshot& snapshot, Camera camera, ProjectedPanel& out)
     for (const auto& [i, j] : snapshot.overlapping_pairs) {
         const Vec3 a = snapshot.spheres[i].position;
         const Vec3 b = snapshot.spheres[j].position;
-        if (norm2(box.displacement(a, b)) == norm2(b - a)) s.overlapping_pairs.emplace_back(i, j);
+        if (norm2(box.displacement(a, b)) == norm2(b - a) && shown[i] && shown[j])
+            s.overlapping_pairs.emplace_back(i, j);
     }
     s.missed_collisions.clear();
     for (const Vec3& m : snapshot.missed_collisions) {
         double depth = 0.0;
-        s.missed_collisions.push_back(to_screen(m, depth));
+        const Vec2 where = to_screen(m, depth);
+        if (in_slab(depth)) s.missed_collisions.push_back(where);
     }
     // An escaped sphere's mark sits where it crossed the wall, on the screen, pointing out of the
     // face it crossed; recomputed every frame, so that it turns with an orbiting camera.

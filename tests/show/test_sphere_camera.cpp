@@ -275,3 +275,28 @@ TEST_CASE("an escape mark turns with an orbiting camera") {
 
 }  // namespace
 }  // namespace collide::show
+
+namespace collide::show {
+namespace {
+
+TEST_CASE("with a slab, only the failures inside the slice are handed on to be marked") {
+    SphereSnapshot s;
+    s.box = Box3{1.0, 1.0, 1.0, Boundary::walls};
+    // Seen from the front: an overlapping pair in the centre plane, one near the front; a missed
+    // collision at the centre plane and one at the back.
+    s.spheres = {sphere_at({0.3, 0.5, 0.5}, 0.05), sphere_at({0.38, 0.5, 0.5}, 0.05),
+                 sphere_at({0.7, 0.5, 0.9}, 0.05), sphere_at({0.78, 0.5, 0.9}, 0.05)};
+    s.overlapping_pairs = {{0, 1}, {2, 3}};
+    s.missed_collisions = {Vec3{0.5, 0.3, 0.5}, Vec3{0.5, 0.3, 0.1}};
+    const ProjectedPanel all = project(s, Camera{0.0, 0.0});
+    CHECK(all.screen.overlapping_pairs.size() == 2);
+    CHECK(all.screen.missed_collisions.size() == 2);
+    const ProjectedPanel slab = project(s, Camera{0.0, 0.0, 0.2});
+    REQUIRE(slab.screen.overlapping_pairs.size() == 1);
+    CHECK(slab.screen.overlapping_pairs[0] == std::pair<std::uint32_t, std::uint32_t>{0, 1});
+    REQUIRE(slab.screen.missed_collisions.size() == 1);
+    CHECK(slab.screen.missed_collisions[0].x == doctest::Approx(all.screen.missed_collisions[0].x));
+}
+
+}  // namespace
+}  // namespace collide::show
