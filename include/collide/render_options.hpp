@@ -6,6 +6,7 @@
 /// and print them through these tables only. Std-only (types layer).
 
 #include <array>
+#include <cstdint>
 #include <string_view>
 
 #include "collide/named_values.hpp"
@@ -43,6 +44,15 @@ enum class ReplayChoice {
     all,    ///< every failure the engine records (one per step, a few), as long as they fit
 };
 
+/// How a 3D scene's camera moves (`--camera`, `[render] camera`): a fixed view, or one that turns
+/// slowly about the box's vertical axis (show::camera_at).
+enum class CameraMotion : std::uint8_t { fixed, orbit };
+
+/// A 3D scene's projection (`--projection`, `[render] projection`): parallel rays (every sphere
+/// as large as it is, the box's edges parallel), or a perspective from an eye at a finite
+/// distance (near spheres larger, the edges converge).
+enum class Projection : std::uint8_t { orthographic, perspective };
+
 /// The names, in the order messages list them.
 inline constexpr std::array<NamedValue<ColorMode>, 4> color_mode_names{{{"scene", ColorMode::scene},
                                                                         {"speed", ColorMode::speed},
@@ -56,6 +66,10 @@ inline constexpr std::array<NamedValue<PlotSize>, 3> plot_size_names{
     {{"none", PlotSize::none}, {"small", PlotSize::small}, {"large", PlotSize::large}}};
 inline constexpr std::array<NamedValue<ReplayChoice>, 3> replay_choice_names{
     {{"none", ReplayChoice::none}, {"first", ReplayChoice::first}, {"all", ReplayChoice::all}}};
+inline constexpr std::array<NamedValue<CameraMotion>, 2> camera_motion_names{
+    {{"fixed", CameraMotion::fixed}, {"orbit", CameraMotion::orbit}}};
+inline constexpr std::array<NamedValue<Projection>, 2> projection_names{
+    {{"ortho", Projection::orthographic}, {"perspective", Projection::perspective}}};
 
 /// "scene" / "speed" / "mass" / "tag".
 [[nodiscard]] constexpr std::string_view color_mode_name(ColorMode mode) noexcept {

@@ -51,12 +51,17 @@ struct RenderHints {
     /// Only failures involving a disc with this tag are replayed (a barrier's, the scene's
     /// subject); unset: any failure.
     std::optional<std::string> replay_tag;
+    // 3D scenes only (a 2D scene file that names them is refused):
+    std::optional<CameraMotion> camera;    ///< "fixed" or "orbit"
+    std::optional<Projection> projection;  ///< "ortho" or "perspective"
+    std::optional<double> slab;            ///< the slice shown, box units thick
     /// Where each numeric hint was written, "file:line: render.dt", so that a hint the CLI
     /// refuses (too long, too much work) is named where the user can fix it; empty = unknown.
     std::string duration_at;
     std::string speed_at;
     std::string dt_at;
     std::string caption_at;  ///< "file:line: render.caption", for a caption too wide for a frame
+    std::string slab_at;
 };
 
 struct Scene {

@@ -29,6 +29,15 @@ struct DiscState {
     bool escaped = false;  ///< time-driven only: entirely outside a walled box (tunnelled out)
 };
 
+/// Where a particle that tunnelled out of a walled box left it, as the screen shows it: the point
+/// on the edge it crossed (3D: on the face, projected by the camera) and the outward direction
+/// there on the screen (unit, y up).
+struct ScreenExit {
+    std::uint32_t disc = 0;  ///< index into Snapshot::discs
+    Vec2 where;
+    Vec2 out;
+};
+
 /// One event in an engine's queue. Disc indices are the scene's (as in Snapshot::discs).
 struct QueuedEvent {
     double t = 0.0;                    ///< absolute simulation time the event was predicted for
@@ -95,6 +104,10 @@ struct Snapshot {
     /// Time-driven failure markers (empty for the event-driven engines).
     std::vector<std::pair<std::uint32_t, std::uint32_t>> overlapping_pairs;
     std::vector<Vec2> missed_collisions;  ///< where a collision went undetected since last frame
+    /// Dimension 3 only: where each escaped sphere left its box, projected (show::project), for
+    /// the "left the box" marks. A 2D snapshot leaves it empty: the exit follows from the disc's
+    /// position and velocity (show::exit_point), which a projected disc's do not tell.
+    std::vector<ScreenExit> exits;
     /// Event-driven engines watching their queue (Engine::watch_queue) only; empty otherwise.
     std::optional<QueueView> queue;
     /// The dimension of the particles the discs stand for: 2 (discs), or 3 when they stand in

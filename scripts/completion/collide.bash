@@ -23,6 +23,8 @@ _collide() {
             return ;;
         --pq) COMPREPLY=($(compgen -W "unordered ordered binary dary:4 indexed" -- "$cur")); return ;;
         --td-detect) COMPREPLY=($(compgen -W "all-pairs grid" -- "$cur")); return ;;
+        --camera) COMPREPLY=($(compgen -W "fixed orbit" -- "$cur")); return ;;
+        --projection) COMPREPLY=($(compgen -W "ortho perspective" -- "$cur")); return ;;
         --color) COMPREPLY=($(compgen -W "scene speed mass tag" -- "$cur")); return ;;
         --overlays) COMPREPLY=($(compgen -W "lesson full none" -- "$cur")); return ;;
         --theme) COMPREPLY=($(compgen -W "dark light" -- "$cur")); return ;;

@@ -43,6 +43,9 @@ struct CliValues {
     VideoCli video;  ///< -o, --format, -q, --size, --fps, --at, --last-frame, --theme, ...
     std::string mode = "both";
     std::string camera = "fixed";
+    CLI::Option* camera_opt = nullptr;
+    std::string projection = "ortho";
+    CLI::Option* projection_opt = nullptr;
     double slab = 0.0;
     CLI::Option* slab_opt = nullptr;
     double duration = 0.0;
@@ -118,8 +121,9 @@ RenderRequest request_of(const CliValues& v, bool still) {
     r.scene = v.scene;
     r.output = if_given(v.video.output_opt, v.video.output);
     r.mode = v.mode;
-    r.camera = v.camera;
+    r.camera = if_given(v.camera_opt, v.camera);
     r.slab = if_given(v.slab_opt, v.slab);
+    r.projection = if_given(v.projection_opt, v.projection);
     r.quality = if_given(v.video.quality_opt, v.video.quality);
     r.size = if_given(v.video.size_opt, v.video.size);
     r.fps = if_given(v.video.fps_opt, v.video.fps);
@@ -173,13 +177,19 @@ void add_shared_options(CLI::App& cmd, CliValues& v, bool video) {
     add_video_options(cmd, v.video, set);
     cmd.add_option("--mode", v.mode, "both (time-driven left, event-driven right), event or time")
         ->capture_default_str();
-    cmd.add_option("--camera", v.camera,
-                   "3D scenes: fixed, or orbit (the view turns slowly round the box, once every "
-                   "40 s of video)")
-        ->capture_default_str();
+    v.camera_opt =
+        cmd.add_option("--camera", v.camera,
+                       "3D scenes: fixed, or orbit (the view turns slowly round the "
+                       "box, once every 40 s of video; default: scene hint, else fixed)");
+    v.projection_opt =
+        cmd.add_option("--projection", v.projection,
+                       "3D scenes: ortho (parallel rays: every sphere as large as it is) or "
+                       "perspective (an eye near the box: near spheres larger, edges converge; "
+                       "default: scene hint, else ortho)");
     v.slab_opt = cmd.add_option("--slab", v.slab,
                                 "3D scenes: show only a slice W box units thick through the box's "
-                                "centre, facing the camera (the inside of a dense system)");
+                                "centre, facing the camera (the inside of a dense system; default: "
+                                "scene hint, else every sphere)");
     v.duration_opt =
         cmd.add_option("--duration", v.duration, "Seconds of video (default: scene hint, else 10)");
     v.speed_opt = cmd.add_option(

@@ -170,9 +170,9 @@ SimFrame FrameSource::frame(std::int64_t k) {
 PanelFrame FrameSource::describe(const Panel& panel, double video_seconds) const {
     PanelFrame out;
     if (panel.sphere_engine) {
-        show::ProjectedPanel projected =
-            show::project(panel.sphere_engine->snapshot(),
-                          show::camera_at(plan_.camera, video_seconds, plan_.slab));
+        show::ProjectedPanel projected = show::project(
+            panel.sphere_engine->snapshot(),
+            show::camera_at(plan_.camera, video_seconds, plan_.slab, plan_.projection));
         out.snapshot = std::move(projected.screen);
         out.view = std::move(projected.view);
         out.spheres = true;

@@ -425,8 +425,13 @@ RenderMode parse_render_mode(std::string_view text, std::string_view option) {
 }
 
 show::CameraMotion parse_camera_motion(std::string_view text, std::string_view option) {
-    static constexpr std::array<NamedValue<show::CameraMotion>, 2> names{
-        {{"fixed", show::CameraMotion::fixed}, {"orbit", show::CameraMotion::orbit}}};
+    return parse_named(text, option, camera_motion_names);
+}
+
+show::Projection parse_projection(std::string_view text, std::string_view option) {
+    static constexpr std::array<NamedValue<show::Projection>, 2> names{
+        {{"ortho", show::Projection::orthographic},
+         {"perspective", show::Projection::perspective}}};
     return parse_named(text, option, names);
 }
 
@@ -534,14 +539,33 @@ FrameClock still_clock(double at, double speed, int fps, std::string_view option
     return clock;
 }
 
-RenderPlan plan_without_frames(const RenderRequest& request, const Scene& scene) {
-    RenderPlan plan;
-    plan.mode = parse_render_mode(request.mode);
-    plan.camera = parse_camera_motion(request.camera);
+/// A 3D scene's camera: the options, else the scene's [render] hints, else a fixed orthographic
+/// view of every sphere.
+void choose_camera(const RenderRequest& request, const Scene& scene, RenderPlan& plan) {
+    const RenderHints& hints = scene.render;
+    if (request.camera) {
+        plan.camera = parse_camera_motion(*request.camera);
+    } else if (hints.camera) {
+        plan.camera = *hints.camera;
+    }
+    if (request.projection) {
+        plan.projection = parse_projection(*request.projection);
+    } else if (hints.projection) {
+        plan.projection = *hints.projection;
+    }
     if (request.slab) {
         require_positive(*request.slab, "--slab", "thickness in box units");
         plan.slab = *request.slab;
+    } else if (hints.slab) {
+        require_positive(*hints.slab, hint_option(hints.slab_at, "slab"), "thickness in box units");
+        plan.slab = *hints.slab;
     }
+}
+
+RenderPlan plan_without_frames(const RenderRequest& request, const Scene& scene) {
+    RenderPlan plan;
+    plan.mode = parse_render_mode(request.mode);
+    choose_camera(request, scene, plan);
     const QualityPreset preset =
         request.quality ? quality_preset(*request.quality) : QualityPreset{};
     const FrameSize size =

@@ -38,6 +38,11 @@ enum class RenderMode {
 [[nodiscard]] show::CameraMotion parse_camera_motion(std::string_view text,
                                                      std::string_view option = "--camera");
 
+/// "ortho" / "perspective" (`--projection`, 3D scenes); throws Error(input) naming `option`
+/// otherwise.
+[[nodiscard]] show::Projection parse_projection(std::string_view text,
+                                                std::string_view option = "--projection");
+
 /// A frame size and rate preset, as in manim's -ql/-qm/-qh/-qk.
 struct QualityPreset {
     int width = 1280;
@@ -126,19 +131,20 @@ using show::FrameClock;
 
 /// Everything the user may type; unset = take the scene hint or the default.
 struct RenderRequest {
-    std::string scene;                     ///< file or built-in name
-    std::optional<std::string> output;     ///< -o
-    std::string mode = "both";             ///< --mode
-    std::string camera = "fixed";          ///< --camera (3D scenes): fixed or orbit
-    std::optional<double> slab;            ///< --slab W (3D scenes): a slice W box units thick
-    std::optional<std::string> quality;    ///< -q
-    std::optional<std::string> size;       ///< --size WxH
-    std::optional<int> fps;                ///< --fps
-    std::optional<double> duration;        ///< --duration (seconds of video)
-    std::optional<double> speed;           ///< --speed (simulation time per second of video)
-    std::optional<double> dt;              ///< --dt (time-driven quantum)
-    EngineKind engine = EngineKind::fast;  ///< --engine (the event-driven one: fast or classic)
-    pq::QueueKind pq;                      ///< --pq (classic engine's queue)
+    std::string scene;                      ///< file or built-in name
+    std::optional<std::string> output;      ///< -o
+    std::string mode = "both";              ///< --mode
+    std::optional<std::string> camera;      ///< --camera (3D scenes): fixed or orbit
+    std::optional<double> slab;             ///< --slab W (3D scenes): a slice W box units thick
+    std::optional<std::string> projection;  ///< --projection (3D scenes): ortho or perspective
+    std::optional<std::string> quality;     ///< -q
+    std::optional<std::string> size;        ///< --size WxH
+    std::optional<int> fps;                 ///< --fps
+    std::optional<double> duration;         ///< --duration (seconds of video)
+    std::optional<double> speed;            ///< --speed (simulation time per second of video)
+    std::optional<double> dt;               ///< --dt (time-driven quantum)
+    EngineKind engine = EngineKind::fast;   ///< --engine (the event-driven one: fast or classic)
+    pq::QueueKind pq;                       ///< --pq (classic engine's queue)
     OverlapDetection td_detect = OverlapDetection::all_pairs;  ///< --td-detect (time-driven)
     std::optional<std::string> color;                          ///< --color
     std::optional<bool> trails;                                ///< --trails / --no-trails
@@ -222,9 +228,11 @@ struct RenderPlan {
     /// --slow-motion: speed.speed is the chosen pace divided by this (1: none). The physics (the
     /// default dt) follows the pace before the slow motion.
     double slow_motion = 1.0;
-    /// --camera: how a 3D scene is seen (a 2D scene ignores it).
+    /// --camera, else the scene's hint: how a 3D scene is seen (a 2D scene ignores it).
     show::CameraMotion camera = show::CameraMotion::fixed;
-    /// --slab: the thickness of the slice of spheres shown, box units (0: every sphere).
+    /// --projection, else the scene's hint: the 3D camera's projection (2D ignores it).
+    show::Projection projection = show::Projection::orthographic;
+    /// --slab, else the hint: the thickness of the slice of spheres shown, box units (0: all).
     double slab = 0.0;
     /// Which failures of the time-driven panel are replayed (--replay, the scene's hint, else
     /// first); none where no replay can be shown (no time-driven panel, not the lesson level).

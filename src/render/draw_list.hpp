@@ -20,15 +20,18 @@ struct DiscInstance {
 };
 static_assert(sizeof(DiscInstance) == 20);
 
-/// The vertex layout of shaders/sphere.vert: one sphere impostor (24 bytes).
+/// The vertex layout of shaders/sphere.vert: one sphere impostor (40 bytes).
 struct SphereInstance {
-    float x, y;          ///< centre, frame pixels
-    float radius;        ///< pixels
+    float x, y;          ///< the centre's projection, frame pixels
+    float radius;        ///< pixels: how large it looks there (orthographic: its radius)
     float depth;         ///< the centre's depth, 0 (near) .. 1 (far)
     float radius_depth;  ///< the radius in depth units
     Rgba8 color;
+    /// Perspective only (SphereLight::eye_z > 0): the centre in frame pixels over the screen
+    /// plane (x, y) and its height above it towards the viewer, and the true radius, pixels.
+    float plane_x = 0.0F, plane_y = 0.0F, height = 0.0F, ball_radius = 0.0F;
 };
-static_assert(sizeof(SphereInstance) == 24);
+static_assert(sizeof(SphereInstance) == 40);
 
 /// How one panel's spheres are lit (SphereView's light, in the painter's colours).
 struct SphereLight {
@@ -36,6 +39,9 @@ struct SphereLight {
     float ambient = 0.3F;
     float depth_cue = 0.5F;
     Rgba8 cue_color;  ///< far spheres fade towards it
+    /// The perspective eye in frame pixels (y down) and its height above the screen plane;
+    /// eye_z = 0: orthographic.
+    float eye_x = 0.0F, eye_y = 0.0F, eye_z = 0.0F;
 };
 
 /// Text of one font: glyphs (OverlayBatch::glyphs) blended over everything after the readback.

@@ -265,6 +265,7 @@ void GlTarget::create_depth_buffer() {
     sphere_ambient_ = gl.GetUniformLocation(sphere_program_.get(), "ambient");
     sphere_depth_cue_ = gl.GetUniformLocation(sphere_program_.get(), "depth_cue");
     sphere_cue_color_ = gl.GetUniformLocation(sphere_program_.get(), "cue_color");
+    sphere_eye_ = gl.GetUniformLocation(sphere_program_.get(), "eye");
     sphere_vertex_array_ = make_vertex_array(gl);
     sphere_buffer_ = make_buffer(gl);
     gl.BindVertexArray(sphere_vertex_array_.get());
@@ -278,7 +279,8 @@ void GlTarget::create_depth_buffer() {
                            at(offsetof(SphereInstance, radius_depth)));
     gl.VertexAttribPointer(4, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
                            at(offsetof(SphereInstance, color)));
-    for (GLuint location = 0; location < 5; ++location) gl.EnableVertexAttribArray(location);
+    gl.VertexAttribPointer(5, 4, GL_FLOAT, GL_FALSE, stride, at(offsetof(SphereInstance, plane_x)));
+    for (GLuint location = 0; location < 6; ++location) gl.EnableVertexAttribArray(location);
     gl.BindVertexArray(0);
 }
 
@@ -312,6 +314,7 @@ void GlTarget::submit_spheres(const DrawList& list, float frame_w, float frame_h
             gl.Uniform1f(sphere_depth_cue_, l.depth_cue);
             gl.Uniform3f(sphere_cue_color_, l.cue_color.r / 255.0F, l.cue_color.g / 255.0F,
                          l.cue_color.b / 255.0F);
+            gl.Uniform3f(sphere_eye_, l.eye_x, l.eye_y, l.eye_z);
             scissor_to(group.clip);
             gl.DrawArrays(GL_TRIANGLES, static_cast<GLint>(first * vertices_per_disc),
                           static_cast<GLsizei>((end - first) * vertices_per_disc));

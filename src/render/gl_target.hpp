@@ -96,6 +96,7 @@ class GlTarget {
     GLint sphere_ambient_ = -1;
     GLint sphere_depth_cue_ = -1;
     GLint sphere_cue_color_ = -1;
+    GLint sphere_eye_ = -1;
     std::vector<SphereInstance> sphere_vertices_;
     GLint disc_frame_size_ = -1;
     GLint disc_as_points_ = -1;

@@ -280,12 +280,16 @@ void Painter::add_spheres(const SphereView& view, const PanelLayout& panel, cons
             batch.add_line(a, b, edge_width, color);
         }
     }
+    const auto scale = static_cast<float>(panel.scale);
     for (const SphereSprite& sphere : view.spheres) {
         const PointF p = panel.to_pixels(sphere.at, screen);
+        const PointF foot = panel.to_pixels(sphere.plane_at, screen);
         const Rgb8 c = particle_color(sphere.color, sphere.speed, sphere.mass, sphere.tagged);
         list_.spheres.push_back({p.x, p.y, static_cast<float>(sphere.radius * panel.scale),
                                  static_cast<float>(sphere.depth),
-                                 static_cast<float>(sphere.radius_depth), with_alpha(c, 255)});
+                                 static_cast<float>(sphere.radius_depth), with_alpha(c, 255),
+                                 foot.x, foot.y, static_cast<float>(sphere.height) * scale,
+                                 static_cast<float>(sphere.ball_radius) * scale});
     }
     SphereLight light;
     light.x = static_cast<float>(view.light_x);
@@ -294,6 +298,12 @@ void Painter::add_spheres(const SphereView& view, const PanelLayout& panel, cons
     light.ambient = static_cast<float>(view.ambient);
     light.depth_cue = static_cast<float>(view.depth_cue);
     light.cue_color = palette_.box_fill;
+    if (view.eye_distance > 0.0) {
+        const PointF eye = panel.to_pixels(view.eye_at, screen);
+        light.eye_x = eye.x;
+        light.eye_y = eye.y;
+        light.eye_z = static_cast<float>(view.eye_distance) * scale;
+    }
     list_.sphere_groups.push_back({list_.spheres.size(), panel.box, light});
 }
 

@@ -38,8 +38,13 @@ const Keys generate3_keys = {"count", "packing_fraction", "radius", "mass", "tem
 const Keys disc_keys = {"position", "velocity", "radius", "mass", "color", "tag"};
 const Keys generate_keys = {"count", "packing_fraction", "radius", "mass", "temperature",
                             "speed", "region",           "color",  "seed", "tag"};
-const Keys render_keys = {"color_mode", "trails",  "overlays", "duration",  "speed",  "dt",
-                          "theme",      "caption", "captions", "histogram", "replay", "replay_tag"};
+const Keys render_keys = {"color_mode", "trails", "overlays",   "duration", "speed",
+                          "dt",         "theme",  "caption",    "captions", "histogram",
+                          "replay",     "camera", "projection", "slab",     "replay_tag"};
+/// [render] keys of one dimension only: the camera of a 3D scene; trails and replays, which
+/// spheres do not have.
+const Keys render_keys3 = {"camera", "projection", "slab"};
+const Keys render_keys2 = {"trails", "replay", "replay_tag"};
 const Keys caption_keys = {"at", "text", "hold"};
 
 std::string num(double v) {
@@ -109,6 +114,17 @@ class TomlReader {
                      dim == 2 ? "a 3D key in a 2D scene (add dimension = 3 for spheres)"
                               : "a 2D key in a 3D scene (dimension = 3 has [[sphere]], [[fcc]] "
                                 "and [[generate]])");
+            }
+        }
+        if (const toml::node* render = doc.get("render"); render != nullptr && render->is_table()) {
+            for (const std::string& key : dim == 2 ? render_keys3 : render_keys2) {
+                const toml::node* n = render->as_table()->get(key);
+                if (n == nullptr) continue;
+                fail(*n, "render." + key,
+                     dim == 2 ? "a 3D key in a 2D scene (the camera of spheres: add "
+                                "dimension = 3)"
+                              : "a 2D key in a 3D scene (spheres are drawn without trails and "
+                                "their failures are not replayed yet)");
             }
         }
         if (const toml::node* box = doc.get("box"); box != nullptr && box->is_table() && dim == 2) {
@@ -586,6 +602,14 @@ class TomlReader {
         if (const toml::node* v = t.get("dt")) {
             r.dt = positive(*v, "render.dt");
             r.dt_at = where(*v, "render.dt");
+        }
+        if (const toml::node* v = t.get("camera"))
+            r.camera = one_of(*v, "render.camera", camera_motion_names);
+        if (const toml::node* v = t.get("projection"))
+            r.projection = one_of(*v, "render.projection", projection_names);
+        if (const toml::node* v = t.get("slab")) {
+            r.slab = positive(*v, "render.slab");
+            r.slab_at = where(*v, "render.slab");
         }
         if (const toml::node* v = t.get("captions")) read_captions(*v);
     }

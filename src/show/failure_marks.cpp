@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <utility>
 
 #include "collide/number_text.hpp"
@@ -39,6 +40,15 @@ double mean_radius(const Snapshot& snapshot) {
     double sum = 0.0;
     for (const DiscState& d : snapshot.discs) sum += d.radius;
     return snapshot.discs.empty() ? 0.0 : sum / static_cast<double>(snapshot.discs.size());
+}
+
+/// The exit of disc i as its snapshot carries it (spheres: projected by the camera); none for a
+/// 2D disc, whose exit follows from its position and velocity (exit_point).
+std::optional<Exit> projected_exit(const Snapshot& snapshot, std::uint32_t i) {
+    for (const ScreenExit& e : snapshot.exits) {
+        if (e.disc == i) return Exit{e.where, e.out};
+    }
+    return std::nullopt;
 }
 
 }  // namespace
@@ -162,15 +172,22 @@ void FailureMarks::remember(const Snapshot& snapshot, double video_time) {
         for (const Vec2 where : snapshot.missed_collisions) missed_.push_back({where, video_time});
     }
     std::erase_if(missed_, [&](const Missed& m) { return video_time - m.born >= mark_seconds; });
-    // Discs outside now: keep where they left from the first frame they were seen outside.
+    // Discs outside now: keep where they left from the first frame they were seen outside. A
+    // sphere's exit comes projected with the snapshot, anew each frame: the camera may turn.
     std::vector<Left> still;
     for (std::uint32_t i = 0; i < snapshot.discs.size(); ++i) {
         if (!snapshot.discs[i].escaped) continue;
         const auto known =
             std::find_if(left_.begin(), left_.end(), [&](const Left& l) { return l.disc == i; });
-        still.push_back(known != left_.end()
-                            ? *known
-                            : Left{i, exit_point(snapshot.discs[i], snapshot.box), left_seen_++});
+        const std::optional<Exit> projected = projected_exit(snapshot, i);
+        if (known != left_.end()) {
+            still.push_back(*known);
+            if (projected) still.back().exit = *projected;
+        } else {
+            still.push_back(
+                Left{i, projected ? *projected : exit_point(snapshot.discs[i], snapshot.box),
+                     left_seen_++});
+        }
     }
     left_ = std::move(still);
 }

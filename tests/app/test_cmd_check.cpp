@@ -224,6 +224,35 @@ TEST_CASE("collide check: bad 3D scenes exit 2 naming file, line and field") {
         {"region2d3.toml",
          "dimension = 3\n[[generate]]\ncount = 10\nradius = 0.05\nregion = [[0, 0], [1, 1]]\n",
          "region2d3.toml:5: generate[0].region[0]: expected [x, y, z]"},
+        // [render]: the camera of spheres in a 2D scene, trails or replays in a 3D one, and bad
+        // camera values.
+        {"camera2.toml", "[box]\nwidth = 1\n[render]\nduration = 5\ncamera = \"orbit\"\n",
+         "camera2.toml:5: render.camera: a 3D key in a 2D scene"},
+        {"projection2.toml", "[render]\nprojection = \"perspective\"\n",
+         "projection2.toml:2: render.projection: a 3D key in a 2D scene"},
+        {"slab2.toml", "[render]\nslab = 0.3\n",
+         "slab2.toml:2: render.slab: a 3D key in a 2D scene"},
+        {"trails3.toml",
+         "dimension = 3\n[[sphere]]\nposition = [0.5, 0.5, 0.5]\nradius = 0.1\n[render]\n"
+         "trails = true\n",
+         "trails3.toml:6: render.trails: a 2D key in a 3D scene"},
+        {"replay3.toml",
+         "dimension = 3\n[render]\nreplay = \"all\"\n[[sphere]]\nposition = [0.5, 0.5, 0.5]\n"
+         "radius = 0.1\n",
+         "replay3.toml:3: render.replay: a 2D key in a 3D scene"},
+        {"projection3.toml",
+         "dimension = 3\n[[sphere]]\nposition = [0.5, 0.5, 0.5]\nradius = 0.1\n[render]\n"
+         "projection = \"fisheye\"\n",
+         "projection3.toml:6: render.projection: expected one of ortho, perspective (got "
+         "\"fisheye\")"},
+        {"camera3.toml",
+         "dimension = 3\n[[sphere]]\nposition = [0.5, 0.5, 0.5]\nradius = 0.1\n[render]\n"
+         "camera = 3\n",
+         "camera3.toml:6: render.camera:"},
+        {"slab3.toml",
+         "dimension = 3\n[[sphere]]\nposition = [0.5, 0.5, 0.5]\nradius = 0.1\n[render]\n"
+         "slab = -1\n",
+         "slab3.toml:6: render.slab:"},
     };
     for (const Case& c : cases) {
         CAPTURE(c.file);

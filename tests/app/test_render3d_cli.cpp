@@ -1,5 +1,5 @@
 // End-to-end: `collide render` / `thumbnail` of 3D scenes (spheres), `check` of the built-in 3D
-// scenes, and `--camera`.
+// scenes, `--camera` and `--projection`, their golden thumbnails, and OSMesa against EGL.
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -8,9 +8,11 @@
 #include <string>
 
 #include "../support/input_error.hpp"
+#include "../support/skip.hpp"
 #include "../support/temp_dir.hpp"
 #include "collide/image.hpp"
 #include "collide/video/png.hpp"
+#include "golden_image.hpp"
 #include "run_collide.hpp"
 
 namespace fs = std::filesystem;
@@ -78,4 +80,90 @@ TEST_CASE("a bad --slab exits 2 naming the option") {
         CHECK(contains(r.output, "--slab"));
     }
     CHECK_FALSE(fs::exists("/tmp/collide_never.png"));
+}
+
+TEST_CASE("a bad --projection exits 2 naming the option and the choices") {
+    const auto r = run_collide("thumbnail gas-3d --projection fisheye -o /tmp/collide_never.png");
+    CHECK(r.exit_code == 2);
+    CHECK(contains(r.output, "--projection"));
+    CHECK(contains(r.output, "ortho or perspective"));
+    CHECK_FALSE(fs::exists("/tmp/collide_never.png"));
+}
+
+TEST_CASE("thumbnail: every built-in 3D scene matches its golden image, and a perspective") {
+    TempDir dir("golden3d");
+    const std::string list = run_collide("scenes").output;
+    struct Golden {
+        const char* scene;
+        const char* extra;
+        const char* name;
+    };
+    // The 2D goldens' size, rate and time (test_render_cli.cpp).
+    for (const Golden& g :
+         {Golden{"gas-3d", "", "gas-3d"}, Golden{"alder-wainwright", "", "alder-wainwright"},
+          Golden{"spheres-freeze", "", "spheres-freeze"},
+          Golden{"alder-wainwright", " --projection perspective",
+                 "alder-wainwright-perspective"}}) {
+        CAPTURE(g.name);
+        CHECK(contains(list, g.scene));
+        const fs::path out = dir.path / (std::string(g.name) + ".png");
+        const auto r =
+            run_collide(std::string("thumbnail ") + g.scene + " --size 320x180 --fps 10 --at 0.05" +
+                        g.extra + " -o " + out.string());
+        REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+        collide::test::check_golden(out, g.name);
+    }
+}
+
+TEST_CASE("thumbnail --gl: OSMesa and EGL surfaceless give the same 3D still, both projections") {
+    TempDir dir("gl3d");
+    for (const char* projection : {"ortho", "perspective"}) {
+        CAPTURE(projection);
+        const std::string still = std::string(
+                                      "thumbnail alder-wainwright --size 320x180 --at 0.5 "
+                                      "--camera orbit --projection ") +
+                                  projection;
+        const fs::path o = dir.path / (std::string(projection) + "_o.png");
+        const fs::path e = dir.path / (std::string(projection) + "_e.png");
+        const auto osmesa = run_collide(still + " --gl osmesa -o " + o.string());
+        const auto egl = run_collide(still + " --gl egl -o " + e.string());
+        if (contains(osmesa.output, "built without it") || contains(egl.output, "built without it"))
+            COLLIDE_SKIP_TEST("this build lacks OSMesa or EGL");
+        if (egl.exit_code != 0 && contains(egl.output, "EGL"))
+            COLLIDE_SKIP_TEST("EGL cannot render here: " << egl.output);
+        REQUIRE_MESSAGE(osmesa.exit_code == 0, osmesa.output);
+        REQUIRE_MESSAGE(egl.exit_code == 0, egl.output);
+        CHECK(read_bytes(o).size() > 1000);
+        CHECK(read_bytes(o) == read_bytes(e));
+    }
+}
+
+TEST_CASE("[render] camera, projection and slab of a 3D scene: hints the options override") {
+    TempDir dir("hints3d");
+    const std::string spheres =
+        "dimension = 3\n[box]\nboundary = \"periodic\"\n[[fcc]]\ncells = 3\npacking_fraction = "
+        "0.3\nseed = 2\n";
+    const auto write = [&](const std::string& name, const std::string& text) {
+        const fs::path p = dir.path / name;
+        std::ofstream(p) << text;
+        return p.string();
+    };
+    const std::string plain = write("plain.toml", spheres);
+    const std::string hinted =
+        write("hinted.toml",
+              spheres + "[render]\ncamera = \"orbit\"\nprojection = \"perspective\"\nslab = 0.5\n");
+    const auto thumb = [&](const std::string& scene, const std::string& extra,
+                           const std::string& name) {
+        const fs::path out = dir.path / (name + ".png");
+        const auto r = run_collide("thumbnail " + scene + " --size 320x180 --at 1 " + extra +
+                                   " -o " + out.string());
+        REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+        return read_bytes(out);
+    };
+    const std::string by_options =
+        thumb(plain, "--camera orbit --projection perspective --slab 0.5", "options");
+    CHECK(thumb(hinted, "", "hints") == by_options);
+    CHECK(thumb(hinted, "--camera fixed --projection ortho --slab 100", "overridden") ==
+          thumb(plain, "", "plain"));
+    CHECK(thumb(plain, "", "plain2") != by_options);
 }

@@ -15,13 +15,16 @@
 #include "../support/temp_dir.hpp"
 #include "collide/image.hpp"
 #include "collide/video/png.hpp"
+#include "golden_image.hpp"
 #include "run_collide.hpp"
 
 namespace fs = std::filesystem;
 using collide::Image;
 using collide::test::capture;
+using collide::test::check_golden;
 using collide::test::have_ffprobe;
 using collide::test::run_collide;
+using collide::test::share_of_differing_pixels;
 
 namespace {
 
@@ -30,38 +33,6 @@ using collide::test::TempDir;
 std::string read_bytes(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-/// Share of pixels where some channel differs by more than 2 (the golden-image tolerance).
-double share_of_differing_pixels(const Image& a, const Image& b) {
-    if (a.width != b.width || a.height != b.height) return 1.0;
-    std::size_t differing = 0;
-    for (std::size_t i = 0; i < a.rgba.size(); i += 4) {
-        for (std::size_t c = 0; c < 4; ++c) {
-            if (std::abs(int(a.rgba[i + c]) - int(b.rgba[i + c])) > 2) {
-                ++differing;
-                break;
-            }
-        }
-    }
-    return static_cast<double>(differing) / (static_cast<double>(a.rgba.size()) / 4.0);
-}
-
-/// Compares a thumbnail with tests/app/golden/<name>.png (per-channel difference <= 2 on at most
-/// 0.1% of the pixels); COLLIDE_UPDATE_GOLDENS=1 rewrites the golden instead.
-void check_golden(const fs::path& image_path, const std::string& name) {
-    const fs::path golden = fs::path(COLLIDE_TESTS_DIR) / "app" / "golden" / (name + ".png");
-    const Image image = collide::video::read_png(image_path);
-    const char* update = std::getenv("COLLIDE_UPDATE_GOLDENS");
-    if (update != nullptr && std::string(update) == "1") {
-        fs::create_directories(golden.parent_path());
-        collide::video::write_png(image, golden);
-        COLLIDE_SKIP_TEST("golden rewritten, not compared: " << golden.string());
-    }
-    REQUIRE_MESSAGE(fs::exists(golden),
-                    "missing golden " << golden.string() << " (COLLIDE_UPDATE_GOLDENS=1)");
-    CHECK_MESSAGE(share_of_differing_pixels(image, collide::video::read_png(golden)) <= 0.001,
-                  name);
 }
 
 }  // namespace

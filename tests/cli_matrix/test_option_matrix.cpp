@@ -87,6 +87,11 @@ TEST_CASE("option matrix: render's numbers, sizes and names") {
     cases.push_back({"gas --td-detect magic" + never + ".mp4", "--td-detect",
                      "expected all-pairs or grid, got 'magic'"});
     cases.push_back({"gas --gl vulkan" + never + ".mp4", "--gl", "vulkan"});
+    cases.push_back({"gas-3d --camera spin" + never + ".mp4", "--camera", "fixed or orbit"});
+    cases.push_back(
+        {"gas-3d --projection fisheye" + never + ".mp4", "--projection", "ortho or perspective"});
+    for (const char* v : {"0", "-1", "nan"})
+        cases.push_back({std::string("gas-3d --slab ") + v + never + ".mp4", "--slab"});
     cases.push_back({"gas --overlays loud" + never + ".mp4", "--overlays", "loud"});
     cases.push_back({"gas --theme sepia" + never + ".mp4", "--theme", "sepia"});
     cases.push_back({"gas --layout-json ''" + never + ".mp4", "--layout-json"});
