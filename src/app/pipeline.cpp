@@ -27,6 +27,10 @@ namespace {
 /// frame (a burst of collisions) without holding many snapshots in memory.
 constexpr std::size_t sim_queue_frames = 4;
 
+/// How far past the last frame the next collision line looks (seconds of video): a thumbnail's
+/// last frame shows its line too; a collision further away is no "next" a class waits for.
+constexpr double lookahead_seconds = 10.0;
+
 double relative_drift(double energy, double initial) {
     return initial > 0.0 ? (energy - initial) / initial : 0.0;
 }
@@ -123,6 +127,7 @@ bool watch_queue(EngineBase& engine, const QueueViewLimits& limits) {
 FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan, const std::atomic<bool>* stop,
                          const SphereScene* spheres)
     : plan_(plan) {
+    const OverlayLevel level = plan.render.overlays;
     const auto add = [&](const EngineOptions& options, bool time_driven, std::string title) {
         Panel panel;
         if (spheres != nullptr) {
@@ -135,12 +140,18 @@ FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan, const std::
             !watch_queue(panel.base(), show::queue_picture(plan.queue_events)))
             throw_option_error("--queue", "the " + std::string(to_string(options.engine)) +
                                               " engine has no event queue");
+        if (!time_driven && spheres == nullptr && level == OverlayLevel::lesson &&
+            plan.queue_events == 0) {
+            // The next collision line: a twin engine run ahead says what comes next.
+            panel.lookahead =
+                std::make_unique<sim::CollisionLookahead>(make_engine(scene, options));
+            panel.lookahead->set_stop_flag(stop);
+        }
         panel.time_driven = time_driven;
         panel.title = std::move(title);
         panel.initial_energy = panel.base().measurements().kinetic_energy;
         panels_.push_back(std::move(panel));
     };
-    const OverlayLevel level = plan.render.overlays;
     if (plan.mode != RenderMode::event)
         add(plan.time_engine, true, show::panel_title(true, level, plan.time_engine));
     if (plan.mode != RenderMode::time)
@@ -163,8 +174,34 @@ SimFrame FrameSource::frame(std::int64_t k) {
         EngineBase& engine = panel.base();
         engine.advance_to(std::max(out.time, engine.time()));
         out.panels.push_back(describe(panel, video_seconds));
+        if (panel.lookahead)
+            out.panels.back().next_collision = next_collision(panel, out.panels.back().snapshot);
     }
     return out;
+}
+
+double FrameSource::schedule_time(std::int64_t k) const {
+    const std::int64_t count = plan_.timeline.frame_count();
+    if (k < count) return plan_.clock.time(plan_.timeline.sim_frame(k));
+    return plan_.clock.time(plan_.timeline.sim_frame(count - 1)) +
+           static_cast<double>(k - count + 1) * plan_.clock.interval;
+}
+
+NextCollisionView FrameSource::next_collision(Panel& panel, const Snapshot& snapshot) {
+    const auto last = plan_.timeline.frame_count() +
+                      static_cast<std::int64_t>(std::ceil(lookahead_seconds * plan_.fps));
+    std::optional<CollisionRecord> next = panel.lookahead->next_after(snapshot.time);
+    // The twins take the frames' times in the order the engines do (every panel's twin is at
+    // lookahead_frame_), so that each resolves what its engine will, bit for bit.
+    while (!next && lookahead_frame_ < last) {
+        const double t = schedule_time(lookahead_frame_++);
+        for (Panel& p : panels_) {
+            if (p.lookahead) p.lookahead->advance_to(t);
+        }
+        next = panel.lookahead->next_after(snapshot.time);
+    }
+    if (!next) return {};
+    return show::next_collision_view(*next, snapshot, plan_.clock);
 }
 
 PanelFrame FrameSource::describe(const Panel& panel, double video_seconds) const {
@@ -282,6 +319,8 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
             out.mark_words = marks_[i].words();
             out.mark_line = show::mark_line(panel.time_driven, i == 0, panel.snapshot.box);
         }
+        // A replay draws the collision the event-driven panel predicted itself: no second line.
+        out.next_collision = replay_frame ? NextCollisionView{} : panel.next_collision;
         out.zoom = replay_frame ? replay_frame->zoom : BoxZoom{};
         out.replay = !replay_frame       ? ReplayView{}
                      : panel.time_driven ? replay_frame->time_driven

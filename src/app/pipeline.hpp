@@ -26,6 +26,7 @@
 #include "collide/show/failure_marks.hpp"
 #include "collide/show/sphere_camera.hpp"
 #include "collide/sim/engine.hpp"
+#include "collide/sim/lookahead.hpp"
 #include "collide/snapshot.hpp"
 #include "interrupt.hpp"
 #include "progress.hpp"
@@ -47,6 +48,8 @@ struct PanelFrame {
     show::PanelWords words;     ///< counters, figures, compact line, cost (collide/show)
     Measurements measurements;  ///< the engine's, at this frame (the epilogue's card)
     QueueWords queue_words;     ///< the queue strip's (snapshot.queue set)
+    /// Lesson level, event-driven panel without the queue: the collision it resolves next.
+    NextCollisionView next_collision;
 };
 
 /// What the simulation thread hands to the render thread for one frame.
@@ -85,12 +88,23 @@ class FrameSource {
         bool time_driven = false;
         std::string title;
         double initial_energy = 0.0;
+        /// A twin of the event-driven engine run ahead (lesson level, no queue strip, discs):
+        /// what it resolves next, for the next collision line. nullptr: none drawn.
+        std::unique_ptr<sim::CollisionLookahead> lookahead;
     };
     [[nodiscard]] PanelFrame describe(const Panel& panel, double video_seconds) const;
+    /// The collision `panel` resolves after time `t` (its twin run ahead as far as needed, to
+    /// the times the panel's engine will be advanced to, at most lookahead_seconds of video past
+    /// the last frame), as the lesson draws it; empty when none is found.
+    [[nodiscard]] NextCollisionView next_collision(Panel& panel, const Snapshot& snapshot);
+    /// The simulation time the engines are advanced to at video frame `k` (beyond the last
+    /// frame: one frame interval per frame, for the twin's look ahead).
+    [[nodiscard]] double schedule_time(std::int64_t k) const;
 
     const RenderPlan& plan_;
     std::vector<Panel> panels_;
     std::int64_t last_sim_frame_ = -1;
+    std::int64_t lookahead_frame_ = 0;  ///< the next video frame whose time the twins are given
 };
 
 /// Turns SimFrames into the renderer's FrameContent (render thread), keeping each panel's energy

@@ -6,7 +6,8 @@
 // box, and the event queue (`--queue`). Below compact_width one line of text per panel. Its
 // files: lesson_painter.cpp (the phases, panel text), lesson_layout.cpp (where things go),
 // lesson_marks.cpp (the marks' style and legend), lesson_column.cpp (column and title card),
-// lesson_queue.cpp (the event queue), lesson_replay.cpp (a replay's marks).
+// lesson_queue.cpp (the event queue), lesson_replay.cpp (a replay's marks), lesson_next.cpp
+// (the next collision line).
 
 #include <cstddef>
 #include <optional>
@@ -70,6 +71,9 @@ class LessonPainter : public Painter {
                         Rgba8 frame_color, bool stale);
     /// A replay's ghosts, jump and labels over a (zoomed) box (lesson_replay.cpp).
     void add_replay(const ReplayView& replay, const PanelLayout& panel, const Box& box);
+    /// The event-driven panel's next collision: a thin line and its time to go (lesson_next.cpp).
+    void add_next_collision(const NextCollisionView& next, const PanelLayout& panel,
+                            const Box& box);
     /// A label centred at `at` on a plate of the box colour, kept inside `inside`.
     void add_plate_label(Font font, PointF at, std::string_view text, Rgba8 color, RectF inside);
     [[nodiscard]] float pop_highlight(const QueuedEvent& popped, double now) const noexcept;

@@ -299,6 +299,7 @@ std::vector<ColorPair> color_pairs(Theme theme) {
         {"queue: the next event's label on the page", next_event_color(theme), page, text_contrast},
         {"queue: the next event's label on a box plate", next_event_color(theme), box,
          text_contrast},
+        {"next collision: its thin line on the box", next_event_color(theme), box, mark_contrast},
         {"queue: a queued event's label in the box (text at 75 %)", blend(rgb(p.text), box, 0.75F),
          box, text_contrast},
         {"queue: a slot's time on the page (text at 85 %)", blend(rgb(p.text), page, 0.85F), page,

@@ -41,13 +41,27 @@ std::string clock_label(double t, const FrameClock& clock, double speed) {
 namespace {
 /// The lesson's clock: as many decimals as tell one frame from the next, at most three (a class
 /// reads "t = 45.0", not "t = 45.000", when frames are 0.1 apart).
+bool lesson_decimals_apply(const FrameClock& clock) {
+    return clock.interval >= 1e-3 && clock.last_time < 1e6;
+}
+int lesson_decimals(const FrameClock& clock) {
+    return std::clamp(static_cast<int>(std::ceil(-std::log10(clock.interval) - 1e-9)), 0, 3);
+}
 std::string lesson_clock(double t, const FrameClock& clock) {
-    if (!(clock.interval >= 1e-3 && clock.last_time < 1e6)) return time_part(t, clock);
-    const int decimals =
-        std::clamp(static_cast<int>(std::ceil(-std::log10(clock.interval) - 1e-9)), 0, 3);
-    return fmt::format("t = {:.{}f}", t, decimals);
+    if (!lesson_decimals_apply(clock)) return time_part(t, clock);
+    return fmt::format("t = {:.{}f}", t, lesson_decimals(clock));
 }
 }  // namespace
+
+std::string next_collision_words(double to_go, const FrameClock& clock) {
+    // In the units and decimals of the clock beside it, so that a class can add the two.
+    if (!lesson_decimals_apply(clock)) return fmt::format("next hit in {:.3g}", to_go);
+    const int decimals = lesson_decimals(clock);
+    const double smallest = std::pow(10.0, -decimals);
+    // "0.00" would say the hit is now: below the last decimal it is "< 0.01".
+    if (to_go < 0.5 * smallest) return fmt::format("next hit in < {:.{}f}", smallest, decimals);
+    return fmt::format("next hit in {:.{}f}", to_go, decimals);
+}
 
 std::string clock_text(double t, const FrameClock& clock, double speed, OverlayLevel level) {
     // The lesson's column is narrow and the playback rate is no lesson: the time alone (its unit,

@@ -192,6 +192,19 @@ inline constexpr unsigned queue_tree_levels = 3;
 inline constexpr std::size_t queue_array_slots = 10;
 [[nodiscard]] QueueViewLimits queue_picture(std::size_t next_events) noexcept;
 
+/// The event-driven panel's next collision as the lesson draws it: `next` (what the engine
+/// resolves next, sim::CollisionLookahead; next.t after snapshot.time) seen in `snapshot` (the
+/// panel's state now): the line between the discs' centres, to the image of the partner it will
+/// meet in a periodic box, or to the wall point it will touch, and its time to go with the
+/// lesson clock's decimals ("next hit in 0.42", "next hit in < 0.01"). Empty for a 3D panel or
+/// a record naming a disc the snapshot lacks.
+[[nodiscard]] NextCollisionView next_collision_view(const CollisionRecord& next,
+                                                    const Snapshot& snapshot,
+                                                    const FrameClock& clock);
+/// The words of the next collision's label for a time to go of `to_go`, with the decimals of the
+/// lesson clock (clock_text) of `clock`.
+[[nodiscard]] std::string next_collision_words(double to_go, const FrameClock& clock);
+
 /// The queue strip's words for `queue` at simulation time `now` (the snapshot's): the fast engine
 /// (one event per disc) re-predicts a stale event, the classic engine throws it away; each event
 /// shown gets its label ("3-7", "5 wall") and its time to go from `now`.

@@ -149,6 +149,25 @@ struct BoxLabel {
     double clear = 0.0;  ///< box units: the plate keeps this far from `at`
 };
 
+/// A disc's place in the box that words must not cover, box coordinates.
+struct BoxCircle {
+    Vec2 centre;
+    double radius = 0.0;  ///< box units
+};
+
+/// The event-driven panel's next collision (lesson level, without the queue strip): one thin
+/// line from a disc's centre to its partner's (periodic box: to the image it will meet, and from
+/// the partner back to this disc's image, each cut at the box by the painter) or to the point of
+/// the wall it will touch, with its time to go on a plate that keeps clear of the discs. Filled
+/// by show::next_collision_view.
+struct NextCollisionView {
+    std::vector<BoxLine> lines;         ///< empty: nothing drawn
+    std::string text;                   ///< "next hit in 0.42"
+    Vec2 label_at;                      ///< the line's middle: the label's place when it is free
+    std::vector<BoxCircle> keep_clear;  ///< the colliding discs: the label never covers them
+    [[nodiscard]] bool empty() const noexcept { return lines.empty(); }
+};
+
 /// What a replay draws over one panel's box (lesson level): filled by show::replay_frame.
 struct ReplayView {
     std::string heading;  ///< at the top of the box ("Replay: one step, 9x enlarged")
@@ -204,6 +223,8 @@ struct PanelContent {
     /// and what the replay draws over it.
     BoxZoom zoom;
     ReplayView replay;
+    /// Lesson level, event-driven panel: the collision it resolves next (empty: none drawn).
+    NextCollisionView next_collision;
 };
 
 /// One sample of an energy drift series: relative drift (E(t) - E(0)) / E(0) at time t.
