@@ -42,7 +42,8 @@ void LessonPainter::add_next_collision(const NextCollisionView& next, const Pane
     // The plate: at the line's middle when that leaves the discs free, else beside them.
     std::vector<std::pair<PointF, float>> discs;
     for (const BoxCircle& c : next.keep_clear)
-        discs.emplace_back(panel.to_pixels(c.centre, box), static_cast<float>(c.radius * panel.scale));
+        discs.emplace_back(panel.to_pixels(c.centre, box),
+                           static_cast<float>(c.radius * panel.scale));
     const FontAtlas& font = atlas(Font::body);
     const float pad = std::round(0.2F * body);
     const float w = font.text_width(next.text) + 2.0F * pad;

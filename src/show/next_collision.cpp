@@ -23,11 +23,12 @@ NextCollisionView next_collision_view(const CollisionRecord& next, const Snapsho
             // The image of b that a meets: the nearest one at the moment they touch (then they
             // are two radii apart), brought back to now. In a periodic box it may lie across an
             // edge: the line goes from each disc towards the other's image, cut at the box.
-            const Vec2 at_hit = box.displacement(a.position + a.velocity * to_go,
-                                                 b.position + b.velocity * to_go);
+            const Vec2 at_hit =
+                box.displacement(a.position + a.velocity * to_go, b.position + b.velocity * to_go);
             const Vec2 d = at_hit - (b.velocity - a.velocity) * to_go;
             view.lines.push_back({a.position, a.position + d});
-            if (box.boundary == Boundary::periodic) view.lines.push_back({b.position, b.position - d});
+            if (box.boundary == Boundary::periodic)
+                view.lines.push_back({b.position, b.position - d});
             // The middle of the whole line, folded into the box: on one of its pieces.
             view.label_at = box.wrap(a.position + d * 0.5);
             view.keep_clear.push_back({b.position, b.radius});

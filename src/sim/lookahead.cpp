@@ -15,6 +15,8 @@ std::optional<CollisionRecord> CollisionLookahead::next_after(double t) {
     return ahead_.front();
 }
 
-void CollisionLookahead::advance_to(double t) { twin_->advance_to(std::max(t, twin_->time())); }
+void CollisionLookahead::advance_to(double t) {
+    twin_->advance_to(std::max(t, twin_->time()));
+}
 
 }  // namespace collide::sim

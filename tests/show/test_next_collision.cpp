@@ -55,10 +55,11 @@ void check_matches_engine(const Scene& scene, EngineKind kind) {
         std::optional<CollisionRecord> next = lookahead.next_after(now.time);
         while (!next && twin_frame < clock.count + 300) {
             // The frames' times, then on past the last frame (as the app's FrameSource does).
-            const double t = twin_frame < clock.count
-                                 ? clock.time(twin_frame)
-                                 : clock.last_time + static_cast<double>(twin_frame - clock.count + 1) *
-                                                         clock.interval;
+            const double t =
+                twin_frame < clock.count
+                    ? clock.time(twin_frame)
+                    : clock.last_time +
+                          static_cast<double>(twin_frame - clock.count + 1) * clock.interval;
             lookahead.advance_to(t);
             ++twin_frame;
             next = lookahead.next_after(now.time);
@@ -100,8 +101,7 @@ TEST_CASE("next collision: the drawn pair and time are the engine's next collisi
         check_matches_engine(test::lattice_fluid(10, 0.3, Boundary::walls, 7), EngineKind::fast);
     }
     SUBCASE("fast engine, periodic") {
-        check_matches_engine(test::lattice_fluid(10, 0.3, Boundary::periodic, 8),
-                             EngineKind::fast);
+        check_matches_engine(test::lattice_fluid(10, 0.3, Boundary::periodic, 8), EngineKind::fast);
     }
     SUBCASE("classic engine, walls") {
         check_matches_engine(test::lattice_fluid(8, 0.2, Boundary::walls, 9), EngineKind::classic);
