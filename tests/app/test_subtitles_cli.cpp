@@ -32,6 +32,17 @@ using collide::test::parse_subtitles;
 using collide::test::ParsedCue;
 using collide::test::without_markup;
 
+/// Renders the multilingual scene (written into `dir`) to `out` at `size` and 10 fps, its
+/// subtitles tagged Polish, with `extra` options; requires success.
+void render_multilingual(const fs::path& dir, const fs::path& out, const std::string& size,
+                         const std::string& extra = {}) {
+    const fs::path scene = dir / "scene.toml";
+    collide::test::write_file(scene, scene_text);
+    const auto r = run_collide("render " + scene.string() + " --size " + size +
+                               " --fps 10 --progress none --lang pl -o " + out.string() + extra);
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+}
+
 }  // namespace
 
 TEST_CASE(
@@ -40,13 +51,9 @@ TEST_CASE(
     if (!have_ffprobe()) COLLIDE_SKIP_TEST("ffprobe is not installed");
     TempDir dir("subtitles");
     const fs::path scene = dir.path / "scene.toml";
-    collide::test::write_file(scene, scene_text);
     const fs::path out = dir.path / "t.mp4";
     const fs::path vtt = dir.path / "t.vtt";
-    const auto r = run_collide("render " + scene.string() +
-                               " --size 320x180 --fps 10 --progress none --lang pl -o " +
-                               out.string() + " --subtitles-file " + vtt.string());
-    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    render_multilingual(dir.path, out, "320x180", " --subtitles-file " + vtt.string());
     const std::string probe = capture(
         "ffprobe -v error -select_streams s -show_entries stream=codec_name:stream_tags=language "
         "-of default=nw=1 " +
@@ -104,13 +111,8 @@ TEST_CASE(
     "render: a player shows the track over the video (libass, as ffplay -vf subtitles and mpv)") {
     if (!have_ffprobe()) COLLIDE_SKIP_TEST("ffmpeg is not installed");
     TempDir dir("subtitles_player");
-    const fs::path scene = dir.path / "scene.toml";
-    collide::test::write_file(scene, scene_text);
     const fs::path out = dir.path / "t.mp4";
-    const auto r =
-        run_collide("render " + scene.string() +
-                    " --size 640x360 --fps 10 --progress none --lang pl -o " + out.string());
-    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    render_multilingual(dir.path, out, "640x360");
     // The frame at 2.8 s (the caption "Energia ± 0: E = ½mv²" on screen) as decoded, and as a
     // player draws it with the MP4's own subtitle track over it.
     const fs::path raw = dir.path / "raw.png";
