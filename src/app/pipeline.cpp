@@ -311,7 +311,7 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
             out.step_period = lesson.frames_per_step;
             out.step_phase = std::min(step_phase_, lesson.frames_per_step - 1);
         }
-        if (plan_.render.overlays == OverlayLevel::lesson) {
+        if (plan_.render.overlays != OverlayLevel::none) {
             // The failure marks and their legend: which failures get a mark is decided in show.
             // They fade with the moving picture (a card or a hold keeps them as they are).
             marks_[i].update(panel.snapshot, static_cast<double>(frame.sim_frame) / plan_.fps);

@@ -27,6 +27,13 @@ std::string join(const std::vector<std::string>& parts, const char* separator) {
 FullPainter::FullPainter(const RenderConfig& config) : MinimalPainter(config) {
     load_font(body_font_, font_pixel_height(config_.height));
     use_classic_style();
+    // As at the lesson level: each failure its own mark (a disc that left the box is an arrow
+    // at the edge it crossed, not a disc drawn over the counters outside), nothing of a panel
+    // outside its box, periodic edges dashed, trails legible.
+    style_.escaped_as_marks = true;
+    style_.clip_to_box = true;
+    style_.dashed_periodic_edges = true;
+    style_.legible_trails = true;
 }
 
 FrameLayout FullPainter::layout_for(const FrameContent& frame) const {
@@ -36,6 +43,12 @@ FrameLayout FullPainter::layout_for(const FrameContent& frame) const {
 
 void FullPainter::begin_frame(const FrameContent& frame) {
     counter_rows_ = counter_rows(frame);
+}
+
+// The marks the presentation layer chose (show::FailureMarks), each kind its own shape.
+void FullPainter::add_marks(std::size_t /*index*/, const PanelContent& content,
+                            const PanelLayout& panel) {
+    paint_failure_marks(list_, content.marks, panel, content.snapshot->box, mark_style());
 }
 
 Rgba8 FullPainter::counter_color() const noexcept {
@@ -113,10 +126,18 @@ void FullPainter::finish_frame(const FrameContent& frame) {
                     config_.speed_max, frame.speed_plot, plot_colors(config_.theme));
     draw_drift_plot(list_.over, text, font, drift, frame.energy_drift, frame.drift_plot,
                     series_colors, plot_colors(config_.theme));
-    const float notes_baseline = strip.y1 - m * 0.5F - line + font.ascent();
+    if (strip_slot != nullptr) {
+        TextSlot notice = *strip_slot;
+        notice.rect = {columns.x0, strip.y1 - m * 0.5F - line, columns.x1, strip.y1 - m * 0.5F};
+        add_notice_line(notice, frame);
+    }
+}
+
+void FullPainter::add_notice_line(const TextSlot& line, const FrameContent& frame) {
+    float x = line.rect.x0;
+    for (const PanelContent& panel : frame.panels) x = add_mark_legend(line, panel.mark_words, x);
     const std::string notes = join(frame.notes, "   \xC2\xB7   ");
-    font.add_text(text, columns.x0, notes_baseline, notes, counter_color());
-    if (strip_slot != nullptr) record_text(*strip_slot, notes);
+    if (!notes.empty()) (void)draw_text(Font::body, line, notes, counter_color(), Align::left, x);
 }
 
 // Colour bar with its fixed range (speed or mass modes) or the tag key, with the show's words.

@@ -19,11 +19,15 @@ class FullPainter : public MinimalPainter {
 
   private:
     void begin_frame(const FrameContent& frame) override;
+    void add_marks(std::size_t index, const PanelContent& content,
+                   const PanelLayout& panel) override;
     void add_panel_text(std::size_t index, const PanelContent& content,
                         const PanelLayout& panel) override;
     void finish_frame(const FrameContent& frame) override;
 
     void add_legend(RectF info, const ColorKeyWords& words);
+    /// The notice line: the failure marks' legend of every panel, then the frame's notes.
+    void add_notice_line(const TextSlot& line, const FrameContent& frame);
     [[nodiscard]] int counter_rows(const FrameContent& frame) const;
     [[nodiscard]] Rgba8 counter_color() const noexcept;
     [[nodiscard]] int panel_counter_columns(std::size_t panels) const;

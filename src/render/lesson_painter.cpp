@@ -152,6 +152,11 @@ void LessonPainter::add_marks(std::size_t index, const PanelContent& content,
     if (!content.replay.empty()) add_replay(content.replay, panel, snapshot.box);
 }
 
+void LessonPainter::add_mark_legend(std::size_t index, const PanelContent& content) {
+    const TextSlot* slot = layout_.slot(TextRole::marks, static_cast<int>(index));
+    if (slot != nullptr) (void)Painter::add_mark_legend(*slot, content.mark_words, slot->rect.x0);
+}
+
 void LessonPainter::finish_frame(const FrameContent& frame) {
     if (!layout_.compact && !intro_) add_column(frame);
     if (frame.code && !intro_ && layout_.code.width() > 0.0F) add_code(*frame.code);

@@ -48,8 +48,7 @@ class LessonPainter : public Painter {
     /// The headline figures in `slot`; true when some continued on `overflow` (the how line).
     bool add_figures(const std::vector<Figure>& figures, const TextSlot& slot,
                      const TextSlot* overflow);
-    // Failure marks and their legend (lesson_marks.cpp; the shapes: failure_marks.hpp).
-    [[nodiscard]] MarkStyle mark_style() const;
+    /// A panel's mark legend on its own line under the figures (the look: Painter).
     void add_mark_legend(std::size_t index, const PanelContent& content);
     // The column and the title card (lesson_column.cpp).
     void add_column(const FrameContent& frame);

@@ -13,6 +13,7 @@
 
 #include "collide/render/renderer.hpp"
 #include "draw_list.hpp"
+#include "failure_marks.hpp"
 #include "font.hpp"
 #include "layout.hpp"
 #include "theme.hpp"
@@ -93,6 +94,13 @@ class Painter {
     float draw_text(Font font, const TextSlot& slot, std::string_view text, Rgba8 color,
                     Align align = Align::left, float x = -1.0F);
     [[nodiscard]] const FontAtlas& atlas(Font font) const;
+    // Failure marks and their legend at the levels with text (painter_marks.cpp; the shapes:
+    // failure_marks.hpp; which failures get a mark: show::FailureMarks).
+    /// How the marks look at this frame's text size, wall, margin and theme.
+    [[nodiscard]] MarkStyle mark_style() const;
+    /// The legend in `slot` from `x`: each kind with its symbol, then the count of the unmarked,
+    /// then the wrap note, each entry whole or not at all. Returns the x after the last entry.
+    float add_mark_legend(const TextSlot& slot, const MarkWords& words, float x);
     /// The body font's pixel height, 0 without text.
     [[nodiscard]] float body_pixel_height() const noexcept;
     /// The boxes of a frame's panels (only their shapes matter to a layout).

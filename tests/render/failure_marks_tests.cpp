@@ -142,6 +142,52 @@ TEST_CASE("the presentation layer's marks reach the picture: escaped discs marke
     CHECK(count_near(r.image, {0, 255, 0}, 40) == 0);  // the disc itself is not drawn
 }
 
+// The full level drew escaped discs outside the box, over the counters, with magenta halos and
+// flashes for the other kinds and no legend.
+TEST_CASE("the full level draws the same marks by kind, with their legend on the notice line") {
+    if (!have_font()) COLLIDE_SKIP_TEST("no DejaVu Sans at " << RenderConfig{}.font_path);
+    Snapshot s;
+    s.time = 1.0;
+    s.box = {10.0, 10.0, Boundary::walls};
+    DiscState gone = test::disc_at({-4.0, 5.0}, 0.5, {0, 255, 0});
+    gone.velocity = {-1.0, 0.0};
+    gone.escaped = true;
+    s.discs = {gone, test::disc_at({3.0, 3.0}, 0.5, {0, 0, 255})};
+    s.missed_collisions = {{7.0, 7.0}};
+    show::FailureMarks marks;
+    marks.update(s, 0.0);
+    REQUIRE(marks.marks().size() == 2);
+    RenderConfig config;
+    config.width = 854;
+    config.height = 480;
+    config.overlays = OverlayLevel::full;
+    Renderer renderer(config, test::test_backend());
+    FrameContent frame;
+    frame.panels = {{&s, "Time-driven", {}}};
+    frame.panels[0].marks = marks.marks();
+    frame.panels[0].mark_words = marks.words();
+    const Image image = renderer.render(frame);
+    test::dump_if_requested(image, "full_level_marks");
+    const FrameLayout layout =
+        compute_layout(config, {s.box}, font_pixel_height(config.height) * 1.2F, 0);
+    const PanelLayout& panel = layout.panels.at(0);
+    const Rgb8 failure = failure_color(Theme::dark);
+    CHECK(count_near(image, {0, 255, 0}, 40) == 0);  // the escaped disc is not drawn anywhere
+    // An arrow across the left edge where it left; a ring where the collision was missed.
+    const PointF exit = panel.to_pixels({0.0, 5.0}, s.box);
+    CHECK(count_near(image, failure, 40, px(panel.box.x0) - 6, px(exit.y) - 3, px(panel.box.x0) - 1,
+                     px(exit.y) + 4) > 0);
+    const PointF ring = panel.to_pixels({7.0, 7.0}, s.box);
+    CHECK(count_near(image, failure, 40, px(ring.x) - 2, px(ring.y) - 2, px(ring.x) + 3,
+                     px(ring.y) + 3) == 0);  // a ring, not a flash: empty in the middle
+    // The legend names both kinds on the bottom line, with their symbols.
+    const std::string json = renderer.layout_json(frame);
+    CHECK(json.find(show::failure_name(FailureKind::missed)) != std::string::npos);
+    CHECK(json.find(show::failure_name(FailureKind::left_box)) != std::string::npos);
+    CHECK(count_near(image, failure, 40, 0, config.height - px(layout.margin) * 3, config.width,
+                     config.height) > 20);
+}
+
 TEST_CASE("a periodic box's edges are dashed, a walled box's solid") {
     if (!have_font()) COLLIDE_SKIP_TEST("no DejaVu Sans at " << RenderConfig{}.font_path);
     for (const Boundary boundary : {Boundary::walls, Boundary::periodic}) {

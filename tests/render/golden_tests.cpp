@@ -10,6 +10,7 @@
 
 #include "../support/skip.hpp"
 #include "collide/show/collision.hpp"
+#include "collide/show/failure_marks.hpp"
 #include "render_fixtures.hpp"
 
 namespace collide::render {
@@ -83,7 +84,12 @@ TEST_CASE("golden: two panels with overlays, speed colours and failure markers")
     frame.time_text = "t = 2.00";
     frame.energy_drift = {{{0.0, 0.0}, {1.0, 0.01}, {2.0, 0.03}},
                           {{0.0, 0.0}, {1.0, 0.0}, {2.0, 0.0}}};
-    frame.notes = {"red halo: overlap"};
+    // The marks and their legend as the app chooses them: a ring, a cross, an arrow at the edge.
+    show::FailureMarks marks(show::mark_budget, true);
+    marks.update(left, 0.0);
+    frame.panels[0].marks = marks.marks();
+    frame.panels[0].mark_words = marks.words();
+    frame.notes = {"dt = 0.05"};
     frame.color_key = show::color_key(config.color_mode, config.speed_min, config.speed_max,
                                       config.mass_min, config.mass_max);
     test::add_show_words(frame, config.speed_max);

@@ -1,15 +1,16 @@
-// The lesson level's failure marks: their style at this frame size and the legend line under a
-// panel's figures that names each kind with its mark, counts the failures left unmarked and says
-// when a periodic box's edges wrap around. Which failures get a mark is the presentation layer's
-// choice (show::FailureMarks); the shapes are failure_marks.cpp's.
+// The failure marks' style at a frame's size and the legend that names each kind with its mark,
+// counts the failures left unmarked and says when a periodic box's edges wrap around: shared by
+// the levels with text (the lesson's line under a panel's figures, the full level's notice
+// line). Which failures get a mark is the presentation layer's choice (show::FailureMarks); the
+// shapes are failure_marks.cpp's.
 #include <algorithm>
 #include <cmath>
 
-#include "lesson_painter.hpp"
+#include "painter.hpp"
 
 namespace collide::render {
 
-MarkStyle LessonPainter::mark_style() const {
+MarkStyle Painter::mark_style() const {
     const float text_px = body_font_ ? body_font_->pixel_height() : 8.0F;
     MarkStyle style;
     style.min_radius = 0.45F * text_px;
@@ -22,41 +23,37 @@ MarkStyle LessonPainter::mark_style() const {
     return style;
 }
 
-void LessonPainter::add_mark_legend(std::size_t index, const PanelContent& content) {
-    const TextSlot* slot = layout_.slot(TextRole::marks, static_cast<int>(index));
-    if (slot == nullptr) return;
-    const MarkWords& words = content.mark_words;
+float Painter::add_mark_legend(const TextSlot& slot, const MarkWords& words, float x) {
     const FontAtlas& font = atlas(Font::body);
     const MarkStyle style = mark_style();
     const float symbol = std::round(0.75F * font.pixel_height());
     const float space = std::round(0.35F * font.pixel_height());
     const float gap = std::round(0.7F * font.pixel_height());
-    const float cy = 0.5F * (slot->rect.y0 + slot->rect.y1);
-    float x = slot->rect.x0;
-    // Each entry whole or not at all: the kinds first, then the count of the unmarked, then the
-    // wrap note.
-    const auto fits = [&](float width) { return x + width <= slot->rect.x1; };
+    const float cy = 0.5F * (slot.rect.y0 + slot.rect.y1);
+    const auto fits = [&](float width) { return x + width <= slot.rect.x1; };
     for (const MarkLegendItem& item : words.items) {
         const float need = symbol + space + font.text_width(item.name);
-        if (!fits(need)) return;
+        if (!fits(need)) return x;
         paint_mark_symbol(list_.over, item.kind, {x + 0.5F * symbol, cy}, symbol, style);
-        draw_text(Font::body, *slot, item.name, palette_.text, Align::left, x + symbol + space);
+        draw_text(Font::body, slot, item.name, palette_.text, Align::left, x + symbol + space);
         x += need + gap;
     }
     if (!words.unmarked.empty()) {
         const float need = font.text_width(words.unmarked);
-        if (!fits(need)) return;
-        draw_text(Font::body, *slot, words.unmarked, palette_.failure, Align::left, x);
+        if (!fits(need)) return x;
+        draw_text(Font::body, slot, words.unmarked, palette_.failure, Align::left, x);
         x += need + gap;
     }
     if (!words.wraps.empty()) {
         const float sample = 2.0F * symbol;
         const float need = sample + space + font.text_width(words.wraps);
-        if (!fits(need)) return;
+        if (!fits(need)) return x;
         add_dashed_line(list_.over, x, x + sample, cy, style_.wall, edge_dash(style_.wall),
                         palette_.wrap_edge);
-        draw_text(Font::body, *slot, words.wraps, palette_.text, Align::left, x + sample + space);
+        draw_text(Font::body, slot, words.wraps, palette_.text, Align::left, x + sample + space);
+        x += need + gap;
     }
+    return x;
 }
 
 }  // namespace collide::render
