@@ -149,7 +149,18 @@ ReplayView event_driven_view(const ReplayFailure& failure, const Geometry& g, co
     ReplayView view;
     view.heading = "Same moment: event-driven";
     view.focus = {failure.step.a, failure.step.b};
-    if (!failure.predicted) return view;
+    if (!failure.predicted) {
+        // The event-driven run never brought these two together here: the time-driven panel's
+        // earlier failures changed its history. Say so, or the panel shows an empty spot.
+        for (const LabelSide side : {LabelSide::above, LabelSide::below}) {
+            BoxLabel apart{view_centre,
+                           std::string(parted_words[side == LabelSide::above ? 0 : 1])};
+            apart.side = side;
+            apart.opacity = o;
+            view.labels.push_back(apart);
+        }
+        return view;
+    }
     const PredictedHit& hit = *failure.predicted;
     // The mover and the other disc at the collision, near the time-driven spot (a periodic box
     // may hold them a box width away).

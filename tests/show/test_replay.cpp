@@ -222,6 +222,14 @@ TEST_CASE("replay words: the caption, the checks, and the event-driven predictio
     REQUIRE(!held.event_driven.labels.empty());
     CHECK(held.event_driven.labels[0].text == "predicted hit t = 0.13");
     CHECK(held.event_driven.ghosts.size() == 2);
+    // Without a predicted hit (the event-driven run had parted), the panel says why it is empty.
+    ReplayFailure parted = failure;
+    parted.predicted.reset();
+    const ReplayFrame apart = replay_frame(parted, scene.box, replay_hold_end - 0.1);
+    REQUIRE(apart.event_driven.labels.size() == 2);
+    CHECK(apart.event_driven.labels[0].text == parted_words[0]);
+    CHECK(apart.event_driven.labels[1].text == parted_words[1]);
+    CHECK(apart.event_driven.ghosts.empty());
     const std::vector<TimelineReplay> cues = replay_cues({failure});
     REQUIRE(cues.size() == 1);
     CHECK(cues[0].seconds == replay_seconds);

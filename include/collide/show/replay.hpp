@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "collide/box.hpp"
@@ -31,6 +32,11 @@ inline constexpr double replay_slow_end = 3.6;  ///< the slow move from step k t
 inline constexpr double replay_hold_end = 5.3;  ///< the whole picture stands until here
 /// The zoom never enlarges more than this (a disc would fill the box).
 inline constexpr double max_replay_magnification = 12.0;
+
+/// The event-driven panel's words in a replay when that engine had no collision of the failing
+/// discs at that moment (its history had already parted from the time-driven one's): two lines,
+/// so they fit a box a third of a 480-line frame wide.
+inline constexpr std::string_view parted_words[2] = {"These two never met:", "the runs had parted"};
 
 /// The collision the event-driven engine handled at the moment of the failure.
 struct PredictedHit {
