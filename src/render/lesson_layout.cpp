@@ -130,8 +130,12 @@ FrameLayout lesson_layout(const LayoutInput& in) {
         layout.text.push_back(
             {TextRole::title, p, {title_x0, top - gap - line, text_x1, top - gap}, body});
         float y = std::max(panel.box.y1, top) + gap;
-        // Figures stay under their own box, so the two panels' rows cannot run together.
-        const float figures_x0 = left_of_column ? text_x0 : std::max(text_x0, panel.box.x0);
+        // Figures stay under their own box, so the two panels' rows cannot run together. With
+        // the queue strip the left one starts at the frame's margin like its title: its inset box
+        // leaves too narrow a row for two failures, and the strip has taken the how line they
+        // would continue on.
+        const float figures_x0 = left_of_column ? (queue ? title_x0 : text_x0)
+                                                : std::max(text_x0, panel.box.x0);
         const float figures_x1 = left_of_column ? std::min(text_x1, panel.box.x1) : text_x1;
         layout.text.push_back(
             {TextRole::figures, p, {figures_x0, y, figures_x1, y + head_line}, head});

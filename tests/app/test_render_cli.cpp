@@ -512,6 +512,25 @@ TEST_CASE("the cost graphic's numbers and ratio on screen are the engines' count
     CHECK(std::abs(shown - exact) <= 0.005 * exact + 0.5);
 }
 
+// The queue strip takes the how line that failures continue on, and insets the boxes: the
+// time-driven row under its box had room for "0 missed" only, and "overlapping" was dropped.
+TEST_CASE("render --queue: every failure kind stays among the figures (issue #28 item 2)") {
+    TempDir dir("queue_figures");
+    const fs::path json = dir.path / "layout.json";
+    for (const char* size : {"1280x720", "854x480"}) {
+        CAPTURE(size);
+        const auto r = run_collide(std::string("thumbnail gas --queue --at 2 --size ") + size +
+                                   " -o " + (dir.path / "t.png").string() + " --layout-json " +
+                                   json.string());
+        REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+        std::string figures;
+        for (const std::string& f : texts_of(read_bytes(json), "figures")) figures += f + "|";
+        CAPTURE(figures);
+        CHECK(figures.find(" missed|") != std::string::npos);
+        CHECK(figures.find(" overlapping|") != std::string::npos);
+    }
+}
+
 TEST_CASE("render --queue: classic and fast engines show their queue, byte-identical run to run") {
     TempDir dir("queue");
     const std::string base =
