@@ -134,8 +134,8 @@ FrameLayout lesson_layout(const LayoutInput& in) {
         // the queue strip the left one starts at the frame's margin like its title: its inset box
         // leaves too narrow a row for two failures, and the strip has taken the how line they
         // would continue on.
-        const float figures_x0 = left_of_column ? (queue ? title_x0 : text_x0)
-                                                : std::max(text_x0, panel.box.x0);
+        const float figures_x0 =
+            left_of_column ? (queue ? title_x0 : text_x0) : std::max(text_x0, panel.box.x0);
         const float figures_x1 = left_of_column ? std::min(text_x1, panel.box.x1) : text_x1;
         layout.text.push_back(
             {TextRole::figures, p, {figures_x0, y, figures_x1, y + head_line}, head});

@@ -81,7 +81,9 @@ FrameLayout LessonPainter::layout_for(const FrameContent& frame) const {
     for (const PanelContent& panel : frame.panels) {
         if (!panel.note.empty()) input.note_line = true;
         if (!panel.how.empty()) input.how_line = true;
-        input.mark_lines.push_back(panel.mark_line);
+        // A panel showing its queue says on that line what the lines in its box are.
+        input.mark_lines.push_back(panel.mark_line ||
+                                   (panel.snapshot != nullptr && panel.snapshot->queue));
     }
     input.cost_ratio = frame.panels.size() == 2;
     input.clock_unit = !frame.time_unit.empty();
@@ -154,7 +156,13 @@ void LessonPainter::add_marks(std::size_t index, const PanelContent& content,
 
 void LessonPainter::add_mark_legend(std::size_t index, const PanelContent& content) {
     const TextSlot* slot = layout_.slot(TextRole::marks, static_cast<int>(index));
-    if (slot != nullptr) (void)Painter::add_mark_legend(*slot, content.mark_words, slot->rect.x0);
+    if (slot == nullptr) return;
+    float x = Painter::add_mark_legend(*slot, content.mark_words, slot->rect.x0);
+    // The queue's lines in the box ("Next 4 collisions, time to go": the lines in the box).
+    const std::string& queue_legend = content.queue_words.legend;
+    if (content.snapshot->queue && !queue_legend.empty() &&
+        x + body_font_->text_width(queue_legend) <= slot->rect.x1)
+        (void)draw_text(Font::body, *slot, queue_legend, palette_.muted, Align::left, x);
 }
 
 void LessonPainter::finish_frame(const FrameContent& frame) {

@@ -23,7 +23,7 @@ namespace collide::render {
 /// How long an event popped off a panel's queue stays highlighted, in seconds of video.
 inline constexpr double queue_pop_seconds = 0.8;
 /// The queue strip's small text against the lesson body text.
-inline constexpr float queue_text_scale = 0.7F;
+inline constexpr float queue_text_scale = 1.0F;
 
 /// The part of segment a-b inside r (Liang-Barsky); false when none is.
 bool clip_to(RectF r, PointF& a, PointF& b);

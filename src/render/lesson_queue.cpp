@@ -15,6 +15,12 @@ namespace collide::render {
 
 namespace {
 
+/// The strip's line height and a node's height (two lines, label and time), in text heights:
+/// tight enough that at the lesson's text size a 30 % strip holds the heading, two pops with
+/// their counts and a heap's top two levels.
+constexpr float strip_line = 1.15F;
+constexpr float node_lines = 2.0F;
+
 /// The `i`th of a view's per-event words, empty where the view has fewer (a frame built by hand).
 const std::string& nth(const std::vector<std::string>& words, std::size_t i) {
     static const std::string none;
@@ -179,13 +185,27 @@ void LessonPainter::add_queue_in_box(const Snapshot& snapshot, const QueueWords&
         pending[r] = {label_at, true};
     }
     if (!labels) return;
-    // Labels after all lines, the next event's first so that it keeps its place.
-    for (std::size_t r = 0; r < queue.next.size(); ++r) {
-        if (!pending[r].second) continue;
+    // Labels after all lines: the next event's first so that it keeps its place, then its discs'
+    // numbers (the ones the strip names: "14 wall", "3-7") just under them, then the others.
+    const auto time_label = [&](std::size_t r) {
+        if (!pending[r].second) return;
         const bool first = r == 0;
         add_plate_label(first ? Font::body : Font::small, pending[r].first,
                         nth(words.next_times, r), first ? next_color() : palette_.text, inside);
+    };
+    if (queue.next.empty()) return;
+    time_label(0);
+    const QueuedEvent& e = queue.next.front();
+    for (std::size_t j = 0; j < words.next_discs.size(); ++j) {
+        const std::uint32_t k = j == 0 ? e.a : e.b;
+        if (k >= snapshot.discs.size()) continue;
+        const DiscState& disc = snapshot.discs[k];
+        const PointF c = panel.to_pixels(disc.position, box);
+        const auto radius = static_cast<float>(disc.radius * panel.scale);
+        add_plate_label(Font::body, {c.x, c.y + radius + 0.7F * body}, words.next_discs[j],
+                        next_color(), inside);
     }
+    for (std::size_t r = 1; r < queue.next.size(); ++r) time_label(r);
 }
 
 // The strip: a heading, the latest pops on the left, the queue itself on the right.
@@ -193,19 +213,17 @@ void LessonPainter::add_queue_strip(const Snapshot& snapshot, const QueueWords& 
                                     RectF strip) {
     const QueueView& queue = *snapshot.queue;
     const FontAtlas& small = *small_font_;
-    const float line = std::round(small.pixel_height() * 1.2F);
+    const float line = std::round(small.pixel_height() * strip_line);
     const float m = std::round(0.5F * small.pixel_height());
     list_.over.add_frame(strip, 1.0F, faded(palette_.muted, 0.6F));
     const RectF inner{strip.x0 + m, strip.y0 + 0.5F * m, strip.x1 - m, strip.y1 - 0.5F * m};
     const std::string& heading = words.heading;
     const TextSlot heading_slot{
         TextRole::queue, -1, {inner.x0, inner.y0, inner.x1, inner.y0 + line}, small.pixel_height()};
-    const std::string& legend = words.legend;
-    TextSlot left = heading_slot;
-    left.rect.x1 = inner.x1 - small.text_width(legend) - 2.0F * m;
-    draw_text(Font::small, left, heading, palette_.title);
-    draw_text(Font::small, heading_slot, legend, palette_.muted, Align::right);
-    const float popped_w = std::round(0.3F * inner.width());
+    // The legend of the box's lines is on the panel's legend line (add_panel_text): at the
+    // lesson's text size the heading takes the strip's width.
+    draw_text(Font::small, heading_slot, heading, palette_.title);
+    const float popped_w = std::round(0.33F * inner.width());
     const RectF body{inner.x0, inner.y0 + line + 0.5F * m, inner.x1, inner.y1};
     add_popped(queue, words, snapshot.time, {body.x0, body.y0, body.x0 + popped_w, body.y1});
     const RectF right{body.x0 + popped_w + m, body.y0, body.x1, body.y1};
@@ -221,7 +239,7 @@ void LessonPainter::add_queue_strip(const Snapshot& snapshot, const QueueWords& 
 void LessonPainter::add_popped(const QueueView& queue, const QueueWords& words, double now,
                                RectF area) {
     const FontAtlas& small = *small_font_;
-    const float line = std::round(small.pixel_height() * 1.2F);
+    const float line = std::round(small.pixel_height() * strip_line);
     const auto slot = [&](float y) {
         return TextSlot{TextRole::queue, -1, {area.x0, y, area.x1, y + line}, small.pixel_height()};
     };
@@ -319,19 +337,23 @@ void LessonPainter::add_queue_tree(const QueueView& queue, const QueueWords& wor
     if (queue.slots.empty() || queue.levels == 0) return;
     const FontAtlas& small = *small_font_;
     const std::size_t d = std::max<unsigned>(queue.arity, 2);
-    const auto levels = static_cast<float>(queue.levels);
-    const float node_h = std::round(2.1F * small.pixel_height());
+    const float node_h = std::round(node_lines * small.pixel_height());
+    // The levels that fit the strip (a view may hold more than the show's budget allows here).
+    const auto fit =
+        static_cast<unsigned>(std::max(1.0F, std::floor((area.height() + 4.0F) / (node_h + 4.0F))));
+    const unsigned shown_levels = std::min(queue.levels, fit);
+    const auto levels = static_cast<float>(shown_levels);
     const float level_gap = std::max(
         4.0F, std::floor((area.height() - levels * node_h) / std::max(levels - 1.0F, 1.0F)));
     std::size_t widest = 1;
-    for (unsigned l = 1; l < queue.levels; ++l) widest *= d;
+    for (unsigned l = 1; l < shown_levels; ++l) widest *= d;
     const float cell_w = area.width() / static_cast<float>(widest);
     const float node_w = std::min(node_width(words.slot_labels), cell_w - 3.0F);
     // Slot i sits at level l, position p within it; its centre is over its subtree's middle.
     std::vector<PointF> centre(queue.slots.size());
     std::size_t first = 0;
     std::size_t width = 1;
-    for (unsigned l = 0; l < queue.levels; ++l) {
+    for (unsigned l = 0; l < shown_levels; ++l) {
         const float span = area.width() / static_cast<float>(width);
         for (std::size_t p = 0; p < width && first + p < queue.slots.size(); ++p) {
             centre[first + p] = {
@@ -341,13 +363,14 @@ void LessonPainter::add_queue_tree(const QueueView& queue, const QueueWords& wor
         first += width;
         width *= d;
     }
-    for (std::size_t i = 1; i < queue.slots.size(); ++i) {
+    const std::size_t placed = std::min(first, queue.slots.size());
+    for (std::size_t i = 1; i < placed; ++i) {
         const PointF c = centre[i];
         const PointF parent = centre[(i - 1) / d];
         list_.over.add_line({parent.x, parent.y + 0.5F * node_h}, {c.x, c.y - 0.5F * node_h}, 1.5F,
                             faded(palette_.muted, 0.8F));
     }
-    for (std::size_t i = 0; i < queue.slots.size(); ++i) {
+    for (std::size_t i = 0; i < placed; ++i) {
         const QueuedEvent& e = queue.slots[i];
         const PointF c = centre[i];
         const RectF node{std::round(c.x - 0.5F * node_w), std::round(c.y - 0.5F * node_h),
@@ -363,7 +386,7 @@ void LessonPainter::add_queue_tree(const QueueView& queue, const QueueWords& wor
                   {TextRole::queue,
                    -1,
                    {area.x1 - area.width() * 0.4F, area.y0, area.x1,
-                    area.y0 + std::round(small.pixel_height() * 1.2F)},
+                    area.y0 + std::round(small.pixel_height() * strip_line)},
                    small.pixel_height()},
                   words.below, palette_.muted, Align::right);  // the left of the root is for pops
     }
@@ -373,14 +396,14 @@ void LessonPainter::add_queue_tree(const QueueView& queue, const QueueWords& wor
 // the unordered array as stored, with where its next event lies (every pop scans for it).
 void LessonPainter::add_queue_row(const QueueView& queue, const QueueWords& words, RectF area) {
     const FontAtlas& small = *small_font_;
-    const float line = std::round(small.pixel_height() * 1.2F);
+    const float line = std::round(small.pixel_height() * strip_line);
     const bool ordered = queue.shape == QueueShape::ordered_array;
     draw_text(
         Font::small,
         {TextRole::queue, -1, {area.x0, area.y0, area.x1, area.y0 + line}, small.pixel_height()},
         words.row_caption, palette_.muted);
     if (queue.slots.empty()) return;
-    const float node_h = std::round(2.1F * small.pixel_height());
+    const float node_h = std::round(node_lines * small.pixel_height());
     const auto n = static_cast<float>(queue.slots.size());
     const float node_w = std::min(node_width(words.slot_labels), area.width() / n - 3.0F);
     const float y0 = std::round(area.y0 + line + 0.5F * (area.height() - line - node_h));

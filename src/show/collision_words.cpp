@@ -301,10 +301,9 @@ QueueWords queue_words(const QueueView& queue, double now) {
     } else if (queue.stale_entries > 0) {
         out.heading += fmt::format(", {} stale", separated(queue.stale_entries));
     }
-    out.legend =
-        fmt::format("In the box: the next {} collisions queued, time to go", queue.next.size());
-    out.stale_popped = queue.one_per_disc ? "  stale: re-predict" : "  stale: thrown away";
-    out.stale_leaving = "thrown away";
+    out.legend = fmt::format("Next {} collisions, time to go", queue.next.size());
+    out.stale_popped = queue.one_per_disc ? "  stale: re-predict" : "  stale: skipped";
+    out.stale_leaving = "skipped";
     out.counts =
         queue.one_per_disc
             ? fmt::format("{} pops, {} stale", separated(queue.pops), separated(queue.stale_pops))
@@ -324,6 +323,11 @@ QueueWords queue_words(const QueueView& queue, double now) {
             "Stored as pushed; every pop scans for the earliest (slot {})", queue.top_index);
     }
     for (const QueuedEvent& e : queue.next) out.next_times.push_back(time_to_go(e.t - now));
+    if (!queue.next.empty()) {
+        const QueuedEvent& e = queue.next.front();
+        out.next_discs.push_back(std::to_string(e.a));
+        if (e.kind == EventKind::pair) out.next_discs.push_back(std::to_string(e.b));
+    }
     for (const QueuedEvent& e : queue.slots) {
         out.slot_labels.push_back(event_label(e));
         out.slot_times.push_back(time_to_go(e.t - now));

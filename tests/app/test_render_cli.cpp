@@ -519,9 +519,9 @@ TEST_CASE("render --queue: every failure kind stays among the figures (issue #28
     const fs::path json = dir.path / "layout.json";
     for (const char* size : {"1280x720", "854x480"}) {
         CAPTURE(size);
-        const auto r = run_collide(std::string("thumbnail gas --queue --at 2 --size ") + size +
-                                   " -o " + (dir.path / "t.png").string() + " --layout-json " +
-                                   json.string());
+        const auto r =
+            run_collide(std::string("thumbnail gas --queue --at 2 --size ") + size + " -o " +
+                        (dir.path / "t.png").string() + " --layout-json " + json.string());
         REQUIRE_MESSAGE(r.exit_code == 0, r.output);
         std::string figures;
         for (const std::string& f : texts_of(read_bytes(json), "figures")) figures += f + "|";

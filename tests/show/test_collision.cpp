@@ -233,14 +233,21 @@ TEST_CASE("the queue strip's words: the fast engine re-predicts, the classic one
     q.stale_pops = 3;
     const QueueWords classic = queue_words(q, 0.0);
     CHECK(classic.heading == "Event queue: binary heap, 1,234 entries, 56 stale");
-    CHECK(classic.legend == "In the box: the next 5 collisions queued, time to go");
-    CHECK(classic.stale_popped == "  stale: thrown away");
+    CHECK(classic.legend == "Next 5 collisions, time to go");
+    CHECK(classic.stale_popped == "  stale: skipped");
     CHECK(classic.counts == "3 of 40 pops stale");
     q.one_per_disc = true;
     const QueueWords fast = queue_words(q, 0.0);
     CHECK(fast.heading == "Event queue: binary heap, 1,234 entries (one per disc)");
     CHECK(fast.stale_popped == "  stale: re-predict");
     CHECK(fast.counts == "40 pops, 3 stale");
+    // The next event's discs are named in the box as the strip names them.
+    q.next[0].a = 3;
+    q.next[0].b = 7;
+    q.next[0].kind = EventKind::pair;
+    CHECK(queue_words(q, 0.0).next_discs == std::vector<std::string>{"3", "7"});
+    q.next[0].kind = EventKind::xwall;
+    CHECK(queue_words(q, 0.0).next_discs == std::vector<std::string>{"3"});
 }
 
 TEST_CASE("the queue strip's fixed legends come from the words, the row caption by shape") {

@@ -184,12 +184,13 @@ struct CaptionSource {
 [[nodiscard]] ColorKeyWords color_key(ColorMode mode, double speed_min, double speed_max,
                                       double mass_min, double mass_max);
 
-/// The queue picture's budget (`--queue K`): what fits legibly in a strip under a 720p video.
-/// A heap's tree down to the deepest level with at most 8 nodes and at most 3 levels, an array
-/// queue's first 10 slots, and the next `next_events` collisions in the box.
+/// The queue picture's budget (`--queue K`): what fits in a strip under the boxes with its text at
+/// the lesson's size (capitals 2.8 % of the frame height). A heap's tree down to the deepest level
+/// with at most 8 nodes and at most 2 levels, an array queue's first 6 slots, and the next
+/// `next_events` collisions in the box.
 inline constexpr std::size_t queue_tree_level_nodes = 8;
-inline constexpr unsigned queue_tree_levels = 3;
-inline constexpr std::size_t queue_array_slots = 10;
+inline constexpr unsigned queue_tree_levels = 2;
+inline constexpr std::size_t queue_array_slots = 6;
 [[nodiscard]] QueueViewLimits queue_picture(std::size_t next_events) noexcept;
 
 /// The event-driven panel's next collision as the lesson draws it: `next` (what the engine

@@ -32,9 +32,9 @@ struct Figure {
 /// every event it draws.
 struct QueueWords {
     std::string heading;          ///< "Event queue: binary heap, 1,234 entries, 56 stale"
-    std::string legend;           ///< "In the box: the next 5 collisions queued, time to go"
+    std::string legend;           ///< "Next 5 collisions, time to go" (the lines in the box)
     std::string stale_popped;     ///< after a stale event in the list of pops
-    std::string stale_leaving;    ///< on a stale event leaving the root ("thrown away")
+    std::string stale_leaving;    ///< on a stale event leaving the root ("skipped")
     std::string counts;           ///< under the pops: "3 of 40 pops stale"
     std::string popped_heading;   ///< over the pops: "Popped (newest first)"
     std::string resolved_popped;  ///< after a collision in the list of pops ("  resolved")
@@ -45,7 +45,9 @@ struct QueueWords {
     std::string row_caption;      ///< over an array queue's slots: where its next event is
     // Each event shown, in the order of the QueueView's lists: what it involves ("3-7",
     // "5 wall", "5 cell") and its time to go at the snapshot's time ("0.42", "3.1e-05").
-    std::vector<std::string> next_times;     ///< in the box: one per QueueView::next
+    std::vector<std::string> next_times;  ///< in the box: one per QueueView::next
+    /// In the box, under the next event's discs: their numbers ("14"; a pair's two).
+    std::vector<std::string> next_discs;
     std::vector<std::string> slot_labels;    ///< one per QueueView::slots
     std::vector<std::string> slot_times;     ///< one per QueueView::slots
     std::vector<std::string> popped_labels;  ///< one per QueueView::popped
