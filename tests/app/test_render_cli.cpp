@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -528,6 +529,33 @@ TEST_CASE("render --queue: every failure kind stays among the figures (issue #28
         CAPTURE(figures);
         CHECK(figures.find(" missed|") != std::string::npos);
         CHECK(figures.find(" overlapping|") != std::string::npos);
+    }
+}
+
+// The strip's words and the in-box times to go were drawn at 0.7 of the lesson's size.
+TEST_CASE("render --queue: every text, the strip's and the box's labels too, is lesson size") {
+    TempDir dir("queue_text");
+    const fs::path json = dir.path / "layout.json";
+    for (const char* engine : {"fast", "classic"}) {
+        CAPTURE(engine);
+        const auto r = run_collide(std::string("thumbnail gas --queue --at 2 --engine ") + engine +
+                                   " --size 1280x720 -o " + (dir.path / "t.png").string() +
+                                   " --layout-json " + json.string());
+        REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+        const nlohmann::json layout = nlohmann::json::parse(read_bytes(json));
+        double body = 0.0;
+        for (const auto& slot : layout["text"]) {
+            CHECK(slot["cap_height"].get<double>() >= 0.028 * 720 - 0.05);
+            if (slot["role"] == "caption") body = slot["pixel_height"].get<double>();
+        }
+        REQUIRE(body > 0.0);
+        int labels = 0;
+        for (const auto& text : layout["other_text"]) {
+            CAPTURE(text.dump());
+            CHECK(text["pixel_height"].get<double>() >= body);
+            ++labels;
+        }
+        CHECK(labels >= 2);  // the times to go and the next event's disc numbers
     }
 }
 
