@@ -76,8 +76,8 @@ int check_video(const Scene& scene, const EngineOptions& options, std::int64_t f
         const Snapshot now = engine->snapshot();
         REQUIRE(same_motion(now, ref.frames[static_cast<std::size_t>(k)]));
         const sim::FramesAhead ahead{
-            [interval, k](std::int64_t i) { return frame_time(interval, k + i); },
-            frames - 1 - k, frames + extra - 1 - k};
+            [interval, k](std::int64_t i) { return frame_time(interval, k + i); }, frames - 1 - k,
+            frames + extra - 1 - k};
         const std::optional<CollisionRecord> next = lookahead.next(ahead);
         const auto truth = std::find_if(ref.log.begin(), ref.log.end(),
                                         [&](const CollisionRecord& r) { return r.t > now.time; });
