@@ -142,10 +142,8 @@ FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan, const std::
                                               " engine has no event queue");
         if (!time_driven && spheres == nullptr && level == OverlayLevel::lesson &&
             plan.queue_events == 0) {
-            // The next collision line: a twin engine run ahead says what comes next.
-            panel.lookahead =
-                std::make_unique<sim::CollisionLookahead>(make_engine(scene, options));
-            panel.lookahead->set_stop_flag(stop);
+            // The next collision line: the engine, run a frame early, says what comes next.
+            panel.lookahead = std::make_unique<sim::CollisionLookahead>(*panel.engine);
         }
         panel.time_driven = time_driven;
         panel.title = std::move(title);
@@ -175,7 +173,7 @@ SimFrame FrameSource::frame(std::int64_t k) {
         engine.advance_to(std::max(out.time, engine.time()));
         out.panels.push_back(describe(panel, video_seconds));
         if (panel.lookahead)
-            out.panels.back().next_collision = next_collision(panel, out.panels.back().snapshot);
+            out.panels.back().next_collision = next_collision(panel, out.panels.back().snapshot, k);
     }
     return out;
 }
@@ -187,19 +185,15 @@ double FrameSource::schedule_time(std::int64_t k) const {
            static_cast<double>(k - count + 1) * plan_.clock.interval;
 }
 
-NextCollisionView FrameSource::next_collision(Panel& panel, const Snapshot& snapshot) {
-    const auto last = plan_.timeline.frame_count() +
-                      static_cast<std::int64_t>(std::ceil(lookahead_seconds * plan_.fps));
-    std::optional<CollisionRecord> next = panel.lookahead->next_after(snapshot.time);
-    // The twins take the frames' times in the order the engines do (every panel's twin is at
-    // lookahead_frame_), so that each resolves what its engine will, bit for bit.
-    while (!next && lookahead_frame_ < last) {
-        const double t = schedule_time(lookahead_frame_++);
-        for (Panel& p : panels_) {
-            if (p.lookahead) p.lookahead->advance_to(t);
-        }
-        next = panel.lookahead->next_after(snapshot.time);
-    }
+NextCollisionView FrameSource::next_collision(Panel& panel, const Snapshot& snapshot,
+                                              std::int64_t k) {
+    // After describe(): the engine may be advanced to frame k + 1's time here, and the frame's
+    // figures must be those of frame k.
+    const std::int64_t count = plan_.timeline.frame_count();
+    const auto last = count + static_cast<std::int64_t>(std::ceil(lookahead_seconds * plan_.fps));
+    const sim::FramesAhead frames{[this, k](std::int64_t i) { return schedule_time(k + i); },
+                                  count - 1 - k, last - 1 - k};
+    const std::optional<CollisionRecord> next = panel.lookahead->next(frames);
     if (!next) return {};
     return show::next_collision_view(*next, snapshot, plan_.clock);
 }

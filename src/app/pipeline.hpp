@@ -72,8 +72,9 @@ class FrameSource {
     /// for it: show::stand_in_scene) and seen through plan.camera.
     FrameSource(const Scene& scene, const RenderPlan& plan, const std::atomic<bool>* stop = nullptr,
                 const SphereScene* spheres = nullptr);
-    /// Advances every engine to the simulation time video frame k shows (plan.timeline, k
-    /// increasing) and describes the frame.
+    /// Advances every engine to the simulation time video frame k shows (plan.timeline; k = 0,
+    /// 1, 2, ... each once, in order: the next collision line runs an engine a frame early) and
+    /// describes the frame.
     [[nodiscard]] SimFrame frame(std::int64_t k);
     /// Measurements of each engine now, in panel order.
     [[nodiscard]] std::vector<Measurements> measurements() const;
@@ -88,23 +89,25 @@ class FrameSource {
         bool time_driven = false;
         std::string title;
         double initial_energy = 0.0;
-        /// A twin of the event-driven engine run ahead (lesson level, no queue strip, discs):
-        /// what it resolves next, for the next collision line. nullptr: none drawn.
+        /// What the event-driven engine resolves next, for the next collision line (lesson
+        /// level, no queue strip, discs). nullptr: none drawn. After `engine`, which it watches:
+        /// destroyed first.
         std::unique_ptr<sim::CollisionLookahead> lookahead;
     };
     [[nodiscard]] PanelFrame describe(const Panel& panel, double video_seconds) const;
-    /// The collision `panel` resolves after time `t` (its twin run ahead as far as needed, to
-    /// the times the panel's engine will be advanced to, at most lookahead_seconds of video past
-    /// the last frame), as the lesson draws it; empty when none is found.
-    [[nodiscard]] NextCollisionView next_collision(Panel& panel, const Snapshot& snapshot);
+    /// The collision `panel` resolves after video frame k's `snapshot` (looked for at the times
+    /// the panel's engine will be advanced to, at most lookahead_seconds of video past the last
+    /// frame), as the lesson draws it; empty when none is found. May advance the engine to
+    /// frame k + 1's time.
+    [[nodiscard]] NextCollisionView next_collision(Panel& panel, const Snapshot& snapshot,
+                                                   std::int64_t k);
     /// The simulation time the engines are advanced to at video frame `k` (beyond the last
-    /// frame: one frame interval per frame, for the twin's look ahead).
+    /// frame: one frame interval per frame, for the next collision's look ahead).
     [[nodiscard]] double schedule_time(std::int64_t k) const;
 
     const RenderPlan& plan_;
     std::vector<Panel> panels_;
     std::int64_t last_sim_frame_ = -1;
-    std::int64_t lookahead_frame_ = 0;  ///< the next video frame whose time the twins are given
 };
 
 /// Turns SimFrames into the renderer's FrameContent (render thread), keeping each panel's energy

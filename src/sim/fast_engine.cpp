@@ -241,7 +241,7 @@ void BasicFastEngine<D>::place_discs(const SceneType& scene) {
         throw_scene_error("", 0, D == 2 ? "discs" : "spheres",
                           D == 2 ? "too many discs for the fast engine (at most 2^29 - 2)"
                                  : "too many spheres for the fast engine (at most 2^29 - 2)");
-    scene_index_ = locality_order(scene);
+    *scene_index_ = locality_order(scene);
     p_.resize(n);
     cold_.assign(n, Cold{});
     image_.assign(n, Image{});
@@ -249,7 +249,7 @@ void BasicFastEngine<D>::place_discs(const SceneType& scene) {
     heap_.reserve_handles(n);
     // The key and handle arrays are reserved but untouched yet (the position map is not).
     for (std::uint32_t i = 0; i < n; ++i) {
-        const auto& d = particles[scene_index_[i]];
+        const auto& d = particles[scene_index(i)];
         const Vec pos = box_.wrap(d.position);
         p_[i] = Particle{pos, d.velocity, 0.0, d.radius, no_disc, 0, 0, no_disc};
         cold_[i].m = d.mass;
@@ -269,6 +269,13 @@ void BasicFastEngine<D>::place_discs(const SceneType& scene) {
             link(i, cell);
         }
     }
+}
+
+template <int D>
+std::unique_ptr<EngineOf<D>> BasicFastEngine<D>::clone() const {
+    std::unique_ptr<BasicFastEngine> copy(new BasicFastEngine(*this));
+    copy->set_collision_listener(nullptr);
+    return copy;
 }
 
 // ------------------------------------------------------------------------------------------
@@ -326,7 +333,7 @@ void BasicFastEngine<D>::count_collision_now(std::uint32_t i) {
     const Particle& pi = p_[i];
     std::uint32_t& count = cold_[i].instant_collisions;
     if (!same_instant(now_ - pi.t, pi.v, pi.r)) count = 0;
-    if (++count > instant_limit_) throw_jammed(scene_index_[i], now_, instant_limit_);
+    if (++count > instant_limit_) throw_jammed(scene_index(i), now_, instant_limit_);
 }
 
 template <int D>
@@ -345,7 +352,7 @@ void BasicFastEngine<D>::process_pair(std::uint32_t i, std::uint32_t j, double t
     ++pj.count;
     pi.last_partner = j;
     pj.last_partner = i;
-    core_.collided(to_record(t, EventKind::pair, scene_index_[i], scene_index_[j]));
+    core_.collided(to_record(t, EventKind::pair, scene_index(i), scene_index(j)));
     predict(i);
     predict(j);
 }
@@ -361,7 +368,7 @@ void BasicFastEngine<D>::process_wall(std::uint32_t i, EventKind kind, double t)
     v = -v;
     ++pi.count;
     pi.last_partner = no_disc;
-    core_.collided(to_record(t, kind, scene_index_[i], no_disc));
+    core_.collided(to_record(t, kind, scene_index(i), no_disc));
     predict(i);
 }
 
@@ -752,9 +759,9 @@ SnapshotOf<D> BasicFastEngine<D>::snapshot() const {
     for (std::uint32_t i = 0; i < p_.size(); ++i) {
         auto& out = [&]() -> auto& {
             if constexpr (D == 2) {
-                return s.discs[scene_index_[i]];
+                return s.discs[scene_index(i)];
             } else {
-                return s.spheres[scene_index_[i]];
+                return s.spheres[scene_index(i)];
             }
         }
         ();
@@ -772,10 +779,10 @@ QueuedEvent BasicFastEngine<D>::queued_event(std::uint32_t i, const Key& key) co
     QueuedEvent e;
     e.t = key.t;
     e.kind = queued_kind(key.kind());
-    e.a = scene_index_[i];
+    e.a = scene_index(i);
     if (key.kind() == EventKind::pair) {
         const std::uint32_t j = key.b();
-        e.b = scene_index_[j];
+        e.b = scene_index(j);
         if (e.b < e.a) std::swap(e.a, e.b);
         e.stale = p_[j].count != cold_[i].pair_count;
     }
@@ -831,7 +838,7 @@ Measurements BasicFastEngine<D>::measurements() const {
     m.msd = core_.mean_squared_displacement(n, [&](std::size_t i) {
         Vec unwrapped = positions[i];
         for (int k = 0; k < D; ++k) axis(unwrapped, k) += image_[i][k] * axis(extent_, k);
-        return std::pair{std::size_t{scene_index_[i]}, unwrapped - start_[i]};
+        return std::pair{std::size_t{scene_index(i)}, unwrapped - start_[i]};
     });
     return m;
 }
@@ -841,7 +848,7 @@ std::uint64_t BasicFastEngine<D>::bytes() const noexcept {
     constexpr std::size_t u32 = sizeof(std::uint32_t);
     std::size_t total = p_.capacity() * sizeof(Particle);
     total += cold_.capacity() * sizeof(Cold);
-    total += (big_.capacity() + head_.capacity() + scene_index_.capacity()) * u32;
+    total += (big_.capacity() + head_.capacity() + scene_index_->capacity()) * u32;
     total += image_.capacity() * sizeof(Image) + start_.capacity() * sizeof(Vec);
     total += heap_.bytes();
     total += core_.bytes();

@@ -130,10 +130,21 @@ class BasicClassicEngine final : public EngineOf<D> {
         core_.set_listener(std::move(listener));
     }
 
+    /// See Engine::clone: every member is a value (the queue included), so a member-wise copy
+    /// is the engine as it stands; only the listener is dropped.
+    [[nodiscard]] std::unique_ptr<EngineOf<D>> clone() const override {
+        std::unique_ptr<BasicClassicEngine> copy(new BasicClassicEngine(*this));
+        copy->set_collision_listener(nullptr);
+        return copy;
+    }
+
     /// The queue, for teaching traces and queue statistics.
     [[nodiscard]] const Queue& queue() const noexcept { return queue_; }
 
   private:
+    /// Through clone() only (it drops the listener a plain copy would share).
+    BasicClassicEngine(const BasicClassicEngine&) = default;
+
     [[nodiscard]] QueueStats& stats() noexcept { return core_.counters().queue; }
 
     /// The queue as it stands (see Engine::watch_queue): O(entries).

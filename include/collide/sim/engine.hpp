@@ -44,7 +44,6 @@ class EngineBase {
   public:
     virtual ~EngineBase() = default;
     EngineBase() = default;
-    EngineBase(const EngineBase&) = delete;
     EngineBase& operator=(const EngineBase&) = delete;
 
     /// Runs the simulation up to exactly time t (>= time()); throws Error if t < time().
@@ -78,6 +77,10 @@ class EngineBase {
     void set_stop_flag(const std::atomic<bool>* stop) noexcept { stop_ = stop; }
 
   protected:
+    /// For the engines' clone(): a copy keeps the stop flag (the same run stops it) and its own
+    /// countdown. Copies go through clone() only, never by slicing an interface.
+    EngineBase(const EngineBase&) = default;
+
     /// For the event loops: call once per event; looks at the flag every stop_poll_events calls,
     /// so the cost per event is a decrement.
     void poll_stop() {
@@ -108,6 +111,17 @@ class Engine : public EngineBase {
   public:
     /// Every disc at time(), in scene order.
     [[nodiscard]] virtual Snapshot snapshot() const = 0;
+    /// An independent copy of the engine as it stands: advanced to the same times in the same
+    /// order, it resolves the same collisions bit for bit, and it leaves this engine untouched.
+    /// It keeps the stop flag and has no collision listener (a listener may point into whoever
+    /// set it). Why: sim::CollisionLookahead runs a copy past a frame to learn what comes next.
+    /// O(N + queued events). nullptr from an engine that cannot be copied (time-driven: nothing
+    /// needs to run it ahead).
+    [[nodiscard]] virtual std::unique_ptr<Engine> clone() const { return nullptr; }
+
+  protected:
+    Engine() = default;
+    Engine(const Engine&) = default;
 };
 
 /// An engine of spheres (3D, `dimension = 3` scenes).
@@ -115,6 +129,12 @@ class SphereEngine : public EngineBase {
   public:
     /// Every sphere at time(), in scene order.
     [[nodiscard]] virtual SphereSnapshot snapshot() const = 0;
+    /// As Engine::clone.
+    [[nodiscard]] virtual std::unique_ptr<SphereEngine> clone() const { return nullptr; }
+
+  protected:
+    SphereEngine() = default;
+    SphereEngine(const SphereEngine&) = default;
 };
 
 /// The engine interface of dimension D (2: Engine, 3: SphereEngine).

@@ -32,6 +32,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "collide/scene.hpp"
@@ -76,6 +77,9 @@ class BasicFastEngine final : public EngineOf<D> {
         watch_.start(limits);
         return true;
     }
+    /// See Engine::clone: a member-wise copy (the scene order, which the heap's order reads, is
+    /// shared: it never changes after construction); the listener is dropped.
+    [[nodiscard]] std::unique_ptr<EngineOf<D>> clone() const override;
 
     /// Grid cells along one axis (for tests and the benchmark report).
     [[nodiscard]] std::uint32_t cells_along(int axis) const noexcept { return n_[axis]; }
@@ -89,6 +93,9 @@ class BasicFastEngine final : public EngineOf<D> {
     [[nodiscard]] bool check_invariants() const;
 
   private:
+    /// Through clone() only (it drops the listener a plain copy would share).
+    BasicFastEngine(const BasicFastEngine&) = default;
+
     /// What a neighbour scan and an event on the particle read, in one cache line in 2D (80 bytes
     /// in 3D). Counters that each event reads for both particles sit here too: as separate arrays
     /// they cost a cache miss per particle and per array at large N (the access pattern jumps
@@ -145,7 +152,7 @@ class BasicFastEngine final : public EngineOf<D> {
     /// particle, b): the strict order of sim::EventLess, so ties fall as in the classic engine
     /// although the fast engine numbers particles internally in space-filling-curve order.
     struct KeyLess {
-        const std::vector<std::uint32_t>* scene_index = nullptr;
+        const std::vector<std::uint32_t>* scene_index = nullptr;  ///< see scene_index_
 
         [[nodiscard]] bool operator()(const Key& x, const Key& y) const noexcept {
             // Same order as "times differ: earlier first; else tie_break", written so that the
@@ -240,11 +247,18 @@ class BasicFastEngine final : public EngineOf<D> {
     std::vector<Vec> start_;    ///< positions at t = 0
     /// Particles are numbered internally along a Z-order curve over the cells, so that
     /// neighbours in space are mostly neighbours in memory (at 10^5 discs in scene order every
-    /// neighbour was a cache miss). scene_index_[i] is the scene's index of internal particle i.
-    std::vector<std::uint32_t> scene_index_;
+    /// neighbour was a cache miss). scene_index(i) is the scene's index of internal particle i.
+    /// Filled by the constructor and never changed after, so a clone shares it: the heap's order
+    /// (KeyLess) holds a pointer to it, and a member-wise copy of that pointer stays valid for
+    /// as long as either engine lives.
+    std::shared_ptr<std::vector<std::uint32_t>> scene_index_ =
+        std::make_shared<std::vector<std::uint32_t>>();
+    [[nodiscard]] std::uint32_t scene_index(std::uint32_t i) const noexcept {
+        return (*scene_index_)[i];
+    }
     std::vector<std::uint32_t> big_;  ///< indices of big particles
 
-    KeyLess key_less_{&scene_index_};
+    KeyLess key_less_{scene_index_.get()};
     Heap heap_{0, key_less_};
     std::uint64_t instant_limit_ = 0;  ///< see count_collision_now
     QueueWatch watch_;  ///< off unless a teaching video asked for the queue (watch_queue)
