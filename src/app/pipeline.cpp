@@ -344,6 +344,8 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
     // Failure markers fade with the moving picture: a card or a hold keeps them as they are.
     content_.video_time = static_cast<double>(frame.sim_frame) / plan_.fps;
     content_.speed = plan_.speed.speed;
+    content_.pop_highlight = {show::pop_highlight_seconds(false, plan_.code),
+                              show::pop_highlight_seconds(true, plan_.code)};
     // The card's words are its title (the timeline's caption); beneath it, the scene's caption.
     content_.caption =
         segment.kind == show::SegmentKind::card ? lesson.caption_at(video_time) : segment.caption;
