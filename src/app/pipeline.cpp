@@ -152,10 +152,12 @@ FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan, const std::
         panel.initial_energy = panel.base().measurements().kinetic_energy;
         panels_.push_back(std::move(panel));
     };
+    // --code with both panels: they share what the listing leaves, so their titles are short.
+    const bool narrow = plan.code && plan.mode == RenderMode::both;
     if (plan.mode != RenderMode::event)
-        add(plan.time_engine, true, show::panel_title(true, level, plan.time_engine));
+        add(plan.time_engine, true, show::panel_title(true, level, plan.time_engine, narrow));
     if (plan.mode != RenderMode::time)
-        add(plan.event_engine, false, show::panel_title(false, level, plan.event_engine));
+        add(plan.event_engine, false, show::panel_title(false, level, plan.event_engine, narrow));
 }
 
 SimFrame FrameSource::frame(std::int64_t k) {
