@@ -2,6 +2,8 @@
 
 namespace collide::show {
 
+// The listings keep one line of pseudocode per line of source, as they read on screen.
+// clang-format off
 view::CodeView search_code(puzzle::Method method) {
     view::CodeView code;
     if (method == puzzle::Method::bfs) {
@@ -25,6 +27,7 @@ view::CodeView search_code(puzzle::Method method) {
                   {2, "insert n, moves + h(n)"}};
     return code;
 }
+// clang-format on
 
 std::vector<SearchLine> search_walk(const puzzle::SearchResult& r, std::size_t k) {
     const std::uint32_t id = r.expansions[k];

@@ -44,9 +44,8 @@ std::optional<view::PuzzleBoardView> marked_in_tree(const view::PuzzlePanelView&
 
 /// Entries taken out as stale just before expansion k (gone before it starts).
 std::size_t stale_before(const puzzle::SearchResult& r, std::size_t k) {
-    return static_cast<std::size_t>(std::count_if(r.nodes.begin(), r.nodes.end(), [k](const auto& n) {
-        return n.stale && n.popped == k;
-    }));
+    return static_cast<std::size_t>(std::count_if(
+        r.nodes.begin(), r.nodes.end(), [k](const auto& n) { return n.stale && n.popped == k; }));
 }
 
 /// "in queue N" -> N.
@@ -86,11 +85,11 @@ TEST_CASE("puzzle code: each expansion walks its lines and the goal's walk ends 
     REQUIRE(r.solved());
     // The start has no previous board to skip.
     CHECK(show::search_walk(r, 0) == std::vector<SearchLine>{SearchLine::pop, SearchLine::goal,
-                                                              SearchLine::neighbours,
-                                                              SearchLine::insert});
-    CHECK(show::search_walk(r, 1) ==
-          std::vector<SearchLine>{SearchLine::pop, SearchLine::goal, SearchLine::neighbours,
-                                  SearchLine::skip, SearchLine::insert});
+                                                             SearchLine::neighbours,
+                                                             SearchLine::insert});
+    CHECK(show::search_walk(r, 1) == std::vector<SearchLine>{SearchLine::pop, SearchLine::goal,
+                                                             SearchLine::neighbours,
+                                                             SearchLine::skip, SearchLine::insert});
     CHECK(show::search_walk(r, r.expansions.size() - 1) ==
           std::vector<SearchLine>{SearchLine::pop, SearchLine::goal});
 }
@@ -144,11 +143,12 @@ TEST_CASE("puzzle code: the marked line follows the board and the queue on scree
             REQUIRE(m.shown >= 1);
             const std::size_t k = m.shown - 1;  // the expansion under way
             if (*m.line != SearchLine::loop) {
-                if (seen.empty() || seen.back() != std::pair{k, *m.line}) seen.emplace_back(k, *m.line);
+                if (seen.empty() || seen.back() != std::pair{k, *m.line})
+                    seen.emplace_back(k, *m.line);
                 // The tree marks the board this expansion took out (as the goal once tested).
                 const bool found = k + 1 == total && *m.line == SearchLine::goal;
-                const std::optional<view::PuzzleBoardView> now = marked_in_tree(
-                    p, found ? view::PuzzleMark::goal : view::PuzzleMark::current);
+                const std::optional<view::PuzzleBoardView> now =
+                    marked_in_tree(p, found ? view::PuzzleMark::goal : view::PuzzleMark::current);
                 REQUIRE(now.has_value());
                 CHECK(now->tiles == tiles_of(r.board_of(r.expansions[k])));
             }
