@@ -3,7 +3,7 @@
 # middle of tunnelling's replay), a caption in another language (a Polish scene with Greek and
 # mathematical characters: its title card and a still) and the slide player's first page
 # (headless Chromium's screenshot of index.html from `render --slides`), the code on screen
-# (`heap --code`, `--queue --code`) and the perspective camera on spheres.
+# (`heap --code`, `--queue --code`, `puzzle --code`) and the perspective camera on spheres.
 # Usage: scripts/lesson_gallery.sh [path/to/collide]   (default build/release/collide)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -66,7 +66,9 @@ echo "docs/gallery/slide-player.png"
     -o docs/gallery/heap-code.png >/dev/null
 "$collide" thumbnail gas --queue --code --engine classic --mode event --size 960x540 --at 0.1 \
     -o docs/gallery/queue-code.png >/dev/null
-echo "docs/gallery/heap-code.png docs/gallery/queue-code.png"
+"$collide" puzzle "5 2 8 1 0 4 7 6 3" --code --size 960x540 --at 7.5 --progress none \
+    -o docs/gallery/puzzle-code.png >/dev/null
+echo "docs/gallery/heap-code.png docs/gallery/queue-code.png docs/gallery/puzzle-code.png"
 
 # Spheres through the perspective camera.
 "$collide" thumbnail alder-wainwright --at 2 --projection perspective --size 640x360 \

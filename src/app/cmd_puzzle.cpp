@@ -46,6 +46,7 @@ struct PuzzleCli {
     bool json = false;
     PuzzleVideoCli video;
 
+    CLI::Option* method_opt = nullptr;
     CLI::Option* moves_opt = nullptr;
     CLI::Option* seed_opt = nullptr;
     CLI::Option* side_opt = nullptr;
@@ -103,6 +104,19 @@ struct SearchSettings {
     pq::QueueKind queue{};
 };
 
+/// The searches to run: --method's, except that --code shows one (A* unless --method bfs):
+/// the listing and its marked line go beside a single search tree.
+std::string method_of(const PuzzleCli& v) {
+    if (!v.video.code || v.json || v.solve) return v.method;
+    if (!given(v.method_opt)) return "astar";
+    if (v.method == "both") {
+        throw_option_error("--code",
+                           "shows the search loop beside one search; give --method "
+                           "astar or --method bfs, or leave out --code to compare both");
+    }
+    return v.method;
+}
+
 std::vector<SearchResult> run_searches(const Board& start, const SearchSettings& settings,
                                        const PuzzleCli& v) {
     const puzzle::Heuristic heuristic = settings.heuristic;
@@ -110,8 +124,9 @@ std::vector<SearchResult> run_searches(const Board& start, const SearchSettings&
     puzzle::SearchLimits limits;
     limits.max_nodes = static_cast<std::size_t>(v.max_nodes);
     std::vector<SearchResult> results;
-    if (v.method != "astar") results.push_back(puzzle::breadth_first(start, limits));
-    if (v.method != "bfs") results.push_back(puzzle::a_star(start, heuristic, queue, limits));
+    const std::string method = method_of(v);
+    if (method != "astar") results.push_back(puzzle::breadth_first(start, limits));
+    if (method != "bfs") results.push_back(puzzle::a_star(start, heuristic, queue, limits));
     for (const SearchResult& r : results) {
         if (!r.solved()) budget_error(r, v);
     }
@@ -198,6 +213,7 @@ void run(const PuzzleCli& v, const PuzzleVideoMaker& video) {
     if (v.json || v.solve) {
         refuse_video_options(v.video, v.json ? "--json" : "--solve");
     } else {
+        (void)method_of(v);  // --code with both searches: refused before collide-draw starts
         video.check(v.video);
     }
     const std::vector<SearchResult> results = run_searches(start, settings, v);
@@ -233,8 +249,9 @@ void add_puzzle_command(CLI::App& root, PuzzleVideoMaker video) {
     cmd->add_option("--pq", v->pq,
                     "A*'s priority queue: unordered|ordered|binary|dary:D|indexed[:D]")
         ->capture_default_str();
-    cmd->add_option("--method", v->method, "both (BFS and A*), bfs or astar")
-        ->capture_default_str();
+    v->method_opt = cmd->add_option("--method", v->method,
+                                    "both (BFS and A*), bfs or astar (with --code: astar)")
+                        ->capture_default_str();
     add_whole_option(*cmd, "--max-nodes", v->max_nodes, 1, puzzle::max_node_budget,
                      fmt::format("Node budget per search: boards stored at most (about {} bytes "
                                  "each); a search that needs more stops with exit 2 (default {})",
@@ -247,6 +264,7 @@ void add_puzzle_command(CLI::App& root, PuzzleVideoMaker video) {
         "Examples:\n"
         "  collide puzzle \"1 2 3 4 0 6 7 5 8\" -o puzzle.mp4   # BFS (left) vs A* (right)\n"
         "  collide puzzle \"8 1 3 4 0 2 7 6 5\" --heuristic hamming --solve\n"
+        "  collide puzzle random --moves 14 --code -o astar.mp4   # A*'s loop as code\n"
         "  collide puzzle random --moves 20 --seed 3 --json\n"
         "See docs/puzzle.md.");
     cmd->callback([v, video = std::move(video)] { run(*v, video); });

@@ -150,10 +150,12 @@ FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan, const std::
         panel.initial_energy = panel.base().measurements().kinetic_energy;
         panels_.push_back(std::move(panel));
     };
+    // --code with both panels: they share what the listing leaves, so their titles are short.
+    const bool narrow = plan.code && plan.mode == RenderMode::both;
     if (plan.mode != RenderMode::event)
-        add(plan.time_engine, true, show::panel_title(true, level, plan.time_engine));
+        add(plan.time_engine, true, show::panel_title(true, level, plan.time_engine, narrow));
     if (plan.mode != RenderMode::time)
-        add(plan.event_engine, false, show::panel_title(false, level, plan.event_engine));
+        add(plan.event_engine, false, show::panel_title(false, level, plan.event_engine, narrow));
 }
 
 SimFrame FrameSource::frame(std::int64_t k) {
@@ -338,6 +340,8 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
     // Failure markers fade with the moving picture: a card or a hold keeps them as they are.
     content_.video_time = static_cast<double>(frame.sim_frame) / plan_.fps;
     content_.speed = plan_.speed.speed;
+    content_.pop_highlight = {show::pop_highlight_seconds(false, plan_.code),
+                              show::pop_highlight_seconds(true, plan_.code)};
     // The card's words are its title (the timeline's caption); beneath it, the scene's caption.
     content_.caption =
         segment.kind == show::SegmentKind::card ? lesson.caption_at(video_time) : segment.caption;

@@ -9,6 +9,10 @@ namespace collide::app {
 
 void add_puzzle_video_options(CLI::App& cmd, PuzzleVideoCli& v) {
     add_lesson_video_options(cmd, v, "puzzle", "at least 854x480, e.g. 960x540");
+    v.code_opt = cmd.add_flag(
+        "--code", v.code,
+        "Show the search loop's pseudocode beside one search (A* unless --method bfs), the line "
+        "under way marked; the first expansions and the goal's walk through the lines slowly");
 }
 
 void refuse_video_options(const PuzzleVideoCli& v, const std::string& mode) {
@@ -16,7 +20,7 @@ void refuse_video_options(const PuzzleVideoCli& v, const std::string& mode) {
     for (const CLI::Option* o :
          {v.output_opt, v.format_opt, v.quality_opt, v.size_opt, v.fps_opt, v.last_frame_opt,
           v.at_opt, v.theme_opt, v.subtitles_opt, v.subtitles_file_opt, v.chapters_opt,
-          v.chapters_file_opt, v.slides_opt}) {
+          v.chapters_file_opt, v.slides_opt, v.code_opt}) {
         if (given(o)) {
             throw_option_error(o->get_name(), mode + " prints text instead of a video; leave " +
                                                   o->get_name() + " out, or " + mode + " out");

@@ -16,8 +16,11 @@
 
 namespace collide::app {
 
-/// The puzzle video's options are the drawn lessons' own (lesson_options.hpp).
-using PuzzleVideoCli = LessonVideoCli;
+/// The puzzle video's options: the drawn lessons' own (lesson_options.hpp) and --code.
+struct PuzzleVideoCli : LessonVideoCli {
+    bool code = false;  ///< --code: the search loop beside one search
+    CLI::Option* code_opt = nullptr;
+};
 
 /// Registers the video options on `cmd`.
 void add_puzzle_video_options(CLI::App& cmd, PuzzleVideoCli& v);

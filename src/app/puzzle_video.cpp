@@ -61,7 +61,7 @@ void render_puzzle_video(const puzzle::Board& start,
                          const PuzzleVideoCli& v) {
     const ProgressMode progress_mode = parse_progress_mode(v.progress);
     const LessonGeometry geometry = geometry_of(v);
-    const show::PuzzleLesson frames(start, results);
+    const show::PuzzleLesson frames(start, results, v.code);
     if (given(v.at_opt) && !(v.at >= 0.0 && v.at <= frames.duration())) {
         throw_option_error("--at", fmt::format("{}", v.at),
                            fmt::format("a time within the video, 0..{:.2f} s", frames.duration()));

@@ -128,6 +128,7 @@ bool shows_summary(const FrameContent& frame) {
 void LessonPainter::begin_frame(const FrameContent& frame) {
     video_time_ = frame.video_time;
     speed_ = frame.speed;
+    pop_seconds_ = frame.pop_highlight;
     // A card covers this frame, the title card or the epilogue's summary: no other text.
     intro_ = shows_title_card(frame) || shows_summary(frame);
     if (layout_.queue_panel >= 0 && !small_font_) {

@@ -20,8 +20,6 @@
 
 namespace collide::render {
 
-/// How long an event popped off a panel's queue stays highlighted, in seconds of video.
-inline constexpr double queue_pop_seconds = 0.8;
 /// The queue strip's small text against the lesson body text.
 inline constexpr float queue_text_scale = 1.0F;
 
@@ -82,6 +80,7 @@ class LessonPainter : public Painter {
 
     double video_time_ = 0.0;
     double speed_ = 0.0;         // simulation time per second of video (FrameContent::speed)
+    PopHighlight pop_seconds_;   // how long a pop stays lit (FrameContent::pop_highlight)
     std::vector<RectF> labels_;  // queue labels placed in the current box (add_plate_label)
     bool intro_ = false;         // the title card covers this frame: no other text
 };

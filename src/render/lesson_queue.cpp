@@ -68,8 +68,9 @@ Rgba8 LessonPainter::next_color() const noexcept {
 }
 
 float LessonPainter::pop_highlight(const QueuedEvent& popped, double now) const noexcept {
-    if (!(speed_ > 0.0)) return 0.0F;
-    const double age = (now - popped.t) / (queue_pop_seconds * speed_);
+    const double seconds = popped.stale ? pop_seconds_.stale : pop_seconds_.valid;
+    if (!(speed_ > 0.0) || !(seconds > 0.0)) return 0.0F;
+    const double age = (now - popped.t) / (seconds * speed_);
     return static_cast<float>(std::clamp(1.0 - age, 0.0, 1.0));
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 
+#include "code_panel.hpp"
 #include "collide/assert.hpp"
 #include "collide/error.hpp"
 #include "draw_list.hpp"
@@ -327,15 +328,36 @@ struct PuzzleRenderer::Impl {
                     frame.heading, colors.title);
         const float top = Y(8) + line(heading) + Y(4);
         const float gap = X(12);
+        const float bottom = std::round(Y(design_height) - Y(8));
+        // --code: the listing in a column on the right at the lesson size, as wide as its widest
+        // line (the listing is the same in every frame, so the panel keeps its place).
+        float panels_x1 = X(design_width) - margin;
+        if (frame.code) {
+            const float code_w = std::ceil(
+                std::min(code_panel_width(*frame.code, font(lesson)), 0.45F * X(design_width)));
+            draw_code(*frame.code, {panels_x1 - code_w, std::round(top), panels_x1, bottom});
+            panels_x1 -= code_w + gap;
+        }
         const float panel_w =
-            (X(design_width) - 2 * margin - gap * static_cast<float>(frame.panels.size() - 1)) /
+            (panels_x1 - margin - gap * static_cast<float>(frame.panels.size() - 1)) /
             static_cast<float>(frame.panels.size());
         for (std::size_t i = 0; i < frame.panels.size(); ++i) {
             const float x0 = margin + (panel_w + gap) * static_cast<float>(i);
-            draw_panel(frame.panels[i], {std::round(x0), std::round(top), std::round(x0 + panel_w),
-                                         std::round(Y(design_height) - Y(8))});
+            draw_panel(frame.panels[i],
+                       {std::round(x0), std::round(top), std::round(x0 + panel_w), bottom});
         }
         return list;
+    }
+
+    void draw_code(const view::CodeView& code, RectF area) {
+        const FontAtlas& f = font(lesson);
+        const CodeText draw = [this, &f](std::size_t, RectF row, float x, std::string_view str,
+                                         Rgba8 color) {
+            // As Painter::draw_text places text in a slot: centred by the font's height.
+            text(x, row.y0 + 0.5F * (row.height() - f.pixel_height()) + f.ascent(),
+                 f.pixel_height(), str, color);
+        };
+        paint_code(code, area, f, puzzle_code_colors(colors), list.under, draw);
     }
 };
 

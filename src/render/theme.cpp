@@ -143,6 +143,13 @@ PuzzlePalette puzzle_palette(Theme theme) noexcept {
             {240, 170, 40, 255}, {240, 170, 40, 255},  {80, 200, 110, 255},  {90, 160, 245, 255}};
 }
 
+CodeColors puzzle_code_colors(const PuzzlePalette& palette) noexcept {
+    const Rgb8 edge = with_contrast(rgb(palette.sliding_tile), rgb(palette.panel), mark_contrast);
+    return {palette.panel,       palette.title,        palette.counter,
+            highlight_dark_text, palette.sliding_tile, {edge.r, edge.g, edge.b, 255},
+            palette.title};
+}
+
 Rgba8 puzzle_mark_color(view::PuzzleMark mark, const PuzzlePalette& palette) noexcept {
     switch (mark) {
         case view::PuzzleMark::current:
@@ -415,6 +422,18 @@ std::vector<ColorPair> puzzle_color_pairs(Theme theme) {
         pairs.push_back(
             {"puzzle: a marked board's frame on the queue's fill", frame, queue, mark_contrast});
     }
+    const CodeColors code = puzzle_code_colors(p);
+    const Rgb8 code_panel = rgb(code.panel);
+    pairs.push_back(
+        {"puzzle code: the title on its panel", rgb(code.title), code_panel, text_contrast});
+    pairs.push_back(
+        {"puzzle code: a line on its panel", rgb(code.text), code_panel, text_contrast});
+    pairs.push_back({"puzzle code: the current line on its plate", rgb(code.current),
+                     rgb(code.plate), text_contrast});
+    pairs.push_back({"puzzle code: the current line's chevron on the panel", rgb(code.marker),
+                     code_panel, mark_contrast});
+    pairs.push_back({"puzzle code: the current line's plate edge on the panel",
+                     rgb(code.plate_edge), code_panel, mark_contrast});
     return pairs;
 }
 

@@ -158,6 +158,9 @@ struct PuzzlePalette {
     Rgba8 solution;  ///< boards on the solution path
 };
 [[nodiscard]] PuzzlePalette puzzle_palette(Theme theme) noexcept;
+/// The pseudocode column of `collide puzzle --code` (code_panel.hpp): the panel's colours, the
+/// current line on the sliding tile's amber with dark text, the chevron in the title's colour.
+[[nodiscard]] CodeColors puzzle_code_colors(const PuzzlePalette& palette) noexcept;
 /// The frame around a board marked `mark` (plain: the edge colour).
 [[nodiscard]] Rgba8 puzzle_mark_color(view::PuzzleMark mark, const PuzzlePalette& palette) noexcept;
 

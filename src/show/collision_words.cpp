@@ -51,8 +51,12 @@ std::string event_panel_title(const EngineOptions& options) {
     return "Event-driven (priority queue)";
 }
 
-std::string panel_title(bool time_driven, OverlayLevel level, const EngineOptions& options) {
+std::string panel_title(bool time_driven, OverlayLevel level, const EngineOptions& options,
+                        bool beside_code) {
     const bool lesson = level == OverlayLevel::lesson;
+    if (lesson && beside_code)
+        return time_driven ? fmt::format("Time-driven: dt = {}", dt_text(options.dt))
+                           : std::string("Event-driven");
     if (time_driven) return lesson ? time_lesson_title(options.dt) : time_panel_title(options.dt);
     return lesson ? event_lesson_title(options) : event_panel_title(options);
 }

@@ -17,18 +17,29 @@ view::CodeView event_loop_code() {
     return code;
 }
 
+namespace {
+
+// A valid event's walk skips the move: the discs have just arrived at its time.
+constexpr LoopLine valid_walk[] = {LoopLine::pop, LoopLine::check, LoopLine::resolve,
+                                   LoopLine::predict};
+constexpr LoopLine stale_walk[] = {LoopLine::pop, LoopLine::check};
+
+}  // namespace
+
+double pop_highlight_seconds(bool stale, bool code) noexcept {
+    if (!code) return queue_pop_seconds;
+    const std::size_t lines = stale ? std::size(stale_walk) : std::size(valid_walk);
+    return static_cast<double>(lines) * code_line_seconds;
+}
+
 LoopLine event_loop_line(const QueueView& queue, double now, double speed) noexcept {
     if (queue.popped.empty() || !(speed > 0.0)) return LoopLine::move;
     const QueuedEvent& last = queue.popped.back();
     const double age = (now - last.t) / speed / code_line_seconds;  // in lines of the walk
     if (!(age >= 0.0)) return LoopLine::move;
-    // A valid event's walk skips the move: the discs have just arrived at its time.
-    static constexpr LoopLine valid[] = {LoopLine::pop, LoopLine::check, LoopLine::resolve,
-                                         LoopLine::predict};
-    static constexpr LoopLine stale[] = {LoopLine::pop, LoopLine::check};
     const auto step = static_cast<std::size_t>(std::floor(age));
-    if (last.stale) return step < std::size(stale) ? stale[step] : LoopLine::move;
-    return step < std::size(valid) ? valid[step] : LoopLine::move;
+    if (last.stale) return step < std::size(stale_walk) ? stale_walk[step] : LoopLine::move;
+    return step < std::size(valid_walk) ? valid_walk[step] : LoopLine::move;
 }
 
 view::CodeView event_loop_view(const QueueView& queue, double now, double speed) {

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "collide/error.hpp"
 #include "collide/show/ease.hpp"
@@ -34,6 +37,23 @@ std::string estimate_words(puzzle::Heuristic h) {
     return name + " distance";
 }
 
+/// The queue's front while expansion `k` of `r` is under way: before its board left (that
+/// board first), or after (`popped`), but before its neighbours went in; `size` receives the
+/// queue's length then. Stale entries taken out just before expansion k have gone already.
+std::vector<std::uint32_t> queue_during(const SearchResult& r, std::size_t k, bool popped,
+                                        std::size_t& size) {
+    std::size_t gone = 0;  // stale entries taken out before expansion k
+    for (const puzzle::SearchNode& n : r.nodes) gone += n.stale && n.popped == k ? 1 : 0;
+    std::vector<std::uint32_t> front = r.queue_front(k, view::max_puzzle_queue_shown + gone + 1);
+    std::erase_if(front, [&](std::uint32_t id) {
+        const puzzle::SearchNode& n = r.nodes[id];
+        return (n.stale && n.popped == k) || (popped && id == r.expansions[k]);
+    });
+    size = r.queue_size(k) - gone - (popped ? 1 : 0);
+    if (front.size() > view::max_puzzle_queue_shown) front.resize(view::max_puzzle_queue_shown);
+    return front;
+}
+
 /// How many entries of the ascending list `indices` are below `step`.
 std::size_t count_below(const std::vector<std::uint32_t>& indices, std::size_t step) {
     return static_cast<std::size_t>(std::lower_bound(indices.begin(), indices.end(), step) -
@@ -52,10 +72,13 @@ std::string with_thousands(std::uint64_t n) {
     return out;
 }
 
-PuzzleLesson::PuzzleLesson(const puzzle::Board& start, const std::vector<SearchResult>& results)
-    : start_(start) {
+PuzzleLesson::PuzzleLesson(const puzzle::Board& start, const std::vector<SearchResult>& results,
+                           bool code)
+    : start_(start), code_(code) {
     if (results.empty() || results.size() > 2)
         throw_runtime_error("puzzle video: needs one or two searches");
+    if (code && results.size() != 1)
+        throw_runtime_error("puzzle video: the code goes beside one search");
     for (const SearchResult& r : results) {
         if (!r.solved()) throw_runtime_error("puzzle video: a search without a solution");
         Side side;
@@ -82,6 +105,54 @@ PuzzleLesson::PuzzleLesson(const puzzle::Board& start, const std::vector<SearchR
         t += per_move_ * static_cast<double>(side.path.size() - 1) + between_;
     }
     playback_length_ = t - between_;
+    if (code_) pace_code();
+}
+
+void PuzzleLesson::pace_code() {
+    const SearchResult& r = *sides_.front().result;
+    const std::size_t total = r.expansions.size();  // >= 1: the goal's expansion is the last
+    double t = intro_;
+    const auto walk = [&](std::size_t k) {
+        for (const SearchLine line : search_walk(r, k)) {
+            beats_.push_back({t, k, line});
+            t += search_line_seconds;
+        }
+    };
+    fast_from_ = std::min(walked_expansions, total - 1);
+    for (std::size_t k = 0; k < fast_from_; ++k) walk(k);
+    fast_start_ = t;
+    fast_count_ = total - 1 - fast_from_;
+    // The fast middle grows as the search without code does, a little shorter: the walks
+    // already take their time.
+    fast_seconds_ =
+        fast_count_ == 0
+            ? 0.0
+            : std::min(12.0, 2.0 + 2.0 * std::log10(static_cast<double>(fast_count_) + 1.0));
+    t += fast_seconds_;
+    walk(total - 1);
+    search_seconds_ = t - intro_;
+}
+
+PuzzleLesson::CodeMoment PuzzleLesson::code_at(double seconds) const {
+    const std::size_t total = sides_.front().result->expansions.size();
+    if (seconds >= playback_start()) return {total, std::nullopt, QueueMoment::after};
+    // Finished: the goal has left the queue and the search stops there.
+    if (seconds >= search_end()) return {total, SearchLine::goal, QueueMoment::popped};
+    if (seconds < search_start()) return {0, SearchLine::start, QueueMoment::after};
+    if (seconds >= fast_start_ && seconds < fast_start_ + fast_seconds_) {
+        const double u = (seconds - fast_start_) / fast_seconds_;
+        const double grown = std::floor(std::pow(static_cast<double>(fast_count_) + 1.0, u) - 1.0);
+        const std::size_t added =
+            std::min(fast_count_, static_cast<std::size_t>(std::max(0.0, grown)));
+        return {fast_from_ + added, SearchLine::loop, QueueMoment::after};
+    }
+    const auto later = std::upper_bound(beats_.begin(), beats_.end(), seconds,
+                                        [](double s, const Beat& b) { return s < b.start; });
+    const Beat& beat = *std::prev(later);  // beats_ starts at search_start()
+    QueueMoment queue = QueueMoment::popped;
+    if (beat.line == SearchLine::pop) queue = QueueMoment::before_pop;
+    if (beat.line == SearchLine::insert) queue = QueueMoment::after;
+    return {beat.expansion + 1, beat.line, queue};
 }
 
 double PuzzleLesson::playback_start() const noexcept {
@@ -97,6 +168,7 @@ double PuzzleLesson::duration() const noexcept {
 }
 
 std::size_t PuzzleLesson::step_at(std::size_t i, double seconds) const noexcept {
+    if (code_) return code_at(seconds).shown;
     const std::size_t total = sides_[i].result->expansions.size();
     const double u = (seconds - intro_) / search_seconds_;
     if (u <= 0.0) return 0;
@@ -115,16 +187,16 @@ std::string PuzzleLesson::title(const Side& side) const {
     return "A*, " + estimate_words(r.heuristic) + ", " + panel_title(r.queue);
 }
 
-std::vector<std::string> PuzzleLesson::counters(const Side& side, std::size_t step) const {
+std::vector<std::string> PuzzleLesson::counters(const Side& side, std::size_t step,
+                                                std::size_t in_queue, bool done) const {
     const SearchResult& r = *side.result;
-    const bool done = step == r.expansions.size();
     // Two short lines a class can read from the back (the boards enqueued are the sum of the
     // two, give or take the stale entries: `collide puzzle --solve` prints them all).
     std::vector<std::string> out{"expanded " + with_thousands(step)};
     if (done) {
         out.push_back("largest queue " + with_thousands(r.stats.max_queue));
     } else {
-        out.push_back("in queue " + with_thousands(r.queue_size(step)));
+        out.push_back("in queue " + with_thousands(in_queue));
     }
     return out;
 }
@@ -145,12 +217,13 @@ view::PuzzleBoardView PuzzleLesson::board_view(const Side& side, std::uint32_t i
     return view;
 }
 
-view::PuzzlePanelView PuzzleLesson::search_panel(const Side& side, std::size_t step) const {
+view::PuzzlePanelView PuzzleLesson::search_panel(const Side& side, std::size_t step,
+                                                 QueueMoment queue) const {
     const SearchResult& r = *side.result;
-    const bool done = step == r.expansions.size();
+    // Done once the goal has been taken out and tested (not while it is leaving the queue).
+    const bool done = step == r.expansions.size() && queue != QueueMoment::before_pop;
     view::PuzzlePanelView p;
     p.title = title(side);
-    p.counters = counters(side, step);
     if (done) {
         p.status = "solved: " + plural(r.solution_length(), "move");
     } else if (r.method == Method::bfs) {
@@ -237,9 +310,18 @@ view::PuzzlePanelView PuzzleLesson::search_panel(const Side& side, std::size_t s
 
     // The queue's front.
     p.queue_title = "next out";
-    const std::vector<std::uint32_t> front = r.queue_front(step, view::max_puzzle_queue_shown);
+    std::vector<std::uint32_t> front;
+    std::size_t size = 0;
+    if (queue == QueueMoment::after || step == 0) {
+        front = r.queue_front(step, view::max_puzzle_queue_shown);
+        size = r.queue_size(step);
+    } else {
+        front = queue_during(r, step - 1, queue == QueueMoment::popped, size);
+    }
     for (std::uint32_t id : front) p.queue.push_back(board_view(side, id));
-    const std::size_t size = r.queue_size(step);
+    if (queue == QueueMoment::before_pop && !p.queue.empty())
+        p.queue.front().mark = PuzzleMark::current;  // the board about to leave
+    p.counters = counters(side, step, size, done);
     if (size > front.size()) p.queue_more = "+" + with_thousands(size - front.size()) + " more";
     if (size == 0) p.queue_more = "(empty)";
     return p;
@@ -249,7 +331,7 @@ view::PuzzlePanelView PuzzleLesson::playback_panel(const Side& side, double t) c
     const SearchResult& r = *side.result;
     view::PuzzlePanelView p;
     p.title = title(side);
-    p.counters = counters(side, r.expansions.size());
+    p.counters = counters(side, r.expansions.size(), 0, true);
     p.status = "solution: " + plural(side.path.size() - 1, "move");
     p.playback = true;
     const std::size_t moves = side.path.size() - 1;
@@ -286,9 +368,17 @@ view::PuzzleFrameView PuzzleLesson::frame_at(double seconds) const {
     for (std::size_t i = 0; i < sides_.size(); ++i) {
         if (t >= playback_start()) {
             view.panels.push_back(playback_panel(sides_[i], t - playback_turn(i)));
+        } else if (code_) {
+            const CodeMoment m = code_at(t);
+            view.panels.push_back(search_panel(sides_[i], m.shown, m.queue));
         } else {
             view.panels.push_back(search_panel(sides_[i], step_at(i, t)));
         }
+    }
+    if (code_) {
+        view.code = search_code(sides_.front().result->method);
+        if (const std::optional<SearchLine> line = code_at(t).line)
+            view.code->current = static_cast<std::size_t>(*line);
     }
     return view;
 }

@@ -182,3 +182,29 @@ TEST_CASE(
                    "--theme"));
     CHECK_FALSE(fs::exists(dir.path / "x.mp4"));
 }
+
+TEST_CASE("collide puzzle --code: A* beside its loop and both searches or a text mode exit 2") {
+    TempDir dir("puzzle_code");
+    const std::string board = "puzzle \"5 2 8 1 0 4 7 6 3\"" + quick;
+    // The start's expansion, mid-walk: one search (A* by default) with the listing beside it.
+    const fs::path code = dir.path / "code.png";
+    const auto r = run_collide(board + "--code --at 4 -o " + quoted(code));
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    const fs::path plain = dir.path / "plain.png";
+    REQUIRE(run_collide(board + "--method astar --at 4 -o " + quoted(plain)).exit_code == 0);
+    CHECK(bytes_of(code) != bytes_of(plain));
+    CHECK(run_collide(board + "--code --method bfs --at 4 -o " + quoted(dir.path / "bfs.png"))
+              .exit_code == 0);
+    // Refused before any search or drawing, with words that say what to do.
+    const std::string both =
+        run_collide_bad_input(board + "--code --method both -o " + quoted(dir.path / "x.mp4"));
+    CHECK(contains(both, "--code"));
+    CHECK(contains(both, "--method astar"));
+    for (const char* mode : {"--solve", "--json"}) {
+        const std::string text =
+            run_collide_bad_input("puzzle \"5 2 8 1 0 4 7 6 3\" --code " + std::string(mode));
+        CHECK(contains(text, std::string(mode) + " prints text instead of a video"));
+        CHECK(contains(text, "--code"));
+    }
+    CHECK_FALSE(fs::exists(dir.path / "x.mp4"));
+}

@@ -615,6 +615,29 @@ TEST_CASE("render --queue --code: the loop's lines in --layout-json, lesson size
     CHECK(texts_of(ptext, "code").empty());
 }
 
+TEST_CASE("render --queue --code --mode both: the panel titles are drawn whole beside the code") {
+    // --layout-json records each slot's text as drawn: a title cut to fit ends in "...".
+    TempDir dir("queue_code_titles");
+    for (const char* size : {"854x480", "1280x720"}) {
+        CAPTURE(size);
+        const fs::path json = dir.path / "layout.json";
+        const auto r = run_collide("thumbnail gas --queue --code --mode both --at 3 --size " +
+                                   std::string(size) + " -o " + (dir.path / "c.png").string() +
+                                   " --layout-json " + json.string());
+        REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+        std::ifstream in(json);
+        const std::string text((std::istreambuf_iterator<char>(in)),
+                               std::istreambuf_iterator<char>());
+        const std::vector<std::string> titles = texts_of(text, "title");
+        REQUIRE(titles.size() == 2);
+        CHECK(titles[0] == "Time-driven: dt = 1/30");
+        CHECK(titles[1] == "Event-driven");
+        for (const std::string& title : titles) {
+            CHECK_MESSAGE(title.find("...") == std::string::npos, title << " was cut");
+        }
+    }
+}
+
 TEST_CASE("render --code where it cannot be shown: exit 2 naming --code, nothing written") {
     TempDir dir("queue_code_bad");
     const auto contains = [](const std::string& haystack, const std::string& needle) {

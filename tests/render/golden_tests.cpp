@@ -10,6 +10,7 @@
 
 #include "../support/skip.hpp"
 #include "collide/show/collision.hpp"
+#include "collide/show/event_loop_code.hpp"
 #include "collide/show/failure_marks.hpp"
 #include "render_fixtures.hpp"
 
@@ -178,6 +179,9 @@ FrameContent queue_frame(const Snapshot& left, const Snapshot& right) {
     if (right.queue) frame.panels[1].queue_words = show::queue_words(*right.queue, right.time);
     frame.time_text = "t = 2.000";
     frame.speed = 1.0;
+    // How long a pop stays lit, as the collision video's program sets it (no --code).
+    frame.pop_highlight = {show::pop_highlight_seconds(false, false),
+                           show::pop_highlight_seconds(true, false)};
     frame.video_time = 2.0;
     test::add_show_words(frame, RenderConfig{}.speed_max);
     return frame;

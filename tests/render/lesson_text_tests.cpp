@@ -178,4 +178,38 @@ TEST_CASE("lesson text: the puzzle writes nothing under 2.8 % capitals, digits a
     }
 }
 
+TEST_CASE("lesson text: puzzle --code's listing and its title are lesson text and drawn whole") {
+    const puzzle::Board start = puzzle::Board::parse("5 2 8 1 0 4 7 6 3");
+    for (const bool bfs : {false, true}) {
+        const std::vector<puzzle::SearchResult> results{
+            bfs ? puzzle::breadth_first(start)
+                : puzzle::a_star(start, puzzle::Heuristic::manhattan,
+                                 {pq::QueueFamily::binary, 2})};
+        const show::PuzzleLesson lesson(start, results, true);
+        for (const Frame& f : frames) {
+            PuzzleViewConfig config;
+            config.width = f.width;
+            config.height = f.height;
+            PuzzleRenderer renderer(config, test::test_backend());
+            Image image;
+            std::string small;
+            for (double t = 0.0; t <= lesson.duration(); t += f.every) {
+                const view::PuzzleFrameView frame = lesson.frame_at(t);
+                REQUIRE(frame.code);
+                renderer.render(frame, image);
+                small += too_small(renderer.last_text(), f.height, t);
+                // No line of the listing, nor its title, is cut ("..."): each fits its column.
+                std::vector<std::string> whole{frame.code->title};
+                for (const view::CodeLineView& line : frame.code->lines) whole.push_back(line.text);
+                for (const std::string& text : whole) {
+                    bool drawn_whole = false;
+                    for (const DrawnText& d : renderer.last_text()) drawn_whole |= d.text == text;
+                    CHECK_MESSAGE(drawn_whole, f.height << "p: '" << text << "' was cut");
+                }
+            }
+            CHECK_MESSAGE(small.empty(), (bfs ? "BFS" : "A*") << " with code:\n" << small);
+        }
+    }
+}
+
 }  // namespace collide::render

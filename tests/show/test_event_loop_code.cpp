@@ -78,3 +78,22 @@ TEST_CASE("event loop code: the newest pop decides, and before any pop the discs
     // No speed known: nothing to pace the walk by.
     CHECK(event_loop_line(q, q.popped.back().t, 0.0) == LoopLine::move);
 }
+
+TEST_CASE("event loop code: the queue strip's highlight lasts exactly the pop's walk") {
+    const double speed = 0.05;
+    for (const bool stale : {false, true}) {
+        CAPTURE(stale);
+        QueueView q;
+        q.popped = {popped_at(1.0, stale)};
+        const double lit = show::pop_highlight_seconds(stale, true);
+        REQUIRE(lit > 0.0);
+        // Just before the highlight ends the walk is on its last line; just after, it is done.
+        const double eps = 0.01;
+        CHECK(event_loop_line(q, 1.0 + (lit - eps) * speed, speed) ==
+              (stale ? LoopLine::check : LoopLine::predict));
+        CHECK(event_loop_line(q, 1.0 + (lit + eps) * speed, speed) == LoopLine::move);
+    }
+    // Without the code the strip keeps its own, shorter highlight.
+    CHECK(show::pop_highlight_seconds(false, false) == show::queue_pop_seconds);
+    CHECK(show::pop_highlight_seconds(true, false) == show::queue_pop_seconds);
+}

@@ -52,8 +52,10 @@ inline constexpr double divide_tolerance = 1e-6;
 [[nodiscard]] std::string time_lesson_title(double dt);
 [[nodiscard]] std::string event_lesson_title(const EngineOptions& options);
 /// The title of a panel at an overlay level (the lesson's plain words, else the full level's).
+/// `beside_code`: two panels share the width left of `--code`'s listing, so the lesson's titles
+/// are short ("Time-driven: dt = 1/30", "Event-driven": the queue strip names the queue).
 [[nodiscard]] std::string panel_title(bool time_driven, OverlayLevel level,
-                                      const EngineOptions& options);
+                                      const EngineOptions& options, bool beside_code = false);
 /// The note under the time-driven figures when dt is longer than a frame (empty otherwise): what
 /// a class sees happen, "Moves only every 2nd frame", or "Moves on 2 of every 3 frames" when a
 /// step is one and a half frames long.

@@ -20,6 +20,14 @@ namespace collide::show {
 /// Seconds of video each line of a pop's walk stays marked (a valid event's walk: 4 of them).
 inline constexpr double code_line_seconds = 0.35;
 
+/// Seconds of video a popped event stays highlighted on the queue strip without the code.
+inline constexpr double queue_pop_seconds = 0.8;
+
+/// How long the queue strip keeps a popped event highlighted (`stale`: thrown away): with the
+/// code (`code`), as long as its walk through the loop's lines, so the strip and the marked line
+/// tell of the same pop until "predict" is done; without, queue_pop_seconds.
+[[nodiscard]] double pop_highlight_seconds(bool stale, bool code) noexcept;
+
 /// The lines of the listing, in order.
 enum class LoopLine : std::size_t {
     loop = 0,  ///< "while the queue is not empty:"

@@ -10,12 +10,19 @@
 /// 180,000-board BFS still ends in seconds; a search that is done waits, so the cheaper one is
 /// seen to finish first), a pause, the solutions played back move by move one after the other
 /// (one moving board at a time, a second a move), a hold.
+///
+/// With the code (`--code`, one search): the first expansions walk the listing of
+/// puzzle_code.hpp line by line (search_line_seconds a line: the board leaves the queue, is
+/// tested, its neighbours go in), the middle runs fast with the loop's line marked, and the
+/// goal's expansion walks again to "stop".
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "collide/show/puzzle_code.hpp"
 #include "collide/sim/puzzle/board.hpp"
 #include "collide/sim/puzzle/search.hpp"
 #include "collide/view/puzzle.hpp"
@@ -25,11 +32,36 @@ namespace collide::show {
 /// "1,234,567".
 [[nodiscard]] std::string with_thousands(std::uint64_t n);
 
+/// Expansions walked line by line at the start of a search shown with its code (then it runs
+/// fast until the goal's expansion, walked too).
+inline constexpr std::size_t walked_expansions = 3;
+
 class PuzzleLesson {
   public:
+    /// Which state of the queue a frame shows while an expansion is under way.
+    enum class QueueMoment : std::uint8_t {
+        before_pop,  ///< before the board under way leaves it (it is at the front, marked)
+        popped,      ///< after it left, before its neighbours went in
+        after,       ///< after the neighbours went in
+    };
+
+    /// Where a search shown with its code is at a moment of the video.
+    struct CodeMoment {
+        std::size_t shown = 0;  ///< expansions drawn in the tree, the one under way included
+        std::optional<SearchLine> line;  ///< the line marked; none during the playback
+        QueueMoment queue = QueueMoment::after;
+    };
+
     /// `results`: one or two solved searches of `start` (kept by reference: they must outlive
-    /// this object). Throws Error(runtime) for an unsolved one (a caller's bug).
-    PuzzleLesson(const puzzle::Board& start, const std::vector<puzzle::SearchResult>& results);
+    /// this object); `code`: show the search loop beside the one search. Throws Error(runtime)
+    /// for an unsolved one, or for code with two searches (a caller's bug).
+    PuzzleLesson(const puzzle::Board& start, const std::vector<puzzle::SearchResult>& results,
+                 bool code = false);
+
+    /// Whether the frames carry the code.
+    [[nodiscard]] bool shows_code() const noexcept { return code_; }
+    /// With the code: where the search is at `seconds`. Precondition: shows_code().
+    [[nodiscard]] CodeMoment code_at(double seconds) const;
 
     /// Seconds of video.
     [[nodiscard]] double duration() const noexcept;
@@ -60,11 +92,23 @@ class PuzzleLesson {
         std::vector<std::uint32_t> path;                   ///< the solution's node ids
     };
 
-    [[nodiscard]] view::PuzzlePanelView search_panel(const Side& side, std::size_t step) const;
+    /// A walked line of the code: from `start` (seconds of video) on, expansion `expansion`.
+    struct Beat {
+        double start = 0.0;
+        std::size_t expansion = 0;
+        SearchLine line = SearchLine::pop;
+    };
+
+    void pace_code();
+    [[nodiscard]] view::PuzzlePanelView search_panel(const Side& side, std::size_t step,
+                                                     QueueMoment queue = QueueMoment::after) const;
     [[nodiscard]] view::PuzzlePanelView playback_panel(const Side& side, double t) const;
     [[nodiscard]] view::PuzzleBoardView board_view(const Side& side, std::uint32_t id) const;
     [[nodiscard]] std::string title(const Side& side) const;
-    [[nodiscard]] std::vector<std::string> counters(const Side& side, std::size_t step) const;
+    /// The counters after `step` expansions with `in_queue` boards queued (shown while
+    /// searching, not once `done`).
+    [[nodiscard]] std::vector<std::string> counters(const Side& side, std::size_t step,
+                                                    std::size_t in_queue, bool done) const;
 
     puzzle::Board start_;
     std::vector<Side> sides_;
@@ -78,6 +122,12 @@ class PuzzleLesson {
     double outro_ = 2.5;           ///< the solved boards, at the end
     std::vector<double> turns_;    ///< when each solution plays, from playback_start()
     double playback_length_ = 0.0;
+    bool code_ = false;
+    std::vector<Beat> beats_;     ///< with the code: the walked lines, in time order
+    double fast_start_ = 0.0;     ///< with the code: when the fast middle starts
+    double fast_seconds_ = 0.0;   ///< ... and how long it runs
+    std::size_t fast_from_ = 0;   ///< ... the expansions shown when it starts
+    std::size_t fast_count_ = 0;  ///< ... the expansions it adds
 };
 
 }  // namespace collide::show

@@ -239,6 +239,13 @@ struct DriftPoint {
 /// panels; convention: time-driven left, event-driven right). Full level: failure markers are
 /// drawn for any panel whose snapshot carries them (overlapping_pairs, missed_collisions,
 /// escaped discs); lesson level: the panel's `marks`.
+/// How long a popped event stays highlighted on a panel's queue, in seconds of video (the
+/// presentation layer decides: show::pop_highlight_seconds); 0: not at all.
+struct PopHighlight {
+    double valid = 0.0;  ///< an event that was resolved
+    double stale = 0.0;  ///< an event thrown away as invalidated
+};
+
 struct FrameContent {
     std::vector<PanelContent> panels;
     std::string time_text;  ///< e.g. "t = 3.25   (x0.5 speed)"
@@ -254,8 +261,9 @@ struct FrameContent {
     std::string cost_ratio;
     double video_time = 0.0;  ///< seconds of video at this frame: failure markers fade by it
     /// Simulation time per second of video (0: unknown). A panel's queue (Snapshot::queue) keeps
-    /// a popped event highlighted for queue_pop_seconds of video by it.
+    /// a popped event highlighted for `pop_highlight` seconds of video by it.
     double speed = 0.0;
+    PopHighlight pop_highlight;
     /// Lesson level: the speed histogram of moving discs in the column (large: it is the subject).
     PlotSize histogram = PlotSize::none;
     bool energy_plot = false;   ///< lesson level: the energy drift plot (energy not conserved)

@@ -8,8 +8,11 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "collide/view/code.hpp"
 
 namespace collide::view {
 
@@ -70,6 +73,9 @@ struct PuzzlePanelView {
 struct PuzzleFrameView {
     std::string heading;
     std::vector<PuzzlePanelView> panels;
+    /// `--code` (one panel): the search loop's pseudocode in a column right of the panel, the
+    /// line under way marked; unset: no column.
+    std::optional<CodeView> code;
 };
 
 /// Rows of the tree and boards per row drawn at most; queue entries shown at most.
