@@ -207,6 +207,7 @@ FrameLayout grid_layout(const LayoutInput& in, float body) {
     // It starts at the top margin, and has no line for the clock's unit: five bars need it all.
     LayoutInput column_in = in;
     column_in.clock_unit = false;
+    column_in.small_plot = false;  // the plot stops at the column's foot, above the caption
     lay_out_column(
         layout, column_in,
         {column_x0, column_w, m, caption_top - gap, line, head_line, gap, body, head, true});
