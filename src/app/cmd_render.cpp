@@ -50,7 +50,7 @@ struct CliValues {
     CLI::Option* slab_opt = nullptr;
     double duration = 0.0;
     double speed = 0.0;
-    double dt = 0.0;
+    std::string dt;  ///< --dt: one step, or a list (parse_dt_list)
     std::string engine = "fast";
     std::string pq = "binary";
     std::string td_detect = "all-pairs";
@@ -129,7 +129,19 @@ RenderRequest request_of(const CliValues& v, bool still) {
     r.fps = if_given(v.video.fps_opt, v.video.fps);
     r.duration = if_given(v.duration_opt, v.duration);
     r.speed = if_given(v.speed_opt, v.speed);
-    r.dt = if_given(v.dt_opt, v.dt);
+    if (v.dt_opt != nullptr && v.dt_opt->count() > 0) {
+        if (v.dt.empty()) {
+            r.dt = 0.0;  // as a number option reads "" (refused below as no positive step)
+        } else if (v.dt.find(',') == std::string::npos) {
+            // One step, converted (and refused) exactly as a number option is.
+            double dt = 0.0;
+            if (!CLI::detail::lexical_cast(v.dt, dt))
+                throw CLI::ConversionError("--dt", std::vector<std::string>{v.dt});
+            r.dt = dt;
+        } else {
+            r.dt_list = parse_dt_list(v.dt, "--dt");
+        }
+    }
     r.at = if_given(v.video.at_opt, v.video.at);
     r.engine = parse_event_engine_kind(v.engine, "--engine");
     r.pq = pq::parse_queue_kind(v.pq, "--pq");  // a bad --pq is refused even for the fast engine
@@ -196,9 +208,12 @@ void add_shared_options(CLI::App& cmd, CliValues& v, bool video) {
         "--speed", v.speed,
         "Simulation time per second of video (default: scene hint, else a typical disc "
         "crosses the box in 10 s)");
-    v.dt_opt = cmd.add_option("--dt", v.dt,
-                              "Time-driven time step (default: scene hint, else the video's speed "
-                              "/ 30, the same at every -q)");
+    v.dt_opt =
+        cmd.add_option("--dt", v.dt,
+                       "Time-driven time step (default: scene hint, else the video's speed "
+                       "/ 30, the same at every -q); a list of 2 to 4 steps (0.01,0.02,0.04) "
+                       "puts one time-driven panel per step beside the event-driven one")
+            ->type_name("FLOAT");
     cmd.add_option("--engine", v.engine, "Event-driven engine: fast or classic")
         ->capture_default_str();
     cmd.add_option("--pq", v.pq,
@@ -303,10 +318,18 @@ std::uintmax_t size_on_disk(const std::filesystem::path& path) {
 std::string engine_costs(const RenderPlan& plan, const PipelineResult& result) {
     std::string out;
     std::size_t i = 0;
-    if (plan.mode != RenderMode::event && i < result.engines.size()) {
+    if (plan.mode != RenderMode::event && i < result.engines.size() && plan.time_steps.empty()) {
         const Measurements& m = result.engines[i++];
         out += fmt::format("time-driven {:.2f} s ({} overlap checks)", m.wall_seconds,
                            show::short_count(static_cast<double>(m.overlap_checks)));
+    }
+    for (const double dt : plan.time_steps) {
+        if (plan.mode == RenderMode::event || i >= result.engines.size()) break;
+        const Measurements& m = result.engines[i++];
+        if (!out.empty()) out += ", ";
+        out += fmt::format("time-driven dt = {:g} {:.2f} s ({} overlap checks, {} missed)", dt,
+                           m.wall_seconds, show::short_count(static_cast<double>(m.overlap_checks)),
+                           m.missed_collisions);
     }
     if (plan.mode != RenderMode::time && i < result.engines.size()) {
         const Measurements& m = result.engines[i];
@@ -346,11 +369,20 @@ Json summary_json(const RenderPlan& plan, const PipelineResult& result, double w
     const bool still = plan.kind == OutputKind::still;
     Json engines = Json::array();
     std::size_t i = 0;
-    if (plan.mode != RenderMode::event && i < result.engines.size()) {
+    if (plan.mode != RenderMode::event && i < result.engines.size() && plan.time_steps.empty()) {
         const Measurements& m = result.engines[i++];
         engines.push_back(Json{{"engine", "time-driven"},
                                {"wall_seconds", m.wall_seconds},
                                {"overlap_checks", m.overlap_checks}});
+    }
+    for (const double dt : plan.time_steps) {
+        if (plan.mode == RenderMode::event || i >= result.engines.size()) break;
+        const Measurements& m = result.engines[i++];
+        engines.push_back(Json{{"engine", "time-driven"},
+                               {"dt", dt},
+                               {"wall_seconds", m.wall_seconds},
+                               {"overlap_checks", m.overlap_checks},
+                               {"missed_collisions", m.missed_collisions}});
     }
     if (plan.mode != RenderMode::time && i < result.engines.size()) {
         const Measurements& m = result.engines[i];

@@ -128,7 +128,8 @@ FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan, const std::
                          const SphereScene* spheres)
     : plan_(plan) {
     const OverlayLevel level = plan.render.overlays;
-    const auto add = [&](const EngineOptions& options, bool time_driven, std::string title) {
+    const auto add = [&](const EngineOptions& options, bool time_driven,
+                         std::string title) -> Panel& {
         Panel panel;
         if (spheres != nullptr) {
             panel.sphere_engine = make_engine(*spheres, options);
@@ -149,13 +150,34 @@ FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan, const std::
         panel.title = std::move(title);
         panel.initial_energy = panel.base().measurements().kinetic_energy;
         panels_.push_back(std::move(panel));
+        return panels_.back();
     };
     // --code with both panels: they share what the listing leaves, so their titles are short.
     const bool narrow = plan.code && plan.mode == RenderMode::both;
-    if (plan.mode != RenderMode::event)
-        add(plan.time_engine, true, show::panel_title(true, level, plan.time_engine, narrow));
-    if (plan.mode != RenderMode::time)
-        add(plan.event_engine, false, show::panel_title(false, level, plan.event_engine, narrow));
+    if (plan.mode != RenderMode::event && plan.time_steps.empty()) {
+        Panel& panel =
+            add(plan.time_engine, true, show::panel_title(true, level, plan.time_engine, narrow));
+        panel.note = plan.lesson.step_note;
+        panel.frames_per_step = plan.lesson.frames_per_step;
+    }
+    if (plan.mode != RenderMode::event) {
+        // A --dt list: one time-driven panel per step.
+        for (const double dt : plan.time_steps) {
+            EngineOptions options = plan.time_engine;
+            options.dt = dt;
+            Panel& panel = add(options, true, show::compared_step_title(dt, level));
+            panel.short_title = show::compared_step_short_title(dt);
+            // No step note: beside the others its line would not fit, and the titles say
+            // which steps are long.
+            panel.compared_dt = dt;
+        }
+    }
+    if (plan.mode != RenderMode::time) {
+        Panel& panel = add(plan.event_engine, false,
+                           show::panel_title(false, level, plan.event_engine, narrow));
+        // Beside a --dt list's panels the cells are narrower: a short title where it must.
+        if (!plan.time_steps.empty()) panel.short_title = show::event_short_title;
+    }
 }
 
 SimFrame FrameSource::frame(std::int64_t k) {
@@ -215,8 +237,12 @@ PanelFrame FrameSource::describe(const Panel& panel, double video_seconds) const
     const Measurements m = panel.base().measurements();
     const double drift = relative_drift(m.kinetic_energy, panel.initial_energy);
     out.title = panel.title;
+    out.short_title = panel.short_title;
     out.drift = {out.snapshot.time, drift};
     out.time_driven = panel.time_driven;
+    out.compared_dt = panel.compared_dt;
+    out.note = panel.note;
+    out.frames_per_step = panel.frames_per_step;
     out.measurements = m;
     out.words =
         show::panel_words(m, panel.time_driven, out.snapshot.box.boundary == Boundary::walls, drift,
@@ -243,12 +269,12 @@ FrameComposer::FrameComposer(const RenderPlan& plan) : plan_(plan) {
     content_.speed_plot = show::speed_plot_words(r.speed_max);
 }
 
-void FrameComposer::advance_step_phase(double state_time) {
-    if (state_time != last_step_time_) {
-        last_step_time_ = state_time;
-        step_phase_ = 0;
+void FrameComposer::advance_step_phase(std::size_t i, double state_time) {
+    if (state_time != last_step_time_[i]) {
+        last_step_time_[i] = state_time;
+        step_phase_[i] = 0;
     } else {
-        ++step_phase_;
+        ++step_phase_[i];
     }
 }
 
@@ -265,6 +291,8 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
             marks_.emplace_back(show::mark_budget, i == 0);
     }
     content_.energy_drift.resize(frame.panels.size());
+    last_step_time_.resize(frame.panels.size(), -1.0);
+    step_phase_.resize(frame.panels.size(), 0);
     // A replay: both panels zoom onto the failure's spot, each with its own marks (collide/show).
     const show::ReplayFailure* replay = segment.kind == show::SegmentKind::replay
                                             ? show::replay_at(plan_.replays, segment.sim_frame)
@@ -287,25 +315,27 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
         out.snapshot = &panel.snapshot;
         out.spheres = panel.spheres ? &panel.view : nullptr;
         out.title = panel.title;
+        out.short_title = panel.short_title;
         out.counters = panel.words.counters;
         out.figures = panel.words.figures;
         out.compact_line = panel.words.compact_line;
-        out.cost_label = panel.words.cost_label;
+        out.cost_label = panel.compared_dt > 0.0 ? show::compared_cost_label(panel.compared_dt)
+                                                 : panel.words.cost_label;
         out.cost = panel.words.cost;
         out.cost_text = panel.words.cost_text;
         out.cost_words = panel.words.cost_words;
         out.how = frame.panels.size() == 2 ? panel.words.how : std::string();
         out.queue_words = panel.queue_words;
         out.accent = render::panel_accent(panel.time_driven, plan_.render.theme);
-        out.note = panel.time_driven ? lesson.step_note : std::string();
+        out.note = panel.note;
         out.step_period = 1;
         out.step_phase = 0;
-        if (panel.time_driven && lesson.frames_per_step > 1) {
+        if (panel.time_driven && panel.frames_per_step > 1) {
             // Which frame of the held step this is: a new state restarts the count (a frozen
             // frame, a card's or a hold's, is no frame of the step).
-            if (frame.moved) advance_step_phase(panel.snapshot.time);
-            out.step_period = lesson.frames_per_step;
-            out.step_phase = std::min(step_phase_, lesson.frames_per_step - 1);
+            if (frame.moved) advance_step_phase(i, panel.snapshot.time);
+            out.step_period = panel.frames_per_step;
+            out.step_phase = std::min(step_phase_[i], panel.frames_per_step - 1);
         }
         if (plan_.render.overlays != OverlayLevel::none) {
             // The failure marks and their legend: which failures get a mark is decided in show.
@@ -358,7 +388,7 @@ const render::FrameContent& FrameComposer::compose(const SimFrame& frame) {
     if (segment.kind == show::SegmentKind::epilogue) {
         std::vector<show::SummaryPanel> panels;
         for (const PanelFrame& panel : frame.panels)
-            panels.push_back({panel.measurements, panel.time_driven});
+            panels.push_back({panel.measurements, panel.time_driven, panel.compared_dt});
         const bool walls =
             !frame.panels.empty() && frame.panels[0].snapshot.box.boundary == Boundary::walls;
         content_.summary = show::summary_card(

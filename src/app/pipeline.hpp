@@ -43,8 +43,14 @@ struct PanelFrame {
     bool spheres = false;  ///< a 3D scene: `view` is drawn
     SphereView view;
     std::string title;
+    std::string short_title;   ///< drawn where `title` does not fit (empty: none)
     render::DriftPoint drift;  ///< (KE - KE0) / KE0 at this frame
     bool time_driven = false;
+    /// A --dt list (RenderPlan::time_steps): this time-driven panel's step, for the epilogue's
+    /// column; 0 otherwise.
+    double compared_dt = 0.0;
+    std::string note;           ///< time-driven: its step note (show::step_note; empty: none)
+    int frames_per_step = 1;    ///< time-driven: its step indicator's period
     show::PanelWords words;     ///< counters, figures, compact line, cost (collide/show)
     Measurements measurements;  ///< the engine's, at this frame (the epilogue's card)
     QueueWords queue_words;     ///< the queue strip's (snapshot.queue set)
@@ -87,7 +93,11 @@ class FrameSource {
             return engine ? static_cast<EngineBase&>(*engine) : *sphere_engine;
         }
         bool time_driven = false;
+        double compared_dt = 0.0;  ///< PanelFrame::compared_dt
         std::string title;
+        std::string short_title;
+        std::string note;
+        int frames_per_step = 1;
         double initial_energy = 0.0;
         /// What the event-driven engine resolves next, for the next collision line (lesson
         /// level, no queue strip, discs). nullptr: none drawn. After `engine`, which it watches:
@@ -118,15 +128,15 @@ class FrameComposer {
     [[nodiscard]] const render::FrameContent& compose(const SimFrame& frame);
 
   private:
-    /// The time-driven panel's state is at `state_time`: a new step restarts the count.
-    void advance_step_phase(double state_time);
+    /// Time-driven panel `i`'s state is at `state_time`: a new step restarts its count.
+    void advance_step_phase(std::size_t i, double state_time);
 
     const RenderPlan& plan_;
     render::FrameContent content_;
     std::vector<show::EngineDrift> drifts_;  ///< per panel: the largest drift so far
     std::vector<show::FailureMarks> marks_;  ///< per panel (lesson level)
-    double last_step_time_ = -1.0;
-    int step_phase_ = 0;
+    std::vector<double> last_step_time_;     ///< per panel: the state time of its latest step
+    std::vector<int> step_phase_;            ///< per panel: frames shown of that step
 };
 
 /// What happened, for the summary line.

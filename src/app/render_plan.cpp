@@ -6,7 +6,9 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
+#include <string>
 
 #include "collide/error.hpp"
 #include "collide/named_values.hpp"
@@ -175,6 +177,36 @@ EngineOptions time_engine_options(const RenderRequest& request, const Scene& sce
     return options;
 }
 
+/// A --dt list: each step checked (and its notices said) as a single --dt would be; the plan's
+/// time_engine takes the smallest (the work limits' estimate is the costliest panel's).
+void choose_time_steps(const RenderRequest& request, const Scene& scene, double pace,
+                       double interval, RenderPlan& plan, std::vector<std::string>& notices) {
+    if (request.dt_list.empty()) return;
+    if (plan.mode == RenderMode::event) {
+        throw_option_error("--dt",
+                           "a list of steps compares time-driven panels, and --mode event shows "
+                           "none; drop --mode, or give one --dt");
+    }
+    RenderRequest one = request;
+    for (const double dt : request.dt_list) {
+        one.dt = dt;
+        const EngineOptions options = time_engine_options(one, scene, pace, interval, notices);
+        if (plan.time_steps.empty() || options.dt < plan.time_engine.dt) plan.time_engine = options;
+        plan.time_steps.push_back(options.dt);
+    }
+}
+
+/// Options that cannot be shown beside a --dt list's panels: the queue strip (and the code
+/// beside it) needs the frame's width under one event-driven box.
+void check_time_steps_shown(const RenderPlan& plan) {
+    if (plan.time_steps.empty()) return;
+    if (plan.queue_events > 0) {
+        throw_option_error("--dt",
+                           "a list of steps cannot be shown with --queue (the queue strip "
+                           "takes the room of the extra panels); give one --dt");
+    }
+}
+
 render::RenderConfig render_config(const RenderRequest& request, const Scene& scene, int width,
                                    int height) {
     render::RenderConfig config;
@@ -300,6 +332,8 @@ LessonPlan lesson_plan(const RenderRequest& request, const Scene& scene, const R
     }
     lesson.histogram = histogram_size(scene);
     const double interval = plan.speed.speed / plan.fps;
+    // A --dt list: each panel's note and step indicator are its own (FrameSource).
+    if (!plan.time_steps.empty()) return lesson;
     lesson.frames_per_step = show::whole_frames_per_step(plan.time_engine.dt, interval);
     lesson.step_note = show::step_note(plan.time_engine.dt, interval);
     return lesson;
@@ -312,6 +346,16 @@ ReplayChoice replay_choice(const RenderRequest& request, const Scene& scene,
                            const RenderPlan& plan) {
     ReplayChoice choice = scene.render.replay.value_or(ReplayChoice::first);
     if (request.replay) choice = parse_replay_choice(*request.replay, "--replay");
+    if (!plan.time_steps.empty() && choice != ReplayChoice::none) {
+        // A replay zooms every panel onto one failure: with several steps, each panel fails at
+        // its own steps, and the first of one is no moment of the others.
+        if (request.replay) {
+            throw_option_error("--replay", *request.replay,
+                               "none beside a --dt list (each time-driven panel fails at its own "
+                               "steps; give one --dt to replay its first failure)");
+        }
+        return ReplayChoice::none;
+    }
     if (plan.mode == RenderMode::event || plan.render.overlays != render::OverlayLevel::lesson)
         return ReplayChoice::none;
     return choice;
@@ -581,13 +625,18 @@ RenderPlan plan_without_frames(const RenderRequest& request, const Scene& scene)
     const FrameClock video = video_clock(plan.duration, plan.speed.speed, plan.fps);
     plan.event_engine = event_engine_options(request);
     std::vector<std::string> dt_notices;
-    plan.time_engine = time_engine_options(request, scene, pace, video.interval, dt_notices);
+    if (request.dt_list.empty()) {
+        plan.time_engine = time_engine_options(request, scene, pace, video.interval, dt_notices);
+    } else {
+        choose_time_steps(request, scene, pace, video.interval, plan, dt_notices);
+    }
     if (plan.mode != RenderMode::event) {
         plan.notices.insert(plan.notices.end(), dt_notices.begin(), dt_notices.end());
     }
     plan.render = render_config(request, scene, plan.width, plan.height);
     plan.code = code_of(request, plan);
     plan.queue_events = queue_events(request, plan);
+    check_time_steps_shown(plan);
     plan.render.trail_length = trail_length(scene, video.count);
     plan.render.trail_whole_path = few_tagged_discs(scene);
     check_failure_colors(scene, plan.render, plan.notices);
@@ -656,6 +705,35 @@ RenderPlan plan_render(const RenderRequest& request, const Scene& scene,
     RenderPlan plan = plan_without_frames(request, scene);
     lay_out_frames(plan, request, find_replays);
     return plan;
+}
+
+std::vector<double> parse_dt_list(std::string_view text, std::string_view option) {
+    std::vector<double> steps;
+    std::size_t from = 0;
+    while (true) {
+        const std::size_t comma = text.find(',', from);
+        const std::string value(
+            text.substr(from, comma == std::string_view::npos ? comma : comma - from));
+        char* end = nullptr;
+        const double dt = std::strtod(value.c_str(), &end);
+        if (value.empty() || end != value.c_str() + value.size() || !positive_finite(dt))
+            throw_option_error(option, value, "a positive time step in the list");
+        if (std::find(steps.begin(), steps.end(), dt) != steps.end()) {
+            throw_option_error(option, fmt::format("{} is given twice in '{}': each time-driven "
+                                                   "panel needs a step of its own",
+                                                   value, text));
+        }
+        steps.push_back(dt);
+        if (comma == std::string_view::npos) break;
+        from = comma + 1;
+    }
+    if (steps.size() < 2 || steps.size() > max_dt_steps) {
+        throw_option_error(option,
+                           fmt::format("'{}' has {} steps: a list compares 2 to {} steps side by "
+                                       "side (e.g. 0.01,0.02,0.04), or give one step",
+                                       text, steps.size(), max_dt_steps));
+    }
+    return steps;
 }
 
 double default_dt(double speed) {

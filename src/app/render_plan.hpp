@@ -143,8 +143,11 @@ struct RenderRequest {
     std::optional<double> duration;         ///< --duration (seconds of video)
     std::optional<double> speed;            ///< --speed (simulation time per second of video)
     std::optional<double> dt;               ///< --dt (time-driven quantum)
-    EngineKind engine = EngineKind::fast;   ///< --engine (the event-driven one: fast or classic)
-    pq::QueueKind pq;                       ///< --pq (classic engine's queue)
+    /// --dt A,B[,C[,D]]: the dt trade-off, one time-driven panel per step beside the
+    /// event-driven one (parse_dt_list; empty: one step, `dt`).
+    std::vector<double> dt_list;
+    EngineKind engine = EngineKind::fast;  ///< --engine (the event-driven one: fast or classic)
+    pq::QueueKind pq;                      ///< --pq (classic engine's queue)
     OverlapDetection td_detect = OverlapDetection::all_pairs;  ///< --td-detect (time-driven)
     std::optional<std::string> color;                          ///< --color
     std::optional<bool> trails;                                ///< --trails / --no-trails
@@ -165,6 +168,16 @@ struct RenderRequest {
     bool no_epilogue = false;           ///< --no-epilogue: no summary card at the end
     std::optional<std::string> replay;  ///< --replay none|first|all
 };
+
+/// The most time-driven panels a --dt list puts beside the event-driven one: five boxes in all
+/// still leave lesson-size text (lesson_layout's grid).
+inline constexpr std::size_t max_dt_steps = 4;
+
+/// `--dt A,B[,C[,D]]`: 2..max_dt_steps distinct positive steps, in the order given. Throws
+/// Error(input) naming `option` for too many or too few values, one that is no positive number,
+/// or one given twice.
+[[nodiscard]] std::vector<double> parse_dt_list(std::string_view text,
+                                                std::string_view option = "--dt");
 
 /// Events `--queue` shows without a number.
 inline constexpr int default_queue_events = 5;
@@ -211,7 +224,11 @@ struct RenderPlan {
     /// only runs (video frame k shows simulation frame k).
     show::Timeline timeline;
     EngineOptions event_engine;  ///< engine fast or classic
-    EngineOptions time_engine;   ///< engine time, with the dt in use
+    EngineOptions time_engine;   ///< engine time, with the dt in use (a --dt list: the smallest)
+    /// A --dt list: the step of each time-driven panel, in the order given (2..max_dt_steps);
+    /// empty: one time-driven panel, time_engine.dt. The list replays nothing (each panel fails
+    /// at its own steps, and a replay zooms every panel onto one failure).
+    std::vector<double> time_steps;
     render::RenderConfig render;
     OutputKind kind = OutputKind::video;
     video::VideoFormat format = video::VideoFormat::mp4;

@@ -132,7 +132,7 @@ struct LayoutInput {
     int width = 1280;
     int height = 720;
     OverlayLevel level = OverlayLevel::lesson;
-    std::vector<Box> boxes;   ///< 1 or 2 panels, left to right (only their shapes matter)
+    std::vector<Box> boxes;   ///< 1 to 5 panels, left to right (only their shapes matter)
     bool note_line = false;   ///< lesson: a note line under the figures (dt > frame)
     bool how_line = false;    ///< lesson: a line under each panel's figures (PanelContent::how)
     bool cost_ratio = false;  ///< lesson: the cost ratio under the bars (two panels)

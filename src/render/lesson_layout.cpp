@@ -3,6 +3,7 @@
 // compact_width. Pure arithmetic.
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 
 #include "code_panel.hpp"
@@ -41,11 +42,184 @@ FrameLayout compact_layout(const LayoutInput& in, float body) {
     return layout;
 }
 
+/// Where the column goes and the lesson's sizes, for lay_out_column.
+struct ColumnMetrics {
+    float x0 = 0.0F;      ///< the column's left edge
+    float width = 0.0F;   ///< its width
+    float top = 0.0F;     ///< its top: the boxes' top
+    float bottom = 0.0F;  ///< its bottom: the boxes' bottom
+    float line = 0.0F;    ///< a body line
+    float head_line = 0.0F;
+    float gap = 0.0F;
+    float body = 0.0F;  ///< body text size (px)
+    float head = 0.0F;  ///< headline text size (px)
+    /// The work figures in body size (beside a small plot; under more than two bars), so that
+    /// the bars fit.
+    bool body_values = false;
+};
+
+/// The column beside the boxes (layout.column and its text slots).
+void lay_out_column(FrameLayout& layout, const LayoutInput& in, const ColumnMetrics& metrics) {
+    // The column: clock (and its unit), "work so far" (or, under two bars, their ratio), one bar
+    // per panel (label, bar, value), energy, colour legend, plot. Groups that do not fit are left
+    // out, least important last.
+    const auto [column_x0, column_w, top, box_bottom, line, head_line, gap, body, head,
+                body_values] = metrics;
+    ColumnLayout& column = layout.column;
+    column.area = {column_x0, top, column_x0 + column_w, box_bottom};
+    const float bar_h = std::round(0.45F * line);
+    float y = top;
+    const auto fits = [&](float h) { return y + h <= column.area.y1; };
+    const auto add = [&](TextRole role, int panel, float h, float px) {
+        layout.text.push_back({role, panel, {column_x0, y, column_x0 + column_w, y + h}, px});
+        y += h;
+    };
+    if (fits(line)) add(TextRole::clock, -1, line, body);
+    if (in.clock_unit && fits(line)) add(TextRole::clock, -1, line, body);
+    const auto panels = static_cast<float>(in.boxes.size());
+    // Beside a small plot the work figures are body sized: the plot needs the height.
+    const float value_line = metrics.body_values ? line : head_line;
+    const float value_px = metrics.body_values ? body : head;
+    // Under two bars their ratio ("131x less work") says what the heading would.
+    const float cost_h = gap + line + panels * (line + bar_h + gap + value_line);
+    const float energy_h = gap + 2.0F * line;
+    if (in.large_plot) {
+        // The plot is the subject: it comes first and takes what the energy line leaves, and
+        // the cost graphic's room too unless the plot keeps at least 7 lines beside it.
+        const float rest = column.area.y1 - y - energy_h;
+        const bool with_cost = rest - cost_h >= 7.0F * line;
+        const float h = std::max(0.0F, with_cost ? rest - cost_h : rest);
+        column.plot = {column_x0, y + gap, column_x0 + column_w, y + h};
+        y += h;
+    }
+    if (fits(cost_h)) {
+        y += gap;
+        if (!in.cost_ratio) add(TextRole::cost_heading, -1, line, body);
+        const float bars_top = y;
+        for (std::size_t i = 0; i < in.boxes.size(); ++i) {
+            add(TextRole::cost_label, static_cast<int>(i), line, body);
+            y += bar_h + gap;  // the bar itself
+            add(TextRole::cost_value, static_cast<int>(i), value_line, value_px);
+        }
+        column.bars = {column_x0, bars_top, column_x0 + column_w, y};
+        if (in.cost_ratio) add(TextRole::cost_ratio, -1, line, body);
+    }
+    if (fits(energy_h)) {
+        y += gap;
+        add(TextRole::energy, -1, line, body);  // "Energy" / "conserved": two narrow lines
+        add(TextRole::energy, -1, line, body);
+    }
+    if (in.color_legend && fits(gap + bar_h + line)) {
+        y += gap;
+        column.legend_bar = {column_x0, y, column_x0 + column_w, y + bar_h};
+        y += bar_h;
+        add(TextRole::legend, -1, line, body);
+    }
+    y += gap;
+    // A small plot may reach down beside the figures row: the figures stay under their own box,
+    // so that strip between (or beside) the boxes is free.
+    const float plot_bottom = in.small_plot ? column.area.y1 + gap + head_line : column.area.y1;
+    if (!in.large_plot && plot_bottom - y > 3.0F * line) {
+        column.plot = {column_x0, y, column_x0 + column_w, plot_bottom};
+    }
+}
+
+/// Three to five boxes (a --dt list beside the event-driven panel): a grid of one or two rows,
+/// whichever gives the larger boxes, each cell its title, box, figures (and note, marks lines);
+/// the column on the right, the caption under everything. No queue strip, no code column (the
+/// plan refuses them beside a list).
+FrameLayout grid_layout(const LayoutInput& in, float body) {
+    FrameLayout layout;
+    layout.level = OverlayLevel::lesson;
+    const float head = std::round(body * headline_scale);
+    layout.body_pixel_height = body;
+    layout.headline_pixel_height = head;
+    const auto width = static_cast<float>(in.width);
+    const auto height = static_cast<float>(in.height);
+    const float m = std::max(3.0F, std::round(height * 0.014F));
+    layout.margin = m;
+    const float line = std::round(body * 1.25F);
+    const float head_line = std::round(head * 1.2F);
+    const float gap = std::round(0.6F * m);
+    const bool mark_line =
+        std::find(in.mark_lines.begin(), in.mark_lines.end(), true) != in.mark_lines.end();
+    const float above = line + gap;  // the title
+    const float below = gap + head_line + (in.note_line ? line : 0.0F) + (mark_line ? line : 0.0F);
+    const float caption_top = height - m - line;
+    const float column_w =
+        std::round(in.large_plot ? 0.30F * width : std::max(0.15F * width, 6.5F * body));
+    // The cells: from the left margin to the column, from the top margin to the caption.
+    const float cells_w = width - column_w - 3.0F * m;
+    const float cells_h = caption_top - gap - m;
+    const std::size_t n = in.boxes.size();
+    struct Grid {
+        std::size_t columns = 1;
+        float cell_w = 0.0F;
+        double scale = 0.0;
+    };
+    Grid best;
+    for (const std::size_t rows : {std::size_t{1}, std::size_t{2}}) {
+        Grid grid;
+        grid.columns = (n + rows - 1) / rows;
+        const auto cols = static_cast<float>(grid.columns);
+        grid.cell_w = (cells_w - (cols - 1.0F) * m) / cols;
+        const float cell_h =
+            (cells_h - static_cast<float>(rows - 1) * gap) / static_cast<float>(rows);
+        grid.scale = std::numeric_limits<double>::max();
+        for (const Box& box : in.boxes)
+            grid.scale = std::min(grid.scale, fit_scale(box, grid.cell_w, cell_h - above - below));
+        // Two rows give each title and figures row a wider cell: worth boxes a little smaller.
+        const double wider_text = rows == 2 ? 1.25 : 1.0;
+        if (grid.scale * wider_text > best.scale) best = grid;
+    }
+    float box_h = 0.0F;
+    for (const Box& box : in.boxes)
+        box_h = std::max(box_h, static_cast<float>(box.height * best.scale));
+    const std::size_t rows = (n + best.columns - 1) / best.columns;
+    const float row_h = above + box_h + below;
+    const float used_h = static_cast<float>(rows) * row_h + static_cast<float>(rows - 1) * gap;
+    const float y0 = m + std::round(0.5F * (cells_h - used_h));  // the grid centred vertically
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t row = i / best.columns;
+        const float x0 = m + static_cast<float>(i % best.columns) * (best.cell_w + m);
+        const float x1 = x0 + best.cell_w;
+        const float top = y0 + static_cast<float>(row) * (row_h + gap) + above;
+        const int p = static_cast<int>(i);
+        PanelLayout panel;
+        panel.scale = best.scale;
+        panel.box = place_box(in.boxes[i], best.scale, x0, x1, top);
+        panel.area = {x0 - 0.5F * m, top - above, x1 + 0.5F * m, top + box_h + below};
+        layout.text.push_back({TextRole::title, p, {x0, top - gap - line, x1, top - gap}, body});
+        float y = top + box_h + gap;
+        layout.text.push_back({TextRole::figures, p, {x0, y, x1, y + head_line}, head});
+        y += head_line;
+        if (in.note_line) {
+            layout.text.push_back({TextRole::note, p, {x0, y, x1, y + line}, body});
+            y += line;
+        }
+        if (mark_line && p < static_cast<int>(in.mark_lines.size()) && in.mark_lines[i])
+            layout.text.push_back({TextRole::marks, p, {x0, y, x1, y + line}, body});
+        layout.panels.push_back(panel);
+    }
+    layout.text.push_back({TextRole::caption, -1, {m, caption_top, width - m, height - m}, body});
+    // The column beside the whole grid: one bar per panel needs its height.
+    const float column_x0 = width - m - column_w;
+    // It starts at the top margin, and has no line for the clock's unit: five bars need it all.
+    LayoutInput column_in = in;
+    column_in.clock_unit = false;
+    column_in.small_plot = false;  // the plot stops at the column's foot, above the caption
+    lay_out_column(
+        layout, column_in,
+        {column_x0, column_w, m, caption_top - gap, line, head_line, gap, body, head, true});
+    return layout;
+}
+
 }  // namespace
 
 FrameLayout lesson_layout(const LayoutInput& in) {
     const float body = lesson_pixel_height(in.width, in.height);
     if (in.width < compact_width) return compact_layout(in, body);
+    if (in.boxes.size() > 2) return grid_layout(in, body);
     FrameLayout layout;
     layout.level = OverlayLevel::lesson;
     const float head = std::round(body * headline_scale);
@@ -175,66 +349,9 @@ FrameLayout lesson_layout(const LayoutInput& in) {
             layout.text.push_back({TextRole::code, -1, row, body});
     }
 
-    // The column: clock (and its unit), "work so far" (or, under two bars, their ratio), one bar
-    // per panel (label, bar, value), energy, colour legend, plot. Groups that do not fit are left
-    // out, least important last.
-    ColumnLayout& column = layout.column;
-    column.area = {column_x0, top, column_x0 + column_w, box_bottom};
-    const float bar_h = std::round(0.45F * line);
-    float y = top;
-    const auto fits = [&](float h) { return y + h <= column.area.y1; };
-    const auto add = [&](TextRole role, int panel, float h, float px) {
-        layout.text.push_back({role, panel, {column_x0, y, column_x0 + column_w, y + h}, px});
-        y += h;
-    };
-    if (fits(line)) add(TextRole::clock, -1, line, body);
-    if (in.clock_unit && fits(line)) add(TextRole::clock, -1, line, body);
-    const auto panels = static_cast<float>(in.boxes.size());
-    // Beside a small plot the work figures are body sized: the plot needs the height.
-    const float value_line = in.small_plot ? line : head_line;
-    const float value_px = in.small_plot ? body : head;
-    // Under two bars their ratio ("131x less work") says what the heading would.
-    const float cost_h = gap + line + panels * (line + bar_h + gap + value_line);
-    const float energy_h = gap + 2.0F * line;
-    if (in.large_plot) {
-        // The plot is the subject: it comes first and takes what the energy line leaves, and
-        // the cost graphic's room too unless the plot keeps at least 7 lines beside it.
-        const float rest = column.area.y1 - y - energy_h;
-        const bool with_cost = rest - cost_h >= 7.0F * line;
-        const float h = std::max(0.0F, with_cost ? rest - cost_h : rest);
-        column.plot = {column_x0, y + gap, column_x0 + column_w, y + h};
-        y += h;
-    }
-    if (fits(cost_h)) {
-        y += gap;
-        if (!in.cost_ratio) add(TextRole::cost_heading, -1, line, body);
-        const float bars_top = y;
-        for (std::size_t i = 0; i < in.boxes.size(); ++i) {
-            add(TextRole::cost_label, static_cast<int>(i), line, body);
-            y += bar_h + gap;  // the bar itself
-            add(TextRole::cost_value, static_cast<int>(i), value_line, value_px);
-        }
-        column.bars = {column_x0, bars_top, column_x0 + column_w, y};
-        if (in.cost_ratio) add(TextRole::cost_ratio, -1, line, body);
-    }
-    if (fits(energy_h)) {
-        y += gap;
-        add(TextRole::energy, -1, line, body);  // "Energy" / "conserved": two narrow lines
-        add(TextRole::energy, -1, line, body);
-    }
-    if (in.color_legend && fits(gap + bar_h + line)) {
-        y += gap;
-        column.legend_bar = {column_x0, y, column_x0 + column_w, y + bar_h};
-        y += bar_h;
-        add(TextRole::legend, -1, line, body);
-    }
-    y += gap;
-    // A small plot may reach down beside the figures row: the figures stay under their own box,
-    // so that strip between (or beside) the boxes is free.
-    const float plot_bottom = in.small_plot ? column.area.y1 + gap + head_line : column.area.y1;
-    if (!in.large_plot && plot_bottom - y > 3.0F * line) {
-        column.plot = {column_x0, y, column_x0 + column_w, plot_bottom};
-    }
+    lay_out_column(
+        layout, in,
+        {column_x0, column_w, top, box_bottom, line, head_line, gap, body, head, in.small_plot});
     return layout;
 }
 

@@ -195,8 +195,11 @@ void LessonPainter::add_panel_text(std::size_t index, const PanelContent& conten
         const float cy = 0.5F * (slot->rect.y0 + slot->rect.y1);
         list_.over.add_rect({slot->rect.x0, cy - 0.5F * sw, slot->rect.x0 + sw, cy + 0.5F * sw},
                             accent);
-        draw_text(Font::body, *slot, content.title, palette_.title, Align::left,
-                  slot->rect.x0 + 1.6F * sw);
+        const float x = slot->rect.x0 + 1.6F * sw;
+        const bool long_title = !content.short_title.empty() &&
+                                body_font_->text_width(content.title) > slot->rect.x1 - x;
+        draw_text(Font::body, *slot, long_title ? content.short_title : content.title,
+                  palette_.title, Align::left, x);
     }
     const TextSlot* how = layout_.slot(TextRole::how, p);
     bool how_taken = false;

@@ -32,10 +32,11 @@ void LessonPainter::add_summary(const FrameContent& frame) {
     y += 1.6F * head_line;
 
     // Labels on the left 40 %, one value column per panel over the rest, right-aligned.
-    const float label_x0 = 0.08F * w;
-    const float values_x0 = 0.48F * w;
-    const float values_x1 = 0.92F * w;
     const std::size_t columns = std::max<std::size_t>(1, card.columns.size());
+    // Beyond two columns (a --dt list) the values take more of the width: the labels need less.
+    const float label_x0 = 0.08F * w;
+    const float values_x0 = (columns > 2 ? 0.36F : 0.48F) * w;
+    const float values_x1 = 0.92F * w;
     const float column_width = (values_x1 - values_x0) / static_cast<float>(columns);
     const auto column_slot = [&](std::size_t c, float top) {
         const float x0 = values_x0 + column_width * static_cast<float>(c);

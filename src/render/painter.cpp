@@ -71,7 +71,8 @@ std::vector<Rgb8> Painter::accents(const FrameContent& frame) {
 // The phases of a frame
 
 const DrawList& Painter::build(const FrameContent& frame) {
-    COLLIDE_ASSERT(!frame.panels.empty() && frame.panels.size() <= 2, "a frame has 1 or 2 panels");
+    COLLIDE_ASSERT(!frame.panels.empty() && frame.panels.size() <= max_frame_panels,
+                   "a frame has 1 to max_frame_panels panels");
     for (const PanelContent& panel : frame.panels) {
         COLLIDE_ASSERT(panel.snapshot != nullptr, "every panel has a snapshot");
     }

@@ -27,6 +27,10 @@ std::string footer(const std::vector<SummaryPanel>& panels) {
     const auto event = std::find_if(panels.begin(), panels.end(),
                                     [](const SummaryPanel& p) { return !p.time_driven; });
     if (time == panels.end() || event == panels.end()) return "";
+    // Several steps compared: the work row is the comparison, one ratio would pick one step.
+    if (std::count_if(panels.begin(), panels.end(),
+                      [](const SummaryPanel& p) { return p.time_driven; }) > 1)
+        return "";
     const std::string ratio =
         work_ratio(work_done(time->measurements, true), work_done(event->measurements, false));
     if (ratio.empty()) return "";
@@ -45,9 +49,16 @@ SummaryCard summary_card(const std::vector<SummaryPanel>& panels, bool walls,
     SummaryRow left{"discs that left the box", {}};
     SummaryRow collisions{"collisions", {}};
     SummaryRow cost{"work", {}};
+    const bool compared =
+        std::any_of(panels.begin(), panels.end(), [](const SummaryPanel& p) { return p.dt > 0.0; });
     for (const SummaryPanel& panel : panels) {
         const Measurements& m = panel.measurements;
-        card.columns.emplace_back(panel.time_driven ? "Time-driven" : "Event-driven");
+        // Beside several "dt = ..." columns the event-driven one is "Event": its colour says
+        // the rest, and the four columns keep lesson-size text.
+        card.columns.emplace_back(!panel.time_driven
+                                      ? std::string(compared ? "Event" : "Event-driven")
+                                  : panel.dt > 0.0 ? fmt::format("dt = {}", dt_text(panel.dt))
+                                                   : std::string("Time-driven"));
         // The event-driven engine predicts every contact: nothing to miss, no overlap.
         missed.values.push_back(panel.time_driven ? count(m.missed_collisions) : "0");
         overlapping.values.push_back(panel.time_driven ? count(m.overlapping_pairs) : "0");

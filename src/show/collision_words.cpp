@@ -61,6 +61,20 @@ std::string panel_title(bool time_driven, OverlayLevel level, const EngineOption
     return lesson ? event_lesson_title(options) : event_panel_title(options);
 }
 
+std::string compared_step_title(double dt, OverlayLevel /*level*/) {
+    // The lesson's "Time-driven: steps of dt = ..." is too long for a third of the frame; the
+    // comparison is the subject, so every level names the step the same short way.
+    return time_panel_title(dt);
+}
+
+std::string compared_step_short_title(double dt) {
+    return fmt::format("dt = {}", dt_text(dt));
+}
+
+std::string compared_cost_label(double dt) {
+    return fmt::format("dt = {}", dt_text(dt));
+}
+
 namespace {
 /// The largest number of steps in "Moves on q of every p frames": beyond it the pattern is too
 /// long to see, and the note says "about".
@@ -177,8 +191,9 @@ std::string energy_line(const std::vector<EngineDrift>& panels) {
         return conserved(panels[0]) ? "Energy conserved" : "Energy not conserved";
     std::size_t kept = 0;
     for (const EngineDrift& d : panels) kept += conserved(d) ? 1 : 0;
-    if (kept == panels.size()) return "Both conserve energy";
-    if (kept == 0) return "Neither conserves energy";
+    const bool two = panels.size() == 2;
+    if (kept == panels.size()) return two ? "Both conserve energy" : "All conserve energy";
+    if (kept == 0) return two ? "Neither conserves energy" : "None conserves energy";
     for (const EngineDrift& d : panels) {
         if (!conserved(d))
             return d.time_driven ? "Time-driven: energy drifts" : "Event-driven: energy drifts";

@@ -444,6 +444,70 @@ TEST_CASE("thumbnail --layout-json writes the rectangles, with lesson text at le
     CHECK(lines >= 8);
 }
 
+// Issue #29 item 7: the dt trade-off in one picture.
+TEST_CASE("render --dt A,B,C: a playable MP4 with a panel per step, each step's misses reported") {
+    if (!have_ffprobe()) {
+        COLLIDE_SKIP_TEST("ffprobe is not installed (scripts/setup.sh --test installs it)");
+    }
+    TempDir dir("dtlist");
+    const fs::path out = dir.path / "dt.mp4";
+    const fs::path layout = dir.path / "layout.json";
+    const auto r = run_collide(
+        "render tunnelling -q l --duration 3 --dt 0.01,0.02,0.04 "
+        "--progress none --json --layout-json " +
+        layout.string() + " -o " + out.string());
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    const std::string probe = capture(
+        "ffprobe -v error -select_streams v:0 -show_entries stream=codec_name,width,height -of "
+        "default=nw=1 " +
+        out.string());
+    CHECK(probe.find("codec_name=h264") != std::string::npos);
+    CHECK(probe.find("width=854") != std::string::npos);
+    // Four panels laid out, each with its title and its work bar.
+    std::ifstream in(layout);
+    const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    CHECK(json.find("\"panels\": [") != std::string::npos);
+    std::size_t boxes = 0;
+    for (std::size_t at = json.find("\"box\""); at != std::string::npos;
+         at = json.find("\"box\"", at + 1))
+        ++boxes;
+    CHECK(boxes == 4);
+    // Each step's missed count is the one `simulate --engine time --dt X` reports at the
+    // video's last simulation time.
+    const auto value_after = [&](const std::string& key, std::size_t from) {
+        const std::size_t at = r.output.find("\"" + key + "\": ", from);
+        REQUIRE(at != std::string::npos);
+        const std::size_t begin = at + key.size() + 4;
+        return r.output.substr(begin, r.output.find_first_of(",}\n", begin) - begin);
+    };
+    const std::string until = value_after("sim_time", 0);
+    for (const char* dt : {"0.01", "0.02", "0.04"}) {
+        INFO("dt = " << dt);
+        const std::size_t panel = r.output.find(std::string("\"dt\": ") + dt);
+        REQUIRE(panel != std::string::npos);
+        const std::string missed = value_after("missed_collisions", panel);
+        const auto s =
+            run_collide("simulate tunnelling --engine time --until " + until + " --dt " + dt);
+        REQUIRE_MESSAGE(s.exit_code == 0, s.output);
+        CHECK(s.output.find("missed_collisions: " + missed + "\n") != std::string::npos);
+    }
+    CHECK(value_after("missed_collisions", r.output.find("\"dt\": 0.04")) != "0");
+}
+
+TEST_CASE("render --dt with more than four steps, or a step twice, exits 2 naming --dt") {
+    TempDir dir("dtbad");
+    const fs::path out = dir.path / "x.mp4";
+    for (const char* list : {"0.01,0.02,0.03,0.04,0.05", "0.01,0.01", "0.01,-1", "0.01,abc"}) {
+        INFO(list);
+        const auto r = run_collide(std::string("render gas --dt ") + list + " -o " + out.string());
+        CHECK(r.exit_code == 2);
+        CHECK(r.output.find("--dt: ") != std::string::npos);
+        CHECK_FALSE(fs::exists(out));
+    }
+    const auto five = run_collide("render gas --dt 0.01,0.02,0.03,0.04,0.05 -o " + out.string());
+    CHECK(five.output.find("2 to 4 steps") != std::string::npos);
+}
+
 namespace {
 /// The strings --layout-json gives for every slot of `role`, in the file's order.
 std::vector<std::string> texts_of(const std::string& json, const std::string& role) {

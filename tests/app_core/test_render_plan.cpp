@@ -2,7 +2,11 @@
 // option precedence (command line > scene hint > default).
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
 
 #include "collide/error.hpp"
 #include "collide/sim/generate.hpp"
@@ -501,4 +505,116 @@ TEST_CASE("a speed too small for any time step is named where it was written, no
     } catch (const Error& e) {
         CHECK(std::string(e.what()).rfind("--speed: ", 0) == 0);
     }
+}
+
+// Issue #29 item 7: `--dt A,B[,C[,D]]`, the dt trade-off in one picture.
+TEST_CASE("--dt lists: 2 to 4 distinct positive steps, anything else exits naming --dt") {
+    CHECK(parse_dt_list("0.01,0.02,0.04") == std::vector<double>{0.01, 0.02, 0.04});
+    CHECK(parse_dt_list("0.04,0.01") == std::vector<double>{0.04, 0.01});  // the order given
+    CHECK(parse_dt_list("1e-2,0.02,0.03,0.04").size() == 4);
+    const auto message = [](const char* text) {
+        try {
+            (void)parse_dt_list(text, "--dt");
+        } catch (const Error& e) {
+            CHECK(e.kind() == ErrorKind::input);
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    const std::string five = message("0.01,0.02,0.03,0.04,0.05");
+    CHECK(five.starts_with("--dt: "));
+    CHECK(five.find("has 5 steps") != std::string::npos);
+    CHECK(five.find("2 to 4") != std::string::npos);
+    CHECK(message("0.01,0.02,0.01").find("0.01 is given twice") != std::string::npos);
+    CHECK(message("0.01,-0.02").find("got '-0.02'") != std::string::npos);
+    CHECK(message("0.01,0").find("got '0'") != std::string::npos);
+    CHECK(message("0.01,x").find("got 'x'") != std::string::npos);
+    CHECK(message("0.01,").find("got ''") != std::string::npos);
+    CHECK(message("0.01,inf").find("got 'inf'") != std::string::npos);
+}
+
+namespace {
+/// A gas dense and fast enough that every step of 1/100 or more misses contacts.
+Scene missing_gas() {
+    Scene scene;
+    scene.name = "misses";
+    scene.box = Box{1.0, 1.0, Boundary::walls};
+    GenerateSpec spec;
+    spec.count = 200;
+    spec.radius = 0.012;
+    spec.seed = 11;
+    generate_discs(scene, spec);
+    return scene;
+}
+
+RenderRequest dt_list_request() {
+    RenderRequest request;
+    request.scene = "misses";
+    request.size = "320x180";
+    request.speed = 1.0;
+    request.duration = 1.0;
+    request.dt_list = {0.01, 0.02, 0.04};
+    return request;
+}
+}  // namespace
+
+TEST_CASE("--dt list: one time-driven panel per step, each missing what its engine alone misses") {
+    const Scene scene = missing_gas();
+    const RenderPlan plan = plan_render(dt_list_request(), scene);
+    REQUIRE(plan.time_steps == std::vector<double>{0.01, 0.02, 0.04});
+    CHECK(plan.time_engine.dt == 0.01);        // the work limits' estimate: the costliest
+    CHECK(plan.replay == ReplayChoice::none);  // each panel fails at its own steps
+    CHECK(plan.lesson.step_note.empty());      // no one note for all the panels
+    FrameSource source(scene, plan);
+    SimFrame frame;
+    for (std::int64_t k = 0; k < plan.timeline.frame_count(); ++k) frame = source.frame(k);
+    REQUIRE(frame.panels.size() == 4);
+    CHECK_FALSE(frame.panels.back().time_driven);
+    std::uint64_t most_missed = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        const PanelFrame& panel = frame.panels[i];
+        INFO("dt = " << plan.time_steps[i]);
+        CHECK(panel.time_driven);
+        CHECK(panel.compared_dt == plan.time_steps[i]);
+        CHECK(panel.title.find(show::dt_text(plan.time_steps[i])) != std::string::npos);
+        // What `collide simulate --engine time --dt X --until T` reports for the same scene.
+        EngineOptions options = plan.time_engine;
+        options.dt = plan.time_steps[i];
+        auto alone = make_engine(scene, options);
+        alone->advance_to(frame.time);
+        CHECK(panel.measurements.missed_collisions == alone->measurements().missed_collisions);
+        CHECK(panel.measurements.overlap_checks == alone->measurements().overlap_checks);
+        most_missed = std::max(most_missed, panel.measurements.missed_collisions);
+    }
+    CHECK(most_missed > 0);  // a run where the steps differ in what they miss
+    // Too small a dt costs work: half the step, twice the pair tests.
+    CHECK(frame.panels[0].measurements.overlap_checks >
+          frame.panels[2].measurements.overlap_checks);
+}
+
+TEST_CASE("--dt list beside what cannot show it: --mode event, --queue, --replay first") {
+    const Scene scene = missing_gas();
+    const auto option_of = [&](const RenderRequest& request) {
+        try {
+            (void)plan_render(request, scene);
+        } catch (const Error& e) {
+            const std::string message = e.what();
+            return message.substr(0, message.find(':'));
+        }
+        return std::string("accepted");
+    };
+    RenderRequest request = dt_list_request();
+    request.mode = "event";
+    CHECK(option_of(request) == "--dt");
+    request = dt_list_request();
+    request.queue = 5;
+    CHECK(option_of(request) == "--dt");
+    request = dt_list_request();
+    request.replay = "first";
+    CHECK(option_of(request) == "--replay");
+    request.replay = "none";
+    CHECK(option_of(request) == "accepted");
+    request = dt_list_request();
+    request.mode = "time";  // the steps alone, without the event-driven panel
+    CHECK(option_of(request) == "accepted");
 }

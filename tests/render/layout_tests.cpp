@@ -91,6 +91,49 @@ TEST_CASE("lesson layout: two square boxes cover >= 55 % of a 16:9 frame, capita
     }
 }
 
+// Issue #29 item 7: a --dt list's 3-5 panels (up to four steps and the event-driven one).
+TEST_CASE(
+    "lesson layout: three to five boxes keep their shape, capitals >= 2.8 %, nothing overlaps") {
+    for (const Size size : {Size{854, 480}, Size{1280, 720}}) {
+        for (int panels = 3; panels <= 5; ++panels) {
+            for (const Box box : {Box{1.0, 1.0, Boundary::walls}, Box{2.0, 1.0, Boundary::walls}}) {
+                INFO(size.width << "x" << size.height << ", " << panels << " panels of "
+                                << box.width << "x" << box.height);
+                LayoutInput in = lesson_input(size, panels);
+                std::fill(in.boxes.begin(), in.boxes.end(), box);
+                in.mark_lines.assign(static_cast<std::size_t>(panels), true);
+                in.clock_unit = true;
+                in.small_plot = true;
+                const FrameLayout layout = compute_layout(in);
+                REQUIRE(layout.panels.size() == static_cast<std::size_t>(panels));
+                CHECK_FALSE(layout.compact);
+                for (std::size_t i = 0; i < layout.panels.size(); ++i) {
+                    const RectF b = layout.panels[i].box;
+                    // The scene's shape, to the pixel the box is rounded to.
+                    CHECK(std::abs(b.width() / b.height() -
+                                   static_cast<float>(box.width / box.height)) < 2.0F / b.height());
+                    CHECK(b.height() >= 0.2F * static_cast<float>(size.height));
+                    for (std::size_t j = i + 1; j < layout.panels.size(); ++j)
+                        CHECK_FALSE(overlaps(grown(b, 2.0F), layout.panels[j].box));
+                    CHECK_FALSE(overlaps(grown(b, 2.0F), layout.column.area));
+                    CHECK(layout.slot(TextRole::title, static_cast<int>(i)) != nullptr);
+                    CHECK(layout.slot(TextRole::figures, static_cast<int>(i)) != nullptr);
+                }
+                const float min_cap = 0.028F * static_cast<float>(size.height);
+                for (const TextSlot& slot : layout.text) {
+                    INFO(text_role_name(slot.role));
+                    CHECK(slot.cap_height() >= min_cap);
+                    CHECK(slot.rect.height() >= slot.pixel_height);
+                }
+                // Every panel's work in the column: the trade-off is read off the bars.
+                CHECK(layout.slots(TextRole::cost_value).size() ==
+                      static_cast<std::size_t>(panels));
+                check_nothing_overlaps_text(layout, size);
+            }
+        }
+    }
+}
+
 TEST_CASE("lesson layout: 20 px capitals at 720p") {
     const FrameLayout layout = compute_layout(lesson_input({1280, 720}));
     CHECK(layout.slot(TextRole::title, 0)->cap_height() >= 20.0F);

@@ -106,7 +106,7 @@ class Renderer {
 
     /// Draws and reads back one frame: width x height RGBA8, rows top-down.
     /// O(N) in the number of discs. Throws collide::Error (input) if a panel has no snapshot or
-    /// there are not 1 or 2 panels.
+    /// there are not 1 to max_frame_panels panels.
     [[nodiscard]] Image render(const FrameContent& frame);
     /// Same, reusing `out`'s storage (resized as needed): no allocation per frame.
     void render(const FrameContent& frame, Image& out);

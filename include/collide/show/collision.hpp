@@ -56,6 +56,18 @@ inline constexpr double divide_tolerance = 1e-6;
 /// are short ("Time-driven: dt = 1/30", "Event-driven": the queue strip names the queue).
 [[nodiscard]] std::string panel_title(bool time_driven, OverlayLevel level,
                                       const EngineOptions& options, bool beside_code = false);
+/// The title of one of the time-driven panels a --dt list compares, at an overlay level: its
+/// step in the full level's words ("Time-driven, dt = 0.01"), short enough for a third of the
+/// frame's width.
+[[nodiscard]] std::string compared_step_title(double dt, OverlayLevel level);
+/// Its title where that does not fit: the step alone ("dt = 0.01"), the swatch saying which
+/// engine.
+[[nodiscard]] std::string compared_step_short_title(double dt);
+/// The event-driven panel's title beside them where its own does not fit.
+inline constexpr const char* event_short_title = "Event-driven";
+/// The cost graphic's label of such a panel: which step's pair tests the bar counts
+/// ("dt = 0.01"; the heading above the bars says what work is).
+[[nodiscard]] std::string compared_cost_label(double dt);
 /// The note under the time-driven figures when dt is longer than a frame (empty otherwise): what
 /// a class sees happen, "Moves only every 2nd frame", or "Moves on 2 of every 3 frames" when a
 /// step is one and a half frames long.
@@ -105,7 +117,8 @@ struct EngineDrift {
 };
 /// The lesson level's energy line, naming the engine when the two panels differ: "Energy
 /// conserved" (one panel), "Both conserve energy", "Time-driven: energy drifts", "Neither
-/// conserves energy" (drift beyond round-off counts as not conserved).
+/// conserves energy" (drift beyond round-off counts as not conserved); beyond two panels (a --dt
+/// list) "All conserve energy" and "None conserves energy".
 [[nodiscard]] std::string energy_line(const std::vector<EngineDrift>& panels);
 
 /// The work of the cost graphic, in one unit on both sides: pair computations. The time-driven

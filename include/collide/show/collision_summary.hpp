@@ -16,6 +16,9 @@ namespace collide::show {
 struct SummaryPanel {
     Measurements measurements;
     bool time_driven = false;
+    /// A --dt list: this time-driven panel's step, its column headed "dt = ..." (0: one
+    /// time-driven panel, headed "Time-driven").
+    double dt = 0.0;
 };
 
 /// The card for `panels` (panel order) at the final `time_text` ("t = 3.000"); `walls`: the box

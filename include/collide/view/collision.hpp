@@ -4,6 +4,7 @@
 /// filled by the presentation layer (src/show, collide_show) from the engines' snapshots and
 /// measurements. Plain values (types layer): no GL, no simulation code.
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -199,7 +200,9 @@ struct PanelContent {
     /// for the spheres (projected positions, the spheres' speeds) and its box is the screen box
     /// the camera sees. nullptr for discs. Not owned; must stay valid during render().
     const SphereView* spheres = nullptr;
-    std::string title;                  ///< e.g. "Event-driven: priority queue of collisions"
+    std::string title;  ///< e.g. "Event-driven: priority queue of collisions"
+    /// Lesson level: drawn instead of `title` where that does not fit its line (empty: none).
+    std::string short_title;
     std::vector<std::string> counters;  ///< full level: lines under the title ("collisions 1234")
     std::vector<Figure> figures;        ///< lesson level: two or three, most important first
     std::string compact_line;           ///< compact lesson form: the one line (failure count)
@@ -235,9 +238,12 @@ struct DriftPoint {
     double drift = 0.0;
 };
 
-/// Everything drawn in one frame. Panels are laid out left to right in the given order (1 or 2
-/// panels; convention: time-driven left, event-driven right). Full level: failure markers are
-/// drawn for any panel whose snapshot carries them (overlapping_pairs, missed_collisions,
+/// The most panels a frame holds: four time-driven steps (a --dt list) beside the event-driven one.
+inline constexpr std::size_t max_frame_panels = 5;
+
+/// Everything drawn in one frame. Panels are laid out left to right in the given order (1 to
+/// max_frame_panels; convention: time-driven left, event-driven right). Full level: failure markers
+/// are drawn for any panel whose snapshot carries them (overlapping_pairs, missed_collisions,
 /// escaped discs); lesson level: the panel's `marks`.
 /// How long a popped event stays highlighted on a panel's queue, in seconds of video (the
 /// presentation layer decides: show::pop_highlight_seconds); 0: not at all.
