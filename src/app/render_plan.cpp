@@ -326,6 +326,12 @@ LessonPlan lesson_plan(const RenderRequest& request, const Scene& scene, const R
     }
     lesson.caption = scene.render.caption.value_or("");
     lesson.captions = captions_within(scene, plan.duration, request.duration.has_value(), notices);
+    if (!plan.time_steps.empty()) {
+        // A --dt list: the scene's captions speak of two panels ("Left: ..."); the video's one
+        // caption says what the panels side by side show.
+        lesson.caption = show::step_list_caption;
+        lesson.captions.clear();
+    }
     // A hold freezes the picture for its caption to be read: only where captions are shown.
     if (plan.render.overlays != render::OverlayLevel::lesson) {
         for (CaptionCue& cue : lesson.captions) cue.hold = 0.0;

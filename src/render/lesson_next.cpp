@@ -46,7 +46,10 @@ void LessonPainter::add_next_collision(const NextCollisionView& next, const Pane
                            static_cast<float>(c.radius * panel.scale));
     const FontAtlas& font = atlas(Font::body);
     const float pad = std::round(0.2F * body);
-    const float w = font.text_width(next.text) + 2.0F * pad;
+    // The whole line where the box has room for it (narrow boxes: a --dt list's), else the short.
+    const bool whole = font.text_width(next.text) + 2.0F * pad <= inside.width();
+    const std::string& text = whole || next.short_text.empty() ? next.text : next.short_text;
+    const float w = font.text_width(text) + 2.0F * pad;
     const float h = std::round(body * 1.05F);
     const float margin = 0.25F * body;
     const PointF middle = panel.to_pixels(next.label_at, box);
@@ -81,7 +84,7 @@ void LessonPainter::add_next_collision(const NextCollisionView& next, const Pane
         }
     }
     labels_.clear();
-    add_plate_label(Font::body, at, next.text, color, inside);
+    add_plate_label(Font::body, at, text, color, inside);
 }
 
 }  // namespace collide::render

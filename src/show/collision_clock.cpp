@@ -53,14 +53,15 @@ std::string lesson_clock(double t, const FrameClock& clock) {
 }
 }  // namespace
 
-std::string next_collision_words(double to_go, const FrameClock& clock) {
+std::string next_collision_words(double to_go, const FrameClock& clock, bool short_form) {
+    const std::string lead = short_form ? "in " : "next hit in ";
     // In the units and decimals of the clock beside it, so that a class can add the two.
-    if (!lesson_decimals_apply(clock)) return fmt::format("next hit in {:.3g}", to_go);
+    if (!lesson_decimals_apply(clock)) return lead + fmt::format("{:.3g}", to_go);
     const int decimals = lesson_decimals(clock);
     const double smallest = std::pow(10.0, -decimals);
     // "0.00" would say the hit is now: below the last decimal it is "< 0.01".
-    if (to_go < 0.5 * smallest) return fmt::format("next hit in < {:.{}f}", smallest, decimals);
-    return fmt::format("next hit in {:.{}f}", to_go, decimals);
+    if (to_go < 0.5 * smallest) return lead + fmt::format("< {:.{}f}", smallest, decimals);
+    return lead + fmt::format("{:.{}f}", to_go, decimals);
 }
 
 std::string clock_text(double t, const FrameClock& clock, double speed, OverlayLevel level) {

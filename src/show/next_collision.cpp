@@ -48,6 +48,7 @@ NextCollisionView next_collision_view(const CollisionRecord& next, const Snapsho
             return {};
     }
     view.text = next_collision_words(to_go, clock);
+    view.short_text = next_collision_words(to_go, clock, true);
     return view;
 }
 

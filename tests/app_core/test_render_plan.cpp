@@ -565,6 +565,9 @@ TEST_CASE("--dt list: one time-driven panel per step, each missing what its engi
     CHECK(plan.time_engine.dt == 0.01);        // the work limits' estimate: the costliest
     CHECK(plan.replay == ReplayChoice::none);  // each panel fails at its own steps
     CHECK(plan.lesson.step_note.empty());      // no one note for all the panels
+    // The scene's captions speak of two panels ("Left: ..."): the list's own caption instead.
+    CHECK(plan.lesson.caption == show::step_list_caption);
+    CHECK(plan.lesson.captions.empty());
     FrameSource source(scene, plan);
     SimFrame frame;
     for (std::int64_t k = 0; k < plan.timeline.frame_count(); ++k) frame = source.frame(k);

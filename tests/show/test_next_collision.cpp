@@ -169,6 +169,8 @@ TEST_CASE("next collision: its words use the lesson clock's decimals") {
     CHECK(next_collision_words(12.0, clock) == "next hit in 12.00");
     CHECK(next_collision_words(0.001, clock) == "next hit in < 0.01");
     CHECK(next_collision_words(0.0, clock) == "next hit in < 0.01");
+    CHECK(next_collision_words(0.4213, clock, true) == "in 0.42");  // a narrow box's
+    CHECK(next_collision_words(0.0, clock, true) == "in < 0.01");
     const FrameClock slow = clock_of(300, 0.2);  // one decimal
     CHECK(next_collision_words(0.37, slow) == "next hit in 0.4");
 }

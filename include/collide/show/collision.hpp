@@ -63,6 +63,9 @@ inline constexpr double divide_tolerance = 1e-6;
 /// Its title where that does not fit: the step alone ("dt = 0.01"), the swatch saying which
 /// engine.
 [[nodiscard]] std::string compared_step_short_title(double dt);
+/// The caption of a --dt list's video, in place of the scene's (which speak of two panels).
+inline constexpr const char* step_list_caption =
+    "Longer steps miss more collisions; shorter ones cost more work";
 /// The event-driven panel's title beside them where its own does not fit.
 inline constexpr const char* event_short_title = "Event-driven";
 /// The cost graphic's label of such a panel: which step's pair tests the bar counts
@@ -219,7 +222,9 @@ inline constexpr std::size_t queue_array_slots = 6;
                                                     const FrameClock& clock);
 /// The words of the next collision's label for a time to go of `to_go`, with the decimals of the
 /// lesson clock (clock_text) of `clock`.
-[[nodiscard]] std::string next_collision_words(double to_go, const FrameClock& clock);
+/// `short_form`: "in 0.42", for a box too narrow for the whole line.
+[[nodiscard]] std::string next_collision_words(double to_go, const FrameClock& clock,
+                                               bool short_form = false);
 
 /// The queue strip's words for `queue` at simulation time `now` (the snapshot's): the fast engine
 /// (one event per disc) re-predicts a stale event, the classic engine throws it away; each event

@@ -166,6 +166,7 @@ struct BoxCircle {
 struct NextCollisionView {
     std::vector<BoxLine> lines;         ///< empty: nothing drawn
     std::string text;                   ///< "next hit in 0.42"
+    std::string short_text;             ///< "in 0.42": where the box is too narrow for `text`
     Vec2 label_at;                      ///< the line's middle: the label's place when it is free
     std::vector<BoxCircle> keep_clear;  ///< the colliding discs: the label never covers them
     [[nodiscard]] bool empty() const noexcept { return lines.empty(); }
