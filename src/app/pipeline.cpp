@@ -152,8 +152,9 @@ FrameSource::FrameSource(const Scene& scene, const RenderPlan& plan, const std::
         panels_.push_back(std::move(panel));
         return panels_.back();
     };
-    // --code with both panels: they share what the listing leaves, so their titles are short.
-    const bool narrow = plan.code && plan.mode == RenderMode::both;
+    // --code: the panels share what the listing leaves, so their titles are short (one panel
+    // alone too: its text stops at the column beside it).
+    const bool narrow = plan.code;
     if (plan.mode != RenderMode::event && plan.time_steps.empty()) {
         Panel& panel =
             add(plan.time_engine, true, show::panel_title(true, level, plan.time_engine, narrow));
