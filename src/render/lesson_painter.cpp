@@ -202,12 +202,20 @@ void LessonPainter::add_panel_text(std::size_t index, const PanelContent& conten
                   palette_.title, Align::left, x);
     }
     const TextSlot* how = layout_.slot(TextRole::how, p);
-    bool how_taken = false;
+    std::optional<float> how_taken;
     if (const TextSlot* slot = layout_.slot(TextRole::figures, p)) {
         how_taken = add_figures(content.figures, *slot, how);
     }
-    if (how != nullptr && !how_taken && !content.how.empty()) {
-        draw_text(Font::body, *how, content.how, palette_.text);
+    if (how != nullptr && !content.how.empty()) {
+        if (!how_taken) {
+            draw_text(Font::body, *how, content.how, palette_.text);
+        } else {
+            // Failures that continued on the how line come first; the why follows them when it
+            // fits whole (brownian: "44 left the box   Each step: all N²/2 pairs").
+            const float x = *how_taken + std::round(0.6F * body_font_->pixel_height());
+            if (x + body_font_->text_width(content.how) <= how->rect.x1)
+                draw_text(Font::body, *how, content.how, palette_.text, Align::left, x);
+        }
     }
     if (const TextSlot* slot = layout_.slot(TextRole::note, p); slot && !content.note.empty()) {
         float right = slot->rect.x1;
@@ -257,8 +265,8 @@ std::vector<const Figure*> figures_within(const std::vector<Figure>& figures, fl
 }
 }  // namespace
 
-bool LessonPainter::add_figures(const std::vector<Figure>& figures, const TextSlot& slot,
-                                const TextSlot* overflow) {
+std::optional<float> LessonPainter::add_figures(const std::vector<Figure>& figures,
+                                                const TextSlot& slot, const TextSlot* overflow) {
     // Headline values while every failure fits the row that way; else body-sized values, and
     // failures that still do not fit continue on the how line (`overflow`), which they take.
     const float gap = head_font_->pixel_height();
@@ -302,7 +310,8 @@ bool LessonPainter::add_figures(const std::vector<Figure>& figures, const TextSl
         record_text(*row, label, true);
         x += gap;
     }
-    return overflowed;
+    if (!overflowed) return std::nullopt;
+    return x - gap;
 }
 
 }  // namespace collide::render

@@ -43,9 +43,10 @@ class LessonPainter : public Painter {
     void finish_frame(const FrameContent& frame) override;
 
     void choose_colormap_range();
-    /// The headline figures in `slot`; true when some continued on `overflow` (the how line).
-    bool add_figures(const std::vector<Figure>& figures, const TextSlot& slot,
-                     const TextSlot* overflow);
+    /// The headline figures in `slot`; when some continued on `overflow` (the how line), the x
+    /// where they end there, else nothing.
+    std::optional<float> add_figures(const std::vector<Figure>& figures, const TextSlot& slot,
+                                     const TextSlot* overflow);
     /// A panel's mark legend on its own line under the figures (the look: Painter).
     void add_mark_legend(std::size_t index, const PanelContent& content);
     // The column and the title card (lesson_column.cpp).

@@ -220,7 +220,7 @@ std::string work_ratio(double time_work, double event_work) {
 namespace {
 /// Why an engine's work grows as it does, in a line under its figures.
 std::string how_it_works(bool time_driven, EngineKind engine) {
-    if (time_driven) return "Each step tests all N\u00b2/2 pairs";
+    if (time_driven) return "Each step: all N\u00b2/2 pairs";
     if (engine == EngineKind::classic) return "Each event: 2N pairs, log N queue";
     return "Each event: a few pairs, log N queue";
 }

@@ -577,6 +577,25 @@ TEST_CASE("the cost graphic's numbers and ratio on screen are the engines' count
     CHECK(std::abs(shown - exact) <= 0.005 * exact + 0.5);
 }
 
+// Failures that did not fit the figures row continued on the how line and took it: brownian's
+// time-driven panel lost its why ("Each step: all N²/2 pairs") once discs had left the box.
+TEST_CASE("the how line keeps its why after failures that continued on it (issue #28 item 4)") {
+    TempDir dir("how_line");
+    const fs::path json = dir.path / "layout.json";
+    const auto r = run_collide("thumbnail brownian --at 4 --size 1280x720 -o " +
+                               (dir.path / "t.png").string() + " --layout-json " + json.string());
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    const nlohmann::json layout = nlohmann::json::parse(read_bytes(json));
+    std::string how;
+    for (const auto& slot : layout["text"]) {
+        if (slot["role"] == "how" && slot["panel"] == 0)
+            for (const auto& t : slot["text"]) how += t.get<std::string>() + "|";
+    }
+    CAPTURE(how);
+    CHECK(how.find(" left the box|") != std::string::npos);  // a failure continued here
+    CHECK(how.find("Each step: all N\u00b2/2 pairs|") != std::string::npos);
+}
+
 // The queue strip takes the how line that failures continue on, and insets the boxes: the
 // time-driven row under its box had room for "0 missed" only, and "overlapping" was dropped.
 TEST_CASE("render --queue: every failure kind stays among the figures (issue #28 item 2)") {
