@@ -181,6 +181,12 @@ class Mp4Sink final : public FrameSink {
         set_private_option("crf", std::to_string(crf));
         if (options_.codec == VideoCodec::hevc)
             set_private_option("x265-params", "log-level=error");
+        // x264's look-ahead thread decides frame types over the frames that have arrived by
+        // then, so the bytes followed the renderer's pace (under load, one render in four
+        // differed). In the encoding thread it sees the same frames every run, for about 15 % more
+        // wall time on 2 cores and the same CPU time (docs/benchmarks.md, Video).
+        if (options_.codec == VideoCodec::h264)
+            set_private_option("x264-params", "sync-lookahead=0");
     }
 
     void set_private_option(const char* name, const std::string& value) {

@@ -4,6 +4,9 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <thread>
 
 #include "../support/skip.hpp"
 #include "collide/error.hpp"
@@ -44,6 +47,40 @@ void encode_pattern(const VideoOptions& options, int count) {
 std::ptrdiff_t index_of(const std::vector<std::string>& boxes, const std::string& type) {
     const auto found = std::find(boxes.begin(), boxes.end(), type);
     return found == boxes.end() ? -1 : found - boxes.begin();
+}
+
+/// Position `u` folded back into [0, size], as a disc bouncing between two walls.
+double fold(double u, double size) {
+    u = std::fmod(u, 2 * size);
+    return u < size ? u : 2 * size - u;
+}
+
+/// What a render looks like to the encoder: a flat dark box with 20 small discs drifting across
+/// it, slowly. Its frame types depend on how many frames the look-ahead sees (test_pattern's
+/// fast motion does not show the difference).
+collide::Image drifting_discs(int width, int height, int index) {
+    collide::Image image(width, height);
+    for (std::size_t p = 0; p < image.rgba.size(); p += 4) {
+        image.rgba[p] = 30;
+        image.rgba[p + 1] = 32;
+        image.rgba[p + 2] = 44;
+        image.rgba[p + 3] = 255;
+    }
+    const double r = height * 0.04;
+    for (int disc = 0; disc < 20; ++disc) {
+        const double cx = fold(width * 0.05 * disc + (0.7 + 0.13 * disc) * index, width);
+        const double cy = fold(height * 0.37 * disc + (0.9 - 0.08 * disc) * index, height);
+        for (int y = std::max(0, int(cy - r)); y <= std::min(height - 1, int(cy + r)); ++y) {
+            for (int x = std::max(0, int(cx - r)); x <= std::min(width - 1, int(cx + r)); ++x) {
+                if ((x - cx) * (x - cx) + (y - cy) * (y - cy) >= r * r) continue;
+                std::uint8_t* pixel = image.pixel(x, y);
+                pixel[0] = 230;
+                pixel[1] = 160;
+                pixel[2] = 50;
+            }
+        }
+    }
+    return image;
 }
 
 }  // namespace
@@ -262,4 +299,31 @@ TEST_CASE("chapters: out of order, empty or untitled ones are refused, naming th
     options.chapters = {{0.0, 1.0, ""}};
     CHECK_THROWS_WITH_AS(options.validate(), doctest::Contains("video.chapters[0].title"),
                          collide::Error);
+}
+
+TEST_CASE("the same frames give the same bytes whether they come in a burst or one at a time") {
+    // x264's threaded look-ahead decided frame types over whatever frames had arrived, so its
+    // choices followed the renderer's pace: under load the same render gave different bytes.
+    // Encoded in step with the caller, the output depends on the frames alone.
+    ScratchDirectory dir;
+    constexpr int width = 320;
+    constexpr int height = 180;
+    constexpr int count = 450;  // 30 s at 15 fps: past x264's 250-frame key interval
+    const VideoOptions burst = mp4_options(dir / "burst.mp4", width, height);
+    {
+        VideoWriter writer(burst);
+        for (int i = 0; i < count; ++i) writer.write(drifting_discs(width, height, i));
+        writer.finish();
+    }
+    const VideoOptions paced = mp4_options(dir / "paced.mp4", width, height);
+    {
+        VideoWriter writer(paced);
+        for (int i = 0; i < count; ++i) {
+            writer.write(drifting_discs(width, height, i));
+            // Uneven pauses: the encoder catches up on some frames and not on others.
+            if (i % 5 == 0) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        }
+        writer.finish();
+    }
+    CHECK(read_bytes(burst.path) == read_bytes(paced.path));
 }
