@@ -219,6 +219,8 @@ void time_engine(const BenchOptions& options, const EngineOptions& engine_option
         {"stale_fraction", pops > 0 ? delta(m1.queue.stale_pops, m0.queue.stale_pops) / pops : 0.0},
         {"cell_crossings_per_collision",
          delta(m1.cell_crossings, m0.cell_crossings) / timed_collisions},
+        {"list_rebuilds_per_collision",
+         delta(m1.list_rebuilds, m0.list_rebuilds) / timed_collisions},
         {"pq_max_size", m1.queue.max_size},
         {options.dim == 3 ? "engine_bytes_per_sphere" : "engine_bytes_per_disc",
          static_cast<double>(m1.engine_bytes) / n},

@@ -18,6 +18,7 @@ std::vector<ReportField> report_fields(const Measurements& m) {
         {"collisions_xwall", m.collisions_xwall},
         {"collisions_ywall", m.collisions_ywall},
         {"cell_crossings", m.cell_crossings},
+        {"list_rebuilds", m.list_rebuilds},
         {"predictions", m.predictions},
         {"pq_pushes", m.queue.pushes},
         {"pq_pops", m.queue.pops},

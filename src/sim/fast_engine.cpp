@@ -26,6 +26,14 @@ constexpr double cell_margin = 1e-9;
 /// cells one diameter wide), and it stops dilute scenes from allocating millions of empty cells.
 constexpr double max_cells_per_disc = 2.0;
 
+/// The neighbour lists' shell, as a fraction of the largest diameter (3D, see fast_engine.hpp):
+/// thinner shells mean shorter lists but more rebuilds. 0.5 was the fastest of 0.2 ... 0.8 at
+/// packing 0.45 (docs/benchmarks.md, spheres).
+constexpr double list_shell_per_diameter = 0.5;
+
+/// Slots per list to start with; lists that outgrow them double every list's slots.
+constexpr std::uint32_t initial_list_slots = 16;
+
 /// Cells along one axis: as many as fit with cells at least `min_cell` wide.
 std::uint32_t fit_cells(double extent, double min_cell) {
     if (!(min_cell > 0.0)) return 1;
@@ -56,6 +64,7 @@ BasicFastEngine<D>::BasicFastEngine(const SceneType& scene)
       periodic_(scene.box.boundary == Boundary::periodic) {
     choose_grid(scene);
     place_discs(scene);
+    if (lists()) build_all_lists();
     instant_limit_ = instant_collision_limit(p_.size());
     for (std::uint32_t i = 0; i < p_.size(); ++i) predict(i);
 }
@@ -99,7 +108,9 @@ template <int D>
 void BasicFastEngine<D>::choose_grid(const SceneType& scene) {
     const auto& particles = Space::particles(scene);
     std::tie(big_threshold_, small_radius_max_) = split_radii(particles);
-    const double min_cell = 2.0 * small_radius_max_ * (1.0 + cell_margin);
+    choose_lists(scene);
+    // Lists mode: the grid holds list centres, which pairs within r_i + r_j + shell may have.
+    const double min_cell = (2.0 * small_radius_max_ + shell_) * (1.0 + cell_margin);
     std::array<std::uint32_t, D> n{};
     for (int k = 0; k < D; ++k) {
         n[k] = fit_cells(axis(extent_, k), min_cell);
@@ -132,6 +143,30 @@ void BasicFastEngine<D>::choose_grid(const SceneType& scene) {
         total *= n_[k];
     }
     head_.assign(total, no_disc);
+}
+
+template <int D>
+void BasicFastEngine<D>::choose_lists(const SceneType& scene) {
+    lists_ = false;
+    shell_ = 0.0;
+    if constexpr (D == 3) {
+        if (!std::isinf(big_threshold_) || !(small_radius_max_ > 0.0)) return;
+        const double shell = list_shell_per_diameter * 2.0 * small_radius_max_;
+        if (periodic_) {
+            // Three cells of centres per axis, and so the nearest image of a listed pair is
+            // unambiguous (the box is wider than twice the 2 r + 2 shell a pair spans).
+            const double min_cell = (2.0 * small_radius_max_ + shell) * (1.0 + cell_margin);
+            const Vec extent = Space::extent(scene.box);
+            for (int k = 0; k < D; ++k) {
+                if (fit_cells(axis(extent, k), min_cell) < 3) return;
+            }
+        }
+        lists_ = true;
+        shell_ = shell;
+        // A hair inside shell / 2: a list still holds every pair that can touch when the
+        // rebuild's time is rounded a little late.
+        expiry_ = 0.5 * shell * (1.0 - 1e-9);
+    }
 }
 
 template <int D>
@@ -245,6 +280,7 @@ void BasicFastEngine<D>::place_discs(const SceneType& scene) {
     p_.resize(n);
     cold_.assign(n, Cold{});
     image_.assign(n, Image{});
+    if (lists()) centre_.resize(n);
     start_.resize(n);
     heap_.reserve_handles(n);
     // The key and handle arrays are reserved but untouched yet (the position map is not).
@@ -263,6 +299,7 @@ void BasicFastEngine<D>::place_discs(const SceneType& scene) {
         }
         const std::uint32_t cell = cell_of(pos);
         p_[i].cell = cell;
+        if (lists()) centre_[i] = pos;
         if (is_big(i)) {
             big_.push_back(i);
         } else {
@@ -322,7 +359,11 @@ void BasicFastEngine<D>::process(std::uint32_t i, const Key& key) {
             process_wall(i, key.kind(), key.t);
             return;
         case EventKind::cell:
-            process_cell(i, key.b());
+            if (lists()) {
+                process_rebuild(i);
+            } else {
+                process_cell(i, key.b());
+            }
             return;
     }
 }
@@ -414,6 +455,11 @@ void BasicFastEngine<D>::predict(std::uint32_t i) {
     // Pairs first, bounded only by each other (not by the wall and crossing times): the earliest
     // pair is remembered for the crossings to come, so it must be exact.
     Key pair = Key::make(never, i, no_disc, EventKind::pair);
+    if (lists()) {
+        scan_neighbour_list(i, pi, xi, pair);
+        schedule(i, pi, xi, pair);
+        return;
+    }
     if (is_big(i)) {
         scan_ring(i, pi, xi, pair);
     } else {
@@ -488,6 +534,10 @@ void BasicFastEngine<D>::consider_walls_and_cells(std::uint32_t i, const Particl
                   static_cast<EventKind>(static_cast<int>(EventKind::xwall) + k), no_disc);
         }
         core_.counters().predictions += D;
+    }
+    if (lists()) {
+        offer(time_to_expiry(i, pi, xi), EventKind::cell, 0);
+        return;
     }
     const Coords c = coords_of(pi.cell);
     // Walled boxes have no crossing out of the outer cells (the wall comes first).
@@ -708,6 +758,166 @@ void BasicFastEngine<D>::scan_ring(std::uint32_t i, const Particle& pi, Vec xi, 
 }
 
 // ------------------------------------------------------------------------------------------
+// Neighbour lists (3D; see fast_engine.hpp).
+
+template <int D>
+void BasicFastEngine<D>::build_all_lists() {
+    list_cap_ = initial_list_slots;
+    nbr_.assign(p_.size() * list_cap_, no_disc);
+    nbr_count_.assign(p_.size(), 0);
+    for (std::uint32_t i = 0; i < p_.size(); ++i) gather_neighbours(i, true);
+}
+
+template <int D>
+void BasicFastEngine<D>::gather_neighbours(std::uint32_t i, bool only_after) {
+    const Particle& pi = p_[i];
+    const Vec ci = centre_[i];
+    Coords lo;
+    Coords hi;
+    lo.fill(-1);
+    hi.fill(1);
+    for_each_cell(pi, lo, hi, [&](std::uint32_t first, Vec shift) {
+        for (std::uint32_t j = first; j != no_disc; j = p_[j].next) {
+            if (j == i || (only_after && j < i)) continue;
+            const double reach = pi.r + p_[j].r + shell_;
+            if (norm2(centre_[j] + shift - ci) <= reach * reach) {
+                add_neighbour(i, j);
+                add_neighbour(j, i);
+            }
+        }
+    });
+}
+
+template <int D>
+void BasicFastEngine<D>::add_neighbour(std::uint32_t i, std::uint32_t j) {
+    if (nbr_count_[i] == list_cap_) {
+        // Rare (a crowd denser than the start): double every list's slots, keeping the entries.
+        const std::uint32_t cap = 2 * list_cap_;
+        std::vector<std::uint32_t> wider(p_.size() * cap, no_disc);
+        for (std::size_t k = 0; k < p_.size(); ++k) {
+            std::copy_n(nbr_.begin() + static_cast<std::ptrdiff_t>(k * list_cap_), nbr_count_[k],
+                        wider.begin() + static_cast<std::ptrdiff_t>(k * cap));
+        }
+        nbr_ = std::move(wider);
+        list_cap_ = cap;
+    }
+    nbr_[std::size_t{i} * list_cap_ + nbr_count_[i]++] = j;
+}
+
+template <int D>
+void BasicFastEngine<D>::remove_neighbour(std::uint32_t i, std::uint32_t j) noexcept {
+    std::uint32_t* list = &nbr_[std::size_t{i} * list_cap_];
+    std::uint32_t& count = nbr_count_[i];
+    for (std::uint32_t k = 0; k < count; ++k) {
+        if (list[k] == j) {
+            list[k] = list[--count];  // order does not matter: a scan's result is order-free
+            return;
+        }
+    }
+}
+
+template <int D>
+void BasicFastEngine<D>::process_rebuild(std::uint32_t i) {
+    // A rebuild far from the particle's latest event starts a new instant for the jam count.
+    if (!same_instant(now_ - p_[i].t, p_[i].v, p_[i].r)) cold_[i].instant_collisions = 0;
+    advance_disc(i);
+    Particle& pi = p_[i];
+    const std::uint32_t* list = &nbr_[std::size_t{i} * list_cap_];
+    for (std::uint32_t k = 0; k < nbr_count_[i]; ++k) remove_neighbour(list[k], i);
+    nbr_count_[i] = 0;
+    if (periodic_) {
+        // The centre goes back into the box: the particle never strays more than shell / 2.
+        for (int k = 0; k < D; ++k) {
+            double& x = axis(pi.x, k);
+            if (x < 0.0) {
+                x += axis(extent_, k);
+                --image_[i][k];
+            } else if (x >= axis(extent_, k)) {
+                x -= axis(extent_, k);
+                ++image_[i][k];
+            }
+        }
+    }
+    centre_[i] = pi.x;
+    unlink(i);
+    link(i, cell_of(pi.x));
+    gather_neighbours(i, false);
+    ++core_.counters().list_rebuilds;
+    predict(i);
+}
+
+template <int D>
+void BasicFastEngine<D>::scan_neighbour_list(std::uint32_t i, const Particle& pi, Vec xi,
+                                             Key& best) {
+    const std::uint32_t* list = &nbr_[std::size_t{i} * list_cap_];
+    const std::uint32_t count = nbr_count_[i];
+    for (std::uint32_t k = 0; k < count; ++k) __builtin_prefetch(&p_[list[k]]);
+    for (std::uint32_t k = 0; k < count; ++k) {
+        const std::uint32_t j = list[k];
+        Vec shift{};
+        if (periodic_) {
+            // The nearest image: a listed pair spans at most 2 r + 2 shell, under half the box.
+            for (int a = 0; a < D; ++a) {
+                const double d = axis(p_[j].x, a) - axis(pi.x, a);
+                const double half = 0.5 * axis(extent_, a);
+                axis(shift, a) = d > half ? -axis(extent_, a) : d < -half ? axis(extent_, a) : 0.0;
+            }
+        }
+        consider_pair(i, pi, xi, j, shift, best);
+    }
+}
+
+template <int D>
+double BasicFastEngine<D>::time_to_expiry(std::uint32_t i, const Particle& pi,
+                                          Vec xi) const noexcept {
+    const Vec d = xi - centre_[i];
+    const double a = dot(pi.v, pi.v);
+    if (!(a > 0.0)) return never;
+    const double b = dot(d, pi.v);
+    const double c = dot(d, d) - expiry_ * expiry_;
+    if (!(c < 0.0)) return 0.0;  // at the edge already (rounding): rebuild now
+    const double root = std::sqrt(b * b - a * c);
+    // The positive root of a t^2 + 2 b t + c = 0, without cancellation when b > 0.
+    return b > 0.0 ? -c / (b + root) : (root - b) / a;
+}
+
+template <int D>
+bool BasicFastEngine<D>::check_lists() const {
+    const std::size_t n = p_.size();
+    if (centre_.size() != n || nbr_count_.size() != n || nbr_.size() != n * list_cap_) return false;
+    const auto listed = [&](std::uint32_t i, std::uint32_t j) {
+        const std::uint32_t* list = &nbr_[std::size_t{i} * list_cap_];
+        return std::find(list, list + nbr_count_[i], j) != list + nbr_count_[i];
+    };
+    for (std::uint32_t i = 0; i < n; ++i) {
+        // Within shell / 2 of its centre, up to rounding.
+        if (norm(position_at_now(i) - centre_[i]) > expiry_ * (1.0 + 1e-6)) return false;
+        const std::uint32_t* list = &nbr_[std::size_t{i} * list_cap_];
+        for (std::uint32_t k = 0; k < nbr_count_[i]; ++k) {
+            const std::uint32_t j = list[k];
+            if (j >= n || j == i || !listed(j, i)) return false;  // symmetric, no self
+            if (std::count(list, list + nbr_count_[i], j) != 1) return false;
+        }
+        // Every pair whose centres are near is listed (the cells of centres hold them all).
+        Coords lo;
+        Coords hi;
+        lo.fill(-1);
+        hi.fill(1);
+        bool complete = true;
+        for_each_cell(p_[i], lo, hi, [&](std::uint32_t first, Vec shift) {
+            for (std::uint32_t j = first; j != no_disc; j = p_[j].next) {
+                const double reach = (p_[i].r + p_[j].r + shell_) * (1.0 - 1e-9);
+                if (j != i && norm2(centre_[j] + shift - centre_[i]) <= reach * reach &&
+                    !listed(i, j))
+                    complete = false;
+            }
+        });
+        if (!complete) return false;
+    }
+    return true;
+}
+
+// ------------------------------------------------------------------------------------------
 // Bookkeeping.
 
 template <int D>
@@ -850,6 +1060,7 @@ std::uint64_t BasicFastEngine<D>::bytes() const noexcept {
     total += cold_.capacity() * sizeof(Cold);
     total += (big_.capacity() + head_.capacity() + scene_index_->capacity()) * u32;
     total += image_.capacity() * sizeof(Image) + start_.capacity() * sizeof(Vec);
+    total += centre_.capacity() * sizeof(Vec) + (nbr_.capacity() + nbr_count_.capacity()) * u32;
     total += heap_.bytes();
     total += core_.bytes();
     return total;
@@ -881,8 +1092,9 @@ bool BasicFastEngine<D>::check_invariants() const {
             (heap_.key(i).t != ci.pair_t || heap_.key(i).b() != ci.pair_partner)) {
             return false;
         }
-        // The centre lies in its cell, up to the rounding of the crossing times.
-        const Vec pos = position_at_now(i);
+        // The centre (lists: the list's centre) lies in its cell, up to the rounding of the
+        // crossing times.
+        const Vec pos = lists() ? centre_[i] : position_at_now(i);
         const Coords c = coords_of(p_[i].cell);
         double slack = 0.0;
         for (int k = 0; k < D; ++k) slack += axis(cw_, k);
@@ -893,7 +1105,7 @@ bool BasicFastEngine<D>::check_invariants() const {
             if (axis(pos, k) < lo - slack || axis(pos, k) > hi + slack) return false;
         }
     }
-    return true;
+    return !lists() || check_lists();
 }
 
 template class BasicFastEngine<2>;

@@ -226,14 +226,17 @@ TEST_CASE("3D fast engine: energy and momentum conserved to round-off, no overla
             eta = 0.4 / (1.2 * 1.2 * 1.2);
         }
         FastSphereEngine engine(scene);
+        CHECK(engine.uses_neighbour_lists());
         const Measurements m0 = engine.measurements();
         CHECK(m0.temperature == doctest::Approx(1.0).epsilon(1e-12));
         for (int k = 1; k <= 10; ++k) {
             engine.advance_to(0.02 * k);
-            CHECK(engine.check_invariants());
+            CHECK(engine.check_invariants());  // lists symmetric and complete, heap, cells
         }
         const Measurements m = engine.measurements();
         CHECK(m.collisions_pair > 1000);
+        CHECK(m.list_rebuilds > 100);
+        CHECK(m.cell_crossings == 0);
         CHECK(std::abs(m.kinetic_energy - m0.kinetic_energy) <= 1e-12 * m0.kinetic_energy);
         CHECK(m.max_overlap <= 1e-9 * 2.0 * scene.spheres[0].radius);
         CHECK(m.packing_fraction == doctest::Approx(eta).epsilon(1e-12));
@@ -244,6 +247,42 @@ TEST_CASE("3D fast engine: energy and momentum conserved to round-off, no overla
             CHECK(m.collisions_wall > 0);
         }
     }
+}
+
+TEST_CASE(
+    "3D fast engine: a crystal's longer lists grow, and the caged spheres keep the invariants") {
+    // At packing 0.7 a sphere has 18 centres within 1.5 diameters (the first two FCC shells):
+    // more than a list's first 16 slots.
+    FastSphereEngine engine(fcc_fluid(4, 0.7, 5));
+    REQUIRE(engine.uses_neighbour_lists());
+    CHECK(engine.list_slots() == 32);  // doubled from 16 while the lists were first built
+    const Measurements m0 = engine.measurements();
+    for (int k = 1; k <= 5; ++k) {
+        engine.advance_to(0.01 * k);
+        CHECK(engine.check_invariants());
+    }
+    const Measurements m = engine.measurements();
+    CHECK(m.collisions_pair > 1000);
+    CHECK(std::abs(m.kinetic_energy - m0.kinetic_energy) <= 1e-12 * m0.kinetic_energy);
+    CHECK(m.max_overlap <= 1e-9);
+}
+
+TEST_CASE("3D fast engine: a box too narrow for the lists' cells runs on cell crossings") {
+    // 4 diameters wide: three cells of one diameter fit, three of 1.5 do not.
+    SphereScene scene;
+    scene.box = Box3{0.4, 0.4, 0.4, Boundary::periodic};
+    scene.spheres = {sphere({0.05, 0.2, 0.2}, {1.0, 0.1, 0.0}, 0.05),
+                     sphere({0.25, 0.21, 0.2}, {-1.0, 0.0, 0.2}, 0.05),
+                     sphere({0.2, 0.05, 0.3}, {0.0, 0.7, -0.4}, 0.05)};
+    FastSphereEngine engine(scene);
+    CHECK_FALSE(engine.uses_neighbour_lists());
+    engine.advance_to(2.0);
+    CHECK(engine.check_invariants());
+    const Measurements m = engine.measurements();
+    CHECK(m.collisions_pair > 0);
+    CHECK(m.cell_crossings > 0);
+    CHECK(m.list_rebuilds == 0);
+    CHECK(m.max_overlap <= 1e-12);
 }
 
 TEST_CASE("3D fast engine: the same scene gives the same collisions (determinism)") {

@@ -106,6 +106,7 @@ struct EngineCounters {
     std::uint64_t collisions_ywall = 0;
     std::uint64_t collisions_zwall = 0;  ///< 3D only
     std::uint64_t cell_crossings = 0;    ///< fast engine only
+    std::uint64_t list_rebuilds = 0;     ///< fast engine with neighbour lists (3D) only
     std::uint64_t predictions = 0;       ///< collision-time computations (pair + wall)
     QueueStats queue;                    ///< event-driven engines only
     ImpulseTally impulses;               ///< for pressure
@@ -204,7 +205,8 @@ class BasicEngineCore {
         m.collisions_zwall = c.collisions_zwall;
         m.collisions_wall = c.collisions_xwall + c.collisions_ywall + c.collisions_zwall;
         m.cell_crossings = c.cell_crossings;
-        m.events = m.collisions_pair + m.collisions_wall + m.cell_crossings;
+        m.list_rebuilds = c.list_rebuilds;
+        m.events = m.collisions_pair + m.collisions_wall + m.cell_crossings + m.list_rebuilds;
         m.predictions = c.predictions;
         m.queue = c.queue;
         fill_thermodynamics<D>(m, velocities, masses, radii, box_, c.impulses);

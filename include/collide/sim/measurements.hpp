@@ -32,6 +32,7 @@ struct Measurements {
     std::uint64_t collisions_ywall = 0;  ///< of collisions_wall: bottom/top walls
     std::uint64_t collisions_zwall = 0;  ///< of collisions_wall: front/back walls (3D only)
     std::uint64_t cell_crossings = 0;    ///< fast engine: cell-crossing events (part of `events`)
+    std::uint64_t list_rebuilds = 0;     ///< fast engine, 3D: neighbour-list rebuilds (`events`)
     QueueStats queue;
 
     // --- physics (k_B = 1)
