@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages collide needs, only those that are missing (silent and fast
-# when everything is there). Usage: scripts/setup.sh [--test]   (--test adds ffmpeg, xvfb and chromium)
+# when everything is there). Usage: scripts/setup.sh [--test]   (--test adds ffmpeg, xvfb, chromium
+# and file: CPack's DEB generator needs `file` to find the binaries whose libraries
+# dpkg-shlibdeps reads, and a minimal Debian 12 image has none)
 set -euo pipefail
 
 packages=(
@@ -11,7 +13,7 @@ packages=(
     libcli11-dev libtomlplusplus-dev libfmt-dev nlohmann-json3-dev doctest-dev libbenchmark-dev
 )
 if [[ "${1:-}" == "--test" ]]; then
-    packages+=(ffmpeg xvfb xauth clang-format chromium)
+    packages+=(ffmpeg xvfb xauth clang-format chromium file)
 fi
 
 missing=()
