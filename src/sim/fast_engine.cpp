@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -30,6 +31,12 @@ constexpr double max_cells_per_disc = 2.0;
 /// thinner shells mean shorter lists but more rebuilds. 0.5 was the fastest of 0.2 ... 0.8 at
 /// packing 0.45 (docs/benchmarks.md, spheres).
 constexpr double list_shell_per_diameter = 0.5;
+
+/// Lists beat cell scans from about packing 0.37 (0.81x at 0.30, 1.05x at 0.38, 1.3x at 0.45,
+/// 1.6x at 0.5, N = 4000; docs/benchmarks.md): in a thinner gas a sphere rebuilds its list
+/// several times between collisions. Below this packing fraction spheres use cell crossings
+/// (0.38, not 0.4: a scene made at 0.4 sums to a hair less).
+constexpr double list_min_packing = 0.38;
 
 /// Slots per list to start with; lists that outgrow them double every list's slots.
 constexpr std::uint32_t initial_list_slots = 16;
@@ -151,6 +158,11 @@ void BasicFastEngine<D>::choose_lists(const SceneType& scene) {
     shell_ = 0.0;
     if constexpr (D == 3) {
         if (!std::isinf(big_threshold_) || !(small_radius_max_ > 0.0)) return;
+        double volume = 0.0;
+        for (const auto& p : Space::particles(scene))
+            volume += 4.0 / 3.0 * std::numbers::pi * p.radius * p.radius * p.radius;
+        if (volume < list_min_packing * scene.box.width * scene.box.height * scene.box.depth)
+            return;
         const double shell = list_shell_per_diameter * 2.0 * small_radius_max_;
         if (periodic_) {
             // Three cells of centres per axis, and so the nearest image of a listed pair is

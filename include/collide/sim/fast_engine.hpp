@@ -30,8 +30,9 @@
 ///   expires when it has moved shell / 2 from its centre (an event of kind `cell`, "rebuild"):
 ///   two spheres outside each other's lists cannot touch before one of them rebuilds. The grid
 ///   then holds list centres, in cells at least 2 r_max + shell wide, and has no crossing
-///   events. Used in 3D when no sphere is big and a periodic box has three such cells per axis;
-///   otherwise, and in 2D, the cell crossings above.
+///   events. Used in 3D at packing fractions from 0.38 (below, a sphere would rebuild several
+///   times between collisions) when no sphere is big and a periodic box has three such cells per
+///   axis; otherwise, and in 2D, the cell crossings above.
 ///
 /// Periodic boxes need at least three cells per axis (three small-disc diameters); the
 /// constructor throws Error(input) naming `box.width` / `box.height` / `box.depth` otherwise.
