@@ -5,13 +5,13 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <numbers>
 #include <string>
 #include <tuple>
 #include <utility>
 
 #include "collide/error.hpp"
 #include "collide/sim/kinematics.hpp"
+#include "collide/sim/sphere_check.hpp"
 
 namespace collide::sim {
 
@@ -158,11 +158,7 @@ void BasicFastEngine<D>::choose_lists(const SceneType& scene) {
     shell_ = 0.0;
     if constexpr (D == 3) {
         if (!std::isinf(big_threshold_) || !(small_radius_max_ > 0.0)) return;
-        double volume = 0.0;
-        for (const auto& p : Space::particles(scene))
-            volume += 4.0 / 3.0 * std::numbers::pi * p.radius * p.radius * p.radius;
-        if (volume < list_min_packing * scene.box.width * scene.box.height * scene.box.depth)
-            return;
+        if (packing_fraction(scene) < list_min_packing) return;
         const double shell = list_shell_per_diameter * 2.0 * small_radius_max_;
         if (periodic_) {
             // Three cells of centres per axis, and so the nearest image of a listed pair is
@@ -498,10 +494,8 @@ void BasicFastEngine<D>::predict_after_crossing(std::uint32_t i, std::uint32_t a
     // (and hold the pair themselves if it is their earliest); discs that collided since predicted
     // again against i. What is new to i is the row or column of cells it now borders.
     Key pair = Key::make(ci.pair_t, i, ci.pair_partner, EventKind::pair);
-    Coords lo;
-    Coords hi;
-    lo.fill(-1);
-    hi.fill(1);
+    Coords lo = neighbourhood_lo();
+    Coords hi = neighbourhood_hi();
     const auto k = static_cast<int>(axis_index);
     lo[k] = hi[k] = axis(pi.v, k) > 0.0 ? 1 : -1;
     scan_cells(i, pi, pi.x, lo, hi, pair);
@@ -641,11 +635,7 @@ void BasicFastEngine<D>::consider_pair_images(std::uint32_t i, const Particle& p
 template <int D>
 void BasicFastEngine<D>::scan_small_neighbours(std::uint32_t i, const Particle& pi, Vec xi,
                                                Key& best) {
-    Coords lo;
-    Coords hi;
-    lo.fill(-1);
-    hi.fill(1);
-    scan_cells(i, pi, xi, lo, hi, best);
+    scan_cells(i, pi, xi, neighbourhood_lo(), neighbourhood_hi(), best);
 }
 
 template <int D>
@@ -784,11 +774,7 @@ template <int D>
 void BasicFastEngine<D>::gather_neighbours(std::uint32_t i, bool only_after) {
     const Particle& pi = p_[i];
     const Vec ci = centre_[i];
-    Coords lo;
-    Coords hi;
-    lo.fill(-1);
-    hi.fill(1);
-    for_each_cell(pi, lo, hi, [&](std::uint32_t first, Vec shift) {
+    for_each_cell(pi, neighbourhood_lo(), neighbourhood_hi(), [&](std::uint32_t first, Vec shift) {
         for (std::uint32_t j = first; j != no_disc; j = p_[j].next) {
             if (j == i || (only_after && j < i)) continue;
             const double reach = pi.r + p_[j].r + shell_;
@@ -911,19 +897,16 @@ bool BasicFastEngine<D>::check_lists() const {
             if (std::count(list, list + nbr_count_[i], j) != 1) return false;
         }
         // Every pair whose centres are near is listed (the cells of centres hold them all).
-        Coords lo;
-        Coords hi;
-        lo.fill(-1);
-        hi.fill(1);
         bool complete = true;
-        for_each_cell(p_[i], lo, hi, [&](std::uint32_t first, Vec shift) {
-            for (std::uint32_t j = first; j != no_disc; j = p_[j].next) {
-                const double reach = (p_[i].r + p_[j].r + shell_) * (1.0 - 1e-9);
-                if (j != i && norm2(centre_[j] + shift - centre_[i]) <= reach * reach &&
-                    !listed(i, j))
-                    complete = false;
-            }
-        });
+        for_each_cell(
+            p_[i], neighbourhood_lo(), neighbourhood_hi(), [&](std::uint32_t first, Vec shift) {
+                for (std::uint32_t j = first; j != no_disc; j = p_[j].next) {
+                    const double reach = (p_[i].r + p_[j].r + shell_) * (1.0 - 1e-9);
+                    if (j != i && norm2(centre_[j] + shift - centre_[i]) <= reach * reach &&
+                        !listed(i, j))
+                        complete = false;
+                }
+            });
         if (!complete) return false;
     }
     return true;

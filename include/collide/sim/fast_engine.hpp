@@ -193,6 +193,17 @@ class BasicFastEngine final : public EngineOf<D> {
     [[nodiscard]] std::uint32_t cell_of(Vec x) const noexcept;
     [[nodiscard]] Coords coords_of(std::uint32_t cell) const noexcept;
     [[nodiscard]] std::uint32_t cell_at(const Coords& c) const noexcept;
+    /// Offsets -1 and +1 along every axis: the 3^D cells around a cell.
+    [[nodiscard]] static constexpr Coords neighbourhood_lo() noexcept {
+        Coords c{};
+        c.fill(-1);
+        return c;
+    }
+    [[nodiscard]] static constexpr Coords neighbourhood_hi() noexcept {
+        Coords c{};
+        c.fill(1);
+        return c;
+    }
 
     // --- the loop's phases
     void process(std::uint32_t i, const Key& key);
