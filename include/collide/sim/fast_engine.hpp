@@ -218,10 +218,19 @@ class BasicFastEngine final : public EngineOf<D> {
     void predict(std::uint32_t i);
     void predict_after_crossing(std::uint32_t i, std::uint32_t axis);
     void schedule(std::uint32_t i, const Particle& pi, Vec xi, const Key& pair);
+    /// With lists: the earliest of i's walls, list expiry and listed pairs, into the queue.
+    void predict_listed(std::uint32_t i, const Particle& pi, Vec xi);
+    /// Keeps i's earliest pair (never: none) in cold_ (the stale check and crossings read it).
+    void remember_pair(std::uint32_t i, const Key& pair) noexcept;
+    /// Makes best i's one queued event (none when best.t is never).
+    void enqueue(std::uint32_t i, const Key& best);
     /// True when the pair cannot have an event before best_t (cheap bound, no sqrt or division).
     [[nodiscard]] bool cannot_beat(Vec dr, Vec dv, double sigma, double best_t) const noexcept;
     void consider_pair(std::uint32_t i, const Particle& pi, Vec xi, std::uint32_t j, Vec shift,
                        Key& best);
+    /// consider_pair without counting the prediction (list scans count theirs at once).
+    void test_pair(std::uint32_t i, const Particle& pi, Vec xi, std::uint32_t j, Vec shift,
+                   Key& best);
     void consider_pair_images(std::uint32_t i, const Particle& pi, Vec xi, std::uint32_t j,
                               Key& best);
     void scan_small_neighbours(std::uint32_t i, const Particle& pi, Vec xi, Key& best);
@@ -251,6 +260,8 @@ class BasicFastEngine final : public EngineOf<D> {
     void remove_neighbour(std::uint32_t i, std::uint32_t j) noexcept;
     void process_rebuild(std::uint32_t i);
     void scan_neighbour_list(std::uint32_t i, const Particle& pi, Vec xi, Key& best);
+    /// True unless every particle in i's list is stored as its nearest image to i.
+    [[nodiscard]] bool near_box_edge(std::uint32_t i) const noexcept;
     /// Time until particle i, at xi now, is shell / 2 from its list centre (never at rest).
     [[nodiscard]] double time_to_expiry(std::uint32_t i, const Particle& pi, Vec xi) const noexcept;
     [[nodiscard]] bool check_lists() const;
