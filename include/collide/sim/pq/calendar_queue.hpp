@@ -1,0 +1,292 @@
+#pragma once
+/// \file
+/// Event calendar: an indexed priority queue of timed events, one per handle, for a simulation
+/// whose events are popped in time order and mostly rescheduled far ahead of the clock (R. Brown,
+/// "Calendar queues", CACM 31, 1988; the form here is the one of Smallenburg's hard-sphere code,
+/// Eur. Phys. J. E 45, 22, 2022).
+///
+/// Time is cut into blocks of equal width. Events of the current block and earlier sit in a
+/// small indexed 4-ary heap (ordered by Less, so ties fall exactly as in one big heap); events
+/// of the next `buckets - 1` blocks sit unordered in one doubly linked list per block (a ring of
+/// buckets); later ones in an overflow list that is sorted into the ring once per lap. When the
+/// heap runs dry the next block's list moves into it. A change of key is then O(1) for an event
+/// moved beyond the current block (the common case: a particle's next event lies many blocks
+/// ahead), and the heap's sinks are short (it holds a few dozen events, not N).
+///
+/// Pop order is the same as a single heap's under the same Less: the heap always holds every
+/// event of the blocks up to the current one, and the other events are later than all of them
+/// (block_of is monotone in time). A width of +infinity keeps everything in the heap.
+///
+/// Key needs a `double t` member (the event time, never NaN); HandleOf{}(key) names the
+/// handle that holds the key (IndexedDaryHeap's embedded handles).
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "collide/sim/pq/indexed_heap.hpp"
+
+namespace collide::pq {
+
+template <class Key, class Less, class HandleOf>
+class CalendarQueue {
+  public:
+    using handle_type = std::uint32_t;
+    using Heap = IndexedDaryHeap<Key, Orientation::min, 4, Less, HandleOf>;
+
+    explicit CalendarQueue(std::size_t capacity = 0, Less less = Less{})
+        : heap_(capacity, std::move(less)), entry_(capacity) {}
+
+    void reserve_handles(std::size_t capacity) {
+        heap_.reserve_handles(capacity);
+        if (capacity > entry_.size()) entry_.resize(capacity);
+    }
+
+    /// Blocks of `width` (> 0; +infinity: one block, a plain heap) and a ring of `buckets`
+    /// lists (>= 2), the current block being the one of time `now`. Re-files every entry.
+    void tune(double width, std::size_t buckets, double now) {
+        std::vector<std::pair<handle_type, Key>> all;
+        all.reserve(size());
+        for_each([&](handle_type h, const Key& k) { all.emplace_back(h, k); });
+        for (const auto& [h, k] : all) erase(h);
+        inv_width_ = std::isinf(width) ? 0.0 : 1.0 / width;
+        ring_.assign(std::max<std::size_t>(buckets, 2), none);
+        cur_ = 0;
+        cur_ = block_of(now);
+        for (const auto& [h, k] : all) place(h, k);
+        validate();
+    }
+
+    [[nodiscard]] bool empty() const noexcept { return size() == 0; }
+    [[nodiscard]] std::size_t size() const noexcept { return heap_.size() + far_count_; }
+    [[nodiscard]] bool contains(handle_type h) const noexcept {
+        return heap_.contains(h) || (h < entry_.size() && entry_[h].slot != none);
+    }
+    [[nodiscard]] const Key& key(handle_type h) const {
+        return heap_.contains(h) ? heap_.key(h) : entry_[h].key;
+    }
+
+    /// Brings the earliest event to the heap's top; false when the calendar is empty. Call it
+    /// before top() and top_key() (a const calendar may hold its earliest event in a list).
+    bool settle() {
+        while (heap_.empty()) {
+            if (far_count_ == 0) return false;
+            if (ring_count_ > 0) {
+                advance_to_block(cur_ + 1, false);
+            } else {
+                advance_to_block(earliest_overflow_block(), true);
+            }
+            validate();
+        }
+        return true;
+    }
+    [[nodiscard]] handle_type top() const { return heap_.top(); }
+    [[nodiscard]] const Key& top_key() const { return heap_.top_key(); }
+
+    void push_or_change(handle_type h, const Key& k) {
+        if (heap_.contains(h)) {
+            if (block_of(k.t) <= cur_) {
+                heap_.change_key(h, k);
+                return;
+            }
+            heap_.erase(h);
+        } else if (entry_[h].slot != none) {
+            unlink(h);
+        }
+        place(h, k);
+        validate();
+    }
+
+    void erase(handle_type h) {
+        if (heap_.contains(h)) {
+            heap_.erase(h);
+        } else if (entry_[h].slot != none) {
+            unlink(h);
+        }
+        validate();
+    }
+
+    /// Calls visit(handle, key) for every entry: the heap's in heap order, then the lists'.
+    template <class Visit>
+    void for_each(Visit&& visit) const {
+        for (std::size_t k = 0; k < heap_.size(); ++k) {
+            const Key& key = heap_.key_at(k);
+            visit(HandleOf{}(key), key);
+        }
+        for (handle_type first : ring_) {
+            for (handle_type h = first; h != none; h = entry_[h].next) visit(h, entry_[h].key);
+        }
+        for (handle_type h = overflow_; h != none; h = entry_[h].next) visit(h, entry_[h].key);
+    }
+
+    /// The heap of the current block (its top is the earliest event after settle()).
+    [[nodiscard]] const Heap& near() const noexcept { return heap_; }
+
+    [[nodiscard]] std::size_t bytes() const noexcept {
+        return heap_.bytes() + entry_.capacity() * sizeof(Entry) +
+               ring_.capacity() * sizeof(handle_type);
+    }
+
+    /// The heap's invariants; heap entries in blocks up to the current one, list entries after
+    /// it, each ring entry in the bucket of its block, links that go both ways, counts that add
+    /// up.
+    [[nodiscard]] bool check_invariants() const {
+        if (!heap_.check_invariants()) return false;
+        for (std::size_t k = 0; k < heap_.size(); ++k) {
+            const Key& key = heap_.key_at(k);
+            const handle_type h = HandleOf{}(key);
+            if (block_of(key.t) > cur_ || (h < entry_.size() && entry_[h].slot != none)) {
+                return false;
+            }
+        }
+        std::size_t ring_seen = 0;
+        for (std::size_t s = 0; s < ring_.size(); ++s) {
+            handle_type prev = none;
+            for (handle_type h = ring_[s]; h != none; h = entry_[h].next) {
+                const Entry& e = entry_[h];
+                const std::int64_t b = block_of(e.key.t);
+                if (e.slot != s || e.prev != prev || b <= cur_ ||
+                    b >= cur_ + static_cast<std::int64_t>(ring_.size()) ||
+                    static_cast<std::size_t>(b) % ring_.size() != s || heap_.contains(h)) {
+                    return false;
+                }
+                prev = h;
+                ++ring_seen;
+            }
+        }
+        std::size_t overflow_seen = 0;
+        handle_type prev = none;
+        for (handle_type h = overflow_; h != none; h = entry_[h].next) {
+            const Entry& e = entry_[h];
+            if (e.slot != overflow_slot || e.prev != prev || block_of(e.key.t) <= cur_) return false;
+            prev = h;
+            ++overflow_seen;
+        }
+        return ring_seen == ring_count_ && overflow_seen == far_count_ - ring_count_;
+    }
+
+  private:
+    static constexpr handle_type none = std::numeric_limits<handle_type>::max();
+    static constexpr handle_type overflow_slot = none - 1;
+    /// Blocks beyond this are all filed as the last one (times near the double range's end).
+    static constexpr double max_block = 4.0e18;
+
+    /// A handle's entry when its event is in a list (slot: bucket, overflow_slot or none).
+    struct Entry {
+        Key key{};
+        handle_type next = none;
+        handle_type prev = none;
+        handle_type slot = none;
+    };
+
+    /// Monotone in t: t * (1 / width) rounds monotonically and floor keeps the order.
+    [[nodiscard]] std::int64_t block_of(double t) const noexcept {
+        const double x = t * inv_width_;
+        if (!(x > 0.0)) return 0;
+        if (!(x < max_block)) return static_cast<std::int64_t>(max_block);
+        return static_cast<std::int64_t>(x);
+    }
+
+    /// Files an entry that is in no structure: the heap up to the current block, the ring for
+    /// the next buckets - 1 blocks, the overflow list after.
+    void place(handle_type h, const Key& k) {
+        const std::int64_t b = block_of(k.t);
+        if (b <= cur_) {
+            heap_.push(h, k);
+            return;
+        }
+        entry_[h].key = k;
+        if (b - cur_ < static_cast<std::int64_t>(ring_.size())) {
+            const auto s = static_cast<handle_type>(static_cast<std::size_t>(b) % ring_.size());
+            link(h, s, ring_[s]);
+            ++ring_count_;
+        } else {
+            link(h, overflow_slot, overflow_);
+        }
+        ++far_count_;
+    }
+
+    void link(handle_type h, handle_type slot, handle_type& head) noexcept {
+        Entry& e = entry_[h];
+        e.slot = slot;
+        e.prev = none;
+        e.next = head;
+        if (head != none) entry_[head].prev = h;
+        head = h;
+    }
+
+    void unlink(handle_type h) noexcept {
+        Entry& e = entry_[h];
+        handle_type& head = e.slot == overflow_slot ? overflow_ : ring_[e.slot];
+        if (e.prev != none) {
+            entry_[e.prev].next = e.next;
+        } else {
+            head = e.next;
+        }
+        if (e.next != none) entry_[e.next].prev = e.prev;
+        if (e.slot != overflow_slot) --ring_count_;
+        --far_count_;
+        e.slot = none;
+    }
+
+    /// Makes block b current (b > cur_): once per lap of the ring, the overflow list is filed
+    /// again (an overflow entry's block lies at least one lap ahead when it is filed, so it is
+    /// back in the ring or the heap before its block comes); then block b's bucket moves into
+    /// the heap. A jump over an empty ring (`refile`) files the overflow list again in any case.
+    void advance_to_block(std::int64_t b, bool refile) {
+        const auto lap = [&](std::int64_t x) { return x / static_cast<std::int64_t>(ring_.size()); };
+        refile = refile || lap(b) != lap(cur_);
+        cur_ = b;
+        if (refile) {
+            handle_type h = overflow_;
+            overflow_ = none;
+            while (h != none) {
+                const handle_type next = entry_[h].next;
+                entry_[h].slot = none;
+                --far_count_;
+                place(h, entry_[h].key);
+                h = next;
+            }
+        }
+        handle_type& head = ring_[static_cast<std::size_t>(b) % ring_.size()];
+        handle_type h = head;
+        head = none;
+        while (h != none) {
+            const handle_type next = entry_[h].next;
+            entry_[h].slot = none;
+            --ring_count_;
+            --far_count_;
+            heap_.push(h, entry_[h].key);
+            h = next;
+        }
+    }
+
+    /// After every mutation when COLLIDE_VALIDATE is on (see pq::require_invariant).
+    void validate() const {
+        if constexpr (validate_heaps) {
+            require_invariant(check_invariants(), "event calendar blocks / lists");
+        }
+    }
+
+    [[nodiscard]] std::int64_t earliest_overflow_block() const noexcept {
+        std::int64_t b = std::numeric_limits<std::int64_t>::max();
+        for (handle_type h = overflow_; h != none; h = entry_[h].next) {
+            b = std::min(b, block_of(entry_[h].key.t));
+        }
+        return b;
+    }
+
+    Heap heap_;
+    std::vector<Entry> entry_;
+    std::vector<handle_type> ring_ = std::vector<handle_type>(2, none);
+    handle_type overflow_ = none;
+    double inv_width_ = 0.0;  ///< 1 / block width; 0: one block (everything in the heap)
+    std::int64_t cur_ = 0;    ///< the current block
+    std::size_t far_count_ = 0;   ///< entries in the ring and the overflow list
+    std::size_t ring_count_ = 0;  ///< entries in the ring
+};
+
+}  // namespace collide::pq

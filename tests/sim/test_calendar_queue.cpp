@@ -1,0 +1,134 @@
+// The event calendar (pq::CalendarQueue) against a reference model (std::set ordered like the
+// calendar's Less) on random simulations: events rescheduled near and far (beyond the ring, into
+// the overflow list), removed, and popped in time order; the invariant checked as it goes.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <map>
+#include <random>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "collide/sim/pq/calendar_queue.hpp"
+
+using namespace collide::pq;
+
+namespace {
+
+struct TimedKey {
+    double t = 0.0;
+    std::uint32_t handle = 0;
+    bool operator<(const TimedKey& o) const { return t != o.t ? t < o.t : handle < o.handle; }
+};
+struct HandleOfKey {
+    std::uint32_t operator()(const TimedKey& k) const noexcept { return k.handle; }
+};
+using Calendar = CalendarQueue<TimedKey, std::less<TimedKey>, HandleOfKey>;
+
+/// A simulation's queue: pops in time order while events are rescheduled at now + a delay.
+/// Checks every pop against the model; returns the number of mismatches.
+std::size_t simulate(Calendar& calendar, std::uint32_t handles, int ops, std::mt19937_64& rng,
+                     const std::function<double(std::mt19937_64&)>& delay) {
+    std::set<std::pair<double, std::uint32_t>> model;
+    std::map<std::uint32_t, double> time_of;
+    std::uniform_int_distribution<std::uint32_t> handle(0, handles - 1);
+    std::uniform_int_distribution<int> what(0, 9);
+    double now = 0.0;
+    std::size_t mismatches = 0;
+    const auto reschedule = [&](std::uint32_t h, double t) {
+        calendar.push_or_change(h, TimedKey{t, h});
+        if (time_of.count(h) > 0) model.erase({time_of[h], h});
+        time_of[h] = t;
+        model.insert({t, h});
+    };
+    for (int op = 0; op < ops; ++op) {
+        const int w = what(rng);
+        if (w < 4 && !model.empty()) {
+            // Pop: the earliest event, then its handle is rescheduled (a particle's next event).
+            mismatches += !calendar.settle();
+            const auto [t, h] = *model.begin();
+            mismatches += calendar.top() != h || calendar.top_key().t != t;
+            now = t;
+            reschedule(h, now + delay(rng));
+        } else if (w < 5) {
+            const std::uint32_t h = handle(rng);
+            calendar.erase(h);
+            if (time_of.count(h) > 0) {
+                model.erase({time_of[h], h});
+                time_of.erase(h);
+            }
+        } else {
+            // Ties on purpose: delays of 0 put several events at the same time.
+            reschedule(handle(rng), w == 9 ? now : now + delay(rng));
+        }
+        mismatches += calendar.size() != model.size();
+        if (op % 97 == 0 && !calendar.check_invariants()) ++mismatches;
+    }
+    // Drain: everything comes out in the model's order.
+    while (!model.empty()) {
+        mismatches += !calendar.settle();
+        const auto [t, h] = *model.begin();
+        mismatches += calendar.top() != h || calendar.top_key().t != t;
+        calendar.erase(h);
+        model.erase(model.begin());
+    }
+    mismatches += calendar.settle();
+    return mismatches;
+}
+
+}  // namespace
+
+TEST_CASE("the event calendar pops in the model's order, near, far and beyond its ring") {
+    constexpr std::uint32_t handles = 300;
+    std::mt19937_64 rng(11);
+    // Mostly exponential delays (the ring), a few far beyond it (the overflow list).
+    const auto delay = [](std::mt19937_64& g) {
+        std::exponential_distribution<double> near(1.0);
+        std::uniform_real_distribution<double> u(0.0, 1.0);
+        return u(g) < 0.05 ? 50.0 + 200.0 * u(g) : near(g);
+    };
+    Calendar calendar(handles);
+    calendar.tune(0.01, 64, 0.0);  // ring of 0.64 time units
+    CHECK(simulate(calendar, handles, 40'000, rng, delay) == 0);
+    CHECK(calendar.check_invariants());
+    CHECK(calendar.empty());
+}
+
+TEST_CASE("an event calendar of one block is a plain heap, and tune() re-files what it holds") {
+    constexpr std::uint32_t handles = 100;
+    std::mt19937_64 rng(5);
+    const auto delay = [](std::mt19937_64& g) { return std::exponential_distribution<double>(2.0)(g); };
+    Calendar calendar(handles);  // untuned: one block
+    for (std::uint32_t h = 0; h < handles; ++h) calendar.push_or_change(h, TimedKey{0.01 * h, h});
+    CHECK(calendar.near().size() == handles);
+    calendar.tune(0.05, 16, 0.0);
+    CHECK(calendar.size() == handles);
+    CHECK(calendar.near().size() < handles);  // the later ones went to the ring
+    CHECK(calendar.check_invariants());
+    for (std::uint32_t h = 0; h < handles; ++h) calendar.erase(h);
+    CHECK(calendar.empty());
+    calendar.tune(std::numeric_limits<double>::infinity(), 2, 0.0);
+    CHECK(simulate(calendar, handles, 5'000, rng, delay) == 0);
+}
+
+TEST_CASE("the event calendar jumps over empty blocks and files times near the double range") {
+    Calendar calendar(4);
+    calendar.tune(1e-3, 64, 0.0);
+    // One event a million blocks ahead (overflow, then a jump), one beyond any block index.
+    calendar.push_or_change(0, TimedKey{1000.0, 0});
+    calendar.push_or_change(1, TimedKey{1e300, 1});
+    calendar.push_or_change(2, TimedKey{0.5, 2});
+    CHECK(calendar.check_invariants());
+    const std::uint32_t order[] = {2, 0, 1};
+    for (std::uint32_t h : order) {
+        REQUIRE(calendar.settle());
+        CHECK(calendar.top() == h);
+        calendar.erase(h);
+        CHECK(calendar.check_invariants());
+    }
+    CHECK_FALSE(calendar.settle());
+}
