@@ -553,7 +553,7 @@ void BasicFastEngine<D>::predict_listed(std::uint32_t i, const Particle& pi, Vec
 }
 
 template <int D>
-void BasicFastEngine<D>::remember_pair(std::uint32_t i, const Key& pair) noexcept {
+inline void BasicFastEngine<D>::remember_pair(std::uint32_t i, const Key& pair) noexcept {
     Cold& ci = cold_[i];
     ci.pair_t = pair.t;
     ci.pair_partner = pair.t == never ? no_disc : pair.b();
@@ -569,7 +569,7 @@ void BasicFastEngine<D>::schedule(std::uint32_t i, const Particle& pi, Vec xi, c
 }
 
 template <int D>
-void BasicFastEngine<D>::enqueue(std::uint32_t i, const Key& best) {
+inline void BasicFastEngine<D>::enqueue(std::uint32_t i, const Key& best) {
     if (best.t == never) {
         if (queue_.contains(i)) {
             queue_.erase(i);

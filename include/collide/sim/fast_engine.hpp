@@ -227,9 +227,9 @@ class BasicFastEngine final : public EngineOf<D> {
     /// With lists: the earliest of i's walls, list expiry and listed pairs, into the queue.
     void predict_listed(std::uint32_t i, const Particle& pi, Vec xi);
     /// Keeps i's earliest pair (never: none) in cold_ (the stale check and crossings read it).
-    void remember_pair(std::uint32_t i, const Key& pair) noexcept;
+    [[gnu::always_inline]] void remember_pair(std::uint32_t i, const Key& pair) noexcept;
     /// Makes best i's one queued event (none when best.t is never).
-    void enqueue(std::uint32_t i, const Key& best);
+    [[gnu::always_inline]] void enqueue(std::uint32_t i, const Key& best);
     /// True when the pair cannot have an event before best_t (cheap bound, no sqrt or division).
     [[nodiscard]] bool cannot_beat(Vec dr, Vec dv, double sigma, double best_t) const noexcept;
     void consider_pair(std::uint32_t i, const Particle& pi, Vec xi, std::uint32_t j, Vec shift,
