@@ -13,7 +13,9 @@
 /// - One pending event per disc. The disc's earliest predicted event is its key in an indexed
 ///   4-ary heap (handle = disc index) and is replaced by change-key, so the queue holds at most N
 ///   entries and nothing stale accumulates. A pair event held by i names its partner j and j's
-///   collision count; if j has collided since, the pop re-predicts i (a "stale pop").
+///   collision count; if j has collided since, the pop re-predicts i (a "stale pop"). Spheres
+///   keep the same keys in an event calendar (pq::CalendarQueue: a small heap for the current
+///   block of time, unordered lists for later blocks), which pops them in the same order.
 /// - Mixed radii. The grid is sized by the small discs. A few big discs (see
 ///   sim::big_radius_threshold) are kept out of the cell lists, in a separate list that every
 ///   small disc checks on each prediction (cheap: few of them); a big disc checks the small discs
