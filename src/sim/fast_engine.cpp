@@ -547,8 +547,8 @@ void BasicFastEngine<D>::predict_listed(std::uint32_t i, const Particle& pi, Vec
     Key best = Key::make(never, i, no_disc, EventKind::pair);
     consider_walls_and_cells(i, pi, xi, best);
     scan_neighbour_list(i, pi, xi, best);
-    remember_pair(i, best.kind() == EventKind::pair ? best
-                                                    : Key::make(never, i, no_disc, EventKind::pair));
+    remember_pair(
+        i, best.kind() == EventKind::pair ? best : Key::make(never, i, no_disc, EventKind::pair));
     enqueue(i, best);
 }
 
@@ -954,8 +954,7 @@ template <bool Shifted>
 [[gnu::always_inline]] inline void BasicFastEngine<D>::scan_listed(std::uint32_t i,
                                                                    const Particle& pi, Vec xi,
                                                                    const std::uint32_t* list,
-                                                                   std::uint32_t count,
-                                                                   Key& best) {
+                                                                   std::uint32_t count, Key& best) {
     // test_pair's tests in another order, for fewer mispredicted branches: half of all pairs
     // recede, and most of the others cannot beat the best event so far (cannot_beat), so both
     // are one combined test that goes the same way for most pairs; the rare rest is exact.
@@ -1178,9 +1177,8 @@ QueueView BasicFastEngine<D>::queue_view() const {
     view.stale_entries = static_cast<std::uint64_t>(
         std::count_if(all.begin(), all.end(), [](const QueuedEvent& e) { return e.stale; }));
     view.levels = shown_tree_levels(view.arity, tree, watch_.limits());
-    view.slots.assign(all.begin(),
-                      all.begin() + static_cast<std::ptrdiff_t>(
-                                        shown_tree_slots(view.arity, view.levels, tree)));
+    view.slots.assign(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(shown_tree_slots(
+                                                     view.arity, view.levels, tree)));
     keep_next_collisions(all, watch_.next_events());
     view.next = std::move(all);
     view.popped = watch_.popped();
@@ -1247,7 +1245,8 @@ bool BasicFastEngine<D>::check_invariants() const {
         // The pending event is the remembered pair or comes no later than it; a pending pair is
         // the remembered one.
         const Cold& ci = cold_[i];
-        if (ci.pair_t != never && (!queue_.contains(i) || queue_.key(i).t > ci.pair_t)) return false;
+        if (ci.pair_t != never && (!queue_.contains(i) || queue_.key(i).t > ci.pair_t))
+            return false;
         if (queue_.contains(i) && queue_.key(i).kind() == EventKind::pair &&
             (queue_.key(i).t != ci.pair_t || queue_.key(i).b() != ci.pair_partner)) {
             return false;

@@ -101,7 +101,9 @@ TEST_CASE("the event calendar pops in the model's order, near, far and beyond it
 TEST_CASE("an event calendar of one block is a plain heap, and tune() re-files what it holds") {
     constexpr std::uint32_t handles = 100;
     std::mt19937_64 rng(5);
-    const auto delay = [](std::mt19937_64& g) { return std::exponential_distribution<double>(2.0)(g); };
+    const auto delay = [](std::mt19937_64& g) {
+        return std::exponential_distribution<double>(2.0)(g);
+    };
     Calendar calendar(handles);  // untuned: one block
     for (std::uint32_t h = 0; h < handles; ++h) calendar.push_or_change(h, TimedKey{0.01 * h, h});
     CHECK(calendar.near().size() == handles);

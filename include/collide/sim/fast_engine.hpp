@@ -186,8 +186,7 @@ class BasicFastEngine final : public EngineOf<D> {
     using Heap = pq::IndexedDaryHeap<Key, pq::Orientation::min, 4, KeyLess, KeyOwner>;
     /// Spheres: an event calendar (most events are rescheduled far ahead, in O(1)); discs keep
     /// the one heap (their queue view, and their speed, measured against it at 10^6 discs).
-    using Queue =
-        std::conditional_t<D == 3, pq::CalendarQueue<Key, KeyLess, KeyOwner>, Heap>;
+    using Queue = std::conditional_t<D == 3, pq::CalendarQueue<Key, KeyLess, KeyOwner>, Heap>;
 
     /// Times the particle wrapped across the high (+) or low (-) edge, per axis.
     using Image = std::array<std::int32_t, D>;

@@ -161,7 +161,8 @@ class CalendarQueue {
         handle_type prev = none;
         for (handle_type h = overflow_; h != none; h = entry_[h].next) {
             const Entry& e = entry_[h];
-            if (e.slot != overflow_slot || e.prev != prev || block_of(e.key.t) <= cur_) return false;
+            if (e.slot != overflow_slot || e.prev != prev || block_of(e.key.t) <= cur_)
+                return false;
             prev = h;
             ++overflow_seen;
         }
@@ -237,7 +238,9 @@ class CalendarQueue {
     /// back in the ring or the heap before its block comes); then block b's bucket moves into
     /// the heap. A jump over an empty ring (`refile`) files the overflow list again in any case.
     void advance_to_block(std::int64_t b, bool refile) {
-        const auto lap = [&](std::int64_t x) { return x / static_cast<std::int64_t>(ring_.size()); };
+        const auto lap = [&](std::int64_t x) {
+            return x / static_cast<std::int64_t>(ring_.size());
+        };
         refile = refile || lap(b) != lap(cur_);
         cur_ = b;
         if (refile) {
@@ -283,8 +286,8 @@ class CalendarQueue {
     std::vector<Entry> entry_;
     std::vector<handle_type> ring_ = std::vector<handle_type>(2, none);
     handle_type overflow_ = none;
-    double inv_width_ = 0.0;  ///< 1 / block width; 0: one block (everything in the heap)
-    std::int64_t cur_ = 0;    ///< the current block
+    double inv_width_ = 0.0;      ///< 1 / block width; 0: one block (everything in the heap)
+    std::int64_t cur_ = 0;        ///< the current block
     std::size_t far_count_ = 0;   ///< entries in the ring and the overflow list
     std::size_t ring_count_ = 0;  ///< entries in the ring
 };
