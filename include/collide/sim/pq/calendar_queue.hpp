@@ -244,25 +244,25 @@ class CalendarQueue {
         refile = refile || lap(b) != lap(cur_);
         cur_ = b;
         if (refile) {
-            handle_type h = overflow_;
-            overflow_ = none;
-            while (h != none) {
-                const handle_type next = entry_[h].next;
-                entry_[h].slot = none;
-                --far_count_;
-                place(h, entry_[h].key);
-                h = next;
-            }
+            take_list(overflow_, [&](handle_type h) { place(h, entry_[h].key); });
         }
-        handle_type& head = ring_[static_cast<std::size_t>(b) % ring_.size()];
+        const std::size_t slot = static_cast<std::size_t>(b) % ring_.size();
+        take_list(ring_[slot], [&](handle_type h) {
+            --ring_count_;
+            heap_.push(h, entry_[h].key);
+        });
+    }
+
+    /// Empties the list at `head`, handing each entry (out of every list) to file(handle).
+    template <class File>
+    void take_list(handle_type& head, File&& file) {
         handle_type h = head;
         head = none;
         while (h != none) {
             const handle_type next = entry_[h].next;
             entry_[h].slot = none;
-            --ring_count_;
             --far_count_;
-            heap_.push(h, entry_[h].key);
+            file(h);
             h = next;
         }
     }
