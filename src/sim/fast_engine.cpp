@@ -498,12 +498,12 @@ void BasicFastEngine<D>::predict(std::uint32_t i) {
     const Particle& pi = p_[i];
     const double dt = now_ - pi.t;
     const Vec xi = pi.x + pi.v * dt;
-    // Pairs first, bounded only by each other (not by the wall and crossing times): the earliest
-    // pair is remembered for the crossings to come, so it must be exact.
     if (lists()) {
         predict_listed(i, pi, xi);
         return;
     }
+    // Pairs first, bounded only by each other (not by the wall and crossing times): the earliest
+    // pair is remembered for the crossings to come, so it must be exact.
     Key pair = Key::make(never, i, no_disc, EventKind::pair);
     if (is_big(i)) {
         scan_ring(i, pi, xi, pair);
@@ -633,22 +633,18 @@ inline bool BasicFastEngine<D>::cannot_beat(Vec dr, Vec dv, double sigma,
     if (b >= 0.0) return true;  // receding: time_to_hit says never
     const double c = dot(dr, dr) - sigma * sigma;
     if (!(c > 0.0)) return false;
-    const double interval = best_t - now_;
-    return c > -2.0 * b * (interval * (1.0 + 1e-9) + std::abs(best_t) * 1e-14);
+    return c > -2.0 * b * beat_margin(best_t);
+}
+
+template <int D>
+inline double BasicFastEngine<D>::beat_margin(double best_t) const noexcept {
+    return (best_t - now_) * (1.0 + 1e-9) + std::abs(best_t) * 1e-14;
 }
 
 template <int D>
 inline void BasicFastEngine<D>::consider_pair(std::uint32_t i, const Particle& pi, Vec xi,
                                               std::uint32_t j, Vec shift, Key& best) {
     ++core_.counters().predictions;
-    test_pair(i, pi, xi, j, shift, best);
-}
-
-template <int D>
-[[gnu::always_inline]] inline void BasicFastEngine<D>::test_pair(std::uint32_t i,
-                                                                 const Particle& pi, Vec xi,
-                                                                 std::uint32_t j, Vec shift,
-                                                                 Key& best) {
     const Particle& pj = p_[j];
     const double dtj = now_ - pj.t;
     const Vec dr = pj.x + pj.v * dtj + shift - xi;
@@ -767,6 +763,21 @@ template <typename Visit>
 }
 
 template <int D>
+template <typename Prefetch>
+[[gnu::always_inline]] inline std::size_t BasicFastEngine<D>::first_of_cells(
+    const Particle& pi, const Coords& lo, const Coords& hi, CellVisits& visits,
+    Prefetch&& prefetch) const {
+    std::size_t count = 0;
+    for_each_cell(pi, lo, hi, [&](std::uint32_t first, Vec shift) {
+        prefetch(first);
+        CellVisit& visit = visits[count++];
+        visit.first = first;
+        for (int k = 0; k < D; ++k) visit.shift[static_cast<std::size_t>(k)] = axis(shift, k);
+    });
+    return count;
+}
+
+template <int D>
 [[gnu::always_inline]] inline void BasicFastEngine<D>::scan_list(std::uint32_t i,
                                                                  const Particle& pi, Vec xi,
                                                                  std::uint32_t first, Vec shift,
@@ -782,20 +793,9 @@ template <int D>
 template <int D>
 inline void BasicFastEngine<D>::scan_cells(std::uint32_t i, const Particle& pi, Vec xi,
                                            const Coords& lo, const Coords& hi, Key& best) {
-    // Plain members, no Vec: Vec's default member initialisers would zero all 3^D entries on
-    // every call (tens of instructions per prediction for entries never read).
-    struct CellVisit {
-        std::uint32_t first;
-        std::array<double, D> shift;
-    };
-    std::array<CellVisit, D == 2 ? 9 : 27> visits;  // callers scan at most 3^D cells
-    std::size_t count = 0;
-    for_each_cell(pi, lo, hi, [&](std::uint32_t first, Vec shift) {
-        __builtin_prefetch(&p_[first]);
-        CellVisit& visit = visits[count++];
-        visit.first = first;
-        for (int k = 0; k < D; ++k) visit.shift[static_cast<std::size_t>(k)] = axis(shift, k);
-    });
+    CellVisits visits;
+    const std::size_t count = first_of_cells(
+        pi, lo, hi, visits, [&](std::uint32_t first) { __builtin_prefetch(&p_[first]); });
     for (std::size_t k = 0; k < count; ++k) {
         scan_list(i, pi, xi, visits[k].first, vec_of(visits[k].shift), best);
     }
@@ -842,21 +842,13 @@ template <int D>
 void BasicFastEngine<D>::gather_neighbours(std::uint32_t i, bool only_after) {
     const Particle& pi = p_[i];
     const Vec ci = centre_[i];
-    // As in scan_cells: ask for every cell's first record (and centre) before reading any, so
-    // that beyond the caches their misses overlap instead of waiting for each other.
-    struct CellVisit {
-        std::uint32_t first;
-        std::array<double, D> shift;
-    };
-    std::array<CellVisit, D == 2 ? 9 : 27> visits;
-    std::size_t cells = 0;
-    for_each_cell(pi, neighbourhood_lo(), neighbourhood_hi(), [&](std::uint32_t first, Vec shift) {
-        __builtin_prefetch(&p_[first].next);
-        __builtin_prefetch(&centre_[first]);
-        CellVisit& visit = visits[cells++];
-        visit.first = first;
-        for (int k = 0; k < D; ++k) visit.shift[static_cast<std::size_t>(k)] = axis(shift, k);
-    });
+    // As in scan_cells: every cell's first record (and centre) asked for before any is read.
+    CellVisits visits;
+    const std::size_t cells = first_of_cells(pi, neighbourhood_lo(), neighbourhood_hi(), visits,
+                                             [&](std::uint32_t first) {
+                                                 __builtin_prefetch(&p_[first].next);
+                                                 __builtin_prefetch(&centre_[first]);
+                                             });
     for (std::size_t c = 0; c < cells; ++c) {
         const Vec shift = vec_of(visits[c].shift);
         for (std::uint32_t j = visits[c].first; j != no_disc; j = p_[j].next) {
@@ -964,10 +956,7 @@ template <bool Shifted>
     const double ri = pi.r;
     Key found = best;
     // cannot_beat's margin on the interval to the best event, updated when that improves.
-    const auto reach_of = [now](double best_t) {
-        return (best_t - now) * (1.0 + 1e-9) + std::abs(best_t) * 1e-14;
-    };
-    double reach = reach_of(found.t);
+    double reach = beat_margin(found.t);
     for (std::uint32_t k = 0; k < count; ++k) {
         const std::uint32_t j = list[k];
         const Particle& pj = p_[j];
@@ -999,7 +988,7 @@ template <bool Shifted>
         const Key key = Key::make(t, i, j, EventKind::pair);
         if (key_less_(key, found)) {
             found = key;
-            reach = reach_of(found.t);
+            reach = beat_margin(found.t);
         }
     }
     best = found;

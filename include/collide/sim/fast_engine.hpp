@@ -233,11 +233,11 @@ class BasicFastEngine final : public EngineOf<D> {
     [[gnu::always_inline]] void enqueue(std::uint32_t i, const Key& best);
     /// True when the pair cannot have an event before best_t (cheap bound, no sqrt or division).
     [[nodiscard]] bool cannot_beat(Vec dr, Vec dv, double sigma, double best_t) const noexcept;
+    /// cannot_beat's allowance for rounding: the interval to best_t, widened by relative 1e-9
+    /// of itself and 1e-14 of the time (a pair may be skipped when c > -2 b times this).
+    [[nodiscard]] double beat_margin(double best_t) const noexcept;
     void consider_pair(std::uint32_t i, const Particle& pi, Vec xi, std::uint32_t j, Vec shift,
                        Key& best);
-    /// consider_pair without counting the prediction (list scans count theirs at once).
-    [[gnu::always_inline]] void test_pair(std::uint32_t i, const Particle& pi, Vec xi,
-                                          std::uint32_t j, Vec shift, Key& best);
     void consider_pair_images(std::uint32_t i, const Particle& pi, Vec xi, std::uint32_t j,
                               Key& best);
     void scan_small_neighbours(std::uint32_t i, const Particle& pi, Vec xi, Key& best);
@@ -247,6 +247,20 @@ class BasicFastEngine final : public EngineOf<D> {
     /// Calls visit(first particle, shift) for each non-empty cell at offsets lo .. hi from pi's
     /// cell (shift: the periodic image of a wrapped-around cell). The last axis is the outer
     /// loop.
+    /// A cell's first particle and the image shift of its wrap, as plain members: Vec's default
+    /// member initialisers would zero all 3^D entries on every call (tens of instructions per
+    /// prediction for entries never read).
+    struct CellVisit {
+        std::uint32_t first;
+        std::array<double, D> shift;
+    };
+    using CellVisits = std::array<CellVisit, D == 2 ? 9 : 27>;  // callers scan at most 3^D cells
+    /// Records the non-empty cells at offsets lo .. hi from pi's cell, calling prefetch(first) on
+    /// each, before any list is read: beyond the caches every cell's first record is a miss, and
+    /// asking for all of them first overlaps those misses (docs/benchmarks.md). Returns the count.
+    template <typename Prefetch>
+    std::size_t first_of_cells(const Particle& pi, const Coords& lo, const Coords& hi,
+                               CellVisits& visits, Prefetch&& prefetch) const;
     template <typename Visit>
     void for_each_cell(const Particle& pi, const Coords& lo, const Coords& hi, Visit&& visit) const;
     void scan_list(std::uint32_t i, const Particle& pi, Vec xi, std::uint32_t first, Vec shift,
