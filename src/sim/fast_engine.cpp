@@ -867,7 +867,7 @@ void BasicFastEngine<D>::add_neighbour(std::uint32_t i, std::uint32_t j) {
     if (nbr_count_[i] == list_cap_) {
         // Rare (a crowd denser than the start): double every list's slots, keeping the entries.
         const std::uint32_t cap = 2 * list_cap_;
-        std::vector<std::uint32_t> wider(p_.size() * cap, no_disc);
+        pq::BigVector<std::uint32_t> wider(p_.size() * cap, no_disc);
         for (std::size_t k = 0; k < p_.size(); ++k) {
             std::copy_n(nbr_.begin() + static_cast<std::ptrdiff_t>(k * list_cap_), nbr_count_[k],
                         wider.begin() + static_cast<std::ptrdiff_t>(k * cap));

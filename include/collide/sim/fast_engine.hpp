@@ -57,6 +57,7 @@
 #include "collide/sim/event.hpp"
 #include "collide/sim/kinematics.hpp"
 #include "collide/sim/observables.hpp"
+#include "collide/sim/pq/cache_layout.hpp"
 #include "collide/sim/pq/calendar_queue.hpp"
 #include "collide/sim/pq/indexed_heap.hpp"
 #include "collide/sim/queue_view.hpp"
@@ -323,13 +324,13 @@ class BasicFastEngine final : public EngineOf<D> {
     Vec cw_{};                          ///< cell sides
     double big_threshold_ = 0.0;        ///< radius above which a particle is big (+inf: none)
     double small_radius_max_ = 0.0;
-    std::vector<std::uint32_t> head_;  ///< first particle of each cell list (no_disc: empty)
+    pq::BigVector<std::uint32_t> head_;  ///< first particle of each cell list (no_disc: empty)
 
     // particles
-    std::vector<Particle> p_;
-    std::vector<Cold> cold_;
-    std::vector<Image> image_;  ///< periodic unwrapping (mean squared displacement)
-    std::vector<Vec> start_;    ///< positions at t = 0
+    pq::BigVector<Particle> p_;
+    pq::BigVector<Cold> cold_;
+    pq::BigVector<Image> image_;  ///< periodic unwrapping (mean squared displacement)
+    pq::BigVector<Vec> start_;    ///< positions at t = 0
     /// Particles are numbered internally along a Z-order curve over the cells, so that
     /// neighbours in space are mostly neighbours in memory (at 10^5 discs in scene order every
     /// neighbour was a cache miss). scene_index(i) is the scene's index of internal particle i.
@@ -346,10 +347,10 @@ class BasicFastEngine final : public EngineOf<D> {
     bool lists_ = false;
     double shell_ = 0.0;   ///< pairs whose centres are within r_i + r_j + shell_ are listed
     double expiry_ = 0.0;  ///< a list expires this far from its centre (shell / 2, a hair less)
-    std::uint32_t list_cap_ = 0;            ///< slots per particle in nbr_
-    std::vector<Vec> centre_;               ///< where each particle's list was built
-    std::vector<std::uint32_t> nbr_;        ///< list_cap_ slots per particle
-    std::vector<std::uint32_t> nbr_count_;  ///< used slots per particle
+    std::uint32_t list_cap_ = 0;              ///< slots per particle in nbr_
+    pq::BigVector<Vec> centre_;               ///< where each particle's list was built
+    pq::BigVector<std::uint32_t> nbr_;        ///< list_cap_ slots per particle
+    pq::BigVector<std::uint32_t> nbr_count_;  ///< used slots per particle
 
     KeyLess key_less_{scene_index_.get()};
     Queue queue_{0, key_less_};

@@ -27,6 +27,7 @@
 #include <limits>
 #include <vector>
 
+#include "collide/sim/pq/cache_layout.hpp"
 #include "collide/sim/pq/indexed_heap.hpp"
 
 namespace collide::pq {
@@ -283,8 +284,8 @@ class CalendarQueue {
     }
 
     Heap heap_;
-    std::vector<Entry> entry_;
-    std::vector<handle_type> ring_ = std::vector<handle_type>(2, none);
+    BigVector<Entry> entry_;
+    BigVector<handle_type> ring_ = BigVector<handle_type>(2, none);
     handle_type overflow_ = none;
     double inv_width_ = 0.0;      ///< 1 / block width; 0: one block (everything in the heap)
     std::int64_t cur_ = 0;        ///< the current block

@@ -323,7 +323,7 @@ class IndexedDaryHeap {
     }
 
     std::vector<handle_type> heap_;  ///< handles in heap order (unused when keys name them)
-    std::vector<handle_type> pos_;   ///< pos_[handle] = index in heap order, or `absent`
+    BigVector<handle_type> pos_;     ///< pos_[handle] = index in heap order, or `absent`
     /// Keys in heap order (node 1 starts a cache line, so each node's children share lines).
     std::vector<Key, ChildAlignedAllocator<Key>> keys_;
     [[no_unique_address]] Less less_;
