@@ -9,6 +9,7 @@
 #include <string>
 #include <tuple>
 #include <utility>
+#include <vector>
 
 #include "collide/error.hpp"
 #include "collide/sim/kinematics.hpp"
@@ -27,6 +28,14 @@ constexpr double cell_margin = 1e-9;
 /// Upper bound on grid cells per disc: enough for dense fluids (pi / (4 eta) cells per disc at
 /// cells one diameter wide), and it stops dilute scenes from allocating millions of empty cells.
 constexpr double max_cells_per_disc = 2.0;
+
+/// A grid capped by max_cells_per_disc is refined while a particle's cell holds more than this
+/// many particles on average (itself included): a crowd in a large box, such as a gas released
+/// from one corner, would otherwise put hundreds in each cell, and every scan reads 3^D cells.
+constexpr double crowded_cellmates = 8.0;
+
+/// The refinement stops at this many cells (4 MiB of list heads), or at 16 per particle.
+constexpr double crowded_max_cells = 1 << 20;
 
 /// The neighbour lists' shell, as a fraction of the largest diameter (3D, see fast_engine.hpp):
 /// thinner shells mean shorter lists but more rebuilds. 0.5 was the fastest of 0.2 ... 0.8 at
@@ -54,6 +63,54 @@ std::uint32_t fit_cells(double extent, double min_cell) {
     const double n = std::floor(extent / min_cell);
     if (!(n >= 1.0)) return 1;
     return static_cast<std::uint32_t>(std::min(n, 65536.0));
+}
+
+template <std::size_t D>
+double cell_count(const std::array<std::uint32_t, D>& n) {
+    double cells = 1.0;
+    for (const std::uint32_t c : n) cells *= static_cast<double>(c);
+    return cells;
+}
+
+/// `full` (cells per axis) scaled down alike on every axis to at most `cap` cells in all, each
+/// axis keeping at least `floor_n`.
+template <std::size_t D>
+std::array<std::uint32_t, D> shrink_grid(const std::array<std::uint32_t, D>& full, double cap,
+                                         std::uint32_t floor_n) {
+    const double cells = cell_count(full);
+    if (cells <= cap) return full;
+    const double shrink = D == 2 ? std::sqrt(cap / cells) : std::cbrt(cap / cells);
+    std::array<std::uint32_t, D> n{};
+    for (std::size_t k = 0; k < D; ++k) {
+        n[k] = std::max(floor_n, static_cast<std::uint32_t>(static_cast<double>(full[k]) * shrink));
+    }
+    return n;
+}
+
+/// The number of particles in a particle's cell (itself included), averaged over the particles
+/// of radius at most `small_max` (bigger ones are in no cell), for `n` cells per axis over
+/// `extent`.
+template <class Particles, class Vec, std::size_t D>
+double mean_cellmates(const Particles& particles, const Vec& extent,
+                      const std::array<std::uint32_t, D>& n, double small_max) {
+    std::vector<std::uint32_t> occupancy(static_cast<std::size_t>(cell_count(n)), 0);
+    std::uint64_t placed = 0;
+    for (const auto& p : particles) {
+        if (p.radius > small_max) continue;
+        std::size_t cell = 0;
+        for (std::size_t k = D; k-- > 0;) {
+            const int axis_k = static_cast<int>(k);
+            const double at = axis(p.position, axis_k) / axis(extent, axis_k) * n[k];
+            const double clamped = std::clamp(std::floor(at), 0.0, static_cast<double>(n[k] - 1));
+            cell = cell * n[k] + static_cast<std::size_t>(clamped);
+        }
+        ++occupancy[cell];
+        ++placed;
+    }
+    if (placed == 0) return 0.0;
+    double pairs = 0.0;  // sum over cells of occupancy^2 = sum over particles of their cell's
+    for (const std::uint32_t c : occupancy) pairs += static_cast<double>(c) * c;
+    return pairs / static_cast<double>(placed);
 }
 
 }  // namespace
@@ -139,19 +196,18 @@ void BasicFastEngine<D>::choose_grid(const SceneType& scene) {
         }
     }
     // Dilute scenes: fewer, larger cells (each must stay at least min_cell wide, so only shrink).
-    const double cap =
-        std::max(D == 2 ? 9.0 : 27.0, max_cells_per_disc * static_cast<double>(particles.size()));
-    double cells = 1.0;
-    for (int k = 0; k < D; ++k) cells *= static_cast<double>(n[k]);
-    if (cells > cap) {
-        const double shrink = D == 2 ? std::sqrt(cap / cells) : std::cbrt(cap / cells);
-        const std::uint32_t floor_n = periodic_ ? 3U : 1U;
-        for (int k = 0; k < D; ++k) {
-            n[k] =
-                std::max(floor_n, static_cast<std::uint32_t>(static_cast<double>(n[k]) * shrink));
-        }
+    const auto count = static_cast<double>(particles.size());
+    double cap = std::max(D == 2 ? 9.0 : 27.0, max_cells_per_disc * count);
+    const std::uint32_t floor_n = periodic_ ? 3U : 1U;
+    std::array<std::uint32_t, D> grid = shrink_grid(n, cap, floor_n);
+    // Unless the particles crowd into a part of the box: then finer cells, within a budget.
+    const double budget = std::max(crowded_max_cells, 16.0 * count);
+    while (cell_count(grid) < cell_count(n) && 2.0 * cap <= budget &&
+           mean_cellmates(particles, extent_, grid, big_threshold_) > crowded_cellmates) {
+        cap *= 2.0;
+        grid = shrink_grid(n, cap, floor_n);
     }
-    n_ = n;
+    n_ = grid;
     std::size_t total = 1;
     for (int k = 0; k < D; ++k) {
         axis(cw_, k) = axis(extent_, k) / n_[k];

@@ -16,6 +16,7 @@
 
 #include "collide/error.hpp"
 #include "collide/sim/engine.hpp"
+#include "collide/sim/fast_engine.hpp"
 #include "collide/sim/generate3.hpp"
 #include "collide/sim/time_engine.hpp"
 #include "sphere_fixtures.hpp"
@@ -131,6 +132,39 @@ TEST_CASE("3D: the classic loop and the fast engine agree event by event") {
             zwalls += a[k].kind == CollisionKind::zwall ? 1 : 0;
         }
         if (scene.box.boundary == Boundary::walls) CHECK(zwalls > 0);
+    }
+}
+
+TEST_CASE("3D: a crowd in one corner of a large box gets cells for the crowd, same events") {
+    // A gas about to expand into an empty box: 300 spheres fill 1/1000 of its volume. Cells for
+    // the mean density (2 per sphere: 8 per axis) would put them all in one cell, and every
+    // prediction would test all 300.
+    SphereScene scene;
+    scene.name = "corner";
+    scene.box = Box3{10.0, 10.0, 10.0, Boundary::walls};
+    SphereGenerateSpec gen;
+    gen.count = 300;
+    gen.radius = 0.05;
+    gen.region_max = Vec3{1.0, 1.0, 1.0};
+    gen.seed = 5;
+    generate_spheres(scene, gen);
+    sim::FastSphereEngine fast(scene);
+    for (int k = 0; k < 3; ++k) CHECK(fast.cells_along(k) >= 32);
+    CHECK(fast.cells_along(0) <= 100);  // no finer than the spheres' reach: 1e6 cells
+    auto classic = make_engine(scene, options_for(EngineKind::classic));
+    const std::vector<CollisionRecord> a = first_collisions(*classic, 300);
+    std::vector<CollisionRecord> b;
+    fast.set_collision_listener([&](const CollisionRecord& r) { b.push_back(r); });
+    while (b.size() < a.size()) {
+        fast.advance_to(fast.time() + 0.01);
+        REQUIRE(fast.check_invariants());
+    }
+    for (std::size_t k = 0; k < a.size(); ++k) {
+        INFO("collision #" << k);
+        REQUIRE(a[k].kind == b[k].kind);
+        REQUIRE(a[k].a == b[k].a);
+        REQUIRE(a[k].b == b[k].b);
+        REQUIRE(std::abs(a[k].t - b[k].t) <= 1e-9);
     }
 }
 
