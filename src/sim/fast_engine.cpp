@@ -65,6 +65,22 @@ std::uint32_t fit_cells(double extent, double min_cell) {
     return static_cast<std::uint32_t>(std::min(n, 65536.0));
 }
 
+/// The linear index of the cell holding x in a grid of n[k] cells of side cw[k] along each axis
+/// (the first axis varies fastest), positions outside the grid clamped to its edge cells.
+template <std::size_t D, class Vec>
+std::uint32_t cell_index(Vec x, Vec cw, const std::array<std::uint32_t, D>& n) noexcept {
+    const auto clamp_index = [](double v, std::uint32_t cells) {
+        if (!(v > 0.0)) return 0U;
+        return static_cast<std::uint32_t>(std::min(v, static_cast<double>(cells - 1)));
+    };
+    std::uint32_t cell = 0;
+    for (int k = static_cast<int>(D) - 1; k >= 0; --k) {
+        const auto kk = static_cast<std::size_t>(k);
+        cell = cell * n[kk] + clamp_index(axis(x, k) / axis(cw, k), n[kk]);
+    }
+    return cell;
+}
+
 template <std::size_t D>
 double cell_count(const std::array<std::uint32_t, D>& n) {
     double cells = 1.0;
@@ -93,18 +109,13 @@ std::array<std::uint32_t, D> shrink_grid(const std::array<std::uint32_t, D>& ful
 template <class Particles, class Vec, std::size_t D>
 double mean_cellmates(const Particles& particles, const Vec& extent,
                       const std::array<std::uint32_t, D>& n, double small_max) {
+    Vec cw = extent;
+    for (std::size_t k = 0; k < D; ++k) axis(cw, static_cast<int>(k)) /= n[k];
     std::vector<std::uint32_t> occupancy(static_cast<std::size_t>(cell_count(n)), 0);
     std::uint64_t placed = 0;
     for (const auto& p : particles) {
         if (p.radius > small_max) continue;
-        std::size_t cell = 0;
-        for (std::size_t k = D; k-- > 0;) {
-            const int axis_k = static_cast<int>(k);
-            const double at = axis(p.position, axis_k) / axis(extent, axis_k) * n[k];
-            const double clamped = std::clamp(std::floor(at), 0.0, static_cast<double>(n[k] - 1));
-            cell = cell * n[k] + static_cast<std::size_t>(clamped);
-        }
-        ++occupancy[cell];
+        ++occupancy[cell_index(p.position, cw, n)];
         ++placed;
     }
     if (placed == 0) return 0.0;
@@ -243,16 +254,7 @@ void BasicFastEngine<D>::choose_lists(const SceneType& scene) {
 
 template <int D>
 std::uint32_t BasicFastEngine<D>::cell_of(Vec x) const noexcept {
-    const auto clamp_index = [](double v, std::uint32_t n) {
-        if (!(v > 0.0)) return 0U;
-        const auto k = static_cast<std::uint32_t>(std::min(v, static_cast<double>(n - 1)));
-        return k;
-    };
-    std::uint32_t cell = 0;
-    for (int k = D - 1; k >= 0; --k) {
-        cell = cell * n_[k] + clamp_index(axis(x, k) / axis(cw_, k), n_[k]);
-    }
-    return cell;
+    return cell_index(x, cw_, n_);
 }
 
 template <int D>

@@ -245,9 +245,6 @@ class BasicFastEngine final : public EngineOf<D> {
     /// Scans the cells at offsets lo[k] .. hi[k] along each axis k from pi's cell.
     void scan_cells(std::uint32_t i, const Particle& pi, Vec xi, const Coords& lo, const Coords& hi,
                     Key& best);
-    /// Calls visit(first particle, shift) for each non-empty cell at offsets lo .. hi from pi's
-    /// cell (shift: the periodic image of a wrapped-around cell). The last axis is the outer
-    /// loop.
     /// A cell's first particle and the image shift of its wrap, as plain members: Vec's default
     /// member initialisers would zero all 3^D entries on every call (tens of instructions per
     /// prediction for entries never read).
@@ -262,6 +259,9 @@ class BasicFastEngine final : public EngineOf<D> {
     template <typename Prefetch>
     std::size_t first_of_cells(const Particle& pi, const Coords& lo, const Coords& hi,
                                CellVisits& visits, Prefetch&& prefetch) const;
+    /// Calls visit(first particle, shift) for each non-empty cell at offsets lo .. hi from pi's
+    /// cell (shift: the periodic image of a wrapped-around cell). The last axis is the outer
+    /// loop.
     template <typename Visit>
     void for_each_cell(const Particle& pi, const Coords& lo, const Coords& hi, Visit&& visit) const;
     void scan_list(std::uint32_t i, const Particle& pi, Vec xi, std::uint32_t first, Vec shift,
