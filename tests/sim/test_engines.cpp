@@ -17,11 +17,13 @@
 #include "collide/sim/observables.hpp"
 #include "collide/sim/pq/dary_heap.hpp"
 #include "collide/sim/scene_check.hpp"
+#include "same_events.hpp"
 #include "scene_fixtures.hpp"
 
 using namespace collide;
 using collide::test::head_on;
 using collide::test::lattice_fluid;
+using collide::test::require_same_events;
 
 namespace {
 
@@ -41,18 +43,6 @@ std::vector<CollisionRecord> first_collisions(Engine& engine, std::size_t count,
     while (log.size() < count && engine.time() < t_max) engine.advance_to(engine.time() + step);
     if (log.size() > count) log.resize(count);
     return log;
-}
-
-void require_same_events(const std::vector<CollisionRecord>& x,
-                         const std::vector<CollisionRecord>& y, double time_tolerance) {
-    REQUIRE(x.size() == y.size());
-    for (std::size_t k = 0; k < x.size(); ++k) {
-        INFO("collision #" << k << " at t = " << x[k].t);
-        REQUIRE(x[k].kind == y[k].kind);
-        REQUIRE(x[k].a == y[k].a);
-        if (x[k].kind == CollisionKind::pair) REQUIRE(x[k].b == y[k].b);
-        REQUIRE(std::abs(x[k].t - y[k].t) <= time_tolerance);
-    }
 }
 
 double largest_sigma(const Scene& s) {

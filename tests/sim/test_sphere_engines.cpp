@@ -19,6 +19,7 @@
 #include "collide/sim/fast_engine.hpp"
 #include "collide/sim/generate3.hpp"
 #include "collide/sim/time_engine.hpp"
+#include "same_events.hpp"
 #include "sphere_fixtures.hpp"
 
 using namespace collide;
@@ -35,6 +36,7 @@ Sphere sphere(Vec3 p, Vec3 v, double r, double m = 1.0) {
 }
 
 using collide::test::fcc_fluid;
+using collide::test::require_same_events;
 
 /// Random spheres of two masses in a walled box that is not a cube (every wall kind occurs).
 SphereScene walled_gas(std::uint64_t seed) {
@@ -122,15 +124,10 @@ TEST_CASE("3D: the classic loop and the fast engine agree event by event") {
         // events. 1000 stay within 1e-9 (1e-10 measured).
         const std::vector<CollisionRecord> a = first_collisions(*classic, 1000);
         const std::vector<CollisionRecord> b = first_collisions(*fast, 1000);
-        std::size_t zwalls = 0;
-        for (std::size_t k = 0; k < a.size(); ++k) {
-            INFO("collision #" << k);
-            REQUIRE(a[k].kind == b[k].kind);
-            REQUIRE(a[k].a == b[k].a);
-            REQUIRE(a[k].b == b[k].b);
-            REQUIRE(std::abs(a[k].t - b[k].t) <= 1e-9);
-            zwalls += a[k].kind == CollisionKind::zwall ? 1 : 0;
-        }
+        require_same_events(a, b, 1e-9);
+        const auto zwalls = std::count_if(a.begin(), a.end(), [](const CollisionRecord& r) {
+            return r.kind == CollisionKind::zwall;
+        });
         if (scene.box.boundary == Boundary::walls) CHECK(zwalls > 0);
     }
 }
@@ -159,13 +156,8 @@ TEST_CASE("3D: a crowd in one corner of a large box gets cells for the crowd, sa
         fast.advance_to(fast.time() + 0.01);
         REQUIRE(fast.check_invariants());
     }
-    for (std::size_t k = 0; k < a.size(); ++k) {
-        INFO("collision #" << k);
-        REQUIRE(a[k].kind == b[k].kind);
-        REQUIRE(a[k].a == b[k].a);
-        REQUIRE(a[k].b == b[k].b);
-        REQUIRE(std::abs(a[k].t - b[k].t) <= 1e-9);
-    }
+    b.resize(a.size());
+    require_same_events(a, b, 1e-9);
 }
 
 TEST_CASE(
