@@ -98,6 +98,24 @@ TEST_CASE("the event calendar pops in the model's order, near, far and beyond it
     CHECK(calendar.empty());
 }
 
+TEST_CASE("an event calendar's ring rounds up to a power of two and still pops in order") {
+    // A block's bucket is a mask of its number, so the ring must be a power of two.
+    constexpr std::uint32_t handles = 200;
+    std::mt19937_64 rng(23);
+    const auto delay = [](std::mt19937_64& g) {
+        std::exponential_distribution<double> near(1.0);
+        std::uniform_real_distribution<double> u(0.0, 1.0);
+        return u(g) < 0.05 ? 5.0 + 20.0 * u(g) : near(g);
+    };
+    Calendar calendar(handles);
+    calendar.tune(0.03, 10, 0.0);
+    CHECK(calendar.buckets() == 16);
+    CHECK(simulate(calendar, handles, 20'000, rng, delay) == 0);
+    calendar.tune(0.03, 3, 0.0);
+    CHECK(calendar.buckets() == 4);
+    CHECK(simulate(calendar, handles, 5'000, rng, delay) == 0);
+}
+
 TEST_CASE("an event calendar of one block is a plain heap, and tune() re-files what it holds") {
     constexpr std::uint32_t handles = 100;
     std::mt19937_64 rng(5);

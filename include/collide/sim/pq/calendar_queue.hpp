@@ -21,6 +21,7 @@
 /// handle that holds the key (IndexedDaryHeap's embedded handles).
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -47,14 +48,16 @@ class CalendarQueue {
     }
 
     /// Blocks of `width` (> 0; +infinity: one block, a plain heap) and a ring of `buckets`
-    /// lists (>= 2), the current block being the one of time `now`. Re-files every entry.
+    /// lists (at least 2, rounded up to a power of two, so that a block's bucket is a mask and
+    /// not a division), the current block being the one of time `now`. Re-files every entry.
     void tune(double width, std::size_t buckets, double now) {
         std::vector<std::pair<handle_type, Key>> all;
         all.reserve(size());
         for_each([&](handle_type h, const Key& k) { all.emplace_back(h, k); });
         for (const auto& [h, k] : all) erase(h);
         inv_width_ = std::isinf(width) ? 0.0 : 1.0 / width;
-        ring_.assign(std::max<std::size_t>(buckets, 2), none);
+        ring_.assign(std::bit_ceil(std::max<std::size_t>(buckets, 2)), none);
+        ring_mask_ = ring_.size() - 1;
         cur_ = 0;
         cur_ = block_of(now);
         for (const auto& [h, k] : all) place(h, k);
@@ -126,6 +129,9 @@ class CalendarQueue {
     /// The heap of the current block (its top is the earliest event after settle()).
     [[nodiscard]] const Heap& near() const noexcept { return heap_; }
 
+    /// Buckets in the ring (a power of two).
+    [[nodiscard]] std::size_t buckets() const noexcept { return ring_.size(); }
+
     [[nodiscard]] std::size_t bytes() const noexcept {
         return heap_.bytes() + entry_.capacity() * sizeof(Entry) +
                ring_.capacity() * sizeof(handle_type);
@@ -150,8 +156,8 @@ class CalendarQueue {
                 const Entry& e = entry_[h];
                 const std::int64_t b = block_of(e.key.t);
                 if (e.slot != s || e.prev != prev || b <= cur_ ||
-                    b >= cur_ + static_cast<std::int64_t>(ring_.size()) ||
-                    static_cast<std::size_t>(b) % ring_.size() != s || heap_.contains(h)) {
+                    b >= cur_ + static_cast<std::int64_t>(ring_.size()) || bucket_of(b) != s ||
+                    heap_.contains(h)) {
                     return false;
                 }
                 prev = h;
@@ -192,6 +198,11 @@ class CalendarQueue {
         return static_cast<std::int64_t>(x);
     }
 
+    /// The ring's bucket of block b (b >= 0).
+    [[nodiscard]] std::size_t bucket_of(std::int64_t b) const noexcept {
+        return static_cast<std::size_t>(b) & ring_mask_;
+    }
+
     /// Files an entry that is in no structure: the heap up to the current block, the ring for
     /// the next buckets - 1 blocks, the overflow list after.
     void place(handle_type h, const Key& k) {
@@ -202,7 +213,7 @@ class CalendarQueue {
         }
         entry_[h].key = k;
         if (b - cur_ < static_cast<std::int64_t>(ring_.size())) {
-            const auto s = static_cast<handle_type>(static_cast<std::size_t>(b) % ring_.size());
+            const auto s = static_cast<handle_type>(bucket_of(b));
             link(h, s, ring_[s]);
             ++ring_count_;
         } else {
@@ -247,7 +258,7 @@ class CalendarQueue {
         if (refile) {
             take_list(overflow_, [&](handle_type h) { place(h, entry_[h].key); });
         }
-        const std::size_t slot = static_cast<std::size_t>(b) % ring_.size();
+        const std::size_t slot = bucket_of(b);
         take_list(ring_[slot], [&](handle_type h) {
             --ring_count_;
             heap_.push(h, entry_[h].key);
@@ -286,6 +297,7 @@ class CalendarQueue {
     Heap heap_;
     BigVector<Entry> entry_;
     BigVector<handle_type> ring_ = BigVector<handle_type>(2, none);
+    std::size_t ring_mask_ = 1;  ///< ring_.size() - 1 (the size is a power of two)
     handle_type overflow_ = none;
     double inv_width_ = 0.0;      ///< 1 / block width; 0: one block (everything in the heap)
     std::int64_t cur_ = 0;        ///< the current block
