@@ -48,6 +48,14 @@ constexpr double list_shell_per_diameter = 0.5;
 /// (0.38, not 0.4: a scene made at 0.4 sums to a hair less).
 constexpr double list_min_packing = 0.38;
 
+/// Up to this many bytes of particle records, a list scan finds them in the core's own caches
+/// (a typical L2): asking for them first would only cost instructions (docs/benchmarks.md).
+constexpr std::size_t records_in_cache = std::size_t{1} << 20;
+
+/// Slots per cell of list centres to start with (about three centres per cell at packing
+/// 0.45); a cell that outgrows them doubles every cell's slots.
+constexpr std::uint32_t initial_cell_slots = 8;
+
 /// Slots per list to start with; lists that outgrow them double every list's slots.
 constexpr std::uint32_t initial_list_slots = 16;
 
@@ -224,7 +232,13 @@ void BasicFastEngine<D>::choose_grid(const SceneType& scene) {
         axis(cw_, k) = axis(extent_, k) / n_[k];
         total *= n_[k];
     }
-    head_.assign(total, no_disc);
+    if (lists()) {
+        cell_slots_ = initial_cell_slots;
+        members_.assign(total * cell_slots_, no_disc);
+        member_count_.assign(total, 0);
+    } else {
+        head_.assign(total, no_disc);
+    }
 }
 
 template <int D>
@@ -234,6 +248,9 @@ void BasicFastEngine<D>::choose_lists(const SceneType& scene) {
     if constexpr (D == 3) {
         if (!std::isinf(big_threshold_) || !(small_radius_max_ > 0.0)) return;
         if (packing_fraction(scene) < list_min_packing) return;
+        // A list entry keeps its image code above the index (a scene this big, 50 GB of
+        // spheres, would use cell crossings).
+        if (Space::particles(scene).size() > list_index_mask) return;
         const double shell = list_shell_per_diameter * 2.0 * small_radius_max_;
         if (periodic_) {
             // Three cells of centres per axis, and so the nearest image of a listed pair is
@@ -246,6 +263,18 @@ void BasicFastEngine<D>::choose_lists(const SceneType& scene) {
         }
         lists_ = true;
         shell_ = shell;
+        const auto& particles = Space::particles(scene);
+        equal_radii_ = std::all_of(particles.begin(), particles.end(), [&](const auto& p) {
+            return p.radius == particles.front().radius;
+        });
+        for (std::uint32_t code = 0; code < image_shift_.size(); ++code) {
+            Vec shift{};
+            std::uint32_t rest = code;
+            for (int k = 0; k < D; ++k, rest /= 3) {
+                axis(shift, k) = (static_cast<double>(rest % 3) - 1.0) * axis(extent_, k);
+            }
+            image_shift_[code] = shift;
+        }
         // A hair inside shell / 2: a list still holds every pair that can touch when the
         // rebuild's time is rounded a little late.
         expiry_ = 0.5 * shell * (1.0 - 1e-9);
@@ -793,8 +822,8 @@ template <typename Visit>
                 std::int64_t x;
                 double shift_x;
                 if (!along(0, ox, x, shift_x)) continue;
-                const std::uint32_t first = head_[static_cast<std::size_t>(y * nx + x)];
-                if (first != no_disc) visit(first, Vec{shift_x, shift_y});
+                const auto cell = static_cast<std::uint32_t>(y * nx + x);
+                if (occupied(cell)) visit(cell, Vec{shift_x, shift_y});
             }
         }
     } else {
@@ -812,8 +841,8 @@ template <typename Visit>
                     std::int64_t x;
                     double shift_x;
                     if (!along(0, ox, x, shift_x)) continue;
-                    const std::uint32_t first = head_[static_cast<std::size_t>(row + x)];
-                    if (first != no_disc) visit(first, Vec{shift_x, shift_y, shift_z});
+                    const auto cell = static_cast<std::uint32_t>(row + x);
+                    if (occupied(cell)) visit(cell, Vec{shift_x, shift_y, shift_z});
                 }
             }
         }
@@ -822,14 +851,14 @@ template <typename Visit>
 
 template <int D>
 template <typename Prefetch>
-[[gnu::always_inline]] inline std::size_t BasicFastEngine<D>::first_of_cells(
+[[gnu::always_inline]] inline std::size_t BasicFastEngine<D>::occupied_cells(
     const Particle& pi, const Coords& lo, const Coords& hi, CellVisits& visits,
     Prefetch&& prefetch) const {
     std::size_t count = 0;
-    for_each_cell(pi, lo, hi, [&](std::uint32_t first, Vec shift) {
-        prefetch(first);
+    for_each_cell(pi, lo, hi, [&](std::uint32_t cell, Vec shift) {
+        prefetch(cell);
         CellVisit& visit = visits[count++];
-        visit.first = first;
+        visit.cell = cell;
         for (int k = 0; k < D; ++k) visit.shift[static_cast<std::size_t>(k)] = axis(shift, k);
     });
     return count;
@@ -852,10 +881,10 @@ template <int D>
 inline void BasicFastEngine<D>::scan_cells(std::uint32_t i, const Particle& pi, Vec xi,
                                            const Coords& lo, const Coords& hi, Key& best) {
     CellVisits visits;
-    const std::size_t count = first_of_cells(
-        pi, lo, hi, visits, [&](std::uint32_t first) { __builtin_prefetch(&p_[first]); });
+    const std::size_t count = occupied_cells(
+        pi, lo, hi, visits, [&](std::uint32_t cell) { __builtin_prefetch(&p_[head_[cell]]); });
     for (std::size_t k = 0; k < count; ++k) {
-        scan_list(i, pi, xi, visits[k].first, vec_of(visits[k].shift), best);
+        scan_list(i, pi, xi, head_[visits[k].cell], vec_of(visits[k].shift), best);
     }
 }
 
@@ -880,8 +909,8 @@ void BasicFastEngine<D>::scan_ring(std::uint32_t i, const Particle& pi, Vec xi, 
         return;
     }
     // Big particles are in no cell list, so scan_list's skip of i never applies here.
-    for_each_cell(pi, lo, hi, [&](std::uint32_t first, Vec shift) {
-        scan_list(i, pi, xi, first, shift, best);
+    for_each_cell(pi, lo, hi, [&](std::uint32_t cell, Vec shift) {
+        scan_list(i, pi, xi, head_[cell], shift, best);
     });
 }
 
@@ -891,6 +920,7 @@ void BasicFastEngine<D>::scan_ring(std::uint32_t i, const Particle& pi, Vec xi, 
 template <int D>
 void BasicFastEngine<D>::build_all_lists() {
     list_cap_ = initial_list_slots;
+    prefetch_records_ = p_.size() * sizeof(Particle) > records_in_cache;
     nbr_.assign(p_.size() * list_cap_, no_disc);
     nbr_count_.assign(p_.size(), 0);
     for (std::uint32_t i = 0; i < p_.size(); ++i) gather_neighbours(i, true);
@@ -900,40 +930,86 @@ template <int D>
 void BasicFastEngine<D>::gather_neighbours(std::uint32_t i, bool only_after) {
     const Particle& pi = p_[i];
     const Vec ci = centre_[i];
-    // As in scan_cells: every cell's first record (and centre) asked for before any is read.
+    // As in scan_cells: every cell's members asked for before any is read.
     CellVisits visits;
-    const std::size_t cells = first_of_cells(pi, neighbourhood_lo(), neighbourhood_hi(), visits,
-                                             [&](std::uint32_t first) {
-                                                 __builtin_prefetch(&p_[first].next);
-                                                 __builtin_prefetch(&centre_[first]);
-                                             });
+    const std::size_t cells =
+        occupied_cells(pi, neighbourhood_lo(), neighbourhood_hi(), visits, [&](std::uint32_t cell) {
+            __builtin_prefetch(&members_[std::size_t{cell} * cell_slots_]);
+        });
     for (std::size_t c = 0; c < cells; ++c) {
         const Vec shift = vec_of(visits[c].shift);
-        for (std::uint32_t j = visits[c].first; j != no_disc; j = p_[j].next) {
-            if (j == i || (only_after && j < i)) continue;
-            const double reach = pi.r + p_[j].r + shell_;
-            if (norm2(centre_[j] + shift - ci) <= reach * reach) {
-                add_neighbour(i, j);
-                add_neighbour(j, i);
+        // The cell's members are read from one array, not followed link by link: each record
+        // read below then waits for no other (the linked lists' chain of reads cost more than
+        // the distances).
+        const std::uint32_t* members = &members_[std::size_t{visits[c].cell} * cell_slots_];
+        const std::uint32_t count = member_count_[visits[c].cell];
+        // j is seen from i through the cell's image, and i from j through the opposite one.
+        const std::uint32_t image = image_code(visits[c].shift);
+        const auto opposite = static_cast<std::uint32_t>(image_shift_.size() - 1) - image;
+        const auto gather = [&](auto equal_radii) {
+            for (std::uint32_t k = 0; k < count; ++k) {
+                const std::uint32_t j = members[k];
+                if (j == i || (only_after && j < i)) continue;
+                // Equal radii: the same sum without reading j's record.
+                const double rj = equal_radii ? pi.r : p_[j].r;
+                const double reach = pi.r + rj + shell_;
+                if (norm2(centre_[j] + shift - ci) <= reach * reach) {
+                    add_neighbour(i, j, image);
+                    add_neighbour(j, i, opposite);
+                }
             }
+        };
+        if (equal_radii_) {
+            gather(std::true_type{});
+        } else {
+            gather(std::false_type{});
         }
     }
 }
 
 template <int D>
-void BasicFastEngine<D>::add_neighbour(std::uint32_t i, std::uint32_t j) {
-    if (nbr_count_[i] == list_cap_) {
-        // Rare (a crowd denser than the start): double every list's slots, keeping the entries.
-        const std::uint32_t cap = 2 * list_cap_;
-        pq::BigVector<std::uint32_t> wider(p_.size() * cap, no_disc);
-        for (std::size_t k = 0; k < p_.size(); ++k) {
-            std::copy_n(nbr_.begin() + static_cast<std::ptrdiff_t>(k * list_cap_), nbr_count_[k],
-                        wider.begin() + static_cast<std::ptrdiff_t>(k * cap));
-        }
-        nbr_ = std::move(wider);
-        list_cap_ = cap;
+std::uint32_t BasicFastEngine<D>::image_code(const std::array<double, D>& shift) noexcept {
+    std::uint32_t code = 0;
+    for (int k = D - 1; k >= 0; --k) {
+        const double s = shift[static_cast<std::size_t>(k)];
+        code = 3 * code + (s > 0.0 ? 2U : s < 0.0 ? 0U : 1U);
     }
-    nbr_[std::size_t{i} * list_cap_ + nbr_count_[i]++] = j;
+    return code;
+}
+
+template <int D>
+std::uint32_t BasicFastEngine<D>::nearest_image_code(std::uint32_t i,
+                                                     std::uint32_t j) const noexcept {
+    std::array<double, D> shift{};
+    for (int k = 0; k < D; ++k) {
+        const double d = axis(centre_[j], k) - axis(centre_[i], k);
+        const double side = axis(extent_, k);
+        if (periodic_)
+            shift[static_cast<std::size_t>(k)] = d > 0.5 * side    ? -side
+                                                 : d < -0.5 * side ? side
+                                                                   : 0.0;
+    }
+    return image_code(shift);
+}
+
+template <int D>
+inline void BasicFastEngine<D>::add_neighbour(std::uint32_t i, std::uint32_t j,
+                                              std::uint32_t image) {
+    if (nbr_count_[i] == list_cap_) widen_lists();
+    nbr_[std::size_t{i} * list_cap_ + nbr_count_[i]++] = j | (image << list_image_shift);
+}
+
+template <int D>
+void BasicFastEngine<D>::widen_lists() {
+    // Rare (a crowd denser than the start): double every list's slots, keeping the entries.
+    const std::uint32_t cap = 2 * list_cap_;
+    pq::BigVector<std::uint32_t> wider(p_.size() * cap, no_disc);
+    for (std::size_t k = 0; k < p_.size(); ++k) {
+        std::copy_n(nbr_.begin() + static_cast<std::ptrdiff_t>(k * list_cap_), nbr_count_[k],
+                    wider.begin() + static_cast<std::ptrdiff_t>(k * cap));
+    }
+    nbr_ = std::move(wider);
+    list_cap_ = cap;
 }
 
 template <int D>
@@ -941,7 +1017,7 @@ void BasicFastEngine<D>::remove_neighbour(std::uint32_t i, std::uint32_t j) noex
     std::uint32_t* list = &nbr_[std::size_t{i} * list_cap_];
     std::uint32_t& count = nbr_count_[i];
     for (std::uint32_t k = 0; k < count; ++k) {
-        if (list[k] == j) {
+        if ((list[k] & list_index_mask) == j) {
             list[k] = list[--count];  // order does not matter: a scan's result is order-free
             return;
         }
@@ -955,7 +1031,9 @@ void BasicFastEngine<D>::process_rebuild(std::uint32_t i) {
     advance_disc(i);
     Particle& pi = p_[i];
     const std::uint32_t* list = &nbr_[std::size_t{i} * list_cap_];
-    for (std::uint32_t k = 0; k < nbr_count_[i]; ++k) remove_neighbour(list[k], i);
+    for (std::uint32_t k = 0; k < nbr_count_[i]; ++k) {
+        remove_neighbour(list[k] & list_index_mask, i);
+    }
     nbr_count_[i] = 0;
     if (periodic_) {
         // The centre goes back into the box: the particle never strays more than shell / 2.
@@ -983,28 +1061,14 @@ void BasicFastEngine<D>::scan_neighbour_list(std::uint32_t i, const Particle& pi
                                              Key& best) {
     const std::uint32_t* list = &nbr_[std::size_t{i} * list_cap_];
     const std::uint32_t count = nbr_count_[i];
-    for (std::uint32_t k = 0; k < count; ++k) {
+    for (std::uint32_t k = 0; prefetch_records_ && k < count; ++k) {
         // A sphere's 80-byte record starts a cache line only every fourth sphere: ask for the
         // line that holds its last byte too (x, v, t and r, all a scan reads, span both).
-        const auto* record = reinterpret_cast<const char*>(&p_[list[k]]);
+        const auto* record = reinterpret_cast<const char*>(&p_[list[k] & list_index_mask]);
         __builtin_prefetch(record);
         __builtin_prefetch(record + sizeof(Particle) - 1);
     }
     core_.counters().predictions += count;
-    if (!periodic_ || !near_box_edge(i)) {
-        // Every listed particle is then stored as its nearest image: no shift to work out.
-        scan_listed<false>(i, pi, xi, list, count, best);
-    } else {
-        scan_listed<true>(i, pi, xi, list, count, best);
-    }
-}
-
-template <int D>
-template <bool Shifted>
-[[gnu::always_inline]] inline void BasicFastEngine<D>::scan_listed(std::uint32_t i,
-                                                                   const Particle& pi, Vec xi,
-                                                                   const std::uint32_t* list,
-                                                                   std::uint32_t count, Key& best) {
     // test_pair's tests in another order, for fewer mispredicted branches: half of all pairs
     // recede, and most of the others cannot beat the best event so far (cannot_beat), so both
     // are one combined test that goes the same way for most pairs; the rare rest is exact.
@@ -1016,20 +1080,10 @@ template <bool Shifted>
     // cannot_beat's margin on the interval to the best event, updated when that improves.
     double reach = beat_margin(found.t);
     for (std::uint32_t k = 0; k < count; ++k) {
-        const std::uint32_t j = list[k];
+        const std::uint32_t j = list[k] & list_index_mask;
         const Particle& pj = p_[j];
-        Vec dr = pj.x + pj.v * (now - pj.t);
-        if constexpr (Shifted) {
-            // The nearest image: a listed pair spans at most 2 r + 2 shell, under half the box.
-            Vec shift{};
-            for (int a = 0; a < D; ++a) {
-                const double d = axis(pj.x, a) - axis(pi.x, a);
-                const double half = 0.5 * axis(extent_, a);
-                axis(shift, a) = d > half ? -axis(extent_, a) : d < -half ? axis(extent_, a) : 0.0;
-            }
-            dr = dr + shift;
-        }
-        dr = dr - xi;
+        // j through the image stored with it (no shift away from the box's faces).
+        const Vec dr = pj.x + pj.v * (now - pj.t) + image_shift_[list[k] >> list_image_shift] - xi;
         const Vec dv = pj.v - vi;
         const double sigma = ri + pj.r;
         const double b = dot(dv, dr);
@@ -1053,20 +1107,6 @@ template <bool Shifted>
 }
 
 template <int D>
-bool BasicFastEngine<D>::near_box_edge(std::uint32_t i) const noexcept {
-    // A list holds centres within 2 r_max + shell of i's centre. When i's centre is farther than
-    // that from every face, each listed centre's nearest image lies inside the box, where its
-    // centre is kept (rebuilds wrap), and a particle stays within shell / 2 of its centre: the
-    // stored positions are then the nearest images, and the shift of the loop above is 0.
-    const double margin = (2.0 * small_radius_max_ + shell_) * (1.0 + cell_margin);
-    const Vec c = centre_[i];
-    for (int k = 0; k < D; ++k) {
-        if (!(axis(c, k) > margin && axis(c, k) < axis(extent_, k) - margin)) return true;
-    }
-    return false;
-}
-
-template <int D>
 double BasicFastEngine<D>::time_to_expiry(std::uint32_t i, const Particle& pi,
                                           Vec xi) const noexcept {
     const Vec d = xi - centre_[i];
@@ -1084,24 +1124,31 @@ template <int D>
 bool BasicFastEngine<D>::check_lists() const {
     const std::size_t n = p_.size();
     if (centre_.size() != n || nbr_count_.size() != n || nbr_.size() != n * list_cap_) return false;
+    // j is in i's list, seen through its nearest image (the centres of a listed pair are
+    // within 2 r + shell, far less than half the box).
     const auto listed = [&](std::uint32_t i, std::uint32_t j) {
         const std::uint32_t* list = &nbr_[std::size_t{i} * list_cap_];
-        return std::find(list, list + nbr_count_[i], j) != list + nbr_count_[i];
+        return std::find(list, list + nbr_count_[i],
+                         j | (nearest_image_code(i, j) << list_image_shift)) !=
+               list + nbr_count_[i];
     };
     for (std::uint32_t i = 0; i < n; ++i) {
         // Within shell / 2 of its centre, up to rounding.
         if (norm(position_at_now(i) - centre_[i]) > expiry_ * (1.0 + 1e-6)) return false;
         const std::uint32_t* list = &nbr_[std::size_t{i} * list_cap_];
         for (std::uint32_t k = 0; k < nbr_count_[i]; ++k) {
-            const std::uint32_t j = list[k];
-            if (j >= n || j == i || !listed(j, i)) return false;  // symmetric, no self
-            if (std::count(list, list + nbr_count_[i], j) != 1) return false;
+            const std::uint32_t j = list[k] & list_index_mask;
+            if (j >= n || j == i || !listed(i, j) || !listed(j, i)) return false;  // symmetric
+            if (std::count_if(list, list + nbr_count_[i],
+                              [&](std::uint32_t e) { return (e & list_index_mask) == j; }) != 1)
+                return false;
         }
         // Every pair whose centres are near is listed (the cells of centres hold them all).
         bool complete = true;
         for_each_cell(
-            p_[i], neighbourhood_lo(), neighbourhood_hi(), [&](std::uint32_t first, Vec shift) {
-                for (std::uint32_t j = first; j != no_disc; j = p_[j].next) {
+            p_[i], neighbourhood_lo(), neighbourhood_hi(), [&](std::uint32_t cell, Vec shift) {
+                for (std::uint32_t k = 0; k < member_count_[cell]; ++k) {
+                    const std::uint32_t j = members_[std::size_t{cell} * cell_slots_ + k];
                     const double reach = (p_[i].r + p_[j].r + shell_) * (1.0 - 1e-9);
                     if (j != i && norm2(centre_[j] + shift - centre_[i]) <= reach * reach &&
                         !listed(i, j))
@@ -1125,9 +1172,16 @@ void BasicFastEngine<D>::advance_disc(std::uint32_t i) noexcept {
 }
 
 template <int D>
-void BasicFastEngine<D>::link(std::uint32_t i, std::uint32_t cell) noexcept {
+void BasicFastEngine<D>::link(std::uint32_t i, std::uint32_t cell) {
     Particle& pi = p_[i];
     pi.cell = cell;
+    if (lists()) {
+        if (member_count_[cell] == cell_slots_) widen_cells();
+        const std::uint32_t slot = member_count_[cell]++;
+        members_[std::size_t{cell} * cell_slots_ + slot] = i;
+        cold_[i].prev = slot;
+        return;
+    }
     pi.next = head_[cell];
     cold_[i].prev = no_disc;
     if (pi.next != no_disc) cold_[pi.next].prev = i;
@@ -1137,6 +1191,16 @@ void BasicFastEngine<D>::link(std::uint32_t i, std::uint32_t cell) noexcept {
 template <int D>
 void BasicFastEngine<D>::unlink(std::uint32_t i) noexcept {
     Particle& pi = p_[i];
+    if (lists()) {
+        // The cell's last member takes i's slot.
+        std::uint32_t* members = &members_[std::size_t{pi.cell} * cell_slots_];
+        const std::uint32_t slot = cold_[i].prev;
+        const std::uint32_t last = members[--member_count_[pi.cell]];
+        members[slot] = last;
+        cold_[last].prev = slot;
+        cold_[i].prev = no_disc;
+        return;
+    }
     const std::uint32_t prev = cold_[i].prev;
     if (prev == no_disc) {
         head_[pi.cell] = pi.next;
@@ -1146,6 +1210,19 @@ void BasicFastEngine<D>::unlink(std::uint32_t i) noexcept {
     if (pi.next != no_disc) cold_[pi.next].prev = prev;
     pi.next = no_disc;
     cold_[i].prev = no_disc;
+}
+
+template <int D>
+void BasicFastEngine<D>::widen_cells() {
+    // Rare (a crowd denser than the start): double every cell's slots, keeping the members.
+    const std::uint32_t slots = 2 * cell_slots_;
+    pq::BigVector<std::uint32_t> wider(member_count_.size() * slots, no_disc);
+    for (std::size_t c = 0; c < member_count_.size(); ++c) {
+        std::copy_n(members_.begin() + static_cast<std::ptrdiff_t>(c * cell_slots_),
+                    member_count_[c], wider.begin() + static_cast<std::ptrdiff_t>(c * slots));
+    }
+    members_ = std::move(wider);
+    cell_slots_ = slots;
 }
 
 template <int D>
@@ -1264,6 +1341,7 @@ std::uint64_t BasicFastEngine<D>::bytes() const noexcept {
     std::size_t total = p_.capacity() * sizeof(Particle);
     total += cold_.capacity() * sizeof(Cold);
     total += (big_.capacity() + head_.capacity() + scene_index_->capacity()) * u32;
+    total += (members_.capacity() + member_count_.capacity()) * u32;
     total += image_.capacity() * sizeof(Image) + start_.capacity() * sizeof(Vec);
     total += centre_.capacity() * sizeof(Vec) + (nbr_.capacity() + nbr_count_.capacity()) * u32;
     total += queue_.bytes();
@@ -1275,6 +1353,15 @@ template <int D>
 bool BasicFastEngine<D>::check_invariants() const {
     if (!queue_.check_invariants()) return false;
     std::vector<std::uint8_t> seen(p_.size(), 0);
+    for (std::size_t c = 0; c < member_count_.size(); ++c) {
+        if (member_count_[c] > cell_slots_) return false;
+        for (std::uint32_t k = 0; k < member_count_[c]; ++k) {
+            const std::uint32_t j = members_[c * cell_slots_ + k];
+            if (j >= p_.size() || seen[j] || p_[j].cell != c || cold_[j].prev != k || is_big(j))
+                return false;
+            seen[j] = 1;
+        }
+    }
     for (std::size_t c = 0; c < head_.size(); ++c) {
         std::uint32_t before = no_disc;
         for (std::uint32_t j = head_[c]; j != no_disc; j = p_[j].next) {

@@ -30,11 +30,12 @@
 ///   whose list centres were within r_i + r_j + shell of its own when the later of the two was
 ///   built (the lists are symmetric), and predicts pairs against that list only. A sphere's list
 ///   expires when it has moved shell / 2 from its centre (an event of kind `cell`, "rebuild"):
-///   two spheres outside each other's lists cannot touch before one of them rebuilds. The grid
-///   then holds list centres, in cells at least 2 r_max + shell wide, and has no crossing
-///   events. Used in 3D at packing fractions from 0.38 (below, a sphere would rebuild several
-///   times between collisions) when no sphere is big and a periodic box has three such cells per
-///   axis; otherwise, and in 2D, the cell crossings above.
+///   two spheres outside each other's lists cannot touch before one of them rebuilds. Each entry
+///   keeps the periodic image through which the pair meets, so a scan never works out the
+///   nearest image. The grid then holds list centres, in cells at least 2 r_max + shell wide,
+///   and has no crossing events. Used in 3D at packing fractions from 0.38 (below, a sphere would
+///   rebuild several times between collisions) when no sphere is big and a periodic box has three
+///   such cells per axis; otherwise, and in 2D, the cell crossings above.
 ///
 /// Periodic boxes need at least three cells per axis (three small-disc diameters); the
 /// constructor throws Error(input) naming `box.width` / `box.height` / `box.depth` otherwise.
@@ -105,6 +106,8 @@ class BasicFastEngine final : public EngineOf<D> {
     [[nodiscard]] bool uses_neighbour_lists() const noexcept { return lists(); }
     /// Slots per neighbour list (they double when one overflows); 0 without lists.
     [[nodiscard]] std::uint32_t list_slots() const noexcept { return list_cap_; }
+    /// Slots per grid cell of list centres (they double when a cell overflows); 0 without lists.
+    [[nodiscard]] std::uint32_t cell_slots() const noexcept { return cell_slots_; }
     /// Heap memory held by the engine's containers, in bytes (capacities, not sizes).
     [[nodiscard]] std::uint64_t bytes() const noexcept;
     /// O(N) consistency check (cell membership, heap invariants, one event per disc); for tests,
@@ -142,7 +145,9 @@ class BasicFastEngine final : public EngineOf<D> {
         double pair_t = kinematics::never;
         std::uint32_t pair_partner = no_disc;
         std::uint32_t pair_count = 0;  ///< the partner's collision count when pair_t was predicted
-        std::uint32_t prev = 0;        ///< previous particle in the cell list (O(1) unlink)
+        /// Previous particle in the cell list (O(1) unlink); with neighbour lists, the particle's
+        /// slot in its cell's members_.
+        std::uint32_t prev = 0;
         /// Collisions in the particle's current instant (sim::same_instant), for the jam bound
         /// (see count_collision_now); fills the record's padding.
         std::uint32_t instant_collisions = 0;
@@ -245,21 +250,21 @@ class BasicFastEngine final : public EngineOf<D> {
     /// Scans the cells at offsets lo[k] .. hi[k] along each axis k from pi's cell.
     void scan_cells(std::uint32_t i, const Particle& pi, Vec xi, const Coords& lo, const Coords& hi,
                     Key& best);
-    /// A cell's first particle and the image shift of its wrap, as plain members: Vec's default
+    /// A cell's linear index and the image shift of its wrap, as plain members: Vec's default
     /// member initialisers would zero all 3^D entries on every call (tens of instructions per
     /// prediction for entries never read).
     struct CellVisit {
-        std::uint32_t first;
+        std::uint32_t cell;
         std::array<double, D> shift;
     };
     using CellVisits = std::array<CellVisit, D == 2 ? 9 : 27>;  // callers scan at most 3^D cells
-    /// Records the non-empty cells at offsets lo .. hi from pi's cell, calling prefetch(first) on
+    /// Records the non-empty cells at offsets lo .. hi from pi's cell, calling prefetch(cell) on
     /// each, before any list is read: beyond the caches every cell's first record is a miss, and
     /// asking for all of them first overlaps those misses (docs/benchmarks.md). Returns the count.
     template <typename Prefetch>
-    std::size_t first_of_cells(const Particle& pi, const Coords& lo, const Coords& hi,
+    std::size_t occupied_cells(const Particle& pi, const Coords& lo, const Coords& hi,
                                CellVisits& visits, Prefetch&& prefetch) const;
-    /// Calls visit(first particle, shift) for each non-empty cell at offsets lo .. hi from pi's
+    /// Calls visit(cell, shift) for each non-empty cell at offsets lo .. hi from pi's
     /// cell (shift: the periodic image of a wrapped-around cell). The last axis is the outer
     /// loop.
     template <typename Visit>
@@ -278,16 +283,17 @@ class BasicFastEngine final : public EngineOf<D> {
     /// Adds to i's list (and i to theirs) the particles whose centres are within reach of i's,
     /// among those in the 3^D cells around i's; `only_after`: only j > i (the first build).
     void gather_neighbours(std::uint32_t i, bool only_after);
-    void add_neighbour(std::uint32_t i, std::uint32_t j);
+    /// Adds j to i's list, seen through periodic image `image` (see list_image_shift).
+    void add_neighbour(std::uint32_t i, std::uint32_t j, std::uint32_t image);
+    /// Doubles every list's slots (a list is full).
+    [[gnu::noinline]] void widen_lists();
     void remove_neighbour(std::uint32_t i, std::uint32_t j) noexcept;
     void process_rebuild(std::uint32_t i);
     void scan_neighbour_list(std::uint32_t i, const Particle& pi, Vec xi, Key& best);
-    /// The pairs of i's list (Shifted: through the nearest image).
-    template <bool Shifted>
-    void scan_listed(std::uint32_t i, const Particle& pi, Vec xi, const std::uint32_t* list,
-                     std::uint32_t count, Key& best);
-    /// True unless every particle in i's list is stored as its nearest image to i.
-    [[nodiscard]] bool near_box_edge(std::uint32_t i) const noexcept;
+    /// The image code of shift s (each component 0 or +-the box side): sum of (sign + 1) 3^k.
+    [[nodiscard]] static std::uint32_t image_code(const std::array<double, D>& shift) noexcept;
+    /// The image code of the shift from j's centre to its nearest image around i's centre.
+    [[nodiscard]] std::uint32_t nearest_image_code(std::uint32_t i, std::uint32_t j) const noexcept;
     /// Time until particle i, at xi now, is shell / 2 from its list centre (never at rest).
     [[nodiscard]] double time_to_expiry(std::uint32_t i, const Particle& pi, Vec xi) const noexcept;
     [[nodiscard]] bool check_lists() const;
@@ -306,8 +312,14 @@ class BasicFastEngine final : public EngineOf<D> {
 
     // --- bookkeeping
     void advance_disc(std::uint32_t i) noexcept;
-    void link(std::uint32_t i, std::uint32_t cell) noexcept;
+    void link(std::uint32_t i, std::uint32_t cell);
     void unlink(std::uint32_t i) noexcept;
+    /// Doubles every cell's slots in members_ (lists_).
+    void widen_cells();
+    /// True when the cell holds a particle (its list, or with lists_ its members).
+    [[nodiscard]] bool occupied(std::uint32_t cell) const noexcept {
+        return lists() ? member_count_[cell] != 0 : head_[cell] != no_disc;
+    }
     [[nodiscard]] bool is_big(std::uint32_t i) const noexcept { return p_[i].r > big_threshold_; }
     [[nodiscard]] Vec position_at_now(std::uint32_t i) const noexcept;
 
@@ -325,6 +337,11 @@ class BasicFastEngine final : public EngineOf<D> {
     double big_threshold_ = 0.0;        ///< radius above which a particle is big (+inf: none)
     double small_radius_max_ = 0.0;
     pq::BigVector<std::uint32_t> head_;  ///< first particle of each cell list (no_disc: empty)
+    /// With neighbour lists the cells hold list centres in arrays instead of linked lists: a
+    /// rebuild reads all 27 cells' members at once (cell_slots_ per cell, member_count_ used).
+    std::uint32_t cell_slots_ = 0;
+    pq::BigVector<std::uint32_t> members_;
+    pq::BigVector<std::uint32_t> member_count_;
 
     // particles
     pq::BigVector<Particle> p_;
@@ -347,9 +364,20 @@ class BasicFastEngine final : public EngineOf<D> {
     bool lists_ = false;
     double shell_ = 0.0;   ///< pairs whose centres are within r_i + r_j + shell_ are listed
     double expiry_ = 0.0;  ///< a list expires this far from its centre (shell / 2, a hair less)
-    std::uint32_t list_cap_ = 0;              ///< slots per particle in nbr_
-    pq::BigVector<Vec> centre_;               ///< where each particle's list was built
-    pq::BigVector<std::uint32_t> nbr_;        ///< list_cap_ slots per particle
+    std::uint32_t list_cap_ = 0;     ///< slots per particle in nbr_
+    bool equal_radii_ = false;       ///< all particles alike: a rebuild need not read their radii
+    bool prefetch_records_ = false;  ///< scans prefetch the listed records (beyond the caches)
+    pq::BigVector<Vec> centre_;      ///< where each particle's list was built
+    /// list_cap_ slots per particle, each a neighbour's index and, in the bits from
+    /// list_image_shift up, the code of the periodic image through which the particle sees it
+    /// (image_shift_): the image is fixed while both lists last (positions wrap only at
+    /// rebuilds), so a scan adds the stored shift instead of working out the nearest image.
+    pq::BigVector<std::uint32_t> nbr_;
+    /// A list entry: the neighbour's index in the low bits, its image code above.
+    static constexpr std::uint32_t list_image_shift = 27;
+    static constexpr std::uint32_t list_index_mask = (1U << list_image_shift) - 1;
+    /// The shift of each image code (3^D codes; the one of no shift is (3^D - 1) / 2).
+    std::array<Vec, D == 2 ? 9 : 27> image_shift_{};
     pq::BigVector<std::uint32_t> nbr_count_;  ///< used slots per particle
 
     KeyLess key_less_{scene_index_.get()};
