@@ -89,6 +89,20 @@ std::uint32_t cell_index(Vec x, Vec cw, const std::array<std::uint32_t, D>& n) n
     return cell;
 }
 
+/// Doubles `slots`, the width of each row of `table` (one row per entry of `used`), keeping each
+/// row's first used[row] entries (the rest: no_disc).
+void double_slots(pq::BigVector<std::uint32_t>& table, const pq::BigVector<std::uint32_t>& used,
+                  std::uint32_t& slots) {
+    const std::uint32_t wider_slots = 2 * slots;
+    pq::BigVector<std::uint32_t> wider(used.size() * wider_slots, no_disc);
+    for (std::size_t row = 0; row < used.size(); ++row) {
+        std::copy_n(table.begin() + static_cast<std::ptrdiff_t>(row * slots), used[row],
+                    wider.begin() + static_cast<std::ptrdiff_t>(row * wider_slots));
+    }
+    table = std::move(wider);
+    slots = wider_slots;
+}
+
 template <std::size_t D>
 double cell_count(const std::array<std::uint32_t, D>& n) {
     double cells = 1.0;
@@ -1002,14 +1016,7 @@ inline void BasicFastEngine<D>::add_neighbour(std::uint32_t i, std::uint32_t j,
 template <int D>
 void BasicFastEngine<D>::widen_lists() {
     // Rare (a crowd denser than the start): double every list's slots, keeping the entries.
-    const std::uint32_t cap = 2 * list_cap_;
-    pq::BigVector<std::uint32_t> wider(p_.size() * cap, no_disc);
-    for (std::size_t k = 0; k < p_.size(); ++k) {
-        std::copy_n(nbr_.begin() + static_cast<std::ptrdiff_t>(k * list_cap_), nbr_count_[k],
-                    wider.begin() + static_cast<std::ptrdiff_t>(k * cap));
-    }
-    nbr_ = std::move(wider);
-    list_cap_ = cap;
+    double_slots(nbr_, nbr_count_, list_cap_);
 }
 
 template <int D>
@@ -1215,14 +1222,7 @@ void BasicFastEngine<D>::unlink(std::uint32_t i) noexcept {
 template <int D>
 void BasicFastEngine<D>::widen_cells() {
     // Rare (a crowd denser than the start): double every cell's slots, keeping the members.
-    const std::uint32_t slots = 2 * cell_slots_;
-    pq::BigVector<std::uint32_t> wider(member_count_.size() * slots, no_disc);
-    for (std::size_t c = 0; c < member_count_.size(); ++c) {
-        std::copy_n(members_.begin() + static_cast<std::ptrdiff_t>(c * cell_slots_),
-                    member_count_[c], wider.begin() + static_cast<std::ptrdiff_t>(c * slots));
-    }
-    members_ = std::move(wider);
-    cell_slots_ = slots;
+    double_slots(members_, member_count_, cell_slots_);
 }
 
 template <int D>
