@@ -80,17 +80,23 @@ std::size_t simulate(Calendar& calendar, std::uint32_t handles, int ops, std::mt
     return mismatches;
 }
 
+/// Delays of mean 1, but one in twenty uniform in [far, far + span): past the ring when the ring
+/// is shorter than `far`.
+auto mostly_near(double far, double span) {
+    return [far, span](std::mt19937_64& g) {
+        std::exponential_distribution<double> near(1.0);
+        std::uniform_real_distribution<double> u(0.0, 1.0);
+        return u(g) < 0.05 ? far + span * u(g) : near(g);
+    };
+}
+
 }  // namespace
 
 TEST_CASE("the event calendar pops in the model's order, near, far and beyond its ring") {
     constexpr std::uint32_t handles = 300;
     std::mt19937_64 rng(11);
     // Mostly exponential delays (the ring), a few far beyond it (the overflow list).
-    const auto delay = [](std::mt19937_64& g) {
-        std::exponential_distribution<double> near(1.0);
-        std::uniform_real_distribution<double> u(0.0, 1.0);
-        return u(g) < 0.05 ? 50.0 + 200.0 * u(g) : near(g);
-    };
+    const auto delay = mostly_near(50.0, 200.0);
     Calendar calendar(handles);
     calendar.tune(0.01, 64, 0.0);  // ring of 0.64 time units
     CHECK(simulate(calendar, handles, 40'000, rng, delay) == 0);
@@ -102,11 +108,7 @@ TEST_CASE("an event calendar's ring rounds up to a power of two and still pops i
     // A block's bucket is a mask of its number, so the ring must be a power of two.
     constexpr std::uint32_t handles = 200;
     std::mt19937_64 rng(23);
-    const auto delay = [](std::mt19937_64& g) {
-        std::exponential_distribution<double> near(1.0);
-        std::uniform_real_distribution<double> u(0.0, 1.0);
-        return u(g) < 0.05 ? 5.0 + 20.0 * u(g) : near(g);
-    };
+    const auto delay = mostly_near(5.0, 20.0);
     Calendar calendar(handles);
     calendar.tune(0.03, 10, 0.0);
     CHECK(calendar.buckets() == 16);
