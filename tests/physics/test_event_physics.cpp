@@ -152,34 +152,35 @@ TEST_CASE("algs4 files: time never runs backwards and no overlap beyond the tole
     }
 }
 
-// Hard spheres: the equation of state against Carnahan-Starling (3.974 at packing 0.30, 9.385 at
-// 0.45; a public EDMD code gives 3.969 and 9.358 at N = 4000 over 300 time units). N = 4000 from
-// an FCC crystal, melted for 20 time units, then Z over 100 (times in sigma sqrt(m / kT)).
-TEST_CASE("hard spheres, N = 4000: Z within 0.5% of Carnahan-Starling, energy to round-off") {
-    for (const double eta : {0.30, 0.45}) {
-        CAPTURE(eta);
+// Hard spheres: the equation of state on the anchor code's terms (issue 32): N = 4000 from an FCC
+// crystal, Z over the first 300 time units (sigma sqrt(m / kT)), the melt included. The public
+// EDMD code (Smallenburg's Single/mdSingle.c) run so, seeds 1-6, averages 3.9826 at packing 0.30
+// and 9.3895 at 0.45 (docs/benchmarks.md). Kolafa-Labik-Malijevsky's equation of state gives
+// 3.9843 and 9.4029, Carnahan-Starling's 3.9738 and 9.3847.
+TEST_CASE("hard spheres, N = 4000: Z within 0.3% of the anchor code, energy to round-off") {
+    struct Anchor {
+        double eta;
+        double z;
+    };
+    for (const Anchor anchor : {Anchor{0.30, 3.9826}, Anchor{0.45, 9.3895}}) {
+        CAPTURE(anchor.eta);
         SphereScene scene;
         scene.box = Box3{1.0, 1.0, 1.0, Boundary::periodic};
         FccSpec spec;
         spec.cells = {10, 10, 10};
-        spec.packing_fraction = eta;
+        spec.packing_fraction = anchor.eta;
         spec.seed = 11;
         generate_fcc(scene, spec);
         REQUIRE(scene.spheres.size() == 4000);
         const double sigma = 2.0 * scene.spheres[0].radius;
         sim::FastSphereEngine engine(scene);
         const double e0 = engine.measurements().kinetic_energy;
-        engine.advance_to(20.0 * sigma);
-        const Measurements a = engine.measurements();
-        engine.advance_to(a.t + 100.0 * sigma);
-        const Measurements b = engine.measurements();
-        const double z =
-            1.0 + ((b.compressibility - 1.0) * b.t - (a.compressibility - 1.0) * a.t) / (b.t - a.t);
-        const double cs = (1.0 + eta + eta * eta - eta * eta * eta) / std::pow(1.0 - eta, 3.0);
-        MESSAGE("eta = " << eta << ": Z = " << z << " (Carnahan-Starling " << cs << ") over "
-                         << b.collisions_pair - a.collisions_pair << " collisions");
-        CHECK(z == doctest::Approx(cs).epsilon(0.005));
-        CHECK(std::abs(b.kinetic_energy - e0) <= 1e-11 * e0);
-        CHECK(b.max_overlap <= 1e-9 * sigma);
+        engine.advance_to(300.0 * sigma);
+        const Measurements m = engine.measurements();
+        MESSAGE("eta = " << anchor.eta << ": Z = " << m.compressibility << " (anchor code "
+                         << anchor.z << ") over " << m.collisions_pair << " collisions");
+        CHECK(m.compressibility == doctest::Approx(anchor.z).epsilon(0.003));
+        CHECK(std::abs(m.kinetic_energy - e0) <= 1e-11 * e0);
+        CHECK(m.max_overlap <= 1e-9 * sigma);
     }
 }
