@@ -287,6 +287,8 @@ class BasicFastEngine final : public EngineOf<D> {
     void add_neighbour(std::uint32_t i, std::uint32_t j, std::uint32_t image);
     /// Doubles every list's slots (a list is full).
     [[gnu::noinline]] void widen_lists();
+    /// Asks the cache for what predict(i) reads from the lists (see prefetch_records_).
+    void prefetch_list(std::uint32_t i) const noexcept;
     void remove_neighbour(std::uint32_t i, std::uint32_t j) noexcept;
     void process_rebuild(std::uint32_t i);
     void scan_neighbour_list(std::uint32_t i, const Particle& pi, Vec xi, Key& best);
@@ -364,10 +366,11 @@ class BasicFastEngine final : public EngineOf<D> {
     bool lists_ = false;
     double shell_ = 0.0;   ///< pairs whose centres are within r_i + r_j + shell_ are listed
     double expiry_ = 0.0;  ///< a list expires this far from its centre (shell / 2, a hair less)
-    std::uint32_t list_cap_ = 0;     ///< slots per particle in nbr_
-    bool equal_radii_ = false;       ///< all particles alike: a rebuild need not read their radii
-    bool prefetch_records_ = false;  ///< scans prefetch the listed records (beyond the caches)
-    pq::BigVector<Vec> centre_;      ///< where each particle's list was built
+    std::uint32_t list_cap_ = 0;  ///< slots per particle in nbr_
+    bool equal_radii_ = false;    ///< all particles alike: a rebuild need not read their radii
+    /// Records beyond the caches: scans prefetch the listed records, events the lists to scan.
+    bool prefetch_records_ = false;
+    pq::BigVector<Vec> centre_;  ///< where each particle's list was built
     /// list_cap_ slots per particle, each a neighbour's index and, in the bits from
     /// list_image_shift up, the code of the periodic image through which the particle sees it
     /// (image_shift_): the image is fixed while both lists last (positions wrap only at
