@@ -1,10 +1,10 @@
 // The event-driven panel's next collision (lesson level, without the queue strip): one thin line
 // from the disc to what it will hit, and its time to go on a plate beside it that never covers
-// the two discs. What comes next and the words are the presentation layer's
-// (show::next_collision_view); here they get their pixels.
+// the two discs and as few others as it can. What comes next and the words are the presentation
+// layer's (show::next_collision_view); here they get their pixels.
 #include <algorithm>
-#include <array>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -14,19 +14,35 @@ namespace collide::render {
 
 namespace {
 
+/// Whether rectangle r comes within `margin` of the circle at c of radius `radius` (pixels).
+bool overlaps(RectF r, PointF c, float radius, float margin) {
+    const float nx = std::clamp(c.x, r.x0, r.x1);
+    const float ny = std::clamp(c.y, r.y0, r.y1);
+    return std::hypot(nx - c.x, ny - c.y) < radius + margin;
+}
+
 /// Whether rectangle r comes within `margin` of any circle (pixels).
 bool covers(RectF r, const std::vector<std::pair<PointF, float>>& circles, float margin) {
     return std::any_of(circles.begin(), circles.end(), [&](const std::pair<PointF, float>& c) {
-        const float nx = std::clamp(c.first.x, r.x0, r.x1);
-        const float ny = std::clamp(c.first.y, r.y0, r.y1);
-        return std::hypot(nx - c.first.x, ny - c.first.y) < c.second + margin;
+        return overlaps(r, c.first, c.second, margin);
     });
+}
+
+/// How much of the picture rectangle r hides: the squared radii of the circles it overlaps
+/// (pixels), so that covering one big disc (a Brownian tracer) weighs as much as many small ones.
+float covered_weight(RectF r, const std::vector<std::pair<PointF, float>>& circles) {
+    float weight = 0.0F;
+    for (const auto& [c, radius] : circles) {
+        if (overlaps(r, c, radius, 0.0F)) weight += radius * radius;
+    }
+    return weight;
 }
 
 }  // namespace
 
-void LessonPainter::add_next_collision(const NextCollisionView& next, const PanelLayout& panel,
-                                       const Box& box) {
+void LessonPainter::add_next_collision(const NextCollisionView& next,
+                                       const std::vector<DiscState>& all_discs,
+                                       const PanelLayout& panel, const Box& box) {
     if (intro_ || next.empty()) return;
     const float body = body_font_->pixel_height();
     const RectF inside = panel.box;
@@ -39,7 +55,7 @@ void LessonPainter::add_next_collision(const NextCollisionView& next, const Pane
         if (clip_to(inside, from, to)) list_.over.add_line(from, to, width, color);
     }
     if (layout_.compact || next.text.empty()) return;
-    // The plate: at the line's middle when that leaves the discs free, else beside them.
+    // The plate: at the line's middle when that leaves the discs free, else near it (below).
     std::vector<std::pair<PointF, float>> discs;
     for (const BoxCircle& c : next.keep_clear)
         discs.emplace_back(panel.to_pixels(c.centre, box),
@@ -63,24 +79,65 @@ void LessonPainter::add_next_collision(const NextCollisionView& next, const Pane
         left = std::min(left, c.x - r);
         right = std::max(right, c.x + r);
     }
-    const std::array<PointF, 5> places = {
+    // Where the plate may go: the line's middle, beside the pair (above, below, right, left) and
+    // at its corners, and a grid around the middle up to a plate's width and three of its
+    // heights away.
+    const float above = top - margin - 0.5F * h;
+    const float below = bottom + margin + 0.5F * h;
+    const float after = right + margin + 0.5F * w;
+    const float before = left - margin - 0.5F * w;
+    std::vector<PointF> places = {
         middle,
-        PointF{middle.x, top - margin - 0.5F * h},
-        PointF{middle.x, bottom + margin + 0.5F * h},
-        PointF{right + margin + 0.5F * w, middle.y},
-        PointF{left - margin - 0.5F * w, middle.y},
+        PointF{middle.x, above},
+        PointF{middle.x, below},
+        PointF{after, middle.y},
+        PointF{before, middle.y},
+        PointF{after, above},
+        PointF{before, above},
+        PointF{after, below},
+        PointF{before, below},
     };
+    for (int row = -3; row <= 3; ++row) {
+        for (int column = -2; column <= 2; ++column) {
+            places.push_back({middle.x + 0.5F * w * static_cast<float>(column),
+                              middle.y + (h + margin) * static_cast<float>(row)});
+        }
+    }
     const auto plate_at = [&](PointF p) {
         // Where add_plate_label puts it: kept inside the box.
         const float x0 = std::clamp(p.x - 0.5F * w, inside.x0, std::max(inside.x0, inside.x1 - w));
         const float y0 = std::clamp(p.y - 0.5F * h, inside.y0, std::max(inside.y0, inside.y1 - h));
         return RectF{x0, y0, x0 + w, y0 + h};
     };
-    PointF at = places[1];
+    // The discs near any of the places (one pass over them all, however many there are).
+    RectF reach = plate_at(places[0]);
     for (const PointF p : places) {
-        if (!covers(plate_at(p), discs, margin)) {
+        const RectF r = plate_at(p);
+        reach = {std::min(reach.x0, r.x0), std::min(reach.y0, r.y0), std::max(reach.x1, r.x1),
+                 std::max(reach.y1, r.y1)};
+    }
+    std::vector<std::pair<PointF, float>> nearby;
+    for (const DiscState& d : all_discs) {
+        const PointF c = panel.to_pixels(d.position, box);
+        const auto r = static_cast<float>(d.radius * panel.scale);
+        if (overlaps(reach, c, r, 0.0F)) nearby.emplace_back(c, r);
+    }
+    // Of the places that keep the pair free, the one that hides the least of the other discs (a
+    // break's rack, a cradle's row, a Brownian tracer: the label must not hide what the class is
+    // watching), and of those the nearest to the middle; none keeps the pair free: above it.
+    PointF at = places[1];
+    float fewest = std::numeric_limits<float>::max();
+    float nearest = std::numeric_limits<float>::max();
+    for (const PointF p : places) {
+        const RectF r = plate_at(p);
+        if (covers(r, discs, margin)) continue;
+        const float covered = covered_weight(r, nearby);
+        const float away =
+            std::hypot(0.5F * (r.x0 + r.x1) - middle.x, 0.5F * (r.y0 + r.y1) - middle.y);
+        if (covered < fewest || (covered == fewest && away < nearest)) {
+            fewest = covered;
+            nearest = away;
             at = p;
-            break;
         }
     }
     labels_.clear();

@@ -151,7 +151,7 @@ void LessonPainter::add_marks(std::size_t index, const PanelContent& content,
     if (!panel.zoomed) paint_failure_marks(list_, content.marks, panel, snapshot.box, mark_style());
     // The next collision line, where the queue's picture does not draw the next events already.
     if (!panel.zoomed && !snapshot.queue)
-        add_next_collision(content.next_collision, panel, snapshot.box);
+        add_next_collision(content.next_collision, snapshot.discs, panel, snapshot.box);
     if (!content.replay.empty()) add_replay(content.replay, panel, snapshot.box);
 }
 

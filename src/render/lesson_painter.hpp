@@ -69,9 +69,10 @@ class LessonPainter : public Painter {
                         Rgba8 frame_color, bool stale);
     /// A replay's ghosts, jump and labels over a (zoomed) box (lesson_replay.cpp).
     void add_replay(const ReplayView& replay, const PanelLayout& panel, const Box& box);
-    /// The event-driven panel's next collision: a thin line and its time to go (lesson_next.cpp).
-    void add_next_collision(const NextCollisionView& next, const PanelLayout& panel,
-                            const Box& box);
+    /// The event-driven panel's next collision: a thin line and its time to go (lesson_next.cpp),
+    /// the label placed clear of `all_discs` where it can be.
+    void add_next_collision(const NextCollisionView& next, const std::vector<DiscState>& all_discs,
+                            const PanelLayout& panel, const Box& box);
     /// A label centred at `at` on a plate of the box colour, kept inside `inside`.
     void add_plate_label(Font font, PointF at, std::string_view text, Rgba8 color, RectF inside);
     [[nodiscard]] float pop_highlight(const QueuedEvent& popped, double now) const noexcept;
