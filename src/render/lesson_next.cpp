@@ -55,7 +55,7 @@ void LessonPainter::add_next_collision(const NextCollisionView& next,
         if (clip_to(inside, from, to)) list_.over.add_line(from, to, width, color);
     }
     if (layout_.compact || next.text.empty()) return;
-    // The plate: at the line's middle when that leaves the discs free, else near it (below).
+    // The plate: never on the pair, and hiding as little of the other discs as it can (below).
     std::vector<std::pair<PointF, float>> discs;
     for (const BoxCircle& c : next.keep_clear)
         discs.emplace_back(panel.to_pixels(c.centre, box),
@@ -109,10 +109,12 @@ void LessonPainter::add_next_collision(const NextCollisionView& next,
         const float y0 = std::clamp(p.y - 0.5F * h, inside.y0, std::max(inside.y0, inside.y1 - h));
         return RectF{x0, y0, x0 + w, y0 + h};
     };
-    // The discs near any of the places (one pass over them all, however many there are).
-    RectF reach = plate_at(places[0]);
-    for (const PointF p : places) {
-        const RectF r = plate_at(p);
+    std::vector<RectF> plates;
+    plates.reserve(places.size());
+    for (const PointF p : places) plates.push_back(plate_at(p));
+    // The discs near any of the plates (one pass over them all, however many there are).
+    RectF reach = plates[0];
+    for (const RectF& r : plates) {
         reach = {std::min(reach.x0, r.x0), std::min(reach.y0, r.y0), std::max(reach.x1, r.x1),
                  std::max(reach.y1, r.y1)};
     }
@@ -128,8 +130,8 @@ void LessonPainter::add_next_collision(const NextCollisionView& next,
     PointF at = places[1];
     float fewest = std::numeric_limits<float>::max();
     float nearest = std::numeric_limits<float>::max();
-    for (const PointF p : places) {
-        const RectF r = plate_at(p);
+    for (std::size_t k = 0; k < places.size(); ++k) {
+        const RectF& r = plates[k];
         if (covers(r, discs, margin)) continue;
         const float covered = covered_weight(r, nearby);
         const float away =
@@ -137,7 +139,7 @@ void LessonPainter::add_next_collision(const NextCollisionView& next,
         if (covered < fewest || (covered == fewest && away < nearest)) {
             fewest = covered;
             nearest = away;
-            at = p;
+            at = places[k];
         }
     }
     labels_.clear();
