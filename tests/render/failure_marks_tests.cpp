@@ -18,6 +18,7 @@ namespace collide::render {
 namespace {
 
 using test::count_near;
+using test::px;
 using test::rgb_at;
 
 bool have_font() {
@@ -55,10 +56,6 @@ Lesson render_marks(const Snapshot& s, const std::vector<FailureMark>& marks, Ma
     in.mark_lines = {true};
     out.layout = compute_layout(in);
     return out;
-}
-
-int px(float v) {
-    return static_cast<int>(std::lround(v));
 }
 
 TEST_CASE("a failure of each kind is drawn with its own mark, and the legend names each") {

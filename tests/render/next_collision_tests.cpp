@@ -16,10 +16,7 @@ namespace collide::render {
 namespace {
 
 using test::count_near;
-
-int px(float v) {
-    return static_cast<int>(std::lround(v));
-}
+using test::px;
 
 TEST_CASE("the next collision's label covers neither the pair nor the discs above and below it") {
     if (!std::filesystem::exists(RenderConfig{}.font_path))

@@ -78,6 +78,11 @@ inline void dump_if_requested(const Image& image, const std::string& name) {
     video::write_png(image, std::filesystem::path(dir) / (name + ".png"));
 }
 
+/// A layout coordinate (pixels, float) rounded to the nearest pixel index.
+inline int px(float v) {
+    return static_cast<int>(std::lround(v));
+}
+
 /// The RGB of pixel (x, y) (row 0 is the top row).
 inline Rgb8 rgb_at(const Image& image, int x, int y) {
     const std::uint8_t* p = image.pixel(x, y);
