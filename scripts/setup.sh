@@ -2,7 +2,8 @@
 # Installs the Debian 12 packages collide needs, only those that are missing (silent and fast
 # when everything is there). Usage: scripts/setup.sh [--test]   (--test adds ffmpeg, xvfb, chromium
 # and file: CPack's DEB generator needs `file` to find the binaries whose libraries
-# dpkg-shlibdeps reads, and a minimal Debian 12 image has none)
+# dpkg-shlibdeps reads, and a minimal Debian 12 image has none; lintian checks the .deb and
+# groff-base the generated man page)
 set -euo pipefail
 
 packages=(
@@ -13,7 +14,7 @@ packages=(
     libcli11-dev libtomlplusplus-dev libfmt-dev nlohmann-json3-dev doctest-dev libbenchmark-dev
 )
 if [[ "${1:-}" == "--test" ]]; then
-    packages+=(ffmpeg xvfb xauth clang-format chromium file)
+    packages+=(ffmpeg xvfb xauth clang-format chromium file lintian groff-base)
 fi
 
 missing=()

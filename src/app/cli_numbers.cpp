@@ -44,19 +44,20 @@ std::uint64_t parse_whole_number(std::string_view text, std::string_view option,
 CLI::Option* add_whole_option(CLI::App& app, const std::string& name, std::uint64_t& target,
                               std::uint64_t min, std::uint64_t max, const std::string& help) {
     const std::string option = name.substr(0, name.find(','));
-    return app.add_option_function<std::string>(
+    CLI::Option* added = app.add_option_function<std::string>(
         name,
         [&target, option, min, max](const std::string& text) {
             target = as_usage_error([&] { return parse_whole_number(text, option, min, max); });
         },
         help);
+    return added->type_name("INT");  // in --help, the man page and completion
 }
 
 CLI::Option* add_whole_option(CLI::App& app, const std::string& name, int& target, int min, int max,
                               const std::string& help) {
     assert(0 <= min && min <= max);
     const std::string option = name.substr(0, name.find(','));
-    return app.add_option_function<std::string>(
+    CLI::Option* added = app.add_option_function<std::string>(
         name,
         [&target, option, min, max](const std::string& text) {
             target = static_cast<int>(as_usage_error([&] {
@@ -65,6 +66,7 @@ CLI::Option* add_whole_option(CLI::App& app, const std::string& name, int& targe
             }));
         },
         help);
+    return added->type_name("INT");  // in --help, the man page and completion
 }
 
 }  // namespace collide::app

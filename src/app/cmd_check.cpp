@@ -111,13 +111,16 @@ void add_check_command(CLI::App& root) {
         "check", "Validate a scene (algs4 .txt, .toml or a built-in name) and summarise it");
     cmd->add_option("scene", options->scene,
                     "Scene file or built-in scene name (see `collide scenes`)")
-        ->required();
+        ->required()
+        ->type_name("SCENE");
     cmd->add_option("--export", options->export_path,
                     "Also write the scene with every disc explicit: .toml, or .txt (algs4, unit "
-                    "box with walls only)");
+                    "box with walls only)")
+        ->type_name("PATH");
     cmd->add_option(
-        "--font", options->font,
-        std::string(font_option_help) + "; the scene's text is checked for characters it lacks");
+           "--font", options->font,
+           std::string(font_option_help) + "; the scene's text is checked for characters it lacks")
+        ->type_name("FILE");
     cmd->add_flag("--json", options->json,
                   "Print the summary as JSON (scene, name, discs, summary, exported)");
     cmd->callback([options] {

@@ -177,7 +177,8 @@ void add_shared_options(CLI::App& cmd, CliValues& v, bool video) {
                                   "N + i; default: the scene's)");
     cmd.add_option("scene", v.scene,
                    "Scene: a built-in name (see `collide scenes`), a .toml or an algs4 .txt file")
-        ->required();
+        ->required()
+        ->type_name("SCENE");
     VideoOptionSet set;
     set.stem = "<scene>";
     set.size_example = "e.g. 640x360";
@@ -188,16 +189,18 @@ void add_shared_options(CLI::App& cmd, CliValues& v, bool video) {
     set.subtitles = true;
     add_video_options(cmd, v.video, set);
     cmd.add_option("--mode", v.mode, "both (time-driven left, event-driven right), event or time")
-        ->capture_default_str();
-    v.camera_opt =
-        cmd.add_option("--camera", v.camera,
-                       "3D scenes: fixed, or orbit (the view turns slowly round the "
-                       "box, once every 40 s of video; default: scene hint, else fixed)");
+        ->capture_default_str()
+        ->type_name("{both,event,time}");
+    v.camera_opt = cmd.add_option("--camera", v.camera,
+                                  "3D scenes: fixed, or orbit (the view turns slowly round the "
+                                  "box, once every 40 s of video; default: scene hint, else fixed)")
+                       ->type_name("{fixed,orbit}");
     v.projection_opt =
         cmd.add_option("--projection", v.projection,
                        "3D scenes: ortho (parallel rays: every sphere as large as it is) or "
                        "perspective (an eye near the box: near spheres larger, edges converge; "
-                       "default: scene hint, else ortho)");
+                       "default: scene hint, else ortho)")
+            ->type_name("{ortho,perspective}");
     v.slab_opt = cmd.add_option("--slab", v.slab,
                                 "3D scenes: show only a slice W box units thick through the box's "
                                 "centre, facing the camera (the inside of a dense system; default: "
@@ -215,22 +218,28 @@ void add_shared_options(CLI::App& cmd, CliValues& v, bool video) {
                        "puts one time-driven panel per step beside the event-driven one")
             ->type_name("FLOAT");
     cmd.add_option("--engine", v.engine, "Event-driven engine: fast or classic")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->type_name("{fast,classic}");
     cmd.add_option("--pq", v.pq,
                    "Classic engine's queue: unordered, ordered, binary, dary:D or indexed")
         ->capture_default_str();
     cmd.add_option("--td-detect", v.td_detect, "Time-driven overlap checks: all-pairs or grid")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->type_name("{all-pairs,grid}");
     v.color_opt =
         cmd.add_option("--color", v.color,
-                       "Disc colours: scene, speed, mass or tag (default: scene hint, else scene)");
-    v.overlays_opt = cmd.add_option(
-        "--overlays", v.overlays,
-        "Text around the boxes: lesson (titles, a few figures, the cost graphic, captions; "
-        "default), full (every counter and plot) or none (discs only)");
-    v.layout_json_opt = cmd.add_option(
-        "--layout-json", v.layout_json,
-        "Also write the frame's rectangles (panels, boxes, text lines with pixel heights) as JSON");
+                       "Disc colours: scene, speed, mass or tag (default: scene hint, else scene)")
+            ->type_name("{scene,speed,mass,tag}");
+    v.overlays_opt =
+        cmd.add_option(
+               "--overlays", v.overlays,
+               "Text around the boxes: lesson (titles, a few figures, the cost graphic, captions; "
+               "default), full (every counter and plot) or none (discs only)")
+            ->type_name("{lesson,full,none}");
+    v.layout_json_opt = cmd.add_option("--layout-json", v.layout_json,
+                                       "Also write the frame's rectangles (panels, boxes, text "
+                                       "lines with pixel heights) as JSON")
+                            ->type_name("PATH");
     v.queue_opt = cmd.add_option("--queue", v.queue,
                                  "Show the event-driven engine's queue: its next K (default 5, "
                                  "at most 20) collisions in the box, its top levels under it "
@@ -249,7 +258,8 @@ void add_shared_options(CLI::App& cmd, CliValues& v, bool video) {
     cmd.add_option("--gl", v.gl,
                    "GL backend: auto (OSMesa where built, else EGL), osmesa, egl (surfaceless, or "
                    "the GPU), egl-device or glfw (needs a display)")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->type_name("{auto,osmesa,egl,egl-device,glfw}");
     cmd.add_flag("--json", v.json,
                  "Print the summary on stdout as JSON (output, kind, frames, size, fps, bytes, "
                  "times, engines)");
@@ -294,10 +304,13 @@ RenderPlan with_replays(RenderPlan draft, const RenderRequest& request, const Sc
     return draft;
 }
 
+/// A file's size in SI units, as `ls --si` and file managers show it: kB = 1000 bytes, MB = 10^6,
+/// GB = 10^9 (85,396 bytes is "85.4 kB").
 std::string human_size(std::uintmax_t bytes) {
-    if (bytes >= 1024 * 1024)
-        return fmt::format("{:.1f} MB", static_cast<double>(bytes) / (1024.0 * 1024.0));
-    if (bytes >= 1024) return fmt::format("{:.1f} kB", static_cast<double>(bytes) / 1024.0);
+    const auto value = static_cast<double>(bytes);
+    if (bytes >= 1'000'000'000) return fmt::format("{:.1f} GB", value / 1e9);
+    if (bytes >= 1'000'000) return fmt::format("{:.1f} MB", value / 1e6);
+    if (bytes >= 1'000) return fmt::format("{:.1f} kB", value / 1e3);
     return fmt::format("{} B", bytes);
 }
 
@@ -564,15 +577,19 @@ void add_render_command(CLI::App& root) {
                   "their own)");
     cmd->add_flag("--no-epilogue", values->no_epilogue,
                   "No summary card at the end: the last frame runs to the end of the video");
-    values->replay_opt = cmd->add_option(
-        "--replay", values->replay,
-        "Replay the time-driven panel's failures, zoomed in and slowly: none, first (the default "
-        "at the lesson level, when the scene fails) or all (each failed step it records, as long "
-        "as they fit)");
-    values->timeline_json_opt = cmd->add_option(
-        "--timeline-json", values->timeline_json,
-        "Also write the video's timeline as JSON: its segments (card, run, hold, replay, "
-        "epilogue) with their video and simulation times and captions");
+    values->replay_opt = cmd->add_option("--replay", values->replay,
+                                         "Replay the time-driven panel's failures, zoomed in and "
+                                         "slowly: none, first (the default "
+                                         "at the lesson level, when the scene fails) or all (each "
+                                         "failed step it records, as long "
+                                         "as they fit)")
+                             ->type_name("{none,first,all}");
+    values->timeline_json_opt =
+        cmd->add_option(
+               "--timeline-json", values->timeline_json,
+               "Also write the video's timeline as JSON: its segments (card, run, hold, replay, "
+               "epilogue) with their video and simulation times and captions")
+            ->type_name("PATH");
     cmd->footer(
         "Examples:\n"
         "  collide render tunnelling                      # out/tunnelling.mp4, 720p30, side by "

@@ -205,16 +205,19 @@ void add_simulate_command(CLI::App& root) {
     CLI::App* cmd =
         root.add_subcommand("simulate", "Run an engine to a time and print its measurements");
     cmd->add_option("scene", options->scene, "Scene: algs4 .txt, .toml, or a built-in name")
-        ->required();
+        ->required()
+        ->type_name("SCENE");
     cmd->add_option("--until", options->until, "Simulation time to stop at")->required();
-    cmd->add_option("--engine", options->engine, "fast (default), classic or time");
+    cmd->add_option("--engine", options->engine, "fast (default), classic or time")
+        ->type_name("{fast,classic,time}");
     cmd->add_option("--pq", options->pq,
                     "Classic engine's queue: unordered|ordered|binary|dary:D|indexed[:D]");
     cmd->add_option("--dt", options->dt, "Time-driven step");
-    cmd->add_option("--td-detect", options->td_detect,
-                    "Time-driven overlap checks: all-pairs|grid");
+    cmd->add_option("--td-detect", options->td_detect, "Time-driven overlap checks: all-pairs|grid")
+        ->type_name("{all-pairs,grid}");
     cmd->add_option("--events-log", options->events_log,
-                    "Write every collision as CSV t,kind,a,b (- for standard output)");
+                    "Write every collision as CSV t,kind,a,b (- for standard output)")
+        ->type_name("PATH");
     cmd->add_flag("--json", options->json, "Print the measurements as JSON");
     cmd->add_flag(insist_option, options->no_limits,
                   "Run even when the estimated work (collisions and cell crossings, time-driven "

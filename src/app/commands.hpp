@@ -38,11 +38,12 @@ void add_bench_command(CLI::App& root);
 /// MP4/GIF/PNG.
 void add_render_command(CLI::App& root);
 
-/// `collide compare A.png B.png [--tolerance T]`: exit 0 if they match, 1 (with a difference
-/// image) if not, 2 on bad input.
+/// `collide compare A.png B.png [--tolerance T] [--max-diff-pixels N] [--max-diff-percent P]
+/// [--json]`: exit 0 if they match, 1 (with a difference image) if not, 2 on bad input. PNG
+/// files only (no GL, no encoder): registered by main in both programs.
 void add_compare_command(CLI::App& root);
 
-/// The commands that draw (heap, puzzle, render, thumbnail, compare). In `collide-draw`
+/// The commands that draw (heap, puzzle, render, thumbnail). In `collide-draw`
 /// (draw_commands.cpp) they are registered. In `collide` (draw_forward.cpp), which links no GL
 /// and no encoder, the process becomes collide-draw (execv, same arguments) when argv names one
 /// of them, and they are registered for --help and suggestions otherwise; `puzzle` is registered

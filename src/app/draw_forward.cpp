@@ -68,14 +68,11 @@ struct DrawingCommand {
 };
 
 // The descriptions are the commands' own (cmd_*.cpp), for `collide --help`.
-constexpr std::array<DrawingCommand, 5> drawing_commands{{
+constexpr std::array<DrawingCommand, 4> drawing_commands{{
     {"heap", "Animate priority-queue operations: heaps as trees over their arrays, step by step"},
     {"puzzle", {}, add_puzzle_here},  // registered with its own description (cmd_puzzle.cpp)
     {"render", "Render a teaching video: time-driven (left) and event-driven (right) side by side"},
     {"thumbnail", "Render one frame as a PNG (fast, no video): for READMEs and CI"},
-    {"compare",
-     "Compare two PNG images: exit 0 if they match, 1 if not (writing a difference image), 2 on "
-     "bad input"},
 }};
 
 }  // namespace

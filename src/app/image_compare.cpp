@@ -18,16 +18,30 @@ int pixel_difference(const Image& a, const Image& b, std::size_t i) {
 
 }  // namespace
 
+bool within(const ImageComparison& c, const CompareAllowance& allowance) noexcept {
+    // In integers and doubles exactly: differing <= max_percent / 100 * pixels.
+    return c.differing <= allowance.max_pixels &&
+           100.0 * static_cast<double>(c.differing) <=
+               allowance.max_percent * static_cast<double>(c.pixels);
+}
+
 ImageComparison compare_images(const Image& a, const Image& b, int tolerance) {
     ImageComparison result;
     result.pixels = static_cast<std::int64_t>(a.width) * a.height;
     double sum = 0.0;
+    PixelBox& box = result.differing_box;
     for (std::size_t i = 0; i + 3 < a.rgba.size() && i + 3 < b.rgba.size(); i += 4) {
         const int d = pixel_difference(a, b, i);
         if (d == 0) continue;
         ++result.touched;
         result.largest = std::max(result.largest, d);
         if (d > tolerance) {
+            const auto pixel = static_cast<std::int64_t>(i / 4);
+            const auto x = static_cast<int>(pixel % a.width);
+            const auto y = static_cast<int>(pixel / a.width);
+            if (result.differing == 0) box = {x, y, x, y};
+            box = {std::min(box.x0, x), std::min(box.y0, y), std::max(box.x1, x),
+                   std::max(box.y1, y)};
             ++result.differing;
             sum += d;
         }

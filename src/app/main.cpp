@@ -10,9 +10,11 @@
 #include <vector>
 
 #include "cli_conventions.hpp"
+#include "cli_help.hpp"
 #include "collide/error.hpp"
 #include "commands.hpp"
 #include "interrupt.hpp"
+#include "progress.hpp"
 
 namespace {
 
@@ -68,9 +70,12 @@ void end_if_interrupted() {
 
 int main(int argc, char** argv) {
     collide::app::ignore_file_size_signal();
+    std::vector<char*> help_args;  // `collide help [COMMAND]`: `collide [COMMAND] --help`
+    collide::app::help_as_flag(argc, argv, help_args);
     CLI::App root{"collide: event-driven vs time-driven hard-disc simulation, rendered to video",
                   "collide"};
-    root.set_version_flag("--version", collide::app::version_text);
+    collide::app::use_wrapping_help(root, collide::app::terminal_columns(stdout));
+    root.set_version_flag("-V,--version", collide::app::version_text);
     root.require_subcommand(0, 1);
     root.footer(
         "Exit codes: 0 success, 2 bad input or usage, 1 other failure; stopped by a signal "
@@ -78,12 +83,14 @@ int main(int argc, char** argv) {
     collide::app::add_check_command(root);
     collide::app::add_scenes_command(root);
     collide::app::add_pq_command(root);
-    // heap, puzzle, render, thumbnail, compare: here in collide-draw; in collide, an exec of
-    // collide-draw when one of them is the command.
+    // heap, puzzle, render, thumbnail: here in collide-draw; in collide, an exec of collide-draw
+    // when one of them is the command.
     collide::app::add_drawing_commands(root, argc, argv);
+    collide::app::add_compare_command(root);  // PNG files only: runs in both programs
 
     collide::app::add_simulate_command(root);
     collide::app::add_bench_command(root);
+    collide::app::add_help_command(root);
 
     try {
         root.parse(argc, argv);
@@ -92,10 +99,14 @@ int main(int argc, char** argv) {
         }
         return 0;
     } catch (const CLI::ParseError& e) {
-        // --help and --version arrive here as "errors" with exit code 0.
-        if (e.get_exit_code() == 0) return root.exit(e);
+        // --help and --version arrive here as "errors" with exit code 0, but `collide help NAME`
+        // for a NAME that is no command is a usage error: the word left over.
+        const bool unknown_topic = !help_args.empty() && !root.remaining().empty();
+        if (e.get_exit_code() == 0 && !unknown_topic) return root.exit(e);
+        const CLI::ExtrasError topic(root.remaining());
+        const CLI::ParseError& error = e.get_exit_code() == 0 ? topic : e;
         // Usage errors read like every other error ("collide: error: ..."), with CLI11's hint.
-        print_error(e.what() + collide::app::typo_hint(root, e));
+        print_error(error.what() + collide::app::typo_hint(root, error));
         std::fputs("Run with --help for more information.\n", stderr);
         return exit_usage;
     } catch (const collide::app::ExitStatus& status) {

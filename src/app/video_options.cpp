@@ -18,20 +18,25 @@ bool given(const CLI::Option* option) {
 }
 
 void add_video_options(CLI::App& cmd, VideoCli& v, const VideoOptionSet& set) {
-    v.output_opt = cmd.add_option(
-        "-o,--output", v.output,
-        set.video
-            ? fmt::format("Output file (default out/{}.mp4, .gif, _frames/ or .png)", set.stem)
-            : fmt::format("Output file (default out/{}.png)", set.stem));
+    v.output_opt =
+        cmd.add_option("-o,--output", v.output,
+                       set.video
+                           ? fmt::format("Output file (default out/{}.mp4, .gif, _frames/ or .png)",
+                                         set.stem)
+                           : fmt::format("Output file (default out/{}.png)", set.stem))
+            ->type_name("PATH");
     if (set.video) {
         v.format_opt = cmd.add_option("--format", v.format,
-                                      "mp4 (default), gif, or png (a directory of frames)");
+                                      "mp4 (default), gif, or png (a directory of frames)")
+                           ->type_name("{mp4,gif,png}");
     }
     v.quality_opt =
         cmd.add_option("-q,--quality", v.quality,
-                       "l 854x480@15, m 1280x720@30 (default), h 1920x1080@60, k 3840x2160@60");
+                       "l 854x480@15, m 1280x720@30 (default), h 1920x1080@60, k 3840x2160@60")
+            ->type_name("{l,m,h,k}");
     v.size_opt = cmd.add_option("--size", v.size,
-                                fmt::format("Frame size WxH, overrides -q ({})", set.size_example));
+                                fmt::format("Frame size WxH, overrides -q ({})", set.size_example))
+                     ->type_name("WxH");
     v.fps_opt =
         add_whole_option(cmd, "--fps", v.fps, 1, max_fps, "Frames per second, overrides -q");
     if (set.video) {
@@ -45,7 +50,8 @@ void add_video_options(CLI::App& cmd, VideoCli& v, const VideoOptionSet& set) {
         v.theme_opt =
             cmd.add_option("--theme", v.theme,
                            fmt::format("Colours: dark (screens) or light (projectors, print); {}",
-                                       set.theme_help));
+                                       set.theme_help))
+                ->type_name("{dark,light}");
     }
     if (set.preview) {
         v.preview_opt = cmd.add_flag("--preview", v.preview,
@@ -54,26 +60,32 @@ void add_video_options(CLI::App& cmd, VideoCli& v, const VideoOptionSet& set) {
     cmd.add_option("--progress", v.progress,
                    "Progress on stderr: auto (bar on a terminal), bar, plain (a line per tenth, "
                    "for CI logs), json or none")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->type_name("{auto,bar,plain,json,none}");
     if (set.video && set.subtitles) {
-        v.subtitles_opt = cmd.add_option(
-            "--subtitles", v.subtitles,
-            "embed (default: an MP4 carries the title, description and captions as a subtitle "
-            "track) or none");
+        v.subtitles_opt = cmd.add_option("--subtitles", v.subtitles,
+                                         "embed (default: an MP4 carries the title, description "
+                                         "and captions as a subtitle "
+                                         "track) or none")
+                              ->type_name("{embed,none}");
         cmd.add_option(
-            "--lang", v.lang,
-            "The subtitles' language, ISO 639: en, pl, cs, de, el, ru, ... (default und: "
-            "undetermined)");
-        v.subtitles_file_opt = cmd.add_option(
-            "--subtitles-file", v.subtitles_file,
-            "Also write the subtitles beside the video: F.vtt (WebVTT) or F.srt (SubRip)");
-        v.chapters_opt = cmd.add_option(
-            "--chapters", v.chapters,
-            "embed (default: an MP4 carries chapters at the title card, each caption, the replay "
-            "and the epilogue) or none");
+               "--lang", v.lang,
+               "The subtitles' language, ISO 639: en, pl, cs, de, el, ru, ... (default und: "
+               "undetermined)")
+            ->type_name("LANG");
+        v.subtitles_file_opt =
+            cmd.add_option(
+                   "--subtitles-file", v.subtitles_file,
+                   "Also write the subtitles beside the video: F.vtt (WebVTT) or F.srt (SubRip)")
+                ->type_name("PATH");
+        v.chapters_opt = cmd.add_option("--chapters", v.chapters,
+                                        "embed (default: an MP4 carries chapters at the title "
+                                        "card, each caption, the replay "
+                                        "and the epilogue) or none")
+                             ->type_name("{embed,none}");
         v.chapters_file_opt = cmd.add_option("--chapters-file", v.chapters_file,
                                              "Also write the chapters beside the video: F.vtt")
-                                  ->type_name("F.vtt");
+                                  ->type_name("PATH");
         v.slides_opt =
             cmd.add_option(
                    "--slides", v.slides,

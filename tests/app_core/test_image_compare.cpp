@@ -33,3 +33,28 @@ TEST_CASE("compare_images counts pixels beyond the tolerance, and the largest di
     CHECK(diff.pixel(0, 0)[0] == 0);    // same: a's grey (black here)
     CHECK(diff.pixel(0, 0)[3] == 255);
 }
+
+TEST_CASE("compare_images: the bounding box of the differing pixels, and the allowances") {
+    Image a(10, 6);
+    Image b(10, 6);
+    CHECK(compare_images(a, b, 0).differing_box.empty());
+    b.pixel(7, 1)[1] = 50;
+    b.pixel(2, 4)[0] = 9;
+    b.pixel(5, 5)[2] = 2;  // within a tolerance of 2: outside the box then
+    const ImageComparison c = compare_images(a, b, 2);
+    CHECK(c.differing == 2);
+    CHECK(c.differing_box.x0 == 2);
+    CHECK(c.differing_box.y0 == 1);
+    CHECK(c.differing_box.width() == 6);
+    CHECK(c.differing_box.height() == 4);
+    CHECK(c.differing_percent() == doctest::Approx(100.0 * 2 / 60));
+    CompareAllowance allow;
+    allow.tolerance = 2;
+    CHECK(!within(c, allow));  // no allowance: no pixel may differ
+    allow.max_pixels = 2;
+    CHECK(within(c, allow));
+    allow.max_percent = 3.0;  // 2 of 60 is 3.33 %
+    CHECK(!within(c, allow));
+    allow.max_percent = 100.0 * 2 / 60;
+    CHECK(within(c, allow));
+}

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# The .deb (issue #31): CPack builds it from this build tree, its dependencies come from the
-# libraries the program links (dpkg-shlibdeps), and its files work where dpkg puts them.
-# Usage: deb_test.sh CPACK BUILD_DIR. Exits 77 (skipped) without dpkg-deb and dpkg-shlibdeps.
+# The .deb (issues #31, #46): CPack builds it from this build tree, its dependencies come from
+# the libraries the program links (dpkg-shlibdeps), its files work where dpkg puts them, and
+# lintian (default profile) has nothing to say about it: no error, no warning.
+# Usage: deb_test.sh CPACK BUILD_DIR. Exits 77 (skipped) without dpkg-deb and dpkg-shlibdeps;
+# without lintian the lintian check alone is skipped, and says so.
 set -euo pipefail
 cpack_bin=$1 build=$2
 for tool in dpkg-deb dpkg-shlibdeps; do
@@ -22,8 +24,29 @@ contents=$(dpkg-deb -c "$deb")
 grep -q './usr/bin/collide$' <<<"$contents" || fail "no /usr/bin/collide"
 grep -q './usr/libexec/collide/collide-draw$' <<<"$contents" || fail "no collide-draw"
 grep -q './usr/share/collide/scenes/gas.toml$' <<<"$contents" || fail "no scenes"
-grep -q './usr/share/man/man1/collide.1' <<<"$contents" || fail "no man page"
-grep -q './usr/share/bash-completion/completions/collide$' <<<"$contents" || fail "no completion"
+grep -q './usr/share/man/man1/collide.1.gz$' <<<"$contents" || fail "no compressed man page"
+grep -q './usr/share/bash-completion/completions/collide$' <<<"$contents" || fail "no bash completion"
+grep -q './usr/share/zsh/vendor-completions/_collide$' <<<"$contents" || fail "no zsh completion"
+grep -q './usr/share/fish/vendor_completions.d/collide.fish$' <<<"$contents" || fail "no fish completion"
+grep -q './usr/share/doc/collide/copyright$' <<<"$contents" || fail "no copyright file"
+grep -q './usr/share/doc/collide/changelog.Debian.gz$' <<<"$contents" || fail "no changelog"
+[[ $(dpkg-deb -f "$deb" Version) =~ ^[0-9.]+-[0-9]+$ ]] || fail "Version has no Debian revision"
+[[ $(dpkg-deb -f "$deb" Maintainer) != *localhost* ]] || fail "Maintainer at localhost"
+# Stripped: no .debug_info section left in either program.
+dpkg-deb -x "$deb" "$tmp/stripped"
+for program in usr/bin/collide usr/libexec/collide/collide-draw; do
+    ! readelf -S "$tmp/stripped/$program" | grep -q '\.debug_info' || fail "$program is not stripped"
+done
+if command -v lintian >/dev/null; then
+    # --no-cfg: the machine's lintianrc must not change the profile; errors and warnings only
+    # (lintian's default display level).
+    # As root it also says that root is not recommended: that line is about the caller.
+    findings=$(lintian --no-cfg "$deb" 2>&1 | grep -v 'running with root privileges') || true
+    [[ -z "$findings" ]] || fail "lintian: $findings"
+    echo "lintian: nothing to report"
+else
+    echo "SKIP (lintian check only): lintian is not installed (scripts/setup.sh --test)"
+fi
 # Unpacked anywhere, the program finds the package's scenes (../share/collide) and renders.
 dpkg-deb -x "$deb" "$tmp/root"
 cd "$tmp"

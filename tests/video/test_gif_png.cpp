@@ -46,6 +46,104 @@ TEST_CASE("read_png of a missing or corrupt file is an input error naming it") {
     }
 }
 
+namespace {
+
+/// The colour type byte of a PNG file's IHDR chunk: 2 RGB, 6 RGBA.
+int png_colour_type(const std::string& bytes) {
+    REQUIRE(bytes.size() > 25);
+    REQUIRE(bytes.compare(12, 4, "IHDR") == 0);
+    return static_cast<unsigned char>(bytes[25]);
+}
+
+/// The bytes of a PNG that is nothing but its signature, a header chunk for a `width` x `height`
+/// 1-bit grey image and an end chunk (CRCs zero: the reader must refuse it by its header).
+std::string png_header_only(std::uint32_t width, std::uint32_t height) {
+    std::string bytes("\x89PNG\r\n\x1a\n", 8);
+    const auto be32 = [&](std::uint32_t v) {
+        for (int shift = 24; shift >= 0; shift -= 8)
+            bytes += static_cast<char>((v >> shift) & 0xff);
+    };
+    be32(13);
+    bytes += "IHDR";
+    be32(width);
+    be32(height);
+    bytes +=
+        std::string("\x01\x00\x00\x00\x00", 5);  // 1 bit, grey, deflate, no filter, no interlace
+    be32(0);
+    be32(0);
+    bytes += "IEND";
+    be32(0);
+    return bytes;
+}
+
+std::string input_error_of(const std::filesystem::path& path) {
+    try {
+        (void)read_png(path);
+    } catch (const collide::Error& e) {
+        CHECK(e.kind() == collide::ErrorKind::input);
+        CHECK(std::string(e.what()).find(path.string()) != std::string::npos);
+        return e.what();
+    }
+    FAIL("no error reading " << path);
+    return {};
+}
+
+}  // namespace
+
+TEST_CASE("write_png stores an opaque image as RGB and one with any transparency as RGBA") {
+    ScratchDirectory dir;
+    collide::Image image = test_pattern(40, 30, 1);
+    write_png(image, dir / "opaque.png");
+    CHECK(png_colour_type(read_bytes(dir / "opaque.png")) == 2);
+    CHECK(read_png(dir / "opaque.png").rgba == image.rgba);  // alpha read back as 255
+    // One pixel short of opaque anywhere (here the last) keeps the alpha channel, exactly.
+    image.rgba.back() = 254;
+    write_png(image, dir / "alpha.png");
+    CHECK(png_colour_type(read_bytes(dir / "alpha.png")) == 6);
+    CHECK(read_png(dir / "alpha.png").rgba == image.rgba);
+    CHECK(read_bytes(dir / "opaque.png").size() < read_bytes(dir / "alpha.png").size());
+    // The bytes for a caller that writes them itself follow the same rule.
+    CHECK(png_colour_type(std::string([&] {
+              const auto b = png_bytes(test_pattern(9, 9, 0), "x.png");
+              return std::string(b.begin(), b.end());
+          }())) == 2);
+}
+
+TEST_CASE("read_png refuses at once what is not a PNG file, saying what it is") {
+    ScratchDirectory dir;
+    REQUIRE(::mkfifo((dir / "fifo.png").c_str(), 0600) == 0);
+    CHECK(input_error_of(dir / "fifo.png").find("FIFO") != std::string::npos);  // never blocks
+    CHECK(input_error_of("/dev/null").find("character device") != std::string::npos);
+    std::filesystem::create_directory(dir / "folder.png");
+    CHECK(input_error_of(dir / "folder.png").find("directory") != std::string::npos);
+    write_bytes(dir / "empty.png", "");
+    CHECK(input_error_of(dir / "empty.png").find("empty") != std::string::npos);
+    write_bytes(dir / "photo.png", std::string("\xff\xd8\xff\xe0\x00\x10JFIF", 10));
+    CHECK(input_error_of(dir / "photo.png").find("not a PNG image (it is a JPEG image)") !=
+          std::string::npos);
+    write_bytes(dir / "anim.png", "GIF89a....");
+    CHECK(input_error_of(dir / "anim.png").find("GIF") != std::string::npos);
+    // A PNG cut short after its header: damaged, not a crash.
+    const std::vector<unsigned char> whole = png_bytes(test_pattern(16, 16, 0), "t.png");
+    write_bytes(dir / "cut.png", std::string(whole.begin(), whole.begin() + 40));
+    CHECK(input_error_of(dir / "cut.png").find("damaged") != std::string::npos);
+}
+
+TEST_CASE("read_png refuses an image wider or taller than the largest frame before decoding it") {
+    ScratchDirectory dir;
+    for (const auto& [w, h] : {std::pair<std::uint32_t, std::uint32_t>{23000, 23000},
+                               {max_png_side + 1, 16},
+                               {16, max_png_side + 1},
+                               {4000000000u, 1}}) {
+        CAPTURE(w);
+        CAPTURE(h);
+        write_bytes(dir / "huge.png", png_header_only(w, h));
+        const std::string message = input_error_of(dir / "huge.png");
+        CHECK(message.find(std::to_string(w) + "x" + std::to_string(h)) != std::string::npos);
+        CHECK(message.find("8192x8192") != std::string::npos);
+    }
+}
+
 TEST_CASE("PNG sequence: zero-padded names in a directory, exact pixels, old sequence replaced") {
     ScratchDirectory dir;
     const auto path = dir / "frames";

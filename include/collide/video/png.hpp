@@ -3,6 +3,7 @@
 /// Single PNG files (thumbnails, PNG sequences, test fixtures) through stb_image(_write).
 
 #include <atomic>
+#include <cstdint>
 #include <filesystem>
 #include <vector>
 
@@ -11,11 +12,19 @@
 
 namespace collide::video {
 
-/// Writes `image` as an RGBA PNG at `path`, atomically: the bytes go to a temporary file beside
-/// `path` that is renamed over it only once complete, so `path` holds either its old content or
-/// the whole new image. Cost: O(width * height) (zlib at stb's default level).
-/// Throws Error(input) naming the path if its directory does not exist or is not writable,
-/// Error(runtime) if the image is empty/inconsistent or the write fails (e.g. a full disk).
+/// The widest and tallest image read_png decodes: the largest frame collide renders (--size's
+/// bound). A PNG's header is read first, so a small file that describes a huge image is refused
+/// before any pixel is decoded.
+inline constexpr int max_png_side = 8192;
+/// The largest PNG file read_png reads (an 8192 x 8192 RGBA image stored uncompressed is 256 MiB).
+inline constexpr std::uintmax_t max_png_file_bytes = std::uintmax_t{512} << 20;
+
+/// Writes `image` as a PNG at `path` (RGB when every pixel is opaque, RGBA otherwise), atomically:
+/// the bytes go to a temporary file beside `path` that is renamed over it only once complete, so
+/// `path` holds either its old content or the whole new image. Cost: O(width * height) (zlib at
+/// stb's default level). Throws Error(input) naming the path if its directory does not exist or is
+/// not writable, Error(runtime) if the image is empty/inconsistent or the write fails (e.g. a full
+/// disk).
 void write_png(const Image& image, const std::filesystem::path& path);
 /// write_png without the final step: the whole PNG in its temporary, put in place by the
 /// returned file's commit() (for a run that commits its outputs only once all are written).
@@ -30,14 +39,17 @@ void write_png(const Image& image, const std::filesystem::path& path);
 [[nodiscard]] io::OutputFile write_png_uncommitted(Image&& image, const std::filesystem::path& path,
                                                    const std::atomic<bool>& cancel);
 
-/// `image` as the bytes of an RGBA PNG file (for a caller that writes them where it chooses, e.g.
-/// into an io::OutputDirectory). `shown_as` names it in the error. Throws Error(runtime) if the
-/// image cannot be encoded.
+/// `image` as the bytes of a PNG file (RGB when opaque, as write_png) (for a caller that writes
+/// them where it chooses, e.g. into an io::OutputDirectory). `shown_as` names it in the error.
+/// Throws Error(runtime) if the image cannot be encoded.
 [[nodiscard]] std::vector<unsigned char> png_bytes(const Image& image,
                                                    const std::filesystem::path& shown_as);
 
 /// Reads a PNG (any bit depth / channel count stb understands) as RGBA8, rows top-down.
-/// Throws Error(input) naming the path if it cannot be opened or decoded.
+/// Throws Error(input) naming the path if it cannot be opened, is not a regular file (a FIFO or a
+/// device is refused at once, without reading), is larger than max_png_file_bytes, is not a PNG
+/// (saying what it seems to be: JPEG, GIF...), describes an image wider or taller than
+/// max_png_side, or cannot be decoded; std::bad_alloc when memory runs out.
 [[nodiscard]] Image read_png(const std::filesystem::path& path);
 
 }  // namespace collide::video
