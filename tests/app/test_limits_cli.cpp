@@ -20,6 +20,7 @@ using collide::test::run_collide;
 using collide::test::run_collide_bad_input;
 using collide::test::run_collide_env;
 using collide::test::TempDir;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -217,4 +218,39 @@ TEST_CASE("limits: the classic engine and the array queues are refused where the
     CHECK(contains(array, "--pq binary"));
     // The fast engine runs the same scene and span.
     CHECK(run_collide("simulate '" + scene + "' --until 0.001").exit_code == 0);
+}
+
+TEST_CASE("limits: under an address-space limit, running out is exit 1 'out of memory', no crash") {
+    // `ulimit -v` near what a run needs: the software GL's shader compiler (LLVM) crashed
+    // (SIGSEGV, abort) at half the limits tried, x264's failure read "Generic error in an
+    // external library", a thread's "Resource temporarily unavailable". Every limit ends in
+    // success or in the one message, and leaves nothing in the output's directory.
+    if (collide::test::address_sanitizer) COLLIDE_SKIP_TEST("ASan reserves terabytes");
+    TempDir dir("limits_memory");
+    const std::string video = (dir.path / "v.mp4").string();
+    const std::string still = (dir.path / "s.png").string();
+    const fs::path big = dir.path / "big.toml";
+    std::ofstream(big) << "[box]\nwidth = 100\nheight = 100\n[[generate]]\ncount = 1000000\n"
+                          "radius = 0.02\n";
+    int failed = 0;
+    for (const long mib : {420L, 480L, 540L, 560L, 600L, 650L, 700L, 760L}) {
+        for (const std::string& args : {"render gas -q l --duration 1 --chapters-file '" +
+                                            (dir.path / "c.vtt").string() + "' -o '" + video + "'",
+                                        "thumbnail gas --size 320x180 -o '" + still + "'",
+                                        "simulate '" + big.string() + "' --until 0.001"}) {
+            CAPTURE(mib);
+            CAPTURE(args);
+            const auto r = collide::test::run_collide_measured(args, mib);
+            CHECK((r.exit_code == 0 || r.exit_code == 1));  // -1: killed by a signal
+            if (r.exit_code != 0) {
+                ++failed;
+                CHECK(contains(r.output, "collide: error: out of memory"));
+            }
+            for (const auto& entry : fs::directory_iterator(dir.path)) {
+                const std::string name = entry.path().filename().string();
+                CHECK_MESSAGE(name.front() != '.', name);  // no temporary left
+            }
+        }
+    }
+    CHECK(failed > 0);  // the limits tried do reach the memory the runs need
 }
