@@ -254,3 +254,22 @@ TEST_CASE("limits: under an address-space limit, running out is exit 1 'out of m
     }
     CHECK(failed > 0);  // the limits tried do reach the memory the runs need
 }
+
+TEST_CASE("limits: an empty number is refused naming the option, never read as 0") {
+    for (const std::string& args :
+         {std::string("thumbnail gas --at ''"), std::string("simulate gas --until ''"),
+          std::string("render gas --duration ''"), std::string("render gas --speed ''"),
+          std::string("render gas --dt ''"), std::string("render gas --slow-motion ''"),
+          std::string("thumbnail gas-3d --slab ''"), std::string("heap --ops 'P *' --pace ''"),
+          std::string("simulate gas --until 1 --engine time --dt ''"),
+          std::string("bench engine --eta ''")}) {
+        CAPTURE(args);
+        const std::string option = args.substr(
+            args.rfind("--"), args.find_first_of(" =", args.rfind("--")) - args.rfind("--"));
+        const bool draws = args.rfind("simulate", 0) != 0 && args.rfind("bench", 0) != 0;
+        const std::string out =
+            run_collide_bad_input(args + (draws ? " -o /tmp/collide_never.mp4" : ""));
+        CHECK(contains(out, option + ": expected a number, got an empty value"));
+    }
+    CHECK_FALSE(fs::exists("/tmp/collide_never.mp4"));
+}
