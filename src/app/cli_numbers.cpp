@@ -69,4 +69,34 @@ CLI::Option* add_whole_option(CLI::App& app, const std::string& name, int& targe
     return added->type_name("INT");  // in --help, the man page and completion
 }
 
+namespace {
+
+/// True for the type names CLI11 gives numbers, alone or as a list ("FLOAT", "INT ...").
+bool numeric_type_name(std::string_view name) {
+    for (const std::string_view number : {"FLOAT", "INT", "UINT", "NUMBER"}) {
+        if (name.substr(0, name.find(' ')) == number) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+void refuse_empty_numbers(CLI::App& app) {
+    // No description: the help shows the option as before.
+    const CLI::Validator not_empty(
+        [](std::string& text) {
+            return text.empty() ? std::string("expected a number, got an empty value")
+                                : std::string();
+        },
+        "");
+    for (CLI::Option* option : app.get_options()) {
+        if (option->get_expected_max() > 0 && numeric_type_name(option->get_type_name())) {
+            option->check(not_empty);
+        }
+    }
+    for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) {
+        refuse_empty_numbers(*command);
+    }
+}
+
 }  // namespace collide::app

@@ -26,4 +26,10 @@ CLI::Option* add_whole_option(CLI::App& app, const std::string& name, std::uint6
 CLI::Option* add_whole_option(CLI::App& app, const std::string& name, int& target, int min, int max,
                               const std::string& help);
 
+/// Refuses an empty value (`--at ""`, `--duration=`) for every numeric option of `app` and of its
+/// subcommands, at any depth: CLI11 would read it as 0. Whole-number options (above) refuse it
+/// themselves; this covers the others, the ones whose type name CLI11 shows as FLOAT, INT, UINT
+/// or NUMBER. A usage error (exit 2) naming the option. Call once all options are registered.
+void refuse_empty_numbers(CLI::App& app);
+
 }  // namespace collide::app

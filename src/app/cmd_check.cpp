@@ -80,9 +80,10 @@ std::vector<ScreenText> screen_texts(const Scene& scene, const std::string& scen
 /// too: checking a scene needs no font, drawing it does.
 void warn_missing_characters(const Scene& scene, const std::string& scene_arg,
                              const std::string& font_option) {
-    const std::string path = find_font(font_option);
+    std::string path;
     std::optional<text::FontFace> font;
     try {
+        path = find_font(font_option);
         font.emplace(path);
     } catch (const Error& e) {
         std::fprintf(stderr, "warning: the scene's characters were not checked: %s\n", e.what());

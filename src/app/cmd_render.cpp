@@ -467,6 +467,31 @@ void check_distinct_outputs(const RenderPlan& plan, const CliValues& values,
     if (outputs.size() > 1) io::check_distinct_outputs(outputs);
 }
 
+/// Options of one dimension's scenes only, given for a scene of the other: refused (exit 2), as
+/// the same settings are as the scene's hints, rather than ignored.
+void check_dimension_options(const CliValues& values, bool spheres, const std::string& scene) {
+    if (!spheres) {
+        for (const CLI::Option* option :
+             {values.camera_opt, values.projection_opt, values.slab_opt}) {
+            if (!given(option)) continue;
+            throw_option_error(option->get_name(),
+                               fmt::format("for 3D scenes only (the camera of spheres), and '{}' "
+                                           "is a 2D scene of discs",
+                                           scene));
+        }
+        return;
+    }
+    for (const CLI::Option* option : {values.trails_opt, values.replay_opt}) {
+        if (!given(option)) continue;
+        throw_option_error(
+            option == values.trails_opt ? "--trails/--no-trails" : option->get_name(),
+            fmt::format("for 2D scenes only, and '{}' is a 3D scene (spheres are "
+                        "drawn without trails and their failures are not "
+                        "replayed yet)",
+                        scene));
+    }
+}
+
 void run(const CliValues& values, bool still) {
     // Validation: nothing is rendered, and no output file is created, until all of it passes.
     const ProgressMode progress_mode = parse_progress_mode(values.video.progress);
@@ -485,6 +510,7 @@ void run(const CliValues& values, bool still) {
     std::optional<Scene> stand_in;
     if (spheres != nullptr) stand_in = show::stand_in_scene(*spheres);
     const Scene& scene = spheres != nullptr ? *stand_in : std::get<Scene>(any_scene);
+    check_dimension_options(values, spheres != nullptr, values.scene);
     if (spheres != nullptr && values.code)
         throw_option_error("--code",
                            "not for 3D scenes yet: the loop is shown beside the queue "

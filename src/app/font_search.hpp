@@ -16,7 +16,9 @@ inline constexpr const char* font_option_help =
 ///  3. DejaVu Sans where Debian (fonts-dejavu-core), Fedora and Arch install it;
 ///  4. the file fontconfig names for "DejaVu Sans" (`fc-match`, when it is installed).
 /// When none exists, the Debian path: the renderer then fails naming it and these choices.
-/// Throws Error(input) when --font or $COLLIDE_FONT names something that is not a regular file.
+/// Throws Error(input) naming the option or variable when --font or $COLLIDE_FONT names
+/// something that is not a usable font file (missing, not a regular file, not a font, damaged,
+/// beyond text::max_font_file_bytes).
 [[nodiscard]] std::string find_font(const std::string& requested);
 
 }  // namespace collide::app

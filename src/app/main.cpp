@@ -2,19 +2,27 @@
 /// errors become messages and exit codes (0 success, 2 bad input or usage, 1 anything else; a run
 /// stopped by a signal ends by that signal after its clean stop: the shell's 130 for Ctrl-C).
 
+#include <malloc.h>
+#include <sys/resource.h>
+
 #include <CLI/CLI.hpp>
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <new>
+#include <optional>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "cli_conventions.hpp"
 #include "cli_help.hpp"
+#include "cli_numbers.hpp"
 #include "collide/error.hpp"
 #include "commands.hpp"
 #include "interrupt.hpp"
 #include "progress.hpp"
+#include "standard_streams.hpp"
 
 namespace {
 
@@ -33,6 +41,8 @@ std::string memory_advice(const std::string& command) {
     if (command == "bench") return "use a smaller --n";
     if (command == "pq") return "give fewer --ops";
     if (command == "puzzle") return "lower --max-nodes, or show A* alone (--method astar)";
+    if (command == "heap") return "give fewer --ops, or a smaller frame (-q l or --size)";
+    if (command == "compare") return "compare smaller images";
     return "use fewer discs (the scene's N, or [[generate]] count)";
 }
 
@@ -66,9 +76,43 @@ void end_if_interrupted() {
     }
 }
 
+/// The command line's exit code, with every error turned into its message.
+int run(CLI::App& root, int argc, char** argv, const std::vector<char*>& help_args);
+
+/// `code`, unless something printed on standard output was lost: then the message and 1 (or
+/// the quiet end by SIGPIPE of any program whose reader left, as `collide scenes | head -c1`).
+int with_standard_output_checked(int code) {
+    bool broken_pipe = false;
+    const std::optional<std::string> failure = collide::app::standard_output_failure(broken_pipe);
+    if (!failure) return code;
+    if (broken_pipe) {
+        std::signal(SIGPIPE, SIG_DFL);
+        std::raise(SIGPIPE);
+    }
+    print_error(*failure);
+    return code == 0 ? exit_failure : code;
+}
+
+/// Under an address-space limit (`ulimit -v`), one malloc arena for all threads: each thread's
+/// own arena reserves 64 MiB of address space (128 MiB while it is made), which took half a
+/// render's (and, by the number of threads, more on more cores), and made the libraries that do
+/// not survive a failed allocation (LLVM, in the software GL's shader compiler) crash at limits
+/// the run fits in. Measured: a 640x360 render peaks at 0.57 GiB of address space instead of
+/// 1.0 (docs/limits.md, "Memory").
+void one_malloc_arena_under_address_limit() noexcept {
+#ifdef __GLIBC__
+    rlimit limit{};
+    if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+        mallopt(M_ARENA_MAX, 1);
+#endif
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+    one_malloc_arena_under_address_limit();
+    // Before anything opens a file: a closed standard output must stay closed for writes.
+    collide::app::reserve_standard_descriptors();
     collide::app::ignore_file_size_signal();
     std::vector<char*> help_args;  // `collide help [COMMAND]`: `collide [COMMAND] --help`
     collide::app::help_as_flag(argc, argv, help_args);
@@ -91,7 +135,13 @@ int main(int argc, char** argv) {
     collide::app::add_simulate_command(root);
     collide::app::add_bench_command(root);
     collide::app::add_help_command(root);
+    collide::app::refuse_empty_numbers(root);
+    return with_standard_output_checked(run(root, argc, argv, help_args));
+}
 
+namespace {
+
+int run(CLI::App& root, int argc, char** argv, const std::vector<char*>& help_args) {
     try {
         root.parse(argc, argv);
         if (argc == 1) {
@@ -119,9 +169,19 @@ int main(int argc, char** argv) {
         end_if_interrupted();
         print_error(out_of_memory_message(root));
         return exit_failure;
+    } catch (const std::system_error& e) {
+        end_if_interrupted();
+        // A thread the system could not start (EAGAIN: no memory for its stack under
+        // `ulimit -v`) is memory too, not "Resource temporarily unavailable".
+        const bool memory = e.code() == std::errc::resource_unavailable_try_again ||
+                            e.code() == std::errc::not_enough_memory;
+        print_error(memory ? out_of_memory_message(root) : std::string(e.what()));
+        return exit_failure;
     } catch (const std::exception& e) {
         end_if_interrupted();
         print_error(e.what());
         return exit_failure;
     }
 }
+
+}  // namespace

@@ -168,7 +168,9 @@ Culprits render_culprits(const RenderPlan& plan, const RenderRequest& request, c
             who.span = "scene '" + scene.name + "'";
         }
     }
-    if (request.dt) {
+    // A --dt list's steps are the user's as much as a single --dt (the plan's time engine runs
+    // the smallest of them, whose value the messages give).
+    if (request.dt || !request.dt_list.empty()) {
         who.dt = "--dt";
     } else if (hints.dt) {
         who.dt = hint_option(hints.dt_at, "dt");

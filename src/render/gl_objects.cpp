@@ -1,6 +1,7 @@
 #include "gl_objects.hpp"
 
 #include <cstdio>
+#include <new>
 #include <string>
 #include <utility>
 
@@ -80,6 +81,8 @@ GlObject make_program(const GladGLContext& gl, const char* vertex_source,
 
 void check_gl(const GladGLContext& gl, const char* where) {
     const GLenum error = gl.GetError();
+    // Memory is main's to report, as every allocation that fails: "out of memory".
+    if (error == GL_OUT_OF_MEMORY) throw std::bad_alloc();
     if (error != GL_NO_ERROR) {
         char code[16];
         std::snprintf(code, sizeof code, "0x%04x", static_cast<unsigned>(error));

@@ -61,6 +61,7 @@ void GlTarget::create_framebuffer() {
     gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
                             color_texture_.get(), 0);
     if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        check_gl(gl, "the framebuffer");  // a texture the driver had no memory for
         throw_runtime_error("GL: the " + std::to_string(width_) + "x" + std::to_string(height_) +
                             " framebuffer is incomplete");
     }
@@ -257,6 +258,7 @@ void GlTarget::create_depth_buffer() {
     gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
                                depth_buffer_.get());
     if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        check_gl(gl, "the depth buffer");  // a buffer the driver had no memory for
         throw_runtime_error("GL: the framebuffer with a depth buffer is incomplete");
     }
     sphere_program_ = make_program(gl, shaders::sphere_vert, shaders::sphere_frag, "sphere shader");

@@ -41,10 +41,28 @@ std::vector<std::string> scene_names_in(const std::filesystem::path& assets_dir)
     return names;
 }
 
+/// A built-in scene whose file is a symbolic link that leads nowhere (a broken one, or one in a
+/// loop) is there, by name, but cannot be read: said as such, not as an unknown name.
+void refuse_broken_link(const std::string& name, const std::filesystem::path& file) {
+    std::error_code ec;
+    if (!std::filesystem::is_symlink(std::filesystem::symlink_status(file, ec))) return;
+    std::error_code followed;
+    (void)std::filesystem::status(file, followed);
+    if (!followed) return;  // it leads to something; reading it says what, if it is not a scene
+    const std::filesystem::path target = std::filesystem::read_symlink(file, ec);
+    const std::string why = followed == std::errc::too_many_symbolic_link_levels
+                                ? "a symbolic link in a loop"
+                                : "a broken symbolic link (to '" + target.string() + "')";
+    throw_scene_error("'" + name + "'", 0, "",
+                      "the built-in scene's file " + file.string() + " is " + why +
+                          "; reinstall collide's data directory, or set COLLIDE_DATA_DIR");
+}
+
 Scene load_builtin(const std::string& name, const std::filesystem::path& assets_dir,
                    const SceneOptions& options) {
     const std::filesystem::path file = scenes_dir(assets_dir) / (name + ".toml");
     std::error_code ec;
+    refuse_broken_link(name, file);
     // Anything there that is not a regular file is refused by name when it is read.
     if (!std::filesystem::exists(file, ec)) {
         std::string reason = "not a scene file and not a built-in scene";

@@ -343,7 +343,7 @@ class TomlReader {
         try {
             generate_fcc(s, spec, field);
         } catch (const Error& e) {
-            throw_scene_error(file_, line, "", e.what());  // the generator names the field
+            fail_generated(t, field, e);
         }
     }
 
@@ -386,7 +386,7 @@ class TomlReader {
             try {
                 generate_spheres(s, g, field);
             } catch (const Error& e) {
-                throw_scene_error(file_, line, "", e.what());
+                fail_generated(t, field, e);
             }
         }
     }
@@ -424,6 +424,23 @@ class TomlReader {
     [[noreturn]] void fail(const toml::node& at, const std::string& field,
                            const std::string& reason) const {
         throw_scene_error(file_, static_cast<int>(at.source().begin.line), field, reason);
+    }
+
+    /// A generator's error ("generate[1].radius: ...") with the line of the field it names,
+    /// where the block `t` (named `prefix`) has that key; the block's own line otherwise (a
+    /// count the generator derived from the packing fraction, the block as a whole).
+    [[noreturn]] void fail_generated(const toml::table& t, const std::string& prefix,
+                                     const Error& e) const {
+        const std::string_view message = e.what();
+        int line = static_cast<int>(t.source().begin.line);
+        if (message.substr(0, prefix.size() + 1) == prefix + ".") {
+            const std::string_view rest = message.substr(prefix.size() + 1);
+            const std::string key(rest.substr(0, rest.find_first_of(":[")));
+            if (const toml::node* field = t.get(key)) {
+                line = static_cast<int>(field->source().begin.line);
+            }
+        }
+        throw_scene_error(file_, line, "", e.what());  // the generator names the field
     }
 
     void check_keys(const toml::table& table, const std::string& prefix,
@@ -782,8 +799,7 @@ class TomlReader {
             try {
                 generate_discs(scene_, spec, field);
             } catch (const Error& e) {
-                // The generator names the field; add where the block is.
-                throw_scene_error(file_, line, "", e.what());
+                fail_generated(t, field, e);
             }
             origin_.add({first, scene_.discs.size() - first, file_, {}, line, field});
         }
@@ -826,7 +842,7 @@ class TomlReader {
         try {
             g.validate(prefix);
         } catch (const Error& e) {
-            throw_scene_error(file_, static_cast<int>(t.source().begin.line), "", e.what());
+            fail_generated(t, prefix, e);
         }
         return g;
     }

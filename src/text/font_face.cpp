@@ -1,9 +1,13 @@
 #include "collide/text/font_face.hpp"
 
+#include <sys/stat.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
-#include <fstream>
-#include <iterator>
+#include <cstring>
+#include <memory>
+#include <new>
 #include <utility>
 
 #include "collide/error.hpp"
@@ -11,20 +15,56 @@
 namespace collide::text {
 namespace {
 
-std::vector<unsigned char> read_font_file(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        throw_runtime_error(
-            "font: cannot open '" + path +
-            "' (install fonts-dejavu-core, or give a TrueType font with --font FILE or "
-            "$COLLIDE_FONT)");
+/// The file a FontFace reads, and who chose it: the messages about it differ. A font the search
+/// found (DejaVu) is the installation's fault: a runtime error, with the advice to reinstall it.
+/// One the user named (`chosen_by` "--font" or "$COLLIDE_FONT") is bad input, named as such.
+struct FontSource {
+    const std::string& path;
+    std::string_view chosen_by;
+};
+
+[[noreturn]] void unusable(const FontSource& font, const std::string& why) {
+    if (!font.chosen_by.empty()) {
+        throw_input_error(std::string(font.chosen_by) + ": '" + font.path +
+                          "' is not a usable font file (" + why +
+                          "); give a TrueType or OpenType font (.ttf, .otf, .ttc)");
     }
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    throw_runtime_error("font: '" + font.path + "' is not a usable TrueType font (" + why +
+                        "); reinstall fonts-dejavu-core");
 }
 
-[[noreturn]] void unusable(const std::string& path, const std::string& why) {
-    throw_runtime_error("font: '" + path + "' is not a usable TrueType font (" + why +
-                        "); reinstall fonts-dejavu-core");
+/// The whole file, read only once its size is known to be within max_font_file_bytes (a font is
+/// read whole before any check: a huge file would cost its size in memory and seconds).
+std::vector<unsigned char> read_font_file(const FontSource& font) {
+    std::FILE* file = std::fopen(font.path.c_str(), "rb");
+    if (file == nullptr) {
+        const std::string reason = std::strerror(errno);
+        if (!font.chosen_by.empty()) {
+            throw_input_error(std::string(font.chosen_by) + ": cannot open '" + font.path +
+                              "': " + reason);
+        }
+        throw_runtime_error(
+            "font: cannot open '" + font.path + "': " + reason +
+            " (install fonts-dejavu-core, or give a TrueType font with --font FILE or "
+            "$COLLIDE_FONT)");
+    }
+    const std::unique_ptr<std::FILE, int (*)(std::FILE*)> owner(file, &std::fclose);
+    struct stat status {};
+    if (fstat(fileno(file), &status) != 0 || !S_ISREG(status.st_mode)) {
+        unusable(font, "not a regular file");
+    }
+    const auto size = static_cast<std::uint64_t>(status.st_size);
+    if (size > max_font_file_bytes) {
+        unusable(font, std::to_string(size / (1024 * 1024)) + " MB, more than the " +
+                           std::to_string(max_font_file_bytes / (1024 * 1024)) +
+                           " MB a font file may have");
+    }
+    std::vector<unsigned char> data(static_cast<std::size_t>(size));
+    const std::size_t read = std::fread(data.data(), 1, data.size(), file);
+    if (std::ferror(file) != 0)
+        unusable(font, std::string("cannot read it: ") + std::strerror(errno));
+    data.resize(read);  // a file that shrank meanwhile is checked as it was read
+    return data;
 }
 
 std::uint32_t big_endian(const std::vector<unsigned char>& data, std::size_t at, int bytes) {
@@ -57,27 +97,27 @@ std::uint32_t table_checksum(const std::vector<unsigned char>& data, std::uint64
 /// lie within it, every table too, the tables a glyph needs must be there (TrueType outlines or
 /// CFF ones), and each table (but 'head', which holds the whole file's adjustment) must match
 /// its checksum, which catches damage inside a table as well.
-void check_sfnt(const std::vector<unsigned char>& data, const std::string& path) {
+void check_sfnt(const std::vector<unsigned char>& data, const FontSource& font) {
     constexpr std::size_t directory_header = 12;
     constexpr std::size_t record_size = 16;
-    if (data.size() < directory_header + 4) unusable(path, "too short");
+    if (data.size() < directory_header + 4) unusable(font, "too short");
     std::size_t offset = 0;
     if (big_endian(data, 0, 4) == tag("ttcf")) offset = big_endian(data, 12, 4);  // its first font
     if (offset > data.size() || data.size() - offset < directory_header)
-        unusable(path, "truncated");
+        unusable(font, "truncated");
     const std::size_t tables = big_endian(data, offset + 4, 2);
-    if (data.size() - offset - directory_header < tables * record_size) unusable(path, "truncated");
+    if (data.size() - offset - directory_header < tables * record_size) unusable(font, "truncated");
     std::vector<std::uint32_t> present;
     for (std::size_t t = 0; t < tables; ++t) {
         const std::size_t record = offset + directory_header + t * record_size;
         const std::uint32_t name = big_endian(data, record, 4);
         const std::uint64_t start = big_endian(data, record + 8, 4);
         const std::uint64_t length = big_endian(data, record + 12, 4);
-        if (start + length > data.size()) unusable(path, "truncated");
+        if (start + length > data.size()) unusable(font, "truncated");
         present.push_back(name);
         if (name == tag("head")) continue;
         if (table_checksum(data, start, length) != big_endian(data, record + 4, 4))
-            unusable(path, "damaged: a table's checksum does not match");
+            unusable(font, "damaged: a table's checksum does not match");
     }
     const auto has = [&present](std::uint32_t name) {
         return std::find(present.begin(), present.end(), name) != present.end();
@@ -86,9 +126,9 @@ void check_sfnt(const std::vector<unsigned char>& data, const std::string& path)
         (has(tag("glyf")) && has(tag("loca"))) || has(tag("CFF ")) || has(tag("CFF2"));
     for (const std::uint32_t name :
          {tag("cmap"), tag("head"), tag("hhea"), tag("hmtx"), tag("maxp")}) {
-        if (!has(name)) unusable(path, "tables missing");
+        if (!has(name)) unusable(font, "tables missing");
     }
-    if (!outlines) unusable(path, "tables missing");
+    if (!outlines) unusable(font, "tables missing");
 }
 
 /// Characters a shaper draws as nothing (Unicode's default ignorables and the C0/C1 controls):
@@ -122,22 +162,28 @@ std::string encode_utf8(std::uint32_t cp) {
 
 }  // namespace
 
-FontFace::FontFace(const std::string& path) : path_(path), data_(read_font_file(path)) {
-    check_sfnt(data_, path_);
-    if (FT_Init_FreeType(&library_) != 0) {
+FontFace::FontFace(const std::string& path, std::string_view chosen_by)
+    : path_(path), data_(read_font_file(FontSource{path, chosen_by})) {
+    const FontSource source{path_, chosen_by};
+    check_sfnt(data_, source);
+    if (const FT_Error error = FT_Init_FreeType(&library_); error != 0) {
         library_ = nullptr;
-        throw_runtime_error("font: FreeType could not start (out of memory?)");
+        if (error == FT_Err_Out_Of_Memory) throw std::bad_alloc();
+        throw_runtime_error("font: FreeType could not start (error " + std::to_string(error) + ")");
     }
-    if (FT_New_Memory_Face(library_, data_.data(), static_cast<FT_Long>(data_.size()), 0, &face_) !=
-        0) {
+    if (const FT_Error error = FT_New_Memory_Face(library_, data_.data(),
+                                                  static_cast<FT_Long>(data_.size()), 0, &face_);
+        error != 0) {
         face_ = nullptr;
         release();
-        unusable(path, "FreeType cannot read it");
+        // Memory is main's to report, as every other allocation that fails (out of memory).
+        if (error == FT_Err_Out_Of_Memory) throw std::bad_alloc();
+        unusable(source, "FreeType cannot read it");
     }
     if (face_->charmap == nullptr || face_->charmap->encoding != FT_ENCODING_UNICODE ||
         !FT_IS_SCALABLE(face_)) {
         release();
-        unusable(path, "no Unicode outlines");
+        unusable(source, "no Unicode outlines");
     }
 }
 

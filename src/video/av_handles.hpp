@@ -10,7 +10,10 @@ extern "C" {
 #include <libavutil/frame.h>
 }
 
+#include <sys/resource.h>
+
 #include <memory>
+#include <new>
 #include <string>
 #include <string_view>
 
@@ -47,6 +50,12 @@ using CodecContextPtr = std::unique_ptr<AVCodecContext, CodecContextFree>;
 using FilterGraphPtr = std::unique_ptr<AVFilterGraph, FilterGraphFree>;
 using FormatContextPtr = std::unique_ptr<AVFormatContext, FormatContextFree>;
 
+/// True when the process runs under an address-space limit (`ulimit -v`, RLIMIT_AS).
+inline bool address_space_limited() {
+    rlimit limit{};
+    return getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY;
+}
+
 /// libav's message for an AVERROR code ("No space left on device").
 inline std::string av_error_text(int code) {
     char buffer[AV_ERROR_MAX_STRING_SIZE] = {};
@@ -56,14 +65,19 @@ inline std::string av_error_text(int code) {
 
 /// Throws Error(runtime, "<what>: <libav message>") when `code` is negative; returns it otherwise.
 inline int check_av(int code, std::string_view what) {
+    // Memory is main's to report, as every allocation that fails: "out of memory". x264 reports
+    // a malloc that failed as an external library's error; under an address-space limit
+    // (`ulimit -v`), with settings that always work, that is the memory too.
+    if (code == AVERROR(ENOMEM) || (code == AVERROR_EXTERNAL && address_space_limited()))
+        throw std::bad_alloc();
     if (code < 0) throw_runtime_error(std::string(what) + ": " + av_error_text(code));
     return code;
 }
 
-/// Throws Error(runtime, "out of memory: <what>") when an allocation returned null.
+/// Throws std::bad_alloc (main's "out of memory") when an allocation returned null.
 template <typename T>
-T* check_alloc(T* pointer, std::string_view what) {
-    if (pointer == nullptr) throw_runtime_error("out of memory: " + std::string(what));
+T* check_alloc(T* pointer, std::string_view /*what*/) {
+    if (pointer == nullptr) throw std::bad_alloc();
     return pointer;
 }
 

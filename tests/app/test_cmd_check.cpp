@@ -69,7 +69,7 @@ TEST_CASE("collide check: bad scenes exit 2 naming file, line and reason") {
         temp_scene("dense.toml", "[[generate]]\npacking_fraction = 0.95\nradius = 0.01\n"));
     CHECK(r.exit_code == 2);
     CHECK(contains(r.output,
-                   "dense.toml:1: generate[0].packing_fraction: 0.95 is above the maximum"));
+                   "dense.toml:2: generate[0].packing_fraction: 0.95 is above the maximum"));
 
     r = run_collide("check no-such-scene");
     CHECK(r.exit_code == 2);
@@ -202,11 +202,18 @@ TEST_CASE("collide check: bad 3D scenes exit 2 naming file, line and field") {
         {"dense3.toml",
          "dimension = 3\n[box]\nboundary = \"periodic\"\n[[generate]]\npacking_fraction = 0.45\n"
          "radius = 0.05\n",
-         "dense3.toml:4: generate[0].packing_fraction: packing 0.449771 is too dense to generate"},
+         "dense3.toml:5: generate[0].packing_fraction: packing 0.449771 is too dense to generate"},
         {"fcc3.toml",
          "dimension = 3\n[box]\ndepth = 0.1\nboundary = \"periodic\"\n[[fcc]]\ncells = 4\n"
          "packing_fraction = 0.5\n",
-         "fcc3.toml:5: fcc.packing_fraction: packing 0.5 is too dense to generate in this box"},
+         "fcc3.toml:7: fcc.packing_fraction: packing 0.5 is too dense to generate in this box"},
+        // A generator's error names the line of the field it blames, not the block's header.
+        {"cells3.toml", "dimension = 3\n[[fcc]]\npacking_fraction = 0.3\ncells = [2, 2, 2000]\n",
+         "cells3.toml:4: fcc.cells: each count of unit cells must be from 1 to 1000"},
+        {"radius3.toml",
+         "dimension = 3\n\n[[generate]]\ncount = 1\nregion = [[0, 0, 0], [1, 1, 0.1]]\n"
+         "\nradius = 0.06\n",
+         "radius3.toml:7: generate[0].radius"},
         {"dim4.toml", "dimension = 4\n", "dim4.toml:1: dimension: expected 2 (discs) or 3"},
         {"wide3.toml",
          "dimension = 3\n[box]\ndepth = 0.2\n[[sphere]]\nposition = [0.5, 0.5, 0.1]\n"
@@ -220,7 +227,7 @@ TEST_CASE("collide check: bad 3D scenes exit 2 naming file, line and field") {
         {"region3.toml",
          "dimension = 3\n[[generate]]\ncount = 10\nradius = 0.05\n"
          "region = [[0, 0, 0], [1, 1, 2]]\n",
-         "region3.toml:2: generate[0].region: the region must lie inside the box"},
+         "region3.toml:5: generate[0].region: the region must lie inside the box"},
         {"region2d3.toml",
          "dimension = 3\n[[generate]]\ncount = 10\nradius = 0.05\nregion = [[0, 0], [1, 1]]\n",
          "region2d3.toml:5: generate[0].region[0]: expected [x, y, z]"},

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "../support/temp_dir.hpp"
 #include "run_collide.hpp"
@@ -148,6 +149,52 @@ TEST_CASE("--font and $COLLIDE_FONT: a missing file is exit 2 naming the option"
         collide::test::run_collide_env("COLLIDE_FONT=/nonexistent/font.ttf", "heap --ops 'P *'");
     CHECK(variable.exit_code == 2);
     CHECK(variable.output.find("$COLLIDE_FONT: expected") != std::string::npos);
+}
+
+TEST_CASE("--font and $COLLIDE_FONT: a file that is not a font is the user's, not the install's") {
+    TempDir dir("conventions_font");
+    const fs::path text = dir.path / "notes.ttf";
+    std::ofstream(text) << "this is not a font, whatever its name says\n";
+    const fs::path empty = dir.path / "empty.otf";
+    std::ofstream(empty).close();
+    // A copy of a real font, cut in half: damaged.
+    const fs::path dejavu = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+    const fs::path cut = dir.path / "cut.ttf";
+    if (fs::exists(dejavu)) {
+        fs::copy_file(dejavu, cut);
+        fs::resize_file(cut, fs::file_size(dejavu) / 2);
+    }
+    // Larger than any font (sparse: it costs no disk), refused before it is read.
+    const fs::path huge = dir.path / "huge.ttf";
+    std::ofstream(huge).close();
+    fs::resize_file(huge, 300ULL * 1024 * 1024);
+    std::vector<fs::path> files{text, empty, huge};
+    if (fs::exists(cut)) files.push_back(cut);
+    for (const fs::path& file : files) {
+        CAPTURE(file);
+        const auto option =
+            run_collide("thumbnail gas --font '" + file.string() + "' -o /dev/null");
+        CHECK(option.exit_code == 2);
+        CHECK(option.output.find("--font: '" + file.string() + "' is not a usable font file") !=
+              std::string::npos);
+        CHECK(option.output.find("fonts-dejavu-core") == std::string::npos);
+        const auto variable = collide::test::run_collide_env(
+            "COLLIDE_FONT='" + file.string() + "'",
+            "heap --ops 'P *' -o '" + (dir.path / "h.mp4").string() + "'");
+        CHECK(variable.exit_code == 2);
+        CHECK(variable.output.find("$COLLIDE_FONT: '" + file.string() + "'") != std::string::npos);
+        CHECK(variable.output.find("fonts-dejavu-core") == std::string::npos);
+    }
+    const auto huge_run = run_collide("render gas --font '" + huge.string() + "' -o '" +
+                                      (dir.path / "g.mp4").string() + "'");
+    CHECK(huge_run.exit_code == 2);
+    CHECK(huge_run.output.find("300 MB, more than the 256 MB a font file may have") !=
+          std::string::npos);
+    // check only warns (it needs no font), in the same words.
+    const auto check = run_collide("check gas --font '" + text.string() + "'");
+    CHECK(check.exit_code == 0);
+    CHECK(check.output.find("--font: '" + text.string() + "' is not a usable font file") !=
+          std::string::npos);
 }
 
 TEST_CASE("render --progress bar fits COLUMNS=60 and --progress plain writes whole lines") {

@@ -20,6 +20,7 @@ using collide::test::run_collide;
 using collide::test::run_collide_bad_input;
 using collide::test::run_collide_env;
 using collide::test::TempDir;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -217,4 +218,58 @@ TEST_CASE("limits: the classic engine and the array queues are refused where the
     CHECK(contains(array, "--pq binary"));
     // The fast engine runs the same scene and span.
     CHECK(run_collide("simulate '" + scene + "' --until 0.001").exit_code == 0);
+}
+
+TEST_CASE("limits: under an address-space limit, running out is exit 1 'out of memory', no crash") {
+    // `ulimit -v` near what a run needs: the software GL's shader compiler (LLVM) crashed
+    // (SIGSEGV, abort) at half the limits tried, x264's failure read "Generic error in an
+    // external library", a thread's "Resource temporarily unavailable". Every limit ends in
+    // success or in the one message, and leaves nothing in the output's directory.
+    if (collide::test::address_sanitizer) COLLIDE_SKIP_TEST("ASan reserves terabytes");
+    TempDir dir("limits_memory");
+    const std::string video = (dir.path / "v.mp4").string();
+    const std::string still = (dir.path / "s.png").string();
+    const fs::path big = dir.path / "big.toml";
+    std::ofstream(big) << "[box]\nwidth = 100\nheight = 100\n[[generate]]\ncount = 1000000\n"
+                          "radius = 0.02\n";
+    int failed = 0;
+    for (const long mib : {420L, 480L, 540L, 560L, 600L, 650L, 700L, 760L}) {
+        for (const std::string& args : {"render gas -q l --duration 1 --chapters-file '" +
+                                            (dir.path / "c.vtt").string() + "' -o '" + video + "'",
+                                        "thumbnail gas --size 320x180 -o '" + still + "'",
+                                        "simulate '" + big.string() + "' --until 0.001"}) {
+            CAPTURE(mib);
+            CAPTURE(args);
+            const auto r = collide::test::run_collide_measured(args, mib);
+            CHECK((r.exit_code == 0 || r.exit_code == 1));  // -1: killed by a signal
+            if (r.exit_code != 0) {
+                ++failed;
+                CHECK(contains(r.output, "collide: error: out of memory"));
+            }
+            for (const auto& entry : fs::directory_iterator(dir.path)) {
+                const std::string name = entry.path().filename().string();
+                CHECK_MESSAGE(name.front() != '.', name);  // no temporary left
+            }
+        }
+    }
+    CHECK(failed > 0);  // the limits tried do reach the memory the runs need
+}
+
+TEST_CASE("limits: an empty number is refused naming the option, never read as 0") {
+    for (const std::string& args :
+         {std::string("thumbnail gas --at ''"), std::string("simulate gas --until ''"),
+          std::string("render gas --duration ''"), std::string("render gas --speed ''"),
+          std::string("render gas --dt ''"), std::string("render gas --slow-motion ''"),
+          std::string("thumbnail gas-3d --slab ''"), std::string("heap --ops 'P *' --pace ''"),
+          std::string("simulate gas --until 1 --engine time --dt ''"),
+          std::string("bench engine --eta ''")}) {
+        CAPTURE(args);
+        const std::string option = args.substr(
+            args.rfind("--"), args.find_first_of(" =", args.rfind("--")) - args.rfind("--"));
+        const bool draws = args.rfind("simulate", 0) != 0 && args.rfind("bench", 0) != 0;
+        const std::string out =
+            run_collide_bad_input(args + (draws ? " -o /tmp/collide_never.mp4" : ""));
+        CHECK(contains(out, option + ": expected a number, got an empty value"));
+    }
+    CHECK_FALSE(fs::exists("/tmp/collide_never.mp4"));
 }

@@ -82,6 +82,32 @@ TEST_CASE("a bad --slab exits 2 naming the option") {
     CHECK_FALSE(fs::exists("/tmp/collide_never.png"));
 }
 
+TEST_CASE("options of the other dimension exit 2 naming the option, as the scene hints do") {
+    struct Case {
+        const char* args;
+        const char* named;
+    };
+    // The camera of spheres on a 2D scene, valid values all: not ignored.
+    for (const Case& c :
+         {Case{"thumbnail gas --slab 0.3", "--slab: for 3D scenes only"},
+          Case{"render gas --camera orbit", "--camera: for 3D scenes only"},
+          Case{"thumbnail billiards --projection perspective", "--projection: for 3D scenes only"},
+          Case{"render gas --duration 1 --camera fixed", "--camera: for 3D"},
+          // Trails and replays on a 3D scene, either spelling.
+          Case{"render gas-3d --trails", "--trails/--no-trails: for 2D scenes"},
+          Case{"thumbnail gas-3d --no-trails", "--trails/--no-trails: for 2D"},
+          Case{"render gas-3d --replay none", "--replay: for 2D scenes only"}}) {
+        CAPTURE(c.args);
+        const bool still = std::string(c.args).rfind("thumbnail", 0) == 0;
+        const auto r =
+            run_collide(std::string(c.args) + " -o /tmp/collide_never" + (still ? ".png" : ".mp4"));
+        CHECK(r.exit_code == 2);
+        CHECK(contains(r.output, c.named));
+    }
+    CHECK_FALSE(fs::exists("/tmp/collide_never.mp4"));
+    CHECK_FALSE(fs::exists("/tmp/collide_never.png"));
+}
+
 TEST_CASE("a bad --projection exits 2 naming the option and the choices") {
     const auto r = run_collide("thumbnail gas-3d --projection fisheye -o /tmp/collide_never.png");
     CHECK(r.exit_code == 2);

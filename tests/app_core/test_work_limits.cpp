@@ -73,6 +73,29 @@ TEST_CASE(
     CHECK(render_refusal(request, moving_pair()).empty());
 }
 
+TEST_CASE("work limits: a step of a --dt list too small is blamed on --dt, with its value") {
+    RenderRequest request;
+    request.dt_list = {0.01, 2e-9, 0.04};
+    const std::string steps = render_refusal(request, moving_pair());
+    CHECK(contains(steps, "--dt: the time-driven engine would take about"));
+    CHECK(contains(steps, "dt = 2e-09"));
+    // Beside a speed and a duration given, and a scene's speed hint: still the step's fault.
+    request.speed = 1.0;
+    request.duration = 5.0;
+    CHECK(contains(render_refusal(request, moving_pair()), "--dt: the time-driven engine"));
+    Scene hinted = moving_pair();
+    hinted.render.speed = 0.5;
+    hinted.render.speed_at = "pair.toml:4: render.speed";
+    request.speed.reset();
+    request.dt_list = {0.01, 2e-10, 0.04};
+    CHECK(contains(render_refusal(request, hinted), "--dt: the time-driven engine"));
+    // Below the clock's resolution: the list's step again, --no-limits or not.
+    request.dt_list = {0.01, 1e-300};
+    request.no_limits = true;
+    const std::string never = render_refusal(request, hinted);
+    CHECK(contains(never, "--dt: dt = 1e-300 is below the resolution of the clock"));
+}
+
 TEST_CASE("work limits: --no-limits lifts the limits but not a run that can never end") {
     WorkLimits tiny;
     tiny.events = 1.0;  // any collision is too many

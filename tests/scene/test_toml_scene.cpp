@@ -214,11 +214,18 @@ TEST_CASE("toml: physical problems found by validation name the [[disc]] and its
                    "s.toml:5: disc[1]: overlaps s.toml:1: disc[0] at t = 0"));
 }
 
-TEST_CASE("toml: generator errors carry the block's line and key") {
+TEST_CASE("toml: generator errors carry the line of the key they blame, else the block's") {
     CHECK(contains(toml_error("\n[[generate]]\npacking_fraction = 0.95\nradius = 0.01\n"),
-                   "s.toml:2: generate[0].packing_fraction: 0.95 is above the maximum 0.85"));
-    CHECK(contains(toml_error("[[generate]]\ncount = 5000\nradius = 0.01\n"),
-                   "generate[0].count: 5000 discs of radius 0.01 give packing fraction"));
+                   "s.toml:3: generate[0].packing_fraction: 0.95 is above the maximum 0.85"));
+    CHECK(contains(toml_error("[[generate]]\nradius = 0.01\n\ncount = 5000\n"),
+                   "s.toml:4: generate[0].count: 5000 discs of radius 0.01 give packing fraction"));
+    CHECK(contains(toml_error("[[generate]]\ncount = 3\n\n\nradius = 0.01\nregion = [[0.5, 0.5], "
+                              "[0.4, 0.6]]\n"),
+                   "s.toml:6: generate[0].region: the second corner must lie above and right"));
+    // The second block: its own field's line.
+    CHECK(contains(toml_error("[[generate]]\ncount = 3\nradius = 0.01\n[[generate]]\ncount = 3\n"
+                              "radius = 0.01\nregion = [[0.5, 0.5], [0.4, 0.6]]\n"),
+                   "s.toml:7: generate[1].region"));
     CHECK(contains(toml_error("[[generate]]\nradius = 0.01\n"),
                    "s.toml:1: generate[0]: give count or packing_fraction"));
     CHECK(contains(toml_error("[[generate]]\ncount = 0\nradius = 0.01\n"),

@@ -4,13 +4,17 @@
 
 #include <doctest/doctest.h>
 #include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <csignal>
 #include <filesystem>
+#include <fstream>
 #include <functional>
+#include <iterator>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -62,7 +66,36 @@ inline bool has_open_file_in(pid_t pid, const std::filesystem::path& directory) 
 /// test), lets it run run.settle longer, sends `signal_number` and returns the wait status once
 /// the child has ended. A child still running 30 s after the signal ignored it: it is killed and
 /// the test fails, rather than hanging.
-inline int run_and_signal(const SignalledRun& run, int signal_number) {
+/// The CPU time (user + system, every thread) process `pid` has used so far, in seconds.
+inline double cpu_seconds_of(pid_t pid) {
+    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+    std::string text((std::istreambuf_iterator<char>(stat)), std::istreambuf_iterator<char>());
+    // After the command's name in parentheses (which may hold spaces): fields 3 on; utime and
+    // stime are fields 14 and 15.
+    const std::size_t close = text.rfind(')');
+    if (close == std::string::npos) return 0.0;
+    std::istringstream fields(text.substr(close + 2));
+    std::string field;
+    unsigned long long ticks = 0;
+    for (int number = 3; number <= 15 && (fields >> field); ++number) {
+        if (number >= 14) ticks += std::stoull(field);
+    }
+    return static_cast<double>(ticks) / static_cast<double>(sysconf(_SC_CLK_TCK));
+}
+
+/// `cpu_after_signal` (optional): set to the CPU time the child used from the signal to its
+/// end, in seconds: unlike the wall time, it does not grow when the machine is busy, so a test
+/// can bound the work a stop takes whatever the load.
+inline int run_and_signal(const SignalledRun& run, int signal_number,
+                          double* cpu_after_signal = nullptr) {
+    // Emptied here, before the child exists: a log left by an earlier run in the same file must
+    // not satisfy run.started() before this child has even truncated it (the signal then came
+    // before collide had its handlers, under load).
+    if (!run.log.empty()) {
+        const int fd = open(run.log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        REQUIRE(fd >= 0);
+        close(fd);
+    }
     const pid_t child = fork();
     REQUIRE(child >= 0);
     if (child == 0) {
@@ -89,13 +122,24 @@ inline int run_and_signal(const SignalledRun& run, int signal_number) {
     }
     CHECK(ready);
     std::this_thread::sleep_for(run.settle);
+    const double cpu_before_signal = cpu_seconds_of(child);
     for (int sent = 0; sent < run.repeats; ++sent) {
         if (sent > 0) std::this_thread::sleep_for(run.repeat_gap);
         kill(run.process_group ? -child : child, signal_number);
     }
     int status = 0;
     for (auto waited = std::chrono::milliseconds{0}; waited < run.end_timeout; waited += poll) {
-        if (waitpid(child, &status, WNOHANG) == child) return status;
+        rusage usage{};
+        if (wait4(child, &status, WNOHANG, &usage) == child) {
+            const auto seconds = [](const timeval& t) {
+                return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_usec) / 1e6;
+            };
+            if (cpu_after_signal != nullptr) {
+                *cpu_after_signal =
+                    seconds(usage.ru_utime) + seconds(usage.ru_stime) - cpu_before_signal;
+            }
+            return status;
+        }
         std::this_thread::sleep_for(poll);
     }
     kill(run.process_group ? -child : child, SIGKILL);

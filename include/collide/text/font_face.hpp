@@ -14,14 +14,21 @@
 
 namespace collide::text {
 
+/// The largest font file read (256 MiB): the largest fonts in use (CJK collections) are a tenth
+/// of it; a file beyond it is refused before it is read (docs/limits.md).
+inline constexpr std::uint64_t max_font_file_bytes = 256ULL * 1024 * 1024;
+
 /// One font file (TrueType, OpenType or the first font of a collection) opened with FreeType:
 /// the library instance and the face, owned together. Move-only; not shared between threads.
 class FontFace {
   public:
-    /// Reads and checks the file (every table within the file and matching its checksum: a
-    /// damaged font is refused here, not met as wrong glyphs later). Throws collide::Error
-    /// (runtime) naming `path` when it cannot be read or is not a usable font.
-    explicit FontFace(const std::string& path);
+    /// Reads and checks the file (at most max_font_file_bytes; every table within the file and
+    /// matching its checksum: a damaged font is refused here, not met as wrong glyphs later).
+    /// Throws collide::Error naming `path` when it cannot be read or is not a usable font:
+    /// with `chosen_by` empty (a font the search found), a runtime error advising to reinstall
+    /// fonts-dejavu-core; else an input error that names `chosen_by`, the option or variable the
+    /// user gave the file with ("--font", "$COLLIDE_FONT").
+    explicit FontFace(const std::string& path, std::string_view chosen_by = {});
     ~FontFace();
     FontFace(FontFace&& other) noexcept;
     FontFace& operator=(FontFace&& other) noexcept;
