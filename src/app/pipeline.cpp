@@ -18,7 +18,7 @@ namespace collide::app {
 
 namespace {
 
-/// SimFrames in flight between the simulation and render threads: enough to ride out an uneven
+/// Frame states in flight between the simulation and render threads: enough to ride out an uneven
 /// frame (a burst of collisions) without holding many snapshots in memory.
 constexpr std::size_t sim_queue_frames = 4;
 
