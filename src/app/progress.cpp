@@ -1,6 +1,7 @@
 #include "progress.hpp"
 
 #include <fmt/core.h>
+#include <fmt/format.h>
 #include <sys/ioctl.h>
 #include <unistd.h>
 
@@ -13,6 +14,7 @@
 
 #include "collide/error.hpp"
 #include "collide/named_values.hpp"
+#include "json_output.hpp"
 
 namespace collide::app {
 
@@ -117,10 +119,20 @@ int terminal_columns(std::FILE* out) {
 }
 
 std::string format_json(const ProgressState& state) {
-    return fmt::format(
-        R"({{"frame":{},"frames":{},"time":{:.9g},"fps":{:.3f},"elapsed":{:.3f},"eta":{:.3f}}})",
-        state.frames_done, state.frames_total, state.sim_time, frames_per_second(state),
-        state.elapsed_seconds, eta_seconds(state));
+    // Each figure at the precision it has always had (the time to nine digits, rates and
+    // seconds to a thousandth); a figure that is no number (an unknown rate) is null.
+    const auto rounded = [](double x, const char* format) -> Json {
+        if (!std::isfinite(x)) return nullptr;
+        return std::stod(fmt::format(fmt::runtime(format), x));
+    };
+    Json line;
+    line["frame"] = state.frames_done;
+    line["frames"] = state.frames_total;
+    line["time"] = rounded(state.sim_time, "{:.9g}");
+    line["fps"] = rounded(frames_per_second(state), "{:.3f}");
+    line["elapsed"] = rounded(state.elapsed_seconds, "{:.3f}");
+    line["eta"] = rounded(eta_seconds(state), "{:.3f}");
+    return line.dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 
 Progress::Progress(ProgressMode mode, std::int64_t frames_total, std::FILE* out)

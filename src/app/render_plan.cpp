@@ -12,7 +12,7 @@
 
 #include "collide/error.hpp"
 #include "collide/named_values.hpp"
-#include "collide/show/collision_summary.hpp"
+#include "collide/show/collision_program.hpp"
 #include "collide/show/still_timeline.hpp"
 #include "collide/sim/pq/queue_kind.hpp"
 #include "collide/sim/queue_view.hpp"
@@ -111,7 +111,7 @@ std::size_t queue_events(const RenderRequest& request, const RenderPlan& plan) {
             "--queue",
             "the time-driven engine has no event queue to show; use --mode both or event");
     }
-    if (plan.render.overlays != render::OverlayLevel::lesson) {
+    if (!show::level_shows(plan.render.overlays).queue) {
         throw_option_error("--queue",
                            fmt::format("the queue is drawn at the lesson level only, not with "
                                        "--overlays {}",
@@ -125,7 +125,7 @@ std::size_t queue_events(const RenderRequest& request, const RenderPlan& plan) {
 /// names the option given).
 bool code_of(const RenderRequest& request, const RenderPlan& plan) {
     if (!request.code) return false;
-    if (plan.render.overlays != render::OverlayLevel::lesson) {
+    if (!show::level_shows(plan.render.overlays).queue) {
         throw_option_error("--code",
                            fmt::format("the code is drawn at the lesson level only, not with "
                                        "--overlays {}",
@@ -244,105 +244,18 @@ render::RenderConfig render_config(const RenderRequest& request, const Scene& sc
     return config;
 }
 
-/// A few tagged discs whose path is the lesson (a Brownian tracer): their whole path stays on
-/// screen (each trail point costs a segment per frame, so not for many).
-bool few_tagged_discs(const Scene& scene) {
-    constexpr std::size_t few_tagged = 8;
-    const auto tagged = static_cast<std::size_t>(std::count_if(
-        scene.discs.begin(), scene.discs.end(), [](const Disc& d) { return !d.tag.empty(); }));
-    return tagged > 0 && tagged <= few_tagged;
-}
-
-/// Trails long enough to see a path: the whole video for a few tagged discs (thinned past
-/// `longest` points, RenderConfig::trail_whole_path), the default otherwise.
-int trail_length(const Scene& scene, std::int64_t frames) {
-    constexpr std::int64_t default_length = 48;
-    constexpr std::int64_t longest = 1024;
-    if (!few_tagged_discs(scene)) return static_cast<int>(default_length);
-    return static_cast<int>(std::clamp(frames, default_length, longest));
-}
-
-render::PlotSize histogram_size(const Scene& scene) {
-    // A distribution needs discs: below this many moving ones a histogram is noise.
-    constexpr std::size_t enough_for_a_distribution = 200;
-    // "auto": only where it teaches, i.e. where there are enough moving discs; a scene may ask
-    // for one anyway ("small"), or make it the subject ("large", e.g. maxwell-boltzmann).
-    if (scene.render.histogram) return *scene.render.histogram;
-    if (moving_disc_count(scene) >= enough_for_a_distribution) return PlotSize::small;
-    return PlotSize::none;
-}
-
-/// Captions beyond the video: an error when the video is as long as the scene says (the scene
-/// is wrong), a notice when --duration shortened it (a preview).
-std::vector<CaptionCue> captions_within(const Scene& scene, double duration, bool cli_duration,
-                                        std::vector<std::string>& notices) {
-    std::vector<CaptionCue> kept;
-    for (CaptionCue cue : scene.render.captions) {
-        if (cue.at < duration && cue.at + cue.hold > duration) {
-            if (!cli_duration) {
-                throw_scene_error(cue.file, cue.line, "render.captions.hold",
-                                  fmt::format("beyond the video: held from {:g} s for {:g} s, "
-                                              "the video lasts {:g} s (set [render] duration)",
-                                              cue.at, cue.hold, duration));
-            }
-            notices.push_back(
-                fmt::format("the hold at {:g} s is cut short at the end of this "
-                            "{:g} s video",
-                            cue.at, duration));
-            cue.hold = duration - cue.at;
-        }
-        if (cue.at < duration) {
-            kept.push_back(cue);
-            continue;
-        }
-        if (!cli_duration) {
-            throw_scene_error(cue.file, cue.line, "render.captions.at",
-                              fmt::format("beyond the video: {:g} s, the video lasts {:g} s "
-                                          "(set [render] duration)",
-                                          cue.at, duration));
-        }
-        notices.push_back(
-            fmt::format("the caption at {:g} s is after the end of this {:g} s "
-                        "video: not shown",
-                        cue.at, duration));
-    }
-    return kept;
-}
-
-LessonPlan lesson_plan(const RenderRequest& request, const Scene& scene, const RenderPlan& plan,
-                       std::vector<std::string>& notices) {
-    LessonPlan lesson;
-    lesson.title = scene.title;
-    lesson.description = scene.description;
-    // The card as the video has it (a still drops it once the video's timeline is known): only
-    // at the lesson level, the one that draws it, where the simulation waits for it.
-    if (!request.no_intro && !scene.description.empty() &&
-        plan.render.overlays == render::OverlayLevel::lesson) {
-        lesson.intro_seconds = std::min(intro_seconds, 0.25 * plan.duration);
-    }
-    // The summary card at the end, where the lesson's figures are shown.
-    if (!request.no_epilogue && plan.render.overlays == render::OverlayLevel::lesson) {
-        lesson.epilogue_seconds = std::min(show::epilogue_seconds, 0.2 * plan.duration);
-    }
-    lesson.caption = scene.render.caption.value_or("");
-    lesson.captions = captions_within(scene, plan.duration, request.duration.has_value(), notices);
-    if (!plan.time_steps.empty()) {
-        // A --dt list: the scene's captions speak of two panels ("Left: ..."); the video's one
-        // caption says what the panels side by side show.
-        lesson.caption = show::step_list_caption;
-        lesson.captions.clear();
-    }
-    // A hold freezes the picture for its caption to be read: only where captions are shown.
-    if (plan.render.overlays != render::OverlayLevel::lesson) {
-        for (CaptionCue& cue : lesson.captions) cue.hold = 0.0;
-    }
-    lesson.histogram = histogram_size(scene);
-    const double interval = plan.speed.speed / plan.fps;
-    // A --dt list: each panel's note and step indicator are its own (FrameSource).
-    if (!plan.time_steps.empty()) return lesson;
-    lesson.frames_per_step = show::whole_frames_per_step(plan.time_engine.dt, interval);
-    lesson.step_note = show::step_note(plan.time_engine.dt, interval);
-    return lesson;
+/// What the lesson plan is made of besides the scene, from the options (show::lesson_plan).
+show::LessonRequest lesson_request(const RenderRequest& request, const RenderPlan& plan) {
+    show::LessonRequest out;
+    out.level = plan.render.overlays;
+    out.duration = plan.duration;
+    out.duration_from_cli = request.duration.has_value();
+    out.intro = !request.no_intro;
+    out.epilogue = !request.no_epilogue;
+    out.step_list = !plan.time_steps.empty();
+    out.dt = plan.time_engine.dt;
+    out.frame_interval = plan.speed.speed / plan.fps;
+    return out;
 }
 
 /// Which failures are replayed: --replay, else the scene's hint, else the first. None where the
@@ -362,9 +275,7 @@ ReplayChoice replay_choice(const RenderRequest& request, const Scene& scene,
         }
         return ReplayChoice::none;
     }
-    if (plan.mode == RenderMode::event || plan.render.overlays != render::OverlayLevel::lesson)
-        return ReplayChoice::none;
-    return choice;
+    return show::shown_replays(choice, plan.mode != RenderMode::event, plan.render.overlays);
 }
 
 /// The simulation frames a video of `video`'s frames shows on `timeline`.
@@ -643,10 +554,10 @@ RenderPlan plan_without_frames(const RenderRequest& request, const Scene& scene)
     plan.code = code_of(request, plan);
     plan.queue_events = queue_events(request, plan);
     check_time_steps_shown(plan);
-    plan.render.trail_length = trail_length(scene, video.count);
-    plan.render.trail_whole_path = few_tagged_discs(scene);
+    plan.render.trail_length = show::trail_length(scene, video.count);
+    plan.render.trail_whole_path = show::few_tagged_discs(scene);
     check_failure_colors(scene, plan.render, plan.notices);
-    plan.lesson = lesson_plan(request, scene, plan, plan.notices);
+    plan.lesson = show::lesson_plan(scene, lesson_request(request, plan), plan.notices);
     if (request.layout_json) {
         if (request.layout_json->empty()) throw_option_error("--layout-json", "needs a file name");
         plan.layout_json = *request.layout_json;
@@ -746,14 +657,32 @@ double default_dt(double speed) {
     return speed / reference_fps;
 }
 
-std::size_t moving_disc_count(const Scene& scene) {
-    if (scene.discs.empty()) return 0;
-    double lightest = std::numeric_limits<double>::infinity();
-    for (const Disc& d : scene.discs) lightest = std::min(lightest, d.mass);
-    const double heavy = 1000.0 * lightest;  // render::immovable_mass_ratio
-    return static_cast<std::size_t>(
-        std::count_if(scene.discs.begin(), scene.discs.end(),
-                      [&](const Disc& d) { return std::isfinite(d.mass) && d.mass < heavy; }));
+show::CollisionSettings collision_settings(const RenderPlan& plan) {
+    show::CollisionSettings out;
+    out.level = plan.render.overlays;
+    out.time_panels = plan.mode != RenderMode::event;
+    out.event_panel = plan.mode != RenderMode::time;
+    out.event_engine = plan.event_engine;
+    out.time_engine = plan.time_engine;
+    out.time_steps = plan.time_steps;
+    out.queue_events = plan.queue_events;
+    out.code = plan.code;
+    out.fps = plan.fps;
+    out.speed = plan.speed.speed;
+    out.clock = plan.clock;
+    out.timeline = plan.timeline;
+    out.lesson = plan.lesson;
+    out.replays = plan.replays;
+    const render::RenderConfig& r = plan.render;
+    out.color_mode = r.color_mode;
+    out.speed_min = r.speed_min;
+    out.speed_max = r.speed_max;
+    out.mass_min = r.mass_min;
+    out.mass_max = r.mass_max;
+    out.camera = plan.camera;
+    out.projection = plan.projection;
+    out.slab = plan.slab;
+    return out;
 }
 
 }  // namespace collide::app

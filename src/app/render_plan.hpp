@@ -16,6 +16,7 @@
 #include "collide/render/renderer.hpp"
 #include "collide/scene.hpp"
 #include "collide/show/collision.hpp"
+#include "collide/show/collision_program.hpp"
 #include "collide/show/replay.hpp"
 #include "collide/show/sphere_camera.hpp"
 #include "collide/sim/engine.hpp"
@@ -208,9 +209,6 @@ inline constexpr double reference_fps = 30.0;
 /// by reference_fps. Never the frame rate.
 [[nodiscard]] double default_dt(double speed);
 
-/// How many of the scene's discs can move (mass below 1000 x the median).
-[[nodiscard]] std::size_t moving_disc_count(const Scene& scene);
-
 /// The resolved plan. Every field is valid once plan_render returned.
 struct RenderPlan {
     RenderMode mode = RenderMode::both;
@@ -282,5 +280,8 @@ using ReplayFinder = std::function<std::vector<show::ReplayFailure>(const Render
 /// a still's plan loses its card and summary here.
 void lay_out_frames(RenderPlan& plan, const RenderRequest& request,
                     const ReplayFinder& find_replays = {});
+
+/// The collision program's settings (collide/show/collision_program.hpp) of a resolved plan.
+[[nodiscard]] show::CollisionSettings collision_settings(const RenderPlan& plan);
 
 }  // namespace collide::app

@@ -53,7 +53,7 @@ void FullPainter::add_marks(std::size_t /*index*/, const PanelContent& content,
 
 Rgba8 FullPainter::counter_color() const noexcept {
     // The full level's dimmer counter grey on dark; the theme's text colour on light.
-    return config_.theme == Theme::dark ? Rgba8{190, 190, 200, 255} : palette_.text;
+    return config_.theme == Theme::dark ? full_counter_dark : palette_.text;
 }
 
 int FullPainter::panel_counter_columns(std::size_t panels) const {

@@ -391,9 +391,12 @@ struct HeapRenderer::Impl {
         build_caption(p, g);
     }
 
+    static std::string counter_text(const view::HeapCounter& c) { return c.label + " " + c.value; }
+
     static std::string counters_line(const view::HeapPanelView& p) {
         std::string line;
-        for (const std::string& c : p.counters) line += (line.empty() ? "" : "    ") + c;
+        for (const view::HeapCounter& c : p.counters)
+            line += (line.empty() ? "" : "    ") + counter_text(c);
         return line;
     }
 
@@ -401,9 +404,8 @@ struct HeapRenderer::Impl {
     /// not jump when a count gains a digit.
     bool counters_fit(const view::HeapPanelView& p, float width) {
         std::string widest;
-        for (const std::string& c : p.counters) {
-            widest += (widest.empty() ? "" : "    ") + c.substr(0, c.find(' ')) + " 0000";
-        }
+        for (const view::HeapCounter& c : p.counters)
+            widest += (widest.empty() ? "" : "    ") + c.label + " 0000";
         return font(small_px()).text_width(widest) <= width;
     }
 
@@ -418,19 +420,20 @@ struct HeapRenderer::Impl {
                                                            : wrap(fitted, p.title, room, 2);
     }
 
-    /// "returned: Q X P M" cut to `width` by leaving out the oldest keys ("returned: ... P M"):
-    /// the newest removals are the ones the caption speaks of.
-    static std::string newest_that_fit(const FontAtlas& f, const std::string& line, float width) {
-        const std::size_t head = line.find(' ');
-        if (head == std::string::npos || f.text_width(line) <= width) return line;
-        std::string rest = line.substr(head + 1);
-        std::string out = line;
-        while (f.text_width(out) > width) {
-            const std::size_t space = rest.find(' ');
-            if (space == std::string::npos) break;
-            rest = rest.substr(space + 1);
-            out = line.substr(0, head) + " ... " + rest;
-        }
+    /// "returned: Q X P M" cut to `width` by leaving out the oldest keys ("returned: ... P M"),
+    /// the newest always kept: the newest removals are the ones the caption speaks of.
+    static std::string newest_that_fit(const FontAtlas& f, const view::ReturnedKeys& returned,
+                                       float width) {
+        const auto line_from = [&](std::size_t first) {
+            std::string out = returned.label + (first > 0 ? " ..." : "");
+            for (std::size_t k = first; k < returned.keys.size(); ++k)
+                out += " " + returned.keys[k];
+            return out;
+        };
+        std::size_t first = 0;
+        std::string out = line_from(first);
+        while (f.text_width(out) > width && first + 1 < returned.keys.size())
+            out = line_from(++first);
         return out;
     }
 
@@ -452,8 +455,8 @@ struct HeapRenderer::Impl {
             return;
         }
         baseline = g.counters_baseline;
-        for (const std::string& c : p.counters) {
-            text(small, g.panel.x0 + pad, baseline, c, colors.counter);
+        for (const view::HeapCounter& c : p.counters) {
+            text(small, g.panel.x0 + pad, baseline, counter_text(c), colors.counter);
             baseline += small.line_height();
         }
     }
@@ -570,7 +573,7 @@ struct HeapRenderer::Impl {
         }
         if (p.heap_size < p.slots.size()) {
             const PointF c = slot_centre(g, p, p.heap_size);
-            text(small, c.x - 0.5F * s, g.slot_top - 0.35F * small.line_height(), "sorted",
+            text(small, c.x - 0.5F * s, g.slot_top - 0.35F * small.line_height(), p.sorted_label,
                  colors.index);
         }
     }

@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <nlohmann/json.hpp>
+#include <string>
 #include <string_view>
 
 namespace collide::render {
@@ -37,7 +40,6 @@ RectF place_box(const Box& box, double scale, float x0, float x1, float y0) {
 FrameLayout classic_layout(int frame_width, int frame_height, bool with_text,
                            const std::vector<Box>& boxes, float line_height, int counter_rows) {
     FrameLayout layout;
-    layout.level = with_text ? OverlayLevel::full : OverlayLevel::none;
     const auto width = static_cast<float>(frame_width);
     const auto height = static_cast<float>(frame_height);
     layout.margin = std::max(2.0F, std::round(std::min(width, height) * 0.01F));
@@ -150,19 +152,6 @@ int counter_columns(float panel_width, float font_pixel_height) noexcept {
     return std::clamp(static_cast<int>(panel_width / (14.0F * em)), 1, 4);
 }
 
-FrameLayout compute_layout(const LayoutInput& input) {
-    switch (input.level) {
-        case OverlayLevel::lesson:
-            return lesson_layout(input);
-        case OverlayLevel::full:
-            return classic_layout(input.width, input.height, true, input.boxes,
-                                  font_pixel_height(input.height) * 1.2F, input.counter_rows);
-        case OverlayLevel::none:
-            break;
-    }
-    return classic_layout(input.width, input.height, false, input.boxes, 0.0F, 0);
-}
-
 FrameLayout compute_layout(const RenderConfig& config, const std::vector<Box>& boxes,
                            float line_height, int counter_rows) {
     return classic_layout(config.width, config.height, config.overlays != OverlayLevel::none, boxes,
@@ -174,72 +163,66 @@ bool overlaps(RectF a, RectF b) noexcept {
 }
 
 namespace {
-/// `text` as a JSON string: quotes, backslashes and control characters escaped (UTF-8 as is).
-std::string json_string(std::string_view text) {
-    std::string out = "\"";
-    for (const char c : text) {
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += c;
-        } else if (static_cast<unsigned char>(c) < 0x20) {
-            out += fmt::format("\\u{:04x}", static_cast<unsigned>(c));
-        } else {
-            out += c;
-        }
-    }
-    return out + "\"";
+
+using Json = nlohmann::ordered_json;
+
+/// `x` as the layout has always written it (six significant digits, "{:g}"): the same value
+/// whatever the JSON writer's own precision; a whole number of pixels as an integer.
+Json six_digits(double x) {
+    const double rounded = std::stod(fmt::format("{:g}", x));
+    constexpr double exact_integers = 9007199254740992.0;  // 2^53
+    if (std::abs(rounded) < exact_integers && rounded == std::trunc(rounded))
+        return static_cast<std::int64_t>(rounded);
+    return rounded;
 }
 
-std::string json_strings(const std::vector<std::string>& strings) {
-    std::string out = "[";
-    for (std::size_t k = 0; k < strings.size(); ++k) {
-        out += (k == 0 ? "" : ", ") + json_string(strings[k]);
-    }
-    return out + "]";
+Json rect_json(RectF r) {
+    return Json::array({six_digits(r.x0), six_digits(r.y0), six_digits(r.x1), six_digits(r.y1)});
 }
+
 }  // namespace
 
-std::string layout_json(const FrameLayout& layout, int width, int height, const SlotTexts* drawn) {
-    const auto rect = [](RectF r) {
-        return fmt::format("[{:g}, {:g}, {:g}, {:g}]", r.x0, r.y0, r.x1, r.y1);
-    };
-    std::string out = fmt::format(
-        "{{\n  \"width\": {}, \"height\": {}, \"level\": \"{}\", "
-        "\"compact\": {},\n  \"panels\": [",
-        width, height, overlay_level_name(layout.level), layout.compact ? "true" : "false");
-    for (std::size_t i = 0; i < layout.panels.size(); ++i) {
-        const PanelLayout& p = layout.panels[i];
-        out += fmt::format("{}\n    {{\"area\": {}, \"box\": {}, \"pixels_per_unit\": {:g}}}",
-                           i == 0 ? "" : ",", rect(p.area), rect(p.box), p.scale);
+std::string layout_json(const FrameLayout& layout, OverlayLevel level, int width, int height,
+                        const SlotTexts* drawn) {
+    Json out;
+    out["width"] = width;
+    out["height"] = height;
+    out["level"] = overlay_level_name(level);
+    out["compact"] = layout.compact;
+    Json panels = Json::array();
+    for (const PanelLayout& p : layout.panels) {
+        panels.push_back({{"area", rect_json(p.area)},
+                          {"box", rect_json(p.box)},
+                          {"pixels_per_unit", six_digits(p.scale)}});
     }
-    out += "\n  ],\n  \"column\": " + rect(layout.column.area) + ",\n  \"text\": [";
+    out["panels"] = std::move(panels);
+    out["column"] = rect_json(layout.column.area);
+    Json text = Json::array();
     for (std::size_t i = 0; i < layout.text.size(); ++i) {
         const TextSlot& t = layout.text[i];
-        const std::string strings = drawn != nullptr && i < drawn->in_slots.size()
-                                        ? ", \"text\": " + json_strings(drawn->in_slots[i])
-                                        : std::string();
-        out += fmt::format(
-            "{}\n    {{\"role\": \"{}\", \"panel\": {}, \"rect\": {}, "
-            "\"pixel_height\": {:g}, \"cap_height\": {:.1f}{}}}",
-            i == 0 ? "" : ",", text_role_name(t.role), t.panel, rect(t.rect), t.pixel_height,
-            t.cap_height(), strings);
+        Json slot = {{"role", text_role_name(t.role)},
+                     {"panel", t.panel},
+                     {"rect", rect_json(t.rect)},
+                     {"pixel_height", six_digits(t.pixel_height)},
+                     {"cap_height", std::stod(fmt::format("{:.1f}", t.cap_height()))}};
+        if (drawn != nullptr && i < drawn->in_slots.size()) slot["text"] = drawn->in_slots[i];
+        text.push_back(std::move(slot));
     }
-    out += "\n  ]";
+    out["text"] = std::move(text);
     if (drawn != nullptr) {
         // Text in no slot of the layout: the title card, labels inside a box, the queue's nodes.
-        out += ",\n  \"other_text\": [";
-        for (std::size_t i = 0; i < drawn->elsewhere.size(); ++i) {
-            const auto& [slot, text] = drawn->elsewhere[i];
-            out += fmt::format(
-                "{}\n    {{\"role\": \"{}\", \"panel\": {}, \"rect\": {}, "
-                "\"pixel_height\": {:g}, \"text\": {}}}",
-                i == 0 ? "" : ",", text_role_name(slot.role), slot.panel, rect(slot.rect),
-                slot.pixel_height, json_string(text));
+        Json other = Json::array();
+        for (const auto& [slot, words] : drawn->elsewhere) {
+            other.push_back({{"role", text_role_name(slot.role)},
+                             {"panel", slot.panel},
+                             {"rect", rect_json(slot.rect)},
+                             {"pixel_height", six_digits(slot.pixel_height)},
+                             {"text", words}});
         }
-        out += "\n  ]";
+        out["other_text"] = std::move(other);
     }
-    out += "\n}\n";
-    return out;
+    // Strings are any bytes a scene wrote: invalid UTF-8 becomes U+FFFD rather than an error.
+    return out.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
 }  // namespace collide::render

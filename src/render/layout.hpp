@@ -101,7 +101,6 @@ struct ColumnLayout {
 };
 
 struct FrameLayout {
-    OverlayLevel level = OverlayLevel::none;
     bool compact = false;
     std::vector<PanelLayout> panels;
     RectF strip;        // full level: the bottom strip
@@ -131,7 +130,6 @@ struct SlotTexts {
 struct LayoutInput {
     int width = 1280;
     int height = 720;
-    OverlayLevel level = OverlayLevel::lesson;
     std::vector<Box> boxes;   ///< 1 to 5 panels, left to right (only their shapes matter)
     bool note_line = false;   ///< lesson: a note line under the figures (dt > frame)
     bool how_line = false;    ///< lesson: a line under each panel's figures (PanelContent::how)
@@ -175,9 +173,6 @@ inline constexpr float queue_strip_share = 0.3F;
                                          const std::vector<Box>& boxes, float line_height,
                                          int counter_rows);
 
-/// The layout of `input.level` (tests and tools; each painter calls its level's own function).
-[[nodiscard]] FrameLayout compute_layout(const LayoutInput& input);
-
 /// The full/none layout of `config`'s size and level (tests): classic_layout.
 [[nodiscard]] FrameLayout compute_layout(const RenderConfig& config, const std::vector<Box>& boxes,
                                          float line_height, int counter_rows = 1);
@@ -189,8 +184,8 @@ inline constexpr float queue_strip_share = 0.3F;
 
 /// The rectangles as JSON (frame size, level, panels with box and scale, every text slot), with
 /// the strings drawn in each slot ("text") when `drawn` is given, and the text drawn elsewhere.
-[[nodiscard]] std::string layout_json(const FrameLayout& layout, int width, int height,
-                                      const SlotTexts* drawn = nullptr);
+[[nodiscard]] std::string layout_json(const FrameLayout& layout, OverlayLevel level, int width,
+                                      int height, const SlotTexts* drawn = nullptr);
 
 /// True when the two rectangles share interior area.
 [[nodiscard]] bool overlaps(RectF a, RectF b) noexcept;

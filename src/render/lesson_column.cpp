@@ -32,7 +32,7 @@ void LessonPainter::add_column(const FrameContent& frame) {
         const TextSlot* value = layout_.slot(TextRole::cost_value, p);
         if (label == nullptr || value == nullptr) continue;
         draw_text(Font::body, *label, panel.cost_label,
-                  with_alpha(accent_text(panel.accent, config_.theme), 255));
+                  with_alpha(accent_text(accent(panel), config_.theme), 255));
         const RectF track{label->rect.x0, label->rect.y1, label->rect.x1,
                           value->rect.y0 - std::round(0.6F * layout_.margin)};
         list_.over.add_rect(track, faded(palette_.muted, 0.35F));
@@ -41,7 +41,7 @@ void LessonPainter::add_column(const FrameContent& frame) {
             const float w = std::max(std::min(stub, track.width()),
                                      static_cast<float>(panel.cost / most) * track.width());
             list_.over.add_rect({track.x0, track.y0, track.x0 + w, track.y1},
-                                with_alpha(panel.accent, 255));
+                                with_alpha(accent(panel), 255));
         }
         const Font value_font =
             value->pixel_height >= head_font_->pixel_height() ? Font::head : Font::body;
@@ -89,7 +89,7 @@ void LessonPainter::add_column(const FrameContent& frame) {
         std::vector<Rgb8> colors;
         for (const PanelContent& panel : frame.panels) {
             snapshots.push_back(panel.snapshot);
-            colors.push_back(panel.accent);
+            colors.push_back(accent(panel));
         }
         std::function<Rgb8(double)> axis_colors;
         if (config_.color_mode == ColorMode::speed) {

@@ -16,7 +16,6 @@ namespace {
 /// The lesson form below compact_width: boxes fill the frame under one line per panel.
 FrameLayout compact_layout(const LayoutInput& in, float body) {
     FrameLayout layout;
-    layout.level = OverlayLevel::lesson;
     layout.compact = true;
     layout.body_pixel_height = body;
     layout.headline_pixel_height = body;
@@ -130,7 +129,6 @@ void lay_out_column(FrameLayout& layout, const LayoutInput& in, const ColumnMetr
 /// plan refuses them beside a list).
 FrameLayout grid_layout(const LayoutInput& in, float body) {
     FrameLayout layout;
-    layout.level = OverlayLevel::lesson;
     const float head = std::round(body * headline_scale);
     layout.body_pixel_height = body;
     layout.headline_pixel_height = head;
@@ -221,7 +219,6 @@ FrameLayout lesson_layout(const LayoutInput& in) {
     if (in.width < compact_width) return compact_layout(in, body);
     if (in.boxes.size() > 2) return grid_layout(in, body);
     FrameLayout layout;
-    layout.level = OverlayLevel::lesson;
     const float head = std::round(body * headline_scale);
     layout.body_pixel_height = body;
     layout.headline_pixel_height = head;

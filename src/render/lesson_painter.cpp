@@ -76,7 +76,6 @@ FrameLayout LessonPainter::layout_for(const FrameContent& frame) const {
     LayoutInput input;
     input.width = config_.width;
     input.height = config_.height;
-    input.level = OverlayLevel::lesson;
     input.boxes = panel_boxes(frame);
     for (const PanelContent& panel : frame.panels) {
         if (!panel.note.empty()) input.note_line = true;
@@ -177,7 +176,7 @@ void LessonPainter::add_panel_text(std::size_t index, const PanelContent& conten
                                    const PanelLayout& /*panel*/) {
     if (intro_) return;  // the title card covers the frame
     const int p = static_cast<int>(index);
-    const Rgba8 accent = with_alpha(content.accent, 255);
+    const Rgba8 accent = with_alpha(Painter::accent(content), 255);
     if (layout_.compact) {
         if (const TextSlot* slot = layout_.slot(TextRole::figures, p)) {
             const float sw = std::round(0.6F * body_font_->pixel_height());

@@ -1,6 +1,6 @@
 // A replay's marks over a panel's (zoomed) box: the ghosts of the failing discs, the straight
 // jump between two checks, the labels and the heading. What they are and say is the presentation
-// layer's (show::replay_frame); here they get their pixels.
+// layer's (show::replay_views); here they get their pixels.
 #include <algorithm>
 #include <cmath>
 

@@ -43,9 +43,10 @@ void LessonPainter::add_summary(const FrameContent& frame) {
         return line_slot(body, x0, x0 + column_width, top, row_line);
     };
     for (std::size_t c = 0; c < card.columns.size(); ++c) {
-        const Rgb8 accent = c < frame.panels.size() ? frame.panels[c].accent : Rgb8{200, 200, 200};
+        const Rgb8 colour =
+            c < frame.panels.size() ? accent(frame.panels[c]) : summary_column_fallback;
         draw_text(Font::body, column_slot(c, y), card.columns[c],
-                  faded(with_alpha(accent, 255), opacity), Align::right);
+                  faded(with_alpha(colour, 255), opacity), Align::right);
     }
     y += row_line;
     for (const SummaryRow& row : card.rows) {

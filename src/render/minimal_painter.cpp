@@ -6,13 +6,6 @@
 
 namespace collide::render {
 
-namespace {
-
-constexpr Rgba8 overlap_halo_color{240, 45, 45, 255};
-constexpr Rgba8 missed_flash_color{255, 235, 110, 235};
-
-}  // namespace
-
 MinimalPainter::MinimalPainter(const RenderConfig& config) : Painter(config) {
     use_classic_style();
 }

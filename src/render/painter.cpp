@@ -12,9 +12,6 @@ namespace collide::render {
 
 namespace {
 
-constexpr Rgb8 untagged_color{120, 122, 135};
-constexpr Rgba8 escaped_ring_color{255, 70, 70, 255};
-
 /// A segment from a to b drawn as dashes about `dash` long, a dash at both ends.
 void add_dashed_segment(OverlayBatch& batch, PointF a, PointF b, float width, float dash,
                         Rgba8 color) {
@@ -60,10 +57,14 @@ std::vector<Box> Painter::panel_boxes(const FrameContent& frame) {
     return boxes;
 }
 
-std::vector<Rgb8> Painter::accents(const FrameContent& frame) {
+Rgb8 Painter::accent(const PanelContent& panel) const noexcept {
+    return panel_accent(panel.time_driven, config_.theme);
+}
+
+std::vector<Rgb8> Painter::accents(const FrameContent& frame) const {
     std::vector<Rgb8> out;
     out.reserve(frame.panels.size());
-    for (const PanelContent& panel : frame.panels) out.push_back(panel.accent);
+    for (const PanelContent& panel : frame.panels) out.push_back(accent(panel));
     return out;
 }
 

@@ -21,9 +21,6 @@
 
 namespace collide::render {
 
-/// The tag colour mode's colour of a tagged disc (and of the full level's tag key).
-inline constexpr Rgb8 tagged_color{250, 160, 40};
-
 /// How a level draws a panel's box, trails and discs (filled once, by the painter's constructor).
 struct PanelStyle {
     float wall = 1.0F;         ///< wall thickness, px
@@ -105,8 +102,10 @@ class Painter {
     [[nodiscard]] float body_pixel_height() const noexcept;
     /// The boxes of a frame's panels (only their shapes matter to a layout).
     [[nodiscard]] static std::vector<Box> panel_boxes(const FrameContent& frame);
+    /// A panel's engine colour in this theme (title swatch, cost bar, histogram, plot series).
+    [[nodiscard]] Rgb8 accent(const PanelContent& panel) const noexcept;
     /// The panels' accents, in panel order: the colours of their plot series.
-    [[nodiscard]] static std::vector<Rgb8> accents(const FrameContent& frame);
+    [[nodiscard]] std::vector<Rgb8> accents(const FrameContent& frame) const;
     /// A colour of the colormap's part in use (colormap_low_ .. colormap_high_), t in [0, 1].
     [[nodiscard]] Rgb8 shown_colormap(double t) const noexcept;
 

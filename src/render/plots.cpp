@@ -23,14 +23,14 @@ const std::string& first_that_fits(const FontAtlas& font, const std::vector<std:
     return choices.empty() ? none : choices.back();
 }
 
-struct PlotFrame {
+struct PlotAxes {
     RectF plot;  // the data area
     float line_width;
 };
 
 // Title line above, axes along the bottom and left.
-PlotFrame draw_axes(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& font, RectF area,
-                    const std::string& title, const PlotColors& colors) {
+PlotAxes draw_axes(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& font, RectF area,
+                   const std::string& title, const PlotColors& colors) {
     const float line = std::max(1.0F, std::round(font.pixel_height() / 12.0F));
     font.add_text(text, area.x0, area.y0 + font.ascent(), title, colors.label);
     RectF plot{area.x0, area.y0 + font.line_height(), area.x1, area.y1};
@@ -181,7 +181,7 @@ void draw_speed_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& f
     const float room = area.width() - font.text_width(range) - font.pixel_height();
     const std::string& title = first_that_fits(font, words.titles, room);
     const bool show_range = font.text_width(title) <= room;
-    const PlotFrame frame = draw_axes(batch, text, font, area, title, colors);
+    const PlotAxes frame = draw_axes(batch, text, font, area, title, colors);
     const RectF plot = frame.plot;
     if (snapshots.empty() || plot.width() < 4.0F) return;
     const int bins = std::clamp(static_cast<int>(plot.width() / 6.0F), 8, 40);
@@ -247,7 +247,7 @@ void draw_drift_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& f
         }
     }
     const double scale = words.scale;
-    const PlotFrame frame = draw_axes(batch, text, font, area, words.title, colors);
+    const PlotAxes frame = draw_axes(batch, text, font, area, words.title, colors);
     const RectF plot = frame.plot;
     const float mid = 0.5F * (plot.y0 + plot.y1 - frame.line_width);
     batch.add_rect({plot.x0, mid, plot.x1, mid + 1.0F}, colors.zero_line);

@@ -46,13 +46,12 @@ class MaxwellBoltzmann {
     std::vector<Group> groups_;
 };
 
-/// Colours of a plot's text, axes and reference curve (the theme's).
-/// The defaults are the dark theme's; FrameBuilder passes its theme's (plot_colors(Palette)).
+/// Colours of a plot's text, axes and reference curve: the theme's (theme.hpp: plot_colors).
 struct PlotColors {
-    Rgba8 label{210, 210, 215, 255};
-    Rgba8 axis{150, 150, 160, 255};
-    Rgba8 curve{250, 250, 250, 255};
-    Rgba8 zero_line{90, 90, 100, 255};  ///< the drift plot's zero
+    Rgba8 label;
+    Rgba8 axis;
+    Rgba8 curve;
+    Rgba8 zero_line;  ///< the drift plot's zero
 };
 
 /// Shapes go to `batch`, text to `text`.

@@ -69,10 +69,11 @@ std::string Renderer::layout_json(const FrameContent& frame) const {
     // rectangles alone.
     if (impl_->builder.layout().panels.size() == frame.panels.size() &&
         !impl_->builder.layout().panels.empty()) {
-        return render::layout_json(impl_->builder.layout(), config().width, config().height,
-                                   &impl_->builder.drawn_text());
+        return render::layout_json(impl_->builder.layout(), config().overlays, config().width,
+                                   config().height, &impl_->builder.drawn_text());
     }
-    return render::layout_json(impl_->builder.layout_for(frame), config().width, config().height);
+    return render::layout_json(impl_->builder.layout_for(frame), config().overlays, config().width,
+                               config().height);
 }
 
 Backend Renderer::backend() const noexcept {

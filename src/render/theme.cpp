@@ -56,7 +56,7 @@ Palette palette(Theme theme) noexcept {
 }
 
 PlotColors plot_colors(Theme theme) noexcept {
-    if (theme == Theme::dark) return {};  // the plots' own defaults are the dark theme's
+    if (theme == Theme::dark) return dark_plot_colors;
     const Palette p = palette(theme);
     // The zero line: halfway between the axis grey and the page, quieter than the axes.
     const auto mix = [](std::uint8_t a, std::uint8_t b) {
@@ -165,15 +165,13 @@ Rgba8 puzzle_mark_color(view::PuzzleMark mark, const PuzzlePalette& palette) noe
 }
 
 Rgb8 panel_accent(bool time_driven, Theme theme) noexcept {
-    const Rgb8 accent = time_driven ? Rgb8{240, 150, 60} : Rgb8{90, 175, 245};
+    const Rgb8 accent = time_driven ? time_driven_accent : event_driven_accent;
     if (theme == Theme::dark) return accent;
     return with_contrast(accent, rgb(palette(theme).background), mark_contrast);
 }
 
 Rgb8 next_event_color(Theme theme) noexcept {
-    // Amber, far from the failure magenta; darker on the light theme, where the bright one has
-    // too little contrast against white.
-    return theme == Theme::light ? Rgb8{150, 80, 0} : Rgb8{255, 196, 40};
+    return theme == Theme::light ? next_event_light : next_event_dark;
 }
 
 Rgb8 failure_color(Theme theme) noexcept {

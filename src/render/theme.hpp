@@ -16,6 +16,36 @@
 
 namespace collide::render {
 
+// ---------------------------------------------------------------------------------------------
+// The collision video's named colours (each painter takes its colours from here).
+
+/// The engines' colours on the dark theme (panel_accent darkens them on the light one until
+/// they keep 3:1 on the page): time-driven orange, event-driven blue, the same in every video.
+inline constexpr Rgb8 time_driven_accent{240, 150, 60};
+inline constexpr Rgb8 event_driven_accent{90, 175, 245};
+/// A summary card's column heading without a panel of its own (never drawn today: a card has a
+/// column per panel).
+inline constexpr Rgb8 summary_column_fallback{200, 200, 200};
+/// The tag colour mode's colour of a tagged disc (and of the full level's tag key), and of the
+/// others.
+inline constexpr Rgb8 tagged_color{250, 160, 40};
+inline constexpr Rgb8 untagged_color{120, 122, 135};
+/// The full level's ring around a disc that left its box.
+inline constexpr Rgba8 escaped_ring_color{255, 70, 70, 255};
+/// The full level's counters on the dark theme: dimmer than its text (the light theme's are
+/// its text colour).
+inline constexpr Rgba8 full_counter_dark{190, 190, 200, 255};
+/// Level none: a red halo around overlapping discs, a yellow flash where a collision was missed.
+inline constexpr Rgba8 overlap_halo_color{240, 45, 45, 255};
+inline constexpr Rgba8 missed_flash_color{255, 235, 110, 235};
+/// The queue strip's colour for the next event: amber, far from the failure magenta; darker on
+/// the light theme, where the bright one has too little contrast against white.
+inline constexpr Rgb8 next_event_dark{255, 196, 40};
+inline constexpr Rgb8 next_event_light{150, 80, 0};
+/// The plots' text, axes, reference curve and zero line on the dark theme (plot_colors).
+inline constexpr PlotColors dark_plot_colors{
+    {210, 210, 215, 255}, {150, 150, 160, 255}, {250, 250, 250, 255}, {90, 90, 100, 255}};
+
 /// Theme colours.
 struct Palette {
     Rgba8 background;

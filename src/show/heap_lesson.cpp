@@ -402,8 +402,9 @@ view::HeapPanelView HeapLesson::panel_view(std::size_t panel, const HeapPanelMom
     view::HeapPanelView view;
     view.title = sort ? title + (min ? " (descending)" : " (ascending)")
                       : title + (min ? " (min)" : " (max)");
-    view.counters = {"compares " + std::to_string(state.compares),
-                     (record.shifts ? "shifts " : "exchanges ") + std::to_string(state.exchanges)};
+    view.counters = {{"compares", std::to_string(state.compares)},
+                     {record.shifts ? "shifts" : "exchanges", std::to_string(state.exchanges)}};
+    view.sorted_label = "sorted";
     view.caption = *moment.caption;
     view.tree = record.tree;
     view.arity = std::max(record.arity, 2U);
@@ -473,21 +474,22 @@ view::CodeView HeapLesson::code_at(const HeapMoment& moment) const {
     return code;
 }
 
-std::string HeapLesson::returned(std::size_t panel, const HeapMoment& moment) const {
+view::ReturnedKeys HeapLesson::returned(std::size_t panel, const HeapMoment& moment) const {
     const std::vector<LessonOp>& ops = record_.ops();
     const bool removes = std::any_of(ops.begin(), ops.end(), [](const LessonOp& op) {
         return op.kind == LessonOp::Kind::remove;
     });
-    if (!removes || record_.heapsort()) return "";
+    if (!removes || record_.heapsort()) return {};
     // An operation's key counts as returned once its steps are done (its summary is shown).
     const bool op_done = moment.started && moment.panels[panel].step == nullptr;
     const std::size_t done = !moment.started ? 0 : moment.op + (op_done ? 1 : 0);
-    std::string keys;
+    view::ReturnedKeys out{"returned:", {}};
     for (std::size_t k = 0; k < std::min(done, ops.size()); ++k) {
         if (ops[k].kind != LessonOp::Kind::remove) continue;
-        keys += " " + record_.panels()[panel].ops[k].removed;
+        out.keys.push_back(record_.panels()[panel].ops[k].removed);
     }
-    return "returned:" + (keys.empty() ? std::string(" -") : keys);
+    if (out.keys.empty()) out.keys.push_back("-");
+    return out;
 }
 
 std::string HeapLesson::widest_key() const {

@@ -229,11 +229,11 @@ BoxZoom replay_target(const ReplayFailure& failure, const Box& box) {
     return zoom;
 }
 
-ReplayFrame replay_frame(const ReplayFailure& failure, const Box& box, double seconds) {
+ReplayViews replay_views(const ReplayFailure& failure, const Box& box, double seconds) {
     const Geometry g = geometry(failure, box);
     const Phase p = phase_at(seconds);
     const BoxZoom target = replay_target(failure, box);
-    ReplayFrame frame;
+    ReplayViews frame;
     // Enlarging by equal factors each frame, the spot sliding to the middle as it grows.
     const double m = std::pow(target.magnification, p.zoom);
     const double slide =

@@ -512,19 +512,10 @@ namespace {
 /// The strings --layout-json gives for every slot of `role`, in the file's order.
 std::vector<std::string> texts_of(const std::string& json, const std::string& role) {
     std::vector<std::string> out;
-    const std::string key = "\"role\": \"" + role + "\"";
-    for (std::size_t at = json.find(key); at != std::string::npos; at = json.find(key, at + 1)) {
-        const std::size_t end = json.find('}', at);
-        std::size_t q = json.find("\"text\": [", at);
-        if (q == std::string::npos || q > end) continue;
-        q += 9;
-        while (json[q] != ']') {
-            const std::size_t open = json.find('"', q);
-            const std::size_t close = json.find('"', open + 1);
-            out.push_back(json.substr(open + 1, close - open - 1));
-            q = close + 1;
-            while (json[q] == ',' || json[q] == ' ') ++q;
-        }
+    const nlohmann::json layout = nlohmann::json::parse(json);  // outlives the loop over it
+    for (const nlohmann::json& slot : layout.at("text")) {
+        if (slot.at("role") != role || !slot.contains("text")) continue;
+        for (const nlohmann::json& text : slot.at("text")) out.push_back(text.get<std::string>());
     }
     return out;
 }

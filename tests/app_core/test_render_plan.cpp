@@ -112,9 +112,10 @@ TEST_CASE(
         Snapshot snap;
     };
     const auto through_frames = [&](const RenderPlan& plan) {
-        FrameSource source(scene, plan);
-        SimFrame frame;
-        for (std::int64_t k = 0; k < plan.clock.count; ++k) frame = source.frame(k);
+        const show::CollisionSettings settings = collision_settings(plan);
+        show::CollisionSimulation source(show::SceneView{&scene}, settings);
+        show::CollisionState frame;
+        for (std::int64_t k = 0; k < plan.clock.count; ++k) frame = source.state(k);
         return Result{source.measurements().front(), frame.panels.front().snapshot};
     };
     RenderRequest request;
@@ -362,7 +363,7 @@ TEST_CASE("the speed histogram shows by default with enough moving discs, or whe
     CHECK(plan_render(request, gas).lesson.histogram == render::PlotSize::small);
     // 150 moving among 400 is not: the barrier discs never count (tunnelling, billiards, ...).
     gas.discs.erase(gas.discs.begin(), gas.discs.begin() + 100);
-    CHECK(moving_disc_count(gas) == 150);
+    CHECK(show::moving_disc_count(gas) == 150);
     CHECK(plan_render(request, gas).lesson.histogram == render::PlotSize::none);
     // The scene decides over the default.
     gas.render.histogram = PlotSize::small;
@@ -568,14 +569,15 @@ TEST_CASE("--dt list: one time-driven panel per step, each missing what its engi
     // The scene's captions speak of two panels ("Left: ..."): the list's own caption instead.
     CHECK(plan.lesson.caption == show::step_list_caption);
     CHECK(plan.lesson.captions.empty());
-    FrameSource source(scene, plan);
-    SimFrame frame;
-    for (std::int64_t k = 0; k < plan.timeline.frame_count(); ++k) frame = source.frame(k);
+    const show::CollisionSettings settings = collision_settings(plan);
+    show::CollisionSimulation source(show::SceneView{&scene}, settings);
+    show::CollisionState frame;
+    for (std::int64_t k = 0; k < plan.timeline.frame_count(); ++k) frame = source.state(k);
     REQUIRE(frame.panels.size() == 4);
     CHECK_FALSE(frame.panels.back().time_driven);
     std::uint64_t most_missed = 0;
     for (std::size_t i = 0; i < 3; ++i) {
-        const PanelFrame& panel = frame.panels[i];
+        const show::PanelState& panel = frame.panels[i];
         INFO("dt = " << plan.time_steps[i]);
         CHECK(panel.time_driven);
         CHECK(panel.compared_dt == plan.time_steps[i]);

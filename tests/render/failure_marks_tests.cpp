@@ -54,7 +54,7 @@ Lesson render_marks(const Snapshot& s, const std::vector<FailureMark>& marks, Ma
     in.height = config.height;
     in.boxes = {s.box};
     in.mark_lines = {true};
-    out.layout = compute_layout(in);
+    out.layout = lesson_layout(in);
     return out;
 }
 

@@ -79,9 +79,9 @@ TEST_CASE("golden: two panels with overlays, speed colours and failure markers")
     FrameContent frame;
     frame.panels = {{&left, "Time-driven, dt = 0.05", {"steps 40", "missed 3"}},
                     {&right, "Event-driven", {"events 812"}}};
-    // Each engine's accent, as the app sets it: the plots draw each series in its panel's.
-    frame.panels[0].accent = panel_accent(true);
-    frame.panels[1].accent = panel_accent(false);
+    // Each panel's engine, as the program sets it: the plots draw each series in its accent.
+    frame.panels[0].time_driven = true;
+    frame.panels[1].time_driven = false;
     frame.time_text = "t = 2.00";
     frame.energy_drift = {{{0.0, 0.0}, {1.0, 0.01}, {2.0, 0.03}},
                           {{0.0, 0.0}, {1.0, 0.0}, {2.0, 0.0}}};

@@ -25,7 +25,8 @@ namespace fs = std::filesystem;
 view::HeapPanelView binary_panel(const std::vector<std::string>& keys, std::size_t capacity) {
     view::HeapPanelView p;
     p.title = "binary heap (max)";
-    p.counters = {"compares 3", "exchanges 2"};
+    p.counters = {{"compares", "3"}, {"exchanges", "2"}};
+    p.sorted_label = "sorted";
     p.caption = "insert S at a[6]; S > P: exchange";
     p.capacity = capacity;
     for (const std::string& k : keys) p.slots.push_back({k, view::SlotMark::plain});
@@ -200,7 +201,7 @@ TEST_CASE("golden: arrays and a heap side by side, the scan and a shift, 480x270
     HeapRenderer renderer(config_of(480, 270), test::test_backend());
     view::HeapPanelView unordered;
     unordered.title = "unordered array (max)";
-    unordered.counters = {"compares 2", "exchanges 0"};
+    unordered.counters = {{"compares", "2"}, {"exchanges", "0"}};
     unordered.caption = "scan for the max: X > P, new max X";
     unordered.tree = false;
     unordered.capacity = 7;
@@ -208,7 +209,7 @@ TEST_CASE("golden: arrays and a heap side by side, the scan and a shift, 480x270
         {"P", view::SlotMark::plain}, {"E", view::SlotMark::best}, {"X", view::SlotMark::compared}};
     view::HeapPanelView ordered = unordered;
     ordered.title = "ordered array (max)";
-    ordered.counters = {"compares 2", "shifts 1"};
+    ordered.counters = {{"compares", "2"}, {"shifts", "1"}};
     ordered.caption = "insert M at a[3]; shift P right to a[3]";
     ordered.slots = {
         {"E", view::SlotMark::plain}, {"P", view::SlotMark::moving}, {"M", view::SlotMark::moving}};

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <random>
 #include <string>
 
@@ -25,7 +26,6 @@ LayoutInput lesson_input(Size size, int panels = 2) {
     LayoutInput in;
     in.width = size.width;
     in.height = size.height;
-    in.level = OverlayLevel::lesson;
     for (int i = 0; i < panels; ++i) in.boxes.push_back({1.0, 1.0, Boundary::walls});
     return in;
 }
@@ -67,7 +67,7 @@ void check_nothing_overlaps_text(const FrameLayout& layout, Size size) {
 TEST_CASE("lesson layout: two square boxes cover >= 55 % of a 16:9 frame, capitals >= 2.8 %") {
     for (const Size size : {Size{854, 480}, Size{1280, 720}, Size{1920, 1080}, Size{3840, 2160}}) {
         INFO(size.width << "x" << size.height);
-        const FrameLayout layout = compute_layout(lesson_input(size));
+        const FrameLayout layout = lesson_layout(lesson_input(size));
         REQUIRE(layout.panels.size() == 2);
         CHECK_FALSE(layout.compact);
         const float frame = static_cast<float>(size.width) * static_cast<float>(size.height);
@@ -104,7 +104,7 @@ TEST_CASE(
                 in.mark_lines.assign(static_cast<std::size_t>(panels), true);
                 in.clock_unit = true;
                 in.small_plot = true;
-                const FrameLayout layout = compute_layout(in);
+                const FrameLayout layout = lesson_layout(in);
                 REQUIRE(layout.panels.size() == static_cast<std::size_t>(panels));
                 CHECK_FALSE(layout.compact);
                 for (std::size_t i = 0; i < layout.panels.size(); ++i) {
@@ -135,7 +135,7 @@ TEST_CASE(
 }
 
 TEST_CASE("lesson layout: 20 px capitals at 720p") {
-    const FrameLayout layout = compute_layout(lesson_input({1280, 720}));
+    const FrameLayout layout = lesson_layout(lesson_input({1280, 720}));
     CHECK(layout.slot(TextRole::title, 0)->cap_height() >= 20.0F);
     CHECK(layout.slot(TextRole::title, 0)->cap_height() < 22.0F);  // not needlessly bigger
 }
@@ -149,7 +149,7 @@ TEST_CASE("lesson layout: notes, colour legend, a large plot and one panel never
             in.color_legend = true;
             in.large_plot = panels == 2;
             INFO(size.width << "x" << size.height << ", " << panels << " panels");
-            const FrameLayout layout = compute_layout(in);
+            const FrameLayout layout = lesson_layout(in);
             CHECK(layout.slots(TextRole::note).size() == static_cast<std::size_t>(panels));
             check_nothing_overlaps_text(layout, size);
         }
@@ -157,7 +157,7 @@ TEST_CASE("lesson layout: notes, colour legend, a large plot and one panel never
     // Boxes of other shapes keep their aspect ratio.
     LayoutInput wide = lesson_input({1280, 720});
     wide.boxes = {{2.0, 1.0, Boundary::walls}, {2.0, 1.0, Boundary::walls}};
-    const FrameLayout layout = compute_layout(wide);
+    const FrameLayout layout = lesson_layout(wide);
     CHECK(layout.panels[0].box.width() == doctest::Approx(2.0 * layout.panels[0].box.height()));
     check_nothing_overlaps_text(layout, {1280, 720});
 }
@@ -168,7 +168,7 @@ TEST_CASE("lesson layout: a small speed plot fits beside two boxes that keep >= 
             INFO(size.width << "x" << size.height);
             LayoutInput in = lesson_input(size);
             in.small_plot = true;
-            const FrameLayout layout = compute_layout(in);
+            const FrameLayout layout = lesson_layout(in);
             const float frame = static_cast<float>(size.width) * static_cast<float>(size.height);
             CHECK((area(layout.panels[0].box) + area(layout.panels[1].box)) / frame >= 0.55F);
             // Readable: at least the axis labels' line and three more lines of data, and the
@@ -190,7 +190,7 @@ TEST_CASE("lesson layout: a small speed plot fits beside two boxes that keep >= 
         LayoutInput in = lesson_input(size);
         in.small_plot = true;
         in.color_legend = true;
-        const FrameLayout layout = compute_layout(in);
+        const FrameLayout layout = lesson_layout(in);
         CHECK(layout.column.legend_bar.height() > 0.0F);
         check_nothing_overlaps_text(layout, size);
     }
@@ -198,7 +198,7 @@ TEST_CASE("lesson layout: a small speed plot fits beside two boxes that keep >= 
     LayoutInput one = lesson_input({1280, 720}, 1);
     one.small_plot = true;
     one.note_line = true;
-    const FrameLayout layout = compute_layout(one);
+    const FrameLayout layout = lesson_layout(one);
     CHECK(layout.column.plot.height() > 0.0F);
     check_nothing_overlaps_text(layout, {1280, 720});
 }
@@ -212,7 +212,7 @@ TEST_CASE("lesson layout: the queue strip fits under the panels, clear of every 
             in.color_legend = true;
             in.queue_panel = panels - 1;  // the event-driven panel is the last
             INFO(size.width << "x" << size.height << ", " << panels << " panels");
-            const FrameLayout layout = compute_layout(in);
+            const FrameLayout layout = lesson_layout(in);
             REQUIRE(layout.queue_panel == panels - 1);
             const RectF strip = layout.queue_strip;
             CHECK(strip.height() >= std::round(queue_strip_share * size.height) - 0.5F);
@@ -222,7 +222,7 @@ TEST_CASE("lesson layout: the queue strip fits under the panels, clear of every 
         }
     }
     // Without a queue panel there is no strip, and the boxes are as before.
-    const FrameLayout plain = compute_layout(lesson_input({1280, 720}));
+    const FrameLayout plain = lesson_layout(lesson_input({1280, 720}));
     CHECK(plain.queue_panel == -1);
     CHECK(plain.slots(TextRole::queue).empty());
 }
@@ -236,7 +236,7 @@ TEST_CASE("lesson layout: --code's column sits right of boxes and column, over t
             in.code_rows = 7;
             in.code_width = 0.38F * static_cast<float>(size.width);
             INFO(size.width << "x" << size.height << ", " << panels << " panels");
-            const FrameLayout layout = compute_layout(in);
+            const FrameLayout layout = lesson_layout(in);
             check_nothing_overlaps_text(layout, size);
             const RectF code = layout.code;
             REQUIRE(code.width() >= in.code_width - 0.5F);
@@ -253,13 +253,13 @@ TEST_CASE("lesson layout: --code's column sits right of boxes and column, over t
             CHECK(layout.queue_strip.x1 > code.x0);
         }
     }
-    CHECK(compute_layout(lesson_input({1280, 720})).slots(TextRole::code).empty());
+    CHECK(lesson_layout(lesson_input({1280, 720})).slots(TextRole::code).empty());
 }
 
 TEST_CASE("compact layout below 480 px: boxes fill the frame, one line per panel, 9 px capitals") {
     for (const Size size : {Size{320, 180}, Size{426, 240}, Size{160, 90}}) {
         INFO(size.width << "x" << size.height);
-        const FrameLayout layout = compute_layout(lesson_input(size));
+        const FrameLayout layout = lesson_layout(lesson_input(size));
         CHECK(layout.compact);
         CHECK(layout.text.size() == 2);  // one line per panel
         for (const TextSlot& slot : layout.text) CHECK(slot.cap_height() >= 9.0F);
@@ -272,9 +272,8 @@ TEST_CASE("compact layout below 480 px: boxes fill the frame, one line per panel
 }
 
 TEST_CASE("level none: the boxes fill the frame and there is no text") {
-    LayoutInput in = lesson_input({1280, 720});
-    in.level = OverlayLevel::none;
-    const FrameLayout layout = compute_layout(in);
+    const LayoutInput in = lesson_input({1280, 720});
+    const FrameLayout layout = classic_layout(in.width, in.height, false, in.boxes, 0.0F, 0);
     CHECK(layout.text.empty());
     const PanelLayout& panel = layout.panels[0];
     CHECK(std::max(panel.box.width() / panel.area.width(),
@@ -282,8 +281,8 @@ TEST_CASE("level none: the boxes fill the frame and there is no text") {
 }
 
 TEST_CASE("layout JSON names every text line with its pixel height") {
-    const FrameLayout layout = compute_layout(lesson_input({1280, 720}));
-    const std::string json = layout_json(layout, 1280, 720);
+    const FrameLayout layout = lesson_layout(lesson_input({1280, 720}));
+    const std::string json = layout_json(layout, OverlayLevel::lesson, 1280, 720);
     CHECK(json.find("\"level\": \"lesson\"") != std::string::npos);
     CHECK(json.find("\"role\": \"caption\"") != std::string::npos);
     CHECK(json.find("\"pixel_height\": 33") != std::string::npos);
@@ -297,7 +296,7 @@ TEST_CASE("lesson layout: the how lines, the work ratio and the clock's unit fit
         in.how_line = true;
         in.cost_ratio = true;
         in.clock_unit = true;
-        const FrameLayout layout = compute_layout(in);
+        const FrameLayout layout = lesson_layout(in);
         const float frame = static_cast<float>(size.width) * static_cast<float>(size.height);
         // The how line costs the boxes a line of height where they are height-bound: 54.8 % of
         // the frame at 854x480 (55.6 % without it).
@@ -316,19 +315,47 @@ TEST_CASE("lesson layout: the how lines, the work ratio and the clock's unit fit
 }
 
 TEST_CASE("layout JSON carries every text line's strings beside its rectangle") {
-    const FrameLayout layout = compute_layout(lesson_input({1280, 720}));
+    const FrameLayout layout = lesson_layout(lesson_input({1280, 720}));
     SlotTexts drawn;
     drawn.in_slots.assign(layout.text.size(), {});
     drawn.in_slots[0] = {"Time-driven: \"dt\" \\ 1/30", "second"};
     drawn.elsewhere.push_back({layout.text[0], "a label\nin a box"});
-    const std::string json = layout_json(layout, 1280, 720, &drawn);
-    CHECK(json.find("\"text\": [\"Time-driven: \\\"dt\\\" \\\\ 1/30\", \"second\"]") !=
-          std::string::npos);
-    CHECK(json.find("\"text\": []") != std::string::npos);  // a slot with nothing drawn
-    CHECK(json.find("\"other_text\": [") != std::string::npos);
-    CHECK(json.find("\"text\": \"a label\\u000ain a box\"") != std::string::npos);
+    const nlohmann::json json =
+        nlohmann::json::parse(layout_json(layout, OverlayLevel::lesson, 1280, 720, &drawn));
+    REQUIRE(json.at("text").size() == layout.text.size());
+    CHECK(json.at("text")[0].at("text") ==
+          std::vector<std::string>{"Time-driven: \"dt\" \\ 1/30", "second"});
+    CHECK(json.at("text")[1].at("text").empty());  // a slot with nothing drawn
+    REQUIRE(json.at("other_text").size() == 1);
+    CHECK(json.at("other_text")[0].at("text") == "a label\nin a box");
     // Without strings: the rectangles alone, as before.
-    CHECK(layout_json(layout, 1280, 720).find("\"text\": [\"") == std::string::npos);
+    const nlohmann::json bare =
+        nlohmann::json::parse(layout_json(layout, OverlayLevel::lesson, 1280, 720));
+    CHECK_FALSE(bare.at("text")[0].contains("text"));
+    CHECK_FALSE(bare.contains("other_text"));
+}
+
+TEST_CASE("layout JSON gives back a title of quotes, backslashes, tabs and control characters") {
+    const FrameLayout layout = lesson_layout(lesson_input({1280, 720}));
+    // Every control character, the two JSON must escape, a tab, DEL and some UTF-8.
+    std::string title = "\"quoted\" C:\\path\\ \ttab\t \x7f caf\xc3\xa9 ";
+    for (char c = 1; c < 0x20; ++c) title += c;
+    const std::string variant = "\\\"\\u0041\"\\";  // escapes that must stay text
+    SlotTexts drawn;
+    drawn.in_slots.assign(layout.text.size(), {});
+    drawn.in_slots[0] = {title, variant};
+    drawn.elsewhere.push_back({layout.text[0], title});
+    const std::string text = layout_json(layout, OverlayLevel::lesson, 1280, 720, &drawn);
+    const nlohmann::json json = nlohmann::json::parse(text);
+    CHECK(json.at("text")[0].at("text") == std::vector<std::string>{title, variant});
+    CHECK(json.at("other_text")[0].at("text") == title);
+    // Raw control characters never reach the file (JSON forbids them in strings).
+    for (const char c : text) CHECK((static_cast<unsigned char>(c) >= 0x20 || c == '\n'));
+    // The numbers keep the values the layout has: whole pixels as integers.
+    CHECK(json.at("width") == 1280);
+    CHECK(json.at("level") == "lesson");
+    CHECK(json.at("panels")[0].at("box")[0].get<double>() ==
+          doctest::Approx(layout.panels[0].box.x0));
 }
 
 TEST_CASE("figures have thousands separators") {

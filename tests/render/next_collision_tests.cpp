@@ -55,7 +55,7 @@ TEST_CASE("the next collision's label covers neither the pair nor the discs abov
     in.width = config.width;
     in.height = config.height;
     in.boxes = {s.box};
-    const PanelLayout panel = compute_layout(in).panels.at(0);
+    const PanelLayout panel = lesson_layout(in).panels.at(0);
     const Rgb8 label = next_event_color(config.theme);
     const auto label_pixels_around = [&](Vec2 centre, double radius) {
         const PointF c = panel.to_pixels(centre, s.box);

@@ -16,6 +16,7 @@
 #include "collide/show/plot_words.hpp"
 #include "layout.hpp"
 #include "plots.hpp"
+#include "theme.hpp"
 
 namespace collide::render {
 namespace {
@@ -183,7 +184,8 @@ TEST_CASE("the lesson speed plot in a narrow column: labelled curve, nothing dra
         OverlayBatch shapes;
         OverlayBatch text;
         draw_moving_speed_plot(shapes, text, font, area, {&hot, &cool},
-                               {{240, 150, 60}, {90, 175, 245}}, 0.0, 0.35, words, PlotColors{});
+                               {{240, 150, 60}, {90, 175, 245}}, 0.0, 0.35, words,
+                               dark_plot_colors);
         const std::vector<OverlayVertex>& v = shapes.vertices();
         REQUIRE(v.size() % 3 == 0);
         REQUIRE(v.size() > 100);  // bars and curve were drawn

@@ -325,7 +325,7 @@ LessonFrame render_lesson(const Snapshot& snapshot, Theme theme = Theme::dark) {
     in.width = 854;
     in.height = 480;
     in.boxes = {snapshot.box};
-    out.layout = compute_layout(in);
+    out.layout = lesson_layout(in);
     return out;
 }
 
@@ -390,10 +390,10 @@ TEST_CASE(
     config.width = 640;
     config.height = 360;
     const Snapshot s = test::gas_snapshot(40, 0.03, {1.6, 0.9, Boundary::walls}, 5, 1.0);
-    const auto frame_with = [&](Rgb8 accent) {
+    const auto frame_with = [&](bool time_driven) {
         FrameContent frame;
         frame.panels = {{&s, "Event-driven (priority queue)", {"events 42"}}};
-        frame.panels[0].accent = accent;
+        frame.panels[0].time_driven = time_driven;
         frame.time_text = "t = 1.000";
         frame.energy_drift = {{{0.0, 0.0}, {0.5, 2e-3}, {1.0, -1e-3}}};
         test::add_show_words(frame, config.speed_max);
@@ -402,13 +402,13 @@ TEST_CASE(
     const Rgb8 orange = panel_accent(true);
     const Rgb8 blue = panel_accent(false);
     Renderer event_only(config, test::test_backend());
-    const Image event = event_only.render(frame_with(blue));
+    const Image event = event_only.render(frame_with(false));
     test::dump_if_requested(event, "full_event_only_accent");
     CHECK(count_near(event, orange, 12) == 0);
     CHECK(count_near(event, blue, 12) > 20);
     // The same panel as the time-driven engine: its series are orange (the test can fail).
     Renderer time_only(config, test::test_backend());
-    CHECK(count_near(time_only.render(frame_with(orange)), orange, 12) > 20);
+    CHECK(count_near(time_only.render(frame_with(true)), orange, 12) > 20);
 }
 
 }  // namespace

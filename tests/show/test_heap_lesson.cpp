@@ -138,18 +138,21 @@ TEST_CASE("heap lesson: heapsort builds the heap, then sorts down, in words") {
     // The last words give the totals the counters show: one total on screen, not two.
     const view::HeapPanelView end = t.frame_at(t.duration()).panels.front();
     CHECK(end.caption == panel.ops[1].summary);
-    CHECK(contains(end.caption, "heapsort in all: " + end.counters[0].substr(9) + " compares, " +
-                                    end.counters[1].substr(10) + " exchanges"));
+    CHECK(contains(end.caption, "heapsort in all: " + end.counters[0].value + " compares, " +
+                                    end.counters[1].value + " exchanges"));
+    CHECK(end.sorted_label == "sorted");
     CHECK(end.returned.empty());  // nothing is removed: the keys stay, sorted
 }
 
 TEST_CASE("heap lesson: the keys removed so far, as the trace's returned column") {
     const HeapLesson t = lesson("P Q E * X A M *", {{pq::QueueFamily::binary, 2}});
-    CHECK(t.frame_at(0.0).panels[0].returned == "returned: -");
-    CHECK(t.frame_at(t.duration()).panels[0].returned == "returned: Q X");
+    using Keys = std::vector<std::string>;
+    CHECK(t.frame_at(0.0).panels[0].returned.label == "returned:");
+    CHECK(t.frame_at(0.0).panels[0].returned.keys == Keys{"-"});
+    CHECK(t.frame_at(t.duration()).panels[0].returned.keys == Keys{"Q", "X"});
     // Mid-way through the first removal the key is still leaving, not yet returned.
-    CHECK(t.frame_at(time_of(t, 3, 0, 0.5)).panels[0].returned == "returned: -");
-    CHECK(t.frame_at(time_of(t, 4, 0, 0.5)).panels[0].returned == "returned: Q");
+    CHECK(t.frame_at(time_of(t, 3, 0, 0.5)).panels[0].returned.keys == Keys{"-"});
+    CHECK(t.frame_at(time_of(t, 4, 0, 0.5)).panels[0].returned.keys == Keys{"Q"});
     CHECK(lesson("P Q E", {{pq::QueueFamily::binary, 2}}).frame_at(0.0).panels[0].returned.empty());
 }
 
@@ -223,7 +226,7 @@ TEST_CASE("heap lesson: frames hold tokens, highlights, an exchange under way, c
     CHECK(c.slots[0].mark == view::SlotMark::compared);
     CHECK(c.slots[1].mark == view::SlotMark::compared);
     CHECK(c.caption == "insert Q at a[2]; Q > P: exchange");
-    CHECK(c.counters == std::vector<std::string>{"compares 1", "exchanges 0"});
+    CHECK(c.counters == std::vector<view::HeapCounter>{{"compares", "1"}, {"exchanges", "0"}});
 
     const view::HeapPanelView x = t.frame_at(time_of(t, 1, 2, 0.4)).panels[0];
     REQUIRE(x.swap);
@@ -276,5 +279,5 @@ TEST_CASE("heap lesson: heapsort sets the sorted part apart, arrays are not tree
     const view::HeapPanelView a = arrays.frame_at(arrays.duration()).panels[0];
     CHECK(!a.tree);
     CHECK(a.heap_size == SIZE_MAX);
-    CHECK(a.counters[1] == "shifts 1");
+    CHECK(a.counters[1] == view::HeapCounter{"shifts", "1"});
 }

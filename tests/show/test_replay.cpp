@@ -169,13 +169,13 @@ TEST_CASE("replay frames: the ghosts at steps k and k + 1 are the engine's state
         return false;
     };
     // Zooming in: step k is shown, k + 1 not yet.
-    const ReplayFrame start = replay_frame(failure, scene.box, 0.1);
+    const ReplayViews start = replay_views(failure, scene.box, 0.1);
     CHECK(has_ghost(start.time_driven, at_k, false));
     CHECK_FALSE(has_ghost(start.time_driven, at_k1, false));
     CHECK(start.zoom.magnification > 1.0);
     // Held: both checks, the jump between them and where they touched.
-    const ReplayFrame held =
-        replay_frame(failure, scene.box, 0.5 * (replay_slow_end + replay_hold_end));
+    const ReplayViews held =
+        replay_views(failure, scene.box, 0.5 * (replay_slow_end + replay_hold_end));
     CHECK(has_ghost(held.time_driven, at_k, false));
     CHECK(has_ghost(held.time_driven, at_k1, false));
     REQUIRE(!held.time_driven.lines.empty());
@@ -192,13 +192,13 @@ TEST_CASE("replay frames: the ghosts at steps k and k + 1 are the engine's state
     // Halfway through the slow move the disc overlaps the other one: in the failure colour.
     const double middle =
         replay_zoom_in + failure.step.contact / dt * (replay_slow_end - replay_zoom_in) + 0.05;
-    const ReplayFrame moving = replay_frame(failure, scene.box, middle);
+    const ReplayViews moving = replay_views(failure, scene.box, middle);
     bool overlapping = false;
     for (const GhostDisc& g : moving.time_driven.ghosts)
         overlapping = overlapping || (g.filled && g.failure);
     CHECK(overlapping);
     // The end: back to the whole box.
-    const ReplayFrame end = replay_frame(failure, scene.box, replay_seconds);
+    const ReplayViews end = replay_views(failure, scene.box, replay_seconds);
     CHECK(end.zoom.magnification == doctest::Approx(1.0));
 }
 
@@ -212,7 +212,7 @@ TEST_CASE("replay words: the caption, the checks, and the event-driven predictio
     hit.a = {0.49, 0.5};
     hit.b = {0.51, 0.5};
     failure.predicted = hit;
-    const ReplayFrame held = replay_frame(failure, scene.box, replay_hold_end - 0.1);
+    const ReplayViews held = replay_views(failure, scene.box, replay_hold_end - 0.1);
     std::vector<std::string> time_words;
     for (const BoxLabel& l : held.time_driven.labels) time_words.push_back(l.text);
     CHECK(time_words.at(0) == "check t = 0.1");
@@ -225,7 +225,7 @@ TEST_CASE("replay words: the caption, the checks, and the event-driven predictio
     // Without a predicted hit (the event-driven run had parted), the panel says why it is empty.
     ReplayFailure parted = failure;
     parted.predicted.reset();
-    const ReplayFrame apart = replay_frame(parted, scene.box, replay_hold_end - 0.1);
+    const ReplayViews apart = replay_views(parted, scene.box, replay_hold_end - 0.1);
     REQUIRE(apart.event_driven.labels.size() == 2);
     CHECK(apart.event_driven.labels[0].text == parted_words[0]);
     CHECK(apart.event_driven.labels[1].text == parted_words[1]);

@@ -107,7 +107,7 @@ class HeapLesson {
                                                  const HeapPanelMoment& moment) const;
     /// The keys panel `panel` has returned by `moment` ("returned: X Q"; "returned: -" before
     /// the first), as the trace's "returned" column; "" for a lesson without removals.
-    [[nodiscard]] std::string returned(std::size_t panel, const HeapMoment& moment) const;
+    [[nodiscard]] view::ReturnedKeys returned(std::size_t panel, const HeapMoment& moment) const;
 
     pq::LessonRecord record_;
     std::vector<PanelText> text_;

@@ -82,12 +82,12 @@ struct ReplayFailure {
 
 /// What the two panels draw `seconds` into the replay: the zoom (the same for both) and the
 /// marks over the time-driven and the event-driven box.
-struct ReplayFrame {
+struct ReplayViews {
     BoxZoom zoom;
     ReplayView time_driven;
     ReplayView event_driven;
 };
-[[nodiscard]] ReplayFrame replay_frame(const ReplayFailure& failure, const Box& box,
+[[nodiscard]] ReplayViews replay_views(const ReplayFailure& failure, const Box& box,
                                        double seconds);
 
 /// The replay (if any) whose segment starts after simulation frame `sim_frame`.

@@ -172,7 +172,7 @@ struct NextCollisionView {
     [[nodiscard]] bool empty() const noexcept { return lines.empty(); }
 };
 
-/// What a replay draws over one panel's box (lesson level): filled by show::replay_frame.
+/// What a replay draws over one panel's box (lesson level): filled by show::replay_views.
 struct ReplayView {
     std::string heading;  ///< at the top of the box ("Replay: one step, 9x enlarged")
     std::vector<GhostDisc> ghosts;
@@ -215,12 +215,14 @@ struct PanelContent {
     /// and this frame is `step_phase` (0 = a new step) of them. Period 1 draws none.
     int step_period = 1;
     int step_phase = 0;
-    std::string cost_label;     ///< the cost graphic's label ("pair tests")
-    double cost = 0.0;          ///< work done so far, on the graphic's shared scale
-    std::string cost_text;      ///< the cost under its bar: "12,345,678"
-    std::string cost_words;     ///< instead, where its digits do not fit: "12.3 million"
-    Rgb8 accent{240, 150, 60};  ///< the engine's colour (title swatch, bar, histogram)
-    QueueWords queue_words;     ///< the queue strip's words (snapshot->queue set)
+    std::string cost_label;  ///< the cost graphic's label ("pair tests")
+    double cost = 0.0;       ///< work done so far, on the graphic's shared scale
+    std::string cost_text;   ///< the cost under its bar: "12,345,678"
+    std::string cost_words;  ///< instead, where its digits do not fit: "12.3 million"
+    /// Which engine: the time-driven one, or the event-driven one. The painter draws each in its
+    /// theme's colour (title swatch, bar, histogram, plot series).
+    bool time_driven = true;
+    QueueWords queue_words;  ///< the queue strip's words (snapshot->queue set)
     /// Lesson level: the failure marks in the box (the full level marks from the snapshot).
     std::vector<FailureMark> marks;
     MarkWords mark_words;    ///< the mark legend's words

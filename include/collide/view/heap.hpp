@@ -50,13 +50,29 @@ struct HeapMapRow {
     bool updated = false;  ///< its index changes in the exchange under way
 };
 
+/// A panel's counter, drawn "label value" ("compares 12").
+struct HeapCounter {
+    std::string label;  ///< "compares"
+    std::string value;  ///< "12"
+    friend bool operator==(const HeapCounter&, const HeapCounter&) = default;
+};
+
+/// The keys removed so far, as the trace's "returned" column, drawn "returned: X Q P" (oldest
+/// first; where the line is too narrow the oldest give way to an ellipsis).
+struct ReturnedKeys {
+    std::string label;              ///< "returned:"; empty: the line is not drawn
+    std::vector<std::string> keys;  ///< oldest first; {"-"} before the first removal
+    [[nodiscard]] bool empty() const noexcept { return label.empty(); }
+};
+
 /// One queue.
 struct HeapPanelView {
     std::string title;                  ///< "binary heap (max)"
-    std::vector<std::string> counters;  ///< e.g. {"compares 12", "exchanges 5"}
-    /// The keys removed so far, as the trace's "returned" column ("returned: X Q P"); empty:
-    /// the line is not drawn (a lesson without removals).
-    std::string returned;
+    std::vector<HeapCounter> counters;  ///< e.g. {{"compares", "12"}, {"exchanges", "5"}}
+    /// The keys removed so far (a lesson without removals: empty, no line).
+    ReturnedKeys returned;
+    /// Heapsort: the label under the array's sorted part ("sorted").
+    std::string sorted_label;
     std::string caption;  ///< what happens, wrapped to the panel's width
     bool tree = true;     ///< a heap: tree above the array; false: array only
     unsigned arity = 2;   ///< children per node (tree only), >= 2

@@ -1,0 +1,150 @@
+// The collision lesson's choices made once for the whole video: what each overlay level shows,
+// the cards and captions, the histogram, the trails and the replays.
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "collide/error.hpp"
+#include "collide/show/collision_program.hpp"
+#include "collide/show/collision_summary.hpp"
+
+namespace collide::show {
+
+namespace {
+
+/// Captions beyond the video: an error when the video is as long as the scene says (the scene
+/// is wrong), a notice when --duration shortened it (a preview).
+std::vector<CaptionCue> captions_within(const Scene& scene, double duration, bool cli_duration,
+                                        std::vector<std::string>& notices) {
+    std::vector<CaptionCue> kept;
+    for (CaptionCue cue : scene.render.captions) {
+        if (cue.at < duration && cue.at + cue.hold > duration) {
+            if (!cli_duration) {
+                throw_scene_error(cue.file, cue.line, "render.captions.hold",
+                                  fmt::format("beyond the video: held from {:g} s for {:g} s, "
+                                              "the video lasts {:g} s (set [render] duration)",
+                                              cue.at, cue.hold, duration));
+            }
+            notices.push_back(
+                fmt::format("the hold at {:g} s is cut short at the end of this "
+                            "{:g} s video",
+                            cue.at, duration));
+            cue.hold = duration - cue.at;
+        }
+        if (cue.at < duration) {
+            kept.push_back(cue);
+            continue;
+        }
+        if (!cli_duration) {
+            throw_scene_error(cue.file, cue.line, "render.captions.at",
+                              fmt::format("beyond the video: {:g} s, the video lasts {:g} s "
+                                          "(set [render] duration)",
+                                          cue.at, duration));
+        }
+        notices.push_back(
+            fmt::format("the caption at {:g} s is after the end of this {:g} s "
+                        "video: not shown",
+                        cue.at, duration));
+    }
+    return kept;
+}
+
+}  // namespace
+
+LevelShows level_shows(OverlayLevel level) noexcept {
+    LevelShows shows;
+    switch (level) {
+        case OverlayLevel::none:
+            break;
+        case OverlayLevel::full:
+            shows.text = true;
+            break;
+        case OverlayLevel::lesson:
+            shows.text = true;
+            shows.cards = true;
+            shows.caption_holds = true;
+            shows.queue = true;
+            shows.replays = true;
+            shows.next_collision = true;
+            shows.time_unit = true;
+            break;
+    }
+    return shows;
+}
+
+LessonPlan lesson_plan(const Scene& scene, const LessonRequest& request,
+                       std::vector<std::string>& notices) {
+    const LevelShows shows = level_shows(request.level);
+    LessonPlan lesson;
+    lesson.title = scene.title;
+    lesson.description = scene.description;
+    // The card as the video has it (a still drops it once the video's timeline is known): only
+    // at the level that draws it, where the simulation waits for it.
+    if (request.intro && !scene.description.empty() && shows.cards)
+        lesson.intro_seconds = std::min(intro_seconds, 0.25 * request.duration);
+    // The summary card at the end, where the lesson's figures are shown.
+    if (request.epilogue && shows.cards)
+        lesson.epilogue_seconds = std::min(epilogue_seconds, 0.2 * request.duration);
+    lesson.caption = scene.render.caption.value_or("");
+    lesson.captions = captions_within(scene, request.duration, request.duration_from_cli, notices);
+    if (request.step_list) {
+        // A --dt list: the scene's captions speak of two panels ("Left: ..."); the video's one
+        // caption says what the panels side by side show.
+        lesson.caption = step_list_caption;
+        lesson.captions.clear();
+    }
+    // A hold freezes the picture for its caption to be read: only where captions are shown.
+    if (!shows.caption_holds) {
+        for (CaptionCue& cue : lesson.captions) cue.hold = 0.0;
+    }
+    lesson.histogram = histogram_size(scene);
+    // A --dt list: each panel's note and step indicator are its own (CollisionSimulation).
+    if (request.step_list) return lesson;
+    lesson.frames_per_step = whole_frames_per_step(request.dt, request.frame_interval);
+    lesson.step_note = step_note(request.dt, request.frame_interval);
+    return lesson;
+}
+
+std::size_t moving_disc_count(const Scene& scene) {
+    if (scene.discs.empty()) return 0;
+    double lightest = std::numeric_limits<double>::infinity();
+    for (const Disc& d : scene.discs) lightest = std::min(lightest, d.mass);
+    const double heavy = 1000.0 * lightest;  // the painter's immovable mass ratio
+    return static_cast<std::size_t>(
+        std::count_if(scene.discs.begin(), scene.discs.end(),
+                      [&](const Disc& d) { return std::isfinite(d.mass) && d.mass < heavy; }));
+}
+
+PlotSize histogram_size(const Scene& scene) {
+    // A distribution needs discs: below this many moving ones a histogram is noise.
+    constexpr std::size_t enough_for_a_distribution = 200;
+    // "auto": only where it teaches, i.e. where there are enough moving discs; a scene may ask
+    // for one anyway ("small"), or make it the subject ("large", e.g. maxwell-boltzmann).
+    if (scene.render.histogram) return *scene.render.histogram;
+    if (moving_disc_count(scene) >= enough_for_a_distribution) return PlotSize::small;
+    return PlotSize::none;
+}
+
+bool few_tagged_discs(const Scene& scene) {
+    constexpr std::size_t few_tagged = 8;
+    const auto tagged = static_cast<std::size_t>(std::count_if(
+        scene.discs.begin(), scene.discs.end(), [](const Disc& d) { return !d.tag.empty(); }));
+    return tagged > 0 && tagged <= few_tagged;
+}
+
+int trail_length(const Scene& scene, std::int64_t frames) {
+    constexpr std::int64_t default_length = 48;
+    constexpr std::int64_t longest = 1024;
+    if (!few_tagged_discs(scene)) return static_cast<int>(default_length);
+    return static_cast<int>(std::clamp(frames, default_length, longest));
+}
+
+ReplayChoice shown_replays(ReplayChoice asked, bool time_panels, OverlayLevel level) {
+    // The replay's words and marks are the lesson's: a level without them replays nothing.
+    if (!time_panels || !level_shows(level).replays) return ReplayChoice::none;
+    return asked;
+}
+
+}  // namespace collide::show
