@@ -16,6 +16,7 @@
 #include "cli_numbers.hpp"
 #include "collide/error.hpp"
 #include "collide/io/file.hpp"
+#include "collide/printable.hpp"
 #include "collide/scene/load.hpp"
 #include "collide/show/sphere_camera.hpp"
 #include "collide/sim/queue_view.hpp"
@@ -419,8 +420,8 @@ void print_summary(const RenderPlan& plan, const PipelineResult& result, double 
     }
     if (plan.kind == OutputKind::still) {
         std::fprintf(out, "%s: %dx%d PNG at t = %.6g (%s), %s, in %.1f s; engines: %s\n",
-                     plan.output.string().c_str(), result.output_width, result.output_height,
-                     result.sim_time,
+                     printable_text(plan.output.string()).c_str(), result.output_width,
+                     result.output_height, result.sim_time,
                      fmt::format("frame {} of a {} fps video", result.frames - 1, plan.fps).c_str(),
                      human_size(bytes).c_str(), wall_seconds, engine_costs(plan, result).c_str());
         return;
@@ -430,9 +431,10 @@ void print_summary(const RenderPlan& plan, const PipelineResult& result, double 
         out,
         "%s: %.2f s of video, %lld frames, %dx%d @ %g fps, %s, rendered in %.1f s (%.1f fps); "
         "simulation time 0..%.6g; engines: %s\n",
-        plan.output.string().c_str(), seconds, static_cast<long long>(result.frames),
-        result.output_width, result.output_height, result.output_fps, human_size(bytes).c_str(),
-        wall_seconds, wall_seconds > 0.0 ? static_cast<double>(result.frames) / wall_seconds : 0.0,
+        printable_text(plan.output.string()).c_str(), seconds,
+        static_cast<long long>(result.frames), result.output_width, result.output_height,
+        result.output_fps, human_size(bytes).c_str(), wall_seconds,
+        wall_seconds > 0.0 ? static_cast<double>(result.frames) / wall_seconds : 0.0,
         result.sim_time, engine_costs(plan, result).c_str());
 }
 
