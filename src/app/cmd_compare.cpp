@@ -11,6 +11,7 @@
 
 #include "cli_numbers.hpp"
 #include "collide/error.hpp"
+#include "collide/io/file.hpp"
 #include "collide/video/png.hpp"
 #include "commands.hpp"
 #include "image_compare.hpp"
@@ -35,6 +36,10 @@ std::filesystem::path diff_path(const CompareOptions& o) {
 }
 
 void run_compare(const CompareOptions& o) {
+    // The difference image never replaces an image it compares (`--diff EXPECTED`, or EXPECTED
+    // named ACTUAL.diff.png): refused before anything is read (exit 2).
+    io::check_outputs_not_inputs({{"--diff", diff_path(o), false}},
+                                 {{"EXPECTED", o.expected}, {"ACTUAL", o.actual}});
     const Image a = video::read_png(o.expected);  // Error(input) -> exit 2 naming the file
     const Image b = video::read_png(o.actual);
     if (a.width != b.width || a.height != b.height) {

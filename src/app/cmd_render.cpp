@@ -530,6 +530,9 @@ void run(const CliValues& values, bool still) {
     hooks.backend = backend;
     hooks.notice = print_notice;
     hooks.dump_rgba = values.dump_rgba;
+    // A file is whole before the frames: it goes in place with the video, not after it.
+    if (timeline_file && !timeline_file->is_standard_output())
+        hooks.commit_with.push_back(&*timeline_file);
     PipelineResult result;
     try {
         result = run_render(scene, plan, hooks, layout_file ? &*layout_file : nullptr, subtitles,
@@ -540,10 +543,9 @@ void run(const CliValues& values, bool still) {
         throw;
     }
     progress.finish();
-    if (timeline_file) {
-        // On standard output only once the video is whole; a file was filled before the frames.
-        if (timeline_file->is_standard_output())
-            timeline_file->write(json_text(timeline_json(plan)));
+    if (timeline_file && timeline_file->is_standard_output()) {
+        // On standard output only once the video is whole.
+        timeline_file->write(json_text(timeline_json(plan)));
         timeline_file->commit();
     }
     for (const std::string& line : result.notices) print_notice(line);
