@@ -278,11 +278,13 @@ JobResult run_video(const VideoJob& job, const ProgramFactory& make_program,
     slides.complete(job, writer);
     if (hooks.before_commit) hooks.before_commit();
     // Every output is whole in its temporary: now all of them go in place, or none.
+    // The slide folder first: its rename checks the folder once more, the others cannot fail
+    // but for a system that refuses a rename it has just allowed.
     io::CommitGroup outputs;
+    slides.add_to(outputs);
     outputs.add([&] { writer.prepare_commit(); }, [&] { writer.commit(); });
     sidecar.add_to(outputs);
     chapter_file.add_to(outputs);
-    slides.add_to(outputs);
     dump.add_to(outputs);
     for (io::OutputFile* file : hooks.commit_with) outputs.add(file);
     outputs.commit();
