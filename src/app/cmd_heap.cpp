@@ -135,7 +135,7 @@ void run(const HeapCli& v) {
     video::set_libav_verbose(v.video.verbose);
 
     render::HeapViewConfig config;
-    config.font_path = find_font(v.video.font);
+    config.font_path = find_drawing_font(v.video.font);
     config.width = geometry.width;
     config.height = geometry.height;
     config.widest_key = lesson.widest_key();

@@ -1,5 +1,6 @@
 #include "render_plan.hpp"
 
+#include <fcntl.h>
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <string>
 
 #include "collide/error.hpp"
+#include "collide/io/file.hpp"
 #include "collide/named_values.hpp"
 #include "collide/show/collision_summary.hpp"
 #include "collide/show/still_timeline.hpp"
@@ -210,7 +212,7 @@ void check_time_steps_shown(const RenderPlan& plan) {
 render::RenderConfig render_config(const RenderRequest& request, const Scene& scene, int width,
                                    int height) {
     render::RenderConfig config;
-    config.font_path = find_font(request.font);
+    config.font_path = find_drawing_font(request.font);
     config.width = width;
     config.height = height;
     if (request.color) {
@@ -754,6 +756,13 @@ std::size_t moving_disc_count(const Scene& scene) {
     return static_cast<std::size_t>(
         std::count_if(scene.discs.begin(), scene.discs.end(),
                       [&](const Disc& d) { return std::isfinite(d.mass) && d.mass < heavy; }));
+}
+
+std::string find_drawing_font(const std::string& requested) {
+    std::string path = find_font(requested);
+    const io::File font(::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY));
+    if (font) io::note_input_file(font.get(), path);  // one that cannot be opened fails later
+    return path;
 }
 
 }  // namespace collide::app

@@ -283,4 +283,8 @@ using ReplayFinder = std::function<std::vector<show::ReplayFailure>(const Render
 void lay_out_frames(RenderPlan& plan, const RenderRequest& request,
                     const ReplayFinder& find_replays = {});
 
+/// find_font(requested), recorded as one of the run's inputs (io::note_input_file), so that no
+/// output of the run may replace the font it draws with (`--font f.ttf --layout-json f.ttf`).
+[[nodiscard]] std::string find_drawing_font(const std::string& requested);
+
 }  // namespace collide::app

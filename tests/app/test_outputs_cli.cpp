@@ -433,7 +433,8 @@ TEST_CASE("render: destinations that would fail only at the end are refused befo
     CHECK(read_all(dir.path / "file.mp4") == "old");
 }
 
-TEST_CASE("no output of a run may be one of its inputs: the scene or an included file, any name") {
+TEST_CASE(
+    "no output of a run may be one of its inputs: the scene, an include, the font, any name") {
     TempDir dir("outputs_own_inputs");
     const fs::path scene = dir.path / "s.toml";
     const fs::path include = dir.path / "two.txt";
@@ -445,6 +446,15 @@ TEST_CASE("no output of a run may be one of its inputs: the scene or an included
     for (const char* name :
          {"hard.json", "hard.mp4", "hard.png", "hard.srt", "hard.vtt", "hard.toml"})
         fs::create_hard_link(scene, dir.path / name);
+    const fs::path font = dir.path / "f.ttf";
+    const fs::path dejavu = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+    if (fs::exists(dejavu)) {
+        fs::copy_file(dejavu, font);
+    } else {
+        write_file(font, "a font");  // refused before it is parsed, but for `heap` below
+    }
+    const std::string font_bytes = read_all(font);
+    fs::create_hard_link(font, dir.path / "font.mp4");
     fs::create_symlink("two.txt", dir.path / "soft.csv");
     fs::create_hard_link(include, dir.path / "hard.csv");
     const std::vector<std::string> before = entries(dir.path);
@@ -463,6 +473,10 @@ TEST_CASE("no output of a run may be one of its inputs: the scene or an included
         {simulate + q(include), "--events-log"},
         {simulate + q(dir.path / "soft.csv"), "--events-log"},
         {simulate + q(dir.path / "hard.csv"), "--events-log"},
+        {render + " --font " + q(font) + " --layout-json " + q(font), "--layout-json"},
+        {"heap --ops 'P Q E' --size 320x180 --progress none --font " + q(font) + " -o " +
+             q(dir.path / "font.mp4"),
+         "font.mp4"},
         {"check " + q(scene) + " --export " + q(scene), "s.toml"},
         {"check " + q(scene) + " --export " + q(dir.path / "hard.toml"), "hard.toml"},
     };
@@ -474,6 +488,7 @@ TEST_CASE("no output of a run may be one of its inputs: the scene or an included
         CHECK(contains(r.output, "which this run reads"));
         CHECK(read_all(scene) == scene_text);
         CHECK(read_all(include) == include_text);
+        CHECK(read_all(font) == font_bytes);
         CHECK(entries(dir.path) == before);  // nothing new, no temporary left
     }
     // Standard output appended to the scene would write into it (stderr stays on the pipe).
