@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "collide/error.hpp"
+#include "collide/printable.hpp"
 #include "collide/scene/load.hpp"
 #include "collide/scene/save.hpp"
 #include "collide/sim/scene_check.hpp"
@@ -86,14 +87,16 @@ void warn_missing_characters(const Scene& scene, const std::string& scene_arg,
         path = find_font(font_option);
         font.emplace(path);
     } catch (const Error& e) {
-        std::fprintf(stderr, "warning: the scene's characters were not checked: %s\n", e.what());
+        std::fprintf(stderr, "warning: the scene's characters were not checked: %s\n",
+                     printable_text(e.what()).c_str());
         return;
     }
     for (const ScreenText& t : screen_texts(scene, scene_arg)) {
         for (const std::uint32_t cp : text::missing_characters(*font, *t.text)) {
             std::fprintf(stderr, "warning: %s: %s is not in the font %s (%s): it is drawn as '?'\n",
-                         t.where.c_str(), text::describe_character(cp).c_str(),
-                         font->name().c_str(), path.c_str());
+                         printable_text(t.where).c_str(),
+                         printable_text(text::describe_character(cp)).c_str(),
+                         printable_text(font->name()).c_str(), printable_text(path).c_str());
         }
     }
 }
@@ -148,7 +151,8 @@ void add_check_command(CLI::App& root) {
                 std::fputs(json_text(document).c_str(), stdout);
                 return;
             }
-            std::printf("ok: %s: %s\n", options->scene.c_str(), summary.c_str());
+            std::printf("ok: %s: %s\n", printable_text(options->scene).c_str(),
+                        printable_text(summary).c_str());
             return;
         }
         const Scene scene = std::move(std::get<Scene>(any));
@@ -172,8 +176,10 @@ void add_check_command(CLI::App& root) {
             std::fputs(json_text(document).c_str(), stdout);
             return;
         }
-        std::printf("ok: %s: %s\n", options->scene.c_str(), scene_summary(scene).c_str());
-        if (!options->export_path.empty()) std::printf("wrote %s\n", options->export_path.c_str());
+        std::printf("ok: %s: %s\n", printable_text(options->scene).c_str(),
+                    printable_text(scene_summary(scene)).c_str());
+        if (!options->export_path.empty())
+            std::printf("wrote %s\n", printable_text(options->export_path).c_str());
     });
 }
 

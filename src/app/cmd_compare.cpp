@@ -19,6 +19,7 @@
 
 #include "cli_numbers.hpp"
 #include "collide/error.hpp"
+#include "collide/io/file.hpp"
 #include "collide/video/png.hpp"
 #include "commands.hpp"
 #include "image_compare.hpp"
@@ -46,29 +47,6 @@ std::filesystem::path diff_path(const CompareOptions& o) {
     if (o.diff_opt != nullptr && o.diff_opt->count() > 0) return o.diff;
     const std::filesystem::path actual(o.actual);
     return actual.parent_path() / (actual.stem().string() + ".diff.png");
-}
-
-/// Whether `a` and `b` name one file: the same file on disk (through links too), or the same
-/// path once made absolute and normal (for a file not yet there).
-bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
-    std::error_code ec;
-    if (std::filesystem::equivalent(a, b, ec)) return true;
-    const std::filesystem::path wa = std::filesystem::weakly_canonical(a, ec);
-    if (ec) return false;
-    const std::filesystem::path wb = std::filesystem::weakly_canonical(b, ec);
-    return !ec && wa == wb;
-}
-
-/// Refuses a difference image that would replace one of the images compared (`--diff EXPECTED`,
-/// or the default ACTUAL.diff.png when that is EXPECTED's name): never write over an input.
-void require_diff_not_an_input(const CompareOptions& o, const std::filesystem::path& diff) {
-    for (const std::string& input : {o.expected, o.actual}) {
-        if (same_file(diff, input)) {
-            throw_input_error("compare: the difference image '" + diff.string() +
-                              "' would replace the input '" + input +
-                              "'; name another file with --diff");
-        }
-    }
 }
 
 /// What lets the comparison pass: the tolerance, and the allowances given (none: no pixel may
@@ -134,7 +112,10 @@ std::string allowance_text(const CompareOptions& o) {
 
 void run_compare(const CompareOptions& o) {
     const std::filesystem::path diff = diff_path(o);
-    require_diff_not_an_input(o, diff);
+    // The difference image never replaces an image it compares (`--diff EXPECTED`, or EXPECTED
+    // named ACTUAL.diff.png): refused before anything is read (exit 2).
+    io::check_outputs_not_inputs({{"--diff", diff, false}},
+                                 {{"EXPECTED", o.expected}, {"ACTUAL", o.actual}});
     const Image a = video::read_png(o.expected);  // Error(input) -> exit 2 naming the file
     const Image b = video::read_png(o.actual);
     if (a.width != b.width || a.height != b.height) {

@@ -19,6 +19,7 @@
 
 #include "cli_numbers.hpp"
 #include "collide/error.hpp"
+#include "collide/printable.hpp"
 #include "collide/render/heap_view.hpp"
 #include "collide/show/heap_code.hpp"
 #include "collide/show/heap_lesson.hpp"
@@ -134,7 +135,7 @@ void run(const HeapCli& v) {
     video::set_libav_verbose(v.video.verbose);
 
     render::HeapViewConfig config;
-    config.font_path = find_font(v.video.font);
+    config.font_path = find_drawing_font(v.video.font);
     config.width = geometry.width;
     config.height = geometry.height;
     config.widest_key = lesson.widest_key();
@@ -149,12 +150,13 @@ void run(const HeapCli& v) {
         output.still ? Cues{} : show::heap_subtitle_cues(lesson, geometry.fps), chapters);
     if (output.still) {
         std::printf("%s: %dx%d PNG at %.2f s of a %.2f s video of %s\n",
-                    output.path.string().c_str(), geometry.width, geometry.height, still_time,
-                    lesson.duration(), lesson.name().c_str());
+                    printable_text(output.path.string()).c_str(), geometry.width, geometry.height,
+                    still_time, lesson.duration(), lesson.name().c_str());
         return;
     }
     std::printf("%s: %.2f s of video, %lld frames, %dx%d @ %g fps, %s, %zu operations\n",
-                output.path.string().c_str(), static_cast<double>(written.frames) / geometry.fps,
+                printable_text(output.path.string()).c_str(),
+                static_cast<double>(written.frames) / geometry.fps,
                 static_cast<long long>(written.frames), written.width, written.height, written.fps,
                 lesson.name().c_str(), lesson.op_labels().size());
 }

@@ -16,6 +16,7 @@
 #include "cli_numbers.hpp"
 #include "collide/error.hpp"
 #include "collide/io/file.hpp"
+#include "collide/printable.hpp"
 #include "collide/scene/load.hpp"
 #include "collide/show/sphere_camera.hpp"
 #include "collide/sim/queue_view.hpp"
@@ -432,8 +433,8 @@ void print_summary(const RenderPlan& plan, const PipelineResult& result, double 
     }
     if (plan.kind == OutputKind::still) {
         std::fprintf(out, "%s: %dx%d PNG at t = %.6g (%s), %s, in %.1f s; engines: %s\n",
-                     plan.output.string().c_str(), result.output_width, result.output_height,
-                     result.sim_time,
+                     printable_text(plan.output.string()).c_str(), result.output_width,
+                     result.output_height, result.sim_time,
                      fmt::format("frame {} of a {} fps video", result.frames - 1, plan.fps).c_str(),
                      human_size(bytes).c_str(), wall_seconds, engine_costs(plan, result).c_str());
         return;
@@ -443,9 +444,10 @@ void print_summary(const RenderPlan& plan, const PipelineResult& result, double 
         out,
         "%s: %.2f s of video, %lld frames, %dx%d @ %g fps, %s, rendered in %.1f s (%.1f fps); "
         "simulation time 0..%.6g; engines: %s\n",
-        plan.output.string().c_str(), seconds, static_cast<long long>(result.frames),
-        result.output_width, result.output_height, result.output_fps, human_size(bytes).c_str(),
-        wall_seconds, wall_seconds > 0.0 ? static_cast<double>(result.frames) / wall_seconds : 0.0,
+        printable_text(plan.output.string()).c_str(), seconds,
+        static_cast<long long>(result.frames), result.output_width, result.output_height,
+        result.output_fps, human_size(bytes).c_str(), wall_seconds,
+        wall_seconds > 0.0 ? static_cast<double>(result.frames) / wall_seconds : 0.0,
         result.sim_time, engine_costs(plan, result).c_str());
 }
 
@@ -567,6 +569,9 @@ void run(const CliValues& values, bool still) {
     hooks.backend = backend;
     hooks.notice = print_notice;
     hooks.dump_rgba = values.dump_rgba;
+    // A file is whole before the frames: it goes in place with the video, not after it.
+    if (timeline_file && !timeline_file->is_standard_output())
+        hooks.commit_with.push_back(&*timeline_file);
     PipelineResult result;
     try {
         result = run_render(scene, plan, hooks, layout_file ? &*layout_file : nullptr, subtitles,
@@ -577,10 +582,9 @@ void run(const CliValues& values, bool still) {
         throw;
     }
     progress.finish();
-    if (timeline_file) {
-        // On standard output only once the video is whole; a file was filled before the frames.
-        if (timeline_file->is_standard_output())
-            timeline_file->write(json_text(timeline_json(plan)));
+    if (timeline_file && timeline_file->is_standard_output()) {
+        // On standard output only once the video is whole.
+        timeline_file->write(json_text(timeline_json(plan)));
         timeline_file->commit();
     }
     for (const std::string& line : result.notices) print_notice(line);

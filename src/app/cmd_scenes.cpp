@@ -7,6 +7,7 @@
 #include <string>
 
 #include "collide/error.hpp"
+#include "collide/printable.hpp"
 #include "collide/scene/load.hpp"
 #include "commands.hpp"
 #include "json_output.hpp"
@@ -37,8 +38,9 @@ void add_scenes_command(CLI::App& root) {
         std::size_t width = 0;
         for (const BuiltinScene& s : scenes) width = std::max(width, s.name.size());
         for (const BuiltinScene& s : scenes) {
-            std::printf("%-*s  %s\n", static_cast<int>(width), s.name.c_str(),
-                        s.description.c_str());
+            // A description is anyone's text: escape sequences in it are shown, not obeyed.
+            std::printf("%-*s  %s\n", static_cast<int>(width), printable_text(s.name).c_str(),
+                        printable_text(s.description, false).c_str());
         }
     });
 }

@@ -16,6 +16,7 @@
 
 #include "collide/error.hpp"
 #include "collide/io/file.hpp"
+#include "collide/printable.hpp"
 #include "collide/scene/load.hpp"
 #include "collide/sim/engine.hpp"
 #include "collide/sim/fast_engine.hpp"
@@ -136,7 +137,8 @@ void run_to_end(const SimulateOptions& options, InterruptGuard& interrupts, Engi
     if (extra) extra(m, fields);
     const std::string out = options.json ? format_json(fields) : format_text(fields);
     // Data on standard output (--events-log -) is the only thing there: the report moves aside.
-    std::fputs(out.c_str(), log && log->is_standard_output() ? stderr : stdout);
+    std::fputs((options.json ? out : printable_text(out)).c_str(),
+               log && log->is_standard_output() ? stderr : stdout);
 }
 
 /// `simulate` of a 3D scene: any engine on spheres (make_engine); the measurements with three

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -18,6 +19,9 @@ namespace {
 std::atomic<bool> interrupt_requested{false};
 std::atomic<int> interrupt_signal{0};
 std::atomic<int> interrupt_count{0};
+/// io::outputs_committed() when the last guard was created: more since then means this run put
+/// outputs in place.
+std::atomic<std::uint64_t> commits_before_run{0};
 std::atomic<bool> guard_alive{false};
 std::atomic<bool> stop_at_once{false};
 static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free,
@@ -142,6 +146,7 @@ InterruptGuard::InterruptGuard() {
     interrupt_requested.store(false);
     interrupt_signal.store(0);
     interrupt_count.store(0);
+    commits_before_run.store(io::outputs_committed());
     std::size_t tried = 0;
     try {
         for (; tried < handled_signals.size(); ++tried) {
@@ -208,6 +213,10 @@ int interrupt_received() noexcept {
 }
 
 std::string interrupt_message(int signal_number) {
+    // All outputs go in place together (io::CommitGroup): once they have, the stop came too late.
+    if (io::outputs_committed() > commits_before_run.load())
+        return std::string("interrupted by ") + signal_name(signal_number) +
+               " once the outputs were in place";
     return std::string("interrupted by ") + signal_name(signal_number) + "; nothing was written";
 }
 

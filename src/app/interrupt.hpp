@@ -66,7 +66,8 @@ class StopAtOnce {
 /// readable after the guard is gone (main reads it once the command has unwound).
 [[nodiscard]] int interrupt_received() noexcept;
 
-/// "interrupted by SIGINT; nothing was written".
+/// "interrupted by SIGINT; nothing was written", or "interrupted by SIGINT once the outputs were
+/// in place" when the run (since the last InterruptGuard was created) put outputs in place.
 [[nodiscard]] std::string interrupt_message(int signal_number);
 
 /// Makes a file-size limit (`ulimit -f`) an ordinary write error (EFBIG) instead of SIGXFSZ's

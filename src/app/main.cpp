@@ -19,6 +19,7 @@
 #include "cli_help.hpp"
 #include "cli_numbers.hpp"
 #include "collide/error.hpp"
+#include "collide/printable.hpp"
 #include "commands.hpp"
 #include "interrupt.hpp"
 #include "progress.hpp"
@@ -29,8 +30,10 @@ namespace {
 constexpr int exit_usage = 2;
 constexpr int exit_failure = 1;
 
+/// Every error message: what it quotes from a scene or the command line reaches the terminal with
+/// its control characters escaped (collide/printable.hpp), never as an escape sequence.
 void print_error(const std::string& message) {
-    std::fprintf(stderr, "collide: error: %s\n", message.c_str());
+    std::fprintf(stderr, "collide: error: %s\n", collide::printable_text(message).c_str());
 }
 
 /// What to lower when `command` runs out of memory: the sizes that its memory grows with.

@@ -209,6 +209,7 @@ PipelineResult run_render(const Scene& scene, const RenderPlan& plan, const JobH
     job_hooks.before_commit = [&] {
         if (layout_file != nullptr) layout_file->write(result.layout_json);
     };
+    if (layout_file != nullptr) job_hooks.commit_with.push_back(layout_file);
     const JobResult written = run_video_job(
         job,
         [&](render::Backend backend) {
@@ -216,7 +217,6 @@ PipelineResult run_render(const Scene& scene, const RenderPlan& plan, const JobH
                                                         backend, hooks, result);
         },
         job_hooks);
-    if (layout_file != nullptr) layout_file->commit();
     result.frames = written.frames;
     result.notices = written.notices;
     result.output_width = written.output_width;

@@ -14,6 +14,7 @@
 
 #include "collide/error.hpp"
 #include "collide/named_values.hpp"
+#include "collide/printable.hpp"
 #include "json_output.hpp"
 
 namespace collide::app {
@@ -191,7 +192,7 @@ void Progress::finish() {
 }
 
 void print_notice(const std::string& line) {
-    std::fprintf(stderr, "collide: %s\n", line.c_str());
+    std::fprintf(stderr, "collide: %s\n", printable_text(line).c_str());
 }
 
 }  // namespace collide::app

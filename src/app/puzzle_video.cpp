@@ -75,7 +75,7 @@ void render_puzzle_video(const puzzle::Board& start,
     video::set_libav_verbose(v.verbose);
 
     render::PuzzleViewConfig config;
-    config.font_path = find_font(v.font);
+    config.font_path = find_drawing_font(v.font);
     config.width = geometry.width;
     config.height = geometry.height;
     config.theme = render::parse_theme(v.theme, "--theme");

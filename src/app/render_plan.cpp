@@ -1,5 +1,6 @@
 #include "render_plan.hpp"
 
+#include <fcntl.h>
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <string>
 
 #include "collide/error.hpp"
+#include "collide/io/file.hpp"
 #include "collide/named_values.hpp"
 #include "collide/show/collision_program.hpp"
 #include "collide/show/still_timeline.hpp"
@@ -210,7 +212,7 @@ void check_time_steps_shown(const RenderPlan& plan) {
 render::RenderConfig render_config(const RenderRequest& request, const Scene& scene, int width,
                                    int height) {
     render::RenderConfig config;
-    config.font_path = find_font(request.font);
+    config.font_path = find_drawing_font(request.font);
     config.width = width;
     config.height = height;
     if (request.color) {
@@ -683,6 +685,13 @@ show::CollisionSettings collision_settings(const RenderPlan& plan) {
     out.projection = plan.projection;
     out.slab = plan.slab;
     return out;
+}
+
+std::string find_drawing_font(const std::string& requested) {
+    std::string path = find_font(requested);
+    const io::File font(::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY));
+    if (font) io::note_input_file(font.get(), path);  // one that cannot be opened fails later
+    return path;
 }
 
 }  // namespace collide::app

@@ -284,4 +284,8 @@ void lay_out_frames(RenderPlan& plan, const RenderRequest& request,
 /// The collision program's settings (collide/show/collision_program.hpp) of a resolved plan.
 [[nodiscard]] show::CollisionSettings collision_settings(const RenderPlan& plan);
 
+/// find_font(requested), recorded as one of the run's inputs (io::note_input_file), so that no
+/// output of the run may replace the font it draws with (`--font f.ttf --layout-json f.ttf`).
+[[nodiscard]] std::string find_drawing_font(const std::string& requested);
+
 }  // namespace collide::app

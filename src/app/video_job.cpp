@@ -52,9 +52,7 @@ class RawDump {
     void write(const Image& image) {
         if (file_) file_->write(image.rgba.data(), image.rgba.size());
     }
-    void finish() {
-        if (file_) file_->commit();
-    }
+    void add_to(io::CommitGroup& outputs) { outputs.add(file_ ? &*file_ : nullptr); }
 
   private:
     std::optional<io::OutputFile> file_;
@@ -100,9 +98,7 @@ class SubtitleSidecar {
         const std::string text = video::subtitle_file_text(cues, format_);
         file_->write(text.data(), text.size());
     }
-    void commit() {
-        if (file_) file_->commit();
-    }
+    void add_to(io::CommitGroup& outputs) { outputs.add(file_ ? &*file_ : nullptr); }
 
   private:
     video::SubtitleFormat format_ = video::SubtitleFormat::webvtt;
@@ -121,9 +117,7 @@ class ChapterSidecar {
         const std::string text = video::webvtt_chapters_text(chapters);
         file_->write(text.data(), text.size());
     }
-    void commit() {
-        if (file_) file_->commit();
-    }
+    void add_to(io::CommitGroup& outputs) { outputs.add(file_ ? &*file_ : nullptr); }
 
   private:
     std::optional<io::OutputFile> file_;
@@ -143,7 +137,8 @@ std::string still_name(std::size_t chapter) {
 
 /// --slides DIR: a hidden folder beside DIR, made before any frame (so an unusable DIR fails
 /// first), that gets a still of each chapter's last frame as the frames pass, then the page,
-/// the subtitles, the chapters and a copy of the finished video, and goes in DIR's place last.
+/// the subtitles, the chapters and a copy of the finished video (from its temporary), and goes
+/// in DIR's place with the run's other outputs (io::CommitGroup).
 class SlideFolder {
   public:
     explicit SlideFolder(const VideoJob& job) {
@@ -167,9 +162,11 @@ class SlideFolder {
         }
     }
 
-    /// The page, the subtitles and the chapters (before the video is put in place).
-    void complete(const VideoJob& job) {
+    /// The page, the subtitles, the chapters and a copy of the finished video, read from
+    /// `video` (its temporary: nothing is in place yet).
+    void complete(const VideoJob& job, const video::VideoWriter& writer) {
         if (!folder_) return;
+        copy_video(writer.finished_file());
         show::SlidePage page;
         page.title = job.output.chapter_output.title;
         page.video = slide_video;
@@ -185,9 +182,15 @@ class SlideFolder {
         write(slide_page, show::slide_page_html(page));
     }
 
-    /// Copies the finished video in and puts the folder in place.
-    void commit(const std::filesystem::path& video_path) {
-        if (!folder_) return;
+    void add_to(io::CommitGroup& outputs) { outputs.add(folder_ ? &*folder_ : nullptr); }
+
+  private:
+    struct Still {
+        std::int64_t frame;
+        std::size_t chapter;
+    };
+
+    void copy_video(const std::filesystem::path& video_path) {
         std::ifstream in(video_path, std::ios::binary);
         if (!in)
             throw_runtime_error("--slides: cannot read the video '" + video_path.string() + "'");
@@ -200,14 +203,7 @@ class SlideFolder {
         }
         if (in.bad())
             throw_runtime_error("--slides: cannot read the video '" + video_path.string() + "'");
-        folder_->commit();
     }
-
-  private:
-    struct Still {
-        std::int64_t frame;
-        std::size_t chapter;
-    };
 
     template <typename Bytes>
     void write(const std::string& name, const Bytes& bytes) {
@@ -279,13 +275,19 @@ JobResult run_video(const VideoJob& job, const ProgramFactory& make_program,
     writer.complete();
     sidecar.write(job.output.cues);
     chapter_file.write(job.output.chapters);
-    slides.complete(job);
+    slides.complete(job, writer);
     if (hooks.before_commit) hooks.before_commit();
-    writer.commit();
-    sidecar.commit();
-    chapter_file.commit();
-    slides.commit(job.output.path);
-    dump.finish();
+    // Every output is whole in its temporary: now all of them go in place, or none.
+    // The slide folder first: its rename checks the folder once more, the others cannot fail
+    // but for a system that refuses a rename it has just allowed.
+    io::CommitGroup outputs;
+    slides.add_to(outputs);
+    outputs.add([&] { writer.prepare_commit(); }, [&] { writer.commit(); });
+    sidecar.add_to(outputs);
+    chapter_file.add_to(outputs);
+    dump.add_to(outputs);
+    for (io::OutputFile* file : hooks.commit_with) outputs.add(file);
+    outputs.commit();
     result.notices = writer.notices();
     result.output_width = writer.output_width();
     result.output_height = writer.output_height();
@@ -332,7 +334,10 @@ JobResult run_still(const VideoJob& job, const ProgramFactory& make_program,
         }
     }();
     if (hooks.before_commit) hooks.before_commit();
-    png.commit();
+    io::CommitGroup outputs;
+    outputs.add(&png);
+    for (io::OutputFile* file : hooks.commit_with) outputs.add(file);
+    outputs.commit();
     return result;
 }
 

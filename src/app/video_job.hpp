@@ -22,6 +22,7 @@
 
 #include "collide/cue.hpp"
 #include "collide/image.hpp"
+#include "collide/io/file.hpp"
 #include "collide/render/context.hpp"
 #include "collide/render/renderer.hpp"
 #include "collide/video/video_writer.hpp"
@@ -111,8 +112,11 @@ struct JobHooks {
     std::filesystem::path dump_rgba;
     /// The run's other outputs (--layout-json): called once every frame is written and the
     /// output is complete in its temporary, before it is put in place, so that a failure here
-    /// leaves the destination untouched. The caller commits those outputs after the job.
+    /// leaves the destination untouched.
     std::function<void()> before_commit;
+    /// The run's other outputs, whole in their temporaries by the time before_commit returns:
+    /// put in place together with the job's own (io::CommitGroup: all or none).
+    std::vector<io::OutputFile*> commit_with;
 };
 
 /// What was written, for the summary line.

@@ -16,6 +16,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -398,6 +399,14 @@ void set_stop_flag(const std::atomic<bool>* flag) noexcept {
     stop_flag.store(flag);
 }
 
+namespace {
+std::atomic<std::uint64_t> committed_count{0};  ///< outputs_committed()
+}  // namespace
+
+std::uint64_t outputs_committed() noexcept {
+    return committed_count.load();
+}
+
 void File::write_all(const void* data, std::size_t size, const fs::path& shown) const {
     const auto* bytes = static_cast<const char*>(data);
     while (size > 0) {
@@ -425,6 +434,54 @@ void File::close(const fs::path& shown) {
 }
 
 // ------------------------------------------------------------------------------------------------
+// The run's inputs
+
+namespace {
+
+struct NotedInput {
+    dev_t device = 0;
+    ino_t inode = 0;
+    fs::path path;
+    /// The file kept open, so that its inode cannot be freed and given to another file while it
+    /// is recorded (a deleted input's number would otherwise refuse an unrelated output).
+    File pin;
+};
+
+std::mutex inputs_mutex;
+
+std::vector<NotedInput>& noted_inputs() {
+    static std::vector<NotedInput> inputs;  // a process-wide record (see note_input_file)
+    return inputs;
+}
+
+/// Refuses the regular file `status` (the destination of `what`) when the run read it.
+void refuse_input(const struct stat& status, const std::string& what) {
+    if (!S_ISREG(status.st_mode)) return;
+    const std::lock_guard lock(inputs_mutex);
+    for (const NotedInput& input : noted_inputs()) {
+        if (input.device == status.st_dev && input.inode == status.st_ino) {
+            throw_input_error(what + " is " + quote_path(input.path) +
+                              ", which this run reads: an output never replaces one of its "
+                              "inputs; give it another path");
+        }
+    }
+}
+
+}  // namespace
+
+void note_input_file(int fd, const fs::path& path) {
+    struct stat status {};
+    if (::fstat(fd, &status) != 0 || !S_ISREG(status.st_mode)) return;
+    const std::lock_guard lock(inputs_mutex);
+    for (const NotedInput& input : noted_inputs()) {
+        if (input.device == status.st_dev && input.inode == status.st_ino) return;
+    }
+    // Without a descriptor to spare (EMFILE) the input is still recorded, only not pinned.
+    noted_inputs().push_back(
+        {status.st_dev, status.st_ino, path, File(::fcntl(fd, F_DUPFD_CLOEXEC, 3))});
+}
+
+// ------------------------------------------------------------------------------------------------
 // OutputFile
 
 OutputFile::OutputFile(const fs::path& destination, OutputOptions options)
@@ -438,6 +495,9 @@ OutputFile::OutputFile(const fs::path& destination, OutputOptions options)
         file_ = File(::fcntl(stream, F_DUPFD_CLOEXEC, 3));
         const int error = errno;
         if (!file_) throw_input_error(what + ": " + errno_text(error));
+        // Standard output redirected into an input (`>> scene.toml`) would write into it.
+        struct stat status {};
+        if (::fstat(file_.get(), &status) == 0) refuse_input(status, what);
         stream_ = active_ = true;
         return;
     }
@@ -454,6 +514,7 @@ OutputFile::OutputFile(const fs::path& destination, OutputOptions options)
     struct stat existing {};
     if (::fstatat(directory_.get(), target_name_.c_str(), &existing, AT_SYMLINK_NOFOLLOW) == 0) {
         if (S_ISDIR(existing.st_mode)) throw_input_error(what + " is an existing directory");
+        refuse_input(existing, what);
         if (S_ISREG(existing.st_mode) && is_mount_root(directory_.get(), target_name_))
             throw_mount_point(destination, label_);
         if (!S_ISREG(existing.st_mode)) {
@@ -515,7 +576,8 @@ OutputFile::OutputFile(OutputFile&& other) noexcept
       file_(std::move(other.file_)),
       temporary_name_(std::move(other.temporary_name_)),
       stream_(other.stream_),
-      active_(std::exchange(other.active_, false)) {}
+      active_(std::exchange(other.active_, false)),
+      prepared_(std::exchange(other.prepared_, false)) {}
 
 OutputFile& OutputFile::operator=(OutputFile&& other) noexcept {
     if (this != &other) {
@@ -528,6 +590,7 @@ OutputFile& OutputFile::operator=(OutputFile&& other) noexcept {
         temporary_name_ = std::move(other.temporary_name_);
         stream_ = other.stream_;
         active_ = std::exchange(other.active_, false);
+        prepared_ = std::exchange(other.prepared_, false);
     }
     return *this;
 }
@@ -550,14 +613,10 @@ void OutputFile::write(const void* data, std::size_t size) const {
     file_.write_all(data, size, destination_);
 }
 
-void OutputFile::commit() {
+void OutputFile::prepare_commit() {
     const std::string what = label_ + " " + quote_path(destination_);
     if (!active_) throw_runtime_error(what + ": nothing to commit");
-    if (stream_) {
-        active_ = false;
-        file_.close(destination_);
-        return;
-    }
+    if (stream_ || prepared_) return;
     if (::fsync(file_.get()) != 0) {
         const int error = errno;  // NFS and full disks report delayed write errors here
         throw_runtime_error("cannot write " + quote_path(destination_) + ": " + errno_text(error));
@@ -567,6 +626,7 @@ void OutputFile::commit() {
     const bool replacing =
         ::fstatat(directory_.get(), target_name_.c_str(), &old, AT_SYMLINK_NOFOLLOW) == 0 &&
         S_ISREG(old.st_mode);
+    if (replacing) refuse_input(old, what);  // an input read after the output was created
     ::fchmod(file_.get(), replacing ? (old.st_mode & 0777) : (0666 & ~current_umask()));
     if (temporary_name_.empty()) {
         // An O_TMPFILE gets a (temporary, exclusive) name first: linkat cannot replace a file.
@@ -584,20 +644,35 @@ void OutputFile::commit() {
         }
         if (temporary_name_.empty()) throw_runtime_error(what + ": no free temporary name");
     }
+    prepared_ = true;
+}
+
+void OutputFile::commit() {
+    const std::string what = label_ + " " + quote_path(destination_);
+    if (!active_) throw_runtime_error(what + ": nothing to commit");
+    if (stream_) {
+        active_ = false;
+        file_.close(destination_);
+        return;
+    }
+    prepare_commit();
     if (::renameat(directory_.get(), temporary_name_.c_str(), directory_.get(),
                    target_name_.c_str()) != 0) {
         const int error = errno;
         throw_runtime_error("cannot put " + quote_path(destination_) +
                             " in place: " + errno_text(error));
     }
+    committed_count.fetch_add(1);
     temporary_name_.clear();
     active_ = false;
+    prepared_ = false;
     file_.close(destination_);
 }
 
 void OutputFile::discard() noexcept {
     if (!active_) return;
     active_ = false;
+    prepared_ = false;
     if (!temporary_name_.empty()) {
         // Only our own file: a name that now holds something else stays.
         struct stat ours {};
@@ -761,24 +836,32 @@ File OutputDirectory::create_file(const std::string& name) const {
     return file;
 }
 
-void OutputDirectory::commit() {
+void OutputDirectory::prepare_commit() {
     const std::string what = label_ + " " + quote_path(destination_);
     if (!active_) throw_runtime_error(what + ": nothing to commit");
-    std::string replaced;  // where the old destination ends up, emptied below
     struct stat old {};
     const bool exists =
         ::fstatat(parent_.get(), target_name_.c_str(), &old, AT_SYMLINK_NOFOLLOW) == 0;
     ::fchmod(temporary_.get(),
              exists && S_ISDIR(old.st_mode) ? (old.st_mode & 07777) : (0777 & ~current_umask()));
+    if (!exists) return;
+    // Checked again: the destination may have changed while the frames were rendered.
+    const File current(::openat(parent_.get(), target_name_.c_str(),
+                                O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC));
+    std::string offender;
+    if (!current || !holds_only(current.get(), replaceable_, &offender)) {
+        throw_runtime_error(what + " changed while the frames were written (it now holds " +
+                            quote_path(offender) + "); left as it is");
+    }
+}
+
+void OutputDirectory::commit() {
+    prepare_commit();
+    std::string replaced;  // where the old destination ends up, emptied below
+    struct stat old {};
+    const bool exists =
+        ::fstatat(parent_.get(), target_name_.c_str(), &old, AT_SYMLINK_NOFOLLOW) == 0;
     if (exists) {
-        // Checked again: the destination may have changed while the frames were rendered.
-        const File current(::openat(parent_.get(), target_name_.c_str(),
-                                    O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC));
-        std::string offender;
-        if (!current || !holds_only(current.get(), replaceable_, &offender)) {
-            throw_runtime_error(what + " changed while the frames were written (it now holds " +
-                                quote_path(offender) + "); left as it is");
-        }
         if (::renameat2(parent_.get(), temporary_name_.c_str(), parent_.get(), target_name_.c_str(),
                         RENAME_EXCHANGE) == 0) {
             replaced = temporary_name_;
@@ -813,6 +896,7 @@ void OutputDirectory::commit() {
         throw_runtime_error("cannot put " + quote_path(destination_) +
                             " in place: " + errno_text(error));
     }
+    committed_count.fetch_add(1);
     active_ = false;
     temporary_ = File();
     temporary_name_.clear();
@@ -918,6 +1002,46 @@ void check_distinct_outputs(const std::vector<NamedOutput>& outputs) {
     }
 }
 
+void check_outputs_not_inputs(const std::vector<NamedOutput>& outputs,
+                              const std::vector<NamedInput>& inputs) {
+    for (const NamedOutput& output : outputs) {
+        const OutputIdentity out = identity_of(output);
+        for (const NamedInput& input : inputs) {
+            if (!same_output(out, identity_of({input.label, input.path, false}))) continue;
+            throw_input_error(output.label + " " + quote_path(output.path) + " is " + input.label +
+                              " " + quote_path(input.path) +
+                              ", which this run reads: an output never replaces one of its "
+                              "inputs; give it another path");
+        }
+    }
+}
+
+// ------------------------------------------------------------------------------------------------
+// CommitGroup
+
+void CommitGroup::add(OutputFile* file) {
+    if (file == nullptr) return;
+    add([file] { file->prepare_commit(); }, [file] { file->commit(); });
+}
+
+void CommitGroup::add(OutputDirectory* directory) {
+    if (directory == nullptr) return;
+    add([directory] { directory->prepare_commit(); }, [directory] { directory->commit(); });
+}
+
+void CommitGroup::add(std::function<void()> prepare, std::function<void()> rename) {
+    steps_.push_back({std::move(prepare), std::move(rename)});
+}
+
+void CommitGroup::commit() {
+    for (const Step& step : steps_) step.prepare();
+    // The last moment a stop leaves every destination as it was; the renames then take
+    // microseconds, and stopping among them would leave some outputs old and some new.
+    if (stop_requested()) throw_runtime_error("interrupted before the outputs were put in place");
+    for (const Step& step : steps_) step.rename();
+    steps_.clear();
+}
+
 File open_scratch_file(const fs::path& directory) {
     File file(::open(directory.c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0600));
     if (file) return file;
@@ -972,6 +1096,11 @@ std::optional<pid_t> temporary_owner(std::string_view name) {
     }
     if (pid <= 0 || pid > 0x7fffffff) return std::nullopt;
     return static_cast<pid_t>(pid);
+}
+
+void forget_input_files() noexcept {
+    const std::lock_guard lock(inputs_mutex);
+    noted_inputs().clear();
 }
 
 std::size_t sweep_stale_temporaries(const fs::path& directory,

@@ -13,6 +13,7 @@
 #include "backends.hpp"
 #include "collide/error.hpp"
 #include "collide/named_values.hpp"
+#include "collide/printable.hpp"
 
 namespace collide::render {
 namespace {
@@ -112,7 +113,7 @@ void emit_notice(const NoticeSink& notice, const std::string& line) {
     if (notice) {
         notice(line);
     } else {
-        std::cerr << line << '\n';
+        std::cerr << printable_text(line) << '\n';
     }
 }
 

@@ -12,6 +12,7 @@
 #include <system_error>
 
 #include "collide/error.hpp"
+#include "collide/io/file.hpp"
 #include "collide/scene/load.hpp"
 #include "collide/sim/algs4.hpp"
 
@@ -76,6 +77,8 @@ std::string read_scene_file(const std::filesystem::path& path) {
                               ", not a regular file: scenes are read from "
                               "regular files only");
     }
+    // No output of this run may replace it (`--layout-json scene.toml`, an included file).
+    io::note_input_file(file.get(), path);
     const auto size = static_cast<std::uintmax_t>(info.st_size);
     if (size > max_scene_file_bytes) too_large(name);
     // Read to the end rather than `size` bytes (the file may change meanwhile), but never beyond

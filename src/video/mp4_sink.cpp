@@ -13,6 +13,7 @@ extern "C" {
 #include <vector>
 
 #include "av_handles.hpp"
+#include "collide/video/subtitles.hpp"
 #include "frame_sink.hpp"
 #include "rgba_to_yuv.hpp"
 
@@ -67,7 +68,8 @@ constexpr const char* subtitle_style_header =
 /// A cue's plain text as the ASS dialog line the encoder reads. Its parser treats "\n", "\N"
 /// and "{\" as markup and nothing else: line breaks become "\N", and an invisible word joiner
 /// (U+2060) keeps a literal backslash-n or brace-backslash plain text.
-std::string ass_dialog(const std::string& text) {
+std::string ass_dialog(const std::string& cue_text) {
+    const std::string text = plain_cue_text(cue_text);  // the same words as the sidecar files
     std::string out = "0,0,Default,,0,0,0,,";
     for (std::size_t i = 0; i < text.size(); ++i) {
         const char c = text[i];

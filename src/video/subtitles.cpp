@@ -27,24 +27,6 @@ std::string timestamp(double seconds, char separator) {
     return text;
 }
 
-/// The text's lines without empty ones (an empty line ends a cue in both formats) and without
-/// carriage returns.
-std::string cue_lines(const std::string& text) {
-    std::string out;
-    std::size_t start = 0;
-    while (start <= text.size()) {
-        const std::size_t end = std::min(text.find('\n', start), text.size());
-        std::string line = text.substr(start, end - start);
-        line.erase(std::remove(line.begin(), line.end(), '\r'), line.end());
-        if (line.find_first_not_of(" \t") != std::string::npos) {
-            if (!out.empty()) out += '\n';
-            out += line;
-        }
-        start = end + 1;
-    }
-    return out;
-}
-
 std::string replaced(std::string text, std::string_view from, std::string_view to) {
     for (std::size_t at = text.find(from); at != std::string::npos;
          at = text.find(from, at + to.size())) {
@@ -53,7 +35,48 @@ std::string replaced(std::string text, std::string_view from, std::string_view t
     return text;
 }
 
+/// A character that is no text: a C0 control (tab and line ends aside, handled by the caller),
+/// DEL, or (as the UTF-8 bytes C2 80..C2 9F) a C1 control such as U+0085 NEXT LINE.
+bool is_control_byte(unsigned char c) {
+    return (c < 0x20 && c != '\t') || c == 0x7f;
+}
+
+/// One line of a cue: control characters dropped (C1 ones too), tabs made spaces.
+std::string clean_line(std::string_view line) {
+    std::string out;
+    out.reserve(line.size());
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        const auto c = static_cast<unsigned char>(line[i]);
+        if (c == 0xC2 && i + 1 < line.size() && static_cast<unsigned char>(line[i + 1]) >= 0x80 &&
+            static_cast<unsigned char>(line[i + 1]) <= 0x9F) {
+            ++i;  // U+0080..U+009F
+            continue;
+        }
+        if (is_control_byte(c)) continue;
+        out += c == '\t' ? ' ' : static_cast<char>(c);
+    }
+    return out;
+}
+
 }  // namespace
+
+std::string plain_cue_text(std::string_view text) {
+    std::string out;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        // '\r' alone ends a line for some readers (FFmpeg's among them): a line end here too.
+        const std::size_t end = std::min(text.find_first_of("\r\n", start), text.size());
+        const std::string line = clean_line(text.substr(start, end - start));
+        if (line.find_first_not_of(' ') != std::string::npos) {
+            if (!out.empty()) out += '\n';
+            out += line;
+        }
+        start = end + 1;
+    }
+    // Until none is left: "--->" is "-->" again once its first arrow is shortened.
+    while (out.find("-->") != std::string::npos) out = replaced(std::move(out), "-->", "->");
+    return out;
+}
 
 std::string subtitle_language(std::string_view tag, std::string_view field) {
     const std::string code = lowercase(tag);
@@ -78,7 +101,7 @@ SubtitleFormat subtitle_format_of(const std::filesystem::path& path, std::string
 std::string webvtt_text(const Cues& cues) {
     std::string out = "WEBVTT\n";
     for (const Cue& cue : cues) {
-        std::string text = cue_lines(cue.text);
+        std::string text = plain_cue_text(cue.text);
         if (text.empty()) continue;
         text = replaced(replaced(replaced(text, "&", "&amp;"), "<", "&lt;"), ">", "&gt;");
         out += '\n' + timestamp(cue.start, '.') + " --> " + timestamp(cue.end, '.') + '\n' + text +
@@ -91,7 +114,7 @@ std::string srt_text(const Cues& cues) {
     std::string out;
     int number = 0;
     for (const Cue& cue : cues) {
-        const std::string text = replaced(cue_lines(cue.text), "-->", "->");
+        const std::string text = plain_cue_text(cue.text);
         if (text.empty()) continue;
         if (number > 0) out += '\n';
         out += std::to_string(++number) + '\n' + timestamp(cue.start, ',') + " --> " +

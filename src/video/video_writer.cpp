@@ -134,14 +134,31 @@ class VideoWriter::Impl {
         sink_->finish();
     }
 
-    void commit() {
+    void prepare_commit() {
         if (!finished_) throw_runtime_error("VideoWriter::commit before complete()");
         if (cancelled()) throw_interrupted();
+        if (options_.format == VideoFormat::png_sequence) {
+            directory_.prepare_commit();
+        } else {
+            file_.prepare_commit();
+        }
+        prepared_ = true;
+    }
+
+    void commit() {
+        // Prepared already (io::CommitGroup): a stop that came since waits for the renames.
+        if (!prepared_) prepare_commit();
         if (options_.format == VideoFormat::png_sequence) {
             directory_.commit();
         } else {
             file_.commit();
         }
+    }
+
+    std::filesystem::path finished_file() const {
+        if (!finished_ || options_.format == VideoFormat::png_sequence)
+            throw_runtime_error("VideoWriter::finished_file: no finished file");
+        return file_.reopen_path();
     }
 
     const std::vector<std::string>& notices() const noexcept { return notices_; }
@@ -230,6 +247,7 @@ class VideoWriter::Impl {
     VideoOptions options_;
     detail::SinkGeometry geometry_;
     std::vector<std::string> notices_;
+    bool prepared_ = false;          ///< prepare_commit() succeeded: only the rename is left
     io::OutputFile file_;            ///< the temporary of an MP4 or GIF
     io::OutputDirectory directory_;  ///< the temporary of a PNG sequence
     std::unique_ptr<detail::FrameSink> sink_;
@@ -266,8 +284,14 @@ void VideoWriter::finish() {
 void VideoWriter::complete() {
     impl_->complete();
 }
+void VideoWriter::prepare_commit() {
+    impl_->prepare_commit();
+}
 void VideoWriter::commit() {
     impl_->commit();
+}
+std::filesystem::path VideoWriter::finished_file() const {
+    return impl_->finished_file();
 }
 const std::vector<std::string>& VideoWriter::notices() const noexcept {
     return impl_->notices();

@@ -13,6 +13,7 @@
 #include <iterator>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "../support/files.hpp"
@@ -430,4 +431,152 @@ TEST_CASE("render: destinations that would fail only at the end are refused befo
         CHECK(contains(r.output, "is a mount point"));
     }
     CHECK(read_all(dir.path / "file.mp4") == "old");
+}
+
+TEST_CASE(
+    "no output of a run may be one of its inputs: the scene, an include, the font, any name") {
+    TempDir dir("outputs_own_inputs");
+    const fs::path scene = dir.path / "s.toml";
+    const fs::path include = dir.path / "two.txt";
+    const std::string scene_text = "title = \"own inputs\"\ninclude = \"two.txt\"\n";
+    const std::string include_text = "2\n0.2 0.2 0.1 0 0.05 1 0 0 0\n0.8 0.8 0 0.1 0.05 1 0 0 0\n";
+    write_file(scene, scene_text);
+    write_file(include, include_text);
+    fs::create_symlink("s.toml", dir.path / "soft.json");
+    for (const char* name :
+         {"hard.json", "hard.mp4", "hard.png", "hard.srt", "hard.vtt", "hard.toml"})
+        fs::create_hard_link(scene, dir.path / name);
+    const fs::path font = dir.path / "f.ttf";
+    const fs::path dejavu = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+    if (fs::exists(dejavu)) {
+        fs::copy_file(dejavu, font);
+    } else {
+        write_file(font, "a font");  // refused before it is parsed, but for `heap` below
+    }
+    const std::string font_bytes = read_all(font);
+    fs::create_hard_link(font, dir.path / "font.mp4");
+    fs::create_symlink("two.txt", dir.path / "soft.csv");
+    fs::create_hard_link(include, dir.path / "hard.csv");
+    const std::vector<std::string> before = entries(dir.path);
+
+    const std::string render = "render " + q(scene) + small_video + " -o " + q(dir.path / "x.mp4");
+    const std::string simulate = "simulate " + q(scene) + " --until 0.1 --events-log ";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {render + " --layout-json " + q(scene), "--layout-json"},
+        {render + " --timeline-json " + q(dir.path / "soft.json"), "--timeline-json"},
+        {render + " --layout-json " + q(dir.path / "hard.json"), "--layout-json"},
+        {render + " --subtitles-file " + q(dir.path / "hard.srt"), "--subtitles-file"},
+        {render + " --chapters-file " + q(dir.path / "hard.vtt"), "--chapters-file"},
+        {"render " + q(scene) + small_video + " -o " + q(dir.path / "hard.mp4"), "hard.mp4"},
+        {"thumbnail " + q(scene) + " --size 320x180 --progress none -o " + q(dir.path / "hard.png"),
+         "hard.png"},
+        {simulate + q(include), "--events-log"},
+        {simulate + q(dir.path / "soft.csv"), "--events-log"},
+        {simulate + q(dir.path / "hard.csv"), "--events-log"},
+        {render + " --font " + q(font) + " --layout-json " + q(font), "--layout-json"},
+        {"heap --ops 'P Q E' --size 320x180 --progress none --font " + q(font) + " -o " +
+             q(dir.path / "font.mp4"),
+         "font.mp4"},
+        {"check " + q(scene) + " --export " + q(scene), "s.toml"},
+        {"check " + q(scene) + " --export " + q(dir.path / "hard.toml"), "hard.toml"},
+    };
+    for (const auto& [args, named] : cases) {
+        const RunResult r = run_collide(args);
+        INFO(args << "\n" << r.output);
+        CHECK(r.exit_code == 2);
+        CHECK(contains(r.output, named));
+        CHECK(contains(r.output, "which this run reads"));
+        CHECK(read_all(scene) == scene_text);
+        CHECK(read_all(include) == include_text);
+        CHECK(read_all(font) == font_bytes);
+        CHECK(entries(dir.path) == before);  // nothing new, no temporary left
+    }
+    // Standard output appended to the scene would write into it (stderr stays on the pipe).
+    const RunResult appended = run_collide_shell("'" + std::string(COLLIDE_EXE) + "' " + simulate +
+                                                 "- 2>&1 >>" + q(scene));
+    CHECK_MESSAGE(appended.exit_code == 2, appended.output);
+    CHECK(contains(appended.output, "which this run reads"));
+    CHECK(read_all(scene) == scene_text);
+    // The same outputs elsewhere are fine.
+    const RunResult ok = run_collide(simulate + q(dir.path / "events.csv"));
+    CHECK_MESSAGE(ok.exit_code == 0, ok.output);
+}
+
+TEST_CASE("compare never writes its difference image over an image it compares") {
+    TempDir dir("outputs_compare_inputs");
+    const fs::path golden = dir.path / "golden.png";
+    const fs::path fresh = dir.path / "new.png";
+    REQUIRE(run_collide("thumbnail gas --size 320x180 --progress none -o " + q(golden)).exit_code ==
+            0);
+    REQUIRE(
+        run_collide("thumbnail brownian --size 320x180 --progress none -o " + q(fresh)).exit_code ==
+        0);
+    const std::string golden_bytes = read_all(golden);
+    const std::string fresh_bytes = read_all(fresh);
+    fs::create_hard_link(golden, dir.path / "hard.png");
+    fs::create_symlink("new.png", dir.path / "soft.png");
+    // EXPECTED named as ACTUAL's default difference image: ACTUAL.diff.png.
+    fs::copy_file(golden, dir.path / "x.diff.png");
+    fs::copy_file(fresh, dir.path / "x.png");
+    const std::vector<std::string> before = entries(dir.path);
+    const std::vector<std::string> cases = {
+        q(golden) + " " + q(fresh) + " --diff " + q(golden),
+        q(golden) + " " + q(fresh) + " --diff " + q(fresh),
+        q(golden) + " " + q(fresh) + " --diff " + q(dir.path / "." / "golden.png"),
+        q(golden) + " " + q(fresh) + " --diff " + q(dir.path / "hard.png"),
+        q(golden) + " " + q(fresh) + " --diff " + q(dir.path / "soft.png"),
+        q(dir.path / "x.diff.png") + " " + q(dir.path / "x.png"),
+    };
+    for (const std::string& args : cases) {
+        const RunResult r = run_collide("compare " + args);
+        INFO(args << "\n" << r.output);
+        CHECK(r.exit_code == 2);
+        CHECK(contains(r.output, "--diff"));
+        CHECK(contains(r.output, "which this run reads"));
+        CHECK(read_all(golden) == golden_bytes);
+        CHECK(read_all(fresh) == fresh_bytes);
+        CHECK(read_all(dir.path / "x.diff.png") == golden_bytes);
+        CHECK(entries(dir.path) == before);
+    }
+    const RunResult r = run_collide("compare " + q(golden) + " " + q(fresh));
+    CHECK_MESSAGE(r.exit_code == 1, r.output);  // they differ: new.diff.png is written
+    CHECK(fs::exists(dir.path / "new.diff.png"));
+}
+
+TEST_CASE("render: when the slide folder cannot go in place, no output of the run does") {
+    TempDir dir("outputs_slides_last");
+    const fs::path video = dir.path / "x.mp4";
+    const fs::path srt = dir.path / "x.srt";
+    const fs::path chapters = dir.path / "x.chapters.vtt";
+    const fs::path layout = dir.path / "x.json";
+    const fs::path slides = dir.path / "talk";
+    const fs::path fifo = dir.path / "frames.fifo";
+    for (const fs::path& old : {video, srt, chapters, layout}) write_file(old, "old");
+    fs::create_directory(slides);
+    write_file(slides / "index.html", "old page");
+    // The slide folder changes while the frames are drawn (someone saves notes into it), so it
+    // may no longer be replaced: found when the outputs are put in place, after the video, the
+    // sidecars and the layout are all written. The frames go to a FIFO this script reads, so
+    // the change comes at a known moment: once the first frame is drawn.
+    const std::string script =
+        "mkfifo " + q(fifo) + " || exit 99; exec 3<>" + q(fifo) + "; '" + COLLIDE_EXE +
+        "' render gas -q l --duration 0.5 --progress none -o " + q(video) + " --subtitles-file " +
+        q(srt) + " --chapters-file " + q(chapters) + " --layout-json " + q(layout) + " --slides " +
+        q(slides) + " --dump-rgba " + q(fifo) +
+        " & pid=$!; head -c 1 <&3 >/dev/null; echo notes > " + q(slides / "notes.txt") +
+        "; cat <&3 >/dev/null & reader=$!; wait $pid; rc=$?; kill $reader; exit $rc";
+    const RunResult r = run_collide_shell(script);
+    INFO(r.output);
+    CHECK(r.exit_code == 1);
+    CHECK(contains(r.output, "--slides"));
+    CHECK(contains(r.output, "changed while"));
+    for (const fs::path& old : {video, srt, chapters, layout}) {
+        CAPTURE(old);
+        CHECK(read_all(old) == "old");  // before: all four replaced, then exit 1
+    }
+    CHECK(read_all(slides / "index.html") == "old page");
+    std::vector<std::string> names = entries(dir.path);
+    std::sort(names.begin(), names.end());
+    CHECK(names == std::vector<std::string>{"frames.fifo", "talk", "x.chapters.vtt", "x.json",
+                                            "x.mp4", "x.srt"});
 }

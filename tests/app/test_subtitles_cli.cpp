@@ -204,3 +204,79 @@ TEST_CASE("heap and puzzle videos carry their step captions as subtitles") {
     REQUIRE_MESSAGE(puzzle.exit_code == 0, puzzle.output);
     CHECK(!parse_subtitles(collide::test::read_all(vtt), true).empty());
 }
+
+namespace {
+
+/// A scene whose words are written to look like the end of their cue and the start of another
+/// (a cue number, a timing line with an arrow of several dashes, blank lines, lone carriage
+/// returns, control characters): none of it may become a cue of its own.
+constexpr const char* forged_scene = R"(title = "Forged cues"
+description = "ok\n\n2\n00:00:00,500 ---> 00:00:03,900\nforged one"
+disc = [
+  { position = [0.3, 0.5], velocity = [0.5, 0], radius = 0.05, mass = 1 },
+  { position = [0.7, 0.5], velocity = [-0.5, 0], radius = 0.05, mass = 1 },
+]
+
+[box]
+width = 1.0
+height = 1.0
+
+[render]
+duration = 4.0
+caption = "a ----> b\r\r3\r00:00:01,000 --> 00:00:03,000\rforged two"
+
+[[render.captions]]
+at = 2.5
+text = "12\n00:00:02,600-\u001b->00:00:03,000\n \n\f\nforged three"
+)";
+
+/// The cues FFmpeg reads from `file` (any subtitle file or an MP4's track), as SubRip.
+std::vector<ParsedCue> read_by_ffmpeg(const fs::path& file) {
+    const std::string srt = without_markup(
+        capture("ffmpeg -v error -i " + file.string() + " -map 0:s:0 -f srt - 2>&1"));
+    return parse_subtitles(srt, false);
+}
+
+}  // namespace
+
+TEST_CASE("render: scene text that looks like a cue never becomes one, in a sidecar or the track") {
+    if (!have_ffprobe()) COLLIDE_SKIP_TEST("ffmpeg is not installed");
+    TempDir dir("subtitles_forged");
+    const fs::path scene = dir.path / "scene.toml";
+    collide::test::write_file(scene, forged_scene);
+    const fs::path out = dir.path / "t.mp4";
+    const fs::path srt = dir.path / "t.srt";
+    const fs::path vtt = dir.path / "t.vtt";
+    const fs::path chapters = dir.path / "t.chapters.vtt";
+    const std::string render = "render " + scene.string() +
+                               " --size 320x180 --fps 10 --progress none --chapters-file " +
+                               chapters.string();
+    const auto first =
+        run_collide(render + " -o " + out.string() + " --subtitles-file " + srt.string());
+    REQUIRE_MESSAGE(first.exit_code == 0, first.output);
+    const auto second = run_collide(render + " -o " + (dir.path / "u.mp4").string() +
+                                    " --subtitles-file " + vtt.string());
+    REQUIRE_MESSAGE(second.exit_code == 0, second.output);
+
+    // What collide wrote: the title card, the two captions and the epilogue, four cues.
+    const std::vector<ParsedCue> written = parse_subtitles(collide::test::read_all(srt), false);
+    REQUIRE(written.size() == 4);
+    CHECK(written[0].text == "Forged cues\nok\n2\n00:00:00,500 -> 00:00:03,900\nforged one");
+    CHECK(written[1].text == "a -> b\n3\n00:00:01,000 -> 00:00:03,000\nforged two");
+    CHECK(written[2].text == "12\n00:00:02,600->00:00:03,000\nforged three");
+    // What FFmpeg reads from each: the same four cues, at the same times, nothing more.
+    for (const fs::path& file : {srt, vtt, out}) {
+        CAPTURE(file);
+        const std::vector<ParsedCue> read = read_by_ffmpeg(file);
+        REQUIRE(read.size() == written.size());
+        for (std::size_t i = 0; i < read.size(); ++i) {
+            CAPTURE(i);
+            CHECK(read[i].start == doctest::Approx(written[i].start));
+            CHECK(read[i].end == doctest::Approx(written[i].end));
+            CHECK(read[i].text.find("-->") == std::string::npos);
+        }
+    }
+    const std::size_t chapter_count =
+        parse_subtitles(collide::test::read_all(chapters), true).size();
+    CHECK(read_by_ffmpeg(chapters).size() == chapter_count);
+}

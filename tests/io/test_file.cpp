@@ -10,10 +10,12 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "../support/files.hpp"
@@ -437,4 +439,156 @@ TEST_CASE("OutputFile refuses up front a name over NAME_MAX and a link ending in
     CHECK(contains(input_error_message([&] { OutputFile f(dir.path / "dot"); }), "names no file"));
     CHECK(entries(dir.path).size() == 3);
     CHECK(entries(dir.path / "d").empty());
+}
+
+namespace {
+
+/// Writes `text` into `file`'s temporary.
+void fill(const OutputFile& file, const std::string& text) {
+    file.write(text);
+}
+
+/// The error message of `f`, which must throw a collide::Error (of any kind).
+template <class F>
+std::string error_message(F&& f) {
+    try {
+        std::forward<F>(f)();
+    } catch (const collide::Error& e) {
+        return e.what();
+    }
+    FAIL("no error");
+    return "";
+}
+
+bool is_txt(std::string_view name) {
+    return name.size() > 4 && name.substr(name.size() - 4) == ".txt";
+}
+
+/// The scenarios of the CommitGroup test, each in a fresh directory.
+enum class CommitScenario { all_ready, folder_changed, injected_failure, stop_requested };
+
+void run_commit_scenario(CommitScenario scenario, bool unnamed) {
+    TempDir dir("io_commit_group");
+    const fs::path video = dir.path / "v.mp4";
+    const fs::path sidecar = dir.path / "v.srt";
+    const fs::path folder = dir.path / "slides";
+    write_file(video, "old video");
+    write_file(sidecar, "old srt");
+    fs::create_directory(folder);
+    write_file(folder / "a.txt", "old slide");
+    std::atomic<bool> stop{false};
+    set_stop_flag(&stop);
+    {
+        OutputFile a(video, {"-o", false, unnamed});
+        OutputFile b(sidecar, {"--subtitles-file", false, unnamed});
+        OutputDirectory d(folder, is_txt, "--slides");
+        fill(a, "new video");
+        fill(b, "new srt");
+        (void)d.create_file("b.txt");
+        CommitGroup group;
+        group.add(&a);
+        if (scenario == CommitScenario::stop_requested) {
+            group.add([&] { stop = true; }, [] {});  // the signal comes while preparing
+        }
+        group.add(&b);
+        if (scenario == CommitScenario::injected_failure) {
+            group.add([] { collide::throw_runtime_error("cannot write 'x': No space left"); },
+                      [] { FAIL("renamed after a failed preparation"); });
+        }
+        group.add(&d);  // the last: a commit one by one would have replaced a and b before it
+        switch (scenario) {
+            case CommitScenario::all_ready:
+                group.commit();
+                break;
+            case CommitScenario::folder_changed:
+                write_file(folder / "notes.md", "someone's");  // may not be replaced
+                CHECK(contains(error_message([&] { group.commit(); }), "changed while"));
+                break;
+            case CommitScenario::injected_failure:
+                CHECK(contains(error_message([&] { group.commit(); }), "No space left"));
+                break;
+            case CommitScenario::stop_requested:
+                CHECK(contains(error_message([&] { group.commit(); }), "interrupted"));
+                break;
+        }
+    }
+    set_stop_flag(nullptr);
+    if (scenario == CommitScenario::all_ready) {
+        CHECK(read_all(video) == "new video");
+        CHECK(read_all(sidecar) == "new srt");
+        CHECK(entries(folder) == std::vector<std::string>{"b.txt"});
+    } else {
+        CHECK(read_all(video) == "old video");
+        CHECK(read_all(sidecar) == "old srt");
+        CHECK(read_all(folder / "a.txt") == "old slide");
+    }
+    // No temporary is left behind in any case.
+    std::vector<std::string> names = entries(dir.path);
+    std::sort(names.begin(), names.end());
+    CHECK(names == std::vector<std::string>{"slides", "v.mp4", "v.srt"});
+}
+
+}  // namespace
+
+TEST_CASE("CommitGroup: every output goes in place, or none when one cannot be prepared") {
+    for (const bool unnamed : temporary_kinds) {
+        for (const CommitScenario scenario :
+             {CommitScenario::all_ready, CommitScenario::folder_changed,
+              CommitScenario::injected_failure, CommitScenario::stop_requested}) {
+            CAPTURE(unnamed);
+            CAPTURE(static_cast<int>(scenario));
+            run_commit_scenario(scenario, unnamed);
+        }
+    }
+}
+
+TEST_CASE("an output never replaces a file the process read as an input") {
+    TempDir dir("io_inputs");
+    const fs::path scene = dir.path / "s.toml";
+    const fs::path late = dir.path / "late.txt";
+    write_file(scene, "scene");
+    write_file(late, "include");
+    fs::create_symlink("s.toml", dir.path / "soft.json");
+    fs::create_hard_link(scene, dir.path / "hard.json");
+    {
+        // An output created before its destination was read: refused when it is committed.
+        OutputFile early(late, {"--events-log"});
+        fill(early, "log");
+        const File input(::open(late.c_str(), O_RDONLY | O_CLOEXEC));
+        note_input_file(input.get(), late);
+        CHECK(contains(input_error_message([&] { early.commit(); }), "which this run reads"));
+    }
+    const File input(::open(scene.c_str(), O_RDONLY | O_CLOEXEC));
+    note_input_file(input.get(), scene);
+    for (const char* name : {"s.toml", "soft.json", "hard.json"}) {
+        CAPTURE(name);
+        const std::string message = input_error_message([&] {
+            OutputFile f(dir.path / name, {"--layout-json", true});
+        });
+        CHECK(contains(message, "--layout-json '"));
+        CHECK(contains(message, "which this run reads"));
+    }
+    CHECK_NOTHROW(OutputFile(dir.path / "other.json"));
+    CHECK(read_all(scene) == "scene");
+    CHECK(read_all(late) == "include");
+    detail::forget_input_files();  // their inodes may be reused once the directory goes
+}
+
+TEST_CASE("check_outputs_not_inputs: an output that is an input is refused, others pass") {
+    TempDir dir("io_not_inputs");
+    const fs::path golden = dir.path / "golden.png";
+    write_file(golden, "png");
+    fs::create_symlink("golden.png", dir.path / "soft.png");
+    fs::create_hard_link(golden, dir.path / "hard.png");
+    const std::vector<NamedInput> inputs{{"EXPECTED", golden}, {"ACTUAL", dir.path / "new.png"}};
+    for (const char* name : {"golden.png", "soft.png", "hard.png", "new.png", "./new.png"}) {
+        CAPTURE(name);
+        const std::string message = input_error_message([&] {
+            check_outputs_not_inputs({{"--diff", dir.path / name}}, inputs);
+        });
+        CHECK(contains(message, "--diff '"));
+        CHECK(contains(message, "which this run reads"));
+    }
+    CHECK_NOTHROW(check_outputs_not_inputs({{"--diff", dir.path / "d.png"}}, inputs));
+    CHECK(entries(dir.path).size() == 3);
 }

@@ -7,10 +7,13 @@
 #include <csignal>
 #include <string>
 
+#include "../support/temp_dir.hpp"
 #include "collide/error.hpp"
+#include "collide/io/file.hpp"
 #include "interrupt.hpp"
 
 using collide::app::InterruptGuard;
+using collide::test::TempDir;
 
 TEST_CASE("SIGINT sets the flag and throw_if_requested names the signal") {
     InterruptGuard guard;
@@ -72,6 +75,30 @@ TEST_CASE("SIGHUP, SIGQUIT and SIGPIPE stop cleanly too, named in the one messag
                                                             : "SIGPIPE";
         CHECK(guard.message() == "interrupted by " + name + "; nothing was written");
     }
+}
+
+TEST_CASE("a stop after the run put outputs in place never says that nothing was written") {
+    TempDir dir("interrupt_after_commit");
+    { const InterruptGuard clear; }  // the stop an earlier test's signal left set (no signal now)
+    {
+        // An earlier run's output (tests run many in one process) does not count.
+        collide::io::OutputFile earlier(dir.path / "earlier.txt");
+        earlier.write("x");
+        earlier.commit();
+    }
+    {
+        InterruptGuard guard;
+        std::raise(SIGTERM);
+        REQUIRE(guard.requested());
+        CHECK(guard.message() == "interrupted by SIGTERM; nothing was written");
+    }
+    InterruptGuard guard;
+    collide::io::OutputFile mine(dir.path / "mine.txt");
+    mine.write("y");
+    mine.commit();
+    std::raise(SIGTERM);
+    REQUIRE(guard.requested());
+    CHECK(guard.message() == "interrupted by SIGTERM once the outputs were in place");
 }
 
 TEST_CASE("a third signal ends the process at once, for a clean stop that hangs") {

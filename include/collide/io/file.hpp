@@ -28,6 +28,7 @@
 
 #include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -68,6 +69,10 @@ class File {
 /// arrives; File::write_all then gives up instead of retrying when the flag is set, so a signal
 /// ends a run whatever its output. The flag must outlive its registration.
 void set_stop_flag(const std::atomic<bool>* flag) noexcept;
+
+/// How many outputs this process has put in place so far (renames of OutputFile and
+/// OutputDirectory): a run that saw it grow must not say, interrupted, that nothing was written.
+[[nodiscard]] std::uint64_t outputs_committed() noexcept;
 
 /// How an OutputFile may treat its destination.
 struct OutputOptions {
@@ -123,10 +128,16 @@ class OutputFile {
     void write(const void* data, std::size_t size) const;
     void write(std::string_view text) const { write(text.data(), text.size()); }
 
-    /// Flushes the data to disk (fsync), gives the file the mode an ordinary creation would (or
-    /// the replaced file's), and renames it onto the destination atomically. Streams: nothing to
-    /// move. Throws Error(runtime) on failure; the old destination is then untouched and the
-    /// temporary is removed by the destructor.
+    /// Everything of commit() that can fail for want of space or I/O, without touching the
+    /// destination: flushes the data to disk (fsync), gives the file the mode an ordinary
+    /// creation would (or the replaced file's), gives an unnamed temporary its hidden name, and
+    /// checks again that the destination is no input of the run (see note_input_file). Throws
+    /// Error (runtime; input for an input); the destructor then removes the temporary.
+    /// Idempotent.
+    void prepare_commit();
+    /// prepare_commit() (if not done yet), then renames the temporary onto the destination
+    /// atomically. Streams: nothing to move. Throws Error(runtime) on failure; the old
+    /// destination is then untouched and the temporary is removed by the destructor.
     void commit();
     /// Removes the temporary now (idempotent, never throws).
     void discard() noexcept;
@@ -143,7 +154,8 @@ class OutputFile {
     File file_;                   ///< the temporary, locked with flock(LOCK_EX)
     std::string temporary_name_;  ///< its name in directory_; empty while it is an O_TMPFILE
     bool stream_ = false;
-    bool active_ = false;  ///< true while there is a temporary (or stream) to commit or discard
+    bool active_ = false;    ///< true while there is a temporary (or stream) to commit or discard
+    bool prepared_ = false;  ///< prepare_commit() is done: only the rename is left
 };
 
 /// A directory output (a PNG sequence): a hidden temporary directory beside the destination,
@@ -173,8 +185,13 @@ class OutputDirectory {
     /// Creates `name` (a plain file name) exclusively inside the temporary directory.
     /// Throws Error(runtime).
     [[nodiscard]] File create_file(const std::string& name) const;
-    /// Moves the directory into place (atomically exchanging it with an existing one where the
-    /// filesystem can). Throws Error(runtime); the old destination is then untouched.
+    /// Everything of commit() that can fail before the rename: the directory's mode, and the
+    /// check that the destination still holds only what it may replace. Throws Error(runtime);
+    /// the old destination is then untouched. May be repeated.
+    void prepare_commit();
+    /// prepare_commit(), then moves the directory into place (atomically exchanging it with an
+    /// existing one where the filesystem can). Throws Error(runtime); the old destination is
+    /// then untouched.
     void commit();
     /// Removes the temporary directory and the files this object created in it. Never throws.
     void discard() noexcept;
@@ -210,6 +227,59 @@ struct NamedOutput {
 /// naming both. Creates nothing.
 void check_distinct_outputs(const std::vector<NamedOutput>& outputs);
 
+/// One input of a run, for check_outputs_not_inputs: its label in messages ("EXPECTED", "the
+/// scene") and its path.
+struct NamedInput {
+    std::string label;
+    std::filesystem::path path;
+};
+
+/// Refuses, before anything is written, an output that is one of the run's inputs (an output
+/// would replace what the run reads: `compare A.png B.png --diff A.png`): the same file after
+/// symbolic links, hard links included (same device and inode), or, for a file that does not
+/// exist yet, the same path once resolved. Throws Error(input) naming both. Creates nothing.
+void check_outputs_not_inputs(const std::vector<NamedOutput>& outputs,
+                              const std::vector<NamedInput>& inputs);
+
+/// Records that this process read the open file `fd` (named `path`) as an input (a scene, an
+/// algs4 file a scene includes): from then on no OutputFile of the process may replace it, nor
+/// write into it as a stream. An OutputFile checks its destination against every input noted
+/// when it is created and again in prepare_commit(), and refuses one with Error(input) naming
+/// the option, the path and the input ("--layout-json 's.toml' is the scene file 's.toml'
+/// this run reads"). The record keeps a duplicate of `fd` open, so that the file's inode is not
+/// reused for another file while the process runs. Thread-safe; a process-wide record, like
+/// the stop flag, since inputs are read deep in libraries (a scene's includes) that know
+/// nothing of the outputs.
+void note_input_file(int fd, const std::filesystem::path& path);
+
+/// The outputs of one run, put in place together (docs/outputs.md, "Several outputs of one
+/// run"): commit() first prepares every output (the video's data flushed, the sidecars, the
+/// slide folder checked again: everything that can fail for want of space, I/O or a changed
+/// destination), and only when all of them are ready, and no stop was requested (set_stop_flag),
+/// renames them into place one after the other. A failure or a stop before the renames leaves
+/// every destination as it was (the outputs' owners remove their temporaries). Holds
+/// references: the outputs must outlive commit().
+class CommitGroup {
+  public:
+    /// Adds an output (null: nothing).
+    void add(OutputFile* file);
+    void add(OutputDirectory* directory);
+    /// Adds any output by its two steps (a video writer's): `prepare` may throw, `rename` puts
+    /// it in place.
+    void add(std::function<void()> prepare, std::function<void()> rename);
+    /// Prepares every output, then renames each into place in the order added. Throws Error:
+    /// runtime ("interrupted" for a stop), or whatever a preparation threw. Once the renames have
+    /// begun, a stop request waits for them to end.
+    void commit();
+
+  private:
+    struct Step {
+        std::function<void()> prepare;
+        std::function<void()> rename;
+    };
+    std::vector<Step> steps_;
+};
+
 /// An unnamed scratch file in `directory` (O_TMPFILE, or mkostemp + unlink at once), for data
 /// that must never outlive the process (the GIF writer's frame store). Throws Error(runtime).
 [[nodiscard]] File open_scratch_file(const std::filesystem::path& directory);
@@ -223,6 +293,9 @@ namespace detail {
                                              std::size_t name_max = 255);
 /// The process id in a name made from temporary_template(), or nothing for any other name.
 [[nodiscard]] std::optional<pid_t> temporary_owner(std::string_view name);
+/// Forgets every input noted by note_input_file (tests: a test's files are deleted, and their
+/// inodes may be reused by the next test's).
+void forget_input_files() noexcept;
 /// Removes the abandoned temporaries in `directory` (see the file comment): files, and
 /// directories whose entries all satisfy `directory_entries` (null: directories are kept).
 /// Returns how many were removed. Never throws.

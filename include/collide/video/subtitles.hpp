@@ -26,10 +26,18 @@ enum class SubtitleFormat { webvtt, srt };
 [[nodiscard]] SubtitleFormat subtitle_format_of(const std::filesystem::path& path,
                                                 std::string_view field = "subtitles_file");
 
+/// A cue's text as every subtitle output carries it (WebVTT, SubRip, the MP4 track): its lines,
+/// split at '\n' and at a lone '\r', without blank ones (an empty line ends a cue in a file),
+/// control characters (C0 but tab, DEL, C1) dropped, tabs as spaces, and every "-->" (the arrow
+/// of a cue timing line) shortened to "->" until none is left ("--->" too), so that no text can
+/// ever read as the start of a cue of its own.
+[[nodiscard]] std::string plain_cue_text(std::string_view text);
+
 /// The cues as a WebVTT file ("WEBVTT", then "HH:MM:SS.mmm --> HH:MM:SS.mmm" blocks; '&', '<'
-/// and '>' escaped; an empty line inside a text, which would end its cue, dropped).
+/// and '>' escaped; the text as plain_cue_text gives it).
 [[nodiscard]] std::string webvtt_text(const Cues& cues);
-/// The cues as a SubRip file (numbered blocks, "HH:MM:SS,mmm --> HH:MM:SS,mmm", CRLF-free UTF-8).
+/// The cues as a SubRip file (numbered blocks, "HH:MM:SS,mmm --> HH:MM:SS,mmm", CRLF-free UTF-8,
+/// the text as plain_cue_text gives it).
 [[nodiscard]] std::string srt_text(const Cues& cues);
 /// Chapters as a WebVTT chapters file (what a <track kind="chapters"> reads): one cue per
 /// chapter, its title as the text, in the same form as webvtt_text.

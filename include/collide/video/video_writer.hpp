@@ -141,10 +141,17 @@ class VideoWriter {
     /// `options.path`. Throws Error(runtime) on any failure (then nothing is renamed), including
     /// when no frame was written. Calling it twice throws.
     void finish();
-    /// finish() in two steps, for a run with several outputs that puts none in place before all
-    /// are written: complete() does all but the rename (same throws), commit() the rename.
+    /// finish() in steps, for a run with several outputs that puts none in place before all
+    /// are written (io::CommitGroup): complete() writes all (same throws), prepare_commit() does
+    /// all that can still fail but the rename (io::OutputFile::prepare_commit), commit() the
+    /// rename (and prepare_commit() first, if it was not called).
     void complete();
+    void prepare_commit();
     void commit();
+    /// After complete(): a path that reads the finished MP4 or GIF while it waits in its
+    /// temporary (/proc/self/fd/N), for a copy that must be ready before anything is put in
+    /// place (the slide folder's video). Throws Error(runtime) for a PNG sequence.
+    [[nodiscard]] std::filesystem::path finished_file() const;
 
     /// Human-readable remarks about adjustments made to the request (odd size rounded up, GIF
     /// frame rate reduced, ...), for the app to print; the library itself never prints.
