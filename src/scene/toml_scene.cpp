@@ -21,54 +21,16 @@
 #include "collide/sim/scene_check.hpp"
 #include "collide/space.hpp"
 #include "toml_limits.hpp"
+#include "toml_text.hpp"
 
 namespace collide {
 
 namespace {
 
-using Keys = std::vector<std::string>;
-
-const Keys top_keys = {"title",    "description", "include",   "box",    "disc",
-                       "generate", "render",      "dimension", "sphere", "fcc"};
-const Keys box_keys = {"width", "height", "depth", "boundary"};
-const Keys sphere_keys = {"position", "velocity", "radius", "mass", "color", "tag"};
-const Keys fcc_keys = {"cells", "packing_fraction", "mass", "temperature", "color", "seed", "tag"};
-const Keys generate3_keys = {"count", "packing_fraction", "radius", "mass", "temperature",
-                             "speed", "region",           "color",  "seed", "tag"};
-const Keys disc_keys = {"position", "velocity", "radius", "mass", "color", "tag"};
-const Keys generate_keys = {"count", "packing_fraction", "radius", "mass", "temperature",
-                            "speed", "region",           "color",  "seed", "tag"};
-const Keys render_keys = {"color_mode", "trails", "overlays",   "duration", "speed",
-                          "dt",         "theme",  "caption",    "captions", "histogram",
-                          "replay",     "camera", "projection", "slab",     "replay_tag"};
-/// [render] keys of one dimension only: the camera of a 3D scene; trails and replays, which
-/// spheres do not have.
-const Keys render_keys3 = {"camera", "projection", "slab"};
-const Keys render_keys2 = {"trails", "replay", "replay_tag"};
-const Keys caption_keys = {"at", "text", "hold"};
-
-std::string num(double v) {
-    std::ostringstream s;
-    s.precision(6);
-    s << v;
-    return s.str();
-}
-
-/// A value as echoed in a message: whole when short, else its start and its length (a 10 MB key
-/// is not worth printing).
-std::string clipped(const std::string& text) {
-    constexpr std::size_t shown = 40;
-    if (text.size() <= shown + 3) return text;
-    std::size_t cut = shown;
-    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;  // UTF-8
-    return text.substr(0, cut) + "... (" + std::to_string(text.size()) + " bytes)";
-}
-
-std::string joined(const Keys& keys) {
-    std::string s;
-    for (const std::string& k : keys) s += (s.empty() ? "" : ", ") + k;
-    return s;
-}
+using namespace toml_text::keys;  // the keys each table accepts
+using toml_text::clipped;
+using toml_text::joined;
+using toml_text::num;
 
 class TomlReader {
   public:
@@ -140,7 +102,7 @@ class TomlReader {
             scene_.title = bounded_text(*n, "title", max_title_chars);
         if (const toml::node* n = doc.get("description"))
             scene_.description = bounded_text(*n, "description", max_description_chars);
-        if (const toml::node* n = doc.get("box")) read_box(*n);
+        if (const toml::node* n = doc.get("box")) read_box(*n, scene_.box);
         if (const toml::node* n = doc.get("render")) read_render(*n);
         if (const toml::node* n = doc.get("include")) read_includes(*n);
         if (const toml::node* n = doc.get("disc")) read_discs(*n);
@@ -168,24 +130,7 @@ class TomlReader {
             s.title = bounded_text(*n, "title", max_title_chars);
         if (const toml::node* n = doc.get("description"))
             s.description = bounded_text(*n, "description", max_description_chars);
-        if (const toml::node* n = doc.get("box")) {
-            const toml::table& t = table_at(*n, "box");
-            check_keys(t, "box", box_keys);
-            if (const toml::node* v = t.get("width")) s.box.width = box_side(*v, "box.width");
-            if (const toml::node* v = t.get("height")) s.box.height = box_side(*v, "box.height");
-            if (const toml::node* v = t.get("depth")) s.box.depth = box_side(*v, "box.depth");
-            if (const toml::node* v = t.get("boundary")) {
-                const std::string b = text_value(*v, "box.boundary");
-                if (b == "walls") {
-                    s.box.boundary = Boundary::walls;
-                } else if (b == "periodic") {
-                    s.box.boundary = Boundary::periodic;
-                } else {
-                    fail(*v, "box.boundary",
-                         "expected \"walls\" or \"periodic\" (got \"" + b + "\")");
-                }
-            }
-        }
+        if (const toml::node* n = doc.get("box")) read_box(*n, s.box);
         if (const toml::node* n = doc.get("render")) read_render(*n);
         if (const toml::node* n = doc.get("sphere")) read_spheres(*n, s);
         if (const toml::node* n = doc.get("fcc")) read_fcc(*n, s);
@@ -254,58 +199,13 @@ class TomlReader {
         refuse_sphere_jams(s, contacts, velocity_at);
     }
 
-    // A sphere in a straight row of touching spheres from wall to wall (or alone as wide as the
-    // box) that moves along the row: the row cannot move, so the engines would collide at t = 0
-    // forever. Named at its velocity, as 2D scenes name such discs (scene_check.cpp). Walled
-    // boxes only; other jams (rings around a periodic box, bent rows) are caught by the engines
-    // (sim::instant_collision_limit).
+    // The first jammed sphere (toml_text.hpp), named at its velocity.
     void refuse_sphere_jams(const SphereScene& s,
                             const std::vector<std::pair<std::size_t, std::size_t>>& contacts,
                             const std::vector<const toml::node*>& velocity_at) const {
-        if (s.box.boundary != Boundary::walls) return;
-        const std::size_t n = s.spheres.size();
-        const double straight = std::sqrt(contact_tolerance);  // as rows of discs
-        for (int k = 0; k < 3; ++k) {
-            std::vector<std::size_t> parent(n);
-            for (std::size_t i = 0; i < n; ++i) parent[i] = i;
-            const auto find = [&](std::size_t i) {
-                while (parent[i] != i) i = parent[i] = parent[parent[i]];
-                return i;
-            };
-            for (const auto& [i, j] : contacts) {
-                Vec3 d = s.spheres[j].position - s.spheres[i].position;
-                axis(d, k) = 0.0;  // what is left is the offset across the row
-                if (norm(d) > straight * (s.spheres[i].radius + s.spheres[j].radius)) continue;
-                parent[std::max(find(i), find(j))] = std::min(find(i), find(j));
-            }
-            std::vector<std::uint8_t> walls(n, 0);  // 1: touches the low wall, 2: the high one
-            std::vector<std::size_t> size(n, 0);
-            const double extent = axis(s.box.extent(), k);
-            for (std::size_t i = 0; i < n; ++i) {
-                const Sphere& q = s.spheres[i];
-                const double slack = contact_tolerance * q.radius;
-                const std::size_t root = find(i);
-                if (axis(q.position, k) - q.radius <= slack) walls[root] |= 1;
-                if (axis(q.position, k) + q.radius >= extent - slack) walls[root] |= 2;
-                ++size[root];
-            }
-            for (std::size_t i = 0; i < n; ++i) {
-                const std::size_t root = find(i);
-                if (walls[root] != 3 || axis(s.spheres[i].velocity, k) == 0.0) continue;
-                const std::string name(1, "xyz"[k]);
-                const std::string where =
-                    size[root] == 1 ? "it is as wide as the box along " + name
-                                    : "it is wedged between the walls " + name + " = 0 and " +
-                                          name + " = " + num(extent) + " in a straight row of " +
-                                          std::to_string(size[root]) + " touching spheres";
-                fail(*velocity_at[i], "sphere[" + std::to_string(i) + "].velocity",
-                     "jammed: " + where + ", so it cannot move along " + name +
-                         ", but its velocity has a " + name +
-                         " component (the engines would collide at t = 0 forever); leave a "
-                         "gap, or give it no velocity along " +
-                         name);
-            }
-        }
+        if (const std::optional<toml_text::SphereJam> jam = toml_text::find_sphere_jam(s, contacts))
+            fail(*velocity_at[jam->sphere], "sphere[" + std::to_string(jam->sphere) + "].velocity",
+                 jam->message);
     }
 
     void read_fcc(const toml::node& n, SphereScene& s) const {
@@ -556,17 +456,23 @@ class TomlReader {
         return {byte(1), byte(3), byte(5)};
     }
 
-    void read_box(const toml::node& n) {
+    /// The [box] table of either dimension: a 2D box has no depth (a 2D scene's `box.depth` was
+    /// refused before, as a 3D key).
+    template <typename SceneBox>
+    void read_box(const toml::node& n, SceneBox& box) const {
         const toml::table& t = table_at(n, "box");
         check_keys(t, "box", box_keys);
-        if (const toml::node* v = t.get("width")) scene_.box.width = box_side(*v, "box.width");
-        if (const toml::node* v = t.get("height")) scene_.box.height = box_side(*v, "box.height");
+        if (const toml::node* v = t.get("width")) box.width = box_side(*v, "box.width");
+        if (const toml::node* v = t.get("height")) box.height = box_side(*v, "box.height");
+        if constexpr (requires { box.depth; }) {
+            if (const toml::node* v = t.get("depth")) box.depth = box_side(*v, "box.depth");
+        }
         if (const toml::node* v = t.get("boundary")) {
             const std::string b = text_value(*v, "box.boundary");
             if (b == "walls") {
-                scene_.box.boundary = Boundary::walls;
+                box.boundary = Boundary::walls;
             } else if (b == "periodic") {
-                scene_.box.boundary = Boundary::periodic;
+                box.boundary = Boundary::periodic;
             } else {
                 fail(*v, "box.boundary", "expected \"walls\" or \"periodic\" (got \"" + b + "\")");
             }
@@ -864,48 +770,7 @@ class TomlReader {
     std::uintmax_t included_bytes_ = 0;            ///< read through `include` so far
 };
 
-// Optimal string alignment distance: insertions, deletions, substitutions and swaps of two
-// neighbouring letters ("titel" -> "title") each cost 1.
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-    const std::size_t w = b.size() + 1;
-    std::vector<std::size_t> d((a.size() + 1) * w);
-    for (std::size_t i = 0; i <= a.size(); ++i) d[i * w] = i;
-    for (std::size_t j = 0; j <= b.size(); ++j) d[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
-            std::size_t best = std::min(
-                {d[(i - 1) * w + j] + 1, d[i * w + j - 1] + 1, d[(i - 1) * w + j - 1] + cost});
-            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
-                best = std::min(best, d[(i - 2) * w + j - 2] + 1);
-            d[i * w + j] = best;
-        }
-    }
-    return d[a.size() * w + b.size()];
-}
-
 }  // namespace
-
-std::string nearest_name(std::string_view word, const std::vector<std::string>& candidates) {
-    std::string best;
-    std::size_t best_distance = 0;
-    for (const std::string& c : candidates) {
-        // The distance is at least the difference in length: a candidate that far off can never
-        // be suggested, and measuring it would cost a table of word x candidate (a 10 MB key:
-        // seconds and a gigabyte).
-        const std::size_t longer = std::max(word.size(), c.size());
-        const std::size_t shorter = std::min(word.size(), c.size());
-        if (longer - shorter > std::max<std::size_t>(1, longer / 3)) continue;
-        const std::size_t d = edit_distance(word, c);
-        if (best.empty() || d < best_distance) {
-            best = c;
-            best_distance = d;
-        }
-    }
-    // A typo changes a few letters; beyond a third of the word it is a different word.
-    const std::size_t allowed = std::max<std::size_t>(1, std::max(word.size(), best.size()) / 3);
-    return best_distance <= allowed ? best : std::string();
-}
 
 Scene parse_toml_scene(std::string_view text, const std::string& file_label,
                        const std::filesystem::path& base_dir, const SceneOptions& options) {
