@@ -122,17 +122,9 @@ void run(const HeapCli& v) {
     const show::HeapLesson lesson = lesson_of(v);
     check_legible(lesson.record(), v);
     const LessonGeometry geometry = lesson_geometry_of(v.video);
-    if (given(v.video.at_opt) && !(v.video.at >= 0.0 && v.video.at <= lesson.duration())) {
-        throw_option_error("--at", fmt::format("{}", v.video.at),
-                           fmt::format("a time within the video, 0..{:.2f} s", lesson.duration()));
-    }
-    const OutputChoice output = lesson_output_of(v.video, "heap");
-    const SubtitleOutput subtitles = subtitle_output_of(v.video, output);
-    const ChapterOutput chapters = chapter_output_of(v.video, output, lesson.name());
-    if (output.default_path) std::filesystem::create_directories(output.path.parent_path());
-    video::check_output_writable(
-        output.path, !output.still && output.format == video::VideoFormat::png_sequence);
-    video::set_libav_verbose(v.video.verbose);
+    const LessonDestination destination =
+        lesson_destination_of(v.video, "heap", lesson.duration(), lesson.name());
+    const OutputChoice& output = destination.output;
 
     render::HeapViewConfig config;
     config.font_path = find_drawing_font(v.video.font);
@@ -143,11 +135,13 @@ void run(const HeapCli& v) {
     config.theme = theme;
     render::HeapRenderer renderer(config, render::Backend::automatic, print_notice);
 
-    const double still_time = given(v.video.at_opt) ? v.video.at : lesson.duration();
+    const double still_time = destination.still_time;
     const LessonVideoSummary written = write_lesson(
         output, geometry, progress_mode, lesson.duration(), still_time,
-        [&](double t, Image& frame) { renderer.render(lesson.frame_at(t), frame); }, subtitles,
-        output.still ? Cues{} : show::heap_subtitle_cues(lesson, geometry.fps), chapters);
+        [&](double t, Image& frame) { renderer.render(lesson.frame_at(t), frame); },
+        destination.subtitles,
+        output.still ? Cues{} : show::heap_subtitle_cues(lesson, geometry.fps),
+        destination.chapters);
     if (output.still) {
         std::printf("%s: %dx%d PNG at %.2f s of a %.2f s video of %s\n",
                     printable_text(output.path.string()).c_str(), geometry.width, geometry.height,

@@ -5,12 +5,14 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <optional>
 #include <utility>
 
 #include "cli_numbers.hpp"
 #include "collide/error.hpp"
 #include "collide/show/chapters.hpp"
+#include "collide/video/output.hpp"
 #include "collide/video/video_writer.hpp"
 #include "font_search.hpp"
 #include "interrupt.hpp"
@@ -44,6 +46,24 @@ LessonGeometry lesson_geometry_of(const LessonVideoCli& v, FrameSize minimum,
     }
     if (given(v.fps_opt)) g.fps = checked_fps(v.fps);
     return g;
+}
+
+LessonDestination lesson_destination_of(const LessonVideoCli& v, std::string_view stem,
+                                        double duration, const std::string& title) {
+    if (given(v.at_opt) && !(v.at >= 0.0 && v.at <= duration)) {
+        throw_option_error("--at", fmt::format("{}", v.at),
+                           fmt::format("a time within the video, 0..{:.2f} s", duration));
+    }
+    LessonDestination d;
+    d.output = lesson_output_of(v, stem);
+    d.subtitles = subtitle_output_of(v, d.output);
+    d.chapters = chapter_output_of(v, d.output, title);
+    if (d.output.default_path) std::filesystem::create_directories(d.output.path.parent_path());
+    video::check_output_writable(
+        d.output.path, !d.output.still && d.output.format == video::VideoFormat::png_sequence);
+    video::set_libav_verbose(v.verbose);
+    d.still_time = given(v.at_opt) ? v.at : duration;
+    return d;
 }
 
 namespace {

@@ -32,6 +32,22 @@ struct LessonGeometry {
 [[nodiscard]] LessonGeometry lesson_geometry_of(const LessonVideoCli& v, FrameSize minimum = {},
                                                 std::string_view what_stays_legible = {});
 
+/// Where a drawn lesson of a known duration goes, resolved and checked before anything is drawn.
+struct LessonDestination {
+    OutputChoice output;
+    SubtitleOutput subtitles;
+    ChapterOutput chapters;
+    double still_time = 0.0;  ///< the time a still shows: --at, else the end
+};
+
+/// The set-up `collide heap` and `collide puzzle` share, in this order: --at refused outside
+/// 0..duration; the output (default path under out/, named after `stem`), its subtitles and
+/// chapters (`title`: the chapters' title); the default path's folder created, the destination
+/// checked writable; libav's verbosity set.
+[[nodiscard]] LessonDestination lesson_destination_of(const LessonVideoCli& v,
+                                                      std::string_view stem, double duration,
+                                                      const std::string& title);
+
 /// What was written, for the command's summary line.
 struct LessonVideoSummary {
     std::int64_t frames = 0;

@@ -62,17 +62,9 @@ void render_puzzle_video(const puzzle::Board& start,
     const ProgressMode progress_mode = parse_progress_mode(v.progress);
     const LessonGeometry geometry = geometry_of(v);
     const show::PuzzleLesson frames(start, results, v.code);
-    if (given(v.at_opt) && !(v.at >= 0.0 && v.at <= frames.duration())) {
-        throw_option_error("--at", fmt::format("{}", v.at),
-                           fmt::format("a time within the video, 0..{:.2f} s", frames.duration()));
-    }
-    const OutputChoice output = output_of(v);
-    const SubtitleOutput subtitles = subtitle_output_of(v, output);
-    const ChapterOutput chapters = chapter_output_of(v, output, frames.name());
-    if (output.default_path) std::filesystem::create_directories(output.path.parent_path());
-    video::check_output_writable(
-        output.path, !output.still && output.format == video::VideoFormat::png_sequence);
-    video::set_libav_verbose(v.verbose);
+    const LessonDestination destination =
+        lesson_destination_of(v, "puzzle", frames.duration(), frames.name());
+    const OutputChoice& output = destination.output;
 
     render::PuzzleViewConfig config;
     config.font_path = find_drawing_font(v.font);
@@ -81,11 +73,13 @@ void render_puzzle_video(const puzzle::Board& start,
     config.theme = render::parse_theme(v.theme, "--theme");
     render::PuzzleRenderer renderer(config, render::Backend::automatic, print_notice);
 
-    const double still_time = given(v.at_opt) ? v.at : frames.duration();
+    const double still_time = destination.still_time;
     const LessonVideoSummary written = write_lesson(
         output, geometry, progress_mode, frames.duration(), still_time,
-        [&](double t, Image& frame) { renderer.render(frames.frame_at(t), frame); }, subtitles,
-        output.still ? Cues{} : show::puzzle_subtitle_cues(frames, geometry.fps), chapters);
+        [&](double t, Image& frame) { renderer.render(frames.frame_at(t), frame); },
+        destination.subtitles,
+        output.still ? Cues{} : show::puzzle_subtitle_cues(frames, geometry.fps),
+        destination.chapters);
     if (output.still) {
         std::printf("%s: %dx%d PNG at %.2f s of a %.2f s video\n", output.path.string().c_str(),
                     geometry.width, geometry.height, still_time, frames.duration());
