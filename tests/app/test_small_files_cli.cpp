@@ -31,7 +31,7 @@ int png_colour_type(const fs::path& path) {
 
 }  // namespace
 
-TEST_CASE("thumbnail and PNG frames are RGB PNGs; the size printed is in kB of 1000 bytes") {
+TEST_CASE("thumbnail and PNG frames are RGB PNGs, and the size printed is in kB of 1000 bytes") {
     TempDir dir("small_files");
     for (const char* size : {"320x180", "641x359"}) {
         CAPTURE(size);
