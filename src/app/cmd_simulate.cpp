@@ -109,6 +109,12 @@ const char* kind_name(CollisionKind kind) {
     return "?";
 }
 
+/// `options` with the interrupt flag: building the engine of a large scene takes seconds.
+EngineOptions stoppable(EngineOptions options, const InterruptGuard& interrupts) {
+    options.stop = &interrupts.flag();
+    return options;
+}
+
 /// Runs `engine` to --until with the events log and the interrupt flag, and prints its report:
 /// `fields` first, then the measurements (`extra` after them).
 void run_to_end(const SimulateOptions& options, InterruptGuard& interrupts, EngineBase& engine,
@@ -152,7 +158,8 @@ void run_simulate_spheres(const SimulateOptions& options, const EngineOptions& e
         log = std::make_unique<EventsLog>(options.events_log);
         log->write("t,kind,a,b\n");
     }
-    std::unique_ptr<SphereEngine> engine = make_engine(scene, engine_options);
+    std::unique_ptr<SphereEngine> engine =
+        make_engine(scene, stoppable(engine_options, interrupts));
     std::vector<ReportField> fields{{"scene", scene.name},
                                     {"engine", std::string(to_string(engine_options.engine))}};
     if (engine_options.engine == EngineKind::classic)
@@ -191,7 +198,7 @@ void run_simulate(const SimulateOptions& options) {
         }
         log->write("t,kind,a,b\n");
     }
-    std::unique_ptr<Engine> engine = make_engine(scene, engine_options);
+    std::unique_ptr<Engine> engine = make_engine(scene, stoppable(engine_options, interrupts));
     std::vector<ReportField> fields{{"scene", scene.name},
                                     {"engine", std::string(to_string(engine_options.engine))}};
     if (engine_options.engine == EngineKind::classic)

@@ -42,10 +42,11 @@ std::optional<CollisionRecord> matching_hit(const show::ReplayFailure& failure,
 void add_predictions(const Scene& scene, const RenderPlan& plan,
                      std::vector<show::ReplayFailure>& failures, const std::atomic<bool>* stop) {
     if (failures.empty()) return;
+    EngineOptions options = plan.event_engine;
+    options.stop = stop;  // building the engine of a large scene takes seconds too
     std::vector<CollisionRecord> hits;
     {
-        const std::unique_ptr<Engine> engine = make_engine(scene, plan.event_engine);
-        engine->set_stop_flag(stop);
+        const std::unique_ptr<Engine> engine = make_engine(scene, options);
         engine->set_collision_listener([&](const CollisionRecord& hit) {
             const bool involved =
                 std::any_of(failures.begin(), failures.end(), [&](const show::ReplayFailure& f) {
@@ -63,8 +64,7 @@ void add_predictions(const Scene& scene, const RenderPlan& plan,
     }
     std::sort(when.begin(), when.end(),
               [](const auto& x, const auto& y) { return x.first < y.first; });
-    const std::unique_ptr<Engine> engine = make_engine(scene, plan.event_engine);
-    engine->set_stop_flag(stop);
+    const std::unique_ptr<Engine> engine = make_engine(scene, options);
     for (const auto& [t, failure] : when) {
         engine->advance_to(std::max(t, engine->time()));
         const Snapshot snapshot = engine->snapshot();

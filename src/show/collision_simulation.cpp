@@ -58,9 +58,9 @@ CollisionSimulation::CollisionSimulation(SceneView scene, const CollisionSetting
                                          const std::atomic<bool>* stop)
     : settings_(settings) {
     const OverlayLevel level = settings.level;
-    const auto add = [&](const EngineOptions& options, bool time_driven,
-                         std::string title) -> Panel& {
+    const auto add = [&](EngineOptions options, bool time_driven, std::string title) -> Panel& {
         Panel panel;
+        options.stop = stop;  // building 4 M spheres' engine takes seconds
         if (scene.three_d()) {
             panel.sphere_engine = make_engine(*scene.spheres, options);
         } else {

@@ -26,23 +26,34 @@ std::unique_ptr<EngineOf<D>> make_classic_engine(const typename Space<D>::Scene&
         });
 }
 
-/// make_engine for either dimension: one choice of engine for discs and spheres.
+/// The engine named by options.engine, built (the fast engine looks at options.stop while it
+/// builds; the others copy the scene, O(N)).
 template <int D>
-std::unique_ptr<EngineOf<D>> make_engine_of(const typename Space<D>::Scene& scene,
-                                            const EngineOptions& options) {
+std::unique_ptr<EngineOf<D>> build_engine(const typename Space<D>::Scene& scene,
+                                          const EngineOptions& options) {
     switch (options.engine) {
         case EngineKind::fast:
             // Tiny periodic boxes (under three diameters) have no 3^D grid: the O(N) loop is
             // exact there.
             if (!sim::BasicFastEngine<D>::can_simulate(scene))
                 return make_classic_engine<D>(scene, EngineOptions{});
-            return std::make_unique<sim::BasicFastEngine<D>>(scene);
+            return std::make_unique<sim::BasicFastEngine<D>>(scene, options.stop);
         case EngineKind::classic:
             return make_classic_engine<D>(scene, options);
         case EngineKind::time:
             return std::make_unique<sim::BasicTimeEngine<D>>(scene, options);
     }
     throw_runtime_error("make_engine: no such engine kind");
+}
+
+/// make_engine for either dimension: one choice of engine for discs and spheres, stoppable
+/// from the start by options.stop.
+template <int D>
+std::unique_ptr<EngineOf<D>> make_engine_of(const typename Space<D>::Scene& scene,
+                                            const EngineOptions& options) {
+    std::unique_ptr<EngineOf<D>> engine = build_engine<D>(scene, options);
+    engine->set_stop_flag(options.stop);
+    return engine;
 }
 
 }  // namespace

@@ -59,6 +59,10 @@ constexpr std::uint32_t initial_cell_slots = 8;
 /// Slots per list to start with; lists that outgrow them double every list's slots.
 constexpr std::uint32_t initial_list_slots = 16;
 
+/// Particles between two looks at the stop flag while the engine is built (a few milliseconds of
+/// predictions or list gathering).
+constexpr std::uint32_t build_stop_poll_particles = 4096;
+
 /// The spheres' event calendar (pq::CalendarQueue): blocks that hold this many events on
 /// average (the heap of the current block stays small), and a ring of buckets reaching this
 /// many mean event intervals ahead (later events wait in the overflow list).
@@ -161,16 +165,22 @@ bool BasicFastEngine<D>::KeyLess::tie_break(const Key& x, const Key& y) const no
 }
 
 template <int D>
-BasicFastEngine<D>::BasicFastEngine(const SceneType& scene)
+BasicFastEngine<D>::BasicFastEngine(const SceneType& scene, const std::atomic<bool>* stop)
     : core_(scene),
       box_(scene.box),
       extent_(Space::extent(scene.box)),
       periodic_(scene.box.boundary == Boundary::periodic) {
+    this->set_stop_flag(stop);
     choose_grid(scene);
+    this->check_stop();
     place_discs(scene);
+    this->check_stop();
     if (lists()) build_all_lists();
     instant_limit_ = instant_collision_limit(p_.size());
-    for (std::uint32_t i = 0; i < p_.size(); ++i) predict(i);
+    for (std::uint32_t i = 0; i < p_.size(); ++i) {
+        if (i % build_stop_poll_particles == 0) this->check_stop();
+        predict(i);
+    }
     tune_calendar();
 }
 
@@ -940,7 +950,10 @@ void BasicFastEngine<D>::build_all_lists() {
     prefetch_records_ = p_.size() * sizeof(Particle) > records_in_cache;
     nbr_.assign(p_.size() * list_cap_, no_disc);
     nbr_count_.assign(p_.size(), 0);
-    for (std::uint32_t i = 0; i < p_.size(); ++i) gather_neighbours(i, true);
+    for (std::uint32_t i = 0; i < p_.size(); ++i) {
+        if (i % build_stop_poll_particles == 0) this->check_stop();
+        gather_neighbours(i, true);
+    }
 }
 
 template <int D>

@@ -13,6 +13,7 @@
 #include "collide/sim/engine.hpp"
 #include "collide/sim/fast_engine.hpp"
 #include "scene_fixtures.hpp"
+#include "sphere_fixtures.hpp"
 
 using namespace collide;
 using collide::test::lattice_fluid;
@@ -218,4 +219,54 @@ TEST_CASE("a time-driven step over many discs stops, and leaves the discs where 
             REQUIRE(norm(after.discs[i].position - before.discs[i].position) < 1e-12);
         }
     }
+}
+
+// A signal while a large scene's engine is built (issue 48, item 9): the fast engine predicts
+// every particle's first event in its constructor (4 M spheres: seconds), so make_engine takes
+// the flag in EngineOptions and looks at it while building.
+TEST_CASE("a set stop flag ends the building of every engine, and the flag stays with it") {
+    const SphereScene spheres = collide::test::fcc_fluid(12, 0.45);     // 6912 spheres, with lists
+    const Scene discs = lattice_fluid(90, 0.3, Boundary::periodic, 5);  // 8100 discs
+    for (const EngineChoice& kind : all_kinds) {
+        CAPTURE(kind.engine);
+        std::atomic<bool> stop{true};
+        EngineOptions options;
+        options.engine = parse_engine_kind(kind.engine);
+        options.dt = 1e-3;
+        options.stop = &stop;
+        const auto built = [&](const auto& scene) -> std::string {
+            try {
+                (void)make_engine(scene, options);
+            } catch (const Error& e) {
+                CHECK(e.kind() == ErrorKind::runtime);
+                return e.what();
+            }
+            return "";
+        };
+        const bool fast = kind.engine == std::string("fast");
+        // The classic and time-driven engines only copy the scene (O(N)) and stop in their loops.
+        CHECK(built(spheres) == (fast ? "simulation stopped" : ""));
+        CHECK(built(discs) == (fast ? "simulation stopped" : ""));
+        // Unset, the engine is built and keeps the flag: setting it stops the first advance.
+        stop = false;
+        std::unique_ptr<SphereEngine> engine = make_engine(spheres, options);
+        stop = true;
+        try {
+            engine->advance_to(10.0);
+            FAIL("advance_to ran to its end with the stop flag set");
+        } catch (const Error& e) {
+            CHECK(std::string(e.what()) == "simulation stopped");
+        }
+    }
+}
+
+TEST_CASE("the fast engine's constructor stops within a few thousand predictions of the flag") {
+    // Set before: the constructor throws before its predictions, whatever the scene's size;
+    // unset, it predicts every sphere's first event.
+    const SphereScene scene = collide::test::fcc_fluid(16, 0.3);  // 16384 spheres, no lists
+    const std::atomic<bool> stop{true};
+    CHECK_THROWS_WITH_AS(sim::BasicFastEngine<3>(scene, &stop), "simulation stopped", Error);
+    const std::atomic<bool> go{false};
+    const sim::BasicFastEngine<3> built(scene, &go);
+    CHECK(built.measurements().predictions >= scene.spheres.size());
 }

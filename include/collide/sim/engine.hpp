@@ -176,6 +176,12 @@ struct EngineOptions {
     pq::QueueKind pq;  ///< classic engine's queue (binary by default)
     double dt = 0.01;  ///< time-driven quantum
     OverlapDetection td_detect = OverlapDetection::all_pairs;  ///< time-driven overlap checks
+    /// The stop flag (EngineBase::set_stop_flag), given before the engine is built: building one
+    /// can take seconds (the fast engine predicts every sphere's first event; 4 M spheres take
+    /// about 10 s), and a signal must end the run within about a second. make_engine looks at it
+    /// every few thousand particles while building, throws Error(runtime, "simulation stopped")
+    /// once it is set, and hands it to the engine it returns. nullptr (the default): never stops.
+    const std::atomic<bool>* stop = nullptr;
 
     /// Throws Error(input) naming `dt_field` when dt is not finite and > 0 (the names are types
     /// already).
