@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "../support/png_bytes.hpp"
 #include "../support/temp_dir.hpp"
 #include "collide/image.hpp"
 #include "collide/video/png.hpp"
@@ -207,25 +208,11 @@ TEST_CASE("compare: clear messages for what is not a readable PNG, at once for F
 
 TEST_CASE("compare: a PNG larger than the largest frame is refused by its header, at once") {
     Fixture f;
-    // A valid 1-bit grey PNG of 23000 x 23000 (a few kB): zlib-compressed rows of zeros would do,
-    // but the header alone is what must be refused, so an IDAT is not needed.
-    const auto header_only = [](std::uint32_t w, std::uint32_t h) {
-        std::string bytes("\x89PNG\r\n\x1a\n", 8);
-        const auto be32 = [&](std::uint32_t v) {
-            for (int shift = 24; shift >= 0; shift -= 8)
-                bytes += static_cast<char>((v >> shift) & 0xff);
-        };
-        be32(13);
-        bytes += "IHDR";
-        be32(w);
-        be32(h);
-        bytes += std::string("\x01\x00\x00\x00\x00", 5);
-        be32(0);
-        return bytes;
-    };
+    // Only the header of a 1-bit grey PNG of up to 23000 x 23000 (a few bytes): what must be
+    // refused is the size it announces.
     for (const auto& [w, h] :
          {std::pair<std::uint32_t, std::uint32_t>{23000, 23000}, {8193, 100}, {100, 9000}}) {
-        std::ofstream(f.path("huge.png"), std::ios::binary) << header_only(w, h);
+        std::ofstream(f.path("huge.png"), std::ios::binary) << collide::test::png_header_only(w, h);
         const auto started = std::chrono::steady_clock::now();
         const auto r = run_collide("compare " + f.path("huge.png") + " " + f.path("huge.png") +
                                    " --diff " + f.path("d.png"));

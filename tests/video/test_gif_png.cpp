@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 #include <sys/stat.h>
 
+#include "../support/png_bytes.hpp"
 #include "collide/error.hpp"
 #include "collide/video/png.hpp"
 #include "collide/video/video_writer.hpp"
@@ -53,27 +54,6 @@ int png_colour_type(const std::string& bytes) {
     REQUIRE(bytes.size() > 25);
     REQUIRE(bytes.compare(12, 4, "IHDR") == 0);
     return static_cast<unsigned char>(bytes[25]);
-}
-
-/// The bytes of a PNG that is nothing but its signature, a header chunk for a `width` x `height`
-/// 1-bit grey image and an end chunk (CRCs zero: the reader must refuse it by its header).
-std::string png_header_only(std::uint32_t width, std::uint32_t height) {
-    std::string bytes("\x89PNG\r\n\x1a\n", 8);
-    const auto be32 = [&](std::uint32_t v) {
-        for (int shift = 24; shift >= 0; shift -= 8)
-            bytes += static_cast<char>((v >> shift) & 0xff);
-    };
-    be32(13);
-    bytes += "IHDR";
-    be32(width);
-    be32(height);
-    bytes +=
-        std::string("\x01\x00\x00\x00\x00", 5);  // 1 bit, grey, deflate, no filter, no interlace
-    be32(0);
-    be32(0);
-    bytes += "IEND";
-    be32(0);
-    return bytes;
 }
 
 std::string input_error_of(const std::filesystem::path& path) {
@@ -137,7 +117,7 @@ TEST_CASE("read_png refuses an image wider or taller than the largest frame befo
                                {4000000000u, 1}}) {
         CAPTURE(w);
         CAPTURE(h);
-        write_bytes(dir / "huge.png", png_header_only(w, h));
+        write_bytes(dir / "huge.png", collide::test::png_header_only(w, h));
         const std::string message = input_error_of(dir / "huge.png");
         CHECK(message.find(std::to_string(w) + "x" + std::to_string(h)) != std::string::npos);
         CHECK(message.find("8192x8192") != std::string::npos);
