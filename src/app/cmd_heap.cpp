@@ -2,7 +2,7 @@
 /// binary and d-ary heaps, the indexed heap's increase-key, heapsort), several implementations
 /// side by side, to MP4, GIF, a PNG sequence or one PNG. Validates everything (operations,
 /// options, legibility, destination) before anything is drawn, then renders every frame of the
-/// lesson (collide/show/heap_lesson.hpp, over the record of collide/sim/pq/heap_lesson.hpp)
+/// lesson (collide/show/heap_program.hpp, over the record of collide/sim/pq/heap_record.hpp)
 /// through HeapRenderer into the same VideoWriter as `collide render`.
 
 #include <fmt/core.h>
@@ -17,19 +17,19 @@
 #include <string>
 #include <vector>
 
+#include "algorithm_video.hpp"
 #include "cli_numbers.hpp"
 #include "collide/error.hpp"
 #include "collide/printable.hpp"
 #include "collide/render/heap_view.hpp"
 #include "collide/show/heap_code.hpp"
-#include "collide/show/heap_lesson.hpp"
+#include "collide/show/heap_program.hpp"
 #include "collide/show/subtitles.hpp"
-#include "collide/sim/pq/heap_lesson.hpp"
+#include "collide/sim/pq/heap_record.hpp"
 #include "collide/video/output.hpp"
 #include "collide/video/video_writer.hpp"
 #include "commands.hpp"
 #include "font_search.hpp"
-#include "lesson_video.hpp"
 #include "progress.hpp"
 #include "render_plan.hpp"
 
@@ -46,7 +46,7 @@ struct HeapCli {
     int index_base = 1;
     double pace = 0.8;
     bool code = false;
-    LessonVideoCli video;
+    AlgorithmVideoCli video;
 
     CLI::Option* ops_opt = nullptr;
     CLI::Option* sort_opt = nullptr;
@@ -61,15 +61,15 @@ show::HeapPacing pacing_of(double pace) {
 }
 
 /// The record of the operations (or of the heapsort); the options it reads were checked.
-pq::LessonRecord record_of(const HeapCli& v) {
+pq::HeapRecord record_of(const HeapCli& v) {
     const auto orientation = v.min ? pq::Orientation::min : pq::Orientation::max;
     if (given(v.sort_opt)) {
         if (given(v.impl_opt))
             throw_option_error("--impl", "--sort is heapsort on a binary heap; leave --impl out");
         const std::vector<pq::TraceKey> keys = pq::parse_sort_keys(v.sort, "--sort");
-        return pq::LessonRecord::heapsort(keys, orientation);
+        return pq::HeapRecord::heapsort(keys, orientation);
     }
-    const std::vector<pq::LessonOp> ops = pq::parse_lesson_ops(v.ops, "--ops");
+    const std::vector<pq::HeapOp> ops = pq::parse_heap_ops(v.ops, "--ops");
     std::vector<pq::QueueKind> kinds;
     for (const std::string& impl : v.impls) kinds.push_back(pq::parse_queue_kind(impl, "--impl"));
     if (kinds.empty()) kinds.push_back({pq::QueueFamily::binary, 2});
@@ -77,16 +77,16 @@ pq::LessonRecord record_of(const HeapCli& v) {
         throw_option_error("--impl", fmt::format("at most {} implementations side by side, got {}",
                                                  render::max_heap_panels, kinds.size()));
     }
-    return pq::LessonRecord::operations(ops, kinds, orientation, "--ops", "--impl");
+    return pq::HeapRecord::operations(ops, kinds, orientation, "--ops", "--impl");
 }
 
-show::HeapLesson lesson_of(const HeapCli& v) {
+show::HeapProgram lesson_of(const HeapCli& v) {
     if (given(v.ops_opt) == given(v.sort_opt))
         throw_option_error("--ops", "give either --ops \"P Q E * ...\" or --sort \"S O R T ...\"");
     if (v.index_base != 0 && v.index_base != 1)
         throw_option_error("--index-base", std::to_string(v.index_base), "0 or 1");
     const show::HeapPacing pacing = pacing_of(v.pace);
-    show::HeapLesson lesson(record_of(v), pacing, v.index_base);
+    show::HeapProgram lesson(record_of(v), pacing, v.index_base);
     if (v.code) {
         if (!show::heap_code_fits(lesson.record())) {
             throw_option_error("--code",
@@ -99,7 +99,7 @@ show::HeapLesson lesson_of(const HeapCli& v) {
 }
 
 /// Refuses a lesson whose queue holds more keys than the frame can show legibly.
-void check_legible(const pq::LessonRecord& record, const HeapCli& v) {
+void check_legible(const pq::HeapRecord& record, const HeapCli& v) {
     const std::size_t panels = record.panels().size();
     const std::size_t limit = render::max_legible_keys(panels, v.code);
     if (record.capacity() <= limit) return;
@@ -119,11 +119,11 @@ void run(const HeapCli& v) {
     // Validation: nothing is drawn, and no file is created, until all of it passes.
     const ProgressMode progress_mode = parse_progress_mode(v.video.progress);
     const render::Theme theme = render::parse_theme(v.video.theme, "--theme");
-    const show::HeapLesson lesson = lesson_of(v);
+    const show::HeapProgram lesson = lesson_of(v);
     check_legible(lesson.record(), v);
-    const LessonGeometry geometry = lesson_geometry_of(v.video);
-    const LessonDestination destination =
-        lesson_destination_of(v.video, "heap", lesson.duration(), lesson.name());
+    const AlgorithmVideoGeometry geometry = algorithm_video_geometry_of(v.video);
+    const AlgorithmVideoDestination destination =
+        algorithm_video_destination_of(v.video, "heap", lesson.duration(), lesson.name());
     const OutputChoice& output = destination.output;
 
     render::HeapViewConfig config;
@@ -136,7 +136,7 @@ void run(const HeapCli& v) {
     render::HeapRenderer renderer(config, render::Backend::automatic, print_notice);
 
     const double still_time = destination.still_time;
-    const LessonVideoSummary written = write_lesson(
+    const AlgorithmVideoSummary written = write_algorithm_video(
         output, geometry, progress_mode, lesson.duration(), still_time,
         [&](double t, Image& frame) { renderer.render(lesson.frame_at(t), frame); },
         destination.subtitles,
@@ -182,7 +182,7 @@ void add_heap_command(CLI::App& root) {
     cmd->add_flag("--code", v->code,
                   "Show the operation's pseudocode beside the heap, the line under way marked "
                   "(one heap panel: binary, dary:D, indexed, or --sort)");
-    add_lesson_video_options(*cmd, v->video, "heap", "e.g. 640x360");
+    add_algorithm_video_options(*cmd, v->video, "heap", "e.g. 640x360");
     cmd->footer(
         "Examples:\n"
         "  collide heap --ops \"P Q E * X A M * P L E *\" -o heap.mp4   # the lecture's trace\n"

@@ -17,7 +17,7 @@
 
 #include "cli_numbers.hpp"
 #include "collide/error.hpp"
-#include "collide/show/puzzle_lesson.hpp"
+#include "collide/show/puzzle_program.hpp"
 #include "collide/sim/pq/queue_kind.hpp"
 #include "collide/sim/puzzle/board.hpp"
 #include "collide/sim/puzzle/search.hpp"

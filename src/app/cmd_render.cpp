@@ -272,10 +272,9 @@ void add_shared_options(CLI::App& cmd, CliValues& v, bool video) {
 /// Everything that can be wrong with the request, found before any frame is drawn (and before
 /// the replay search, which may simulate for long: a bad output path is refused at once): the
 /// plan `draft` (plan_without_frames) with its frames laid out without replays.
-RenderPlan validated_plan(RenderPlan draft, const RenderRequest& request, const Scene& scene,
-                          const SphereScene* spheres) {
+RenderPlan validated_plan(RenderPlan draft, const RenderRequest& request, show::SceneView scene) {
     lay_out_frames(draft, request);
-    check_render_work(draft, request, scene, {}, spheres);
+    check_render_work(draft, request, scene);
     // The default directory is ours to create; a user-given one must exist already.
     if (draft.default_output) std::filesystem::create_directories(draft.output.parent_path());
     const bool directory =
@@ -286,17 +285,17 @@ RenderPlan validated_plan(RenderPlan draft, const RenderRequest& request, const 
 
 /// The plan `draft` with its frames laid out around the failures it replays: they take
 /// simulating (within the work limits validated_plan checked), which a signal stops, and then
-/// the signal is what ends the run. Spheres have no replay yet: `scene` is only their flat
-/// stand-in, whose physics is not the video's.
-RenderPlan with_replays(RenderPlan draft, const RenderRequest& request, const Scene& scene,
-                        const SphereScene* spheres, const InterruptGuard& interrupts) {
-    if (spheres != nullptr) {
+/// the signal is what ends the run. Spheres have no replay yet: their flat stand-in's physics
+/// is not the video's.
+RenderPlan with_replays(RenderPlan draft, const RenderRequest& request, show::SceneView scene,
+                        const InterruptGuard& interrupts) {
+    if (scene.three_d()) {
         lay_out_frames(draft, request);
         return draft;
     }
     lay_out_frames(draft, request, [&](const RenderPlan& plan) {
         try {
-            return find_replays(scene, plan, &interrupts.flag());
+            return find_replays(scene.discs(), plan, &interrupts.flag());
         } catch (const Error&) {
             interrupts.throw_if_requested();
             throw;
@@ -512,6 +511,8 @@ void run(const CliValues& values, bool still) {
     std::optional<Scene> stand_in;
     if (spheres != nullptr) stand_in = show::stand_in_scene(*spheres);
     const Scene& scene = spheres != nullptr ? *stand_in : std::get<Scene>(any_scene);
+    const show::SceneView view =
+        spheres != nullptr ? show::SceneView{*spheres, scene} : show::SceneView{scene};
     check_dimension_options(values, spheres != nullptr, values.scene);
     if (spheres != nullptr && values.code)
         throw_option_error("--code",
@@ -523,12 +524,12 @@ void run(const CliValues& values, bool still) {
     const render::Backend backend = gl_backend_of(values);
     const RenderRequest request = request_of(values, still);
     const RenderPlan draft = plan_without_frames(request, scene);
-    const RenderPlan checked = validated_plan(draft, request, scene, spheres);
+    const RenderPlan checked = validated_plan(draft, request, view);
     const OutputChoice output{checked.output, checked.format, checked.kind == OutputKind::still,
                               false};
     const SubtitleOutput subtitles = subtitle_output_of(values.video, output);
     const ChapterOutput chapters = chapter_output_of(values.video, output, scene.title);
-    const RenderPlan plan = with_replays(draft, request, scene, spheres, interrupts);
+    const RenderPlan plan = with_replays(draft, request, view, interrupts);
     video::set_libav_verbose(values.video.verbose);
     for (const std::string& line : plan.notices) print_notice(line);
     // Its temporary exists from here on, so an unwritable path fails before any frame.
@@ -574,8 +575,8 @@ void run(const CliValues& values, bool still) {
         hooks.commit_with.push_back(&*timeline_file);
     PipelineResult result;
     try {
-        result = run_render(scene, plan, hooks, layout_file ? &*layout_file : nullptr, subtitles,
-                            chapters, spheres);
+        result = run_render(view, plan, hooks, layout_file ? &*layout_file : nullptr, subtitles,
+                            chapters);
     } catch (...) {
         progress.finish();
         interrupts.throw_if_requested();  // whatever noticed it first: one wording, the signal

@@ -181,10 +181,10 @@ class CollisionJobFrames final : public FrameProgram {
 
 }  // namespace
 
-PipelineResult run_render(const Scene& scene, const RenderPlan& plan, const JobHooks& hooks,
+PipelineResult run_render(show::SceneView scene, const RenderPlan& plan, const JobHooks& hooks,
                           io::OutputFile* layout_file, const SubtitleOutput& subtitles,
-                          const ChapterOutput& chapters, const SphereScene* spheres) {
-    check_captions_fit(scene, plan);
+                          const ChapterOutput& chapters) {
+    check_captions_fit(scene.discs(), plan);
     VideoJob job;
     job.output.path = plan.output;
     job.output.format = plan.format;
@@ -213,8 +213,7 @@ PipelineResult run_render(const Scene& scene, const RenderPlan& plan, const JobH
     const JobResult written = run_video_job(
         job,
         [&](render::Backend backend) {
-            return std::make_unique<CollisionJobFrames>(show::SceneView{&scene, spheres}, plan,
-                                                        backend, hooks, result);
+            return std::make_unique<CollisionJobFrames>(scene, plan, backend, hooks, result);
         },
         job_hooks);
     result.frames = written.frames;

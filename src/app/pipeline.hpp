@@ -56,11 +56,9 @@ struct PipelineResult {
 /// sidecar as it says; the sidecar too appears only with the video.
 /// `chapters`: the timeline's chapters (show::timeline_chapters) go into the MP4, a chapters
 /// file and/or a slide folder as it says, likewise only with the video.
-/// `spheres` (nullptr: none): a 3D scene drawn as spheres, `scene` its stand-in
-/// (show::stand_in_scene).
-PipelineResult run_render(const Scene& scene, const RenderPlan& plan, const JobHooks& hooks,
+/// `scene`: discs, or spheres drawn as spheres and planned through their stand-in.
+PipelineResult run_render(show::SceneView scene, const RenderPlan& plan, const JobHooks& hooks,
                           io::OutputFile* layout_file = nullptr,
-                          const SubtitleOutput& subtitles = {}, const ChapterOutput& chapters = {},
-                          const SphereScene* spheres = nullptr);
+                          const SubtitleOutput& subtitles = {}, const ChapterOutput& chapters = {});
 
 }  // namespace collide::app

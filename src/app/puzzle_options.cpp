@@ -8,7 +8,7 @@
 namespace collide::app {
 
 void add_puzzle_video_options(CLI::App& cmd, PuzzleVideoCli& v) {
-    add_lesson_video_options(cmd, v, "puzzle", "at least 854x480, e.g. 960x540");
+    add_algorithm_video_options(cmd, v, "puzzle", "at least 854x480, e.g. 960x540");
     v.code_opt = cmd.add_flag(
         "--code", v.code,
         "Show the search loop's pseudocode beside one search (A* unless --method bfs), the line "

@@ -9,15 +9,15 @@
 #include <string>
 #include <vector>
 
+#include "algorithm_options.hpp"
 #include "cli_fwd.hpp"
 #include "collide/sim/puzzle/board.hpp"
 #include "collide/sim/puzzle/search.hpp"
-#include "lesson_options.hpp"
 
 namespace collide::app {
 
-/// The puzzle video's options: the drawn lessons' own (lesson_options.hpp) and --code.
-struct PuzzleVideoCli : LessonVideoCli {
+/// The puzzle video's options: the drawn lessons' own (algorithm_options.hpp) and --code.
+struct PuzzleVideoCli : AlgorithmVideoCli {
     bool code = false;  ///< --code: the search loop beside one search
     CLI::Option* code_opt = nullptr;
 };

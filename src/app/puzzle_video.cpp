@@ -1,6 +1,6 @@
 /// `collide puzzle`'s video: options resolved as `collide heap` resolves them (the extension
 /// decides the format unless --format says it; --last-frame writes one PNG; default paths under
-/// out/; --theme dark or light), then every frame from show::PuzzleLesson drawn by PuzzleRenderer
+/// out/; --theme dark or light), then every frame from show::PuzzleProgram drawn by PuzzleRenderer
 /// into the VideoWriter.
 
 #include "puzzle_video.hpp"
@@ -15,14 +15,14 @@
 #include <filesystem>
 #include <optional>
 
+#include "algorithm_video.hpp"
 #include "collide/error.hpp"
 #include "collide/render/puzzle_view.hpp"
-#include "collide/show/puzzle_lesson.hpp"
+#include "collide/show/puzzle_program.hpp"
 #include "collide/show/subtitles.hpp"
 #include "collide/video/output.hpp"
 #include "collide/video/video_writer.hpp"
 #include "font_search.hpp"
-#include "lesson_video.hpp"
 #include "progress.hpp"
 #include "render_plan.hpp"
 
@@ -34,11 +34,11 @@ namespace {
 constexpr FrameSize min_frame{854, 480};
 
 OutputChoice output_of(const PuzzleVideoCli& v) {
-    return lesson_output_of(v, "puzzle");
+    return algorithm_video_output_of(v, "puzzle");
 }
 
-LessonGeometry geometry_of(const PuzzleVideoCli& v) {
-    return lesson_geometry_of(v, min_frame, "legible boards and counters");
+AlgorithmVideoGeometry geometry_of(const PuzzleVideoCli& v) {
+    return algorithm_video_geometry_of(v, min_frame, "legible boards and counters");
 }
 
 }  // namespace
@@ -60,10 +60,10 @@ void render_puzzle_video(const puzzle::Board& start,
                          const std::vector<puzzle::SearchResult>& results,
                          const PuzzleVideoCli& v) {
     const ProgressMode progress_mode = parse_progress_mode(v.progress);
-    const LessonGeometry geometry = geometry_of(v);
-    const show::PuzzleLesson frames(start, results, v.code);
-    const LessonDestination destination =
-        lesson_destination_of(v, "puzzle", frames.duration(), frames.name());
+    const AlgorithmVideoGeometry geometry = geometry_of(v);
+    const show::PuzzleProgram frames(start, results, v.code);
+    const AlgorithmVideoDestination destination =
+        algorithm_video_destination_of(v, "puzzle", frames.duration(), frames.name());
     const OutputChoice& output = destination.output;
 
     render::PuzzleViewConfig config;
@@ -74,7 +74,7 @@ void render_puzzle_video(const puzzle::Board& start,
     render::PuzzleRenderer renderer(config, render::Backend::automatic, print_notice);
 
     const double still_time = destination.still_time;
-    const LessonVideoSummary written = write_lesson(
+    const AlgorithmVideoSummary written = write_algorithm_video(
         output, geometry, progress_mode, frames.duration(), still_time,
         [&](double t, Image& frame) { renderer.render(frames.frame_at(t), frame); },
         destination.subtitles,

@@ -1,14 +1,14 @@
 #pragma once
 /// \file
 /// The video of `collide puzzle` (collide-draw only): its options' validation, and the render loop
-/// from show::PuzzleLesson through PuzzleRenderer into the VideoWriter. The options themselves
+/// from show::PuzzleProgram through PuzzleRenderer into the VideoWriter. The options themselves
 /// are registered by puzzle_options.hpp.
 
 #include <vector>
 
+#include "algorithm_video.hpp"
 #include "collide/sim/puzzle/board.hpp"
 #include "collide/sim/puzzle/search.hpp"
-#include "lesson_video.hpp"
 #include "puzzle_options.hpp"
 
 namespace collide::app {

@@ -198,22 +198,22 @@ RunShape render_run_shape(const RenderPlan& plan) {
     return run;
 }
 
-void check_render_work(const RenderPlan& plan, const RenderRequest& request, const Scene& scene,
-                       const WorkLimits& limits, const SphereScene* spheres) {
+void check_render_work(const RenderPlan& plan, const RenderRequest& request, show::SceneView scene,
+                       const WorkLimits& limits) {
     const RunShape run = render_run_shape(plan);
     const WorkEstimate work =
-        spheres != nullptr ? estimate_work(*spheres, run) : estimate_work(scene, run);
-    const Culprits who = render_culprits(plan, request, scene);
+        scene.three_d() ? estimate_work(scene.spheres(), run) : estimate_work(scene.discs(), run);
+    const Culprits who = render_culprits(plan, request, scene.discs());
     check_finishable(run, work, who);
     if (request.no_limits) return;
     const WorkExcess excess = first_excess(work, limits);
     if (excess.what.empty()) return;
     const std::string instead = fmt::format("give --at <= {:.3g}, or a larger --speed",
                                             run.span * excess.fitting_fraction());
-    if (spheres != nullptr) {
-        refuse_excess(*spheres, run, excess, who, instead);
+    if (scene.three_d()) {
+        refuse_excess(scene.spheres(), run, excess, who, instead);
     } else {
-        refuse_excess(scene, run, excess, who, instead);
+        refuse_excess(scene.discs(), run, excess, who, instead);
     }
 }
 

@@ -11,6 +11,7 @@
 
 #include "collide/scene.hpp"
 #include "collide/scene3.hpp"
+#include "collide/show/scene_view.hpp"
 #include "collide/sim/engine.hpp"
 #include "collide/sim/work_estimate.hpp"
 #include "render_plan.hpp"
@@ -26,10 +27,9 @@ inline constexpr const char* insist_option = "--no-limits";
 /// Refuses a render / thumbnail whose work exceeds the limits (unless request.no_limits) or can
 /// never finish (always). Messages name the command-line option or the scene hint
 /// ("file:line: render.speed") responsible. Throws Error(input).
-/// `spheres` (nullptr: none): a 3D scene, `scene` its stand-in (show::stand_in_scene): the work
-/// is the spheres' (3D collision rates) and messages name spheres.
-void check_render_work(const RenderPlan& plan, const RenderRequest& request, const Scene& scene,
-                       const WorkLimits& limits = {}, const SphereScene* spheres = nullptr);
+/// A 3D `scene`'s work is the spheres' (3D collision rates) and messages name spheres.
+void check_render_work(const RenderPlan& plan, const RenderRequest& request, show::SceneView scene,
+                       const WorkLimits& limits = {});
 
 /// `collide check`: refuses a scene whose [render] hints make `collide render SCENE` (no options)
 /// refuse, naming the hint, so that check and render agree. Limits that only CLI options can

@@ -35,15 +35,6 @@ class FileDescriptor {
     int fd_;
 };
 
-std::string kind_of(mode_t mode) {
-    if (S_ISDIR(mode)) return "a directory";
-    if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
-    if (S_ISCHR(mode)) return "a character device";
-    if (S_ISBLK(mode)) return "a block device";
-    if (S_ISSOCK(mode)) return "a socket";
-    return "not a regular file";
-}
-
 std::string mebibytes(std::uintmax_t bytes) {
     return std::to_string(bytes >> 20) + " MiB";
 }
@@ -73,7 +64,7 @@ std::string read_scene_file(const std::filesystem::path& path) {
     }
     if (!S_ISREG(info.st_mode)) {
         throw_scene_error(name, 0, "",
-                          kind_of(info.st_mode) +
+                          io::file_type_name(info.st_mode) +
                               ", not a regular file: scenes are read from "
                               "regular files only");
     }

@@ -62,9 +62,9 @@ CollisionSimulation::CollisionSimulation(SceneView scene, const CollisionSetting
         Panel panel;
         options.stop = stop;  // building 4 M spheres' engine takes seconds
         if (scene.three_d()) {
-            panel.sphere_engine = make_engine(*scene.spheres, options);
+            panel.sphere_engine = make_engine(scene.spheres(), options);
         } else {
-            panel.engine = make_engine(*scene.discs, options);
+            panel.engine = make_engine(scene.discs(), options);
         }
         panel.base().set_stop_flag(stop);
         if (!time_driven && settings.queue_events > 0 &&

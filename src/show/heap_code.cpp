@@ -6,8 +6,8 @@ namespace collide::show {
 
 namespace {
 
-using pq::LessonOp;
-using pq::LessonStep;
+using pq::HeapOp;
+using pq::HeapStep;
 using pq::QueueFamily;
 
 /// What a line of a listing stands for: the kind of recorded step that carries it out. A line
@@ -65,19 +65,19 @@ void add_sink(std::vector<Line>& out, const Words& w) {
     out.push_back({2, "k = j", Role::none});
 }
 
-std::vector<Line> listing(LessonOp::Kind op, pq::Orientation orientation) {
+std::vector<Line> listing(HeapOp::Kind op, pq::Orientation orientation) {
     const Words w = words_of(orientation);
     const bool max = orientation == pq::Orientation::max;
     std::vector<Line> out;
     switch (op) {
-        case LessonOp::Kind::insert:
+        case HeapOp::Kind::insert:
             out.push_back({0, "insert(key):", Role::none});
             out.push_back({1, "last = last + 1", Role::none});
             out.push_back({1, "a[last] = key", Role::put_key});
             out.push_back({1, "swim(last)", Role::none});
             add_swim(out, w);
             break;
-        case LessonOp::Kind::remove:
+        case HeapOp::Kind::remove:
             out.push_back({0, std::string("remove_") + w.top + "():", Role::none});
             out.push_back({1, "exchange a[root], a[last]", Role::swap_root_last});
             out.push_back({1, "take out a[last]", Role::take_out});
@@ -85,7 +85,7 @@ std::vector<Line> listing(LessonOp::Kind op, pq::Orientation orientation) {
             out.push_back({1, "return the key taken out", Role::none});
             add_sink(out, w);
             break;
-        case LessonOp::Kind::increase:
+        case HeapOp::Kind::increase:
             out.push_back({0, "increase_key(i, key):", Role::none});
             out.push_back({1, "k = qp[i]", Role::none});
             out.push_back({1, "old = a[k]; a[k] = key", Role::set_key});
@@ -98,8 +98,8 @@ std::vector<Line> listing(LessonOp::Kind op, pq::Orientation orientation) {
                 add_sink(out, w);
             }
             break;
-        case LessonOp::Kind::build:
-        case LessonOp::Kind::sortdown:
+        case HeapOp::Kind::build:
+        case HeapOp::Kind::sortdown:
             // One listing for both passes: the class sees where the second starts.
             out.push_back({0, "heapsort(a):", Role::none});
             out.push_back({1, "for each parent k, last first:", Role::none});
@@ -115,47 +115,47 @@ std::vector<Line> listing(LessonOp::Kind op, pq::Orientation orientation) {
 }
 
 /// Whether the swim (true) or the sink (false) carries out the compares and exchanges of `op`.
-bool swims(LessonOp::Kind op, pq::Orientation orientation) {
-    if (op == LessonOp::Kind::insert) return true;
-    if (op == LessonOp::Kind::increase) return orientation == pq::Orientation::max;
+bool swims(HeapOp::Kind op, pq::Orientation orientation) {
+    if (op == HeapOp::Kind::insert) return true;
+    if (op == HeapOp::Kind::increase) return orientation == pq::Orientation::max;
     return false;
 }
 
-Role role_of(const pq::LessonPanel& panel, LessonOp::Kind op, pq::Orientation orientation,
-             const pq::LessonPanelOp& done, std::size_t s) {
-    const LessonStep& step = done.steps[s];
+Role role_of(const pq::HeapPanel& panel, HeapOp::Kind op, pq::Orientation orientation,
+             const pq::PanelOp& done, std::size_t s) {
+    const HeapStep& step = done.steps[s];
     const bool swim = swims(op, orientation);
     switch (step.kind) {
-        case LessonStep::Kind::appear:
+        case HeapStep::Kind::appear:
             return Role::put_key;
-        case LessonStep::Kind::change:
+        case HeapStep::Kind::change:
             return Role::set_key;
-        case LessonStep::Kind::remove:
+        case HeapStep::Kind::remove:
             return Role::take_out;
-        case LessonStep::Kind::sink:
-            return op == LessonOp::Kind::build ? Role::build_sink : Role::sortdown_shrink;
-        case LessonStep::Kind::shift:
+        case HeapStep::Kind::sink:
+            return op == HeapOp::Kind::build ? Role::build_sink : Role::sortdown_shrink;
+        case HeapStep::Kind::shift:
             return Role::none;  // the ordered array's: no heap listing has it
-        case LessonStep::Kind::compare: {
+        case HeapStep::Kind::compare: {
             if (step.i == step.j) return Role::check_key;  // increase-key: new against old
             const std::size_t d = panel.arity;
             const bool siblings = step.i > 0 && step.j > 0 && (step.i - 1) / d == (step.j - 1) / d;
             if (siblings) return Role::pick_child;
             return swim ? Role::swim_stop : Role::sink_stop;
         }
-        case LessonStep::Kind::exchange: {
-            if (op == LessonOp::Kind::remove) {
+        case HeapStep::Kind::exchange: {
+            if (op == HeapOp::Kind::remove) {
                 // The exchange of the root with the last comes before the removal; the sink's
                 // exchanges after it.
                 for (std::size_t k = s + 1; k < done.steps.size(); ++k) {
-                    if (done.steps[k].kind == LessonStep::Kind::remove) return Role::swap_root_last;
+                    if (done.steps[k].kind == HeapStep::Kind::remove) return Role::swap_root_last;
                 }
                 return Role::sink_exchange;
             }
-            if (op == LessonOp::Kind::sortdown) {
+            if (op == HeapOp::Kind::sortdown) {
                 // Every round of the sortdown is its exchange, then the sink it starts.
                 const bool next_sinks =
-                    s + 1 < done.steps.size() && done.steps[s + 1].kind == LessonStep::Kind::sink;
+                    s + 1 < done.steps.size() && done.steps[s + 1].kind == HeapStep::Kind::sink;
                 return next_sinks ? Role::sortdown_swap : Role::sink_exchange;
             }
             return swim ? Role::swim_exchange : Role::sink_exchange;
@@ -166,22 +166,22 @@ Role role_of(const pq::LessonPanel& panel, LessonOp::Kind op, pq::Orientation or
 
 }  // namespace
 
-bool heap_code_fits(const pq::LessonRecord& record) noexcept {
+bool heap_code_fits(const pq::HeapRecord& record) noexcept {
     if (record.panels().size() != 1) return false;
     const QueueFamily family = record.panels().front().kind.family;
     return family == QueueFamily::binary || family == QueueFamily::dary ||
            family == QueueFamily::indexed;
 }
 
-std::vector<view::CodeLineView> heap_code(LessonOp::Kind op, pq::Orientation orientation) {
+std::vector<view::CodeLineView> heap_code(HeapOp::Kind op, pq::Orientation orientation) {
     std::vector<view::CodeLineView> out;
     for (Line& line : listing(op, orientation)) out.push_back({line.indent, std::move(line.text)});
     return out;
 }
 
-std::optional<std::size_t> heap_code_line(const pq::LessonPanel& panel, LessonOp::Kind op,
-                                          pq::Orientation orientation,
-                                          const pq::LessonPanelOp& done, std::size_t s) {
+std::optional<std::size_t> heap_code_line(const pq::HeapPanel& panel, HeapOp::Kind op,
+                                          pq::Orientation orientation, const pq::PanelOp& done,
+                                          std::size_t s) {
     const Role role = role_of(panel, op, orientation, done, s);
     if (role == Role::none) return std::nullopt;
     const std::vector<Line> lines = listing(op, orientation);

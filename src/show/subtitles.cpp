@@ -98,7 +98,7 @@ std::string panel_lines(const std::vector<std::pair<std::string, std::string>>& 
 
 }  // namespace
 
-Cues heap_subtitle_cues(const HeapLesson& lesson, int fps) {
+Cues heap_subtitle_cues(const HeapProgram& lesson, int fps) {
     return sampled_cues(lesson.duration(), fps, [&lesson](double t) {
         const HeapMoment moment = lesson.moment_at(t);
         std::vector<std::pair<std::string, std::string>> panels;
@@ -110,7 +110,7 @@ Cues heap_subtitle_cues(const HeapLesson& lesson, int fps) {
     });
 }
 
-Cues puzzle_subtitle_cues(const PuzzleLesson& lesson, int fps) {
+Cues puzzle_subtitle_cues(const PuzzleProgram& lesson, int fps) {
     return sampled_cues(lesson.duration(), fps, [&lesson](double t) {
         const view::PuzzleFrameView frame = lesson.frame_at(t);
         std::vector<std::pair<std::string, std::string>> panels;

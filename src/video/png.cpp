@@ -160,15 +160,6 @@ std::string error_text(int error) {
     return std::error_code(error, std::generic_category()).message();
 }
 
-std::string kind_of(mode_t mode) {
-    if (S_ISDIR(mode)) return "a directory";
-    if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
-    if (S_ISCHR(mode)) return "a character device";
-    if (S_ISBLK(mode)) return "a block device";
-    if (S_ISSOCK(mode)) return "a socket";
-    return "not a regular file";
-}
-
 /// The whole of the regular file at `path`, at most max_png_file_bytes. Opens without blocking
 /// (a FIFO would wait for a writer forever) and checks what it opened (fstat on the descriptor),
 /// so a FIFO or a device is refused at once. Throws Error(input) naming the file.
@@ -181,7 +172,7 @@ std::vector<unsigned char> read_image_file(const std::filesystem::path& path) {
         throw_input_error("cannot read PNG '" + name + "': " + error_text(errno));
     }
     if (!S_ISREG(info.st_mode)) {
-        throw_input_error("cannot read PNG '" + name + "': " + kind_of(info.st_mode) +
+        throw_input_error("cannot read PNG '" + name + "': " + io::file_type_name(info.st_mode) +
                           ", not a regular file: images are read from regular files only");
     }
     const auto too_large = [&] {

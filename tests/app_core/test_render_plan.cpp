@@ -113,7 +113,7 @@ TEST_CASE(
     };
     const auto through_frames = [&](const RenderPlan& plan) {
         const show::CollisionSettings settings = collision_settings(plan);
-        show::CollisionSimulation source(show::SceneView{&scene}, settings);
+        show::CollisionSimulation source(show::SceneView{scene}, settings);
         show::CollisionState frame;
         for (std::int64_t k = 0; k < plan.clock.count; ++k) frame = source.state(k);
         return Result{source.measurements().front(), frame.panels.front().snapshot};
@@ -570,7 +570,7 @@ TEST_CASE("--dt list: one time-driven panel per step, each missing what its engi
     CHECK(plan.lesson.caption == show::step_list_caption);
     CHECK(plan.lesson.captions.empty());
     const show::CollisionSettings settings = collision_settings(plan);
-    show::CollisionSimulation source(show::SceneView{&scene}, settings);
+    show::CollisionSimulation source(show::SceneView{scene}, settings);
     show::CollisionState frame;
     for (std::int64_t k = 0; k < plan.timeline.frame_count(); ++k) frame = source.state(k);
     REQUIRE(frame.panels.size() == 4);

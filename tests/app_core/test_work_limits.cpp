@@ -29,7 +29,7 @@ std::string render_refusal(const RenderRequest& request, const Scene& scene,
                            const WorkLimits& limits = {}) {
     return input_error_message([&] {
         const RenderPlan plan = plan_render(request, scene);
-        check_render_work(plan, request, scene, limits);
+        check_render_work(plan, request, show::SceneView{scene}, limits);
     });
 }
 

@@ -10,42 +10,42 @@
 
 #include "../support/input_error.hpp"
 #include "collide/show/heap_code.hpp"
-#include "collide/show/heap_lesson.hpp"
+#include "collide/show/heap_program.hpp"
 
 using namespace collide;
-using collide::show::HeapLesson;
+using collide::show::HeapProgram;
 using collide::test::contains;
 using collide::test::input_error_message;
-using pq::LessonOp;
-using pq::LessonStep;
+using pq::HeapOp;
+using pq::HeapStep;
 
 namespace {
 
 const show::HeapPacing pacing{1.0, 0.5, 1.0, 2.0};
 
-HeapLesson with_code(pq::LessonRecord record) {
-    HeapLesson lesson(std::move(record), pacing, 1);
+HeapProgram with_code(pq::HeapRecord record) {
+    HeapProgram lesson(std::move(record), pacing, 1);
     lesson.show_code(true);
     return lesson;
 }
 
-HeapLesson ops_lesson(const char* ops, pq::QueueKind kind, pq::Orientation orientation) {
+HeapProgram ops_lesson(const char* ops, pq::QueueKind kind, pq::Orientation orientation) {
     const std::vector<pq::QueueKind> kinds{kind};
-    return with_code(pq::LessonRecord::operations(pq::parse_lesson_ops(ops), kinds, orientation));
+    return with_code(pq::HeapRecord::operations(pq::parse_heap_ops(ops), kinds, orientation));
 }
 
-HeapLesson sort_lesson(const char* keys, pq::Orientation orientation) {
-    return with_code(pq::LessonRecord::heapsort(pq::parse_sort_keys(keys), orientation));
+HeapProgram sort_lesson(const char* keys, pq::Orientation orientation) {
+    return with_code(pq::HeapRecord::heapsort(pq::parse_sort_keys(keys), orientation));
 }
 
 /// What the first line of an operation's listing must name.
-std::string header_of(LessonOp::Kind op, pq::Orientation orientation) {
+std::string header_of(HeapOp::Kind op, pq::Orientation orientation) {
     switch (op) {
-        case LessonOp::Kind::insert:
+        case HeapOp::Kind::insert:
             return "insert(";
-        case LessonOp::Kind::remove:
+        case HeapOp::Kind::remove:
             return orientation == pq::Orientation::max ? "remove_max(" : "remove_min(";
-        case LessonOp::Kind::increase:
+        case HeapOp::Kind::increase:
             return "increase_key(";
         default:
             return "heapsort(";
@@ -54,24 +54,24 @@ std::string header_of(LessonOp::Kind op, pq::Orientation orientation) {
 
 /// The words the marked line must hold for step `s` of `done`, derived from the step itself:
 /// what it does, and to which slots.
-std::vector<std::string> expected_words(const HeapLesson& lesson, std::size_t op,
-                                        const pq::LessonPanelOp& done, std::size_t s) {
-    const pq::LessonRecord& record = lesson.record();
-    const LessonStep& step = done.steps[s];
-    const LessonOp::Kind kind = record.ops()[op].kind;
+std::vector<std::string> expected_words(const HeapProgram& lesson, std::size_t op,
+                                        const pq::PanelOp& done, std::size_t s) {
+    const pq::HeapRecord& record = lesson.record();
+    const HeapStep& step = done.steps[s];
+    const HeapOp::Kind kind = record.ops()[op].kind;
     const bool max = record.orientation() == pq::Orientation::max;
     const unsigned d = record.panels().front().arity;
     const auto parent = [d](std::size_t i) { return (i - 1) / d; };
     switch (step.kind) {
-        case LessonStep::Kind::appear:
+        case HeapStep::Kind::appear:
             return {"a[last] = key"};
-        case LessonStep::Kind::change:
+        case HeapStep::Kind::change:
             return {"a[k] = key"};
-        case LessonStep::Kind::remove:
+        case HeapStep::Kind::remove:
             return {"take out a[last]"};
-        case LessonStep::Kind::sink:
+        case HeapStep::Kind::sink:
             return {"sink(k)"};
-        case LessonStep::Kind::compare:
+        case HeapStep::Kind::compare:
             if (step.i == step.j) return {"key < old"};
             if (step.i > 0 && step.j > 0 && parent(step.i) == parent(step.j))
                 return {max ? "larger child" : "smaller child"};
@@ -80,13 +80,13 @@ std::vector<std::string> expected_words(const HeapLesson& lesson, std::size_t op
                 return {max ? "a[p] >= a[k]" : "a[p] <= a[k]", "stop"};
             REQUIRE(parent(step.j) == step.i);
             return {max ? "a[k] >= a[j]" : "a[k] <= a[j]", "stop"};
-        case LessonStep::Kind::exchange: {
+        case HeapStep::Kind::exchange: {
             const bool root_with_last = step.i == 0 && step.j + 1 == step.state.heap_size;
-            const bool sortdown_round = kind == LessonOp::Kind::sortdown &&
+            const bool sortdown_round = kind == HeapOp::Kind::sortdown &&
                                         s + 1 < done.steps.size() &&
-                                        done.steps[s + 1].kind == LessonStep::Kind::sink;
-            const bool removal_next = kind == LessonOp::Kind::remove && s + 1 < done.steps.size() &&
-                                      done.steps[s + 1].kind == LessonStep::Kind::remove;
+                                        done.steps[s + 1].kind == HeapStep::Kind::sink;
+            const bool removal_next = kind == HeapOp::Kind::remove && s + 1 < done.steps.size() &&
+                                      done.steps[s + 1].kind == HeapStep::Kind::remove;
             if (sortdown_round || removal_next) {
                 REQUIRE(root_with_last);
                 return {"exchange a[root], a[last]"};
@@ -95,7 +95,7 @@ std::vector<std::string> expected_words(const HeapLesson& lesson, std::size_t op
             REQUIRE(parent(step.j) == step.i);
             return {"exchange a[k], a[j]"};
         }
-        case LessonStep::Kind::shift:
+        case HeapStep::Kind::shift:
             break;
     }
     FAIL("a heap's record holds no shift");
@@ -104,8 +104,8 @@ std::vector<std::string> expected_words(const HeapLesson& lesson, std::size_t op
 
 /// Walks the lesson at 25 frames a second and checks every frame's listing against the record.
 /// Returns how many frames had a marked line.
-std::size_t check_frames(const HeapLesson& lesson) {
-    const pq::LessonRecord& record = lesson.record();
+std::size_t check_frames(const HeapProgram& lesson) {
+    const pq::HeapRecord& record = lesson.record();
     std::size_t marked = 0;
     for (double t = 0.0; t <= lesson.duration(); t += 0.04) {
         const show::HeapMoment moment = lesson.moment_at(t);
@@ -118,12 +118,12 @@ std::size_t check_frames(const HeapLesson& lesson) {
         CAPTURE(t);
         CHECK(contains(code.lines.front().text,
                        header_of(record.ops()[op].kind, record.orientation())));
-        const LessonStep* step = moment.panels.front().step;
+        const HeapStep* step = moment.panels.front().step;
         if (step == nullptr) {
             CHECK_FALSE(code.current.has_value());  // intro, pauses and outro: no line under way
             continue;
         }
-        const pq::LessonPanelOp& done = record.panels().front().ops[op];
+        const pq::PanelOp& done = record.panels().front().ops[op];
         const auto s = static_cast<std::size_t>(step - done.steps.data());
         REQUIRE(code.current.has_value());
         REQUIRE(*code.current < code.lines.size());
@@ -140,13 +140,13 @@ std::size_t check_frames(const HeapLesson& lesson) {
 }  // namespace
 
 TEST_CASE("heap code: inserts swim and removals sink, line by line (the lecture's trace)") {
-    const HeapLesson lesson =
+    const HeapProgram lesson =
         ops_lesson("P Q E * X A M * P L E *", {pq::QueueFamily::binary, 2}, pq::Orientation::max);
     CHECK(check_frames(lesson) > 100);
 }
 
 TEST_CASE("heap code: a min-oriented 3-heap turns the words around") {
-    const HeapLesson lesson =
+    const HeapProgram lesson =
         ops_lesson("T P R N H O A E I G S * * *", {pq::QueueFamily::dary, 3}, pq::Orientation::min);
     CHECK(check_frames(lesson) > 100);
     const view::HeapFrameView last = lesson.frame_at(lesson.duration());
@@ -155,13 +155,13 @@ TEST_CASE("heap code: a min-oriented 3-heap turns the words around") {
 }
 
 TEST_CASE("heap code: increase-key swims in a max-queue, sinks in a min-queue") {
-    const HeapLesson up =
+    const HeapProgram up =
         ops_lesson("5 9 3 7 * 3^12", {pq::QueueFamily::indexed, 2}, pq::Orientation::max);
     CHECK(check_frames(up) > 30);
-    const HeapLesson down =
+    const HeapProgram down =
         ops_lesson("1 5 3 9 7 1^8", {pq::QueueFamily::indexed, 2}, pq::Orientation::min);
     CHECK(check_frames(down) > 30);
-    const auto calls = [](const HeapLesson& l, const char* line) {
+    const auto calls = [](const HeapProgram& l, const char* line) {
         for (const view::CodeLineView& c : l.code_at(l.moment_at(l.duration())).lines) {
             if (c.text == line) return true;
         }
@@ -175,7 +175,7 @@ TEST_CASE("heap code: increase-key swims in a max-queue, sinks in a min-queue") 
 
 TEST_CASE("heap code: heapsort's two passes, construction then sortdown, in one listing") {
     for (const pq::Orientation o : {pq::Orientation::max, pq::Orientation::min}) {
-        const HeapLesson lesson = sort_lesson("S O R T E X A M P L E", o);
+        const HeapProgram lesson = sort_lesson("S O R T E X A M P L E", o);
         CHECK(check_frames(lesson) > 50);
         // Both passes mark lines of their own: the construction's sinks, the sortdown's rounds.
         std::vector<bool> marked_in_build;
@@ -188,7 +188,7 @@ TEST_CASE("heap code: heapsort's two passes, construction then sortdown, in one 
             marks.resize(f.code->lines.size());
             marks[*f.code->current] = true;
         }
-        const std::vector<view::CodeLineView> lines = show::heap_code(LessonOp::Kind::build, o);
+        const std::vector<view::CodeLineView> lines = show::heap_code(HeapOp::Kind::build, o);
         const auto line_of = [&](const std::string& text) {
             for (std::size_t k = 0; k < lines.size(); ++k) {
                 if (lines[k].text == text) return k;
@@ -208,13 +208,13 @@ TEST_CASE("heap code: heapsort's two passes, construction then sortdown, in one 
 TEST_CASE("heap code: only one heap panel can show its code") {
     const std::vector<pq::QueueKind> two{{pq::QueueFamily::unordered, 1},
                                          {pq::QueueFamily::binary, 2}};
-    HeapLesson lesson(
-        pq::LessonRecord::operations(pq::parse_lesson_ops("P Q *"), two, pq::Orientation::max),
-        pacing, 1);
+    HeapProgram lesson(
+        pq::HeapRecord::operations(pq::parse_heap_ops("P Q *"), two, pq::Orientation::max), pacing,
+        1);
     CHECK_FALSE(show::heap_code_fits(lesson.record()));
     CHECK(contains(input_error_message([&] { lesson.show_code(true); }), "code:"));
     CHECK_FALSE(lesson.frame_at(1.5).code.has_value());  // without --code: no listing
     const std::vector<pq::QueueKind> array{{pq::QueueFamily::ordered, 1}};
     CHECK_FALSE(show::heap_code_fits(
-        pq::LessonRecord::operations(pq::parse_lesson_ops("P Q *"), array, pq::Orientation::max)));
+        pq::HeapRecord::operations(pq::parse_heap_ops("P Q *"), array, pq::Orientation::max)));
 }

@@ -1,4 +1,4 @@
-// `collide puzzle --code` (collide/show/puzzle_code.hpp, PuzzleLesson with code): the search
+// `collide puzzle --code` (collide/show/puzzle_code.hpp, PuzzleProgram with code): the search
 // loop's listing, the walk of each expansion through it, and the marked line held against the
 // board and queue the frame shows at the same moment (from the search's own record).
 #include <doctest/doctest.h>
@@ -12,11 +12,11 @@
 
 #include "collide/error.hpp"
 #include "collide/show/puzzle_code.hpp"
-#include "collide/show/puzzle_lesson.hpp"
+#include "collide/show/puzzle_program.hpp"
 
 using namespace collide;
 using puzzle::Board;
-using show::PuzzleLesson;
+using show::PuzzleProgram;
 using show::SearchLine;
 
 namespace {
@@ -98,8 +98,8 @@ TEST_CASE("puzzle code: only one search goes beside the code") {
     const std::vector<puzzle::SearchResult> two{
         puzzle::breadth_first(twelve),
         puzzle::a_star(twelve, puzzle::Heuristic::manhattan, {pq::QueueFamily::binary, 2})};
-    CHECK_THROWS_AS(PuzzleLesson(twelve, two, true), Error);
-    const PuzzleLesson plain(twelve, two);
+    CHECK_THROWS_AS(PuzzleProgram(twelve, two, true), Error);
+    const PuzzleProgram plain(twelve, two);
     CHECK_FALSE(plain.shows_code());
     CHECK_FALSE(plain.frame_at(plain.search_start() + 1.0).code.has_value());
 }
@@ -112,7 +112,7 @@ TEST_CASE("puzzle code: the marked line follows the board and the queue on scree
                 : puzzle::a_star(twelve, puzzle::Heuristic::manhattan,
                                  {pq::QueueFamily::binary, 2})};
         const puzzle::SearchResult& r = results.front();
-        const PuzzleLesson lesson(twelve, results, true);
+        const PuzzleProgram lesson(twelve, results, true);
         REQUIRE(lesson.shows_code());
         const std::size_t total = r.expansions.size();
         REQUIRE(total > show::walked_expansions + 1);  // a fast middle to skip
@@ -122,7 +122,7 @@ TEST_CASE("puzzle code: the marked line follows the board and the queue on scree
         const double dt = show::search_line_seconds / 4.0;
         for (double t = 0.0; t < lesson.playback_start(); t += dt) {
             CAPTURE(t);
-            const PuzzleLesson::CodeMoment m = lesson.code_at(t);
+            const PuzzleProgram::CodeMoment m = lesson.code_at(t);
             const view::PuzzleFrameView f = lesson.frame_at(t);
             REQUIRE(f.panels.size() == 1);
             REQUIRE(f.code.has_value());

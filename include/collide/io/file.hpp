@@ -284,6 +284,10 @@ class CommitGroup {
 /// that must never outlive the process (the GIF writer's frame store). Throws Error(runtime).
 [[nodiscard]] File open_scratch_file(const std::filesystem::path& directory);
 
+/// What a file that is not a regular one is, for messages: "a directory", "a FIFO (named pipe)",
+/// "a character device", "a block device", "a socket", or "not a regular file".
+[[nodiscard]] std::string file_type_name(mode_t mode);
+
 namespace detail {
 
 /// The mkstemp template of a temporary for the file `name`, for process `pid`:

@@ -9,7 +9,7 @@
 /// collision video (same context backends, shaders and text blending), to RGBA images.
 ///
 /// The module sees plain values only (no simulation types): the presentation layer
-/// (collide/show/heap_lesson.hpp) fills a view::HeapFrameView (collide/view/heap.hpp) for every
+/// (collide/show/heap_program.hpp) fills a view::HeapFrameView (collide/view/heap.hpp) for every
 /// frame.
 ///
 ///     HeapViewConfig config; config.width = 1280; config.height = 720;

@@ -8,7 +8,7 @@
 /// videos (GlTarget), to RGBA images.
 ///
 /// The module sees plain values only (no search types): the presentation layer
-/// (collide/show/puzzle_lesson.hpp) fills a view::PuzzleFrameView (collide/view/puzzle.hpp) from
+/// (collide/show/puzzle_program.hpp) fills a view::PuzzleFrameView (collide/view/puzzle.hpp) from
 /// the recorded searches for every frame.
 
 #include <cstddef>

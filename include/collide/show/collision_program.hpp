@@ -29,6 +29,7 @@
 #include "collide/show/collision.hpp"
 #include "collide/show/failure_marks.hpp"
 #include "collide/show/replay.hpp"
+#include "collide/show/scene_view.hpp"
 #include "collide/show/sphere_camera.hpp"
 #include "collide/show/timeline.hpp"
 #include "collide/sim/engine.hpp"
@@ -50,14 +51,6 @@ struct LevelShows {
     bool time_unit = false;       ///< the clock's unit under it, the clock without its rate
 };
 [[nodiscard]] LevelShows level_shows(OverlayLevel level) noexcept;
-
-/// The scene as the engines run it: a 2D scene of discs, or a 3D scene of spheres seen through
-/// a camera (`spheres` set) with `discs` its stand-in (show::stand_in_scene).
-struct SceneView {
-    const Scene* discs = nullptr;          ///< always set
-    const SphereScene* spheres = nullptr;  ///< set for a 3D scene
-    [[nodiscard]] bool three_d() const noexcept { return spheres != nullptr; }
-};
 
 /// The video's options as the collision program needs them, resolved once (src/app's
 /// RenderPlan). Every field is valid once filled by the app.

@@ -2,7 +2,7 @@
 /// \file
 /// The pseudocode of `collide puzzle --code`: the search loop of the lecture (A* from a priority
 /// queue, breadth-first search from a FIFO queue) in the project's own words, and the lines an
-/// expansion walks through. PuzzleLesson (puzzle_lesson.hpp) paces its frames by these walks
+/// expansion walks through. PuzzleProgram (puzzle_program.hpp) paces its frames by these walks
 /// and marks the line under way; this header lets tests hold the walk against the record.
 /// Pure: no drawing.
 

@@ -6,8 +6,8 @@
 
 #include "collide/cue.hpp"
 #include "collide/show/collision.hpp"
-#include "collide/show/heap_lesson.hpp"
-#include "collide/show/puzzle_lesson.hpp"
+#include "collide/show/heap_program.hpp"
+#include "collide/show/puzzle_program.hpp"
 #include "collide/show/timeline.hpp"
 
 namespace collide::show {
@@ -31,8 +31,8 @@ struct TimedText {
 
 /// A heap lesson's cues: the step caption on screen at each frame of a video at `fps`, one cue
 /// per change (with several panels, one line per panel: "binary heap: insert S at a[11]").
-[[nodiscard]] Cues heap_subtitle_cues(const HeapLesson& lesson, int fps);
+[[nodiscard]] Cues heap_subtitle_cues(const HeapProgram& lesson, int fps);
 /// A puzzle lesson's cues: the panels' titles and captions on screen at each frame, likewise.
-[[nodiscard]] Cues puzzle_subtitle_cues(const PuzzleLesson& lesson, int fps);
+[[nodiscard]] Cues puzzle_subtitle_cues(const PuzzleProgram& lesson, int fps);
 
 }  // namespace collide::show

@@ -3,7 +3,7 @@
 /// What one frame of a priority-queue lesson (`collide heap`) shows, as plain values: the strip
 /// of operations, and per panel a queue's array (keys and their highlights), an exchange or a
 /// fade under way, the indexed heap's map, a title, counters and a caption. The presentation
-/// layer (collide/show/heap_lesson.hpp) fills it for frame k; the painter
+/// layer (collide/show/heap_program.hpp) fills it for frame k; the painter
 /// (collide/render/heap_view.hpp) draws it. Std-only: no simulation types, no drawing.
 
 #include <cstddef>

@@ -3,7 +3,7 @@
 /// What one frame of `collide puzzle` shows, as plain values: a heading and one or two panels,
 /// each with its search tree's deepest rows of small boards, the front of its queue, counters,
 /// and later its solution played back on a large board. The presentation layer
-/// (collide/show/puzzle_lesson.hpp) fills it for frame k; the painter
+/// (collide/show/puzzle_program.hpp) fills it for frame k; the painter
 /// (collide/render/puzzle_view.hpp) draws it. Std-only: no search types, no drawing.
 
 #include <cstddef>

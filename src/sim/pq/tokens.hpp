@@ -1,6 +1,6 @@
 #pragma once
 // Internal: the token syntax shared by `collide pq` (trace.cpp) and `collide heap`
-// (heap_lesson.cpp): white-space separated tokens; a key is a word of letters or an integer, and
+// (heap_record.cpp): white-space separated tokens; a key is a word of letters or an integer, and
 // one sequence never mixes the two. One definition, so that both commands read the same input the
 // same way and say the same thing about it.
 

@@ -1,4 +1,4 @@
-#include "lesson_video.hpp"
+#include "algorithm_video.hpp"
 
 #include <fmt/core.h>
 
@@ -21,7 +21,7 @@
 
 namespace collide::app {
 
-OutputChoice lesson_output_of(const LessonVideoCli& v, std::string_view stem) {
+OutputChoice algorithm_video_output_of(const AlgorithmVideoCli& v, std::string_view stem) {
     const auto if_given = [](const CLI::Option* option, const std::string& value) {
         return given(option) ? std::optional(value) : std::nullopt;
     };
@@ -29,10 +29,10 @@ OutputChoice lesson_output_of(const LessonVideoCli& v, std::string_view stem) {
                           v.last_frame || given(v.at_opt), stem);
 }
 
-LessonGeometry lesson_geometry_of(const LessonVideoCli& v, FrameSize minimum,
-                                  std::string_view what_stays_legible) {
+AlgorithmVideoGeometry algorithm_video_geometry_of(const AlgorithmVideoCli& v, FrameSize minimum,
+                                                   std::string_view what_stays_legible) {
     const QualityPreset preset = quality_preset(v.quality, "-q");
-    LessonGeometry g{preset.width, preset.height, preset.fps};
+    AlgorithmVideoGeometry g{preset.width, preset.height, preset.fps};
     if (given(v.size_opt)) {
         const FrameSize size = parse_frame_size(v.size, "--size");
         g.width = size.width;
@@ -48,14 +48,15 @@ LessonGeometry lesson_geometry_of(const LessonVideoCli& v, FrameSize minimum,
     return g;
 }
 
-LessonDestination lesson_destination_of(const LessonVideoCli& v, std::string_view stem,
-                                        double duration, const std::string& title) {
+AlgorithmVideoDestination algorithm_video_destination_of(const AlgorithmVideoCli& v,
+                                                         std::string_view stem, double duration,
+                                                         const std::string& title) {
     if (given(v.at_opt) && !(v.at >= 0.0 && v.at <= duration)) {
         throw_option_error("--at", fmt::format("{}", v.at),
                            fmt::format("a time within the video, 0..{:.2f} s", duration));
     }
-    LessonDestination d;
-    d.output = lesson_output_of(v, stem);
+    AlgorithmVideoDestination d;
+    d.output = algorithm_video_output_of(v, stem);
     d.subtitles = subtitle_output_of(v, d.output);
     d.chapters = chapter_output_of(v, d.output, title);
     if (d.output.default_path) std::filesystem::create_directories(d.output.path.parent_path());
@@ -70,9 +71,9 @@ namespace {
 
 /// A drawn lesson as the video job's frame program: frame k of a video shows time k / fps; a
 /// still's one frame shows `still_time`.
-class LessonProgram final : public FrameProgram {
+class AlgorithmFrameProgram final : public FrameProgram {
   public:
-    LessonProgram(const LessonDraw& draw, int fps, bool still, double still_time)
+    AlgorithmFrameProgram(const AlgorithmFrameDraw& draw, int fps, bool still, double still_time)
         : draw_(draw), fps_(fps), still_(still), still_time_(still_time) {}
 
     double frame(std::int64_t k, FrameUse use, Image& image) override {
@@ -82,7 +83,7 @@ class LessonProgram final : public FrameProgram {
     }
 
   private:
-    const LessonDraw& draw_;
+    const AlgorithmFrameDraw& draw_;
     int fps_;
     bool still_;
     double still_time_;
@@ -90,10 +91,12 @@ class LessonProgram final : public FrameProgram {
 
 }  // namespace
 
-LessonVideoSummary write_lesson(const OutputChoice& output, const LessonGeometry& geometry,
-                                ProgressMode progress_mode, double duration, double still_time,
-                                const LessonDraw& draw, const SubtitleOutput& subtitles,
-                                const Cues& cues, const ChapterOutput& chapters) {
+AlgorithmVideoSummary write_algorithm_video(const OutputChoice& output,
+                                            const AlgorithmVideoGeometry& geometry,
+                                            ProgressMode progress_mode, double duration,
+                                            double still_time, const AlgorithmFrameDraw& draw,
+                                            const SubtitleOutput& subtitles, const Cues& cues,
+                                            const ChapterOutput& chapters) {
     InterruptGuard interrupts;
     VideoJob job;
     job.output.path = output.path;
@@ -123,8 +126,8 @@ LessonVideoSummary write_lesson(const OutputChoice& output, const LessonGeometry
         written = run_video_job(
             job,
             [&](render::Backend /*the lessons' renderers are made by their commands*/) {
-                return std::make_unique<LessonProgram>(draw, geometry.fps, output.still,
-                                                       still_time);
+                return std::make_unique<AlgorithmFrameProgram>(draw, geometry.fps, output.still,
+                                                               still_time);
             },
             hooks);
     } catch (...) {

@@ -1,4 +1,4 @@
-// `collide heap` as a class sees it (collide/show/heap_lesson.hpp): the words of every step and
+// `collide heap` as a class sees it (collide/show/heap_program.hpp): the words of every step and
 // operation, the pacing (panels in lock-step, each operation as long as its longest panel), and
 // the frames the painter takes (highlights, an exchange under way, the indexed heap's map).
 #include <doctest/doctest.h>
@@ -9,11 +9,11 @@
 
 #include "../support/input_error.hpp"
 #include "collide/show/ease.hpp"
-#include "collide/show/heap_lesson.hpp"
+#include "collide/show/heap_program.hpp"
 
 using namespace collide;
 using collide::show::ease;
-using collide::show::HeapLesson;
+using collide::show::HeapProgram;
 using collide::test::contains;
 using collide::test::input_error_message;
 
@@ -21,14 +21,14 @@ namespace {
 
 const show::HeapPacing pacing{1.0, 0.5, 1.0, 2.0};
 
-HeapLesson lesson(const char* ops, std::vector<pq::QueueKind> kinds,
-                  pq::Orientation orientation = pq::Orientation::max, int index_base = 1) {
-    return {pq::LessonRecord::operations(pq::parse_lesson_ops(ops), kinds, orientation), pacing,
+HeapProgram lesson(const char* ops, std::vector<pq::QueueKind> kinds,
+                   pq::Orientation orientation = pq::Orientation::max, int index_base = 1) {
+    return {pq::HeapRecord::operations(pq::parse_heap_ops(ops), kinds, orientation), pacing,
             index_base};
 }
 
 /// The time at which step `step` of operation `op` starts, plus `into` of a step.
-double time_of(const HeapLesson& t, std::size_t op, std::size_t step, double into) {
+double time_of(const HeapProgram& t, std::size_t op, std::size_t step, double into) {
     double s = pacing.intro;
     for (std::size_t k = 0; k < op; ++k) {
         std::size_t steps = 0;
@@ -38,8 +38,8 @@ double time_of(const HeapLesson& t, std::size_t op, std::size_t step, double int
     return s + (static_cast<double>(step) + into) * pacing.pace;
 }
 
-bool has_caption(const HeapLesson::PanelText& panel, const std::string& text) {
-    for (const HeapLesson::OpText& op : panel.ops) {
+bool has_caption(const HeapProgram::PanelText& panel, const std::string& text) {
+    for (const HeapProgram::OpText& op : panel.ops) {
         if (std::find(op.captions.begin(), op.captions.end(), text) != op.captions.end())
             return true;
     }
@@ -58,11 +58,11 @@ TEST_CASE("heap lesson: slides ease in and out") {
 }
 
 TEST_CASE("heap lesson: the lecture's insert of S into a binary heap, in words") {
-    const HeapLesson t = lesson("T P R N H O A E I G S", {{pq::QueueFamily::binary, 2}});
-    const HeapLesson::PanelText& panel = t.text().front();
+    const HeapProgram t = lesson("T P R N H O A E I G S", {{pq::QueueFamily::binary, 2}});
+    const HeapProgram::PanelText& panel = t.text().front();
     CHECK(panel.title == "binary heap");
     CHECK(panel.start == "binary heap, max-oriented: empty");
-    const HeapLesson::OpText& insert_s = panel.ops[10];
+    const HeapProgram::OpText& insert_s = panel.ops[10];
     REQUIRE(insert_s.captions.size() == 6);  // appear, (compare, exchange) x 2, compare
     CHECK(insert_s.captions[0] == "insert S at a[11]");
     CHECK(insert_s.captions[1] == "insert S at a[11]; S > H: exchange");
@@ -73,9 +73,9 @@ TEST_CASE("heap lesson: the lecture's insert of S into a binary heap, in words")
 }
 
 TEST_CASE("heap lesson: remove-max in words, with 0-based slot names") {
-    const HeapLesson t =
+    const HeapProgram t =
         lesson("P Q E X A *", {{pq::QueueFamily::binary, 2}}, pq::Orientation::max, 0);
-    const HeapLesson::OpText& remove = t.text().front().ops.back();
+    const HeapProgram::OpText& remove = t.text().front().ops.back();
     REQUIRE(remove.captions.size() >= 3);
     CHECK(remove.captions[0] == "remove max: exchange the root X with the last, A");
     CHECK(remove.captions[1] == "remove max: X leaves a[4]");
@@ -84,10 +84,10 @@ TEST_CASE("heap lesson: remove-max in words, with 0-based slot names") {
 }
 
 TEST_CASE("heap lesson: the arrays show their scan and their shifts") {
-    const HeapLesson t =
+    const HeapProgram t =
         lesson("P Q E A *", {{pq::QueueFamily::unordered, 0}, {pq::QueueFamily::ordered, 0}});
-    const HeapLesson::PanelText& unordered = t.text()[0];
-    const HeapLesson::PanelText& ordered = t.text()[1];
+    const HeapProgram::PanelText& unordered = t.text()[0];
+    const HeapProgram::PanelText& ordered = t.text()[1];
     CHECK(has_caption(unordered, "insert P at a[1], the end: nothing else to do"));
     CHECK(has_caption(unordered, "scan for the max: Q > P, new max Q"));
     CHECK(has_caption(unordered, "remove max: exchange Q with the last, A"));
@@ -97,8 +97,8 @@ TEST_CASE("heap lesson: the arrays show their scan and their shifts") {
 }
 
 TEST_CASE("heap lesson: a min-queue's words") {
-    const HeapLesson t = lesson("P Q E", {{pq::QueueFamily::dary, 3}}, pq::Orientation::min);
-    const HeapLesson::PanelText& panel = t.text().front();
+    const HeapProgram t = lesson("P Q E", {{pq::QueueFamily::dary, 3}}, pq::Orientation::min);
+    const HeapProgram::PanelText& panel = t.text().front();
     CHECK(panel.title == "3-heap");
     CHECK(panel.start == "3-heap, min-oriented: empty");
     CHECK(has_caption(panel, "insert E at a[3]; E < P: exchange"));
@@ -106,10 +106,10 @@ TEST_CASE("heap lesson: a min-queue's words") {
 }
 
 TEST_CASE("heap lesson: increase-key through the indexed heap's map, in words") {
-    const HeapLesson t = lesson("5 9 3 7 * 3^12", {{pq::QueueFamily::indexed, 2}});
-    const HeapLesson::PanelText& panel = t.text().front();
+    const HeapProgram t = lesson("5 9 3 7 * 3^12", {{pq::QueueFamily::indexed, 2}});
+    const HeapProgram::PanelText& panel = t.text().front();
     CHECK(panel.title == "indexed binary heap");
-    const HeapLesson::OpText& increase = panel.ops.back();
+    const HeapProgram::OpText& increase = panel.ops.back();
     REQUIRE(increase.captions.size() >= 2);
     CHECK(increase.captions[0] == "increase 3 to 12: qp[] says 3 is at a[3]; set a[3] = 12");
     CHECK(increase.captions[1] == "increase 3 to 12; 12 > 3: a larger key may have to swim up");
@@ -117,11 +117,11 @@ TEST_CASE("heap lesson: increase-key through the indexed heap's map, in words") 
 }
 
 TEST_CASE("heap lesson: heapsort builds the heap, then sorts down, in words") {
-    const HeapLesson t(pq::LessonRecord::heapsort(pq::parse_sort_keys("S O R T E X A M P L E"),
-                                                  pq::Orientation::max),
-                       pacing, 1);
+    const HeapProgram t(pq::HeapRecord::heapsort(pq::parse_sort_keys("S O R T E X A M P L E"),
+                                                 pq::Orientation::max),
+                        pacing, 1);
     CHECK(t.op_labels() == std::vector<std::string>{"build", "sortdown"});
-    const HeapLesson::PanelText& panel = t.text().front();
+    const HeapProgram::PanelText& panel = t.text().front();
     CHECK(panel.title == "heapsort");
     CHECK(panel.start == "heapsort 11 keys into ascending order");
     CHECK(panel.ops[0].captions.front() == "build the heap: sink E at a[5]");
@@ -131,10 +131,10 @@ TEST_CASE("heap lesson: heapsort builds the heap, then sorts down, in words") {
     CHECK(panel.ops[1].captions[1].rfind("sortdown; sink E: ", 0) == 0);
     CHECK(panel.ops[1].summary.rfind("sortdown done: ", 0) == 0);
     // The sortdown's sinks are recorded, but its exchange already says which key sinks.
-    const pq::LessonPanelOp& sortdown = t.record().panels().front().ops[1];
+    const pq::PanelOp& sortdown = t.record().panels().front().ops[1];
     CHECK(panel.ops[1].shown.size() < sortdown.steps.size());
     for (const std::size_t s : panel.ops[1].shown)
-        CHECK(sortdown.steps[s].kind != pq::LessonStep::Kind::sink);
+        CHECK(sortdown.steps[s].kind != pq::HeapStep::Kind::sink);
     // The last words give the totals the counters show: one total on screen, not two.
     const view::HeapPanelView end = t.frame_at(t.duration()).panels.front();
     CHECK(end.caption == panel.ops[1].summary);
@@ -145,7 +145,7 @@ TEST_CASE("heap lesson: heapsort builds the heap, then sorts down, in words") {
 }
 
 TEST_CASE("heap lesson: the keys removed so far, as the trace's returned column") {
-    const HeapLesson t = lesson("P Q E * X A M *", {{pq::QueueFamily::binary, 2}});
+    const HeapProgram t = lesson("P Q E * X A M *", {{pq::QueueFamily::binary, 2}});
     using Keys = std::vector<std::string>;
     CHECK(t.frame_at(0.0).panels[0].returned.label == "returned:");
     CHECK(t.frame_at(0.0).panels[0].returned.keys == Keys{"-"});
@@ -157,12 +157,12 @@ TEST_CASE("heap lesson: the keys removed so far, as the trace's returned column"
 }
 
 TEST_CASE("heap lesson: panels move in lock-step, each operation paced by its longest panel") {
-    const HeapLesson t =
+    const HeapProgram t =
         lesson("P Q E *", {{pq::QueueFamily::unordered, 0}, {pq::QueueFamily::binary, 2}});
     double expected = pacing.intro + pacing.outro;
     for (std::size_t op = 0; op < 4; ++op) {
         std::size_t steps = 0;
-        for (const pq::LessonPanel& p : t.record().panels())
+        for (const pq::HeapPanel& p : t.record().panels())
             steps = std::max(steps, p.ops[op].steps.size());
         expected += static_cast<double>(steps) * pacing.pace + pacing.pause;
     }
@@ -176,7 +176,7 @@ TEST_CASE("heap lesson: panels move in lock-step, each operation paced by its lo
     CHECK(f.op == 0);
     for (const show::HeapPanelMoment& p : f.panels) {
         REQUIRE(p.step != nullptr);
-        CHECK(p.step->kind == pq::LessonStep::Kind::appear);
+        CHECK(p.step->kind == pq::HeapStep::Kind::appear);
         CHECK(p.progress == doctest::Approx(0.2));
     }
     // Counters never go down.
@@ -198,17 +198,17 @@ TEST_CASE("heap lesson: the pacing for a pace, and a pace of zero is refused") {
     const show::HeapPacing fast = show::heap_pacing(0.2);
     CHECK(fast.intro == 1.0);
     CHECK(fast.outro == 2.5);
-    const auto record = pq::LessonRecord::operations(
-        pq::parse_lesson_ops("P"), std::vector<pq::QueueKind>{{pq::QueueFamily::binary, 2}},
+    const auto record = pq::HeapRecord::operations(
+        pq::parse_heap_ops("P"), std::vector<pq::QueueKind>{{pq::QueueFamily::binary, 2}},
         pq::Orientation::max);
     CHECK(contains(input_error_message([&] {
-                       (void)HeapLesson(record, {0.0, 0.1, 0.0, 0.0});
+                       (void)HeapProgram(record, {0.0, 0.1, 0.0, 0.0});
                    }),
                    "pace: must be > 0"));
 }
 
 TEST_CASE("heap lesson: frames hold tokens, highlights, an exchange under way, counters, titles") {
-    const HeapLesson t = lesson("P Q", {{pq::QueueFamily::binary, 2}});
+    const HeapProgram t = lesson("P Q", {{pq::QueueFamily::binary, 2}});
     const view::HeapFrameView intro = t.frame_at(0.0);
     CHECK(!intro.current_token);
     CHECK(intro.tokens == std::vector<std::string>{"P", "Q"});
@@ -244,7 +244,7 @@ TEST_CASE("heap lesson: frames hold tokens, highlights, an exchange under way, c
 }
 
 TEST_CASE("heap lesson: the indexed heap's map, in handle order, with the exchange lit") {
-    const HeapLesson t = lesson("5 9 3", {{pq::QueueFamily::indexed, 2}}, pq::Orientation::max, 0);
+    const HeapProgram t = lesson("5 9 3", {{pq::QueueFamily::indexed, 2}}, pq::Orientation::max, 0);
     // insert 9: appear, compare 9 with 5, exchange (step 2).
     const view::HeapPanelView p = t.frame_at(time_of(t, 1, 2, 0.5)).panels[0];
     REQUIRE(p.show_map);
@@ -269,13 +269,12 @@ TEST_CASE("heap lesson: the indexed heap's map, in handle order, with the exchan
 }
 
 TEST_CASE("heap lesson: heapsort sets the sorted part apart, arrays are not trees") {
-    const HeapLesson sort(
-        pq::LessonRecord::heapsort(pq::parse_sort_keys("S O R T"), pq::Orientation::max), pacing,
-        1);
+    const HeapProgram sort(
+        pq::HeapRecord::heapsort(pq::parse_sort_keys("S O R T"), pq::Orientation::max), pacing, 1);
     const view::HeapPanelView end = sort.frame_at(sort.duration()).panels[0];
     CHECK(end.heap_size == 0);
     CHECK(end.title == "heapsort (ascending)");
-    const HeapLesson arrays = lesson("Q P *", {{pq::QueueFamily::ordered, 0}});
+    const HeapProgram arrays = lesson("Q P *", {{pq::QueueFamily::ordered, 0}});
     const view::HeapPanelView a = arrays.frame_at(arrays.duration()).panels[0];
     CHECK(!a.tree);
     CHECK(a.heap_size == SIZE_MAX);

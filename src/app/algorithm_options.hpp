@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// The drawn lessons' (`collide heap`, `collide puzzle`) video options, registered apart from the
-/// video loop (lesson_video.hpp) so that `collide`, which draws nothing, can parse a lesson's
+/// video loop (algorithm_video.hpp) so that `collide`, which draws nothing, can parse a lesson's
 /// command line too (collide_app_options: no GL, no encoder).
 
 #include <string_view>
@@ -12,12 +12,12 @@
 namespace collide::app {
 
 /// The lessons' video options are the one set of video options (video_options.hpp).
-using LessonVideoCli = VideoCli;
+using AlgorithmVideoCli = VideoCli;
 
 /// Registers the video options of a drawn lesson on `cmd` (video_options.hpp); `stem` names the
 /// default outputs (out/STEM.mp4, ...), `size_example` goes into --size's help. Every lesson
 /// takes --theme (default dark).
-void add_lesson_video_options(CLI::App& cmd, LessonVideoCli& v, std::string_view stem,
-                              std::string_view size_example);
+void add_algorithm_video_options(CLI::App& cmd, AlgorithmVideoCli& v, std::string_view stem,
+                                 std::string_view size_example);
 
 }  // namespace collide::app

@@ -1,4 +1,4 @@
-#include "collide/sim/pq/heap_lesson.hpp"
+#include "collide/sim/pq/heap_record.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -45,10 +45,10 @@ int order_of(const std::string& a, const std::string& b, bool numeric) {
 /// Turns one panel's record into steps, keeping the array the record implies.
 class Replayer {
   public:
-    Replayer(LessonPanel& panel, Orientation orientation, bool numeric)
+    Replayer(HeapPanel& panel, Orientation orientation, bool numeric)
         : panel_(panel), max_(orientation == Orientation::max), numeric_(numeric) {}
 
-    LessonState& state() { return state_; }
+    ArrayState& state() { return state_; }
 
     void begin_op() {
         steps_.clear();
@@ -61,13 +61,13 @@ class Replayer {
             state_.handles.push_back(handle);
         state_.heap_size = state_.keys.size();
         const std::size_t i = state_.keys.size() - 1;
-        add_step(LessonStep::Kind::appear, i, i);
+        add_step(HeapStep::Kind::appear, i, i);
     }
 
     void change(std::size_t i, const std::string& new_key) {
         changed_from_ = state_.keys[i];
         state_.keys[i] = new_key;
-        add_step(LessonStep::Kind::change, i, i).from = changed_from_;
+        add_step(HeapStep::Kind::change, i, i).from = changed_from_;
     }
 
     void apply(const QueueStep& e) {
@@ -84,7 +84,7 @@ class Replayer {
                 break;
             case QueueStep::Kind::sink:
                 state_.heap_size = e.j;
-                add_step(LessonStep::Kind::sink, e.i, e.j);
+                add_step(HeapStep::Kind::sink, e.i, e.j);
                 break;
         }
     }
@@ -95,7 +95,7 @@ class Replayer {
             throw_runtime_error("heap lesson: the record of " + to_string(panel_.kind) +
                                 " does not reproduce its array (a bug)");
         }
-        LessonPanelOp op;
+        PanelOp op;
         op.steps = std::move(steps_);
         op.end = state_;
         op.removed = std::move(removed);
@@ -104,8 +104,8 @@ class Replayer {
     }
 
   private:
-    LessonStep& add_step(LessonStep::Kind kind, std::size_t i, std::size_t j) {
-        LessonStep step;
+    HeapStep& add_step(HeapStep::Kind kind, std::size_t i, std::size_t j) {
+        HeapStep step;
         step.kind = kind;
         step.i = i;
         step.j = j;
@@ -123,16 +123,16 @@ class Replayer {
         if (panel_.kind.family == QueueFamily::unordered) {
             // best_index: slot i against the best so far, j.
             best_ = j;
-            add_step(LessonStep::Kind::compare, i, j).order = order;
+            add_step(HeapStep::Kind::compare, i, j).order = order;
             if (max_ ? order > 0 : order < 0) best_ = i;
             return;
         }
-        add_step(LessonStep::Kind::compare, i, j).order = order;
+        add_step(HeapStep::Kind::compare, i, j).order = order;
     }
 
     void exchange(std::size_t i, std::size_t j, bool shift) {
         ++state_.exchanges;
-        add_step(shift ? LessonStep::Kind::shift : LessonStep::Kind::exchange, i, j);
+        add_step(shift ? HeapStep::Kind::shift : HeapStep::Kind::exchange, i, j);
         std::swap(state_.keys[i], state_.keys[j]);
         if (!state_.handles.empty()) std::swap(state_.handles[i], state_.handles[j]);
         if (best_ == j) best_ = i;
@@ -140,17 +140,17 @@ class Replayer {
 
     void remove(std::size_t i) {
         best_.reset();
-        add_step(LessonStep::Kind::remove, i, i);
+        add_step(HeapStep::Kind::remove, i, i);
         state_.keys.pop_back();
         if (!state_.handles.empty()) state_.handles.pop_back();
         state_.heap_size = state_.keys.size();
     }
 
-    LessonPanel& panel_;
+    HeapPanel& panel_;
     bool max_;
     bool numeric_;
-    LessonState state_;
-    std::vector<LessonStep> steps_;
+    ArrayState state_;
+    std::vector<HeapStep> steps_;
     std::optional<std::size_t> best_;
     std::string changed_from_;  ///< increase-key: the key before
 };
@@ -165,11 +165,11 @@ std::vector<std::string> texts(const auto& keys) {
 
 /// What every queue does for one panel, whatever its type: push, pop, the array, the record.
 template <class Q>
-void run_plain(Q q, std::vector<QueueStep>& log, std::span<const LessonOp> ops, Replayer& replay) {
-    for (const LessonOp& op : ops) {
+void run_plain(Q q, std::vector<QueueStep>& log, std::span<const HeapOp> ops, Replayer& replay) {
+    for (const HeapOp& op : ops) {
         replay.begin_op();
         std::string removed;
-        if (op.kind == LessonOp::Kind::insert) {
+        if (op.kind == HeapOp::Kind::insert) {
             replay.appear(op.key.text(), 0);
             q.push(op.key);
         } else {
@@ -183,21 +183,21 @@ void run_plain(Q q, std::vector<QueueStep>& log, std::span<const LessonOp> ops, 
 }
 
 template <Orientation O, unsigned D>
-void run_indexed(std::vector<QueueStep>& log, std::span<const LessonOp> ops, Replayer& replay) {
+void run_indexed(std::vector<QueueStep>& log, std::span<const HeapOp> ops, Replayer& replay) {
     using Heap = IndexedDaryHeap<TraceKey, O, D, std::less<TraceKey>, void, QueueRecorder>;
     std::size_t inserts = 0;
-    for (const LessonOp& op : ops) inserts += op.kind == LessonOp::Kind::insert;
+    for (const HeapOp& op : ops) inserts += op.kind == HeapOp::Kind::insert;
     Heap heap(inserts, std::less<TraceKey>{}, QueueRecorder(&log));
     std::vector<TraceKey> key_of;  // by handle: the key it was inserted or raised to
-    for (const LessonOp& op : ops) {
+    for (const HeapOp& op : ops) {
         replay.begin_op();
         std::string removed;
-        if (op.kind == LessonOp::Kind::insert) {
+        if (op.kind == HeapOp::Kind::insert) {
             const auto h = static_cast<std::uint32_t>(key_of.size());
             key_of.push_back(op.key);
             replay.appear(op.key.text(), h);
             heap.push(h, op.key);
-        } else if (op.kind == LessonOp::Kind::remove) {
+        } else if (op.kind == HeapOp::Kind::remove) {
             removed = heap.top_key().text();
             heap.pop();
         } else {
@@ -220,7 +220,7 @@ void run_indexed(std::vector<QueueStep>& log, std::span<const LessonOp> ops, Rep
 }
 
 template <Orientation O>
-void run_panel(const QueueKind& kind, std::span<const LessonOp> ops, std::string_view impl_field,
+void run_panel(const QueueKind& kind, std::span<const HeapOp> ops, std::string_view impl_field,
                Replayer& replay) {
     std::vector<QueueStep> log;
     const QueueRecorder rec(&log);
@@ -268,19 +268,19 @@ void run_panel(const QueueKind& kind, std::span<const LessonOp> ops, std::string
 
 /// Input errors a queue would only meet half-way: removal from an empty queue, increase-key
 /// without `indexed`, of an absent key, or to a smaller key. Checked once on a reference model.
-void check_operations(std::span<const LessonOp> ops, std::span<const QueueKind> impls,
+void check_operations(std::span<const HeapOp> ops, std::span<const QueueKind> impls,
                       Orientation orientation, std::string_view field,
                       std::string_view impl_field) {
     std::vector<TraceKey> live;  // insertion order
     const bool all_indexed = std::all_of(impls.begin(), impls.end(), [](const QueueKind& k) {
         return k.family == QueueFamily::indexed;
     });
-    for (const LessonOp& op : ops) {
+    for (const HeapOp& op : ops) {
         switch (op.kind) {
-            case LessonOp::Kind::insert:
+            case HeapOp::Kind::insert:
                 live.push_back(op.key);
                 break;
-            case LessonOp::Kind::remove: {
+            case HeapOp::Kind::remove: {
                 if (live.empty())
                     reject_token(field, op.token, op.spelling, "removes from an empty queue");
                 const auto next = orientation == Orientation::max
@@ -289,7 +289,7 @@ void check_operations(std::span<const LessonOp> ops, std::span<const QueueKind> 
                 live.erase(next);
                 break;
             }
-            case LessonOp::Kind::increase: {
+            case HeapOp::Kind::increase: {
                 if (!all_indexed) {
                     reject_token(field, op.token, op.spelling,
                                  "increase-key needs " + std::string(impl_field) +
@@ -309,24 +309,24 @@ void check_operations(std::span<const LessonOp> ops, std::span<const QueueKind> 
                 *it = op.new_key;
                 break;
             }
-            case LessonOp::Kind::build:
-            case LessonOp::Kind::sortdown:
+            case HeapOp::Kind::build:
+            case HeapOp::Kind::sortdown:
                 throw_runtime_error("heap lesson: heapsort's phases are not operations (a bug)");
         }
     }
 }
 
-bool numeric_keys(std::span<const LessonOp> ops) {
-    for (const LessonOp& op : ops) {
-        if (op.kind != LessonOp::Kind::remove) return op.key.numeric;
+bool numeric_keys(std::span<const HeapOp> ops) {
+    for (const HeapOp& op : ops) {
+        if (op.kind != HeapOp::Kind::remove) return op.key.numeric;
     }
     return false;
 }
 
-std::size_t most_items(const LessonPanel& panel) {
+std::size_t most_items(const HeapPanel& panel) {
     std::size_t most = panel.start.keys.size();
-    for (const LessonPanelOp& op : panel.ops) {
-        for (const LessonStep& s : op.steps) most = std::max(most, s.state.keys.size());
+    for (const PanelOp& op : panel.ops) {
+        for (const HeapStep& s : op.steps) most = std::max(most, s.state.keys.size());
         most = std::max(most, op.end.keys.size());
     }
     return most;
@@ -336,20 +336,20 @@ std::size_t most_items(const LessonPanel& panel) {
 
 // ------------------------------------------------------------------------------------ parsing
 
-std::vector<LessonOp> parse_lesson_ops(std::string_view text, std::string_view field) {
+std::vector<HeapOp> parse_heap_ops(std::string_view text, std::string_view field) {
     const std::vector<std::string_view> words = tokens::split(text);
     if (words.empty())
         throw_input_error(std::string(field) + ": no operations given (e.g. \"P Q E * X\")");
-    std::vector<LessonOp> out;
+    std::vector<HeapOp> out;
     KeyKindCheck kinds(field);
     for (std::size_t t = 0; t < words.size(); ++t) {
-        LessonOp op;
+        HeapOp op;
         op.token = t + 1;
         op.spelling = std::string(words[t]);
         const std::string_view s = words[t];
         const std::size_t caret = s.find('^');
         if (s == "*") {
-            op.kind = LessonOp::Kind::remove;
+            op.kind = HeapOp::Kind::remove;
         } else if (caret != std::string_view::npos) {
             const auto key = key_of(s.substr(0, caret));
             const auto new_key = key_of(s.substr(caret + 1));
@@ -357,7 +357,7 @@ std::vector<LessonOp> parse_lesson_ops(std::string_view text, std::string_view f
                 reject_token(field, op.token, s,
                              "increase-key is KEY^NEW with two keys, e.g. 3^12 or E^Z");
             }
-            op.kind = LessonOp::Kind::increase;
+            op.kind = HeapOp::Kind::increase;
             op.key = *key;
             op.new_key = *new_key;
             kinds.check(op.key, op.token, s);
@@ -396,16 +396,16 @@ std::vector<TraceKey> parse_sort_keys(std::string_view text, std::string_view fi
 
 // ------------------------------------------------------------------------------------ timeline
 
-LessonRecord LessonRecord::operations(std::span<const LessonOp> ops,
-                                      std::span<const QueueKind> impls, Orientation orientation,
-                                      std::string_view field, std::string_view impl_field) {
+HeapRecord HeapRecord::operations(std::span<const HeapOp> ops, std::span<const QueueKind> impls,
+                                  Orientation orientation, std::string_view field,
+                                  std::string_view impl_field) {
     check_operations(ops, impls, orientation, field, impl_field);
-    LessonRecord out;
+    HeapRecord out;
     out.ops_.assign(ops.begin(), ops.end());
     out.orientation_ = orientation;
     const bool numeric = numeric_keys(ops);
     for (const QueueKind& kind : impls) {
-        LessonPanel panel;
+        HeapPanel panel;
         panel.kind = kind;
         panel.tree = kind.family != QueueFamily::unordered && kind.family != QueueFamily::ordered;
         panel.arity = panel.tree ? kind.d : 1;
@@ -423,14 +423,14 @@ LessonRecord LessonRecord::operations(std::span<const LessonOp> ops,
     return out;
 }
 
-LessonRecord LessonRecord::heapsort(std::span<const TraceKey> keys, Orientation orientation) {
-    LessonRecord out;
+HeapRecord HeapRecord::heapsort(std::span<const TraceKey> keys, Orientation orientation) {
+    HeapRecord out;
     out.heapsort_ = true;
     out.orientation_ = orientation;
     out.ops_.resize(2);
-    out.ops_[0].kind = LessonOp::Kind::build;
-    out.ops_[1].kind = LessonOp::Kind::sortdown;
-    LessonPanel panel;
+    out.ops_[0].kind = HeapOp::Kind::build;
+    out.ops_[1].kind = HeapOp::Kind::sortdown;
+    HeapPanel panel;
     panel.kind = {QueueFamily::binary, 2};
     panel.start.keys = texts(keys);
     panel.start.heap_size = keys.size();

@@ -1,15 +1,15 @@
 #pragma once
 /// \file
 /// What a class sees of `collide heap`: the record of priority-queue operations
-/// (collide/sim/pq/heap_lesson.hpp, steps by kind) turned into words, pacing and frames. Each
+/// (collide/sim/pq/heap_record.hpp, steps by kind) turned into words, pacing and frames. Each
 /// step gets a caption ("insert S at a[11]; S > H: exchange"), each operation a summary
 /// ("insert S: 3 compares, 2 exchanges"), each panel a title; the steps are paced in seconds of
 /// video, all panels in lock-step, each operation as long as its longest panel; and
 /// `frame_at(t)` fills the painter's view (collide/view/heap.hpp) for any moment. Pure: no
 /// drawing, no I/O, no CLI.
 ///
-///     const pq::LessonRecord record = pq::LessonRecord::operations(ops, kinds, Orientation::max);
-///     const show::HeapLesson lesson(record, show::heap_pacing(0.8), 1);
+///     const pq::HeapRecord record = pq::HeapRecord::operations(ops, kinds, Orientation::max);
+///     const show::HeapProgram lesson(record, show::heap_pacing(0.8), 1);
 ///     for (double t = 0; t < lesson.duration(); t += 1.0 / fps)
 ///     painter.render(lesson.frame_at(t));
 
@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "collide/sim/pq/heap_lesson.hpp"
+#include "collide/sim/pq/heap_record.hpp"
 #include "collide/view/heap.hpp"
 
 namespace collide::show {
@@ -41,10 +41,10 @@ struct HeapPacing {
 
 /// Where one panel is at one moment.
 struct HeapPanelMoment {
-    const pq::LessonState* state = nullptr;  ///< never null
-    const pq::LessonStep* step = nullptr;    ///< null while holding a state between steps
-    double progress = 0.0;                   ///< in [0, 1): how far into `step`
-    const std::string* caption = nullptr;    ///< what happens, in words; never null
+    const pq::ArrayState* state = nullptr;  ///< never null
+    const pq::HeapStep* step = nullptr;     ///< null while holding a state between steps
+    double progress = 0.0;                  ///< in [0, 1): how far into `step`
+    const std::string* caption = nullptr;   ///< what happens, in words; never null
 };
 
 /// Where the whole lesson is at one moment.
@@ -56,14 +56,14 @@ struct HeapMoment {
 };
 
 /// A heap lesson as a class sees it: captions, pacing and frames over a record.
-class HeapLesson {
+class HeapProgram {
   public:
     /// `index_base`: the index shown for slot 0 (1 as in the lecture's code, 0 as in its
     /// pseudo-code). Throws Error(input) "pace: must be > 0" for a pace <= 0 or a negative pause,
     /// intro or outro.
-    HeapLesson(pq::LessonRecord record, HeapPacing pacing, int index_base = 1);
+    HeapProgram(pq::HeapRecord record, HeapPacing pacing, int index_base = 1);
 
-    [[nodiscard]] const pq::LessonRecord& record() const noexcept { return record_; }
+    [[nodiscard]] const pq::HeapRecord& record() const noexcept { return record_; }
     /// One label per operation for the strip of tokens ("P", "*", "3^12"; "build", "sortdown").
     [[nodiscard]] const std::vector<std::string>& op_labels() const noexcept { return labels_; }
     /// The panels' titles joined by ", " ("unordered array, binary heap"), for a summary line.
@@ -109,7 +109,7 @@ class HeapLesson {
     /// the first), as the trace's "returned" column; "" for a lesson without removals.
     [[nodiscard]] view::ReturnedKeys returned(std::size_t panel, const HeapMoment& moment) const;
 
-    pq::LessonRecord record_;
+    pq::HeapRecord record_;
     std::vector<PanelText> text_;
     std::vector<std::string> labels_;
     std::vector<double> op_start_;  ///< seconds at which each operation starts, then the outro

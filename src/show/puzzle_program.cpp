@@ -1,4 +1,4 @@
-#include "collide/show/puzzle_lesson.hpp"
+#include "collide/show/puzzle_program.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 
 #include "collide/error.hpp"
 #include "collide/show/ease.hpp"
-#include "collide/show/heap_lesson.hpp"
+#include "collide/show/heap_program.hpp"
 
 namespace collide::show {
 
@@ -72,8 +72,8 @@ std::string with_thousands(std::uint64_t n) {
     return out;
 }
 
-PuzzleLesson::PuzzleLesson(const puzzle::Board& start, const std::vector<SearchResult>& results,
-                           bool code)
+PuzzleProgram::PuzzleProgram(const puzzle::Board& start, const std::vector<SearchResult>& results,
+                             bool code)
     : start_(start), code_(code) {
     if (results.empty() || results.size() > 2)
         throw_runtime_error("puzzle video: needs one or two searches");
@@ -108,7 +108,7 @@ PuzzleLesson::PuzzleLesson(const puzzle::Board& start, const std::vector<SearchR
     if (code_) pace_code();
 }
 
-void PuzzleLesson::pace_code() {
+void PuzzleProgram::pace_code() {
     const SearchResult& r = *sides_.front().result;
     const std::size_t total = r.expansions.size();  // >= 1: the goal's expansion is the last
     double t = intro_;
@@ -133,7 +133,7 @@ void PuzzleLesson::pace_code() {
     search_seconds_ = t - intro_;
 }
 
-PuzzleLesson::CodeMoment PuzzleLesson::code_at(double seconds) const {
+PuzzleProgram::CodeMoment PuzzleProgram::code_at(double seconds) const {
     const std::size_t total = sides_.front().result->expansions.size();
     if (seconds >= playback_start()) return {total, std::nullopt, QueueMoment::after};
     // Finished: the goal has left the queue and the search stops there.
@@ -155,19 +155,19 @@ PuzzleLesson::CodeMoment PuzzleLesson::code_at(double seconds) const {
     return {beat.expansion + 1, beat.line, queue};
 }
 
-double PuzzleLesson::playback_start() const noexcept {
+double PuzzleProgram::playback_start() const noexcept {
     return search_end() + pause_;
 }
 
-double PuzzleLesson::playback_turn(std::size_t i) const noexcept {
+double PuzzleProgram::playback_turn(std::size_t i) const noexcept {
     return playback_start() + turns_[i];
 }
 
-double PuzzleLesson::duration() const noexcept {
+double PuzzleProgram::duration() const noexcept {
     return playback_start() + playback_length_ + outro_;
 }
 
-std::size_t PuzzleLesson::step_at(std::size_t i, double seconds) const noexcept {
+std::size_t PuzzleProgram::step_at(std::size_t i, double seconds) const noexcept {
     if (code_) return code_at(seconds).shown;
     const std::size_t total = sides_[i].result->expansions.size();
     const double u = (seconds - intro_) / search_seconds_;
@@ -177,18 +177,18 @@ std::size_t PuzzleLesson::step_at(std::size_t i, double seconds) const noexcept 
     return std::min(total, static_cast<std::size_t>(std::max(0.0, grown)));
 }
 
-std::string PuzzleLesson::name() const {
+std::string PuzzleProgram::name() const {
     return "8-puzzle";
 }
 
-std::string PuzzleLesson::title(const Side& side) const {
+std::string PuzzleProgram::title(const Side& side) const {
     const SearchResult& r = *side.result;
     if (r.method == Method::bfs) return "Breadth-first search";
     return "A*, " + estimate_words(r.heuristic) + ", " + panel_title(r.queue);
 }
 
-std::vector<std::string> PuzzleLesson::counters(const Side& side, std::size_t step,
-                                                std::size_t in_queue, bool done) const {
+std::vector<std::string> PuzzleProgram::counters(const Side& side, std::size_t step,
+                                                 std::size_t in_queue, bool done) const {
     const SearchResult& r = *side.result;
     // Two short lines a class can read from the back (the boards enqueued are the sum of the
     // two, give or take the stale entries: `collide puzzle --solve` prints them all).
@@ -201,7 +201,7 @@ std::vector<std::string> PuzzleLesson::counters(const Side& side, std::size_t st
     return out;
 }
 
-view::PuzzleBoardView PuzzleLesson::board_view(const Side& side, std::uint32_t id) const {
+view::PuzzleBoardView PuzzleProgram::board_view(const Side& side, std::uint32_t id) const {
     const SearchResult& r = *side.result;
     const puzzle::Board b = r.board_of(id);
     view::PuzzleBoardView view;
@@ -217,8 +217,8 @@ view::PuzzleBoardView PuzzleLesson::board_view(const Side& side, std::uint32_t i
     return view;
 }
 
-view::PuzzlePanelView PuzzleLesson::search_panel(const Side& side, std::size_t step,
-                                                 QueueMoment queue) const {
+view::PuzzlePanelView PuzzleProgram::search_panel(const Side& side, std::size_t step,
+                                                  QueueMoment queue) const {
     const SearchResult& r = *side.result;
     // Done once the goal has been taken out and tested (not while it is leaving the queue).
     const bool done = step == r.expansions.size() && queue != QueueMoment::before_pop;
@@ -327,7 +327,7 @@ view::PuzzlePanelView PuzzleLesson::search_panel(const Side& side, std::size_t s
     return p;
 }
 
-view::PuzzlePanelView PuzzleLesson::playback_panel(const Side& side, double t) const {
+view::PuzzlePanelView PuzzleProgram::playback_panel(const Side& side, double t) const {
     const SearchResult& r = *side.result;
     view::PuzzlePanelView p;
     p.title = title(side);
@@ -359,7 +359,7 @@ view::PuzzlePanelView PuzzleLesson::playback_panel(const Side& side, double t) c
     return p;
 }
 
-view::PuzzleFrameView PuzzleLesson::frame_at(double seconds) const {
+view::PuzzleFrameView PuzzleProgram::frame_at(double seconds) const {
     const double t = std::clamp(seconds, 0.0, duration());
     view::PuzzleFrameView view;
     view.heading = puzzle_name(start_.side()) + " " + start_.to_string() + ": " +

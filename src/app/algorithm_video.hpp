@@ -7,9 +7,9 @@
 #include <string>
 #include <string_view>
 
+#include "algorithm_options.hpp"
 #include "collide/cue.hpp"
 #include "collide/image.hpp"
-#include "lesson_options.hpp"
 #include "progress.hpp"
 #include "render_plan.hpp"
 #include "subtitle_options.hpp"
@@ -18,22 +18,23 @@
 namespace collide::app {
 
 /// Frame size and rate of a lesson video (-q, --size, --fps resolved).
-struct LessonGeometry {
+struct AlgorithmVideoGeometry {
     int width = 1280;
     int height = 720;
     int fps = 30;
 };
 
 /// Where and in which format the lesson goes (resolve_output of what was given).
-[[nodiscard]] OutputChoice lesson_output_of(const LessonVideoCli& v, std::string_view stem);
+[[nodiscard]] OutputChoice algorithm_video_output_of(const AlgorithmVideoCli& v,
+                                                     std::string_view stem);
 
 /// -q, then --size and --fps when given. A frame smaller than `minimum` (when not 0x0) is
 /// refused naming --size or -q, saying it is too small for `what_stays_legible`.
-[[nodiscard]] LessonGeometry lesson_geometry_of(const LessonVideoCli& v, FrameSize minimum = {},
-                                                std::string_view what_stays_legible = {});
+[[nodiscard]] AlgorithmVideoGeometry algorithm_video_geometry_of(
+    const AlgorithmVideoCli& v, FrameSize minimum = {}, std::string_view what_stays_legible = {});
 
 /// Where a drawn lesson of a known duration goes, resolved and checked before anything is drawn.
-struct LessonDestination {
+struct AlgorithmVideoDestination {
     OutputChoice output;
     SubtitleOutput subtitles;
     ChapterOutput chapters;
@@ -44,12 +45,13 @@ struct LessonDestination {
 /// 0..duration; the output (default path under out/, named after `stem`), its subtitles and
 /// chapters (`title`: the chapters' title); the default path's folder created, the destination
 /// checked writable; libav's verbosity set.
-[[nodiscard]] LessonDestination lesson_destination_of(const LessonVideoCli& v,
-                                                      std::string_view stem, double duration,
-                                                      const std::string& title);
+[[nodiscard]] AlgorithmVideoDestination algorithm_video_destination_of(const AlgorithmVideoCli& v,
+                                                                       std::string_view stem,
+                                                                       double duration,
+                                                                       const std::string& title);
 
 /// What was written, for the command's summary line.
-struct LessonVideoSummary {
+struct AlgorithmVideoSummary {
     std::int64_t frames = 0;
     int width = 0;
     int height = 0;
@@ -57,7 +59,7 @@ struct LessonVideoSummary {
 };
 
 /// A drawn lesson's picture at `t` seconds of video, drawn into `frame` (sized by the drawing).
-using LessonDraw = std::function<void(double t, Image& frame)>;
+using AlgorithmFrameDraw = std::function<void(double t, Image& frame)>;
 
 /// Writes the lesson through the video job (video_job.hpp): a video of `duration` seconds (at
 /// least one frame, frame k showing time k / fps) or, for output.still, the one frame showing
@@ -66,9 +68,12 @@ using LessonDraw = std::function<void(double t, Image& frame)>;
 /// `subtitles` and `cues` (videos only): the lesson's step captions as a subtitle track and/or
 /// a sidecar file (video_job.hpp); `chapters`: one chapter per step caption
 /// (show::chapters_from_cues) in the MP4, a chapters file and/or a slide folder.
-LessonVideoSummary write_lesson(const OutputChoice& output, const LessonGeometry& geometry,
-                                ProgressMode progress_mode, double duration, double still_time,
-                                const LessonDraw& draw, const SubtitleOutput& subtitles = {},
-                                const Cues& cues = {}, const ChapterOutput& chapters = {});
+AlgorithmVideoSummary write_algorithm_video(const OutputChoice& output,
+                                            const AlgorithmVideoGeometry& geometry,
+                                            ProgressMode progress_mode, double duration,
+                                            double still_time, const AlgorithmFrameDraw& draw,
+                                            const SubtitleOutput& subtitles = {},
+                                            const Cues& cues = {},
+                                            const ChapterOutput& chapters = {});
 
 }  // namespace collide::app

@@ -5,7 +5,7 @@
 /// exchange or shift, a key leaves, a key changes, a sink starts), one panel per implementation,
 /// with the array and the counts of compares and exchanges at every step. Pure computation on
 /// values and neutral: no words, no timing, no drawing, no I/O. The presentation layer
-/// (collide/show/heap_lesson.hpp) turns the record into captions, pacing and frames.
+/// (collide/show/heap_program.hpp) turns the record into captions, pacing and frames.
 ///
 /// The steps come from the queues themselves: each implementation runs the operations with a
 /// QueueRecorder (observer.hpp) and the record is replayed into steps; after every operation the
@@ -36,13 +36,13 @@
 namespace collide::pq {
 
 /// One operation of a lesson.
-struct LessonOp {
+struct HeapOp {
     enum class Kind {
         insert,    ///< insert `key`
         remove,    ///< remove the max (min)
         increase,  ///< raise `key` to `new_key` (indexed only)
-        build,     ///< heapsort's construction (LessonRecord::heapsort only; never parsed)
-        sortdown,  ///< heapsort's sortdown (LessonRecord::heapsort only; never parsed)
+        build,     ///< heapsort's construction (HeapRecord::heapsort only; never parsed)
+        sortdown,  ///< heapsort's sortdown (HeapRecord::heapsort only; never parsed)
     };
     Kind kind = Kind::insert;
     TraceKey key;
@@ -54,15 +54,15 @@ struct LessonOp {
 /// Splits `text` at white space into operations. Throws Error(input)
 /// "<field>: token N 'x': why" for a token that is not a key, `*` or `K^V`, for a key of the
 /// other kind than the first key (words and numbers do not mix), and for an empty sequence.
-[[nodiscard]] std::vector<LessonOp> parse_lesson_ops(std::string_view text,
-                                                     std::string_view field = "ops");
+[[nodiscard]] std::vector<HeapOp> parse_heap_ops(std::string_view text,
+                                                 std::string_view field = "ops");
 
 /// The keys of a heapsort (no `*`, no `^`), with the same errors.
 [[nodiscard]] std::vector<TraceKey> parse_sort_keys(std::string_view text,
                                                     std::string_view field = "sort");
 
 /// The array of one panel at one moment.
-struct LessonState {
+struct ArrayState {
     std::vector<std::string> keys;     ///< the queue's array, slot 0 first
     std::vector<std::size_t> handles;  ///< indexed: each slot's handle (insertion number)
     /// Slots [heap_size, keys.size()) are heapsort's sorted part, set apart (= keys.size() for
@@ -73,7 +73,7 @@ struct LessonState {
 };
 
 /// One step of one panel: a state and what happens to it during the step.
-struct LessonStep {
+struct HeapStep {
     enum class Kind {
         appear,    ///< a new key appears in slot i (already in `state`)
         compare,   ///< the keys in slots i and j are compared (`state` counts the compare)
@@ -94,43 +94,43 @@ struct LessonStep {
     /// i == j (increase-key) the new key against the old one, `from`.
     int order = 0;
     std::string from;  ///< change: the key before the change
-    LessonState state;
+    ArrayState state;
 };
 
 /// One operation in one panel: its steps, then the state it leaves.
-struct LessonPanelOp {
-    std::vector<LessonStep> steps;
-    LessonState end;
+struct PanelOp {
+    std::vector<HeapStep> steps;
+    ArrayState end;
     std::string removed;  ///< remove: the key that left
 };
 
 /// One panel: an implementation and its operations.
-struct LessonPanel {
+struct HeapPanel {
     QueueKind kind;
-    bool tree = true;                ///< a heap (a tree over its array) rather than an array alone
-    unsigned arity = 2;              ///< children per node when `tree` (1 for the arrays)
-    bool shifts = false;             ///< the ordered array: its exchanges are shifts
-    LessonState start;               ///< before the first operation
-    std::vector<LessonPanelOp> ops;  ///< one per LessonRecord::ops entry
+    bool tree = true;          ///< a heap (a tree over its array) rather than an array alone
+    unsigned arity = 2;        ///< children per node when `tree` (1 for the arrays)
+    bool shifts = false;       ///< the ordered array: its exchanges are shifts
+    ArrayState start;          ///< before the first operation
+    std::vector<PanelOp> ops;  ///< one per HeapRecord::ops entry
 };
 
 /// The whole lesson: panels in lock-step, operation by operation.
-class LessonRecord {
+class HeapRecord {
   public:
     /// `ops` on each implementation (in the given order, one panel each). Throws Error(input)
     /// naming `field` and the token for a removal from an empty queue, an increase-key without
     /// an indexed heap (naming `impl_field`), of a key not in the queue or to a smaller key;
     /// Error(input) naming `impl_field` for a queue kind with_queue rejects.
-    static LessonRecord operations(std::span<const LessonOp> ops, std::span<const QueueKind> impls,
-                                   Orientation orientation, std::string_view field = "ops",
-                                   std::string_view impl_field = "impl");
+    static HeapRecord operations(std::span<const HeapOp> ops, std::span<const QueueKind> impls,
+                                 Orientation orientation, std::string_view field = "ops",
+                                 std::string_view impl_field = "impl");
     /// Heapsort of `keys` (ascending for max, descending for min), one panel (a binary heap),
-    /// two operations: LessonOp::Kind::build, then LessonOp::Kind::sortdown.
-    static LessonRecord heapsort(std::span<const TraceKey> keys, Orientation orientation);
+    /// two operations: HeapOp::Kind::build, then HeapOp::Kind::sortdown.
+    static HeapRecord heapsort(std::span<const TraceKey> keys, Orientation orientation);
 
-    [[nodiscard]] const std::vector<LessonPanel>& panels() const noexcept { return panels_; }
+    [[nodiscard]] const std::vector<HeapPanel>& panels() const noexcept { return panels_; }
     /// The operations, the same for every panel.
-    [[nodiscard]] const std::vector<LessonOp>& ops() const noexcept { return ops_; }
+    [[nodiscard]] const std::vector<HeapOp>& ops() const noexcept { return ops_; }
     [[nodiscard]] Orientation orientation() const noexcept { return orientation_; }
     /// True for a heapsort (build, sortdown), false for operations.
     [[nodiscard]] bool heapsort() const noexcept { return heapsort_; }
@@ -138,8 +138,8 @@ class LessonRecord {
     [[nodiscard]] std::size_t capacity() const noexcept { return capacity_; }
 
   private:
-    std::vector<LessonPanel> panels_;
-    std::vector<LessonOp> ops_;
+    std::vector<HeapPanel> panels_;
+    std::vector<HeapOp> ops_;
     Orientation orientation_ = Orientation::max;
     bool heapsort_ = false;
     std::size_t capacity_ = 0;

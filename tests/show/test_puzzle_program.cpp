@@ -1,4 +1,4 @@
-// `collide puzzle` as a class sees it (collide/show/puzzle_lesson.hpp): the shared clock of the
+// `collide puzzle` as a class sees it (collide/show/puzzle_program.hpp): the shared clock of the
 // searches, the tree rows and the queue's front at a moment, the playback of the solutions.
 #include <doctest/doctest.h>
 
@@ -6,11 +6,11 @@
 #include <string>
 #include <vector>
 
-#include "collide/show/puzzle_lesson.hpp"
+#include "collide/show/puzzle_program.hpp"
 
 using namespace collide;
 using puzzle::Board;
-using show::PuzzleLesson;
+using show::PuzzleProgram;
 
 namespace {
 
@@ -38,7 +38,7 @@ TEST_CASE("puzzle lesson: thousands separators") {
 TEST_CASE("puzzle lesson: one clock, the cheaper search finishes first, both end together") {
     const Board start = Board::parse("8 1 3 4 0 2 7 6 5");
     const auto results = both(start);
-    const PuzzleLesson frames(start, results);
+    const PuzzleProgram frames(start, results);
     CHECK(frames.step_at(0, 0.0) == 0);
     CHECK(frames.step_at(1, frames.search_start()) == 0);
     CHECK(frames.step_at(0, frames.search_end()) == results[0].expansions.size());
@@ -59,7 +59,7 @@ TEST_CASE("puzzle lesson: one clock, the cheaper search finishes first, both end
 TEST_CASE("puzzle lesson: the start, the tree rows and the queue's front during the search") {
     const Board start = Board::parse("8 1 3 4 0 2 7 6 5");
     const auto results = both(start);
-    const PuzzleLesson frames(start, results);
+    const PuzzleProgram frames(start, results);
     const view::PuzzleFrameView first = frames.frame_at(0.0);
     REQUIRE(first.panels.size() == 2);
     CHECK(first.heading.find("8 1 3 4 0 2 7 6 5") != std::string::npos);
@@ -90,7 +90,7 @@ TEST_CASE("puzzle lesson: the start, the tree rows and the queue's front during 
 TEST_CASE("puzzle lesson: headings and titles in words, not option syntax") {
     const Board start = Board::parse("1 2 3 4 0 6 7 5 8");
     const auto results = both(start);
-    const view::PuzzleFrameView f = PuzzleLesson(start, results).frame_at(0.0);
+    const view::PuzzleFrameView f = PuzzleProgram(start, results).frame_at(0.0);
     CHECK(f.heading == "8-puzzle 1 2 3 4 0 6 7 5 8: breadth-first search against A*");
     CHECK(f.panels[0].title == "Breadth-first search");
     CHECK(f.panels[1].title == "A*, Manhattan distance, binary heap");
@@ -103,7 +103,7 @@ TEST_CASE("puzzle lesson: headings and titles in words, not option syntax") {
 TEST_CASE("puzzle lesson: once solved the path is marked and the playback ends on the goal") {
     const Board start = Board::parse("1 2 3 4 0 6 7 5 8");
     const auto results = both(start);
-    const PuzzleLesson frames(start, results);
+    const PuzzleProgram frames(start, results);
     const view::PuzzleFrameView done = frames.frame_at(frames.search_end() + 0.1);
     for (const view::PuzzlePanelView& p : done.panels) {
         CHECK(p.status.find("solved: 2 moves") != std::string::npos);

@@ -1,4 +1,4 @@
-#include "lesson_options.hpp"
+#include "algorithm_options.hpp"
 
 #include <fmt/core.h>
 
@@ -6,8 +6,8 @@
 
 namespace collide::app {
 
-void add_lesson_video_options(CLI::App& cmd, LessonVideoCli& v, std::string_view stem,
-                              std::string_view size_example) {
+void add_algorithm_video_options(CLI::App& cmd, AlgorithmVideoCli& v, std::string_view stem,
+                                 std::string_view size_example) {
     const std::string at_help = fmt::format(
         "Write only the frame at this many seconds of video, as a PNG (a still for "
         "slides; -o FILE.png, default out/{}.png)",

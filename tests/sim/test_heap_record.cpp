@@ -1,4 +1,4 @@
-// The record behind `collide heap` (heap_lesson.hpp): parsing, the steps replayed from the queues'
+// The record behind `collide heap` (heap_record.hpp): parsing, the steps replayed from the queues'
 // records by kind, and the final state of every implementation against `collide pq`'s trace
 // (run_trace) for the same operations. Its words and timing are tested with collide_show.
 #include <doctest/doctest.h>
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "../support/input_error.hpp"
-#include "collide/sim/pq/heap_lesson.hpp"
+#include "collide/sim/pq/heap_record.hpp"
 #include "collide/sim/pq/trace.hpp"
 
 using namespace collide::pq;
@@ -31,9 +31,9 @@ std::vector<QueueKind> every_kind() {
 }
 
 /// The last state of each panel.
-std::vector<std::vector<std::string>> final_arrays(const LessonRecord& record) {
+std::vector<std::vector<std::string>> final_arrays(const HeapRecord& record) {
     std::vector<std::vector<std::string>> out;
-    for (const LessonPanel& p : record.panels()) out.push_back(p.ops.back().end.keys);
+    for (const HeapPanel& p : record.panels()) out.push_back(p.ops.back().end.keys);
     return out;
 }
 
@@ -41,8 +41,8 @@ void check_against_pq_trace(const std::string& ops_text, Orientation orientation
     CAPTURE(ops_text);
     const std::vector<QueueKind> kinds = every_kind();
     const Trace trace = run_trace(parse_trace_ops(ops_text), orientation, kinds);
-    const LessonRecord timeline =
-        LessonRecord::operations(parse_lesson_ops(ops_text), kinds, orientation);
+    const HeapRecord timeline =
+        HeapRecord::operations(parse_heap_ops(ops_text), kinds, orientation);
     const auto arrays = final_arrays(timeline);
     REQUIRE(arrays.size() == kinds.size());
     for (std::size_t k = 0; k < kinds.size(); ++k) {
@@ -72,35 +72,35 @@ std::string random_ops(std::size_t n, std::uint64_t seed) {
 }
 
 /// The kinds of an operation's steps.
-std::vector<LessonStep::Kind> kinds_of(const LessonPanelOp& op) {
-    std::vector<LessonStep::Kind> out;
-    for (const LessonStep& s : op.steps) out.push_back(s.kind);
+std::vector<HeapStep::Kind> kinds_of(const PanelOp& op) {
+    std::vector<HeapStep::Kind> out;
+    for (const HeapStep& s : op.steps) out.push_back(s.kind);
     return out;
 }
 
 }  // namespace
 
 TEST_CASE("heap lesson: operations parse like collide pq's, plus KEY^NEW") {
-    const auto ops = parse_lesson_ops("5  * 3^12", "--ops");
+    const auto ops = parse_heap_ops("5  * 3^12", "--ops");
     REQUIRE(ops.size() == 3);
-    CHECK(ops[0].kind == LessonOp::Kind::insert);
-    CHECK(ops[1].kind == LessonOp::Kind::remove);
-    CHECK(ops[2].kind == LessonOp::Kind::increase);
+    CHECK(ops[0].kind == HeapOp::Kind::insert);
+    CHECK(ops[1].kind == HeapOp::Kind::remove);
+    CHECK(ops[2].kind == HeapOp::Kind::increase);
     CHECK(ops[2].token == 3);
     CHECK(ops[2].spelling == "3^12");
-    CHECK(parse_lesson_ops("5 9 3^12")[2].new_key.number == 12);
-    CHECK(parse_lesson_ops("E^Z")[0].new_key.word == "Z");
+    CHECK(parse_heap_ops("5 9 3^12")[2].new_key.number == 12);
+    CHECK(parse_heap_ops("E^Z")[0].new_key.word == "Z");
 }
 
 TEST_CASE("heap lesson: bad tokens are input errors naming the token and its position") {
-    CHECK_INPUT_ERROR(parse_lesson_ops("P Q ? *"), "ops: token 3 '?'");
-    CHECK_INPUT_ERROR(parse_lesson_ops("P Q ? *", "--ops"), "--ops: token 3 '?'");
-    CHECK_INPUT_ERROR(parse_lesson_ops("5 9 3^"), "token 3 '3^': increase-key is KEY^NEW");
-    CHECK_INPUT_ERROR(parse_lesson_ops("5 9 ^4"), "token 3 '^4'");
-    CHECK_INPUT_ERROR(parse_lesson_ops("5 X"), "token 2 'X': is a word but the first key '5'");
-    CHECK_INPUT_ERROR(parse_lesson_ops("5 9 3^Z"), "token 3 '3^Z': is a word");
-    CHECK_INPUT_ERROR(parse_lesson_ops("   "), "ops: no operations given");
-    CHECK_INPUT_ERROR(parse_lesson_ops("99999999999999999999"), "integer out of range");
+    CHECK_INPUT_ERROR(parse_heap_ops("P Q ? *"), "ops: token 3 '?'");
+    CHECK_INPUT_ERROR(parse_heap_ops("P Q ? *", "--ops"), "--ops: token 3 '?'");
+    CHECK_INPUT_ERROR(parse_heap_ops("5 9 3^"), "token 3 '3^': increase-key is KEY^NEW");
+    CHECK_INPUT_ERROR(parse_heap_ops("5 9 ^4"), "token 3 '^4'");
+    CHECK_INPUT_ERROR(parse_heap_ops("5 X"), "token 2 'X': is a word but the first key '5'");
+    CHECK_INPUT_ERROR(parse_heap_ops("5 9 3^Z"), "token 3 '3^Z': is a word");
+    CHECK_INPUT_ERROR(parse_heap_ops("   "), "ops: no operations given");
+    CHECK_INPUT_ERROR(parse_heap_ops("99999999999999999999"), "integer out of range");
     CHECK_INPUT_ERROR(parse_sort_keys("S O * T"), "sort: token 3 '*'");
     CHECK_INPUT_ERROR(parse_sort_keys("", "--sort"), "--sort: no keys given");
 }
@@ -109,13 +109,13 @@ TEST_CASE("heap lesson: operations a queue cannot do are input errors naming the
     const std::vector<QueueKind> binary{{QueueFamily::binary, 2}};
     const std::vector<QueueKind> indexed{{QueueFamily::indexed, 2}};
     const auto run = [](const char* ops, const std::vector<QueueKind>& kinds) {
-        return LessonRecord::operations(parse_lesson_ops(ops), kinds, Orientation::max);
+        return HeapRecord::operations(parse_heap_ops(ops), kinds, Orientation::max);
     };
     CHECK_INPUT_ERROR(run("P * *", binary), "ops: token 3 '*': removes from an empty queue");
     CHECK_INPUT_ERROR(run("5 3 3^12", binary), "token 3 '3^12': increase-key needs impl indexed");
     // The caller names the fields as its user knows them.
-    CHECK_INPUT_ERROR(LessonRecord::operations(parse_lesson_ops("5 3 3^12"), binary,
-                                               Orientation::max, "--ops", "--impl"),
+    CHECK_INPUT_ERROR(HeapRecord::operations(parse_heap_ops("5 3 3^12"), binary, Orientation::max,
+                                             "--ops", "--impl"),
                       "--ops: token 3 '3^12': increase-key needs --impl indexed");
     CHECK_INPUT_ERROR(run("5 3 4^12", indexed), "token 3 '4^12': key 4 is not in the queue");
     CHECK_INPUT_ERROR(run("5 3 3^1", indexed), "token 3 '3^1': increase-key to a smaller key");
@@ -134,14 +134,14 @@ TEST_CASE("heap lesson: every implementation ends where collide pq's trace ends 
 
 TEST_CASE("heap lesson: the lecture's insert of S into a binary heap, step by step") {
     const std::vector<QueueKind> binary{{QueueFamily::binary, 2}};
-    const LessonRecord t = LessonRecord::operations(parse_lesson_ops("T P R N H O A E I G S"),
-                                                    binary, Orientation::max);
-    const LessonPanel& panel = t.panels().front();
+    const HeapRecord t =
+        HeapRecord::operations(parse_heap_ops("T P R N H O A E I G S"), binary, Orientation::max);
+    const HeapPanel& panel = t.panels().front();
     // The heap T P R N H O A E I G, then S swims up past H and P and stops under T.
     CHECK(panel.ops[9].end.keys ==
           std::vector<std::string>{"T", "P", "R", "N", "H", "O", "A", "E", "I", "G"});
-    const LessonPanelOp& insert_s = panel.ops[10];
-    using K = LessonStep::Kind;
+    const PanelOp& insert_s = panel.ops[10];
+    using K = HeapStep::Kind;
     CHECK(kinds_of(insert_s) ==
           std::vector<K>{K::appear, K::compare, K::exchange, K::compare, K::exchange, K::compare});
     CHECK(insert_s.steps[0].i == 10);
@@ -164,40 +164,39 @@ TEST_CASE("heap lesson: the lecture's insert of S into a binary heap, step by st
 
 TEST_CASE("heap lesson: remove-max exchanges root and last, removes, then sinks") {
     const std::vector<QueueKind> binary{{QueueFamily::binary, 2}};
-    const LessonRecord t =
-        LessonRecord::operations(parse_lesson_ops("P Q E X A *"), binary, Orientation::max);
-    const LessonPanelOp& remove = t.panels().front().ops.back();
+    const HeapRecord t =
+        HeapRecord::operations(parse_heap_ops("P Q E X A *"), binary, Orientation::max);
+    const PanelOp& remove = t.panels().front().ops.back();
     REQUIRE(remove.steps.size() >= 3);
-    CHECK(remove.steps[0].kind == LessonStep::Kind::exchange);
+    CHECK(remove.steps[0].kind == HeapStep::Kind::exchange);
     CHECK(remove.steps[0].i == 0);
-    CHECK(remove.steps[1].kind == LessonStep::Kind::remove);
+    CHECK(remove.steps[1].kind == HeapStep::Kind::remove);
     CHECK(remove.steps[1].i == 4);
     CHECK(remove.steps[1].state.keys[4] == "X");  // the state before it leaves
-    CHECK(remove.steps[2].kind == LessonStep::Kind::compare);
+    CHECK(remove.steps[2].kind == HeapStep::Kind::compare);
     CHECK(remove.removed == "X");
 }
 
 TEST_CASE("heap lesson: the arrays record their scan and their shifts") {
     const std::vector<QueueKind> arrays{{QueueFamily::unordered, 0}, {QueueFamily::ordered, 0}};
-    const LessonRecord t =
-        LessonRecord::operations(parse_lesson_ops("P Q E A *"), arrays, Orientation::max);
-    const LessonPanel& unordered = t.panels()[0];
-    const LessonPanel& ordered = t.panels()[1];
+    const HeapRecord t =
+        HeapRecord::operations(parse_heap_ops("P Q E A *"), arrays, Orientation::max);
+    const HeapPanel& unordered = t.panels()[0];
+    const HeapPanel& ordered = t.panels()[1];
     // remove max: the scan compares each slot with the max so far, then exchanges it with the last.
-    const LessonPanelOp& scan = unordered.ops.back();
+    const PanelOp& scan = unordered.ops.back();
     REQUIRE(scan.steps.size() >= 2);
-    CHECK(scan.steps.front().kind == LessonStep::Kind::compare);
+    CHECK(scan.steps.front().kind == HeapStep::Kind::compare);
     CHECK(scan.steps.front().best == std::optional<std::size_t>(0));
     CHECK(scan.steps.front().order > 0);  // Q > P: the new max
     CHECK(scan.steps[1].best == std::optional<std::size_t>(1));
     CHECK(ordered.shifts);
     // insert E into P Q (kept ascending: P, Q): E is compared with Q, Q shifts right, ...
-    const LessonPanelOp& insert_e = ordered.ops[2];
-    CHECK(std::count_if(insert_e.steps.begin(), insert_e.steps.end(), [](const LessonStep& s) {
-              return s.kind == LessonStep::Kind::shift;
-          }) == 2);
+    const PanelOp& insert_e = ordered.ops[2];
+    CHECK(std::count_if(insert_e.steps.begin(), insert_e.steps.end(),
+                        [](const HeapStep& s) { return s.kind == HeapStep::Kind::shift; }) == 2);
     CHECK(std::none_of(insert_e.steps.begin(), insert_e.steps.end(),
-                       [](const LessonStep& s) { return s.kind == LessonStep::Kind::exchange; }));
+                       [](const HeapStep& s) { return s.kind == HeapStep::Kind::exchange; }));
     CHECK(ordered.ops.back().steps.size() == 1);  // remove max: the last slot leaves
     CHECK(!unordered.tree);
     CHECK(t.panels().size() == 2);
@@ -205,16 +204,16 @@ TEST_CASE("heap lesson: the arrays record their scan and their shifts") {
 
 TEST_CASE("heap lesson: increase-key through the indexed heap's map") {
     const std::vector<QueueKind> indexed{{QueueFamily::indexed, 2}};
-    const LessonRecord t =
-        LessonRecord::operations(parse_lesson_ops("5 9 3 7 * 3^12"), indexed, Orientation::max);
-    const LessonPanel& panel = t.panels().front();
-    const LessonPanelOp& increase = panel.ops.back();
+    const HeapRecord t =
+        HeapRecord::operations(parse_heap_ops("5 9 3 7 * 3^12"), indexed, Orientation::max);
+    const HeapPanel& panel = t.panels().front();
+    const PanelOp& increase = panel.ops.back();
     REQUIRE(increase.steps.size() >= 2);
-    CHECK(increase.steps[0].kind == LessonStep::Kind::change);
+    CHECK(increase.steps[0].kind == HeapStep::Kind::change);
     CHECK(increase.steps[0].from == "3");
     CHECK(increase.steps[0].state.keys[increase.steps[0].i] == "12");
     // Then the new key against the old one, in its own slot.
-    CHECK(increase.steps[1].kind == LessonStep::Kind::compare);
+    CHECK(increase.steps[1].kind == HeapStep::Kind::compare);
     CHECK(increase.steps[1].i == increase.steps[1].j);
     CHECK(increase.steps[1].order > 0);  // 12 > 3
     CHECK(increase.end.keys.front() == "12");
@@ -226,40 +225,40 @@ TEST_CASE("heap lesson: increase-key through the indexed heap's map") {
 
 TEST_CASE("heap lesson: heapsort builds the heap, then sorts down with the sorted part apart") {
     const std::vector<TraceKey> keys = parse_sort_keys("S O R T E X A M P L E");
-    const LessonRecord t = LessonRecord::heapsort(keys, Orientation::max);
+    const HeapRecord t = HeapRecord::heapsort(keys, Orientation::max);
     CHECK(t.heapsort());
     REQUIRE(t.ops().size() == 2);
-    CHECK(t.ops()[0].kind == LessonOp::Kind::build);
-    CHECK(t.ops()[1].kind == LessonOp::Kind::sortdown);
-    const LessonPanel& panel = t.panels().front();
+    CHECK(t.ops()[0].kind == HeapOp::Kind::build);
+    CHECK(t.ops()[1].kind == HeapOp::Kind::sortdown);
+    const HeapPanel& panel = t.panels().front();
     CHECK(panel.ops[0].end.keys ==
           std::vector<std::string>{"X", "T", "S", "P", "L", "R", "A", "M", "O", "E", "E"});
-    CHECK(panel.ops[0].steps.front().kind == LessonStep::Kind::sink);
+    CHECK(panel.ops[0].steps.front().kind == HeapStep::Kind::sink);
     CHECK(panel.ops[0].steps.front().i == 4);   // E at a[5]: the last node with a child
     CHECK(panel.ops[0].steps.front().j == 11);  // in the whole array
     CHECK(panel.ops[1].end.keys ==
           std::vector<std::string>{"A", "E", "E", "L", "M", "O", "P", "R", "S", "T", "X"});
     CHECK(panel.ops[1].end.heap_size == 0);
     // The sortdown starts by exchanging the max with the last, then sinks in a smaller heap.
-    const LessonStep& first = panel.ops[1].steps.front();
-    CHECK(first.kind == LessonStep::Kind::exchange);
+    const HeapStep& first = panel.ops[1].steps.front();
+    CHECK(first.kind == HeapStep::Kind::exchange);
     CHECK(first.i == 0);
     CHECK(first.j == 10);
-    CHECK(panel.ops[1].steps[1].kind == LessonStep::Kind::sink);
+    CHECK(panel.ops[1].steps[1].kind == HeapStep::Kind::sink);
     CHECK(panel.ops[1].steps[1].j == 10);
     CHECK(panel.ops[1].steps[1].state.heap_size == 10);
-    const LessonRecord down = LessonRecord::heapsort(keys, Orientation::min);
+    const HeapRecord down = HeapRecord::heapsort(keys, Orientation::min);
     CHECK(down.panels().front().ops[1].end.keys ==
           std::vector<std::string>{"X", "T", "S", "R", "P", "O", "M", "L", "E", "E", "A"});
 }
 
 TEST_CASE("heap lesson: the record holds the most items any panel holds at once") {
     const std::vector<QueueKind> kinds{{QueueFamily::unordered, 0}, {QueueFamily::binary, 2}};
-    const LessonRecord t =
-        LessonRecord::operations(parse_lesson_ops("P Q E * A"), kinds, Orientation::min);
+    const HeapRecord t =
+        HeapRecord::operations(parse_heap_ops("P Q E * A"), kinds, Orientation::min);
     CHECK(t.capacity() == 3);
     CHECK(t.orientation() == Orientation::min);
     REQUIRE(t.ops().size() == 5);
     CHECK(t.ops()[3].spelling == "*");
-    for (const LessonPanel& p : t.panels()) CHECK(p.ops[3].removed == "E");
+    for (const HeapPanel& p : t.panels()) CHECK(p.ops[3].removed == "E");
 }

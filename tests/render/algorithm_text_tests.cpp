@@ -9,9 +9,9 @@
 
 #include "collide/render/heap_view.hpp"
 #include "collide/render/puzzle_view.hpp"
-#include "collide/show/heap_lesson.hpp"
-#include "collide/show/puzzle_lesson.hpp"
-#include "collide/sim/pq/heap_lesson.hpp"
+#include "collide/show/heap_program.hpp"
+#include "collide/show/puzzle_program.hpp"
+#include "collide/sim/pq/heap_record.hpp"
 #include "collide/sim/pq/queue_kind.hpp"
 #include "collide/sim/puzzle/search.hpp"
 #include "render_fixtures.hpp"
@@ -43,7 +43,7 @@ std::string too_small(const std::vector<DrawnText>& drawn, int height, double t)
     return out;
 }
 
-std::string check_heap(const show::HeapLesson& lesson) {
+std::string check_heap(const show::HeapProgram& lesson) {
     std::string out;
     for (const Frame& f : frames) {
         HeapViewConfig config;
@@ -62,8 +62,8 @@ std::string check_heap(const show::HeapLesson& lesson) {
     return out;
 }
 
-show::HeapLesson heap_lesson(const char* ops, const char* impls,
-                             pq::Orientation orientation = pq::Orientation::max) {
+show::HeapProgram heap_program(const char* ops, const char* impls,
+                               pq::Orientation orientation = pq::Orientation::max) {
     std::vector<pq::QueueKind> kinds;
     std::string list = impls;
     for (std::size_t at = 0; at != std::string::npos;) {
@@ -71,7 +71,7 @@ show::HeapLesson heap_lesson(const char* ops, const char* impls,
         kinds.push_back(pq::parse_queue_kind(list.substr(at, comma - at)));
         at = comma == std::string::npos ? comma : comma + 1;
     }
-    return {pq::LessonRecord::operations(pq::parse_lesson_ops(ops), kinds, orientation),
+    return {pq::HeapRecord::operations(pq::parse_heap_ops(ops), kinds, orientation),
             show::heap_pacing(0.8), 1};
 }
 
@@ -79,58 +79,58 @@ show::HeapLesson heap_lesson(const char* ops, const char* impls,
 
 TEST_CASE("lesson text: the heap lessons of docs/heap.md write nothing under 2.8 % capitals") {
     const char* trace = "P Q E * X A M * P L E *";
-    CHECK_MESSAGE(check_heap(heap_lesson(trace, "unordered,ordered")).empty(), "arrays");
-    const std::string heap = check_heap(heap_lesson(trace, "binary"));
+    CHECK_MESSAGE(check_heap(heap_program(trace, "unordered,ordered")).empty(), "arrays");
+    const std::string heap = check_heap(heap_program(trace, "binary"));
     CHECK_MESSAGE(heap.empty(), heap);
-    CHECK(check_heap(heap_lesson("T P R N H O A E I G S", "binary")).empty());
-    const std::string analysis = check_heap(heap_lesson(trace, "unordered,ordered,binary"));
+    CHECK(check_heap(heap_program("T P R N H O A E I G S", "binary")).empty());
+    const std::string analysis = check_heap(heap_program(trace, "unordered,ordered,binary"));
     CHECK_MESSAGE(analysis.empty(), analysis);
-    CHECK(check_heap(heap_lesson(trace, "dary:3")).empty());
+    CHECK(check_heap(heap_program(trace, "dary:3")).empty());
     const std::string dary =
-        check_heap(heap_lesson(trace, "binary,dary:3,dary:4", pq::Orientation::min));
+        check_heap(heap_program(trace, "binary,dary:3,dary:4", pq::Orientation::min));
     CHECK_MESSAGE(dary.empty(), dary);
-    const std::string indexed = check_heap(heap_lesson("5 9 3 7 * 3^12", "indexed:2"));
+    const std::string indexed = check_heap(heap_program("5 9 3 7 * 3^12", "indexed:2"));
     CHECK_MESSAGE(indexed.empty(), indexed);
     const std::string sort = check_heap(
-        show::HeapLesson(pq::LessonRecord::heapsort(pq::parse_sort_keys("S O R T E X A M P L E"),
-                                                    pq::Orientation::max),
-                         show::heap_pacing(0.8), 1));
+        show::HeapProgram(pq::HeapRecord::heapsort(pq::parse_sort_keys("S O R T E X A M P L E"),
+                                                   pq::Orientation::max),
+                          show::heap_pacing(0.8), 1));
     CHECK_MESSAGE(sort.empty(), sort);
 }
 
 TEST_CASE("lesson text: heap --code's listings are lesson text, and every line fits its column") {
-    const auto with_code = [](show::HeapLesson lesson) {
+    const auto with_code = [](show::HeapProgram lesson) {
         lesson.show_code(true);
         return lesson;
     };
     const char* trace = "P Q E * X A M * P L E *";
-    const std::string heap = check_heap(with_code(heap_lesson(trace, "binary")));
+    const std::string heap = check_heap(with_code(heap_program(trace, "binary")));
     CHECK_MESSAGE(heap.empty(), heap);
     const std::string dary = check_heap(
-        with_code(heap_lesson("T P R N H O A E I G S * *", "dary:3", pq::Orientation::min)));
+        with_code(heap_program("T P R N H O A E I G S * *", "dary:3", pq::Orientation::min)));
     CHECK_MESSAGE(dary.empty(), dary);
-    const std::string up = check_heap(with_code(heap_lesson("5 9 3 7 * 3^12", "indexed:2")));
+    const std::string up = check_heap(with_code(heap_program("5 9 3 7 * 3^12", "indexed:2")));
     CHECK_MESSAGE(up.empty(), up);
     const std::string down =
-        check_heap(with_code(heap_lesson("1 5 3 9 7 1^8", "indexed:2", pq::Orientation::min)));
+        check_heap(with_code(heap_program("1 5 3 9 7 1^8", "indexed:2", pq::Orientation::min)));
     CHECK_MESSAGE(down.empty(), down);
     for (const pq::Orientation o : {pq::Orientation::max, pq::Orientation::min}) {
-        const show::HeapLesson sort = with_code(show::HeapLesson(
-            pq::LessonRecord::heapsort(pq::parse_sort_keys("S O R T E X A M P L E"), o),
+        const show::HeapProgram sort = with_code(show::HeapProgram(
+            pq::HeapRecord::heapsort(pq::parse_sort_keys("S O R T E X A M P L E"), o),
             show::heap_pacing(0.8), 1));
         const std::string small = check_heap(sort);
         CHECK_MESSAGE(small.empty(), small);
     }
     // No line of any listing is cut ("..."): each fits the code column at -q l and -q m.
     for (const Frame& f : frames) {
-        const show::HeapLesson lessons[] = {
-            with_code(heap_lesson(trace, "binary")),
-            with_code(heap_lesson("1 5 3 9 7 1^8", "indexed:2", pq::Orientation::min)),
-            with_code(show::HeapLesson(
-                pq::LessonRecord::heapsort(pq::parse_sort_keys("S O R T E X A M P L E"),
-                                           pq::Orientation::min),
+        const show::HeapProgram lessons[] = {
+            with_code(heap_program(trace, "binary")),
+            with_code(heap_program("1 5 3 9 7 1^8", "indexed:2", pq::Orientation::min)),
+            with_code(show::HeapProgram(
+                pq::HeapRecord::heapsort(pq::parse_sort_keys("S O R T E X A M P L E"),
+                                         pq::Orientation::min),
                 show::heap_pacing(0.8), 1))};
-        for (const show::HeapLesson& lesson : lessons) {
+        for (const show::HeapProgram& lesson : lessons) {
             HeapViewConfig config;
             config.width = f.width;
             config.height = f.height;
@@ -159,7 +159,7 @@ TEST_CASE("lesson text: the puzzle writes nothing under 2.8 % capitals, digits a
             puzzle::a_star(start, puzzle::Heuristic::manhattan, {pq::QueueFamily::binary, 2})};
         for (std::size_t methods : {std::size_t{2}, std::size_t{1}}) {
             const std::vector<puzzle::SearchResult> shown(results.end() - methods, results.end());
-            const show::PuzzleLesson lesson(start, shown);
+            const show::PuzzleProgram lesson(start, shown);
             for (const Frame& f : frames) {
                 PuzzleViewConfig config;
                 config.width = f.width;
@@ -185,7 +185,7 @@ TEST_CASE("lesson text: puzzle --code's listing and its title are lesson text an
             bfs ? puzzle::breadth_first(start)
                 : puzzle::a_star(start, puzzle::Heuristic::manhattan,
                                  {pq::QueueFamily::binary, 2})};
-        const show::PuzzleLesson lesson(start, results, true);
+        const show::PuzzleProgram lesson(start, results, true);
         for (const Frame& f : frames) {
             PuzzleViewConfig config;
             config.width = f.width;

@@ -1,4 +1,4 @@
-#include "collide/show/heap_lesson.hpp"
+#include "collide/show/heap_program.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -13,8 +13,8 @@ namespace collide::show {
 
 namespace {
 
-using pq::LessonOp;
-using pq::LessonStep;
+using pq::HeapOp;
+using pq::HeapStep;
 using pq::QueueFamily;
 using view::SlotMark;
 
@@ -36,31 +36,31 @@ std::string plural(std::uint64_t n, const char* one, const char* many) {
 }
 
 /// What an operation is called while it runs.
-std::string op_prefix(const LessonOp& op, pq::Orientation orientation) {
+std::string op_prefix(const HeapOp& op, pq::Orientation orientation) {
     switch (op.kind) {
-        case LessonOp::Kind::insert:
+        case HeapOp::Kind::insert:
             return "insert " + op.key.text();
-        case LessonOp::Kind::remove:
+        case HeapOp::Kind::remove:
             return orientation == pq::Orientation::max ? "remove max" : "remove min";
-        case LessonOp::Kind::increase:
+        case HeapOp::Kind::increase:
             return "increase " + op.key.text() + " to " + op.new_key.text();
-        case LessonOp::Kind::build:
+        case HeapOp::Kind::build:
             return "build the heap";
-        case LessonOp::Kind::sortdown:
+        case HeapOp::Kind::sortdown:
             return "sortdown";
     }
     return "";
 }
 
 /// What an operation is called in its summary.
-std::string op_summary_head(const LessonOp& op, const pq::LessonPanelOp& done,
+std::string op_summary_head(const HeapOp& op, const pq::PanelOp& done,
                             pq::Orientation orientation) {
     switch (op.kind) {
-        case LessonOp::Kind::remove:
+        case HeapOp::Kind::remove:
             return op_prefix(op, orientation) + " " + done.removed;
-        case LessonOp::Kind::build:
+        case HeapOp::Kind::build:
             return "heap built";
-        case LessonOp::Kind::sortdown:
+        case HeapOp::Kind::sortdown:
             return "sortdown done";
         default:
             return op_prefix(op, orientation);
@@ -72,15 +72,15 @@ std::string op_summary_head(const LessonOp& op, const pq::LessonPanelOp& done,
 /// sink moves down, the key before an increase-key).
 class Captioner {
   public:
-    Captioner(const pq::LessonPanel& panel, pq::Orientation orientation, int base)
+    Captioner(const pq::HeapPanel& panel, pq::Orientation orientation, int base)
         : panel_(panel), max_(orientation == pq::Orientation::max), base_(base) {}
 
-    HeapLesson::OpText op(const LessonOp& op, const pq::LessonPanelOp& done,
-                          const pq::LessonState& before) {
+    HeapProgram::OpText op(const HeapOp& op, const pq::PanelOp& done,
+                           const pq::ArrayState& before) {
         op_ = op.kind;
         prefix_ = op_prefix(op, max_ ? pq::Orientation::max : pq::Orientation::min);
         sinking_.reset();
-        HeapLesson::OpText text;
+        HeapProgram::OpText text;
         for (std::size_t s = 0; s < done.steps.size(); ++s) {
             const bool first = text.shown.empty();
             std::optional<std::string> caption = step(done.steps[s], first);
@@ -94,7 +94,7 @@ class Captioner {
             op_summary_head(op, done, max_ ? pq::Orientation::max : pq::Orientation::min) + ": " +
             plural(c, "compare", "compares") + ", " +
             plural(x, panel_.shifts ? "shift" : "exchange", panel_.shifts ? "shifts" : "exchanges");
-        if (op.kind == LessonOp::Kind::sortdown) {
+        if (op.kind == HeapOp::Kind::sortdown) {
             // The last words of a heapsort: the totals the counters show, so that the screen
             // never holds two different totals.
             text.summary +=
@@ -117,29 +117,29 @@ class Captioner {
 
     /// The caption of a step, or none for a step not shown (a sortdown's sinks: its exchange
     /// says which key sinks).
-    std::optional<std::string> step(const LessonStep& s, bool first) {
+    std::optional<std::string> step(const HeapStep& s, bool first) {
         const std::vector<std::string>& keys = s.state.keys;
         switch (s.kind) {
-            case LessonStep::Kind::appear:
+            case HeapStep::Kind::appear:
                 prefix_ += " at " + slot(s.i);
                 return prefix_ + (panel_.kind.family == QueueFamily::unordered
                                       ? ", the end: nothing else to do"
                                       : "");
-            case LessonStep::Kind::change:
+            case HeapStep::Kind::change:
                 changed_from_ = s.from;
                 return prefix_ + ": qp[] says " + s.from + " is at " + slot(s.i) + "; set " +
                        slot(s.i) + " = " + keys[s.i];
-            case LessonStep::Kind::compare:
+            case HeapStep::Kind::compare:
                 return compare(s.i, s.j, keys[s.i], keys[s.j], s.order);
-            case LessonStep::Kind::shift:
+            case HeapStep::Kind::shift:
                 return prefix_ + "; shift " + keys[s.i] + " right to " + slot(s.j);
-            case LessonStep::Kind::exchange:
+            case HeapStep::Kind::exchange:
                 return exchange(s.i, s.j, keys, first);
-            case LessonStep::Kind::remove:
+            case HeapStep::Kind::remove:
                 return prefix_ + ": " + keys[s.i] + " leaves " + slot(s.i);
-            case LessonStep::Kind::sink:
+            case HeapStep::Kind::sink:
                 sinking_ = keys[s.i];
-                if (op_ != LessonOp::Kind::build) return std::nullopt;
+                if (op_ != HeapOp::Kind::build) return std::nullopt;
                 return "build the heap: sink " + keys[s.i] + " at " + slot(s.i);
         }
         return std::nullopt;
@@ -186,7 +186,7 @@ class Captioner {
                           : std::string("remove ") + top_word() + ": exchange " + a +
                                 " with the last, " + b;
         }
-        if (op_ == LessonOp::Kind::sortdown && i == 0) {
+        if (op_ == HeapOp::Kind::sortdown && i == 0) {
             sinking_ = b;
             return "sortdown: exchange " + std::string(top_word()) + " " + a + " with " + b +
                    " at " + slot(j) + "; " + a + " is in place";
@@ -199,10 +199,10 @@ class Captioner {
         return prefix_ + "; exchange " + a + " and " + b;
     }
 
-    const pq::LessonPanel& panel_;
+    const pq::HeapPanel& panel_;
     bool max_;
     int base_;
-    LessonOp::Kind op_ = LessonOp::Kind::insert;
+    HeapOp::Kind op_ = HeapOp::Kind::insert;
     std::string prefix_;
     std::optional<std::string> sinking_;  ///< the key a sink moves down
     std::string changed_from_;            ///< increase-key: the key before
@@ -219,43 +219,43 @@ double part(double progress, double fraction) noexcept {
     return std::clamp(progress / fraction, 0.0, 1.0);
 }
 
-void mark_step(const LessonStep& step, double progress, view::HeapPanelView& view) {
+void mark_step(const HeapStep& step, double progress, view::HeapPanelView& view) {
     auto& slots = view.slots;
     const auto mark = [&](std::size_t i, SlotMark m) {
         if (i < slots.size()) slots[i].mark = m;
     };
     switch (step.kind) {
-        case LessonStep::Kind::appear:
+        case HeapStep::Kind::appear:
             mark(step.i, SlotMark::inserted);
             view.fade = ease(part(progress, fade_part));
             break;
-        case LessonStep::Kind::compare:
+        case HeapStep::Kind::compare:
             mark(step.i, SlotMark::compared);
             mark(step.j, SlotMark::compared);
             break;
-        case LessonStep::Kind::exchange:
-        case LessonStep::Kind::shift:
+        case HeapStep::Kind::exchange:
+        case HeapStep::Kind::shift:
             mark(step.i, SlotMark::moving);
             mark(step.j, SlotMark::moving);
             if (step.i != step.j)
                 view.swap = view::HeapSwapView{step.i, step.j, ease(part(progress, slide_part))};
             break;
-        case LessonStep::Kind::remove:
+        case HeapStep::Kind::remove:
             mark(step.i, SlotMark::leaving);
             view.fade = 1.0F - ease(part(progress, slide_part));
             break;
-        case LessonStep::Kind::change:
+        case HeapStep::Kind::change:
             mark(step.i, SlotMark::changed);
             break;
-        case LessonStep::Kind::sink:
+        case HeapStep::Kind::sink:
             mark(step.i, SlotMark::sinking);
             break;
     }
     // The unordered array's scan keeps its max so far in view.
-    if (step.best && step.kind == LessonStep::Kind::compare) mark(*step.best, SlotMark::best);
+    if (step.best && step.kind == HeapStep::Kind::compare) mark(*step.best, SlotMark::best);
 }
 
-std::vector<view::HeapMapRow> map_rows(const pq::LessonState& state, int index_base,
+std::vector<view::HeapMapRow> map_rows(const pq::ArrayState& state, int index_base,
                                        const std::optional<view::HeapSwapView>& swap) {
     std::vector<std::pair<std::size_t, std::size_t>> by_handle;  // (handle, slot)
     for (std::size_t i = 0; i < state.handles.size(); ++i)
@@ -304,18 +304,18 @@ std::string panel_title(const pq::QueueKind& kind) {
     return to_string(kind);
 }
 
-HeapLesson::HeapLesson(pq::LessonRecord record, HeapPacing pacing, int index_base)
+HeapProgram::HeapProgram(pq::HeapRecord record, HeapPacing pacing, int index_base)
     : record_(std::move(record)), pacing_(pacing), index_base_(index_base) {
     if (!(pacing.pace > 0.0) || pacing.pause < 0.0 || pacing.intro < 0.0 || pacing.outro < 0.0)
         throw_input_error("pace: must be > 0");
     const bool max = record_.orientation() == pq::Orientation::max;
-    const std::vector<LessonOp>& ops = record_.ops();
-    for (const LessonOp& op : ops) {
+    const std::vector<HeapOp>& ops = record_.ops();
+    for (const HeapOp& op : ops) {
         switch (op.kind) {
-            case LessonOp::Kind::build:
+            case HeapOp::Kind::build:
                 labels_.emplace_back("build");
                 break;
-            case LessonOp::Kind::sortdown:
+            case HeapOp::Kind::sortdown:
                 labels_.emplace_back("sortdown");
                 break;
             default:
@@ -323,7 +323,7 @@ HeapLesson::HeapLesson(pq::LessonRecord record, HeapPacing pacing, int index_bas
                 break;
         }
     }
-    for (const pq::LessonPanel& panel : record_.panels()) {
+    for (const pq::HeapPanel& panel : record_.panels()) {
         PanelText text;
         if (record_.heapsort()) {
             text.title = "heapsort";
@@ -334,7 +334,7 @@ HeapLesson::HeapLesson(pq::LessonRecord record, HeapPacing pacing, int index_bas
             text.start = text.title + (max ? ", max" : ", min") + "-oriented: empty";
         }
         Captioner captioner(panel, record_.orientation(), index_base_);
-        const pq::LessonState* before = &panel.start;
+        const pq::ArrayState* before = &panel.start;
         for (std::size_t k = 0; k < ops.size(); ++k) {
             text.ops.push_back(captioner.op(ops[k], panel.ops[k], *before));
             before = &panel.ops[k].end;
@@ -352,20 +352,20 @@ HeapLesson::HeapLesson(pq::LessonRecord record, HeapPacing pacing, int index_bas
     op_start_.push_back(t);  // the outro starts here
 }
 
-std::string HeapLesson::name() const {
+std::string HeapProgram::name() const {
     std::string out;
     for (const PanelText& p : text_) out += (out.empty() ? "" : ", ") + p.title;
     return out;
 }
 
-double HeapLesson::duration() const noexcept {
+double HeapProgram::duration() const noexcept {
     return op_start_.back() + pacing_.outro;
 }
 
-HeapMoment HeapLesson::moment_at(double seconds) const {
+HeapMoment HeapProgram::moment_at(double seconds) const {
     HeapMoment moment;
     seconds = std::clamp(seconds, 0.0, duration());
-    const std::vector<pq::LessonPanel>& panels = record_.panels();
+    const std::vector<pq::HeapPanel>& panels = record_.panels();
     // The operation under way: the last one started at or before `seconds`.
     const auto after = std::upper_bound(op_start_.begin(), op_start_.end() - 1, seconds);
     if (after == op_start_.begin()) {
@@ -380,11 +380,11 @@ HeapMoment HeapLesson::moment_at(double seconds) const {
     const double into = seconds - op_start_[moment.op];
     const auto step = static_cast<std::size_t>(into / pacing_.pace);
     for (std::size_t p = 0; p < panels.size(); ++p) {
-        const pq::LessonPanelOp& op = panels[p].ops[moment.op];
+        const pq::PanelOp& op = panels[p].ops[moment.op];
         const OpText& text = text_[p].ops[moment.op];
         if (step < text.shown.size()) {
             const double progress = into / pacing_.pace - static_cast<double>(step);
-            const pq::LessonStep& s = op.steps[text.shown[step]];
+            const pq::HeapStep& s = op.steps[text.shown[step]];
             moment.panels.push_back({&s.state, &s, progress, &text.captions[step]});
         } else {
             moment.panels.push_back({&op.end, nullptr, 0.0, &text.summary});
@@ -393,9 +393,10 @@ HeapMoment HeapLesson::moment_at(double seconds) const {
     return moment;
 }
 
-view::HeapPanelView HeapLesson::panel_view(std::size_t panel, const HeapPanelMoment& moment) const {
-    const pq::LessonPanel& record = record_.panels()[panel];
-    const pq::LessonState& state = *moment.state;
+view::HeapPanelView HeapProgram::panel_view(std::size_t panel,
+                                            const HeapPanelMoment& moment) const {
+    const pq::HeapPanel& record = record_.panels()[panel];
+    const pq::ArrayState& state = *moment.state;
     const bool min = record_.orientation() == pq::Orientation::min;
     const bool sort = record_.heapsort();
     const std::string& title = text_[panel].title;
@@ -422,7 +423,7 @@ view::HeapPanelView HeapLesson::panel_view(std::size_t panel, const HeapPanelMom
     return view;
 }
 
-view::HeapFrameView HeapLesson::frame_at(double seconds) const {
+view::HeapFrameView HeapProgram::frame_at(double seconds) const {
     const HeapMoment moment = moment_at(seconds);
     view::HeapFrameView view;
     view.tokens = labels_;
@@ -439,16 +440,16 @@ view::HeapFrameView HeapLesson::frame_at(double seconds) const {
     return view;
 }
 
-void HeapLesson::show_code(bool on) {
+void HeapProgram::show_code(bool on) {
     if (on && !heap_code_fits(record_))
         throw_input_error("code: shows the code of one heap; give a single heap implementation");
     code_ = on;
 }
 
-std::vector<view::CodeLineView> HeapLesson::code_lines() const {
+std::vector<view::CodeLineView> HeapProgram::code_lines() const {
     std::vector<view::CodeLineView> out;
-    std::vector<LessonOp::Kind> seen;
-    for (const LessonOp& op : record_.ops()) {
+    std::vector<HeapOp::Kind> seen;
+    for (const HeapOp& op : record_.ops()) {
         if (std::find(seen.begin(), seen.end(), op.kind) != seen.end()) continue;
         seen.push_back(op.kind);
         for (view::CodeLineView& line : heap_code(op.kind, record_.orientation()))
@@ -457,8 +458,8 @@ std::vector<view::CodeLineView> HeapLesson::code_lines() const {
     return out;
 }
 
-view::CodeView HeapLesson::code_at(const HeapMoment& moment) const {
-    const std::vector<LessonOp>& ops = record_.ops();
+view::CodeView HeapProgram::code_at(const HeapMoment& moment) const {
+    const std::vector<HeapOp>& ops = record_.ops();
     view::CodeView code;
     code.title = "pseudocode";
     if (ops.empty()) return code;
@@ -467,42 +468,41 @@ view::CodeView HeapLesson::code_at(const HeapMoment& moment) const {
     code.lines = heap_code(ops[op].kind, record_.orientation());
     if (!moment.started || moment.panels.empty() || moment.panels.front().step == nullptr)
         return code;
-    const pq::LessonPanelOp& done = record_.panels().front().ops[op];
+    const pq::PanelOp& done = record_.panels().front().ops[op];
     const auto s = static_cast<std::size_t>(moment.panels.front().step - done.steps.data());
     code.current =
         heap_code_line(record_.panels().front(), ops[op].kind, record_.orientation(), done, s);
     return code;
 }
 
-view::ReturnedKeys HeapLesson::returned(std::size_t panel, const HeapMoment& moment) const {
-    const std::vector<LessonOp>& ops = record_.ops();
-    const bool removes = std::any_of(ops.begin(), ops.end(), [](const LessonOp& op) {
-        return op.kind == LessonOp::Kind::remove;
-    });
+view::ReturnedKeys HeapProgram::returned(std::size_t panel, const HeapMoment& moment) const {
+    const std::vector<HeapOp>& ops = record_.ops();
+    const bool removes = std::any_of(
+        ops.begin(), ops.end(), [](const HeapOp& op) { return op.kind == HeapOp::Kind::remove; });
     if (!removes || record_.heapsort()) return {};
     // An operation's key counts as returned once its steps are done (its summary is shown).
     const bool op_done = moment.started && moment.panels[panel].step == nullptr;
     const std::size_t done = !moment.started ? 0 : moment.op + (op_done ? 1 : 0);
     view::ReturnedKeys out{"returned:", {}};
     for (std::size_t k = 0; k < std::min(done, ops.size()); ++k) {
-        if (ops[k].kind != LessonOp::Kind::remove) continue;
+        if (ops[k].kind != HeapOp::Kind::remove) continue;
         out.keys.push_back(record_.panels()[panel].ops[k].removed);
     }
     if (out.keys.empty()) out.keys.push_back("-");
     return out;
 }
 
-std::string HeapLesson::widest_key() const {
+std::string HeapProgram::widest_key() const {
     std::string widest = "W";
-    const auto consider = [&](const pq::LessonState& s) {
+    const auto consider = [&](const pq::ArrayState& s) {
         for (const std::string& k : s.keys) {
             if (k.size() > widest.size()) widest = k;
         }
     };
-    for (const pq::LessonPanel& panel : record_.panels()) {
+    for (const pq::HeapPanel& panel : record_.panels()) {
         consider(panel.start);
-        for (const pq::LessonPanelOp& op : panel.ops) {
-            for (const pq::LessonStep& step : op.steps) consider(step.state);
+        for (const pq::PanelOp& op : panel.ops) {
+            for (const pq::HeapStep& step : op.steps) consider(step.state);
             consider(op.end);
         }
     }

@@ -36,7 +36,7 @@ namespace collide::show {
 /// fast until the goal's expansion, walked too).
 inline constexpr std::size_t walked_expansions = 3;
 
-class PuzzleLesson {
+class PuzzleProgram {
   public:
     /// Which state of the queue a frame shows while an expansion is under way.
     enum class QueueMoment : std::uint8_t {
@@ -55,8 +55,8 @@ class PuzzleLesson {
     /// `results`: one or two solved searches of `start` (kept by reference: they must outlive
     /// this object); `code`: show the search loop beside the one search. Throws Error(runtime)
     /// for an unsolved one, or for code with two searches (a caller's bug).
-    PuzzleLesson(const puzzle::Board& start, const std::vector<puzzle::SearchResult>& results,
-                 bool code = false);
+    PuzzleProgram(const puzzle::Board& start, const std::vector<puzzle::SearchResult>& results,
+                  bool code = false);
 
     /// Whether the frames carry the code.
     [[nodiscard]] bool shows_code() const noexcept { return code_; }
