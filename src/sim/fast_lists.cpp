@@ -1,0 +1,322 @@
+// The fast engine's neighbour lists (3D; see fast_engine.hpp): whether a scene uses them, their
+// rebuild, and the scan of one list when a sphere predicts.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <type_traits>
+
+#include "collide/sim/kinematics.hpp"
+#include "collide/sim/sphere_check.hpp"
+#include "fast_engine_internal.hpp"
+
+namespace collide::sim {
+
+namespace {
+
+using detail::cell_margin;
+using detail::fit_cells;
+using detail::vec_of;
+using kinematics::never;
+
+/// The neighbour lists' shell, as a fraction of the largest diameter (3D, see fast_engine.hpp):
+/// thinner shells mean shorter lists but more rebuilds. 0.5 was the fastest of 0.2 ... 0.8 at
+/// packing 0.45 (docs/benchmarks.md, spheres).
+constexpr double list_shell_per_diameter = 0.5;
+
+/// Lists beat cell scans from about packing 0.37 (0.81x at 0.30, 1.05x at 0.38, 1.3x at 0.45,
+/// 1.6x at 0.5, N = 4000; docs/benchmarks.md): in a thinner gas a sphere rebuilds its list
+/// several times between collisions. Below this packing fraction spheres use cell crossings
+/// (0.38, not 0.4: a scene made at 0.4 sums to a hair less).
+constexpr double list_min_packing = 0.38;
+
+/// Up to this many bytes of particle records, a list scan finds them in the core's own caches
+/// (a typical L2): asking for them first would only cost instructions (docs/benchmarks.md).
+constexpr std::size_t records_in_cache = std::size_t{1} << 20;
+
+/// Slots per list to start with; lists that outgrow them double every list's slots.
+constexpr std::uint32_t initial_list_slots = 16;
+
+}  // namespace
+
+template <int D>
+void BasicFastEngine<D>::choose_lists(const SceneType& scene) {
+    lists_ = false;
+    shell_ = 0.0;
+    if constexpr (D == 3) {
+        if (!std::isinf(big_threshold_) || !(small_radius_max_ > 0.0)) return;
+        if (packing_fraction(scene) < list_min_packing) return;
+        // A list entry keeps its image code above the index (a scene this big, 50 GB of
+        // spheres, would use cell crossings).
+        if (Space::particles(scene).size() > list_index_mask) return;
+        const double shell = list_shell_per_diameter * 2.0 * small_radius_max_;
+        if (periodic_) {
+            // Three cells of centres per axis, and so the nearest image of a listed pair is
+            // unambiguous (the box is wider than twice the 2 r + 2 shell a pair spans).
+            const double min_cell = (2.0 * small_radius_max_ + shell) * (1.0 + cell_margin);
+            const Vec extent = Space::extent(scene.box);
+            for (int k = 0; k < D; ++k) {
+                if (fit_cells(axis(extent, k), min_cell) < 3) return;
+            }
+        }
+        lists_ = true;
+        shell_ = shell;
+        const auto& particles = Space::particles(scene);
+        equal_radii_ = std::all_of(particles.begin(), particles.end(), [&](const auto& p) {
+            return p.radius == particles.front().radius;
+        });
+        for (std::uint32_t code = 0; code < image_shift_.size(); ++code) {
+            Vec shift{};
+            std::uint32_t rest = code;
+            for (int k = 0; k < D; ++k, rest /= 3) {
+                axis(shift, k) = (static_cast<double>(rest % 3) - 1.0) * axis(extent_, k);
+            }
+            image_shift_[code] = shift;
+        }
+        // A hair inside shell / 2: a list still holds every pair that can touch when the
+        // rebuild's time is rounded a little late.
+        expiry_ = 0.5 * shell * (1.0 - 1e-9);
+    }
+}
+
+template <int D>
+void BasicFastEngine<D>::build_all_lists() {
+    list_cap_ = initial_list_slots;
+    prefetch_records_ = p_.size() * sizeof(Particle) > records_in_cache;
+    nbr_.assign(p_.size() * list_cap_, no_disc);
+    nbr_count_.assign(p_.size(), 0);
+    for (std::uint32_t i = 0; i < p_.size(); ++i) {
+        if (i % detail::build_stop_poll_particles == 0) this->check_stop();
+        gather_neighbours(i, true);
+    }
+}
+
+template <int D>
+void BasicFastEngine<D>::gather_neighbours(std::uint32_t i, bool only_after) {
+    const Particle& pi = p_[i];
+    const Vec ci = centre_[i];
+    // As in scan_cells: every cell's members asked for before any is read.
+    CellVisits visits;
+    const std::size_t cells =
+        occupied_cells(pi, neighbourhood_lo(), neighbourhood_hi(), visits, [&](std::uint32_t cell) {
+            __builtin_prefetch(&members_[std::size_t{cell} * cell_slots_]);
+        });
+    for (std::size_t c = 0; c < cells; ++c) {
+        const Vec shift = vec_of(visits[c].shift);
+        // The cell's members are read from one array, not followed link by link: each record
+        // read below then waits for no other (the linked lists' chain of reads cost more than
+        // the distances).
+        const std::uint32_t* members = &members_[std::size_t{visits[c].cell} * cell_slots_];
+        const std::uint32_t count = member_count_[visits[c].cell];
+        // j is seen from i through the cell's image, and i from j through the opposite one.
+        const std::uint32_t image = image_code(visits[c].shift);
+        const auto opposite = static_cast<std::uint32_t>(image_shift_.size() - 1) - image;
+        const auto gather = [&](auto equal_radii) {
+            for (std::uint32_t k = 0; k < count; ++k) {
+                const std::uint32_t j = members[k];
+                if (j == i || (only_after && j < i)) continue;
+                // Equal radii: the same sum without reading j's record.
+                const double rj = equal_radii ? pi.r : p_[j].r;
+                const double reach = pi.r + rj + shell_;
+                if (norm2(centre_[j] + shift - ci) <= reach * reach) {
+                    add_neighbour(i, j, image);
+                    add_neighbour(j, i, opposite);
+                }
+            }
+        };
+        if (equal_radii_) {
+            gather(std::true_type{});
+        } else {
+            gather(std::false_type{});
+        }
+    }
+}
+
+template <int D>
+std::uint32_t BasicFastEngine<D>::image_code(const std::array<double, D>& shift) noexcept {
+    std::uint32_t code = 0;
+    for (int k = D - 1; k >= 0; --k) {
+        const double s = shift[static_cast<std::size_t>(k)];
+        code = 3 * code + (s > 0.0 ? 2U : s < 0.0 ? 0U : 1U);
+    }
+    return code;
+}
+
+template <int D>
+std::uint32_t BasicFastEngine<D>::nearest_image_code(std::uint32_t i,
+                                                     std::uint32_t j) const noexcept {
+    std::array<double, D> shift{};
+    for (int k = 0; k < D; ++k) {
+        const double d = axis(centre_[j], k) - axis(centre_[i], k);
+        const double side = axis(extent_, k);
+        if (periodic_)
+            shift[static_cast<std::size_t>(k)] = d > 0.5 * side    ? -side
+                                                 : d < -0.5 * side ? side
+                                                                   : 0.0;
+    }
+    return image_code(shift);
+}
+
+template <int D>
+inline void BasicFastEngine<D>::add_neighbour(std::uint32_t i, std::uint32_t j,
+                                              std::uint32_t image) {
+    if (nbr_count_[i] == list_cap_) widen_lists();
+    nbr_[std::size_t{i} * list_cap_ + nbr_count_[i]++] = j | (image << list_image_shift);
+}
+
+template <int D>
+void BasicFastEngine<D>::widen_lists() {
+    // Rare (a crowd denser than the start): double every list's slots, keeping the entries.
+    detail::double_slots(nbr_, nbr_count_, list_cap_);
+}
+
+template <int D>
+void BasicFastEngine<D>::remove_neighbour(std::uint32_t i, std::uint32_t j) noexcept {
+    std::uint32_t* list = &nbr_[std::size_t{i} * list_cap_];
+    std::uint32_t& count = nbr_count_[i];
+    for (std::uint32_t k = 0; k < count; ++k) {
+        if ((list[k] & list_index_mask) == j) {
+            list[k] = list[--count];  // order does not matter: a scan's result is order-free
+            return;
+        }
+    }
+}
+
+template <int D>
+void BasicFastEngine<D>::process_rebuild(std::uint32_t i) {
+    // A rebuild far from the particle's latest event starts a new instant for the jam count.
+    if (!same_instant(now_ - p_[i].t, p_[i].v, p_[i].r)) cold_[i].instant_collisions = 0;
+    advance_disc(i);
+    Particle& pi = p_[i];
+    const std::uint32_t* list = &nbr_[std::size_t{i} * list_cap_];
+    for (std::uint32_t k = 0; k < nbr_count_[i]; ++k) {
+        remove_neighbour(list[k] & list_index_mask, i);
+    }
+    nbr_count_[i] = 0;
+    if (periodic_) {
+        // The centre goes back into the box: the particle never strays more than shell / 2.
+        for (int k = 0; k < D; ++k) {
+            double& x = axis(pi.x, k);
+            if (x < 0.0) {
+                x += axis(extent_, k);
+                --image_[i][k];
+            } else if (x >= axis(extent_, k)) {
+                x -= axis(extent_, k);
+                ++image_[i][k];
+            }
+        }
+    }
+    centre_[i] = pi.x;
+    unlink(i);
+    link(i, cell_of(pi.x));
+    gather_neighbours(i, false);
+    ++core_.counters().list_rebuilds;
+    predict(i);
+}
+
+template <int D>
+void BasicFastEngine<D>::scan_neighbour_list(std::uint32_t i, const Particle& pi, Vec xi,
+                                             Key& best) {
+    const std::uint32_t* list = &nbr_[std::size_t{i} * list_cap_];
+    const std::uint32_t count = nbr_count_[i];
+    for (std::uint32_t k = 0; prefetch_records_ && k < count; ++k) {
+        // A sphere's 80-byte record starts a cache line only every fourth sphere: ask for the
+        // line that holds its last byte too (x, v, t and r, all a scan reads, span both).
+        const auto* record = reinterpret_cast<const char*>(&p_[list[k] & list_index_mask]);
+        __builtin_prefetch(record);
+        __builtin_prefetch(record + sizeof(Particle) - 1);
+    }
+    core_.counters().predictions += count;
+    // test_pair's tests in another order, for fewer mispredicted branches: half of all pairs
+    // recede, and most of the others cannot beat the best event so far (cannot_beat), so both
+    // are one combined test that goes the same way for most pairs; the rare rest is exact.
+    // Locals, not members or `best`: through references the compiler reloads them per pair.
+    const double now = now_;
+    const Vec vi = pi.v;
+    const double ri = pi.r;
+    Key found = best;
+    // cannot_beat's margin on the interval to the best event, updated when that improves.
+    double reach = beat_margin(found.t);
+    for (std::uint32_t k = 0; k < count; ++k) {
+        const std::uint32_t j = list[k] & list_index_mask;
+        const Particle& pj = p_[j];
+        // j through the image stored with it (no shift away from the box's faces).
+        const Vec dr = pj.x + pj.v * (now - pj.t) + image_shift_[list[k] >> list_image_shift] - xi;
+        const Vec dv = pj.v - vi;
+        const double sigma = ri + pj.r;
+        const double b = dot(dv, dr);
+        const double c = dot(dr, dr) - sigma * sigma;
+        if ((b >= 0.0) | ((c > 0.0) & (c > -2.0 * b * reach))) continue;
+        if (pi.last_partner == j && pj.last_partner == i) {
+            const double touch = sigma * (1.0 + just_collided_slack);
+            if (norm2(dr) < touch * touch) continue;
+        }
+        const double dt = kinematics::time_to_hit(dr, dv, sigma);
+        if (dt == never) continue;
+        const double t = now + dt;
+        if (t > found.t) continue;
+        const Key key = Key::make(t, i, j, EventKind::pair);
+        if (key_less_(key, found)) {
+            found = key;
+            reach = beat_margin(found.t);
+        }
+    }
+    best = found;
+}
+
+template <int D>
+double BasicFastEngine<D>::time_to_expiry(std::uint32_t i, const Particle& pi,
+                                          Vec xi) const noexcept {
+    const Vec d = xi - centre_[i];
+    const double a = dot(pi.v, pi.v);
+    if (!(a > 0.0)) return never;
+    const double b = dot(d, pi.v);
+    const double c = dot(d, d) - expiry_ * expiry_;
+    if (!(c < 0.0)) return 0.0;  // at the edge already (rounding): rebuild now
+    const double root = std::sqrt(b * b - a * c);
+    // The positive root of a t^2 + 2 b t + c = 0, without cancellation when b > 0.
+    return b > 0.0 ? -c / (b + root) : (root - b) / a;
+}
+
+template <int D>
+bool BasicFastEngine<D>::check_lists() const {
+    const std::size_t n = p_.size();
+    if (centre_.size() != n || nbr_count_.size() != n || nbr_.size() != n * list_cap_) return false;
+    // j is in i's list, seen through its nearest image (the centres of a listed pair are
+    // within 2 r + shell, far less than half the box).
+    const auto listed = [&](std::uint32_t i, std::uint32_t j) {
+        const std::uint32_t* list = &nbr_[std::size_t{i} * list_cap_];
+        return std::find(list, list + nbr_count_[i],
+                         j | (nearest_image_code(i, j) << list_image_shift)) !=
+               list + nbr_count_[i];
+    };
+    for (std::uint32_t i = 0; i < n; ++i) {
+        // Within shell / 2 of its centre, up to rounding.
+        if (norm(position_at_now(i) - centre_[i]) > expiry_ * (1.0 + 1e-6)) return false;
+        const std::uint32_t* list = &nbr_[std::size_t{i} * list_cap_];
+        for (std::uint32_t k = 0; k < nbr_count_[i]; ++k) {
+            const std::uint32_t j = list[k] & list_index_mask;
+            if (j >= n || j == i || !listed(i, j) || !listed(j, i)) return false;  // symmetric
+            if (std::count_if(list, list + nbr_count_[i],
+                              [&](std::uint32_t e) { return (e & list_index_mask) == j; }) != 1)
+                return false;
+        }
+        // Every pair whose centres are near is listed (the cells of centres hold them all).
+        bool complete = true;
+        for_each_cell(
+            p_[i], neighbourhood_lo(), neighbourhood_hi(), [&](std::uint32_t cell, Vec shift) {
+                for (std::uint32_t k = 0; k < member_count_[cell]; ++k) {
+                    const std::uint32_t j = members_[std::size_t{cell} * cell_slots_ + k];
+                    const double reach = (p_[i].r + p_[j].r + shell_) * (1.0 - 1e-9);
+                    if (j != i && norm2(centre_[j] + shift - centre_[i]) <= reach * reach &&
+                        !listed(i, j))
+                        complete = false;
+                }
+            });
+        if (!complete) return false;
+    }
+    return true;
+}
+
+}  // namespace collide::sim
