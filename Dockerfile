@@ -20,7 +20,9 @@ RUN cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release -DCOLLIDE_BU
 FROM debian:12
 ENV DEBIAN_FRONTEND=noninteractive
 COPY --from=build /collide.deb /tmp/collide.deb
-RUN apt-get update -qq && apt-get install -y -qq --no-install-recommends /tmp/collide.deb && rm -rf /var/lib/apt/lists/* /tmp/collide.deb && useradd --create-home --uid 1000 --shell /usr/sbin/nologin collide
+# fonts-droid-fallback is only recommended by the .deb: named here, so that the image draws
+# Chinese, Japanese and Korean text.
+RUN apt-get update -qq && apt-get install -y -qq --no-install-recommends /tmp/collide.deb fonts-droid-fallback && rm -rf /var/lib/apt/lists/* /tmp/collide.deb && useradd --create-home --uid 1000 --shell /usr/sbin/nologin collide
 USER collide
 WORKDIR /home/collide
 ENTRYPOINT ["collide"]

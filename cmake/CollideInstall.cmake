@@ -89,7 +89,8 @@ set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # Binaries stripped in the package (lintian: unstripped-binary-or-object); the build tree keeps
 # its debug information.
 set(CPACK_STRIP_FILES ON)
-# The text needs a font (the search of docs/install.md starts with DejaVu Sans).
+# The text needs a font (the search of docs/install.md starts with DejaVu Sans); Chinese,
+# Japanese and Korean come from a fallback font (Droid Sans Fallback), drawn as '?' without it.
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "fonts-dejavu-core")
-set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "fontconfig")
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "fontconfig, fonts-droid-fallback")
 include(CPack)

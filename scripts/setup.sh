@@ -8,8 +8,8 @@ set -euo pipefail
 
 packages=(
     build-essential cmake ninja-build pkg-config python3-glad
-    libosmesa6-dev libegl-dev libglfw3-dev libstb-dev fonts-dejavu-core
-    libfreetype-dev libharfbuzz-dev
+    libosmesa6-dev libegl-dev libglfw3-dev libstb-dev fonts-dejavu-core fonts-droid-fallback
+    libfreetype-dev libharfbuzz-dev libfribidi-dev
     libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libavfilter-dev
     libcli11-dev libtomlplusplus-dev libfmt-dev nlohmann-json3-dev doctest-dev libbenchmark-dev
 )

@@ -2,6 +2,7 @@
 /// (exit 0) or the first problem with file:line and field (exit 2, via main). --export writes the
 /// scene back out with every disc explicit (generated discs frozen; algs4 <-> TOML conversion).
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -76,27 +77,60 @@ std::vector<ScreenText> screen_texts(const Scene& scene, const std::string& scen
     return out;
 }
 
-/// Warns (stderr) about each character of the scene's on-screen text that the font the drawing
-/// commands would use lacks: it would be drawn as '?'. A font that cannot be opened is a warning
-/// too: checking a scene needs no font, drawing it does.
+/// The installed fallback fonts that open (text::installed_fallback_fonts); a warning for each
+/// that does not: the renderer draws its characters as '?'.
+std::vector<text::FontFace> usable_fallback_fonts() {
+    std::vector<text::FontFace> out;
+    for (const std::string& path : text::installed_fallback_fonts()) {
+        try {
+            out.emplace_back(path, std::string_view{}, text::fallback_font_package(path));
+        } catch (const Error& e) {
+            std::fprintf(stderr, "warning: the fallback font is not used: %s\n",
+                         printable_text(e.what()).c_str());
+        }
+    }
+    return out;
+}
+
+/// "the font DejaVu Sans (PATH)", or with fallbacks "any installed font (DejaVu Sans (PATH),
+/// Droid Sans Fallback (PATH))": where a character was looked for.
+std::string fonts_looked_in(const std::vector<const text::FontFace*>& fonts) {
+    const auto one = [](const text::FontFace* f) { return f->name() + " (" + f->path() + ")"; };
+    if (fonts.size() == 1) return "the font " + one(fonts.front());
+    std::string out = "any installed font (";
+    for (std::size_t i = 0; i < fonts.size(); ++i) out += (i > 0 ? ", " : "") + one(fonts[i]);
+    return out + ")";
+}
+
+/// Warns (stderr) about each character of the scene's on-screen text that neither the font the
+/// drawing commands would use nor any installed fallback font has: it would be drawn as '?'. A
+/// font that cannot be opened is a warning too: checking a scene needs no font, drawing it does.
 void warn_missing_characters(const Scene& scene, const std::string& scene_arg,
                              const std::string& font_option) {
-    std::string path;
     std::optional<text::FontFace> font;
     try {
-        path = find_font(font_option);
-        font.emplace(path);
+        font.emplace(find_font(font_option));
     } catch (const Error& e) {
         std::fprintf(stderr, "warning: the scene's characters were not checked: %s\n",
                      printable_text(e.what()).c_str());
         return;
     }
-    for (const ScreenText& t : screen_texts(scene, scene_arg)) {
-        for (const std::uint32_t cp : text::missing_characters(*font, *t.text)) {
-            std::fprintf(stderr, "warning: %s: %s is not in the font %s (%s): it is drawn as '?'\n",
+    const std::vector<ScreenText> texts = screen_texts(scene, scene_arg);
+    // The fallbacks (megabytes, checked whole) are read only when the font lacks something.
+    if (std::all_of(texts.begin(), texts.end(), [&font](const ScreenText& t) {
+            return text::missing_characters(*font, *t.text).empty();
+        })) {
+        return;
+    }
+    const std::vector<text::FontFace> fallbacks = usable_fallback_fonts();
+    std::vector<const text::FontFace*> fonts{&*font};
+    for (const text::FontFace& f : fallbacks) fonts.push_back(&f);
+    const std::string looked_in = printable_text(fonts_looked_in(fonts));
+    for (const ScreenText& t : texts) {
+        for (const std::uint32_t cp : text::missing_characters(fonts, *t.text)) {
+            std::fprintf(stderr, "warning: %s: %s is not in %s: it is drawn as '?'\n",
                          printable_text(t.where).c_str(),
-                         printable_text(text::describe_character(cp)).c_str(),
-                         printable_text(font->name()).c_str(), printable_text(path).c_str());
+                         printable_text(text::describe_character(cp)).c_str(), looked_in.c_str());
         }
     }
 }

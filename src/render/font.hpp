@@ -12,9 +12,13 @@
 
 namespace collide::render {
 
-/// One font at one pixel size. Every script the font covers is shaped (ligatures, marks,
-/// kerning, right-to-left runs); a character the font lacks is drawn as '?' (`collide check`
-/// warns about those). Glyphs are rasterised once, when text first uses them, and shaped runs
+/// One font at one pixel size, with the installed fallback fonts (text::installed_fallback_fonts:
+/// CJK) for the characters it lacks. A line is split into runs by direction (Unicode's bidi
+/// algorithm, FriBidi: Arabic and Hebrew right to left, the Latin words and numbers inside them
+/// left to right) and by face (each character from the font when it has it, else the first
+/// fallback that does), each run shaped by HarfBuzz (Arabic joined, ligatures, marks, kerning)
+/// and the runs put in visual order. A character no face has is drawn as '?' (`collide check`
+/// warns about those). Glyphs are rasterised once, when text first uses them, and shaped lines
 /// are cached, so a frame's text costs lookups. Move-only; one thread at a time (the caches are
 /// filled by the const calls).
 class FontAtlas {
@@ -34,6 +38,16 @@ class FontAtlas {
                    Rgba8 color) const;
     /// The advance width of `text` in pixels.
     [[nodiscard]] float text_width(std::string_view text) const;
+
+    /// One glyph of a line as add_text draws it.
+    struct ShapedGlyph {
+        std::size_t face;  ///< 0 the font, 1... the installed fallbacks in order
+        unsigned glyph;    ///< the glyph's index in that face ('?' of the font: no face had it)
+        std::size_t character;  ///< the first code point it draws: an index into the text's
+        float pen_x;            ///< pixels from the line's start to the glyph's pen position
+    };
+    /// `text` (UTF-8, one line) shaped: its glyphs left to right, as drawn.
+    [[nodiscard]] std::vector<ShapedGlyph> shaped(std::string_view text) const;
 
     /// The height stb_truetype's ScaleForPixelHeight meant: ascender to descender, in pixels.
     [[nodiscard]] float pixel_height() const noexcept { return pixel_height_; }

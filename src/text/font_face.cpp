@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -21,6 +22,7 @@ namespace {
 struct FontSource {
     const std::string& path;
     std::string_view chosen_by;
+    std::string_view package = "fonts-dejavu-core";  // the one a runtime error advises
 };
 
 [[noreturn]] void unusable(const FontSource& font, const std::string& why) {
@@ -30,7 +32,7 @@ struct FontSource {
                           "); give a TrueType or OpenType font (.ttf, .otf, .ttc)");
     }
     throw_runtime_error("font: '" + font.path + "' is not a usable TrueType font (" + why +
-                        "); reinstall fonts-dejavu-core");
+                        "); reinstall " + std::string(font.package));
 }
 
 /// The whole file, read only once its size is known to be within max_font_file_bytes (a font is
@@ -131,14 +133,22 @@ void check_sfnt(const std::vector<unsigned char>& data, const FontSource& font) 
     if (!outlines) unusable(font, "tables missing");
 }
 
-/// Characters a shaper draws as nothing (Unicode's default ignorables and the C0/C1 controls):
-/// no font needs a glyph for them.
-bool drawn_as_nothing(std::uint32_t cp) {
-    return cp < 0x20 || (cp >= 0x7F && cp <= 0x9F) || cp == 0xAD || cp == 0x34F ||
-           (cp >= 0x200B && cp <= 0x200F) || (cp >= 0x2028 && cp <= 0x202E) ||
-           (cp >= 0x2060 && cp <= 0x206F) || (cp >= 0xFE00 && cp <= 0xFE0F) || cp == 0xFEFF ||
-           (cp >= 0xE0000 && cp <= 0xE0FFF);
-}
+/// A fallback font where a distribution installs it, and the package that does (Debian's name
+/// where Debian has it: the messages of this build speak Debian).
+struct FallbackFont {
+    std::string_view path;
+    std::string_view package;
+};
+
+/// Droid Sans Fallback first: it covers Chinese, Japanese and Korean in one face of 4 MB, where
+/// Noto Sans CJK's collection is 20-90 MB, read whole by every atlas that needs it.
+constexpr std::array<FallbackFont, 5> fallback_fonts = {{
+    {"/usr/share/fonts/truetype/droid/DroidSansFallbackFull.ttf", "fonts-droid-fallback"},
+    {"/usr/share/fonts/google-droid-sans-fonts/DroidSansFallbackFull.ttf", "fonts-droid-fallback"},
+    {"/usr/share/fonts/opentype/noto/NotoSansCJK-Regular.ttc", "fonts-noto-cjk"},
+    {"/usr/share/fonts/google-noto-cjk/NotoSansCJK-Regular.ttc", "fonts-noto-cjk"},
+    {"/usr/share/fonts/noto-cjk/NotoSansCJK-Regular.ttc", "fonts-noto-cjk"},
+}};
 
 std::string encode_utf8(std::uint32_t cp) {
     std::string out;
@@ -162,9 +172,9 @@ std::string encode_utf8(std::uint32_t cp) {
 
 }  // namespace
 
-FontFace::FontFace(const std::string& path, std::string_view chosen_by)
-    : path_(path), data_(read_font_file(FontSource{path, chosen_by})) {
-    const FontSource source{path_, chosen_by};
+FontFace::FontFace(const std::string& path, std::string_view chosen_by, std::string_view package)
+    : path_(path), data_(read_font_file(FontSource{path, chosen_by, package})) {
+    const FontSource source{path_, chosen_by, package};
     check_sfnt(data_, source);
     if (const FT_Error error = FT_Init_FreeType(&library_); error != 0) {
         library_ = nullptr;
@@ -228,6 +238,30 @@ std::string FontFace::name() const {
     return out;
 }
 
+std::vector<std::string> installed_fallback_fonts() {
+    std::vector<std::string> out;
+    for (const FallbackFont& font : fallback_fonts) {
+        struct stat status {};
+        const std::string path(font.path);
+        if (stat(path.c_str(), &status) == 0 && S_ISREG(status.st_mode)) out.push_back(path);
+    }
+    return out;
+}
+
+std::string_view fallback_font_package(std::string_view path) {
+    for (const FallbackFont& font : fallback_fonts) {
+        if (font.path == path) return font.package;
+    }
+    return "the package that installed it";
+}
+
+bool needs_no_glyph(std::uint32_t cp) {
+    return cp < 0x20 || (cp >= 0x7F && cp <= 0x9F) || cp == 0xAD || cp == 0x34F ||
+           (cp >= 0x200B && cp <= 0x200F) || (cp >= 0x2028 && cp <= 0x202E) ||
+           (cp >= 0x2060 && cp <= 0x206F) || (cp >= 0xFE00 && cp <= 0xFE0F) || cp == 0xFEFF ||
+           (cp >= 0xE0000 && cp <= 0xE0FFF);
+}
+
 std::vector<std::uint32_t> decode_utf8(std::string_view text) {
     std::vector<std::uint32_t> out;
     out.reserve(text.size());
@@ -276,9 +310,18 @@ std::vector<std::uint32_t> decode_utf8(std::string_view text) {
 }
 
 std::vector<std::uint32_t> missing_characters(const FontFace& font, std::string_view text) {
+    return missing_characters(std::vector<const FontFace*>{&font}, text);
+}
+
+std::vector<std::uint32_t> missing_characters(const std::vector<const FontFace*>& fonts,
+                                              std::string_view text) {
     std::vector<std::uint32_t> missing;
     for (const std::uint32_t cp : decode_utf8(text)) {
-        if (drawn_as_nothing(cp) || font.has_character(cp)) continue;
+        if (needs_no_glyph(cp)) continue;
+        if (std::any_of(fonts.begin(), fonts.end(),
+                        [cp](const FontFace* font) { return font->has_character(cp); })) {
+            continue;
+        }
         if (std::find(missing.begin(), missing.end(), cp) == missing.end()) missing.push_back(cp);
     }
     return missing;
@@ -287,7 +330,7 @@ std::vector<std::uint32_t> missing_characters(const FontFace& font, std::string_
 std::string describe_character(std::uint32_t code_point) {
     char hex[16];
     std::snprintf(hex, sizeof hex, "U+%04X", static_cast<unsigned>(code_point));
-    if (drawn_as_nothing(code_point) || code_point > 0x10FFFF ||
+    if (needs_no_glyph(code_point) || code_point > 0x10FFFF ||
         (code_point >= 0xD800 && code_point <= 0xDFFF)) {
         return hex;
     }

@@ -20,6 +20,8 @@ echo "Depends: $depends"
 for library in libavcodec libavformat libavutil libosmesa6 libglfw3 fonts-dejavu-core; do
     [[ $depends == *"$library"* ]] || fail "Depends lacks $library"
 done
+[[ $(dpkg-deb -f "$deb" Recommends) == *fonts-droid-fallback* ]] ||
+    fail "Recommends lacks fonts-droid-fallback (the CJK fallback font)"
 contents=$(dpkg-deb -c "$deb")
 grep -q './usr/bin/collide$' <<<"$contents" || fail "no /usr/bin/collide"
 grep -q './usr/libexec/collide/collide-draw$' <<<"$contents" || fail "no collide-draw"

@@ -27,8 +27,10 @@ class FontFace {
     /// Throws collide::Error naming `path` when it cannot be read or is not a usable font:
     /// with `chosen_by` empty (a font the search found), a runtime error advising to reinstall
     /// fonts-dejavu-core; else an input error that names `chosen_by`, the option or variable the
-    /// user gave the file with ("--font", "$COLLIDE_FONT").
-    explicit FontFace(const std::string& path, std::string_view chosen_by = {});
+    /// user gave the file with ("--font", "$COLLIDE_FONT"). `package` is the Debian package the
+    /// runtime error advises to reinstall (a fallback font's is not DejaVu's).
+    explicit FontFace(const std::string& path, std::string_view chosen_by = {},
+                      std::string_view package = "fonts-dejavu-core");
     ~FontFace();
     FontFace(FontFace&& other) noexcept;
     FontFace& operator=(FontFace&& other) noexcept;
@@ -52,6 +54,20 @@ class FontFace {
     FT_Face face_ = nullptr;
 };
 
+/// The fallback fonts installed here, in the order they are asked for a character the main font
+/// lacks (CJK, above all): Droid Sans Fallback (Debian's fonts-droid-fallback, Fedora's
+/// google-droid-sans-fonts), then Noto Sans CJK (fonts-noto-cjk; Fedora, Arch). Only paths that
+/// are regular files; none opened or checked here.
+[[nodiscard]] std::vector<std::string> installed_fallback_fonts();
+
+/// The Debian package that installs the fallback font at `path` (for a message that advises to
+/// reinstall it).
+[[nodiscard]] std::string_view fallback_font_package(std::string_view path);
+
+/// True for the characters a shaper draws as nothing (Unicode's default ignorables: joiners,
+/// variation selectors, spaces of zero width; and the C0/C1 controls): no font needs a glyph.
+[[nodiscard]] bool needs_no_glyph(std::uint32_t code_point);
+
 /// Decodes UTF-8 into code points; malformed bytes become U+FFFD.
 [[nodiscard]] std::vector<std::uint32_t> decode_utf8(std::string_view text);
 
@@ -60,6 +76,11 @@ class FontFace {
 /// joiners, variation selectors) and are never reported.
 [[nodiscard]] std::vector<std::uint32_t> missing_characters(const FontFace& font,
                                                             std::string_view text);
+
+/// The characters of `text` (UTF-8) that none of `fonts` has (the main font and its fallbacks:
+/// what the renderer draws as '?'), each once, in the order they first appear; as above.
+[[nodiscard]] std::vector<std::uint32_t> missing_characters(
+    const std::vector<const FontFace*>& fonts, std::string_view text);
 
 /// A character for a message: "'Δ' (U+0394)", or "U+0007" alone for one that cannot be shown.
 [[nodiscard]] std::string describe_character(std::uint32_t code_point);
