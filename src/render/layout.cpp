@@ -197,6 +197,9 @@ std::string layout_json(const FrameLayout& layout, OverlayLevel level, int width
     }
     out["panels"] = std::move(panels);
     out["column"] = rect_json(layout.column.area);
+    // The column's plot (a histogram): with a large plot the subject beside the boxes.
+    if (layout.column.plot.width() > 0.0F && layout.column.plot.height() > 0.0F)
+        out["plot"] = rect_json(layout.column.plot);
     Json text = Json::array();
     for (std::size_t i = 0; i < layout.text.size(); ++i) {
         const TextSlot& t = layout.text[i];

@@ -150,8 +150,13 @@ struct LayoutInput {
     float code_width = 0.0F;
 };
 
-/// Lesson level: the event queue strip's share of the frame height.
+/// Lesson level: the event queue strip's largest share of the frame height.
 inline constexpr float queue_strip_share = 0.3F;
+/// ... and its smallest: a heading and a row of the queue's nodes.
+inline constexpr float queue_strip_min_share = 0.17F;
+/// With the queue strip the boxes keep at least this share of the frame's area (issue 44: 35 %),
+/// where the strip's smallest height allows it: the strip takes what they leave.
+inline constexpr float queue_boxes_share = 0.36F;
 
 /// The font size used for a frame height at the full level (px): today's H / 34.
 [[nodiscard]] float font_pixel_height(int frame_height) noexcept;

@@ -212,12 +212,97 @@ FrameLayout grid_layout(const LayoutInput& in, float body) {
     return layout;
 }
 
+/// The queue strip's height when the boxes and the strip share `room` (px): what the boxes leave
+/// at queue_boxes_share of the frame, between queue_strip_min_share and queue_strip_share of its
+/// height.
+float queue_strip_height(const LayoutInput& in, float room) {
+    const auto width = static_cast<float>(in.width);
+    const auto height = static_cast<float>(in.height);
+    double area = 0.0;  // the boxes' area at one pixel per unit
+    double tallest = 0.0;
+    for (const Box& box : in.boxes) {
+        area += box.width * box.height;
+        tallest = std::max(tallest, box.height);
+    }
+    const double scale = std::sqrt(queue_boxes_share * width * height / std::max(area, 1e-12));
+    const auto boxes_h = static_cast<float>(std::ceil(tallest * scale));
+    return std::round(
+        std::clamp(room - boxes_h, queue_strip_min_share * height, queue_strip_share * height));
+}
+
+/// One panel beside its text: a square box cannot fill a 16:9 frame under a title and over
+/// figures, so the box takes the frame's height (above the caption) on the left, and on its right
+/// come, top to bottom: the --code column, the title, figures, note, marks and how lines, the
+/// queue strip, and the column (clock, cost, energy, plot) in what is left.
+FrameLayout side_layout(const LayoutInput& in, float body) {
+    FrameLayout layout;
+    const float head = std::round(body * headline_scale);
+    layout.body_pixel_height = body;
+    layout.headline_pixel_height = head;
+    const auto width = static_cast<float>(in.width);
+    const auto height = static_cast<float>(in.height);
+    const float m = std::max(3.0F, std::round(height * 0.014F));
+    layout.margin = m;
+    const float line = body;
+    const float head_line = head;
+    const float gap = std::round(0.6F * m);
+    const float caption_top = height - m - line;
+    const Box& box = in.boxes.front();
+    // The text on the right needs at least this width (a title, two figures), and the code its.
+    const float code_w = in.code_rows > 0 ? std::ceil(in.code_width) : 0.0F;
+    const float text_w = std::max(code_w, std::max(0.3F * width, 10.0F * body));
+    const double scale = fit_scale(box, width - text_w - 3.0F * m, caption_top - gap - m);
+    PanelLayout panel;
+    panel.scale = scale;
+    panel.box = place_box(box, scale, m, m + static_cast<float>(box.width * scale), m);
+    panel.area = {0.0F, 0.0F, panel.box.x1 + 0.5F * m, caption_top - gap};
+    layout.panels.push_back(panel);
+    const float x0 = panel.box.x1 + m;
+    const float x1 = width - m;
+    const float bottom = panel.box.y1;
+    float y = m;
+    if (code_w > 0.0F) {
+        const float rows_h = (static_cast<float>(in.code_rows) * 1.2F + 1.2F) * body;
+        layout.code = {x0, y, std::min(x1, x0 + code_w), y + std::ceil(rows_h)};
+        for (const RectF& row : code_rows(layout.code, body, in.code_rows))
+            layout.text.push_back({TextRole::code, -1, row, body});
+        y = layout.code.y1 + gap;
+    }
+    const auto add = [&](TextRole role, float h, float px) {
+        layout.text.push_back({role, 0, {x0, y, x1, y + h}, px});
+        y += h;
+    };
+    add(TextRole::title, line, body);
+    y += gap;
+    add(TextRole::figures, head_line, head);
+    if (in.note_line) add(TextRole::note, line, body);
+    if (!in.mark_lines.empty() && in.mark_lines.front()) add(TextRole::marks, line, body);
+    if (in.how_line) add(TextRole::how, line, body);
+    if (in.queue_panel == 0) {
+        layout.queue_panel = 0;
+        const float rest = bottom - (y + gap);
+        // The strip takes up to its share, leaving the column its clock (two lines) when it can.
+        const float strip_h = std::round(std::clamp(
+            rest - 2.0F * line - gap, queue_strip_min_share * height, queue_strip_share * height));
+        layout.queue_strip = {x0, y + gap, x1, y + gap + strip_h};
+        layout.text.push_back({TextRole::queue, 0, layout.queue_strip, body});
+        y = layout.queue_strip.y1;
+    }
+    layout.text.push_back({TextRole::caption, -1, {m, caption_top, width - m, height - m}, body});
+    LayoutInput column_in = in;
+    column_in.small_plot = false;  // the plot stops at the box's foot, above the caption
+    lay_out_column(layout, column_in,
+                   {x0, x1 - x0, y + gap, bottom, line, head_line, gap, body, head, false});
+    return layout;
+}
+
 }  // namespace
 
 FrameLayout lesson_layout(const LayoutInput& in) {
     const float body = lesson_pixel_height(in.width, in.height);
     if (in.width < compact_width) return compact_layout(in, body);
     if (in.boxes.size() > 2) return grid_layout(in, body);
+    if (in.boxes.size() == 1) return side_layout(in, body);
     FrameLayout layout;
     const float head = std::round(body * headline_scale);
     layout.body_pixel_height = body;
@@ -230,26 +315,39 @@ FrameLayout lesson_layout(const LayoutInput& in) {
     const float code_w = in.code_rows > 0 ? std::ceil(in.code_width) : 0.0F;
     const float width = full_width - (code_w > 0.0F ? code_w + m : 0.0F);
     layout.margin = m;
-    const float line = std::round(body * 1.25F);
-    const float head_line = std::round(head * 1.2F);
+    // Lines as tall as the font: a pixel height holds ascent and descent, so rows never touch,
+    // and the boxes keep the height (issue 44: >= 55 % of the frame).
+    const float line = body;
+    const float head_line = head;
     const float gap = std::round(0.6F * m);
 
-    // Vertical: title | box | figures (| note) (| marks) (| how) ... caption.
+    // Vertical: title | box | figures | at most two lines of note, marks, how ... caption.
     const float box_top = m + line + gap;
     const auto wants_marks = [&](std::size_t i) {
         return i < in.mark_lines.size() && in.mark_lines[i];
     };
     const bool mark_line = wants_marks(0) || wants_marks(1);
+    // A note is the left panel's only (dt longer than a frame): when a marks line comes too, the
+    // right panel's other line (its how, or with the queue its legend) moves up into the note's
+    // line, and the left panel's marks take the marks line's whole width. The left panel's how
+    // is then left out (its failures stay whole in a figures row that is wide enough).
+    const bool two = in.boxes.size() == 2;
+    const bool how_with_note = two && in.note_line && mark_line && in.how_line;
+    const bool marks_with_note = two && in.note_line && mark_line && !in.how_line && wants_marks(1);
+    const bool how_line = in.how_line && !how_with_note;
     const float below = gap + head_line + (in.note_line ? line : 0.0F) + (mark_line ? line : 0.0F) +
-                        (in.how_line ? line : 0.0F);
+                        (how_line ? line : 0.0F);
     const float caption_top = height - m - line;
     const bool queue = in.queue_panel >= 0 && in.queue_panel < static_cast<int>(in.boxes.size());
-    const float queue_h = queue ? std::round(queue_strip_share * height) : 0.0F;
+    const float queue_h =
+        queue ? queue_strip_height(in, caption_top - gap - below - box_top - gap) : 0.0F;
     const float room_h = caption_top - gap - below - box_top - (queue ? queue_h + gap : 0.0F);
     // Horizontal: [m box m column m box m] or [m box m column m].
     const auto n = static_cast<float>(in.boxes.size());
+    // A large plot is the subject, but the boxes and it together fill the frame: a quarter of
+    // the width leaves the boxes their height.
     const float column_w =
-        std::round(in.large_plot ? 0.30F * width : std::max(0.15F * width, 6.5F * body));
+        std::round(in.large_plot ? 0.25F * width : std::max(0.15F * width, 6.5F * body));
     const float room_w = (width - column_w - (n + 2.0F) * m) / n;
 
     double scale = std::numeric_limits<double>::max();
@@ -304,24 +402,28 @@ FrameLayout lesson_layout(const LayoutInput& in) {
         // Figures stay under their own box, so the two panels' rows cannot run together. With
         // the queue strip the left one starts at the frame's margin like its title: its inset box
         // leaves too narrow a row for two failures, and the strip has taken the how line they
-        // would continue on.
-        const float figures_x0 =
-            left_of_column ? (queue ? title_x0 : text_x0) : std::max(text_x0, panel.box.x0);
+        // would continue on; likewise when the how line has given its place.
+        const float figures_x0 = left_of_column ? (queue || how_with_note ? title_x0 : text_x0)
+                                                : std::max(text_x0, panel.box.x0);
         const float figures_x1 = left_of_column ? std::min(text_x1, panel.box.x1) : text_x1;
         layout.text.push_back(
             {TextRole::figures, p, {figures_x0, y, figures_x1, y + head_line}, head});
         y += head_line;
         if (in.note_line) {
-            layout.text.push_back({TextRole::note, p, {title_x0, y, text_x1, y + line}, body});
+            const TextRole role = p == 0 || !(how_with_note || marks_with_note) ? TextRole::note
+                                  : how_with_note                               ? TextRole::how
+                                                                                : TextRole::marks;
+            layout.text.push_back({role, p, {title_x0, y, text_x1, y + line}, body});
             y += line;
         }
         if (mark_line) {
-            const float x1 = left_of_column && !wants_marks(1) ? width - m : text_x1;
-            if (wants_marks(i))
+            const bool right_has_row = wants_marks(1) && !marks_with_note;
+            const float x1 = left_of_column && !right_has_row ? width - m : text_x1;
+            if (wants_marks(i) && !(p == 1 && marks_with_note))
                 layout.text.push_back({TextRole::marks, p, {title_x0, y, x1, y + line}, body});
             y += line;
         }
-        if (in.how_line) {
+        if (how_line) {
             layout.text.push_back({TextRole::how, p, {title_x0, y, text_x1, y + line}, body});
             y += line;
         }

@@ -223,7 +223,10 @@ void LessonPainter::add_panel_text(std::size_t index, const PanelContent& conten
             const float s = std::round(0.45F * body_font_->pixel_height());
             const float cy = 0.5F * (slot->rect.y0 + slot->rect.y1);
             const auto n = static_cast<float>(content.step_period);
-            float x = slot->rect.x1 - n * 1.5F * s;
+            // Right after the note, which it illustrates (the right panel's line may share the
+            // row: two lines of note, marks and how at most, layout.hpp).
+            const float after_note = slot->rect.x0 + body_font_->text_width(content.note) + s;
+            float x = std::min(after_note + s, slot->rect.x1 - n * 1.5F * s);
             right = x - s;
             for (int k = 0; k < content.step_period; ++k) {
                 const RectF r{x, cy - 0.5F * s, x + s, cy + 0.5F * s};

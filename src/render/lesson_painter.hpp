@@ -75,16 +75,22 @@ class LessonPainter : public Painter {
                             const PanelLayout& panel, const Box& box);
     /// A label centred at `at` on a plate of the box colour, kept inside `inside`.
     void add_plate_label(Font font, PointF at, std::string_view text, Rgba8 color, RectF inside);
+    /// A queue label on a plate near `at`, clear of every disc and earlier label in `inside`,
+    /// with a leader line towards `anchor` (stopping `anchor_radius` short: a disc's edge) when
+    /// it had to move away; none where no free place is near (the strip names the event).
+    void add_queue_label(Font font, PointF at, PointF anchor, float anchor_radius,
+                         std::string_view text, Rgba8 color, RectF inside);
     [[nodiscard]] float pop_highlight(const QueuedEvent& popped, double now) const noexcept;
     [[nodiscard]] Rgba8 next_color() const noexcept;
     /// A queue node as wide as the widest of `labels` (and a time to go).
     [[nodiscard]] float node_width(const std::vector<std::string>& labels) const;
 
     double video_time_ = 0.0;
-    double speed_ = 0.0;         // simulation time per second of video (FrameContent::speed)
-    PopHighlight pop_seconds_;   // how long a pop stays lit (FrameContent::pop_highlight)
-    std::vector<RectF> labels_;  // queue labels placed in the current box (add_plate_label)
-    bool intro_ = false;         // the title card covers this frame: no other text
+    double speed_ = 0.0;             // simulation time per second of video (FrameContent::speed)
+    PopHighlight pop_seconds_;       // how long a pop stays lit (FrameContent::pop_highlight)
+    std::vector<RectF> labels_;      // queue labels placed in the current box (add_plate_label)
+    std::vector<RectF> disc_rects_;  // the discs of the current box, which labels keep clear of
+    bool intro_ = false;             // the title card covers this frame: no other text
 };
 
 }  // namespace collide::render

@@ -5,6 +5,7 @@
 // labels and times to go too) from QueueWords (src/show); nothing here knows the engines.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -106,6 +107,56 @@ void LessonPainter::add_plate_label(Font font, PointF at, std::string_view text,
     draw_text(font, {TextRole::queue, -1, plate, f.pixel_height()}, text, color, Align::centre);
 }
 
+void LessonPainter::add_queue_label(Font font, PointF at, PointF anchor, float anchor_radius,
+                                    std::string_view text, Rgba8 color, RectF inside) {
+    const FontAtlas& f = atlas(font);
+    const float pad = std::round(0.2F * f.pixel_height());
+    const float w = f.text_width(text) + 2.0F * pad;
+    const float h = std::round(f.pixel_height() * 1.05F);
+    if (w > inside.width() || h > inside.height()) return;
+    // A plate never covers a disc or another label: the nearest free place on rings round `at`
+    // (labels_ and disc_rects_ hold what this box has so far).
+    const auto plate_at = [&](float cx, float cy) {
+        // Whole pixels, rounded down: a plate at the right or bottom edge stays inside.
+        const float x0 = std::floor(std::clamp(cx - 0.5F * w, inside.x0, inside.x1 - w));
+        const float y0 = std::floor(std::clamp(cy - 0.5F * h, inside.y0, inside.y1 - h));
+        return RectF{x0, y0, x0 + w, y0 + h};
+    };
+    const auto clear_of_all = [&](const RectF& r) {
+        const auto hit = [&r](const RectF& o) { return overlaps(r, o); };
+        return std::none_of(labels_.begin(), labels_.end(), hit) &&
+               std::none_of(disc_rects_.begin(), disc_rects_.end(), hit);
+    };
+    constexpr int directions = 12;
+    const float step = 0.5F * h;
+    const float reach = std::max(inside.width(), inside.height());
+    std::optional<RectF> plate;
+    for (float radius = 0.0F; !plate && radius <= reach; radius += step) {
+        const int tries = radius == 0.0F ? 1 : directions;
+        for (int k = 0; k < tries && !plate; ++k) {
+            const double angle = 2.0 * 3.14159265358979 * k / directions;
+            const RectF r = plate_at(at.x + radius * static_cast<float>(std::cos(angle)),
+                                     at.y + radius * static_cast<float>(std::sin(angle)));
+            if (clear_of_all(r)) plate = r;
+        }
+    }
+    if (!plate) return;  // a crowded box: the strip names the event
+    labels_.push_back(*plate);
+    // A leader line from the plate's edge to what it names, when the plate is not on it.
+    // It stops at the disc's edge (anchor_radius), so that it crosses no disc it names.
+    const PointF from{std::clamp(anchor.x, plate->x0, plate->x1),
+                      std::clamp(anchor.y, plate->y0, plate->y1)};
+    const float length = std::hypot(anchor.x - from.x, anchor.y - from.y);
+    if (length - anchor_radius > 0.25F * h) {
+        const float keep = anchor_radius / length;
+        const PointF to{anchor.x + (from.x - anchor.x) * keep,
+                        anchor.y + (from.y - anchor.y) * keep};
+        list_.over.add_line(from, to, std::max(1.0F, std::round(h / 16.0F)), faded(color, 0.8F));
+    }
+    list_.over.add_rect(*plate, with_alpha(rgb(palette_.box_fill), 215));
+    draw_text(font, {TextRole::queue, -1, *plate, f.pixel_height()}, text, color, Align::centre);
+}
+
 // Lines between the discs of the next collisions, ticks on the walls, each with its time to go;
 // the next one thick and in the highlight colour, the later ones thinner and fainter.
 void LessonPainter::add_queue_in_box(const Snapshot& snapshot, const QueueWords& words,
@@ -117,7 +168,15 @@ void LessonPainter::add_queue_in_box(const Snapshot& snapshot, const QueueWords&
     const bool labels = !layout_.compact && small_font_.has_value();
     const RectF inside = panel.box;
     labels_.clear();
-    std::vector<std::pair<PointF, bool>> pending(queue.next.size(), {PointF{}, false});
+    disc_rects_.clear();
+    for (const DiscState& disc : snapshot.discs) {
+        const PointF c = panel.to_pixels(disc.position, box);
+        const auto r = static_cast<float>(disc.radius * panel.scale);
+        const RectF rect{c.x - r, c.y - r, c.x + r, c.y + r};
+        if (overlaps(rect, inside)) disc_rects_.push_back(rect);
+    }
+    // Per event: where its time label goes and the point it names (its leader line's end).
+    std::vector<std::pair<std::pair<PointF, PointF>, bool>> pending(queue.next.size());
     // Latest first, so that the next event's line and label end up on top.
     for (std::size_t r = queue.next.size(); r-- > 0;) {
         const QueuedEvent& e = queue.next[r];
@@ -130,6 +189,7 @@ void LessonPainter::add_queue_in_box(const Snapshot& snapshot, const QueueWords&
         const DiscState& a = snapshot.discs[e.a];
         const double dt = e.t - snapshot.time;
         PointF label_at;
+        PointF anchor;
         if (first) {
             // Rings around the discs of the next event.
             for (const std::uint32_t k : {e.a, e.b}) {
@@ -149,6 +209,7 @@ void LessonPainter::add_queue_in_box(const Snapshot& snapshot, const QueueWords&
             const PointF qa = panel.to_pixels(pa, box);
             const PointF qb = panel.to_pixels(pa + d, box);
             label_at = {0.5F * (qa.x + qb.x), 0.5F * (qa.y + qb.y)};
+            anchor = label_at;
             const auto line = [&](Vec2 from, Vec2 to) {
                 PointF u = panel.to_pixels(from, box);
                 PointF v = panel.to_pixels(to, box);
@@ -180,10 +241,11 @@ void LessonPainter::add_queue_in_box(const Snapshot& snapshot, const QueueWords&
             const float off = 1.2F * body;
             label_at = {x ? to.x + (a.velocity.x > 0.0 ? -off : off) : to.x,
                         x ? to.y : to.y + (a.velocity.y > 0.0 ? off : -off)};
+            anchor = to;
         } else {
             continue;  // cell crossings are bookkeeping, not collisions
         }
-        pending[r] = {label_at, true};
+        pending[r] = {{label_at, anchor}, true};
     }
     if (!labels) return;
     // Labels after all lines: the next event's first so that it keeps its place, then its discs'
@@ -191,22 +253,26 @@ void LessonPainter::add_queue_in_box(const Snapshot& snapshot, const QueueWords&
     const auto time_label = [&](std::size_t r) {
         if (!pending[r].second) return;
         const bool first = r == 0;
-        add_plate_label(first ? Font::body : Font::small, pending[r].first,
-                        nth(words.next_times, r), first ? next_color() : palette_.text, inside);
+        add_queue_label(first ? Font::body : Font::small, pending[r].first.first,
+                        pending[r].first.second, 0.0F, nth(words.next_times, r),
+                        first ? next_color() : palette_.text, inside);
+    };
+    // A disc's number just under it (or the nearest free place), a leader line to its edge.
+    const auto number = [&](std::uint32_t k, std::string_view text, Font font, Rgba8 color) {
+        if (k >= snapshot.discs.size()) return;
+        const DiscState& disc = snapshot.discs[k];
+        const PointF c = panel.to_pixels(disc.position, box);
+        const auto radius = static_cast<float>(disc.radius * panel.scale);
+        add_queue_label(font, {c.x, c.y + radius + 0.7F * body}, c, radius, text, color, inside);
     };
     if (queue.next.empty()) return;
     time_label(0);
     const QueuedEvent& e = queue.next.front();
-    for (std::size_t j = 0; j < words.next_discs.size(); ++j) {
-        const std::uint32_t k = j == 0 ? e.a : e.b;
-        if (k >= snapshot.discs.size()) continue;
-        const DiscState& disc = snapshot.discs[k];
-        const PointF c = panel.to_pixels(disc.position, box);
-        const auto radius = static_cast<float>(disc.radius * panel.scale);
-        add_plate_label(Font::body, {c.x, c.y + radius + 0.7F * body}, words.next_discs[j],
-                        next_color(), inside);
-    }
+    for (std::size_t j = 0; j < words.next_discs.size(); ++j)
+        number(j == 0 ? e.a : e.b, words.next_discs[j], Font::body, next_color());
     for (std::size_t r = 1; r < queue.next.size(); ++r) time_label(r);
+    for (const QueueWords::NumberedDisc& d : words.listed_discs)
+        number(d.disc, d.number, Font::small, palette_.text);
 }
 
 // The strip: a heading, the latest pops on the left, the queue itself on the right.
@@ -245,9 +311,14 @@ void LessonPainter::add_popped(const QueueView& queue, const QueueWords& words, 
         return TextSlot{TextRole::queue, -1, {area.x0, y, area.x1, y + line}, small.pixel_height()};
     };
     float y = area.y0;
-    draw_text(Font::small, slot(y), words.popped_heading, palette_.muted);
-    y += line;
-    const float bottom = area.y1 - line;
+    // A short strip (the boxes keep their share of the frame) shows the latest pop and the
+    // counts, without the heading.
+    const float lines = std::floor(area.height() / line);
+    if (lines >= 4.0F) {
+        draw_text(Font::small, slot(y), words.popped_heading, palette_.muted);
+        y += line;
+    }
+    const float bottom = lines >= 2.0F ? area.y1 - line : area.y1;
     for (std::size_t k = queue.popped.size(); k-- > 0 && y + line <= bottom;) {
         const QueuedEvent& e = queue.popped[k];
         const float glow = pop_highlight(e, now);
@@ -269,7 +340,7 @@ void LessonPainter::add_popped(const QueueView& queue, const QueueWords& words, 
         draw_text(Font::small, slot(y), text, color);
         y += line;
     }
-    draw_text(Font::small, slot(bottom), words.counts, palette_.muted);
+    if (bottom < area.y1) draw_text(Font::small, slot(bottom), words.counts, palette_.muted);
 }
 
 float LessonPainter::node_width(const std::vector<std::string>& labels) const {

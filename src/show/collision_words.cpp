@@ -2,6 +2,7 @@
 // label, the step note and the energy line.
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -346,6 +347,23 @@ QueueWords queue_words(const QueueView& queue, double now) {
         const QueuedEvent& e = queue.next.front();
         out.next_discs.push_back(std::to_string(e.a));
         if (e.kind == EventKind::pair) out.next_discs.push_back(std::to_string(e.b));
+    }
+    // Every disc of a listed event is numbered, so that "3-7" in the strip finds its discs.
+    const auto numbered = [&](std::uint32_t disc) {
+        if (!queue.next.empty()) {
+            const QueuedEvent& e = queue.next.front();
+            if (disc == e.a || (e.kind == EventKind::pair && disc == e.b)) return true;
+        }
+        return std::any_of(out.listed_discs.begin(), out.listed_discs.end(),
+                           [disc](const QueueWords::NumberedDisc& d) { return d.disc == disc; });
+    };
+    for (std::size_t r = 1; r < queue.next.size(); ++r) {
+        const QueuedEvent& e = queue.next[r];
+        if (e.kind == EventKind::cell) continue;  // bookkeeping: not drawn in the box
+        for (const std::uint32_t disc : {e.a, e.b}) {
+            if (disc == e.b && e.kind != EventKind::pair) continue;
+            if (!numbered(disc)) out.listed_discs.push_back({disc, std::to_string(disc)});
+        }
     }
     for (const QueuedEvent& e : queue.slots) {
         out.slot_labels.push_back(event_label(e));

@@ -104,11 +104,12 @@ TEST_CASE("a failure of each kind is drawn with its own mark, and the legend nam
         const int exit_side = count_near(r.image, failure, 40, px(exit.x) - 30, px(exit.y) - 30,
                                          px(panel.box.x1), px(exit.y) + 31);
         CHECK(in_box == near(ring, px(radius) + 4) + near(cross, px(radius) + 4) + exit_side);
-        // The legend: under the figures, outside the box, its symbols in the failure colour
-        // and its words in the text colour.
+        // The legend: under the figures, outside the box (one box: its text is on its right),
+        // its symbols in the failure colour and its words in the text colour.
         const TextSlot* legend = r.layout.slot(TextRole::marks, 0);
         REQUIRE(legend != nullptr);
-        CHECK(legend->rect.y0 >= panel.box.y1);
+        CHECK_FALSE(overlaps(legend->rect, panel.box));
+        CHECK(legend->rect.y0 >= r.layout.slot(TextRole::figures, 0)->rect.y1);
         const Rgb8 text = rgb(palette(theme).text);
         CHECK(count_near(r.image, failure, 40, px(legend->rect.x0), px(legend->rect.y0),
                          px(legend->rect.x1), px(legend->rect.y1)) > 20);

@@ -6,12 +6,15 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "../support/skip.hpp"
 #include "collide/show/collision.hpp"
 #include "collide/show/event_loop_code.hpp"
 #include "collide/show/failure_marks.hpp"
+#include "layout.hpp"
 #include "render_fixtures.hpp"
 
 namespace collide::render {
@@ -250,6 +253,63 @@ TEST_CASE("queue: drawn only when the snapshot carries one, the next event in it
     // A snapshot without a queue after one with it: the frame is as if it never had one.
     right.queue.reset();
     CHECK(again.render(queue_frame(left, right)).rgba == without.rgba);
+}
+
+// Issue 44 item 4: the queue's labels never cover a disc (they move to a free place, a leader
+// line to what they name), and every disc of a listed event is numbered.
+TEST_CASE("queue: labels clear of every disc, every listed event's discs numbered") {
+    for (const std::size_t discs : {std::size_t{14}, std::size_t{25}}) {
+        CAPTURE(discs);
+        RenderConfig config = test::small_config(true);
+        config.width = 1280;
+        config.height = 720;
+        config.overlays = OverlayLevel::lesson;
+        Renderer renderer(config, test::test_backend());
+        Snapshot left = test::gas_snapshot(discs, 0.05, {1.0, 1.0, Boundary::walls}, 4, 0.3);
+        left.time = 2.0;
+        Snapshot right = left;
+        QueueView q = classic_queue(right.time);
+        // Five events, pairs of neighbours whose labels would sit on the discs between them.
+        q.next = {{2.1, EventKind::pair, 0, 1},
+                  {2.2, EventKind::pair, 2, 3},
+                  {2.25, EventKind::xwall, 5, 0},
+                  {2.3, EventKind::pair, 6, 7},
+                  {2.4, EventKind::pair, 8, 9}};
+        right.queue = q;
+        const FrameContent frame = queue_frame(left, right);
+        (void)renderer.render(frame);
+        const nlohmann::json layout = nlohmann::json::parse(renderer.layout_json(frame));
+        const nlohmann::json& panel = layout.at("panels").at(1);
+        const auto box = panel.at("box").get<std::vector<float>>();
+        const auto scale = panel.at("pixels_per_unit").get<double>();
+        std::vector<RectF> disc_rects;
+        for (const DiscState& d : right.discs) {
+            const auto x = static_cast<float>(box[0] + d.position.x * scale);
+            const auto y = static_cast<float>(box[1] + (right.box.height - d.position.y) * scale);
+            const auto r = static_cast<float>(d.radius * scale);
+            disc_rects.push_back({x - r, y - r, x + r, y + r});
+        }
+        std::vector<std::string> in_box;
+        for (const nlohmann::json& label : layout.at("other_text")) {
+            if (label.at("role") != "queue") continue;
+            const auto v = label.at("rect").get<std::vector<float>>();
+            const RectF rect{v[0], v[1], v[2], v[3]};
+            if (rect.x0 < box[0] || rect.x1 > box[2] || rect.y0 < box[1] || rect.y1 > box[3])
+                continue;  // the strip's text
+            for (const nlohmann::json& text : label.at("text"))
+                in_box.push_back(text.get<std::string>());
+            for (const RectF& disc : disc_rects) {
+                CAPTURE(label.dump());
+                CHECK_FALSE(overlaps(rect, disc));
+            }
+        }
+        // Each time to go and each disc of the five events: 0, 1 (the next), 2, 3, 5, 6, 7, 8, 9.
+        for (const char* number : {"0", "1", "2", "3", "5", "6", "7", "8", "9"}) {
+            CAPTURE(number);
+            CHECK(std::count(in_box.begin(), in_box.end(), std::string(number)) == 1);
+        }
+        CHECK(in_box.size() >= 9 + 5);
+    }
 }
 
 }  // namespace

@@ -248,6 +248,19 @@ TEST_CASE("the queue strip's words: the fast engine re-predicts, the classic one
     CHECK(queue_words(q, 0.0).next_discs == std::vector<std::string>{"3", "7"});
     q.next[0].kind = EventKind::xwall;
     CHECK(queue_words(q, 0.0).next_discs == std::vector<std::string>{"3"});
+    // Every other listed event's discs are numbered too, each once, none of the next event's
+    // again; cell crossings are not drawn, so not numbered (issue 44 item 4).
+    q.next = {{0.1, EventKind::pair, 3, 7},
+              {0.2, EventKind::pair, 7, 9},
+              {0.3, EventKind::ywall, 9, 0},
+              {0.4, EventKind::cell, 11, 0},
+              {0.5, EventKind::pair, 12, 3}};
+    std::vector<std::string> numbers;
+    for (const QueueWords::NumberedDisc& d : queue_words(q, 0.0).listed_discs) {
+        CHECK(d.number == std::to_string(d.disc));
+        numbers.push_back(d.number);
+    }
+    CHECK(numbers == std::vector<std::string>{"9", "12"});
 }
 
 TEST_CASE("the queue strip's fixed legends come from the words, the row caption by shape") {

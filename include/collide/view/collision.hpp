@@ -49,6 +49,13 @@ struct QueueWords {
     std::vector<std::string> next_times;  ///< in the box: one per QueueView::next
     /// In the box, under the next event's discs: their numbers ("14"; a pair's two).
     std::vector<std::string> next_discs;
+    /// In the box, beside the discs of the other events listed (QueueView::next after the
+    /// first), each disc once and none of the next event's: the disc and its number.
+    struct NumberedDisc {
+        std::uint32_t disc = 0;
+        std::string number;
+    };
+    std::vector<NumberedDisc> listed_discs;
     std::vector<std::string> slot_labels;    ///< one per QueueView::slots
     std::vector<std::string> slot_times;     ///< one per QueueView::slots
     std::vector<std::string> popped_labels;  ///< one per QueueView::popped
