@@ -93,7 +93,8 @@ class LessonProgram final : public FrameProgram {
 LessonVideoSummary write_lesson(const OutputChoice& output, const LessonGeometry& geometry,
                                 ProgressMode progress_mode, double duration, double still_time,
                                 const LessonDraw& draw, const SubtitleOutput& subtitles,
-                                const Cues& cues, const ChapterOutput& chapters) {
+                                const Cues& cues, const ChapterOutput& chapters,
+                                const std::optional<Chapters>& chapter_list) {
     InterruptGuard interrupts;
     VideoJob job;
     job.output.path = output.path;
@@ -109,9 +110,12 @@ LessonVideoSummary write_lesson(const OutputChoice& output, const LessonGeometry
         job.output.subtitles = subtitles;
         job.output.cues = cues;
         job.output.chapter_output = chapters;
-        job.output.chapters = show::chapters_from_cues(
-            cues, static_cast<double>(job.frames) / static_cast<double>(geometry.fps),
-            geometry.fps);
+        job.output.chapters =
+            chapter_list
+                ? *chapter_list
+                : show::chapters_from_cues(
+                      cues, static_cast<double>(job.frames) / static_cast<double>(geometry.fps),
+                      geometry.fps);
     }
     Progress progress(progress_mode, job.frames);
     JobHooks hooks;
