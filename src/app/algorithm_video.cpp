@@ -91,12 +91,11 @@ class AlgorithmFrameProgram final : public FrameProgram {
 
 }  // namespace
 
-AlgorithmVideoSummary write_algorithm_video(const OutputChoice& output,
-                                            const AlgorithmVideoGeometry& geometry,
-                                            ProgressMode progress_mode, double duration,
-                                            double still_time, const AlgorithmFrameDraw& draw,
-                                            const SubtitleOutput& subtitles, const Cues& cues,
-                                            const ChapterOutput& chapters) {
+AlgorithmVideoSummary write_algorithm_video(const OutputChoice& output, const AlgorithmVideoGeometry& geometry,
+                                ProgressMode progress_mode, double duration, double still_time,
+                                const AlgorithmFrameDraw& draw, const SubtitleOutput& subtitles,
+                                const Cues& cues, const ChapterOutput& chapters,
+                                const std::optional<Chapters>& chapter_list) {
     InterruptGuard interrupts;
     VideoJob job;
     job.output.path = output.path;
@@ -112,9 +111,12 @@ AlgorithmVideoSummary write_algorithm_video(const OutputChoice& output,
         job.output.subtitles = subtitles;
         job.output.cues = cues;
         job.output.chapter_output = chapters;
-        job.output.chapters = show::chapters_from_cues(
-            cues, static_cast<double>(job.frames) / static_cast<double>(geometry.fps),
-            geometry.fps);
+        job.output.chapters =
+            chapter_list
+                ? *chapter_list
+                : show::chapters_from_cues(
+                      cues, static_cast<double>(job.frames) / static_cast<double>(geometry.fps),
+                      geometry.fps);
     }
     Progress progress(progress_mode, job.frames);
     JobHooks hooks;

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -66,14 +67,13 @@ using AlgorithmFrameDraw = std::function<void(double t, Image& frame)>;
 /// `still_time` as a PNG. Ctrl-C stops it between frames; the destination is only replaced once
 /// the output is whole.
 /// `subtitles` and `cues` (videos only): the lesson's step captions as a subtitle track and/or
-/// a sidecar file (video_job.hpp); `chapters`: one chapter per step caption
-/// (show::chapters_from_cues) in the MP4, a chapters file and/or a slide folder.
-AlgorithmVideoSummary write_algorithm_video(const OutputChoice& output,
-                                            const AlgorithmVideoGeometry& geometry,
-                                            ProgressMode progress_mode, double duration,
-                                            double still_time, const AlgorithmFrameDraw& draw,
-                                            const SubtitleOutput& subtitles = {},
-                                            const Cues& cues = {},
-                                            const ChapterOutput& chapters = {});
+/// a sidecar file (video_job.hpp); `chapters`: where the chapters go (the MP4, a chapters file
+/// and/or a slide folder): `chapter_list` when given (a heap video's, one per operation), else
+/// one per step caption (show::chapters_from_cues).
+AlgorithmVideoSummary write_algorithm_video(const OutputChoice& output, const AlgorithmVideoGeometry& geometry,
+                                ProgressMode progress_mode, double duration, double still_time,
+                                const AlgorithmFrameDraw& draw, const SubtitleOutput& subtitles = {},
+                                const Cues& cues = {}, const ChapterOutput& chapters = {},
+                                const std::optional<Chapters>& chapter_list = std::nullopt);
 
 }  // namespace collide::app

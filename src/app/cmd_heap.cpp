@@ -7,6 +7,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -22,6 +23,7 @@
 #include "collide/error.hpp"
 #include "collide/printable.hpp"
 #include "collide/render/heap_view.hpp"
+#include "collide/show/chapters.hpp"
 #include "collide/show/heap_code.hpp"
 #include "collide/show/heap_program.hpp"
 #include "collide/show/subtitles.hpp"
@@ -141,7 +143,13 @@ void run(const HeapCli& v) {
         [&](double t, Image& frame) { renderer.render(lesson.frame_at(t), frame); },
         destination.subtitles,
         output.still ? Cues{} : show::heap_subtitle_cues(lesson, geometry.fps),
-        destination.chapters);
+        destination.chapters,
+        // One chapter per operation (or group of short ones), never one per step.
+        show::heap_chapters(lesson,
+                            static_cast<double>(std::max<std::int64_t>(
+                                1, std::llround(lesson.duration() * geometry.fps))) /
+                                geometry.fps,
+                            geometry.fps));
     if (output.still) {
         std::printf("%s: %dx%d PNG at %.2f s of a %.2f s video of %s\n",
                     printable_text(output.path.string()).c_str(), geometry.width, geometry.height,

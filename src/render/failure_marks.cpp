@@ -81,11 +81,13 @@ void paint_failure_marks(DrawList& list, const std::vector<FailureMark>& marks,
                 break;
             }
             case FailureKind::left_box: {
-                // From inside the box across the edge where the disc left, the tip just outside.
+                // From inside the box to the edge where the disc left, the tip (its chevron's
+                // joint too) just inside: the wall outside the box stops it, clear of any text.
                 const auto ox = static_cast<float>(mark.out.x);
                 const auto oy = static_cast<float>(-mark.out.y);  // pixels: y down
                 const float length = 2.0F * style.min_radius;
-                const PointF tip{c.x + ox * style.reach, c.y + oy * style.reach};
+                const float back = -style.reach;
+                const PointF tip{c.x + ox * back, c.y + oy * back};
                 const PointF from{tip.x - ox * length, tip.y - oy * length};
                 add_arrow(list.over, from, tip, style.stroke, mark_color(style, mark.opacity));
                 break;

@@ -1,6 +1,6 @@
 #pragma once
 // Internal: the lesson's failure marks, each kind its own shape (a ring for a missed collision,
-// a cross on an overlapping pair, an arrow out of the edge where a disc left the box), the
+// a cross on an overlapping pair, an arrow to the edge where a disc left the box), the
 // legend's symbols, and the dashed edge of a periodic box. The presentation layer chooses the
 // marks (show::FailureMarks); this paints them. No GL.
 
@@ -17,14 +17,14 @@ namespace collide::render {
 struct MarkStyle {
     float min_radius = 8.0F;  ///< px: the smallest ring or cross (legible at any disc size)
     float stroke = 2.0F;      ///< px: line width of rings, crosses and arrows
-    float reach = 4.0F;       ///< px: how far an arrow pokes out of the box (less than the gap)
+    float reach = 4.0F;       ///< px: how far inside the box an arrow's tip stops
     Rgba8 color;              ///< the failure colour
     float floor = 0.0F;       ///< least opacity of a fading ring (keeps 3:1 against the box)
 };
 
 /// Paints `marks` of a panel: rings into `list.discs` (the caller closes the panel's disc group,
-/// scissored to the box), crosses and arrows into `list.over`, kept within the box except an
-/// arrow's tip.
+/// scissored to the box), crosses and arrows into `list.over`, every mark within the box (the
+/// text is outside it).
 void paint_failure_marks(DrawList& list, const std::vector<FailureMark>& marks,
                          const PanelLayout& panel, const Box& box, const MarkStyle& style);
 

@@ -2,11 +2,94 @@
 // jump between two checks, the labels and the heading. What they are and say is the presentation
 // layer's (show::replay_views); here they get their pixels.
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <vector>
 
 #include "lesson_painter.hpp"
 
 namespace collide::render {
+
+namespace {
+
+struct Circle {
+    PointF centre;
+    float radius = 0.0F;
+};
+
+/// Whether rectangle r comes within `margin` of the circle (pixels).
+bool touches(RectF r, const Circle& c, float margin) {
+    const float nx = std::clamp(c.centre.x, r.x0, r.x1);
+    const float ny = std::clamp(c.centre.y, r.y0, r.y1);
+    return std::hypot(nx - c.centre.x, ny - c.centre.y) < c.radius + margin;
+}
+
+/// The plate of half sizes (half_w, half_h) centred at `at`, kept inside `inside` as
+/// add_plate_label keeps it.
+RectF plate_at(PointF at, float half_w, float half_h, RectF inside) {
+    const float w = 2.0F * half_w;
+    const float h = 2.0F * half_h;
+    const float x0 = std::clamp(at.x - half_w, inside.x0, std::max(inside.x0, inside.x1 - w));
+    const float y0 = std::clamp(at.y - half_h, inside.y0, std::max(inside.y0, inside.y1 - h));
+    return {x0, y0, x0 + w, y0 + h};
+}
+
+/// The centre of a plate `clear` pixels from p on `side`.
+PointF beside(PointF p, LabelSide side, float clear, float half_w, float half_h) {
+    switch (side) {
+        case LabelSide::above:
+            return {p.x, p.y - clear - half_h};
+        case LabelSide::below:
+            return {p.x, p.y + clear + half_h};
+        case LabelSide::left:
+            return {p.x - clear - half_w, p.y};
+        case LabelSide::right:
+            return {p.x + clear + half_w, p.y};
+    }
+    return p;
+}
+
+/// Where a replay label goes: beside its point, on the side asked for if a plate there covers
+/// no ghost and no plate placed before (`placed`), else the nearest such place going round the
+/// point and farther out; a plate pushed back into the box by its edge must not land on a ghost
+/// either. None free: the side asked for.
+PointF label_place(PointF p, LabelSide side, float clear, float half_w, float half_h, RectF inside,
+                   const std::vector<Circle>& ghosts, const std::vector<RectF>& placed,
+                   float margin) {
+    const std::array<LabelSide, 4> order = [&] {
+        switch (side) {
+            case LabelSide::above:
+                return std::array{LabelSide::above, LabelSide::right, LabelSide::left,
+                                  LabelSide::below};
+            case LabelSide::below:
+                return std::array{LabelSide::below, LabelSide::right, LabelSide::left,
+                                  LabelSide::above};
+            case LabelSide::left:
+                return std::array{LabelSide::left, LabelSide::above, LabelSide::below,
+                                  LabelSide::right};
+            case LabelSide::right:
+                break;
+        }
+        return std::array{LabelSide::right, LabelSide::above, LabelSide::below, LabelSide::left};
+    }();
+    const auto free = [&](RectF r) {
+        return std::none_of(ghosts.begin(), ghosts.end(),
+                            [&](const Circle& c) { return touches(r, c, margin); }) &&
+               std::none_of(placed.begin(), placed.end(),
+                            [&](const RectF& o) { return overlaps(r, o); });
+    };
+    for (int ring = 0; ring < 6; ++ring) {
+        const float d = clear + static_cast<float>(ring) * 2.0F * half_h;
+        for (const LabelSide s : order) {
+            const PointF at = beside(p, s, d, half_w, half_h);
+            const RectF r = plate_at(at, half_w, half_h, inside);
+            if (free(r)) return {0.5F * (r.x0 + r.x1), 0.5F * (r.y0 + r.y1)};
+        }
+    }
+    return beside(p, side, clear, half_w, half_h);
+}
+
+}  // namespace
 
 void LessonPainter::add_replay(const ReplayView& replay, const PanelLayout& panel, const Box& box) {
     if (intro_) return;
@@ -38,9 +121,11 @@ void LessonPainter::add_replay(const ReplayView& replay, const PanelLayout& pane
         }
     }
     // Ghosts are disc instances of the panel's group: scissored to its box like the discs.
+    std::vector<Circle> ghosts;
     for (const GhostDisc& ghost : replay.ghosts) {
         const PointF p = panel.to_pixels(ghost.where, box);
         const auto radius = static_cast<float>(ghost.radius * panel.scale);
+        ghosts.push_back({p, radius});
         const Rgba8 c = color(ghost.failure, ghost.opacity);
         if (ghost.filled) {
             list_.discs.push_back({p.x, p.y, radius, 0.0F, faded(c, 0.85F)});
@@ -56,26 +141,16 @@ void LessonPainter::add_replay(const ReplayView& replay, const PanelLayout& pane
                         replay.heading, palette_.title, inside);
     }
     const FontAtlas& font = atlas(Font::body);
+    // The plates' sizes as add_plate_label makes them.
+    const float pad = std::round(0.2F * font.pixel_height());
+    const float half_h = 0.5F * std::round(font.pixel_height() * 1.05F);
     for (const BoxLabel& label : replay.labels) {
         const PointF p = panel.to_pixels(label.at, box);
         const float clear = static_cast<float>(label.clear * panel.scale) + 0.3F * body;
-        const float half_h = 0.55F * body;
-        const float half_w = 0.5F * font.text_width(label.text) + 0.2F * body;
-        PointF at = p;
-        switch (label.side) {
-            case LabelSide::above:
-                at.y -= clear + half_h;
-                break;
-            case LabelSide::below:
-                at.y += clear + half_h;
-                break;
-            case LabelSide::left:
-                at.x -= clear + half_w;
-                break;
-            case LabelSide::right:
-                at.x += clear + half_w;
-                break;
-        }
+        const float half_w = 0.5F * font.text_width(label.text) + pad;
+        // Beside the ghosts, never on one: the class must see the discs the words are about.
+        const PointF at = label_place(p, label.side, clear, half_w, half_h, inside, ghosts, labels_,
+                                      0.15F * body);
         add_plate_label(Font::body, at, label.text, color(label.failure, label.opacity), inside);
     }
 }

@@ -15,9 +15,9 @@ MarkStyle Painter::mark_style() const {
     MarkStyle style;
     style.min_radius = 0.45F * text_px;
     style.stroke = std::max(2.0F, std::round(text_px / 9.0F));
-    // The wall is drawn outside the box; an arrow's tip reaches a little beyond it, short of the
-    // text.
-    style.reach = std::max(style_.wall + 1.0F, std::round(0.6F * layout_.margin) - 1.0F);
+    // An arrow's tip (with its chevron's joint) stops inside the box, at the wall drawn outside
+    // it: no mark ever reaches the text beside the box (brownian's column).
+    style.reach = std::ceil(0.5F * style.stroke) + 1.0F;
     style.color = palette_.failure;
     style.floor = mark_floor(config_.theme);
     return style;

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 namespace collide::show {
 
@@ -87,6 +89,71 @@ Chapters timeline_chapters(const Timeline& timeline, double card_fade) {
         }
         last_part = part;
         last_caption = &segment.caption;
+    }
+    return chapters;
+}
+
+namespace {
+
+/// What a chapter of one heap operation is called: its summary's head ("insert S", "remove the
+/// max X"), heapsort's two phases by what they do.
+std::string heap_op_title(const HeapProgram& lesson, std::size_t k) {
+    const pq::HeapOp& op = lesson.record().ops()[k];
+    if (op.kind == pq::HeapOp::Kind::build) return "build the heap";
+    if (op.kind == pq::HeapOp::Kind::sortdown) return "sortdown";
+    if (lesson.text().empty()) return lesson.op_labels()[k];
+    const std::string& summary = lesson.text().front().ops[k].summary;
+    return summary.substr(0, summary.find(':'));
+}
+
+/// The title of operations first..last (inclusive) in one chapter.
+std::string heap_group_title(const HeapProgram& lesson, std::size_t first, std::size_t last) {
+    if (last - first >= 3) {
+        return heap_op_title(lesson, first) + " ... " + heap_op_title(lesson, last) + " (" +
+               std::to_string(last - first + 1) + " operations)";
+    }
+    std::string title;
+    for (std::size_t k = first; k <= last; ++k)
+        title += (title.empty() ? "" : ", ") + heap_op_title(lesson, k);
+    return title;
+}
+
+}  // namespace
+
+Chapters heap_chapters(const HeapProgram& lesson, double video_seconds, int fps) {
+    const std::vector<double>& starts = lesson.op_starts();
+    const std::size_t ops = lesson.record().ops().size();
+    if (!(video_seconds > 0.0)) return {};
+    if (ops == 0) return {{0.0, video_seconds, one_line(lesson.name()), 0.0}};
+    // Groups of operations [first, last], each from its first operation's start (the first
+    // from 0: the intro) to the next group's; a group closes once it lasts long enough.
+    struct Group {
+        std::size_t first = 0;
+        std::size_t last = 0;
+        double start = 0.0;
+    };
+    std::vector<Group> groups{{0, 0, 0.0}};
+    for (std::size_t k = 1; k < ops; ++k) {
+        if (starts[k] - groups.back().start >= min_heap_chapter_seconds) {
+            groups.push_back({k, k, starts[k]});
+        } else {
+            groups.back().last = k;
+        }
+    }
+    // The last group runs to the end (the outro): too short, it joins the one before.
+    if (groups.size() > 1 && video_seconds - groups.back().start < min_heap_chapter_seconds) {
+        const std::size_t last = groups.back().last;
+        groups.pop_back();
+        groups.back().last = last;
+    }
+    Chapters chapters;
+    const double frame = 1.0 / static_cast<double>(std::max(1, fps));
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        const double end = g + 1 < groups.size() ? groups[g + 1].start : video_seconds;
+        Chapter c{groups[g].start, end, heap_group_title(lesson, groups[g].first, groups[g].last),
+                  0.0};
+        c.still = std::max(c.start, std::ceil(c.end / frame - 1e-9) * frame - frame);
+        chapters.push_back(std::move(c));
     }
     return chapters;
 }

@@ -7,6 +7,7 @@
 #include <numeric>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include "collide/number_text.hpp"
 
@@ -71,7 +72,8 @@ std::string wrap_words() {
 
 std::string unmarked_words(std::size_t unmarked) {
     if (unmarked == 0) return {};
-    return "+" + with_separators(static_cast<long long>(unmarked)) + " not marked";
+    // Read after the kinds the legend names: "missed collision  overlapping  and 1,234 more".
+    return "and " + with_separators(static_cast<long long>(unmarked)) + " more";
 }
 
 bool mark_line(bool time_driven, bool says_wrap, const Box& box) {
@@ -164,6 +166,7 @@ void FailureMarks::remember(const Snapshot& snapshot, double video_time) {
     const bool new_state = !last_time_ || *last_time_ != snapshot.time;
     if (last_time_ && snapshot.time < *last_time_) {  // a seek or a new video
         missed_.clear();
+        overlaps_.clear();
         left_.clear();
         seen_.clear();
     }
@@ -172,6 +175,7 @@ void FailureMarks::remember(const Snapshot& snapshot, double video_time) {
         for (const Vec2 where : snapshot.missed_collisions) missed_.push_back({where, video_time});
     }
     std::erase_if(missed_, [&](const Missed& m) { return video_time - m.born >= mark_seconds; });
+    remember_overlaps(snapshot, video_time);
     // Discs outside now: keep where they left from the first frame they were seen outside. A
     // sphere's exit comes projected with the snapshot, anew each frame: the camera may turn.
     std::vector<Left> still;
@@ -192,6 +196,36 @@ void FailureMarks::remember(const Snapshot& snapshot, double video_time) {
     left_ = std::move(still);
 }
 
+void FailureMarks::remember_overlaps(const Snapshot& snapshot, double video_time) {
+    const Box& box = snapshot.box;
+    std::vector<Overlap> now;
+    now.reserve(snapshot.overlapping_pairs.size());
+    for (const auto& [a, b] : snapshot.overlapping_pairs) {
+        if (a >= snapshot.discs.size() || b >= snapshot.discs.size()) continue;
+        const DiscState& da = snapshot.discs[a];
+        const DiscState& db = snapshot.discs[b];
+        now.push_back({{a, b},
+                       box.wrap(da.position + 0.5 * box.displacement(da.position, db.position)),
+                       std::max(da.radius, db.radius) * 2.0,
+                       video_time});
+    }
+    const auto by_pair = [](const Overlap& x, const Overlap& y) { return x.pair < y.pair; };
+    std::sort(now.begin(), now.end(), by_pair);
+    // The pairs overlapping now, and those that parted less than mark_seconds ago: a parted pair
+    // keeps its cross where it last overlapped, fading, so that an overlap of one frame is seen.
+    std::vector<Overlap> kept;
+    kept.reserve(now.size() + overlaps_.size());
+    auto old = overlaps_.begin();
+    for (const Overlap& o : now) {
+        for (; old != overlaps_.end() && by_pair(*old, o); ++old) kept.push_back(*old);
+        if (old != overlaps_.end() && old->pair == o.pair) ++old;  // seen again: now's
+        kept.push_back(o);
+    }
+    kept.insert(kept.end(), old, overlaps_.end());
+    std::erase_if(kept, [&](const Overlap& o) { return video_time - o.seen >= mark_seconds; });
+    overlaps_ = std::move(kept);
+}
+
 void FailureMarks::choose(const Snapshot& snapshot, double video_time) {
     const Box& box = snapshot.box;
     // Candidates of each kind, most preferred first: the newest rings, the pairs scrambled, the
@@ -203,23 +237,25 @@ void FailureMarks::choose(const Snapshot& snapshot, double video_time) {
             static_cast<float>(std::clamp(1.0 - (video_time - it->born) / mark_seconds, 0.0, 1.0));
         candidates[0].push_back({FailureKind::missed, it->where, {}, ring, opacity});
     }
-    // Overlapping pairs have no "newest": taken in a scrambled order of the pair (a fixed hash),
-    // not the engine's index order, which follows the discs' starting lattice (a dense fluid's
-    // first pairs all straddle one seam).
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs = snapshot.overlapping_pairs;
+    // Overlapping pairs: those overlapping now first, then those that parted, most recent first;
+    // within each, a scrambled order of the pair (a fixed hash), not the engine's index order,
+    // which follows the discs' starting lattice (a dense fluid's first pairs all straddle one
+    // seam).
+    std::vector<const Overlap*> pairs;
+    pairs.reserve(overlaps_.size());
+    for (const Overlap& o : overlaps_) pairs.push_back(&o);
     const auto scramble = [](std::pair<std::uint32_t, std::uint32_t> p) {
         return (static_cast<std::uint64_t>(p.first) * 0x9E3779B97F4A7C15ULL) ^
                (static_cast<std::uint64_t>(p.second) * 0xC2B2AE3D27D4EB4FULL);
     };
-    std::sort(pairs.begin(), pairs.end(),
-              [&](const auto& x, const auto& y) { return scramble(x) < scramble(y); });
-    for (const auto& [a, b] : pairs) {
-        if (a >= snapshot.discs.size() || b >= snapshot.discs.size()) continue;
-        const DiscState& da = snapshot.discs[a];
-        const DiscState& db = snapshot.discs[b];
-        const Vec2 mid = box.wrap(da.position + 0.5 * box.displacement(da.position, db.position));
-        candidates[1].push_back(
-            {FailureKind::overlapping, mid, {}, std::max(da.radius, db.radius) * 2.0, 1.0F});
+    std::sort(pairs.begin(), pairs.end(), [&](const Overlap* x, const Overlap* y) {
+        if (x->seen != y->seen) return x->seen > y->seen;
+        return scramble(x->pair) < scramble(y->pair);
+    });
+    for (const Overlap* o : pairs) {
+        const auto opacity =
+            static_cast<float>(std::clamp(1.0 - (video_time - o->seen) / mark_seconds, 0.0, 1.0));
+        candidates[1].push_back({FailureKind::overlapping, o->where, {}, o->size, opacity});
     }
     std::vector<const Left*> newest;
     for (const Left& l : left_) newest.push_back(&l);

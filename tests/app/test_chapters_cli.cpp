@@ -118,24 +118,37 @@ TEST_CASE("render: the MP4 carries the timeline's chapters, and the chapters fil
     CHECK(probed_chapters(plain).empty());
 }
 
-TEST_CASE("heap videos get a chapter per step caption") {
+TEST_CASE("heap videos get a chapter per operation, none shorter than 4 s") {
     if (!have_ffprobe()) COLLIDE_SKIP_TEST("ffprobe is not installed");
     TempDir dir("heap_chapters");
-    const fs::path out = dir.path / "heap.mp4";
-    const auto r = run_collide("heap --ops \"P Q E\" --size 480x270 --fps 10 --progress none -o " +
-                               out.string());
-    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
-    const std::vector<ParsedCue> chapters = probed_chapters(out);
-    REQUIRE(chapters.size() > 2);
-    CHECK(chapters.front().start == doctest::Approx(0.0));
-    bool insert = false;
-    for (std::size_t i = 0; i < chapters.size(); ++i) {
-        CAPTURE(i);
-        CHECK(!chapters[i].text.empty());
-        if (i > 0) CHECK(chapters[i].start == doctest::Approx(chapters[i - 1].end));
-        insert |= chapters[i].text.find("insert") != std::string::npos;
+    // Twelve operations of one to four steps each, as docs/heap.md's lessons; and the d-ary
+    // heaps side by side (longer operations).
+    for (const std::string impls : {"binary", "binary,dary:3,dary:4"}) {
+        CAPTURE(impls);
+        const fs::path out = dir.path / (std::to_string(impls.size()) + ".mp4");
+        const auto r = run_collide("heap --ops \"P Q E * X A M * P L E *\" --impl " + impls +
+                                   " --size 480x270 --fps 10 --progress none -o " + out.string());
+        REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+        const double seconds = std::stod(
+            capture("ffprobe -v error -show_entries format=duration -of csv=p=0 " + out.string()));
+        const std::vector<ParsedCue> chapters = probed_chapters(out);
+        REQUIRE(chapters.size() >= 2);
+        CHECK(static_cast<double>(chapters.size()) <= seconds / 4.0);
+        CHECK(chapters.front().start == doctest::Approx(0.0));
+        CHECK(chapters.back().end == doctest::Approx(seconds).epsilon(0.01));
+        for (std::size_t i = 0; i < chapters.size(); ++i) {
+            CAPTURE(i);
+            CAPTURE(chapters[i].text);
+            CHECK(chapters[i].end - chapters[i].start >= 4.0 - 1e-3);
+            if (i > 0) CHECK(chapters[i].start == doctest::Approx(chapters[i - 1].end));
+            // Named by operations, not by a step's caption ("S > H: exchange").
+            CHECK((chapters[i].text.find("insert") != std::string::npos ||
+                   chapters[i].text.find("remove") != std::string::npos ||
+                   chapters[i].text.find("delete") != std::string::npos));
+            CHECK(chapters[i].text.find("exchange") == std::string::npos);
+        }
+        CHECK(chapters.front().text.find("insert P") == 0);
     }
-    CHECK(insert);
 }
 
 TEST_CASE("render --slides: a folder with the page, the video, a still per chapter, the VTTs") {

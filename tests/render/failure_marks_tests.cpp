@@ -93,10 +93,13 @@ TEST_CASE("a failure of each kind is drawn with its own mark, and the legend nam
         CHECK(near(cross, 1) > 0);
         CHECK(near({cross.x + 0.5F * radius, cross.y + 0.5F * radius}, 2) > 0);
         CHECK(near({cross.x + radius, cross.y}, 2) == 0);  // no ring around it
-        // Left the box: an arrow across the right edge, its tip outside the box and the wall.
+        // Left the box: an arrow to the right edge, its tip just inside: nothing of it beyond
+        // the box and its wall, where the text beside the box begins.
         const PointF exit = panel.to_pixels({10.0, 3.0}, s.box);
-        CHECK(count_near(r.image, failure, 40, px(panel.box.x1) + 1, px(exit.y) - 3,
-                         px(panel.box.x1) + 6, px(exit.y) + 4) > 0);
+        CHECK(count_near(r.image, failure, 40, px(panel.box.x1) - 6, px(exit.y) - 3,
+                         px(panel.box.x1), px(exit.y) + 4) > 0);
+        CHECK(count_near(r.image, failure, 40, px(panel.box.x1), px(exit.y) - 40,
+                         px(panel.box.x1) + 40, px(exit.y) + 41) == 0);
         CHECK(near({exit.x - 10.0F, exit.y}, 2) > 0);  // the shaft, inside
         // Nowhere else in the box: no plate, no note.
         const int in_box = count_near(r.image, failure, 40, px(panel.box.x0), px(panel.box.y0),
@@ -134,9 +137,12 @@ TEST_CASE("the presentation layer's marks reach the picture: escaped discs marke
     const Lesson r = render_marks(s, marks.marks(), marks.words());
     const PanelLayout& panel = r.layout.panels.at(0);
     const PointF exit = panel.to_pixels({0.0, 5.0}, s.box);
-    // The arrow's tip, left of the left edge, at the height where it left.
-    CHECK(count_near(r.image, failure_color(Theme::dark), 40, px(panel.box.x0) - 6, px(exit.y) - 3,
-                     px(panel.box.x0) - 1, px(exit.y) + 4) > 0);
+    // The arrow's tip, just inside the left edge at the height where it left; nothing of it
+    // left of the box.
+    CHECK(count_near(r.image, failure_color(Theme::dark), 40, px(panel.box.x0), px(exit.y) - 3,
+                     px(panel.box.x0) + 6, px(exit.y) + 4) > 0);
+    CHECK(count_near(r.image, failure_color(Theme::dark), 40, 0, px(exit.y) - 40, px(panel.box.x0),
+                     px(exit.y) + 41) == 0);
     CHECK(count_near(r.image, {0, 255, 0}, 40) == 0);  // the disc itself is not drawn
 }
 
@@ -171,10 +177,13 @@ TEST_CASE("the full level draws the same marks by kind, with their legend on the
     const PanelLayout& panel = layout.panels.at(0);
     const Rgb8 failure = failure_color(Theme::dark);
     CHECK(count_near(image, {0, 255, 0}, 40) == 0);  // the escaped disc is not drawn anywhere
-    // An arrow across the left edge where it left; a ring where the collision was missed.
+    // An arrow to the left edge where it left, inside the box; a ring where the collision was
+    // missed.
     const PointF exit = panel.to_pixels({0.0, 5.0}, s.box);
-    CHECK(count_near(image, failure, 40, px(panel.box.x0) - 6, px(exit.y) - 3, px(panel.box.x0) - 1,
+    CHECK(count_near(image, failure, 40, px(panel.box.x0), px(exit.y) - 3, px(panel.box.x0) + 6,
                      px(exit.y) + 4) > 0);
+    CHECK(count_near(image, failure, 40, 0, px(exit.y) - 40, px(panel.box.x0), px(exit.y) + 41) ==
+          0);
     const PointF ring = panel.to_pixels({7.0, 7.0}, s.box);
     CHECK(count_near(image, failure, 40, px(ring.x) - 2, px(ring.y) - 2, px(ring.x) + 3,
                      px(ring.y) + 3) == 0);  // a ring, not a flash: empty in the middle

@@ -2,12 +2,16 @@
 // player's page (collide/show/slide_player.hpp).
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
 #include "collide/show/chapters.hpp"
+#include "collide/show/heap_program.hpp"
 #include "collide/show/slide_player.hpp"
 #include "collide/show/timeline.hpp"
+#include "collide/sim/pq/heap_record.hpp"
+#include "collide/sim/pq/queue_kind.hpp"
 
 using namespace collide;
 using namespace collide::show;
@@ -135,4 +139,65 @@ TEST_CASE("the slide page: the video, the track, the chapters as data, nothing f
     CHECK(html.find("<script src") == std::string::npos);
     page.subtitles.clear();
     CHECK(slide_page_html(page).find("<track kind") == std::string::npos);
+}
+
+TEST_CASE("heap chapters: one per operation, short ones grouped, none under 4 s") {
+    const std::vector<pq::QueueKind> kinds{pq::parse_queue_kind("binary")};
+    for (const double pace : {0.3, 0.8, 2.0}) {
+        CAPTURE(pace);
+        const HeapProgram lesson(
+            pq::HeapRecord::operations(pq::parse_heap_ops("P Q E * X A M * P L E *"), kinds,
+                                         pq::Orientation::max),
+            heap_pacing(pace), 1);
+        const double seconds = lesson.duration();
+        const Chapters chapters = heap_chapters(lesson, seconds, 30);
+        REQUIRE(!chapters.empty());
+        CHECK(chapters.front().start == 0.0);
+        CHECK(chapters.back().end == seconds);
+        CHECK(static_cast<double>(chapters.size()) <= seconds / min_heap_chapter_seconds);
+        std::size_t ops_named = 0;
+        for (std::size_t i = 0; i < chapters.size(); ++i) {
+            CAPTURE(chapters[i].title);
+            if (seconds >= min_heap_chapter_seconds)
+                CHECK(chapters[i].end - chapters[i].start >= min_heap_chapter_seconds);
+            if (i > 0) CHECK(chapters[i].start == chapters[i - 1].end);
+            CHECK(chapters[i].still >= chapters[i].start);
+            CHECK(chapters[i].still < chapters[i].end);
+            // Each chapter starts where one of its operations does (the first at 0).
+            if (i > 0) {
+                CHECK(std::find(lesson.op_starts().begin(), lesson.op_starts().end(),
+                                chapters[i].start) != lesson.op_starts().end());
+            }
+            ops_named +=
+                chapters[i].title.find("operations)") != std::string::npos
+                    ? 4
+                    : static_cast<std::size_t>(
+                          std::count(chapters[i].title.begin(), chapters[i].title.end(), ',') + 1);
+        }
+        CHECK(chapters.front().title.rfind("insert P", 0) == 0);
+        if (pace >= 2.0) {
+            // Long steps: an operation fills its own chapter.
+            CHECK(chapters.size() >= 6);
+            CHECK(chapters[1].title.find(',') == std::string::npos);
+        }
+        CHECK(ops_named >= 4);
+    }
+}
+
+TEST_CASE("heap chapters: heapsort's two phases by name; a short video is one chapter") {
+    const HeapProgram sort(pq::HeapRecord::heapsort(pq::parse_sort_keys("S O R T E X A M P L E"),
+                                                     pq::Orientation::max),
+                          heap_pacing(0.8), 1);
+    const Chapters phases = heap_chapters(sort, sort.duration(), 30);
+    REQUIRE(phases.size() == 2);
+    CHECK(phases[0].title == "build the heap");
+    CHECK(phases[1].title == "sortdown");
+    const std::vector<pq::QueueKind> binary{pq::parse_queue_kind("binary")};
+    const HeapProgram one(
+        pq::HeapRecord::operations(pq::parse_heap_ops("P"), binary, pq::Orientation::max),
+        HeapPacing{0.5, 0.0, 0.5, 0.5}, 1);
+    const Chapters single = heap_chapters(one, one.duration(), 30);
+    REQUIRE(single.size() == 1);
+    CHECK(single[0].title == "insert P");
+    CHECK(single[0].end == one.duration());
 }

@@ -159,7 +159,7 @@ TEST_CASE("a budget over many failures: fair between kinds, the rest counted in 
     CHECK(count_kind(m, FailureKind::missed) == 4);
     CHECK(count_kind(m, FailureKind::overlapping) == 13);
     CHECK(count_kind(m, FailureKind::left_box) == 13);
-    CHECK(marks.words().unmarked == "+234 not marked");
+    CHECK(marks.words().unmarked == "and 234 more");
 }
 
 TEST_CASE("a missed collision's ring stays one second of video and fades, a held state adds none") {
@@ -180,6 +180,51 @@ TEST_CASE("a missed collision's ring stays one second of video and fades, a held
     // An earlier state (a seek, a new video) starts over.
     marks.update(failing(0, 0, 0, 0.1), 1.1);
     CHECK(marks.words().items.empty());
+}
+
+TEST_CASE("an overlap of one frame keeps its cross a second of video, fading, where it was") {
+    FailureMarks marks;
+    Snapshot s = failing(0, 1, 0, 0.5);
+    const Vec2 mid = 0.5 * (s.discs[0].position + s.discs[1].position);
+    marks.update(s, 2.0);
+    REQUIRE(marks.marks().size() == 1);
+    CHECK(marks.marks()[0].opacity == doctest::Approx(1.0));
+    // The next state: the pair has parted and moved on; the cross stays where they overlapped.
+    s.time = 0.6;
+    s.overlapping_pairs.clear();
+    s.discs[0].position = {0.1, 0.9};
+    s.discs[1].position = {0.9, 0.9};
+    const double frame = 1.0 / 30.0;
+    for (double t = 2.0 + frame; t < 2.0 + mark_seconds - 1e-9; t += frame) {
+        marks.update(s, t);
+        REQUIRE(marks.marks().size() == 1);
+        CHECK(marks.marks()[0].kind == FailureKind::overlapping);
+        CHECK(marks.marks()[0].where.x == doctest::Approx(mid.x));
+        CHECK(marks.marks()[0].where.y == doctest::Approx(mid.y));
+        CHECK(marks.marks()[0].opacity == doctest::Approx(1.0 - (t - 2.0) / mark_seconds));
+    }
+    marks.update(s, 2.0 + mark_seconds);
+    CHECK(marks.marks().empty());
+    CHECK(marks.words().items.size() == 1);  // the legend still names what was marked
+}
+
+TEST_CASE("a pair that overlaps again is marked at full strength, once") {
+    FailureMarks marks;
+    Snapshot s = failing(0, 2, 0, 0.5);
+    marks.update(s, 0.0);
+    s.time = 0.6;
+    s.overlapping_pairs.pop_back();  // the second pair parts
+    marks.update(s, 0.5);
+    REQUIRE(marks.marks().size() == 2);
+    // The pair overlapping now comes first, the parted one fades.
+    CHECK(marks.marks()[0].opacity == doctest::Approx(1.0));
+    CHECK(marks.marks()[1].opacity == doctest::Approx(0.5));
+    s.time = 0.7;
+    s.overlapping_pairs.emplace_back(2, 3);  // and overlaps again
+    marks.update(s, 0.6);
+    REQUIRE(marks.marks().size() == 2);
+    CHECK(marks.marks()[0].opacity == doctest::Approx(1.0));
+    CHECK(marks.marks()[1].opacity == doctest::Approx(1.0));
 }
 
 TEST_CASE("a periodic box's legend says once that the edges wrap around") {

@@ -5,9 +5,14 @@
 /// step captions (heap and puzzle videos), so the encoder only ever sees titled times.
 
 #include "collide/cue.hpp"
+#include "collide/show/heap_program.hpp"
 #include "collide/show/timeline.hpp"
 
 namespace collide::show {
+
+/// The shortest chapter of a heap video, in seconds of video: a class jumps between operations,
+/// not between steps (a chapter per step made 55 chapters in 43 s).
+inline constexpr double min_heap_chapter_seconds = 4.0;
 
 /// A collision video's chapters, one per stretch of the timeline a class would name: the title
 /// card (its title), each caption (the run and the hold that show it are one chapter), the
@@ -22,6 +27,14 @@ namespace collide::show {
 /// `video_seconds`; the title is the cue's text on one line (a panel per line becomes
 /// "line / line"); the still is its last frame at `fps`. Empty when there are no cues.
 [[nodiscard]] Chapters chapters_from_cues(const Cues& cues, double video_seconds, int fps);
+
+/// A heap video's chapters: one per operation ("insert S", "remove the max X", "build the
+/// heap"), the operations too short for a chapter of their own grouped with the next ones
+/// ("insert P, insert Q, insert E"; more than three: "insert P ... insert E (5 operations)") so
+/// that every chapter lasts at least min_heap_chapter_seconds (one chapter for a shorter video).
+/// The intro goes with the first operation, the outro with the last; back to back from 0 to
+/// `video_seconds`; the still is each chapter's last frame at `fps`.
+[[nodiscard]] Chapters heap_chapters(const HeapProgram& lesson, double video_seconds, int fps);
 
 /// `text` as one line: line breaks become `separator`, runs of spaces one space, no spaces at
 /// either end.

@@ -2,7 +2,8 @@
 /// \file
 /// Which failures of a time-driven panel a lesson marks, and the words of the mark legend: a
 /// missed collision keeps its ring for a second of video, an overlapping pair is marked while it
-/// overlaps, a disc that left a walled box is marked where it crossed the edge. The marker budget
+/// overlaps and for a second of video after (fading, so that an overlap of one frame is still
+/// seen), a disc that left a walled box is marked where it crossed the edge. The marker budget
 /// is shared fairly between the kinds present and spread over the box, so no kind and no corner
 /// takes every mark. The renderer paints the marks it is handed (FailureMark); it chooses none.
 
@@ -11,6 +12,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "collide/box.hpp"
@@ -19,7 +21,8 @@
 
 namespace collide::show {
 
-/// How long a missed collision's ring stays on screen, in seconds of video (fading out).
+/// How long a missed collision's ring, or an overlap's cross once the pair has parted, stays on
+/// screen, in seconds of video (fading out).
 inline constexpr double mark_seconds = 1.0;
 /// At most this many marks in a panel's box; the failures beyond are counted in the legend.
 inline constexpr std::size_t mark_budget = 30;
@@ -32,7 +35,8 @@ inline constexpr double missed_mark_radii = 2.5;
 [[nodiscard]] std::string failure_name(FailureKind kind);
 /// The legend's note on a periodic box ("edges wrap around").
 [[nodiscard]] std::string wrap_words();
-/// The legend's count of failures without a mark ("+1,234 not marked"; "" for 0).
+/// The legend's count of failures without a mark, after the kinds it names ("and 1,234 more";
+/// "" for 0).
 [[nodiscard]] std::string unmarked_words(std::size_t unmarked);
 
 /// True when a panel keeps a legend line under its figures: a time-driven panel (it may fail),
@@ -71,8 +75,9 @@ class FailureMarks {
         : budget_(budget), say_wrap_(say_wrap) {}
 
     /// Takes the frame's snapshot at `video_time` (seconds of video): remembers its missed
-    /// collisions if the state is new (a held time-driven state is not counted again), forgets
-    /// rings older than mark_seconds, and chooses the marks and legend words of this frame.
+    /// collisions if the state is new (a held time-driven state is not counted again) and its
+    /// overlapping pairs, forgets rings and parted pairs older than mark_seconds, and chooses
+    /// the marks and legend words of this frame.
     void update(const Snapshot& snapshot, double video_time);
 
     /// The marks of the last update, kind by kind (missed, overlapping, left the box).
@@ -86,18 +91,27 @@ class FailureMarks {
         Vec2 where;
         double born = 0.0;  ///< video seconds
     };
+    /// An overlapping pair, while it overlaps and for mark_seconds after it last did.
+    struct Overlap {
+        std::pair<std::uint32_t, std::uint32_t> pair;
+        Vec2 where;         ///< the midpoint when last seen overlapping
+        double size = 0.0;  ///< the cross's size (box units)
+        double seen = 0.0;  ///< video seconds when last seen overlapping
+    };
     struct Left {
         std::uint32_t disc = 0;
         Exit exit;
         std::uint64_t order = 0;  ///< when it was first seen outside (newest marked first)
     };
     void remember(const Snapshot& snapshot, double video_time);
+    void remember_overlaps(const Snapshot& snapshot, double video_time);
     void choose(const Snapshot& snapshot, double video_time);
 
     std::size_t budget_;
     bool say_wrap_;
     std::vector<Missed> missed_;
-    std::vector<Left> left_;  ///< discs outside the box now, with where they left
+    std::vector<Overlap> overlaps_;  ///< sorted by pair
+    std::vector<Left> left_;         ///< discs outside the box now, with where they left
     std::uint64_t left_seen_ = 0;
     std::optional<double> last_time_;
     std::vector<FailureKind> seen_;  ///< kinds marked so far, in order of first appearance

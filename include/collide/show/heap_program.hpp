@@ -70,6 +70,8 @@ class HeapProgram {
     [[nodiscard]] std::string name() const;
     /// Seconds of video.
     [[nodiscard]] double duration() const noexcept;
+    /// Seconds of video at which each operation starts, then the outro (ops + 1 values).
+    [[nodiscard]] const std::vector<double>& op_starts() const noexcept { return op_start_; }
     /// The state of every panel at `seconds` (clamped to [0, duration()]).
     [[nodiscard]] HeapMoment moment_at(double seconds) const;
     /// The frame at `seconds`.

@@ -34,9 +34,11 @@ inline constexpr double replay_hold_end = 5.3;  ///< the whole picture stands un
 inline constexpr double max_replay_magnification = 12.0;
 
 /// The event-driven panel's words in a replay when that engine had no collision of the failing
-/// discs at that moment (its history had already parted from the time-driven one's): two lines,
-/// so they fit a box a third of a 480-line frame wide.
-inline constexpr std::string_view parted_words[2] = {"These two never met:", "the runs had parted"};
+/// discs at that moment (its history had already parted from the time-driven one's, because
+/// of the time-driven panel's earlier misses): two lines a student follows without the word
+/// "run", short enough for a box a third of a 480-line frame wide.
+inline constexpr std::string_view parted_words[2] = {"Here these two never meet:",
+                                                     "earlier misses sent them elsewhere"};
 
 /// The collision the event-driven engine handled at the moment of the failure.
 struct PredictedHit {

@@ -117,7 +117,7 @@ struct MarkLegendItem {
 struct MarkWords {
     std::vector<MarkLegendItem> items;  ///< the kinds marked so far, in order of first appearance
     std::string wraps;     ///< periodic box, said once (first panel): "edges wrap around"
-    std::string unmarked;  ///< failures this frame without a mark: "+12 not marked"
+    std::string unmarked;  ///< failures this frame without a mark: "and 12 more"
 };
 
 /// A part of a panel's box shown enlarged (a replay's zoom): the box point drawn at the centre
