@@ -75,6 +75,8 @@ void LessonPainter::add_replay(const ReplayView& replay, const PanelLayout& pane
             case LabelSide::right:
                 at.x += clear + half_w;
                 break;
+            case LabelSide::over:
+                break;
         }
         add_plate_label(Font::body, at, label.text, color(label.failure, label.opacity), inside);
     }
