@@ -44,6 +44,12 @@ enum class ReplayChoice {
     all,    ///< every failure the engine records (one per step, a few), as long as they fit
 };
 
+/// What a question in a collision video asks (`[[render.questions]] kind`); the engines answer.
+enum class QuestionKind : std::uint8_t {
+    next_collision,  ///< which of two to four marked pairs collides next (event-driven panel)
+    how_many,        ///< how many collisions in the next second of video (event-driven panel)
+};
+
 /// How a 3D scene's camera moves (`--camera`, `[render] camera`): a fixed view, or one that turns
 /// slowly about the box's vertical axis (show::camera_at).
 enum class CameraMotion : std::uint8_t { fixed, orbit };
@@ -66,6 +72,8 @@ inline constexpr std::array<NamedValue<PlotSize>, 3> plot_size_names{
     {{"none", PlotSize::none}, {"small", PlotSize::small}, {"large", PlotSize::large}}};
 inline constexpr std::array<NamedValue<ReplayChoice>, 3> replay_choice_names{
     {{"none", ReplayChoice::none}, {"first", ReplayChoice::first}, {"all", ReplayChoice::all}}};
+inline constexpr std::array<NamedValue<QuestionKind>, 2> question_kind_names{
+    {{"next-collision", QuestionKind::next_collision}, {"how-many", QuestionKind::how_many}}};
 inline constexpr std::array<NamedValue<CameraMotion>, 2> camera_motion_names{
     {{"fixed", CameraMotion::fixed}, {"orbit", CameraMotion::orbit}}};
 inline constexpr std::array<NamedValue<Projection>, 2> projection_names{
@@ -113,6 +121,16 @@ inline constexpr std::array<NamedValue<Projection>, 2> projection_names{
 [[nodiscard]] inline ReplayChoice parse_replay_choice(std::string_view text,
                                                       std::string_view field = "replay") {
     return parse_named(text, field, replay_choice_names, "a replay choice");
+}
+
+/// "next-collision" / "how-many".
+[[nodiscard]] constexpr std::string_view question_kind_name(QuestionKind kind) noexcept {
+    return name_of(kind, question_kind_names, "next-collision");
+}
+/// Parses a question kind; throws collide::Error (input) naming `field` otherwise.
+[[nodiscard]] inline QuestionKind parse_question_kind(std::string_view text,
+                                                      std::string_view field = "kind") {
+    return parse_named(text, field, question_kind_names, "a question kind");
 }
 
 }  // namespace collide

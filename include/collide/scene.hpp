@@ -22,6 +22,17 @@ struct CaptionCue {
     double hold = 0.0;  ///< seconds of video the picture stays frozen from `at` (0: none)
 };
 
+/// A question asked from `at` seconds of video (`[[render.questions]]`): the picture freezes while
+/// the class thinks `think` seconds, then the engine's answer shows (show/questions.hpp).
+struct QuestionCue {
+    double at = 0.0;  ///< seconds of video
+    QuestionKind kind = QuestionKind::next_collision;
+    std::string text;    ///< the question's words ("": the kind's own)
+    double think = 3.0;  ///< seconds of video frozen on the question, >= 2
+    std::string file;    ///< where it was written, for errors and notices found later
+    int line = 0;
+};
+
 /// Longest caption: one line across a 16:9 frame at the lesson text size (docs/scenes.md).
 inline constexpr std::size_t max_caption_chars = 64;
 /// Longest title: a file name's length (a scene without a title is titled after its file, and
@@ -42,6 +53,7 @@ struct RenderHints {
     std::optional<Theme> theme;          ///< "dark" or "light"
     std::optional<std::string> caption;  ///< the caption line for the whole video
     std::vector<CaptionCue> captions;    ///< scripted captions, `at` increasing
+    std::vector<QuestionCue> questions;  ///< questions asked, `at` increasing
     /// "none", "small" or "large"; unset (or "auto" in a file): where it teaches
     std::optional<PlotSize> histogram;
     std::optional<double> duration;      ///< seconds of video

@@ -60,6 +60,7 @@ struct CliValues {
     std::string layout_json;
     std::string timeline_json;
     std::string replay;
+    std::string questions;
     bool no_intro = false;
     bool no_epilogue = false;
     bool code = false;
@@ -82,6 +83,7 @@ struct CliValues {
     CLI::Option* layout_json_opt = nullptr;
     CLI::Option* timeline_json_opt = nullptr;
     CLI::Option* replay_opt = nullptr;
+    CLI::Option* questions_opt = nullptr;
     CLI::Option* trails_opt = nullptr;
     CLI::Option* queue_opt = nullptr;
     CLI::Option* slow_motion_opt = nullptr;
@@ -154,6 +156,7 @@ RenderRequest request_of(const CliValues& v, bool still) {
     r.layout_json = if_given(v.layout_json_opt, v.layout_json);
     r.timeline_json = if_given(v.timeline_json_opt, v.timeline_json);
     r.replay = if_given(v.replay_opt, v.replay);
+    r.questions = if_given(v.questions_opt, v.questions);
     r.no_intro = v.no_intro;
     r.no_epilogue = v.no_epilogue;
     r.format = if_given(v.video.format_opt, v.video.format);
@@ -290,17 +293,31 @@ RenderPlan validated_plan(RenderPlan draft, const RenderRequest& request, show::
 RenderPlan with_replays(RenderPlan draft, const RenderRequest& request, show::SceneView scene,
                         const InterruptGuard& interrupts) {
     if (scene.three_d()) {
+        // Nor questions: the engines that answer them run discs.
+        if (!draft.lesson.questions.empty()) {
+            draft.notices.push_back(
+                "render.questions: not asked in a 3D scene yet (the engines answer for discs)");
+            draft.lesson.questions.clear();
+            draft.lesson.question_cues.clear();
+        }
         lay_out_frames(draft, request);
         return draft;
     }
-    lay_out_frames(draft, request, [&](const RenderPlan& plan) {
+    const ReplayFinder finder = [&](const RenderPlan& plan) {
         try {
             return find_replays(scene.discs(), plan, &interrupts.flag());
         } catch (const Error&) {
             interrupts.throw_if_requested();
             throw;
         }
-    });
+    };
+    lay_out_frames(draft, request, finder);
+    try {
+        ask_questions(draft, request, scene, finder, &interrupts.flag());
+    } catch (const Error&) {
+        interrupts.throw_if_requested();
+        throw;
+    }
     return draft;
 }
 
@@ -615,11 +632,17 @@ void add_render_command(CLI::App& root) {
                                          "failed step it records, as long "
                                          "as they fit)")
                              ->type_name("{none,first,all}");
+    values->questions_opt =
+        cmd->add_option("--questions", values->questions,
+                        "Ask the scene's questions ([[render.questions]]: the picture stops, the "
+                        "class thinks, the engine's answer shows): on (the default, at the "
+                        "lesson level) or none")
+            ->type_name("{on,none}");
     values->timeline_json_opt =
         cmd->add_option(
                "--timeline-json", values->timeline_json,
                "Also write the video's timeline as JSON: its segments (card, run, hold, replay, "
-               "epilogue) with their video and simulation times and captions")
+               "question, reveal, epilogue) with their video and simulation times and captions")
             ->type_name("PATH");
     cmd->footer(
         "Examples:\n"

@@ -146,13 +146,15 @@ class CollisionJobFrames final : public FrameProgram {
         if (interrupts_ != nullptr) interrupts_->throw_if_requested();
     }
 
-    /// Draws the frame, except inside a hold: there every frame after the first is the first
-    /// one again (the states, the clock, the caption and the markers all stand still), and
-    /// drawing it again would only lengthen the trails by points that stand still too.
+    /// Draws the frame, except inside a hold or a question's reveal: there every frame after
+    /// the first is the first one again (the states, the clock, the caption and the markers all
+    /// stand still), and drawing it again would only lengthen the trails by points that stand
+    /// still too.
     void output(const show::CollisionState& frame, const render::FrameContent& content,
                 Image& image) {
         const show::Segment& segment = plan_.timeline.segment_at(frame.index);
-        const bool hold = segment.kind == show::SegmentKind::hold;
+        const bool hold =
+            segment.kind == show::SegmentKind::hold || segment.kind == show::SegmentKind::reveal;
         if (hold && frame.index > segment.first_frame && !held_.rgba.empty()) {
             image = held_;
             return;

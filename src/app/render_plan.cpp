@@ -257,6 +257,12 @@ show::LessonRequest lesson_request(const RenderRequest& request, const RenderPla
     out.step_list = !plan.time_steps.empty();
     out.dt = plan.time_engine.dt;
     out.frame_interval = plan.speed.speed / plan.fps;
+    out.event_panel = plan.mode != RenderMode::time;
+    if (request.questions) {
+        if (*request.questions != "on" && *request.questions != "none")
+            throw_option_error("--questions", *request.questions, "on or none");
+        out.questions = *request.questions == "on";
+    }
     return out;
 }
 
@@ -619,10 +625,61 @@ void lay_out_frames(RenderPlan& plan, const RenderRequest& request,
     }
 }
 
+void ask_questions(RenderPlan& plan, const RenderRequest& request, const Scene& scene,
+                   const ReplayFinder& find_replays, const std::atomic<bool>* stop) {
+    plan.questions.clear();
+    if (plan.kind == OutputKind::still || plan.lesson.questions.empty()) return;
+    show::LessonPlan& lesson = plan.lesson;
+    std::vector<show::QuestionAnswer> answers;
+    while (true) {
+        std::vector<QuestionKind> kinds;
+        for (const QuestionCue& cue : lesson.question_cues) kinds.push_back(cue.kind);
+        answers = show::answer_questions(scene, plan.event_engine, plan.clock, plan.timeline, kinds,
+                                         stop);
+        const std::vector<int> asked = show::questions_asked(plan.timeline);
+        std::vector<show::TimelineQuestion> questions;
+        std::vector<QuestionCue> cues;
+        std::vector<show::QuestionAnswer> kept;
+        for (std::size_t i = 0; i < kinds.size(); ++i) {
+            const QuestionCue& cue = lesson.question_cues[i];
+            const std::string where = show::question_place(cue) + ": render.questions";
+            if (std::find(asked.begin(), asked.end(), static_cast<int>(i)) == asked.end()) {
+                plan.notices.push_back(fmt::format(
+                    "{}: no room at {} s for {} s of question and answer before the video's end; "
+                    "not asked",
+                    where, cue.at, cue.think + show::reveal_seconds));
+            } else if (!answers[i].askable) {
+                plan.notices.push_back(fmt::format(
+                    "{}: nothing to ask at {} s (the event-driven engine resolves no collision in "
+                    "the {} frames after it); not asked",
+                    where, cue.at, show::look_ahead_frames));
+            } else {
+                questions.push_back(lesson.questions[i]);
+                cues.push_back(cue);
+                kept.push_back(answers[i]);
+            }
+        }
+        if (kept.size() == kinds.size()) break;
+        // Without the questions left out, the later ones freeze other frames: ask again.
+        lesson.questions = std::move(questions);
+        lesson.question_cues = std::move(cues);
+        lay_out_frames(plan, request, find_replays);
+    }
+    for (std::size_t i = 0; i < answers.size(); ++i) {
+        lesson.questions[i].question =
+            show::question_words(answers[i], lesson.question_cues[i].text);
+        lesson.questions[i].answer = show::answer_words(answers[i], plan.clock);
+    }
+    plan.questions = std::move(answers);
+    // The words do not move a frame: the same segments, now with the questions' captions.
+    plan.timeline = show::lesson_timeline(lesson, plan.fps, plan.timeline.frame_count());
+}
+
 RenderPlan plan_render(const RenderRequest& request, const Scene& scene,
                        const ReplayFinder& find_replays) {
     RenderPlan plan = plan_without_frames(request, scene);
     lay_out_frames(plan, request, find_replays);
+    ask_questions(plan, request, scene, find_replays);
     return plan;
 }
 
@@ -675,6 +732,7 @@ show::CollisionSettings collision_settings(const RenderPlan& plan) {
     out.timeline = plan.timeline;
     out.lesson = plan.lesson;
     out.replays = plan.replays;
+    out.questions = plan.questions;
     const render::RenderConfig& r = plan.render;
     out.color_mode = r.color_mode;
     out.speed_min = r.speed_min;

@@ -5,6 +5,7 @@
 /// defaults into one RenderPlan. Precedence everywhere: command line > scene hint > default.
 /// Pure functions (no GL, no files): unit-tested in collide_render_plan_tests.
 
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -17,6 +18,7 @@
 #include "collide/scene.hpp"
 #include "collide/show/collision.hpp"
 #include "collide/show/collision_program.hpp"
+#include "collide/show/questions.hpp"
 #include "collide/show/replay.hpp"
 #include "collide/show/sphere_camera.hpp"
 #include "collide/sim/engine.hpp"
@@ -157,17 +159,18 @@ struct RenderRequest {
     std::optional<std::string> layout_json;                    ///< --layout-json FILE
     std::optional<std::string> timeline_json;                  ///< --timeline-json FILE
     std::optional<std::string> format;                         ///< --format mp4|gif|png
-    bool last_frame = false;            ///< --last-frame: write only the last frame as a PNG
-    std::optional<double> at;           ///< thumbnail --at (simulation time)
-    bool still = false;                 ///< true for `collide thumbnail` (PNG output)
-    bool no_limits = false;             ///< --no-limits: run even what exceeds WorkLimits
-    std::optional<int> queue;           ///< --queue [K]: show the event queue, K events
-    std::optional<double> slow_motion;  ///< --slow-motion F: F times slower than the speed
-    bool code = false;                  ///< --code: the event-driven loop beside the queue
-    std::string font;                   ///< --font FILE (empty: find_font's search)
-    bool no_intro = false;              ///< --no-intro: no title card
-    bool no_epilogue = false;           ///< --no-epilogue: no summary card at the end
-    std::optional<std::string> replay;  ///< --replay none|first|all
+    bool last_frame = false;               ///< --last-frame: write only the last frame as a PNG
+    std::optional<double> at;              ///< thumbnail --at (simulation time)
+    bool still = false;                    ///< true for `collide thumbnail` (PNG output)
+    bool no_limits = false;                ///< --no-limits: run even what exceeds WorkLimits
+    std::optional<int> queue;              ///< --queue [K]: show the event queue, K events
+    std::optional<double> slow_motion;     ///< --slow-motion F: F times slower than the speed
+    bool code = false;                     ///< --code: the event-driven loop beside the queue
+    std::string font;                      ///< --font FILE (empty: find_font's search)
+    bool no_intro = false;                 ///< --no-intro: no title card
+    bool no_epilogue = false;              ///< --no-epilogue: no summary card at the end
+    std::optional<std::string> replay;     ///< --replay none|first|all
+    std::optional<std::string> questions;  ///< --questions on|none
 };
 
 /// The most time-driven panels a --dt list puts beside the event-driven one: five boxes in all
@@ -254,6 +257,9 @@ struct RenderPlan {
     ReplayChoice replay = ReplayChoice::first;
     /// The failures replayed (plan_render's ReplayFinder), in the order the video shows them.
     std::vector<show::ReplayFailure> replays;
+    /// The questions' answers from the engines (answer_plan_questions), indexed like
+    /// lesson.questions.
+    std::vector<show::QuestionAnswer> questions;
 };
 
 /// Default output directory for derived paths.
@@ -263,6 +269,14 @@ inline constexpr const char* default_output_dir = "out";
 /// plan's choice (RenderPlan::replay) and its simulation frames without replays
 /// (RenderPlan::clock).
 using ReplayFinder = std::function<std::vector<show::ReplayFailure>(const RenderPlan&)>;
+
+/// Asks the event-driven engine the questions of `plan` (laid out by lay_out_frames): each
+/// question's answer and words (show/questions.hpp), and the timeline with their captions. A
+/// question the timeline has no room for, or with nothing to ask at its moment (no collision
+/// ahead), is left out with a notice naming where it was written, and the frames laid out again
+/// without it. A still asks nothing. Once `stop` is set throws Error(runtime).
+void ask_questions(RenderPlan& plan, const RenderRequest& request, const Scene& scene,
+                   const ReplayFinder& find_replays = {}, const std::atomic<bool>* stop = nullptr);
 
 /// Resolves `request` against `scene` (already loaded and validated). Throws Error(input) naming
 /// the first bad option. Touches no file: the caller checks that `output` is writable. Without

@@ -45,6 +45,8 @@ PointF beside(PointF p, LabelSide side, float clear, float half_w, float half_h)
             return {p.x - clear - half_w, p.y};
         case LabelSide::right:
             return {p.x + clear + half_w, p.y};
+        case LabelSide::over:
+            break;
     }
     return p;
 }
@@ -68,6 +70,7 @@ PointF label_place(PointF p, LabelSide side, float clear, float half_w, float ha
                 return std::array{LabelSide::left, LabelSide::above, LabelSide::below,
                                   LabelSide::right};
             case LabelSide::right:
+            case LabelSide::over:
                 break;
         }
         return std::array{LabelSide::right, LabelSide::above, LabelSide::below, LabelSide::left};
@@ -149,8 +152,11 @@ void LessonPainter::add_replay(const ReplayView& replay, const PanelLayout& pane
         const float clear = static_cast<float>(label.clear * panel.scale) + 0.3F * body;
         const float half_w = 0.5F * font.text_width(label.text) + pad;
         // Beside the ghosts, never on one: the class must see the discs the words are about.
-        const PointF at = label_place(p, label.side, clear, half_w, half_h, inside, ghosts, labels_,
-                                      0.15F * body);
+        // `over`: on its point (show placed it clear of the discs: a question's letters).
+        const PointF at = label.side == LabelSide::over
+                              ? p
+                              : label_place(p, label.side, clear, half_w, half_h, inside, ghosts,
+                                            labels_, 0.15F * body);
         add_plate_label(Font::body, at, label.text, color(label.failure, label.opacity), inside);
     }
 }

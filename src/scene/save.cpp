@@ -84,7 +84,8 @@ std::string hex_color(Rgb8 c) {
 
 void write_render(std::ostream& out, const RenderHints& r) {
     if (!r.color_mode && !r.trails && !r.overlays && !r.duration && !r.speed && !r.dt && !r.theme &&
-        !r.caption && r.captions.empty() && !r.histogram && !r.replay && !r.replay_tag)
+        !r.caption && r.captions.empty() && !r.histogram && !r.replay && !r.replay_tag &&
+        r.questions.empty())
         return;
     out << "\n[render]\n";
     if (r.color_mode)
@@ -105,6 +106,12 @@ void write_render(std::ostream& out, const RenderHints& r) {
         out << "\n[[render.captions]]\nat = " << exact(cue.at) << "\ntext = " << quoted(cue.text)
             << "\n";
         if (cue.hold > 0.0) out << "hold = " << exact(cue.hold) << "\n";
+    }
+    for (const QuestionCue& cue : r.questions) {
+        out << "\n[[render.questions]]\nat = " << exact(cue.at)
+            << "\nkind = " << quoted(std::string(question_kind_name(cue.kind)))
+            << "\nthink = " << exact(cue.think) << "\n";
+        if (!cue.text.empty()) out << "text = " << quoted(cue.text) << "\n";
     }
 }
 

@@ -535,6 +535,7 @@ class TomlReader {
             r.slab_at = where(*v, "render.slab");
         }
         if (const toml::node* v = t.get("captions")) read_captions(*v);
+        if (const toml::node* v = t.get("questions")) read_questions(*v);
     }
 
     /// The value named in `table` (include/collide/render_options.hpp); `also`, when given, is
@@ -602,6 +603,49 @@ class TomlReader {
             cue.file = file_;
             cue.line = static_cast<int>(at->source().begin.line);
             r.captions.push_back(std::move(cue));
+        }
+    }
+
+    // [[render.questions]]: at (seconds of video, increasing, within the video), kind, optional
+    // text (the question's words, one caption line) and think (seconds, at least 2).
+    void read_questions(const toml::node& n) {
+        const toml::array* a = n.as_array();
+        if (a == nullptr) fail(n, "render.questions", "expected [[render.questions]] tables");
+        RenderHints& r = scene_.render;
+        for (std::size_t i = 0; i < a->size(); ++i) {
+            const std::string field = "render.questions[" + std::to_string(i) + "]";
+            const toml::table& t = table_at(*a->get(i), field);
+            check_keys(t, field, question_keys);
+            const toml::node* at = t.get("at");
+            const toml::node* kind = t.get("kind");
+            if (at == nullptr) fail(t, field + ".at", "missing (seconds of video)");
+            if (kind == nullptr) fail(t, field + ".kind", "missing (next-collision or how-many)");
+            QuestionCue cue;
+            cue.at = number(*at, field + ".at");
+            if (!(cue.at >= 0.0) || !std::isfinite(cue.at))
+                fail(*at, field + ".at", "must be >= 0 (got " + num(cue.at) + ")");
+            if (!r.questions.empty() && !(cue.at > r.questions.back().at)) {
+                fail(*at, field + ".at",
+                     "out of order: " + num(cue.at) + " s is not after the previous question at " +
+                         num(r.questions.back().at) + " s");
+            }
+            if (r.duration && cue.at >= *r.duration) {
+                fail(*at, field + ".at",
+                     "beyond the video: " + num(cue.at) + " s, the video lasts " +
+                         num(*r.duration) + " s");
+            }
+            cue.kind = one_of(*kind, field + ".kind", question_kind_names);
+            if (const toml::node* text = t.get("text")) cue.text = caption(*text, field + ".text");
+            if (const toml::node* think = t.get("think")) {
+                cue.think = number(*think, field + ".think");
+                if (!(cue.think >= 2.0) || !std::isfinite(cue.think) || cue.think > 60.0) {
+                    fail(*think, field + ".think",
+                         "seconds a class thinks, from 2 to 60 (got " + num(cue.think) + ")");
+                }
+            }
+            cue.file = file_;
+            cue.line = static_cast<int>(at->source().begin.line);
+            r.questions.push_back(std::move(cue));
         }
     }
 

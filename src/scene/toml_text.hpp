@@ -28,14 +28,16 @@ inline const Keys generate3_keys = {"count", "packing_fraction", "radius", "mass
 inline const Keys disc_keys = {"position", "velocity", "radius", "mass", "color", "tag"};
 inline const Keys generate_keys = {"count", "packing_fraction", "radius", "mass", "temperature",
                                    "speed", "region",           "color",  "seed", "tag"};
-inline const Keys render_keys = {"color_mode", "trails", "overlays",   "duration", "speed",
-                                 "dt",         "theme",  "caption",    "captions", "histogram",
-                                 "replay",     "camera", "projection", "slab",     "replay_tag"};
+inline const Keys render_keys = {"color_mode", "trails",    "overlays",   "duration",
+                                 "speed",      "dt",        "theme",      "caption",
+                                 "captions",   "histogram", "replay",     "camera",
+                                 "projection", "slab",      "replay_tag", "questions"};
 /// [render] keys of one dimension only: the camera of a 3D scene; trails and replays, which
 /// spheres do not have.
 inline const Keys render_keys3 = {"camera", "projection", "slab"};
-inline const Keys render_keys2 = {"trails", "replay", "replay_tag"};
+inline const Keys render_keys2 = {"trails", "replay", "replay_tag", "questions"};
 inline const Keys caption_keys = {"at", "text", "hold"};
+inline const Keys question_keys = {"at", "kind", "text", "think"};
 
 }  // namespace keys
 

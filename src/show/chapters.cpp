@@ -1,5 +1,5 @@
-// A video's chapters: the timeline's stretches (card, each caption, replay, epilogue) or the step
-// captions of a heap or puzzle video, with the titles players list.
+// A video's chapters: the timeline's stretches (card, each caption, replay, question, answer,
+// epilogue) or the step captions of a heap or puzzle video, with the titles players list.
 #include "collide/show/chapters.hpp"
 
 #include <algorithm>
@@ -34,7 +34,7 @@ std::string one_line(const std::string& text, std::string_view separator) {
 namespace {
 
 /// Which chapter a segment belongs to: runs and holds showing one caption are one chapter.
-enum class Part { card, body, replay, epilogue };
+enum class Part { card, body, replay, epilogue, question, reveal };
 
 Part part_of(SegmentKind kind) {
     switch (kind) {
@@ -47,6 +47,10 @@ Part part_of(SegmentKind kind) {
             return Part::replay;
         case SegmentKind::epilogue:
             return Part::epilogue;
+        case SegmentKind::question:
+            return Part::question;
+        case SegmentKind::reveal:
+            return Part::reveal;
     }
     return Part::body;
 }
@@ -63,6 +67,10 @@ std::string chapter_title(Part part, const std::string& caption) {
             return words.empty() ? "Replay" : "Replay: " + words;
         case Part::epilogue:
             return words.empty() ? "The final figures" : words;
+        case Part::question:
+            return words.empty() ? "Question" : words;
+        case Part::reveal:
+            return words.empty() ? "Answer" : words;
     }
     return words;
 }

@@ -9,6 +9,7 @@
 #include "collide/error.hpp"
 #include "collide/show/collision_program.hpp"
 #include "collide/show/collision_summary.hpp"
+#include "collide/show/questions.hpp"
 
 namespace collide::show {
 
@@ -98,6 +99,20 @@ LessonPlan lesson_plan(const Scene& scene, const LessonRequest& request,
     // A hold freezes the picture for its caption to be read: only where captions are shown.
     if (!shows.caption_holds) {
         for (CaptionCue& cue : lesson.captions) cue.hold = 0.0;
+    }
+    // Questions: where the lesson's captions and words are drawn, by the panel that answers
+    // them (every kind so far: the event-driven one).
+    if (request.questions && shows.replays && !request.step_list) {
+        for (const QuestionCue& cue : scene.render.questions) {
+            if (needs_event_panel(cue.kind) && !request.event_panel) {
+                notices.push_back(question_place(cue) + ": render.questions: a " +
+                                  std::string(question_kind_name(cue.kind)) +
+                                  " question needs the event-driven panel; not asked");
+                continue;
+            }
+            lesson.questions.push_back({cue.at, cue.think, reveal_seconds, {}, {}});
+            lesson.question_cues.push_back(cue);
+        }
     }
     lesson.histogram = histogram_size(scene);
     // A --dt list: each panel's note and step indicator are its own (CollisionSimulation).

@@ -35,6 +35,7 @@ Timeline lesson_timeline(const LessonPlan& lesson, int fps, std::int64_t frames)
     for (const CaptionCue& cue : lesson.captions)
         script.cues.push_back({cue.at, cue.text, cue.hold});
     script.replays = lesson.replays;
+    script.questions = lesson.questions;
     script.epilogue_seconds = lesson.epilogue_seconds;
     script.epilogue_caption = "In the end: the final figures side by side";
     return build_timeline(script);
@@ -50,6 +51,10 @@ std::vector<CaptionSource> captions_shown(const LessonPlan& lesson,
     }
     for (const CaptionCue& cue : lesson.captions) {
         out.push_back({cue.text, cue.file, cue.line, "render.captions.text"});
+    }
+    for (const QuestionCue& cue : lesson.question_cues) {
+        if (!cue.text.empty())
+            out.push_back({cue.text, cue.file, cue.line, "render.questions.text"});
     }
     return out;
 }

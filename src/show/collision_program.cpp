@@ -27,6 +27,22 @@ void CollisionProgram::advance_step_phase(std::size_t i, double state_time) {
     }
 }
 
+const ReplayView& CollisionProgram::question_picture(const Segment& segment,
+                                                     const Snapshot& snapshot,
+                                                     double seconds_left) {
+    const QuestionAnswer& answer = settings_.questions[static_cast<std::size_t>(segment.question)];
+    const bool reveal = segment.kind == SegmentKind::reveal;
+    if (question_segment_ != &segment) {
+        // The letters' places are searched once a segment: the picture is frozen.
+        question_segment_ = &segment;
+        question_view_ = question_view(answer, snapshot, settings_.clock, seconds_left, reveal);
+    } else if (!reveal) {
+        // Only the countdown changes.
+        if (!question_view_.heading.empty()) question_view_.heading = countdown_words(seconds_left);
+    }
+    return question_view_;
+}
+
 const FrameContent& CollisionProgram::frame(const CollisionState& state) {
     const LessonPlan& lesson = settings_.lesson;
     const LevelShows shows = level_shows(settings_.level);
@@ -53,6 +69,12 @@ const FrameContent& CollisionProgram::frame(const CollisionState& state) {
             replay_views(*replay, state.panels[0].snapshot.box,
                          static_cast<double>(state.index - segment.first_frame) / settings_.fps);
     }
+    // A question or its answer: the event-driven panel marks the candidates (its own next
+    // collision line would give the answer away) and counts down, or shows the answer.
+    const bool asking =
+        (segment.kind == SegmentKind::question || segment.kind == SegmentKind::reveal) &&
+        segment.question >= 0 &&
+        static_cast<std::size_t>(segment.question) < settings_.questions.size();
     content_.code.reset();
     for (std::size_t i = 0; i < state.panels.size(); ++i) {
         const PanelState& panel = state.panels[i];
@@ -101,6 +123,10 @@ const FrameContent& CollisionProgram::frame(const CollisionState& state) {
         out.replay = !replayed           ? ReplayView{}
                      : panel.time_driven ? replayed->time_driven
                                          : replayed->event_driven;
+        if (asking && !panel.time_driven && !replayed) {
+            out.next_collision = {};
+            out.replay = question_picture(segment, panel.snapshot, segment.end - video_time);
+        }
         if (state.moved || content_.energy_drift[i].empty())
             content_.energy_drift[i].push_back(panel.drift);
         drifts_.resize(state.panels.size());

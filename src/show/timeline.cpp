@@ -22,6 +22,10 @@ std::string_view segment_kind_name(SegmentKind kind) noexcept {
             return "replay";
         case SegmentKind::epilogue:
             return "epilogue";
+        case SegmentKind::question:
+            return "question";
+        case SegmentKind::reveal:
+            return "reveal";
     }
     return "run";
 }
@@ -59,8 +63,9 @@ namespace {
 struct FrameLabel {
     SegmentKind kind = SegmentKind::run;
     bool moves = true;
-    int caption = -1;  ///< index into the cues; -1: the script's caption (or the kind's own)
-    int replay = -1;   ///< index into the replays (a replay frame)
+    int caption = -1;   ///< index into the cues; -1: the script's caption (or the kind's own)
+    int replay = -1;    ///< index into the replays (a replay frame)
+    int question = -1;  ///< index into the questions (a question or reveal frame)
 };
 
 std::int64_t whole_frames(double seconds, int fps) {
@@ -84,6 +89,10 @@ std::string caption_of(const TimelineScript& script, const FrameLabel& label) {
     if (label.kind == SegmentKind::epilogue) return script.epilogue_caption;
     if (label.kind == SegmentKind::replay)
         return script.replays[static_cast<std::size_t>(label.replay)].caption;
+    if (label.kind == SegmentKind::question)
+        return script.questions[static_cast<std::size_t>(label.question)].question;
+    if (label.kind == SegmentKind::reveal)
+        return script.questions[static_cast<std::size_t>(label.question)].answer;
     if (label.caption < 0) return script.caption;
     return script.cues[static_cast<std::size_t>(label.caption)].text;
 }
@@ -123,7 +132,13 @@ void place_replays(const TimelineScript& script, std::int64_t epilogue_start,
         const std::int64_t lead = std::max<std::int64_t>(
             0, whole_frames(caption_reading_seconds(caption_of(script, label)), script.fps) -
                    frames_read(labels, k));
-        if (length > 0 && k + 1 + lead + length <= epilogue_start) {
+        // A question keeps its frames: a replay that would fall on them is left out.
+        const auto asks = [&](std::int64_t f) {
+            return labels[static_cast<std::size_t>(f)].question >= 0;
+        };
+        bool free = k + 1 + lead + length <= epilogue_start;
+        for (std::int64_t f = k + 1; free && f <= k + lead + length; ++f) free = !asks(f);
+        if (length > 0 && free) {
             for (std::int64_t f = k + 1; f <= k + lead; ++f)
                 labels[static_cast<std::size_t>(f)] = {SegmentKind::hold, false, label.caption};
             for (std::int64_t f = k + lead + 1; f <= k + lead + length; ++f) {
@@ -133,6 +148,41 @@ void place_replays(const TimelineScript& script, std::int64_t epilogue_start,
             k += lead + length;
         }
         ++next;
+    }
+}
+
+/// Each question over the first stretch of its length from its time on in which every frame
+/// runs (a card, a hold or an earlier question pushes it later); a question that does not end
+/// before the epilogue is left out.
+void place_questions(const TimelineScript& script, std::int64_t epilogue_start,
+                     std::vector<FrameLabel>& labels) {
+    const auto runs = [&](std::int64_t k) {
+        const FrameLabel& label = labels[static_cast<std::size_t>(k)];
+        return label.kind == SegmentKind::run && label.moves;
+    };
+    for (std::size_t i = 0; i < script.questions.size(); ++i) {
+        const TimelineQuestion& question = script.questions[i];
+        const std::int64_t think =
+            std::max<std::int64_t>(1, whole_frames(question.think, script.fps));
+        const std::int64_t reveal =
+            std::max<std::int64_t>(1, whole_frames(question.reveal, script.fps));
+        std::int64_t from = first_frame_at(question.at, script.fps);
+        // The first run of think + reveal frames that only runs, from `from` on.
+        std::int64_t free = 0;
+        std::int64_t k = from;
+        for (; k < epilogue_start && free < think + reveal; ++k) {
+            free = runs(k) ? free + 1 : 0;
+        }
+        if (free < think + reveal) continue;
+        from = k - think - reveal;
+        for (std::int64_t f = from; f < from + think; ++f)
+            labels[static_cast<std::size_t>(f)].kind = SegmentKind::question;
+        for (std::int64_t f = from + think; f < from + think + reveal; ++f)
+            labels[static_cast<std::size_t>(f)].kind = SegmentKind::reveal;
+        for (std::int64_t f = from; f < from + think + reveal; ++f) {
+            labels[static_cast<std::size_t>(f)].moves = false;
+            labels[static_cast<std::size_t>(f)].question = static_cast<int>(i);
+        }
     }
 }
 
@@ -171,6 +221,7 @@ std::vector<FrameLabel> label_frames(const TimelineScript& script) {
     for (std::int64_t k = 0; k < card; ++k) at(k) = {SegmentKind::card, !script.card_waits, -1};
     for (std::int64_t k = epilogue_start; k < frames; ++k)
         at(k) = {SegmentKind::epilogue, false, -1};
+    place_questions(script, epilogue_start, labels);
     place_replays(script, epilogue_start, labels);
     return labels;
 }
@@ -189,7 +240,8 @@ Timeline build_timeline(const TimelineScript& script) {
             label.moves ? last_shown + 1 : std::max<std::int64_t>(last_shown, 0);
         const bool same =
             i > 0 && labels[i - 1].kind == label.kind && labels[i - 1].moves == label.moves &&
-            labels[i - 1].caption == label.caption && labels[i - 1].replay == label.replay;
+            labels[i - 1].caption == label.caption && labels[i - 1].replay == label.replay &&
+            labels[i - 1].question == label.question;
         if (!same) {
             Segment segment;
             segment.kind = label.kind;
@@ -197,6 +249,7 @@ Timeline build_timeline(const TimelineScript& script) {
             segment.sim_frame = shown;
             segment.moves = label.moves;
             segment.caption = caption_of(script, label);
+            segment.question = label.question;
             timeline.segments.push_back(std::move(segment));
         }
         timeline.segments.back().end_frame = k + 1;
@@ -208,6 +261,14 @@ Timeline build_timeline(const TimelineScript& script) {
         segment.end = static_cast<double>(segment.end_frame) / fps;
     }
     return timeline;
+}
+
+std::vector<int> questions_asked(const Timeline& timeline) {
+    std::vector<int> asked;
+    for (const Segment& segment : timeline.segments) {
+        if (segment.kind == SegmentKind::question) asked.push_back(segment.question);
+    }
+    return asked;
 }
 
 Timeline running_timeline(int fps, std::int64_t frames, std::string caption) {

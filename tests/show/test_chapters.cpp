@@ -87,6 +87,25 @@ TEST_CASE("chapters: a replay is one chapter of its own and missing words get th
     CHECK(chapters[4].end == doctest::Approx(6.0));
 }
 
+TEST_CASE(
+    "chapters: a question and its answer are two chapters; the player stops on the question") {
+    TimelineScript script = lesson_script();
+    script.cues.clear();
+    script.questions = {{3.0, 2.0, 1.0, "Which pair collides next?", "B: discs 3 and 7"}};
+    const Chapters chapters = timeline_chapters(build_timeline(script), 0.5);
+    std::vector<std::string> titles;
+    for (const Chapter& chapter : chapters) titles.push_back(chapter.title);
+    const std::vector<std::string> expected{
+        "Gas in a box",     "Always", "Which pair collides next?",
+        "B: discs 3 and 7", "Always", "In the end"};
+    REQUIRE(titles == expected);
+    // Stopped at the question's last frame: the question still on screen, its answer not yet.
+    CHECK(chapters[2].start == doctest::Approx(3.0));
+    CHECK(chapters[2].still == doctest::Approx(4.9));
+    CHECK(chapters[3].start == doctest::Approx(5.0));
+    CHECK(chapters[3].end == doctest::Approx(6.0));
+}
+
 TEST_CASE("chapters from step cues: back to back from 0, one line each, repeats merged") {
     const Cues cues = {{0.5, 1.0, "insert P"},
                        {1.0, 2.0, "binary heap: swim\nd-ary heap: swim"},

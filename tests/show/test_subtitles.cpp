@@ -90,6 +90,25 @@ TEST_CASE("a hold, a replay and the epilogue: the track says what the screen say
     for (std::size_t i = 1; i < cues.size(); ++i) CHECK(cues[i].start >= cues[i - 1].end);
 }
 
+TEST_CASE("a question and its answer: the track says both, the question first") {
+    LessonPlan lesson = lesson_with_captions();
+    lesson.captions.clear();
+    lesson.questions = {{3.0, 2.0, 1.5, "Which pair collides next?", "B: discs 3 and 7"}};
+    const Cues cues = cues_of(lesson, 10.0);
+    REQUIRE(cues.size() == 5);
+    CHECK(cues[1].text == "Every collision counts");
+    CHECK(cues[2].text == "Which pair collides next?");
+    CHECK(cues[2].start == doctest::Approx(3.0));
+    CHECK(cues[2].end == doctest::Approx(5.0));
+    CHECK(cues[3].text == "B: discs 3 and 7");
+    CHECK(cues[3].end == doctest::Approx(6.5));
+    // Then the run's caption again, to the end.
+    CHECK(cues[4].text == "Every collision counts");
+    CHECK(cues[4].end == 10.0);
+    lesson.questions.clear();
+    CHECK(cues_of(lesson, 10.0).size() == 2);
+}
+
 TEST_CASE("cues never overlap and never end before they start") {
     const Cues cues =
         cues_from_steps({{0.0, "a"}, {0.0, "b"}, {1.0, ""}, {2.0, "c"}, {5.0, "d"}}, 3.0);

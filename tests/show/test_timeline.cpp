@@ -29,7 +29,8 @@ void check_invariants(const Timeline& timeline, std::int64_t frames) {
         if (i > 0) CHECK(s.first_frame == timeline.segments[i - 1].end_frame);  // no gap
         // Only a run moves (a card beneath which the simulation runs is the old behaviour).
         if (s.kind == SegmentKind::hold || s.kind == SegmentKind::replay ||
-            s.kind == SegmentKind::epilogue)
+            s.kind == SegmentKind::epilogue || s.kind == SegmentKind::question ||
+            s.kind == SegmentKind::reveal)
             CHECK_FALSE(s.moves);
     }
     // The simulation frames shown: 0, then each frame the previous or the next one.
@@ -149,6 +150,77 @@ TEST_CASE("frozen stretches never take the whole video, nor overlap") {
     check_invariants(timeline, 100);
     CHECK(timeline.segment_at(79).kind == SegmentKind::hold);
     CHECK(timeline.segment_at(80).kind == SegmentKind::epilogue);
+}
+
+TEST_CASE("a question freezes the picture while the class thinks, then its reveal, then the run") {
+    TimelineScript script = lesson_script();
+    script.frames = 150;  // 15 s, the epilogue from 13 s
+    script.cues = {{6.0, "Hold here", 0.5}};
+    // One during the card (it waits for the card's end), one at the hold (it waits for its
+    // end), one too late for the epilogue (left out).
+    script.questions = {{1.0, 2.0, 1.0, "Which first?", "A first"},
+                        {6.0, 2.5, 1.5, "How many?", "Three"},
+                        {12.0, 2.0, 1.0, "Too late?", "Yes"}};
+    const Timeline timeline = build_timeline(script);
+    check_invariants(timeline, 150);
+    CHECK(questions_asked(timeline) == std::vector<int>{0, 1});
+    std::vector<const Segment*> asked;
+    for (const Segment& s : timeline.segments) {
+        if (s.kind == SegmentKind::question) asked.push_back(&s);
+    }
+    REQUIRE(asked.size() == 2);
+    for (const Segment* q : asked) {
+        CHECK_FALSE(q->moves);
+        const Segment& reveal = timeline.segment_at(q->end_frame);
+        CHECK(reveal.kind == SegmentKind::reveal);
+        CHECK(reveal.question == q->question);
+        CHECK(reveal.sim_frame == q->sim_frame);  // the same picture, now with its answer
+        const Segment& after = timeline.segment_at(reveal.end_frame);
+        CHECK(after.sim_frame == q->sim_frame + 1);  // the run goes on from there
+    }
+    // The first: 2 s after the card, then 1 s of its answer.
+    CHECK(asked[0]->first_frame == 20);
+    CHECK(asked[0]->end_frame == 40);
+    CHECK(asked[0]->caption == "Which first?");
+    CHECK(timeline.segment_at(40).caption == "A first");
+    CHECK(timeline.segment_at(40).end_frame == 50);
+    CHECK(timeline.segment_at(50).kind == SegmentKind::run);
+    // The second after the hold (6..6.5 s): 2.5 s, then 1.5 s.
+    CHECK(timeline.segment_at(60).kind == SegmentKind::hold);
+    CHECK(asked[1]->first_frame == 65);
+    CHECK(asked[1]->frames() == 25);
+    CHECK(asked[1]->caption == "How many?");
+    CHECK(timeline.segment_at(asked[1]->end_frame).frames() == 15);
+    CHECK(timeline.segment_at(asked[1]->end_frame).caption == "Three");
+}
+
+TEST_CASE("a question never overlaps a hold or a replay, and leaves the epilogue alone") {
+    TimelineScript script = lesson_script();
+    script.cues = {{3.0, "Hold here", 2.0}};
+    script.questions = {{4.0, 2.0, 1.0, "Q", "A"}};
+    Timeline timeline = build_timeline(script);
+    check_invariants(timeline, 100);
+    // The hold takes 3..5 s: the question waits for its end.
+    REQUIRE(questions_asked(timeline) == std::vector<int>{0});
+    const Segment* q = nullptr;
+    for (const Segment& s : timeline.segments)
+        if (s.kind == SegmentKind::question) q = &s;
+    REQUIRE(q != nullptr);
+    CHECK(q->first_frame == 50);
+    // A replay whose frame falls on the question is left out; the question stays.
+    script.cues.clear();
+    script.questions = {{3.0, 2.0, 1.0, "Q", "A"}};
+    script.replays = {{9, 1.0, "Replay"}};  // simulation frame 9: shown at video frame 28
+    timeline = build_timeline(script);
+    check_invariants(timeline, 100);
+    CHECK(questions_asked(timeline) == std::vector<int>{0});
+    for (const Segment& s : timeline.segments) CHECK(s.kind != SegmentKind::replay);
+    // No room before the epilogue: no question at all, and the timeline is as without it.
+    script = lesson_script();
+    script.questions = {{7.5, 2.0, 1.0, "Q", "A"}};
+    timeline = build_timeline(script);
+    CHECK(questions_asked(timeline).empty());
+    CHECK(timeline.segments.size() == build_timeline(lesson_script()).segments.size());
 }
 
 TEST_CASE("captions on frames: a cue shows from the first frame at or after its time") {

@@ -16,7 +16,8 @@ inline constexpr double min_heap_chapter_seconds = 4.0;
 
 /// A collision video's chapters, one per stretch of the timeline a class would name: the title
 /// card (its title), each caption (the run and the hold that show it are one chapter), the
-/// replay and the epilogue. Back to back from 0 to the video's end, at the segments' frame
+/// replay, each question (the slide player stops on it, its countdown over) and its answer, and
+/// the epilogue. Back to back from 0 to the video's end, at the segments' frame
 /// times; titles are one line (a caption's line breaks become spaces). Each chapter's still is
 /// its last frame; the card's is its last frame before the fade-out of `card_fade` seconds at
 /// its end (LessonPlan::intro_fade_seconds). Empty for an empty timeline.

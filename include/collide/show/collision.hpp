@@ -167,6 +167,11 @@ struct LessonPlan {
     std::string step_note;    ///< time-driven: the step note (step_note; empty: dt <= a frame)
     /// Failures replayed (show/replay.hpp: replay_cues), simulation frames increasing.
     std::vector<TimelineReplay> replays;
+    /// Questions asked (show/questions.hpp), `at` increasing, with their answers once the
+    /// engines have given them (until then, placeholders of the same timing).
+    std::vector<TimelineQuestion> questions;
+    /// Each question's cue as the scene wrote it (kind, words, where): one per `questions`.
+    std::vector<QuestionCue> question_cues;
 
     /// The caption at `video_seconds`: the last cue at or before it, else `caption`.
     [[nodiscard]] const std::string& caption_at(double video_seconds) const noexcept;

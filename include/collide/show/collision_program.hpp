@@ -28,6 +28,7 @@
 #include "collide/scene3.hpp"
 #include "collide/show/collision.hpp"
 #include "collide/show/failure_marks.hpp"
+#include "collide/show/questions.hpp"
 #include "collide/show/replay.hpp"
 #include "collide/show/scene_view.hpp"
 #include "collide/show/sphere_camera.hpp"
@@ -70,6 +71,8 @@ struct CollisionSettings {
     Timeline timeline;   ///< the video frames: which simulation frame each shows, and why
     LessonPlan lesson;   ///< the lesson's cards, captions, histogram, step note
     std::vector<ReplayFailure> replays;  ///< the failures replayed, in the video's order
+    /// The questions' answers, indexed like lesson.questions (show/questions.hpp).
+    std::vector<QuestionAnswer> questions;
     /// The colour scale (fixed for the whole video) and its words.
     ColorMode color_mode = ColorMode::scene;
     double speed_min = 0.0;
@@ -162,6 +165,10 @@ class CollisionProgram {
   private:
     /// Time-driven panel `i`'s state is at `state_time`: a new step restarts its count.
     void advance_step_phase(std::size_t i, double state_time);
+    /// What the event-driven panel draws during a question or reveal `segment` (its question
+    /// answered in settings), `seconds_left` of it to go.
+    [[nodiscard]] const ReplayView& question_picture(const Segment& segment,
+                                                     const Snapshot& snapshot, double seconds_left);
 
     const CollisionSettings& settings_;
     FrameContent content_;
@@ -169,6 +176,9 @@ class CollisionProgram {
     std::vector<FailureMarks> marks_;     ///< per panel (lesson level)
     std::vector<double> last_step_time_;  ///< per panel: the state time of its latest step
     std::vector<int> step_phase_;         ///< per panel: frames shown of that step
+    /// The question's picture of the segment shown last (its letters' places are searched once).
+    const Segment* question_segment_ = nullptr;
+    ReplayView question_view_;
 };
 
 // ------------------------------------------------------------------------------------------------
@@ -184,6 +194,8 @@ struct LessonRequest {
     bool step_list = false;          ///< a --dt list
     double dt = 0.0;                 ///< the time-driven step (one step)
     double frame_interval = 1.0;     ///< simulation time between frames
+    bool questions = true;           ///< no --questions none: the scene's questions are asked
+    bool event_panel = true;         ///< the event-driven panel is shown (it answers them)
 };
 
 /// The lesson's cards, captions, histogram and step note for `scene`. Captions beyond the video

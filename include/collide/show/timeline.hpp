@@ -28,9 +28,11 @@ enum class SegmentKind {
     hold,      ///< the picture frozen while a caption reads
     replay,    ///< the first failure shown again, slowly
     epilogue,  ///< the final figures side by side
+    question,  ///< the picture frozen on a question while the class thinks (its countdown runs)
+    reveal,    ///< the picture still frozen, the question's answer shown; the run goes on after
 };
 
-/// "card", "run", "hold", "replay", "epilogue".
+/// "card", "run", "hold", "replay", "epilogue", "question", "reveal".
 [[nodiscard]] std::string_view segment_kind_name(SegmentKind kind) noexcept;
 
 /// One segment: video frames [first_frame, end_frame) (never empty), in seconds [start, end).
@@ -45,6 +47,8 @@ struct Segment {
     /// True when the simulation advances one frame per video frame; false: frozen at sim_frame.
     bool moves = true;
     std::string caption;  ///< the words shown throughout ("" none; a card: its title)
+    /// A question or its reveal: the index of the question in the script's (-1: neither).
+    int question = -1;
 
     [[nodiscard]] std::int64_t frames() const noexcept { return end_frame - first_frame; }
     /// The simulation frame video frame k shows (first_frame <= k < end_frame).
@@ -98,6 +102,17 @@ struct TimelineReplay {
     std::string caption;
 };
 
+/// A question on the timeline (show/questions.hpp asks them): from the first running frame at or
+/// after `at` seconds of video, `think` seconds frozen on the question, then `reveal` seconds
+/// frozen on its answer; the simulation then runs on from the frame the picture froze on.
+struct TimelineQuestion {
+    double at = 0.0;
+    double think = 0.0;
+    double reveal = 0.0;
+    std::string question;  ///< the question segment's caption
+    std::string answer;    ///< the reveal segment's caption
+};
+
 /// What the video is to show, in seconds of video.
 struct TimelineScript {
     int fps = 30;
@@ -109,10 +124,14 @@ struct TimelineScript {
     std::vector<TimelineCue> cues;  ///< `at` increasing
     /// Replays, `after_sim_frame` increasing: each takes the frames after its simulation frame
     /// is first shown (over a hold there); one that would not end before the epilogue, or whose
-    /// frame is never shown running, is left out.
+    /// frame is never shown running, or that would fall on a question, is left out.
     std::vector<TimelineReplay> replays;
     double epilogue_seconds = 0.0;  ///< the last seconds, frozen on the final state (0: none)
     std::string epilogue_caption;   ///< the epilogue segment's caption
+    /// Questions, `at` increasing. Each takes the first stretch of think + reveal frames from
+    /// `at` on that only runs (no card, hold or earlier question in it), before replays are
+    /// placed; one that would not end before the epilogue is left out (see questions_asked).
+    std::vector<TimelineQuestion> questions;
 };
 
 /// The segments of `script`. Seconds become whole frames (rounded); a hold that would start
@@ -120,6 +139,10 @@ struct TimelineScript {
 /// short there (plans refuse such scripts before: see the scene checks). Frozen stretches never
 /// take the whole video: at least one frame runs. Never throws for a script with frames >= 1.
 [[nodiscard]] Timeline build_timeline(const TimelineScript& script);
+
+/// The questions `timeline` asks, as indices into its script's questions (each once, in order):
+/// those build_timeline found room for.
+[[nodiscard]] std::vector<int> questions_asked(const Timeline& timeline);
 
 /// A timeline that only runs: video frame k shows simulation frame k (a still's frames).
 [[nodiscard]] Timeline running_timeline(int fps, std::int64_t frames, std::string caption = {});

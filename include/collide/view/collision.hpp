@@ -145,8 +145,9 @@ struct BoxLine {
     float opacity = 1.0F;
 };
 
-/// Where a label's plate sits around its point.
-enum class LabelSide : std::uint8_t { above, below, left, right };
+/// Where a label's plate sits around its point (`over`: centred on it, a place chosen clear of the
+/// discs by the presentation layer).
+enum class LabelSide : std::uint8_t { above, below, left, right, over };
 
 /// Words at a point of the box (a replay's labels), drawn on a plate on one side of `at`, clear
 /// of a disc of radius `clear` there.

@@ -1,0 +1,122 @@
+#pragma once
+/// \file
+/// Pause and ponder (issue #45): a collision video stops, asks, holds the question while the class
+/// thinks, then reveals the answer, which comes from the event-driven engine itself, never from
+/// the words of the scene. Here: what each kind of question asks, how the engine answers it (a
+/// copy of the engine at the frozen frame is run ahead; the video's own engine is never touched),
+/// the words of the question and of its answer, and what the event-driven panel draws meanwhile
+/// (the candidates' lines and letters, the countdown, the answer).
+///
+///   timeline   ... run )[ question: frozen, "Think: 3", A B C marked )[ reveal: "Answer: B" )[ run
+///   engine     the same frame throughout: a copy of it answers, the run goes on from it
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "collide/render_options.hpp"
+#include "collide/scene.hpp"
+#include "collide/show/collision.hpp"
+#include "collide/show/timeline.hpp"
+#include "collide/sim/engine.hpp"
+#include "collide/snapshot.hpp"
+#include "collide/view/collision.hpp"
+
+namespace collide::show {
+
+/// A class needs at least this long to think (seconds of video frozen on a question).
+inline constexpr double min_think_seconds = 2.0;
+/// The answer on screen before the run goes on, seconds of video.
+inline constexpr double reveal_seconds = 2.5;
+/// The most candidates a next-collision question marks (A..D), and the fewest.
+inline constexpr std::size_t max_candidates = 4;
+inline constexpr std::size_t min_candidates = 2;
+/// How far a copy of the engine is run to find the collisions after the frozen frame, in frames
+/// (at 30 frames a second, ten seconds of video): a scene quieter than that has nothing to ask.
+inline constexpr std::int64_t look_ahead_frames = 300;
+
+/// True when `kind` is answered by the event-driven engine (every kind so far): a video without
+/// the event-driven panel (`--mode time`) does not ask it.
+[[nodiscard]] bool needs_event_panel(QuestionKind kind) noexcept;
+
+/// What the engine answered to one question.
+struct QuestionAnswer {
+    QuestionKind kind = QuestionKind::next_collision;
+    std::int64_t sim_frame = 0;  ///< the simulation frame the picture froze on
+    double time = 0.0;           ///< its simulation time
+    /// next_collision: the candidates in letter order (A, B, ...); one is the engine's next.
+    std::vector<CollisionRecord> candidates;
+    std::size_t answer = 0;  ///< next_collision: the index of the engine's next collision
+    /// how_many: the collisions the engine resolves over the next second of video (the frames
+    /// after the frozen one), between discs and with walls.
+    std::int64_t pairs = 0;
+    std::int64_t walls = 0;
+    [[nodiscard]] std::int64_t count() const noexcept { return pairs + walls; }
+    /// False when the engine had nothing to ask about here (no collision within the look ahead).
+    bool askable = false;
+};
+
+/// The simulation time of the frames after the frozen one: time(1) is the next frame's.
+using FramesAfter = std::function<double(std::int64_t)>;
+
+/// Which pair collides next, asked of `engine` (event-driven, at the frozen frame's time, as the
+/// video has advanced it): a copy of it is run to `after(1)`, `after(2)`, ... (the calls the video
+/// makes, so the same bits) until it has resolved enough collisions or `look_ahead_frames` passed.
+/// The engine's first collision is a candidate; the others are collisions it resolves later (of
+/// other discs where it can) and, where those are too few, the nearest pairs of discs that do not
+/// meet before the last collision seen. Their order (which letter the answer gets) is shuffled by
+/// `seed`. `snapshot` is the engine's state now. Not askable when the engine resolves nothing
+/// within the look ahead or cannot be copied.
+[[nodiscard]] QuestionAnswer answer_next_collision(const Engine& engine, const Snapshot& snapshot,
+                                                   const FramesAfter& after, std::uint64_t seed);
+
+/// How many collisions in the next second of video: a copy of `engine` run to after(1) ..
+/// after(fps), the collisions it resolves counted (a second without any is askable too: zero).
+[[nodiscard]] QuestionAnswer answer_how_many(const Engine& engine, const FramesAfter& after,
+                                             int fps);
+
+/// Where a question was written, for notices: "gas.toml:42" ("the scene" when not read from a
+/// file).
+[[nodiscard]] std::string question_place(const QuestionCue& cue);
+
+/// "A", "B", ...: candidate i's letter.
+[[nodiscard]] std::string candidate_letter(std::size_t i);
+
+/// The question's words: `authored` when the scene gives them, else the kind's ("Pause and think:
+/// which pair collides next, A, B or C?"); at most max_caption_chars.
+[[nodiscard]] std::string question_words(const QuestionAnswer& answer, const std::string& authored);
+/// The answer's words: "Answer: B, discs 12 and 40 (in 0.42)", "Answer: 7 collisions (5 between
+/// discs, 2 with walls)". At most max_caption_chars.
+[[nodiscard]] std::string answer_words(const QuestionAnswer& answer, const FrameClock& clock);
+
+/// The countdown while a question holds: "Think: 3" with `seconds_left` in (2, 3].
+[[nodiscard]] std::string countdown_words(double seconds_left);
+
+/// What the event-driven panel draws while the question holds (`reveal` false: the candidates'
+/// lines, their letters on plates clear of every disc, the others faint, and "Think: 3" counting
+/// down over `seconds_left`) and while its answer shows (`reveal`: the answer's line in the
+/// failure colour with its letter, the others faded, "Answer: B"). `snapshot`: the frozen state.
+[[nodiscard]] ReplayView question_view(const QuestionAnswer& answer, const Snapshot& snapshot,
+                                       const FrameClock& clock, double seconds_left, bool reveal);
+
+/// Where a letter's plate goes: the point nearest `near` inside `box` that keeps `plate` box units
+/// from every disc's edge and from `taken` (letters placed before, `plate` apart again), searched
+/// on rings around `near`; the freest point found where none keeps that far.
+[[nodiscard]] Vec2 clear_spot(Vec2 near, double plate, const Snapshot& snapshot,
+                              const std::vector<Vec2>& taken);
+
+/// Every question `timeline` asks (questions_asked), answered by an event-driven engine of
+/// `scene` (`options`) advanced frame by frame on `clock` to the frame each question freezes on.
+/// Indexed like the script's questions (`kinds`); a question the timeline does not ask stays not
+/// askable. Throws Error(input) for options make_engine rejects, Error(runtime) once `stop` is set.
+[[nodiscard]] std::vector<QuestionAnswer> answer_questions(const Scene& scene,
+                                                           const EngineOptions& options,
+                                                           const FrameClock& clock,
+                                                           const Timeline& timeline,
+                                                           const std::vector<QuestionKind>& kinds,
+                                                           const std::atomic<bool>* stop = nullptr);
+
+}  // namespace collide::show

@@ -1,0 +1,365 @@
+// Pause and ponder: the questions a collision video asks, answered by a copy of the event-driven
+// engine at the frozen frame, their words, and what the event-driven panel draws while they hold.
+#include "collide/show/questions.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <numbers>
+
+#include "collide/error.hpp"
+
+namespace collide::show {
+
+namespace {
+
+/// The collisions a copy of the engine resolves after its time, in order.
+struct Ahead {
+    std::vector<CollisionRecord> hits;
+    bool copied = false;
+};
+
+/// Runs a copy of `engine` to after(1), after(2), ... until it has resolved `enough` collisions
+/// (0: every frame up to `frames`) or `frames` frames passed.
+Ahead run_copy(const Engine& engine, const FramesAfter& after, std::int64_t frames,
+               std::size_t enough) {
+    Ahead out;
+    const std::unique_ptr<Engine> copy = engine.clone();
+    if (!copy) return out;
+    out.copied = true;
+    copy->set_collision_listener([&out](const CollisionRecord& hit) { out.hits.push_back(hit); });
+    for (std::int64_t i = 1; i <= frames; ++i) {
+        copy->advance_to(std::max(after(i), copy->time()));
+        if (enough > 0 && out.hits.size() >= enough) break;
+    }
+    copy->set_collision_listener(nullptr);
+    return out;
+}
+
+/// The same collision, whenever: the same discs (a pair either way round) or disc and wall.
+bool same_contact(const CollisionRecord& x, const CollisionRecord& y) {
+    if (x.kind != y.kind) return false;
+    if (x.kind != CollisionKind::pair) return x.a == y.a;
+    return std::min(x.a, x.b) == std::min(y.a, y.b) && std::max(x.a, x.b) == std::max(y.a, y.b);
+}
+
+bool shares_disc(const CollisionRecord& x, const CollisionRecord& y) {
+    const auto has = [](const CollisionRecord& r, std::uint32_t i) {
+        return r.a == i || (r.kind == CollisionKind::pair && r.b == i);
+    };
+    return has(y, x.a) || (x.kind == CollisionKind::pair && has(y, x.b));
+}
+
+/// splitmix64: a shuffle the same on every platform (std::shuffle's is the library's own).
+std::uint64_t mix(std::uint64_t& state) {
+    std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
+    z = (z ^ (z >> 30U)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27U)) * 0x94D049BB133111EBULL;
+    return z ^ (z >> 31U);
+}
+
+/// The gap between two discs' edges now (periodic box: to the nearest image).
+double gap(const Snapshot& snapshot, std::uint32_t a, std::uint32_t b) {
+    const DiscState& x = snapshot.discs[a];
+    const DiscState& y = snapshot.discs[b];
+    return norm(snapshot.box.displacement(x.position, y.position)) - x.radius - y.radius;
+}
+
+/// Near pairs that do not collide among `seen` (the collisions of the look ahead, which end
+/// after the answer): the pairs of discs closest edge to edge, nearest first, sharing no disc
+/// with `avoid`. At most `wanted`; O(n^2) over at most the first 2,000 discs.
+std::vector<CollisionRecord> near_misses(const Snapshot& snapshot,
+                                         const std::vector<CollisionRecord>& seen,
+                                         const std::vector<CollisionRecord>& avoid,
+                                         std::size_t wanted) {
+    const auto n = static_cast<std::uint32_t>(std::min<std::size_t>(snapshot.discs.size(), 2000));
+    std::vector<std::pair<double, CollisionRecord>> pairs;
+    for (std::uint32_t a = 0; a < n; ++a) {
+        for (std::uint32_t b = a + 1; b < n; ++b) {
+            CollisionRecord r;
+            r.t = std::numeric_limits<double>::infinity();
+            r.a = a;
+            r.b = b;
+            const auto same = [&r](const CollisionRecord& s) { return same_contact(r, s); };
+            const auto near = [&r](const CollisionRecord& s) { return shares_disc(r, s); };
+            if (std::any_of(seen.begin(), seen.end(), same) ||
+                std::any_of(avoid.begin(), avoid.end(), near))
+                continue;
+            pairs.emplace_back(gap(snapshot, a, b), r);
+        }
+    }
+    std::sort(pairs.begin(), pairs.end(),
+              [](const auto& x, const auto& y) { return x.first < y.first; });
+    std::vector<CollisionRecord> out;
+    for (const auto& [g, r] : pairs) {
+        if (out.size() == wanted) break;
+        const auto near = [&r](const CollisionRecord& s) { return shares_disc(r, s); };
+        if (std::any_of(out.begin(), out.end(), near)) continue;
+        out.push_back(r);
+    }
+    return out;
+}
+
+std::string disc_words(const CollisionRecord& r) {
+    if (r.kind == CollisionKind::pair)
+        return fmt::format("discs {} and {}", std::min(r.a, r.b), std::max(r.a, r.b));
+    return fmt::format("disc {} and the wall", r.a);
+}
+
+}  // namespace
+
+bool needs_event_panel(QuestionKind kind) noexcept {
+    switch (kind) {
+        case QuestionKind::next_collision:
+        case QuestionKind::how_many:
+            return true;
+    }
+    return true;
+}
+
+QuestionAnswer answer_next_collision(const Engine& engine, const Snapshot& snapshot,
+                                     const FramesAfter& after, std::uint64_t seed) {
+    QuestionAnswer out;
+    out.kind = QuestionKind::next_collision;
+    out.time = snapshot.time;
+    if (snapshot.dimension != 2) return out;
+    // Enough collisions that a few of them involve other discs than the first's.
+    const Ahead ahead = run_copy(engine, after, look_ahead_frames, 24);
+    if (ahead.hits.empty()) return out;
+    const CollisionRecord& next = ahead.hits.front();
+    std::vector<CollisionRecord> chosen{next};
+    // Later collisions: of other discs first (their lines apart), then any other contact; never
+    // one at the very time of the answer (two answers at once would both be right).
+    for (const bool apart : {true, false}) {
+        for (const CollisionRecord& hit : ahead.hits) {
+            if (chosen.size() == max_candidates - 1) break;
+            const auto same = [&hit](const CollisionRecord& c) { return same_contact(hit, c); };
+            const auto near = [&hit](const CollisionRecord& c) { return shares_disc(hit, c); };
+            if (!(hit.t > next.t) || std::any_of(chosen.begin(), chosen.end(), same)) continue;
+            if (apart && std::any_of(chosen.begin(), chosen.end(), near)) continue;
+            chosen.push_back(hit);
+        }
+    }
+    if (chosen.size() < max_candidates - 1) {
+        const std::vector<CollisionRecord> misses =
+            near_misses(snapshot, ahead.hits, chosen, max_candidates - 1 - chosen.size());
+        chosen.insert(chosen.end(), misses.begin(), misses.end());
+    }
+    if (chosen.size() < min_candidates) return out;
+    // Fisher-Yates by the seed: which letter the answer gets.
+    std::vector<std::size_t> order(chosen.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::uint64_t state = seed;
+    for (std::size_t i = order.size() - 1; i > 0; --i)
+        std::swap(order[i], order[static_cast<std::size_t>(mix(state) % (i + 1))]);
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        out.candidates.push_back(chosen[order[i]]);
+        if (order[i] == 0) out.answer = i;
+    }
+    out.askable = true;
+    return out;
+}
+
+QuestionAnswer answer_how_many(const Engine& engine, const FramesAfter& after, int fps) {
+    QuestionAnswer out;
+    out.kind = QuestionKind::how_many;
+    out.time = engine.time();
+    const Ahead ahead = run_copy(engine, after, std::max(1, fps), 0);
+    if (!ahead.copied) return out;
+    for (const CollisionRecord& hit : ahead.hits)
+        ++(hit.kind == CollisionKind::pair ? out.pairs : out.walls);
+    out.askable = true;
+    return out;
+}
+
+std::string question_place(const QuestionCue& cue) {
+    if (cue.file.empty()) return "the scene";
+    return cue.file + ":" + std::to_string(cue.line);
+}
+
+std::string candidate_letter(std::size_t i) {
+    return std::string(1, static_cast<char>('A' + static_cast<int>(i % 26)));
+}
+
+std::string question_words(const QuestionAnswer& answer, const std::string& authored) {
+    if (!authored.empty()) return authored;
+    switch (answer.kind) {
+        case QuestionKind::next_collision: {
+            std::string letters;
+            for (std::size_t i = 0; i < answer.candidates.size(); ++i) {
+                if (i > 0) letters += i + 1 == answer.candidates.size() ? " or " : ", ";
+                letters += candidate_letter(i);
+            }
+            return "Pause and think: which collides first, " + letters + "?";
+        }
+        case QuestionKind::how_many:
+            return "Pause and think: how many collisions in the next second?";
+    }
+    return {};
+}
+
+std::string answer_words(const QuestionAnswer& answer, const FrameClock& clock) {
+    switch (answer.kind) {
+        case QuestionKind::next_collision: {
+            if (answer.answer >= answer.candidates.size()) return {};
+            const CollisionRecord& hit = answer.candidates[answer.answer];
+            return fmt::format("Answer: {}, {} ({})", candidate_letter(answer.answer),
+                               disc_words(hit),
+                               next_collision_words(hit.t - answer.time, clock, true));
+        }
+        case QuestionKind::how_many: {
+            const std::int64_t n = answer.count();
+            if (n == 0) return "Answer: none in the next second";
+            std::string out = fmt::format("Answer: {} collision{}", n, n == 1 ? "" : "s");
+            if (answer.pairs > 0 && answer.walls > 0)
+                out +=
+                    fmt::format(" ({} between discs, {} with walls)", answer.pairs, answer.walls);
+            return out;
+        }
+    }
+    return {};
+}
+
+Vec2 clear_spot(Vec2 near, double plate, const Snapshot& snapshot, const std::vector<Vec2>& taken) {
+    const Box& box = snapshot.box;
+    const auto clearance = [&](Vec2 p) {
+        double free = std::numeric_limits<double>::infinity();
+        for (const DiscState& d : snapshot.discs)
+            free = std::min(free, norm(p - d.position) - d.radius);
+        for (const Vec2& t : taken) free = std::min(free, norm(p - t) - plate);
+        return free;
+    };
+    const auto inside = [&](Vec2 p) {
+        return p.x >= plate && p.x <= box.width - plate && p.y >= plate &&
+               p.y <= box.height - plate;
+    };
+    Vec2 best = near;
+    double best_free = -std::numeric_limits<double>::infinity();
+    constexpr int rings = 12;
+    constexpr int around = 16;
+    for (int ring = 0; ring <= rings; ++ring) {
+        const double r = 0.5 * plate * ring;
+        for (int k = 0; k < (ring == 0 ? 1 : around); ++k) {
+            const double angle = 2.0 * std::numbers::pi * k / around;
+            const Vec2 p{near.x + r * std::cos(angle), near.y + r * std::sin(angle)};
+            if (!inside(p)) continue;
+            const double free = clearance(p);
+            if (free >= plate) return p;
+            if (free > best_free) {
+                best_free = free;
+                best = p;
+            }
+        }
+    }
+    return best;
+}
+
+std::string countdown_words(double seconds_left) {
+    return fmt::format("Think: {}", std::max(1, static_cast<int>(std::ceil(seconds_left - 1e-9))));
+}
+
+ReplayView question_view(const QuestionAnswer& answer, const Snapshot& snapshot,
+                         const FrameClock& clock, double seconds_left, bool reveal) {
+    ReplayView view;
+    if (!answer.askable) return view;
+    if (reveal) {
+        view.heading = answer.kind == QuestionKind::next_collision
+                           ? "Answer: " + candidate_letter(answer.answer)
+                           : fmt::format("Answer: {}", answer.count());
+    } else {
+        view.heading = countdown_words(seconds_left);
+    }
+    if (answer.kind != QuestionKind::next_collision) return view;
+    // The letter's plate, in box units: about the lesson's text size where a box fills most of
+    // the frame's height (a letter 2.8 % of it on a plate of about twice that).
+    const double plate = 0.05 * std::min(snapshot.box.width, snapshot.box.height);
+    std::vector<Vec2> taken;
+    for (std::size_t i = 0; i < answer.candidates.size(); ++i) {
+        const NextCollisionView seen = next_collision_view(answer.candidates[i], snapshot, clock);
+        if (seen.lines.empty()) continue;
+        const bool right = i == answer.answer;
+        const float opacity = reveal && !right ? 0.3F : 1.0F;
+        const bool pair = answer.candidates[i].kind == CollisionKind::pair;
+        for (const BoxLine& line : seen.lines) {
+            // A pair's line as two halves meeting in the middle (the painter heads each line
+            // with an arrow: two arrows that meet, not one disc chasing the other).
+            const Vec2 middle = (line.from + line.to) * 0.5;
+            std::vector<BoxLine> pieces{pair ? BoxLine{line.from, middle} : line};
+            if (pair) pieces.push_back(BoxLine{line.to, middle});
+            for (BoxLine piece : pieces) {
+                piece.failure = reveal && right;
+                piece.opacity = opacity;
+                view.lines.push_back(piece);
+            }
+        }
+        const Vec2 at = clear_spot(seen.label_at, plate, snapshot, taken);
+        taken.push_back(at);
+        BoxLabel label;
+        label.at = at;
+        label.text = candidate_letter(i);
+        label.side = LabelSide::over;
+        label.failure = reveal && right;
+        label.opacity = opacity;
+        view.labels.push_back(label);
+        if (norm(at - seen.label_at) > plate) {
+            // A letter moved away from its line: a faint leader back to it.
+            BoxLine leader{at, seen.label_at};
+            leader.opacity = 0.5F * opacity;
+            view.lines.push_back(leader);
+        }
+        const CollisionRecord& c = answer.candidates[i];
+        view.focus.push_back(c.a);
+        if (c.kind == CollisionKind::pair) view.focus.push_back(c.b);
+    }
+    return view;
+}
+
+std::vector<QuestionAnswer> answer_questions(const Scene& scene, const EngineOptions& options,
+                                             const FrameClock& clock, const Timeline& timeline,
+                                             const std::vector<QuestionKind>& kinds,
+                                             const std::atomic<bool>* stop) {
+    std::vector<QuestionAnswer> out(kinds.size());
+    for (std::size_t i = 0; i < kinds.size(); ++i) out[i].kind = kinds[i];
+    std::vector<std::pair<std::int64_t, int>> asked;  // (simulation frame, question)
+    for (const Segment& segment : timeline.segments) {
+        if (segment.kind == SegmentKind::question && segment.question >= 0 &&
+            static_cast<std::size_t>(segment.question) < kinds.size())
+            asked.emplace_back(segment.sim_frame, segment.question);
+    }
+    if (asked.empty()) return out;
+    EngineOptions copy = options;
+    copy.stop = stop;
+    const std::unique_ptr<Engine> engine = make_engine(scene, copy);
+    // The video's calls: frame by frame on the clock (the same times, so the same bits).
+    const std::int64_t count = clock.count;
+    const auto frame_time = [&clock, count](std::int64_t j) {
+        return j < count
+                   ? clock.time(j)
+                   : clock.time(count - 1) + static_cast<double>(j - count + 1) * clock.interval;
+    };
+    std::int64_t at = -1;
+    for (const auto& [frame, question] : asked) {
+        while (at < frame) {
+            ++at;
+            engine->advance_to(std::max(frame_time(at), engine->time()));
+        }
+        const FramesAfter after = [&frame_time, f = frame](std::int64_t i) {
+            return frame_time(f + i);
+        };
+        const auto q = static_cast<std::size_t>(question);
+        if (kinds[q] == QuestionKind::next_collision) {
+            const std::uint64_t seed = 0x51ED5EEDULL ^ (static_cast<std::uint64_t>(frame) << 8U) ^
+                                       static_cast<std::uint64_t>(question);
+            out[q] = answer_next_collision(*engine, engine->snapshot(), after, seed);
+        } else {
+            out[q] = answer_how_many(*engine, after, timeline.fps);
+        }
+        out[q].sim_frame = frame;
+    }
+    return out;
+}
+
+}  // namespace collide::show

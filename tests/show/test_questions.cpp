@@ -1,0 +1,219 @@
+// Pause and ponder (collide/show/questions.hpp): the answers come from the engines. For many
+// scenes and moments, the revealed answer is the collision a fresh engine, stepped on its own,
+// resolves first (and the count it resolves in the next second); the distractors are not.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "../sim/scene_fixtures.hpp"
+#include "collide/show/questions.hpp"
+#include "collide/show/timeline.hpp"
+
+using namespace collide;
+using namespace collide::show;
+
+namespace {
+
+FrameClock clock_of(std::int64_t frames, double interval) {
+    FrameClock clock;
+    clock.interval = interval;
+    clock.count = frames;
+    clock.last_time = static_cast<double>(frames - 1) * interval;
+    return clock;
+}
+
+/// A fresh engine stepped to frame k as a video steps it, then on in small steps: the first
+/// collision after frame k.
+std::optional<CollisionRecord> first_after(const Scene& scene, const EngineOptions& options,
+                                           const FrameClock& clock, std::int64_t k) {
+    const std::unique_ptr<Engine> engine = make_engine(scene, options);
+    for (std::int64_t j = 0; j <= k; ++j) engine->advance_to(clock.time(j));
+    std::optional<CollisionRecord> first;
+    engine->set_collision_listener([&](const CollisionRecord& r) {
+        if (!first) first = r;
+    });
+    const double now = engine->time();
+    for (int step = 1; step <= 4000 && !first; ++step) engine->advance_to(now + step * 1e-3);
+    return first;
+}
+
+bool same_contact(const CollisionRecord& x, const CollisionRecord& y) {
+    if (x.kind != y.kind) return false;
+    if (x.kind != CollisionKind::pair) return x.a == y.a;
+    return std::min(x.a, x.b) == std::min(y.a, y.b) && std::max(x.a, x.b) == std::max(y.a, y.b);
+}
+
+FramesAfter after_frame(const FrameClock& clock, std::int64_t k) {
+    return [clock, k](std::int64_t i) { return static_cast<double>(k + i) * clock.interval; };
+}
+
+}  // namespace
+
+TEST_CASE("next collision: the answer is the engine's next collision, the distractors are not") {
+    const FrameClock clock = clock_of(400, 1.0 / 30.0);
+    std::set<std::size_t> letters;
+    int asked = 0;
+    for (std::uint64_t seed = 1; seed <= 24; ++seed) {
+        EngineOptions options;
+        options.engine = seed % 3 == 0 ? EngineKind::classic : EngineKind::fast;
+        const Boundary boundary = seed % 2 == 0 ? Boundary::periodic : Boundary::walls;
+        const Scene scene = test::lattice_fluid(5, 0.25, boundary, seed);
+        const std::int64_t k = static_cast<std::int64_t>(seed * 7 % 40);
+        CAPTURE(seed);
+        const std::unique_ptr<Engine> engine = make_engine(scene, options);
+        for (std::int64_t j = 0; j <= k; ++j) engine->advance_to(clock.time(j));
+        const double before = engine->time();
+        const QuestionAnswer answer =
+            answer_next_collision(*engine, engine->snapshot(), after_frame(clock, k), seed);
+        CHECK(engine->time() == before);  // a copy answered: the video's engine is untouched
+        const std::optional<CollisionRecord> truth = first_after(scene, options, clock, k);
+        REQUIRE(truth.has_value());
+        REQUIRE(answer.askable);
+        ++asked;
+        REQUIRE(answer.candidates.size() >= min_candidates);
+        REQUIRE(answer.candidates.size() <= max_candidates);
+        REQUIRE(answer.answer < answer.candidates.size());
+        const CollisionRecord& right = answer.candidates[answer.answer];
+        CHECK(same_contact(right, *truth));
+        CHECK(right.t == doctest::Approx(truth->t).epsilon(1e-9));
+        for (std::size_t i = 0; i < answer.candidates.size(); ++i) {
+            if (i == answer.answer) continue;
+            CAPTURE(i);
+            CHECK_FALSE(same_contact(answer.candidates[i], *truth));
+            CHECK(answer.candidates[i].t > truth->t);
+            for (std::size_t j = i + 1; j < answer.candidates.size(); ++j)
+                CHECK_FALSE(same_contact(answer.candidates[i], answer.candidates[j]));
+        }
+        letters.insert(answer.answer);
+    }
+    CHECK(asked == 24);
+    CHECK(letters.size() >= 3);  // the answer is not always the same letter
+}
+
+TEST_CASE("how many: the count is what the engine resolves over the next second of video") {
+    const FrameClock clock = clock_of(400, 1.0 / 30.0);
+    for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+        CAPTURE(seed);
+        EngineOptions options;
+        const Scene scene = test::lattice_fluid(6, 0.3, Boundary::walls, seed);
+        const std::int64_t k = static_cast<std::int64_t>(seed * 5 % 30);
+        const std::unique_ptr<Engine> engine = make_engine(scene, options);
+        for (std::int64_t j = 0; j <= k; ++j) engine->advance_to(clock.time(j));
+        const QuestionAnswer answer = answer_how_many(*engine, after_frame(clock, k), 30);
+        REQUIRE(answer.askable);
+        // A fresh engine over the frames k + 1 .. k + 30.
+        const std::unique_ptr<Engine> fresh = make_engine(scene, options);
+        for (std::int64_t j = 0; j <= k; ++j) fresh->advance_to(clock.time(j));
+        std::int64_t pairs = 0;
+        std::int64_t walls = 0;
+        fresh->set_collision_listener(
+            [&](const CollisionRecord& r) { ++(r.kind == CollisionKind::pair ? pairs : walls); });
+        for (std::int64_t j = k + 1; j <= k + 30; ++j) fresh->advance_to(clock.time(j));
+        CHECK(answer.pairs == pairs);
+        CHECK(answer.walls == walls);
+        CHECK(answer.count() > 0);
+        const std::string words = answer_words(answer, clock);
+        CHECK(words.find(std::to_string(pairs + walls)) != std::string::npos);
+        CHECK(words.size() <= max_caption_chars);
+    }
+}
+
+TEST_CASE("answer_questions: each question answered at the frame the timeline freezes on") {
+    const Scene scene = test::lattice_fluid(5, 0.25, Boundary::walls, 3);
+    TimelineScript script;
+    script.fps = 30;
+    script.frames = 300;
+    script.questions = {{1.0, 2.0, 1.0, "", ""}, {5.0, 2.0, 1.0, "", ""}};
+    const Timeline timeline = build_timeline(script);
+    REQUIRE(questions_asked(timeline) == std::vector<int>{0, 1});
+    const FrameClock clock = clock_of(timeline.sim_frame_count(), 1.0 / 30.0);
+    const EngineOptions options;
+    const std::vector<QuestionAnswer> answers = answer_questions(
+        scene, options, clock, timeline, {QuestionKind::next_collision, QuestionKind::how_many});
+    REQUIRE(answers.size() == 2);
+    std::vector<std::int64_t> frozen;
+    for (const Segment& s : timeline.segments)
+        if (s.kind == SegmentKind::question) frozen.push_back(s.sim_frame);
+    REQUIRE(frozen.size() == 2);
+    CHECK(answers[0].sim_frame == frozen[0]);
+    CHECK(answers[1].sim_frame == frozen[1]);
+    REQUIRE(answers[0].askable);
+    const std::optional<CollisionRecord> truth = first_after(scene, options, clock, frozen[0]);
+    REQUIRE(truth.has_value());
+    CHECK(same_contact(answers[0].candidates[answers[0].answer], *truth));
+    CHECK(answers[1].kind == QuestionKind::how_many);
+    CHECK(answers[1].askable);
+}
+
+TEST_CASE("the question's words, its countdown and the answer's words") {
+    QuestionAnswer answer;
+    answer.kind = QuestionKind::next_collision;
+    answer.time = 1.0;
+    CollisionRecord a;
+    a.t = 1.5;
+    a.a = 3;
+    a.b = 7;
+    CollisionRecord b = a;
+    b.t = 2.0;
+    b.a = 1;
+    b.b = 2;
+    CollisionRecord c;
+    c.t = 2.5;
+    c.kind = CollisionKind::xwall;
+    c.a = 4;
+    answer.candidates = {b, a, c};
+    answer.answer = 1;
+    answer.askable = true;
+    CHECK(question_words(answer, "") == "Pause and think: which collides first, A, B or C?");
+    CHECK(question_words(answer, "Which first?") == "Which first?");
+    const std::string words = answer_words(answer, clock_of(100, 0.01));
+    CHECK(words.rfind("Answer: B, discs 3 and 7", 0) == 0);
+    CHECK(words.size() <= max_caption_chars);
+    CHECK(countdown_words(3.0) == "Think: 3");
+    CHECK(countdown_words(2.01) == "Think: 3");
+    CHECK(countdown_words(0.2) == "Think: 1");
+    answer.kind = QuestionKind::how_many;
+    answer.pairs = 0;
+    answer.walls = 0;
+    CHECK(answer_words(answer, clock_of(100, 0.01)) == "Answer: none in the next second");
+    answer.pairs = 5;
+    answer.walls = 2;
+    CHECK(answer_words(answer, clock_of(100, 0.01)) ==
+          "Answer: 7 collisions (5 between discs, 2 with walls)");
+}
+
+TEST_CASE("the picture: letters clear of every disc, the answer marked only in the reveal") {
+    const FrameClock clock = clock_of(400, 1.0 / 30.0);
+    for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+        CAPTURE(seed);
+        const Scene scene = test::lattice_fluid(4, 0.1, Boundary::walls, seed);
+        const std::unique_ptr<Engine> engine = make_engine(scene, EngineOptions{});
+        for (std::int64_t j = 0; j <= 5; ++j) engine->advance_to(clock.time(j));
+        const Snapshot now = engine->snapshot();
+        const QuestionAnswer answer =
+            answer_next_collision(*engine, now, after_frame(clock, 5), seed);
+        REQUIRE(answer.askable);
+        const ReplayView asking = question_view(answer, now, clock, 2.5, false);
+        CHECK(asking.heading == "Think: 3");
+        REQUIRE(asking.labels.size() == answer.candidates.size());
+        const double plate = 0.05 * std::min(now.box.width, now.box.height);
+        for (std::size_t i = 0; i < asking.labels.size(); ++i) {
+            const BoxLabel& label = asking.labels[i];
+            CHECK(label.text == candidate_letter(i));
+            CHECK_FALSE(label.failure);  // no hint while the class thinks
+            for (const DiscState& d : now.discs)
+                CHECK(norm(label.at - d.position) - d.radius >= plate - 1e-12);
+        }
+        for (const BoxLine& line : asking.lines) CHECK_FALSE(line.failure);
+        const ReplayView reveal = question_view(answer, now, clock, 1.0, true);
+        CHECK(reveal.heading == "Answer: " + candidate_letter(answer.answer));
+        for (std::size_t i = 0; i < reveal.labels.size(); ++i)
+            CHECK(reveal.labels[i].failure == (i == answer.answer));
+    }
+}
