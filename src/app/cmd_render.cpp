@@ -14,6 +14,7 @@
 #include <variant>
 
 #include "cli_numbers.hpp"
+#include "cli_types.hpp"
 #include "collide/error.hpp"
 #include "collide/io/file.hpp"
 #include "collide/printable.hpp"
@@ -223,7 +224,8 @@ void add_shared_options(CLI::App& cmd, CliValues& v, bool video) {
         ->type_name("{fast,classic}");
     cmd.add_option("--pq", v.pq,
                    "Classic engine's queue: unordered, ordered, binary, dary:D or indexed")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->type_name(queue_kind_type);
     cmd.add_option("--td-detect", v.td_detect, "Time-driven overlap checks: all-pairs or grid")
         ->capture_default_str()
         ->type_name("{all-pairs,grid}");
