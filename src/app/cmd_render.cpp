@@ -468,6 +468,7 @@ void check_distinct_outputs(const RenderPlan& plan, const CliValues& values,
     if (!subtitles.file.empty()) outputs.push_back({"--subtitles-file", subtitles.file, false});
     if (!chapters.file.empty()) outputs.push_back({"--chapters-file", chapters.file, false});
     if (!chapters.slides.empty()) outputs.push_back({"--slides", chapters.slides, true});
+    if (!chapters.handout.empty()) outputs.push_back({"--handout", chapters.handout, false});
     if (outputs.size() > 1) io::check_distinct_outputs(outputs);
 }
 
