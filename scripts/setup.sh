@@ -3,18 +3,18 @@
 # when everything is there). Usage: scripts/setup.sh [--test]   (--test adds ffmpeg, xvfb, chromium
 # and file: CPack's DEB generator needs `file` to find the binaries whose libraries
 # dpkg-shlibdeps reads, and a minimal Debian 12 image has none; lintian checks the .deb and
-# groff-base the generated man page)
+# groff-base the generated man page; poppler-utils reads the handout PDF back: pdfinfo, pdftoppm)
 set -euo pipefail
 
 packages=(
     build-essential cmake ninja-build pkg-config python3-glad
     libosmesa6-dev libegl-dev libglfw3-dev libstb-dev fonts-dejavu-core fonts-droid-fallback
-    libfreetype-dev libharfbuzz-dev libfribidi-dev
+    libfreetype-dev libharfbuzz-dev libfribidi-dev libcairo2-dev
     libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libavfilter-dev
     libcli11-dev libtomlplusplus-dev libfmt-dev nlohmann-json3-dev doctest-dev libbenchmark-dev
 )
 if [[ "${1:-}" == "--test" ]]; then
-    packages+=(ffmpeg xvfb xauth clang-format chromium file lintian groff-base)
+    packages+=(ffmpeg xvfb xauth clang-format chromium file lintian groff-base poppler-utils)
 fi
 
 missing=()

@@ -7,7 +7,10 @@
 #     UBSan, which never recovers here, checks the command line's paths, not just the libraries);
 #  3. a renderer-only build without OSMesa (COLLIDE_WITH_OSMESA=OFF: EGL only, as on distributions
 #     whose Mesa has no OSMesa), running the renderer tests;
-#  4. the full RelWithDebInfo build, running the whole suite, including the long physics runs
+#  4. a lean build without libav (COLLIDE_VIDEO=OFF: the drawing program for CI thumbnails), only
+#     the programs and their own suite (label `lean`: thumbnail, compare, PNG frames, a video
+#     refused with exit 2);
+#  5. the full RelWithDebInfo build, running the whole suite, including the long physics runs
 #     (label `slow`), the end-to-end CLI tests (label `e2e`) and the renderer suite once more on
 #     EGL; ctest's summary line comes last.
 # With CI=true warnings are errors.
@@ -21,25 +24,31 @@ if [[ "${CI:-}" == "true" ]]; then
 fi
 jobs=$(nproc)
 
-echo "==> [1/4] sim-only build with sanitizers (build/sim-asan)"
+echo "==> [1/5] sim-only build with sanitizers (build/sim-asan)"
 cmake -S . -B build/sim-asan "${common[@]}" -DCMAKE_BUILD_TYPE=Debug -DCOLLIDE_SIM_ONLY=ON \
       -DCOLLIDE_SANITIZE=ON -DCOLLIDE_VALIDATE=ON >/dev/null
 cmake --build build/sim-asan -j "$jobs"
 ctest --test-dir build/sim-asan -L unit --output-on-failure -j "$jobs"
 
-echo "==> [2/4] full build with sanitizers (build/asan)"
+echo "==> [2/5] full build with sanitizers (build/asan)"
 cmake -S . -B build/asan "${common[@]}" -DCMAKE_BUILD_TYPE=Debug -DCOLLIDE_SANITIZE=ON >/dev/null
 cmake --build build/asan -j "$jobs"
 ctest --test-dir build/asan -L 'unit|cli-matrix' -E "^collide_(sim|show)_tests:" --output-on-failure \
       -j "$jobs"
 
-echo "==> [3/4] renderer without OSMesa (build/no-osmesa)"
+echo "==> [3/5] renderer without OSMesa (build/no-osmesa)"
 cmake -S . -B build/no-osmesa "${common[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DCOLLIDE_WITH_OSMESA=OFF >/dev/null
 cmake --build build/no-osmesa -j "$jobs" --target collide_render_tests
 ctest --test-dir build/no-osmesa -R "^collide_render_tests:" --output-on-failure -j "$jobs"
 
-echo "==> [4/4] full build (build/test), every test"
+echo "==> [4/5] lean build without libav (build/lean)"
+cmake -S . -B build/lean "${common[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOLLIDE_VIDEO=OFF \
+      >/dev/null
+cmake --build build/lean -j "$jobs" --target collide_lean_tests
+ctest --test-dir build/lean -L lean --output-on-failure -j "$jobs"
+
+echo "==> [5/5] full build (build/test), every test"
 cmake -S . -B build/test "${common[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build build/test -j "$jobs"
 ctest --test-dir build/test --output-on-failure -j "$jobs"

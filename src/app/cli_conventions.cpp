@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#ifndef COLLIDE_NO_VIDEO
 extern "C" {
 #include <libavcodec/version.h>
 #include <libavfilter/version.h>
@@ -13,6 +14,7 @@ extern "C" {
 #include <libavutil/version.h>
 #include <libswscale/version.h>
 }
+#endif
 
 #include "collide/scene/load.hpp"
 #include "collide_build_info.hpp"
@@ -53,7 +55,13 @@ std::string nearest_subcommand(const CLI::App& root, const std::string& word) {
 
 }  // namespace
 
-std::string version_text() {
+namespace {
+
+/// The libav versions the drawing program was built with, or what the lean build writes.
+std::string libav_text() {
+#ifdef COLLIDE_NO_VIDEO
+    return "none (built with -DCOLLIDE_VIDEO=OFF: PNG images and frames only, no MP4 or GIF)";
+#else
     // Known at build time: `collide` links neither the renderer nor libav (it starts fast), and
     // collide-draw runs on the same major versions (their sonames).
     constexpr std::array<std::pair<const char*, const char*>, 5> libraries{{
@@ -67,6 +75,14 @@ std::string version_text() {
     for (const auto& [name, version] : libraries) {
         libav += (libav.empty() ? "" : ", ") + std::string(name) + " " + version;
     }
+    return libav;
+#endif
+}
+
+}  // namespace
+
+std::string version_text() {
+    const std::string libav = libav_text();
     const DataDir data = data_dir();
     return std::string("collide ") + COLLIDE_VERSION + " (git " + COLLIDE_GIT_REVISION + ")\n" +
            "GL backends: " + COLLIDE_GL_BACKENDS_TEXT + "\n" + "libav (built with): " + libav +

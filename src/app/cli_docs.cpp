@@ -14,7 +14,8 @@ namespace collide::app {
 
 namespace {
 
-/// "TEXT:{a,b,c}" -> {"a", "b", "c"}: the choices CLI11's IsMember check describes.
+/// "TEXT:{a,b,c}" or "{a,b,c}" -> {"a", "b", "c"}: the choices CLI11's IsMember check describes,
+/// or a type name set by hand.
 std::vector<std::string> choices_in(const std::string& type_name) {
     const std::size_t open = type_name.find('{');
     const std::size_t close = type_name.find('}', open);
@@ -46,7 +47,9 @@ OptionDoc describe_option(const CLI::Option& opt) {
     // A flag expects no value (CLI11's add_flag sets expected(0)); an option like --queue [K]
     // expects 0 or 1 and shows its value.
     if (opt.get_expected_max() != 0) {
-        doc.value = type_name.substr(0, type_name.find(':'));
+        // IsMember's "TEXT:{a,b}" shows as "TEXT"; a choice may hold a colon itself ("dary:D").
+        const std::size_t colon = type_name.find(':');
+        doc.value = colon < type_name.find('{') ? type_name.substr(0, colon) : type_name;
         doc.choices = choices_in(type_name);
         if (doc.value.empty()) doc.value = "VALUE";
     }
@@ -142,6 +145,17 @@ std::string man_options(const std::vector<OptionDoc>& options) {
 }
 
 // ---- shells ----------------------------------------------------------------------------------
+
+/// The choices a shell offers to complete: each as it may be typed ("indexed[:D]" -> "indexed");
+/// a choice with a value to fill in ("dary:D") is left to the user.
+std::vector<std::string> completion_words(const OptionDoc& o) {
+    std::vector<std::string> words;
+    for (const std::string& choice : o.choices) {
+        const std::string word = choice.substr(0, choice.find('['));
+        if (word.find(':') == std::string::npos) words.push_back(word);
+    }
+    return words;
+}
 
 std::string joined(const std::vector<std::string>& words, std::string_view separator) {
     std::string out;
@@ -293,7 +307,7 @@ std::string bash_completion(const std::vector<CommandDoc>& commands) {
             for (const std::string& n : o.names) patterns.push_back("'" + c->name + " " + n + "'");
             out += "        " + joined(patterns, "|") + ")\n";
             if (!o.choices.empty()) {
-                out += "            COMPREPLY=($(compgen -W '" + joined(o.choices, " ") +
+                out += "            COMPREPLY=($(compgen -W '" + joined(completion_words(o), " ") +
                        "' -- \"$cur\")); return ;;\n";
             } else if (o.takes_path()) {
                 out += "            COMPREPLY=($(compgen -f -- \"$cur\")); return ;;\n";
@@ -327,9 +341,13 @@ std::string zsh_completion(const std::vector<CommandDoc>& commands) {
             }
             std::string action;
             if (!o.value.empty()) {
-                action = ":" + o.value + ":";
+                // _arguments ends the message at a colon: a choice's own ("dary:D") is escaped.
+                std::string message;
+                for (const char ch : o.value)
+                    message += ch == ':' ? std::string("\\:") : std::string(1, ch);
+                action = ":" + message + ":";
                 if (!o.choices.empty()) {
-                    action += "(" + joined(o.choices, " ") + ")";
+                    action += "(" + joined(completion_words(o), " ") + ")";
                 } else if (o.takes_path()) {
                     action += "_files";
                 }
@@ -391,7 +409,7 @@ std::string fish_completion(const std::vector<CommandDoc>& commands) {
         }
         if (!o.value.empty()) {
             if (!o.choices.empty()) {
-                line += " -x -a '" + joined(o.choices, " ") + "'";
+                line += " -x -a '" + joined(completion_words(o), " ") + "'";
             } else if (o.takes_path()) {
                 line += " -r -F";
             } else {

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "cli_numbers.hpp"
+#include "cli_types.hpp"
 #include "collide/error.hpp"
 #include "collide/scene/load.hpp"
 #include "collide/sim/engine.hpp"
@@ -263,7 +264,8 @@ void add_bench_command(CLI::App& root) {
     auto options = std::make_shared<BenchOptions>();
     CLI::App* cmd =
         bench->add_subcommand("engine", "Collisions per second and bytes per disc of an engine");
-    cmd->add_option("--scene", options->scene, "Scene to run instead of the random periodic fluid");
+    cmd->add_option("--scene", options->scene, "Scene to run instead of the random periodic fluid")
+        ->type_name("SCENE");
     cmd->add_option("--n", options->n, "Discs in the random fluid (default 100000)");
     cmd->add_option("--eta", options->eta, "Packing fraction of the random fluid (default 0.5)");
     cmd->add_option("--collisions", options->collisions, "Collisions timed (default 5e6)");
@@ -272,8 +274,9 @@ void add_bench_command(CLI::App& root) {
     cmd->add_option("--dim", options->dim,
                     "2 (discs, default) or 3: spheres, an FCC crystal of --n spheres (rounded to "
                     "4 k^3) melted at packing --eta");
-    cmd->add_option("--engine", options->engine, "fast (default) or classic");
-    cmd->add_option("--pq", options->pq, "Classic engine's queue");
+    cmd->add_option("--engine", options->engine, "fast (default) or classic")
+        ->type_name("{fast,classic}");
+    cmd->add_option("--pq", options->pq, "Classic engine's queue")->type_name(queue_kind_type);
     cmd->add_flag("--json", options->json, "Print JSON");
     cmd->add_flag(insist_option, options->no_limits,
                   "Time even more than 10^10 collisions (docs/limits.md)");

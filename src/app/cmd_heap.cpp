@@ -20,6 +20,7 @@
 
 #include "algorithm_video.hpp"
 #include "cli_numbers.hpp"
+#include "cli_types.hpp"
 #include "collide/error.hpp"
 #include "collide/printable.hpp"
 #include "collide/render/heap_view.hpp"
@@ -170,16 +171,19 @@ void add_heap_command(CLI::App& root) {
     CLI::App* cmd = root.add_subcommand(
         "heap",
         "Animate priority-queue operations: heaps as trees over their arrays, step by step");
-    v->ops_opt = cmd->add_option(
-        "--ops", v->ops,
-        "Operations separated by spaces, as in `collide pq`: a key (word or integer) inserts, '*' "
-        "removes the max (min), KEY^NEW raises KEY to NEW (increase-key, --impl indexed only)");
+    v->ops_opt = cmd->add_option("--ops", v->ops,
+                                 "Operations separated by spaces, as in `collide pq`: a key (word "
+                                 "or integer) inserts, '*' removes the max (min), KEY^NEW raises "
+                                 "KEY to NEW (increase-key, --impl indexed only)")
+                     ->type_name(operations_type);
     v->sort_opt = cmd->add_option("--sort", v->sort,
-                                  "Heapsort these keys instead: heap construction, then sortdown");
+                                  "Heapsort these keys instead: heap construction, then sortdown")
+                      ->type_name(keys_type);
     v->impl_opt = cmd->add_option("--impl", v->impls,
                                   "Implementations, one panel each, repeatable or comma-separated: "
                                   "unordered|ordered|binary|dary:D|indexed[:D] (default binary)")
-                      ->delimiter(',');
+                      ->delimiter(',')
+                      ->type_name(queue_kind_type);
     cmd->add_flag("--min", v->min, "A min-queue ('*' removes the smallest; --sort: descending)");
     // Digits only (never octal or hex); 0 or 1 is checked with the other options.
     add_whole_option(*cmd, "--index-base", v->index_base, 0, std::numeric_limits<int>::max(),

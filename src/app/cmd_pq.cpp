@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_types.hpp"
 #include "collide/error.hpp"
 #include "collide/sim/pq/trace.hpp"
 #include "commands.hpp"
@@ -190,7 +191,8 @@ void add_pq_command(CLI::App& root) {
                       "integers, e.g. \"P Q E * X A M * P L E *\"; at most {} operations, words "
                       "of at most {} letters",
                       pq::max_trace_operations, pq::max_trace_key_length))
-        ->required();
+        ->required()
+        ->type_name(operations_type);
     pq->add_flag("--min", options->min,
                  "A min-queue ('*' removes the smallest) instead of a max-queue");
     pq->add_option("--impl", options->impls,
@@ -198,10 +200,12 @@ void add_pq_command(CLI::App& root) {
                                "unordered|ordered|binary|dary:D|indexed[:D] (default: unordered, "
                                "ordered, binary, dary:3, indexed); at most {}",
                                max_impls))
-        ->delimiter(',');
+        ->delimiter(',')
+        ->type_name(queue_kind_type);
     pq->add_option("--format", options->format, "Table format: text, csv or markdown")
         ->check(CLI::IsMember({"text", "csv", "markdown"}))
-        ->capture_default_str();
+        ->capture_default_str()
+        ->type_name("{text,csv,markdown}");  // the choices, without IsMember's "TEXT:"
     pq->callback([options] { run_pq(*options); });
 }
 

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "cli_numbers.hpp"
+#include "cli_types.hpp"
 #include "collide/error.hpp"
 #include "collide/show/puzzle_program.hpp"
 #include "collide/sim/pq/queue_kind.hpp"
@@ -236,7 +237,8 @@ void add_puzzle_command(CLI::App& root, PuzzleVideoMaker video) {
     cmd->add_option("board", v->board,
                     "The board, row by row, 0 or _ for the blank (\"1 2 3 4 0 6 7 5 8\"; 4, 9 "
                     "or 16 tiles), or `random` (see --moves, --seed, --side)")
-        ->required();
+        ->required()
+        ->type_name(board_type);
     v->moves_opt = add_whole_option(*cmd, "--moves", v->moves, 0, puzzle::max_random_moves,
                                     "random: moves of the blank from the goal (default 20)");
     v->seed_opt = add_whole_option(*cmd, "--seed", v->seed, 0, UINT64_MAX,
@@ -245,13 +247,16 @@ void add_puzzle_command(CLI::App& root, PuzzleVideoMaker video) {
                                    "random: the board's side, 2..4 (default 3)");
     cmd->add_option("--heuristic", v->heuristic,
                     "A*'s estimate of the moves left: manhattan or hamming")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->type_name("{manhattan,hamming}");
     cmd->add_option("--pq", v->pq,
                     "A*'s priority queue: unordered|ordered|binary|dary:D|indexed[:D]")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->type_name(queue_kind_type);
     v->method_opt = cmd->add_option("--method", v->method,
                                     "both (BFS and A*), bfs or astar (with --code: astar)")
-                        ->capture_default_str();
+                        ->capture_default_str()
+                        ->type_name("{both,bfs,astar}");
     add_whole_option(*cmd, "--max-nodes", v->max_nodes, 1, puzzle::max_node_budget,
                      fmt::format("Node budget per search: boards stored at most (about {} bytes "
                                  "each); a search that needs more stops with exit 2 (default {})",

@@ -14,6 +14,7 @@
 #include <variant>
 
 #include "cli_numbers.hpp"
+#include "cli_types.hpp"
 #include "collide/error.hpp"
 #include "collide/io/file.hpp"
 #include "collide/printable.hpp"
@@ -226,7 +227,8 @@ void add_shared_options(CLI::App& cmd, CliValues& v, bool video) {
         ->type_name("{fast,classic}");
     cmd.add_option("--pq", v.pq,
                    "Classic engine's queue: unordered, ordered, binary, dary:D or indexed")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->type_name(queue_kind_type);
     cmd.add_option("--td-detect", v.td_detect, "Time-driven overlap checks: all-pairs or grid")
         ->capture_default_str()
         ->type_name("{all-pairs,grid}");
@@ -482,6 +484,7 @@ void check_distinct_outputs(const RenderPlan& plan, const CliValues& values,
     if (!subtitles.file.empty()) outputs.push_back({"--subtitles-file", subtitles.file, false});
     if (!chapters.file.empty()) outputs.push_back({"--chapters-file", chapters.file, false});
     if (!chapters.slides.empty()) outputs.push_back({"--slides", chapters.slides, true});
+    if (!chapters.handout.empty()) outputs.push_back({"--handout", chapters.handout, false});
     if (outputs.size() > 1) io::check_distinct_outputs(outputs);
 }
 

@@ -14,6 +14,7 @@
 #include <variant>
 #include <vector>
 
+#include "cli_types.hpp"
 #include "collide/error.hpp"
 #include "collide/io/file.hpp"
 #include "collide/printable.hpp"
@@ -220,7 +221,8 @@ void add_simulate_command(CLI::App& root) {
     cmd->add_option("--engine", options->engine, "fast (default), classic or time")
         ->type_name("{fast,classic,time}");
     cmd->add_option("--pq", options->pq,
-                    "Classic engine's queue: unordered|ordered|binary|dary:D|indexed[:D]");
+                    "Classic engine's queue: unordered|ordered|binary|dary:D|indexed[:D]")
+        ->type_name(queue_kind_type);
     cmd->add_option("--dt", options->dt, "Time-driven step");
     cmd->add_option("--td-detect", options->td_detect, "Time-driven overlap checks: all-pairs|grid")
         ->type_name("{all-pairs,grid}");

@@ -20,7 +20,7 @@ void refuse_video_options(const PuzzleVideoCli& v, const std::string& mode) {
     for (const CLI::Option* o :
          {v.output_opt, v.format_opt, v.quality_opt, v.size_opt, v.fps_opt, v.last_frame_opt,
           v.at_opt, v.theme_opt, v.subtitles_opt, v.subtitles_file_opt, v.chapters_opt,
-          v.chapters_file_opt, v.slides_opt, v.code_opt}) {
+          v.chapters_file_opt, v.slides_opt, v.handout_opt, v.code_opt}) {
         if (given(o)) {
             throw_option_error(o->get_name(), mode + " prints text instead of a video; leave " +
                                                   o->get_name() + " out, or " + mode + " out");

@@ -364,6 +364,8 @@ OutputChoice resolve_output(const std::optional<std::string>& format,
     } else if (output) {
         throw_option_error("-o", *output, "a .mp4 or .gif path (or --format to name the format)");
     }
+    // The lean build writes PNG frames only: an MP4 or a GIF is refused before anything is made.
+    video::require_format_built(out.format, format ? "--format" : "-o");
     if (output) {
         out.path = *output;
         return out;

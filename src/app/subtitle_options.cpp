@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <filesystem>
 #include <string>
 #include <system_error>
@@ -62,6 +63,16 @@ ChapterOutput chapter_output_of(const VideoCli& v, const OutputChoice& output, s
         // An existing slide folder is replaced as a whole: only one holding nothing but a slide
         // folder's files (an earlier one), so nothing the user did not name is ever deleted.
         io::check_output_directory(out.slides, is_slide_file_name, "--slides");
+    }
+    if (given(v.handout_opt)) {
+        if (output.still) throw_option_error("--handout", "a still (PNG) has no chapters");
+        if (v.handout.empty()) throw_option_error("--handout", "expected a file name (F.pdf)");
+        out.handout = v.handout;
+        std::string extension = out.handout.extension().string();
+        for (char& c : extension)
+            c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        if (extension != ".pdf")
+            throw_option_error("--handout", v.handout, "a PDF file name (.pdf)");
     }
     out.language = v.lang;
     out.title = std::move(title);

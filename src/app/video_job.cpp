@@ -5,13 +5,16 @@
 #include <cstdio>
 #include <fstream>
 #include <optional>
+#include <sstream>
 #include <utility>
 #include <vector>
 
 #include "collide/error.hpp"
 #include "collide/io/file.hpp"
 #include "collide/render/preview.hpp"
+#include "collide/show/chapters.hpp"
 #include "collide/show/slide_player.hpp"
+#include "collide/video/handout.hpp"
 #include "collide/video/png.hpp"
 #include "collide/video/subtitles.hpp"
 
@@ -217,6 +220,77 @@ class SlideFolder {
     std::size_t next_ = 0;
 };
 
+/// The frame of each chapter's still (chapters.still, in video frames, within the video).
+std::vector<std::int64_t> still_frames(const VideoJob& job) {
+    std::vector<std::int64_t> frames;
+    const auto fps = static_cast<double>(job.fps);
+    for (const Chapter& chapter : job.output.chapters) {
+        const std::int64_t still = std::llround(chapter.still * fps);
+        frames.push_back(std::clamp<std::int64_t>(still, 0, job.frames - 1));
+    }
+    return frames;
+}
+
+/// The words on screen at `time` (the cues showing then), a line each, leaving out the lines
+/// the chapter's title already says (a caption is the title of its chapter).
+std::string words_at(const Cues& cues, double time, const std::string& title) {
+    std::string words;
+    for (const Cue& cue : cues) {
+        if (cue.start > time || time >= cue.end) continue;
+        std::istringstream lines(cue.text);
+        for (std::string line; std::getline(lines, line);) {
+            const std::string said = show::one_line(line);
+            if (said.empty() || title.find(said) != std::string::npos) continue;
+            if (!words.empty()) words += '\n';
+            words += said;
+        }
+    }
+    return words;
+}
+
+/// --handout F.pdf: its temporary made before any frame (an unwritable path fails first); each
+/// chapter's still kept as the frames pass, the PDF written once the video is complete and put
+/// in place with it (io::CommitGroup).
+class HandoutFile {
+  public:
+    explicit HandoutFile(const VideoJob& job) {
+        const ChapterOutput& out = job.output.chapter_output;
+        if (out.handout.empty()) return;
+        if (job.output.chapters.empty())
+            throw_option_error("--handout", "this video has no chapters to make pages of");
+        file_.emplace(out.handout, io::OutputOptions{"--handout", false});
+        frames_ = still_frames(job);
+    }
+
+    /// Video frame k: kept as the still of every chapter that it stands for.
+    void offer(std::int64_t k, const Image& image) {
+        while (file_ && pages_.size() < frames_.size() && frames_[pages_.size()] <= k)
+            pages_.push_back({{}, video::handout_still(image), {}});
+    }
+
+    /// The PDF into the temporary: each page's title and words from the chapters and cues.
+    void complete(const VideoJob& job) {
+        if (!file_) return;
+        const Chapters& chapters = job.output.chapters;
+        for (std::size_t i = 0; i < pages_.size(); ++i) {
+            pages_[i].title = chapters[i].title;
+            pages_[i].caption = words_at(job.output.cues, chapters[i].still, chapters[i].title);
+        }
+        const std::string title = job.output.chapter_output.title.empty()
+                                      ? std::string("collide")
+                                      : job.output.chapter_output.title;
+        const std::string pdf = video::handout_pdf(pages_, title);
+        file_->write(pdf.data(), pdf.size());
+    }
+
+    void add_to(io::CommitGroup& outputs) { outputs.add(file_ ? &*file_ : nullptr); }
+
+  private:
+    std::optional<io::OutputFile> file_;
+    std::vector<std::int64_t> frames_;
+    std::vector<video::HandoutPage> pages_;  ///< one per chapter seen so far
+};
+
 /// The job's outputs are files of their own, none inside the slide folder.
 void check_distinct(const JobOutput& output) {
     std::vector<io::NamedOutput> outputs{
@@ -227,6 +301,8 @@ void check_distinct(const JobOutput& output) {
         outputs.push_back({"--chapters-file", output.chapter_output.file, false});
     if (!output.chapter_output.slides.empty())
         outputs.push_back({"--slides", output.chapter_output.slides, true});
+    if (!output.chapter_output.handout.empty())
+        outputs.push_back({"--handout", output.chapter_output.handout, false});
     if (outputs.size() > 1) io::check_distinct_outputs(outputs);
 }
 
@@ -236,6 +312,7 @@ JobResult run_video(const VideoJob& job, const ProgramFactory& make_program,
     SubtitleSidecar sidecar(job.output);
     ChapterSidecar chapter_file(job.output);
     SlideFolder slides(job);
+    HandoutFile handout(job);
     video::VideoOptions options;
     options.path = job.output.path;
     options.format = job.output.format;
@@ -266,6 +343,7 @@ JobResult run_video(const VideoJob& job, const ProgramFactory& make_program,
         if (preview && !preview->show(image)) preview.reset();
         dump.write(image);
         slides.offer(k, image);
+        handout.offer(k, image);
         writer.write(std::move(image));
         result.frames += 1;
         frame_done(hooks, time);
@@ -276,6 +354,7 @@ JobResult run_video(const VideoJob& job, const ProgramFactory& make_program,
     sidecar.write(job.output.cues);
     chapter_file.write(job.output.chapters);
     slides.complete(job, writer);
+    handout.complete(job);
     if (hooks.before_commit) hooks.before_commit();
     // Every output is whole in its temporary: now all of them go in place, or none.
     // The slide folder first: its rename checks the folder once more, the others cannot fail
@@ -285,6 +364,7 @@ JobResult run_video(const VideoJob& job, const ProgramFactory& make_program,
     outputs.add([&] { writer.prepare_commit(); }, [&] { writer.commit(); });
     sidecar.add_to(outputs);
     chapter_file.add_to(outputs);
+    handout.add_to(outputs);
     dump.add_to(outputs);
     for (io::OutputFile* file : hooks.commit_with) outputs.add(file);
     outputs.commit();

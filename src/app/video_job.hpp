@@ -61,13 +61,14 @@ struct SubtitleOutput {
     std::filesystem::path file;    ///< a WebVTT (.vtt) or SubRip (.srt) file too; empty: none
 };
 
-/// A video's chapters as outputs (--chapters, --chapters-file, --slides, checked).
+/// A video's chapters as outputs (--chapters, --chapters-file, --slides, --handout, checked).
 struct ChapterOutput {
-    bool embed = false;            ///< an MP4 carries chapters (other formats have none)
-    std::filesystem::path file;    ///< a WebVTT chapters file too; empty: none
-    std::filesystem::path slides;  ///< the slide player's folder (MP4 only); empty: none
-    std::string language = "und";  ///< the slide page's subtitle language (--lang as given)
-    std::string title;             ///< the slide page's title (the lesson's)
+    bool embed = false;             ///< an MP4 carries chapters (other formats have none)
+    std::filesystem::path file;     ///< a WebVTT chapters file too; empty: none
+    std::filesystem::path slides;   ///< the slide player's folder (MP4 only); empty: none
+    std::filesystem::path handout;  ///< a PDF, a page per chapter (videos); empty: none
+    std::string language = "und";   ///< the slide page's subtitle language (--lang as given)
+    std::string title;              ///< the slide page's title (the lesson's)
 };
 
 /// The files of a slide folder, by name: the names a folder written by --slides holds.

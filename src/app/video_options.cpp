@@ -94,6 +94,10 @@ void add_video_options(CLI::App& cmd, VideoCli& v, const VideoOptionSet& set) {
                    "PNG "
                    "per chapter; works offline. DIR must be new, empty or an earlier slide folder")
                 ->type_name("DIR");
+        v.handout_opt = cmd.add_option("--handout", v.handout,
+                                       "Also write a handout: F.pdf, one page per chapter with its "
+                                       "still and its words, to print or read beside the video")
+                            ->type_name("PATH");
     }
     cmd.add_flag("--verbose", v.verbose, "Show the encoder's own log");
     cmd.add_option("--font", v.font, font_option_help)->type_name("FILE");

@@ -36,6 +36,7 @@ struct VideoCli {
     std::string chapters = "embed";   ///< --chapters embed|none
     std::string chapters_file;        ///< --chapters-file F.vtt
     std::string slides;               ///< --slides DIR
+    std::string handout;              ///< --handout F.pdf
 
     CLI::Option* output_opt = nullptr;
     CLI::Option* format_opt = nullptr;
@@ -51,6 +52,7 @@ struct VideoCli {
     CLI::Option* chapters_opt = nullptr;
     CLI::Option* chapters_file_opt = nullptr;
     CLI::Option* slides_opt = nullptr;
+    CLI::Option* handout_opt = nullptr;
 };
 
 /// What differs between the commands: which options they take and how their help reads.
@@ -62,7 +64,8 @@ struct VideoOptionSet {
     bool preview = false;         ///< --preview
     bool theme = true;            ///< --theme
     std::string_view theme_help;  ///< --theme's default, in words
-    /// --subtitles, --lang, --subtitles-file, --chapters, --chapters-file, --slides (videos only)
+    /// --subtitles, --lang, --subtitles-file, --chapters, --chapters-file, --slides, --handout
+    /// (videos only)
     bool subtitles = false;
 };
 

@@ -109,6 +109,10 @@ void VideoOptions::validate() const {
         require_range("video.crf", crf, 0, codec == VideoCodec::av1 ? 63 : 51);
     }
     validate_preset(*this);
+    if (!format_built(format))
+        throw_scene_error("", 0, "video.format",
+                          "this build has no video (" + std::string(to_string(format)) +
+                              "): built with -DCOLLIDE_VIDEO=OFF, it writes PNG frames only");
     validate_cues(subtitles);
     validate_chapters(chapters);
     if (video::subtitle_language(subtitle_language, "video.subtitle_language") !=
@@ -117,6 +121,23 @@ void VideoOptions::validate() const {
             "", 0, "video.subtitle_language",
             "must be an ISO 639-2/T code such as eng or pol, got '" + subtitle_language + "'");
     }
+}
+
+bool format_built(VideoFormat format) noexcept {
+#ifdef COLLIDE_NO_VIDEO
+    return format == VideoFormat::png_sequence;
+#else
+    (void)format;
+    return true;
+#endif
+}
+
+void require_format_built(VideoFormat format, std::string_view option) {
+    if (format_built(format)) return;
+    throw_option_error(std::string(option),
+                       "this build has no video (" + std::string(to_string(format)) +
+                           "): it was built without libav (-DCOLLIDE_VIDEO=OFF) and writes PNG "
+                           "only: --format png for frames, --last-frame or `thumbnail` for one");
 }
 
 VideoFormat parse_video_format(std::string_view text, std::string_view field) {

@@ -9,7 +9,10 @@
 #include <thread>
 #include <utility>
 
+#ifndef COLLIDE_NO_VIDEO
 #include "av_handles.hpp"
+#endif
+#include "collide/error.hpp"
 #include "collide/io/file.hpp"
 #include "collide/video/output.hpp"
 #include "frame_sink.hpp"
@@ -310,6 +313,7 @@ std::int64_t VideoWriter::frames_written() const noexcept {
     return impl_->frames_written();
 }
 
+#ifndef COLLIDE_NO_VIDEO  // the lean build's versions: no_video.cpp
 bool has_encoder(std::string_view name) {
     return avcodec_find_encoder_by_name(std::string(name).c_str()) != nullptr;
 }
@@ -317,5 +321,6 @@ bool has_encoder(std::string_view name) {
 void set_libav_verbose(bool verbose) {
     av_log_set_level(verbose ? AV_LOG_INFO : AV_LOG_ERROR);
 }
+#endif
 
 }  // namespace collide::video

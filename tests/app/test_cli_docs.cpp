@@ -236,3 +236,36 @@ TEST_CASE("help shows what each option takes: INT, FLOAT, PATH, WxH, and the cho
     CHECK(compare.find("--diff PATH") != std::string::npos);
     CHECK(run_collide("pq --help").output.find("{text,csv,markdown}") != std::string::npos);
 }
+
+TEST_CASE("no option's value shows as TEXT: queues, operations, boards and methods are named") {
+    for (const char* command : {"", "render", "thumbnail", "compare", "heap", "puzzle", "check",
+                                "scenes", "pq", "simulate", "bench engine"}) {
+        CAPTURE(command);
+        const std::string help = run_collide(std::string(command) + " --help").output;
+        CHECK(!help.empty());
+        CHECK(help.find(" TEXT") == std::string::npos);
+    }
+    const std::string queues = "{unordered,ordered,binary,dary:D,indexed[:D]}";
+    CHECK(run_collide("heap --help").output.find("--impl " + queues) != std::string::npos);
+    CHECK(run_collide("heap --help").output.find("--ops OPS") != std::string::npos);
+    CHECK(run_collide("heap --help").output.find("--sort KEYS") != std::string::npos);
+    CHECK(run_collide("pq --help").output.find("--ops OPS") != std::string::npos);
+    const std::string puzzle = run_collide("puzzle --help").output;
+    CHECK(puzzle.find("board BOARD") != std::string::npos);
+    CHECK(puzzle.find("--heuristic {manhattan,hamming}") != std::string::npos);
+    CHECK(puzzle.find("--method {both,bfs,astar}") != std::string::npos);
+    CHECK(puzzle.find("--pq " + queues) != std::string::npos);
+    CHECK(run_collide("simulate --help").output.find("--pq " + queues) != std::string::npos);
+    CHECK(run_collide("bench engine --help").output.find("--engine {fast,classic}") !=
+          std::string::npos);
+    // The man page lists the queue's forms; completion offers those typed as they are (dary:D
+    // needs its arity, so the user types it).
+    const std::string man = generated("collide.1");
+    CHECK(man.find("(one of: unordered, ordered, binary, dary:D, indexed[:D])") !=
+          std::string::npos);
+    const std::string file = (fs::path(COLLIDE_DOCS_DIR) / "collide.bash").string();
+    const auto r = run_command("bash --norc --noprofile -c 'source \"" + file +
+                               "\"; COMP_WORDS=(collide heap --impl \"\"); COMP_CWORD=3; "
+                               "_collide; echo \"${COMPREPLY[*]}\"' 2>&1");
+    CHECK(r.output == "unordered ordered binary indexed\n");
+}

@@ -102,6 +102,12 @@ struct VideoOptions {
 [[nodiscard]] std::string_view to_string(VideoCodec codec) noexcept;
 /// The libav encoder name used for `codec` ("libx264", "libx265", "libsvtav1").
 [[nodiscard]] std::string_view encoder_name(VideoCodec codec) noexcept;
+/// Whether this build writes `format`: PNG frames always; MP4 and GIF only when it was built
+/// with libav (-DCOLLIDE_VIDEO=ON, the default; OFF is the lean build for CI thumbnails).
+[[nodiscard]] bool format_built(VideoFormat format) noexcept;
+/// Throws Error(input) naming `option` when this build does not write `format` (the lean build
+/// asked for an MP4 or a GIF), saying what it writes instead.
+void require_format_built(VideoFormat format, std::string_view option);
 /// True when this FFmpeg build has the encoder `name` (e.g. to skip AV1 where it is missing).
 [[nodiscard]] bool has_encoder(std::string_view name);
 /// libav logs to stderr (x264 prints statistics at "info"); the app calls this once to show only
