@@ -257,6 +257,8 @@ show::LessonRequest lesson_request(const RenderRequest& request, const RenderPla
     out.step_list = !plan.time_steps.empty();
     out.dt = plan.time_engine.dt;
     out.frame_interval = plan.speed.speed / plan.fps;
+    out.time_panel = plan.mode != RenderMode::event;
+    out.event_panel = plan.mode != RenderMode::time;
     return out;
 }
 

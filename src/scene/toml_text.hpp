@@ -35,7 +35,7 @@ inline const Keys render_keys = {"color_mode", "trails", "overlays",   "duration
 /// spheres do not have.
 inline const Keys render_keys3 = {"camera", "projection", "slab"};
 inline const Keys render_keys2 = {"trails", "replay", "replay_tag"};
-inline const Keys caption_keys = {"at", "text", "hold"};
+inline const Keys caption_keys = {"at", "text", "hold", "event", "time"};
 
 }  // namespace keys
 

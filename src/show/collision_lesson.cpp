@@ -36,7 +36,7 @@ Timeline lesson_timeline(const LessonPlan& lesson, int fps, std::int64_t frames)
         script.cues.push_back({cue.at, cue.text, cue.hold});
     script.replays = lesson.replays;
     script.epilogue_seconds = lesson.epilogue_seconds;
-    script.epilogue_caption = "In the end: the final figures side by side";
+    script.epilogue_caption = lesson.epilogue_caption;
     return build_timeline(script);
 }
 
