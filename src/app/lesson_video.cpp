@@ -108,6 +108,7 @@ LessonVideoSummary write_lesson(const OutputChoice& output, const LessonGeometry
     if (!output.still) {
         job.output.subtitles = subtitles;
         job.output.cues = cues;
+        job.output.cues_in_picture = true;  // the heap's and the puzzle's words are drawn
         job.output.chapter_output = chapters;
         job.output.chapters = show::chapters_from_cues(
             cues, static_cast<double>(job.frames) / static_cast<double>(geometry.fps),
