@@ -20,6 +20,10 @@ struct CaptionCue {
     std::string file;  ///< where it was written, for errors found later (beyond the video)
     int line = 0;
     double hold = 0.0;  ///< seconds of video the picture stays frozen from `at` (0: none)
+    /// The words for a video of one panel (`--mode event`, `--mode time`), where `text` speaks
+    /// of both ("Left tests every pair..."); unset: `text` suits that video too.
+    std::optional<std::string> event_text = std::nullopt;
+    std::optional<std::string> time_text = std::nullopt;
 };
 
 /// A question asked from `at` seconds of video (`[[render.questions]]`): the picture freezes while

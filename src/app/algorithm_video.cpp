@@ -110,6 +110,7 @@ AlgorithmVideoSummary write_algorithm_video(const OutputChoice& output, const Al
     if (!output.still) {
         job.output.subtitles = subtitles;
         job.output.cues = cues;
+        job.output.cues_in_picture = true;  // the heap's and the puzzle's words are drawn
         job.output.chapter_output = chapters;
         job.output.chapters =
             chapter_list

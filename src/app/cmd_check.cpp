@@ -69,10 +69,13 @@ std::vector<ScreenText> screen_texts(const Scene& scene, const std::string& scen
     }
     for (std::size_t i = 0; i < scene.render.captions.size(); ++i) {
         const CaptionCue& cue = scene.render.captions[i];
-        const std::string field = "render.captions[" + std::to_string(i) + "].text";
-        out.push_back({(cue.file.empty() ? scene_arg : cue.file + ":" + std::to_string(cue.line)) +
-                           ": " + field,
-                       &cue.text});
+        const std::string field = "render.captions[" + std::to_string(i) + "].";
+        const std::string where =
+            (cue.file.empty() ? scene_arg : cue.file + ":" + std::to_string(cue.line)) + ": " +
+            field;
+        out.push_back({where + "text", &cue.text});
+        if (cue.event_text) out.push_back({where + "event", &*cue.event_text});
+        if (cue.time_text) out.push_back({where + "time", &*cue.time_text});
     }
     return out;
 }

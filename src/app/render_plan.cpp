@@ -257,6 +257,7 @@ show::LessonRequest lesson_request(const RenderRequest& request, const RenderPla
     out.step_list = !plan.time_steps.empty();
     out.dt = plan.time_engine.dt;
     out.frame_interval = plan.speed.speed / plan.fps;
+    out.time_panel = plan.mode != RenderMode::event;
     out.event_panel = plan.mode != RenderMode::time;
     if (request.questions) {
         if (*request.questions != "on" && *request.questions != "none")

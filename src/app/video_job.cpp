@@ -175,6 +175,7 @@ class SlideFolder {
         page.video = slide_video;
         page.language = job.output.chapter_output.language;
         page.cues = job.output.cues;
+        page.cues_in_picture = job.output.cues_in_picture;
         page.chapters = job.output.chapters;
         page.fps = job.fps;
         if (!job.output.cues.empty()) {
@@ -323,6 +324,7 @@ JobResult run_video(const VideoJob& job, const ProgramFactory& make_program,
     if (job.output.subtitles.embed && job.output.format == video::VideoFormat::mp4) {
         options.subtitles = job.output.cues;
         options.subtitle_language = job.output.subtitles.language;
+        options.subtitles_in_picture = job.output.cues_in_picture;
     }
     if (job.output.chapter_output.embed && job.output.format == video::VideoFormat::mp4)
         options.chapters = job.output.chapters;

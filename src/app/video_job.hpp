@@ -82,6 +82,9 @@ struct JobOutput {
     /// Videos: the words on screen as timed text (collide_show makes them), written as
     /// `subtitles` says; the sidecar file is all or nothing with the video.
     Cues cues;
+    /// The cues are drawn into the frames (the lesson level's caption, the heap's and the
+    /// puzzle's words): the MP4 track is then not "default", and the slide player hides it.
+    bool cues_in_picture = false;
     SubtitleOutput subtitles;
     /// Videos: the chapters (collide_show makes them), written as `chapter_output` says; the
     /// chapters file and the slide folder are put in place with the video.

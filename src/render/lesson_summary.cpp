@@ -1,5 +1,6 @@
 // The lesson level's summary card (the video's epilogue): the final figures of the panels side
-// by side in a table, each panel's column headed in its engine's colour, the work ratio below.
+// by side in a table, each panel's column headed in its engine's colour, the work ratio below
+// and, when the collision counts differ, why.
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -22,7 +23,8 @@ void LessonPainter::add_summary(const FrameContent& frame) {
     const float row_line = body.line_height() * 1.25F;
     const float table_rows = static_cast<float>(card.rows.size() + 1);  // the headings too
     const float footer = card.footer.empty() ? 0.0F : 0.5F * row_line + row_line;
-    const float total = head_line + 0.6F * head_line + table_rows * row_line + footer;
+    const float note = card.note.empty() ? 0.0F : (card.footer.empty() ? 1.5F : 1.0F) * row_line;
+    const float total = head_line + 0.6F * head_line + table_rows * row_line + footer + note;
     float y = std::round(0.5F * (h - total));
     const auto line_slot = [](const FontAtlas& font, float x0, float x1, float top, float height) {
         return TextSlot{TextRole::caption, -1, {x0, top, x1, top + height}, font.pixel_height()};
@@ -62,6 +64,12 @@ void LessonPainter::add_summary(const FrameContent& frame) {
         y += 0.5F * row_line;
         draw_text(Font::body, line_slot(body, 0.05F * w, 0.95F * w, y, row_line), card.footer,
                   faded(palette_.title, opacity), Align::centre);
+        y += row_line;
+    }
+    if (!card.note.empty()) {
+        if (card.footer.empty()) y += 0.5F * row_line;
+        draw_text(Font::body, line_slot(body, 0.05F * w, 0.95F * w, y, row_line), card.note,
+                  faded(palette_.text, opacity), Align::centre);
     }
 }
 

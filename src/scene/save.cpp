@@ -105,6 +105,8 @@ void write_render(std::ostream& out, const RenderHints& r) {
     for (const CaptionCue& cue : r.captions) {
         out << "\n[[render.captions]]\nat = " << exact(cue.at) << "\ntext = " << quoted(cue.text)
             << "\n";
+        if (cue.event_text) out << "event = " << quoted(*cue.event_text) << "\n";
+        if (cue.time_text) out << "time = " << quoted(*cue.time_text) << "\n";
         if (cue.hold > 0.0) out << "hold = " << exact(cue.hold) << "\n";
     }
     for (const QuestionCue& cue : r.questions) {

@@ -599,6 +599,9 @@ class TomlReader {
                          num(*r.duration) + " s");
             }
             cue.text = caption(*text, field + ".text");
+            if (const toml::node* v = t.get("event"))
+                cue.event_text = caption(*v, field + ".event");
+            if (const toml::node* v = t.get("time")) cue.time_text = caption(*v, field + ".time");
             if (const toml::node* hold = t.get("hold")) read_hold(*hold, field + ".hold", cue);
             cue.file = file_;
             cue.line = static_cast<int>(at->source().begin.line);

@@ -36,7 +36,7 @@ inline const Keys render_keys = {"color_mode", "trails",    "overlays",   "durat
 /// spheres do not have.
 inline const Keys render_keys3 = {"camera", "projection", "slab"};
 inline const Keys render_keys2 = {"trails", "replay", "replay_tag", "questions"};
-inline const Keys caption_keys = {"at", "text", "hold"};
+inline const Keys caption_keys = {"at", "text", "hold", "event", "time"};
 inline const Keys question_keys = {"at", "kind", "text", "think"};
 
 }  // namespace keys

@@ -52,6 +52,14 @@ std::vector<CaptionCue> captions_within(const Scene& scene, double duration, boo
     return kept;
 }
 
+/// The cue's words for the panels the video shows: its `event` or `time` form in a video of
+/// that panel alone, else its text.
+std::string caption_for_panels(const CaptionCue& cue, const LessonRequest& request) {
+    if (request.event_panel && !request.time_panel && cue.event_text) return *cue.event_text;
+    if (request.time_panel && !request.event_panel && cue.time_text) return *cue.time_text;
+    return cue.text;
+}
+
 }  // namespace
 
 LevelShows level_shows(OverlayLevel level) noexcept {
@@ -90,6 +98,11 @@ LessonPlan lesson_plan(const Scene& scene, const LessonRequest& request,
         lesson.epilogue_seconds = std::min(epilogue_seconds, 0.2 * request.duration);
     lesson.caption = scene.render.caption.value_or("");
     lesson.captions = captions_within(scene, request.duration, request.duration_from_cli, notices);
+    // One panel: the words written for it, never a word of the absent one ("Left tests...").
+    for (CaptionCue& cue : lesson.captions) cue.text = caption_for_panels(cue, request);
+    lesson.epilogue_caption = request.time_panel && request.event_panel
+                                  ? "In the end: what each method counted"
+                                  : "In the end: the final figures";
     if (request.step_list) {
         // A --dt list: the scene's captions speak of two panels ("Left: ..."); the video's one
         // caption says what the panels side by side show.

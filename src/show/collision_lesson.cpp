@@ -37,7 +37,7 @@ Timeline lesson_timeline(const LessonPlan& lesson, int fps, std::int64_t frames)
     script.replays = lesson.replays;
     script.questions = lesson.questions;
     script.epilogue_seconds = lesson.epilogue_seconds;
-    script.epilogue_caption = "In the end: the final figures side by side";
+    script.epilogue_caption = lesson.epilogue_caption;
     return build_timeline(script);
 }
 

@@ -170,6 +170,9 @@ const FrameContent& CollisionProgram::frame(const CollisionState& state) {
             panels, walls,
             clock_text(state.time, settings_.clock, settings_.speed, OverlayLevel::lesson));
         content_.summary.opacity = summary_opacity(video_time - segment.start);
+        // The caption over the card says what the figures mean: the timeline's (the subtitles')
+        // was written before the run, without them.
+        content_.caption = epilogue_caption(panels);
     }
     return content_;
 }

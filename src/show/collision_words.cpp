@@ -109,13 +109,7 @@ int whole_frames_per_step(double dt, double frame_interval) noexcept {
 }
 
 std::string short_count(double value) {
-    const double magnitude = std::abs(value);
-    if (magnitude >= 1e12 || (magnitude > 0.0 && magnitude < 1.0))
-        return fmt::format("{:.3g}", value);
-    if (magnitude >= 1e9) return fmt::format("{:.2f}G", value / 1e9);
-    if (magnitude >= 1e6) return fmt::format("{:.2f}M", value / 1e6);
-    if (magnitude >= 1e4) return fmt::format("{:.1f}k", value / 1e3);
-    return fmt::format("{:.0f}", value);
+    return collide::count_text(value);
 }
 
 std::vector<std::string> time_driven_counters(const Measurements& m, double energy_drift) {
@@ -125,10 +119,10 @@ std::vector<std::string> time_driven_counters(const Measurements& m, double ener
         fmt::format("checks  {}", short_count(static_cast<double>(m.overlap_checks))),
         fmt::format("collisions  {}",
                     short_count(static_cast<double>(m.collisions_pair + m.collisions_wall))),
-        fmt::format("overlaps now  {}", m.overlapping_pairs),
+        fmt::format("overlaps now  {}", short_count(static_cast<double>(m.overlapping_pairs))),
         fmt::format("deepest  {:.2g}", m.max_overlap),
-        fmt::format("missed  {}", m.missed_collisions),
-        fmt::format("escaped  {}", m.escaped),
+        fmt::format("missed  {}", short_count(static_cast<double>(m.missed_collisions))),
+        fmt::format("escaped  {}", short_count(static_cast<double>(m.escaped))),
         fmt::format("energy drift  {:+.1e}", energy_drift),
         fmt::format("checks/time  {}",
                     m.t > 0.0 ? short_count(static_cast<double>(m.overlap_checks) / m.t) : "-"),
@@ -147,7 +141,7 @@ std::vector<std::string> event_driven_counters(const Measurements& m, double ene
                     short_count(static_cast<double>(m.collisions_pair + m.collisions_wall))),
         fmt::format("predictions  {}", short_count(static_cast<double>(m.predictions))),
         fmt::format("queue ops  {}", short_count(static_cast<double>(queue_ops))),
-        fmt::format("queue max  {}", m.queue.max_size),
+        fmt::format("queue max  {}", short_count(static_cast<double>(m.queue.max_size))),
         fmt::format("stale pops  {:.0f}%", stale_share),
         fmt::format("overlaps now  {}", m.max_overlap > 0.0 ? "yes" : "0"),
         fmt::format("energy drift  {:+.1e}", energy_drift),

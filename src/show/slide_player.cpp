@@ -146,7 +146,7 @@ video { width: 100%; height: 100%; object-fit: contain; background: #000; cursor
 <button id="back" title="Back a chapter (left arrow)">&#9664;</button>
 <button id="next" title="Go on (right arrow, space or a click)">&#9654;</button>
 <span id="where"></span>
-<span id="keys">&#8594; / space: go on &#183; &#8592;: back &#183; F: full screen &#183; S: subtitles</span>
+<span id="keys">&#8594; / space: go on &#183; &#8592;: back &#183; F: full screen<span id="subs-key"> &#183; S: subtitles</span></span>
 <button id="subs" title="Subtitles on and off (S)" aria-pressed="true">Subtitles</button>
 <button id="full" title="Full screen (F)">Full screen</button>
 </div>
@@ -158,6 +158,9 @@ const chapters = @CHAPTERS@;
 // The subtitles again, for browsers that refuse to read the .vtt file from file://.
 const cues = @CUES@;
 const frame = 1 / @FPS@;
+// The captions are drawn into the video: the track stays hidden (no caption drawn twice) and
+// there is nothing to switch on.
+const captionsInPicture = @IN_PICTURE@;
 const video = document.getElementById("video");
 const where = document.getElementById("where");
 let current = 0;       // the chapter on screen
@@ -227,7 +230,7 @@ function subtitleTrack() {
 
 function toggleSubtitles() {
   const track = subtitleTrack();
-  if (!track) return;
+  if (!track || captionsInPicture) return;
   track.mode = track.mode === "showing" ? "hidden" : "showing";
   document.getElementById("subs").setAttribute("aria-pressed", String(track.mode === "showing"));
 }
@@ -245,11 +248,18 @@ function subtitlesFromPage() {
   if (cues.length === 0 || typeof VTTCue === "undefined") return;
   const track = video.addTextTrack("subtitles", "Subtitles", "@LANG@");
   for (const cue of cues) track.addCue(new VTTCue(cue.start, cue.end, cue.text));
-  track.mode = "showing";
+  track.mode = captionsInPicture ? "hidden" : "showing";
 }
 const trackElement = video.querySelector("track");
 if (trackElement) trackElement.addEventListener("error", subtitlesFromPage);
 else subtitlesFromPage();
+if (captionsInPicture) {
+  // Hidden, not disabled: the cues still load (a search, a screen reader), nothing is drawn.
+  const track = subtitleTrack();
+  if (track) track.mode = "hidden";
+  document.getElementById("subs").hidden = true;
+  document.getElementById("subs-key").hidden = true;
+}
 
 document.addEventListener("keydown", function (event) {
   if (event.altKey || event.ctrlKey || event.metaKey) return;
@@ -278,6 +288,12 @@ show();
 // ?test: play two chapters by pressing the keys a lecturer would, and log what happened.
 const log = document.getElementById("test-log");
 function note(line) { log.textContent += line + "\n"; }
+// How many text tracks the browser draws over the video now.
+function showing() {
+  let n = 0;
+  for (let i = 0; i < video.textTracks.length; ++i) if (video.textTracks[i].mode === "showing") ++n;
+  return n;
+}
 function press(key) { document.dispatchEvent(new KeyboardEvent("keydown", {key: key, bubbles: true})); }
 function until(test) {
   return new Promise(function (resolve) {
@@ -291,11 +307,13 @@ async function selfTest() {
   await pause(100);  // the <track> file loads, or fails and the page's cues take its place
   const track = subtitleTrack();
   note("subtitles " + (track && track.cues ? track.cues.length : 0));
+  note("showing " + showing());
   for (let n = 0; n < Math.min(2, chapters.length); ++n) {
     press("ArrowRight");
     await until(function () { return state === "done"; });
     await pause(300);  // still stopped a moment later
     note("stop " + current + " " + video.currentTime.toFixed(3) + (video.paused ? " paused" : " playing"));
+    note("showing " + showing());
   }
   press("ArrowLeft");
   note("back " + current + " " + video.currentTime.toFixed(3));
@@ -313,7 +331,8 @@ std::string slide_page_html(const SlidePage& page) {
     std::string track;
     if (!page.subtitles.empty()) {
         track = "<track kind=\"subtitles\" src=\"" + html_escaped(page.subtitles) +
-                "\" srclang=\"" + html_escaped(page.language) + "\" label=\"Subtitles\" default>";
+                "\" srclang=\"" + html_escaped(page.language) + "\" label=\"Subtitles\"" +
+                (page.cues_in_picture ? ">" : " default>");
     }
     return filled(page_template,
                   {{"TITLE", html_escaped(page.title.empty() ? "collide" : one_line(page.title))},
@@ -322,7 +341,8 @@ std::string slide_page_html(const SlidePage& page) {
                    {"TRACK", track},
                    {"CHAPTERS", js_array(page.chapters)},
                    {"CUES", js_array(page.cues)},
-                   {"FPS", std::to_string(page.fps > 0 ? page.fps : 30)}});
+                   {"FPS", std::to_string(page.fps > 0 ? page.fps : 30)},
+                   {"IN_PICTURE", page.cues_in_picture ? "true" : "false"}});
 }
 
 }  // namespace collide::show

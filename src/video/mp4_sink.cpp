@@ -15,6 +15,7 @@ extern "C" {
 #include "av_handles.hpp"
 #include "collide/video/subtitles.hpp"
 #include "frame_sink.hpp"
+#include "mp4_track_flags.hpp"
 #include "rgba_to_yuv.hpp"
 
 namespace collide::video::detail {
@@ -150,6 +151,9 @@ class Mp4Sink final : public FrameSink {
         finished_ = true;
         check_av(av_write_trailer(format_.get()), "cannot finish '" + shown() + "'");
         check_av(avio_closep(&format_->pb), "cannot close '" + shown() + "'");
+        // FFmpeg's muxer enables the first subtitle track whatever its disposition.
+        if (text_stream_ != nullptr && options_.subtitles_in_picture)
+            disable_subtitle_tracks(temporary_);
     }
 
   private:
@@ -252,6 +256,7 @@ class Mp4Sink final : public FrameSink {
         check_av(avcodec_parameters_from_context(text_stream_->codecpar, text_codec_.get()),
                  "cannot copy subtitle encoder parameters");
         av_dict_set(&text_stream_->metadata, "language", options_.subtitle_language.c_str(), 0);
+        text_stream_->disposition = options_.subtitles_in_picture ? 0 : AV_DISPOSITION_DEFAULT;
     }
 
     /// The chapters, in milliseconds, on the format context before the header is written (the

@@ -40,7 +40,7 @@ const std::vector<Expected> expected_chapters = {
     {0.0, 1.0, "Zderzenia: Δt ≈ 0.01 s"},
     {1.0, 2.5, "Kule się zderzają"},
     {2.5, 3.2, "Energia ± 0: E = ½mv²"},
-    {3.2, 4.0, "In the end: the final figures side by side"},
+    {3.2, 4.0, "In the end: what each method counted"},
 };
 
 /// The chapters ffprobe reads from `file`: "start_time=", "end_time=", "TAG:title=" lines.

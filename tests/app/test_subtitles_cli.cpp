@@ -74,7 +74,7 @@ TEST_CASE(
     CHECK(embedded[2].text == "Energia ± 0: E = ½mv²");
     CHECK(embedded[2].start == doctest::Approx(2.5));
     // The epilogue's words, as on screen, from where the caption before them ends.
-    CHECK(embedded[3].text == "In the end: the final figures side by side");
+    CHECK(embedded[3].text == "In the end: what each method counted");
     CHECK(embedded[3].start == doctest::Approx(embedded[2].end));
     CHECK(embedded[3].start > 2.5);
     CHECK(embedded[3].end == doctest::Approx(4.0));

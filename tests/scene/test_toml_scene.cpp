@@ -382,6 +382,34 @@ TEST_CASE("toml: a caption's hold freezes the video within it, and reads back") 
     CHECK(contains(negative, ">= 0"));
 }
 
+TEST_CASE("toml: a caption's words for one panel (event, time) are read, checked and read back") {
+    const Scene s = parse(
+        "[render]\n[[render.captions]]\nat = 2\ntext = \"Left tests pairs; right predicts\"\n"
+        "event = \"The queue predicts\"\ntime = \"Each step tests pairs\"\n"
+        "[[render.captions]]\nat = 3\ntext = \"Both\"\n");
+    REQUIRE(s.render.captions.size() == 2);
+    CHECK(s.render.captions[0].event_text == "The queue predicts");
+    CHECK(s.render.captions[0].time_text == "Each step tests pairs");
+    CHECK_FALSE(s.render.captions[1].event_text.has_value());
+    CHECK_FALSE(s.render.captions[1].time_text.has_value());
+    std::ostringstream out;
+    write_toml_scene(out, s);
+    const Scene again = parse(out.str());
+    CHECK(again.render.captions[0].event_text == "The queue predicts");
+    CHECK(again.render.captions[0].time_text == "Each step tests pairs");
+    CHECK_FALSE(again.render.captions[1].event_text.has_value());
+    // Each form is a caption: one line at most, named by its field.
+    const std::string long_text(65, 'x');
+    const std::string too_long = toml_error(
+        "[render]\n[[render.captions]]\nat = 1\ntext = \"a\"\n"
+        "time = \"" +
+        long_text + "\"\n");
+    CHECK(contains(too_long, "render.captions[0].time"));
+    CHECK(contains(too_long, "at most 64"));
+    CHECK(contains(toml_error("[render]\n[[render.captions]]\nat = 1\ntext = \"a\"\nevent = 3\n"),
+                   "render.captions[0].event"));
+}
+
 TEST_CASE("toml: a number too small for a double reads as 0, as in algs4 files and on the CLI") {
     const Scene s = parse(
         "[[disc]]\nposition = [0.5, 0.5]\nvelocity = [1e-400, -1e-400]\n"

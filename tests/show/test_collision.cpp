@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "collide/number_text.hpp"
 #include "collide/show/collision.hpp"
 #include "collide/sim/pq/queue_kind.hpp"
 
@@ -47,16 +48,19 @@ TEST_CASE("on-screen counters are deterministic counts, the same for the same me
     CHECK(joined(event_driven_counters(m, 0.0)).find("events") != std::string::npos);
 }
 
-TEST_CASE("short counts stay short at any magnitude") {
+TEST_CASE("counts on screen have one format: thousands separators, as on the cards") {
     CHECK(short_count(0.0) == "0");
     CHECK(short_count(999.0) == "999");
-    CHECK(short_count(12'345.0) == "12.3k");
-    CHECK(short_count(4.56e6) == "4.56M");
-    CHECK(short_count(7.5e9) == "7.50G");
-    // Per unit of time in scenes written in SI units (picoseconds): no 20-digit "G" counts.
+    CHECK(short_count(12'345.0) == "12,345");
+    CHECK(short_count(4.56e6) == "4,560,000");
+    CHECK(short_count(221'190'000.4) == "221,190,000");
+    CHECK(short_count(7.5e9) == "7,500,000,000");
+    CHECK(short_count(-3e13) == "-30,000,000,000,000");
+    // Per unit of time in scenes written in SI units (picoseconds): no 20-digit counts.
     CHECK(short_count(2.394e17) == "2.39e+17");
     CHECK(short_count(4.2e-4) == "0.00042");
-    CHECK(short_count(-3e13) == "-3e+13");
+    // The card's and the panel's figure of one count read the same.
+    CHECK(short_count(4404.0) == with_separators(4404));
 }
 
 TEST_CASE("the on-screen clock resolves one frame interval, whatever the units") {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "collide/show/collision.hpp"
+#include "collide/show/collision_program.hpp"
 #include "collide/show/collision_summary.hpp"
 #include "collide/show/still_timeline.hpp"
 #include "collide/show/timeline.hpp"
@@ -243,6 +244,7 @@ TEST_CASE("the epilogue's card: the final figures side by side and the work rati
     Measurements time;
     time.missed_collisions = 48;
     time.overlapping_pairs = 3;
+    time.discs_overlapped = 11;  // seen overlapping in earlier frames, parted since
     time.escaped = 2;
     time.collisions_pair = 100;
     time.overlap_checks = 400000;
@@ -254,12 +256,16 @@ TEST_CASE("the epilogue's card: the final figures side by side and the work rati
     const SummaryCard card = summary_card({{time, true}, {event, false}}, true, "t = 3.000");
     CHECK(card.title == "In the end, at t = 3.000");
     CHECK(card.columns == std::vector<std::string>{"Time-driven", "Event-driven"});
-    REQUIRE(card.rows.size() == 5);  // missed, overlapping, left the box, collisions, work
+    REQUIRE(card.rows.size() == 5);  // missed, overlapped, left the box, collisions, work
     CHECK(card.rows[0].values == std::vector<std::string>{"48", "0"});
+    // Every disc that overlapped in any frame, not the 3 pairs overlapping at the end.
+    CHECK(card.rows[1].label == "discs that overlapped");
+    CHECK(card.rows[1].values == std::vector<std::string>{"11", "0"});
     CHECK(card.rows[2].label == "discs that left the box");
     CHECK(card.rows[3].values == std::vector<std::string>{"100", "150"});
-    // The cost graphic's unit: overlap tests against predictions plus queue operations.
-    CHECK(card.rows[4].values == std::vector<std::string>{"400.0k", "2000"});
+    // The cost graphic's unit: overlap tests against predictions plus queue operations, in the
+    // panels' format (thousands separators, no "400.0k").
+    CHECK(card.rows[4].values == std::vector<std::string>{"400,000", "2,000"});
     CHECK(card.footer == "Event-driven: 200x less work");
     CHECK(card.footer ==
           "Event-driven: " + work_ratio(work_done(time, true), work_done(event, false)));
@@ -269,6 +275,48 @@ TEST_CASE("the epilogue's card: the final figures side by side and the work rati
     CHECK(summary_opacity(0.0) == 0.0F);
     CHECK(summary_opacity(0.25) == doctest::Approx(0.5));
     CHECK(summary_opacity(2.0) == 1.0F);
+}
+
+TEST_CASE("the card and its caption say why the collision counts differ, in the panels' words") {
+    Measurements event;
+    event.collisions_pair = 127;
+    Measurements time;
+    time.collisions_pair = 106;  // nothing missed, yet fewer: the runs parted (gas)
+    const std::vector<SummaryPanel> parted = {{time, true}, {event, false}};
+    const SummaryCard card = summary_card(parted, true, "t");
+    CHECK(card.rows[0].values == std::vector<std::string>{"0", "0"});
+    CHECK(card.note.find("None missed") != std::string::npos);
+    CHECK(card.note.find("chaos") != std::string::npos);
+    CHECK(epilogue_caption(parted).find("none missed") != std::string::npos);
+    CHECK(epilogue_caption(parted).find("every collision") == std::string::npos);
+
+    // Misses explain it: the caption counts them.
+    time.missed_collisions = 1234;
+    const std::vector<SummaryPanel> missing = {{time, true}, {event, false}};
+    CHECK(summary_card(missing, true, "t").note.find("miss") != std::string::npos);
+    CHECK(epilogue_caption(missing).find("missed 1,234") != std::string::npos);
+    // Discs through a wall, with no pair missed.
+    time.missed_collisions = 0;
+    time.escaped = 3;
+    CHECK(epilogue_caption({{time, true}, {event, false}}).find("wall") != std::string::npos);
+
+    // The same count: nothing to explain.
+    time.escaped = 0;
+    time.collisions_pair = 127;
+    const std::vector<SummaryPanel> agreed = {{time, true}, {event, false}};
+    CHECK(summary_card(agreed, true, "t").note.empty());
+    CHECK(epilogue_caption(agreed).find("same") != std::string::npos);
+
+    // One panel: no word of the other, whatever the counts.
+    for (const std::vector<SummaryPanel>& one :
+         {std::vector<SummaryPanel>{{event, false}}, std::vector<SummaryPanel>{{time, true}}}) {
+        CHECK(summary_card(one, true, "t").note.empty());
+        const std::string caption = epilogue_caption(one);
+        for (const char* word : {"both", "two", "differ", "side by side", "Time-driven"})
+            CHECK_MESSAGE(caption.find(word) == std::string::npos, caption);
+    }
+    for (const auto& panels : {parted, missing, agreed})
+        CHECK(epilogue_caption(panels).size() <= max_caption_chars);
 }
 
 TEST_CASE("a still's frames only run, each with the caption the video reads with that state") {
@@ -284,4 +332,40 @@ TEST_CASE("a still's frames only run, each with the caption the video reads with
     }
     CHECK(still.segment_at(0).caption == "Always");  // shown only under the card
     CHECK(still.segment_at(59).caption == "Later");  // beyond the video: its last caption
+}
+
+TEST_CASE("the lesson plan takes a caption's words for the one panel a video shows") {
+    Scene scene;
+    scene.title = "T";
+    CaptionCue two;
+    two.at = 3.0;
+    two.text = "Left tests every pair; right predicts";
+    two.event_text = "The queue predicts";
+    two.time_text = "Each step tests every pair";
+    CaptionCue plain;
+    plain.at = 5.0;
+    plain.text = "Chaos";
+    scene.render.captions = {two, plain};
+    std::vector<std::string> notices;
+    LessonRequest request;
+    request.duration = 10.0;
+    const auto words = [&](bool time_panel, bool event_panel) {
+        request.time_panel = time_panel;
+        request.event_panel = event_panel;
+        return lesson_plan(scene, request, notices);
+    };
+    const LessonPlan both = words(true, true);
+    CHECK(both.captions[0].text == two.text);
+    CHECK(both.epilogue_caption == "In the end: what each method counted");
+    const LessonPlan event = words(false, true);
+    CHECK(event.captions[0].text == "The queue predicts");
+    CHECK(event.captions[1].text == "Chaos");  // no other form: the same words
+    CHECK(event.epilogue_caption == "In the end: the final figures");
+    const LessonPlan time = words(true, false);
+    CHECK(time.captions[0].text == "Each step tests every pair");
+    CHECK(time.epilogue_caption == "In the end: the final figures");
+    // The timeline's epilogue (subtitles, chapters) has the plan's words.
+    const Timeline timeline = lesson_timeline(time, 10, 100);
+    CHECK(timeline.segments.back().caption == time.epilogue_caption);
+    CHECK(notices.empty());
 }

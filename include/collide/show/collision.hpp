@@ -79,8 +79,9 @@ inline constexpr const char* event_short_title = "Event-driven";
 /// indicator: with 1.5 frames a step, the held frames do not repeat in a fixed pattern of one).
 [[nodiscard]] int whole_frames_per_step(double dt, double frame_interval) noexcept;
 
-/// "1.23k", "4.56M": short counts for on-screen counters; beyond 10^12, and for fractions below
-/// one, three significant digits ("2.39e+17", "0.00042"), so that no count outgrows its column.
+/// A count on screen, in the one format of cards, panels and plots (collide::count_text):
+/// "57,213", "1,234,567"; beyond 10^15, and for rates below one half, three significant digits
+/// ("2.39e+17", "0.00042").
 [[nodiscard]] std::string short_count(double value);
 
 /// The clock's unit, under the lesson's clock: scenes are written in units of their own (a box 1
@@ -156,11 +157,14 @@ struct PanelWords {
 
 /// The scene's story and the lesson level's choices, resolved once for the whole video.
 struct LessonPlan {
-    std::string title;                 ///< the intro card's title
-    std::string description;           ///< the intro card's text
-    double intro_seconds = 0.0;        ///< how long the card shows (0: none; videos only)
-    double epilogue_seconds = 0.0;     ///< the summary card at the end (0: none; videos only)
-    std::string caption;               ///< [render] caption, shown when no scripted caption applies
+    std::string title;              ///< the intro card's title
+    std::string description;        ///< the intro card's text
+    double intro_seconds = 0.0;     ///< how long the card shows (0: none; videos only)
+    double epilogue_seconds = 0.0;  ///< the summary card at the end (0: none; videos only)
+    std::string caption;            ///< [render] caption, shown when no scripted caption applies
+    /// The summary card's caption as the timeline (subtitles, chapters) has it, before the run's
+    /// figures are known; the card itself says what they mean (show::epilogue_caption).
+    std::string epilogue_caption = "In the end: the final figures";
     std::vector<CaptionCue> captions;  ///< [[render.captions]] within the video
     PlotSize histogram = PlotSize::none;
     int frames_per_step = 1;  ///< time-driven: the step indicator's period (whole_frames_per_step)

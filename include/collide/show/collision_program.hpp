@@ -195,7 +195,8 @@ struct LessonRequest {
     double dt = 0.0;                 ///< the time-driven step (one step)
     double frame_interval = 1.0;     ///< simulation time between frames
     bool questions = true;           ///< no --questions none: the scene's questions are asked
-    bool event_panel = true;         ///< the event-driven panel is shown (it answers them)
+    bool time_panel = true;          ///< the video shows a time-driven panel (not --mode event)
+    bool event_panel = true;         ///< the video shows the event-driven panel (not --mode time)
 };
 
 /// The lesson's cards, captions, histogram and step note for `scene`. Captions beyond the video

@@ -1,8 +1,8 @@
 #pragma once
 /// \file
-/// The collision video's epilogue: the final figures of the panels side by side on one card
-/// (missed, overlapping, left the box, collisions, the work and its ratio), for a lecturer to
-/// leave on screen. Pure functions of the engines' measurements.
+/// The collision video's epilogue: the final figures of the panels on one card (missed, discs
+/// that overlapped, left the box, collisions, the work and its ratio, why the counts differ), for
+/// a lecturer to leave on screen. Pure functions of the engines' measurements.
 
 #include <string>
 #include <vector>
@@ -25,6 +25,16 @@ struct SummaryPanel {
 /// has walls (discs can leave it). Opacity 1; the caller fades it in (summary_opacity).
 [[nodiscard]] SummaryCard summary_card(const std::vector<SummaryPanel>& panels, bool walls,
                                        const std::string& time_text);
+
+/// Why the two engines' collision counts differ, in one line under the card's table: the
+/// time-driven run stepped over collisions (or let discs through a wall), or, with nothing
+/// missed, each collision it fixed late sent it on another path (chaos). "" when the counts
+/// agree, or without exactly one time-driven and one event-driven panel.
+[[nodiscard]] std::string count_difference_note(const std::vector<SummaryPanel>& panels);
+
+/// The caption over the card (at most max_caption_chars), in the words the panels allow: the
+/// difference explained when two engines' counts differ, no word of a panel that is absent.
+[[nodiscard]] std::string epilogue_caption(const std::vector<SummaryPanel>& panels);
 
 /// The card's opacity `seconds` into the epilogue: fading in over its first half second.
 [[nodiscard]] float summary_opacity(double seconds) noexcept;

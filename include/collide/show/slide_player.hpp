@@ -22,12 +22,16 @@ struct SlidePage {
     Cues cues;              ///< the subtitles' cues, used where the browser refuses the file
     Chapters chapters;      ///< where the player stops; at least one
     int fps = 30;           ///< the video's frame rate: a chapter stops on its last frame
+    /// The video draws its captions: the track is loaded but hidden and there is no subtitles
+    /// button, so that no caption is drawn twice.
+    bool cues_in_picture = false;
 };
 
 /// The page's HTML. With `?test` in its address the page plays two chapters by itself, pressing
 /// the keys a lecturer would, and writes what it saw into <pre id="test-log"> (a browser test
-/// reads it: "chapters N", "subtitles CUES", "stop CHAPTER SECONDS paused" at each stop, "back
-/// CHAPTER SECONDS", "end").
+/// reads it: "chapters N", "subtitles CUES", "showing TRACKS" (the text tracks the browser
+/// draws over the video) at the start and at each stop, "stop CHAPTER SECONDS paused" at each
+/// stop, "back CHAPTER SECONDS", "end").
 [[nodiscard]] std::string slide_page_html(const SlidePage& page);
 
 }  // namespace collide::show

@@ -56,10 +56,13 @@ struct Measurements {
     std::uint64_t missed_collisions = 0;  ///< contacts inside a step that went undetected
     std::uint64_t escaped = 0;            ///< discs entirely outside a walled box (tunnelled)
     std::uint64_t overlapping_pairs = 0;  ///< pairs overlapping now
-    double energy_drift = 0.0;            ///< (KE - KE0) / KE0
-    std::uint64_t steps = 0;              ///< time quanta taken: the state is at steps * dt
-    double max_overlap_seen = 0.0;        ///< deepest overlap any check found before rollback
-    double seconds_per_time_unit = 0.0;   ///< wall_seconds / t: cost of one simulated time unit
+    /// Discs found overlapping another after any advance (each frame of a video) since t = 0,
+    /// each counted once: the overlaps a viewer saw, also after they ended.
+    std::uint64_t discs_overlapped = 0;
+    double energy_drift = 0.0;           ///< (KE - KE0) / KE0
+    std::uint64_t steps = 0;             ///< time quanta taken: the state is at steps * dt
+    double max_overlap_seen = 0.0;       ///< deepest overlap any check found before rollback
+    double seconds_per_time_unit = 0.0;  ///< wall_seconds / t: cost of one simulated time unit
 };
 
 }  // namespace collide

@@ -42,8 +42,10 @@
 ///
 /// Reporting only (it changes nothing): a pair that does not overlap at the end of a step but whose
 /// straight paths from the start of the step touch at a time in [0, h) (kinematics::time_to_hit on
-/// the step's start positions and velocities) is a missed collision. It is counted in
-/// Measurements::missed_collisions and its contact point is kept as a marker in
+/// the step's start positions and velocities) is a missed collision; so is a pair apart at the
+/// start of the step that overlaps at its end but already parts (a glancing contact, in and
+/// turning out between two checks: nothing resolves a parting overlap), counted once, at the
+/// step it went in. Each is counted in Measurements::missed_collisions and its contact point is kept as a marker in
 /// Snapshot::missed_collisions. Wall tunnelling is reported through `escaped` instead.
 ///
 /// Reporting only, too: the first few steps in which the method failed (a pair missed as above,
@@ -258,6 +260,10 @@ class BasicTimeEngine final : public EngineOf<D> {
     std::vector<Vec> missed_markers_;
     double max_overlap_ = 0.0;
     std::uint64_t escaped_count_ = 0;
+    /// Discs the census has found overlapping at the end of some advance_to: a failure the
+    /// video showed stays counted after the pair has parted (Measurements::discs_overlapped).
+    std::vector<bool> overlapped_;
+    std::uint64_t overlapped_count_ = 0;
     std::vector<BasicStepFailure<D>> failures_;
     /// The current step's failures, while records are kept (at most max_step_candidates).
     std::vector<BasicStepFailure<D>> step_candidates_;

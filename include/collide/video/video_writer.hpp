@@ -80,6 +80,9 @@ struct VideoOptions {
     Cues subtitles;
     /// The track's language tag, ISO 639-2/T ("eng", "pol"; subtitle_language() makes one).
     std::string subtitle_language = "und";
+    /// The cues are drawn into the picture already: the track is written but not enabled (not
+    /// "default"), so that players show it only when asked, never on top of the same words.
+    bool subtitles_in_picture = false;
     /// MP4 only: chapters (what players list for navigation; FFmpeg's mov muxer writes them as a
     /// chapter text track and a Nero 'chpl' box), in order, back to back, within the video;
     /// empty = none. Ignored for GIF and PNG.

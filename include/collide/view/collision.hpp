@@ -86,7 +86,9 @@ struct SummaryCard {
     std::vector<std::string> columns;  ///< one heading per panel, in panel order
     std::vector<SummaryRow> rows;      ///< empty: no card
     std::string footer;                ///< one line under the table (the work ratio)
-    float opacity = 0.0F;              ///< fading in over its first half second
+    /// One line under the footer saying why the collision counts differ ("" when they agree).
+    std::string note;
+    float opacity = 0.0F;  ///< fading in over its first half second
 };
 
 /// The kinds of failure a lesson marks, each with a mark of its own (the legend names them).
