@@ -202,7 +202,7 @@ PipelineResult run_render(show::SceneView scene, const RenderPlan& plan, const J
         job.output.subtitles = subtitles;
         job.output.cues = show::subtitle_cues(plan.timeline, plan.lesson);
         // The lesson level draws the captions; full and none leave them to the track.
-        job.output.cues_in_picture = plan.render.overlays == OverlayLevel::lesson;
+        job.output.cues_in_picture = show::level_shows(plan.render.overlays).captions;
         job.output.chapter_output = chapters;
         job.output.chapters =
             show::timeline_chapters(plan.timeline, plan.lesson.intro_fade_seconds());

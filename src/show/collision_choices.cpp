@@ -74,6 +74,7 @@ LevelShows level_shows(OverlayLevel level) noexcept {
             shows.text = true;
             shows.cards = true;
             shows.caption_holds = true;
+            shows.captions = true;
             shows.queue = true;
             shows.replays = true;
             shows.next_collision = true;

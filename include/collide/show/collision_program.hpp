@@ -46,6 +46,7 @@ struct LevelShows {
     bool text = false;            ///< any words or figures at all (none: the discs alone)
     bool cards = false;           ///< the intro card and the summary card at the end
     bool caption_holds = false;   ///< captions shown, so a hold may freeze the picture for them
+    bool captions = false;        ///< captions drawn in the picture: a subtitle track starts off
     bool queue = false;           ///< --queue's strip (and --code's column beside it)
     bool replays = false;         ///< a replay of the time-driven panel's failures
     bool next_collision = false;  ///< the event-driven panel's next collision line (2D)
