@@ -315,7 +315,7 @@ RenderPlan with_replays(RenderPlan draft, const RenderRequest& request, show::Sc
     };
     lay_out_frames(draft, request, finder);
     try {
-        ask_questions(draft, request, scene, finder, &interrupts.flag());
+        ask_questions(draft, request, scene.discs(), finder, &interrupts.flag());
     } catch (const Error&) {
         interrupts.throw_if_requested();
         throw;
