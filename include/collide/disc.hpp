@@ -17,6 +17,12 @@ struct Rgb8 {
     friend constexpr bool operator==(Rgb8, Rgb8) noexcept = default;
 };
 
+/// A disc at least this many times heavier than the lightest disc of its scene counts as
+/// immovable: a piece of a barrier or a wall of heavy discs (algs4's diffusion walls: 1e5). The
+/// speed plots leave such discs out; a disc that passes through one between two time-driven
+/// checks has tunnelled through the barrier.
+inline constexpr double immovable_mass_ratio = 1000.0;
+
 /// One hard disc. Units: box lengths, box lengths per time unit, arbitrary mass units.
 struct Disc {
     Vec2 position;         ///< centre at t = 0

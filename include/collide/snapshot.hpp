@@ -27,6 +27,9 @@ struct DiscState {
     Rgb8 color;
     bool tagged = false;   ///< the scene gave it a tag (trails are drawn for tagged discs)
     bool escaped = false;  ///< time-driven only: entirely outside a walled box (tunnelled out)
+    /// Time-driven only: went through a barrier (an immovable disc, immovable_mass_ratio) between
+    /// two checks at least once so far.
+    bool tunnelled = false;
 };
 
 /// Where a particle that tunnelled out of a walled box left it, as the screen shows it: the point

@@ -20,7 +20,8 @@ struct SphereState {
     double mass = 0.0;
     Rgb8 color;
     bool tagged = false;
-    bool escaped = false;  ///< time-driven only: entirely outside a walled box (tunnelled out)
+    bool escaped = false;    ///< time-driven only: entirely outside a walled box (tunnelled out)
+    bool tunnelled = false;  ///< time-driven only: went through a barrier (as DiscState)
 };
 
 struct SphereSnapshot {

@@ -17,6 +17,18 @@ Rgba8 mark_color(const MarkStyle& style, float opacity) {
     return faded(style.color, style.floor + (1.0F - style.floor) * o);
 }
 
+/// A diamond (a square on its corner) of half-diagonal `half` round c.
+void add_diamond(OverlayBatch& batch, PointF c, float half, float width, Rgba8 color) {
+    const PointF top{c.x, c.y - half};
+    const PointF right{c.x + half, c.y};
+    const PointF bottom{c.x, c.y + half};
+    const PointF left{c.x - half, c.y};
+    batch.add_line(top, right, width, color);
+    batch.add_line(right, bottom, width, color);
+    batch.add_line(bottom, left, width, color);
+    batch.add_line(left, top, width, color);
+}
+
 void add_cross(OverlayBatch& batch, PointF c, float arm, float width, Rgba8 color) {
     batch.add_line({c.x - arm, c.y - arm}, {c.x + arm, c.y + arm}, width, color);
     batch.add_line({c.x - arm, c.y + arm}, {c.x + arm, c.y - arm}, width, color);
@@ -80,6 +92,18 @@ void paint_failure_marks(DrawList& list, const std::vector<FailureMark>& marks,
                 add_cross(list.over, at, arm, style.stroke, mark_color(style, mark.opacity));
                 break;
             }
+            case FailureKind::tunnelled: {
+                // Round the disc (a diamond holds a circle of radius half / sqrt 2), at least as
+                // big as the smallest mark, the whole diamond inside the box.
+                const float disc = static_cast<float>(mark.size * panel.scale);
+                const float half = std::min(std::max(style.min_radius, 1.42F * disc + style.stroke),
+                                            0.5F * std::min(panel.box.width(), panel.box.height()));
+                const float reach = half + style.stroke;
+                const PointF at{std::clamp(c.x, panel.box.x0 + reach, panel.box.x1 - reach),
+                                std::clamp(c.y, panel.box.y0 + reach, panel.box.y1 - reach)};
+                add_diamond(list.over, at, half, style.stroke, mark_color(style, mark.opacity));
+                break;
+            }
             case FailureKind::left_box: {
                 // From inside the box to the edge where the disc left, the tip (its chevron's
                 // joint too) just inside: the wall outside the box stops it, clear of any text.
@@ -105,6 +129,9 @@ void paint_mark_symbol(OverlayBatch& batch, FailureKind kind, PointF centre, flo
             break;
         case FailureKind::overlapping:
             add_cross(batch, centre, 0.8F * half, style.stroke, style.color);
+            break;
+        case FailureKind::tunnelled:
+            add_diamond(batch, centre, half, style.stroke, style.color);
             break;
         case FailureKind::left_box:
             // Pointing up and out, as from the box's top edge (the legend sits under the box:

@@ -1,6 +1,7 @@
 #pragma once
 // Internal: the lesson's failure marks, each kind its own shape (a ring for a missed collision,
-// a cross on an overlapping pair, an arrow to the edge where a disc left the box), the
+// a cross on an overlapping pair, an arrow to the edge where a disc left the box, a diamond
+// round a disc that went through a barrier), the
 // legend's symbols, and the dashed edge of a periodic box. The presentation layer chooses the
 // marks (show::FailureMarks); this paints them. No GL.
 

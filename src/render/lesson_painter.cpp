@@ -289,6 +289,17 @@ std::optional<float> LessonPainter::add_figures(const std::vector<Figure>& figur
         value_font = Font::body;
         shown = figures_within(figures, room, width_in(*body_font_));
     }
+    if (overflow == nullptr) {
+        // No line to continue on (the left panel beside a note and a legend): a failure that
+        // did not happen ("0 overlapping") gives its place to one that did ("12 tunnelled").
+        while (!fits(shown, atlas(value_font))) {
+            const auto zero = std::find_if(shown.rbegin(), shown.rend(), [](const Figure* f) {
+                return f->failure && f->value == "0";
+            });
+            if (zero == shown.rend()) break;
+            shown.erase(std::next(zero).base());
+        }
+    }
     bool overflowed = false;
     float x = slot.rect.x0;
     const TextSlot* row = &slot;

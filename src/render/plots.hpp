@@ -81,11 +81,8 @@ void draw_drift_plot(OverlayBatch& batch, OverlayBatch& text, const FontAtlas& f
                      const DriftPlotWords& words, const std::vector<Rgb8>& series_colors,
                      const PlotColors& colors = {});
 
-/// Discs at least this many times heavier than the lightest disc count as immovable (barriers,
-/// walls of heavy discs): they are not part of the speed distribution.
-inline constexpr double immovable_mass_ratio = 1000.0;
-
-/// The snapshot's discs that can move (finite mass below immovable_mass_ratio x the lightest).
+/// The snapshot's discs that can move (finite mass below immovable_mass_ratio x the lightest,
+/// collide/disc.hpp: barriers and walls of heavy discs are not part of the speed distribution).
 [[nodiscard]] Snapshot moving_discs(const Snapshot& snapshot);
 /// The mass from which a disc of `snapshot` counts as immovable: immovable_mass_ratio x the
 /// lightest (infinity for no discs). O(N), no copy.

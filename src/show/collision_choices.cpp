@@ -140,7 +140,7 @@ std::size_t moving_disc_count(const Scene& scene) {
     if (scene.discs.empty()) return 0;
     double lightest = std::numeric_limits<double>::infinity();
     for (const Disc& d : scene.discs) lightest = std::min(lightest, d.mass);
-    const double heavy = 1000.0 * lightest;  // the painter's immovable mass ratio
+    const double heavy = immovable_mass_ratio * lightest;
     return static_cast<std::size_t>(
         std::count_if(scene.discs.begin(), scene.discs.end(),
                       [&](const Disc& d) { return std::isfinite(d.mass) && d.mass < heavy; }));

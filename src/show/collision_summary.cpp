@@ -100,7 +100,8 @@ SummaryCard summary_card(const std::vector<SummaryPanel>& panels, bool walls,
     card.opacity = 1.0F;
     SummaryRow missed{"collisions missed", {}};
     SummaryRow overlapping{"discs that overlapped", {}};
-    SummaryRow left{"discs that left the box", {}};
+    // Through a wall or through a barrier of immovable discs: the lessons' word, "tunnelled".
+    SummaryRow tunnelled{"discs that tunnelled", {}};
     SummaryRow collisions{"collisions", {}};
     SummaryRow cost{"work", {}};
     const bool compared =
@@ -118,7 +119,7 @@ SummaryCard summary_card(const std::vector<SummaryPanel>& panels, bool walls,
         // Every disc seen overlapping in any frame, not only at the end: the break of a rack
         // overlaps six discs for a few frames, and the card must not say 0.
         overlapping.values.push_back(panel.time_driven ? count(m.discs_overlapped) : "0");
-        left.values.push_back(panel.time_driven ? count(m.escaped) : "0");
+        tunnelled.values.push_back(panel.time_driven ? count(tunnelled_discs(m, walls)) : "0");
         collisions.values.push_back(count(m.collisions_pair + m.collisions_wall));
         // The running cost graphic's unit (show::work_done): the bars named what each side
         // counts, and the footer gives the ratio. Numbers only: with the units ("1.22M pair
@@ -126,7 +127,12 @@ SummaryCard summary_card(const std::vector<SummaryPanel>& panels, bool walls,
         cost.values.push_back(count_text(work_done(m, panel.time_driven)));
     }
     card.rows = {missed, overlapping};
-    if (walls) card.rows.push_back(left);
+    // A walled box always says it (nothing tunnelled is a result); a periodic one once any disc
+    // went through a barrier.
+    const bool any_tunnelled = std::any_of(panels.begin(), panels.end(), [](const SummaryPanel& p) {
+        return p.time_driven && p.measurements.tunnelled > 0;
+    });
+    if (walls || any_tunnelled) card.rows.push_back(tunnelled);
     card.rows.push_back(collisions);
     card.rows.push_back(cost);
     card.footer = footer(panels);

@@ -15,7 +15,7 @@ namespace collide::show {
 
 namespace {
 
-constexpr std::size_t kinds = 3;
+constexpr std::size_t kinds = failure_kinds;
 
 /// The cells of the grid in a scattered order: a stride coprime with the cell count, so that any
 /// first few cells lie in different rows and columns rather than along the bottom.
@@ -62,6 +62,8 @@ std::string failure_name(FailureKind kind) {
             return "overlapping";
         case FailureKind::left_box:
             return "left the box";
+        case FailureKind::tunnelled:
+            return "went through a barrier";
     }
     return "failure";
 }
@@ -80,12 +82,12 @@ bool mark_line(bool time_driven, bool says_wrap, const Box& box) {
     return time_driven || (says_wrap && box.boundary == Boundary::periodic);
 }
 
-std::array<std::size_t, 3> fair_shares(const std::array<std::size_t, 3>& available,
-                                       std::size_t budget) {
-    std::array<std::size_t, 3> share{};
+KindCounts fair_shares(const KindCounts& available, std::size_t budget) {
+    KindCounts share{};
     // Kinds in order of fewest candidates: each takes what it needs of an equal split of what
     // is left, so a kind with few failures leaves its unused share to the others.
-    std::array<std::size_t, 3> order{0, 1, 2};
+    KindCounts order{};
+    for (std::size_t k = 0; k < kinds; ++k) order[k] = k;
     std::stable_sort(order.begin(), order.end(),
                      [&](std::size_t a, std::size_t b) { return available[a] < available[b]; });
     std::size_t left = budget;
@@ -265,8 +267,16 @@ void FailureMarks::choose(const Snapshot& snapshot, double video_time) {
         candidates[2].push_back({FailureKind::left_box, l->exit.where, l->exit.out, ring, 1.0F});
     }
 
-    const std::array<std::size_t, kinds> shares =
-        fair_shares({candidates[0].size(), candidates[1].size(), candidates[2].size()}, budget_);
+    // Discs that went through a barrier (and are not outside a walled box, whose arrow says
+    // more): a diamond round each, where it is now, for the rest of the video.
+    for (const DiscState& d : snapshot.discs) {
+        if (d.tunnelled && !d.escaped)
+            candidates[3].push_back({FailureKind::tunnelled, d.position, {}, d.radius, 1.0F});
+    }
+
+    KindCounts available{};
+    for (std::size_t k = 0; k < kinds; ++k) available[k] = candidates[k].size();
+    const KindCounts shares = fair_shares(available, budget_);
     marks_.clear();
     std::size_t total = 0;
     for (std::size_t k = 0; k < kinds; ++k) {

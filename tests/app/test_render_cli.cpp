@@ -569,7 +569,8 @@ TEST_CASE("the cost graphic's numbers and ratio on screen are the engines' count
 }
 
 // Failures that did not fit the figures row continued on the how line and took it: brownian's
-// time-driven panel lost its why ("Each step: all N²/2 pairs") once discs had left the box.
+// time-driven panel lost its why ("Each step: all N²/2 pairs") once discs had left the box
+// (tunnelled out through the wall).
 TEST_CASE("the how line keeps its why after failures that continued on it (issue #28 item 4)") {
     TempDir dir("how_line");
     const fs::path json = dir.path / "layout.json";
@@ -583,7 +584,7 @@ TEST_CASE("the how line keeps its why after failures that continued on it (issue
             for (const auto& t : slot["text"]) how += t.get<std::string>() + "|";
     }
     CAPTURE(how);
-    CHECK(how.find(" left the box|") != std::string::npos);  // a failure continued here
+    CHECK(how.find(" tunnelled|") != std::string::npos);  // a failure continued here
     CHECK(how.find("Each step: all N\u00b2/2 pairs|") != std::string::npos);
 }
 
@@ -731,4 +732,39 @@ TEST_CASE("render --code where it cannot be shown: exit 2 naming --code, nothing
     CHECK(contains(run_collide_bad_input("render gas-3d --queue --code" + out),
                    "--code: not for 3D scenes"));
     CHECK(fs::is_empty(dir.path));
+}
+
+// Discs that jumped through tunnelling's barriers were counted nowhere and left unmarked
+// (#44 item 3): once they do, the time-driven figures count them ("tunnelled") and the marks'
+// legend names their diamond. At the start nothing has tunnelled: no such figure.
+TEST_CASE("thumbnail tunnelling: discs through the barrier are a figure and a mark") {
+    TempDir dir("tunnelled");
+    const fs::path json = dir.path / "layout.json";
+    const auto figures_at = [&](const std::string& at, const std::string& size) {
+        const auto r =
+            run_collide("thumbnail tunnelling --at " + at + " --size " + size + " -o " +
+                        (dir.path / "t.png").string() + " --layout-json " + json.string());
+        REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+        std::string figures;
+        for (const std::string& f : texts_of(read_bytes(json), "figures")) figures += f + "|";
+        return figures;
+    };
+    CHECK(figures_at("0", "1280x720").find("tunnelled") == std::string::npos);
+    for (const char* size : {"1280x720", "854x480"}) {
+        CAPTURE(size);
+        const std::string figures = figures_at("6", size);
+        CAPTURE(figures);
+        const std::size_t word = figures.find(" tunnelled|");
+        REQUIRE(word != std::string::npos);
+        const std::size_t start = figures.rfind('|', word);
+        const std::string value =
+            figures.substr(start == std::string::npos ? 0 : start + 1,
+                           word - (start == std::string::npos ? 0 : start + 1));
+        CAPTURE(value);
+        CHECK(std::stoi(value) > 0);
+        std::string marks;
+        for (const std::string& m : texts_of(read_bytes(json), "marks")) marks += m + "|";
+        CAPTURE(marks);
+        CHECK(marks.find("went through a barrier") != std::string::npos);
+    }
 }

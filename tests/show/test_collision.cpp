@@ -149,14 +149,25 @@ TEST_CASE("lesson figures are plain words with thousands separators") {
     m.escaped = 0;
     m.collisions_pair = 1000000;
     const auto td = time_driven_figures(m, true);
-    REQUIRE(td.size() == 3);  // nobody left the box: no "left the box" figure yet
+    REQUIRE(td.size() == 3);  // nobody tunnelled: no "tunnelled" figure yet
     CHECK(td[0].value == "12,345");
     CHECK(td[0].label == "missed");
     CHECK(td[0].failure);
     CHECK(td[2].value == "1,000,000");
-    m.escaped = 4;
-    CHECK(time_driven_figures(m, true).size() == 4);
+    m.escaped = 4;  // out through the wall: tunnelled
+    REQUIRE(time_driven_figures(m, true).size() == 4);
+    CHECK(time_driven_figures(m, true)[2].value == "4");
+    CHECK(time_driven_figures(m, true)[2].label == "tunnelled");
+    CHECK(time_driven_figures(m, true)[2].failure);
     CHECK(time_driven_figures(m, false).size() == 3);  // periodic boxes have nothing to leave
+    m.escaped = 0;
+    m.tunnelled = 1500;  // through a barrier (the engine counts the escaped discs in it too)
+    for (const bool walls : {true, false}) {
+        REQUIRE(time_driven_figures(m, walls).size() == 4);
+        CHECK(time_driven_figures(m, walls)[2].value == "1,500");
+        CHECK(time_driven_figures(m, walls)[2].label == "tunnelled");
+    }
+    m.tunnelled = 0;
     const auto ed = event_driven_figures(m);
     CHECK(ed[0].value == "1,000,000");
     CHECK(ed[0].label == "collisions");

@@ -57,24 +57,29 @@ Snapshot failing(std::size_t missed, std::size_t pairs, std::size_t gone, double
 }  // namespace
 
 TEST_CASE("the marker budget is shared fairly between the kinds present") {
-    CHECK(fair_shares({100, 100, 100}, 30) == std::array<std::size_t, 3>{10, 10, 10});
+    CHECK(fair_shares({100, 100, 100, 0}, 30) == KindCounts{10, 10, 10, 0});
+    CHECK(fair_shares({100, 100, 100, 100}, 30) == KindCounts{7, 7, 8, 8});
     // A kind with few failures gets them all; the others share what it leaves.
-    CHECK(fair_shares({2, 100, 100}, 30) == std::array<std::size_t, 3>{2, 14, 14});
-    CHECK(fair_shares({0, 741, 0}, 30) == std::array<std::size_t, 3>{0, 30, 0});
-    CHECK(fair_shares({5, 3, 1}, 30) == std::array<std::size_t, 3>{5, 3, 1});
-    CHECK(fair_shares({0, 0, 0}, 30) == std::array<std::size_t, 3>{0, 0, 0});
+    CHECK(fair_shares({2, 100, 100, 0}, 30) == KindCounts{2, 14, 14, 0});
+    CHECK(fair_shares({0, 741, 0, 4}, 30) == KindCounts{0, 26, 0, 4});
+    CHECK(fair_shares({5, 3, 1, 2}, 30) == KindCounts{5, 3, 1, 2});
+    CHECK(fair_shares({0, 0, 0, 0}, 30) == KindCounts{0, 0, 0, 0});
     for (std::size_t a = 0; a < 40; a += 3) {
         for (std::size_t b = 0; b < 40; b += 5) {
             for (std::size_t c = 0; c < 40; c += 7) {
-                const std::array<std::size_t, 3> available{a, b, c};
-                const std::array<std::size_t, 3> share = fair_shares(available, 30);
-                INFO(a << " " << b << " " << c);
-                CHECK(share[0] + share[1] + share[2] == std::min<std::size_t>(30, a + b + c));
-                for (std::size_t k = 0; k < 3; ++k) {
-                    CHECK(share[k] <= available[k]);
-                    for (std::size_t j = 0; j < 3; ++j) {
-                        // A kind that did not get all it has got at least as many as any other.
-                        if (share[k] < available[k]) CHECK(share[k] + 1 >= share[j]);
+                for (std::size_t d = 0; d < 40; d += 11) {
+                    const KindCounts available{a, b, c, d};
+                    const KindCounts share = fair_shares(available, 30);
+                    INFO(a << " " << b << " " << c << " " << d);
+                    CHECK(share[0] + share[1] + share[2] + share[3] ==
+                          std::min<std::size_t>(30, a + b + c + d));
+                    for (std::size_t k = 0; k < share.size(); ++k) {
+                        CHECK(share[k] <= available[k]);
+                        for (std::size_t j = 0; j < share.size(); ++j) {
+                            // A kind that did not get all it has got at least as many as any
+                            // other.
+                            if (share[k] < available[k]) CHECK(share[k] + 1 >= share[j]);
+                        }
                     }
                 }
             }
@@ -137,6 +142,41 @@ TEST_CASE("each kind of failure is handed over with its own kind, and the legend
     CHECK(words.items[2].name == "left the box");
     CHECK(words.unmarked.empty());
     CHECK(words.wraps.empty());  // walls
+}
+
+TEST_CASE("a disc that went through a barrier keeps a diamond where it is, frame after frame") {
+    FailureMarks marks;
+    Snapshot s = failing(0, 0, 0);
+    s.discs.push_back(disc({0.3, 0.4}));
+    DiscState through = disc({0.7, 0.6}, {0.5, 0.0}, 0.02);
+    through.tunnelled = true;
+    s.discs.push_back(through);
+    DiscState gone = disc({1.3, 0.6}, {1.0, 0.0});  // through a wall too: its arrow says it
+    gone.tunnelled = true;
+    gone.escaped = true;
+    s.discs.push_back(gone);
+    marks.update(s, 0.0);
+    REQUIRE(count_kind(marks.marks(), FailureKind::tunnelled) == 1);
+    CHECK(count_kind(marks.marks(), FailureKind::left_box) == 1);
+    const auto diamond =
+        std::find_if(marks.marks().begin(), marks.marks().end(),
+                     [](const FailureMark& m) { return m.kind == FailureKind::tunnelled; });
+    CHECK(diamond->where.x == doctest::Approx(0.7));
+    CHECK(diamond->size == doctest::Approx(0.02));
+    CHECK(diamond->opacity == 1.0F);
+    REQUIRE(marks.words().items.size() == 2);
+    CHECK(marks.words().items[0].name == "left the box");
+    CHECK(marks.words().items[1].name == "went through a barrier");
+    // Long after, moved on: still marked, at full strength, where the disc is now.
+    s.time = 30.0;
+    s.discs[1].position = {0.9, 0.2};
+    marks.update(s, 30.0);
+    for (const FailureMark& m : marks.marks()) {
+        if (m.kind != FailureKind::tunnelled) continue;
+        CHECK(m.where.x == doctest::Approx(0.9));
+        CHECK(m.opacity == 1.0F);
+    }
+    CHECK(count_kind(marks.marks(), FailureKind::tunnelled) == 1);
 }
 
 TEST_CASE("the legend names a kind from the first frame it is marked on, in order of appearance") {

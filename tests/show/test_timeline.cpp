@@ -256,12 +256,13 @@ TEST_CASE("the epilogue's card: the final figures side by side and the work rati
     const SummaryCard card = summary_card({{time, true}, {event, false}}, true, "t = 3.000");
     CHECK(card.title == "In the end, at t = 3.000");
     CHECK(card.columns == std::vector<std::string>{"Time-driven", "Event-driven"});
-    REQUIRE(card.rows.size() == 5);  // missed, overlapped, left the box, collisions, work
+    REQUIRE(card.rows.size() == 5);  // missed, overlapped, tunnelled, collisions, work
     CHECK(card.rows[0].values == std::vector<std::string>{"48", "0"});
     // Every disc that overlapped in any frame, not the 3 pairs overlapping at the end.
     CHECK(card.rows[1].label == "discs that overlapped");
     CHECK(card.rows[1].values == std::vector<std::string>{"11", "0"});
-    CHECK(card.rows[2].label == "discs that left the box");
+    CHECK(card.rows[2].label == "discs that tunnelled");
+    CHECK(card.rows[2].values == std::vector<std::string>{"2", "0"});  // out through the wall
     CHECK(card.rows[3].values == std::vector<std::string>{"100", "150"});
     // The cost graphic's unit: overlap tests against predictions plus queue operations, in the
     // panels' format (thousands separators, no "400.0k").
@@ -271,6 +272,16 @@ TEST_CASE("the epilogue's card: the final figures side by side and the work rati
           "Event-driven: " + work_ratio(work_done(time, true), work_done(event, false)));
     // A periodic box has nothing to leave; one panel has nothing to compare.
     CHECK(summary_card({{time, true}, {event, false}}, false, "t").rows.size() == 4);
+    // Through a barrier of immovable discs (the engine counts the escaped ones in it too): the
+    // card counts them, in a periodic box as well.
+    time.escaped = 0;
+    time.tunnelled = 1234;
+    for (const bool walls : {true, false}) {
+        const SummaryCard through = summary_card({{time, true}, {event, false}}, walls, "t");
+        REQUIRE(through.rows.size() == 5);
+        CHECK(through.rows[2].label == "discs that tunnelled");
+        CHECK(through.rows[2].values == std::vector<std::string>{"1,234", "0"});
+    }
     CHECK(summary_card({{event, false}}, false, "t").footer.empty());
     CHECK(summary_opacity(0.0) == 0.0F);
     CHECK(summary_opacity(0.25) == doctest::Approx(0.5));

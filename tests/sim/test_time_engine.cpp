@@ -337,6 +337,59 @@ TEST_CASE("tunnelling through a wall: the disc escapes and keeps flying outside"
     CHECK(careful.snapshot().discs[0].velocity.x == -1.0);
 }
 
+TEST_CASE("tunnelling through a barrier: a disc that steps over an immovable disc is counted") {
+    // A barrier piece (1e5 times the lightest: immovable) at (0.5, 0.5); a light disc steps over
+    // it (0.1 in one step across 0.04 of contact). Lower down a light disc steps over another
+    // light one at rest: a missed collision, but no barrier to go through.
+    const Scene scene = make_scene(
+        1.0, 1.0,
+        {make_disc({0.5, 0.5}, {0.0, 0.0}, 0.01, 1e5), make_disc({0.44, 0.5}, {1.0, 0.0}, 0.01),
+         make_disc({0.44, 0.2}, {1.0, 0.0}, 0.01), make_disc({0.5, 0.2}, {0.0, 0.0}, 0.01)});
+    TimeEngine engine(scene, time_options(0.1));
+    engine.advance_to(0.1);
+    CHECK(engine.measurements().missed_collisions == 2);
+    CHECK(engine.measurements().escaped == 0);
+    CHECK(engine.measurements().tunnelled == 1);
+    Snapshot s = engine.snapshot();
+    CHECK_FALSE(s.discs[0].tunnelled);  // the barrier stays put
+    CHECK(s.discs[1].tunnelled);
+    CHECK_FALSE(s.discs[2].tunnelled);
+    CHECK_FALSE(s.discs[3].tunnelled);
+    // It stays flagged once past. Both moving discs then step through the right wall (0.94 to
+    // 1.04): two escaped, two tunnelled, the one through the barrier and the wall counted once.
+    engine.advance_to(0.8);
+    CHECK(engine.measurements().escaped == 2);
+    CHECK(engine.measurements().tunnelled == 2);
+    s = engine.snapshot();
+    CHECK(s.discs[1].tunnelled);
+    CHECK(s.discs[1].escaped);
+    CHECK_FALSE(s.discs[2].tunnelled);
+
+    // A periodic box has no wall to leave, the barrier is still there to go through.
+    Scene periodic = scene;
+    periodic.box.boundary = Boundary::periodic;
+    TimeEngine wrapped(periodic, time_options(0.1));
+    wrapped.advance_to(0.1);
+    CHECK(wrapped.measurements().tunnelled == 1);
+
+    // Small steps: the disc bounces off the barrier, nothing tunnels.
+    TimeEngine careful(scene, time_options(0.001));
+    careful.advance_to(0.1);
+    CHECK(careful.measurements().tunnelled == 0);
+    CHECK(careful.snapshot().discs[1].velocity.x < 0.0);
+}
+
+TEST_CASE("tunnelling through a wall counts among the discs that tunnelled") {
+    const Scene scene = make_scene(
+        1.0, 1.0,
+        {make_disc({0.95, 0.5}, {1.0, 0.0}, 0.01), make_disc({0.5, 0.5}, {0.0, 0.3}, 0.01)});
+    TimeEngine engine(scene, time_options(0.1));
+    engine.advance_to(0.1);
+    CHECK(engine.measurements().escaped == 1);
+    CHECK(engine.measurements().tunnelled == 1);
+    CHECK_FALSE(engine.snapshot().discs[0].tunnelled);  // its own flag: escaped
+}
+
 TEST_CASE("failure records: the first failing step, its pair and their states before and after") {
     // Rests first: step 0 (0..0.1) ends with the pair 0.1 apart; step 1 swaps them (missed).
     const Scene scene = make_scene(

@@ -108,7 +108,13 @@ inline constexpr const char* cost_heading = "Work so far";
 [[nodiscard]] std::vector<std::string> event_driven_counters(const Measurements& m,
                                                              double energy_drift);
 
+/// Discs that tunnelled so far: out through a wall (`walls`: the box has walls) or through a
+/// barrier of immovable discs (Measurements::tunnelled counts both; escaped discs alone count
+/// where only they are known).
+[[nodiscard]] std::uint64_t tunnelled_discs(const Measurements& m, bool walls) noexcept;
+
 /// The lesson level's figures in plain words. `walls`: the box has walls (discs can leave it).
+/// Discs that tunnelled (through a wall or a barrier) are a figure once there are any.
 [[nodiscard]] std::vector<Figure> time_driven_figures(const Measurements& m, bool walls);
 [[nodiscard]] std::vector<Figure> event_driven_figures(const Measurements& m);
 

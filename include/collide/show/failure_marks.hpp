@@ -44,12 +44,14 @@ inline constexpr double missed_mark_radii = 2.5;
 /// choice: `says_wrap`). The same for every frame of a video, so the layout stays put.
 [[nodiscard]] bool mark_line(bool time_driven, bool says_wrap, const Box& box);
 
+/// A number per kind of failure, indexed by FailureKind's value.
+using KindCounts = std::array<std::size_t, failure_kinds>;
+
 /// Shares `budget` marks between kinds with `available[k]` candidates each: every kind gets an
 /// equal share, and what a kind cannot use goes to the others (water filling). The result is
 /// never more than available, sums to min(budget, total), and differs by at most one between
 /// kinds that have more candidates than their share.
-[[nodiscard]] std::array<std::size_t, 3> fair_shares(const std::array<std::size_t, 3>& available,
-                                                     std::size_t budget);
+[[nodiscard]] KindCounts fair_shares(const KindCounts& available, std::size_t budget);
 
 /// Picks `count` of `points` (box coordinates, in order of preference) spread over the box: the
 /// box is cut into mark_grid x mark_grid cells visited in a fixed scattered order, each round

@@ -55,6 +55,9 @@ struct Measurements {
     std::uint64_t overlap_checks = 0;     ///< pair overlap tests performed
     std::uint64_t missed_collisions = 0;  ///< contacts inside a step that went undetected
     std::uint64_t escaped = 0;            ///< discs entirely outside a walled box (tunnelled)
+    /// Discs that tunnelled: went through a wall (escaped) or through a barrier (a missed
+    /// collision with an immovable disc, immovable_mass_ratio) at least once.
+    std::uint64_t tunnelled = 0;
     std::uint64_t overlapping_pairs = 0;  ///< pairs overlapping now
     /// Discs found overlapping another after any advance (each frame of a video) since t = 0,
     /// each counted once: the overlaps a viewer saw, also after they ended.

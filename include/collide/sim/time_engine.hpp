@@ -45,8 +45,11 @@
 /// the step's start positions and velocities) is a missed collision; so is a pair apart at the
 /// start of the step that overlaps at its end but already parts (a glancing contact, in and
 /// turning out between two checks: nothing resolves a parting overlap), counted once, at the
-/// step it went in. Each is counted in Measurements::missed_collisions and its contact point is kept as a marker in
-/// Snapshot::missed_collisions. Wall tunnelling is reported through `escaped` instead.
+/// step it went in. Each is counted in Measurements::missed_collisions and its contact point is
+/// kept as a marker in Snapshot::missed_collisions. Wall tunnelling is reported through `escaped`
+/// instead. A missed pair of a disc and an immovable one (immovable_mass_ratio times the lightest
+/// disc: a piece of a barrier) means the disc went through the barrier: it is flagged
+/// (DiscState::tunnelled) and counted with the escaped discs in Measurements::tunnelled.
 ///
 /// Reporting only, too: the first few steps in which the method failed (a pair missed as above,
 /// or a disc that crossed a wall line of a walled box during the step and ended entirely past
@@ -245,6 +248,8 @@ class BasicTimeEngine final : public EngineOf<D> {
     std::vector<double> radius_;
     std::vector<double> mass_;
     std::vector<bool> escaped_;
+    std::vector<bool> through_barrier_;  ///< went through an immovable disc at least once
+    double immovable_mass_ = 0.0;        ///< from this mass on a disc is immovable (a barrier)
 
     double time_ = 0.0;        ///< the state's time: steps_ * dt
     double clock_ = 0.0;       ///< the time asked for by the latest advance_to (time_ is at most
@@ -260,6 +265,7 @@ class BasicTimeEngine final : public EngineOf<D> {
     std::vector<Vec> missed_markers_;
     double max_overlap_ = 0.0;
     std::uint64_t escaped_count_ = 0;
+    std::uint64_t tunnelled_count_ = 0;  ///< discs escaped or through a barrier
     /// Discs the census has found overlapping at the end of some advance_to: a failure the
     /// video showed stays counted after the pair has parted (Measurements::discs_overlapped).
     std::vector<bool> overlapped_;

@@ -96,7 +96,11 @@ enum class FailureKind : std::uint8_t {
     missed,       ///< a collision the time-driven engine stepped over: a ring where it happened
     overlapping,  ///< two discs overlapping now: a cross on the pair
     left_box,     ///< a disc that left a walled box: an arrow out of the edge where it left
+    tunnelled,    ///< a disc that went through a barrier between two checks: a diamond round it
 };
+
+/// How many kinds of failure there are (FailureKind's values, 0 .. failure_kinds - 1).
+inline constexpr std::size_t failure_kinds = 4;
 
 /// One failure mark in a panel's box (lesson level). Which failures get one is decided by the
 /// presentation layer (show::FailureMarks); the renderer paints what it is handed.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <tuple>
 #include <type_traits>
@@ -69,6 +70,10 @@ BasicTimeEngine<D>::BasicTimeEngine(const SceneType& scene, const EngineOptions&
     }
     displacement_.assign(n, Vec{});
     escaped_.assign(n, false);
+    through_barrier_.assign(n, false);
+    double lightest = std::numeric_limits<double>::infinity();
+    for (const double m : mass_) lightest = std::min(lightest, m);
+    immovable_mass_ = immovable_mass_ratio * lightest;
     grid_ = std::make_unique<detail::BasicCellGrid<D>>();
     sweep_ = std::make_unique<detail::BasicPairSweep<D>>();
     initial_energy_ = kinetic_energy();
@@ -274,6 +279,13 @@ void BasicTimeEngine<D>::detect_pair_contacts(double h) {
             step_candidates_.push_back(failure);
         }
         step_failed_ = true;
+    }
+    // A disc that stepped over a piece of a barrier (an immovable disc) went through the barrier.
+    // A graze turned back out on the side it came from: not a passage.
+    for (const Miss& miss : misses) {
+        const bool heavy_i = mass_[miss.i] >= immovable_mass_;
+        const bool heavy_j = mass_[miss.j] >= immovable_mass_;
+        if (heavy_i != heavy_j) through_barrier_[heavy_i ? miss.j : miss.i] = true;
     }
     for (const std::vector<Miss>* list : {&misses, &grazes}) {
         for (const Miss& miss : *list) {
@@ -487,11 +499,13 @@ void BasicTimeEngine<D>::take_census() {
     // Escaped = entirely past a wall line. A disc whose centre is outside by less than r still
     // touches the wall and is reflected at the next check, so it is not (yet) an escape.
     escaped_count_ = 0;
+    tunnelled_count_ = 0;
     for (std::size_t i = 0; i < position_.size(); ++i) {
         escaped_[i] = box_.boundary == Boundary::walls && is_outside(position_[i], radius_[i]);
         if (escaped_[i]) {
             ++escaped_count_;
         }
+        if (escaped_[i] || through_barrier_[i]) ++tunnelled_count_;
     }
 }
 
@@ -544,9 +558,9 @@ std::uint64_t BasicTimeEngine<D>::bytes() const noexcept {
                                           sizeof(typename std::decay_t<decltype(v)>::value_type));
     };
     return held(position_) + held(velocity_) + held(displacement_) + held(radius_) + held(mass_) +
-           escaped_.capacity() / 8 + overlapped_.capacity() / 8 + held(contacts_) +
-           held(overlapping_pairs_) + held(missed_markers_) + held(candidates_) + grid_->bytes() +
-           sweep_->bytes() + core_.bytes();
+           (escaped_.capacity() + through_barrier_.capacity()) / 8 + overlapped_.capacity() / 8 +
+           held(contacts_) + held(overlapping_pairs_) + held(missed_markers_) + held(candidates_) +
+           grid_->bytes() + sweep_->bytes() + core_.bytes();
 }
 
 template <int D>
@@ -572,6 +586,7 @@ SnapshotOf<D> BasicTimeEngine<D>::snapshot() const {
         ();
         BasicEngineCore<D>::set_motion(d, position_[i], velocity_[i], radius_[i], mass_[i]);
         d.escaped = escaped_[i];
+        d.tunnelled = through_barrier_[i];
     }
     snap.overlapping_pairs = overlapping_pairs_;
     snap.missed_collisions = missed_markers_;
@@ -591,6 +606,7 @@ Measurements BasicTimeEngine<D>::measurements() const {
     m.overlap_checks = overlap_checks_;
     m.missed_collisions = missed_;
     m.escaped = escaped_count_;
+    m.tunnelled = tunnelled_count_;
     m.discs_overlapped = overlapped_count_;
     m.overlapping_pairs = overlapping_pairs_.size();
     m.energy_drift =
