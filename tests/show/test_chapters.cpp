@@ -88,7 +88,7 @@ TEST_CASE("chapters: a replay is one chapter of its own and missing words get th
 }
 
 TEST_CASE(
-    "chapters: a question and its answer are two chapters; the player stops on the question") {
+    "chapters: a question and its answer are two chapters: the player stops on the question") {
     TimelineScript script = lesson_script();
     script.cues.clear();
     script.questions = {{3.0, 2.0, 1.0, "Which pair collides next?", "B: discs 3 and 7"}};
@@ -203,7 +203,7 @@ TEST_CASE("heap chapters: one per operation, short ones grouped, none under 4 s"
     }
 }
 
-TEST_CASE("heap chapters: heapsort's two phases by name; a short video is one chapter") {
+TEST_CASE("heap chapters: heapsort's two phases by name: a short video is one chapter") {
     const HeapProgram sort(pq::HeapRecord::heapsort(pq::parse_sort_keys("S O R T E X A M P L E"),
                                                      pq::Orientation::max),
                           heap_pacing(0.8), 1);
