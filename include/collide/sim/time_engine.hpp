@@ -45,8 +45,9 @@
 /// the step's start positions and velocities) is a missed collision; so is a pair apart at the
 /// start of the step that overlaps at its end but already parts (a glancing contact, in and
 /// turning out between two checks: nothing resolves a parting overlap), counted once, at the
-/// step it went in. Each is counted in Measurements::missed_collisions and its contact point is kept as a marker in
-/// Snapshot::missed_collisions. Wall tunnelling is reported through `escaped` instead.
+/// step it went in. Each is counted in Measurements::missed_collisions and its contact point is
+/// kept as a marker in Snapshot::missed_collisions. Wall tunnelling is reported through `escaped`
+/// instead.
 ///
 /// Reporting only, too: the first few steps in which the method failed (a pair missed as above,
 /// or a disc that crossed a wall line of a walled box during the step and ended entirely past
