@@ -91,11 +91,13 @@ class AlgorithmFrameProgram final : public FrameProgram {
 
 }  // namespace
 
-AlgorithmVideoSummary write_algorithm_video(const OutputChoice& output, const AlgorithmVideoGeometry& geometry,
-                                ProgressMode progress_mode, double duration, double still_time,
-                                const AlgorithmFrameDraw& draw, const SubtitleOutput& subtitles,
-                                const Cues& cues, const ChapterOutput& chapters,
-                                const std::optional<Chapters>& chapter_list) {
+AlgorithmVideoSummary write_algorithm_video(const OutputChoice& output,
+                                            const AlgorithmVideoGeometry& geometry,
+                                            ProgressMode progress_mode, double duration,
+                                            double still_time, const AlgorithmFrameDraw& draw,
+                                            const SubtitleOutput& subtitles, const Cues& cues,
+                                            const ChapterOutput& chapters,
+                                            const std::optional<Chapters>& chapter_list) {
     InterruptGuard interrupts;
     VideoJob job;
     job.output.path = output.path;

@@ -70,10 +70,10 @@ using AlgorithmFrameDraw = std::function<void(double t, Image& frame)>;
 /// a sidecar file (video_job.hpp); `chapters`: where the chapters go (the MP4, a chapters file
 /// and/or a slide folder): `chapter_list` when given (a heap video's, one per operation), else
 /// one per step caption (show::chapters_from_cues).
-AlgorithmVideoSummary write_algorithm_video(const OutputChoice& output, const AlgorithmVideoGeometry& geometry,
-                                ProgressMode progress_mode, double duration, double still_time,
-                                const AlgorithmFrameDraw& draw, const SubtitleOutput& subtitles = {},
-                                const Cues& cues = {}, const ChapterOutput& chapters = {},
-                                const std::optional<Chapters>& chapter_list = std::nullopt);
+AlgorithmVideoSummary write_algorithm_video(
+    const OutputChoice& output, const AlgorithmVideoGeometry& geometry, ProgressMode progress_mode,
+    double duration, double still_time, const AlgorithmFrameDraw& draw,
+    const SubtitleOutput& subtitles = {}, const Cues& cues = {}, const ChapterOutput& chapters = {},
+    const std::optional<Chapters>& chapter_list = std::nullopt);
 
 }  // namespace collide::app

@@ -428,6 +428,25 @@ class TomlReader : private toml_text::ValueReader {
         return text;
     }
 
+    // A cue's `at`: seconds of video (number() refuses what is not finite), at or after 0,
+    // after the previous cue of its kind (`what`), before the end of the video.
+    double cue_time(const toml::node& at, const std::string& field, std::optional<double> previous,
+                    const std::string& what) const {
+        const double t = number(at, field);
+        if (!(t >= 0.0)) fail(at, field, "must be >= 0 (got " + num(t) + ")");
+        if (previous && !(t > *previous)) {
+            fail(at, field,
+                 "out of order: " + num(t) + " s is not after the previous " + what + " at " +
+                     num(*previous) + " s");
+        }
+        const RenderHints& r = scene_.render;
+        if (r.duration && t >= *r.duration) {
+            fail(at, field,
+                 "beyond the video: " + num(t) + " s, the video lasts " + num(*r.duration) + " s");
+        }
+        return t;
+    }
+
     // [[render.captions]]: at (seconds of video, increasing, within the video) and text.
     void read_captions(const toml::node& n) {
         const toml::array* a = n.as_array();
@@ -442,19 +461,9 @@ class TomlReader : private toml_text::ValueReader {
             if (at == nullptr) fail(t, field + ".at", "missing (seconds of video)");
             if (text == nullptr) fail(t, field + ".text", "missing");
             CaptionCue cue;
-            cue.at = number(*at, field + ".at");
-            if (!(cue.at >= 0.0))
-                fail(*at, field + ".at", "must be >= 0 (got " + num(cue.at) + ")");
-            if (!r.captions.empty() && !(cue.at > r.captions.back().at)) {
-                fail(*at, field + ".at",
-                     "out of order: " + num(cue.at) + " s is not after the previous caption at " +
-                         num(r.captions.back().at) + " s");
-            }
-            if (r.duration && cue.at >= *r.duration) {
-                fail(*at, field + ".at",
-                     "beyond the video: " + num(cue.at) + " s, the video lasts " +
-                         num(*r.duration) + " s");
-            }
+            cue.at = cue_time(
+                *at, field + ".at",
+                r.captions.empty() ? std::nullopt : std::optional(r.captions.back().at), "caption");
             cue.text = caption(*text, field + ".text");
             if (const toml::node* v = t.get("event"))
                 cue.event_text = caption(*v, field + ".event");
@@ -481,19 +490,10 @@ class TomlReader : private toml_text::ValueReader {
             if (at == nullptr) fail(t, field + ".at", "missing (seconds of video)");
             if (kind == nullptr) fail(t, field + ".kind", "missing (next-collision or how-many)");
             QuestionCue cue;
-            cue.at = number(*at, field + ".at");
-            if (!(cue.at >= 0.0) || !std::isfinite(cue.at))
-                fail(*at, field + ".at", "must be >= 0 (got " + num(cue.at) + ")");
-            if (!r.questions.empty() && !(cue.at > r.questions.back().at)) {
-                fail(*at, field + ".at",
-                     "out of order: " + num(cue.at) + " s is not after the previous question at " +
-                         num(r.questions.back().at) + " s");
-            }
-            if (r.duration && cue.at >= *r.duration) {
-                fail(*at, field + ".at",
-                     "beyond the video: " + num(cue.at) + " s, the video lasts " +
-                         num(*r.duration) + " s");
-            }
+            cue.at =
+                cue_time(*at, field + ".at",
+                         r.questions.empty() ? std::nullopt : std::optional(r.questions.back().at),
+                         "question");
             cue.kind = one_of(*kind, field + ".kind", question_kind_names);
             if (const toml::node* text = t.get("text")) cue.text = caption(*text, field + ".text");
             if (const toml::node* think = t.get("think")) {

@@ -294,7 +294,7 @@ TEST_CASE("layout JSON names every text line with its pixel height") {
 
 // Issue 44 item 4: note, marks legend and how lines take at most two lines under the figures,
 // so that the boxes keep 55 %; one box takes the frame's height beside its text.
-TEST_CASE("lesson layout: note, marks and how in two lines; the boxes keep 55 % of 16:9") {
+TEST_CASE("lesson layout: note, marks and how in two lines: the boxes keep 55 % of 16:9") {
     for (const Size size : {Size{854, 480}, Size{1280, 720}, Size{1920, 1080}, Size{3840, 2160}}) {
         for (const bool right_marks : {false, true}) {
             INFO(size.width << "x" << size.height << (right_marks ? ", marks on both" : ""));

@@ -88,7 +88,7 @@ TEST_CASE("chapters: a replay is one chapter of its own and missing words get th
 }
 
 TEST_CASE(
-    "chapters: a question and its answer are two chapters; the player stops on the question") {
+    "chapters: a question and its answer are two chapters: the player stops on the question") {
     TimelineScript script = lesson_script();
     script.cues.clear();
     script.questions = {{3.0, 2.0, 1.0, "Which pair collides next?", "B: discs 3 and 7"}};
@@ -166,7 +166,7 @@ TEST_CASE("heap chapters: one per operation, short ones grouped, none under 4 s"
         CAPTURE(pace);
         const HeapProgram lesson(
             pq::HeapRecord::operations(pq::parse_heap_ops("P Q E * X A M * P L E *"), kinds,
-                                         pq::Orientation::max),
+                                       pq::Orientation::max),
             heap_pacing(pace), 1);
         const double seconds = lesson.duration();
         const Chapters chapters = heap_chapters(lesson, seconds, 30);
@@ -203,10 +203,10 @@ TEST_CASE("heap chapters: one per operation, short ones grouped, none under 4 s"
     }
 }
 
-TEST_CASE("heap chapters: heapsort's two phases by name; a short video is one chapter") {
+TEST_CASE("heap chapters: heapsort's two phases by name: a short video is one chapter") {
     const HeapProgram sort(pq::HeapRecord::heapsort(pq::parse_sort_keys("S O R T E X A M P L E"),
-                                                     pq::Orientation::max),
-                          heap_pacing(0.8), 1);
+                                                    pq::Orientation::max),
+                           heap_pacing(0.8), 1);
     const Chapters phases = heap_chapters(sort, sort.duration(), 30);
     REQUIRE(phases.size() == 2);
     CHECK(phases[0].title == "build the heap");
