@@ -16,12 +16,15 @@
 #include "../support/shell.hpp"
 #include "../support/skip.hpp"
 #include "../support/temp_dir.hpp"
+#include "headless_browser.hpp"
 #include "multilingual_scene.hpp"
 #include "run_collide.hpp"
 #include "subtitle_file.hpp"
 
 namespace fs = std::filesystem;
 using collide::test::capture;
+using collide::test::chromium_program;
+using collide::test::finished_test_log;
 using collide::test::have_ffprobe;
 using collide::test::parse_subtitles;
 using collide::test::ParsedCue;
@@ -89,32 +92,6 @@ std::string subtitle_default(const fs::path& file) {
                              [](unsigned char c) { return std::isspace(c) != 0; }),
               out.end());
     return out;
-}
-
-std::string chromium_program() {
-    for (const char* name : {"chromium", "chromium-browser", "google-chrome"}) {
-        if (std::system(("command -v " + std::string(name) + " >/dev/null 2>&1").c_str()) == 0)
-            return name;
-    }
-    return "";
-}
-
-/// The page's DOM after `budget_ms` of virtual time in headless Chromium, with its own profile.
-std::string page_dom(const std::string& chromium, const fs::path& profile, const std::string& url,
-                     int budget_ms) {
-    return capture("timeout 120 " + chromium +
-                   " --headless --no-sandbox --disable-gpu --no-first-run --mute-audio"
-                   " --autoplay-policy=no-user-gesture-required --virtual-time-budget=" +
-                   std::to_string(budget_ms) + " --user-data-dir=" + profile.string() +
-                   " --dump-dom '" + url + "' 2>/dev/null");
-}
-
-/// The text of <pre id="test-log"> in `dom`.
-std::string test_log(const std::string& dom) {
-    const std::size_t open = dom.find("<pre id=\"test-log\"");
-    if (open == std::string::npos) return "";
-    const std::size_t from = dom.find('>', open) + 1;
-    return dom.substr(from, dom.find("</pre>", from) - from);
 }
 
 }  // namespace
@@ -222,8 +199,8 @@ TEST_CASE("the slide player and a <track> page in headless Chromium draw no capt
     // The slide player: its cues are loaded, no track is drawn, at the start or at any stop.
     const std::string page = collide::test::read_all(slides / "index.html");
     CHECK(page.find("label=\"Subtitles\" default") == std::string::npos);
-    const std::string log = test_log(page_dom(
-        chromium, dir.path / "profile", "file://" + slides.string() + "/index.html?test", 20000));
+    const std::string log = finished_test_log(
+        chromium, dir.path / "profile", "file://" + slides.string() + "/index.html?test", 20000);
     INFO("test log: " << log);
     REQUIRE(log.find("end") != std::string::npos);
     CHECK(log.find("subtitles 4") != std::string::npos);
@@ -242,8 +219,8 @@ TEST_CASE("the slide player and a <track> page in headless Chromium draw no capt
                               "  document.getElementById('test-log').textContent ="
                               "    'tracks ' + v.textTracks.length + ' mode ' + t.mode + ' end';"
                               "}, 500);</script></body></html>");
-    const std::string own = test_log(page_dom(chromium, dir.path / "profile2",
-                                              "file://" + (dir.path / "own.html").string(), 5000));
+    const std::string own = finished_test_log(chromium, dir.path / "profile2",
+                                              "file://" + (dir.path / "own.html").string(), 5000);
     INFO("own page: " << own);
     REQUIRE(own.find("end") != std::string::npos);
     CHECK(own.find("tracks 1") != std::string::npos);

@@ -15,12 +15,15 @@
 #include "../support/shell.hpp"
 #include "../support/skip.hpp"
 #include "../support/temp_dir.hpp"
+#include "headless_browser.hpp"
 #include "multilingual_scene.hpp"
 #include "run_collide.hpp"
 #include "subtitle_file.hpp"
 
 namespace fs = std::filesystem;
 using collide::test::capture;
+using collide::test::chromium_program;
+using collide::test::finished_test_log;
 using collide::test::have_ffprobe;
 using collide::test::parse_subtitles;
 using collide::test::ParsedCue;
@@ -244,15 +247,6 @@ TEST_CASE("render --slides, --chapters, --chapters-file: bad input exits 2 and w
 
 namespace {
 
-/// The Chromium program on PATH ("" when none: Debian's package is `chromium`).
-std::string chromium_program() {
-    for (const char* name : {"chromium", "chromium-browser", "google-chrome"}) {
-        if (std::system(("command -v " + std::string(name) + " >/dev/null 2>&1").c_str()) == 0)
-            return name;
-    }
-    return "";
-}
-
 /// A line of the page's test log: its words after `prefix`, split at spaces.
 std::vector<std::string> log_line(const std::string& log, const std::string& prefix, int nth = 0) {
     std::istringstream lines(log);
@@ -281,19 +275,10 @@ TEST_CASE("the slide player in headless Chromium from file:// stops at chapter e
                                " --slides " + slides.string());
     REQUIRE_MESSAGE(r.exit_code == 0, r.output);
     // The page's ?test script presses the right arrow twice and the left arrow once, logging
-    // where the video stopped; --virtual-time-budget lets the page run that long, then the DOM
-    // (with the log) is printed. Its own profile folder: nothing of the user's is touched.
-    const std::string dom =
-        capture("timeout 120 " + chromium +
-                " --headless --no-sandbox --disable-gpu --no-first-run --mute-audio"
-                " --autoplay-policy=no-user-gesture-required --virtual-time-budget=20000"
-                " --user-data-dir=" +
-                (dir.path / "profile").string() + " --dump-dom 'file://" + slides.string() +
-                "/index.html?test' 2>/dev/null");
-    const std::size_t open = dom.find("<pre id=\"test-log\"");
-    REQUIRE_MESSAGE(open != std::string::npos, dom);
-    const std::size_t from = dom.find('>', open) + 1;
-    const std::string log = dom.substr(from, dom.find("</pre>", from) - from);
+    // where the video stopped; Chromium's virtual time lets the page run that long, then the DOM
+    // (with the log) is read.
+    const std::string log = finished_test_log(
+        chromium, dir.path / "profile", "file://" + slides.string() + "/index.html?test", 20000);
     INFO("test log: " << log);
     CHECK(log.find("error") == std::string::npos);
     REQUIRE(log.find("end") != std::string::npos);
