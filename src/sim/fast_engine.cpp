@@ -73,14 +73,40 @@ SnapshotOf<D> BasicFastEngine<D>::snapshot() const {
     return s;
 }
 
+namespace {
+
+/// The engine's state in the arrays the observables read, kept between calls on one thread: a
+/// video measures every frame, and at 10^6 discs fresh arrays (48 MB a frame) cost more in page
+/// faults and zeroing than the sums (docs/benchmarks.md, "A big video").
+template <int D>
+struct MeasureArrays {
+    std::vector<typename Space<D>::Vec> positions;
+    std::vector<typename Space<D>::Vec> velocities;
+    std::vector<double> masses;
+    std::vector<double> radii;
+};
+
+template <int D>
+MeasureArrays<D>& measure_arrays(std::size_t n) {
+    thread_local MeasureArrays<D> arrays;
+    arrays.positions.resize(n);
+    arrays.velocities.resize(n);
+    arrays.masses.resize(n);
+    arrays.radii.resize(n);
+    return arrays;
+}
+
+}  // namespace
+
 template <int D>
 Measurements BasicFastEngine<D>::measurements() const {
     // In the internal order: the sums come out as they always have, bit for bit.
     const std::size_t n = p_.size();
-    std::vector<Vec> positions(n);
-    std::vector<Vec> velocities(n);
-    std::vector<double> masses(n);
-    std::vector<double> radii(n);
+    MeasureArrays<D>& arrays = measure_arrays<D>(n);
+    std::vector<Vec>& positions = arrays.positions;
+    std::vector<Vec>& velocities = arrays.velocities;
+    std::vector<double>& masses = arrays.masses;
+    std::vector<double>& radii = arrays.radii;
     for (std::uint32_t i = 0; i < n; ++i) {
         positions[i] = position_at_now(i);
         velocities[i] = p_[i].v;

@@ -34,6 +34,23 @@ std::size_t cells_along(double extent, double min_cell, std::size_t cap) {
     return std::min<std::size_t>(static_cast<std::size_t>(std::min(n, 1e9)), cap);
 }
 
+/// The grid max_overlap builds, kept between calls on one thread. A video asks for the
+/// measurements every frame: at 10^6 discs fresh buffers (about 40 MB a frame) cost more in page
+/// faults and zeroing than the scan itself (docs/benchmarks.md, "A big video").
+struct OverlapGrid {
+    std::vector<Vec2> wrapped;
+    std::vector<std::uint32_t> cell_of;
+    std::vector<std::uint32_t> bigs;
+    std::vector<std::uint32_t> start;
+    std::vector<std::uint32_t> members;
+    std::vector<std::uint32_t> fill;
+};
+
+OverlapGrid& overlap_grid() {
+    thread_local OverlapGrid grid;
+    return grid;
+}
+
 double overlap_of(const Box& box, Vec2 a, Vec2 b, double sigma) {
     const double dist = norm(box.displacement(a, b));
     return std::max(0.0, sigma - dist);
@@ -56,9 +73,13 @@ double max_overlap(const std::vector<Vec2>& positions, const std::vector<double>
     const double cw = box.width / static_cast<double>(nx);
     const double ch = box.height / static_cast<double>(ny);
 
-    std::vector<Vec2> wrapped(n);
-    std::vector<std::uint32_t> cell_of(n);
-    std::vector<std::uint32_t> bigs;
+    OverlapGrid& grid = overlap_grid();
+    std::vector<Vec2>& wrapped = grid.wrapped;
+    std::vector<std::uint32_t>& cell_of = grid.cell_of;
+    std::vector<std::uint32_t>& bigs = grid.bigs;
+    wrapped.resize(n);
+    cell_of.resize(n);
+    bigs.clear();
     for (std::size_t i = 0; i < n; ++i) {
         wrapped[i] = box.wrap(positions[i]);
         const auto cx =
@@ -69,13 +90,16 @@ double max_overlap(const std::vector<Vec2>& positions, const std::vector<double>
         if (radii[i] > big) bigs.push_back(static_cast<std::uint32_t>(i));
     }
     // Counting sort of the small discs by cell.
-    std::vector<std::uint32_t> start(nx * ny + 1, 0);
+    std::vector<std::uint32_t>& start = grid.start;
+    start.assign(nx * ny + 1, 0);
     for (std::size_t i = 0; i < n; ++i) {
         if (radii[i] <= big) ++start[cell_of[i] + 1];
     }
     for (std::size_t c = 0; c < nx * ny; ++c) start[c + 1] += start[c];
-    std::vector<std::uint32_t> members(start.back());
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    std::vector<std::uint32_t>& members = grid.members;
+    members.resize(start.back());
+    std::vector<std::uint32_t>& fill = grid.fill;
+    fill.assign(start.begin(), start.end() - 1);
     for (std::size_t i = 0; i < n; ++i) {
         if (radii[i] <= big) members[fill[cell_of[i]]++] = static_cast<std::uint32_t>(i);
     }
