@@ -134,6 +134,7 @@ void run(const HeapCli& v) {
     config.width = geometry.width;
     config.height = geometry.height;
     config.widest_key = lesson.widest_key();
+    config.keys = lesson.keys();
     if (lesson.shows_code()) config.code_lines = lesson.code_lines();
     config.theme = theme;
     render::HeapRenderer renderer(config, render::Backend::automatic, print_notice);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -72,15 +73,21 @@ struct PanelGeometry {
     std::vector<std::string> title_lines;  ///< one, or two in a narrow panel
     float counters_baseline = 0.0F;
     float returned_baseline = 0.0F;  ///< the keys removed so far (when the panel shows them)
-    int counter_lines = 1;  ///< counters side by side, or one under the other in narrow panels
-    RectF tree;             ///< the node centres' box (tree panels)
-    RectF map;              ///< indexed heap's map column
-    float slot_size = 0.0F;
-    float slot_top = 0.0F;
+    int counter_lines = 1;   ///< counters side by side, or one under the other in narrow panels
+    RectF tree;              ///< the node centres' box (tree panels)
+    RectF map;               ///< indexed heap's map column
+    float slot_size = 0.0F;  ///< a slot's height (and its width, unless its text needs more)
+    float slot_w = 0.0F;     ///< a slot's width: wider than tall where a key or index needs it
+    float slot_top = 0.0F;   ///< the top of the array's first row
     float slots_x0 = 0.0F;
+    std::size_t per_row = 1;  ///< slots in a row of the array (it wraps where they do not fit)
+    float row_pitch = 0.0F;   ///< from one row of the array to the next
     float sorted_gap = 0.0F;  ///< extra space before heapsort's sorted part
     float caption_top = 0.0F;
     float node_radius = 0.0F;
+    /// Half a node's width: its radius, or more where the widest key needs it (a pill, as wide
+    /// as its word, its ends round).
+    float node_half_w = 0.0F;
     std::vector<PointF> nodes;  ///< node centres, pixels
 };
 
@@ -89,6 +96,10 @@ struct PanelGeometry {
 // ---------------------------------------------------------------------------------------------
 
 struct HeapRenderer::Impl {
+    /// A centred key's baseline under its centre, in pixel heights of its font (capitals a
+    /// little under the middle look centred).
+    static constexpr float key_drop = 0.36F;
+
     HeapViewConfig config;
     HeapPalette colors;
     GlTarget target;  // the context and every GL object
@@ -111,6 +122,11 @@ struct HeapRenderer::Impl {
         config.validate();
         unit = static_cast<float>(config.height) / 720.0F;
         (void)font(caption_px());  // a missing font fails here, before any frame
+        // The widest key as drawn, not the one of most letters.
+        const FontAtlas& f = font(small_px());
+        for (const std::string& k : config.keys) {
+            if (f.text_width(k) > f.text_width(config.widest_key)) config.widest_key = k;
+        }
     }
 
     /// A node: its fill or ring, drawn in order (each node its own group: a moving node stays
@@ -133,17 +149,22 @@ struct HeapRenderer::Impl {
         return it->second;
     }
 
-    void text(const FontAtlas& f, float x, float baseline, std::string_view s, Rgba8 color) {
+    /// Text from (x, baseline); `shape` is the slot or node it labels, if any (for last_text).
+    void text(const FontAtlas& f, float x, float baseline, std::string_view s, Rgba8 color,
+              std::optional<DrawnShape> shape = std::nullopt) {
         const int px = static_cast<int>(std::lround(f.pixel_height()));
         const auto [run, fresh] = text_run.try_emplace(px, list.text.size());
         if (fresh) list.text.push_back({&f, {}});
         f.add_text(list.text[run->second].glyphs, x, baseline, s, color);
-        drawn.push_back({std::string(s), f.pixel_height() * cap_height_per_pixel_height});
+        const float cap = f.pixel_height() * cap_height_per_pixel_height;
+        drawn.push_back(
+            {std::string(s), cap, {x, baseline - cap, x + f.text_width(s), baseline}, shape});
     }
 
     /// Text centred on (cx, cy), by the height of a capital letter.
-    void centred(const FontAtlas& f, PointF c, std::string_view s, Rgba8 color) {
-        text(f, c.x - 0.5F * f.text_width(s), c.y + 0.36F * f.pixel_height(), s, color);
+    void centred(const FontAtlas& f, PointF c, std::string_view s, Rgba8 color,
+                 std::optional<DrawnShape> shape = std::nullopt) {
+        text(f, c.x - 0.5F * f.text_width(s), c.y + key_drop * f.pixel_height(), s, color, shape);
     }
 
     /// The smallest text a class must read: capitals 2.8 % of the frame height, as in the
@@ -164,16 +185,51 @@ struct HeapRenderer::Impl {
     /// Space inside a panel's edge; tighter when four or more panels share the row.
     [[nodiscard]] float padding() const { return (columns >= 4 ? 7.0F : 12.0F) * unit; }
 
-    /// The key font for boxes of `box` pixels: as large as fits the widest key (a capital 0.53
-    /// of the box: a key is the first thing to read).
-    const FontAtlas& key_font(float box) {
-        const float wanted = 0.85F * box;
+    /// The key font for slots `height` pixels tall and `width` wide: as large as fits the widest
+    /// key (a capital 0.53 of the height: a key is the first thing to read), never under the
+    /// lesson size (the slot is widened for it instead: slot_text_width).
+    const FontAtlas& key_font(float height, float width) {
+        const float wanted = 0.85F * height;
         const FontAtlas& probe = font(wanted);
-        const float width = probe.text_width(config.widest_key);
-        const float limit = 0.86F * box;
-        if (width <= limit) return probe;
-        return font(wanted * limit / width);
+        const float text_w = probe.text_width(config.widest_key);
+        const float limit = 0.86F * width;
+        if (text_w <= limit) return probe;
+        return font(std::max(small_px(), wanted * limit / text_w));
     }
+
+    /// The width a slot needs for its text at the lesson size: the widest key and the widest
+    /// index under it ("12"), each with a margin either side.
+    [[nodiscard]] float slot_text_width(const view::HeapPanelView& p) {
+        const FontAtlas& f = font(small_px());
+        const auto last = static_cast<long long>(std::max<std::size_t>(p.capacity, 1)) - 1;
+        const std::string widest_index = std::to_string(last + p.index_base);
+        return std::max(f.text_width(config.widest_key) / 0.86F,
+                        f.text_width(widest_index) + 0.35F * f.pixel_height());
+    }
+
+    /// A key's font in a node of radius `radius` (round ends) and half-width `half_w`: as large
+    /// as the slots' rule gives, smaller where the widest key would touch the outline, never
+    /// under the lesson size (the node is widened for it instead: node_half_width).
+    const FontAtlas& node_font(float radius, float half_w) {
+        float px = std::max(small_px(), 0.85F * 2.0F * radius);
+        // A tenth smaller at a time: few sizes tried, each an atlas of its own.
+        for (int tries = 0; tries < 16 && px > small_px() && node_half_width(radius, px) > half_w;
+             ++tries)
+            px = std::max(small_px(), std::floor(0.9F * px));
+        return font(px);
+    }
+
+    /// Half the width a node of radius `radius` needs to hold the widest key at `px` inside its
+    /// outline with a margin: the radius when the key fits the disc, more (a pill) for a word.
+    [[nodiscard]] float node_half_width(float radius, float px) {
+        const FontAtlas& f = font(px);
+        const float inner = radius - node_outline() - 0.08F * f.pixel_height();
+        const float rise = key_drop * f.pixel_height();  // the lower of the key's two half-heights
+        const float side = inner > rise ? std::sqrt(inner * inner - rise * rise) : 0.0F;
+        return std::max(radius, radius - side + 0.5F * f.text_width(config.widest_key));
+    }
+
+    [[nodiscard]] float node_outline() const { return std::max(1.5F, 2.5F * unit); }
 
     // ------------------------------------------------------------------ frame
 
@@ -318,15 +374,25 @@ struct HeapRenderer::Impl {
             if (beside >= 0.75F * g.slot_size) g.slot_size = std::min(g.slot_size, beside);
         }
         const float index_h = small.line_height();
+        // Keys and indices at the lesson size at least: a slot as tall as that key needs, as
+        // wide as its widest key or index ("12", a word) needs; the row wraps onto a second
+        // (third...) where the panel is not wide enough for so many.
+        g.slot_size = std::max(g.slot_size, std::ceil(small_px() / 0.85F));
+        g.slot_w = std::max(g.slot_size, slot_text_width(p));
+        g.per_row = std::clamp<std::size_t>(
+            static_cast<std::size_t>((inner_w - g.slot_w * gap_slots) / g.slot_w), 1, slots);
+        const std::size_t array_rows = (slots + g.per_row - 1) / g.per_row;
+        g.row_pitch = g.slot_size + index_h + 0.15F * g.slot_size;
+        const float array_h = g.slot_size + static_cast<float>(array_rows - 1) * g.row_pitch;
         // Under the index labels: room for the key that dips under the row in an exchange.
-        g.slot_top = g.caption_top - pad - index_h - 1.45F * g.slot_size;
-        const float row_w = g.slot_size * static_cast<float>(slots);
-        g.sorted_gap = g.slot_size * gap_slots;
+        g.slot_top = g.caption_top - pad - index_h - 0.45F * g.slot_size - array_h;
+        const float row_w = g.slot_w * static_cast<float>(g.per_row);
+        g.sorted_gap = array_rows == 1 ? g.slot_w * gap_slots : 0.0F;
         g.slots_x0 = r.x0 + 0.5F * (r.width() - row_w - g.sorted_gap);
         if (!p.tree) {
-            // Arrays alone: the row sits in the middle of the free space.
+            // Arrays alone: the rows sit in the middle of the free space.
             const float top = counters_bottom + pad;
-            g.slot_top = std::max(top, 0.5F * (top + g.caption_top - index_h - g.slot_size));
+            g.slot_top = std::max(top, 0.5F * (top + g.caption_top - index_h - array_h));
             return g;
         }
 
@@ -351,16 +417,28 @@ struct HeapRenderer::Impl {
         const auto radius = [&](std::size_t across) {
             const float pitch_x =
                 tree.width() / static_cast<float>(std::max<std::size_t>(across, 1));
-            return std::max(4.0F, std::min({0.42F * pitch_x, 0.44F * pitch_y, 38.0F * unit}));
+            // Never smaller than a key at the lesson size needs over and under it.
+            const float least = node_outline() + (0.08F + 1.4F * key_drop) * small_px();
+            return std::max(least, std::min({0.42F * pitch_x, 0.44F * pitch_y, 38.0F * unit}));
         };
         // The textbook picture (each parent over its middle child) when the panel is wide enough
         // for it at full node size; else the compact one, whose nodes are larger.
-        const bool complete = radius(tree_columns(p.capacity, p.arity, true)) >=
-                              radius(tree_columns(p.capacity, p.arity, false));
+        // Words need the width more than the height: the picture with fewer columns.
+        const std::size_t columns_complete = tree_columns(p.capacity, p.arity, true);
+        const std::size_t columns_compact = tree_columns(p.capacity, p.arity, false);
+        const bool words =
+            node_half_width(radius(columns_compact), small_px()) > radius(columns_compact);
+        const bool complete = words ? columns_complete <= columns_compact
+                                    : radius(columns_complete) >= radius(columns_compact);
         const std::size_t leaves =
             std::max<std::size_t>(tree_columns(p.capacity, p.arity, complete), 1);
         const float pitch_x = tree.width() / static_cast<float>(leaves);
         g.node_radius = radius(leaves);
+        // A key too wide for the disc (a word): the node widens into a pill, as far as its
+        // neighbours leave room; the key shrinks to what is left, never under the lesson size.
+        const float key_px = std::max(small_px(), 0.85F * 2.0F * g.node_radius);
+        g.node_half_w = std::min(node_half_width(g.node_radius, key_px),
+                                 std::max(g.node_radius, 0.47F * pitch_x));
         g.tree = {tree.x0 + 0.5F * pitch_x, tree.y0 + g.node_radius, tree.x1 - 0.5F * pitch_x,
                   tree.y1 - g.node_radius};
         const std::vector<PointF> unit_positions = tree_positions(p.capacity, p.arity, complete);
@@ -377,8 +455,10 @@ struct HeapRenderer::Impl {
     [[nodiscard]] PointF slot_centre(const PanelGeometry& g, const view::HeapPanelView& p,
                                      std::size_t i) const {
         const float apart = i >= p.heap_size ? g.sorted_gap : 0.0F;
-        return {g.slots_x0 + (static_cast<float>(i) + 0.5F) * g.slot_size + apart,
-                g.slot_top + 0.5F * g.slot_size};
+        const auto column = static_cast<float>(i % g.per_row);
+        const auto row = static_cast<float>(i / g.per_row);
+        return {g.slots_x0 + (column + 0.5F) * g.slot_w + apart,
+                g.slot_top + row * g.row_pitch + 0.5F * g.slot_size};
     }
 
     void build_panel(const view::HeapPanelView& p, RectF r) {
@@ -506,38 +586,53 @@ struct HeapRenderer::Impl {
             add_node(
                 {g.nodes[i].x, g.nodes[i].y, g.node_radius, std::max(1.0F, unit), colors.empty});
         }
-        const FontAtlas& f = key_font(2.0F * g.node_radius);
+        const FontAtlas& f = node_font(g.node_radius, g.node_half_w);
         // Still nodes first, moving ones on top.
         for (int pass = 0; pass < 2; ++pass) {
             for (std::size_t i = 0; i < in_tree; ++i) {
                 const bool moving = p.swap && (i == p.swap->a || i == p.swap->b);
                 if (moving != (pass == 1)) continue;
-                draw_node(p.slots[i], node_position(p, g, i), g.node_radius,
+                draw_node(p.slots[i], node_position(p, g, i), g.node_radius, g.node_half_w,
                           alpha_of(p, p.slots[i].mark), f);
             }
         }
     }
 
-    void draw_node(const view::HeapSlotView& s, PointF c, float radius, float alpha,
+    void draw_node(const view::HeapSlotView& s, PointF c, float radius, float half_w, float alpha,
                    const FontAtlas& f) {
         const KeyStyle style = heap_mark_style(s.mark, colors);
-        const Rgba8 fill = s.mark == view::SlotMark::plain ? colors.node : style.fill;
-        add_node({c.x, c.y, radius, 0.0F, faded(fill, alpha)});
-        add_node(
-            {c.x, c.y, radius, std::max(1.5F, 2.5F * unit), faded(colors.node_outline, alpha)});
-        centred(f, c, s.key, faded(style.text, alpha));
+        const Rgba8 fill = faded(s.mark == view::SlotMark::plain ? colors.node : style.fill, alpha);
+        const Rgba8 outline = faded(colors.node_outline, alpha);
+        const float ring = node_outline();
+        if (half_w > radius + 0.5F) {
+            // A pill as wide as its word: two round ends and a band between them, the outline
+            // first and the fill inside it.
+            const float end = half_w - radius;
+            // Both outlines before both fills: an end's outline never crosses the other's fill.
+            for (const float x : {c.x - end, c.x + end}) add_node({x, c.y, radius, 0.0F, outline});
+            for (const float x : {c.x - end, c.x + end})
+                add_node({x, c.y, radius - ring, 0.0F, fill});
+            over.add_rect({c.x - end, c.y - radius, c.x + end, c.y + radius}, outline);
+            over.add_rect({c.x - end, c.y - radius + ring, c.x + end, c.y + radius - ring}, fill);
+        } else {
+            add_node({c.x, c.y, radius, 0.0F, fill});
+            add_node({c.x, c.y, radius, ring, outline});
+        }
+        centred(f, c, s.key, faded(style.text, alpha),
+                DrawnShape{c.x - half_w, c.y - radius, c.x + half_w, c.y + radius, radius});
     }
 
     void build_array(const view::HeapPanelView& p, const PanelGeometry& g) {
         const float s = g.slot_size;
+        const float w = g.slot_w;
         const float outline = std::max(1.0F, 2.0F * unit);
-        const FontAtlas& f = key_font(s);
+        const FontAtlas& f = key_font(s, w);
         // Index labels: two digits must fit under a slot.
         const FontAtlas& small = font(small_px());
         // Slot boxes for the whole capacity; index labels under them.
         for (std::size_t i = 0; i < std::max(p.capacity, p.slots.size()); ++i) {
             const PointF c = slot_centre(g, p, i);
-            const RectF box{c.x - 0.5F * s, g.slot_top, c.x + 0.5F * s, g.slot_top + s};
+            const RectF box{c.x - 0.5F * w, c.y - 0.5F * s, c.x + 0.5F * w, c.y + 0.5F * s};
             Rgba8 fill = colors.background;
             if (i < p.slots.size()) {
                 const view::SlotMark m = p.slots[i].mark;
@@ -549,14 +644,17 @@ struct HeapRenderer::Impl {
             under.add_rect(box, fill);
             under.add_frame(box, outline, i < p.slots.size() ? colors.slot_outline : colors.empty);
             const std::string index = std::to_string(static_cast<long long>(i) + p.index_base);
-            centred(small, {c.x, g.slot_top + s + 0.62F * small.line_height()}, index,
-                    colors.index);
+            // The index's column: under its slot, as wide.
+            centred(small, {c.x, box.y1 + 0.62F * small.line_height()}, index, colors.index,
+                    DrawnShape{box.x0, box.y1, box.x1, box.y1 + small.line_height(), 0.0F});
         }
         // Keys; an exchange slides the two keys as tiles, one over the row and one under it.
         for (std::size_t i = 0; i < p.slots.size(); ++i) {
             PointF c = slot_centre(g, p, i);
             const view::SlotMark m = p.slots[i].mark;
             Rgba8 color = i >= p.heap_size ? colors.sorted_text : heap_mark_style(m, colors).text;
+            float half_w = 0.5F * w;  // the key's slot, or its tile while it slides
+            float half_h = 0.5F * s;
             if (p.swap && (i == p.swap->a || i == p.swap->b)) {
                 const std::size_t other = i == p.swap->a ? p.swap->b : p.swap->a;
                 // Over the row clear of its keys; under it only as far as the reserved room.
@@ -564,17 +662,19 @@ struct HeapRenderer::Impl {
                 const float arc = std::sin(3.14159265F * p.swap->t) * lift * s;
                 c = lerp(c, slot_centre(g, p, other), p.swap->t);
                 c.y += arc;
-                const RectF tile{c.x - 0.46F * s, c.y - 0.46F * s, c.x + 0.46F * s,
-                                 c.y + 0.46F * s};
+                half_w = 0.46F * w;
+                half_h = 0.46F * s;
+                const RectF tile{c.x - half_w, c.y - half_h, c.x + half_w, c.y + half_h};
                 under.add_rect(tile, heap_mark_style(view::SlotMark::moving, colors).fill);
                 under.add_frame(tile, outline, colors.node_outline);
             }
-            centred(f, c, p.slots[i].key, faded(color, alpha_of(p, m)));
+            centred(f, c, p.slots[i].key, faded(color, alpha_of(p, m)),
+                    DrawnShape{c.x - half_w, c.y - half_h, c.x + half_w, c.y + half_h, 0.0F});
         }
         if (p.heap_size < p.slots.size()) {
             const PointF c = slot_centre(g, p, p.heap_size);
-            text(small, c.x - 0.5F * s, g.slot_top - 0.35F * small.line_height(), p.sorted_label,
-                 colors.index);
+            text(small, c.x - 0.5F * w, c.y - 0.5F * s - 0.35F * small.line_height(),
+                 p.sorted_label, colors.index);
         }
     }
 
@@ -593,10 +693,10 @@ struct HeapRenderer::Impl {
         const float index_y = key_y + f.line_height();
         for (std::size_t c = 0; c < p.map.size(); ++c) {
             const view::HeapMapRow& row = p.map[c];
-            const float x = g.map.x0 + (static_cast<float>(c) + 0.5F) * g.slot_size;
+            const float x = g.map.x0 + (static_cast<float>(c) + 0.5F) * g.slot_w;
             if (row.updated) {
-                under.add_rect({x - 0.45F * g.slot_size, index_y - 0.5F * f.line_height(),
-                                x + 0.45F * g.slot_size, index_y + 0.5F * f.line_height()},
+                under.add_rect({x - 0.45F * g.slot_w, index_y - 0.5F * f.line_height(),
+                                x + 0.45F * g.slot_w, index_y + 0.5F * f.line_height()},
                                heap_mark_style(view::SlotMark::moving, colors).fill);
             }
             centred(f, {x, key_y}, row.key, colors.title);

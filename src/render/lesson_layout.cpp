@@ -13,7 +13,8 @@ namespace collide::render {
 
 namespace {
 
-/// The lesson form below compact_width: boxes fill the frame under one line per panel.
+/// The lesson form below compact_width: boxes fill the frame under the scene's title (a
+/// thumbnail names what it shows) and one line per panel.
 FrameLayout compact_layout(const LayoutInput& in, float body) {
     FrameLayout layout;
     layout.compact = true;
@@ -23,10 +24,13 @@ FrameLayout compact_layout(const LayoutInput& in, float body) {
     const auto height = static_cast<float>(in.height);
     const float m = std::max(2.0F, std::round(std::min(width, height) * 0.012F));
     layout.margin = m;
-    const float line = std::round(body * 1.2F);
+    // Two lines at the top, set close (a line as tall as the text) so the boxes keep the frame.
+    const float line = std::round(body);
     const auto n = static_cast<float>(in.boxes.size());
     const float room_w = (width - (n + 1.0F) * m) / n;
-    const float top = m + line + std::max(3.0F, m);  // clear of the box's wall
+    layout.text.push_back({TextRole::title, -1, {m, m, width - m, m + line}, body});
+    const float lines_top = m + line;
+    const float top = lines_top + line + std::max(3.0F, m);  // clear of the box's wall
     const float room_h = height - top - m;
     for (std::size_t i = 0; i < in.boxes.size(); ++i) {
         PanelLayout panel;
@@ -35,8 +39,10 @@ FrameLayout compact_layout(const LayoutInput& in, float body) {
         panel.scale = fit_scale(in.boxes[i], room_w, room_h);
         panel.box = place_box(in.boxes[i], panel.scale, x0, x0 + room_w, top);
         layout.panels.push_back(panel);
-        layout.text.push_back(
-            {TextRole::figures, static_cast<int>(i), {x0, m, x0 + room_w, m + line}, body});
+        layout.text.push_back({TextRole::figures,
+                               static_cast<int>(i),
+                               {x0, lines_top, x0 + room_w, lines_top + line},
+                               body});
     }
     return layout;
 }

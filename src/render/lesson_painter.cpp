@@ -122,6 +122,17 @@ bool shows_title_card(const FrameContent& frame) {
 bool shows_summary(const FrameContent& frame) {
     return !frame.summary.rows.empty() && frame.summary.opacity > 0.0F;
 }
+/// A scene's title for a line `room` wide: whole where it fits, else what it shows, its words
+/// after a colon ("Alder and Wainwright, 1957: hard spheres freeze" -> "Hard spheres freeze");
+/// what is still too wide is cut with "..." by draw_text.
+std::string short_title(const FontAtlas& font, const std::string& title, RectF room) {
+    if (font.text_width(title) <= room.width()) return title;
+    const std::size_t colon = title.find(": ");
+    if (colon == std::string::npos || colon + 2 >= title.size()) return title;
+    std::string subject = title.substr(colon + 2);
+    if (subject[0] >= 'a' && subject[0] <= 'z') subject[0] = static_cast<char>(subject[0] - 32);
+    return subject;
+}
 }  // namespace
 
 void LessonPainter::begin_frame(const FrameContent& frame) {
@@ -166,6 +177,15 @@ void LessonPainter::add_mark_legend(std::size_t index, const PanelContent& conte
 }
 
 void LessonPainter::finish_frame(const FrameContent& frame) {
+    if (layout_.compact && !intro_) {
+        // The compact form (a thumbnail) has no card and no caption: its top line names the
+        // scene, by its short title where the whole one is wider than the frame.
+        const TextSlot* slot = layout_.slot(TextRole::title, -1);
+        if (slot != nullptr && !frame.intro_title.empty()) {
+            draw_text(Font::body, *slot, short_title(*body_font_, frame.intro_title, slot->rect),
+                      palette_.title, Align::left);
+        }
+    }
     if (!layout_.compact && !intro_) add_column(frame);
     if (frame.code && !intro_ && layout_.code.width() > 0.0F) add_code(*frame.code);
     if (shows_title_card(frame)) add_intro(frame);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -99,11 +100,16 @@ struct PuzzleRenderer::Impl {
     [[nodiscard]] float line(float px) { return font(px).line_height(); }
 
     /// Text with its baseline at (x, y) in frame pixels, `px` pixels tall; returns the x after it.
-    float text(float x, float y, float px, std::string_view str, Rgba8 color) {
+    /// `shape`: the tile it numbers, if any (for last_text).
+    float text(float x, float y, float px, std::string_view str, Rgba8 color,
+               std::optional<DrawnShape> shape = std::nullopt) {
         const FontAtlas& f = font(px);
         const int key = static_cast<int>(std::lround(f.pixel_height()));
-        drawn.push_back({std::string(str), f.pixel_height() * cap_height_per_pixel_height});
-        return f.add_text(list.text[runs.at(key)].glyphs, std::round(x), std::round(y), str, color);
+        const float cap = f.pixel_height() * cap_height_per_pixel_height;
+        x = std::round(x);
+        y = std::round(y);
+        drawn.push_back({std::string(str), cap, {x, y - cap, x + f.text_width(str), y}, shape});
+        return f.add_text(list.text[runs.at(key)].glyphs, x, y, str, color);
     }
 
     float width_of(float px, std::string_view str) { return font(px).text_width(str); }
@@ -172,19 +178,39 @@ struct PuzzleRenderer::Impl {
     }
 
     void draw_tile(int tile, float x, float y, float cell, float gap, float font_px, Rgba8 fill) {
-        list.under.add_rect({x + gap / 2, y + gap / 2, x + cell - gap / 2, y + cell - gap / 2},
-                            fill);
+        const RectF face{x + gap / 2, y + gap / 2, x + cell - gap / 2, y + cell - gap / 2};
+        list.under.add_rect(face, fill);
         const FontAtlas& f = font(font_px);
         const std::string label = std::to_string(tile);
         text(x + (cell - f.text_width(label)) / 2.0F, y + (cell + f.ascent() * 0.72F) / 2.0F,
-             font_px, label, colors.tile_text);
+             font_px, label, colors.tile_text,
+             DrawnShape{face.x0, face.y0, face.x1, face.y1, 0.0F});
     }
 
-    /// The cell of a small board: its digits at the lesson size, smaller only when a box of
-    /// `width` x `height` cannot hold that (never below the digits' own height).
-    [[nodiscard]] float small_cell(int side, float width, float height) const {
+    /// The smallest cell whose tile holds the board's widest number at the lesson size with a
+    /// margin either side (two digits on a 15-puzzle): the tiles' numbers never run together.
+    [[nodiscard]] float least_cell(int side) {
+        const float digits = width_of(lesson, side * side > 10 ? "00" : "0");
+        // The tile is the cell less its gap (8 %); a fifth of a capital either side of the number.
+        return std::ceil((digits + 0.25F * lesson) / 0.92F);
+    }
+
+    /// The cell of a small board: its digits at the lesson size, in a cell a little larger
+    /// (cell_per_digit) where a box of `width` x `height` has room, never smaller than they need.
+    [[nodiscard]] float small_cell(int side, float width, float height) {
         const float fit = std::min(width, height) / static_cast<float>(side);
-        return std::floor(std::max(std::min(fit, cell_per_digit * lesson), 0.9F * lesson));
+        const float least = least_cell(side);
+        return std::floor(std::max(std::min(fit, std::max(cell_per_digit * lesson, least)), least));
+    }
+
+    /// The side of the panel's boards (3 before any is drawn).
+    [[nodiscard]] static int side_of(const view::PuzzlePanelView& p) {
+        if (!p.board.tiles.empty()) return p.board.side;
+        if (!p.queue.empty()) return p.queue.front().side;
+        for (const view::PuzzleRowView& row : p.rows) {
+            if (!row.boards.empty()) return row.boards.front().side;
+        }
+        return 3;
     }
 
     /// The widest board label ("12+19=31"): the width a board's slot needs.
@@ -209,7 +235,10 @@ struct PuzzleRenderer::Impl {
             draw_playback(p, body);
             return;
         }
-        const float queue_w = std::max(label_room(), 3.0F * cell_per_digit * lesson) + X(8);
+        const int side = side_of(p);
+        const float board_w =
+            static_cast<float>(side) * std::max(cell_per_digit * lesson, least_cell(side));
+        const float queue_w = std::max(label_room(), board_w) + X(8);
         const RectF tree{body.x0, body.y0, body.x1 - queue_w - X(16), body.y1};
         if (p.rows.empty() && !p.board.tiles.empty()) {
             draw_playback(p, tree);  // before the first expansion: the start, large
@@ -227,10 +256,10 @@ struct PuzzleRenderer::Impl {
             fitted_text(area.x0, top + ascent, area.width(), lesson, p.hidden_rows, colors.label);
             top += l;
         }
-        const std::size_t rows = std::min(p.rows.size(), view::max_puzzle_rows);
+        const std::size_t rows = std::min(p.rows.size(), p.shown.rows);
         if (rows == 0) return;
-        const float row_h = (area.y1 - top) / static_cast<float>(view::max_puzzle_rows);
-        const float slot_w = area.width() / static_cast<float>(view::max_puzzle_row_boards);
+        const float row_h = (area.y1 - top) / static_cast<float>(p.shown.rows);
+        const float slot_w = area.width() / static_cast<float>(p.shown.row_boards);
         const float gap = 0.3F * l;
         // Label centres of the row above, for the edges.
         std::vector<PointF> above;
@@ -240,7 +269,7 @@ struct PuzzleRenderer::Impl {
             const std::string label = row.label + ": " + row.count;
             fitted_text(area.x0, y + ascent, area.width(), lesson, label, colors.title);
             std::vector<PointF> here;
-            const std::size_t n = std::min(row.boards.size(), view::max_puzzle_row_boards);
+            const std::size_t n = std::min(row.boards.size(), p.shown.row_boards);
             for (std::size_t i = 0; i < n; ++i) {
                 const view::PuzzleBoardView& b = row.boards[i];
                 const float cell =
@@ -279,7 +308,7 @@ struct PuzzleRenderer::Impl {
         list.under.add_rect({area.x0 - X(8), area.y0 - Y(4), area.x1 + X(6), area.y1},
                             colors.queue_fill);
         fitted_text(area.x0, area.y0 + ascent, area.width(), lesson, p.queue_title, colors.title);
-        const std::size_t shown = view::max_puzzle_queue_shown;
+        const std::size_t shown = p.shown.queue;
         const float gap = 0.3F * l;
         // Room for the entries between the title and two lines of "+N more".
         const float entry_h = (area.height() - 3.0F * l) / static_cast<float>(shown);

@@ -492,6 +492,23 @@ view::ReturnedKeys HeapProgram::returned(std::size_t panel, const HeapMoment& mo
     return out;
 }
 
+std::vector<std::string> HeapProgram::keys() const {
+    std::vector<std::string> out;
+    const auto consider = [&](const pq::ArrayState& s) {
+        for (const std::string& k : s.keys) {
+            if (std::find(out.begin(), out.end(), k) == out.end()) out.push_back(k);
+        }
+    };
+    for (const pq::HeapPanel& panel : record_.panels()) {
+        consider(panel.start);
+        for (const pq::PanelOp& op : panel.ops) {
+            for (const pq::HeapStep& step : op.steps) consider(step.state);
+            consider(op.end);
+        }
+    }
+    return out;
+}
+
 std::string HeapProgram::widest_key() const {
     std::string widest = "W";
     const auto consider = [&](const pq::ArrayState& s) {

@@ -41,16 +41,16 @@ std::string estimate_words(puzzle::Heuristic h) {
 /// board first), or after (`popped`), but before its neighbours went in; `size` receives the
 /// queue's length then. Stale entries taken out just before expansion k have gone already.
 std::vector<std::uint32_t> queue_during(const SearchResult& r, std::size_t k, bool popped,
-                                        std::size_t& size) {
+                                        std::size_t shown, std::size_t& size) {
     std::size_t gone = 0;  // stale entries taken out before expansion k
     for (const puzzle::SearchNode& n : r.nodes) gone += n.stale && n.popped == k ? 1 : 0;
-    std::vector<std::uint32_t> front = r.queue_front(k, view::max_puzzle_queue_shown + gone + 1);
+    std::vector<std::uint32_t> front = r.queue_front(k, shown + gone + 1);
     std::erase_if(front, [&](std::uint32_t id) {
         const puzzle::SearchNode& n = r.nodes[id];
         return (n.stale && n.popped == k) || (popped && id == r.expansions[k]);
     });
     size = r.queue_size(k) - gone - (popped ? 1 : 0);
-    if (front.size() > view::max_puzzle_queue_shown) front.resize(view::max_puzzle_queue_shown);
+    if (front.size() > shown) front.resize(shown);
     return front;
 }
 
@@ -74,7 +74,7 @@ std::string with_thousands(std::uint64_t n) {
 
 PuzzleProgram::PuzzleProgram(const puzzle::Board& start, const std::vector<SearchResult>& results,
                              bool code)
-    : start_(start), code_(code) {
+    : start_(start), code_(code), shown_(view::puzzle_shown(start.side(), results.size(), code)) {
     if (results.empty() || results.size() > 2)
         throw_runtime_error("puzzle video: needs one or two searches");
     if (code && results.size() != 1)
@@ -233,7 +233,8 @@ view::PuzzlePanelView PuzzleProgram::search_panel(const Side& side, std::size_t 
     }
 
     // The tree: the deepest rows reached, each with its most recent boards.
-    const std::size_t rows = view::max_puzzle_rows;
+    p.shown = shown_;
+    const std::size_t rows = shown_.rows;
     if (step > 0) {
         // The deepest rows, but never without the board being expanded: A* may come back up
         // the tree, and then the rows follow it (keeping up to two deeper rows below it).
@@ -260,7 +261,7 @@ view::PuzzlePanelView PuzzleProgram::search_panel(const Side& side, std::size_t 
         for (std::size_t d = first; d <= deepest; ++d) {
             const std::vector<std::uint32_t>& list = side.by_depth[d];
             const std::size_t count = count_below(list, step);
-            const std::size_t shown = std::min(count, view::max_puzzle_row_boards);
+            const std::size_t shown = std::min(count, shown_.row_boards);
             view::PuzzleRowView row;
             row.label = "depth " + std::to_string(d);
             row.count = plural(count, "board");
@@ -313,10 +314,10 @@ view::PuzzlePanelView PuzzleProgram::search_panel(const Side& side, std::size_t 
     std::vector<std::uint32_t> front;
     std::size_t size = 0;
     if (queue == QueueMoment::after || step == 0) {
-        front = r.queue_front(step, view::max_puzzle_queue_shown);
+        front = r.queue_front(step, shown_.queue);
         size = r.queue_size(step);
     } else {
-        front = queue_during(r, step - 1, queue == QueueMoment::popped, size);
+        front = queue_during(r, step - 1, queue == QueueMoment::popped, shown_.queue, size);
     }
     for (std::uint32_t id : front) p.queue.push_back(board_view(side, id));
     if (queue == QueueMoment::before_pop && !p.queue.empty())

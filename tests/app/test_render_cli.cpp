@@ -1,6 +1,7 @@
 // End-to-end tests of `collide render` and `collide thumbnail`: the files a user gets, read back.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -766,5 +767,48 @@ TEST_CASE("thumbnail tunnelling: discs through the barrier are a figure and a ma
         for (const std::string& m : texts_of(read_bytes(json), "marks")) marks += m + "|";
         CAPTURE(marks);
         CHECK(marks.find("went through a barrier") != std::string::npos);
+    }
+}
+
+// A 320x180 thumbnail (the compact form: no card, no caption) named nothing of what it shows
+// (#44 item 5): its top line now carries the scene's title, in capitals of at least 9 px.
+TEST_CASE("a 320x180 thumbnail carries the scene's title over its panels") {
+    TempDir dir("thumbnail_title");
+    const fs::path json = dir.path / "layout.json";
+    // spheres-freeze's title is too wide for 320 px: what it shows ("Hard spheres freeze").
+    for (const char* scene : {"tunnelling", "billiards", "newtons-cradle", "spheres-freeze"}) {
+        CAPTURE(scene);
+        const auto r =
+            run_collide(std::string("thumbnail ") + scene + " --size 320x180 -o " +
+                        (dir.path / "t.png").string() + " --layout-json " + json.string());
+        REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+        const nlohmann::json layout = nlohmann::json::parse(read_bytes(json));
+        CHECK(layout["compact"] == true);
+        const std::string toml =
+            read_bytes(fs::path(COLLIDE_ASSETS_DIR) / "scenes" / (std::string(scene) + ".toml"));
+        std::string drawn;
+        float top_of_panels = 1e9F;
+        float title_bottom = 0.0F;
+        for (const auto& slot : layout["text"]) {
+            if (slot["role"] == "title" && slot["panel"] == -1) {
+                for (const auto& t : slot["text"]) drawn += t.get<std::string>();
+                CHECK(slot["cap_height"].get<double>() >= 9.0);
+                title_bottom = slot["rect"][3].get<float>();
+            } else {
+                top_of_panels = std::min(top_of_panels, slot["rect"][1].get<float>());
+            }
+        }
+        CAPTURE(drawn);
+        // The scene's own title, or the words after its colon (the first letter a capital).
+        CHECK(drawn.size() >= 8);
+        REQUIRE(drawn.find("...") == std::string::npos);
+        const std::size_t start = toml.find("title = \"");
+        REQUIRE(start != std::string::npos);
+        const std::string title = toml.substr(start + 9, toml.find('"', start + 9) - start - 9);
+        CAPTURE(title);
+        CHECK((title == drawn ||
+               title.ends_with(": " + std::string(1, static_cast<char>(drawn[0] + 32)) +
+                               drawn.substr(1))));
+        CHECK(title_bottom <= top_of_panels);
     }
 }

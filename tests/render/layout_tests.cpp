@@ -259,12 +259,17 @@ TEST_CASE("lesson layout: --code's column sits right of boxes and column, over t
     CHECK(lesson_layout(lesson_input({1280, 720})).slots(TextRole::code).empty());
 }
 
-TEST_CASE("compact layout below 480 px: boxes fill the frame, one line per panel, 9 px capitals") {
+TEST_CASE(
+    "compact layout below 480 px: boxes fill the frame under the title and one line per "
+    "panel, 9 px capitals") {
     for (const Size size : {Size{320, 180}, Size{426, 240}, Size{160, 90}}) {
         INFO(size.width << "x" << size.height);
         const FrameLayout layout = lesson_layout(lesson_input(size));
         CHECK(layout.compact);
-        CHECK(layout.text.size() == 2);  // one line per panel
+        REQUIRE(layout.text.size() == 3);  // the scene's title, then one line per panel
+        CHECK(layout.text[0].role == TextRole::title);
+        CHECK(layout.text[0].panel == -1);
+        CHECK(layout.text[0].rect.y1 <= layout.text[1].rect.y0);
         for (const TextSlot& slot : layout.text) CHECK(slot.cap_height() >= 9.0F);
         const float frame = static_cast<float>(size.width) * static_cast<float>(size.height);
         if (size.width >= 320) {

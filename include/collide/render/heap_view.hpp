@@ -39,6 +39,9 @@ struct HeapViewConfig {
     int height = 720;  ///< frame height in pixels, as width
     /// The widest key of the video: node and slot text is sized so that it fits.
     std::string widest_key = "W";
+    /// Every key of the video (HeapProgram::keys), if known: the widest of them in the drawing
+    /// font replaces widest_key ("damson" is wider than "banana", as many letters).
+    std::vector<std::string> keys;
     /// `--code`: every line of every listing the video shows, so that the code column is as
     /// wide as the widest of them in every frame (the tree keeps its place when the listing
     /// changes). Empty: each frame's own listing decides.

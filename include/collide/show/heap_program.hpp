@@ -89,6 +89,8 @@ class HeapProgram {
     [[nodiscard]] bool shows_code() const noexcept { return code_; }
     /// The widest key label of the lesson (for sizing node text once per video).
     [[nodiscard]] std::string widest_key() const;
+    /// Every key the lesson shows, each once, in the order they first appear.
+    [[nodiscard]] std::vector<std::string> keys() const;
 
     /// The words of one panel: its title, its caption before the first operation, and per
     /// operation the caption of each step shown and a summary.

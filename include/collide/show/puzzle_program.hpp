@@ -123,6 +123,7 @@ class PuzzleProgram {
     std::vector<double> turns_;    ///< when each solution plays, from playback_start()
     double playback_length_ = 0.0;
     bool code_ = false;
+    view::PuzzleShown shown_;     ///< the boards each panel draws (by the board's side)
     std::vector<Beat> beats_;     ///< with the code: the walked lines, in time order
     double fast_start_ = 0.0;     ///< with the code: when the fast middle starts
     double fast_seconds_ = 0.0;   ///< ... and how long it runs

@@ -42,6 +42,28 @@ struct PuzzleRowView {
     std::vector<PuzzleBoardView> boards;  ///< the most recent ones, oldest first
 };
 
+/// Rows of the tree and boards per row drawn at most; queue entries shown at most.
+/// (Few and large: a board's digits and label are lesson text, capitals 2.8 % of the frame.)
+inline constexpr std::size_t max_puzzle_rows = 2;
+inline constexpr std::size_t max_puzzle_row_boards = 2;
+inline constexpr std::size_t max_puzzle_queue_shown = 2;
+
+/// How many small boards a panel draws: rows of the tree, boards per row, queue entries.
+struct PuzzleShown {
+    std::size_t rows = max_puzzle_rows;
+    std::size_t row_boards = max_puzzle_row_boards;
+    std::size_t queue = max_puzzle_queue_shown;
+};
+
+/// What a panel of a `side` x `side` puzzle draws, `panels` side by side (`code`: beside the
+/// code). A 15-puzzle's two-digit tiles need cells a third larger than one digit's, at the
+/// lesson size: one row of the tree and one queue entry, two boards in the row only where one
+/// panel has the frame's width.
+[[nodiscard]] constexpr PuzzleShown puzzle_shown(int side, std::size_t panels, bool code) noexcept {
+    if (side <= 3) return {};
+    return {1, panels == 1 && !code ? std::size_t{2} : std::size_t{1}, 1};
+}
+
 /// A tile sliding during the playback: from cell `from` to cell `to`, t in [0, 1].
 struct PuzzleSlideView {
     int from = -1;
@@ -58,10 +80,13 @@ struct PuzzlePanelView {
 
     // The search.
     std::string hidden_rows;             ///< a line above the rows for depths not drawn, or ""
-    std::vector<PuzzleRowView> rows;     ///< the deepest rows drawn (at most max_puzzle_rows)
+    std::vector<PuzzleRowView> rows;     ///< the deepest rows drawn (at most shown.rows)
     std::string queue_title;             ///< "queue: next out first"
-    std::vector<PuzzleBoardView> queue;  ///< its first entries (at most max_puzzle_queue_shown)
+    std::vector<PuzzleBoardView> queue;  ///< its first entries (at most shown.queue)
     std::string queue_more;              ///< e.g. "+ 1,234 more"
+    /// The places for boards the layout keeps (rows, boards per row, queue entries), filled or
+    /// not: the boards keep their size as the search fills them.
+    PuzzleShown shown;
 
     // The playback (and, before the search has expanded anything, the start in the tree's place).
     PuzzleBoardView board;  ///< the large board; no tiles: none
@@ -77,11 +102,5 @@ struct PuzzleFrameView {
     /// line under way marked; unset: no column.
     std::optional<CodeView> code;
 };
-
-/// Rows of the tree and boards per row drawn at most; queue entries shown at most.
-/// (Few and large: a board's digits and label are lesson text, capitals 2.8 % of the frame.)
-inline constexpr std::size_t max_puzzle_rows = 2;
-inline constexpr std::size_t max_puzzle_row_boards = 2;
-inline constexpr std::size_t max_puzzle_queue_shown = 2;
 
 }  // namespace collide::view
