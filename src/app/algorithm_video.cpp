@@ -16,6 +16,7 @@
 #include "collide/video/video_writer.hpp"
 #include "font_search.hpp"
 #include "interrupt.hpp"
+#include "json_output.hpp"
 #include "render_plan.hpp"
 #include "video_job.hpp"
 
@@ -67,6 +68,47 @@ AlgorithmVideoDestination algorithm_video_destination_of(const AlgorithmVideoCli
     return d;
 }
 
+std::optional<io::OutputFile> open_timeline_json(const std::string& path,
+                                                 const AlgorithmVideoDestination& destination,
+                                                 const show::Timeline& timeline) {
+    if (path.empty()) return std::nullopt;
+    if (destination.output.still)
+        throw_option_error("--timeline-json", "only for videos (a still has no timeline)");
+    std::vector<io::NamedOutput> outputs;
+    outputs.push_back({"-o", destination.output.path,
+                       destination.output.format == video::VideoFormat::png_sequence});
+    outputs.push_back({"--timeline-json", path, false});
+    if (!destination.subtitles.file.empty())
+        outputs.push_back({"--subtitles-file", destination.subtitles.file, false});
+    if (!destination.chapters.file.empty())
+        outputs.push_back({"--chapters-file", destination.chapters.file, false});
+    if (!destination.chapters.slides.empty())
+        outputs.push_back({"--slides", destination.chapters.slides, true});
+    if (!destination.chapters.handout.empty())
+        outputs.push_back({"--handout", destination.chapters.handout, false});
+    io::check_distinct_outputs(outputs);
+    std::optional<io::OutputFile> file;
+    file.emplace(path, io::OutputOptions{"--timeline-json"});
+    file->write(drawn_timeline_json(timeline));
+    return file;
+}
+
+std::string drawn_timeline_json(const show::Timeline& timeline) {
+    Json segments = Json::array();
+    for (const show::Segment& segment : timeline.segments) {
+        segments.push_back(Json{{"kind", show::segment_kind_name(segment.kind)},
+                                {"start", segment.start},
+                                {"end", segment.end},
+                                {"first_frame", segment.first_frame},
+                                {"end_frame", segment.end_frame},
+                                {"caption", segment.caption}});
+    }
+    return json_text(Json{{"fps", timeline.fps},
+                          {"frames", timeline.frame_count()},
+                          {"seconds", static_cast<double>(timeline.frame_count()) / timeline.fps},
+                          {"segments", std::move(segments)}});
+}
+
 namespace {
 
 /// A drawn lesson as the video job's frame program: frame k of a video shows time k / fps; a
@@ -91,13 +133,11 @@ class AlgorithmFrameProgram final : public FrameProgram {
 
 }  // namespace
 
-AlgorithmVideoSummary write_algorithm_video(const OutputChoice& output,
-                                            const AlgorithmVideoGeometry& geometry,
-                                            ProgressMode progress_mode, double duration,
-                                            double still_time, const AlgorithmFrameDraw& draw,
-                                            const SubtitleOutput& subtitles, const Cues& cues,
-                                            const ChapterOutput& chapters,
-                                            const std::optional<Chapters>& chapter_list) {
+AlgorithmVideoSummary write_algorithm_video(
+    const OutputChoice& output, const AlgorithmVideoGeometry& geometry, ProgressMode progress_mode,
+    double duration, double still_time, const AlgorithmFrameDraw& draw,
+    const SubtitleOutput& subtitles, const Cues& cues, const ChapterOutput& chapters,
+    const std::optional<Chapters>& chapter_list, io::OutputFile* commit_with) {
     InterruptGuard interrupts;
     VideoJob job;
     job.output.path = output.path;
@@ -126,6 +166,7 @@ AlgorithmVideoSummary write_algorithm_video(const OutputChoice& output,
     hooks.interrupts = &interrupts;
     hooks.progress = &progress;
     hooks.notice = print_notice;
+    if (commit_with != nullptr) hooks.commit_with.push_back(commit_with);
     JobResult written;
     try {
         written = run_video_job(

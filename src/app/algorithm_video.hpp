@@ -11,6 +11,8 @@
 #include "algorithm_options.hpp"
 #include "collide/cue.hpp"
 #include "collide/image.hpp"
+#include "collide/io/file.hpp"
+#include "collide/show/timeline.hpp"
 #include "progress.hpp"
 #include "render_plan.hpp"
 #include "subtitle_options.hpp"
@@ -51,6 +53,19 @@ struct AlgorithmVideoDestination {
                                                                        double duration,
                                                                        const std::string& title);
 
+/// `--timeline-json PATH` of a drawn lesson: the file opened (its temporary beside PATH) and
+/// filled with `timeline` as JSON (drawn_timeline_json), to be committed with the video
+/// (write_algorithm_video's `commit_with`); none when `path` is empty. Refused (Error(input)
+/// naming --timeline-json) for a still, for standard output, and for a path that is also
+/// another output of the run.
+[[nodiscard]] std::optional<io::OutputFile> open_timeline_json(
+    const std::string& path, const AlgorithmVideoDestination& destination,
+    const show::Timeline& timeline);
+
+/// A drawn lesson's timeline as JSON text: fps, frames, seconds and its segments (kind, start,
+/// end, first_frame, end_frame, caption).
+[[nodiscard]] std::string drawn_timeline_json(const show::Timeline& timeline);
+
 /// What was written, for the command's summary line.
 struct AlgorithmVideoSummary {
     std::int64_t frames = 0;
@@ -69,11 +84,13 @@ using AlgorithmFrameDraw = std::function<void(double t, Image& frame)>;
 /// `subtitles` and `cues` (videos only): the lesson's step captions as a subtitle track and/or
 /// a sidecar file (video_job.hpp); `chapters`: where the chapters go (the MP4, a chapters file
 /// and/or a slide folder): `chapter_list` when given (a heap video's, one per operation), else
-/// one per step caption (show::chapters_from_cues).
+/// one per step caption (show::chapters_from_cues). `commit_with`: a file that goes in place
+/// with the video (--timeline-json), or is discarded with it.
 AlgorithmVideoSummary write_algorithm_video(
     const OutputChoice& output, const AlgorithmVideoGeometry& geometry, ProgressMode progress_mode,
     double duration, double still_time, const AlgorithmFrameDraw& draw,
     const SubtitleOutput& subtitles = {}, const Cues& cues = {}, const ChapterOutput& chapters = {},
-    const std::optional<Chapters>& chapter_list = std::nullopt);
+    const std::optional<Chapters>& chapter_list = std::nullopt,
+    io::OutputFile* commit_with = nullptr);
 
 }  // namespace collide::app

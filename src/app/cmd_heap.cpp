@@ -25,6 +25,7 @@
 #include "collide/printable.hpp"
 #include "collide/render/heap_view.hpp"
 #include "collide/show/chapters.hpp"
+#include "collide/show/drawn_timeline.hpp"
 #include "collide/show/heap_code.hpp"
 #include "collide/show/heap_program.hpp"
 #include "collide/show/subtitles.hpp"
@@ -49,6 +50,8 @@ struct HeapCli {
     int index_base = 1;
     double pace = 0.8;
     bool code = false;
+    std::string questions = "none";
+    std::string timeline_json;
     AlgorithmVideoCli video;
 
     CLI::Option* ops_opt = nullptr;
@@ -98,6 +101,9 @@ show::HeapProgram lesson_of(const HeapCli& v) {
         }
         lesson.show_code(true);
     }
+    if (v.questions != "on" && v.questions != "none")
+        throw_option_error("--questions", v.questions, "on or none");
+    lesson.ask_questions(v.questions == "on");
     return lesson;
 }
 
@@ -128,6 +134,10 @@ void run(const HeapCli& v) {
     const AlgorithmVideoDestination destination =
         algorithm_video_destination_of(v.video, "heap", lesson.duration(), lesson.name());
     const OutputChoice& output = destination.output;
+    std::optional<io::OutputFile> timeline_file =
+        open_timeline_json(v.timeline_json, destination,
+                           show::drawn_lesson_timeline(lesson.duration(), geometry.fps,
+                                                       show::asked_stretches(lesson)));
 
     render::HeapViewConfig config;
     config.font_path = find_drawing_font(v.video.font);
@@ -151,7 +161,8 @@ void run(const HeapCli& v) {
                             static_cast<double>(std::max<std::int64_t>(
                                 1, std::llround(lesson.duration() * geometry.fps))) /
                                 geometry.fps,
-                            geometry.fps));
+                            geometry.fps),
+        timeline_file ? &*timeline_file : nullptr);
     if (output.still) {
         std::printf("%s: %dx%d PNG at %.2f s of a %.2f s video of %s\n",
                     printable_text(output.path.string()).c_str(), geometry.width, geometry.height,
@@ -195,6 +206,16 @@ void add_heap_command(CLI::App& root) {
     cmd->add_flag("--code", v->code,
                   "Show the operation's pseudocode beside the heap, the line under way marked "
                   "(one heap panel: binary, dary:D, indexed, or --sort)");
+    cmd->add_option("--questions", v->questions,
+                    "Pause and ponder: before each swim or sink the picture stops and asks "
+                    "\"where does K end up?\", candidate slots lettered A, B, C, then reveals "
+                    "the slot the operation reaches: on or none")
+        ->type_name("{on,none}")
+        ->capture_default_str();
+    cmd->add_option("--timeline-json", v->timeline_json,
+                    "Also write the video's timeline as JSON: its segments (run, and with "
+                    "--questions on each question and reveal) with their times and captions")
+        ->type_name("PATH");
     add_algorithm_video_options(*cmd, v->video, "heap", "e.g. 640x360");
     cmd->footer(
         "Examples:\n"
@@ -204,6 +225,7 @@ void add_heap_command(CLI::App& root) {
         "  collide heap --ops \"5 9 3 7 * 3^12\" --impl indexed       # increase-key\n"
         "  collide heap --sort \"S O R T E X A M P L E\" -o heapsort.mp4\n"
         "  collide heap --ops \"P Q E * X A M *\" --code           # swim and sink as code\n"
+        "  collide heap --ops \"P Q E * X A M *\" --questions on   # where does K end up?\n"
         "See docs/heap.md for a whole lesson.");
     cmd->callback([v] { run(*v); });
 }

@@ -270,6 +270,7 @@ void add_puzzle_command(CLI::App& root, PuzzleVideoMaker video) {
         "  collide puzzle \"1 2 3 4 0 6 7 5 8\" -o puzzle.mp4   # BFS (left) vs A* (right)\n"
         "  collide puzzle \"8 1 3 4 0 2 7 6 5\" --heuristic hamming --solve\n"
         "  collide puzzle random --moves 14 --code -o astar.mp4   # A*'s loop as code\n"
+        "  collide puzzle random --moves 14 --questions on   # which board comes out next?\n"
         "  collide puzzle random --moves 20 --seed 3 --json\n"
         "See docs/puzzle.md.");
     cmd->callback([v, video = std::move(video)] { run(*v, video); });

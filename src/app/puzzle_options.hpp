@@ -16,11 +16,19 @@
 
 namespace collide::app {
 
-/// The puzzle video's options: the drawn lessons' own (algorithm_options.hpp) and --code.
+/// The puzzle video's options: the drawn lessons' own (algorithm_options.hpp), --code and
+/// --questions.
 struct PuzzleVideoCli : AlgorithmVideoCli {
     bool code = false;  ///< --code: the search loop beside one search
     CLI::Option* code_opt = nullptr;
+    std::string questions = "none";  ///< --questions on|none
+    CLI::Option* questions_opt = nullptr;
+    std::string timeline_json;  ///< --timeline-json PATH; empty: none
+    CLI::Option* timeline_json_opt = nullptr;
 };
+
+/// --questions: on or none; anything else throws Error(input) naming it.
+[[nodiscard]] bool puzzle_questions_of(const PuzzleVideoCli& v);
 
 /// Registers the video options on `cmd`.
 void add_puzzle_video_options(CLI::App& cmd, PuzzleVideoCli& v);

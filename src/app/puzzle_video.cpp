@@ -18,6 +18,7 @@
 #include "algorithm_video.hpp"
 #include "collide/error.hpp"
 #include "collide/render/puzzle_view.hpp"
+#include "collide/show/drawn_timeline.hpp"
 #include "collide/show/puzzle_program.hpp"
 #include "collide/show/subtitles.hpp"
 #include "collide/video/output.hpp"
@@ -45,11 +46,14 @@ AlgorithmVideoGeometry geometry_of(const PuzzleVideoCli& v) {
 
 void validate_puzzle_video(const PuzzleVideoCli& v) {
     (void)parse_progress_mode(v.progress);
+    (void)puzzle_questions_of(v);
     (void)render::parse_theme(v.theme, "--theme");
     (void)geometry_of(v);
     const OutputChoice output = output_of(v);
     (void)subtitle_output_of(v, output);
     (void)chapter_output_of(v, output, "");
+    if (!v.timeline_json.empty() && output.still)
+        throw_option_error("--timeline-json", "only for videos (a still has no timeline)");
     if (!output.default_path) {
         video::check_output_writable(
             output.path, !output.still && output.format == video::VideoFormat::png_sequence);
@@ -61,10 +65,15 @@ void render_puzzle_video(const puzzle::Board& start,
                          const PuzzleVideoCli& v) {
     const ProgressMode progress_mode = parse_progress_mode(v.progress);
     const AlgorithmVideoGeometry geometry = geometry_of(v);
-    const show::PuzzleProgram frames(start, results, v.code);
+    show::PuzzleProgram frames(start, results, v.code);
+    frames.ask_questions(puzzle_questions_of(v));
     const AlgorithmVideoDestination destination =
         algorithm_video_destination_of(v, "puzzle", frames.duration(), frames.name());
     const OutputChoice& output = destination.output;
+    std::optional<io::OutputFile> timeline_file =
+        open_timeline_json(v.timeline_json, destination,
+                           show::drawn_lesson_timeline(frames.duration(), geometry.fps,
+                                                       show::asked_stretches(frames)));
 
     render::PuzzleViewConfig config;
     config.font_path = find_drawing_font(v.font);
@@ -79,7 +88,7 @@ void render_puzzle_video(const puzzle::Board& start,
         [&](double t, Image& frame) { renderer.render(frames.frame_at(t), frame); },
         destination.subtitles,
         output.still ? Cues{} : show::puzzle_subtitle_cues(frames, geometry.fps),
-        destination.chapters);
+        destination.chapters, std::nullopt, timeline_file ? &*timeline_file : nullptr);
     if (output.still) {
         std::printf("%s: %dx%d PNG at %.2f s of a %.2f s video\n", output.path.string().c_str(),
                     geometry.width, geometry.height, still_time, frames.duration());

@@ -469,6 +469,63 @@ struct HeapRenderer::Impl {
         build_array(p, g);
         if (p.show_map) build_map(p, g);
         build_caption(p, g);
+        if (p.tree && (!p.letters.empty() || !p.countdown.empty())) build_question(p, g);
+    }
+
+    /// A question (`--questions on`): each candidate's letter on a plate beside its node, at the
+    /// first of a few places around it that covers no node (so no key) and no other plate; the
+    /// countdown in the panel's top right corner. The reveal lights the answer's plate and
+    /// fades the others.
+    void build_question(const view::HeapPanelView& p, const PanelGeometry& g) {
+        const FontAtlas& f = font(1.15F * lesson_px());
+        const float side = 1.3F * f.pixel_height();
+        const float half = 0.5F * side;
+        const float gap = std::max(2.0F, 3.0F * unit);
+        std::vector<PointF> plates;
+        const auto clear = [&](PointF c) {
+            for (const PointF& n : g.nodes) {
+                const float dx = std::max(std::abs(c.x - n.x) - half, 0.0F);
+                const float dy = std::max(std::abs(c.y - n.y) - half, 0.0F);
+                if (dx * dx + dy * dy < (g.node_radius + gap) * (g.node_radius + gap)) return false;
+            }
+            for (const PointF& o : plates) {
+                if (std::abs(c.x - o.x) < side + gap && std::abs(c.y - o.y) < side + gap)
+                    return false;
+            }
+            // Inside the panel, above its array (the array's keys stay uncovered too).
+            return c.x - half >= g.panel.x0 && c.x + half <= g.panel.x1 &&
+                   c.y - half >= g.panel.y0 && c.y + half <= g.slot_top - gap;
+        };
+        const KeyStyle lit{heap_token_now_fill, highlight_dark_text};
+        for (const view::HeapLetterView& letter : p.letters) {
+            if (letter.slot >= g.nodes.size()) continue;
+            const PointF n = g.nodes[letter.slot];
+            const float reach = g.node_radius + gap + half;
+            // Up right first (clear of the edge to the parent for a left child), then around.
+            const float dirs[][2] = {{0.72F, -0.72F}, {-0.72F, -0.72F}, {1.0F, 0.0F},
+                                     {-1.0F, 0.0F},   {0.72F, 0.72F},   {-0.72F, 0.72F},
+                                     {0.0F, 1.0F},    {0.0F, -1.0F}};
+            PointF at{n.x + dirs[0][0] * reach, n.y + dirs[0][1] * reach};
+            for (const auto& d : dirs) {
+                const PointF c{n.x + d[0] * reach, n.y + d[1] * reach};
+                if (clear(c)) {
+                    at = c;
+                    break;
+                }
+            }
+            plates.push_back(at);
+            const float alpha = p.reveal && !letter.answer ? 0.35F : 1.0F;
+            const RectF box{at.x - half, at.y - half, at.x + half, at.y + half};
+            over.add_rect(box, faded(lit.fill, alpha));
+            if (p.reveal && letter.answer)
+                over.add_frame(box, std::max(2.0F, 3.0F * unit), colors.node_outline);
+            centred(f, at, letter.letter, faded(lit.text, alpha));
+        }
+        if (!p.countdown.empty()) {
+            const FontAtlas& big = font(caption_px());
+            const float x = g.panel.x1 - padding() - big.text_width(p.countdown);
+            text(big, x, g.tree.y0 + big.ascent(), p.countdown, heap_token_now_fill);
+        }
     }
 
     static std::string counter_text(const view::HeapCounter& c) { return c.label + " " + c.value; }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -134,22 +135,43 @@ Chapters heap_chapters(const HeapProgram& lesson, double video_seconds, int fps)
     if (!(video_seconds > 0.0)) return {};
     if (ops == 0) return {{0.0, video_seconds, one_line(lesson.name()), 0.0}};
     // Groups of operations [first, last], each from its first operation's start (the first
-    // from 0: the intro) to the next group's; a group closes once it lasts long enough.
+    // from 0: the intro) to the next group's; a group closes once it lasts long enough. A
+    // question (--questions on) closes its group where its reveal starts, so that the slide
+    // player stops on the question; the reveal starts the next group, titled by the answer.
     struct Group {
         std::size_t first = 0;
         std::size_t last = 0;
         double start = 0.0;
+        const HeapQuestion* asks = nullptr;     ///< the question it ends on
+        const HeapQuestion* answers = nullptr;  ///< the question whose reveal starts it
+    };
+    const auto question_of = [&lesson](std::size_t k) -> std::optional<std::size_t> {
+        const std::vector<HeapQuestion>& qs = lesson.questions();
+        for (std::size_t q = 0; q < qs.size(); ++q)
+            if (qs[q].op == k) return q;
+        return std::nullopt;
     };
     std::vector<Group> groups{{0, 0, 0.0}};
-    for (std::size_t k = 1; k < ops; ++k) {
-        if (starts[k] - groups.back().start >= min_heap_chapter_seconds) {
-            groups.push_back({k, k, starts[k]});
-        } else {
-            groups.back().last = k;
+    for (std::size_t k = 0; k < ops; ++k) {
+        if (k > 0) {
+            if (groups.back().asks == nullptr &&
+                starts[k] - groups.back().start < min_heap_chapter_seconds) {
+                groups.back().last = k;
+            } else {
+                groups.push_back({k, k, starts[k]});
+            }
+        }
+        if (const std::optional<std::size_t> q = question_of(k)) {
+            const HeapQuestion& question = lesson.questions()[*q];
+            groups.back().asks = &question;
+            groups.push_back({k, k, lesson.question_start(*q) + question.think});
+            groups.back().answers = &question;
         }
     }
-    // The last group runs to the end (the outro): too short, it joins the one before.
-    if (groups.size() > 1 && video_seconds - groups.back().start < min_heap_chapter_seconds) {
+    // The last group runs to the end (the outro): too short, it joins the one before (unless
+    // that one ends on a question: the reveal and the outro last longer than a chapter needs).
+    if (groups.size() > 1 && groups[groups.size() - 2].asks == nullptr &&
+        video_seconds - groups.back().start < min_heap_chapter_seconds) {
         const std::size_t last = groups.back().last;
         groups.pop_back();
         groups.back().last = last;
@@ -158,8 +180,18 @@ Chapters heap_chapters(const HeapProgram& lesson, double video_seconds, int fps)
     const double frame = 1.0 / static_cast<double>(std::max(1, fps));
     for (std::size_t g = 0; g < groups.size(); ++g) {
         const double end = g + 1 < groups.size() ? groups[g + 1].start : video_seconds;
-        Chapter c{groups[g].start, end, heap_group_title(lesson, groups[g].first, groups[g].last),
-                  0.0};
+        std::string title;
+        if (groups[g].answers != nullptr) {
+            title = groups[g].answers->answer_words;
+            if (groups[g].last > groups[g].first)
+                title += "; " + heap_group_title(lesson, groups[g].first + 1, groups[g].last);
+        } else {
+            title = heap_group_title(lesson, groups[g].first, groups[g].last);
+        }
+        // A group that ends on a question (after a reveal too short for a chapter of its own,
+        // the next operation's) is named by it too: the player stops on those words.
+        if (groups[g].asks != nullptr) title += ": " + groups[g].asks->question;
+        Chapter c{groups[g].start, end, one_line(title), 0.0};
         c.still = std::max(c.start, std::ceil(c.end / frame - 1e-9) * frame - frame);
         chapters.push_back(std::move(c));
     }

@@ -8,6 +8,7 @@
 #include "collide/error.hpp"
 #include "collide/show/ease.hpp"
 #include "collide/show/heap_code.hpp"
+#include "collide/show/questions.hpp"
 
 namespace collide::show {
 
@@ -276,6 +277,107 @@ std::vector<view::HeapMapRow> map_rows(const pq::ArrayState& state, int index_ba
     return rows;
 }
 
+// ------------------------------------------------------------------------------------ questions
+
+/// A question's chapter (from its operation's start to the reveal) lasts at least this long, so
+/// that a heap video's chapters stay at least 4 s apart (chapters.hpp).
+constexpr double question_chapter_seconds = 4.0;
+/// The think time when the operation leaves room: long enough for a class to look at every
+/// letter.
+constexpr double think_seconds = 3.0;
+
+/// splitmix64: a letter order that is the same on every platform (std::shuffle's is not).
+std::uint64_t mix(std::uint64_t& state) {
+    std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
+    z = (z ^ (z >> 30U)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27U)) * 0x94D049BB133111EBULL;
+    return z ^ (z >> 31U);
+}
+
+/// Whether the lesson shows step `s` of an operation of kind `op` (the Captioner's rule: a
+/// sink's start is only shown while building the heap).
+bool shown_step(const HeapStep& s, HeapOp::Kind op) {
+    return s.kind != HeapStep::Kind::sink || op == HeapOp::Kind::build;
+}
+
+/// Where a key that starts at `from` before step `first` of `steps` ends, following the
+/// recorded exchanges; `path` gets every slot it passes, `from` first.
+std::size_t follow(const std::vector<HeapStep>& steps, std::size_t first, std::size_t from,
+                   std::vector<std::size_t>& path) {
+    std::size_t at = from;
+    path = {from};
+    for (std::size_t s = first; s < steps.size(); ++s) {
+        const HeapStep& step = steps[s];
+        if (step.kind != HeapStep::Kind::exchange || step.i == step.j) continue;
+        if (step.i == at) {
+            at = step.j;
+        } else if (step.j == at) {
+            at = step.i;
+        } else {
+            continue;
+        }
+        path.push_back(at);
+    }
+    return at;
+}
+
+/// Candidate slots, the answer first: for a swim the slots on the way to the root nearest the
+/// answer; for a sink the slots passed, the answer's children (had it gone on) and its sibling
+/// (had the other child been larger). `size`: the heap's keys while K moves.
+std::vector<std::size_t> candidate_slots(std::size_t answer, std::size_t from,
+                                         const std::vector<std::size_t>& path, bool swim,
+                                         unsigned arity, std::size_t size) {
+    std::vector<std::size_t> pool;
+    const auto add = [&](std::size_t slot) {
+        if (slot < size && std::find(pool.begin(), pool.end(), slot) == pool.end())
+            pool.push_back(slot);
+    };
+    add(answer);
+    if (swim) {
+        // The slots from `from` up to the root, in order; the answer's neighbours on it first.
+        std::vector<std::size_t> chain{from};
+        while (chain.back() > 0) chain.push_back((chain.back() - 1) / arity);
+        const auto at =
+            static_cast<std::size_t>(std::find(chain.begin(), chain.end(), answer) - chain.begin());
+        for (std::size_t d = 1; d < chain.size(); ++d) {
+            if (at >= d) add(chain[at - d]);
+            if (at + d < chain.size()) add(chain[at + d]);
+        }
+    } else {
+        const auto children = [&](std::size_t i) {
+            std::vector<std::size_t> out;
+            for (std::size_t c = arity * i + 1; c <= arity * i + arity && c < size; ++c)
+                out.push_back(c);
+            return out;
+        };
+        const std::vector<std::size_t> below = children(answer);
+        std::vector<std::size_t> beside;
+        if (answer > 0) {
+            for (const std::size_t c : children((answer - 1) / arity))
+                if (c != answer) beside.push_back(c);
+        }
+        // One of each kind first, so that every kind of mistake has its letter.
+        if (path.size() >= 2) add(path[path.size() - 2]);
+        if (!below.empty()) add(below.front());
+        if (!beside.empty()) add(beside.front());
+        for (auto it = path.rbegin(); it != path.rend(); ++it) add(*it);
+        for (const std::size_t c : below) add(c);
+        for (const std::size_t c : beside) add(c);
+    }
+    if (pool.size() > max_candidates) pool.resize(max_candidates);
+    return pool;
+}
+
+/// "A, B or C".
+std::string letters_list(std::size_t n) {
+    std::string out;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (i > 0) out += i + 1 == n ? " or " : ", ";
+        out += candidate_letter(i);
+    }
+    return out;
+}
+
 }  // namespace
 
 HeapPacing heap_pacing(double pace) noexcept {
@@ -342,14 +444,106 @@ HeapProgram::HeapProgram(pq::HeapRecord record, HeapPacing pacing, int index_bas
         text_.push_back(std::move(text));
     }
 
-    double t = pacing.intro;
-    for (std::size_t k = 0; k < ops.size(); ++k) {
+    lay_out();
+}
+
+void HeapProgram::lay_out() {
+    op_start_.clear();
+    double t = pacing_.intro;
+    for (std::size_t k = 0; k < record_.ops().size(); ++k) {
         op_start_.push_back(t);
         std::size_t steps = 0;
         for (const PanelText& p : text_) steps = std::max(steps, p.ops[k].shown.size());
-        t += static_cast<double>(steps) * pacing.pace + pacing.pause;
+        t += static_cast<double>(steps) * pacing_.pace + pacing_.pause;
+        if (const HeapQuestion* q = question_of(k)) t += q->seconds();
     }
     op_start_.push_back(t);  // the outro starts here
+}
+
+const HeapQuestion* HeapProgram::question_of(std::size_t op) const noexcept {
+    for (const HeapQuestion& q : questions_) {
+        if (q.op == op) return &q;
+    }
+    return nullptr;
+}
+
+void HeapProgram::ask_questions(bool on) {
+    questions_.clear();
+    if (on) questions_ = heap_questions(*this);
+    lay_out();
+}
+
+double HeapProgram::question_start(std::size_t q) const {
+    const HeapQuestion& question = questions_.at(q);
+    return op_start_[question.op] + static_cast<double>(question.before) * pacing_.pace;
+}
+
+std::vector<HeapQuestion> heap_questions(const HeapProgram& lesson) {
+    const pq::HeapRecord& record = lesson.record();
+    std::vector<HeapQuestion> out;
+    if (record.heapsort()) return out;
+    const std::vector<pq::HeapPanel>& panels = record.panels();
+    const auto heap =
+        std::find_if(panels.begin(), panels.end(), [](const pq::HeapPanel& p) { return p.tree; });
+    if (heap == panels.end()) return out;
+    const auto panel = static_cast<std::size_t>(heap - panels.begin());
+    const bool max = record.orientation() == pq::Orientation::max;
+    const double pace = lesson.pacing().pace;
+    for (std::size_t k = 0; k < record.ops().size(); ++k) {
+        const HeapOp& op = record.ops()[k];
+        const pq::PanelOp& done = heap->ops[k];
+        // The step that puts K where it starts: its appearance, the remove that leaves the last
+        // key at the root, its change. The question holds right after it.
+        HeapStep::Kind starter = HeapStep::Kind::appear;
+        bool swim = true;
+        if (op.kind == HeapOp::Kind::remove) {
+            starter = HeapStep::Kind::remove;
+            swim = false;
+        } else if (op.kind == HeapOp::Kind::increase) {
+            starter = HeapStep::Kind::change;
+            swim = max;
+        } else if (op.kind != HeapOp::Kind::insert) {
+            continue;
+        }
+        const auto it = std::find_if(done.steps.begin(), done.steps.end(),
+                                     [&](const HeapStep& s) { return s.kind == starter; });
+        if (it == done.steps.end()) continue;
+        const auto first = static_cast<std::size_t>(it - done.steps.begin()) + 1;
+        std::size_t before = 0;  // shown steps up to and including the starter
+        for (std::size_t s = 0; s < first; ++s) before += shown_step(done.steps[s], op.kind);
+        const std::size_t size = done.end.keys.size();
+        // A remove: the last key, now at the root, sinks; the others: the key at the starter's
+        // slot.
+        const std::size_t from = op.kind == HeapOp::Kind::remove ? 0 : it->i;
+        if (from >= size || before == 0) continue;
+        std::vector<std::size_t> path;
+        const std::size_t answer = follow(done.steps, first, from, path);
+        std::vector<std::size_t> slots =
+            candidate_slots(answer, from, path, swim, heap->arity, size);
+        if (slots.size() < min_candidates) continue;
+        // Letters in an order of their own (the answer's letter tells nothing).
+        std::uint64_t state = 0x45ULL * (k + 1);
+        for (std::size_t i = slots.size() - 1; i > 0; --i)
+            std::swap(slots[i], slots[mix(state) % (i + 1)]);
+        HeapQuestion q;
+        q.op = k;
+        q.panel = panel;
+        q.before = before;
+        q.key = done.end.keys[answer];
+        q.from = from;
+        q.answer =
+            static_cast<std::size_t>(std::find(slots.begin(), slots.end(), answer) - slots.begin());
+        q.candidates = std::move(slots);
+        q.think = std::max({min_think_seconds, think_seconds,
+                            question_chapter_seconds - static_cast<double>(before) * pace});
+        q.reveal = reveal_seconds;
+        q.question = "Where does " + q.key + " end up: " + letters_list(q.candidates.size()) + "?";
+        q.answer_words = "Answer: " + candidate_letter(q.answer) + ", " + q.key +
+                         (answer == from ? " stays at " : " ends up at ") +
+                         slot_name(answer, lesson.index_base());
+        out.push_back(std::move(q));
+    }
+    return out;
 }
 
 std::string HeapProgram::name() const {
@@ -377,18 +571,37 @@ HeapMoment HeapProgram::moment_at(double seconds) const {
     moment.started = true;
     moment.finished = seconds >= op_start_.back();
     moment.op = static_cast<std::size_t>(after - op_start_.begin()) - 1;
-    const double into = seconds - op_start_[moment.op];
+    double into = seconds - op_start_[moment.op];
+    if (const HeapQuestion* q = question_of(moment.op)) {
+        // The question holds the lesson before its step `before`: every panel at rest on the
+        // step before (each panel's own, as in lock-step), then the run goes on.
+        const double asked = static_cast<double>(q->before) * pacing_.pace;
+        if (into >= asked && into < asked + q->seconds()) {
+            moment.question = static_cast<int>(q - questions_.data());
+            moment.reveal = into >= asked + q->think;
+            moment.think_left = moment.reveal ? 0.0 : asked + q->think - into;
+            into = asked - 0.5 * pacing_.pace;  // inside the step before: its progress set below
+        } else if (into >= asked + q->seconds()) {
+            into -= q->seconds();
+        }
+    }
     const auto step = static_cast<std::size_t>(into / pacing_.pace);
     for (std::size_t p = 0; p < panels.size(); ++p) {
         const pq::PanelOp& op = panels[p].ops[moment.op];
         const OpText& text = text_[p].ops[moment.op];
         if (step < text.shown.size()) {
-            const double progress = into / pacing_.pace - static_cast<double>(step);
+            const double progress = moment.question >= 0
+                                        ? 1.0  // at rest: where the step left things
+                                        : into / pacing_.pace - static_cast<double>(step);
             const pq::HeapStep& s = op.steps[text.shown[step]];
             moment.panels.push_back({&s.state, &s, progress, &text.captions[step]});
         } else {
             moment.panels.push_back({&op.end, nullptr, 0.0, &text.summary});
         }
+    }
+    if (moment.question >= 0) {
+        const HeapQuestion& q = questions_[static_cast<std::size_t>(moment.question)];
+        moment.panels[q.panel].caption = moment.reveal ? &q.answer_words : &q.question;
     }
     return moment;
 }
@@ -435,6 +648,14 @@ view::HeapFrameView HeapProgram::frame_at(double seconds) const {
     for (std::size_t p = 0; p < moment.panels.size(); ++p) {
         view.panels.push_back(panel_view(p, moment.panels[p]));
         view.panels.back().returned = returned(p, moment);
+    }
+    if (moment.question >= 0) {
+        const HeapQuestion& q = questions_[static_cast<std::size_t>(moment.question)];
+        view::HeapPanelView& panel = view.panels[q.panel];
+        for (std::size_t i = 0; i < q.candidates.size(); ++i)
+            panel.letters.push_back({q.candidates[i], candidate_letter(i), i == q.answer});
+        panel.reveal = moment.reveal;
+        if (!moment.reveal) panel.countdown = countdown_words(moment.think_left);
     }
     if (code_) view.code = code_at(moment);
     return view;

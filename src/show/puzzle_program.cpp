@@ -10,6 +10,7 @@
 #include "collide/error.hpp"
 #include "collide/show/ease.hpp"
 #include "collide/show/heap_program.hpp"
+#include "collide/show/questions.hpp"
 
 namespace collide::show {
 
@@ -164,7 +165,122 @@ double PuzzleProgram::playback_turn(std::size_t i) const noexcept {
 }
 
 double PuzzleProgram::duration() const noexcept {
-    return playback_start() + playback_length_ + outro_;
+    double asked = 0.0;
+    for (const PuzzleQuestion& q : questions_) asked += q.seconds();
+    return playback_start() + playback_length_ + outro_ + asked;
+}
+
+namespace {
+
+/// Expansions a question may wait for: the first ones, which the video shows one by one.
+constexpr std::size_t question_steps = 40;
+/// Seconds a class looks at the two boards' labels before the answer.
+constexpr double puzzle_think_seconds = 4.0;
+
+}  // namespace
+
+std::optional<PuzzleQuestion> PuzzleProgram::question_for(std::size_t i) const {
+    const SearchResult& r = *sides_[i].result;
+    if (r.method != Method::astar) return std::nullopt;
+    const std::size_t last = std::min(question_steps, r.expansions.size() - 1);
+    for (std::size_t step = 1; step <= last; ++step) {
+        // The answer is the search's own next expansion; the other board is one at the queue's
+        // front that the rule "lowest moves + estimate first" puts after it.
+        const std::uint32_t next = r.expansions[step];
+        const puzzle::SearchNode& answer = r.nodes[next];
+        std::optional<std::uint32_t> other;
+        for (const std::uint32_t id : r.queue_front(step, 8)) {
+            const puzzle::SearchNode& n = r.nodes[id];
+            if (id == next || n.stale || n.board == answer.board) continue;
+            if (n.priority > answer.priority) {
+                other = id;
+                break;
+            }
+        }
+        if (!other) continue;
+        // The lesson's time at which the frame shows `step` expansions, the queue after them.
+        double at = search_start();
+        const double tick = 1.0 / 600.0;
+        while (at < search_end()) {
+            const bool there =
+                code_ ? code_at(at).shown == step && code_at(at).queue == QueueMoment::after
+                      : step_at(i, at) == step;
+            if (there) break;
+            at += tick;
+        }
+        if (!(at < search_end())) continue;
+        PuzzleQuestion q;
+        q.panel = i;
+        q.step = step;
+        // Which letter the answer gets: by the step, never always A.
+        const bool first = (step * 2654435761U + i) % 2 == 0;
+        q.candidates = first ? std::vector<std::uint32_t>{next, *other}
+                             : std::vector<std::uint32_t>{*other, next};
+        q.answer = first ? 0 : 1;
+        q.lesson_at = at;
+        q.think = std::max(min_think_seconds, puzzle_think_seconds);
+        q.reveal = reveal_seconds;
+        q.question = "Which board does A* expand next: A or B?";
+        q.answer_words = "Answer: " + candidate_letter(q.answer) + ", " +
+                         std::to_string(answer.moves) + "+" +
+                         std::to_string(answer.priority - answer.moves) + "=" +
+                         std::to_string(answer.priority) + ": the lowest moves + estimate";
+        return q;
+    }
+    return std::nullopt;
+}
+
+void PuzzleProgram::ask_questions(bool on) {
+    questions_.clear();
+    if (!on) return;
+    for (std::size_t i = 0; i < sides_.size(); ++i) {
+        if (std::optional<PuzzleQuestion> q = question_for(i)) questions_.push_back(std::move(*q));
+    }
+    std::sort(
+        questions_.begin(), questions_.end(),
+        [](const PuzzleQuestion& a, const PuzzleQuestion& b) { return a.lesson_at < b.lesson_at; });
+}
+
+double PuzzleProgram::question_start(std::size_t q) const {
+    double before = 0.0;
+    for (std::size_t k = 0; k < q; ++k) before += questions_.at(k).seconds();
+    return questions_.at(q).lesson_at + before;
+}
+
+void PuzzleProgram::pose(const PuzzleQuestion& q, bool reveal, double left,
+                         view::PuzzleFrameView& view) const {
+    view::PuzzlePanelView& p = view.panels[q.panel];
+    const Side& side = sides_[q.panel];
+    p.queue.clear();
+    for (std::size_t c = 0; c < q.candidates.size(); ++c) {
+        view::PuzzleBoardView b = board_view(side, q.candidates[c]);
+        b.label = candidate_letter(c) + ": " + b.label;
+        if (reveal && c == q.answer) b.mark = PuzzleMark::current;
+        p.queue.push_back(std::move(b));
+    }
+    // Short lines: the status and the queue's column are narrow at the lesson's text size (the
+    // whole words are the caption: the subtitles and chapters).
+    p.queue_title = "next out?";
+    p.queue_more = reveal ? "Answer: " + candidate_letter(q.answer) : countdown_words(left);
+    p.status = reveal ? "Answer: " + candidate_letter(q.answer) + ", the lowest priority"
+                      : "A* expands next: A or B?";
+    p.caption = reveal ? q.answer_words : q.question;
+}
+
+view::PuzzleFrameView PuzzleProgram::frame_at(double seconds) const {
+    double t = std::clamp(seconds, 0.0, duration());
+    // The lesson's clock stops while a question holds.
+    for (const PuzzleQuestion& q : questions_) {
+        if (t < q.lesson_at) break;
+        if (t < q.lesson_at + q.seconds()) {
+            view::PuzzleFrameView view = lesson_frame(q.lesson_at);
+            const bool reveal = t >= q.lesson_at + q.think;
+            pose(q, reveal, q.lesson_at + q.think - t, view);
+            return view;
+        }
+        t -= q.seconds();
+    }
+    return lesson_frame(t);
 }
 
 std::size_t PuzzleProgram::step_at(std::size_t i, double seconds) const noexcept {
@@ -360,8 +476,7 @@ view::PuzzlePanelView PuzzleProgram::playback_panel(const Side& side, double t) 
     return p;
 }
 
-view::PuzzleFrameView PuzzleProgram::frame_at(double seconds) const {
-    const double t = std::clamp(seconds, 0.0, duration());
+view::PuzzleFrameView PuzzleProgram::lesson_frame(double t) const {
     view::PuzzleFrameView view;
     view.heading = puzzle_name(start_.side()) + " " + start_.to_string() + ": " +
                    (sides_.size() == 1 ? title(sides_.front())

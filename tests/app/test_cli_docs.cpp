@@ -93,6 +93,10 @@ TEST_CASE("the command tree holds every command, and the options added lately") 
     CHECK(has_option("render", "--slides"));
     CHECK(has_option("render", "--subtitles"));
     CHECK(has_option("render", "--questions"));
+    CHECK(has_option("heap", "--questions"));
+    CHECK(has_option("puzzle", "--questions"));
+    CHECK(has_option("heap", "--timeline-json"));
+    CHECK(has_option("puzzle", "--timeline-json"));
     CHECK(has_option("compare", "--max-diff-percent"));
     CHECK(has_option("", "-V"));
     CHECK(!has_option("", "--generate-docs"));  // hidden: for the build only

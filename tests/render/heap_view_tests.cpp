@@ -3,6 +3,7 @@
 // comparison as in golden_tests.cpp; regenerate with COLLIDE_UPDATE_GOLDENS=1, then LOOK).
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <set>
@@ -263,6 +264,36 @@ TEST_CASE("heap view: a complete d-ary layout puts each parent over its middle c
     const std::vector<PointF> c = tree_positions(7, 3, false);
     CHECK(c[0].x == doctest::Approx(0.5F));
     CHECK(c[1].x == doctest::Approx(0.5F * (c[4].x + c[6].x)));
+}
+
+TEST_CASE("heap view: a question's letters and countdown are lesson size (--questions on)") {
+    HeapRenderer renderer(config_of(854, 480), test::test_backend());
+    view::HeapPanelView panel = binary_panel({"X", "T", "S", "P", "L", "R", "A"}, 7);
+    panel.letters = {{0, "A", false}, {2, "B", false}, {5, "C", true}};
+    panel.countdown = "Think: 3";
+    const view::HeapFrameView frame = frame_of({panel});
+    (void)renderer.render(frame);
+    const float lesson = 0.028F * 480.0F;
+    for (const std::string expected : {"A", "B", "C", "Think: 3"}) {
+        CAPTURE(expected);
+        const auto& drawn = renderer.last_text();
+        // The letter's plate text (a key "A" is drawn too: the largest of them is the node's).
+        const bool found = std::any_of(drawn.begin(), drawn.end(), [&](const DrawnText& t) {
+            return t.text == expected && t.cap_height >= lesson - 0.5F;
+        });
+        CHECK(found);
+    }
+    // The reveal draws the same letters; a frame without a question draws none.
+    panel.reveal = true;
+    panel.countdown.clear();
+    (void)renderer.render(frame_of({panel}));
+    const auto& shown = renderer.last_text();
+    CHECK(std::count_if(shown.begin(), shown.end(),
+                        [](const DrawnText& t) { return t.text == "B"; }) == 1);
+    (void)renderer.render(frame_of({binary_panel({"X", "T", "S"}, 7)}));
+    const auto& none = renderer.last_text();
+    CHECK(std::none_of(none.begin(), none.end(),
+                       [](const DrawnText& t) { return t.text == "B" || t.text == "Think: 3"; }));
 }
 
 }  // namespace collide::render

@@ -34,7 +34,10 @@ inline constexpr double min_heap_chapter_seconds = 4.0;
 /// ("insert P, insert Q, insert E"; more than three: "insert P ... insert E (5 operations)") so
 /// that every chapter lasts at least min_heap_chapter_seconds (one chapter for a shorter video).
 /// The intro goes with the first operation, the outro with the last; back to back from 0 to
-/// `video_seconds`; the still is each chapter's last frame at `fps`.
+/// `video_seconds`; the still is each chapter's last frame at `fps`. A question
+/// (HeapProgram::questions) ends its chapter where its reveal starts ("insert S: Where does S end
+/// up: A, B or C?"; the slide player stops on it) and its reveal starts the next ("Answer: B, S
+/// ends up at a[2]").
 [[nodiscard]] Chapters heap_chapters(const HeapProgram& lesson, double video_seconds, int fps);
 
 /// `text` as one line: line breaks become `separator`, runs of spaces one space, no spaces at

@@ -39,6 +39,37 @@ struct HeapPacing {
 /// "indexed binary heap", "indexed 4-heap".
 [[nodiscard]] std::string panel_title(const pq::QueueKind& kind);
 
+/// "Where does K end up?" (`collide heap --questions on`, issue #45): before a swim or a sink the
+/// lesson holds, letters A, B, ... mark candidate slots of one heap panel, and the reveal names
+/// the slot the recorded operation leaves K in (followed through the record's own exchanges,
+/// never worked out again here).
+struct HeapQuestion {
+    std::size_t op = 0;     ///< the operation asked about
+    std::size_t panel = 0;  ///< the heap panel asked about (the first tree panel)
+    /// The question holds before this shown step of the panel's operation (OpText::shown index,
+    /// >= 1): the key is in place and about to swim or sink.
+    std::size_t before = 0;
+    std::string key;                      ///< K
+    std::size_t from = 0;                 ///< the slot K starts from
+    std::vector<std::size_t> candidates;  ///< slots in letter order (A, B, ...), 2 to 4
+    std::size_t answer = 0;               ///< index into candidates: where K ends up
+    double think = 0.0;                   ///< seconds of video frozen on the question
+    double reveal = 0.0;                  ///< then seconds on the answer
+    std::string question;                 ///< "Where does S end up: A, B or C?"
+    std::string answer_words;             ///< "Answer: B, S ends up at a[2]"
+    [[nodiscard]] double seconds() const noexcept { return think + reveal; }
+};
+
+class HeapProgram;
+
+/// The questions `lesson` can ask: one per insert, remove and increase-key of its first heap
+/// panel whose key has at least two slots it could end in (heapsort's phases ask none).
+/// Candidates: the answer, and slots on K's way (its ancestors for a swim; for a sink the slots
+/// it passed, the answer's children and its sibling), their letters shuffled by the operation's
+/// index. A question holds at least min_think_seconds, and long enough that the stretch from its
+/// operation's start to the reveal lasts 4 s (a chapter ends on it).
+[[nodiscard]] std::vector<HeapQuestion> heap_questions(const HeapProgram& lesson);
+
 /// Where one panel is at one moment.
 struct HeapPanelMoment {
     const pq::ArrayState* state = nullptr;  ///< never null
@@ -53,6 +84,11 @@ struct HeapMoment {
     bool started = false;   ///< false during the intro
     bool finished = false;  ///< true during the outro (every operation done)
     std::vector<HeapPanelMoment> panels;
+    /// A question under way: its index in HeapProgram::questions() (-1: none), whether its
+    /// answer shows, and the seconds left to think.
+    int question = -1;
+    bool reveal = false;
+    double think_left = 0.0;
 };
 
 /// A heap lesson as a class sees it: captions, pacing and frames over a record.
@@ -64,6 +100,8 @@ class HeapProgram {
     HeapProgram(pq::HeapRecord record, HeapPacing pacing, int index_base = 1);
 
     [[nodiscard]] const pq::HeapRecord& record() const noexcept { return record_; }
+    [[nodiscard]] const HeapPacing& pacing() const noexcept { return pacing_; }
+    [[nodiscard]] int index_base() const noexcept { return index_base_; }
     /// One label per operation for the strip of tokens ("P", "*", "3^12"; "build", "sortdown").
     [[nodiscard]] const std::vector<std::string>& op_labels() const noexcept { return labels_; }
     /// The panels' titles joined by ", " ("unordered array, binary heap"), for a summary line.
@@ -87,6 +125,15 @@ class HeapProgram {
     /// lesson cannot show it (heap_code_fits: one panel, a heap).
     void show_code(bool on);
     [[nodiscard]] bool shows_code() const noexcept { return code_; }
+
+    /// Whether the lesson asks "where does K end up?" (`--questions on`): heap_questions of the
+    /// record, each holding the lesson before its swim or sink; the timing (op_starts(),
+    /// duration()) grows by their seconds.
+    void ask_questions(bool on);
+    /// The questions asked (none unless ask_questions(true)).
+    [[nodiscard]] const std::vector<HeapQuestion>& questions() const noexcept { return questions_; }
+    /// Seconds of video at which question `q` starts (its reveal starts think seconds later).
+    [[nodiscard]] double question_start(std::size_t q) const;
     /// The widest key label of the lesson (for sizing node text once per video).
     [[nodiscard]] std::string widest_key() const;
     /// Every key the lesson shows, each once, in the order they first appear.
@@ -113,8 +160,14 @@ class HeapProgram {
     /// the first), as the trace's "returned" column; "" for a lesson without removals.
     [[nodiscard]] view::ReturnedKeys returned(std::size_t panel, const HeapMoment& moment) const;
 
+    /// op_start_ from the steps, the pauses and the questions.
+    void lay_out();
+    /// The question asked in operation `op`, if any.
+    [[nodiscard]] const HeapQuestion* question_of(std::size_t op) const noexcept;
+
     pq::HeapRecord record_;
     std::vector<PanelText> text_;
+    std::vector<HeapQuestion> questions_;
     std::vector<std::string> labels_;
     std::vector<double> op_start_;  ///< seconds at which each operation starts, then the outro
     HeapPacing pacing_;

@@ -36,6 +36,24 @@ namespace collide::show {
 /// fast until the goal's expansion, walked too).
 inline constexpr std::size_t walked_expansions = 3;
 
+/// "Which board does A* expand next?" (`collide puzzle --questions on`, issue #45): early in an
+/// A* search the video stops, letters two boards at the front of the queue (their labels say
+/// moves + estimate = priority) and reveals the one the recorded search expands next.
+struct PuzzleQuestion {
+    std::size_t panel = 0;  ///< the A* panel asked about
+    std::size_t step = 0;   ///< expansions done when it asks; the answer is expansion `step`
+    /// Node ids of the search, in letter order (A, B); one is SearchResult::expansions[step], the
+    /// other a board queued with a higher priority (so the picture decides between them).
+    std::vector<std::uint32_t> candidates;
+    std::size_t answer = 0;    ///< index into candidates
+    double lesson_at = 0.0;    ///< the lesson's time it freezes at (its clock without questions)
+    double think = 0.0;        ///< seconds of video frozen on the question
+    double reveal = 0.0;       ///< then seconds on the answer
+    std::string question;      ///< "Which board does A* expand next: A or B?"
+    std::string answer_words;  ///< "Answer: B, 2+6=8: the lowest moves + estimate"
+    [[nodiscard]] double seconds() const noexcept { return think + reveal; }
+};
+
 class PuzzleProgram {
   public:
     /// Which state of the queue a frame shows while an expansion is under way.
@@ -63,8 +81,10 @@ class PuzzleProgram {
     /// With the code: where the search is at `seconds`. Precondition: shows_code().
     [[nodiscard]] CodeMoment code_at(double seconds) const;
 
-    /// Seconds of video.
+    /// Seconds of video (the questions included).
     [[nodiscard]] double duration() const noexcept;
+    /// The times below are on the lesson's own clock, which stops during a question (the video
+    /// from question_start(q) on is seconds() later than it).
     /// When the searches start growing, and when the last one has finished.
     [[nodiscard]] double search_start() const noexcept { return intro_; }
     [[nodiscard]] double search_end() const noexcept { return intro_ + search_seconds_; }
@@ -80,6 +100,16 @@ class PuzzleProgram {
 
     /// The frame at `seconds` (clamped to the video).
     [[nodiscard]] view::PuzzleFrameView frame_at(double seconds) const;
+
+    /// Whether the video asks "which board does A* expand next?" (`--questions on`): one
+    /// question per A* search, at its first expansion after which the queue's front holds a
+    /// board of a higher priority than the next one; the video grows by its seconds.
+    void ask_questions(bool on);
+    [[nodiscard]] const std::vector<PuzzleQuestion>& questions() const noexcept {
+        return questions_;
+    }
+    /// Seconds of video at which question `q` starts (its reveal starts think seconds later).
+    [[nodiscard]] double question_start(std::size_t q) const;
 
     /// The video's name, for a slide page's title: "8-puzzle".
     [[nodiscard]] std::string name() const;
@@ -100,6 +130,12 @@ class PuzzleProgram {
     };
 
     void pace_code();
+    /// The frame at `t` seconds of the lesson's own clock (no questions).
+    [[nodiscard]] view::PuzzleFrameView lesson_frame(double t) const;
+    /// Letters, countdown and words of question `q` on `view` (`left`: seconds to think).
+    void pose(const PuzzleQuestion& q, bool reveal, double left, view::PuzzleFrameView& view) const;
+    /// The question of search `i`, if it has one to ask.
+    [[nodiscard]] std::optional<PuzzleQuestion> question_for(std::size_t i) const;
     [[nodiscard]] view::PuzzlePanelView search_panel(const Side& side, std::size_t step,
                                                      QueueMoment queue = QueueMoment::after) const;
     [[nodiscard]] view::PuzzlePanelView playback_panel(const Side& side, double t) const;
@@ -123,12 +159,13 @@ class PuzzleProgram {
     std::vector<double> turns_;    ///< when each solution plays, from playback_start()
     double playback_length_ = 0.0;
     bool code_ = false;
-    view::PuzzleShown shown_;     ///< the boards each panel draws (by the board's side)
-    std::vector<Beat> beats_;     ///< with the code: the walked lines, in time order
-    double fast_start_ = 0.0;     ///< with the code: when the fast middle starts
-    double fast_seconds_ = 0.0;   ///< ... and how long it runs
-    std::size_t fast_from_ = 0;   ///< ... the expansions shown when it starts
-    std::size_t fast_count_ = 0;  ///< ... the expansions it adds
+    view::PuzzleShown shown_;                ///< the boards each panel draws (by the board's side)
+    std::vector<Beat> beats_;                ///< with the code: the walked lines, in time order
+    double fast_start_ = 0.0;                ///< with the code: when the fast middle starts
+    double fast_seconds_ = 0.0;              ///< ... and how long it runs
+    std::size_t fast_from_ = 0;              ///< ... the expansions shown when it starts
+    std::size_t fast_count_ = 0;             ///< ... the expansions it adds
+    std::vector<PuzzleQuestion> questions_;  ///< in time order
 };
 
 }  // namespace collide::show

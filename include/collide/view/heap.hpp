@@ -65,6 +65,14 @@ struct ReturnedKeys {
     [[nodiscard]] bool empty() const noexcept { return label.empty(); }
 };
 
+/// A question's letter on one node of the tree (`collide heap --questions on`): "A" beside the
+/// node of slot `slot`, on a plate clear of the key.
+struct HeapLetterView {
+    std::size_t slot = 0;
+    std::string letter;   ///< "A"
+    bool answer = false;  ///< the reveal: this letter is the answer (drawn lit, the others faint)
+};
+
 /// One queue.
 struct HeapPanelView {
     std::string title;                  ///< "binary heap (max)"
@@ -89,6 +97,11 @@ struct HeapPanelView {
     bool show_map = false;             ///< indexed heap: draw `map` beside the tree
     std::string map_title;             ///< the map's heading, in the lecture's names
     std::vector<HeapMapRow> map;
+    /// A question under way on this panel: the candidates' letters (empty: none) and, while the
+    /// class thinks, the countdown ("Think: 3"; empty during the reveal).
+    std::vector<HeapLetterView> letters;
+    std::string countdown;
+    bool reveal = false;  ///< the letters show the answer
 };
 
 /// One frame.
