@@ -7,11 +7,12 @@ namespace collide::render {
 
 namespace {
 
-/// Space inside the panel's edge, and the indentation per level, in font heights.
-constexpr float pad_share = 0.6F;
-constexpr float indent_share = 1.1F;
+/// Space inside the panel's edge, and the indentation per level, in font heights: narrow enough
+/// that the collision video's listing stands beside two boxes of 35 % of the frame (issue 44).
+constexpr float pad_share = 0.4F;
+constexpr float indent_share = 0.8F;
 /// Room for the chevron left of the lines, in font heights.
-constexpr float gutter_share = 0.9F;
+constexpr float gutter_share = 0.8F;
 
 float inset(float px) {
     return px * (pad_share + gutter_share);

@@ -315,11 +315,16 @@ FrameLayout lesson_layout(const LayoutInput& in) {
     layout.headline_pixel_height = head;
     const auto height = static_cast<float>(in.height);
     const float m = std::max(3.0F, std::round(height * 0.014F));
-    // --code: a column on the right edge for the pseudocode, beside the boxes and their
-    // column; the queue strip and the caption under them keep the frame's width.
+    // --code: a column on the right edge for the pseudocode with the column (clock, energy,
+    // cost) under it, so that the boxes stand side by side without the column between them
+    // and keep their share (issue 44: >= 35 % with the queue); the queue strip and the caption
+    // under them keep the frame's width.
     const auto full_width = static_cast<float>(in.width);
     const float code_w = in.code_rows > 0 ? std::ceil(in.code_width) : 0.0F;
-    const float width = full_width - (code_w > 0.0F ? code_w + m : 0.0F);
+    const bool column_under_code = code_w > 0.0F;
+    const float side_w =
+        column_under_code ? std::max(code_w, std::max(0.15F * full_width, 6.5F * body)) : 0.0F;
+    const float width = full_width - (column_under_code ? side_w + m : 0.0F);
     layout.margin = m;
     // Lines as tall as the font: a pixel height holds ascent and descent, so rows never touch,
     // and the boxes keep the height (issue 44: >= 55 % of the frame).
@@ -353,12 +358,15 @@ FrameLayout lesson_layout(const LayoutInput& in) {
     // A large plot is the subject, but the boxes and it together fill the frame: a quarter of
     // the width leaves the boxes their height.
     const float column_w =
-        std::round(in.large_plot ? 0.25F * width : std::max(0.15F * width, 6.5F * body));
-    const float room_w = (width - column_w - (n + 2.0F) * m) / n;
+        column_under_code
+            ? 0.0F
+            : std::round(in.large_plot ? 0.25F * width : std::max(0.15F * width, 6.5F * body));
+    const float column_margins = column_under_code ? 0.0F : m;
+    const float room_w = (width - column_w - (n + 1.0F) * m - column_margins) / n;
 
     double scale = std::numeric_limits<double>::max();
     for (const Box& box : in.boxes) scale = std::min(scale, fit_scale(box, room_w, room_h));
-    float used_w = column_w + (n + 2.0F) * m;
+    float used_w = column_w + (n + 1.0F) * m + column_margins;
     float used_h = 0.0F;
     for (const Box& box : in.boxes) {
         used_w += static_cast<float>(box.width * scale);
@@ -371,15 +379,16 @@ FrameLayout lesson_layout(const LayoutInput& in) {
     std::vector<float> box_x0;
     float column_x0 = 0.0F;
     for (std::size_t i = 0; i < in.boxes.size(); ++i) {
-        if (i == 1) {  // the column sits between two boxes
+        if (i == 1) {  // the column sits between two boxes (or under the code: none here)
             column_x0 = x;
-            x += column_w + m;
+            x += column_w + column_margins;
         }
         box_x0.push_back(x);
         x += static_cast<float>(in.boxes[i].width * scale) + m;
     }
     if (in.boxes.size() == 1) column_x0 = x;
-    const float column_mid = column_x0 + 0.5F * column_w;
+    // Where the two panels' text meets: the column's middle, or without it the boxes' gap's.
+    const float column_mid = column_under_code ? column_x0 - 0.5F * m : column_x0 + 0.5F * column_w;
 
     const float top = box_top + dy;
     for (std::size_t i = 0; i < in.boxes.size(); ++i) {
@@ -444,14 +453,48 @@ FrameLayout lesson_layout(const LayoutInput& in) {
     const float box_bottom = top + used_h;
     layout.text.push_back(
         {TextRole::caption, -1, {m, caption_top, full_width - m, height - m}, body});
-    if (code_w > 0.0F) {
-        // As tall as its rows (1.2 lines each and the padding), down to the strip at most.
+    if (column_under_code) {
+        // As tall as its rows (1.2 lines each and the padding), down to the strip at most; the
+        // column takes what it leaves down to the boxes' foot.
         const float bottom =
             layout.queue_panel >= 0 ? layout.queue_strip.y0 - gap : caption_top - gap;
         const float rows_h = (static_cast<float>(in.code_rows) * 1.2F + 1.2F) * body;
-        layout.code = {width, m, width + code_w, std::min(bottom, m + std::ceil(rows_h))};
+        const float code_x0 = full_width - m - side_w;
+        layout.code = {code_x0, m, code_x0 + code_w, std::min(bottom, m + std::ceil(rows_h))};
         for (const RectF& row : code_rows(layout.code, body, in.code_rows))
             layout.text.push_back({TextRole::code, -1, row, body});
+        // The right panel's lines under its box (queue legend, marks, how) move to the foot of
+        // this column, so that the left panel's note and marks take the width under both boxes
+        // whole ("Moves only every 96th frame" is never cut).
+        std::vector<TextSlot> right_lines;
+        for (auto it = layout.text.begin(); it != layout.text.end();) {
+            const bool under_right =
+                it->panel == 1 && (it->role == TextRole::marks || it->role == TextRole::how ||
+                                   it->role == TextRole::note);
+            if (under_right) {
+                right_lines.push_back(*it);
+                it = layout.text.erase(it);
+                continue;
+            }
+            if (it->panel == 0 && (it->role == TextRole::marks || it->role == TextRole::note))
+                it->rect.x1 = width - m;
+            ++it;
+        }
+        const float side_bottom = std::max(box_bottom, bottom);
+        float y = side_bottom - static_cast<float>(right_lines.size()) * line;
+        for (TextSlot& slot : right_lines) {
+            slot.rect = {code_x0, y, code_x0 + side_w, y + line};
+            layout.text.push_back(slot);
+            y += line;
+        }
+        const float column_bottom = side_bottom - static_cast<float>(right_lines.size()) * line -
+                                    (right_lines.empty() ? 0.0F : gap);
+        LayoutInput column_in = in;
+        column_in.small_plot = false;  // the plot stops at the boxes' foot
+        lay_out_column(layout, column_in,
+                       {code_x0, side_w, layout.code.y1 + gap, column_bottom, line, head_line, gap,
+                        body, head, true});
+        return layout;
     }
 
     lay_out_column(

@@ -370,14 +370,16 @@ void LessonPainter::add_queue_node(std::string_view label, std::string_view time
 // The event just popped, beside the root it was a moment ago, fading out with an arrow away
 // from the tree: "remove the min = get next collision", seen as it happens.
 void LessonPainter::add_leaving_root(const QueueView& queue, const QueueWords& words, double now,
-                                     PointF root, float node_w, float node_h) {
+                                     PointF root, float node_w, float node_h, float left) {
     if (queue.popped.empty()) return;
     const QueuedEvent& e = queue.popped.back();
     const float glow = pop_highlight(e, now);
     if (glow <= 0.0F) return;
     const FontAtlas& small = *small_font_;
-    const float x1 = std::round(root.x - 0.5F * node_w - 1.2F * node_w);
     const float w = std::round(1.5F * node_w);  // room for QueueWords::stale_leaving
+    // Beside the latest pops' list, never over it: a wide node moves right, its arrow shortens.
+    const float x1 =
+        std::round(std::max(root.x - 0.5F * node_w - 1.2F * node_w, std::ceil(left) + w));
     const RectF node{x1 - w, std::round(root.y - 0.5F * node_h), x1,
                      std::round(root.y + 0.5F * node_h)};
     const Rgba8 color = e.stale ? palette_.muted : next_color();
@@ -452,7 +454,7 @@ void LessonPainter::add_queue_tree(const QueueView& queue, const QueueWords& wor
         add_queue_node(nth(words.slot_labels, i),
                        e.stale ? words.stale_slot : nth(words.slot_times, i), node, frame, e.stale);
     }
-    add_leaving_root(queue, words, now, centre.front(), node_w, node_h);
+    add_leaving_root(queue, words, now, centre.front(), node_w, node_h, area.x0);
     if (!words.below.empty()) {
         draw_text(Font::small,
                   {TextRole::queue,

@@ -230,7 +230,7 @@ TEST_CASE("lesson layout: the queue strip fits under the panels, clear of every 
     CHECK(plain.slots(TextRole::queue).empty());
 }
 
-TEST_CASE("lesson layout: --code's column sits right of boxes and column, over the queue strip") {
+TEST_CASE("lesson layout: --code's column sits on the right edge, over the queue strip") {
     for (const Size size : {Size{854, 480}, Size{1280, 720}, Size{1920, 1080}}) {
         for (const int panels : {1, 2}) {
             LayoutInput in = lesson_input(size, panels);
@@ -254,6 +254,12 @@ TEST_CASE("lesson layout: --code's column sits right of boxes and column, over t
             CHECK_FALSE(overlaps(code, layout.queue_strip));
             // The strip under it keeps the frame's width.
             CHECK(layout.queue_strip.x1 > code.x0);
+            if (panels == 2) {
+                // The column goes under the listing: the two boxes stand side by side.
+                CHECK(layout.column.area.y0 >= code.y1);
+                CHECK(layout.column.area.x0 >= layout.panels[1].box.x1);
+                CHECK(layout.panels[1].box.x0 - layout.panels[0].box.x1 <= layout.margin + 0.5F);
+            }
         }
     }
     CHECK(lesson_layout(lesson_input({1280, 720})).slots(TextRole::code).empty());

@@ -1,7 +1,7 @@
 // `collide render --queue --code` (collide/show/event_loop_code.hpp): the event-driven loop's
 // marked line follows the queue's latest pop. A valid event walks "delete the minimum", "if e is
 // invalidated", "resolve e", "predict ..."; a stale one stops at the check; between walks the
-// clock runs and "move all discs" is marked. Checked against the pops of a QueueView.
+// clock runs and "move discs" is marked. Checked against the pops of a QueueView.
 #include <doctest/doctest.h>
 
 #include <string>
@@ -40,7 +40,7 @@ TEST_CASE("event loop code: the listing names the loop's phases in order") {
     CHECK(text(LoopLine::loop).find("while") == 0);
     CHECK(text(LoopLine::pop).find("delete the minimum") != std::string::npos);
     CHECK(text(LoopLine::check).find("invalidated") != std::string::npos);
-    CHECK(text(LoopLine::move).find("move all discs") == 0);
+    CHECK(text(LoopLine::move).find("move discs") == 0);
     CHECK(text(LoopLine::resolve).find("resolve") == 0);
     CHECK(text(LoopLine::predict).find("predict") == 0);
     CHECK_FALSE(code.current.has_value());
