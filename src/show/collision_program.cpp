@@ -132,8 +132,11 @@ const FrameContent& CollisionProgram::frame(const CollisionState& state) {
             out.next_collision = {};
             out.replay = question_picture(segment, panel.snapshot, segment.end - video_time);
         }
-        if (will_see && panel.time_driven && !replayed)
+        if (will_see && panel.time_driven && !replayed && asked->failure) {
+            // The replay's zoom from the start: the two discs are a few pixels in the whole box.
             out.replay = will_see_view(*asked, segment.end - video_time);
+            out.zoom = replay_target(*asked->failure, panel.snapshot.box);
+        }
         if (state.moved || content_.energy_drift[i].empty())
             content_.energy_drift[i].push_back(panel.drift);
         drifts_.resize(state.panels.size());
