@@ -48,6 +48,7 @@ enum class ReplayChoice {
 enum class QuestionKind : std::uint8_t {
     next_collision,  ///< which of two to four marked pairs collides next (event-driven panel)
     how_many,        ///< how many collisions in the next second of video (event-driven panel)
+    will_see,        ///< will the next check see this collision? (time-driven panel)
 };
 
 /// How a 3D scene's camera moves (`--camera`, `[render] camera`): a fixed view, or one that turns
@@ -72,8 +73,10 @@ inline constexpr std::array<NamedValue<PlotSize>, 3> plot_size_names{
     {{"none", PlotSize::none}, {"small", PlotSize::small}, {"large", PlotSize::large}}};
 inline constexpr std::array<NamedValue<ReplayChoice>, 3> replay_choice_names{
     {{"none", ReplayChoice::none}, {"first", ReplayChoice::first}, {"all", ReplayChoice::all}}};
-inline constexpr std::array<NamedValue<QuestionKind>, 2> question_kind_names{
-    {{"next-collision", QuestionKind::next_collision}, {"how-many", QuestionKind::how_many}}};
+inline constexpr std::array<NamedValue<QuestionKind>, 3> question_kind_names{
+    {{"next-collision", QuestionKind::next_collision},
+     {"how-many", QuestionKind::how_many},
+     {"will-see", QuestionKind::will_see}}};
 inline constexpr std::array<NamedValue<CameraMotion>, 2> camera_motion_names{
     {{"fixed", CameraMotion::fixed}, {"orbit", CameraMotion::orbit}}};
 inline constexpr std::array<NamedValue<Projection>, 2> projection_names{

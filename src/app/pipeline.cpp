@@ -149,12 +149,16 @@ class CollisionJobFrames final : public FrameProgram {
     /// Draws the frame, except inside a hold or a question's reveal: there every frame after
     /// the first is the first one again (the states, the clock, the caption and the markers all
     /// stand still), and drawing it again would only lengthen the trails by points that stand
-    /// still too.
+    /// still too. A will-see question's reveal is a replay: it moves.
     void output(const show::CollisionState& frame, const render::FrameContent& content,
                 Image& image) {
         const show::Segment& segment = plan_.timeline.segment_at(frame.index);
-        const bool hold =
-            segment.kind == show::SegmentKind::hold || segment.kind == show::SegmentKind::reveal;
+        const bool replays = segment.question >= 0 &&
+                             static_cast<std::size_t>(segment.question) < plan_.questions.size() &&
+                             plan_.questions[static_cast<std::size_t>(segment.question)].kind ==
+                                 QuestionKind::will_see;
+        const bool hold = segment.kind == show::SegmentKind::hold ||
+                          (segment.kind == show::SegmentKind::reveal && !replays);
         if (hold && frame.index > segment.first_frame && !held_.rgba.empty()) {
             image = held_;
             return;

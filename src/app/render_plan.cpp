@@ -19,6 +19,7 @@
 #include "collide/sim/pq/queue_kind.hpp"
 #include "collide/sim/queue_view.hpp"
 #include "font_search.hpp"
+#include "replay_plan.hpp"
 #include "video_options.hpp"
 
 namespace collide::app {
@@ -628,47 +629,109 @@ void lay_out_frames(RenderPlan& plan, const RenderRequest& request,
     }
 }
 
+namespace {
+
+/// Where each question asked stands on the timeline, by question index.
+struct AskedAt {
+    std::int64_t sim_frame = -1;    ///< the simulation frame it freezes on (-1: not asked)
+    std::int64_t video_frame = -1;  ///< its first video frame
+};
+std::vector<AskedAt> asked_at(const show::Timeline& timeline, std::size_t questions) {
+    std::vector<AskedAt> out(questions);
+    for (const show::Segment& segment : timeline.segments) {
+        if (segment.kind == show::SegmentKind::question && segment.question >= 0 &&
+            static_cast<std::size_t>(segment.question) < questions)
+            out[static_cast<std::size_t>(segment.question)] = {segment.sim_frame,
+                                                               segment.first_frame};
+    }
+    return out;
+}
+
+/// A will-see question asked on simulation frame `frozen`: answered when the time-driven
+/// engine's next step fails there; else `moved` says how many simulation frames later its next
+/// failure is (0 and not askable: none fails before the video's end).
+show::QuestionAnswer answer_will_see_at(const Scene& scene, const RenderPlan& plan,
+                                        std::int64_t frozen, std::int64_t& moved,
+                                        const std::atomic<bool>* stop) {
+    moved = 0;
+    const std::optional<show::ReplayFailure> failure = failure_after(scene, plan, frozen, stop);
+    if (!failure) return {};
+    moved = failure->sim_frame - 1 - frozen;
+    return show::answer_will_see(*failure, frozen, plan.clock.time(frozen));
+}
+
+}  // namespace
+
 void ask_questions(RenderPlan& plan, const RenderRequest& request, const Scene& scene,
                    const ReplayFinder& find_replays, const std::atomic<bool>* stop) {
     plan.questions.clear();
     if (plan.kind == OutputKind::still || plan.lesson.questions.empty()) return;
     show::LessonPlan& lesson = plan.lesson;
     std::vector<show::QuestionAnswer> answers;
-    while (true) {
+    // Each round lays the frames out again: a question left out or moved changes the frames the
+    // later ones freeze on. A will-see question moving onto its failure converges in a few.
+    constexpr int max_rounds = 32;
+    for (int round = 0;; ++round) {
         std::vector<QuestionKind> kinds;
         for (const QuestionCue& cue : lesson.question_cues) kinds.push_back(cue.kind);
         answers = show::answer_questions(scene, plan.event_engine, plan.clock, plan.timeline, kinds,
                                          stop);
-        const std::vector<int> asked = show::questions_asked(plan.timeline);
+        const std::vector<AskedAt> where_asked = asked_at(plan.timeline, kinds.size());
         std::vector<show::TimelineQuestion> questions;
         std::vector<QuestionCue> cues;
         std::vector<show::QuestionAnswer> kept;
+        bool moved_any = false;
         for (std::size_t i = 0; i < kinds.size(); ++i) {
-            const QuestionCue& cue = lesson.question_cues[i];
+            QuestionCue cue = lesson.question_cues[i];
+            show::TimelineQuestion question = lesson.questions[i];
             const std::string where = show::question_place(cue) + ": render.questions";
-            if (std::find(asked.begin(), asked.end(), static_cast<int>(i)) == asked.end()) {
+            std::int64_t later = 0;
+            const AskedAt asked = where_asked[i];
+            if (asked.sim_frame >= 0 && kinds[i] == QuestionKind::will_see)
+                answers[i] = answer_will_see_at(scene, plan, asked.sim_frame, later, stop);
+            if (asked.sim_frame < 0) {
                 plan.notices.push_back(fmt::format(
                     "{}: no room at {} s for {} s of question and answer before the video's end; "
                     "not asked",
-                    where, cue.at, cue.think + show::reveal_seconds));
-            } else if (!answers[i].askable) {
-                plan.notices.push_back(fmt::format(
-                    "{}: nothing to ask at {} s (the event-driven engine resolves no collision in "
-                    "the {} frames after it); not asked",
-                    where, cue.at, show::look_ahead_frames));
-            } else {
-                questions.push_back(lesson.questions[i]);
-                cues.push_back(cue);
-                kept.push_back(answers[i]);
+                    where, cue.at, cue.think + question.reveal));
+                continue;
             }
+            if (later > 0 && round < max_rounds) {
+                // The picture freezes just before the failing step: the frames between run
+                // first (one video frame each while running; a whole frame's time, so that no
+                // rounding puts it a frame later).
+                question.at = static_cast<double>(asked.video_frame + later) / plan.fps;
+                moved_any = true;
+            } else if (!answers[i].askable) {
+                plan.notices.push_back(
+                    kinds[i] == QuestionKind::will_see
+                        ? fmt::format("{}: nothing to ask at {} s (the time-driven engine misses "
+                                      "no collision after it before the video's end); not asked",
+                                      where, cue.at)
+                        : fmt::format("{}: nothing to ask at {} s (the event-driven engine "
+                                      "resolves no collision in the {} frames after it); not "
+                                      "asked",
+                                      where, cue.at, show::look_ahead_frames));
+                continue;
+            }
+            questions.push_back(question);
+            cues.push_back(cue);
+            kept.push_back(answers[i]);
         }
-        if (kept.size() == kinds.size()) break;
+        if (kept.size() == kinds.size() && !moved_any) break;
         // Without the questions left out, the later ones freeze other frames: ask again.
         lesson.questions = std::move(questions);
         lesson.question_cues = std::move(cues);
         lay_out_frames(plan, request, find_replays);
     }
     for (std::size_t i = 0; i < answers.size(); ++i) {
+        if (lesson.questions[i].at != lesson.question_cues[i].at) {
+            plan.notices.push_back(fmt::format(
+                "{}: render.questions.at: moved from {} s to {:.2f} s, the moment before the "
+                "time-driven engine's next check misses a collision",
+                show::question_place(lesson.question_cues[i]), lesson.question_cues[i].at,
+                lesson.questions[i].at));
+        }
         lesson.questions[i].question =
             show::question_words(answers[i], lesson.question_cues[i].text);
         lesson.questions[i].answer = show::answer_words(answers[i], plan.clock);

@@ -133,4 +133,28 @@ std::vector<show::ReplayFailure> find_replays(const Scene& scene, const RenderPl
     return out;
 }
 
+std::optional<show::ReplayFailure> failure_after(const Scene& scene, const RenderPlan& plan,
+                                                 std::int64_t frame,
+                                                 const std::atomic<bool>* stop) {
+    sim::TimeEngine engine(scene, plan.time_engine);
+    engine.set_stop_flag(stop);
+    for (std::int64_t j = 0; j < plan.clock.count; ++j) {
+        engine.advance_to(std::max(plan.clock.time(j), engine.time()));
+        for (const sim::StepFailure& step : engine.failures()) {
+            if (!shows_replay_tag(scene, step)) continue;
+            show::ReplayFailure failure;
+            failure.step = step;
+            failure.dt = plan.time_engine.dt;
+            failure.sim_frame = show::first_frame_after_step(step.step, failure.dt, plan.clock);
+            if (failure.sim_frame <= frame) continue;
+            std::vector<show::ReplayFailure> found{failure};
+            if (plan.mode != RenderMode::time) add_predictions(scene, plan, found, stop);
+            return found.front();
+        }
+        // The engine keeps a few records: those of frames passed are not wanted.
+        engine.forget_failures();
+    }
+    return std::nullopt;
+}
+
 }  // namespace collide::app

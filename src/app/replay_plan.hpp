@@ -7,6 +7,7 @@
 /// first steps costs a few steps; one without runs the time-driven engine over the whole video.
 
 #include <atomic>
+#include <optional>
 #include <vector>
 
 #include "collide/scene.hpp"
@@ -27,5 +28,13 @@ namespace collide::app {
 /// (nullptr: never) throws Error(runtime) within a step or a few thousand events.
 [[nodiscard]] std::vector<show::ReplayFailure> find_replays(
     const Scene& scene, const RenderPlan& plan, const std::atomic<bool>* stop = nullptr);
+
+/// The time-driven engine's first failed step (of shows_replay_tag's discs) whose first frame
+/// after it (on plan.clock) comes after simulation frame `frame`: run frame by frame as the video
+/// runs it, with the event-driven collision of the same discs when the plan has that panel.
+/// Empty when none fails within plan.clock. `stop` as find_replays.
+[[nodiscard]] std::optional<show::ReplayFailure> failure_after(
+    const Scene& scene, const RenderPlan& plan, std::int64_t frame,
+    const std::atomic<bool>* stop = nullptr);
 
 }  // namespace collide::app

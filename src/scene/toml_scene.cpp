@@ -488,7 +488,8 @@ class TomlReader : private toml_text::ValueReader {
             const toml::node* at = t.get("at");
             const toml::node* kind = t.get("kind");
             if (at == nullptr) fail(t, field + ".at", "missing (seconds of video)");
-            if (kind == nullptr) fail(t, field + ".kind", "missing (next-collision or how-many)");
+            if (kind == nullptr)
+                fail(t, field + ".kind", "missing (next-collision, how-many or will-see)");
             QuestionCue cue;
             cue.at =
                 cue_time(*at, field + ".at",

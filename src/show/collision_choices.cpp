@@ -115,16 +115,23 @@ LessonPlan lesson_plan(const Scene& scene, const LessonRequest& request,
         for (CaptionCue& cue : lesson.captions) cue.hold = 0.0;
     }
     // Questions: where the lesson's captions and words are drawn, by the panel that answers
-    // them (every kind so far: the event-driven one).
+    // them (will-see: the time-driven one; the others: the event-driven one).
     if (request.questions && shows.replays && !request.step_list) {
         for (const QuestionCue& cue : scene.render.questions) {
-            if (needs_event_panel(cue.kind) && !request.event_panel) {
+            const bool event = needs_event_panel(cue.kind);
+            if (event ? !request.event_panel : needs_time_panel(cue.kind) && !request.time_panel) {
                 notices.push_back(question_place(cue) + ": render.questions: a " +
                                   std::string(question_kind_name(cue.kind)) +
-                                  " question needs the event-driven panel; not asked");
+                                  " question needs the " + (event ? "event" : "time") +
+                                  "-driven panel; not asked");
                 continue;
             }
-            lesson.questions.push_back({cue.at, cue.think, reveal_seconds, {}, {}});
+            lesson.questions.push_back({cue.at,
+                                        cue.think,
+                                        reveal_seconds_of(cue.kind),
+                                        {},
+                                        {},
+                                        cue.kind == QuestionKind::will_see});
             lesson.question_cues.push_back(cue);
         }
     }

@@ -59,22 +59,27 @@ const FrameContent& CollisionProgram::frame(const CollisionState& state) {
     content_.energy_drift.resize(state.panels.size());
     last_step_time_.resize(state.panels.size(), -1.0);
     step_phase_.resize(state.panels.size(), 0);
-    // A replay: both panels zoom onto the failure's spot, each with its own marks.
-    const ReplayFailure* replay = segment.kind == SegmentKind::replay
-                                      ? replay_at(settings_.replays, segment.sim_frame)
-                                      : nullptr;
-    std::optional<ReplayViews> replayed;
-    if (replay != nullptr && !state.panels.empty()) {
-        replayed =
-            replay_views(*replay, state.panels[0].snapshot.box,
-                         static_cast<double>(state.index - segment.first_frame) / settings_.fps);
-    }
     // A question or its answer: the event-driven panel marks the candidates (its own next
     // collision line would give the answer away) and counts down, or shows the answer.
     const bool asking =
         (segment.kind == SegmentKind::question || segment.kind == SegmentKind::reveal) &&
         segment.question >= 0 &&
         static_cast<std::size_t>(segment.question) < settings_.questions.size();
+    const QuestionAnswer* asked =
+        asking ? &settings_.questions[static_cast<std::size_t>(segment.question)] : nullptr;
+    // A will-see question is the time-driven panel's: its answer is the replay of the step.
+    const bool will_see = asked != nullptr && asked->kind == QuestionKind::will_see;
+    // A replay: both panels zoom onto the failure's spot, each with its own marks.
+    const ReplayFailure* replay =
+        segment.kind == SegmentKind::replay ? replay_at(settings_.replays, segment.sim_frame)
+        : will_see && segment.kind == SegmentKind::reveal && asked->failure ? &*asked->failure
+                                                                            : nullptr;
+    std::optional<ReplayViews> replayed;
+    if (replay != nullptr && !state.panels.empty()) {
+        replayed =
+            replay_views(*replay, state.panels[0].snapshot.box,
+                         static_cast<double>(state.index - segment.first_frame) / settings_.fps);
+    }
     content_.code.reset();
     for (std::size_t i = 0; i < state.panels.size(); ++i) {
         const PanelState& panel = state.panels[i];
@@ -123,9 +128,14 @@ const FrameContent& CollisionProgram::frame(const CollisionState& state) {
         out.replay = !replayed           ? ReplayView{}
                      : panel.time_driven ? replayed->time_driven
                                          : replayed->event_driven;
-        if (asking && !panel.time_driven && !replayed) {
+        if (asking && !will_see && !panel.time_driven && !replayed) {
             out.next_collision = {};
             out.replay = question_picture(segment, panel.snapshot, segment.end - video_time);
+        }
+        if (will_see && panel.time_driven && !replayed && asked->failure) {
+            // The replay's zoom from the start: the two discs are a few pixels in the whole box.
+            out.replay = will_see_view(*asked, segment.end - video_time);
+            out.zoom = replay_target(*asked->failure, panel.snapshot.box);
         }
         if (state.moved || content_.energy_drift[i].empty())
             content_.energy_drift[i].push_back(panel.drift);

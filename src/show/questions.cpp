@@ -116,8 +116,30 @@ bool needs_event_panel(QuestionKind kind) noexcept {
         case QuestionKind::next_collision:
         case QuestionKind::how_many:
             return true;
+        case QuestionKind::will_see:
+            return false;
     }
     return true;
+}
+
+bool needs_time_panel(QuestionKind kind) noexcept {
+    return kind == QuestionKind::will_see;
+}
+
+double reveal_seconds_of(QuestionKind kind) noexcept {
+    return kind == QuestionKind::will_see ? replay_seconds : reveal_seconds;
+}
+
+QuestionAnswer answer_will_see(const ReplayFailure& failure, std::int64_t sim_frame, double time) {
+    QuestionAnswer out;
+    out.kind = QuestionKind::will_see;
+    out.sim_frame = sim_frame;
+    out.time = time;
+    // The frozen frame shows the state before the failing step; the next frame is its check.
+    if (failure.sim_frame != sim_frame + 1 || failure.check_before() > time) return out;
+    out.failure = failure;
+    out.askable = true;
+    return out;
 }
 
 QuestionAnswer answer_next_collision(const Engine& engine, const Snapshot& snapshot,
@@ -197,6 +219,10 @@ std::string question_words(const QuestionAnswer& answer, const std::string& auth
         }
         case QuestionKind::how_many:
             return "Pause and think: how many collisions in the next second?";
+        case QuestionKind::will_see:
+            return answer.failure && answer.failure->step.kind == sim::StepFailureKind::left_box
+                       ? "Pause and think: will the next check see this wall hit?"
+                       : "Pause and think: will the next check see this collision?";
     }
     return {};
 }
@@ -218,6 +244,13 @@ std::string answer_words(const QuestionAnswer& answer, const FrameClock& clock) 
                 out +=
                     fmt::format(" ({} between discs, {} with walls)", answer.pairs, answer.walls);
             return out;
+        }
+        case QuestionKind::will_see: {
+            if (!answer.failure) return {};
+            // The engine's record says the check after the step saw no overlap.
+            return answer.failure->step.kind == sim::StepFailureKind::left_box
+                       ? "Answer: no, the disc jumps through the wall unseen"
+                       : "Answer: no, the discs pass through each other unseen";
         }
     }
     return {};
@@ -261,10 +294,27 @@ std::string countdown_words(double seconds_left) {
     return fmt::format("Think: {}", std::max(1, static_cast<int>(std::ceil(seconds_left - 1e-9))));
 }
 
+ReplayView will_see_view(const QuestionAnswer& answer, double seconds_left) {
+    ReplayView view;
+    if (!answer.askable || !answer.failure) return view;
+    const sim::StepFailure& f = answer.failure->step;
+    view.heading = countdown_words(seconds_left);
+    // Each disc's straight move over the step the check follows: where it will be then.
+    view.lines.push_back(BoxLine{f.before_a, f.before_a + f.motion_a});
+    view.focus.push_back(f.a);
+    if (f.kind == sim::StepFailureKind::missed_pair) {
+        if (norm(f.motion_b) > 0.0)
+            view.lines.push_back(BoxLine{f.before_b, f.before_b + f.motion_b});
+        view.focus.push_back(f.b);
+    }
+    return view;
+}
+
 ReplayView question_view(const QuestionAnswer& answer, const Snapshot& snapshot,
                          const FrameClock& clock, double seconds_left, bool reveal) {
     ReplayView view;
-    if (!answer.askable) return view;
+    // A will-see question is the time-driven panel's (will_see_view, then the replay).
+    if (!answer.askable || answer.kind == QuestionKind::will_see) return view;
     if (reveal) {
         view.heading = answer.kind == QuestionKind::next_collision
                            ? "Answer: " + candidate_letter(answer.answer)
@@ -350,6 +400,7 @@ std::vector<QuestionAnswer> answer_questions(const Scene& scene, const EngineOpt
             return frame_time(f + i);
         };
         const auto q = static_cast<std::size_t>(question);
+        if (kinds[q] == QuestionKind::will_see) continue;  // the time-driven engine's
         if (kinds[q] == QuestionKind::next_collision) {
             const std::uint64_t seed = 0x51ED5EEDULL ^ (static_cast<std::uint64_t>(frame) << 8U) ^
                                        static_cast<std::uint64_t>(question);

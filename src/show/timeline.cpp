@@ -120,10 +120,16 @@ void place_replays(const TimelineScript& script, std::int64_t epilogue_start,
                    std::vector<FrameLabel>& labels) {
     std::size_t next = 0;
     std::int64_t shown = -1;
+    std::int64_t replayed = -1;  // the failure a question's reveal replayed (its frame)
     for (std::int64_t k = 0; k < epilogue_start && next < script.replays.size(); ++k) {
         const FrameLabel label = labels[static_cast<std::size_t>(k)];
         shown = label.moves ? shown + 1 : std::max<std::int64_t>(shown, 0);
-        while (next < script.replays.size() && script.replays[next].after_sim_frame < shown) ++next;
+        if (label.question >= 0 &&
+            script.questions[static_cast<std::size_t>(label.question)].reveal_replays)
+            replayed = shown + 1;
+        while (next < script.replays.size() && (script.replays[next].after_sim_frame < shown ||
+                                                script.replays[next].after_sim_frame == replayed))
+            ++next;
         if (next == script.replays.size()) break;
         const TimelineReplay& replay = script.replays[next];
         if (label.kind != SegmentKind::run || !label.moves || replay.after_sim_frame != shown)
@@ -240,8 +246,10 @@ Timeline build_timeline(const TimelineScript& script) {
             label.moves ? last_shown + 1 : std::max<std::int64_t>(last_shown, 0);
         const bool same =
             i > 0 && labels[i - 1].kind == label.kind && labels[i - 1].moves == label.moves &&
-            labels[i - 1].caption == label.caption && labels[i - 1].replay == label.replay &&
-            labels[i - 1].question == label.question;
+            // A question's caption is its own words: a scripted caption changing beneath it
+            // does not split it.
+            (labels[i - 1].caption == label.caption || label.question >= 0) &&
+            labels[i - 1].replay == label.replay && labels[i - 1].question == label.question;
         if (!same) {
             Segment segment;
             segment.kind = label.kind;

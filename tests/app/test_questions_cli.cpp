@@ -151,3 +151,49 @@ TEST_CASE("a question with nothing to ask is left out with a notice naming where
                   r.output);
     CHECK(checked_questions(read_json(dir.path / "t.json")) == 0);
 }
+
+namespace {
+
+/// The will-see questions of a timeline: their question segments' captions ask it.
+int will_see_questions(const nlohmann::json& timeline) {
+    int out = 0;
+    const nlohmann::json& segments = timeline["segments"];
+    for (std::size_t i = 0; i + 1 < segments.size(); ++i) {
+        const nlohmann::json& q = segments[i];
+        if (q["kind"] != "question" ||
+            q["caption"].get<std::string>().find("will the next check see") == std::string::npos)
+            continue;
+        ++out;
+        // The reveal is the replay of the failed step: as long as a replay.
+        const nlohmann::json& reveal = segments[i + 1];
+        CHECK(reveal["end"].get<double>() - reveal["start"].get<double>() >= 6.0 - 1e-9);
+        CHECK(reveal["caption"].get<std::string>().rfind("Answer: no", 0) == 0);
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("tunnelling asks whether the next check sees it: --mode time asks, --mode event not") {
+    TempDir dir("questions-will-see");
+    const fs::path vtt = dir.path / "s.vtt";
+    const auto both =
+        run_collide(render_args("tunnelling", dir.path) + "--subtitles-file " + vtt.string());
+    REQUIRE_MESSAGE(both.exit_code == 0, both.output);
+    const nlohmann::json timeline = read_json(dir.path / "t.json");
+    CHECK(checked_questions(timeline) >= 2);
+    CHECK(will_see_questions(timeline) == 1);
+    CHECK(collide::test::read_all(vtt).find("will the next check see") != std::string::npos);
+
+    const auto time = run_collide(render_args("tunnelling", dir.path) + "--mode time");
+    REQUIRE_MESSAGE(time.exit_code == 0, time.output);
+    const nlohmann::json time_line = read_json(dir.path / "t.json");
+    CHECK(will_see_questions(time_line) == 1);
+    CHECK(checked_questions(time_line) == 1);  // only the time-driven panel's question
+
+    const auto event = run_collide(render_args("tunnelling", dir.path) + "--mode event");
+    REQUIRE_MESSAGE(event.exit_code == 0, event.output);
+    CHECK(will_see_questions(read_json(dir.path / "t.json")) == 0);
+    CHECK_MESSAGE(event.output.find("needs the time-driven panel") != std::string::npos,
+                  event.output);
+}

@@ -3,8 +3,11 @@
 // shows the state after it, the simulation clock stands still during it.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdint>
+#include <string>
 
+#include "../sim/scene_fixtures.hpp"
 #include "collide/sim/time_engine.hpp"
 #include "render_plan.hpp"
 #include "replay_plan.hpp"
@@ -120,4 +123,83 @@ TEST_CASE("a replay_tag replays the first failure of a disc with that tag, skipp
     scene.discs[3].tag = "other";
     scene.render.replay_tag = "nobody";
     CHECK(plan_render(tunnel_request(), scene, finder(scene)).replays.empty());
+}
+
+namespace {
+
+/// The frame a plan's question `i` freezes on (-1: not asked).
+std::int64_t frozen_frame(const RenderPlan& plan, int i) {
+    for (const show::Segment& segment : plan.timeline.segments) {
+        if (segment.kind == show::SegmentKind::question && segment.question == i)
+            return segment.sim_frame;
+    }
+    return -1;
+}
+
+}  // namespace
+
+TEST_CASE("will see: asked just before the time-driven engine's next failed step, for many seeds") {
+    for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+        CAPTURE(seed);
+        Scene scene = test::lattice_fluid(6, 0.1, Boundary::walls, seed);
+        QuestionCue cue;
+        cue.at = 2.5 + 0.4 * static_cast<double>(seed);
+        cue.kind = QuestionKind::how_many;
+        scene.render.questions = {cue};
+        RenderRequest request;
+        request.scene = "gas";
+        request.duration = 30.0;
+        request.speed = 0.1;
+        request.dt = 0.02;  // a disc moves about 0.03 a step, more than a diameter (0.02)
+        request.output = "unused.mp4";
+        // Where the picture freezes on a question at that moment (how-many is asked there).
+        const std::int64_t at = frozen_frame(plan_render(request, scene, finder(scene)), 0);
+        REQUIRE(at >= 0);
+        scene.render.questions.front().kind = QuestionKind::will_see;
+        const RenderPlan plan = plan_render(request, scene, finder(scene));
+        REQUIRE(plan.questions.size() == 1);
+        const show::QuestionAnswer& answer = plan.questions.front();
+        REQUIRE(answer.askable);
+        REQUIRE(answer.failure.has_value());
+        const std::int64_t frozen = frozen_frame(plan, 0);
+        CHECK(frozen == answer.sim_frame);
+        CHECK(frozen >= at);
+        CHECK(answer.failure->sim_frame == frozen + 1);
+        // A fresh engine, stepped as the video steps it: no failed step recorded after the
+        // asked moment up to the frozen frame; the step the next frame takes fails, with the
+        // pair marked, and counts missed collisions (its own count, not its records).
+        sim::TimeEngine engine(scene, plan.time_engine);
+        for (std::int64_t j = 0; j <= at; ++j) engine.advance_to(plan.clock.time(j));
+        engine.forget_failures();
+        for (std::int64_t j = at + 1; j <= frozen; ++j) engine.advance_to(plan.clock.time(j));
+        CHECK(engine.failures().empty());
+        const std::uint64_t missed = engine.measurements().missed_collisions;
+        engine.advance_to(plan.clock.time(frozen + 1));
+        REQUIRE(engine.failures().size() == 1);
+        const sim::StepFailure& step = answer.failure->step;
+        CHECK(engine.failures().front().step == step.step);
+        CHECK(engine.failures().front().a == step.a);
+        CHECK(engine.failures().front().b == step.b);
+        if (step.kind == sim::StepFailureKind::missed_pair)
+            CHECK(engine.measurements().missed_collisions > missed);
+        // The reveal is the replay of that step: as long as a replay, and no second replay of it.
+        bool revealed = false;
+        for (const show::Segment& segment : plan.timeline.segments) {
+            if (segment.kind == show::SegmentKind::reveal && segment.question == 0) {
+                revealed = true;
+                CHECK(segment.sim_frame == frozen);
+                CHECK(segment.frames() ==
+                      static_cast<std::int64_t>(show::replay_seconds * plan.fps + 0.5));
+            }
+            if (segment.kind == show::SegmentKind::replay)
+                CHECK(segment.sim_frame != answer.failure->sim_frame);
+        }
+        CHECK(revealed);
+        if (frozen > at) {
+            const bool said = std::any_of(
+                plan.notices.begin(), plan.notices.end(),
+                [](const std::string& n) { return n.find("moved from") != std::string::npos; });
+            CHECK(said);
+        }
+    }
 }

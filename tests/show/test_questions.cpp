@@ -217,3 +217,47 @@ TEST_CASE("the picture: letters clear of every disc, the answer marked only in t
             CHECK(reveal.labels[i].failure == (i == answer.answer));
     }
 }
+
+TEST_CASE("will see: asked only on the frame before the failing step, answered by its record") {
+    CHECK(needs_time_panel(QuestionKind::will_see));
+    CHECK_FALSE(needs_event_panel(QuestionKind::will_see));
+    CHECK_FALSE(needs_time_panel(QuestionKind::next_collision));
+    CHECK(reveal_seconds_of(QuestionKind::will_see) == replay_seconds);
+    CHECK(reveal_seconds_of(QuestionKind::how_many) == reveal_seconds);
+    ReplayFailure failure;
+    failure.dt = 0.04;
+    failure.step.kind = sim::StepFailureKind::missed_pair;
+    failure.step.step = 5;  // the state before at 0.2, after at 0.24
+    failure.step.a = 2;
+    failure.step.b = 9;
+    failure.step.before_a = {0.3, 0.5};
+    failure.step.motion_a = {0.04, 0.0};
+    failure.step.before_b = {0.32, 0.5};
+    failure.sim_frame = 36;
+    // Frame 35 shows the state before the step: askable there, nowhere else.
+    const QuestionAnswer answer = answer_will_see(failure, 35, 0.23);
+    REQUIRE(answer.askable);
+    REQUIRE(answer.failure.has_value());
+    CHECK(answer.failure->step.a == 2);
+    CHECK_FALSE(answer_will_see(failure, 34, 0.22).askable);
+    CHECK_FALSE(answer_will_see(failure, 36, 0.24).askable);
+    CHECK(question_words(answer, "") == "Pause and think: will the next check see this collision?");
+    const std::string words = answer_words(answer, clock_of(100, 0.01));
+    CHECK(words.rfind("Answer: no", 0) == 0);
+    CHECK(words.size() <= max_caption_chars);
+    // The time-driven panel marks the two discs and the moves of the step to come.
+    const ReplayView view = will_see_view(answer, 2.5);
+    CHECK(view.heading == "Think: 3");
+    CHECK(view.focus == std::vector<std::uint32_t>{2, 9});
+    REQUIRE(view.lines.size() == 1);  // disc 9 rests: no move to draw
+    CHECK(view.lines[0].from.x == doctest::Approx(0.3));
+    CHECK(view.lines[0].to.x == doctest::Approx(0.34));
+    // The event-driven panel has nothing of its own to mark for it.
+    Snapshot snapshot;
+    snapshot.box = Box{1.0, 1.0, Boundary::walls};
+    CHECK(question_view(answer, snapshot, clock_of(100, 0.01), 2.5, false).empty());
+    failure.step.kind = sim::StepFailureKind::left_box;
+    const QuestionAnswer wall = answer_will_see(failure, 35, 0.23);
+    CHECK(answer_words(wall, clock_of(100, 0.01)).find("wall") != std::string::npos);
+    CHECK(will_see_view(wall, 1.0).focus == std::vector<std::uint32_t>{2});
+}

@@ -14,12 +14,14 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "collide/render_options.hpp"
 #include "collide/scene.hpp"
 #include "collide/show/collision.hpp"
+#include "collide/show/replay.hpp"
 #include "collide/show/timeline.hpp"
 #include "collide/sim/engine.hpp"
 #include "collide/snapshot.hpp"
@@ -38,9 +40,16 @@ inline constexpr std::size_t min_candidates = 2;
 /// (at 30 frames a second, ten seconds of video): a scene quieter than that has nothing to ask.
 inline constexpr std::int64_t look_ahead_frames = 300;
 
-/// True when `kind` is answered by the event-driven engine (every kind so far): a video without
-/// the event-driven panel (`--mode time`) does not ask it.
+/// True when `kind` is answered by the event-driven engine (next-collision, how-many): a video
+/// without the event-driven panel (`--mode time`) does not ask it.
 [[nodiscard]] bool needs_event_panel(QuestionKind kind) noexcept;
+/// True when `kind` is answered by the time-driven engine (will-see): a video without a
+/// time-driven panel (`--mode event`) does not ask it.
+[[nodiscard]] bool needs_time_panel(QuestionKind kind) noexcept;
+
+/// How long the answer to `kind` shows: a will-see question's answer is the replay of the
+/// failing step (replay_seconds), the others' reveal_seconds.
+[[nodiscard]] double reveal_seconds_of(QuestionKind kind) noexcept;
 
 /// What the engine answered to one question.
 struct QuestionAnswer {
@@ -55,6 +64,9 @@ struct QuestionAnswer {
     std::int64_t pairs = 0;
     std::int64_t walls = 0;
     [[nodiscard]] std::int64_t count() const noexcept { return pairs + walls; }
+    /// will_see: the time-driven engine's next step from the frozen frame, which fails (the
+    /// collision of its discs is never seen by a check); the reveal replays it.
+    std::optional<ReplayFailure> failure;
     /// False when the engine had nothing to ask about here (no collision within the look ahead).
     bool askable = false;
 };
@@ -78,6 +90,13 @@ using FramesAfter = std::function<double(std::int64_t)>;
 [[nodiscard]] QuestionAnswer answer_how_many(const Engine& engine, const FramesAfter& after,
                                              int fps);
 
+/// Will the next check see this collision? Asked on simulation frame `sim_frame` (time `time`),
+/// the frame just before the one that first shows the state after `failure`'s step (the
+/// time-driven engine's own record of a failed step, found by running it as the video does):
+/// askable only there, and then the answer is the engine's: the check did not see it.
+[[nodiscard]] QuestionAnswer answer_will_see(const ReplayFailure& failure, std::int64_t sim_frame,
+                                             double time);
+
 /// Where a question was written, for notices: "gas.toml:42" ("the scene" when not read from a
 /// file).
 [[nodiscard]] std::string question_place(const QuestionCue& cue);
@@ -95,6 +114,11 @@ using FramesAfter = std::function<double(std::int64_t)>;
 /// The countdown while a question holds: "Think: 3" with `seconds_left` in (2, 3].
 [[nodiscard]] std::string countdown_words(double seconds_left);
 
+/// What the time-driven panel draws while a will-see question holds: the failing step's two discs
+/// marked (the others faint), each one's move over the next step as an arrow, "Think: 3". The
+/// reveal is the replay (replay_views of answer.failure).
+[[nodiscard]] ReplayView will_see_view(const QuestionAnswer& answer, double seconds_left);
+
 /// What the event-driven panel draws while the question holds (`reveal` false: the candidates'
 /// lines, their letters on plates clear of every disc, the others faint, and "Think: 3" counting
 /// down over `seconds_left`) and while its answer shows (`reveal`: the answer's line in the
@@ -110,8 +134,9 @@ using FramesAfter = std::function<double(std::int64_t)>;
 
 /// Every question `timeline` asks (questions_asked), answered by an event-driven engine of
 /// `scene` (`options`) advanced frame by frame on `clock` to the frame each question freezes on.
-/// Indexed like the script's questions (`kinds`); a question the timeline does not ask stays not
-/// askable. Throws Error(input) for options make_engine rejects, Error(runtime) once `stop` is set.
+/// Indexed like the script's questions (`kinds`); a question the timeline does not ask, or a
+/// will-see question (the time-driven engine answers those: answer_will_see), stays not askable.
+/// Throws Error(input) for options make_engine rejects, Error(runtime) once `stop` is set.
 [[nodiscard]] std::vector<QuestionAnswer> answer_questions(const Scene& scene,
                                                            const EngineOptions& options,
                                                            const FrameClock& clock,

@@ -111,6 +111,9 @@ struct TimelineQuestion {
     double reveal = 0.0;
     std::string question;  ///< the question segment's caption
     std::string answer;    ///< the reveal segment's caption
+    /// The reveal replays the failed step after the frozen frame (a will-see question): the
+    /// replay of the failure whose frame follows it is not placed again.
+    bool reveal_replays = false;
 };
 
 /// What the video is to show, in seconds of video.

@@ -188,6 +188,9 @@ class BasicTimeEngine final : public EngineOf<D> {
     [[nodiscard]] const std::vector<BasicStepFailure<D>>& failures() const noexcept {
         return failures_;
     }
+    /// Forgets the records kept so far, so that the next failing steps are recorded again (a
+    /// lesson looking for a failure after a given moment). O(1).
+    void forget_failures() noexcept { failures_.clear(); }
 
   private:
     /// A contact found by the overlap checks of one step, waiting to be resolved.
