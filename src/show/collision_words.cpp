@@ -322,7 +322,9 @@ QueueWords queue_words(const QueueView& queue, double now) {
     } else if (queue.stale_entries > 0) {
         out.heading += fmt::format(", {} stale", separated(queue.stale_entries));
     }
-    out.legend = fmt::format("Next {} collisions, time to go", queue.next.size());
+    out.legend = queue.next.size() == 1
+                     ? std::string("Next collision, time to go")
+                     : fmt::format("Next {} collisions, time to go", queue.next.size());
     out.stale_popped = queue.one_per_disc ? "  stale: re-predict" : "  stale: skipped";
     out.stale_leaving = "skipped";
     out.counts =

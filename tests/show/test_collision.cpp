@@ -249,6 +249,10 @@ TEST_CASE("the queue strip's words: the fast engine re-predicts, the classic one
     const QueueWords classic = queue_words(q, 0.0);
     CHECK(classic.heading == "Event queue: binary heap, 1,234 entries, 56 stale");
     CHECK(classic.legend == "Next 5 collisions, time to go");
+    // One listed collision reads as one ("Next 1 collisions" was seen in gas with --queue).
+    QueueView one = q;
+    one.next.resize(1);
+    CHECK(queue_words(one, 0.0).legend == "Next collision, time to go");
     CHECK(classic.stale_popped == "  stale: skipped");
     CHECK(classic.counts == "3 of 40 pops stale");
     q.one_per_disc = true;
