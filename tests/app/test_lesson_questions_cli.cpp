@@ -79,7 +79,7 @@ std::size_t count_of(const std::vector<std::string>& kinds, const std::string& k
 
 TEST_CASE(
     "collide heap --questions on asks where each key ends up, in the subtitles and "
-    "the chapters; none (the default) asks nothing") {
+    "the chapters, and none (the default) asks nothing") {
     TempDir dir("heap_questions");
     const std::string ops = "heap --ops \"S O R T * E X\" --min" + quick;
     const auto on = run_collide(ops + "--questions on -o " + quoted(dir.path / "on.mp4") +
@@ -119,7 +119,7 @@ TEST_CASE("collide heap --questions refuses anything but on or none, before writ
     CHECK_FALSE(fs::exists(dir.path / "q.mp4"));
 }
 
-TEST_CASE("collide puzzle --questions on asks which board A* expands next; none asks nothing") {
+TEST_CASE("collide puzzle --questions on asks which board A* expands next, and none asks nothing") {
     TempDir dir("puzzle_questions");
     const std::string board =
         "puzzle \"1 2 3 4 0 6 7 5 8\" --size 854x480 --fps 4 --progress none ";

@@ -222,7 +222,7 @@ TEST_CASE("heap questions: the frames hold still on the question, then show the 
 }
 
 TEST_CASE(
-    "heap questions: subtitles carry the question and the answer; a chapter ends on each "
+    "heap questions: subtitles carry the question and the answer, and a chapter ends on each "
     "question, none shorter than 4 s") {
     const HeapProgram lesson =
         asking("P Q E * X A M * P L E *", {{pq::QueueFamily::binary, 2}}, pq::Orientation::max);
