@@ -166,8 +166,10 @@ TEST_CASE("thumbnail --gl: OSMesa and EGL surfaceless give the same 3D still, bo
 
 TEST_CASE("[render] camera, projection and slab of a 3D scene: hints the options override") {
     TempDir dir("hints3d");
+    // One title for both files: a 320x180 thumbnail draws it (else taken from the file's name).
     const std::string spheres =
-        "dimension = 3\n[box]\nboundary = \"periodic\"\n[[fcc]]\ncells = 3\npacking_fraction = "
+        "title = \"Spheres\"\ndimension = 3\n[box]\nboundary = \"periodic\"\n[[fcc]]\ncells = "
+        "3\npacking_fraction = "
         "0.3\nseed = 2\n";
     const auto write = [&](const std::string& name, const std::string& text) {
         const fs::path p = dir.path / name;
