@@ -208,8 +208,11 @@ PipelineResult run_render(show::SceneView scene, const RenderPlan& plan, const J
         // The lesson level draws the captions; full and none leave them to the track.
         job.output.cues_in_picture = show::level_shows(plan.render.overlays).captions;
         job.output.chapter_output = chapters;
-        job.output.chapters =
-            show::timeline_chapters(plan.timeline, plan.lesson.intro_fade_seconds());
+        std::vector<bool> replaying_reveals;
+        for (const show::QuestionAnswer& question : plan.questions)
+            replaying_reveals.push_back(question.kind == QuestionKind::will_see);
+        job.output.chapters = show::timeline_chapters(
+            plan.timeline, plan.lesson.intro_fade_seconds(), replaying_reveals);
     }
 
     PipelineResult result;

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "collide/show/replay.hpp"
+
 namespace collide::show {
 
 std::string one_line(const std::string& text, std::string_view separator) {
@@ -78,7 +80,25 @@ std::string chapter_title(Part part, const std::string& caption) {
 
 }  // namespace
 
-Chapters timeline_chapters(const Timeline& timeline, double card_fade) {
+namespace {
+
+/// The last frame at or before `seconds` of video, kept within [start, still].
+double frame_before(double seconds, double fps, double start, double still) {
+    return std::clamp(std::floor(seconds * fps + 1e-9) / fps, start, still);
+}
+
+/// Whether `segment` shows a replay: a replay, or a question's reveal that replays its step.
+bool shows_replay(const Segment& segment, const std::vector<bool>& replaying_reveals) {
+    if (segment.kind == SegmentKind::replay) return true;
+    return segment.kind == SegmentKind::reveal && segment.question >= 0 &&
+           static_cast<std::size_t>(segment.question) < replaying_reveals.size() &&
+           replaying_reveals[static_cast<std::size_t>(segment.question)];
+}
+
+}  // namespace
+
+Chapters timeline_chapters(const Timeline& timeline, double card_fade,
+                           const std::vector<bool>& replaying_reveals) {
     Chapters chapters;
     const auto fps = static_cast<double>(std::max(1, timeline.fps));
     Part last_part = Part::card;
@@ -91,10 +111,15 @@ Chapters timeline_chapters(const Timeline& timeline, double card_fade) {
             chapters.push_back({segment.start, segment.end, chapter_title(part, segment.caption)});
         chapters.back().end = segment.end;
         chapters.back().still = static_cast<double>(segment.end_frame - 1) / fps;
+        Chapter& chapter = chapters.back();
         if (part == Part::card && card_fade > 0.0) {
             // The last frame at or before the fade begins: the title at full strength.
-            const double faded = std::floor((segment.end - card_fade) * fps + 1e-9) / fps;
-            chapters.back().still = std::clamp(faded, chapters.back().start, chapters.back().still);
+            chapter.still =
+                frame_before(segment.end - card_fade, fps, chapter.start, chapter.still);
+        } else if (shows_replay(segment, replaying_reveals)) {
+            // The replay's whole picture stands until replay_hold_end, then fades out.
+            chapter.still = frame_before(segment.start + replay_hold_end - 1.0 / fps, fps,
+                                         segment.start, chapter.still);
         }
         last_part = part;
         last_caption = &segment.caption;

@@ -3,11 +3,13 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "collide/show/chapters.hpp"
 #include "collide/show/heap_program.hpp"
+#include "collide/show/replay.hpp"
 #include "collide/show/slide_player.hpp"
 #include "collide/show/timeline.hpp"
 #include "collide/sim/pq/heap_record.hpp"
@@ -85,6 +87,36 @@ TEST_CASE("chapters: a replay is one chapter of its own and missing words get th
     CHECK(chapters[3].title == "The simulation runs");
     CHECK(chapters[4].title == "The final figures");
     CHECK(chapters[4].end == doctest::Approx(6.0));
+}
+
+TEST_CASE("chapters: a replay's still is its whole picture, before the replay fades out") {
+    // A replay of replay_seconds, and a will-see question whose reveal replays its step: a
+    // handout page and a slide show the failure at the end of the replay's hold, not the nearly
+    // empty frame the replay fades to.
+    const auto replay_frames = static_cast<std::int64_t>(replay_seconds * 10.0);
+    Timeline timeline;
+    timeline.fps = 10;
+    timeline.segments = {segment(SegmentKind::run, 0, 30, ""),
+                         segment(SegmentKind::replay, 30, 30 + replay_frames, "a missed step"),
+                         segment(SegmentKind::run, 30 + replay_frames, 100, ""),
+                         segment(SegmentKind::question, 100, 120, "Will it see it?"),
+                         segment(SegmentKind::reveal, 120, 120 + replay_frames, "No"),
+                         segment(SegmentKind::epilogue, 180, 200, "")};
+    timeline.segments[3].question = 0;
+    timeline.segments[4].question = 0;
+    timeline.segments[4].moves = false;
+    const double hold = std::floor(replay_hold_end * 10.0 - 1e-9) / 10.0;  // its last held frame
+    const Chapters chapters = timeline_chapters(timeline, 0.0, {true});
+    REQUIRE(chapters.size() == 6);
+    CHECK(chapters[1].title == "Replay: a missed step");
+    CHECK(chapters[1].still == doctest::Approx(3.0 + hold));
+    CHECK(chapters[1].still < chapters[1].end - 0.5);
+    CHECK(chapters[4].title == "No");
+    CHECK(chapters[4].still == doctest::Approx(12.0 + hold));
+    // A reveal that only shows its answer keeps its last frame.
+    const Chapters plain = timeline_chapters(timeline, 0.0, {false});
+    CHECK(plain[4].still == doctest::Approx(12.0 + replay_seconds - 0.1));
+    CHECK(plain[1].still == doctest::Approx(3.0 + hold));
 }
 
 TEST_CASE(

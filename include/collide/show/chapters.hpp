@@ -4,6 +4,8 @@
 /// the titles they list. Made here from the lesson's timeline (a collision video) or from the
 /// step captions (heap and puzzle videos), so the encoder only ever sees titled times.
 
+#include <vector>
+
 #include "collide/cue.hpp"
 #include "collide/show/heap_program.hpp"
 #include "collide/show/timeline.hpp"
@@ -20,8 +22,12 @@ inline constexpr double min_heap_chapter_seconds = 4.0;
 /// the epilogue. Back to back from 0 to the video's end, at the segments' frame
 /// times; titles are one line (a caption's line breaks become spaces). Each chapter's still is
 /// its last frame; the card's is its last frame before the fade-out of `card_fade` seconds at
-/// its end (LessonPlan::intro_fade_seconds). Empty for an empty timeline.
-[[nodiscard]] Chapters timeline_chapters(const Timeline& timeline, double card_fade = 0.0);
+/// its end (LessonPlan::intro_fade_seconds); a replay's, and the reveal of a question whose
+/// `replaying_reveals` entry (by question index) is true, the last frame of the replay's hold,
+/// before its picture fades (replay_hold_end): a handout page or a slide shows the failure whole,
+/// not the nearly empty frame it fades to. Empty for an empty timeline.
+[[nodiscard]] Chapters timeline_chapters(const Timeline& timeline, double card_fade = 0.0,
+                                         const std::vector<bool>& replaying_reveals = {});
 
 /// Chapters from subtitle cues (heap and puzzle videos: one per step caption): each starts
 /// where its cue starts (the first at 0) and ends where the next begins, the last at
