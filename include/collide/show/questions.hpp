@@ -144,4 +144,15 @@ using FramesAfter = std::function<double(std::int64_t)>;
                                                            const std::vector<QuestionKind>& kinds,
                                                            const std::atomic<bool>* stop = nullptr);
 
+/// Where a next-collision question not askable on simulation frame `frozen` can be asked: the
+/// first frame after it, up to `last`, at which answer_next_collision answers (the event-driven
+/// engine of `scene` resolves a collision within look_ahead_frames of it, and a second candidate
+/// exists); nullopt when none does. One engine run ahead of the frames tried, frame by frame on
+/// `clock` as the video runs it (the same calls as answer_questions makes, so the same bits):
+/// O(frames) steps of the engine, not one copy run per frame tried. Throws Error(input) for
+/// options make_engine rejects, Error(runtime) once `stop` is set.
+[[nodiscard]] std::optional<std::int64_t> next_askable_frame(
+    const Scene& scene, const EngineOptions& options, const FrameClock& clock, std::int64_t frozen,
+    std::int64_t last, const std::atomic<bool>* stop = nullptr);
+
 }  // namespace collide::show
