@@ -148,6 +148,14 @@ TEST_CASE(
     CHECK(says(cut.notices, "q.toml:12: render.questions.at: nothing to ask at 3 s"));
     CHECK(says(cut.notices, "not asked"));
 
+    // A will-see question in the same quiet video: no step of the time-driven engine fails.
+    scene.render.questions.front().kind = QuestionKind::will_see;
+    request.duration.reset();
+    const std::string unseen = refusal(request, scene);
+    CHECK_MESSAGE(unseen.find("q.toml:12: render.questions.at: nothing to ask at 3 s: the "
+                              "time-driven engine misses no collision") != std::string::npos,
+                  unseen);
+
     // No room for 3 s of thought and 2.5 s of answer before the summary card: refused too.
     scene = quiet_scene(10.0, 16.0, QuestionKind::next_collision, 20.0);
     request.duration.reset();
