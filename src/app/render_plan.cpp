@@ -660,6 +660,96 @@ show::QuestionAnswer answer_will_see_at(const Scene& scene, const RenderPlan& pl
     return show::answer_will_see(*failure, frozen, plan.clock.time(frozen));
 }
 
+/// Where a question not askable on its frame `frozen` moves, in simulation frames after it:
+/// a will-see question to the frame before the time-driven engine's next failed step (its
+/// answer in `answer`), a next-collision one to the first frame the event-driven engine answers
+/// (show::next_askable_frame), both up to the video's last frame. 0: nowhere (how-many is
+/// askable wherever it is, or nowhere: its engine cannot be copied).
+std::int64_t frames_to_askable(const Scene& scene, const RenderPlan& plan, QuestionKind kind,
+                               std::int64_t frozen, show::QuestionAnswer& answer,
+                               const std::atomic<bool>* stop) {
+    std::int64_t later = 0;
+    if (kind == QuestionKind::will_see) {
+        answer = answer_will_see_at(scene, plan, frozen, later, stop);
+        return later;
+    }
+    if (kind != QuestionKind::next_collision || answer.askable) return 0;
+    const std::optional<std::int64_t> at = show::next_askable_frame(
+        scene, plan.event_engine, plan.clock, frozen, plan.timeline.last_sim_frame(), stop);
+    return at ? *at - frozen : 0;
+}
+
+/// What moves a question of `kind`, in a notice's words.
+std::string moved_to_words(QuestionKind kind) {
+    if (kind == QuestionKind::will_see)
+        return "the moment before the time-driven engine's next check misses a collision";
+    return fmt::format(
+        "the first moment the event-driven engine resolves a collision in the {} frames after it",
+        show::look_ahead_frames);
+}
+
+/// "at 12 s" or "at 12 s, moved to 14.20 s (the first moment ...)": where a question is.
+std::string question_moment(const QuestionCue& cue, const show::TimelineQuestion& question) {
+    if (question.at == cue.at) return fmt::format("at {:g} s", cue.at);
+    return fmt::format("at {:g} s, moved to {:.2f} s ({})", cue.at, question.at,
+                       moved_to_words(cue.kind));
+}
+
+/// Why question `i` cannot be asked where the timeline put it (empty: it can). `asked`: where
+/// it stands (sim_frame -1: nowhere, no room); `answer`: the engine's answer there.
+std::string cannot_ask_reason(const RenderPlan& plan, const QuestionCue& cue,
+                              const show::TimelineQuestion& question, const AskedAt& asked,
+                              const show::QuestionAnswer& answer) {
+    const std::string moment = question_moment(cue, question);
+    const std::string lengthen = "ask earlier, or set [render] duration";
+    if (asked.sim_frame < 0) {
+        return fmt::format(
+            "no room {}, for {:g} s of question and answer before the video's end; {}", moment,
+            cue.think + question.reveal, lengthen);
+    }
+    if (!answer.askable) {
+        if (cue.kind == QuestionKind::will_see) {
+            return fmt::format(
+                "nothing to ask {}: the time-driven engine misses no collision after "
+                "it before the video's end",
+                moment);
+        }
+        if (cue.kind == QuestionKind::next_collision) {
+            return fmt::format(
+                "nothing to ask {}: the event-driven engine resolves no collision in "
+                "the {} frames after it, nor after any later moment before the "
+                "video's end",
+                moment, show::look_ahead_frames);
+        }
+        return fmt::format("nothing to ask {}: the event-driven engine cannot be run ahead",
+                           moment);
+    }
+    // How many collisions in the next second: the video shows that second after the answer
+    // (runs at one simulation frame a video frame), else the class cannot count it.
+    const std::int64_t shown_after = plan.timeline.last_sim_frame() - asked.sim_frame;
+    if (cue.kind == QuestionKind::how_many && shown_after < plan.fps) {
+        const double latest =
+            static_cast<double>(asked.video_frame - (plan.fps - shown_after)) / plan.fps;
+        const std::string fix =
+            latest >= 0.0 ? fmt::format("ask by {:.2f} s, or set [render] duration", latest)
+                          : std::string("set [render] duration");
+        return fmt::format(
+            "a how-many question {}: its answer counts the collisions of the next "
+            "second, and the video runs {:.2f} s after it; {}",
+            moment, static_cast<double>(shown_after) / plan.fps, fix);
+    }
+    return {};
+}
+
+/// A question that cannot be asked: refused naming its `at` (`refuse`: the video runs as the
+/// scene says, its author moves it or lengthens the video), else left out with a notice.
+void cannot_ask(const QuestionCue& cue, const std::string& reason, bool refuse,
+                std::vector<std::string>& notices) {
+    if (refuse) throw_scene_error(cue.file, cue.line, "render.questions.at", reason);
+    notices.push_back(fmt::format("{}: render.questions.at: {}; not asked in this video",
+                                  show::question_place(cue), reason));
+}
+
 }  // namespace
 
 void ask_questions(RenderPlan& plan, const RenderRequest& request, const Scene& scene,
@@ -667,9 +757,16 @@ void ask_questions(RenderPlan& plan, const RenderRequest& request, const Scene& 
     plan.questions.clear();
     if (plan.kind == OutputKind::still || plan.lesson.questions.empty()) return;
     show::LessonPlan& lesson = plan.lesson;
+    // The scene's own length and clock: a question it cannot ask is its author's to move. One
+    // made unaskable by the command line's (a shorter video, another speed or step) is left out
+    // with a notice, as a caption past a --duration's end is.
+    const bool refuse = !request.duration && !request.speed && !request.slow_motion &&
+                        !request.dt && request.dt_list.empty();
     std::vector<show::QuestionAnswer> answers;
-    // Each round lays the frames out again: a question left out or moved changes the frames the
-    // later ones freeze on. A will-see question moving onto its failure converges in a few.
+    // Each round lays the frames out again: a question moved or left out changes the frames the
+    // later ones freeze on. Moves first (a question moved may make room for another, or take
+    // it); only a layout in which nothing moves judges what cannot be asked. A will-see question
+    // moving onto its failure converges in a few.
     constexpr int max_rounds = 32;
     for (int round = 0;; ++round) {
         std::vector<QuestionKind> kinds;
@@ -677,63 +774,49 @@ void ask_questions(RenderPlan& plan, const RenderRequest& request, const Scene& 
         answers = show::answer_questions(scene, plan.event_engine, plan.clock, plan.timeline, kinds,
                                          stop);
         const std::vector<AskedAt> where_asked = asked_at(plan.timeline, kinds.size());
-        std::vector<show::TimelineQuestion> questions;
-        std::vector<QuestionCue> cues;
-        std::vector<show::QuestionAnswer> kept;
         bool moved_any = false;
         for (std::size_t i = 0; i < kinds.size(); ++i) {
-            QuestionCue cue = lesson.question_cues[i];
-            show::TimelineQuestion question = lesson.questions[i];
-            const std::string where = show::question_place(cue) + ": render.questions";
-            std::int64_t later = 0;
             const AskedAt asked = where_asked[i];
-            if (asked.sim_frame >= 0 && kinds[i] == QuestionKind::will_see)
-                answers[i] = answer_will_see_at(scene, plan, asked.sim_frame, later, stop);
-            if (asked.sim_frame < 0) {
-                plan.notices.push_back(fmt::format(
-                    "{}: no room at {} s for {} s of question and answer before the video's end; "
-                    "not asked",
-                    where, cue.at, cue.think + question.reveal));
-                continue;
-            }
-            if (later > 0 && round < max_rounds) {
-                // The picture freezes just before the failing step: the frames between run
-                // first (one video frame each while running; a whole frame's time, so that no
-                // rounding puts it a frame later).
-                question.at = static_cast<double>(asked.video_frame + later) / plan.fps;
-                moved_any = true;
-            } else if (!answers[i].askable) {
-                plan.notices.push_back(
-                    kinds[i] == QuestionKind::will_see
-                        ? fmt::format("{}: nothing to ask at {} s (the time-driven engine misses "
-                                      "no collision after it before the video's end); not asked",
-                                      where, cue.at)
-                        : fmt::format("{}: nothing to ask at {} s (the event-driven engine "
-                                      "resolves no collision in the {} frames after it); not "
-                                      "asked",
-                                      where, cue.at, show::look_ahead_frames));
-                continue;
-            }
-            questions.push_back(question);
-            cues.push_back(cue);
-            kept.push_back(answers[i]);
+            if (asked.sim_frame < 0) continue;
+            const std::int64_t later =
+                frames_to_askable(scene, plan, kinds[i], asked.sim_frame, answers[i], stop);
+            if (later <= 0 || round >= max_rounds) continue;
+            // The picture freezes `later` frames on: the frames between run first (one video
+            // frame each while running; a whole frame's time, so that no rounding puts it a
+            // frame later).
+            lesson.questions[i].at = static_cast<double>(asked.video_frame + later) / plan.fps;
+            moved_any = true;
         }
-        if (kept.size() == kinds.size() && !moved_any) break;
-        // Without the questions left out, the later ones freeze other frames: ask again.
-        lesson.questions = std::move(questions);
-        lesson.question_cues = std::move(cues);
+        if (!moved_any) {
+            std::vector<show::TimelineQuestion> questions;
+            std::vector<QuestionCue> cues;
+            for (std::size_t i = 0; i < kinds.size(); ++i) {
+                const std::string reason = cannot_ask_reason(
+                    plan, lesson.question_cues[i], lesson.questions[i], where_asked[i], answers[i]);
+                if (!reason.empty()) {
+                    cannot_ask(lesson.question_cues[i], reason, refuse, plan.notices);
+                    continue;
+                }
+                questions.push_back(lesson.questions[i]);
+                cues.push_back(lesson.question_cues[i]);
+            }
+            if (questions.size() == kinds.size()) break;
+            // Without the questions left out, the later ones freeze other frames: ask again.
+            lesson.questions = std::move(questions);
+            lesson.question_cues = std::move(cues);
+        }
         lay_out_frames(plan, request, find_replays);
     }
     for (std::size_t i = 0; i < answers.size(); ++i) {
-        if (lesson.questions[i].at != lesson.question_cues[i].at) {
-            plan.notices.push_back(fmt::format(
-                "{}: render.questions.at: moved from {} s to {:.2f} s, the moment before the "
-                "time-driven engine's next check misses a collision",
-                show::question_place(lesson.question_cues[i]), lesson.question_cues[i].at,
-                lesson.questions[i].at));
+        const QuestionCue& cue = lesson.question_cues[i];
+        if (lesson.questions[i].at - cue.at > show::quiet_move_seconds) {
+            plan.notices.push_back(
+                fmt::format("{}: render.questions.at: moved from {:g} s to {:.2f} "
+                            "s, {}",
+                            show::question_place(cue), cue.at, lesson.questions[i].at,
+                            moved_to_words(cue.kind)));
         }
-        lesson.questions[i].question =
-            show::question_words(answers[i], lesson.question_cues[i].text);
+        lesson.questions[i].question = show::question_words(answers[i], cue.text);
         lesson.questions[i].answer = show::answer_words(answers[i], plan.clock);
     }
     plan.questions = std::move(answers);

@@ -270,11 +270,17 @@ inline constexpr const char* default_output_dir = "out";
 /// (RenderPlan::clock).
 using ReplayFinder = std::function<std::vector<show::ReplayFailure>(const RenderPlan&)>;
 
-/// Asks the event-driven engine the questions of `plan` (laid out by lay_out_frames): each
-/// question's answer and words (show/questions.hpp), and the timeline with their captions. A
-/// question the timeline has no room for, or with nothing to ask at its moment (no collision
-/// ahead), is left out with a notice naming where it was written, and the frames laid out again
-/// without it. A still asks nothing. Once `stop` is set throws Error(runtime).
+/// Asks the engines the questions of `plan` (laid out by lay_out_frames): each question's answer
+/// and words (show/questions.hpp), and the timeline with their captions. A question that cannot
+/// be asked on its frame moves to the first later one that can (will-see: before the time-driven
+/// engine's next failed step; next-collision: show::next_askable_frame), with a notice naming
+/// where it was written when it lands more than show::quiet_move_seconds after its `at`. One
+/// that cannot be asked at all (no later moment before the video's end, no room for it before
+/// the end, or a how-many question whose next second the video does not show) throws
+/// Error(input) naming its file, line and `render.questions.at`; when --duration, --speed,
+/// --slow-motion or --dt set the video's length or clock it is left out with a notice instead,
+/// and the frames laid out again without it. A still asks nothing. Once `stop` is set throws
+/// Error(runtime).
 void ask_questions(RenderPlan& plan, const RenderRequest& request, const Scene& scene,
                    const ReplayFinder& find_replays = {}, const std::atomic<bool>* stop = nullptr);
 

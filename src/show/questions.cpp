@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <limits>
 #include <memory>
 #include <numbers>
@@ -68,6 +69,29 @@ double gap(const Snapshot& snapshot, std::uint32_t a, std::uint32_t b) {
     return norm(snapshot.box.displacement(x.position, y.position)) - x.radius - y.radius;
 }
 
+/// True when the pair `r` may be offered as a near miss: it does not collide among `seen` (the
+/// collisions of the look ahead) and shares no disc with `avoid` (the candidates so far).
+bool may_offer_as_miss(const CollisionRecord& r, const std::vector<CollisionRecord>& seen,
+                       const std::vector<CollisionRecord>& avoid) {
+    const auto same = [&r](const CollisionRecord& s) { return same_contact(r, s); };
+    const auto near = [&r](const CollisionRecord& s) { return shares_disc(r, s); };
+    return std::none_of(seen.begin(), seen.end(), same) &&
+           std::none_of(avoid.begin(), avoid.end(), near);
+}
+
+/// The discs near_misses looks at: the first 2,000 (its search is O(n^2)).
+std::uint32_t near_miss_discs(std::size_t discs) {
+    return static_cast<std::uint32_t>(std::min<std::size_t>(discs, 2000));
+}
+
+CollisionRecord pair_record(std::uint32_t a, std::uint32_t b) {
+    CollisionRecord r;
+    r.t = std::numeric_limits<double>::infinity();
+    r.a = a;
+    r.b = b;
+    return r;
+}
+
 /// Near pairs that do not collide among `seen` (the collisions of the look ahead, which end
 /// after the answer): the pairs of discs closest edge to edge, nearest first, sharing no disc
 /// with `avoid`. At most `wanted`; O(n^2) over at most the first 2,000 discs.
@@ -75,20 +99,12 @@ std::vector<CollisionRecord> near_misses(const Snapshot& snapshot,
                                          const std::vector<CollisionRecord>& seen,
                                          const std::vector<CollisionRecord>& avoid,
                                          std::size_t wanted) {
-    const auto n = static_cast<std::uint32_t>(std::min<std::size_t>(snapshot.discs.size(), 2000));
+    const std::uint32_t n = near_miss_discs(snapshot.discs.size());
     std::vector<std::pair<double, CollisionRecord>> pairs;
     for (std::uint32_t a = 0; a < n; ++a) {
         for (std::uint32_t b = a + 1; b < n; ++b) {
-            CollisionRecord r;
-            r.t = std::numeric_limits<double>::infinity();
-            r.a = a;
-            r.b = b;
-            const auto same = [&r](const CollisionRecord& s) { return same_contact(r, s); };
-            const auto near = [&r](const CollisionRecord& s) { return shares_disc(r, s); };
-            if (std::any_of(seen.begin(), seen.end(), same) ||
-                std::any_of(avoid.begin(), avoid.end(), near))
-                continue;
-            pairs.emplace_back(gap(snapshot, a, b), r);
+            const CollisionRecord r = pair_record(a, b);
+            if (may_offer_as_miss(r, seen, avoid)) pairs.emplace_back(gap(snapshot, a, b), r);
         }
     }
     std::sort(pairs.begin(), pairs.end(),
@@ -101,6 +117,59 @@ std::vector<CollisionRecord> near_misses(const Snapshot& snapshot,
         out.push_back(r);
     }
     return out;
+}
+
+/// True when near_misses would find one among `discs` discs: the first pair it may offer ends
+/// the search (O(n) pairs at most before one is found: `seen` and `avoid` exclude few).
+bool has_near_miss(std::size_t discs, const std::vector<CollisionRecord>& seen,
+                   const std::vector<CollisionRecord>& avoid) {
+    const std::uint32_t n = near_miss_discs(discs);
+    for (std::uint32_t a = 0; a < n; ++a) {
+        for (std::uint32_t b = a + 1; b < n; ++b) {
+            if (may_offer_as_miss(pair_record(a, b), seen, avoid)) return true;
+        }
+    }
+    return false;
+}
+
+/// The collisions a next-collision question offers from those resolved ahead (`hits`, in
+/// order, not empty): the first, then later ones (of other discs first, their lines apart, then
+/// any other contact), never one at the very time of the first (two answers at once would both
+/// be right); at most max_candidates - 1, near misses fill the rest.
+std::vector<CollisionRecord> offered_collisions(const std::vector<CollisionRecord>& hits) {
+    const CollisionRecord& next = hits.front();
+    std::vector<CollisionRecord> chosen{next};
+    for (const bool apart : {true, false}) {
+        for (const CollisionRecord& hit : hits) {
+            if (chosen.size() == max_candidates - 1) break;
+            const auto same = [&hit](const CollisionRecord& c) { return same_contact(hit, c); };
+            const auto near = [&hit](const CollisionRecord& c) { return shares_disc(hit, c); };
+            if (!(hit.t > next.t) || std::any_of(chosen.begin(), chosen.end(), same)) continue;
+            if (apart && std::any_of(chosen.begin(), chosen.end(), near)) continue;
+            chosen.push_back(hit);
+        }
+    }
+    return chosen;
+}
+
+/// The collisions a copy asked for a next-collision question resolves: enough that a few of
+/// them involve other discs than the first's.
+constexpr std::size_t next_collision_hits = 24;
+
+/// True when answer_next_collision answers, for `discs` discs, from the collisions `hits` its
+/// copy resolved: one at least, and a second candidate (a later collision or a near miss).
+bool next_collision_askable(const std::vector<CollisionRecord>& hits, std::size_t discs) {
+    if (hits.empty()) return false;
+    const std::vector<CollisionRecord> chosen = offered_collisions(hits);
+    return chosen.size() >= min_candidates || has_near_miss(discs, hits, chosen);
+}
+
+/// The time of simulation frame j on `clock`, past its last frame too (one interval a frame):
+/// the calls the video makes, so that a copy run to them resolves the same bits.
+double frame_time(const FrameClock& clock, std::int64_t j) {
+    const std::int64_t count = clock.count;
+    return j < count ? clock.time(j)
+                     : clock.time(count - 1) + static_cast<double>(j - count + 1) * clock.interval;
 }
 
 std::string disc_words(const CollisionRecord& r) {
@@ -148,23 +217,9 @@ QuestionAnswer answer_next_collision(const Engine& engine, const Snapshot& snaps
     out.kind = QuestionKind::next_collision;
     out.time = snapshot.time;
     if (snapshot.dimension != 2) return out;
-    // Enough collisions that a few of them involve other discs than the first's.
-    const Ahead ahead = run_copy(engine, after, look_ahead_frames, 24);
+    const Ahead ahead = run_copy(engine, after, look_ahead_frames, next_collision_hits);
     if (ahead.hits.empty()) return out;
-    const CollisionRecord& next = ahead.hits.front();
-    std::vector<CollisionRecord> chosen{next};
-    // Later collisions: of other discs first (their lines apart), then any other contact; never
-    // one at the very time of the answer (two answers at once would both be right).
-    for (const bool apart : {true, false}) {
-        for (const CollisionRecord& hit : ahead.hits) {
-            if (chosen.size() == max_candidates - 1) break;
-            const auto same = [&hit](const CollisionRecord& c) { return same_contact(hit, c); };
-            const auto near = [&hit](const CollisionRecord& c) { return shares_disc(hit, c); };
-            if (!(hit.t > next.t) || std::any_of(chosen.begin(), chosen.end(), same)) continue;
-            if (apart && std::any_of(chosen.begin(), chosen.end(), near)) continue;
-            chosen.push_back(hit);
-        }
-    }
+    std::vector<CollisionRecord> chosen = offered_collisions(ahead.hits);
     if (chosen.size() < max_candidates - 1) {
         const std::vector<CollisionRecord> misses =
             near_misses(snapshot, ahead.hits, chosen, max_candidates - 1 - chosen.size());
@@ -384,20 +439,14 @@ std::vector<QuestionAnswer> answer_questions(const Scene& scene, const EngineOpt
     copy.stop = stop;
     const std::unique_ptr<Engine> engine = make_engine(scene, copy);
     // The video's calls: frame by frame on the clock (the same times, so the same bits).
-    const std::int64_t count = clock.count;
-    const auto frame_time = [&clock, count](std::int64_t j) {
-        return j < count
-                   ? clock.time(j)
-                   : clock.time(count - 1) + static_cast<double>(j - count + 1) * clock.interval;
-    };
     std::int64_t at = -1;
     for (const auto& [frame, question] : asked) {
         while (at < frame) {
             ++at;
-            engine->advance_to(std::max(frame_time(at), engine->time()));
+            engine->advance_to(std::max(frame_time(clock, at), engine->time()));
         }
-        const FramesAfter after = [&frame_time, f = frame](std::int64_t i) {
-            return frame_time(f + i);
+        const FramesAfter after = [&clock, f = frame](std::int64_t i) {
+            return frame_time(clock, f + i);
         };
         const auto q = static_cast<std::size_t>(question);
         if (kinds[q] == QuestionKind::will_see) continue;  // the time-driven engine's
@@ -411,6 +460,43 @@ std::vector<QuestionAnswer> answer_questions(const Scene& scene, const EngineOpt
         out[q].sim_frame = frame;
     }
     return out;
+}
+
+std::optional<std::int64_t> next_askable_frame(const Scene& scene, const EngineOptions& options,
+                                               const FrameClock& clock, std::int64_t frozen,
+                                               std::int64_t last, const std::atomic<bool>* stop) {
+    if (last <= frozen) return std::nullopt;
+    EngineOptions copy = options;
+    copy.stop = stop;
+    // One engine, run ahead of the frame g being tried by up to look_ahead_frames, frame by frame
+    // as the video runs it: the collisions it resolves on frames g+1, g+2, ... are those a copy
+    // asked at g would resolve (the same calls, so the same bits), and each g reads them off.
+    const std::unique_ptr<Engine> scout = make_engine(scene, copy);
+    std::deque<std::pair<std::int64_t, CollisionRecord>> ahead;  // (the frame it ends on, hit)
+    std::int64_t scouted = 0;
+    scout->advance_to(std::max(frame_time(clock, 0), scout->time()));
+    scout->set_collision_listener(
+        [&ahead, &scouted](const CollisionRecord& hit) { ahead.emplace_back(scouted, hit); });
+    std::optional<std::int64_t> found;
+    std::vector<CollisionRecord> hits;
+    for (std::int64_t g = frozen + 1; g <= last && !found; ++g) {
+        while (!ahead.empty() && ahead.front().first <= g) ahead.pop_front();
+        // As run_copy stops: after the frame on which the collisions reach enough, else after
+        // look_ahead_frames frames.
+        hits.clear();
+        for (std::int64_t i = 1; i <= look_ahead_frames; ++i) {
+            while (scouted < g + i) {
+                ++scouted;
+                scout->advance_to(std::max(frame_time(clock, scouted), scout->time()));
+            }
+            for (std::size_t h = hits.size(); h < ahead.size() && ahead[h].first == g + i; ++h)
+                hits.push_back(ahead[h].second);
+            if (hits.size() >= next_collision_hits) break;
+        }
+        if (next_collision_askable(hits, scene.discs.size())) found = g;
+    }
+    scout->set_collision_listener(nullptr);
+    return found;
 }
 
 }  // namespace collide::show

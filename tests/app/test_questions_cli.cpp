@@ -66,6 +66,8 @@ TEST_CASE("gas, billiards and tunnelling ask: a frozen question, then its reveal
         const auto r =
             run_collide(render_args(scene, dir.path) + "--subtitles-file " + vtt.string());
         REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+        // Asked where the scene says: no notice of a question moved or left out.
+        CHECK_MESSAGE(r.output.find("render.questions") == std::string::npos, r.output);
         const nlohmann::json timeline = read_json(dir.path / "t.json");
         CHECK(checked_questions(timeline) >= 1);
         const std::string subtitles = collide::test::read_all(vtt);
@@ -135,7 +137,8 @@ TEST_CASE("bad questions: --questions and [[render.questions]] exit 2 naming wha
     CHECK(!fs::exists(mp4));
 }
 
-TEST_CASE("a question with nothing to ask is left out with a notice naming where it was written") {
+TEST_CASE(
+    "a question with nothing to ask is refused naming its field, or left out with --duration") {
     TempDir dir("questions-quiet");
     const fs::path scene = dir.path / "q.toml";
     // One disc alone in a periodic box: it never collides.
@@ -143,12 +146,22 @@ TEST_CASE("a question with nothing to ask is left out with a notice naming where
                             "[[disc]]\nposition = [0.3, 0.5]\nvelocity = [0.1, 0]\nradius = 0.05\n"
                             "[render]\nduration = 20\n"
                             "[[render.questions]]\nat = 3\nkind = \"next-collision\"\n";
-    const auto r = run_collide(
+    const std::string args =
         "render " + scene.string() + " --size 320x180 --fps 10 --progress none -o " +
-        (dir.path / "q.mp4").string() + " --timeline-json " + (dir.path / "t.json").string());
-    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
-    CHECK_MESSAGE(r.output.find("q.toml:12: render.questions: nothing to ask") != std::string::npos,
-                  r.output);
+        (dir.path / "q.mp4").string() + " --timeline-json " + (dir.path / "t.json").string();
+    const auto refused = run_collide(args);
+    CHECK(refused.exit_code == 2);
+    CHECK_MESSAGE(refused.output.find("q.toml:12: render.questions.at: nothing to ask at 3 s") !=
+                      std::string::npos,
+                  refused.output);
+    CHECK_FALSE(fs::exists(dir.path / "q.mp4"));
+    CHECK_FALSE(fs::exists(dir.path / "t.json"));
+    // The video's length given on the command line: left out, as a caption past its end.
+    const auto cut = run_collide(args + " --duration 20");
+    REQUIRE_MESSAGE(cut.exit_code == 0, cut.output);
+    CHECK_MESSAGE(cut.output.find("q.toml:12: render.questions.at: nothing to ask at 3 s") !=
+                      std::string::npos,
+                  cut.output);
     CHECK(checked_questions(read_json(dir.path / "t.json")) == 0);
 }
 
@@ -180,6 +193,7 @@ TEST_CASE("tunnelling asks whether the next check sees it: --mode time asks, --m
     const auto both =
         run_collide(render_args("tunnelling", dir.path) + "--subtitles-file " + vtt.string());
     REQUIRE_MESSAGE(both.exit_code == 0, both.output);
+    CHECK_MESSAGE(both.output.find("render.questions") == std::string::npos, both.output);
     const nlohmann::json timeline = read_json(dir.path / "t.json");
     CHECK(checked_questions(timeline) >= 2);
     CHECK(will_see_questions(timeline) == 1);
@@ -187,6 +201,7 @@ TEST_CASE("tunnelling asks whether the next check sees it: --mode time asks, --m
 
     const auto time = run_collide(render_args("tunnelling", dir.path) + "--mode time");
     REQUIRE_MESSAGE(time.exit_code == 0, time.output);
+    CHECK_MESSAGE(time.output.find("moved from") == std::string::npos, time.output);
     const nlohmann::json time_line = read_json(dir.path / "t.json");
     CHECK(will_see_questions(time_line) == 1);
     CHECK(checked_questions(time_line) == 1);  // only the time-driven panel's question

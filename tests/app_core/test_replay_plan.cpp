@@ -195,11 +195,17 @@ TEST_CASE("will see: asked just before the time-driven engine's next failed step
                 CHECK(segment.sim_frame != answer.failure->sim_frame);
         }
         CHECK(revealed);
-        if (frozen > at) {
-            const bool said = std::any_of(
-                plan.notices.begin(), plan.notices.end(),
-                [](const std::string& n) { return n.find("moved from") != std::string::npos; });
-            CHECK(said);
-        }
+        // A move is told when the question lands more than quiet_move_seconds after its `at`
+        // (a frame either side of that: no claim).
+        double landed = -1.0;
+        for (const show::Segment& segment : plan.timeline.segments)
+            if (segment.kind == show::SegmentKind::question) landed = segment.start;
+        const double moved = landed - cue.at;
+        const double frame = 1.0 / plan.fps;
+        const bool said = std::any_of(
+            plan.notices.begin(), plan.notices.end(),
+            [](const std::string& n) { return n.find("moved from") != std::string::npos; });
+        if (moved > show::quiet_move_seconds + frame) CHECK(said);
+        if (moved < show::quiet_move_seconds - frame) CHECK_FALSE(said);
     }
 }

@@ -261,3 +261,118 @@ TEST_CASE("will see: asked only on the frame before the failing step, answered b
     CHECK(answer_words(wall, clock_of(100, 0.01)).find("wall") != std::string::npos);
     CHECK(will_see_view(wall, 1.0).focus == std::vector<std::uint32_t>{2});
 }
+
+namespace {
+
+/// Two discs far apart on one line of a long box, the first moving towards the second at rest,
+/// and two more at rest out of their way: nothing collides until the two meet at `meets`
+/// (simulation time), then the second runs on to the wall.
+Scene far_pair(double meets, std::uint64_t seed) {
+    Scene s;
+    s.name = "far";
+    s.box = Box{4.0, 1.0, Boundary::walls};
+    const double r = 0.02;
+    const double y = 0.3 + 0.05 * static_cast<double>(seed % 7);
+    const double apart = 2.0 + 0.1 * static_cast<double>(seed % 5);  // centre to centre
+    const double v = (apart - 2.0 * r) / meets;
+    s.discs.push_back(Disc{{0.5, y}, {v, 0.0}, r, 1.0, {}, ""});
+    s.discs.push_back(Disc{{0.5 + apart, y}, {0.0, 0.0}, r, 1.0, {}, ""});
+    s.discs.push_back(Disc{{0.3, 0.9}, {0.0, 0.0}, r, 1.0, {}, ""});
+    s.discs.push_back(Disc{{3.7, 0.9}, {0.0, 0.0}, r, 1.0, {}, ""});  // a near miss to offer
+    return s;
+}
+
+/// A lattice fluid whose discs move `slower` times slower: its first collisions come late.
+Scene slowed_fluid(std::uint64_t seed, double slower) {
+    Scene s = test::lattice_fluid(4, 0.05, Boundary::walls, seed);
+    for (Disc& d : s.discs) d.velocity = d.velocity * (1.0 / slower);
+    return s;
+}
+
+/// Whether a next-collision question is askable on each frame `from` .. `to` of `clock`: a
+/// fresh engine stepped as the video steps it, asked on each (a copy run per frame: the slow
+/// way next_askable_frame avoids).
+std::vector<bool> askable_frames(const Scene& scene, const EngineOptions& options,
+                                 const FrameClock& clock, std::int64_t from, std::int64_t to) {
+    const std::unique_ptr<Engine> engine = make_engine(scene, options);
+    std::vector<bool> out;
+    for (std::int64_t j = 0; j <= to; ++j) {
+        engine->advance_to(std::max(clock.time(j), engine->time()));
+        if (j < from) continue;
+        out.push_back(
+            answer_next_collision(*engine, engine->snapshot(), after_frame(clock, j), 7).askable);
+    }
+    return out;
+}
+
+/// Checks that `scene` is not askable on frame `frozen`, and that next_askable_frame finds the
+/// first frame after it that is, where the answer is the engine's own next collision. False
+/// when `frozen` is askable already (nothing to move).
+bool moves_to_first_askable(const Scene& scene, const EngineOptions& options,
+                            const FrameClock& clock, std::int64_t frozen) {
+    const std::optional<std::int64_t> to =
+        next_askable_frame(scene, options, clock, frozen, clock.count - 1);
+    REQUIRE(to.has_value());
+    CHECK(*to > frozen);
+    const std::vector<bool> askable = askable_frames(scene, options, clock, frozen, *to);
+    if (askable.front()) return false;
+    CAPTURE(*to);
+    // Every frame between is as quiet; the one it lands on answers.
+    for (std::size_t i = 0; i + 1 < askable.size(); ++i) CHECK_FALSE(askable[i]);
+    CHECK(askable.back());
+    const std::unique_ptr<Engine> engine = make_engine(scene, options);
+    for (std::int64_t j = 0; j <= *to; ++j) engine->advance_to(clock.time(j));
+    const QuestionAnswer answer =
+        answer_next_collision(*engine, engine->snapshot(), after_frame(clock, *to), 11);
+    REQUIRE(answer.askable);
+    // A fresh engine's first collision after that frame, frame by frame.
+    std::optional<CollisionRecord> truth;
+    engine->set_collision_listener([&truth](const CollisionRecord& r) {
+        if (!truth) truth = r;
+    });
+    for (std::int64_t j = *to + 1; j <= *to + look_ahead_frames && !truth; ++j)
+        engine->advance_to(clock.time(j));
+    engine->set_collision_listener(nullptr);
+    REQUIRE(truth.has_value());
+    CHECK(same_contact(answer.candidates[answer.answer], *truth));
+    CHECK(answer.candidates[answer.answer].t == doctest::Approx(truth->t).epsilon(1e-9));
+    return true;
+}
+
+}  // namespace
+
+TEST_CASE("next_askable_frame: a quiet moment moves to the first frame the engine answers") {
+    const FrameClock clock = clock_of(1200, 1.0 / 30.0);
+    int moved = 0;
+    for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+        CAPTURE(seed);
+        EngineOptions options;
+        options.engine = seed % 3 == 0 ? EngineKind::classic : EngineKind::fast;
+        // The pair meets on frame 400 .. 700: askable from 300 frames before.
+        const Scene pair = far_pair(static_cast<double>(400 + 37 * seed) / 30.0, seed);
+        moved += moves_to_first_askable(pair, options, clock, static_cast<std::int64_t>(seed * 9));
+        // A fluid slowed down: its own first collisions, wherever they are.
+        moved += moves_to_first_askable(slowed_fluid(seed, 1500.0), options, clock,
+                                        static_cast<std::int64_t>(seed * 5));
+    }
+    CHECK(moved >= 12);
+}
+
+TEST_CASE("next_askable_frame: nowhere when no later frame answers before the last") {
+    const FrameClock clock = clock_of(900, 1.0 / 30.0);
+    // One disc alone, to and fro between two walls: its hits are one contact (a disc and the
+    // walls across x), so never a second candidate.
+    Scene alone;
+    alone.box = Box{1.0, 1.0, Boundary::walls};
+    alone.discs.push_back(Disc{{0.3, 0.5}, {0.4, 0.0}, 0.05, 1.0, {}, ""});
+    CHECK_FALSE(next_askable_frame(alone, EngineOptions{}, clock, 0, clock.count - 1));
+    // A pair meeting on frame 800: askable from frame 500, not before the last frame 450.
+    const Scene pair = far_pair(800.0 / 30.0, 1);
+    CHECK_FALSE(next_askable_frame(pair, EngineOptions{}, clock, 10, 450));
+    const std::optional<std::int64_t> later =
+        next_askable_frame(pair, EngineOptions{}, clock, 10, 899);
+    REQUIRE(later.has_value());
+    CHECK(*later >= 499);  // the hit 300 frames on, give or take its frame's rounding
+    CHECK(*later <= 501);
+    CHECK_FALSE(next_askable_frame(pair, EngineOptions{}, clock, 899, 899));
+}

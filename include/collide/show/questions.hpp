@@ -37,8 +37,16 @@ inline constexpr double reveal_seconds = 2.5;
 inline constexpr std::size_t max_candidates = 4;
 inline constexpr std::size_t min_candidates = 2;
 /// How far a copy of the engine is run to find the collisions after the frozen frame, in frames
-/// (at 30 frames a second, ten seconds of video): a scene quieter than that has nothing to ask.
+/// (at 30 frames a second, ten seconds of video): a moment quieter than that has nothing to ask
+/// (the question moves on to the first frame that has: next_askable_frame).
 inline constexpr std::int64_t look_ahead_frames = 300;
+
+/// A question that cannot be asked on its frame moves to the first later moment it can (a
+/// will-see question: the frame before the time-driven engine's next failed step; the others:
+/// next_askable_frame). One that lands less than this many seconds of video after its `at` moves
+/// without a notice: the author's moment, to within what a class could tell apart (tunnelling's
+/// `at = 12` lands at 12.13 s to 12.18 s from -q l to -q h, a frame's rounding and a step apart).
+inline constexpr double quiet_move_seconds = 0.5;
 
 /// True when `kind` is answered by the event-driven engine (next-collision, how-many): a video
 /// without the event-driven panel (`--mode time`) does not ask it.
@@ -143,5 +151,16 @@ using FramesAfter = std::function<double(std::int64_t)>;
                                                            const Timeline& timeline,
                                                            const std::vector<QuestionKind>& kinds,
                                                            const std::atomic<bool>* stop = nullptr);
+
+/// Where a next-collision question not askable on simulation frame `frozen` can be asked: the
+/// first frame after it, up to `last`, at which answer_next_collision answers (the event-driven
+/// engine of `scene` resolves a collision within look_ahead_frames of it, and a second candidate
+/// exists); nullopt when none does. One engine run ahead of the frames tried, frame by frame on
+/// `clock` as the video runs it (the same calls as answer_questions makes, so the same bits):
+/// O(frames) steps of the engine, not one copy run per frame tried. Throws Error(input) for
+/// options make_engine rejects, Error(runtime) once `stop` is set.
+[[nodiscard]] std::optional<std::int64_t> next_askable_frame(
+    const Scene& scene, const EngineOptions& options, const FrameClock& clock, std::int64_t frozen,
+    std::int64_t last, const std::atomic<bool>* stop = nullptr);
 
 }  // namespace collide::show
