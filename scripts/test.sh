@@ -5,8 +5,10 @@
 #  2. the full sanitizer build, running the other modules' `unit` tests and the CLI option matrix
 #     (label `cli-matrix`: the sanitized `collide` over many bad and extreme option sets, so that
 #     UBSan, which never recovers here, checks the command line's paths, not just the libraries);
+#     not the renderer suite's second pass on EGL: under the sanitizers it repeats our code, whose
+#     EGL context the renderer's own EGL test cases already run (step 5 runs the pass);
 #  3. a renderer-only build without OSMesa (COLLIDE_WITH_OSMESA=OFF: EGL only, as on distributions
-#     whose Mesa has no OSMesa), running the renderer tests;
+#     whose Mesa has no OSMesa), running the renderer tests, every one on EGL;
 #  4. a lean build without libav (COLLIDE_VIDEO=OFF: the drawing program for CI thumbnails), only
 #     the programs and their own suite (label `lean`: thumbnail, compare, PNG frames, a video
 #     refused with exit 2);
@@ -33,8 +35,8 @@ ctest --test-dir build/sim-asan -L unit --output-on-failure -j "$jobs"
 echo "==> [2/5] full build with sanitizers (build/asan)"
 cmake -S . -B build/asan "${common[@]}" -DCMAKE_BUILD_TYPE=Debug -DCOLLIDE_SANITIZE=ON >/dev/null
 cmake --build build/asan -j "$jobs"
-ctest --test-dir build/asan -L 'unit|cli-matrix' -E "^collide_(sim|show)_tests:" --output-on-failure \
-      -j "$jobs"
+ctest --test-dir build/asan -L 'unit|cli-matrix' \
+      -E "^collide_(sim|show)_tests:|^collide_render_tests:egl: " --output-on-failure -j "$jobs"
 
 echo "==> [3/5] renderer without OSMesa (build/no-osmesa)"
 cmake -S . -B build/no-osmesa "${common[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \

@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "../support/input_error.hpp"
 #include "../support/skip.hpp"
@@ -232,24 +234,32 @@ TEST_CASE("limits: under an address-space limit, running out is exit 1 'out of m
     const fs::path big = dir.path / "big.toml";
     std::ofstream(big) << "[box]\nwidth = 100\nheight = 100\n[[generate]]\ncount = 1000000\n"
                           "radius = 0.02\n";
+    // Each command at limits around what it needs: the drawing commands (llvmpipe's headroom,
+    // x264) from 420 to 760 MiB; `simulate` of a million discs (about 360 MiB, 4 s of CPU a run)
+    // from 300 to 420 MiB: above that it takes the path it takes without a limit.
+    const std::string draw_args[] = {"render gas -q l --duration 1 --chapters-file '" +
+                                         (dir.path / "c.vtt").string() + "' -o '" + video + "'",
+                                     "thumbnail gas --size 320x180 -o '" + still + "'"};
+    const std::string simulate_args = "simulate '" + big.string() + "' --until 0.001";
+    std::vector<std::pair<long, std::string>> runs;
+    for (const long mib : {420L, 480L, 540L, 560L, 600L, 650L, 700L, 760L})
+        for (const std::string& args : draw_args) runs.emplace_back(mib, args);
+    for (const long mib : {300L, 340L, 380L, 420L}) runs.emplace_back(mib, simulate_args);
     int failed = 0;
-    for (const long mib : {420L, 480L, 540L, 560L, 600L, 650L, 700L, 760L}) {
-        for (const std::string& args : {"render gas -q l --duration 1 --chapters-file '" +
-                                            (dir.path / "c.vtt").string() + "' -o '" + video + "'",
-                                        "thumbnail gas --size 320x180 -o '" + still + "'",
-                                        "simulate '" + big.string() + "' --until 0.001"}) {
-            CAPTURE(mib);
-            CAPTURE(args);
-            const auto r = collide::test::run_collide_measured(args, mib);
-            CHECK((r.exit_code == 0 || r.exit_code == 1));  // -1: killed by a signal
-            if (r.exit_code != 0) {
-                ++failed;
-                CHECK(contains(r.output, "collide: error: out of memory"));
-            }
-            for (const auto& entry : fs::directory_iterator(dir.path)) {
-                const std::string name = entry.path().filename().string();
-                CHECK_MESSAGE(name.front() != '.', name);  // no temporary left
-            }
+    for (const auto& run : runs) {
+        const long mib = run.first;
+        const std::string& args = run.second;
+        CAPTURE(mib);
+        CAPTURE(args);
+        const auto r = collide::test::run_collide_measured(args, mib);
+        CHECK((r.exit_code == 0 || r.exit_code == 1));  // -1: killed by a signal
+        if (r.exit_code != 0) {
+            ++failed;
+            CHECK(contains(r.output, "collide: error: out of memory"));
+        }
+        for (const auto& entry : fs::directory_iterator(dir.path)) {
+            const std::string name = entry.path().filename().string();
+            CHECK_MESSAGE(name.front() != '.', name);  // no temporary left
         }
     }
     CHECK(failed > 0);  // the limits tried do reach the memory the runs need
