@@ -322,6 +322,10 @@ ReplayView question_view(const QuestionAnswer& answer, const Snapshot& snapshot,
     } else {
         view.heading = countdown_words(seconds_left);
     }
+    // The heading keeps clear of every disc (the painter measures its words and finds the place):
+    // the class must see them all while it thinks.
+    view.keep_clear.reserve(snapshot.discs.size());
+    for (const DiscState& d : snapshot.discs) view.keep_clear.push_back({d.position, d.radius});
     if (answer.kind != QuestionKind::next_collision) return view;
     // The letter's plate, in box units: about the lesson's text size where a box fills most of
     // the frame's height (a letter 2.8 % of it on a plate of about twice that).

@@ -122,7 +122,8 @@ using FramesAfter = std::function<double(std::int64_t)>;
 /// What the event-driven panel draws while the question holds (`reveal` false: the candidates'
 /// lines, their letters on plates clear of every disc, the others faint, and "Think: 3" counting
 /// down over `seconds_left`) and while its answer shows (`reveal`: the answer's line in the
-/// failure colour with its letter, the others faded, "Answer: B"). `snapshot`: the frozen state.
+/// failure colour with its letter, the others faded, "Answer: B"). The heading keeps clear of
+/// every disc (keep_clear: all of them). `snapshot`: the frozen state.
 [[nodiscard]] ReplayView question_view(const QuestionAnswer& answer, const Snapshot& snapshot,
                                        const FrameClock& clock, double seconds_left, bool reveal);
 
