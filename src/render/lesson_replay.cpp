@@ -92,6 +92,43 @@ PointF label_place(PointF p, LabelSide side, float clear, float half_w, float ha
     return beside(p, side, clear, half_w, half_h);
 }
 
+/// Where a heading of half sizes (half_w, half_h) goes among `circles` (the discs it must not
+/// cover) and `placed` (plates drawn before: a question's letters): the top of the box, its
+/// middle first, where that is free; else the free place of the highest row, nearest the middle
+/// (rows half a plate apart, each searched outwards from the middle); none free: the top middle.
+PointF heading_place(RectF inside, float half_w, float half_h, const std::vector<Circle>& circles,
+                     const std::vector<RectF>& placed, float margin) {
+    // The circles that reach the row's band: a crowded box is searched fast.
+    std::vector<Circle> row;
+    const auto free = [&](RectF r) {
+        return std::none_of(row.begin(), row.end(),
+                            [&](const Circle& c) { return touches(r, c, margin); }) &&
+               std::none_of(placed.begin(), placed.end(),
+                            [&](const RectF& o) { return overlaps(r, o); });
+    };
+    const float middle = 0.5F * (inside.x0 + inside.x1);
+    const float top = inside.y0 + half_h;
+    const float bottom = std::max(top, inside.y1 - half_h);
+    const float across = std::max(0.0F, 0.5F * inside.width() - half_w);
+    const float step = std::max(1.0F, 0.5F * half_h);
+    for (float y = top; y <= bottom + 0.5F; y += 2.0F * step) {
+        const RectF band = plate_at({middle, y}, half_w, half_h, inside);
+        row.clear();
+        for (const Circle& c : circles) {
+            if (c.centre.y + c.radius + margin > band.y0 &&
+                c.centre.y - c.radius - margin < band.y1)
+                row.push_back(c);
+        }
+        for (float dx = 0.0F; dx <= across + 0.5F; dx += step) {
+            for (const float x : {middle - dx, middle + dx}) {
+                const RectF r = plate_at({x, y}, half_w, half_h, inside);
+                if (free(r)) return {0.5F * (r.x0 + r.x1), 0.5F * (r.y0 + r.y1)};
+            }
+        }
+    }
+    return {middle, top};
+}
+
 }  // namespace
 
 void LessonPainter::add_replay(const ReplayView& replay, const PanelLayout& panel, const Box& box) {
@@ -138,8 +175,10 @@ void LessonPainter::add_replay(const ReplayView& replay, const PanelLayout& pane
         }
     }
     labels_.clear();
-    // The heading first: the labels keep clear of it.
-    if (!replay.heading.empty()) {
+    // The heading first, at the top of the box: the labels keep clear of it. A heading that must
+    // keep clear of discs (a question's) comes last, where neither discs nor labels are.
+    const bool heading_clear_of_discs = !replay.keep_clear.empty();
+    if (!replay.heading.empty() && !heading_clear_of_discs) {
         add_plate_label(Font::body, {0.5F * (inside.x0 + inside.x1), inside.y0 + 0.8F * body},
                         replay.heading, palette_.title, inside);
     }
@@ -158,6 +197,19 @@ void LessonPainter::add_replay(const ReplayView& replay, const PanelLayout& pane
                               : label_place(p, label.side, clear, half_w, half_h, inside, ghosts,
                                             labels_, 0.15F * body);
         add_plate_label(Font::body, at, label.text, color(label.failure, label.opacity), inside);
+    }
+    if (!replay.heading.empty() && heading_clear_of_discs) {
+        std::vector<Circle> discs;
+        discs.reserve(replay.keep_clear.size());
+        for (const BoxCircle& c : replay.keep_clear) {
+            discs.push_back(
+                {panel.to_pixels(c.centre, box), static_cast<float>(c.radius * panel.scale)});
+        }
+        const float half_w = 0.5F * font.text_width(replay.heading) + pad;
+        // The labels' margin, and a pixel more: add_plate_label rounds the plate's corner.
+        const PointF at =
+            heading_place(inside, half_w, half_h, discs, labels_, 0.15F * body + 1.0F);
+        add_plate_label(Font::body, at, replay.heading, palette_.title, inside);
     }
 }
 

@@ -178,6 +178,43 @@ std::string disc_words(const CollisionRecord& r) {
     return fmt::format("disc {} and the wall", r.a);
 }
 
+/// Each candidate disc's velocity as an arrow that ends at its leading edge: the move over one
+/// time, the same for every disc, in which the fastest of them goes motion_arrow_share of the
+/// box's smaller side. Behind the disc, where it came from, so that a disc at a wall heading into
+/// it keeps its arrow inside the box. The class compares the gaps with the arrows: which disc
+/// heads for which, how fast. In the reveal the answer's discs keep theirs, the others fade.
+void add_motion_arrows(ReplayView& view, const QuestionAnswer& answer, const Snapshot& snapshot,
+                       bool reveal) {
+    std::vector<std::pair<std::uint32_t, bool>> discs;  // (disc, one of the answer's)
+    for (std::size_t i = 0; i < answer.candidates.size(); ++i) {
+        const CollisionRecord& c = answer.candidates[i];
+        for (const std::uint32_t k : {c.a, c.kind == CollisionKind::pair ? c.b : c.a}) {
+            const bool right = i == answer.answer;
+            const auto found = std::find_if(discs.begin(), discs.end(),
+                                            [k](const auto& d) { return d.first == k; });
+            if (found == discs.end()) {
+                if (k < snapshot.discs.size()) discs.emplace_back(k, right);
+            } else {
+                found->second = found->second || right;
+            }
+        }
+    }
+    double fastest = 0.0;
+    for (const auto& [k, right] : discs)
+        fastest = std::max(fastest, norm(snapshot.discs[k].velocity));
+    if (!(fastest > 0.0) || !std::isfinite(fastest)) return;
+    const double seconds =
+        motion_arrow_share * std::min(snapshot.box.width, snapshot.box.height) / fastest;
+    for (const auto& [k, right] : discs) {
+        const DiscState& d = snapshot.discs[k];
+        if (!(norm(d.velocity) > 0.0)) continue;
+        const Vec2 edge = d.position + d.velocity * (d.radius / norm(d.velocity));
+        BoxLine arrow{edge - d.velocity * seconds, edge};
+        arrow.opacity = reveal && !right ? 0.3F : 1.0F;
+        view.lines.push_back(arrow);
+    }
+}
+
 }  // namespace
 
 bool needs_event_panel(QuestionKind kind) noexcept {
@@ -377,6 +414,10 @@ ReplayView question_view(const QuestionAnswer& answer, const Snapshot& snapshot,
     } else {
         view.heading = countdown_words(seconds_left);
     }
+    // The heading keeps clear of every disc (the painter measures its words and finds the place):
+    // the class must see them all while it thinks.
+    view.keep_clear.reserve(snapshot.discs.size());
+    for (const DiscState& d : snapshot.discs) view.keep_clear.push_back({d.position, d.radius});
     if (answer.kind != QuestionKind::next_collision) return view;
     // The letter's plate, in box units: about the lesson's text size where a box fills most of
     // the frame's height (a letter 2.8 % of it on a plate of about twice that).
@@ -419,6 +460,7 @@ ReplayView question_view(const QuestionAnswer& answer, const Snapshot& snapshot,
         view.focus.push_back(c.a);
         if (c.kind == CollisionKind::pair) view.focus.push_back(c.b);
     }
+    add_motion_arrows(view, answer, snapshot, reveal);
     return view;
 }
 

@@ -285,7 +285,8 @@ button("subs", toggleSubtitles);
 button("full", toggleFullScreen);
 show();
 
-// ?test: play two chapters by pressing the keys a lecturer would, and log what happened.
+// ?test: play two chapters by pressing the keys a lecturer would, and log what happened
+// (?test=N: N chapters, to reach a later one, a question and then its answer).
 const log = document.getElementById("test-log");
 function note(line) { log.textContent += line + "\n"; }
 // How many text tracks the browser draws over the video now.
@@ -308,11 +309,14 @@ async function selfTest() {
   const track = subtitleTrack();
   note("subtitles " + (track && track.cues ? track.cues.length : 0));
   note("showing " + showing());
-  for (let n = 0; n < Math.min(2, chapters.length); ++n) {
+  const asked = /[?&]test=([0-9]+)/.exec(location.search);
+  const presses = Math.min(asked ? Number(asked[1]) : 2, chapters.length);
+  for (let n = 0; n < presses; ++n) {
     press("ArrowRight");
     await until(function () { return state === "done"; });
     await pause(300);  // still stopped a moment later
     note("stop " + current + " " + video.currentTime.toFixed(3) + (video.paused ? " paused" : " playing"));
+    note("title " + current + " " + chapters[current].text);
     note("showing " + showing());
   }
   press("ArrowLeft");

@@ -7,8 +7,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "../support/files.hpp"
@@ -303,4 +306,101 @@ TEST_CASE("the slide player in headless Chromium from file:// stops at chapter e
     REQUIRE(back.size() == 2);
     CHECK(back[0] == "0");
     CHECK(std::stod(back[1]) == doctest::Approx(0.55).epsilon(0.001));
+}
+
+namespace {
+
+/// A small scene that asks which collision comes first at 2 s (think 2 s, then the answer).
+constexpr const char* question_scene = R"(title = "Which first?"
+
+[box]
+width = 1.0
+height = 1.0
+boundary = "walls"
+
+[[generate]]
+count = 12
+radius = 0.05
+mass = 1.0
+temperature = 0.02
+seed = 4
+
+[render]
+duration = 10.0
+caption = "Twelve discs"
+
+[[render.questions]]
+at = 2.0
+kind = "next-collision"
+think = 2
+)";
+
+/// The first segment of `kind` in a --timeline-json file: {start, end} in seconds of video.
+std::pair<double, double> segment_of(const nlohmann::json& timeline, const std::string& kind) {
+    for (const nlohmann::json& s : timeline["segments"]) {
+        if (s["kind"] == kind) return {s["start"].get<double>(), s["end"].get<double>()};
+    }
+    return {-1.0, -1.0};
+}
+
+/// The title the page's log gave chapter `chapter` ("title 2 Pause and think: ...").
+std::string logged_title(const std::string& log, const std::string& chapter) {
+    const std::string prefix = "title " + chapter + " ";
+    const std::size_t at = log.find(prefix);
+    if (at == std::string::npos) return "";
+    const std::size_t from = at + prefix.size();
+    return log.substr(from, log.find('\n', from) - from);
+}
+
+}  // namespace
+
+TEST_CASE("the slide player stops on the question, not its answer, and the right arrow reveals") {
+    const std::string chromium = chromium_program();
+    if (chromium.empty()) COLLIDE_SKIP_TEST("chromium is not installed (scripts/setup.sh --test)");
+    TempDir dir("slides_question");
+    const fs::path scene = dir.path / "scene.toml";
+    collide::test::write_file(scene, question_scene);
+    const fs::path slides = dir.path / "talk";
+    const fs::path timeline_file = dir.path / "t.json";
+    const auto r =
+        run_collide("render " + scene.string() + " --size 320x180 --fps 10 --progress none -o " +
+                    (dir.path / "t.mp4").string() + " --slides " + slides.string() +
+                    " --timeline-json " + timeline_file.string());
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    std::ifstream in(timeline_file);
+    const nlohmann::json timeline = nlohmann::json::parse(in);
+    const auto [question_start, question_end] = segment_of(timeline, "question");
+    const auto [reveal_start, reveal_end] = segment_of(timeline, "reveal");
+    REQUIRE(question_start >= 0.0);
+    REQUIRE(reveal_start >= question_end - 1e-9);
+    // ?test=9: the right arrow pressed for every chapter (fewer than 9), each stop logged with
+    // its chapter's title.
+    const std::string log = finished_test_log(
+        chromium, dir.path / "profile", "file://" + slides.string() + "/index.html?test=9", 30000);
+    INFO("test log: " << log);
+    CHECK(log.find("error") == std::string::npos);
+    REQUIRE(log.find("end") != std::string::npos);
+    int question = -1;
+    for (int n = 0; n < 9 && question < 0; ++n) {
+        const std::vector<std::string> stop = log_line(log, "stop", n);
+        if (stop.size() == 3 && logged_title(log, stop[0]).rfind("Pause and think", 0) == 0)
+            question = n;
+    }
+    REQUIRE_MESSAGE(question >= 0, "no stop on a chapter titled with the question");
+    // The player holds a frame of the question (the letters, the countdown), not the reveal's.
+    const std::vector<std::string> asked = log_line(log, "stop", question);
+    CHECK(asked[2] == "paused");
+    const double asked_at = std::stod(asked[1]);
+    CHECK(asked_at > question_start);
+    CHECK(asked_at < question_end);
+    CHECK(asked_at < reveal_start);
+    // The next press plays the reveal and stops at its end, on the answer.
+    const std::vector<std::string> answered = log_line(log, "stop", question + 1);
+    REQUIRE(answered.size() == 3);
+    CHECK(answered[2] == "paused");
+    CHECK(std::stoi(answered[0]) == std::stoi(asked[0]) + 1);
+    CHECK(logged_title(log, answered[0]).rfind("Answer: ", 0) == 0);
+    const double answered_at = std::stod(answered[1]);
+    CHECK(answered_at > reveal_start);
+    CHECK(answered_at < reveal_end);
 }

@@ -127,10 +127,18 @@ using FramesAfter = std::function<double(std::int64_t)>;
 /// reveal is the replay (replay_views of answer.failure).
 [[nodiscard]] ReplayView will_see_view(const QuestionAnswer& answer, double seconds_left);
 
+/// How long the arrow of the fastest disc of a next-collision question is, a share of the box's
+/// smaller side (the other discs' arrows are their moves over the same time): about 50 pixels
+/// where the box is 340 high, as it is at `-q l`.
+inline constexpr double motion_arrow_share = 0.15;
+
 /// What the event-driven panel draws while the question holds (`reveal` false: the candidates'
-/// lines, their letters on plates clear of every disc, the others faint, and "Think: 3" counting
-/// down over `seconds_left`) and while its answer shows (`reveal`: the answer's line in the
-/// failure colour with its letter, the others faded, "Answer: B"). `snapshot`: the frozen state.
+/// lines, each candidate disc's velocity as an arrow ending at its leading edge
+/// (motion_arrow_share), their letters on plates clear of every disc, the others faint, and
+/// "Think: 3" counting down over `seconds_left`) and while its answer shows (`reveal`: the
+/// answer's line in the failure colour with its letter and arrows, the others faded, "Answer:
+/// B"). The heading keeps clear of every disc (keep_clear: all of them). `snapshot`: the frozen
+/// state.
 [[nodiscard]] ReplayView question_view(const QuestionAnswer& answer, const Snapshot& snapshot,
                                        const FrameClock& clock, double seconds_left, bool reveal);
 

@@ -196,6 +196,10 @@ struct ReplayView {
     std::vector<std::uint32_t> focus;
     /// Discs left out of the snapshot's picture (the ghosts show them instead).
     std::vector<std::uint32_t> hidden;
+    /// Discs the heading must not cover (a question's: every disc of the frozen frame). Empty:
+    /// the heading sits at the top of the box; else there where that plate is clear of these
+    /// circles and of the labels, or at the nearest clear place (the painter measures the words).
+    std::vector<BoxCircle> keep_clear;
     [[nodiscard]] bool empty() const noexcept {
         return heading.empty() && ghosts.empty() && lines.empty() && labels.empty() &&
                focus.empty() && hidden.empty();
