@@ -83,8 +83,11 @@ class LessonPainter : public Painter {
                          std::string_view text, Rgba8 color, RectF inside);
     [[nodiscard]] float pop_highlight(const QueuedEvent& popped, double now) const noexcept;
     [[nodiscard]] Rgba8 next_color() const noexcept;
-    /// A queue node as wide as the widest of `labels` (and a time to go).
-    [[nodiscard]] float node_width(const std::vector<std::string>& labels) const;
+    /// A queue node as wide as the widest of `labels` (and a time to go: beside the label when
+    /// `one_line`, else under it).
+    [[nodiscard]] float node_width(const std::vector<std::string>& labels, bool one_line) const;
+    /// Whether queue nodes `height` px tall set label and time on one line (a short strip).
+    [[nodiscard]] bool one_line_nodes(float height) const;
 
     double video_time_ = 0.0;
     double speed_ = 0.0;             // simulation time per second of video (FrameContent::speed)

@@ -18,7 +18,8 @@ namespace {
 
 /// The strip's line height and a node's height (two lines, label and time), in text heights:
 /// tight enough that at the lesson's text size a 30 % strip holds the heading, two pops with
-/// their counts and a heap's top two levels.
+/// their counts and a heap's top two levels. A strip too short for two lines (the boxes keep
+/// their share of the frame) sets a node's label and time side by side on one strip line.
 constexpr float strip_line = 1.15F;
 constexpr float node_lines = 2.0F;
 
@@ -289,9 +290,15 @@ void LessonPainter::add_queue_strip(const Snapshot& snapshot, const QueueWords& 
         TextRole::queue, -1, {inner.x0, inner.y0, inner.x1, inner.y0 + line}, small.pixel_height()};
     // The legend of the box's lines is on the panel's legend line (add_panel_text): at the
     // lesson's text size the heading takes the strip's width.
-    draw_text(Font::small, heading_slot, heading, palette_.title);
+    const float heading_end = draw_text(Font::small, heading_slot, heading, palette_.title);
     const float popped_w = std::round(0.33F * inner.width());
     const RectF body{inner.x0, inner.y0 + line + 0.5F * m, inner.x1, inner.y1};
+    // An array's caption, where its row has no line for it (a short strip), after the heading
+    // when it fits there.
+    const bool row_caption_above = queue.shape != QueueShape::heap && body.height() < 2.0F * line;
+    if (row_caption_above && !words.row_caption.empty() &&
+        heading_end + m + small.text_width(words.row_caption) <= inner.x1)
+        draw_text(Font::small, heading_slot, words.row_caption, palette_.muted, Align::right);
     add_popped(queue, words, snapshot.time, {body.x0, body.y0, body.x0 + popped_w, body.y1});
     const RectF right{body.x0 + popped_w + m, body.y0, body.x1, body.y1};
     if (queue.shape == QueueShape::heap) {
@@ -343,11 +350,18 @@ void LessonPainter::add_popped(const QueueView& queue, const QueueWords& words, 
     if (bottom < area.y1) draw_text(Font::small, slot(bottom), words.counts, palette_.muted);
 }
 
-float LessonPainter::node_width(const std::vector<std::string>& labels) const {
+float LessonPainter::node_width(const std::vector<std::string>& labels, bool one_line) const {
     const FontAtlas& small = *small_font_;
-    float widest = small.text_width("0.0000");  // the longest time to go, "stale"
+    const float time = small.text_width("0.0000");  // the longest time to go, "stale"
+    float widest = one_line ? 0.0F : time;
     for (const std::string& label : labels) widest = std::max(widest, small.text_width(label));
-    return std::round(widest + 0.8F * small.pixel_height());
+    // One line: the label, a space of 0.8 text heights, the time.
+    return std::round(
+        widest + (one_line ? time + 1.6F * small.pixel_height() : 0.8F * small.pixel_height()));
+}
+
+bool LessonPainter::one_line_nodes(float height) const {
+    return height < std::round(node_lines * small_font_->pixel_height());
 }
 
 void LessonPainter::add_queue_node(std::string_view label, std::string_view time, RectF node,
@@ -355,8 +369,20 @@ void LessonPainter::add_queue_node(std::string_view label, std::string_view time
     const FontAtlas& small = *small_font_;
     list_.over.add_rect(node, palette_.box_fill);
     list_.over.add_frame(node, frame_color.a == 255 && !stale ? 2.0F : 1.0F, frame_color);
-    const float half = 0.5F * node.height();
     const Rgba8 text = stale ? palette_.muted : palette_.title;
+    const Rgba8 time_color = stale ? text : faded(palette_.text, 0.85F);
+    if (one_line_nodes(node.height())) {
+        // Label on the left, time on the right: a strip of one line.
+        const float pad = std::round(0.4F * small.pixel_height());
+        const TextSlot row{TextRole::queue,
+                           -1,
+                           {node.x0 + pad, node.y0, node.x1 - pad, node.y1},
+                           small.pixel_height()};
+        draw_text(Font::small, row, label, text, Align::left);
+        draw_text(Font::small, row, time, time_color, Align::right);
+        return;
+    }
+    const float half = 0.5F * node.height();
     draw_text(
         Font::small,
         {TextRole::queue, -1, {node.x0, node.y0, node.x1, node.y0 + half}, small.pixel_height()},
@@ -364,7 +390,7 @@ void LessonPainter::add_queue_node(std::string_view label, std::string_view time
     draw_text(
         Font::small,
         {TextRole::queue, -1, {node.x0, node.y0 + half, node.x1, node.y1}, small.pixel_height()},
-        time, stale ? text : faded(palette_.text, 0.85F), Align::centre);
+        time, time_color, Align::centre);
 }
 
 // The event just popped, beside the root it was a moment ago, fading out with an arrow away
@@ -376,7 +402,12 @@ void LessonPainter::add_leaving_root(const QueueView& queue, const QueueWords& w
     const float glow = pop_highlight(e, now);
     if (glow <= 0.0F) return;
     const FontAtlas& small = *small_font_;
-    const float w = std::round(1.5F * node_w);  // room for QueueWords::stale_leaving
+    // Two lines: room for QueueWords::stale_leaving under the label. One line: the label alone
+    // (the latest pops' list says what became of it), as wide as it needs.
+    const bool one_line = one_line_nodes(node_h);
+    const std::string& label = nth(words.popped_labels, queue.popped.size() - 1);
+    const float w = one_line ? std::round(small.text_width(label) + 0.8F * small.pixel_height())
+                             : std::round(1.5F * node_w);
     // Beside the latest pops' list, never over it: a wide node moves right, its arrow shortens.
     const float x1 =
         std::round(std::max(root.x - 0.5F * node_w - 1.2F * node_w, std::ceil(left) + w));
@@ -392,12 +423,17 @@ void LessonPainter::add_leaving_root(const QueueView& queue, const QueueWords& w
     const float head = 0.18F * node_h;
     list_.over.add_line({ax1, ay}, {ax1 + head, ay - head}, 2.0F, faded(color, glow));
     list_.over.add_line({ax1, ay}, {ax1 + head, ay + head}, 2.0F, faded(color, glow));
-    const float half = 0.5F * node_h;
     const Rgba8 text = faded(e.stale ? palette_.muted : palette_.title, glow);
+    if (one_line) {
+        draw_text(Font::small, {TextRole::queue, -1, node, small.pixel_height()}, label, text,
+                  Align::centre);
+        return;
+    }
+    const float half = 0.5F * node_h;
     draw_text(
         Font::small,
         {TextRole::queue, -1, {node.x0, node.y0, node.x1, node.y0 + half}, small.pixel_height()},
-        nth(words.popped_labels, queue.popped.size() - 1), text, Align::centre);
+        label, text, Align::centre);
     draw_text(
         Font::small,
         {TextRole::queue, -1, {node.x0, node.y0 + half, node.x1, node.y1}, small.pixel_height()},
@@ -411,7 +447,9 @@ void LessonPainter::add_queue_tree(const QueueView& queue, const QueueWords& wor
     if (queue.slots.empty() || queue.levels == 0) return;
     const FontAtlas& small = *small_font_;
     const std::size_t d = std::max<unsigned>(queue.arity, 2);
-    const float node_h = std::round(node_lines * small.pixel_height());
+    const bool one_line = one_line_nodes(area.height());
+    const float node_h =
+        one_line ? std::floor(area.height()) : std::round(node_lines * small.pixel_height());
     // The levels that fit the strip (a view may hold more than the show's budget allows here).
     const auto fit =
         static_cast<unsigned>(std::max(1.0F, std::floor((area.height() + 4.0F) / (node_h + 4.0F))));
@@ -422,7 +460,7 @@ void LessonPainter::add_queue_tree(const QueueView& queue, const QueueWords& wor
     std::size_t widest = 1;
     for (unsigned l = 1; l < shown_levels; ++l) widest *= d;
     const float cell_w = area.width() / static_cast<float>(widest);
-    const float node_w = std::min(node_width(words.slot_labels), cell_w - 3.0F);
+    const float node_w = std::min(node_width(words.slot_labels, one_line), cell_w - 3.0F);
     // Slot i sits at level l, position p within it; its centre is over its subtree's middle.
     std::vector<PointF> centre(queue.slots.size());
     std::size_t first = 0;
@@ -472,18 +510,39 @@ void LessonPainter::add_queue_row(const QueueView& queue, const QueueWords& word
     const FontAtlas& small = *small_font_;
     const float line = std::round(small.pixel_height() * strip_line);
     const bool ordered = queue.shape == QueueShape::ordered_array;
-    draw_text(
-        Font::small,
-        {TextRole::queue, -1, {area.x0, area.y0, area.x1, area.y0 + line}, small.pixel_height()},
-        words.row_caption, palette_.muted);
+    // Under its caption where the strip has room for it and a line of nodes; else the caption
+    // is on the heading's line (add_queue_strip) and the nodes take the row.
+    const bool caption = area.height() >= 2.0F * line;
+    if (caption) {
+        draw_text(Font::small,
+                  {TextRole::queue,
+                   -1,
+                   {area.x0, area.y0, area.x1, area.y0 + line},
+                   small.pixel_height()},
+                  words.row_caption, palette_.muted);
+    }
     if (queue.slots.empty()) return;
-    const float node_h = std::round(node_lines * small.pixel_height());
-    const auto n = static_cast<float>(queue.slots.size());
-    const float node_w = std::min(node_width(words.slot_labels), area.width() / n - 3.0F);
-    const float y0 = std::round(area.y0 + line + 0.5F * (area.height() - line - node_h));
-    for (std::size_t i = 0; i < queue.slots.size(); ++i) {
+    const float top = caption ? area.y0 + line : area.y0;
+    const bool one_line = one_line_nodes(area.y1 - top);
+    const float node_h =
+        one_line ? std::floor(area.y1 - top) : std::round(node_lines * small.pixel_height());
+    // The slots that fit whole (one-line nodes are wider): the first ones, and the one a pop
+    // of the unordered array will find in the last place when it lies further on.
+    const float full_w = node_width(words.slot_labels, one_line);
+    const auto fit =
+        static_cast<std::size_t>(std::max(1.0F, std::floor(area.width() / (full_w + 3.0F))));
+    std::vector<std::size_t> shown;
+    for (std::size_t i = 0; i < queue.slots.size() && shown.size() < fit; ++i) shown.push_back(i);
+    if (!ordered && queue.top_index < queue.slots.size() &&
+        std::find(shown.begin(), shown.end(), queue.top_index) == shown.end())
+        shown.back() = queue.top_index;
+    const auto n = static_cast<float>(shown.size());
+    const float node_w = std::min(full_w, area.width() / n - 3.0F);
+    const float y0 = std::round(top + 0.5F * (area.y1 - top - node_h));
+    for (std::size_t k = 0; k < shown.size(); ++k) {
+        const std::size_t i = shown[k];
         const QueuedEvent& e = queue.slots[i];
-        const float x0 = std::round(area.x0 + static_cast<float>(i) * (area.width() / n));
+        const float x0 = std::round(area.x0 + static_cast<float>(k) * (area.width() / n));
         const bool next = ordered ? i == 0 : i == queue.top_index;
         const Rgba8 frame =
             next ? next_color() : (e.stale ? faded(palette_.muted, 0.6F) : palette_.muted);
