@@ -409,18 +409,20 @@ void LessonPainter::add_leaving_root(const QueueView& queue, const QueueWords& w
     const float w = one_line ? std::round(small.text_width(label) + 0.8F * small.pixel_height())
                              : std::round(1.5F * node_w);
     // Beside the latest pops' list, never over it: a wide node moves right, its arrow shortens.
+    // The arrow's room in the leaving node's own width when that is the narrower (one line).
+    const float unit = one_line ? w : node_w;
     const float x1 =
-        std::round(std::max(root.x - 0.5F * node_w - 1.2F * node_w, std::ceil(left) + w));
+        std::round(std::max(root.x - 0.5F * node_w - 1.2F * unit, std::ceil(left) + w));
     const RectF node{x1 - w, std::round(root.y - 0.5F * node_h), x1,
                      std::round(root.y + 0.5F * node_h)};
     const Rgba8 color = e.stale ? palette_.muted : next_color();
     list_.over.add_rect(node, faded(color, 0.25F * glow));
     list_.over.add_frame(node, 2.0F, faded(color, glow));
     const float ay = root.y;
-    const float ax0 = std::round(root.x - 0.5F * node_w - 0.2F * node_w);
-    const float ax1 = node.x1 + 0.2F * node_w;
+    const float ax0 = std::round(root.x - 0.5F * node_w - 0.2F * unit);
+    const float ax1 = node.x1 + 0.2F * unit;
     list_.over.add_line({ax0, ay}, {ax1, ay}, 2.0F, faded(color, glow));
-    const float head = 0.18F * node_h;
+    const float head = (one_line ? 0.3F : 0.18F) * node_h;
     list_.over.add_line({ax1, ay}, {ax1 + head, ay - head}, 2.0F, faded(color, glow));
     list_.over.add_line({ax1, ay}, {ax1 + head, ay + head}, 2.0F, faded(color, glow));
     const Rgba8 text = faded(e.stale ? palette_.muted : palette_.title, glow);
