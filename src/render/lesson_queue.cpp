@@ -478,6 +478,18 @@ void LessonPainter::add_queue_tree(const QueueView& queue, const QueueWords& wor
         width *= d;
     }
     const std::size_t placed = std::min(first, queue.slots.size());
+    if (one_line && !queue.popped.empty()) {
+        // One line: the root is wide and the event just popped sits left of it; move the root
+        // right so that the arrow between them is long enough to read (4 text heights).
+        const float leaving = small.text_width(nth(words.popped_labels, queue.popped.size() - 1)) +
+                              0.8F * small.pixel_height();
+        const float want = area.x0 + leaving + 4.0F * small.pixel_height() + 0.5F * node_w;
+        // ... and clear of "+N below" at the line's right end.
+        const float below =
+            words.below.empty() ? 0.0F : small.text_width(words.below) + small.pixel_height();
+        centre.front().x =
+            std::max(centre.front().x, std::min(want, area.x1 - below - 0.5F * node_w));
+    }
     for (std::size_t i = 1; i < placed; ++i) {
         const PointF c = centre[i];
         const PointF parent = centre[(i - 1) / d];
