@@ -158,6 +158,60 @@ void LessonPainter::add_queue_label(Font font, PointF at, PointF anchor, float a
     draw_text(font, {TextRole::queue, -1, *plate, f.pixel_height()}, text, color, Align::centre);
 }
 
+std::optional<RectF> LessonPainter::queue_gutter(RectF box) const {
+    // The frame beside the box, right then left, as tall as the box: free when no text, code or
+    // column of the layout reaches into it.
+    const float m = std::max(2.0F, layout_.margin);
+    const auto width = static_cast<float>(config_.width);
+    const auto free = [&](const RectF& r) {
+        if (r.width() < 2.0F * body_font_->pixel_height()) return false;
+        if (overlaps(r, layout_.code) || overlaps(r, layout_.column.area)) return false;
+        return std::none_of(layout_.text.begin(), layout_.text.end(),
+                            [&](const TextSlot& t) { return overlaps(r, t.rect); });
+    };
+    const RectF right{box.x1 + 0.5F * m, box.y0, width - m, box.y1};
+    if (free(right)) return right;
+    const RectF left{m, box.y0, box.x0 - 0.5F * m, box.y1};
+    if (free(left)) return left;
+    return std::nullopt;
+}
+
+void LessonPainter::add_gutter_label(Font font, PointF disc, float radius, std::string_view text,
+                                     Rgba8 color, RectF gutter) {
+    const FontAtlas& f = atlas(font);
+    const float pad = std::round(0.2F * f.pixel_height());
+    const float w = f.text_width(text) + 2.0F * pad;
+    const float h = std::round(f.pixel_height() * 1.05F);
+    if (w > gutter.width() || h > gutter.height()) return;
+    const bool on_right = gutter.x0 >= disc.x;
+    const float x0 = std::floor(on_right ? gutter.x0 : gutter.x1 - w);
+    const float y = std::clamp(disc.y - 0.5F * h, gutter.y0, gutter.y1 - h);
+    // The nearest free place along the gutter from the disc's height.
+    std::optional<RectF> plate;
+    for (int k = 0; !plate && k < 2 * static_cast<int>(gutter.height() / h) + 2; ++k) {
+        const float step =
+            static_cast<float>((k + 1) / 2) * (h + 1.0F) * (k % 2 == 1 ? 1.0F : -1.0F);
+        const float y0 = std::floor(y + step);
+        if (y0 < gutter.y0 || y0 + h > gutter.y1) continue;
+        const RectF r{x0, y0, x0 + w, y0 + h};
+        if (std::none_of(labels_.begin(), labels_.end(),
+                         [&](const RectF& o) { return overlaps(r, o); }))
+            plate = r;
+    }
+    if (!plate) return;
+    labels_.push_back(*plate);
+    // A leader line from the plate to the disc's edge: the number names that disc.
+    const PointF from{on_right ? plate->x0 : plate->x1, 0.5F * (plate->y0 + plate->y1)};
+    const float length = std::hypot(disc.x - from.x, disc.y - from.y);
+    if (length > radius) {
+        const float keep = radius / length;
+        const PointF to{disc.x + (from.x - disc.x) * keep, disc.y + (from.y - disc.y) * keep};
+        list_.over.add_line(from, to, std::max(1.0F, std::round(h / 16.0F)), faded(color, 0.8F));
+    }
+    list_.over.add_rect(*plate, with_alpha(rgb(palette_.box_fill), 215));
+    draw_text(font, {TextRole::queue, -1, *plate, f.pixel_height()}, text, color, Align::centre);
+}
+
 // Lines between the discs of the next collisions, ticks on the walls, each with its time to go;
 // the next one thick and in the highlight colour, the later ones thinner and fainter.
 void LessonPainter::add_queue_in_box(const Snapshot& snapshot, const QueueWords& words,
@@ -259,12 +313,18 @@ void LessonPainter::add_queue_in_box(const Snapshot& snapshot, const QueueWords&
                         first ? next_color() : palette_.text, inside);
     };
     // A disc's number just under it (or the nearest free place), a leader line to its edge.
+    // A box too crowded for a free place (dense-fluid) numbers its discs in the frame's free
+    // strip beside the box (its gutter), where one is clear of all text.
+    const std::optional<RectF> gutter = queue_gutter(inside);
     const auto number = [&](std::uint32_t k, std::string_view text, Font font, Rgba8 color) {
         if (k >= snapshot.discs.size()) return;
         const DiscState& disc = snapshot.discs[k];
         const PointF c = panel.to_pixels(disc.position, box);
         const auto radius = static_cast<float>(disc.radius * panel.scale);
+        const std::size_t placed = labels_.size();
         add_queue_label(font, {c.x, c.y + radius + 0.7F * body}, c, radius, text, color, inside);
+        if (labels_.size() == placed && gutter)
+            add_gutter_label(font, c, radius, text, color, *gutter);
     };
     if (queue.next.empty()) return;
     time_label(0);
