@@ -538,11 +538,14 @@ void LessonPainter::add_queue_tree(const QueueView& queue, const QueueWords& wor
         width *= d;
     }
     const std::size_t placed = std::min(first, queue.slots.size());
-    if (one_line && !queue.popped.empty()) {
-        // One line: the root is wide and the event just popped sits left of it; move the root
-        // right so that the arrow between them is long enough to read (4 text heights).
-        const float leaving = small.text_width(nth(words.popped_labels, queue.popped.size() - 1)) +
-                              0.8F * small.pixel_height();
+    if (shown_levels == 1 && !queue.popped.empty()) {
+        // The root alone (a short strip): the event just popped sits left of it (add_leaving_root:
+        // half as wide again as a node, or on one line its label's width); move the root right
+        // so that the arrow between them is long enough to read (4 text heights).
+        const float leaving =
+            one_line ? small.text_width(nth(words.popped_labels, queue.popped.size() - 1)) +
+                           0.8F * small.pixel_height()
+                     : std::round(1.5F * node_w);
         const float want = area.x0 + leaving + 4.0F * small.pixel_height() + 0.5F * node_w;
         // ... and clear of "+N below" at the line's right end.
         const float below =
