@@ -159,13 +159,16 @@ void LessonPainter::add_queue_label(Font font, PointF at, PointF anchor, float a
 }
 
 std::optional<RectF> LessonPainter::queue_gutter(RectF box) const {
-    // The frame beside the box, right then left, as tall as the box: free when no text, code or
-    // column of the layout reaches into it.
+    // The frame beside the box, right then left, as tall as the box: free when no box, text,
+    // code or column of the layout reaches into it.
     const float m = std::max(2.0F, layout_.margin);
     const auto width = static_cast<float>(config_.width);
     const auto free = [&](const RectF& r) {
         if (r.width() < 2.0F * body_font_->pixel_height()) return false;
         if (overlaps(r, layout_.code) || overlaps(r, layout_.column.area)) return false;
+        // Never over another panel's box (--code sets the two boxes side by side).
+        for (const PanelLayout& other : layout_.panels)
+            if (overlaps(r, other.box)) return false;
         return std::none_of(layout_.text.begin(), layout_.text.end(),
                             [&](const TextSlot& t) { return overlaps(r, t.rect); });
     };

@@ -355,6 +355,8 @@ TEST_CASE("queue: in a box with no free place every listed disc is numbered besi
             const RectF rect{v[0], v[1], v[2], v[3]};
             if (rect.y0 >= box[3]) continue;  // the strip's text
             CHECK(rect.x1 <= 1280.0F);
+            const auto other = layout.at("panels").at(0).at("box").get<std::vector<float>>();
+            CHECK_FALSE(overlaps(rect, RectF{other[0], other[1], other[2], other[3]}));
             for (const nlohmann::json& text : label.at("text"))
                 numbers.push_back(text.get<std::string>());
             for (const RectF& disc : disc_rects) {
