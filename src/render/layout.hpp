@@ -152,8 +152,10 @@ struct LayoutInput {
 
 /// Lesson level: the event queue strip's largest share of the frame height.
 inline constexpr float queue_strip_share = 0.3F;
-/// ... and its smallest: a heading and a row of the queue's nodes.
-inline constexpr float queue_strip_min_share = 0.17F;
+/// ... and its smallest: a heading and one line of the queue's nodes (label and time to go side by
+/// side; a taller strip gives them two lines), so that two boxes over the strip keep 35 % of a
+/// 16:9 frame under three rows of text (figures, note, marks).
+inline constexpr float queue_strip_min_share = 0.142F;
 /// With the queue strip the boxes keep at least this share of the frame's area (issue 44: 35 %),
 /// where the strip's smallest height allows it: the strip takes what they leave.
 inline constexpr float queue_boxes_share = 0.36F;

@@ -350,9 +350,10 @@ FrameLayout lesson_layout(const LayoutInput& in) {
                         (how_line ? line : 0.0F);
     const float caption_top = height - m - line;
     const bool queue = in.queue_panel >= 0 && in.queue_panel < static_cast<int>(in.boxes.size());
+    // The strip's frame sits right under the last line (its text keeps its own padding).
     const float queue_h =
-        queue ? queue_strip_height(in, caption_top - gap - below - box_top - gap) : 0.0F;
-    const float room_h = caption_top - gap - below - box_top - (queue ? queue_h + gap : 0.0F);
+        queue ? queue_strip_height(in, caption_top - gap - below - box_top) : 0.0F;
+    const float room_h = caption_top - gap - below - box_top - queue_h;
     // Horizontal: [m box m column m box m] or [m box m column m].
     const auto n = static_cast<float>(in.boxes.size());
     // A large plot is the subject, but the boxes and it together fill the frame: a quarter of
@@ -445,7 +446,7 @@ FrameLayout lesson_layout(const LayoutInput& in) {
         if (queue && p == in.queue_panel) {
             // Under the figures, across the frame: a tree of events needs the width.
             layout.queue_panel = p;
-            layout.queue_strip = {m, y + gap, full_width - m, y + gap + queue_h};
+            layout.queue_strip = {m, y, full_width - m, y + queue_h};
             layout.text.push_back({TextRole::queue, p, layout.queue_strip, body});
         }
         layout.panels.push_back(panel);

@@ -81,10 +81,20 @@ class LessonPainter : public Painter {
     /// it had to move away; none where no free place is near (the strip names the event).
     void add_queue_label(Font font, PointF at, PointF anchor, float anchor_radius,
                          std::string_view text, Rgba8 color, RectF inside);
+    /// The frame's free strip beside `box` (right, else left) where no text of the layout is;
+    /// none where there is none.
+    [[nodiscard]] std::optional<RectF> queue_gutter(RectF box) const;
+    /// A disc's number in `gutter`, nearest the disc's height and clear of earlier labels, with
+    /// a leader line to the disc's edge (a box too crowded for a free place beside the disc).
+    void add_gutter_label(Font font, PointF disc, float radius, std::string_view text, Rgba8 color,
+                          RectF gutter);
     [[nodiscard]] float pop_highlight(const QueuedEvent& popped, double now) const noexcept;
     [[nodiscard]] Rgba8 next_color() const noexcept;
-    /// A queue node as wide as the widest of `labels` (and a time to go).
-    [[nodiscard]] float node_width(const std::vector<std::string>& labels) const;
+    /// A queue node as wide as the widest of `labels` (and a time to go: beside the label when
+    /// `one_line`, else under it).
+    [[nodiscard]] float node_width(const std::vector<std::string>& labels, bool one_line) const;
+    /// Whether queue nodes `height` px tall set label and time on one line (a short strip).
+    [[nodiscard]] bool one_line_nodes(float height) const;
 
     double video_time_ = 0.0;
     double speed_ = 0.0;             // simulation time per second of video (FrameContent::speed)

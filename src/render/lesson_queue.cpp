@@ -18,7 +18,8 @@ namespace {
 
 /// The strip's line height and a node's height (two lines, label and time), in text heights:
 /// tight enough that at the lesson's text size a 30 % strip holds the heading, two pops with
-/// their counts and a heap's top two levels.
+/// their counts and a heap's top two levels. A strip too short for two lines (the boxes keep
+/// their share of the frame) sets a node's label and time side by side on one strip line.
 constexpr float strip_line = 1.15F;
 constexpr float node_lines = 2.0F;
 
@@ -157,6 +158,63 @@ void LessonPainter::add_queue_label(Font font, PointF at, PointF anchor, float a
     draw_text(font, {TextRole::queue, -1, *plate, f.pixel_height()}, text, color, Align::centre);
 }
 
+std::optional<RectF> LessonPainter::queue_gutter(RectF box) const {
+    // The frame beside the box, right then left, as tall as the box: free when no box, text,
+    // code or column of the layout reaches into it.
+    const float m = std::max(2.0F, layout_.margin);
+    const auto width = static_cast<float>(config_.width);
+    const auto free = [&](const RectF& r) {
+        if (r.width() < 2.0F * body_font_->pixel_height()) return false;
+        if (overlaps(r, layout_.code) || overlaps(r, layout_.column.area)) return false;
+        // Never over another panel's box (--code sets the two boxes side by side).
+        for (const PanelLayout& other : layout_.panels)
+            if (overlaps(r, other.box)) return false;
+        return std::none_of(layout_.text.begin(), layout_.text.end(),
+                            [&](const TextSlot& t) { return overlaps(r, t.rect); });
+    };
+    const RectF right{box.x1 + 0.5F * m, box.y0, width - m, box.y1};
+    if (free(right)) return right;
+    const RectF left{m, box.y0, box.x0 - 0.5F * m, box.y1};
+    if (free(left)) return left;
+    return std::nullopt;
+}
+
+void LessonPainter::add_gutter_label(Font font, PointF disc, float radius, std::string_view text,
+                                     Rgba8 color, RectF gutter) {
+    const FontAtlas& f = atlas(font);
+    const float pad = std::round(0.2F * f.pixel_height());
+    const float w = f.text_width(text) + 2.0F * pad;
+    const float h = std::round(f.pixel_height() * 1.05F);
+    if (w > gutter.width() || h > gutter.height()) return;
+    const bool on_right = gutter.x0 >= disc.x;
+    const float x0 = std::floor(on_right ? gutter.x0 : gutter.x1 - w);
+    const float y = std::clamp(disc.y - 0.5F * h, gutter.y0, gutter.y1 - h);
+    // The nearest free place along the gutter from the disc's height.
+    std::optional<RectF> plate;
+    for (int k = 0; !plate && k < 2 * static_cast<int>(gutter.height() / h) + 2; ++k) {
+        const float step =
+            static_cast<float>((k + 1) / 2) * (h + 1.0F) * (k % 2 == 1 ? 1.0F : -1.0F);
+        const float y0 = std::floor(y + step);
+        if (y0 < gutter.y0 || y0 + h > gutter.y1) continue;
+        const RectF r{x0, y0, x0 + w, y0 + h};
+        if (std::none_of(labels_.begin(), labels_.end(),
+                         [&](const RectF& o) { return overlaps(r, o); }))
+            plate = r;
+    }
+    if (!plate) return;
+    labels_.push_back(*plate);
+    // A leader line from the plate to the disc's edge: the number names that disc.
+    const PointF from{on_right ? plate->x0 : plate->x1, 0.5F * (plate->y0 + plate->y1)};
+    const float length = std::hypot(disc.x - from.x, disc.y - from.y);
+    if (length > radius) {
+        const float keep = radius / length;
+        const PointF to{disc.x + (from.x - disc.x) * keep, disc.y + (from.y - disc.y) * keep};
+        list_.over.add_line(from, to, std::max(1.0F, std::round(h / 16.0F)), faded(color, 0.8F));
+    }
+    list_.over.add_rect(*plate, with_alpha(rgb(palette_.box_fill), 215));
+    draw_text(font, {TextRole::queue, -1, *plate, f.pixel_height()}, text, color, Align::centre);
+}
+
 // Lines between the discs of the next collisions, ticks on the walls, each with its time to go;
 // the next one thick and in the highlight colour, the later ones thinner and fainter.
 void LessonPainter::add_queue_in_box(const Snapshot& snapshot, const QueueWords& words,
@@ -258,12 +316,18 @@ void LessonPainter::add_queue_in_box(const Snapshot& snapshot, const QueueWords&
                         first ? next_color() : palette_.text, inside);
     };
     // A disc's number just under it (or the nearest free place), a leader line to its edge.
+    // A box too crowded for a free place (dense-fluid) numbers its discs in the frame's free
+    // strip beside the box (its gutter), where one is clear of all text.
+    const std::optional<RectF> gutter = queue_gutter(inside);
     const auto number = [&](std::uint32_t k, std::string_view text, Font font, Rgba8 color) {
         if (k >= snapshot.discs.size()) return;
         const DiscState& disc = snapshot.discs[k];
         const PointF c = panel.to_pixels(disc.position, box);
         const auto radius = static_cast<float>(disc.radius * panel.scale);
+        const std::size_t placed = labels_.size();
         add_queue_label(font, {c.x, c.y + radius + 0.7F * body}, c, radius, text, color, inside);
+        if (labels_.size() == placed && gutter)
+            add_gutter_label(font, c, radius, text, color, *gutter);
     };
     if (queue.next.empty()) return;
     time_label(0);
@@ -289,9 +353,15 @@ void LessonPainter::add_queue_strip(const Snapshot& snapshot, const QueueWords& 
         TextRole::queue, -1, {inner.x0, inner.y0, inner.x1, inner.y0 + line}, small.pixel_height()};
     // The legend of the box's lines is on the panel's legend line (add_panel_text): at the
     // lesson's text size the heading takes the strip's width.
-    draw_text(Font::small, heading_slot, heading, palette_.title);
+    const float heading_end = draw_text(Font::small, heading_slot, heading, palette_.title);
     const float popped_w = std::round(0.33F * inner.width());
     const RectF body{inner.x0, inner.y0 + line + 0.5F * m, inner.x1, inner.y1};
+    // An array's caption, where its row has no line for it (a short strip), after the heading
+    // when it fits there.
+    const bool row_caption_above = queue.shape != QueueShape::heap && body.height() < 2.0F * line;
+    if (row_caption_above && !words.row_caption.empty() &&
+        heading_end + m + small.text_width(words.row_caption) <= inner.x1)
+        draw_text(Font::small, heading_slot, words.row_caption, palette_.muted, Align::right);
     add_popped(queue, words, snapshot.time, {body.x0, body.y0, body.x0 + popped_w, body.y1});
     const RectF right{body.x0 + popped_w + m, body.y0, body.x1, body.y1};
     if (queue.shape == QueueShape::heap) {
@@ -343,11 +413,18 @@ void LessonPainter::add_popped(const QueueView& queue, const QueueWords& words, 
     if (bottom < area.y1) draw_text(Font::small, slot(bottom), words.counts, palette_.muted);
 }
 
-float LessonPainter::node_width(const std::vector<std::string>& labels) const {
+float LessonPainter::node_width(const std::vector<std::string>& labels, bool one_line) const {
     const FontAtlas& small = *small_font_;
-    float widest = small.text_width("0.0000");  // the longest time to go, "stale"
+    const float time = small.text_width("0.0000");  // the longest time to go, "stale"
+    float widest = one_line ? 0.0F : time;
     for (const std::string& label : labels) widest = std::max(widest, small.text_width(label));
-    return std::round(widest + 0.8F * small.pixel_height());
+    // One line: the label, a space of 0.8 text heights, the time.
+    return std::round(
+        widest + (one_line ? time + 1.6F * small.pixel_height() : 0.8F * small.pixel_height()));
+}
+
+bool LessonPainter::one_line_nodes(float height) const {
+    return height < std::round(node_lines * small_font_->pixel_height());
 }
 
 void LessonPainter::add_queue_node(std::string_view label, std::string_view time, RectF node,
@@ -355,8 +432,20 @@ void LessonPainter::add_queue_node(std::string_view label, std::string_view time
     const FontAtlas& small = *small_font_;
     list_.over.add_rect(node, palette_.box_fill);
     list_.over.add_frame(node, frame_color.a == 255 && !stale ? 2.0F : 1.0F, frame_color);
-    const float half = 0.5F * node.height();
     const Rgba8 text = stale ? palette_.muted : palette_.title;
+    const Rgba8 time_color = stale ? text : faded(palette_.text, 0.85F);
+    if (one_line_nodes(node.height())) {
+        // Label on the left, time on the right: a strip of one line.
+        const float pad = std::round(0.4F * small.pixel_height());
+        const TextSlot row{TextRole::queue,
+                           -1,
+                           {node.x0 + pad, node.y0, node.x1 - pad, node.y1},
+                           small.pixel_height()};
+        draw_text(Font::small, row, label, text, Align::left);
+        draw_text(Font::small, row, time, time_color, Align::right);
+        return;
+    }
+    const float half = 0.5F * node.height();
     draw_text(
         Font::small,
         {TextRole::queue, -1, {node.x0, node.y0, node.x1, node.y0 + half}, small.pixel_height()},
@@ -364,7 +453,7 @@ void LessonPainter::add_queue_node(std::string_view label, std::string_view time
     draw_text(
         Font::small,
         {TextRole::queue, -1, {node.x0, node.y0 + half, node.x1, node.y1}, small.pixel_height()},
-        time, stale ? text : faded(palette_.text, 0.85F), Align::centre);
+        time, time_color, Align::centre);
 }
 
 // The event just popped, beside the root it was a moment ago, fading out with an arrow away
@@ -376,28 +465,40 @@ void LessonPainter::add_leaving_root(const QueueView& queue, const QueueWords& w
     const float glow = pop_highlight(e, now);
     if (glow <= 0.0F) return;
     const FontAtlas& small = *small_font_;
-    const float w = std::round(1.5F * node_w);  // room for QueueWords::stale_leaving
+    // Two lines: room for QueueWords::stale_leaving under the label. One line: the label alone
+    // (the latest pops' list says what became of it), as wide as it needs.
+    const bool one_line = one_line_nodes(node_h);
+    const std::string& label = nth(words.popped_labels, queue.popped.size() - 1);
+    const float w = one_line ? std::round(small.text_width(label) + 0.8F * small.pixel_height())
+                             : std::round(1.5F * node_w);
     // Beside the latest pops' list, never over it: a wide node moves right, its arrow shortens.
+    // The arrow's room in the leaving node's own width when that is the narrower (one line).
+    const float unit = one_line ? w : node_w;
     const float x1 =
-        std::round(std::max(root.x - 0.5F * node_w - 1.2F * node_w, std::ceil(left) + w));
+        std::round(std::max(root.x - 0.5F * node_w - 1.2F * unit, std::ceil(left) + w));
     const RectF node{x1 - w, std::round(root.y - 0.5F * node_h), x1,
                      std::round(root.y + 0.5F * node_h)};
     const Rgba8 color = e.stale ? palette_.muted : next_color();
     list_.over.add_rect(node, faded(color, 0.25F * glow));
     list_.over.add_frame(node, 2.0F, faded(color, glow));
     const float ay = root.y;
-    const float ax0 = std::round(root.x - 0.5F * node_w - 0.2F * node_w);
-    const float ax1 = node.x1 + 0.2F * node_w;
+    const float ax0 = std::round(root.x - 0.5F * node_w - 0.2F * unit);
+    const float ax1 = node.x1 + 0.2F * unit;
     list_.over.add_line({ax0, ay}, {ax1, ay}, 2.0F, faded(color, glow));
-    const float head = 0.18F * node_h;
+    const float head = (one_line ? 0.3F : 0.18F) * node_h;
     list_.over.add_line({ax1, ay}, {ax1 + head, ay - head}, 2.0F, faded(color, glow));
     list_.over.add_line({ax1, ay}, {ax1 + head, ay + head}, 2.0F, faded(color, glow));
-    const float half = 0.5F * node_h;
     const Rgba8 text = faded(e.stale ? palette_.muted : palette_.title, glow);
+    if (one_line) {
+        draw_text(Font::small, {TextRole::queue, -1, node, small.pixel_height()}, label, text,
+                  Align::centre);
+        return;
+    }
+    const float half = 0.5F * node_h;
     draw_text(
         Font::small,
         {TextRole::queue, -1, {node.x0, node.y0, node.x1, node.y0 + half}, small.pixel_height()},
-        nth(words.popped_labels, queue.popped.size() - 1), text, Align::centre);
+        label, text, Align::centre);
     draw_text(
         Font::small,
         {TextRole::queue, -1, {node.x0, node.y0 + half, node.x1, node.y1}, small.pixel_height()},
@@ -411,7 +512,9 @@ void LessonPainter::add_queue_tree(const QueueView& queue, const QueueWords& wor
     if (queue.slots.empty() || queue.levels == 0) return;
     const FontAtlas& small = *small_font_;
     const std::size_t d = std::max<unsigned>(queue.arity, 2);
-    const float node_h = std::round(node_lines * small.pixel_height());
+    const bool one_line = one_line_nodes(area.height());
+    const float node_h =
+        one_line ? std::floor(area.height()) : std::round(node_lines * small.pixel_height());
     // The levels that fit the strip (a view may hold more than the show's budget allows here).
     const auto fit =
         static_cast<unsigned>(std::max(1.0F, std::floor((area.height() + 4.0F) / (node_h + 4.0F))));
@@ -422,7 +525,7 @@ void LessonPainter::add_queue_tree(const QueueView& queue, const QueueWords& wor
     std::size_t widest = 1;
     for (unsigned l = 1; l < shown_levels; ++l) widest *= d;
     const float cell_w = area.width() / static_cast<float>(widest);
-    const float node_w = std::min(node_width(words.slot_labels), cell_w - 3.0F);
+    const float node_w = std::min(node_width(words.slot_labels, one_line), cell_w - 3.0F);
     // Slot i sits at level l, position p within it; its centre is over its subtree's middle.
     std::vector<PointF> centre(queue.slots.size());
     std::size_t first = 0;
@@ -438,6 +541,21 @@ void LessonPainter::add_queue_tree(const QueueView& queue, const QueueWords& wor
         width *= d;
     }
     const std::size_t placed = std::min(first, queue.slots.size());
+    if (shown_levels == 1 && !queue.popped.empty()) {
+        // The root alone (a short strip): the event just popped sits left of it (add_leaving_root:
+        // half as wide again as a node, or on one line its label's width); move the root right
+        // so that the arrow between them is long enough to read (4 text heights).
+        const float leaving =
+            one_line ? small.text_width(nth(words.popped_labels, queue.popped.size() - 1)) +
+                           0.8F * small.pixel_height()
+                     : std::round(1.5F * node_w);
+        const float want = area.x0 + leaving + 4.0F * small.pixel_height() + 0.5F * node_w;
+        // ... and clear of "+N below" at the line's right end.
+        const float below =
+            words.below.empty() ? 0.0F : small.text_width(words.below) + small.pixel_height();
+        centre.front().x =
+            std::max(centre.front().x, std::min(want, area.x1 - below - 0.5F * node_w));
+    }
     for (std::size_t i = 1; i < placed; ++i) {
         const PointF c = centre[i];
         const PointF parent = centre[(i - 1) / d];
@@ -472,18 +590,39 @@ void LessonPainter::add_queue_row(const QueueView& queue, const QueueWords& word
     const FontAtlas& small = *small_font_;
     const float line = std::round(small.pixel_height() * strip_line);
     const bool ordered = queue.shape == QueueShape::ordered_array;
-    draw_text(
-        Font::small,
-        {TextRole::queue, -1, {area.x0, area.y0, area.x1, area.y0 + line}, small.pixel_height()},
-        words.row_caption, palette_.muted);
+    // Under its caption where the strip has room for it and a line of nodes; else the caption
+    // is on the heading's line (add_queue_strip) and the nodes take the row.
+    const bool caption = area.height() >= 2.0F * line;
+    if (caption) {
+        draw_text(Font::small,
+                  {TextRole::queue,
+                   -1,
+                   {area.x0, area.y0, area.x1, area.y0 + line},
+                   small.pixel_height()},
+                  words.row_caption, palette_.muted);
+    }
     if (queue.slots.empty()) return;
-    const float node_h = std::round(node_lines * small.pixel_height());
-    const auto n = static_cast<float>(queue.slots.size());
-    const float node_w = std::min(node_width(words.slot_labels), area.width() / n - 3.0F);
-    const float y0 = std::round(area.y0 + line + 0.5F * (area.height() - line - node_h));
-    for (std::size_t i = 0; i < queue.slots.size(); ++i) {
+    const float top = caption ? area.y0 + line : area.y0;
+    const bool one_line = one_line_nodes(area.y1 - top);
+    const float node_h =
+        one_line ? std::floor(area.y1 - top) : std::round(node_lines * small.pixel_height());
+    // The slots that fit whole (one-line nodes are wider): the first ones, and the one a pop
+    // of the unordered array will find in the last place when it lies further on.
+    const float full_w = node_width(words.slot_labels, one_line);
+    const auto fit =
+        static_cast<std::size_t>(std::max(1.0F, std::floor(area.width() / (full_w + 3.0F))));
+    std::vector<std::size_t> shown;
+    for (std::size_t i = 0; i < queue.slots.size() && shown.size() < fit; ++i) shown.push_back(i);
+    if (!ordered && queue.top_index < queue.slots.size() &&
+        std::find(shown.begin(), shown.end(), queue.top_index) == shown.end())
+        shown.back() = queue.top_index;
+    const auto n = static_cast<float>(shown.size());
+    const float node_w = std::min(full_w, area.width() / n - 3.0F);
+    const float y0 = std::round(top + 0.5F * (area.y1 - top - node_h));
+    for (std::size_t k = 0; k < shown.size(); ++k) {
+        const std::size_t i = shown[k];
         const QueuedEvent& e = queue.slots[i];
-        const float x0 = std::round(area.x0 + static_cast<float>(i) * (area.width() / n));
+        const float x0 = std::round(area.x0 + static_cast<float>(k) * (area.width() / n));
         const bool next = ordered ? i == 0 : i == queue.top_index;
         const Rgba8 frame =
             next ? next_color() : (e.stale ? faded(palette_.muted, 0.6F) : palette_.muted);

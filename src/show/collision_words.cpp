@@ -316,13 +316,17 @@ QueueWords queue_words(const QueueView& queue, double now) {
         return with_separators(static_cast<long long>(n));
     };
     QueueWords out;
-    out.heading = fmt::format("Event queue: {}, {} entries", queue.name, separated(queue.size));
+    out.heading = fmt::format("Event queue: {}, {} {}", queue.name, separated(queue.size),
+                              queue.size == 1 ? "entry" : "entries");
     if (queue.one_per_disc) {
         out.heading += " (one per disc)";
     } else if (queue.stale_entries > 0) {
         out.heading += fmt::format(", {} stale", separated(queue.stale_entries));
     }
-    out.legend = queue.next.size() == 1
+    // None listed (billiards before the break: the cue ball's next event is a cell crossing):
+    // "Next 0 collisions" said nothing a student could use.
+    out.legend = queue.next.empty() ? std::string("No collision predicted yet")
+                 : queue.next.size() == 1
                      ? std::string("Next collision, time to go")
                      : fmt::format("Next {} collisions, time to go", queue.next.size());
     out.stale_popped = queue.one_per_disc ? "  stale: re-predict" : "  stale: skipped";

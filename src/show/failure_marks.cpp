@@ -74,8 +74,9 @@ std::string wrap_words() {
 
 std::string unmarked_words(std::size_t unmarked) {
     if (unmarked == 0) return {};
-    // Read after the kinds the legend names: "missed collision  overlapping  and 1,234 more".
-    return "and " + with_separators(static_cast<long long>(unmarked)) + " more";
+    // Read after the kinds the legend names: "missed collision  overlapping  and 1,234 more not
+    // drawn": failures of those kinds beyond the marks' budget, which the box does not show.
+    return "and " + with_separators(static_cast<long long>(unmarked)) + " more not drawn";
 }
 
 bool mark_line(bool time_driven, bool says_wrap, const Box& box) {

@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -309,6 +310,64 @@ TEST_CASE("queue: labels clear of every disc, every listed event's discs numbere
             CHECK(std::count(in_box.begin(), in_box.end(), std::string(number)) == 1);
         }
         CHECK(in_box.size() >= 9 + 5);
+    }
+}
+
+TEST_CASE("queue: in a box with no free place every listed disc is numbered beside the box") {
+    // dense-fluid's case: discs packed so tight that no label fits between them. The numbers go
+    // to the frame's free strip beside the box, each with a leader line, never over a disc.
+    for (const std::size_t discs : {std::size_t{900}, std::size_t{1600}}) {
+        CAPTURE(discs);
+        RenderConfig config = test::small_config(true);
+        config.width = 1280;
+        config.height = 720;
+        config.overlays = OverlayLevel::lesson;
+        Renderer renderer(config, test::test_backend());
+        const double radius = 0.45 / std::sqrt(static_cast<double>(discs));
+        Snapshot left = test::gas_snapshot(discs, radius, {1.0, 1.0, Boundary::walls}, 5, 0.3);
+        left.time = 2.0;
+        Snapshot right = left;
+        QueueView q = classic_queue(right.time);
+        const auto last = static_cast<std::uint32_t>(discs - 1);
+        q.next = {{2.1, EventKind::pair, 0, 1},
+                  {2.2, EventKind::pair, 100, 101},
+                  {2.25, EventKind::xwall, 450, 0},
+                  {2.3, EventKind::pair, 700, 701},
+                  {2.4, EventKind::pair, last, last - 1}};
+        right.queue = q;
+        const FrameContent frame = queue_frame(left, right);
+        (void)renderer.render(frame);
+        const nlohmann::json layout = nlohmann::json::parse(renderer.layout_json(frame));
+        const nlohmann::json& panel = layout.at("panels").at(1);
+        const auto box = panel.at("box").get<std::vector<float>>();
+        const auto scale = panel.at("pixels_per_unit").get<double>();
+        std::vector<RectF> disc_rects;
+        for (const DiscState& d : right.discs) {
+            const auto x = static_cast<float>(box[0] + d.position.x * scale);
+            const auto y = static_cast<float>(box[1] + (right.box.height - d.position.y) * scale);
+            const auto r = static_cast<float>(d.radius * scale);
+            disc_rects.push_back({x - r, y - r, x + r, y + r});
+        }
+        std::vector<std::string> numbers;
+        for (const nlohmann::json& label : layout.at("other_text")) {
+            if (label.at("role") != "queue") continue;
+            const auto v = label.at("rect").get<std::vector<float>>();
+            const RectF rect{v[0], v[1], v[2], v[3]};
+            if (rect.y0 >= box[3]) continue;  // the strip's text
+            CHECK(rect.x1 <= 1280.0F);
+            const auto other = layout.at("panels").at(0).at("box").get<std::vector<float>>();
+            CHECK_FALSE(overlaps(rect, RectF{other[0], other[1], other[2], other[3]}));
+            for (const nlohmann::json& text : label.at("text"))
+                numbers.push_back(text.get<std::string>());
+            for (const RectF& disc : disc_rects) {
+                CAPTURE(label.dump());
+                CHECK_FALSE(overlaps(rect, disc));
+            }
+        }
+        for (const std::uint32_t disc : {0U, 1U, 100U, 101U, 450U, 700U, 701U, last - 1, last}) {
+            CAPTURE(disc);
+            CHECK(std::count(numbers.begin(), numbers.end(), std::to_string(disc)) == 1);
+        }
     }
 }
 

@@ -531,7 +531,7 @@ TEST_CASE(
         REQUIRE(legend != nullptr);
         const int count = glyphs_inside(list, legend->rect, failure);
         if (pairs > show::mark_budget) {
-            CHECK(count >= 8);  // "and 25 more"
+            CHECK(count >= 8);  // "and 25 more not drawn"
         } else {
             CHECK(count == 0);
         }

@@ -253,6 +253,13 @@ TEST_CASE("the queue strip's words: the fast engine re-predicts, the classic one
     QueueView one = q;
     one.next.resize(1);
     CHECK(queue_words(one, 0.0).legend == "Next collision, time to go");
+    // None listed, one entry: no "Next 0 collisions", no "1 entries" (billiards before the break).
+    QueueView none = q;
+    none.next.clear();
+    none.size = 1;
+    none.stale_entries = 0;
+    CHECK(queue_words(none, 0.0).legend == "No collision predicted yet");
+    CHECK(queue_words(none, 0.0).heading == "Event queue: binary heap, 1 entry");
     CHECK(classic.stale_popped == "  stale: skipped");
     CHECK(classic.counts == "3 of 40 pops stale");
     q.one_per_disc = true;

@@ -199,7 +199,7 @@ TEST_CASE("a budget over many failures: fair between kinds, the rest counted in 
     CHECK(count_kind(m, FailureKind::missed) == 4);
     CHECK(count_kind(m, FailureKind::overlapping) == 13);
     CHECK(count_kind(m, FailureKind::left_box) == 13);
-    CHECK(marks.words().unmarked == "and 234 more");
+    CHECK(marks.words().unmarked == "and 234 more not drawn");
 }
 
 TEST_CASE("a missed collision's ring stays one second of video and fades, a held state adds none") {

@@ -35,8 +35,8 @@ inline constexpr double missed_mark_radii = 2.5;
 [[nodiscard]] std::string failure_name(FailureKind kind);
 /// The legend's note on a periodic box ("edges wrap around").
 [[nodiscard]] std::string wrap_words();
-/// The legend's count of failures without a mark, after the kinds it names ("and 1,234 more";
-/// "" for 0).
+/// The legend's count of failures without a mark, after the kinds it names ("and 1,234 more
+/// not drawn"; "" for 0).
 [[nodiscard]] std::string unmarked_words(std::size_t unmarked);
 
 /// True when a panel keeps a legend line under its figures: a time-driven panel (it may fail),
