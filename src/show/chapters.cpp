@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -95,11 +96,33 @@ bool shows_replay(const Segment& segment, const std::vector<bool>& replaying_rev
            replaying_reveals[static_cast<std::size_t>(segment.question)];
 }
 
+/// Chapters of `parts`: a caption back for a moment (shorter than min_run_chapter_seconds, a
+/// caption an earlier chapter of the run showed, between a replay or an answer and what comes
+/// next) is no stop of its own: it joins the chapter after it, which starts there (its title,
+/// its still). A caption's first showing stays a chapter however short; the last chapter has
+/// none after it and stays.
+void join_captions_back(Chapters& chapters, std::vector<Part>& parts) {
+    std::set<std::string> shown;
+    for (std::size_t i = 0; i + 1 < chapters.size();) {
+        const bool body = parts[i] == Part::body;
+        const bool back = body && shown.count(chapters[i].title) > 0;
+        if (back && chapters[i].end - chapters[i].start < min_run_chapter_seconds) {
+            chapters[i + 1].start = chapters[i].start;
+            chapters.erase(chapters.begin() + static_cast<std::ptrdiff_t>(i));
+            parts.erase(parts.begin() + static_cast<std::ptrdiff_t>(i));
+            continue;
+        }
+        if (body) shown.insert(chapters[i].title);
+        ++i;
+    }
+}
+
 }  // namespace
 
 Chapters timeline_chapters(const Timeline& timeline, double card_fade,
                            const std::vector<bool>& replaying_reveals) {
     Chapters chapters;
+    std::vector<Part> parts;
     const auto fps = static_cast<double>(std::max(1, timeline.fps));
     Part last_part = Part::card;
     const std::string* last_caption = nullptr;
@@ -107,8 +130,10 @@ Chapters timeline_chapters(const Timeline& timeline, double card_fade,
         const Part part = part_of(segment.kind);
         const bool same = last_caption != nullptr && part == last_part &&
                           (part == Part::replay || *last_caption == segment.caption);
-        if (!same)
+        if (!same) {
             chapters.push_back({segment.start, segment.end, chapter_title(part, segment.caption)});
+            parts.push_back(part);
+        }
         chapters.back().end = segment.end;
         chapters.back().still = static_cast<double>(segment.end_frame - 1) / fps;
         Chapter& chapter = chapters.back();
@@ -124,6 +149,7 @@ Chapters timeline_chapters(const Timeline& timeline, double card_fade,
         last_part = part;
         last_caption = &segment.caption;
     }
+    join_captions_back(chapters, parts);
     return chapters;
 }
 

@@ -162,7 +162,7 @@ TEST_CASE("render --timeline-json: every segment in order, the clock frozen outs
     CHECK(epilogue != std::string::npos);
     CHECK(card < hold);
     CHECK(hold < epilogue);
-    CHECK(t.find("\"caption\": \"First hit: the striker stops, the last disc moves off\"") !=
+    CHECK(t.find("\"caption\": \"The striker stops, the last disc moves off\"") !=
           std::string::npos);
     CHECK(t.find("\"frames\": 170") != std::string::npos);
     // Only for videos.

@@ -78,15 +78,49 @@ TEST_CASE("chapters: a replay is one chapter of its own and missing words get th
                          segment(SegmentKind::run, 45, 50, ""),
                          segment(SegmentKind::epilogue, 50, 60, "")};
     const Chapters chapters = timeline_chapters(timeline);
-    REQUIRE(chapters.size() == 5);
+    REQUIRE(chapters.size() == 4);
     CHECK(chapters[0].title == "Title");
     CHECK(chapters[1].title == "The simulation runs");
     CHECK(chapters[2].title == "Replay: a missed collision");
     CHECK(chapters[2].start == doctest::Approx(3.0));
     CHECK(chapters[2].end == doctest::Approx(4.5));
-    CHECK(chapters[3].title == "The simulation runs");
-    CHECK(chapters[4].title == "The final figures");
-    CHECK(chapters[4].end == doctest::Approx(6.0));
+    // Half a second of run after the replay is no stop of its own: the epilogue starts there.
+    CHECK(chapters[3].title == "The final figures");
+    CHECK(chapters[3].start == doctest::Approx(4.5));
+    CHECK(chapters[3].end == doctest::Approx(6.0));
+    CHECK(chapters[3].still == doctest::Approx(5.9));
+}
+
+TEST_CASE("chapters: a caption back for less than a second joins the chapter after it") {
+    Timeline timeline;
+    timeline.fps = 10;
+    timeline.segments = {segment(SegmentKind::run, 0, 30, "First"),
+                         segment(SegmentKind::replay, 30, 40, "a missed step"),
+                         segment(SegmentKind::run, 40, 43, "First"),
+                         segment(SegmentKind::question, 43, 63, "Will it see it?"),
+                         segment(SegmentKind::reveal, 63, 73, "No"),
+                         segment(SegmentKind::run, 73, 83, "Second"),
+                         segment(SegmentKind::run, 83, 88, "Brief"),
+                         segment(SegmentKind::run, 88, 95, "Second"),
+                         segment(SegmentKind::run, 95, 100, "Third")};
+    for (Segment& s : timeline.segments) s.moves = s.kind == SegmentKind::run;
+    timeline.segments[3].question = 0;
+    timeline.segments[4].question = 0;
+    const Chapters chapters = timeline_chapters(timeline);
+    std::vector<std::string> titles;
+    for (const Chapter& chapter : chapters) titles.push_back(chapter.title);
+    // "First" back for 0.3 s after the replay joins the question; "Second" (1 s) stays, and so
+    // does "Brief", shown for the first time, however short; "Second" back for 0.7 s joins
+    // "Third"; "Third", the last, has nothing after it and stays.
+    const std::vector<std::string> expected{
+        "First", "Replay: a missed step", "Will it see it?", "No", "Second", "Brief", "Third"};
+    REQUIRE(titles == expected);
+    CHECK(chapters[2].start == doctest::Approx(4.0));
+    CHECK(chapters[2].still == doctest::Approx(6.2));  // still the question's last frame
+    CHECK(chapters[1].end == doctest::Approx(4.0));
+    CHECK(chapters[6].start == doctest::Approx(8.8));
+    for (std::size_t i = 1; i < chapters.size(); ++i)
+        CHECK(chapters[i].start == doctest::Approx(chapters[i - 1].end));
 }
 
 TEST_CASE("chapters: a replay's still is its whole picture, before the replay fades out") {

@@ -16,13 +16,19 @@ namespace collide::show {
 /// not between steps (a chapter per step made 55 chapters in 43 s).
 inline constexpr double min_heap_chapter_seconds = 4.0;
 
+/// The shortest stretch of the run showing a caption again that is a chapter of its own, in
+/// seconds of video: a caption back for a third of a second between a replay and a question is
+/// no stop for the slide player.
+inline constexpr double min_run_chapter_seconds = 1.0;
+
 /// A collision video's chapters, one per stretch of the timeline a class would name: the title
 /// card (its title), each caption (the run and the hold that show it are one chapter), the
 /// replay, each question (the slide player stops on it, its countdown over) and its answer, and
-/// the epilogue. Back to back from 0 to the video's end, at the segments' frame
-/// times; titles are one line (a caption's line breaks become spaces). Each chapter's still is
-/// its last frame; the card's is its last frame before the fade-out of `card_fade` seconds at
-/// its end (LessonPlan::intro_fade_seconds); a replay's, and the reveal of a question whose
+/// the epilogue; a caption back for less than min_run_chapter_seconds joins the chapter after it.
+/// Back to back from 0 to the video's end, at the segments' frame times; titles are one line (a
+/// caption's line breaks become spaces). Each chapter's still is its last frame; the card's is its
+/// last frame before the fade-out of `card_fade` seconds at its end
+/// (LessonPlan::intro_fade_seconds); a replay's, and the reveal of a question whose
 /// `replaying_reveals` entry (by question index) is true, the last frame of the replay's hold,
 /// before its picture fades (replay_hold_end): a handout page or a slide shows the failure whole,
 /// not the nearly empty frame it fades to. Empty for an empty timeline.
