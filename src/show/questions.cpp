@@ -93,18 +93,20 @@ CollisionRecord pair_record(std::uint32_t a, std::uint32_t b) {
 }
 
 /// Near pairs that do not collide among `seen` (the collisions of the look ahead, which end
-/// after the answer): the pairs of discs closest edge to edge, nearest first, sharing no disc
-/// with `avoid`. At most `wanted`; O(n^2) over at most the first 2,000 discs.
+/// after the answer): the pairs of discs closest edge to edge but at least `apart`, nearest
+/// first, sharing no disc with `avoid`. At most `wanted`; O(n^2) over at most the first 2,000
+/// discs.
 std::vector<CollisionRecord> near_misses(const Snapshot& snapshot,
                                          const std::vector<CollisionRecord>& seen,
                                          const std::vector<CollisionRecord>& avoid,
-                                         std::size_t wanted) {
+                                         std::size_t wanted, double apart) {
     const std::uint32_t n = near_miss_discs(snapshot.discs.size());
     std::vector<std::pair<double, CollisionRecord>> pairs;
     for (std::uint32_t a = 0; a < n; ++a) {
         for (std::uint32_t b = a + 1; b < n; ++b) {
             const CollisionRecord r = pair_record(a, b);
-            if (may_offer_as_miss(r, seen, avoid)) pairs.emplace_back(gap(snapshot, a, b), r);
+            const double g = gap(snapshot, a, b);
+            if (g >= apart && may_offer_as_miss(r, seen, avoid)) pairs.emplace_back(g, r);
         }
     }
     std::sort(pairs.begin(), pairs.end(),
@@ -132,24 +134,99 @@ bool has_near_miss(std::size_t discs, const std::vector<CollisionRecord>& seen,
     return false;
 }
 
-/// The collisions a next-collision question offers from those resolved ahead (`hits`, in
-/// order, not empty): the first, then later ones (of other discs first, their lines apart, then
-/// any other contact), never one at the very time of the first (two answers at once would both
-/// be right); at most max_candidates - 1, near misses fill the rest.
-std::vector<CollisionRecord> offered_collisions(const std::vector<CollisionRecord>& hits) {
-    const CollisionRecord& next = hits.front();
-    std::vector<CollisionRecord> chosen{next};
+/// The gap a class sees between `r`'s discs now, or between its disc and the nearer wall across
+/// which it hits (a disc near one wall may hit the other later: the nearer one is the gap the
+/// picture shows).
+double contact_gap(const CollisionRecord& r, const Snapshot& snapshot) {
+    const std::size_t n = snapshot.discs.size();
+    if (r.a >= n || (r.kind == CollisionKind::pair && r.b >= n)) return 0.0;
+    if (r.kind == CollisionKind::pair) return gap(snapshot, r.a, r.b);
+    const DiscState& d = snapshot.discs[r.a];
+    const Box& box = snapshot.box;
+    if (r.kind == CollisionKind::xwall)
+        return std::min(d.position.x, box.width - d.position.x) - d.radius;
+    if (r.kind == CollisionKind::ywall)
+        return std::min(d.position.y, box.height - d.position.y) - d.radius;
+    return 0.0;
+}
+
+/// What a distractor must be for a class to tell it from the answer in the frozen picture.
+struct TellApart {
+    double now = 0.0;    ///< the frozen frame's simulation time
+    double later = 0.0;  ///< its contact at least this long after now (simulation time)
+    double apart = 0.0;  ///< its discs (or disc and wall) at least this far apart now
+    const Snapshot* picture = nullptr;
+};
+
+TellApart tell_apart(const CollisionRecord& next, const Snapshot& snapshot,
+                     const FramesAfter& after, int fps) {
+    TellApart out;
+    out.now = snapshot.time;
+    const auto frames =
+        static_cast<std::int64_t>(std::ceil(distractor_video_seconds * std::max(1, fps)));
+    out.later = std::max(distractor_time_factor * (next.t - out.now), after(frames) - out.now);
+    out.apart = distractor_gap_share * std::min(snapshot.box.width, snapshot.box.height);
+    out.picture = &snapshot;
+    return out;
+}
+
+/// True when the later collision `hit` looks like a later one in the picture: far enough ahead in
+/// time, and its discs (or disc and wall) visibly apart now, not touching while they slide by.
+bool distinct_in_picture(const CollisionRecord& hit, const TellApart& rule) {
+    return hit.t - rule.now >= rule.later && contact_gap(hit, *rule.picture) >= rule.apart;
+}
+
+/// Adds to `chosen` (the engine's next collision first) later collisions of `hits` that `accept`
+/// takes (of other discs first, their lines apart, then any other contact), never one at the
+/// very time of the first (two answers at once would both be right), up to max_candidates - 1.
+template <typename Accept>
+void add_later_hits(const std::vector<CollisionRecord>& hits, std::vector<CollisionRecord>& chosen,
+                    const Accept& accept) {
+    const CollisionRecord& next = chosen.front();
     for (const bool apart : {true, false}) {
         for (const CollisionRecord& hit : hits) {
-            if (chosen.size() == max_candidates - 1) break;
+            if (chosen.size() >= max_candidates - 1) return;
             const auto same = [&hit](const CollisionRecord& c) { return same_contact(hit, c); };
             const auto near = [&hit](const CollisionRecord& c) { return shares_disc(hit, c); };
             if (!(hit.t > next.t) || std::any_of(chosen.begin(), chosen.end(), same)) continue;
             if (apart && std::any_of(chosen.begin(), chosen.end(), near)) continue;
-            chosen.push_back(hit);
+            if (accept(hit)) chosen.push_back(hit);
         }
     }
+}
+
+/// Adds near misses (near_misses) visibly apart by at least `apart` to `chosen`, up to
+/// max_candidates - 1.
+void add_near_misses(const Snapshot& snapshot, const std::vector<CollisionRecord>& hits,
+                     double apart, std::vector<CollisionRecord>& chosen) {
+    if (chosen.size() >= max_candidates - 1) return;
+    const std::vector<CollisionRecord> misses =
+        near_misses(snapshot, hits, chosen, max_candidates - 1 - chosen.size(), apart);
+    chosen.insert(chosen.end(), misses.begin(), misses.end());
+}
+
+/// The contacts a next-collision question offers from those resolved ahead (`hits`, in order, not
+/// empty): the first, then distractors a class can tell from it in the picture, best first:
+/// later collisions distinct_in_picture, then near misses visibly apart, then any near misses,
+/// then any later collisions. At most max_candidates - 1.
+std::vector<CollisionRecord> offered_collisions(const std::vector<CollisionRecord>& hits,
+                                                const Snapshot& snapshot, const TellApart& rule) {
+    std::vector<CollisionRecord> chosen{hits.front()};
+    add_later_hits(hits, chosen,
+                   [&rule](const CollisionRecord& hit) { return distinct_in_picture(hit, rule); });
+    add_near_misses(snapshot, hits, rule.apart, chosen);
+    add_near_misses(snapshot, hits, -std::numeric_limits<double>::infinity(), chosen);
+    add_later_hits(hits, chosen, [](const CollisionRecord&) { return true; });
     return chosen;
+}
+
+/// True when `hits` hold a later contact than the first's (a second candidate whatever the
+/// picture: offered_collisions' last resort).
+bool has_later_contact(const std::vector<CollisionRecord>& hits) {
+    const CollisionRecord& next = hits.front();
+    return std::any_of(hits.begin(), hits.end(), [&next](const CollisionRecord& hit) {
+        return hit.t > next.t && !same_contact(hit, next);
+    });
 }
 
 /// The collisions a copy asked for a next-collision question resolves: enough that a few of
@@ -157,11 +234,11 @@ std::vector<CollisionRecord> offered_collisions(const std::vector<CollisionRecor
 constexpr std::size_t next_collision_hits = 24;
 
 /// True when answer_next_collision answers, for `discs` discs, from the collisions `hits` its
-/// copy resolved: one at least, and a second candidate (a later collision or a near miss).
+/// copy resolved: one at least, and a second candidate (a later collision or a near miss; which
+/// ones the picture prefers changes what is offered, never whether one is).
 bool next_collision_askable(const std::vector<CollisionRecord>& hits, std::size_t discs) {
     if (hits.empty()) return false;
-    const std::vector<CollisionRecord> chosen = offered_collisions(hits);
-    return chosen.size() >= min_candidates || has_near_miss(discs, hits, chosen);
+    return has_later_contact(hits) || has_near_miss(discs, hits, {hits.front()});
 }
 
 /// The time of simulation frame j on `clock`, past its last frame too (one interval a frame):
@@ -249,19 +326,15 @@ QuestionAnswer answer_will_see(const ReplayFailure& failure, std::int64_t sim_fr
 }
 
 QuestionAnswer answer_next_collision(const Engine& engine, const Snapshot& snapshot,
-                                     const FramesAfter& after, std::uint64_t seed) {
+                                     const FramesAfter& after, int fps, std::uint64_t seed) {
     QuestionAnswer out;
     out.kind = QuestionKind::next_collision;
     out.time = snapshot.time;
     if (snapshot.dimension != 2) return out;
     const Ahead ahead = run_copy(engine, after, look_ahead_frames, next_collision_hits);
     if (ahead.hits.empty()) return out;
-    std::vector<CollisionRecord> chosen = offered_collisions(ahead.hits);
-    if (chosen.size() < max_candidates - 1) {
-        const std::vector<CollisionRecord> misses =
-            near_misses(snapshot, ahead.hits, chosen, max_candidates - 1 - chosen.size());
-        chosen.insert(chosen.end(), misses.begin(), misses.end());
-    }
+    const TellApart rule = tell_apart(ahead.hits.front(), snapshot, after, fps);
+    const std::vector<CollisionRecord> chosen = offered_collisions(ahead.hits, snapshot, rule);
     if (chosen.size() < min_candidates) return out;
     // Fisher-Yates by the seed: which letter the answer gets.
     std::vector<std::size_t> order(chosen.size());
@@ -424,7 +497,10 @@ ReplayView question_view(const QuestionAnswer& answer, const Snapshot& snapshot,
     const double plate = 0.05 * std::min(snapshot.box.width, snapshot.box.height);
     std::vector<Vec2> taken;
     for (std::size_t i = 0; i < answer.candidates.size(); ++i) {
-        const NextCollisionView seen = next_collision_view(answer.candidates[i], snapshot, clock);
+        // A near miss never meets (its time is infinite): its line joins the discs as they are.
+        CollisionRecord shown = answer.candidates[i];
+        if (!std::isfinite(shown.t)) shown.t = snapshot.time;
+        const NextCollisionView seen = next_collision_view(shown, snapshot, clock);
         if (seen.lines.empty()) continue;
         const bool right = i == answer.answer;
         const float opacity = reveal && !right ? 0.3F : 1.0F;
@@ -495,7 +571,7 @@ std::vector<QuestionAnswer> answer_questions(const Scene& scene, const EngineOpt
         if (kinds[q] == QuestionKind::next_collision) {
             const std::uint64_t seed = 0x51ED5EEDULL ^ (static_cast<std::uint64_t>(frame) << 8U) ^
                                        static_cast<std::uint64_t>(question);
-            out[q] = answer_next_collision(*engine, engine->snapshot(), after, seed);
+            out[q] = answer_next_collision(*engine, engine->snapshot(), after, timeline.fps, seed);
         } else {
             out[q] = answer_how_many(*engine, after, timeline.fps);
         }

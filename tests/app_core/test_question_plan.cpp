@@ -99,7 +99,7 @@ show::QuestionAnswer asked_on(const Scene& scene, const RenderPlan& plan, std::i
     const show::FrameClock& clock = plan.clock;
     return show::answer_next_collision(
         *engine, engine->snapshot(),
-        [&clock, frame](std::int64_t i) { return clock.time(frame + i); }, 1);
+        [&clock, frame](std::int64_t i) { return clock.time(frame + i); }, plan.fps, 1);
 }
 
 }  // namespace

@@ -61,7 +61,7 @@ TEST_CASE("a next-collision question draws every candidate disc's velocity, one 
         for (std::int64_t j = 0; j <= 10; ++j) engine->advance_to(clock.time(j));
         const Snapshot now = engine->snapshot();
         const QuestionAnswer answer = answer_next_collision(
-            *engine, now, [&clock](std::int64_t i) { return clock.time(10 + i); }, seed);
+            *engine, now, [&clock](std::int64_t i) { return clock.time(10 + i); }, 30, seed);
         REQUIRE(answer.askable);
         const ReplayView asking = question_view(answer, now, clock, 2.5, false);
         const ReplayView reveal = question_view(answer, now, clock, 1.0, true);

@@ -70,7 +70,7 @@ TEST_CASE("next collision: the answer is the engine's next collision, the distra
         for (std::int64_t j = 0; j <= k; ++j) engine->advance_to(clock.time(j));
         const double before = engine->time();
         const QuestionAnswer answer =
-            answer_next_collision(*engine, engine->snapshot(), after_frame(clock, k), seed);
+            answer_next_collision(*engine, engine->snapshot(), after_frame(clock, k), 30, seed);
         CHECK(engine->time() == before);  // a copy answered: the video's engine is untouched
         const std::optional<CollisionRecord> truth = first_after(scene, options, clock, k);
         REQUIRE(truth.has_value());
@@ -94,6 +94,144 @@ TEST_CASE("next collision: the answer is the engine's next collision, the distra
     }
     CHECK(asked == 24);
     CHECK(letters.size() >= 3);  // the answer is not always the same letter
+}
+
+namespace {
+
+/// The collisions a copy asked on frame k resolves, as answer_next_collision runs it: frame by
+/// frame after k until 24 are seen or look_ahead_frames passed.
+std::vector<CollisionRecord> look_ahead(const Scene& scene, const EngineOptions& options,
+                                        const FrameClock& clock, std::int64_t k) {
+    const std::unique_ptr<Engine> engine = make_engine(scene, options);
+    for (std::int64_t j = 0; j <= k; ++j) engine->advance_to(clock.time(j));
+    std::vector<CollisionRecord> hits;
+    engine->set_collision_listener([&hits](const CollisionRecord& r) { hits.push_back(r); });
+    const FramesAfter after = after_frame(clock, k);
+    for (std::int64_t i = 1; i <= look_ahead_frames && hits.size() < 24; ++i)
+        engine->advance_to(after(i));
+    engine->set_collision_listener(nullptr);
+    return hits;
+}
+
+/// The gap the picture shows for `c`: between its discs, or its disc and the nearer wall it hits.
+double seen_gap(const CollisionRecord& c, const Snapshot& now) {
+    const DiscState& a = now.discs[c.a];
+    if (c.kind == CollisionKind::pair) {
+        const DiscState& b = now.discs[c.b];
+        return norm(now.box.displacement(a.position, b.position)) - a.radius - b.radius;
+    }
+    if (c.kind == CollisionKind::xwall)
+        return std::min(a.position.x, now.box.width - a.position.x) - a.radius;
+    return std::min(a.position.y, now.box.height - a.position.y) - a.radius;
+}
+
+}  // namespace
+
+TEST_CASE("next collision: every distractor looks different from the answer in the picture") {
+    int later = 0;
+    int misses = 0;
+    for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+        CAPTURE(seed);
+        // A video slowed as render slows a dense fluid (a box crossing takes seconds of video),
+        // or one so fast that every collision ahead comes within a blink (near misses only).
+        const int fps = seed % 2 == 0 ? 15 : 30;
+        const double speed = seed % 5 == 4 ? 1.0 : 0.01 * static_cast<double>(1 + seed % 3);
+        const FrameClock clock = clock_of(400, speed / fps);
+        EngineOptions options;
+        options.engine = seed % 3 == 0 ? EngineKind::classic : EngineKind::fast;
+        const Boundary boundary = seed % 4 == 1 ? Boundary::periodic : Boundary::walls;
+        const double eta = 0.05 + 0.05 * static_cast<double>(seed % 5);
+        const Scene scene = test::lattice_fluid(4 + seed % 3, eta, boundary, seed);
+        const auto k = static_cast<std::int64_t>(seed * 11 % 60);
+        const std::unique_ptr<Engine> engine = make_engine(scene, options);
+        for (std::int64_t j = 0; j <= k; ++j) engine->advance_to(clock.time(j));
+        const Snapshot now = engine->snapshot();
+        const FramesAfter after = after_frame(clock, k);
+        const QuestionAnswer answer = answer_next_collision(*engine, now, after, fps, seed);
+        const std::vector<CollisionRecord> hits = look_ahead(scene, options, clock, k);
+        REQUIRE_FALSE(hits.empty());
+        REQUIRE(answer.askable);
+        REQUIRE(answer.answer < answer.candidates.size());
+        const CollisionRecord& right = answer.candidates[answer.answer];
+        CHECK(same_contact(right, hits.front()));
+        CHECK(right.t == hits.front().t);
+        // The rule's bounds, from the answer's time to go and the video's speed.
+        const auto frames = static_cast<std::int64_t>(std::ceil(distractor_video_seconds * fps));
+        const double bound =
+            std::max(distractor_time_factor * (right.t - now.time), after(frames) - now.time);
+        const double apart = distractor_gap_share * std::min(now.box.width, now.box.height);
+        for (std::size_t i = 0; i < answer.candidates.size(); ++i) {
+            if (i == answer.answer) continue;
+            CAPTURE(i);
+            const CollisionRecord& c = answer.candidates[i];
+            CHECK_FALSE(same_contact(c, hits.front()));
+            // Visibly apart now, whichever kind it is.
+            CHECK(seen_gap(c, now) >= apart);
+            const auto seen = std::find_if(
+                hits.begin(), hits.end(),
+                [&c](const CollisionRecord& h) { return same_contact(h, c) && h.t == c.t; });
+            if (seen != hits.end()) {
+                ++later;  // a later collision of the engine's, far enough ahead
+                CHECK(c.t - now.time >= bound);
+            } else {
+                ++misses;  // a near miss: the pair never meets within the look ahead
+                CHECK(c.kind == CollisionKind::pair);
+                CHECK_FALSE(std::isfinite(c.t));
+                CHECK(std::none_of(hits.begin(), hits.end(),
+                                   [&c](const CollisionRecord& h) { return same_contact(h, c); }));
+            }
+        }
+        // Every candidate is drawn where the picture is: a near miss's line joins its discs.
+        const ReplayView asking = question_view(answer, now, clock, 2.5, false);
+        REQUIRE(asking.labels.size() == answer.candidates.size());
+        for (const BoxLine& line : asking.lines)
+            CHECK((std::isfinite(norm(line.from)) && std::isfinite(norm(line.to))));
+        for (const BoxLabel& label : asking.labels) CHECK(std::isfinite(norm(label.at)));
+    }
+    CHECK(later >= 20);  // both kinds of distractor are offered across the seeds
+    CHECK(misses >= 5);
+}
+
+TEST_CASE("next collision: a disc sliding along a wall it touches is no distractor") {
+    const FrameClock clock = clock_of(400, 1.0 / 15.0);
+    for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+        CAPTURE(seed);
+        // A pair about to meet (the answer), a disc touching the left wall that grazes into it
+        // later while it slides up, and two discs well apart heading for each other later.
+        Scene s;
+        s.box = Box{1.0, 1.0, Boundary::walls};
+        const double r = 0.03;
+        // It touches the wall (0.1 % of the box apart) and meets it 3 .. 5.5 s on.
+        const double lean = 1e-4 / (2.5 + 0.5 * static_cast<double>(seed));
+        s.discs.push_back(Disc{{0.5, 0.8}, {0.2, 0.0}, r, 1.0, {}, ""});
+        s.discs.push_back(Disc{{0.5 + 2.0 * r + 0.002, 0.8}, {-0.2, 0.0}, r, 1.0, {}, ""});
+        s.discs.push_back(Disc{{r + 1e-4, 0.3}, {-lean, 0.15}, r, 1.0, {}, ""});
+        s.discs.push_back(Disc{{0.4, 0.3}, {0.1, 0.0}, r, 1.0, {}, ""});
+        s.discs.push_back(Disc{{0.8, 0.3}, {-0.1, 0.0}, r, 1.0, {}, ""});
+        const std::unique_ptr<Engine> engine = make_engine(s, EngineOptions{});
+        engine->advance_to(clock.time(0));
+        const Snapshot now = engine->snapshot();
+        const QuestionAnswer answer =
+            answer_next_collision(*engine, now, after_frame(clock, 0), 15, seed);
+        REQUIRE(answer.askable);
+        // The sliding disc's wall hit is among the collisions ahead (and of other discs than the
+        // answer's: the rule before #45's fix offered it).
+        const std::vector<CollisionRecord> hits = look_ahead(s, EngineOptions{}, clock, 0);
+        CHECK(std::any_of(hits.begin(), hits.end(), [](const CollisionRecord& h) {
+            return h.kind == CollisionKind::xwall && h.a == 2;
+        }));
+        const CollisionRecord& right = answer.candidates[answer.answer];
+        CHECK(right.kind == CollisionKind::pair);
+        CHECK(std::min(right.a, right.b) == 0);
+        bool offers_far_pair = false;
+        for (const CollisionRecord& c : answer.candidates) {
+            CHECK_FALSE((c.kind == CollisionKind::xwall && c.a == 2));
+            offers_far_pair =
+                offers_far_pair || (c.kind == CollisionKind::pair && std::min(c.a, c.b) == 3 &&
+                                    std::max(c.a, c.b) == 4);
+        }
+        CHECK(offers_far_pair);
+    }
 }
 
 TEST_CASE("how many: the count is what the engine resolves over the next second of video") {
@@ -197,7 +335,7 @@ TEST_CASE("the picture: letters clear of every disc, the answer marked only in t
         for (std::int64_t j = 0; j <= 5; ++j) engine->advance_to(clock.time(j));
         const Snapshot now = engine->snapshot();
         const QuestionAnswer answer =
-            answer_next_collision(*engine, now, after_frame(clock, 5), seed);
+            answer_next_collision(*engine, now, after_frame(clock, 5), 30, seed);
         REQUIRE(answer.askable);
         const ReplayView asking = question_view(answer, now, clock, 2.5, false);
         CHECK(asking.heading == "Think: 3");
@@ -300,7 +438,8 @@ std::vector<bool> askable_frames(const Scene& scene, const EngineOptions& option
         engine->advance_to(std::max(clock.time(j), engine->time()));
         if (j < from) continue;
         out.push_back(
-            answer_next_collision(*engine, engine->snapshot(), after_frame(clock, j), 7).askable);
+            answer_next_collision(*engine, engine->snapshot(), after_frame(clock, j), 30, 7)
+                .askable);
     }
     return out;
 }
@@ -323,7 +462,7 @@ bool moves_to_first_askable(const Scene& scene, const EngineOptions& options,
     const std::unique_ptr<Engine> engine = make_engine(scene, options);
     for (std::int64_t j = 0; j <= *to; ++j) engine->advance_to(clock.time(j));
     const QuestionAnswer answer =
-        answer_next_collision(*engine, engine->snapshot(), after_frame(clock, *to), 11);
+        answer_next_collision(*engine, engine->snapshot(), after_frame(clock, *to), 30, 11);
     REQUIRE(answer.askable);
     // A fresh engine's first collision after that frame, frame by frame.
     std::optional<CollisionRecord> truth;

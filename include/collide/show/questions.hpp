@@ -82,16 +82,31 @@ struct QuestionAnswer {
 /// The simulation time of the frames after the frozen one: time(1) is the next frame's.
 using FramesAfter = std::function<double(std::int64_t)>;
 
+/// A next-collision question's distractors must look different from its answer in the frozen
+/// picture (issue #45: at -q l gas offered three contacts that all looked touching). A later
+/// collision is preferred as a distractor when it comes at least distractor_time_factor times the
+/// answer's time to go after the frozen frame, and at least distractor_video_seconds of video
+/// (the frames after it, at the video's speed), and when its discs (or its disc and the nearer
+/// wall it hits) are at least distractor_gap_share of the box's smaller side apart now (about 5
+/// pixels at -q l: not touching while they slide by). Near misses at least that far apart come
+/// next, then any near miss, then any later collision (the question is asked whenever one exists).
+inline constexpr double distractor_time_factor = 3.0;
+inline constexpr double distractor_video_seconds = 0.4;
+inline constexpr double distractor_gap_share = 0.015;
+
 /// Which pair collides next, asked of `engine` (event-driven, at the frozen frame's time, as the
 /// video has advanced it): a copy of it is run to `after(1)`, `after(2)`, ... (the calls the video
 /// makes, so the same bits) until it has resolved enough collisions or `look_ahead_frames` passed.
 /// The engine's first collision is a candidate; the others are collisions it resolves later (of
-/// other discs where it can) and, where those are too few, the nearest pairs of discs that do not
-/// meet before the last collision seen. Their order (which letter the answer gets) is shuffled by
-/// `seed`. `snapshot` is the engine's state now. Not askable when the engine resolves nothing
-/// within the look ahead or cannot be copied.
+/// other discs where it can) that a class can tell from it in the picture (distractor_time_factor,
+/// distractor_video_seconds at `fps` frames a second of video, distractor_gap_share) and, where
+/// those are too few, the nearest pairs of discs that do not meet before the last collision seen
+/// (visibly apart first). Their order (which letter the answer gets) is shuffled by `seed`.
+/// `snapshot` is the engine's state now. Not askable when the engine resolves nothing within the
+/// look ahead or cannot be copied.
 [[nodiscard]] QuestionAnswer answer_next_collision(const Engine& engine, const Snapshot& snapshot,
-                                                   const FramesAfter& after, std::uint64_t seed);
+                                                   const FramesAfter& after, int fps,
+                                                   std::uint64_t seed);
 
 /// How many collisions in the next second of video: a copy of `engine` run to after(1) ..
 /// after(fps), the collisions it resolves counted (a second without any is askable too: zero).
