@@ -145,6 +145,7 @@ void run(const HeapCli& v) {
     config.height = geometry.height;
     config.widest_key = lesson.widest_key();
     config.keys = lesson.keys();
+    config.captions = lesson.captions();
     if (lesson.shows_code()) config.code_lines = lesson.code_lines();
     config.theme = theme;
     render::HeapRenderer renderer(config, render::Backend::automatic, print_notice);

@@ -84,6 +84,7 @@ struct PanelGeometry {
     float row_pitch = 0.0F;   ///< from one row of the array to the next
     float sorted_gap = 0.0F;  ///< extra space before heapsort's sorted part
     float caption_top = 0.0F;
+    std::size_t caption_lines = 2;  ///< lines reserved for the caption
     float node_radius = 0.0F;
     /// Half a node's width: its radius, or more where the widest key needs it (a pill, as wide
     /// as its word, its ends round).
@@ -231,6 +232,9 @@ struct HeapRenderer::Impl {
 
     [[nodiscard]] float node_outline() const { return std::max(1.5F, 2.5F * unit); }
 
+    /// The least space between two levels of nodes.
+    [[nodiscard]] float node_gap() const { return std::max(2.0F, 4.0F * unit); }
+
     // ------------------------------------------------------------------ frame
 
     /// What the caller promises about a frame (the views come from collide's own code, never
@@ -333,6 +337,25 @@ struct HeapRenderer::Impl {
         return height;
     }
 
+    /// Most lines a caption takes; a longer one is cut ("...").
+    static constexpr std::size_t max_caption_lines = 3;
+
+    /// The lines to reserve for captions `width` pixels wide in font `f`: as many as the
+    /// longest caption of the video wraps to (at least one), so that no line stands empty in
+    /// every frame while the tree above it squeezes; without the video's captions, room for
+    /// ~70 characters (the longest the lesson writes) at ~0.5 em each.
+    [[nodiscard]] std::size_t caption_lines(const FontAtlas& f, float width) const {
+        if (config.captions.empty()) {
+            const float chars_per_line = width / (0.5F * f.pixel_height());
+            return static_cast<std::size_t>(
+                std::clamp(std::ceil(70.0F / chars_per_line), 2.0F, 4.0F));
+        }
+        std::size_t lines = 1;
+        for (const std::string& caption : config.captions)
+            lines = std::max(lines, wrap_words(f, caption, width).size());
+        return std::min(lines, max_caption_lines);
+    }
+
     PanelGeometry layout_panel(const view::HeapPanelView& p, RectF r) {
         PanelGeometry g;
         g.panel = r;
@@ -352,73 +375,90 @@ struct HeapRenderer::Impl {
             g.returned_baseline = counters_bottom + small.line_height();
             counters_bottom = g.returned_baseline;
         }
-        // Room for captions of ~70 characters (the longest the model writes) at ~0.5 em each.
-        const float chars_per_line = (r.width() - 2.0F * pad) / (0.5F * caption.pixel_height());
-        const float caption_lines = std::clamp(std::ceil(70.0F / chars_per_line), 2.0F, 4.0F);
-        g.caption_top = r.y1 - pad - caption_lines * caption.line_height();
+        g.caption_lines = caption_lines(caption, r.width() - 2.0F * pad);
+        g.caption_top = r.y1 - pad - static_cast<float>(g.caption_lines) * caption.line_height();
 
-        // The array row: square slots, as large as the width allows, at most ~1/9 of the height.
-        const float inner_w = r.width() - 2.0F * pad;
-        const std::size_t slots = std::max<std::size_t>(p.capacity, 1);
-        // Heapsort's panel keeps room for the gap before the sorted part from the start.
-        const float gap_slots = p.heap_size != SIZE_MAX ? 0.4F : 0.0F;
-        // Deep trees need the height more than the array does.
-        const bool deep = p.tree && tree_levels(p.capacity, p.arity) >= 4;
-        const float tallest = p.tree ? (deep ? 0.085F : 0.11F) : 0.16F;
-        g.slot_size = std::min(inner_w / (static_cast<float>(slots) + gap_slots),
-                               tallest * static_cast<float>(config.height));
-        if (p.show_map && beside_code) {
-            // Beside the code the panel is narrow: the map would go between the tree and the
-            // array and squeeze the tree; slightly smaller slots keep it beside the array.
-            const float beside = (inner_w - 3.0F * pad) / (2.0F * static_cast<float>(slots));
-            if (beside >= 0.75F * g.slot_size) g.slot_size = std::min(g.slot_size, beside);
-        }
-        const float index_h = small.line_height();
-        // Keys and indices at the lesson size at least: a slot as tall as that key needs, as
-        // wide as its widest key or index ("12", a word) needs; the row wraps onto a second
-        // (third...) where the panel is not wide enough for so many.
-        g.slot_size = std::max(g.slot_size, std::ceil(small_px() / 0.85F));
-        g.slot_w = std::max(g.slot_size, slot_text_width(p));
-        g.per_row = std::clamp<std::size_t>(
-            static_cast<std::size_t>((inner_w - g.slot_w * gap_slots) / g.slot_w), 1, slots);
-        const std::size_t array_rows = (slots + g.per_row - 1) / g.per_row;
-        g.row_pitch = g.slot_size + index_h + 0.15F * g.slot_size;
-        const float array_h = g.slot_size + static_cast<float>(array_rows - 1) * g.row_pitch;
-        // Under the index labels: room for the key that dips under the row in an exchange.
-        g.slot_top = g.caption_top - pad - index_h - 0.45F * g.slot_size - array_h;
-        const float row_w = g.slot_w * static_cast<float>(g.per_row);
-        g.sorted_gap = array_rows == 1 ? g.slot_w * gap_slots : 0.0F;
-        g.slots_x0 = r.x0 + 0.5F * (r.width() - row_w - g.sorted_gap);
-        if (!p.tree) {
-            // Arrays alone: the rows sit in the middle of the free space.
-            const float top = counters_bottom + pad;
-            g.slot_top = std::max(top, 0.5F * (top + g.caption_top - index_h - array_h));
-            return g;
-        }
-
-        // The tree above the array; the indexed heap's map between them, one column per key.
-        // (Beside the array when the panel is wide enough: the tree keeps its height.)
-        float tree_bottom = g.slot_top - 1.5F * pad;
-        if (p.show_map) {
-            const float map_h = small.line_height() + 2.0F * map_font(g).line_height();
-            if (inner_w >= 2.0F * row_w + 3.0F * pad) {
-                g.slots_x0 = r.x0 + 0.5F * (r.width() - 2.0F * row_w - 3.0F * pad);
-                const float x0 = g.slots_x0 + row_w + 3.0F * pad;
-                const float y0 = g.slot_top + 0.5F * g.slot_size - 0.5F * map_h;
-                g.map = {x0, y0, x0 + row_w, y0 + map_h};
-            } else {
-                g.map = {g.slots_x0, tree_bottom - map_h, g.slots_x0 + row_w, tree_bottom};
-                tree_bottom = g.map.y0 - pad;
-            }
-        }
-        const RectF tree{r.x0 + pad, counters_bottom + pad, r.x1 - pad, tree_bottom};
+        // The tree must hold its levels apart at the least node size (a key at the lesson
+        // size); where the panel leaves it less height, the array's slots give theirs (never
+        // under what their keys need) and the layout is made again.
         const int levels = std::max(tree_levels(p.capacity, p.arity), 1);
+        const float least = node_outline() + (0.08F + 1.4F * key_drop) * small_px();
+        const float tree_needs =
+            static_cast<float>(levels) * 2.0F * least + static_cast<float>(levels - 1) * node_gap();
+        // Deep trees need the height more than the array does.
+        const bool deep = p.tree && levels >= 4;
+        float slot_cap =
+            (p.tree ? (deep ? 0.085F : 0.11F) : 0.16F) * static_cast<float>(config.height);
+        RectF tree;
+        for (int pass = 0; pass < 2; ++pass) {
+            // The array row: square slots, as large as the width allows, at most ~1/9 of the
+            // height.
+            const float inner_w = r.width() - 2.0F * pad;
+            const std::size_t slots = std::max<std::size_t>(p.capacity, 1);
+            // Heapsort's panel keeps room for the gap before the sorted part from the start.
+            const float gap_slots = p.heap_size != SIZE_MAX ? 0.4F : 0.0F;
+            g.slot_size = std::min(inner_w / (static_cast<float>(slots) + gap_slots), slot_cap);
+            if (p.show_map && beside_code) {
+                // Beside the code the panel is narrow: the map would go between the tree and the
+                // array and squeeze the tree; slightly smaller slots keep it beside the array.
+                const float beside = (inner_w - 3.0F * pad) / (2.0F * static_cast<float>(slots));
+                if (beside >= 0.75F * g.slot_size) g.slot_size = std::min(g.slot_size, beside);
+            }
+            const float index_h = small.line_height();
+            // Keys and indices at the lesson size at least: a slot as tall as that key needs, as
+            // wide as its widest key or index ("12", a word) needs; the row wraps onto a second
+            // (third...) where the panel is not wide enough for so many.
+            g.slot_size = std::max(g.slot_size, std::ceil(small_px() / 0.85F));
+            g.slot_w = std::max(g.slot_size, slot_text_width(p));
+            g.per_row = std::clamp<std::size_t>(
+                static_cast<std::size_t>((inner_w - g.slot_w * gap_slots) / g.slot_w), 1, slots);
+            const std::size_t array_rows = (slots + g.per_row - 1) / g.per_row;
+            g.row_pitch = g.slot_size + index_h + 0.15F * g.slot_size;
+            const float array_h = g.slot_size + static_cast<float>(array_rows - 1) * g.row_pitch;
+            // Under the index labels: room for the key that dips under the row in an exchange.
+            g.slot_top = g.caption_top - pad - index_h - 0.45F * g.slot_size - array_h;
+            const float row_w = g.slot_w * static_cast<float>(g.per_row);
+            g.sorted_gap = array_rows == 1 ? g.slot_w * gap_slots : 0.0F;
+            g.slots_x0 = r.x0 + 0.5F * (r.width() - row_w - g.sorted_gap);
+            if (!p.tree) {
+                // Arrays alone: the rows sit in the middle of the free space.
+                const float top = counters_bottom + pad;
+                g.slot_top = std::max(top, 0.5F * (top + g.caption_top - index_h - array_h));
+                return g;
+            }
+
+            // The tree above the array; the indexed heap's map between them, one column per key.
+            // (Beside the array when the panel is wide enough: the tree keeps its height.)
+            float tree_bottom = g.slot_top - 1.5F * pad;
+            if (p.show_map) {
+                const float map_h = small.line_height() + 2.0F * map_font(g).line_height();
+                if (inner_w >= 2.0F * row_w + 3.0F * pad) {
+                    g.slots_x0 = r.x0 + 0.5F * (r.width() - 2.0F * row_w - 3.0F * pad);
+                    const float x0 = g.slots_x0 + row_w + 3.0F * pad;
+                    const float y0 = g.slot_top + 0.5F * g.slot_size - 0.5F * map_h;
+                    g.map = {x0, y0, x0 + row_w, y0 + map_h};
+                } else {
+                    g.map = {g.slots_x0, tree_bottom - map_h, g.slots_x0 + row_w, tree_bottom};
+                    tree_bottom = g.map.y0 - pad;
+                }
+            }
+            tree = {r.x0 + pad, counters_bottom + pad, r.x1 - pad, tree_bottom};
+            const float short_by = tree_needs - tree.height();
+            if (short_by <= 0.0F) break;
+            if (pass == 1) {
+                // The slots gave what they could: the tree rises into the counters' margin.
+                tree.y0 -= std::min(short_by, 0.75F * pad);
+                break;
+            }
+            // A pixel off the slots' height raises the array's top by 1.15 per row (its pitch)
+            // less 0.15 (the last row has no gap under it) and 0.45 (an exchange's dip).
+            slot_cap = g.slot_size - short_by / (1.15F * static_cast<float>(array_rows) + 0.3F);
+        }
         const float pitch_y = tree.height() / static_cast<float>(levels);
         const auto radius = [&](std::size_t across) {
             const float pitch_x =
                 tree.width() / static_cast<float>(std::max<std::size_t>(across, 1));
             // Never smaller than a key at the lesson size needs over and under it.
-            const float least = node_outline() + (0.08F + 1.4F * key_drop) * small_px();
             return std::max(least, std::min({0.42F * pitch_x, 0.44F * pitch_y, 38.0F * unit}));
         };
         // The textbook picture (each parent over its middle child) when the panel is wide enough
@@ -764,9 +804,8 @@ struct HeapRenderer::Impl {
     void build_caption(const view::HeapPanelView& p, const PanelGeometry& g) {
         const float pad = padding();
         const FontAtlas& f = font(caption_px());
-        const std::size_t max_lines = g.panel.y1 - g.caption_top > 2.5F * f.line_height() ? 3 : 2;
-        const std::vector<std::string> lines =
-            wrap(f, p.caption, g.panel.width() - 2.0F * pad, max_lines);
+        const std::vector<std::string> lines = wrap(f, p.caption, g.panel.width() - 2.0F * pad,
+                                                    std::min(g.caption_lines, max_caption_lines));
         float baseline = g.caption_top + f.ascent();
         for (const std::string& line : lines) {
             text(f, g.panel.x0 + pad, baseline, line, colors.caption);

@@ -730,6 +730,25 @@ std::vector<std::string> HeapProgram::keys() const {
     return out;
 }
 
+std::vector<std::string> HeapProgram::captions() const {
+    std::vector<std::string> out;
+    const auto consider = [&](const std::string& caption) {
+        if (std::find(out.begin(), out.end(), caption) == out.end()) out.push_back(caption);
+    };
+    for (const PanelText& panel : text_) {
+        consider(panel.start);
+        for (const OpText& op : panel.ops) {
+            for (const std::string& caption : op.captions) consider(caption);
+            consider(op.summary);
+        }
+    }
+    for (const HeapQuestion& q : questions_) {
+        consider(q.question);
+        consider(q.answer_words);
+    }
+    return out;
+}
+
 std::string HeapProgram::widest_key() const {
     std::string widest = "W";
     const auto consider = [&](const pq::ArrayState& s) {

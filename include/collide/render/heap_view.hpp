@@ -42,6 +42,10 @@ struct HeapViewConfig {
     /// Every key of the video (HeapProgram::keys), if known: the widest of them in the drawing
     /// font replaces widest_key ("damson" is wider than "banana", as many letters).
     std::vector<std::string> keys;
+    /// Every caption of the video (HeapProgram::captions), if known: each panel reserves the
+    /// lines the longest of them wraps to at its width (at most three), and the tree gets the
+    /// rest. Empty: room for ~70 characters, the longest the lesson writes.
+    std::vector<std::string> captions;
     /// `--code`: every line of every listing the video shows, so that the code column is as
     /// wide as the widest of them in every frame (the tree keeps its place when the listing
     /// changes). Empty: each frame's own listing decides.

@@ -138,6 +138,9 @@ class HeapProgram {
     [[nodiscard]] std::string widest_key() const;
     /// Every key the lesson shows, each once, in the order they first appear.
     [[nodiscard]] std::vector<std::string> keys() const;
+    /// Every caption the lesson shows under its panels (start, steps, summaries, the questions
+    /// and their answers), each once: the painter reserves the lines the longest needs.
+    [[nodiscard]] std::vector<std::string> captions() const;
 
     /// The words of one panel: its title, its caption before the first operation, and per
     /// operation the caption of each step shown and a summary.
