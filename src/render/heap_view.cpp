@@ -522,12 +522,19 @@ struct HeapRenderer::Impl {
         const float half = 0.5F * side;
         const float gap = std::max(2.0F, 3.0F * unit);
         std::vector<PointF> plates;
-        const auto clear = [&](PointF c) {
+        // A node is a pill: the points within its radius of a centre line node_half_w - radius
+        // to each side (a disc where that is 0).
+        const float band = std::max(0.0F, g.node_half_w - g.node_radius);
+        const auto off_nodes = [&](const RectF& r) {
             for (const PointF& n : g.nodes) {
-                const float dx = std::max(std::abs(c.x - n.x) - half, 0.0F);
-                const float dy = std::max(std::abs(c.y - n.y) - half, 0.0F);
+                const float dx = std::max({r.x0 - (n.x + band), (n.x - band) - r.x1, 0.0F});
+                const float dy = std::max({r.y0 - n.y, n.y - r.y1, 0.0F});
                 if (dx * dx + dy * dy < (g.node_radius + gap) * (g.node_radius + gap)) return false;
             }
+            return true;
+        };
+        const auto clear = [&](PointF c) {
+            if (!off_nodes({c.x - half, c.y - half, c.x + half, c.y + half})) return false;
             for (const PointF& o : plates) {
                 if (std::abs(c.x - o.x) < side + gap && std::abs(c.y - o.y) < side + gap)
                     return false;
@@ -541,17 +548,26 @@ struct HeapRenderer::Impl {
             if (letter.slot >= g.nodes.size()) continue;
             const PointF n = g.nodes[letter.slot];
             const float reach = g.node_radius + gap + half;
+            const float reach_x = reach + band;  // beside a pill, past its band
             // Up right first (clear of the edge to the parent for a left child), then around.
             const float dirs[][2] = {{0.72F, -0.72F}, {-0.72F, -0.72F}, {1.0F, 0.0F},
                                      {-1.0F, 0.0F},   {0.72F, 0.72F},   {-0.72F, 0.72F},
                                      {0.0F, 1.0F},    {0.0F, -1.0F}};
-            PointF at{n.x + dirs[0][0] * reach, n.y + dirs[0][1] * reach};
-            for (const auto& d : dirs) {
-                const PointF c{n.x + d[0] * reach, n.y + d[1] * reach};
-                if (clear(c)) {
-                    at = c;
-                    break;
+            PointF at{n.x + dirs[0][0] * reach_x, n.y + dirs[0][1] * reach};
+            // Beside the node first; where its neighbours' pills crowd it, farther out (the
+            // plate's place still reads as its node's: nearer to it than to any other).
+            bool placed = false;
+            for (const float farther : {0.0F, 0.6F * side, 1.2F * side}) {
+                for (const auto& d : dirs) {
+                    const PointF c{n.x + d[0] * (reach_x + farther),
+                                   n.y + d[1] * (reach + farther)};
+                    if (clear(c)) {
+                        at = c;
+                        placed = true;
+                        break;
+                    }
                 }
+                if (placed) break;
             }
             plates.push_back(at);
             const float alpha = p.reveal && !letter.answer ? 0.35F : 1.0F;
@@ -562,9 +578,34 @@ struct HeapRenderer::Impl {
             centred(f, at, letter.letter, faded(lit.text, alpha));
         }
         if (!p.countdown.empty()) {
+            // At the tree's top right, else its top left, else just above the array: where it
+            // covers no node and no letter.
             const FontAtlas& big = font(caption_px());
-            const float x = g.panel.x1 - padding() - big.text_width(p.countdown);
-            text(big, x, g.tree.y0 + big.ascent(), p.countdown, heap_token_now_fill);
+            const float w = big.text_width(p.countdown);
+            const float h = big.pixel_height();
+            const float right = g.panel.x1 - padding() - w;
+            const float left = g.panel.x0 + padding();
+            const float top = g.tree.y0;
+            const float low = g.slot_top - gap - h;
+            const auto free = [&](float x, float y) {
+                const RectF r{x, y, x + w, y + h};
+                if (!off_nodes(r)) return false;
+                return std::none_of(plates.begin(), plates.end(), [&](const PointF& o) {
+                    return o.x + half > r.x0 && o.x - half < r.x1 && o.y + half > r.y0 &&
+                           o.y - half < r.y1;
+                });
+            };
+            float x = right;
+            float y = top;
+            for (const PointF spot :
+                 {PointF{right, top}, PointF{left, top}, PointF{right, low}, PointF{left, low}}) {
+                if (free(spot.x, spot.y)) {
+                    x = spot.x;
+                    y = spot.y;
+                    break;
+                }
+            }
+            text(big, x, y + big.ascent(), p.countdown, heap_token_now_fill);
         }
     }
 

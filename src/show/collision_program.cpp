@@ -176,9 +176,11 @@ const FrameContent& CollisionProgram::frame(const CollisionState& state) {
         const bool walls =
             !state.panels.empty() && state.panels[0].snapshot.box.boundary == Boundary::walls;
         // The card is the lesson's: its clock is the lesson column's, whatever the level.
+        const bool spheres = !state.panels.empty() && state.panels[0].spheres;
         content_.summary = summary_card(
             panels, walls,
-            clock_text(state.time, settings_.clock, settings_.speed, OverlayLevel::lesson));
+            clock_text(state.time, settings_.clock, settings_.speed, OverlayLevel::lesson),
+            spheres);
         content_.summary.opacity = summary_opacity(video_time - segment.start);
         // The caption over the card says what the figures mean: the timeline's (the subtitles')
         // was written before the run, without them.

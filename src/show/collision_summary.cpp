@@ -94,14 +94,15 @@ std::string epilogue_caption(const std::vector<SummaryPanel>& panels) {
 }
 
 SummaryCard summary_card(const std::vector<SummaryPanel>& panels, bool walls,
-                         const std::string& time_text) {
+                         const std::string& time_text, bool spheres) {
     SummaryCard card;
     card.title = fmt::format("In the end, at {}", time_text);
     card.opacity = 1.0F;
     SummaryRow missed{"collisions missed", {}};
-    SummaryRow overlapping{"discs that overlapped", {}};
+    const std::string bodies = spheres ? "spheres" : "discs";
+    SummaryRow overlapping{bodies + " that overlapped", {}};
     // Through a wall or through a barrier of immovable discs: the lessons' word, "tunnelled".
-    SummaryRow tunnelled{"discs that tunnelled", {}};
+    SummaryRow tunnelled{bodies + " that tunnelled", {}};
     SummaryRow collisions{"collisions", {}};
     SummaryRow cost{"work", {}};
     const bool compared =

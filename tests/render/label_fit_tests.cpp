@@ -209,6 +209,56 @@ TEST_CASE("heap trees never squash: 1 to 3 heaps of 11 and 15 keys at -q l and -
     }
 }
 
+TEST_CASE(
+    "heap questions: letter plates and the countdown cover no node in one panel, -q l and m") {
+    // Issue 45: `collide heap --questions on` put letter plates on word keys' pill-shaped nodes
+    // (the free-place check knew only the radius) and its countdown on a top node. Every frame of
+    // a question and its reveal, letters and words, in one panel. Two and three panels side by
+    // side still have no free place for every plate (their trees are too tight): not yet here.
+    const std::vector<std::pair<std::string, std::string>> lessons{
+        {"P Q E X A M L S * *", "binary"},
+        {"apple banana cherry damson elder fig grape * *", "binary"},
+        {"apple banana cherry damson elder fig grape hazel * *", "dary:4"}};
+    for (const auto& [ops, impl] : lessons) {
+        CAPTURE(ops);
+        CAPTURE(impl);
+        show::HeapProgram lesson = heap_lesson(ops.c_str(), impl);
+        lesson.ask_questions(true);
+        REQUIRE_FALSE(lesson.questions().empty());
+        for (const Preset& p : {presets[0], presets[1]}) {
+            HeapViewConfig config;
+            config.width = p.width;
+            config.height = p.height;
+            config.widest_key = lesson.widest_key();
+            config.keys = lesson.keys();
+            config.captions = lesson.captions();
+            HeapRenderer renderer(config, test::test_backend());
+            Image image;
+            std::string bad;
+            int asked = 0;
+            for (double t = 0.0; t <= lesson.duration(); t += 0.1) {
+                const view::HeapFrameView frame = lesson.frame_at(t);
+                const bool question =
+                    std::any_of(frame.panels.begin(), frame.panels.end(),
+                                [](const view::HeapPanelView& v) { return !v.letters.empty(); });
+                // An exchange under way moves its two keys along their edge, over whatever lies
+                // there, by design (as in the test above).
+                const bool moving =
+                    std::any_of(frame.panels.begin(), frame.panels.end(),
+                                [](const view::HeapPanelView& v) { return v.swap; });
+                if (!question || moving) continue;
+                renderer.render(frame, image);
+                bad += squashed(renderer.last_text(),
+                                std::string(p.name) + " at " + std::to_string(t) + " s: ");
+                ++asked;
+            }
+            CHECK(asked > 5);
+            if (bad.size() > 4000) bad = bad.substr(0, 4000) + "...\n";
+            CHECK_MESSAGE(bad.empty(), bad);
+        }
+    }
+}
+
 TEST_CASE("labels fit: d-ary heaps of arity 2 to 8, letters and words, at -q l, m and h") {
     // Ten keys at once (slot indices of two digits), then words as keys.
     const char* letters = "P Q E X A M * P L E S O * R T";

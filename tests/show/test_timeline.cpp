@@ -283,6 +283,10 @@ TEST_CASE("the epilogue's card: the final figures side by side and the work rati
         CHECK(through.rows[2].values == std::vector<std::string>{"1,234", "0"});
     }
     CHECK(summary_card({{event, false}}, false, "t").footer.empty());
+    // A 3D scene's card names spheres.
+    const SummaryCard spheres = summary_card({{time, true}, {event, false}}, true, "t", true);
+    CHECK(spheres.rows[1].label == "spheres that overlapped");
+    CHECK(spheres.rows[2].label == "spheres that tunnelled");
     CHECK(summary_opacity(0.0) == 0.0F);
     CHECK(summary_opacity(0.25) == doctest::Approx(0.5));
     CHECK(summary_opacity(2.0) == 1.0F);

@@ -22,9 +22,10 @@ struct SummaryPanel {
 };
 
 /// The card for `panels` (panel order) at the final `time_text` ("t = 3.000"); `walls`: the box
-/// has walls (discs can leave it). Opacity 1; the caller fades it in (summary_opacity).
+/// has walls (discs can leave it); `spheres`: a 3D scene, whose rows name spheres, not discs.
+/// Opacity 1; the caller fades it in (summary_opacity).
 [[nodiscard]] SummaryCard summary_card(const std::vector<SummaryPanel>& panels, bool walls,
-                                       const std::string& time_text);
+                                       const std::string& time_text, bool spheres = false);
 
 /// Why the two engines' collision counts differ, in one line under the card's table: the
 /// time-driven run stepped over collisions (or let discs through a wall), or, with nothing
