@@ -106,6 +106,17 @@ show::HeapProgram heap_lesson(const char* ops, const std::string& impls) {
             show::heap_pacing(0.8), 1};
 }
 
+/// The renderer's configuration for `lesson` at preset `p`, as `collide heap` makes it.
+HeapViewConfig lesson_config(const show::HeapProgram& lesson, const Preset& p) {
+    HeapViewConfig config;
+    config.width = p.width;
+    config.height = p.height;
+    config.widest_key = lesson.widest_key();
+    config.keys = lesson.keys();
+    config.captions = lesson.captions();
+    return config;
+}
+
 /// Whether two tree nodes overlap: each a pill (a rectangle with round ends of radius `corner`,
 /// a disc when as wide as tall), i.e. the points within `corner` of its centre line.
 bool nodes_overlap(const DrawnShape& a, const DrawnShape& b) {
@@ -179,13 +190,7 @@ TEST_CASE("heap trees never squash: 1 to 3 heaps of 11 and 15 keys at -q l and -
             CAPTURE(impl);
             const show::HeapProgram lesson = heap_lesson(ops.c_str(), impl);
             for (const Preset& p : {presets[0], presets[1]}) {
-                HeapViewConfig config;
-                config.width = p.width;
-                config.height = p.height;
-                config.widest_key = lesson.widest_key();
-                config.keys = lesson.keys();
-                config.captions = lesson.captions();
-                HeapRenderer renderer(config, test::test_backend());
+                HeapRenderer renderer(lesson_config(lesson, p), test::test_backend());
                 Image image;
                 std::string bad;
                 int labels = 0;
@@ -226,13 +231,7 @@ TEST_CASE(
         lesson.ask_questions(true);
         REQUIRE_FALSE(lesson.questions().empty());
         for (const Preset& p : {presets[0], presets[1]}) {
-            HeapViewConfig config;
-            config.width = p.width;
-            config.height = p.height;
-            config.widest_key = lesson.widest_key();
-            config.keys = lesson.keys();
-            config.captions = lesson.captions();
-            HeapRenderer renderer(config, test::test_backend());
+            HeapRenderer renderer(lesson_config(lesson, p), test::test_backend());
             Image image;
             std::string bad;
             int asked = 0;
