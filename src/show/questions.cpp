@@ -182,7 +182,8 @@ bool distinct_in_picture(const CollisionRecord& hit, const TellApart& rule) {
 template <typename Accept>
 void add_later_hits(const std::vector<CollisionRecord>& hits, std::vector<CollisionRecord>& chosen,
                     const Accept& accept) {
-    const CollisionRecord& next = chosen.front();
+    // A copy: pushing onto `chosen` may move its elements.
+    const CollisionRecord next = chosen.front();
     for (const bool apart : {true, false}) {
         for (const CollisionRecord& hit : hits) {
             if (chosen.size() >= max_candidates - 1) return;
