@@ -11,6 +11,6 @@ cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release -DCOLLIDE_BUILD_
       -DCOLLIDE_BUILD_BENCH=OFF >/dev/null
 cmake --build build/release --target collide
 mkdir -p out
-echo "==> rendering the demo (tunnelling, 720p30, 10 s)"
+echo "==> rendering the demo (tunnelling, 720p30, 35.5 s with its questions)"
 build/release/collide render tunnelling -o out/demo.mp4
 build/release/collide render tunnelling --last-frame -o out/demo.png
