@@ -13,19 +13,14 @@
 #include "../sim/scene_fixtures.hpp"
 #include "collide/show/collision.hpp"
 #include "collide/sim/lookahead.hpp"
+#include "frame_clock_fixture.hpp"
 
 using namespace collide;
 using namespace collide::show;
 
 namespace {
 
-FrameClock clock_of(std::int64_t frames, double interval) {
-    FrameClock clock;
-    clock.interval = interval;
-    clock.count = frames;
-    clock.last_time = static_cast<double>(frames - 1) * interval;
-    return clock;
-}
+using test::clock_of;
 
 /// The first collision a fresh engine resolves after frame k, stepped to it the way a video
 /// steps it: to each frame time up to k, then on in small steps.

@@ -13,19 +13,14 @@
 
 #include "../sim/scene_fixtures.hpp"
 #include "collide/show/questions.hpp"
+#include "frame_clock_fixture.hpp"
 
 using namespace collide;
 using namespace collide::show;
 
 namespace {
 
-FrameClock clock_of(std::int64_t frames, double interval) {
-    FrameClock clock;
-    clock.interval = interval;
-    clock.count = frames;
-    clock.last_time = static_cast<double>(frames - 1) * interval;
-    return clock;
-}
+using test::clock_of;
 
 /// The discs of the candidates, each once.
 std::set<std::uint32_t> candidate_discs(const QuestionAnswer& answer) {

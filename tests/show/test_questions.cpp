@@ -14,19 +14,14 @@
 #include "../sim/scene_fixtures.hpp"
 #include "collide/show/questions.hpp"
 #include "collide/show/timeline.hpp"
+#include "frame_clock_fixture.hpp"
 
 using namespace collide;
 using namespace collide::show;
 
 namespace {
 
-FrameClock clock_of(std::int64_t frames, double interval) {
-    FrameClock clock;
-    clock.interval = interval;
-    clock.count = frames;
-    clock.last_time = static_cast<double>(frames - 1) * interval;
-    return clock;
-}
+using test::clock_of;
 
 /// A fresh engine stepped to frame k as a video steps it, then on in small steps: the first
 /// collision after frame k.
