@@ -79,10 +79,6 @@ std::string chapter_title(Part part, const std::string& caption) {
     return words;
 }
 
-}  // namespace
-
-namespace {
-
 /// The last frame at or before `seconds` of video, kept within [start, still].
 double frame_before(double seconds, double fps, double start, double still) {
     return std::clamp(std::floor(seconds * fps + 1e-9) / fps, start, still);
@@ -134,9 +130,9 @@ Chapters timeline_chapters(const Timeline& timeline, double card_fade,
             chapters.push_back({segment.start, segment.end, chapter_title(part, segment.caption)});
             parts.push_back(part);
         }
-        chapters.back().end = segment.end;
-        chapters.back().still = static_cast<double>(segment.end_frame - 1) / fps;
         Chapter& chapter = chapters.back();
+        chapter.end = segment.end;
+        chapter.still = static_cast<double>(segment.end_frame - 1) / fps;
         if (part == Part::card && card_fade > 0.0) {
             // The last frame at or before the fade begins: the title at full strength.
             chapter.still =
