@@ -152,7 +152,8 @@ void LessonPainter::add_marks(std::size_t index, const PanelContent& content,
     const Snapshot& snapshot = *content.snapshot;
     if (snapshot.queue) {
         // Zoomed in (a replay), the queue's lines would reach out of the box.
-        if (!panel.zoomed) add_queue_in_box(snapshot, content.queue_words, panel);
+        if (!panel.zoomed && content.queue_in_box)
+            add_queue_in_box(snapshot, content.queue_words, panel);
         if (layout_.queue_panel == static_cast<int>(index) && !intro_)
             add_queue_strip(snapshot, content.queue_words, layout_.queue_strip);
     }

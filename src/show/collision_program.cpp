@@ -128,8 +128,10 @@ const FrameContent& CollisionProgram::frame(const CollisionState& state) {
         out.replay = !replayed           ? ReplayView{}
                      : panel.time_driven ? replayed->time_driven
                                          : replayed->event_driven;
+        out.queue_in_box = true;
         if (asking && !will_see && !panel.time_driven && !replayed) {
             out.next_collision = {};
+            out.queue_in_box = false;
             out.replay = question_picture(segment, panel.snapshot, segment.end - video_time);
         }
         if (will_see && panel.time_driven && !replayed && asked->failure) {

@@ -241,6 +241,9 @@ struct PanelContent {
     /// theme's colour (title swatch, bar, histogram, plot series).
     bool time_driven = true;
     QueueWords queue_words;  ///< the queue strip's words (snapshot->queue set)
+    /// The listed events' disc numbers and times in the box (snapshot->queue set). A question
+    /// leaves them out: they would tell its answer and lie under its letters.
+    bool queue_in_box = true;
     /// Lesson level: the failure marks in the box (the full level marks from the snapshot).
     std::vector<FailureMark> marks;
     MarkWords mark_words;    ///< the mark legend's words
