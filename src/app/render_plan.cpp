@@ -26,7 +26,8 @@ namespace collide::app {
 
 namespace {
 
-constexpr double max_duration = 3600.0;  // an hour of video is far beyond any lesson
+constexpr double max_duration = 3600.0;         // an hour of video is far beyond any lesson
+constexpr double default_video_seconds = 10.0;  // a scene that names no [render] duration
 /// Colour and histogram range in units of the RMS speed: a 2D Maxwell-Boltzmann gas has
 /// P(v > 2.5 v_rms) = exp(-6.25) ~ 0.2 %, so almost every disc gets a distinct colour.
 constexpr double speed_range_in_rms = 2.5;
@@ -65,7 +66,8 @@ int choose_fps(const RenderRequest& request, const QualityPreset& preset) {
 
 double choose_duration(const RenderRequest& request, const Scene& scene) {
     const bool from_cli = request.duration.has_value();
-    const double duration = request.duration.value_or(scene.render.duration.value_or(10.0));
+    const double duration =
+        request.duration.value_or(scene.render.duration.value_or(default_video_seconds));
     const std::string option =
         from_cli ? std::string("--duration") : hint_option(scene.render.duration_at, "duration");
     require_positive(duration, option, "number of seconds");
@@ -248,8 +250,13 @@ render::RenderConfig render_config(const RenderRequest& request, const Scene& sc
 }
 
 /// What the lesson plan is made of besides the scene, from the options (show::lesson_plan).
-show::LessonRequest lesson_request(const RenderRequest& request, const RenderPlan& plan) {
+show::LessonRequest lesson_request(const RenderRequest& request, const Scene& scene,
+                                   const RenderPlan& plan) {
     show::LessonRequest out;
+    // The scene's captions are written for its own pace; --speed, --slow-motion and --code's
+    // slow motion move them to the moments they describe.
+    out.slower = choose_speed(scene, std::nullopt).speed / plan.speed.speed;
+    out.scene_duration = scene.render.duration.value_or(default_video_seconds);
     out.level = plan.render.overlays;
     out.duration = plan.duration;
     out.duration_from_cli = request.duration.has_value();
@@ -569,7 +576,7 @@ RenderPlan plan_without_frames(const RenderRequest& request, const Scene& scene)
     plan.render.trail_length = show::trail_length(scene, video.count);
     plan.render.trail_whole_path = show::few_tagged_discs(scene);
     check_failure_colors(scene, plan.render, plan.notices);
-    plan.lesson = show::lesson_plan(scene, lesson_request(request, plan), plan.notices);
+    plan.lesson = show::lesson_plan(scene, lesson_request(request, scene, plan), plan.notices);
     if (request.layout_json) {
         if (request.layout_json->empty()) throw_option_error("--layout-json", "needs a file name");
         plan.layout_json = *request.layout_json;

@@ -10,6 +10,7 @@
 #include "collide/show/collision_program.hpp"
 #include "collide/show/collision_summary.hpp"
 #include "collide/show/questions.hpp"
+#include "collide/show/timeline.hpp"
 
 namespace collide::show {
 
@@ -17,10 +18,10 @@ namespace {
 
 /// Captions beyond the video: an error when the video is as long as the scene says (the scene
 /// is wrong), a notice when --duration shortened it (a preview).
-std::vector<CaptionCue> captions_within(const Scene& scene, double duration, bool cli_duration,
-                                        std::vector<std::string>& notices) {
+std::vector<CaptionCue> captions_within(const std::vector<CaptionCue>& captions, double duration,
+                                        bool cli_duration, std::vector<std::string>& notices) {
     std::vector<CaptionCue> kept;
-    for (CaptionCue cue : scene.render.captions) {
+    for (CaptionCue cue : captions) {
         if (cue.at < duration && cue.at + cue.hold > duration) {
             if (!cli_duration) {
                 throw_scene_error(cue.file, cue.line, "render.captions.hold",
@@ -58,6 +59,104 @@ std::string caption_for_panels(const CaptionCue& cue, const LessonRequest& reque
     if (request.event_panel && !request.time_panel && cue.event_text) return *cue.event_text;
     if (request.time_panel && !request.event_panel && cue.time_text) return *cue.time_text;
     return cue.text;
+}
+
+/// A stretch of video in which the simulation stands still (a caption's hold, a question).
+struct Freeze {
+    double at = 0.0;
+    double seconds = 0.0;
+};
+
+/// Seconds of simulation running before `at` seconds of video, frozen by `intro` seconds of
+/// card and by `freezes`.
+double running_before(double at, double intro, const std::vector<Freeze>& freezes) {
+    double frozen = std::min(intro, at);
+    for (const Freeze& f : freezes) {
+        if (f.at < at) frozen += std::min(f.seconds, at - f.at);
+    }
+    return std::max(0.0, at - frozen);
+}
+
+/// The second of video at which `running` seconds of simulation (at this video's pace) have run
+/// after `intro` seconds of card and `freezes`: each freeze starting before it delays it.
+double video_second_after(double running, double intro, const std::vector<Freeze>& freezes) {
+    double at = intro + running;
+    // Each pass adds the freezes that start before the moment found; it only moves later, and
+    // settles once no further freeze starts before it.
+    for (std::size_t pass = 0; pass <= freezes.size(); ++pass) {
+        double frozen = 0.0;
+        for (const Freeze& f : freezes) {
+            if (f.at < at) frozen += f.seconds;
+        }
+        const double next = intro + running + frozen;
+        if (next == at) break;
+        at = next;
+    }
+    return at;
+}
+
+/// Whether the scene's question `cue` is asked in this video: questions on, at the level that
+/// draws them, by a panel the video shows.
+bool asked_in(const QuestionCue& cue, const LessonRequest& request, const LevelShows& shows) {
+    if (!request.questions || !shows.replays || request.step_list) return false;
+    return needs_event_panel(cue.kind) ? request.event_panel
+                                       : !needs_time_panel(cue.kind) || request.time_panel;
+}
+
+/// The captions of a video whose simulation runs `request.slower` times slower than the scene's
+/// own pace (--code's slow motion, --slow-motion, --speed): each caption written for the moment
+/// the scene's video shows at its `at` moves to where this video shows that moment (the same
+/// simulation time; the cards, holds and questions stay seconds of video). Without this, a
+/// slowed video would say "the pictures drift apart" long before they do. The replays' holds are
+/// not known here: they only make a slowed caption later.
+/// A caption so moved past `run_end` (the summary card or the end) is left out with a notice in
+/// `notices`.
+std::vector<CaptionCue> paced_captions(const Scene& scene, const LessonRequest& request,
+                                       double intro, double run_end, const LevelShows& shows,
+                                       std::vector<std::string>& notices) {
+    // A faster video shows a moment after its caption's: late, but not yet untrue.
+    if (!(request.slower > 1.0)) return scene.render.captions;
+    const bool scene_intro = !scene.description.empty() && shows.cards;
+    const double written_intro =
+        scene_intro ? std::min(intro_seconds, 0.25 * request.scene_duration) : 0.0;
+    std::vector<Freeze> written;  // the scene's own video
+    std::vector<Freeze> asked;    // this video's questions
+    for (const QuestionCue& cue : scene.render.questions) {
+        const Freeze freeze{cue.at, cue.think + reveal_seconds_of(cue.kind)};
+        written.push_back(freeze);
+        if (asked_in(cue, request, shows)) asked.push_back(freeze);
+    }
+    for (const CaptionCue& cue : scene.render.captions) {
+        if (shows.caption_holds && cue.hold > 0.0) written.push_back({cue.at, cue.hold});
+    }
+    std::vector<Freeze> here = asked;
+    std::vector<CaptionCue> captions;
+    for (CaptionCue cue : scene.render.captions) {
+        const double running = running_before(cue.at, written_intro, written) * request.slower;
+        double at = video_second_after(running, intro, here);
+        // Moved together, a caption waits until the one before it has been read.
+        if (!captions.empty()) {
+            const CaptionCue& before = captions.back();
+            at = std::max(
+                at, before.at + std::max(before.hold, caption_reading_seconds(
+                                                          caption_for_panels(before, request))));
+        }
+        // A caption the run ends before it can be read is left out as one it never reaches.
+        if (at + caption_reading_seconds(caption_for_panels(cue, request)) > run_end) {
+            const std::string place = cue.file.empty() ? std::string("the scene")
+                                                       : fmt::format("{}:{}", cue.file, cue.line);
+            notices.push_back(fmt::format(
+                "{}: render.captions: the caption at {:g} s describes a moment this video, {:.3g}x "
+                "slower than the scene's pace, reaches at {:.1f} s, too late to be read before "
+                "its run ends at {:.1f} s: not shown",
+                place, cue.at, request.slower, at, run_end));
+            continue;
+        }
+        cue.at = at;
+        if (shows.caption_holds && cue.hold > 0.0) here.push_back({cue.at, cue.hold});
+        captions.push_back(cue);
+    }
+    return captions;
 }
 
 }  // namespace
@@ -98,7 +197,12 @@ LessonPlan lesson_plan(const Scene& scene, const LessonRequest& request,
     if (request.epilogue && shows.cards)
         lesson.epilogue_seconds = std::min(epilogue_seconds, 0.2 * request.duration);
     lesson.caption = scene.render.caption.value_or("");
-    lesson.captions = captions_within(scene, request.duration, request.duration_from_cli, notices);
+    // A caption moved past the end by the command line's pace is the command line's doing: a
+    // notice, as past a --duration's end.
+    lesson.captions = captions_within(
+        paced_captions(scene, request, lesson.intro_seconds,
+                       request.duration - lesson.epilogue_seconds, shows, notices),
+        request.duration, request.duration_from_cli || request.slower != 1.0, notices);
     // One panel: the words written for it, never a word of the absent one ("Left tests...").
     for (CaptionCue& cue : lesson.captions) cue.text = caption_for_panels(cue, request);
     lesson.epilogue_caption = request.time_panel && request.event_panel

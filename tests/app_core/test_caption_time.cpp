@@ -5,6 +5,9 @@
 // a third of a second before its question) is a sentence no student reads.
 #include <doctest/doctest.h>
 
+#include <fmt/core.h>
+
+#include <algorithm>
 #include <map>
 #include <string>
 #include <variant>
@@ -82,6 +85,42 @@ TEST_CASE("every caption of a built-in 3D scene is on screen for its reading tim
         for (const std::string quality : {"l", "m", "h"}) {
             CAPTURE(quality);
             check_reading_time(plan_render(lesson_request(name, "both", quality), stand_in));
+        }
+    }
+}
+
+TEST_CASE("a slowed video keeps its captions' reading time, and says which it drops") {
+    // --code's slow motion (16x) and --slow-motion 2: the captions move to the moments they were
+    // written for (show::lesson_plan), so they may crowd together or fall after the run; each
+    // shown is still read, each dropped is named.
+    for (const std::string name : {"billiards", "brownian", "gas", "newtons-cradle", "tunnelling"}) {
+        const Scene scene = load_scene(name, COLLIDE_ASSETS_DIR);
+        const ReplayFinder finder = [&scene](const RenderPlan& draft) {
+            return find_replays(scene, draft);
+        };
+        for (int pace = 0; pace < 2; ++pace) {
+            CAPTURE(name);
+            CAPTURE(pace);
+            RenderRequest request = lesson_request(name, "both", "m");
+            if (pace == 0) {
+                request.queue = 4;
+                request.code = true;
+            }
+            if (pace == 1) request.slow_motion = 2.0;
+            const RenderPlan plan = plan_render(request, scene, finder);
+            check_reading_time(plan);
+            const std::map<std::string, double> shown = seconds_shown(plan.timeline);
+            std::size_t dropped = 0;
+            for (const CaptionCue& cue : scene.render.captions) {
+                CAPTURE(cue.text);
+                const std::string named = fmt::format("the caption at {:g} s", cue.at);
+                const bool said = std::any_of(
+                    plan.notices.begin(), plan.notices.end(),
+                    [&](const std::string& n) { return n.find(named) != std::string::npos; });
+                CHECK((shown.count(cue.text) == 1 || said));
+                dropped += said ? 1 : 0;
+            }
+            if (pace == 0) CHECK(dropped > 0);  // 16x slower: the later moments are never reached
         }
     }
 }

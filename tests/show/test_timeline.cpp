@@ -384,3 +384,60 @@ TEST_CASE("the lesson plan takes a caption's words for the one panel a video sho
     CHECK(timeline.segments.back().caption == time.epilogue_caption);
     CHECK(notices.empty());
 }
+
+TEST_CASE("a slower video moves each caption to the moment it was written for") {
+    // The scene's own video: a 2 s card, a question at 5 s frozen 3 + 2.5 s, captions at 3 s,
+    // 12 s (held 1 s) and 18 s. Seconds of simulation running before each: 1, 12 - 2 - 5.5 = 4.5,
+    // 18 - 2 - 5.5 - 1 = 9.5.
+    Scene scene;
+    scene.title = "T";
+    scene.description = "A card";
+    QuestionCue question;
+    question.at = 5.0;
+    question.think = 3.0;
+    scene.render.questions = {question};
+    const auto caption = [](double at, const char* text, double hold) {
+        CaptionCue cue;
+        cue.at = at;
+        cue.text = text;
+        cue.hold = hold;
+        cue.file = "s.toml";
+        cue.line = static_cast<int>(at);
+        return cue;
+    };
+    scene.render.captions = {caption(3.0, "Early", 0.0), caption(12.0, "Middle", 1.0),
+                             caption(18.0, "Late", 0.0)};
+    LessonRequest request;
+    request.duration = 22.0;  // a 3 s summary card: the run ends at 19 s
+    request.scene_duration = 22.0;
+    const auto plan = [&](double slower, std::vector<std::string>& notices) {
+        request.slower = slower;
+        return lesson_plan(scene, request, notices);
+    };
+    const auto ats = [](const LessonPlan& lesson) {
+        std::vector<double> out;
+        for (const CaptionCue& cue : lesson.captions) out.push_back(cue.at);
+        return out;
+    };
+
+    std::vector<std::string> notices;
+    CHECK(ats(plan(1.0, notices)) == std::vector<double>{3.0, 12.0, 18.0});  // as written
+    CHECK(notices.empty());
+
+    // Twice as slow: twice the running seconds, the card and the freezes as they were. Late
+    // would come at 2 + 19 + 5.5 + 1 = 27.5 s, after the run: left out, and said so.
+    const LessonPlan slow = plan(2.0, notices);
+    REQUIRE(slow.captions.size() == 2);
+    CHECK(slow.captions[0].at == doctest::Approx(4.0));
+    CHECK(slow.captions[1].at == doctest::Approx(2.0 + 9.0 + 5.5));
+    CHECK(slow.captions[1].text == "Middle");
+    REQUIRE(notices.size() == 1);
+    CHECK(notices[0].find("s.toml:18: render.captions") == 0);
+    CHECK(notices[0].find("2x slower") != std::string::npos);
+
+    // Twice as fast: each moment comes before its caption, which stays where it was written
+    // (late, not untrue).
+    notices.clear();
+    CHECK(ats(plan(0.5, notices)) == std::vector<double>{3.0, 12.0, 18.0});
+    CHECK(notices.empty());
+}

@@ -198,6 +198,10 @@ struct LessonRequest {
     bool questions = true;           ///< no --questions none: the scene's questions are asked
     bool time_panel = true;          ///< the video shows a time-driven panel (not --mode event)
     bool event_panel = true;         ///< the video shows the event-driven panel (not --mode time)
+    /// How many times slower the simulation runs than at the scene's own pace (--code's slow
+    /// motion, --slow-motion, --speed): a caption moves to the moment it was written for.
+    double slower = 1.0;
+    double scene_duration = 10.0;  ///< seconds of the video as the scene says (its intro card)
 };
 
 /// The lesson's cards, captions, histogram and step note for `scene`. Captions beyond the video
