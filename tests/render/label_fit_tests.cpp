@@ -207,7 +207,7 @@ TEST_CASE(
     // The indexed heap's map (keys[i] / qp[i]) shares its panel with the tree: it took the
     // tree's height beside another heap and left about 20 px for four levels. Not yet here: an
     // indexed heap of 11 keys beside two other heaps, or of 15 beside one, at -q l and -q m: its
-    // tree, its map and the other trees do not all fit at the lesson size (docs/limits.md).
+    // tree, its map and the other trees do not all fit at the lesson size (docs/heap.md).
     const std::vector<std::string> impls{"binary",          "binary,dary:3", "binary,dary:3,dary:4",
                                          "indexed",         "indexed:2",     "binary,indexed",
                                          "indexed:3,dary:4"};
