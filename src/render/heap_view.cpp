@@ -480,25 +480,35 @@ struct HeapRenderer::Impl {
     PanelGeometry layout_panel(const view::HeapPanelView& p, RectF r) {
         const float pad = padding();
         if (!p.show_map || !p.tree || map_beside_array(p, r.width() - 2.0F * pad))
-            return layout_parts(p, r, false, 0.0F);
+            return layout_parts(p, r, MapPlace::beside_array, 0.0F);
         // The column's height from a layout without it (its width changes only the tree's).
-        const PanelGeometry plain = layout_parts(p, r, true, 0.0F);
+        const PanelGeometry plain = layout_parts(p, r, MapPlace::column, 0.0F);
         const float top = plain.counters_baseline - font(small_px()).ascent();
         const float bottom = plain.slot_top - 1.5F * pad;
         PanelGeometry sizing;
         const PointF size = map_column(p, bottom - top, sizing);
-        PanelGeometry g = layout_parts(p, r, true, size.x + pad);
+        PanelGeometry g = layout_parts(p, r, MapPlace::column, size.x + pad);
         (void)map_column(p, bottom - top, g);
         g.map = {r.x1 - pad - size.x, top, r.x1 - pad, top + size.y};
         g.cramped = g.cramped || g.map.y1 > std::min(bottom, g.slot_top - 1.5F * pad) + 0.5F;
-        return g;
+        if (!g.cramped) return g;
+        // Too narrow for the column as well (panels that cannot spare the width): the map
+        // over the array, one column per key, as wide as the array's row; the tree gives it
+        // its height.
+        PanelGeometry above = layout_parts(p, r, MapPlace::over_array, 0.0F);
+        above.cramped = true;
+        return above;
     }
 
-    /// The layout of a panel whose right `column` pixels (the map's, `side`) the counters and
-    /// the tree leave free.
-    PanelGeometry layout_parts(const view::HeapPanelView& p, RectF r, bool side, float column) {
+    /// Where the indexed heap's map goes (layout_panel).
+    enum class MapPlace { beside_array, column, over_array };
+
+    /// The layout of a panel with its map at `place`; the counters and the tree leave the
+    /// panel's right `column` pixels free (the map's column).
+    PanelGeometry layout_parts(const view::HeapPanelView& p, RectF r, MapPlace place,
+                               float column) {
         PanelGeometry g;
-        g.map_side = side;
+        g.map_side = place == MapPlace::column;
         g.panel = r;
         g.body = r;
         g.body.x1 -= column;
@@ -545,7 +555,7 @@ struct HeapRenderer::Impl {
             // Heapsort's panel keeps room for the gap before the sorted part from the start.
             const float gap_slots = p.heap_size != SIZE_MAX ? 0.4F : 0.0F;
             g.slot_size = std::min(inner_w / (static_cast<float>(slots) + gap_slots), slot_cap);
-            if (p.show_map && !g.map_side) {
+            if (p.show_map && place == MapPlace::beside_array) {
                 // The map beside the array, as wide: smaller slots keep it there (never under
                 // their least width: map_beside_array).
                 const float beside = (inner_w - 3.0F * pad) / (2.0F * static_cast<float>(slots));
@@ -577,7 +587,12 @@ struct HeapRenderer::Impl {
             // The tree above the array; the indexed heap's map beside the array, one column per
             // key (or in its own column at the panel's right: map_side).
             float tree_bottom = g.slot_top - 1.5F * pad;
-            if (p.show_map && !g.map_side) {
+            if (p.show_map && place == MapPlace::over_array) {
+                const float map_h = small.line_height() + 2.0F * map_font(g).line_height();
+                g.map = {g.slots_x0, tree_bottom - map_h, g.slots_x0 + row_w, tree_bottom};
+                tree_bottom = g.map.y0 - pad;
+            }
+            if (p.show_map && place == MapPlace::beside_array) {
                 const float map_h = small.line_height() + 2.0F * map_font(g).line_height();
                 g.slots_x0 = r.x0 + 0.5F * (r.width() - 2.0F * row_w - 3.0F * pad);
                 const float x0 = g.slots_x0 + row_w + 3.0F * pad;
