@@ -738,9 +738,26 @@ struct HeapRenderer::Impl {
                 return t.x0 < r.x1 && r.x0 < t.x1 && t.y0 < r.y1 && r.y0 < t.y1;
             });
         };
+        // The leaders drawn so far (node to plate): a later plate covers none of them.
+        std::vector<std::pair<PointF, PointF>> leaders;
+        const auto crosses = [&](PointF a, PointF b, const RectF& r) {
+            const float length = std::hypot(b.x - a.x, b.y - a.y);
+            const int steps = std::max(1, static_cast<int>(length / 2.0F));
+            for (int k = 0; k <= steps; ++k) {
+                const float t = static_cast<float>(k) / static_cast<float>(steps);
+                const float x = a.x + t * (b.x - a.x);
+                const float y = a.y + t * (b.y - a.y);
+                if (x > r.x0 - gap && x < r.x1 + gap && y > r.y0 - gap && y < r.y1 + gap)
+                    return true;
+            }
+            return false;
+        };
         const auto clear = [&](PointF c) {
             const RectF r{c.x - half, c.y - half, c.x + half, c.y + half};
             if (!off_nodes(r) || !off_text(r)) return false;
+            for (const auto& [a, b] : leaders) {
+                if (crosses(a, b, r)) return false;
+            }
             for (const PointF& o : plates) {
                 if (std::abs(c.x - o.x) < side + gap && std::abs(c.y - o.y) < side + gap)
                     return false;
@@ -763,7 +780,10 @@ struct HeapRenderer::Impl {
                 const float reach = g.node_radius + band + gap;
                 if (ex * ex + ey * ey < reach * reach) return false;
             }
-            return true;
+            // Nor under another plate: a leader reads as its plate's only when it ends there.
+            return std::none_of(plates.begin(), plates.end(), [&](const PointF& o) {
+                return crosses(n, c, {o.x - half, o.y - half, o.x + half, o.y + half});
+            });
         };
         const KeyStyle lit{heap_token_now_fill, highlight_dark_text};
         for (const view::HeapLetterView& letter : p.letters) {
@@ -795,15 +815,16 @@ struct HeapRenderer::Impl {
                 }
                 if (placed) break;
             }
-            if (!placed) {
-                // No place on the rings: the clear place nearest the node anywhere above the
-                // array, on a leader.
+            // No place on the rings: the clear place nearest the node anywhere above the array,
+            // on a leader that passes by the other nodes and plates if one can.
+            for (const bool strict : {true, false}) {
+                if (placed) break;
                 float best = std::numeric_limits<float>::max();
                 const float step = 0.25F * side;
                 for (float y = g.panel.y0 + half; y <= g.slot_top - half; y += step) {
                     for (float x = g.panel.x0 + half; x <= g.panel.x1 - half; x += step) {
                         const float d = (x - n.x) * (x - n.x) + (y - n.y) * (y - n.y);
-                        if (d < best && clear({x, y})) {
+                        if (d < best && clear({x, y}) && (!strict || leader_clear(n, {x, y}))) {
                             best = d;
                             at = {x, y};
                             placed = true;
@@ -825,6 +846,7 @@ struct HeapRenderer::Impl {
                 const float to = std::max(0.0F, length - half);
                 const PointF b{n.x + dx * to / length, n.y + dy * to / length};
                 over.add_line(a, b, std::max(2.0F, 3.0F * unit), faded(lit.fill, alpha));
+                leaders.emplace_back(n, at);
             }
             over.add_rect(box, faded(lit.fill, alpha));
             if (p.reveal && letter.answer)
