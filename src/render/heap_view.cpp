@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -73,9 +74,19 @@ struct PanelGeometry {
     std::vector<std::string> title_lines;  ///< one, or two in a narrow panel
     float counters_baseline = 0.0F;
     float returned_baseline = 0.0F;  ///< the keys removed so far (when the panel shows them)
-    int counter_lines = 1;   ///< counters side by side, or one under the other in narrow panels
-    RectF tree;              ///< the node centres' box (tree panels)
-    RectF map;               ///< indexed heap's map column
+    int counter_lines = 1;  ///< counters side by side, or one under the other in narrow panels
+    RectF tree;             ///< the node centres' box (tree panels)
+    /// The panel less the map's column where the map stands at its right: the counters, the
+    /// tree and the array live in it (the title and the caption span the panel).
+    RectF body;
+    RectF map;              ///< indexed heap's map: beside the array, or a column at the right
+    bool map_side = false;  ///< the map is the column at the panel's right (a narrow panel)
+    std::vector<std::string> map_title_lines;  ///< the column's heading, one or two lines
+    std::size_t map_rows = 0;                  ///< entries in one group of the column
+    std::size_t map_groups = 1;                ///< groups of entries side by side
+    float map_key_w = 0.0F;                    ///< the column's key cell
+    float map_entry_w = 0.0F;                  ///< a key and its index
+    float map_group_gap = 0.0F;                ///< between groups of entries side by side
     float slot_size = 0.0F;  ///< a slot's height (and its width, unless its text needs more)
     float slot_w = 0.0F;     ///< a slot's width: wider than tall where a key or index needs it
     float slot_top = 0.0F;   ///< the top of the array's first row
@@ -90,6 +101,9 @@ struct PanelGeometry {
     /// as its word, its ends round).
     float node_half_w = 0.0F;
     std::vector<PointF> nodes;  ///< node centres, pixels
+    /// The panel is too small for its parts at the lesson size: the tree's levels or leaves
+    /// would touch, or the map's column or a counter would not fit.
+    bool cramped = false;
 };
 
 }  // namespace
@@ -105,12 +119,13 @@ struct HeapRenderer::Impl {
     HeapPalette colors;
     GlTarget target;  // the context and every GL object
 
-    std::map<int, FontAtlas> fonts;       // by pixel height (map nodes: stable addresses)
-    std::map<int, std::size_t> text_run;  // pixel height -> its run in list.text
-    DrawList list;                        // slots, edges, boxes under the nodes; glyphs
-    std::vector<DrawnText> drawn;         // the frame's text, for last_text()
-    OverlayBatch& under = list.under;     // slots, edges, boxes: before the nodes
-    OverlayBatch& over = list.over;       // token marker etc.: after the nodes
+    std::map<int, FontAtlas> fonts;           // by pixel height (map nodes: stable addresses)
+    std::map<int, std::size_t> text_run;      // pixel height -> its run in list.text
+    std::map<std::string, float> need_cache;  // panel_need by kind of panel
+    DrawList list;                            // slots, edges, boxes under the nodes; glyphs
+    std::vector<DrawnText> drawn;             // the frame's text, for last_text()
+    OverlayBatch& under = list.under;         // slots, edges, boxes: before the nodes
+    OverlayBatch& over = list.over;           // token marker etc.: after the nodes
 
     float unit = 1.0F;         // pixels per 1/720 of the frame height
     bool beside_code = false;  // the frame being built has a code column (--code)
@@ -264,8 +279,14 @@ struct HeapRenderer::Impl {
         // that the tree keeps its place when the operation (and its listing) changes.
         const float code_w = frame.code ? code_width(*frame.code) : 0.0F;
         const float panels_x1 = w - margin - (frame.code ? code_w + margin : 0.0F);
-        const std::vector<RectF> rects =
-            panel_rects(frame.panels.size(), {margin, strip_h, panels_x1, h - margin}, margin);
+        const RectF area{margin, strip_h, panels_x1, h - margin};
+        // Equal widths unless a panel needs more (an indexed heap's map column beside its tree):
+        // then it takes that from panels that need less.
+        const std::vector<RectF> equal = panel_rects(frame.panels.size(), area, margin);
+        std::vector<float> needs;
+        for (std::size_t p = 0; p < frame.panels.size(); ++p)
+            needs.push_back(panel_need(frame.panels[p], equal[p]));
+        const std::vector<RectF> rects = panel_rects_by_need(needs, area, margin);
         for (std::size_t p = 0; p < frame.panels.size(); ++p) {
             build_panel(frame.panels[p], rects[p]);
         }
@@ -356,9 +377,141 @@ struct HeapRenderer::Impl {
         return std::min(lines, max_caption_lines);
     }
 
+    /// The least radius of a node: a key at the lesson size with room over and under it.
+    [[nodiscard]] float least_radius() const {
+        return node_outline() + (0.08F + 1.4F * key_drop) * small_px();
+    }
+
+    /// Whether the indexed heap's map fits beside the array in a panel `inner_w` wide: both as
+    /// wide as the slots at their least width (a key or index at the lesson size).
+    bool map_beside_array(const view::HeapPanelView& p, float inner_w) {
+        const auto slots = static_cast<float>(std::max<std::size_t>(p.capacity, 1));
+        const float least_slot = std::max(std::ceil(small_px() / 0.85F), slot_text_width(p));
+        return (inner_w - 3.0F * padding()) / (2.0F * slots) >= least_slot;
+    }
+
+    /// The width a panel needs: the least at which its layout is not cramped (the tree's nodes
+    /// apart at the lesson size with the caption's lines its width gives, the map's column, the
+    /// counters), found from `equal`, its equal share, down (or up, for a map's column) in steps
+    /// of 4 %; arrays alone and a panel without a map ask no more than their share. Cached per
+    /// kind of panel: it does not change from frame to frame.
+    float panel_need(const view::HeapPanelView& p, RectF equal) {
+        const std::string kind = p.title + "|" + std::to_string(p.capacity) + "|" +
+                                 std::to_string(p.arity) + "|" + std::to_string(p.tree) +
+                                 std::to_string(p.show_map) + std::to_string(p.returned.empty()) +
+                                 std::to_string(p.counters.size()) + "|" +
+                                 std::to_string(equal.width()) + "|" +
+                                 std::to_string(equal.height()) + std::to_string(beside_code);
+        if (const auto it = need_cache.find(kind); it != need_cache.end()) return it->second;
+        const auto cramped_at = [&](float scale) {
+            RectF r = equal;
+            r.x1 = r.x0 + scale * equal.width();
+            return layout_panel(p, r).cramped;
+        };
+        // Arrays alone keep their share (their rows would wrap); a panel without a map takes
+        // no more than its share, it only gives what it can spare to a map's column.
+        if (!p.tree) return equal.width();
+        float scale = 1.0F;
+        if (cramped_at(scale)) {
+            if (!p.show_map) return equal.width();
+            while (scale < 2.5F && cramped_at(scale)) scale += 0.04F;
+        } else {
+            while (scale > 0.6F && !cramped_at(scale - 0.04F)) scale -= 0.04F;
+        }
+        const float need = scale * equal.width();
+        need_cache.emplace(kind, need);
+        return need;
+    }
+
+    /// The indexed heap's map as a column (narrow panels): its heading (one line, or two), then
+    /// one entry a line, the key and its index; in two or more groups side by side where the
+    /// column is not tall enough (`height`). Sets the map_* fields of `g` and returns the
+    /// column's width and height.
+    PointF map_column(const view::HeapPanelView& p, float height, PanelGeometry& g) {
+        const FontAtlas& f = font(small_px());
+        const float lh = f.line_height();
+        const std::size_t entries = std::max<std::size_t>(p.capacity, 1);
+        const auto last = static_cast<long long>(entries) - 1 + p.index_base;
+        g.map_key_w = f.text_width(config.widest_key);
+        g.map_entry_w = g.map_key_w + 0.6F * f.pixel_height() + f.text_width(std::to_string(last));
+        g.map_group_gap = 0.9F * f.pixel_height();
+        // The heading on one line, or split where its two lines are narrowest.
+        std::vector<std::string> words;
+        for (std::size_t at = 0; at < p.map_title.size();) {
+            const std::size_t space = p.map_title.find(' ', at);
+            const std::size_t end = space == std::string::npos ? p.map_title.size() : space;
+            if (end > at) words.push_back(p.map_title.substr(at, end - at));
+            at = end + 1;
+        }
+        const auto joined = [&](std::size_t a, std::size_t b) {
+            std::string out;
+            for (std::size_t k = a; k < b; ++k) out += (out.empty() ? "" : " ") + words[k];
+            return out;
+        };
+        std::vector<std::string> two{p.map_title};
+        float two_w = f.text_width(p.map_title);
+        for (std::size_t k = 1; k < words.size(); ++k) {
+            const float w =
+                std::max(f.text_width(joined(0, k)), f.text_width(joined(k, words.size())));
+            if (w < two_w) {
+                two_w = w;
+                two = {joined(0, k), joined(k, words.size())};
+            }
+        }
+        PointF size{};
+        for (std::size_t groups = 1; groups <= 4; ++groups) {
+            g.map_rows = (entries + groups - 1) / groups;
+            g.map_groups = groups;
+            const float body_w = static_cast<float>(groups) * g.map_entry_w +
+                                 static_cast<float>(groups - 1) * g.map_group_gap;
+            const bool one_line = f.text_width(p.map_title) <= std::max(body_w, two_w);
+            g.map_title_lines = one_line ? std::vector<std::string>{p.map_title} : two;
+            size = {std::max(body_w, one_line ? f.text_width(p.map_title) : two_w),
+                    static_cast<float>(g.map_title_lines.size() + g.map_rows) * lh};
+            if (size.y <= height) break;
+        }
+        return size;
+    }
+
+    /// Where a panel's parts go. The indexed heap's map: beside the array where the panel is
+    /// wide enough for both, else a column at the panel's right beside the counters and the
+    /// tree, as tall as they are (the tree needs height more than width), the array and the
+    /// caption under it across the panel.
     PanelGeometry layout_panel(const view::HeapPanelView& p, RectF r) {
+        const float pad = padding();
+        if (!p.show_map || !p.tree || map_beside_array(p, r.width() - 2.0F * pad))
+            return layout_parts(p, r, MapPlace::beside_array, 0.0F);
+        // The column's height from a layout without it (its width changes only the tree's).
+        const PanelGeometry plain = layout_parts(p, r, MapPlace::column, 0.0F);
+        const float top = plain.counters_baseline - font(small_px()).ascent();
+        const float bottom = plain.slot_top - 1.5F * pad;
+        PanelGeometry sizing;
+        const PointF size = map_column(p, bottom - top, sizing);
+        PanelGeometry g = layout_parts(p, r, MapPlace::column, size.x + pad);
+        (void)map_column(p, bottom - top, g);
+        g.map = {r.x1 - pad - size.x, top, r.x1 - pad, top + size.y};
+        g.cramped = g.cramped || g.map.y1 > std::min(bottom, g.slot_top - 1.5F * pad) + 0.5F;
+        if (!g.cramped) return g;
+        // Too narrow for the column as well (panels that cannot spare the width): the map
+        // over the array, one column per key, as wide as the array's row; the tree gives it
+        // its height.
+        PanelGeometry above = layout_parts(p, r, MapPlace::over_array, 0.0F);
+        above.cramped = true;
+        return above;
+    }
+
+    /// Where the indexed heap's map goes (layout_panel).
+    enum class MapPlace { beside_array, column, over_array };
+
+    /// The layout of a panel with its map at `place`; the counters and the tree leave the
+    /// panel's right `column` pixels free (the map's column).
+    PanelGeometry layout_parts(const view::HeapPanelView& p, RectF r, MapPlace place,
+                               float column) {
         PanelGeometry g;
+        g.map_side = place == MapPlace::column;
         g.panel = r;
+        g.body = r;
+        g.body.x1 -= column;
         const float pad = padding();
         const FontAtlas& small = font(small_px());
         const FontAtlas& caption = font(caption_px());
@@ -368,21 +521,25 @@ struct HeapRenderer::Impl {
         g.counters_baseline = g.title_baseline +
                               static_cast<float>(g.title_lines.size() - 1) * title.line_height() +
                               small.line_height() * 1.15F;
-        g.counter_lines = counters_fit(p, r.width() - 2.0F * pad) ? 1 : 2;
+        g.caption_lines = caption_lines(caption, r.width() - 2.0F * pad);
+        g.caption_top = r.y1 - pad - static_cast<float>(g.caption_lines) * caption.line_height();
+        const RectF b = g.body;
+        for (const view::HeapCounter& c : p.counters) {
+            g.cramped = g.cramped || small.text_width(c.label + " 0000") > b.width() - 2.0F * pad;
+        }
+        g.counter_lines = counters_fit(p, b.width() - 2.0F * pad) ? 1 : 2;
         float counters_bottom =
             g.counters_baseline + static_cast<float>(g.counter_lines - 1) * small.line_height();
         if (!p.returned.empty()) {
             g.returned_baseline = counters_bottom + small.line_height();
             counters_bottom = g.returned_baseline;
         }
-        g.caption_lines = caption_lines(caption, r.width() - 2.0F * pad);
-        g.caption_top = r.y1 - pad - static_cast<float>(g.caption_lines) * caption.line_height();
 
         // The tree must hold its levels apart at the least node size (a key at the lesson
         // size); where the panel leaves it less height, the array's slots give theirs (never
         // under what their keys need) and the layout is made again.
         const int levels = std::max(tree_levels(p.capacity, p.arity), 1);
-        const float least = node_outline() + (0.08F + 1.4F * key_drop) * small_px();
+        const float least = least_radius();
         const float tree_needs =
             static_cast<float>(levels) * 2.0F * least + static_cast<float>(levels - 1) * node_gap();
         // Deep trees need the height more than the array does.
@@ -393,16 +550,16 @@ struct HeapRenderer::Impl {
         for (int pass = 0; pass < 2; ++pass) {
             // The array row: square slots, as large as the width allows, at most ~1/9 of the
             // height.
-            const float inner_w = r.width() - 2.0F * pad;
+            const float inner_w = r.width() - 2.0F * pad;  // the array spans the panel
             const std::size_t slots = std::max<std::size_t>(p.capacity, 1);
             // Heapsort's panel keeps room for the gap before the sorted part from the start.
             const float gap_slots = p.heap_size != SIZE_MAX ? 0.4F : 0.0F;
             g.slot_size = std::min(inner_w / (static_cast<float>(slots) + gap_slots), slot_cap);
-            if (p.show_map && beside_code) {
-                // Beside the code the panel is narrow: the map would go between the tree and the
-                // array and squeeze the tree; slightly smaller slots keep it beside the array.
+            if (p.show_map && place == MapPlace::beside_array) {
+                // The map beside the array, as wide: smaller slots keep it there (never under
+                // their least width: map_beside_array).
                 const float beside = (inner_w - 3.0F * pad) / (2.0F * static_cast<float>(slots));
-                if (beside >= 0.75F * g.slot_size) g.slot_size = std::min(g.slot_size, beside);
+                g.slot_size = std::min(g.slot_size, beside);
             }
             const float index_h = small.line_height();
             // Keys and indices at the lesson size at least: a slot as tall as that key needs, as
@@ -427,22 +584,24 @@ struct HeapRenderer::Impl {
                 return g;
             }
 
-            // The tree above the array; the indexed heap's map between them, one column per key.
-            // (Beside the array when the panel is wide enough: the tree keeps its height.)
+            // The tree above the array; the indexed heap's map beside the array, one column per
+            // key (or in its own column at the panel's right: map_side).
             float tree_bottom = g.slot_top - 1.5F * pad;
-            if (p.show_map) {
+            if (p.show_map && place == MapPlace::over_array) {
                 const float map_h = small.line_height() + 2.0F * map_font(g).line_height();
-                if (inner_w >= 2.0F * row_w + 3.0F * pad) {
-                    g.slots_x0 = r.x0 + 0.5F * (r.width() - 2.0F * row_w - 3.0F * pad);
-                    const float x0 = g.slots_x0 + row_w + 3.0F * pad;
-                    const float y0 = g.slot_top + 0.5F * g.slot_size - 0.5F * map_h;
-                    g.map = {x0, y0, x0 + row_w, y0 + map_h};
-                } else {
-                    g.map = {g.slots_x0, tree_bottom - map_h, g.slots_x0 + row_w, tree_bottom};
-                    tree_bottom = g.map.y0 - pad;
-                }
+                g.map = {g.slots_x0, tree_bottom - map_h, g.slots_x0 + row_w, tree_bottom};
+                tree_bottom = g.map.y0 - pad;
             }
-            tree = {r.x0 + pad, counters_bottom + pad, r.x1 - pad, tree_bottom};
+            if (p.show_map && place == MapPlace::beside_array) {
+                const float map_h = small.line_height() + 2.0F * map_font(g).line_height();
+                g.slots_x0 = r.x0 + 0.5F * (r.width() - 2.0F * row_w - 3.0F * pad);
+                const float x0 = g.slots_x0 + row_w + 3.0F * pad;
+                const float y0 = g.slot_top + 0.5F * g.slot_size - 0.5F * map_h;
+                g.map = {x0, y0, x0 + row_w, y0 + map_h};
+                // A map taller than the array's row reaches up: the tree stays above it.
+                tree_bottom = std::min(tree_bottom, g.map.y0 - pad);
+            }
+            tree = {b.x0 + pad, counters_bottom + pad, b.x1 - pad, tree_bottom};
             const float short_by = tree_needs - tree.height();
             if (short_by <= 0.0F) break;
             if (pass == 1) {
@@ -489,7 +648,38 @@ struct HeapRenderer::Impl {
         if (leaves == 1) {
             for (PointF& n : g.nodes) n.x = 0.5F * (tree.x0 + tree.x1);
         }
+        // A key at the lesson size inside its node's outline; no two nodes touching.
+        g.cramped = g.cramped || nodes_touch(g) || !key_fits(g);
         return g;
+    }
+
+    /// Whether two nodes of the tree overlap (pills: the points within the radius of a centre
+    /// line node_half_w - node_radius to each side).
+    [[nodiscard]] static bool nodes_touch(const PanelGeometry& g) {
+        const float band = std::max(0.0F, g.node_half_w - g.node_radius);
+        for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+            for (std::size_t j = i + 1; j < g.nodes.size(); ++j) {
+                const float dx =
+                    std::max(0.0F, std::abs(g.nodes[i].x - g.nodes[j].x) - 2.0F * band);
+                const float dy = g.nodes[i].y - g.nodes[j].y;
+                if (dx * dx + dy * dy < 4.0F * g.node_radius * g.node_radius) return true;
+            }
+        }
+        return false;
+    }
+
+    /// Whether the widest key at the lesson size lies inside a node of `g` (its round ends
+    /// included) with a margin of a tenth of a capital.
+    [[nodiscard]] bool key_fits(const PanelGeometry& g) {
+        const FontAtlas& f = font(small_px());
+        const float cap = f.pixel_height() * cap_height_per_pixel_height;
+        const float inner = g.node_radius - 0.1F * cap - 0.5F;
+        const float rise = cap - key_drop * f.pixel_height();  // the box's top over the centre
+        const float lower = std::max(rise, key_drop * f.pixel_height());
+        if (inner <= lower) return false;
+        const float reach =
+            g.node_half_w - g.node_radius + std::sqrt(inner * inner - lower * lower);
+        return 0.5F * f.text_width(config.widest_key) <= reach;
     }
 
     [[nodiscard]] PointF slot_centre(const PanelGeometry& g, const view::HeapPanelView& p,
@@ -513,9 +703,11 @@ struct HeapRenderer::Impl {
     }
 
     /// A question (`--questions on`): each candidate's letter on a plate beside its node, at the
-    /// first of a few places around it that covers no node (so no key) and no other plate; the
-    /// countdown in the panel's top right corner. The reveal lights the answer's plate and
-    /// fades the others.
+    /// first of a few places around it that covers no node, no text (key, index, title,
+    /// counters, caption, map) and no other plate; where two or three trees share the frame and
+    /// crowd it, farther out with a short leader line to its node (the plate then reads as its
+    /// node's however near another node is). The countdown in the panel's top right corner. The
+    /// reveal lights the answer's plate and fades the others.
     void build_question(const view::HeapPanelView& p, const PanelGeometry& g) {
         const FontAtlas& f = font(1.15F * lesson_px());
         const float side = 1.3F * f.pixel_height();
@@ -533,15 +725,65 @@ struct HeapRenderer::Impl {
             }
             return true;
         };
+        // Every text of the panel drawn so far (the question comes last), with the slot or cell
+        // it labels: a plate covers none of them.
+        std::vector<RectF> texts;
+        for (const DrawnText& d : drawn) {
+            if (d.shape && d.shape->corner > 0.0F) continue;  // a node's key: off_nodes
+            const DrawnShape& b = d.shape ? *d.shape : d.box;
+            texts.push_back({b.x0 - gap, b.y0 - gap, b.x1 + gap, b.y1 + gap});
+        }
+        const auto off_text = [&](const RectF& r) {
+            return std::none_of(texts.begin(), texts.end(), [&](const RectF& t) {
+                return t.x0 < r.x1 && r.x0 < t.x1 && t.y0 < r.y1 && r.y0 < t.y1;
+            });
+        };
+        // The leaders drawn so far (node to plate): a later plate covers none of them.
+        std::vector<std::pair<PointF, PointF>> leaders;
+        const auto crosses = [&](PointF a, PointF b, const RectF& r) {
+            const float length = std::hypot(b.x - a.x, b.y - a.y);
+            const int steps = std::max(1, static_cast<int>(length / 2.0F));
+            for (int k = 0; k <= steps; ++k) {
+                const float t = static_cast<float>(k) / static_cast<float>(steps);
+                const float x = a.x + t * (b.x - a.x);
+                const float y = a.y + t * (b.y - a.y);
+                if (x > r.x0 - gap && x < r.x1 + gap && y > r.y0 - gap && y < r.y1 + gap)
+                    return true;
+            }
+            return false;
+        };
         const auto clear = [&](PointF c) {
-            if (!off_nodes({c.x - half, c.y - half, c.x + half, c.y + half})) return false;
+            const RectF r{c.x - half, c.y - half, c.x + half, c.y + half};
+            if (!off_nodes(r) || !off_text(r)) return false;
+            for (const auto& [a, b] : leaders) {
+                if (crosses(a, b, r)) return false;
+            }
             for (const PointF& o : plates) {
                 if (std::abs(c.x - o.x) < side + gap && std::abs(c.y - o.y) < side + gap)
                     return false;
             }
             // Inside the panel, above its array (the array's keys stay uncovered too).
-            return c.x - half >= g.panel.x0 && c.x + half <= g.panel.x1 &&
-                   c.y - half >= g.panel.y0 && c.y + half <= g.slot_top - gap;
+            return r.x0 >= g.panel.x0 + gap && r.x1 <= g.panel.x1 - gap &&
+                   r.y0 >= g.panel.y0 + gap && r.y1 <= g.slot_top - gap;
+        };
+        // A leader from node `n` to a plate at `c` passes by every other node.
+        const auto leader_clear = [&](PointF n, PointF c) {
+            const float dx = c.x - n.x;
+            const float dy = c.y - n.y;
+            const float length2 = std::max(dx * dx + dy * dy, 1e-6F);
+            for (const PointF& o : g.nodes) {
+                if (o.x == n.x && o.y == n.y) continue;
+                const float t =
+                    std::clamp(((o.x - n.x) * dx + (o.y - n.y) * dy) / length2, 0.0F, 1.0F);
+                const float ex = n.x + t * dx - o.x;
+                const float ey = n.y + t * dy - o.y;
+                const float reach = g.node_radius + band + gap;
+                if (ex * ex + ey * ey < reach * reach) return false;
+            }
+            // Nor under another plate: a leader reads as its plate's only when it ends there.
+            return std::none_of(plates.begin(), plates.end(), [&](const PointF& o) {
+                return crosses(n, c, {o.x - half, o.y - half, o.x + half, o.y + half});
+            });
         };
         const KeyStyle lit{heap_token_now_fill, highlight_dark_text};
         for (const view::HeapLetterView& letter : p.letters) {
@@ -550,46 +792,84 @@ struct HeapRenderer::Impl {
             const float reach = g.node_radius + gap + half;
             const float reach_x = reach + band;  // beside a pill, past its band
             // Up right first (clear of the edge to the parent for a left child), then around.
-            const float dirs[][2] = {{0.72F, -0.72F}, {-0.72F, -0.72F}, {1.0F, 0.0F},
-                                     {-1.0F, 0.0F},   {0.72F, 0.72F},   {-0.72F, 0.72F},
-                                     {0.0F, 1.0F},    {0.0F, -1.0F}};
+            const float dirs[][2] = {
+                {0.72F, -0.72F}, {-0.72F, -0.72F}, {1.0F, 0.0F},   {-1.0F, 0.0F},
+                {0.72F, 0.72F},  {-0.72F, 0.72F},  {0.0F, 1.0F},   {0.0F, -1.0F},
+                {0.38F, -0.92F}, {-0.38F, -0.92F}, {0.38F, 0.92F}, {-0.38F, 0.92F},
+                {0.92F, -0.38F}, {-0.92F, -0.38F}, {0.92F, 0.38F}, {-0.92F, 0.38F}};
             PointF at{n.x + dirs[0][0] * reach_x, n.y + dirs[0][1] * reach};
-            // Beside the node first; where its neighbours' pills crowd it, farther out (the
-            // plate's place still reads as its node's: nearer to it than to any other).
+            // Beside the node first; where its neighbours crowd it, farther out, on a leader.
             bool placed = false;
-            for (const float farther : {0.0F, 0.6F * side, 1.2F * side}) {
+            bool leader = false;
+            for (const float farther : {0.0F, 0.5F * side, 1.0F * side, 1.6F * side, 2.3F * side,
+                                        3.2F * side, 4.2F * side}) {
                 for (const auto& d : dirs) {
                     const PointF c{n.x + d[0] * (reach_x + farther),
                                    n.y + d[1] * (reach + farther)};
-                    if (clear(c)) {
+                    if (clear(c) && (farther == 0.0F || leader_clear(n, c))) {
                         at = c;
                         placed = true;
+                        leader = farther > 0.0F;
                         break;
                     }
                 }
                 if (placed) break;
             }
+            // No place on the rings: the clear place nearest the node anywhere above the array,
+            // on a leader that passes by the other nodes and plates if one can.
+            for (const bool strict : {true, false}) {
+                if (placed) break;
+                float best = std::numeric_limits<float>::max();
+                const float step = 0.25F * side;
+                for (float y = g.panel.y0 + half; y <= g.slot_top - half; y += step) {
+                    for (float x = g.panel.x0 + half; x <= g.panel.x1 - half; x += step) {
+                        const float d = (x - n.x) * (x - n.x) + (y - n.y) * (y - n.y);
+                        if (d < best && clear({x, y}) && (!strict || leader_clear(n, {x, y}))) {
+                            best = d;
+                            at = {x, y};
+                            placed = true;
+                            leader = true;
+                        }
+                    }
+                }
+            }
             plates.push_back(at);
             const float alpha = p.reveal && !letter.answer ? 0.35F : 1.0F;
             const RectF box{at.x - half, at.y - half, at.x + half, at.y + half};
+            if (leader) {
+                // From the node's outline to the plate's edge, as thick as a lit edge.
+                const float dx = at.x - n.x;
+                const float dy = at.y - n.y;
+                const float length = std::sqrt(dx * dx + dy * dy);
+                const float from = std::min(g.node_radius + band, 0.5F * length);
+                const PointF a{n.x + dx * from / length, n.y + dy * from / length};
+                const float to = std::max(0.0F, length - half);
+                const PointF b{n.x + dx * to / length, n.y + dy * to / length};
+                over.add_line(a, b, std::max(2.0F, 3.0F * unit), faded(lit.fill, alpha));
+                leaders.emplace_back(n, at);
+            }
             over.add_rect(box, faded(lit.fill, alpha));
             if (p.reveal && letter.answer)
                 over.add_frame(box, std::max(2.0F, 3.0F * unit), colors.node_outline);
-            centred(f, at, letter.letter, faded(lit.text, alpha));
+            DrawnShape plate{box.x0, box.y0, box.x1, box.y1, 0.0F};
+            centred(f, at, letter.letter, faded(lit.text, alpha), plate);
+            drawn.back().over = true;
         }
         if (!p.countdown.empty()) {
-            // At the tree's top right, else its top left, else just above the array: where it
-            // covers no node and no letter.
+            // At the tree's top right, else its top left, else just above the array, else beside
+            // the counters: where it covers no node, no letter and no text.
             const FontAtlas& big = font(caption_px());
-            const float w = big.text_width(p.countdown);
-            const float h = big.pixel_height();
-            const float right = g.panel.x1 - padding() - w;
-            const float left = g.panel.x0 + padding();
+            const float m = 0.15F * big.pixel_height();  // its margin either side
+            const float w = big.text_width(p.countdown) + 2.0F * m;
+            const float h = 1.15F * big.pixel_height();
+            const float right = g.body.x1 - padding() - w;
+            const float left = g.body.x0 + padding();
             const float top = g.tree.y0;
             const float low = g.slot_top - gap - h;
+            const float header = g.counters_baseline - big.ascent();
             const auto free = [&](float x, float y) {
                 const RectF r{x, y, x + w, y + h};
-                if (!off_nodes(r)) return false;
+                if (!off_nodes(r) || !off_text(r)) return false;
                 return std::none_of(plates.begin(), plates.end(), [&](const PointF& o) {
                     return o.x + half > r.x0 && o.x - half < r.x1 && o.y + half > r.y0 &&
                            o.y - half < r.y1;
@@ -597,15 +877,17 @@ struct HeapRenderer::Impl {
             };
             float x = right;
             float y = top;
-            for (const PointF spot :
-                 {PointF{right, top}, PointF{left, top}, PointF{right, low}, PointF{left, low}}) {
+            for (const PointF spot : {PointF{right, top}, PointF{left, top}, PointF{right, low},
+                                      PointF{left, low}, PointF{right, header}}) {
                 if (free(spot.x, spot.y)) {
                     x = spot.x;
                     y = spot.y;
                     break;
                 }
             }
-            text(big, x, y + big.ascent(), p.countdown, heap_token_now_fill);
+            text(big, x + m, y + big.ascent(), p.countdown, heap_token_now_fill,
+                 DrawnShape{x, y, x + w, y + h, 0.0F});
+            drawn.back().over = true;
         }
     }
 
@@ -666,7 +948,7 @@ struct HeapRenderer::Impl {
         const FontAtlas& small = font(small_px());
         if (!p.returned.empty()) {
             text(small, g.panel.x0 + pad, g.returned_baseline,
-                 newest_that_fit(small, p.returned, g.panel.width() - 2.0F * pad), colors.counter);
+                 newest_that_fit(small, p.returned, g.body.width() - 2.0F * pad), colors.counter);
         }
         if (g.counter_lines == 1) {
             text(small, g.panel.x0 + pad, g.counters_baseline, counters_line(p), colors.counter);
@@ -824,6 +1106,10 @@ struct HeapRenderer::Impl {
     /// The indexed heap's map as a table over the array: for each key (in the order of their
     /// handles), the index of the slot that holds it; entries an exchange is updating lit.
     void build_map(const view::HeapPanelView& p, const PanelGeometry& g) {
+        if (g.map_side) {
+            build_map_column(p, g);
+            return;
+        }
         const FontAtlas& head = font(small_px());
         const FontAtlas& f = map_font(g);
         text(head, g.map.x0, g.map.y0 + head.ascent(), p.map_title, colors.map_header);
@@ -839,6 +1125,40 @@ struct HeapRenderer::Impl {
             }
             centred(f, {x, key_y}, row.key, colors.title);
             centred(f, {x, index_y}, row.index, row.updated ? heap_map_update_text : colors.index);
+        }
+    }
+
+    /// The map as a column (map_column): the heading, then a line for each key, in the order
+    /// of their handles, with the index of the slot that holds it; entries an exchange is
+    /// updating lit.
+    void build_map_column(const view::HeapPanelView& p, const PanelGeometry& g) {
+        const FontAtlas& f = font(small_px());
+        const float lh = f.line_height();
+        float baseline = g.map.y0 + f.ascent();
+        for (const std::string& line : g.map_title_lines) {
+            text(f, g.map.x1 - f.text_width(line), baseline, line, colors.map_header);
+            baseline += lh;
+        }
+        const float top = g.map.y0 + static_cast<float>(g.map_title_lines.size()) * lh;
+        const std::size_t rows = std::max<std::size_t>(g.map_rows, 1);
+        for (std::size_t c = 0; c < p.map.size(); ++c) {
+            const view::HeapMapRow& row = p.map[c];
+            const auto group = static_cast<float>(c / rows);
+            const float y = top + (static_cast<float>(c % rows) + 0.5F) * lh;
+            // Groups from left to right, flush with the column's right edge (the heading's).
+            const auto groups = static_cast<float>(g.map_groups);
+            const float x0 = g.map.x1 - groups * g.map_entry_w - (groups - 1.0F) * g.map_group_gap +
+                             group * (g.map_entry_w + g.map_group_gap);
+            const float x1 = x0 + g.map_entry_w;
+            const float index_w = f.text_width(row.index);
+            if (row.updated) {
+                const float m = 0.25F * f.pixel_height();
+                under.add_rect({x1 - index_w - m, y - 0.5F * lh, x1 + m, y + 0.5F * lh},
+                               heap_mark_style(view::SlotMark::moving, colors).fill);
+            }
+            centred(f, {x0 + 0.5F * g.map_key_w, y}, row.key, colors.title);
+            text(f, x1 - index_w, y + key_drop * f.pixel_height(), row.index,
+                 row.updated ? heap_map_update_text : colors.index);
         }
     }
 

@@ -104,4 +104,48 @@ std::vector<RectF> panel_rects(std::size_t panels, RectF area, float gap) {
     return out;
 }
 
+std::vector<RectF> panel_rects_by_need(const std::vector<float>& needs, RectF area, float gap) {
+    std::vector<RectF> out = panel_rects(needs.size(), area, gap);
+    if (needs.empty()) return out;
+    const float total = area.width() - gap * static_cast<float>(needs.size() - 1);
+    float sum = 0.0F;
+    for (const float n : needs) sum += std::max(n, 0.0F);
+    std::vector<float> widths(needs.size(), total / static_cast<float>(needs.size()));
+    // More than the row holds: equal widths (every panel as cramped as its neighbour, none
+    // sacrificed to another).
+    if (sum > total) return out;
+    {
+        // Water filling: the panels that need more than an equal share of what is left get
+        // their need, until every other panel's need fits the share.
+        std::vector<bool> fixed(needs.size(), false);
+        for (bool changed = true; changed;) {
+            changed = false;
+            float left = total;
+            std::size_t free = 0;
+            for (std::size_t i = 0; i < needs.size(); ++i) {
+                if (fixed[i]) {
+                    left -= needs[i];
+                } else {
+                    ++free;
+                }
+            }
+            const float share = free > 0 ? left / static_cast<float>(free) : 0.0F;
+            for (std::size_t i = 0; i < needs.size(); ++i) {
+                if (!fixed[i] && needs[i] > share) {
+                    fixed[i] = true;
+                    changed = true;
+                }
+            }
+            for (std::size_t i = 0; i < needs.size(); ++i) widths[i] = fixed[i] ? needs[i] : share;
+        }
+    }
+    float x0 = area.x0;
+    for (std::size_t i = 0; i < needs.size(); ++i) {
+        out[i].x0 = x0;
+        out[i].x1 = x0 + widths[i];
+        x0 = out[i].x1 + gap;
+    }
+    return out;
+}
+
 }  // namespace collide::render

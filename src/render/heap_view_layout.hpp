@@ -30,6 +30,14 @@ namespace collide::render {
 /// Panels of a frame, side by side in one row inside `area`, `gap` pixels apart.
 [[nodiscard]] std::vector<RectF> panel_rects(std::size_t panels, RectF area, float gap);
 
+/// Panels side by side in one row inside `area`, `gap` pixels apart, each at least as wide as
+/// its entry in `needs` (pixels) where the row allows: equal widths when every panel fits its
+/// equal share (as panel_rects), else the panels that need more get it and the others share the
+/// rest equally (never under their own need); when the needs add up to more than the row, equal
+/// widths again (no panel is given up for another).
+[[nodiscard]] std::vector<RectF> panel_rects_by_need(const std::vector<float>& needs, RectF area,
+                                                     float gap);
+
 /// Columns of the panel grid for `panels` panels.
 [[nodiscard]] std::size_t panel_columns(std::size_t panels) noexcept;
 

@@ -145,6 +145,30 @@ TEST_CASE("heap view: panels share one row and the legible limit shrinks with th
     CHECK(max_legible_keys(5) == 7);  // the lecture's trace holds 7 keys at most
 }
 
+TEST_CASE("heap view: panels share the row by need (an indexed heap's map column)") {
+    const RectF area{0.0F, 0.0F, 320.0F, 100.0F};
+    // Every need within an equal share: equal widths, as panel_rects.
+    std::vector<RectF> r = panel_rects_by_need({50.0F, 90.0F, 100.0F}, area, 10.0F);
+    REQUIRE(r.size() == 3);
+    for (const RectF& p : r) CHECK(p.width() == doctest::Approx(100.0F));
+    // One needs more: it gets it, the others share the rest, the row still ends at the area's.
+    r = panel_rects_by_need({60.0F, 140.0F, 60.0F}, area, 10.0F);
+    CHECK(r[1].width() == doctest::Approx(140.0F));
+    CHECK(r[0].width() == doctest::Approx(80.0F));
+    CHECK(r[2].width() == doctest::Approx(80.0F));
+    CHECK(r[1].x0 == doctest::Approx(r[0].x1 + 10.0F));
+    CHECK(r[2].x1 == doctest::Approx(320.0F));
+    // A share that a second panel then needs more than: both get their need.
+    r = panel_rects_by_need({20.0F, 150.0F, 95.0F}, area, 10.0F);
+    CHECK(r[1].width() == doctest::Approx(150.0F));
+    CHECK(r[2].width() == doctest::Approx(95.0F));
+    CHECK(r[0].width() == doctest::Approx(55.0F));
+    // More than the row holds: equal widths, as panel_rects.
+    r = panel_rects_by_need({150.0F, 300.0F, 150.0F}, area, 10.0F);
+    for (const RectF& p : r) CHECK(p.width() == doctest::Approx(100.0F));
+    CHECK(r[2].x1 == doctest::Approx(320.0F));
+}
+
 TEST_CASE("heap view: a bad config is an input error, a bad frame a failed assertion") {
     HeapViewConfig tiny = config_of(32, 90);
     CHECK_THROWS_AS(HeapRenderer(tiny, test::test_backend()), Error);

@@ -170,15 +170,47 @@ std::string squashed(const std::vector<DrawnText>& drawn, const std::string& whe
     return out.str();
 }
 
+/// What a plate laid over the picture (a question's letter, DrawnText::over) covers, a line
+/// each: another plate, or any other text or the slot or cell it labels (nodes: squashed).
+std::string plates_cover(const std::vector<DrawnText>& drawn, const std::string& where) {
+    std::ostringstream out;
+    const auto overlap = [](const DrawnShape& a, const DrawnShape& b) {
+        return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+    };
+    for (std::size_t i = 0; i < drawn.size(); ++i) {
+        if (!drawn[i].over || !drawn[i].shape) continue;
+        const DrawnShape& plate = *drawn[i].shape;
+        for (std::size_t j = 0; j < drawn.size(); ++j) {
+            const DrawnText& d = drawn[j];
+            if (j == i || (d.shape && d.shape->corner > 0.0F)) continue;
+            const DrawnShape other = d.shape ? *d.shape : d.box;
+            if (overlap(plate, other)) {
+                out << where << "plate '" << drawn[i].text << "' [" << plate.x0 << ", " << plate.y0
+                    << ", " << plate.x1 << ", " << plate.y1 << "] covers '" << d.text << "' ["
+                    << other.x0 << ", " << other.y0 << ", " << other.x1 << ", " << other.y1
+                    << "]\n";
+            }
+        }
+    }
+    return out.str();
+}
+
 }  // namespace
 
-TEST_CASE("heap trees never squash: 1 to 3 heaps of 11 and 15 keys at -q l and -q m") {
+TEST_CASE(
+    "heap trees never squash: 1 to 3 heaps of 11 and 15 keys, indexed among them, -q l and -q m") {
     // Issue 44: three heaps side by side with 11 keys at -q l overlapped their nodes, with
     // caption lines reserved that no caption used. Every frame at rest (no exchange under way:
     // the two keys of an exchange pass each other by design) of a lesson that fills the heaps.
     const char* eleven = "P Q E X A M L S O R T * *";
     const char* fifteen = "P Q E X A M L S O R T Y U I N * *";
-    const std::vector<std::string> impls{"binary", "binary,dary:3", "binary,dary:3,dary:4"};
+    // The indexed heap's map (keys[i] / qp[i]) shares its panel with the tree: it took the
+    // tree's height beside another heap and left about 20 px for four levels. Not yet here: an
+    // indexed heap of 11 keys beside two other heaps, or of 15 beside one, at -q l and -q m: its
+    // tree, its map and the other trees do not all fit at the lesson size (docs/heap.md).
+    const std::vector<std::string> impls{"binary",          "binary,dary:3", "binary,dary:3,dary:4",
+                                         "indexed",         "indexed:2",     "binary,indexed",
+                                         "indexed:3,dary:4"};
     for (const std::string ops : {eleven, fifteen}) {
         for (const std::string& impl : impls) {
             // 15 keys in three panels: more than the program draws (max_legible_keys; `collide
@@ -186,6 +218,7 @@ TEST_CASE("heap trees never squash: 1 to 3 heaps of 11 and 15 keys at -q l and -
             const auto panels =
                 static_cast<std::size_t>(std::count(impl.begin(), impl.end(), ',') + 1);
             if (ops == fifteen && 15 > max_legible_keys(panels)) continue;
+            if (ops == fifteen && panels > 1 && impl.find("indexed") != std::string::npos) continue;
             CAPTURE(ops);
             CAPTURE(impl);
             const show::HeapProgram lesson = heap_lesson(ops.c_str(), impl);
@@ -215,15 +248,22 @@ TEST_CASE("heap trees never squash: 1 to 3 heaps of 11 and 15 keys at -q l and -
 }
 
 TEST_CASE(
-    "heap questions: letter plates and the countdown cover no node in one panel, -q l and m") {
+    "heap questions: letter plates and the countdown cover no node, key or plate, 1 to 3 "
+    "panels, -q l and m") {
     // Issue 45: `collide heap --questions on` put letter plates on word keys' pill-shaped nodes
-    // (the free-place check knew only the radius) and its countdown on a top node. Every frame of
-    // a question and its reveal, letters and words, in one panel. Two and three panels side by
-    // side still have no free place for every plate (their trees are too tight): not yet here.
+    // (the free-place check knew only the radius) and its countdown on a top node; with two or
+    // three heaps side by side the trees left no free place beside a node and the plates sat on
+    // nodes. Every frame of a question and its reveal, letters and words, 1 to 3 panels (the
+    // indexed heap among them): plates cover no node, no text, no slot and no other plate, and
+    // their letters are at least 2.8 % of the frame high, inside their plates.
     const std::vector<std::pair<std::string, std::string>> lessons{
         {"P Q E X A M L S * *", "binary"},
         {"apple banana cherry damson elder fig grape * *", "binary"},
-        {"apple banana cherry damson elder fig grape hazel * *", "dary:4"}};
+        {"apple banana cherry damson elder fig grape hazel * *", "dary:4"},
+        {"P Q E X A M L S * *", "binary,dary:3"},
+        {"P Q E X A M L S O R T * *", "binary,dary:3,dary:4"},
+        {"P Q E * X A M * P L E *", "binary,dary:3,indexed"},
+        {"P Q E X A M L S O R * *", "indexed,binary"}};
     for (const auto& [ops, impl] : lessons) {
         CAPTURE(ops);
         CAPTURE(impl);
@@ -235,6 +275,7 @@ TEST_CASE(
             Image image;
             std::string bad;
             int asked = 0;
+            int labels = 0;
             for (double t = 0.0; t <= lesson.duration(); t += 0.1) {
                 const view::HeapFrameView frame = lesson.frame_at(t);
                 const bool question =
@@ -247,8 +288,19 @@ TEST_CASE(
                                 [](const view::HeapPanelView& v) { return v.swap; });
                 if (!question || moving) continue;
                 renderer.render(frame, image);
-                bad += squashed(renderer.last_text(),
-                                std::string(p.name) + " at " + std::to_string(t) + " s: ");
+                const std::string where = std::string(p.name) + " at " + std::to_string(t) + " s: ";
+                bad += squashed(renderer.last_text(), where);
+                bad += plates_cover(renderer.last_text(), where);
+                bad += misfits(renderer.last_text(), p, t, labels);
+                // Every letter and countdown drawn, on its plate.
+                std::size_t letters = 0;
+                for (const view::HeapPanelView& v : frame.panels)
+                    letters += v.letters.size() + (v.countdown.empty() ? 0 : 1);
+                const auto plates =
+                    std::count_if(renderer.last_text().begin(), renderer.last_text().end(),
+                                  [](const DrawnText& d) { return d.over; });
+                CHECK_MESSAGE(static_cast<std::size_t>(plates) == letters,
+                              where << plates << " plates for " << letters << " letters");
                 ++asked;
             }
             CHECK(asked > 5);

@@ -30,6 +30,9 @@ struct DrawnText {
     /// The tile, slot or node it labels (a key, a tile's number, a slot's index), if any: the
     /// text belongs inside it.
     std::optional<DrawnShape> shape;
+    /// Laid over the picture (a question's letter on its plate, `shape`): it must cover no other
+    /// text, shape or node.
+    bool over = false;
 };
 
 }  // namespace collide::render
