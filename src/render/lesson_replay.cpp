@@ -136,19 +136,34 @@ void LessonPainter::add_replay(const ReplayView& replay, const PanelLayout& pane
     const float body = body_font_->pixel_height();
     const float stroke = std::max(2.0F, std::round(body / 7.0F));
     const RectF inside = panel.box;
-    const auto color = [&](bool failure, float opacity) {
-        return faded(failure ? palette_.failure : palette_.text, opacity);
+    const auto color = [&](bool failure, float opacity, int tint = no_tint) {
+        if (failure) return faded(palette_.failure, opacity);
+        if (tint == no_tint) return faded(palette_.text, opacity);
+        const Rgb8 c = candidate_color(tint, config_.theme);
+        return faded({c.r, c.g, c.b, 255}, opacity);
     };
-    // The jump: a thick line with an arrowhead where the move ends.
+    // A question's contacts: thin, as the next collision's line (they join, they do not shout),
+    // so that the arrows and letters over them stay legible where candidates sit close.
+    const float thin = std::max(1.5F, std::round(body / 10.0F));
+    // The jump: a thick line with an arrowhead where the move ends; a velocity the same in the
+    // motion colour; a connector thin, without a head.
     for (const BoxLine& line : replay.lines) {
         PointF from = panel.to_pixels(line.from, box);
         PointF to = panel.to_pixels(line.to, box);
         const float dx = to.x - from.x;
         const float dy = to.y - from.y;
         const float length = std::hypot(dx, dy);
-        const Rgba8 c = color(line.failure, line.opacity);
+        Rgba8 c = color(line.failure, line.opacity, line.tint);
+        if (line.style == LineStyle::motion && !line.failure) {
+            const Rgb8 m = motion_arrow_color(config_.theme);
+            c = faded({m.r, m.g, m.b, 255}, line.opacity);
+        }
         const PointF tip = to;
         if (!clip_to(inside, from, to)) continue;
+        if (line.style == LineStyle::connector) {
+            list_.over.add_line(from, to, thin, c);
+            continue;
+        }
         list_.over.add_line(from, to, stroke, c);
         const float head = std::min(2.5F * body / 2.0F, 0.5F * length);
         if (length > 0.0F && head > 2.0F * stroke && tip.x == to.x && tip.y == to.y) {
@@ -196,7 +211,8 @@ void LessonPainter::add_replay(const ReplayView& replay, const PanelLayout& pane
                               ? p
                               : label_place(p, label.side, clear, half_w, half_h, inside, ghosts,
                                             labels_, 0.15F * body);
-        add_plate_label(Font::body, at, label.text, color(label.failure, label.opacity), inside);
+        add_plate_label(Font::body, at, label.text, color(label.failure, label.opacity, label.tint),
+                        inside);
     }
     if (!replay.heading.empty() && heading_clear_of_discs) {
         std::vector<Circle> discs;

@@ -174,6 +174,15 @@ Rgb8 next_event_color(Theme theme) noexcept {
     return theme == Theme::light ? next_event_light : next_event_dark;
 }
 
+Rgb8 candidate_color(int tint, Theme theme) noexcept {
+    const auto i = static_cast<std::size_t>(std::max(0, tint)) % candidate_tints;
+    return theme == Theme::light ? candidate_light[i] : candidate_dark[i];
+}
+
+Rgb8 motion_arrow_color(Theme theme) noexcept {
+    return rgb(palette(theme).text);
+}
+
 Rgb8 failure_color(Theme theme) noexcept {
     return rgb(palette(theme).failure);
 }
@@ -322,6 +331,13 @@ std::vector<ColorPair> color_pairs(Theme theme) {
                      rgb(code.panel), mark_contrast});
     pairs.push_back({"code: the current line's plate edge on the panel", rgb(code.plate_edge),
                      rgb(code.panel), mark_contrast});
+    pairs.push_back(
+        {"question: a velocity arrow on the box", motion_arrow_color(theme), box, mark_contrast});
+    for (int tint = 0; tint < static_cast<int>(candidate_tints); ++tint) {
+        // The letter on its plate (the box's colour), the line on the box.
+        pairs.push_back({"question: a candidate's letter on its plate",
+                         candidate_color(tint, theme), box, text_contrast});
+    }
     for (const bool time_driven : {true, false}) {
         const Rgb8 accent = panel_accent(time_driven, theme);
         pairs.push_back({time_driven ? "time-driven cost label on the page"

@@ -5,6 +5,8 @@
 // views) shares. The public half (engine accents, the failure colour, the contrast rule) is
 // declared in renderer.hpp.
 
+#include <array>
+#include <cstddef>
 #include <vector>
 
 #include "code_panel.hpp"
@@ -46,6 +48,16 @@ inline constexpr Rgb8 next_event_light{150, 80, 0};
 inline constexpr PlotColors dark_plot_colors{
     {210, 210, 215, 255}, {150, 150, 160, 255}, {250, 250, 250, 255}, {90, 90, 100, 255}};
 
+/// A next-collision question's candidates, each with its own colour for its line, its leader
+/// and its letter (A sky blue, B green, C violet, D salmon): none amber (the gas's discs, the
+/// next event), none magenta (the failure colour: the reveal's answer), none grey (the velocity
+/// arrows'). The light theme's are darker (D a wine red), each keeping text_contrast on the box.
+inline constexpr std::size_t candidate_tints = 4;
+inline constexpr std::array<Rgb8, candidate_tints> candidate_dark{
+    {{95, 185, 255}, {110, 215, 120}, {175, 120, 255}, {255, 150, 120}}};
+inline constexpr std::array<Rgb8, candidate_tints> candidate_light{
+    {{0, 100, 190}, {0, 130, 50}, {115, 70, 200}, {160, 40, 80}}};
+
 /// Theme colours.
 struct Palette {
     Rgba8 background;
@@ -69,6 +81,12 @@ struct Palette {
 
 /// The queue strip's colour for the next event (amber, far from the failure colour).
 [[nodiscard]] Rgb8 next_event_color(Theme theme) noexcept;
+
+/// Candidate `tint`'s colour in a theme (candidate_dark, candidate_light; cycling past the last).
+[[nodiscard]] Rgb8 candidate_color(int tint, Theme theme) noexcept;
+/// A question's velocity arrows: the text colour, which no candidate's lines take, so that an
+/// arrow never reads as a line between two discs.
+[[nodiscard]] Rgb8 motion_arrow_color(Theme theme) noexcept;
 
 /// Contrast the painters keep against what lies under: text (WCAG AA for body text), and marks,
 /// trails, walls and edges (WCAG's 3:1 for graphics a reader must see).

@@ -10,6 +10,7 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <optional>
 
 #include "collide/error.hpp"
 
@@ -93,13 +94,14 @@ CollisionRecord pair_record(std::uint32_t a, std::uint32_t b) {
 }
 
 /// Near pairs that do not collide among `seen` (the collisions of the look ahead, which end
-/// after the answer): the pairs of discs closest edge to edge but at least `apart`, nearest
-/// first, sharing no disc with `avoid`. At most `wanted`; O(n^2) over at most the first 2,000
-/// discs.
+/// after the answer) and that `accept` takes: the pairs of discs closest edge to edge but at
+/// least `apart`, nearest first, sharing no disc with `avoid` nor with each other. At most
+/// `wanted`; O(n^2) over at most the first 2,000 discs.
+template <typename Accept>
 std::vector<CollisionRecord> near_misses(const Snapshot& snapshot,
                                          const std::vector<CollisionRecord>& seen,
                                          const std::vector<CollisionRecord>& avoid,
-                                         std::size_t wanted, double apart) {
+                                         std::size_t wanted, double apart, const Accept& accept) {
     const std::uint32_t n = near_miss_discs(snapshot.discs.size());
     std::vector<std::pair<double, CollisionRecord>> pairs;
     for (std::uint32_t a = 0; a < n; ++a) {
@@ -115,7 +117,7 @@ std::vector<CollisionRecord> near_misses(const Snapshot& snapshot,
     for (const auto& [g, r] : pairs) {
         if (out.size() == wanted) break;
         const auto near = [&r](const CollisionRecord& s) { return shares_disc(r, s); };
-        if (std::any_of(out.begin(), out.end(), near)) continue;
+        if (std::any_of(out.begin(), out.end(), near) || !accept(r, out)) continue;
         out.push_back(r);
     }
     return out;
@@ -148,6 +150,143 @@ double contact_gap(const CollisionRecord& r, const Snapshot& snapshot) {
     if (r.kind == CollisionKind::ywall)
         return std::min(d.position.y, box.height - d.position.y) - d.radius;
     return 0.0;
+}
+
+/// The discs a candidate names: its pair, or its one disc.
+std::vector<std::uint32_t> discs_of(const CollisionRecord& c) {
+    if (c.kind == CollisionKind::pair) return {c.a, c.b};
+    return {c.a};
+}
+
+/// The time over which every candidate disc's arrow shows its move: the fastest disc of
+/// `candidates` moves motion_arrow_share of the box's smaller side in it; 0 when none moves.
+double arrow_seconds(const std::vector<CollisionRecord>& candidates, const Snapshot& snapshot) {
+    double fastest = 0.0;
+    for (const CollisionRecord& c : candidates) {
+        for (const std::uint32_t k : discs_of(c)) {
+            if (k < snapshot.discs.size())
+                fastest = std::max(fastest, norm(snapshot.discs[k].velocity));
+        }
+    }
+    if (!(fastest > 0.0) || !std::isfinite(fastest)) return 0.0;
+    return motion_arrow_share * std::min(snapshot.box.width, snapshot.box.height) / fastest;
+}
+
+/// Disc `d`'s velocity as an arrow ending at its leading edge: its move over `seconds`, behind
+/// the disc (where it came from), so that a disc at a wall heading into it keeps its arrow inside
+/// the box. None for a disc at rest.
+std::optional<BoxLine> motion_arrow(const DiscState& d, double seconds) {
+    const double speed = norm(d.velocity);
+    if (!(speed > 0.0) || !(seconds > 0.0)) return std::nullopt;
+    const Vec2 edge = d.position + d.velocity * (d.radius / speed);
+    BoxLine arrow{edge - d.velocity * seconds, edge};
+    arrow.style = LineStyle::motion;
+    return arrow;
+}
+
+/// `line` without its ends' `cut_from` and `cut_to` (box units); none when nothing is left.
+std::optional<BoxLine> trimmed(BoxLine line, double cut_from, double cut_to) {
+    const Vec2 d = line.to - line.from;
+    const double length = norm(d);
+    if (!(length > cut_from + cut_to)) return std::nullopt;
+    const Vec2 u = d * (1.0 / length);
+    line.from = line.from + u * cut_from;
+    line.to = line.to - u * cut_to;
+    return line;
+}
+
+/// Candidate `c`'s connector: the line of its contact (next_collision_view's: between its discs,
+/// or from its disc to the point of the wall it hits), cut at the discs' edges so that it joins
+/// them without crossing them. A near miss (no time) joins its discs as they are now.
+std::vector<BoxLine> connector_lines(const CollisionRecord& c, const Snapshot& snapshot) {
+    CollisionRecord shown = c;
+    if (!std::isfinite(shown.t)) shown.t = snapshot.time;
+    // The clock only words the time to go, which a connector does not show.
+    const NextCollisionView seen = next_collision_view(shown, snapshot, FrameClock{});
+    std::vector<BoxLine> out;
+    const double ra = snapshot.discs[c.a].radius;
+    const double rb = c.kind == CollisionKind::pair ? snapshot.discs[c.b].radius : 0.0;
+    for (std::size_t k = 0; k < seen.lines.size(); ++k) {
+        // next_collision_view's lines start at disc a (a periodic pair's second one at b, towards
+        // a's image).
+        const bool from_a = k == 0;
+        std::optional<BoxLine> line = trimmed(seen.lines[k], from_a ? ra : rb, from_a ? rb : ra);
+        if (!line) continue;
+        line->style = LineStyle::connector;
+        out.push_back(*line);
+    }
+    return out;
+}
+
+/// A piece of a candidate's drawing: the segment from `from` to `to` thickened by `radius` (a
+/// disc: a point and its radius; a line: none).
+struct Stroke {
+    Vec2 from;
+    Vec2 to;
+    double radius = 0.0;
+};
+
+/// The distance from point p to the segment [a, b].
+double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+    const Vec2 d = b - a;
+    const double length2 = dot(d, d);
+    const double t = length2 > 0.0 ? std::clamp(dot(p - a, d) / length2, 0.0, 1.0) : 0.0;
+    return norm(p - (a + d * t));
+}
+
+/// The distance between segments [p1, q1] and [p2, q2]: 0 where they cross, else the least of
+/// their ends' distances to the other.
+double segment_distance(Vec2 p1, Vec2 q1, Vec2 p2, Vec2 q2) {
+    const auto cross = [](Vec2 o, Vec2 a, Vec2 b) {
+        return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+    };
+    const double d1 = cross(p2, q2, p1);
+    const double d2 = cross(p2, q2, q1);
+    const double d3 = cross(p1, q1, p2);
+    const double d4 = cross(p1, q1, q2);
+    if (((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) &&
+        ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0)))
+        return 0.0;
+    return std::min({point_segment_distance(p1, p2, q2), point_segment_distance(q1, p2, q2),
+                     point_segment_distance(p2, p1, q1), point_segment_distance(q2, p1, q1)});
+}
+
+/// What candidate `c` draws in the question's picture: its discs, its connector and its discs'
+/// arrows over `seconds` (arrow_seconds).
+std::vector<Stroke> drawing_of(const CollisionRecord& c, const Snapshot& snapshot, double seconds) {
+    std::vector<Stroke> out;
+    for (const std::uint32_t k : discs_of(c)) {
+        const DiscState& d = snapshot.discs[k];
+        out.push_back({d.position, d.position, d.radius});
+        if (const std::optional<BoxLine> arrow = motion_arrow(d, seconds))
+            out.push_back({arrow->from, arrow->to, 0.0});
+    }
+    for (const BoxLine& line : connector_lines(c, snapshot)) out.push_back({line.from, line.to});
+    return out;
+}
+
+/// True when no piece of `x` comes within `margin` of a piece of `y`.
+bool drawings_apart(const std::vector<Stroke>& x, const std::vector<Stroke>& y, double margin) {
+    return std::all_of(x.begin(), x.end(), [&](const Stroke& s) {
+        return std::all_of(y.begin(), y.end(), [&](const Stroke& o) {
+            return segment_distance(s.from, s.to, o.from, o.to) - s.radius - o.radius >= margin;
+        });
+    });
+}
+
+/// True when `c`'s drawing keeps drawing_gap_share of the box's smaller side from each of
+/// `chosen`'s, all drawn as they would be with `c` among them (its arrows' time: adding a
+/// faster disc only shortens the arrows of those chosen before, which stay apart).
+bool drawn_apart(const CollisionRecord& c, const std::vector<CollisionRecord>& chosen,
+                 const Snapshot& snapshot) {
+    std::vector<CollisionRecord> all = chosen;
+    all.push_back(c);
+    const double seconds = arrow_seconds(all, snapshot);
+    const double margin = drawing_gap_share * std::min(snapshot.box.width, snapshot.box.height);
+    const std::vector<Stroke> mine = drawing_of(c, snapshot, seconds);
+    return std::all_of(chosen.begin(), chosen.end(), [&](const CollisionRecord& other) {
+        return drawings_apart(mine, drawing_of(other, snapshot, seconds), margin);
+    });
 }
 
 /// What a distractor must be for a class to tell it from the answer in the frozen picture.
@@ -196,27 +335,47 @@ void add_later_hits(const std::vector<CollisionRecord>& hits, std::vector<Collis
     }
 }
 
+/// The near pairs add_near_misses tries for drawings kept apart, nearest first.
+constexpr std::size_t near_pair_tries = 256;
+
 /// Adds near misses (near_misses) visibly apart by at least `apart` to `chosen`, up to
-/// max_candidates - 1.
+/// max_candidates - 1; `drawn_clear`: only those whose drawings keep apart from the others'
+/// (drawn_apart).
 void add_near_misses(const Snapshot& snapshot, const std::vector<CollisionRecord>& hits,
-                     double apart, std::vector<CollisionRecord>& chosen) {
+                     double apart, bool drawn_clear, std::vector<CollisionRecord>& chosen) {
     if (chosen.size() >= max_candidates - 1) return;
+    // In a crowded box few pairs keep apart: the nearest near_pair_tries are tried, no more
+    // (the search stays O(n^2) in the pairs' gaps, not in their drawings).
+    std::size_t tried = 0;
+    const auto accept = [&](const CollisionRecord& r, const std::vector<CollisionRecord>& more) {
+        if (!drawn_clear) return true;
+        if (++tried > near_pair_tries) return false;
+        std::vector<CollisionRecord> all = chosen;
+        all.insert(all.end(), more.begin(), more.end());
+        return drawn_apart(r, all, snapshot);
+    };
     const std::vector<CollisionRecord> misses =
-        near_misses(snapshot, hits, chosen, max_candidates - 1 - chosen.size(), apart);
+        near_misses(snapshot, hits, chosen, max_candidates - 1 - chosen.size(), apart, accept);
     chosen.insert(chosen.end(), misses.begin(), misses.end());
 }
 
 /// The contacts a next-collision question offers from those resolved ahead (`hits`, in order, not
 /// empty): the first, then distractors a class can tell from it in the picture, best first:
-/// later collisions distinct_in_picture, then near misses visibly apart, then any near misses,
-/// then any later collisions. At most max_candidates - 1.
+/// later collisions distinct_in_picture, then near misses visibly apart, each first among those
+/// whose drawings (discs, connector, arrows) keep apart from the others' (drawn_apart: no
+/// tangle of crossing lines where another choice exists), then any near misses, then any later
+/// collisions. At most max_candidates - 1.
 std::vector<CollisionRecord> offered_collisions(const std::vector<CollisionRecord>& hits,
                                                 const Snapshot& snapshot, const TellApart& rule) {
     std::vector<CollisionRecord> chosen{hits.front()};
-    add_later_hits(hits, chosen,
-                   [&rule](const CollisionRecord& hit) { return distinct_in_picture(hit, rule); });
-    add_near_misses(snapshot, hits, rule.apart, chosen);
-    add_near_misses(snapshot, hits, -std::numeric_limits<double>::infinity(), chosen);
+    for (const bool drawn_clear : {true, false}) {
+        add_later_hits(hits, chosen, [&](const CollisionRecord& hit) {
+            return distinct_in_picture(hit, rule) &&
+                   (!drawn_clear || drawn_apart(hit, chosen, snapshot));
+        });
+        add_near_misses(snapshot, hits, rule.apart, drawn_clear, chosen);
+    }
+    add_near_misses(snapshot, hits, -std::numeric_limits<double>::infinity(), false, chosen);
     add_later_hits(hits, chosen, [](const CollisionRecord&) { return true; });
     return chosen;
 }
@@ -256,17 +415,15 @@ std::string disc_words(const CollisionRecord& r) {
     return fmt::format("disc {} and the wall", r.a);
 }
 
-/// Each candidate disc's velocity as an arrow that ends at its leading edge: the move over one
-/// time, the same for every disc, in which the fastest of them goes motion_arrow_share of the
-/// box's smaller side. Behind the disc, where it came from, so that a disc at a wall heading into
-/// it keeps its arrow inside the box. The class compares the gaps with the arrows: which disc
-/// heads for which, how fast. In the reveal the answer's discs keep theirs, the others fade.
+/// Each candidate disc's velocity as an arrow that ends at its leading edge (motion_arrow), over
+/// one time for all (arrow_seconds), in the motion colour, no candidate's: the class compares the
+/// gaps with the arrows (which disc heads for which, how fast) and never reads an arrow as a
+/// candidate's line. In the reveal the answer's discs keep theirs, the others fade.
 void add_motion_arrows(ReplayView& view, const QuestionAnswer& answer, const Snapshot& snapshot,
                        bool reveal) {
     std::vector<std::pair<std::uint32_t, bool>> discs;  // (disc, one of the answer's)
     for (std::size_t i = 0; i < answer.candidates.size(); ++i) {
-        const CollisionRecord& c = answer.candidates[i];
-        for (const std::uint32_t k : {c.a, c.kind == CollisionKind::pair ? c.b : c.a}) {
+        for (const std::uint32_t k : discs_of(answer.candidates[i])) {
             const bool right = i == answer.answer;
             const auto found = std::find_if(discs.begin(), discs.end(),
                                             [k](const auto& d) { return d.first == k; });
@@ -277,20 +434,57 @@ void add_motion_arrows(ReplayView& view, const QuestionAnswer& answer, const Sna
             }
         }
     }
-    double fastest = 0.0;
-    for (const auto& [k, right] : discs)
-        fastest = std::max(fastest, norm(snapshot.discs[k].velocity));
-    if (!(fastest > 0.0) || !std::isfinite(fastest)) return;
-    const double seconds =
-        motion_arrow_share * std::min(snapshot.box.width, snapshot.box.height) / fastest;
+    const double seconds = arrow_seconds(answer.candidates, snapshot);
     for (const auto& [k, right] : discs) {
-        const DiscState& d = snapshot.discs[k];
-        if (!(norm(d.velocity) > 0.0)) continue;
-        const Vec2 edge = d.position + d.velocity * (d.radius / norm(d.velocity));
-        BoxLine arrow{edge - d.velocity * seconds, edge};
-        arrow.opacity = reveal && !right ? 0.3F : 1.0F;
-        view.lines.push_back(arrow);
+        std::optional<BoxLine> arrow = motion_arrow(snapshot.discs[k], seconds);
+        if (!arrow) continue;
+        arrow->opacity = reveal && !right ? 0.3F : 1.0F;
+        view.lines.push_back(*arrow);
     }
+}
+
+/// clear_spot's search, keeping `plate` from the discs and `taken` and, with `lines`, from those
+/// too; `found`: whether the point returned keeps that far.
+Vec2 clear_spot_among(Vec2 near, double plate, const Snapshot& snapshot,
+                      const std::vector<Vec2>& taken, const std::vector<BoxLine>& lines,
+                      bool& found) {
+    const Box& box = snapshot.box;
+    found = false;
+    const auto clearance = [&](Vec2 p) {
+        double free = std::numeric_limits<double>::infinity();
+        for (const DiscState& d : snapshot.discs)
+            free = std::min(free, norm(p - d.position) - d.radius);
+        for (const Vec2& t : taken) free = std::min(free, norm(p - t) - plate);
+        for (const BoxLine& l : lines)
+            free = std::min(free, point_segment_distance(p, l.from, l.to));
+        return free;
+    };
+    const auto inside = [&](Vec2 p) {
+        return p.x >= plate && p.x <= box.width - plate && p.y >= plate &&
+               p.y <= box.height - plate;
+    };
+    Vec2 best = near;
+    double best_free = -std::numeric_limits<double>::infinity();
+    constexpr int rings = 12;
+    constexpr int around = 16;
+    for (int ring = 0; ring <= rings; ++ring) {
+        const double r = 0.5 * plate * ring;
+        for (int k = 0; k < (ring == 0 ? 1 : around); ++k) {
+            const double angle = 2.0 * std::numbers::pi * k / around;
+            const Vec2 p{near.x + r * std::cos(angle), near.y + r * std::sin(angle)};
+            if (!inside(p)) continue;
+            const double free = clearance(p);
+            if (free >= plate) {
+                found = true;
+                return p;
+            }
+            if (free > best_free) {
+                best_free = free;
+                best = p;
+            }
+        }
+    }
+    return best;
 }
 
 }  // namespace
@@ -422,38 +616,15 @@ std::string answer_words(const QuestionAnswer& answer, const FrameClock& clock) 
     return {};
 }
 
-Vec2 clear_spot(Vec2 near, double plate, const Snapshot& snapshot, const std::vector<Vec2>& taken) {
-    const Box& box = snapshot.box;
-    const auto clearance = [&](Vec2 p) {
-        double free = std::numeric_limits<double>::infinity();
-        for (const DiscState& d : snapshot.discs)
-            free = std::min(free, norm(p - d.position) - d.radius);
-        for (const Vec2& t : taken) free = std::min(free, norm(p - t) - plate);
-        return free;
-    };
-    const auto inside = [&](Vec2 p) {
-        return p.x >= plate && p.x <= box.width - plate && p.y >= plate &&
-               p.y <= box.height - plate;
-    };
-    Vec2 best = near;
-    double best_free = -std::numeric_limits<double>::infinity();
-    constexpr int rings = 12;
-    constexpr int around = 16;
-    for (int ring = 0; ring <= rings; ++ring) {
-        const double r = 0.5 * plate * ring;
-        for (int k = 0; k < (ring == 0 ? 1 : around); ++k) {
-            const double angle = 2.0 * std::numbers::pi * k / around;
-            const Vec2 p{near.x + r * std::cos(angle), near.y + r * std::sin(angle)};
-            if (!inside(p)) continue;
-            const double free = clearance(p);
-            if (free >= plate) return p;
-            if (free > best_free) {
-                best_free = free;
-                best = p;
-            }
-        }
+Vec2 clear_spot(Vec2 near, double plate, const Snapshot& snapshot, const std::vector<Vec2>& taken,
+                const std::vector<BoxLine>& lines) {
+    bool found = false;
+    if (!lines.empty()) {
+        const Vec2 off_lines = clear_spot_among(near, plate, snapshot, taken, lines, found);
+        if (found) return off_lines;
     }
-    return best;
+    // No place off the lines: off the discs and letters still (a letter never hides a disc).
+    return clear_spot_among(near, plate, snapshot, taken, {}, found);
 }
 
 std::string countdown_words(double seconds_left) {
@@ -496,29 +667,38 @@ ReplayView question_view(const QuestionAnswer& answer, const Snapshot& snapshot,
     // The letter's plate, in box units: about the lesson's text size where a box fills most of
     // the frame's height (a letter 2.8 % of it on a plate of about twice that).
     const double plate = 0.05 * std::min(snapshot.box.width, snapshot.box.height);
+    // Every line first (connectors, then the arrows), so that each letter keeps off the lines of
+    // the others where it can. A candidate's connector, leader and letter share its tint: a
+    // class tells the candidates apart by colour as well as by letter where they sit close.
+    std::vector<std::size_t> connectors_of;  // each candidate's first connector in view.lines
+    for (std::size_t i = 0; i < answer.candidates.size(); ++i) {
+        connectors_of.push_back(view.lines.size());
+        const bool right = i == answer.answer;
+        for (BoxLine line : connector_lines(answer.candidates[i], snapshot)) {
+            line.tint = static_cast<int>(i);
+            line.failure = reveal && right;
+            line.opacity = reveal && !right ? 0.3F : 1.0F;
+            view.lines.push_back(line);
+        }
+    }
+    connectors_of.push_back(view.lines.size());
+    add_motion_arrows(view, answer, snapshot, reveal);
+    const std::vector<BoxLine> drawn = view.lines;
     std::vector<Vec2> taken;
     for (std::size_t i = 0; i < answer.candidates.size(); ++i) {
-        // A near miss never meets (its time is infinite): its line joins the discs as they are.
-        CollisionRecord shown = answer.candidates[i];
+        const CollisionRecord& c = answer.candidates[i];
+        CollisionRecord shown = c;
         if (!std::isfinite(shown.t)) shown.t = snapshot.time;
         const NextCollisionView seen = next_collision_view(shown, snapshot, clock);
         if (seen.lines.empty()) continue;
         const bool right = i == answer.answer;
         const float opacity = reveal && !right ? 0.3F : 1.0F;
-        const bool pair = answer.candidates[i].kind == CollisionKind::pair;
-        for (const BoxLine& line : seen.lines) {
-            // A pair's line as two halves meeting in the middle (the painter heads each line
-            // with an arrow: two arrows that meet, not one disc chasing the other).
-            const Vec2 middle = (line.from + line.to) * 0.5;
-            std::vector<BoxLine> pieces{pair ? BoxLine{line.from, middle} : line};
-            if (pair) pieces.push_back(BoxLine{line.to, middle});
-            for (BoxLine piece : pieces) {
-                piece.failure = reveal && right;
-                piece.opacity = opacity;
-                view.lines.push_back(piece);
-            }
+        // The lines a letter keeps off: all but its own connector (it names that one).
+        std::vector<BoxLine> others;
+        for (std::size_t k = 0; k < drawn.size(); ++k) {
+            if (k < connectors_of[i] || k >= connectors_of[i + 1]) others.push_back(drawn[k]);
         }
-        const Vec2 at = clear_spot(seen.label_at, plate, snapshot, taken);
+        const Vec2 at = clear_spot(seen.label_at, plate, snapshot, taken, others);
         taken.push_back(at);
         BoxLabel label;
         label.at = at;
@@ -526,18 +706,20 @@ ReplayView question_view(const QuestionAnswer& answer, const Snapshot& snapshot,
         label.side = LabelSide::over;
         label.failure = reveal && right;
         label.opacity = opacity;
+        label.tint = static_cast<int>(i);
         view.labels.push_back(label);
         if (norm(at - seen.label_at) > plate) {
             // A letter moved away from its line: a faint leader back to it.
             BoxLine leader{at, seen.label_at};
+            leader.style = LineStyle::connector;
+            leader.tint = static_cast<int>(i);
+            leader.failure = reveal && right;
             leader.opacity = 0.5F * opacity;
             view.lines.push_back(leader);
         }
-        const CollisionRecord& c = answer.candidates[i];
         view.focus.push_back(c.a);
         if (c.kind == CollisionKind::pair) view.focus.push_back(c.b);
     }
-    add_motion_arrows(view, answer, snapshot, reveal);
     return view;
 }
 

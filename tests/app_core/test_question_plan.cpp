@@ -3,7 +3,7 @@
 // engine's there; one that cannot be asked at all is refused naming its file, line and field
 // (left out with a notice when --duration set the video's length); a how-many question is
 // followed by the second it counts; the built-in scenes ask without a notice at every preset
-// and mode.
+// and mode, their candidates drawn apart.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "../show/question_drawing_fixture.hpp"
 #include "collide/error.hpp"
 #include "collide/scene/load.hpp"
 #include "render_plan.hpp"
@@ -238,6 +239,39 @@ TEST_CASE("the built-in scenes ask their questions without a notice, at every pr
                         notice.find("render.questions") != std::string::npos;
                     CHECK((!about_questions ||
                            notice.find("-driven panel; not asked") != std::string::npos));
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("the built-in scenes' next-collision candidates are drawn apart, lines never crossing") {
+    for (const std::string name : {"gas", "billiards", "tunnelling"}) {
+        const Scene scene = load_scene(name, COLLIDE_ASSETS_DIR);
+        for (const std::string quality : {"l", "m"}) {
+            for (const std::string mode : {"both", "event"}) {
+                CAPTURE(name);
+                CAPTURE(quality);
+                CAPTURE(mode);
+                RenderRequest request = request_of(name);
+                request.quality = quality;
+                request.mode = mode;
+                const RenderPlan plan = plan_render(request, scene, finder(scene));
+                for (std::size_t i = 0; i < plan.questions.size(); ++i) {
+                    const show::QuestionAnswer& answer = plan.questions[i];
+                    if (answer.kind != QuestionKind::next_collision) continue;
+                    CAPTURE(i);
+                    REQUIRE(answer.askable);
+                    // The frozen picture, as the video steps its engine there.
+                    const std::unique_ptr<Engine> engine = make_engine(scene, plan.event_engine);
+                    for (std::int64_t j = 0; j <= answer.sim_frame; ++j)
+                        engine->advance_to(plan.clock.time(j));
+                    const Snapshot now = engine->snapshot();
+                    const ReplayView view =
+                        show::question_view(answer, now, plan.clock, 2.5, false);
+                    const double margin =
+                        show::drawing_gap_share * std::min(now.box.width, now.box.height);
+                    CHECK(test::closest_candidates(answer, view, now) >= margin * (1.0 - 1e-9));
                 }
             }
         }

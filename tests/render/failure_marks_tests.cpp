@@ -233,6 +233,34 @@ TEST_CASE("contrast: every colour pair the painters use, in both themes") {
     }
 }
 
+TEST_CASE("contrast: a question's arrows and candidates apart from each other and the box") {
+    // How far apart two colours lie (RGB distance): a class tells them apart at a glance.
+    const auto distance = [](Rgb8 x, Rgb8 y) {
+        return std::hypot(x.r - y.r, x.g - y.g, x.b - y.b);
+    };
+    for (const Theme theme : {Theme::dark, Theme::light}) {
+        CAPTURE(theme_name(theme));
+        const Palette p = palette(theme);
+        const Rgb8 arrow = motion_arrow_color(theme);
+        CHECK(contrast_ratio(arrow, rgb(p.box_fill)) >= mark_contrast);
+        for (int i = 0; i < static_cast<int>(candidate_tints); ++i) {
+            CAPTURE(i);
+            const Rgb8 tint = candidate_color(i, theme);
+            // On the box and on a letter's plate (the box's colour).
+            CHECK(contrast_ratio(tint, rgb(p.box_fill)) >= text_contrast);
+            // Never an arrow's colour, the failure colour (the reveal's) or the next event's.
+            CHECK(distance(tint, arrow) >= 100.0);
+            CHECK(distance(tint, rgb(p.failure)) >= 80.0);
+            CHECK_FALSE(near_failure_color(tint));
+            CHECK(distance(tint, next_event_color(theme)) >= 80.0);
+            for (int j = 0; j < i; ++j) CHECK(distance(tint, candidate_color(j, theme)) >= 100.0);
+        }
+        // Past the last, the colours cycle (a question never has more than four candidates).
+        CHECK(distance(candidate_color(static_cast<int>(candidate_tints), theme),
+                       candidate_color(0, theme)) == 0.0);
+    }
+}
+
 TEST_CASE("contrast: every colour pair of the heap lesson and the puzzle, in both themes") {
     for (const Theme theme : {Theme::dark, Theme::light}) {
         std::vector<ColorPair> pairs = heap_color_pairs(theme);

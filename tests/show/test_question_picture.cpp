@@ -2,7 +2,8 @@
 // question_view): each candidate disc's velocity as an arrow a class can read, ending at the
 // disc's leading edge (the fastest motion_arrow_share of the box, the others the move over the
 // same time), and a heading that keeps clear of every disc (the painter places it: here, that
-// every disc is named).
+// every disc is named); each candidate's connector and letter in its own tint, the arrows in none;
+// candidates whose drawings keep apart where the engine offers such distractors.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -14,6 +15,7 @@
 #include "../sim/scene_fixtures.hpp"
 #include "collide/show/questions.hpp"
 #include "frame_clock_fixture.hpp"
+#include "question_drawing_fixture.hpp"
 
 using namespace collide;
 using namespace collide::show;
@@ -38,7 +40,8 @@ const BoxLine* arrow_of(const ReplayView& view, const DiscState& disc) {
     const Vec2 edge = disc.position + direction * (disc.radius / norm(direction));
     for (const BoxLine& line : view.lines) {
         const Vec2 d = line.to - line.from;
-        if (norm(line.to - edge) > 1e-12 || !(norm(d) > 0.0)) continue;
+        if (line.style != LineStyle::motion || norm(line.to - edge) > 1e-12 || !(norm(d) > 0.0))
+            continue;
         const double cosine = (d.x * direction.x + d.y * direction.y) / (norm(d) * norm(direction));
         if (cosine > 1.0 - 1e-9) return &line;
     }
@@ -101,4 +104,97 @@ TEST_CASE("a next-collision question draws every candidate disc's velocity, one 
         }
         CHECK(reveal.keep_clear.size() == now.discs.size());
     }
+}
+
+TEST_CASE("a next-collision question tints each candidate's lines and letter, never the arrows") {
+    const FrameClock clock = clock_of(400, 1.0 / 30.0);
+    for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+        CAPTURE(seed);
+        const Boundary boundary = seed % 3 == 0 ? Boundary::periodic : Boundary::walls;
+        const Scene scene = test::lattice_fluid(5, 0.15, boundary, seed);
+        const std::unique_ptr<Engine> engine = make_engine(scene, EngineOptions{});
+        for (std::int64_t j = 0; j <= 10; ++j) engine->advance_to(clock.time(j));
+        const Snapshot now = engine->snapshot();
+        const QuestionAnswer answer = answer_next_collision(
+            *engine, now, [&clock](std::int64_t i) { return clock.time(10 + i); }, 30, seed);
+        REQUIRE(answer.askable);
+        for (const bool reveal : {false, true}) {
+            CAPTURE(reveal);
+            const ReplayView view = question_view(answer, now, clock, 2.5, reveal);
+            REQUIRE(view.labels.size() == answer.candidates.size());
+            for (std::size_t i = 0; i < view.labels.size(); ++i)
+                CHECK(view.labels[i].tint == static_cast<int>(i));
+            std::vector<int> connectors(answer.candidates.size(), 0);
+            for (const BoxLine& line : view.lines) {
+                // A question draws no thick jump: connectors and arrows only.
+                CHECK(line.style != LineStyle::jump);
+                if (line.style == LineStyle::motion) {
+                    CHECK(line.tint == no_tint);
+                    continue;
+                }
+                REQUIRE(line.tint >= 0);
+                REQUIRE(line.tint < static_cast<int>(answer.candidates.size()));
+                ++connectors[static_cast<std::size_t>(line.tint)];
+                CHECK(line.failure ==
+                      (reveal && static_cast<std::size_t>(line.tint) == answer.answer));
+            }
+            // Every candidate has its line (a pair touching now has none: not offered here).
+            for (const int n : connectors) CHECK(n >= 1);
+        }
+    }
+}
+
+TEST_CASE("a next-collision question's connectors stop at the discs' edges") {
+    const FrameClock clock = clock_of(400, 1.0 / 30.0);
+    for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+        CAPTURE(seed);
+        const Scene scene = test::lattice_fluid(5, 0.2, Boundary::walls, seed);
+        const std::unique_ptr<Engine> engine = make_engine(scene, EngineOptions{});
+        for (std::int64_t j = 0; j <= 10; ++j) engine->advance_to(clock.time(j));
+        const Snapshot now = engine->snapshot();
+        const QuestionAnswer answer = answer_next_collision(
+            *engine, now, [&clock](std::int64_t i) { return clock.time(10 + i); }, 30, seed);
+        REQUIRE(answer.askable);
+        const ReplayView view = question_view(answer, now, clock, 2.5, false);
+        for (const BoxLine& line : view.lines) {
+            if (line.style != LineStyle::connector || line.opacity != 1.0F) continue;
+            const CollisionRecord& c = answer.candidates[static_cast<std::size_t>(line.tint)];
+            for (const std::uint32_t k : test::candidate_discs_of(c)) {
+                const DiscState& d = now.discs[k];
+                // Ends on the edge (within rounding), nothing inside the disc.
+                CHECK(test::point_to_segment(d.position, line.from, line.to) >=
+                      d.radius * (1.0 - 1e-9));
+                const double to_end =
+                    std::min(norm(line.from - d.position), norm(line.to - d.position));
+                CHECK(to_end == doctest::Approx(d.radius).epsilon(1e-9));
+            }
+        }
+    }
+}
+
+TEST_CASE("a next-collision question's candidates are drawn apart where the engine allows") {
+    // Fluids of a few dozen discs in a box with room (the lesson's scenes): every seed offers
+    // distractors whose discs, lines and arrows keep apart from the answer's and each other's.
+    int crossed = 0;
+    const int seeds = 40;
+    for (std::uint64_t seed = 1; seed <= static_cast<std::uint64_t>(seeds); ++seed) {
+        CAPTURE(seed);
+        const FrameClock clock = clock_of(400, 1.0 / 30.0);
+        const Boundary boundary = seed % 4 == 0 ? Boundary::periodic : Boundary::walls;
+        const double eta = 0.05 + 0.025 * static_cast<double>(seed % 5);
+        const Scene scene = test::lattice_fluid(4 + seed % 3, eta, boundary, seed);
+        const auto k = static_cast<std::int64_t>(seed * 7 % 50);
+        const std::unique_ptr<Engine> engine = make_engine(scene, EngineOptions{});
+        for (std::int64_t j = 0; j <= k; ++j) engine->advance_to(clock.time(j));
+        const Snapshot now = engine->snapshot();
+        const QuestionAnswer answer = answer_next_collision(
+            *engine, now, [&clock, k](std::int64_t i) { return clock.time(k + i); }, 30, seed);
+        REQUIRE(answer.askable);
+        const ReplayView view = question_view(answer, now, clock, 2.5, false);
+        const double margin = drawing_gap_share * std::min(now.box.width, now.box.height);
+        const double closest = test::closest_candidates(answer, view, now);
+        INFO("closest " << closest << " margin " << margin);
+        if (closest < margin * (1.0 - 1e-9)) ++crossed;
+    }
+    CHECK(crossed == 0);
 }

@@ -147,6 +147,12 @@ inline constexpr double distractor_gap_share = 0.015;
 /// where the box is 340 high, as it is at `-q l`.
 inline constexpr double motion_arrow_share = 0.15;
 
+/// The least gap a next-collision question keeps between two candidates' drawings (their discs,
+/// connectors and velocity arrows), a share of the box's smaller side (about 3 pixels at -q l),
+/// where the engine offers distractors that allow it: candidates whose lines cross read as one
+/// tangle.
+inline constexpr double drawing_gap_share = 0.01;
+
 /// What the event-driven panel draws while the question holds (`reveal` false: the candidates'
 /// lines, each candidate disc's velocity as an arrow ending at its leading edge
 /// (motion_arrow_share), their letters on plates clear of every disc, the others faint, and
@@ -158,10 +164,13 @@ inline constexpr double motion_arrow_share = 0.15;
                                        const FrameClock& clock, double seconds_left, bool reveal);
 
 /// Where a letter's plate goes: the point nearest `near` inside `box` that keeps `plate` box units
-/// from every disc's edge and from `taken` (letters placed before, `plate` apart again), searched
-/// on rings around `near`; the freest point found where none keeps that far.
+/// from every disc's edge, from `taken` (letters placed before, `plate` apart again) and from
+/// `lines` (the other candidates' lines), searched on rings around `near`; where none keeps off
+/// the lines, the same without them; the freest point found where none keeps that far from the
+/// discs and letters.
 [[nodiscard]] Vec2 clear_spot(Vec2 near, double plate, const Snapshot& snapshot,
-                              const std::vector<Vec2>& taken);
+                              const std::vector<Vec2>& taken,
+                              const std::vector<BoxLine>& lines = {});
 
 /// Every question `timeline` asks (questions_asked), answered by an event-driven engine of
 /// `scene` (`options`) advanced frame by frame on `clock` to the frame each question freezes on.

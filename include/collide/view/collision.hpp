@@ -143,12 +143,26 @@ struct GhostDisc {
     float opacity = 1.0F;
 };
 
-/// A straight segment in the box (a replay's jump), box coordinates.
+/// How a BoxLine is drawn.
+enum class LineStyle : std::uint8_t {
+    jump,       ///< thick, an arrowhead at `to` (a replay's move), in the text colour
+    motion,     ///< a question's disc velocity: an arrowhead at `to`, in the motion colour
+    connector,  ///< thin, no head: a question's candidate contact, in its candidate's colour
+};
+
+/// No candidate's colour (BoxLine::tint, BoxLabel::tint).
+inline constexpr int no_tint = -1;
+
+/// A straight segment in the box (a replay's jump, a question's lines), box coordinates.
 struct BoxLine {
     Vec2 from;
     Vec2 to;
-    bool failure = false;  ///< in the failure colour (else the text colour)
+    bool failure = false;  ///< in the failure colour (before any other)
     float opacity = 1.0F;
+    LineStyle style = LineStyle::jump;
+    /// A next-collision question's candidate (0: A, 1: B, ...): its lines and its letter share
+    /// that candidate's colour, so that a class tells the candidates apart where they sit close.
+    int tint = no_tint;
 };
 
 /// Where a label's plate sits around its point (`over`: centred on it, a place chosen clear of the
@@ -160,10 +174,11 @@ enum class LabelSide : std::uint8_t { above, below, left, right, over };
 struct BoxLabel {
     Vec2 at;
     std::string text;
-    bool failure = false;  ///< in the failure colour (else the text colour)
+    bool failure = false;  ///< in the failure colour (else the tint's, else the text colour)
     LabelSide side = LabelSide::above;
     float opacity = 1.0F;
     double clear = 0.0;  ///< box units: the plate keeps this far from `at`
+    int tint = no_tint;  ///< a question's candidate: its letter in that candidate's colour
 };
 
 /// A disc's place in the box that words must not cover, box coordinates.
