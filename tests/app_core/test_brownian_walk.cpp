@@ -15,6 +15,7 @@
 #include "collide/scene/load.hpp"
 #include "collide/sim/engine.hpp"
 #include "render_plan.hpp"
+#include "replay_plan.hpp"
 
 using namespace collide;
 using namespace collide::app;
@@ -29,13 +30,17 @@ double caption_time(const Scene& scene, const std::string& quality) {
     request.scene = "brownian";
     request.output = "unused.mp4";
     request.quality = quality;
-    const RenderPlan plan = plan_render(request, scene);
+    // With its replays, as the video plans it: a replay holds the simulation.
+    const ReplayFinder finder = [&scene](const RenderPlan& draft) {
+        return find_replays(scene, draft);
+    };
+    const RenderPlan plan = plan_render(request, scene, finder);
     for (const show::Segment& segment : plan.timeline.segments)
         if (segment.caption == walk_caption) return plan.clock.time(segment.sim_frame);
     return -1.0;
 }
 
-/// The tracer's path (the centre every 0.1 time units; a frame at -q l is 0.2) up to `until`.
+/// The tracer's path (the centre every 0.1 time units; a frame at -q l is 0.33) up to `until`.
 std::vector<Vec2> tracer_path(const Scene& scene, std::size_t tracer, double until) {
     // The event-driven engine, exact: the walk the right panel shows.
     const std::unique_ptr<Engine> engine = make_engine(scene, EngineOptions{});
@@ -88,13 +93,13 @@ TEST_CASE("brownian: by its random-walk caption the tracer's trail is a crooked 
                 y1 = std::max(y1, path[k].y);
                 length += std::hypot(path[k].x - path[k - 1].x, path[k].y - path[k - 1].y);
             }
-            // Far enough to be seen beside the disc: the trail's extent at least two and a half
-            // diameters (the disc covers one), and its length several times that.
+            // Far enough to be seen beside the disc: the trail's extent at least three diameters
+            // (the disc covers one), and its length several times that.
             const double extent = std::max(x1 - x0, y1 - y0) / diameter;
-            CHECK(extent >= 2.5);
-            CHECK(length / diameter >= 8.0);
-            // Crooked: over stretches of a quarter diameter, the heading turns back (by more
-            // than a right angle) again and again; a drift or a single hook would not.
+            CHECK(extent >= 3.0);
+            CHECK(length / diameter >= 10.0);
+            // Crooked: over stretches of a quarter diameter, the heading turns by more than 60
+            // degrees again and again; a drift or a single hook would not.
             std::vector<Vec2> steps;
             Vec2 from = path.front();
             for (const Vec2& p : path) {
@@ -104,7 +109,10 @@ TEST_CASE("brownian: by its random-walk caption the tracer's trail is a crooked 
             }
             int turns = 0;
             for (std::size_t k = 1; k < steps.size(); ++k)
-                if (steps[k].x * steps[k - 1].x + steps[k].y * steps[k - 1].y < 0.0) ++turns;
+                if (steps[k].x * steps[k - 1].x + steps[k].y * steps[k - 1].y <
+                    0.5 * std::hypot(steps[k].x, steps[k].y) *
+                        std::hypot(steps[k - 1].x, steps[k - 1].y))
+                    ++turns;
             MESSAGE("extent ", extent, " diameters, length ", length / diameter, ", turns ", turns,
                     ", until t = ", until);
             CHECK(turns >= 4);
