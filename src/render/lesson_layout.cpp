@@ -269,7 +269,10 @@ FrameLayout side_layout(const LayoutInput& in, float body) {
     float y = m;
     if (code_w > 0.0F) {
         const float rows_h = (static_cast<float>(in.code_rows) * 1.2F + 1.2F) * body;
-        layout.code = {x0, y, std::min(x1, x0 + code_w), y + std::ceil(rows_h)};
+        // With the queue the listing stands at the frame's right edge: the room it leaves beside
+        // the box is where a crowded box's disc numbers go (add_frame_label).
+        const float code_x0 = in.queue_panel == 0 ? std::max(x0, x1 - code_w) : x0;
+        layout.code = {code_x0, y, std::min(x1, code_x0 + code_w), y + std::ceil(rows_h)};
         for (const RectF& row : code_rows(layout.code, body, in.code_rows))
             layout.text.push_back({TextRole::code, -1, row, body});
         y = layout.code.y1 + gap;

@@ -141,6 +141,7 @@ void LessonPainter::begin_frame(const FrameContent& frame) {
     pop_seconds_ = frame.pop_highlight;
     // A card covers this frame, the title card or the epilogue's summary: no other text.
     intro_ = shows_title_card(frame) || shows_summary(frame);
+    frame_numbers_.clear();
     if (layout_.queue_panel >= 0 && !small_font_) {
         // Loaded with the first frame that shows a queue, so other videos are unchanged.
         load_font(small_font_, std::round(body_font_->pixel_height() * queue_text_scale));
@@ -189,6 +190,7 @@ void LessonPainter::finish_frame(const FrameContent& frame) {
     }
     if (!layout_.compact && !intro_) add_column(frame);
     if (frame.code && !intro_ && layout_.code.width() > 0.0F) add_code(*frame.code);
+    add_frame_numbers();  // clear of every text drawn above
     if (shows_title_card(frame)) add_intro(frame);
     if (shows_summary(frame)) add_summary(frame);
 }

@@ -81,13 +81,18 @@ class LessonPainter : public Painter {
     /// it had to move away; none where no free place is near (the strip names the event).
     void add_queue_label(Font font, PointF at, PointF anchor, float anchor_radius,
                          std::string_view text, Rgba8 color, RectF inside);
-    /// The frame's free strip beside `box` (right, else left) where no text of the layout is;
-    /// none where there is none.
-    [[nodiscard]] std::optional<RectF> queue_gutter(RectF box) const;
-    /// A disc's number in `gutter`, nearest the disc's height and clear of earlier labels, with
-    /// a leader line to the disc's edge (a box too crowded for a free place beside the disc).
-    void add_gutter_label(Font font, PointF disc, float radius, std::string_view text, Rgba8 color,
-                          RectF gutter);
+    /// Where a number outside `own_box` must not go: the boxes (another panel's with the frame
+    /// over and under it), the code, the strip, the column's graphics and the text drawn so far.
+    [[nodiscard]] std::vector<RectF> frame_obstacles(RectF own_box) const;
+    /// The numbers add_queue_in_box could not place in their box, placed in the frame
+    /// (add_frame_label) after every other text of the frame is drawn.
+    void add_frame_numbers();
+    /// A disc's number in the frame outside the boxes (a box too crowded for a free place
+    /// beside the disc): the place nearest the disc clear of `obstacles` and earlier labels,
+    /// with a leader line to the nearest point of `box`'s edge, then inside it to the disc's
+    /// edge; none where the frame has no such place. O(rows x obstacles).
+    void add_frame_label(Font font, PointF disc, float radius, std::string_view text, Rgba8 color,
+                         RectF box, const std::vector<RectF>& obstacles);
     [[nodiscard]] float pop_highlight(const QueuedEvent& popped, double now) const noexcept;
     [[nodiscard]] Rgba8 next_color() const noexcept;
     /// A queue node as wide as the widest of `labels` (and a time to go: beside the label when
@@ -101,7 +106,17 @@ class LessonPainter : public Painter {
     PopHighlight pop_seconds_;       // how long a pop stays lit (FrameContent::pop_highlight)
     std::vector<RectF> labels_;      // queue labels placed in the current box (add_plate_label)
     std::vector<RectF> disc_rects_;  // the discs of the current box, which labels keep clear of
-    bool intro_ = false;             // the title card covers this frame: no other text
+    /// A disc's number waiting for a place outside its box (add_frame_numbers).
+    struct FrameNumber {
+        Font font;
+        PointF disc;   // the disc's centre (px)
+        float radius;  // px
+        std::string text;
+        Rgba8 color;
+        RectF box;  // the disc's box
+    };
+    std::vector<FrameNumber> frame_numbers_;
+    bool intro_ = false;  // the title card covers this frame: no other text
 };
 
 }  // namespace collide::render

@@ -158,61 +158,159 @@ void LessonPainter::add_queue_label(Font font, PointF at, PointF anchor, float a
     draw_text(font, {TextRole::queue, -1, *plate, f.pixel_height()}, text, color, Align::centre);
 }
 
-std::optional<RectF> LessonPainter::queue_gutter(RectF box) const {
-    // The frame beside the box, right then left, as tall as the box: free when no box, text,
-    // code or column of the layout reaches into it.
+std::vector<RectF> LessonPainter::frame_obstacles(RectF own_box) const {
+    // What a number outside the boxes keeps clear of: every box (the other panel's discs too),
+    // the code listing, the queue strip, the caption, the column's graphics, and the text drawn
+    // so far (add_frame_numbers runs after all of it): a line's slot from its left edge (a
+    // title's swatch, a legend's marks) to its last glyph, clear by half a line; a note's slot
+    // whole (its step indicator follows the words). A slot left empty (the energy line's
+    // second line when one holds it) is free.
+    const float clear = std::round(0.5F * body_font_->pixel_height());
+    std::vector<RectF> out;
+    // Another panel's box and the frame over and under it: a number there would read as that
+    // panel's.
     const float m = std::max(2.0F, layout_.margin);
-    const auto width = static_cast<float>(config_.width);
-    const auto free = [&](const RectF& r) {
-        if (r.width() < 2.0F * body_font_->pixel_height()) return false;
-        if (overlaps(r, layout_.code) || overlaps(r, layout_.column.area)) return false;
-        // Never over another panel's box (--code sets the two boxes side by side).
-        for (const PanelLayout& other : layout_.panels)
-            if (overlaps(r, other.box)) return false;
-        return std::none_of(layout_.text.begin(), layout_.text.end(),
-                            [&](const TextSlot& t) { return overlaps(r, t.rect); });
-    };
-    const RectF right{box.x1 + 0.5F * m, box.y0, width - m, box.y1};
-    if (free(right)) return right;
-    const RectF left{m, box.y0, box.x0 - 0.5F * m, box.y1};
-    if (free(left)) return left;
-    return std::nullopt;
+    for (const PanelLayout& panel : layout_.panels) {
+        const RectF b = panel.box;
+        const bool own =
+            b.x0 == own_box.x0 && b.y0 == own_box.y0 && b.x1 == own_box.x1 && b.y1 == own_box.y1;
+        out.push_back(own ? b
+                          : RectF{b.x0 - m, 0.0F, b.x1 + m, static_cast<float>(config_.height)});
+    }
+    for (const RectF& r : {layout_.code, layout_.column.bars, layout_.column.legend_bar,
+                           layout_.column.plot, layout_.queue_strip})
+        if (r.width() > 0.0F && r.height() > 0.0F) out.push_back(r);
+    for (const TextSlot& slot : layout_.text) {
+        const RectF r = slot.rect;
+        if (slot.role == TextRole::note || slot.role == TextRole::queue ||
+            slot.role == TextRole::caption || slot.role == TextRole::code) {
+            out.push_back(r);
+            continue;
+        }
+        float ink = r.x0 - 1.0F;
+        for (const TextRun& run : list_.text) {
+            for (const GlyphBox& g : run.glyphs.glyphs()) {
+                const RectF glyph{static_cast<float>(g.x), static_cast<float>(g.y),
+                                  static_cast<float>(g.x + g.width),
+                                  static_cast<float>(g.y + g.height)};
+                // A glyph is the slot's whose middle is in it (descenders reach the next line).
+                const float mid = 0.5F * (glyph.y0 + glyph.y1);
+                if (mid >= r.y0 && mid < r.y1 && glyph.x1 > r.x0 && glyph.x0 < r.x1)
+                    ink = std::max(ink, glyph.x1);
+            }
+        }
+        if (ink >= r.x0) out.push_back({r.x0, r.y0, std::min(r.x1, ink + clear), r.y1});
+    }
+    return out;
 }
 
-void LessonPainter::add_gutter_label(Font font, PointF disc, float radius, std::string_view text,
-                                     Rgba8 color, RectF gutter) {
+void LessonPainter::add_frame_numbers() {
+    if (frame_numbers_.empty()) return;
+    // Every number of a frame comes from the queue's panel: one box, one list of obstacles.
+    std::optional<RectF> box;
+    std::vector<RectF> obstacles;
+    for (const FrameNumber& n : frame_numbers_) {
+        if (!box || !(box->x0 == n.box.x0 && box->y0 == n.box.y0)) {
+            box = n.box;
+            obstacles = frame_obstacles(n.box);
+        }
+        add_frame_label(n.font, n.disc, n.radius, n.text, n.color, n.box, obstacles);
+    }
+    frame_numbers_.clear();
+}
+
+void LessonPainter::add_frame_label(Font font, PointF disc, float radius, std::string_view text,
+                                    Rgba8 color, RectF box, const std::vector<RectF>& obstacles) {
     const FontAtlas& f = atlas(font);
     const float pad = std::round(0.2F * f.pixel_height());
     const float w = f.text_width(text) + 2.0F * pad;
     const float h = std::round(f.pixel_height() * 1.05F);
-    if (w > gutter.width() || h > gutter.height()) return;
-    const bool on_right = gutter.x0 >= disc.x;
-    const float x0 = std::floor(on_right ? gutter.x0 : gutter.x1 - w);
-    const float y = std::clamp(disc.y - 0.5F * h, gutter.y0, gutter.y1 - h);
-    // The nearest free place along the gutter from the disc's height.
-    std::optional<RectF> plate;
-    for (int k = 0; !plate && k < 2 * static_cast<int>(gutter.height() / h) + 2; ++k) {
-        const float step =
-            static_cast<float>((k + 1) / 2) * (h + 1.0F) * (k % 2 == 1 ? 1.0F : -1.0F);
-        const float y0 = std::floor(y + step);
-        if (y0 < gutter.y0 || y0 + h > gutter.y1) continue;
-        const RectF r{x0, y0, x0 + w, y0 + h};
-        if (std::none_of(labels_.begin(), labels_.end(),
-                         [&](const RectF& o) { return overlaps(r, o); }))
-            plate = r;
+    const float m = std::max(2.0F, layout_.margin);
+    const auto frame_w = static_cast<float>(config_.width);
+    const auto frame_h = static_cast<float>(config_.height);
+    if (w > frame_w - 2.0F * m || h > frame_h - 2.0F * m) return;
+    constexpr float clear = 2.0F;  // px between a plate and what it keeps clear of
+    // The leader line: from the plate to the nearest point of the box's edge, then inside the
+    // box to the disc's edge, so that it crosses no text on its way (the first part is checked).
+    struct Place {
+        RectF plate;
+        PointF from;   // on the plate's edge
+        PointF elbow;  // on the box's edge
+        float cost = 0.0F;
+    };
+    const auto place_at = [&](float x0, float y0) {
+        Place p;
+        p.plate = {std::floor(x0), std::floor(y0), std::floor(x0) + w, std::floor(y0) + h};
+        const PointF centre{0.5F * (p.plate.x0 + p.plate.x1), 0.5F * (p.plate.y0 + p.plate.y1)};
+        p.elbow = {std::clamp(centre.x, box.x0, box.x1), std::clamp(centre.y, box.y0, box.y1)};
+        p.from = {std::clamp(p.elbow.x, p.plate.x0, p.plate.x1),
+                  std::clamp(p.elbow.y, p.plate.y0, p.plate.y1)};
+        p.cost = std::hypot(p.elbow.x - p.from.x, p.elbow.y - p.from.y) +
+                 std::hypot(disc.x - p.elbow.x, disc.y - p.elbow.y);
+        return p;
+    };
+    // A leader keeps a third of a plate's height from text, so that it never reads as an
+    // underline; it may pass close by another plate, never through it.
+    const float line_clear = std::round(h / 3.0F);
+    const auto crosses = [](const RectF& o, PointF a, PointF b, float margin) {
+        PointF u = a;
+        PointF v = b;
+        return clip_to({o.x0 - margin, o.y0 - margin, o.x1 + margin, o.y1 + margin}, u, v);
+    };
+    const auto leader_clear = [&](const Place& p) {
+        const auto hit_obstacle = [&](const RectF& o) {
+            const bool own_box =
+                o.x0 == box.x0 && o.y0 == box.y0 && o.x1 == box.x1 && o.y1 == box.y1;
+            return !own_box && crosses(o, p.from, p.elbow, line_clear);
+        };
+        const auto hit_plate = [&](const RectF& o) { return crosses(o, p.from, p.elbow, -0.5F); };
+        return std::none_of(obstacles.begin(), obstacles.end(), hit_obstacle) &&
+               std::none_of(labels_.begin(), labels_.end(), hit_plate);
+    };
+    // Rows of the frame half a plate apart; in each, the places left free by what lies in the
+    // row (plate left edges), and of those the nearest to the disc along the leader.
+    std::optional<Place> best;
+    std::vector<std::pair<float, float>> blocked;
+    const float step = std::max(1.0F, std::round(0.5F * h));
+    for (float y0 = m; y0 + h <= frame_h - m; y0 += step) {
+        blocked.clear();
+        const auto block = [&](const RectF& o) {
+            if (o.y1 + clear > y0 && o.y0 - clear < y0 + h)
+                blocked.emplace_back(o.x0 - clear - w, o.x1 + clear);
+        };
+        for (const RectF& o : obstacles) block(o);
+        for (const RectF& o : labels_) block(o);
+        std::sort(blocked.begin(), blocked.end());
+        float a = m;
+        const float last = frame_w - m - w;
+        const auto consider = [&](float lo, float hi) {
+            if (hi < lo) return;
+            for (const float x : {lo, hi, std::clamp(disc.x - 0.5F * w, lo, hi)}) {
+                const Place p = place_at(x, y0);
+                if ((!best || p.cost < best->cost) && leader_clear(p)) best = p;
+            }
+        };
+        for (const auto& [b0, b1] : blocked) {
+            consider(a, std::min(b0, last));
+            a = std::max(a, b1);
+        }
+        consider(a, last);
     }
-    if (!plate) return;
-    labels_.push_back(*plate);
-    // A leader line from the plate to the disc's edge: the number names that disc.
-    const PointF from{on_right ? plate->x0 : plate->x1, 0.5F * (plate->y0 + plate->y1)};
-    const float length = std::hypot(disc.x - from.x, disc.y - from.y);
+    if (!best) return;  // no free place in the frame: the strip names the event
+    labels_.push_back(best->plate);
+    const float line_w = std::max(1.0F, std::round(h / 16.0F));
+    if (std::hypot(best->elbow.x - best->from.x, best->elbow.y - best->from.y) > 0.5F)
+        list_.over.add_line(best->from, best->elbow, line_w, faded(color, 0.8F));
+    const float length = std::hypot(disc.x - best->elbow.x, disc.y - best->elbow.y);
     if (length > radius) {
         const float keep = radius / length;
-        const PointF to{disc.x + (from.x - disc.x) * keep, disc.y + (from.y - disc.y) * keep};
-        list_.over.add_line(from, to, std::max(1.0F, std::round(h / 16.0F)), faded(color, 0.8F));
+        const PointF to{disc.x + (best->elbow.x - disc.x) * keep,
+                        disc.y + (best->elbow.y - disc.y) * keep};
+        list_.over.add_line(best->elbow, to, line_w, faded(color, 0.8F));
     }
-    list_.over.add_rect(*plate, with_alpha(rgb(palette_.box_fill), 215));
-    draw_text(font, {TextRole::queue, -1, *plate, f.pixel_height()}, text, color, Align::centre);
+    list_.over.add_rect(best->plate, with_alpha(rgb(palette_.box_fill), 215));
+    draw_text(font, {TextRole::queue, -1, best->plate, f.pixel_height()}, text, color,
+              Align::centre);
 }
 
 // Lines between the discs of the next collisions, ticks on the walls, each with its time to go;
@@ -316,9 +414,9 @@ void LessonPainter::add_queue_in_box(const Snapshot& snapshot, const QueueWords&
                         first ? next_color() : palette_.text, inside);
     };
     // A disc's number just under it (or the nearest free place), a leader line to its edge.
-    // A box too crowded for a free place (dense-fluid) numbers its discs in the frame's free
-    // strip beside the box (its gutter), where one is clear of all text.
-    const std::optional<RectF> gutter = queue_gutter(inside);
+    // A box too crowded for a free place (dense-fluid) numbers its discs in the nearest place of
+    // the frame clear of every box, text and the code, once all of the frame's text is drawn
+    // (add_frame_numbers).
     const auto number = [&](std::uint32_t k, std::string_view text, Font font, Rgba8 color) {
         if (k >= snapshot.discs.size()) return;
         const DiscState& disc = snapshot.discs[k];
@@ -326,8 +424,8 @@ void LessonPainter::add_queue_in_box(const Snapshot& snapshot, const QueueWords&
         const auto radius = static_cast<float>(disc.radius * panel.scale);
         const std::size_t placed = labels_.size();
         add_queue_label(font, {c.x, c.y + radius + 0.7F * body}, c, radius, text, color, inside);
-        if (labels_.size() == placed && gutter)
-            add_gutter_label(font, c, radius, text, color, *gutter);
+        if (labels_.size() == placed)
+            frame_numbers_.push_back({font, c, radius, std::string(text), color, inside});
     };
     if (queue.next.empty()) return;
     time_label(0);
