@@ -96,7 +96,14 @@ class CalendarQueue {
     [[nodiscard]] handle_type top() const { return heap_.top(); }
     [[nodiscard]] const Key& top_key() const { return heap_.top_key(); }
 
-    void push_or_change(handle_type h, const Key& k) {
+    // Always inlined, as the heap's sink is: out of line, the heap's change_key was no longer
+    // inlined either, 4 % more instructions per 2D event at 10^5 discs (cachegrind).
+    [[gnu::always_inline]] void push_or_change(handle_type h, const Key& k) {
+        if (inv_width_ == 0.0) {
+            heap_.push_or_change(h, k);
+            validate();
+            return;
+        }
         if (heap_.contains(h)) {
             if (block_of(k.t) <= cur_) {
                 heap_.change_key(h, k);
