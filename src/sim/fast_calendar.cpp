@@ -1,9 +1,10 @@
-// The fast engine's event queue: the spheres' calendar tuned to the scene, and the queue as a
-// watched engine shows it (the discs' indexed heap, the spheres' calendar).
+// The fast engine's event queue: the calendar tuned to the scene, and the queue as a watched
+// engine shows it (the discs' calendar as one indexed heap, the spheres' calendar).
 
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -13,33 +14,44 @@ namespace collide::sim {
 
 namespace {
 
-/// The spheres' event calendar (pq::CalendarQueue): blocks that hold this many events on
+/// The event calendar (pq::CalendarQueue): blocks that hold this many events on
 /// average (the heap of the current block stays small), and a ring of buckets reaching this
 /// many mean event intervals ahead (later events wait in the overflow list).
 constexpr double calendar_events_per_block = 8.0;
 constexpr double calendar_horizon = 8.0;
 
+/// Discs keep the calendar up to this many (records of at most 4 MiB) and run it as one block, a
+/// plain heap, beyond: measured against the heap on the 2-core machine (issue 47), the calendar
+/// ran 1.11x at 10^3 discs, 1.14x at 10^4, 1.03-1.09x at 3x10^4 and 5x10^4, but 0.96x at 10^5
+/// (median of ten interleaved pairs) and level at 10^6, where its list links (two random entries
+/// per reschedule) miss the caches more often than the heap's sinks do (docs/benchmarks.md).
+constexpr std::size_t calendar_max_discs = 65536;
+
 }  // namespace
 
 template <int D>
 void BasicFastEngine<D>::tune_calendar() {
-    if constexpr (D == 3) {
-        // Each particle's next event is on average `mean` ahead, so the whole system has about
-        // n / mean events per unit time.
-        double sum = 0.0;
-        std::size_t n = 0;
-        queue_.for_each([&](std::uint32_t, const Key& k) {
-            sum += k.t - now_;
-            ++n;
-        });
-        if (n == 0 || !(sum > 0.0)) return;  // nothing moves: one block
-        const double mean = sum / static_cast<double>(n);
-        const double width = calendar_events_per_block * mean / static_cast<double>(n);
-        const auto buckets = std::bit_ceil(std::max<std::size_t>(
-            64, static_cast<std::size_t>(calendar_horizon * static_cast<double>(n) /
-                                         calendar_events_per_block)));
-        queue_.tune(width, buckets, now_);
+    if (D == 2 && (watch_.on() || p_.size() > calendar_max_discs)) {
+        // One heap of every pending event (a block of infinite width): the lecture's queue, and
+        // the faster queue for many discs.
+        queue_.tune(std::numeric_limits<double>::infinity(), 2, now_);
+        return;
     }
+    // Each particle's next event is on average `mean` ahead, so the whole system has about
+    // n / mean events per unit time.
+    double sum = 0.0;
+    std::size_t n = 0;
+    queue_.for_each([&](std::uint32_t, const Key& k) {
+        sum += k.t - now_;
+        ++n;
+    });
+    if (n == 0 || !(sum > 0.0)) return;  // nothing moves: one block
+    const double mean = sum / static_cast<double>(n);
+    const double width = calendar_events_per_block * mean / static_cast<double>(n);
+    const auto buckets = std::bit_ceil(std::max<std::size_t>(
+        64, static_cast<std::size_t>(calendar_horizon * static_cast<double>(n) /
+                                     calendar_events_per_block)));
+    queue_.tune(width, buckets, now_);
 }
 
 template <int D>
@@ -57,8 +69,8 @@ QueuedEvent BasicFastEngine<D>::queued_event(std::uint32_t i, const Key& key) co
     return e;
 }
 
-// The indexed 4-ary heap holding one pending event per disc: its top levels, its next
-// collisions. O(N), only for watched engines.
+// The calendar's heap (for watched discs: every pending event, one per disc): its top levels,
+// and the next collisions of the whole calendar. O(N), only for watched engines.
 template <int D>
 QueueView BasicFastEngine<D>::queue_view() const {
     QueueView view;
@@ -69,20 +81,11 @@ QueueView BasicFastEngine<D>::queue_view() const {
     view.size = n;
     std::vector<QueuedEvent> all;
     all.reserve(n);
-    std::size_t tree = n;  // entries in heap order at the front of `all`
-    if constexpr (D == 3) {
-        // The calendar's heap holds its next events; the tree shows that heap.
-        view.name = "event calendar (next events: indexed 4-ary heap)";
-        tree = queue_.near().size();
-        queue_.for_each(
-            [&](std::uint32_t i, const Key& key) { all.push_back(queued_event(i, key)); });
-    } else {
-        view.name = "indexed 4-ary heap";
-        for (std::size_t k = 0; k < n; ++k) {
-            const Key& key = queue_.key_at(k);
-            all.push_back(queued_event(key.a, key));
-        }
-    }
+    // The calendar's heap holds its next events (all of them for watched discs); the tree
+    // shows that heap.
+    view.name = D == 2 ? "indexed 4-ary heap" : "event calendar (next events: indexed 4-ary heap)";
+    const std::size_t tree = queue_.near().size();
+    queue_.for_each([&](std::uint32_t i, const Key& key) { all.push_back(queued_event(i, key)); });
     view.stale_entries = static_cast<std::uint64_t>(
         std::count_if(all.begin(), all.end(), [](const QueuedEvent& e) { return e.stale; }));
     view.levels = shown_tree_levels(view.arity, tree, watch_.limits());

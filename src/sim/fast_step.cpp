@@ -60,11 +60,7 @@ void BasicFastEngine<D>::advance_to(double t) {
 
 template <int D>
 bool BasicFastEngine<D>::settle_queue() {
-    if constexpr (D == 3) {
-        return queue_.settle();
-    } else {
-        return !queue_.empty();
-    }
+    return queue_.settle();
 }
 
 template <int D>

@@ -137,6 +137,43 @@ TEST_CASE("an event calendar of one block is a plain heap, and tune() re-files w
     CHECK(simulate(calendar, handles, 5'000, rng, delay) == 0);
 }
 
+TEST_CASE("an event calendar tuned to one block frees its lists' entries and takes them back") {
+    // The fast engine runs many discs' calendar as one block (src/sim/fast_calendar.cpp).
+    constexpr std::uint32_t handles = 1000;
+    std::mt19937_64 rng(9);
+    const auto delay = [](std::mt19937_64& g) {
+        return std::exponential_distribution<double>(2.0)(g);
+    };
+    Calendar calendar(handles);
+    calendar.tune(0.01, 64, 0.0);
+    for (std::uint32_t h = 0; h < handles; ++h) calendar.push_or_change(h, TimedKey{0.001 * h, h});
+    const std::size_t with_lists = calendar.bytes();
+    calendar.tune(std::numeric_limits<double>::infinity(), 2, 0.0);
+    CHECK(calendar.size() == handles);
+    CHECK(calendar.near().size() == handles);
+    CHECK(calendar.bytes() < with_lists);  // 32 bytes of entry per handle gone, 16 of key added
+    CHECK(calendar.check_invariants());
+    // New handles and erased ones go through the heap alone.
+    calendar.reserve_handles(2 * handles);
+    calendar.push_or_change(handles + 7, TimedKey{0.5, handles + 7});
+    calendar.erase(handles + 8);  // never filed
+    CHECK(calendar.contains(handles + 7));
+    CHECK_FALSE(calendar.contains(handles + 8));
+    for (std::uint32_t h = 0; h < 2 * handles; ++h) calendar.erase(h);
+    CHECK(calendar.empty());
+    CHECK(simulate(calendar, 2 * handles, 5'000, rng, delay) == 0);
+    // Blocks again: the entries come back and later events go to the ring.
+    calendar.tune(0.01, 64, 0.0);
+    for (std::uint32_t h = 0; h < 2 * handles; ++h) {
+        calendar.push_or_change(h, TimedKey{0.001 * h, h});
+    }
+    CHECK(calendar.near().size() < calendar.size());
+    CHECK(calendar.check_invariants());
+    for (std::uint32_t h = 0; h < 2 * handles; ++h) calendar.erase(h);
+    CHECK(calendar.empty());
+    CHECK(simulate(calendar, 2 * handles, 5'000, rng, delay) == 0);
+}
+
 TEST_CASE("the event calendar jumps over empty blocks and files times near the double range") {
     Calendar calendar(4);
     calendar.tune(1e-3, 64, 0.0);
