@@ -223,6 +223,11 @@ std::string layout_json(const FrameLayout& layout, OverlayLevel level, int width
                              {"text", words}});
         }
         out["other_text"] = std::move(other);
+        Json ink = Json::array();
+        for (const SlotTexts::Ink& i : drawn->ink)
+            ink.push_back(
+                {{"role", text_role_name(i.role)}, {"rect", rect_json(i.rect)}, {"text", i.text}});
+        out["text_ink"] = std::move(ink);
     }
     // Strings are any bytes a scene wrote: invalid UTF-8 becomes U+FFFD rather than an error.
     return out.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";

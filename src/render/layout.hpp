@@ -124,6 +124,14 @@ struct FrameLayout {
 struct SlotTexts {
     std::vector<std::vector<std::string>> in_slots;
     std::vector<std::pair<TextSlot, std::string>> elsewhere;
+    /// Every string draw_text set, where its glyphs went (its advance across, the font's line
+    /// height up and down): what a test checks for text over text.
+    struct Ink {
+        TextRole role;
+        RectF rect;
+        std::string text;
+    };
+    std::vector<Ink> ink;
 };
 
 /// What the layout needs to know of a frame besides its size.

@@ -62,9 +62,12 @@ class LessonPainter : public Painter {
     void add_popped(const QueueView& queue, const QueueWords& words, double now, RectF area);
     void add_queue_tree(const QueueView& queue, const QueueWords& words, double now, RectF area);
     void add_queue_row(const QueueView& queue, const QueueWords& words, RectF area);
-    /// The event just popped, left of the root and right of `left` (the latest pops' list).
-    void add_leaving_root(const QueueView& queue, const QueueWords& words, double now, PointF root,
-                          float node_w, float node_h, float left);
+    /// The event just popped, in `node` left of the heap's root node `root`.
+    void add_leaving_root(const QueueView& queue, const QueueWords& words, double now, RectF root,
+                          RectF node);
+    /// The width of the node of the event just popped; 0 when none is shown.
+    [[nodiscard]] float leaving_width(const QueueView& queue, const QueueWords& words, double now,
+                                      bool one_line) const;
     /// A slot of the queue: the event's label over its time to go (or the stale word).
     void add_queue_node(std::string_view label, std::string_view time, RectF node,
                         Rgba8 frame_color, bool stale);

@@ -554,36 +554,40 @@ void LessonPainter::add_queue_node(std::string_view label, std::string_view time
         time, time_color, Align::centre);
 }
 
+/// The event just popped, in a node as wide as its words (the label, and on two lines the
+/// leaving word under it): its width, or 0 when nothing is leaving (no pop, or its highlight over).
+float LessonPainter::leaving_width(const QueueView& queue, const QueueWords& words, double now,
+                                   bool one_line) const {
+    if (queue.popped.empty() || pop_highlight(queue.popped.back(), now) <= 0.0F) return 0.0F;
+    const FontAtlas& small = *small_font_;
+    float widest = small.text_width(nth(words.popped_labels, queue.popped.size() - 1));
+    if (!one_line) {
+        const std::string& word =
+            queue.popped.back().stale ? words.stale_leaving : words.fresh_leaving;
+        widest = std::max(widest, small.text_width(word));
+    }
+    return std::round(widest + 0.8F * small.pixel_height());
+}
+
 // The event just popped, beside the root it was a moment ago, fading out with an arrow away
-// from the tree: "remove the min = get next collision", seen as it happens.
+// from the tree: "remove the min = get next collision", seen as it happens. `node` is its place
+// left of `root` (add_queue_tree leaves the room between them for the arrow).
 void LessonPainter::add_leaving_root(const QueueView& queue, const QueueWords& words, double now,
-                                     PointF root, float node_w, float node_h, float left) {
-    if (queue.popped.empty()) return;
+                                     RectF root, RectF node) {
     const QueuedEvent& e = queue.popped.back();
     const float glow = pop_highlight(e, now);
-    if (glow <= 0.0F) return;
     const FontAtlas& small = *small_font_;
-    // Two lines: room for QueueWords::stale_leaving under the label. One line: the label alone
-    // (the latest pops' list says what became of it), as wide as it needs.
-    const bool one_line = one_line_nodes(node_h);
+    const bool one_line = one_line_nodes(node.height());
     const std::string& label = nth(words.popped_labels, queue.popped.size() - 1);
-    const float w = one_line ? std::round(small.text_width(label) + 0.8F * small.pixel_height())
-                             : std::round(1.5F * node_w);
-    // Beside the latest pops' list, never over it: a wide node moves right, its arrow shortens.
-    // The arrow's room in the leaving node's own width when that is the narrower (one line).
-    const float unit = one_line ? w : node_w;
-    const float x1 =
-        std::round(std::max(root.x - 0.5F * node_w - 1.2F * unit, std::ceil(left) + w));
-    const RectF node{x1 - w, std::round(root.y - 0.5F * node_h), x1,
-                     std::round(root.y + 0.5F * node_h)};
     const Rgba8 color = e.stale ? palette_.muted : next_color();
     list_.over.add_rect(node, faded(color, 0.25F * glow));
     list_.over.add_frame(node, 2.0F, faded(color, glow));
-    const float ay = root.y;
-    const float ax0 = std::round(root.x - 0.5F * node_w - 0.2F * unit);
-    const float ax1 = node.x1 + 0.2F * unit;
+    const float ay = std::round(0.5F * (root.y0 + root.y1));
+    const float gap = root.x0 - node.x1;
+    const float ax0 = root.x0 - 0.15F * gap;
+    const float ax1 = node.x1 + 0.15F * gap;
     list_.over.add_line({ax0, ay}, {ax1, ay}, 2.0F, faded(color, glow));
-    const float head = (one_line ? 0.3F : 0.18F) * node_h;
+    const float head = std::min((one_line ? 0.3F : 0.18F) * node.height(), 0.4F * gap);
     list_.over.add_line({ax1, ay}, {ax1 + head, ay - head}, 2.0F, faded(color, glow));
     list_.over.add_line({ax1, ay}, {ax1 + head, ay + head}, 2.0F, faded(color, glow));
     const Rgba8 text = faded(e.stale ? palette_.muted : palette_.title, glow);
@@ -592,7 +596,7 @@ void LessonPainter::add_leaving_root(const QueueView& queue, const QueueWords& w
                   Align::centre);
         return;
     }
-    const float half = 0.5F * node_h;
+    const float half = 0.5F * node.height();
     draw_text(
         Font::small,
         {TextRole::queue, -1, {node.x0, node.y0, node.x1, node.y0 + half}, small.pixel_height()},
@@ -604,81 +608,76 @@ void LessonPainter::add_leaving_root(const QueueView& queue, const QueueWords& w
 }
 
 // A heap's top levels: slot i's children are d i + 1 .. d i + d; the root (the next pop) framed
-// in the highlight colour, stale entries greyed.
+// in the highlight colour, stale entries greyed. Nodes keep their full width: a narrow strip
+// shows fewer of them, never squeezed or on top of each other. First the root and the event
+// just popped beside it, then the root's first children that fit, then "+N below" right of the
+// root where it fits whole (else left out).
 void LessonPainter::add_queue_tree(const QueueView& queue, const QueueWords& words, double now,
                                    RectF area) {
     if (queue.slots.empty() || queue.levels == 0) return;
     const FontAtlas& small = *small_font_;
+    const float h = small.pixel_height();
     const std::size_t d = std::max<unsigned>(queue.arity, 2);
     const bool one_line = one_line_nodes(area.height());
-    const float node_h =
-        one_line ? std::floor(area.height()) : std::round(node_lines * small.pixel_height());
-    // The levels that fit the strip (a view may hold more than the show's budget allows here).
-    const auto fit =
-        static_cast<unsigned>(std::max(1.0F, std::floor((area.height() + 4.0F) / (node_h + 4.0F))));
-    const unsigned shown_levels = std::min(queue.levels, fit);
-    const auto levels = static_cast<float>(shown_levels);
-    const float level_gap = std::max(
-        4.0F, std::floor((area.height() - levels * node_h) / std::max(levels - 1.0F, 1.0F)));
-    std::size_t widest = 1;
-    for (unsigned l = 1; l < shown_levels; ++l) widest *= d;
-    const float cell_w = area.width() / static_cast<float>(widest);
-    const float node_w = std::min(node_width(words.slot_labels, one_line), cell_w - 3.0F);
-    // Slot i sits at level l, position p within it; its centre is over its subtree's middle.
-    std::vector<PointF> centre(queue.slots.size());
-    std::size_t first = 0;
-    std::size_t width = 1;
-    for (unsigned l = 0; l < shown_levels; ++l) {
-        const float span = area.width() / static_cast<float>(width);
-        for (std::size_t p = 0; p < width && first + p < queue.slots.size(); ++p) {
-            centre[first + p] = {
-                area.x0 + (static_cast<float>(p) + 0.5F) * span,
-                area.y0 + static_cast<float>(l) * (node_h + level_gap) + 0.5F * node_h};
-        }
-        first += width;
-        width *= d;
+    const float node_h = one_line ? std::floor(area.height()) : std::round(node_lines * h);
+    const float node_w = std::min(node_width(words.slot_labels, one_line), area.width());
+    constexpr float node_gap = 4.0F;
+    // The levels that fit the strip's height (a view may hold more than the show's budget
+    // allows here), and the children under the root that fit its width.
+    const auto fit = static_cast<unsigned>(
+        std::max(1.0F, std::floor((area.height() + node_gap) / (node_h + node_gap))));
+    const std::size_t fit_across =
+        static_cast<std::size_t>(std::floor((area.width() + node_gap) / (node_w + node_gap)));
+    const std::size_t children = std::min({d, queue.slots.size() - 1, fit_across});
+    const bool two_levels = std::min(queue.levels, fit) >= 2 && children > 0;
+    const float level_gap = two_levels ? std::max(node_gap, area.height() - 2.0F * node_h) : 0.0F;
+    const auto node_at = [&](float cx, float y0) {
+        const float x0 = std::round(std::clamp(cx - 0.5F * node_w, area.x0, area.x1 - node_w));
+        return RectF{x0, std::round(y0), x0 + node_w, std::round(y0 + node_h)};
+    };
+    // The children spread over the strip's width, each over the middle of its share.
+    std::vector<RectF> nodes;
+    const float child_y = area.y0 + node_h + level_gap;
+    const float span = area.width() / static_cast<float>(std::max<std::size_t>(children, 1));
+    float root_x = area.x0 + 0.5F * area.width();
+    // The event just popped and the arrow left of the root: four text heights where the strip
+    // has room, two at least; no room for that, the latest pops' list shows it alone.
+    float leaving = leaving_width(queue, words, now, one_line);
+    const float arrow = std::min(4.0F * h, area.width() - leaving - node_w);
+    if (arrow < 2.0F * h) leaving = 0.0F;
+    if (leaving > 0.0F) root_x = std::max(root_x, area.x0 + leaving + arrow + 0.5F * node_w);
+    nodes.push_back(node_at(root_x, area.y0));
+    if (two_levels) {
+        for (std::size_t p = 0; p < children; ++p)
+            nodes.push_back(node_at(area.x0 + (static_cast<float>(p) + 0.5F) * span, child_y));
     }
-    const std::size_t placed = std::min(first, queue.slots.size());
-    if (shown_levels == 1 && !queue.popped.empty()) {
-        // The root alone (a short strip): the event just popped sits left of it (add_leaving_root:
-        // half as wide again as a node, or on one line its label's width); move the root right
-        // so that the arrow between them is long enough to read (4 text heights).
-        const float leaving =
-            one_line ? small.text_width(nth(words.popped_labels, queue.popped.size() - 1)) +
-                           0.8F * small.pixel_height()
-                     : std::round(1.5F * node_w);
-        const float want = area.x0 + leaving + 4.0F * small.pixel_height() + 0.5F * node_w;
-        // ... and clear of "+N below" at the line's right end.
-        const float below =
-            words.below.empty() ? 0.0F : small.text_width(words.below) + small.pixel_height();
-        centre.front().x =
-            std::max(centre.front().x, std::min(want, area.x1 - below - 0.5F * node_w));
+    const RectF& root = nodes.front();
+    for (std::size_t i = 1; i < nodes.size(); ++i) {
+        const RectF& c = nodes[i];
+        list_.over.add_line({0.5F * (root.x0 + root.x1), root.y1}, {0.5F * (c.x0 + c.x1), c.y0},
+                            1.5F, faded(palette_.muted, 0.8F));
     }
-    for (std::size_t i = 1; i < placed; ++i) {
-        const PointF c = centre[i];
-        const PointF parent = centre[(i - 1) / d];
-        list_.over.add_line({parent.x, parent.y + 0.5F * node_h}, {c.x, c.y - 0.5F * node_h}, 1.5F,
-                            faded(palette_.muted, 0.8F));
-    }
-    for (std::size_t i = 0; i < placed; ++i) {
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
         const QueuedEvent& e = queue.slots[i];
-        const PointF c = centre[i];
-        const RectF node{std::round(c.x - 0.5F * node_w), std::round(c.y - 0.5F * node_h),
-                         std::round(c.x + 0.5F * node_w), std::round(c.y + 0.5F * node_h)};
         const Rgba8 frame =
             i == 0 ? next_color() : (e.stale ? faded(palette_.muted, 0.6F) : palette_.muted);
         add_queue_node(nth(words.slot_labels, i),
-                       e.stale ? words.stale_slot : nth(words.slot_times, i), node, frame, e.stale);
+                       e.stale ? words.stale_slot : nth(words.slot_times, i), nodes[i], frame,
+                       e.stale);
     }
-    add_leaving_root(queue, words, now, centre.front(), node_w, node_h, area.x0);
-    if (!words.below.empty()) {
+    if (leaving > 0.0F)
+        add_leaving_root(queue, words, now, root,
+                         {root.x0 - arrow - leaving, root.y0, root.x0 - arrow, root.y1});
+    // "+N below" on the root's line, right of it, when it fits there whole.
+    const float below_x0 = root.x1 + h;
+    if (!words.below.empty() && below_x0 + small.text_width(words.below) <= area.x1) {
+        const float y0 = std::round(0.5F * (root.y0 + root.y1) - 0.5F * strip_line * h);
         draw_text(Font::small,
                   {TextRole::queue,
                    -1,
-                   {area.x1 - area.width() * 0.4F, area.y0, area.x1,
-                    area.y0 + std::round(small.pixel_height() * strip_line)},
+                   {below_x0, y0, area.x1, y0 + std::round(strip_line * h)},
                    small.pixel_height()},
-                  words.below, palette_.muted, Align::right);  // the left of the root is for pops
+                  words.below, palette_.muted, Align::right);
     }
 }
 

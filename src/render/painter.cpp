@@ -81,6 +81,7 @@ const DrawList& Painter::build(const FrameContent& frame) {
     layout_ = layout_for(frame);
     drawn_.in_slots.assign(layout_.text.size(), {});
     drawn_.elsewhere.clear();
+    drawn_.ink.clear();
     begin_frame(frame);
     if (trails_.size() != frame.panels.size()) {
         trails_.assign(frame.panels.size(),
@@ -376,6 +377,10 @@ float Painter::draw_text(Font font, const TextSlot& slot, std::string_view text,
     auto run = std::find_if(list_.text.begin(), list_.text.end(),
                             [&](const TextRun& r) { return r.font == &f; });
     record_text(slot, shown);
+    if (!shown.empty()) {
+        const float top = baseline - f.ascent();
+        drawn_.ink.push_back({slot.role, {left, top, left + width, top + f.pixel_height()}, shown});
+    }
     return f.add_text(run->glyphs, left, baseline, shown, color);
 }
 

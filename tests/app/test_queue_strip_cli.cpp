@@ -1,0 +1,95 @@
+// The queue strip beside a single box (--mode event --queue, with and without --code) is narrow
+// at the small presets: its text (heading, pops, the heap's nodes, the event just popped,
+// "+N below") never lies on other text nor outside the strip. Read back from --layout-json's
+// "text_ink" (where each string's glyphs went).
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "../support/temp_dir.hpp"
+#include "run_collide.hpp"
+
+namespace fs = std::filesystem;
+using collide::test::run_collide;
+using collide::test::TempDir;
+
+namespace {
+
+struct Box {
+    double x0, y0, x1, y1;
+};
+
+Box box_of(const nlohmann::json& v) {
+    return {v.at(0).get<double>(), v.at(1).get<double>(), v.at(2).get<double>(),
+            v.at(3).get<double>()};
+}
+
+/// Overlap by more than a pixel's fraction (touching edges do not count).
+bool overlap(const Box& a, const Box& b) {
+    constexpr double eps = 0.01;
+    return a.x0 < b.x1 - eps && b.x0 < a.x1 - eps && a.y0 < b.y1 - eps && b.y0 < a.y1 - eps;
+}
+
+bool inside(const Box& a, const Box& outer) {
+    constexpr double eps = 0.01;
+    return a.x0 >= outer.x0 - eps && a.x1 <= outer.x1 + eps && a.y0 >= outer.y0 - eps &&
+           a.y1 <= outer.y1 + eps;
+}
+
+void check_strip(const TempDir& dir, const std::string& scene, const char* preset,
+                 const char* options) {
+    CAPTURE(scene);
+    CAPTURE(preset);
+    CAPTURE(options);
+    const fs::path json = dir.path / "layout.json";
+    const auto r = run_collide("thumbnail " + scene + " -q " + preset + " --at 0.5 " + options +
+                               " --progress none -o " + (dir.path / "t.png").string() +
+                               " --layout-json " + json.string());
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    std::ifstream in(json);
+    const nlohmann::json layout = nlohmann::json::parse(in);
+    const nlohmann::json* strip_slot = nullptr;
+    for (const nlohmann::json& slot : layout.at("text"))
+        if (slot.at("role") == "queue") strip_slot = &slot;
+    REQUIRE(strip_slot != nullptr);
+    const Box strip = box_of(strip_slot->at("rect"));
+    const double lesson_px = strip_slot->at("pixel_height").get<double>();
+    // The strip's text: every queue string whose middle is in the strip (a crowded box's disc
+    // numbers, also queue text, stay off the strip).
+    std::vector<std::pair<Box, std::string>> texts;
+    for (const nlohmann::json& ink : layout.at("text_ink")) {
+        if (ink.at("role") != "queue") continue;
+        const Box b = box_of(ink.at("rect"));
+        const double cx = 0.5 * (b.x0 + b.x1);
+        const double cy = 0.5 * (b.y0 + b.y1);
+        if (cx < strip.x0 || cx > strip.x1 || cy < strip.y0 || cy > strip.y1) continue;
+        texts.emplace_back(b, ink.at("text").get<std::string>());
+    }
+    // The heading, a pop or the counts, and the root at least.
+    CHECK(texts.size() >= 3);
+    for (std::size_t i = 0; i < texts.size(); ++i) {
+        const auto& [a, text] = texts[i];
+        CAPTURE(text);
+        CHECK(inside(a, strip));
+        // At the lesson's text size (capitals 2.8 % of the frame height): never shrunk to fit.
+        CHECK(a.y1 - a.y0 >= lesson_px - 0.5);
+        for (std::size_t j = i + 1; j < texts.size(); ++j) {
+            CAPTURE(texts[j].second);
+            CHECK_FALSE(overlap(a, texts[j].first));
+        }
+    }
+}
+
+}  // namespace
+
+TEST_CASE("the queue strip beside one box: no text on other text, all inside the strip") {
+    TempDir dir("queue_strip");
+    for (const std::string scene : {"dense-fluid", "gas", "billiards"})
+        for (const char* preset : {"l", "m"})
+            for (const char* options : {"--mode event --queue", "--mode event --queue --code"})
+                check_strip(dir, scene, preset, options);
+}
