@@ -4,7 +4,6 @@
 // next caption cuts to a fraction of a second (tunnelling's "Left: discs jump through the barrier",
 // a third of a second before its question) is a sentence no student reads.
 #include <doctest/doctest.h>
-
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -93,7 +92,8 @@ TEST_CASE("a slowed video keeps its captions' reading time, and says which it dr
     // --code's slow motion (16x) and --slow-motion 2: the captions move to the moments they were
     // written for (show::lesson_plan), so they may crowd together or fall after the run; each
     // shown is still read, each dropped is named.
-    for (const std::string name : {"billiards", "brownian", "gas", "newtons-cradle", "tunnelling"}) {
+    for (const std::string name :
+         {"billiards", "brownian", "gas", "newtons-cradle", "tunnelling"}) {
         const Scene scene = load_scene(name, COLLIDE_ASSETS_DIR);
         const ReplayFinder finder = [&scene](const RenderPlan& draft) {
             return find_replays(scene, draft);
