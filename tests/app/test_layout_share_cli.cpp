@@ -2,16 +2,14 @@
 // from --layout-json (the thumbnail path lays a frame out as the video does).
 #include <doctest/doctest.h>
 
-#include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "../support/temp_dir.hpp"
 #include "run_collide.hpp"
+#include "thumbnail_layout.hpp"
 
-namespace fs = std::filesystem;
 using collide::test::run_collide;
 using collide::test::TempDir;
 
@@ -31,18 +29,6 @@ double area(const nlohmann::json& rect) {
            (rect.at(3).get<double>() - rect.at(1).get<double>());
 }
 
-/// The frame's layout for `scene` at preset `preset` with `options`.
-nlohmann::json layout_of(const TempDir& dir, const std::string& scene, const char* preset,
-                         const char* options) {
-    const fs::path json = dir.path / "layout.json";
-    const auto r = run_collide("thumbnail " + scene + " -q " + preset + " --at 0.5 " + options +
-                               " --progress none -o " + (dir.path / "t.png").string() +
-                               " --layout-json " + json.string());
-    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
-    std::ifstream in(json);
-    return nlohmann::json::parse(in);
-}
-
 /// The boxes' share of the frame; in maxwell-boltzmann, whose subject is the histogram, the
 /// boxes and the histogram together.
 double boxes_share(const nlohmann::json& layout, const std::string& scene) {
@@ -59,7 +45,7 @@ void check_share(const TempDir& dir, const std::string& scene, const char* prese
     CAPTURE(preset);
     CAPTURE(scene);
     CAPTURE(variant.options);
-    const nlohmann::json layout = layout_of(dir, scene, preset, variant.options);
+    const nlohmann::json layout = thumbnail_layout(dir, scene, preset, variant.options);
     CHECK(boxes_share(layout, scene) >= variant.min_share);
     // No text was shrunk to make room: capitals >= 2.8 % of the frame height.
     const double min_cap = 0.028 * layout.at("height").get<double>() - 0.05;

@@ -4,16 +4,14 @@
 // "text_ink" (where each string's glyphs went).
 #include <doctest/doctest.h>
 
-#include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "../support/temp_dir.hpp"
 #include "run_collide.hpp"
+#include "thumbnail_layout.hpp"
 
-namespace fs = std::filesystem;
 using collide::test::run_collide;
 using collide::test::TempDir;
 
@@ -45,13 +43,7 @@ void check_strip(const TempDir& dir, const std::string& scene, const char* prese
     CAPTURE(scene);
     CAPTURE(preset);
     CAPTURE(options);
-    const fs::path json = dir.path / "layout.json";
-    const auto r = run_collide("thumbnail " + scene + " -q " + preset + " --at 0.5 " + options +
-                               " --progress none -o " + (dir.path / "t.png").string() +
-                               " --layout-json " + json.string());
-    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
-    std::ifstream in(json);
-    const nlohmann::json layout = nlohmann::json::parse(in);
+    const nlohmann::json layout = thumbnail_layout(dir, scene, preset, options);
     const nlohmann::json* strip_slot = nullptr;
     for (const nlohmann::json& slot : layout.at("text"))
         if (slot.at("role") == "queue") strip_slot = &slot;
