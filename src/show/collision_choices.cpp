@@ -95,14 +95,6 @@ double video_second_after(double running, double intro, const std::vector<Freeze
     return at;
 }
 
-/// Whether the scene's question `cue` is asked in this video: questions on, at the level that
-/// draws them, by a panel the video shows.
-bool asked_in(const QuestionCue& cue, const LessonRequest& request, const LevelShows& shows) {
-    if (!request.questions || !shows.replays || request.step_list) return false;
-    return needs_event_panel(cue.kind) ? request.event_panel
-                                       : !needs_time_panel(cue.kind) || request.time_panel;
-}
-
 /// The captions of a video whose simulation runs `request.slower` times slower than the scene's
 /// own pace (--code's slow motion, --slow-motion, --speed): each caption written for the moment
 /// the scene's video shows at its `at` moves to where this video shows that moment (the same
@@ -112,28 +104,25 @@ bool asked_in(const QuestionCue& cue, const LessonRequest& request, const LevelS
 /// A caption so moved past `run_end` (the summary card or the end) is left out with a notice in
 /// `notices`.
 std::vector<CaptionCue> paced_captions(const Scene& scene, const LessonRequest& request,
-                                       double intro, double run_end, const LevelShows& shows,
-                                       std::vector<std::string>& notices) {
+                                       const LessonPlan& lesson, double run_end,
+                                       const LevelShows& shows, std::vector<std::string>& notices) {
     // A faster video shows a moment after its caption's: late, but not yet untrue.
     if (!(request.slower > 1.0)) return scene.render.captions;
     const bool scene_intro = !scene.description.empty() && shows.cards;
     const double written_intro =
         scene_intro ? std::min(intro_seconds, 0.25 * request.scene_duration) : 0.0;
     std::vector<Freeze> written;  // the scene's own video
-    std::vector<Freeze> asked;    // this video's questions
-    for (const QuestionCue& cue : scene.render.questions) {
-        const Freeze freeze{cue.at, cue.think + reveal_seconds_of(cue.kind)};
-        written.push_back(freeze);
-        if (asked_in(cue, request, shows)) asked.push_back(freeze);
-    }
+    for (const QuestionCue& cue : scene.render.questions)
+        written.push_back({cue.at, cue.think + reveal_seconds_of(cue.kind)});
     for (const CaptionCue& cue : scene.render.captions) {
         if (shows.caption_holds && cue.hold > 0.0) written.push_back({cue.at, cue.hold});
     }
-    std::vector<Freeze> here = asked;
+    std::vector<Freeze> here;  // this video's: its questions, then the moved captions' holds
+    for (const TimelineQuestion& q : lesson.questions) here.push_back({q.at, q.think + q.reveal});
     std::vector<CaptionCue> captions;
     for (CaptionCue cue : scene.render.captions) {
         const double running = running_before(cue.at, written_intro, written) * request.slower;
-        double at = video_second_after(running, intro, here);
+        double at = video_second_after(running, lesson.intro_seconds, here);
         // Moved together, a caption waits until the one before it has been read.
         if (!captions.empty()) {
             const CaptionCue& before = captions.back();
@@ -196,13 +185,36 @@ LessonPlan lesson_plan(const Scene& scene, const LessonRequest& request,
     // The summary card at the end, where the lesson's figures are shown.
     if (request.epilogue && shows.cards)
         lesson.epilogue_seconds = std::min(epilogue_seconds, 0.2 * request.duration);
+    // Questions: where the lesson's captions and words are drawn, by the panel that answers
+    // them (will-see: the time-driven one; the others: the event-driven one). Planned before the
+    // captions: a slowed video's captions move around them.
+    std::vector<std::string> question_notices;
+    if (request.questions && shows.replays && !request.step_list) {
+        for (const QuestionCue& cue : scene.render.questions) {
+            const bool event = needs_event_panel(cue.kind);
+            if (event ? !request.event_panel : needs_time_panel(cue.kind) && !request.time_panel) {
+                question_notices.push_back(question_place(cue) + ": render.questions: a " +
+                                           std::string(question_kind_name(cue.kind)) +
+                                           " question needs the " + (event ? "event" : "time") +
+                                           "-driven panel; not asked");
+                continue;
+            }
+            lesson.questions.push_back({cue.at,
+                                        cue.think,
+                                        reveal_seconds_of(cue.kind),
+                                        {},
+                                        {},
+                                        cue.kind == QuestionKind::will_see});
+            lesson.question_cues.push_back(cue);
+        }
+    }
     lesson.caption = scene.render.caption.value_or("");
     // A caption moved past the end by the command line's pace is the command line's doing: a
     // notice, as past a --duration's end.
     lesson.captions = captions_within(
-        paced_captions(scene, request, lesson.intro_seconds,
-                       request.duration - lesson.epilogue_seconds, shows, notices),
-        request.duration, request.duration_from_cli || request.slower != 1.0, notices);
+        paced_captions(scene, request, lesson, request.duration - lesson.epilogue_seconds, shows,
+                       notices),
+        request.duration, request.duration_from_cli || request.slower > 1.0, notices);
     // One panel: the words written for it, never a word of the absent one ("Left tests...").
     for (CaptionCue& cue : lesson.captions) cue.text = caption_for_panels(cue, request);
     lesson.epilogue_caption = request.time_panel && request.event_panel
@@ -218,27 +230,8 @@ LessonPlan lesson_plan(const Scene& scene, const LessonRequest& request,
     if (!shows.caption_holds) {
         for (CaptionCue& cue : lesson.captions) cue.hold = 0.0;
     }
-    // Questions: where the lesson's captions and words are drawn, by the panel that answers
-    // them (will-see: the time-driven one; the others: the event-driven one).
-    if (request.questions && shows.replays && !request.step_list) {
-        for (const QuestionCue& cue : scene.render.questions) {
-            const bool event = needs_event_panel(cue.kind);
-            if (event ? !request.event_panel : needs_time_panel(cue.kind) && !request.time_panel) {
-                notices.push_back(question_place(cue) + ": render.questions: a " +
-                                  std::string(question_kind_name(cue.kind)) +
-                                  " question needs the " + (event ? "event" : "time") +
-                                  "-driven panel; not asked");
-                continue;
-            }
-            lesson.questions.push_back({cue.at,
-                                        cue.think,
-                                        reveal_seconds_of(cue.kind),
-                                        {},
-                                        {},
-                                        cue.kind == QuestionKind::will_see});
-            lesson.question_cues.push_back(cue);
-        }
-    }
+    // The questions' notices where they always came: after the captions'.
+    notices.insert(notices.end(), question_notices.begin(), question_notices.end());
     lesson.histogram = histogram_size(scene);
     // A --dt list: each panel's note and step indicator are its own (CollisionSimulation).
     if (request.step_list) return lesson;
