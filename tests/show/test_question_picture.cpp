@@ -22,6 +22,7 @@ using namespace collide::show;
 
 namespace {
 
+using test::after_frame;
 using test::clock_of;
 
 /// The discs of the candidates, each once.
@@ -58,8 +59,8 @@ TEST_CASE("a next-collision question draws every candidate disc's velocity, one 
         const std::unique_ptr<Engine> engine = make_engine(scene, EngineOptions{});
         for (std::int64_t j = 0; j <= 10; ++j) engine->advance_to(clock.time(j));
         const Snapshot now = engine->snapshot();
-        const QuestionAnswer answer = answer_next_collision(
-            *engine, now, [&clock](std::int64_t i) { return clock.time(10 + i); }, 30, seed);
+        const QuestionAnswer answer =
+            answer_next_collision(*engine, now, after_frame(clock, 10), 30, seed);
         REQUIRE(answer.askable);
         const ReplayView asking = question_view(answer, now, clock, 2.5, false);
         const ReplayView reveal = question_view(answer, now, clock, 1.0, true);
@@ -115,8 +116,8 @@ TEST_CASE("a next-collision question tints each candidate's lines and letter, ne
         const std::unique_ptr<Engine> engine = make_engine(scene, EngineOptions{});
         for (std::int64_t j = 0; j <= 10; ++j) engine->advance_to(clock.time(j));
         const Snapshot now = engine->snapshot();
-        const QuestionAnswer answer = answer_next_collision(
-            *engine, now, [&clock](std::int64_t i) { return clock.time(10 + i); }, 30, seed);
+        const QuestionAnswer answer =
+            answer_next_collision(*engine, now, after_frame(clock, 10), 30, seed);
         REQUIRE(answer.askable);
         for (const bool reveal : {false, true}) {
             CAPTURE(reveal);
@@ -152,8 +153,8 @@ TEST_CASE("a next-collision question's connectors stop at the discs' edges") {
         const std::unique_ptr<Engine> engine = make_engine(scene, EngineOptions{});
         for (std::int64_t j = 0; j <= 10; ++j) engine->advance_to(clock.time(j));
         const Snapshot now = engine->snapshot();
-        const QuestionAnswer answer = answer_next_collision(
-            *engine, now, [&clock](std::int64_t i) { return clock.time(10 + i); }, 30, seed);
+        const QuestionAnswer answer =
+            answer_next_collision(*engine, now, after_frame(clock, 10), 30, seed);
         REQUIRE(answer.askable);
         const ReplayView view = question_view(answer, now, clock, 2.5, false);
         for (const BoxLine& line : view.lines) {
@@ -187,8 +188,8 @@ TEST_CASE("a next-collision question's candidates are drawn apart where the engi
         const std::unique_ptr<Engine> engine = make_engine(scene, EngineOptions{});
         for (std::int64_t j = 0; j <= k; ++j) engine->advance_to(clock.time(j));
         const Snapshot now = engine->snapshot();
-        const QuestionAnswer answer = answer_next_collision(
-            *engine, now, [&clock, k](std::int64_t i) { return clock.time(k + i); }, 30, seed);
+        const QuestionAnswer answer =
+            answer_next_collision(*engine, now, after_frame(clock, k), 30, seed);
         REQUIRE(answer.askable);
         const ReplayView view = question_view(answer, now, clock, 2.5, false);
         const double margin = drawing_gap_share * std::min(now.box.width, now.box.height);

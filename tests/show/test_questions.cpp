@@ -21,6 +21,7 @@ using namespace collide::show;
 
 namespace {
 
+using test::after_frame;
 using test::clock_of;
 
 /// A fresh engine stepped to frame k as a video steps it, then on in small steps: the first
@@ -42,10 +43,6 @@ bool same_contact(const CollisionRecord& x, const CollisionRecord& y) {
     if (x.kind != y.kind) return false;
     if (x.kind != CollisionKind::pair) return x.a == y.a;
     return std::min(x.a, x.b) == std::min(y.a, y.b) && std::max(x.a, x.b) == std::max(y.a, y.b);
-}
-
-FramesAfter after_frame(const FrameClock& clock, std::int64_t k) {
-    return [clock, k](std::int64_t i) { return static_cast<double>(k + i) * clock.interval; };
 }
 
 }  // namespace
