@@ -124,6 +124,59 @@ void check_legible(const pq::HeapRecord& record, const HeapCli& v) {
                                : ""));
 }
 
+/// The least frame height whose heap lessons are checked to fit (check_fits): -q l's.
+constexpr int lesson_check_height = 480;
+
+/// The lesson's frames whose layouts differ (before any key is returned, and after the last
+/// operation), each panel cut to at most `keys` keys.
+std::vector<view::HeapFrameView> layouts_of(const show::HeapProgram& lesson, std::size_t keys) {
+    std::vector<view::HeapFrameView> frames{lesson.frame_at(0.0),
+                                            lesson.frame_at(0.5 * lesson.duration()),
+                                            lesson.frame_at(lesson.duration())};
+    for (view::HeapFrameView& frame : frames) {
+        for (view::HeapPanelView& panel : frame.panels) {
+            panel.capacity = std::min(panel.capacity, keys);
+            if (panel.slots.size() > keys) panel.slots.resize(keys);
+        }
+    }
+    return frames;
+}
+
+/// Refuses a lesson whose trees, maps and keys do not all fit `config`'s frame with every
+/// label at the lesson size (HeapRenderer::fits: no node on a node, every key inside its
+/// node), naming the most keys at once that would fit these panels; rather than draw a
+/// squashed picture.
+void check_fits(const show::HeapProgram& lesson, const render::HeapViewConfig& config,
+                const HeapCli& v) {
+    // Below -q l's 480 lines (previews, thumbnails) the text stands at its least size, larger
+    // than 2.8 % of the frame, and the picture is a sketch: the check is for lesson sizes.
+    if (config.height < lesson_check_height) return;
+    const std::size_t capacity = lesson.record().capacity();
+    const auto fit = [&](std::size_t keys) {
+        const std::vector<view::HeapFrameView> frames = layouts_of(lesson, keys);
+        return std::all_of(frames.begin(), frames.end(), [&](const view::HeapFrameView& f) {
+            return render::HeapRenderer::fits(config, f);
+        });
+    };
+    if (fit(capacity)) return;
+    std::size_t most = capacity - 1;
+    while (most > 0 && !fit(most)) --most;
+    const std::size_t panels = lesson.record().panels().size();
+    const bool words = lesson.widest_key().size() > 2;
+    std::string impls;
+    for (const std::string& impl : v.impls) impls += (impls.empty() ? "" : ",") + impl;
+    throw_option_error(
+        given(v.sort_opt) ? "--sort" : "--ops",
+        fmt::format("the queue holds up to {} keys at once, but {} fit{} a {}x{} frame with {} "
+                    "(every node apart and every key inside its node at the lesson size){}; "
+                    "use fewer keys{}{}",
+                    capacity, most == 0 ? std::string("none") : "at most " + std::to_string(most),
+                    most == 1 ? "s" : "", config.width, config.height,
+                    "--impl " + (impls.empty() ? std::string("binary") : impls),
+                    v.code ? " beside the code" : "", words ? ", shorter keys" : "",
+                    panels > 1 ? " or fewer implementations" : ""));
+}
+
 void run(const HeapCli& v) {
     // Validation: nothing is drawn, and no file is created, until all of it passes.
     const ProgressMode progress_mode = parse_progress_mode(v.video.progress);
@@ -131,14 +184,6 @@ void run(const HeapCli& v) {
     const show::HeapProgram lesson = lesson_of(v);
     check_legible(lesson.record(), v);
     const AlgorithmVideoGeometry geometry = algorithm_video_geometry_of(v.video);
-    const AlgorithmVideoDestination destination =
-        algorithm_video_destination_of(v.video, "heap", lesson.duration(), lesson.name());
-    const OutputChoice& output = destination.output;
-    std::optional<io::OutputFile> timeline_file =
-        open_timeline_json(v.timeline_json, destination,
-                           show::drawn_lesson_timeline(lesson.duration(), geometry.fps,
-                                                       show::asked_stretches(lesson)));
-
     render::HeapViewConfig config;
     config.font_path = find_drawing_font(v.video.font);
     config.width = geometry.width;
@@ -148,6 +193,15 @@ void run(const HeapCli& v) {
     config.captions = lesson.captions();
     if (lesson.shows_code()) config.code_lines = lesson.code_lines();
     config.theme = theme;
+    check_fits(lesson, config, v);
+    const AlgorithmVideoDestination destination =
+        algorithm_video_destination_of(v.video, "heap", lesson.duration(), lesson.name());
+    const OutputChoice& output = destination.output;
+    std::optional<io::OutputFile> timeline_file =
+        open_timeline_json(v.timeline_json, destination,
+                           show::drawn_lesson_timeline(lesson.duration(), geometry.fps,
+                                                       show::asked_stretches(lesson)));
+
     render::HeapRenderer renderer(config, render::Backend::automatic, print_notice);
 
     const double still_time = destination.still_time;

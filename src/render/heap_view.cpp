@@ -117,7 +117,7 @@ struct HeapRenderer::Impl {
 
     HeapViewConfig config;
     HeapPalette colors;
-    GlTarget target;  // the context and every GL object
+    std::optional<GlTarget> target;  // the context and every GL object (none: layout only)
 
     std::map<int, FontAtlas> fonts;           // by pixel height (map nodes: stable addresses)
     std::map<int, std::size_t> text_run;      // pixel height -> its run in list.text
@@ -134,7 +134,8 @@ struct HeapRenderer::Impl {
     Impl(const HeapViewConfig& cfg, std::unique_ptr<Context> ctx)
         : config(cfg),
           colors(heap_palette(cfg.theme)),
-          target(cfg.width, cfg.height, std::move(ctx)) {
+          target(ctx ? std::optional<GlTarget>(std::in_place, cfg.width, cfg.height, std::move(ctx))
+                     : std::nullopt) {
         config.validate();
         unit = static_cast<float>(config.height) / 720.0F;
         (void)font(caption_px());  // a missing font fails here, before any frame
@@ -271,22 +272,10 @@ struct HeapRenderer::Impl {
         list.background = colors.background;
         const auto w = static_cast<float>(config.width);
         const auto h = static_cast<float>(config.height);
-        columns = panel_columns(frame.panels.size());
-        beside_code = frame.code.has_value();
-        const float margin = (columns >= 4 ? 8.0F : 14.0F) * unit;
+        const float margin = frame_margin(frame);
         const float strip_h = build_token_strip(frame, margin);
-        // --code: the listing takes a fixed column on the right, the same in every frame, so
-        // that the tree keeps its place when the operation (and its listing) changes.
         const float code_w = frame.code ? code_width(*frame.code) : 0.0F;
-        const float panels_x1 = w - margin - (frame.code ? code_w + margin : 0.0F);
-        const RectF area{margin, strip_h, panels_x1, h - margin};
-        // Equal widths unless a panel needs more (an indexed heap's map column beside its tree):
-        // then it takes that from panels that need less.
-        const std::vector<RectF> equal = panel_rects(frame.panels.size(), area, margin);
-        std::vector<float> needs;
-        for (std::size_t p = 0; p < frame.panels.size(); ++p)
-            needs.push_back(panel_need(frame.panels[p], equal[p]));
-        const std::vector<RectF> rects = panel_rects_by_need(needs, area, margin);
+        const std::vector<RectF> rects = panel_areas(frame, strip_h, code_w);
         for (std::size_t p = 0; p < frame.panels.size(); ++p) {
             build_panel(frame.panels[p], rects[p]);
         }
@@ -301,6 +290,44 @@ struct HeapRenderer::Impl {
             paint_code(*frame.code, {w - margin - code_w, strip_h, w - margin, h - margin}, f,
                        heap_code_colors(colors), under, draw);
         }
+    }
+
+    /// The space around the panels; sets the frame's grid (columns, beside_code).
+    float frame_margin(const view::HeapFrameView& frame) {
+        columns = panel_columns(frame.panels.size());
+        beside_code = frame.code.has_value();
+        return (columns >= 4 ? 8.0F : 14.0F) * unit;
+    }
+
+    /// The panels' rectangles under a token strip `strip_h` tall, left of a code column
+    /// `code_w` wide (0: none): equal widths unless a panel needs more (an indexed heap's map
+    /// column beside its tree), which it takes from panels that need less. --code: the listing
+    /// takes a fixed column on the right, the same in every frame, so that the tree keeps its
+    /// place when the operation (and its listing) changes.
+    std::vector<RectF> panel_areas(const view::HeapFrameView& frame, float strip_h, float code_w) {
+        const auto w = static_cast<float>(config.width);
+        const auto h = static_cast<float>(config.height);
+        const float margin = frame_margin(frame);
+        const float panels_x1 = w - margin - (frame.code ? code_w + margin : 0.0F);
+        const RectF area{margin, strip_h, panels_x1, h - margin};
+        const std::vector<RectF> equal = panel_rects(frame.panels.size(), area, margin);
+        std::vector<float> needs;
+        for (std::size_t p = 0; p < frame.panels.size(); ++p)
+            needs.push_back(panel_need(frame.panels[p], equal[p]));
+        return panel_rects_by_need(needs, area, margin);
+    }
+
+    /// Whether every panel of `frame` holds its parts at the lesson size (layout_panel: no two
+    /// nodes touching, every key inside its node, the map and the counters in their place).
+    bool fits(const view::HeapFrameView& frame) {
+        list.clear();
+        const float strip_h = build_token_strip(frame, frame_margin(frame));
+        const float code_w = frame.code ? code_width(*frame.code) : 0.0F;
+        const std::vector<RectF> rects = panel_areas(frame, strip_h, code_w);
+        for (std::size_t p = 0; p < frame.panels.size(); ++p) {
+            if (layout_panel(frame.panels[p], rects[p]).cramped) return false;
+        }
+        return true;
     }
 
     /// The code column's width (--code): the widest line of the video's listings at the lesson
@@ -766,13 +793,17 @@ struct HeapRenderer::Impl {
             return r.x0 >= g.panel.x0 + gap && r.x1 <= g.panel.x1 - gap &&
                    r.y0 >= g.panel.y0 + gap && r.y1 <= g.slot_top - gap;
         };
-        // A leader from node `n` to a plate at `c` passes by every other node.
-        const auto leader_clear = [&](PointF n, PointF c) {
+        // A leader from node `n` to a plate at `c` passes by every other node (and, where
+        // `by_plates`, under no other plate); it may cross the faint places of the capacity
+        // that hold no key.
+        const std::size_t keyed = std::min({p.slots.size(), p.heap_size, g.nodes.size()});
+        const auto leader_clear = [&](PointF n, PointF c, bool by_plates = true) {
             const float dx = c.x - n.x;
             const float dy = c.y - n.y;
             const float length2 = std::max(dx * dx + dy * dy, 1e-6F);
-            for (const PointF& o : g.nodes) {
-                if (o.x == n.x && o.y == n.y) continue;
+            for (std::size_t i = 0; i < keyed; ++i) {
+                const PointF o = g.nodes[i];
+                if ((o.x == n.x && o.y == n.y) || !visible(p, i)) continue;
                 const float t =
                     std::clamp(((o.x - n.x) * dx + (o.y - n.y) * dy) / length2, 0.0F, 1.0F);
                 const float ex = n.x + t * dx - o.x;
@@ -781,7 +812,7 @@ struct HeapRenderer::Impl {
                 if (ex * ex + ey * ey < reach * reach) return false;
             }
             // Nor under another plate: a leader reads as its plate's only when it ends there.
-            return std::none_of(plates.begin(), plates.end(), [&](const PointF& o) {
+            return !by_plates || std::none_of(plates.begin(), plates.end(), [&](const PointF& o) {
                 return crosses(n, c, {o.x - half, o.y - half, o.x + half, o.y + half});
             });
         };
@@ -816,37 +847,77 @@ struct HeapRenderer::Impl {
                 if (placed) break;
             }
             // No place on the rings: the clear place nearest the node anywhere above the array,
-            // on a leader that passes by the other nodes and plates if one can.
-            for (const bool strict : {true, false}) {
+            // on a leader that passes by the other nodes and plates if one can, else by the
+            // other nodes (a leader through a node would point at the wrong key), else on a
+            // leader bent once beside its node, round the nodes in the way.
+            std::optional<PointF> elbow;
+            const float bend = g.node_radius + band + 2.0F * gap;
+            const auto bent = [&](PointF c) -> std::optional<PointF> {
+                for (const auto& d : dirs) {
+                    const PointF w{n.x + d[0] * (bend + 0.5F * half), n.y + d[1] * bend};
+                    if (leader_clear(n, w, false) && leader_clear(w, c, false)) return w;
+                }
+                return std::nullopt;
+            };
+            for (const int strict : {2, 1, -1, 0}) {
                 if (placed) break;
                 float best = std::numeric_limits<float>::max();
                 const float step = 0.25F * side;
                 for (float y = g.panel.y0 + half; y <= g.slot_top - half; y += step) {
                     for (float x = g.panel.x0 + half; x <= g.panel.x1 - half; x += step) {
                         const float d = (x - n.x) * (x - n.x) + (y - n.y) * (y - n.y);
-                        if (d < best && clear({x, y}) && (!strict || leader_clear(n, {x, y}))) {
-                            best = d;
-                            at = {x, y};
-                            placed = true;
-                            leader = true;
+                        if (d >= best || !clear({x, y})) continue;
+                        std::optional<PointF> w;
+                        if (strict == -1) {
+                            w = bent({x, y});
+                            if (!w) continue;
+                        } else if (strict > 0 && !leader_clear(n, {x, y}, strict == 2)) {
+                            continue;
                         }
+                        best = d;
+                        at = {x, y};
+                        elbow = w;
+                        placed = true;
+                        leader = true;
                     }
                 }
             }
             plates.push_back(at);
             const float alpha = p.reveal && !letter.answer ? 0.35F : 1.0F;
             const RectF box{at.x - half, at.y - half, at.x + half, at.y + half};
+            std::vector<DrawnSegment> drawn_leader;
             if (leader) {
-                // From the node's outline to the plate's edge, as thick as a lit edge.
-                const float dx = at.x - n.x;
-                const float dy = at.y - n.y;
+                // From the node's outline (by way of the elbow, if any) to the plate's edge, as
+                // thick as a lit edge.
+                const float thick = std::max(2.0F, 3.0F * unit);
+                const PointF first = elbow ? *elbow : at;
+                const float dx = first.x - n.x;
+                const float dy = first.y - n.y;
                 const float length = std::sqrt(dx * dx + dy * dy);
                 const float from = std::min(g.node_radius + band, 0.5F * length);
                 const PointF a{n.x + dx * from / length, n.y + dy * from / length};
-                const float to = std::max(0.0F, length - half);
-                const PointF b{n.x + dx * to / length, n.y + dy * to / length};
-                over.add_line(a, b, std::max(2.0F, 3.0F * unit), faded(lit.fill, alpha));
-                leaders.emplace_back(n, at);
+                PointF b = first;
+                if (!elbow) {
+                    const float to = std::max(0.0F, length - half);
+                    b = {n.x + dx * to / length, n.y + dy * to / length};
+                }
+                over.add_line(a, b, thick, faded(lit.fill, alpha));
+                drawn_leader.push_back({a.x, a.y, b.x, b.y});
+                leaders.emplace_back(n, first);
+                if (elbow) {
+                    const float ex = at.x - elbow->x;
+                    const float ey = at.y - elbow->y;
+                    const float rest = std::max(std::sqrt(ex * ex + ey * ey), 1e-3F);
+                    const float to = std::max(0.0F, rest - half);
+                    const PointF e{elbow->x + ex * to / rest, elbow->y + ey * to / rest};
+                    // A square on the bend closes the corner between the two strokes.
+                    const float k = 0.5F * thick;
+                    over.add_rect({elbow->x - k, elbow->y - k, elbow->x + k, elbow->y + k},
+                                  faded(lit.fill, alpha));
+                    over.add_line(*elbow, e, thick, faded(lit.fill, alpha));
+                    drawn_leader.push_back({elbow->x, elbow->y, e.x, e.y});
+                    leaders.emplace_back(*elbow, at);
+                }
             }
             over.add_rect(box, faded(lit.fill, alpha));
             if (p.reveal && letter.answer)
@@ -854,6 +925,7 @@ struct HeapRenderer::Impl {
             DrawnShape plate{box.x0, box.y0, box.x1, box.y1, 0.0F};
             centred(f, at, letter.letter, faded(lit.text, alpha), plate);
             drawn.back().over = true;
+            drawn.back().leader = std::move(drawn_leader);
         }
         if (!p.countdown.empty()) {
             // At the tree's top right, else its top left, else just above the array, else beside
@@ -987,6 +1059,12 @@ struct HeapRenderer::Impl {
         return mark == view::SlotMark::inserted || mark == view::SlotMark::leaving ? p.fade : 1.0F;
     }
 
+    /// Whether the key of slot i shows in the tree: a key that has faded out entirely (it left
+    /// the heap) is drawn no more, and a leader may pass where it was.
+    [[nodiscard]] static bool visible(const view::HeapPanelView& p, std::size_t i) {
+        return alpha_of(p, p.slots[i].mark) > 0.01F;
+    }
+
     void build_tree(const view::HeapPanelView& p, const PanelGeometry& g) {
         const std::size_t in_tree = std::min(p.slots.size(), p.heap_size);
         const float edge_w = std::max(1.5F, 3.0F * unit);
@@ -1011,7 +1089,7 @@ struct HeapRenderer::Impl {
         for (int pass = 0; pass < 2; ++pass) {
             for (std::size_t i = 0; i < in_tree; ++i) {
                 const bool moving = p.swap && (i == p.swap->a || i == p.swap->b);
-                if (moving != (pass == 1)) continue;
+                if (moving != (pass == 1) || !visible(p, i)) continue;
                 draw_node(p.slots[i], node_position(p, g, i), g.node_radius, g.node_half_w,
                           alpha_of(p, p.slots[i].mark), f);
             }
@@ -1179,8 +1257,9 @@ struct HeapRenderer::Impl {
     void render(const view::HeapFrameView& frame, Image& out) {
         check(frame);
         build(frame);
-        target.draw(list);
-        target.read_pixels(list, out);
+        COLLIDE_ASSERT(target.has_value(), "a renderer made with a context draws");
+        target->draw(list);
+        target->read_pixels(list, out);
     }
 };
 
@@ -1199,6 +1278,12 @@ HeapRenderer& HeapRenderer::operator=(HeapRenderer&&) noexcept = default;
 
 void HeapRenderer::render(const view::HeapFrameView& frame, Image& out) {
     impl_->render(frame, out);
+}
+
+bool HeapRenderer::fits(const HeapViewConfig& config, const view::HeapFrameView& frame) {
+    config.validate();
+    Impl layout(config, nullptr);
+    return layout.fits(frame);
 }
 
 const std::vector<DrawnText>& HeapRenderer::last_text() const noexcept {

@@ -232,3 +232,31 @@ TEST_CASE("collide heap --code: where no code can be shown, exit 2 naming --code
                    "at most 21 can be drawn legibly with 1 panel side by side"));
     CHECK(fs::is_empty(dir.path));  // nothing written
 }
+
+TEST_CASE(
+    "collide heap: trees that do not fit the frame at the lesson size exit 2 naming the most "
+    "keys that do") {
+    // Issue 44: an indexed heap of 11 keys beside two other heaps, or word keys in two heaps,
+    // were drawn with nodes on nodes and words out of their nodes; now refused up front.
+    TempDir dir("heap_fit");
+    const std::string out = " --progress none --last-frame -o " + quoted(dir.path / "x.png");
+    const std::string eleven = "\"P Q E X A M L S O R T * *\"";
+    const std::string three =
+        run_collide_bad_input("heap --ops " + eleven + " --impl binary,dary:3,indexed -q l" + out);
+    CHECK(contains(three,
+                   "--ops: the queue holds up to 11 keys at once, but at most 8 fit a "
+                   "854x480 frame with --impl binary,dary:3,indexed"));
+    CHECK(contains(three, "use fewer keys or fewer implementations"));
+    const std::string words = run_collide_bad_input(
+        "heap --ops \"apple banana cherry damson elder fig grape hazel iris * kiwi *\" --impl "
+        "binary,dary:4 --size 1280x720" +
+        out);
+    CHECK(contains(words, "holds up to 9 keys at once, but at most 6 fit a 1280x720 frame"));
+    CHECK(contains(words, "shorter keys"));
+    CHECK(!fs::exists(dir.path / "x.png"));
+    // The most that fit are drawn.
+    const auto eight =
+        run_collide("heap --ops \"P Q E X A M L S * *\" --impl binary,dary:3,indexed -q l" + out);
+    CHECK_MESSAGE(eight.exit_code == 0, eight.output);
+    CHECK(fs::exists(dir.path / "x.png"));
+}

@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace collide::render {
 
@@ -18,6 +19,14 @@ struct DrawnShape {
     float x1 = 0.0F;
     float y1 = 0.0F;
     float corner = 0.0F;
+};
+
+/// A straight line in frame pixels: a piece of a question plate's leader.
+struct DrawnSegment {
+    float x0 = 0.0F;
+    float y0 = 0.0F;
+    float x1 = 0.0F;
+    float y1 = 0.0F;
 };
 
 /// One piece of text drawn in a frame.
@@ -33,6 +42,9 @@ struct DrawnText {
     /// Laid over the picture (a question's letter on its plate, `shape`): it must cover no other
     /// text, shape or node.
     bool over = false;
+    /// The leader from a plate laid far from its node (`over`), from the node's outline to the
+    /// plate's edge, straight or bent once (empty: none): it passes through no other node.
+    std::vector<DrawnSegment> leader{};
 };
 
 }  // namespace collide::render

@@ -87,6 +87,12 @@ class HeapRenderer {
     void render(const view::HeapFrameView& frame, Image& out);
     [[nodiscard]] Image render(const view::HeapFrameView& frame);
 
+    /// Whether every panel of `frame` holds its parts at `config`'s size with every text at the
+    /// lesson size: no two tree nodes touching, each key inside its node, the indexed heap's map
+    /// and the counters in their place. Layout only: no context is made. Throws Error(input)
+    /// for a bad config, runtime when the font cannot be read.
+    [[nodiscard]] static bool fits(const HeapViewConfig& config, const view::HeapFrameView& frame);
+
     /// Every piece of text of the last frame drawn, in drawing order, with its size (for tests:
     /// nothing a class reads is smaller than the lesson size).
     [[nodiscard]] const std::vector<DrawnText>& last_text() const noexcept;
