@@ -170,7 +170,16 @@ void LessonPainter::add_marks(std::size_t index, const PanelContent& content,
 void LessonPainter::add_mark_legend(std::size_t index, const PanelContent& content) {
     const TextSlot* slot = layout_.slot(TextRole::marks, static_cast<int>(index));
     if (slot == nullptr) return;
-    float x = Painter::add_mark_legend(*slot, content.mark_words, slot->rect.x0);
+    // "and 55 more not drawn" counts this panel's failures: never under another panel's box,
+    // where it would read as that panel's (left out where it does not fit whole before it: the
+    // figures row counts every failure).
+    float own_x1 = slot->rect.x1;
+    for (std::size_t i = 0; i < layout_.panels.size(); ++i) {
+        const RectF& box = layout_.panels[i].box;
+        if (i != index && box.x0 > slot->rect.x0)
+            own_x1 = std::min(own_x1, box.x0 - layout_.margin);
+    }
+    float x = Painter::add_mark_legend(*slot, content.mark_words, slot->rect.x0, own_x1);
     // The queue's lines in the box ("Next 4 collisions, time to go": the lines in the box).
     const std::string& queue_legend = content.queue_words.legend;
     if (content.snapshot->queue && !queue_legend.empty() &&
