@@ -124,6 +124,9 @@ class LessonPainter : public Painter {
         RectF box;  // the disc's box
     };
     std::vector<FrameNumber> frame_numbers_;
+    /// The notes drawn in this frame, each from its slot's left edge to the end of its step
+    /// indicator (or its words): what a number keeps clear of in a note's row.
+    std::vector<RectF> notes_;
     bool intro_ = false;  // the title card covers this frame: no other text
 };
 

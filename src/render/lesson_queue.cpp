@@ -162,8 +162,8 @@ std::vector<RectF> LessonPainter::frame_obstacles(RectF own_box) const {
     // What a number outside the boxes keeps clear of: every box (the other panel's discs too),
     // the code listing, the queue strip, the caption, the column's graphics, and the text drawn
     // so far (add_frame_numbers runs after all of it): a line's slot from its left edge (a
-    // title's swatch, a legend's marks) to its last glyph, clear by half a line; a note's slot
-    // whole (its step indicator follows the words). A slot left empty (the energy line's
+    // title's swatch, a legend's marks) to its last glyph, clear by half a line; a note to the
+    // end of its step indicator, which follows the words. A slot left empty (the energy line's
     // second line when one holds it) is free.
     const float clear = std::round(0.5F * body_font_->pixel_height());
     std::vector<RectF> out;
@@ -182,11 +182,12 @@ std::vector<RectF> LessonPainter::frame_obstacles(RectF own_box) const {
         if (r.width() > 0.0F && r.height() > 0.0F) out.push_back(r);
     for (const TextSlot& slot : layout_.text) {
         const RectF r = slot.rect;
-        if (slot.role == TextRole::note || slot.role == TextRole::queue ||
-            slot.role == TextRole::caption || slot.role == TextRole::code) {
+        if (slot.role == TextRole::queue || slot.role == TextRole::caption ||
+            slot.role == TextRole::code) {
             out.push_back(r);
             continue;
         }
+        if (slot.role == TextRole::note) continue;  // notes_ below
         float ink = r.x0 - 1.0F;
         for (const TextRun& run : list_.text) {
             for (const GlyphBox& g : run.glyphs.glyphs()) {
@@ -201,6 +202,7 @@ std::vector<RectF> LessonPainter::frame_obstacles(RectF own_box) const {
         }
         if (ink >= r.x0) out.push_back({r.x0, r.y0, std::min(r.x1, ink + clear), r.y1});
     }
+    for (const RectF& note : notes_) out.push_back({note.x0, note.y0, note.x1 + clear, note.y1});
     return out;
 }
 
@@ -238,11 +240,18 @@ void LessonPainter::add_frame_label(Font font, PointF disc, float radius, std::s
         PointF elbow;  // on the box's edge
         float cost = 0.0F;
     };
-    const auto place_at = [&](float x0, float y0) {
+    // The elbow is the nearest point of the box's edge, or moved along that edge by `shift`
+    // (px): a slanting leader that passes between plates nearer the box.
+    const auto place_at = [&](float x0, float y0, float shift) {
         Place p;
         p.plate = {std::floor(x0), std::floor(y0), std::floor(x0) + w, std::floor(y0) + h};
         const PointF centre{0.5F * (p.plate.x0 + p.plate.x1), 0.5F * (p.plate.y0 + p.plate.y1)};
         p.elbow = {std::clamp(centre.x, box.x0, box.x1), std::clamp(centre.y, box.y0, box.y1)};
+        if (p.elbow.y == box.y0 || p.elbow.y == box.y1) {
+            p.elbow.x = std::clamp(p.elbow.x + shift, box.x0, box.x1);
+        } else {
+            p.elbow.y = std::clamp(p.elbow.y + shift, box.y0, box.y1);
+        }
         p.from = {std::clamp(p.elbow.x, p.plate.x0, p.plate.x1),
                   std::clamp(p.elbow.y, p.plate.y0, p.plate.y1)};
         p.cost = std::hypot(p.elbow.x - p.from.x, p.elbow.y - p.from.y) +
@@ -283,12 +292,24 @@ void LessonPainter::add_frame_label(Font font, PointF disc, float radius, std::s
         std::sort(blocked.begin(), blocked.end());
         float a = m;
         const float last = frame_w - m - w;
-        const auto consider = [&](float lo, float hi) {
-            if (hi < lo) return;
-            for (const float x : {lo, hi, std::clamp(disc.x - 0.5F * w, lo, hi)}) {
-                const Place p = place_at(x, y0);
+        const auto try_at = [&](float x) {
+            for (const float shift : {0.0F, -0.5F, 0.5F, -1.0F, 1.0F, -2.0F, 2.0F}) {
+                const Place p = place_at(x, y0, shift * w);
                 if ((!best || p.cost < best->cost) && leader_clear(p)) best = p;
             }
+        };
+        const auto consider = [&](float lo, float hi) {
+            if (hi < lo) return;
+            for (const float x : {lo, hi, std::clamp(disc.x - 0.5F * w, lo, hi)}) try_at(x);
+            // Where the leader passes beside a plate placed nearer the box (rows of numbers
+            // under or beside it), and a quarter plate apart in between.
+            for (const RectF& o : labels_) {
+                for (const float centre : {o.x0 - clear, o.x1 + clear}) {
+                    const float x = centre - 0.5F * w;
+                    if (x >= lo && x <= hi) try_at(x);
+                }
+            }
+            for (float x = lo + 0.25F * w; x < hi; x += 0.25F * w) try_at(x);
         };
         for (const auto& [b0, b1] : blocked) {
             consider(a, std::min(b0, last));
