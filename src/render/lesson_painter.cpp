@@ -142,6 +142,7 @@ void LessonPainter::begin_frame(const FrameContent& frame) {
     // A card covers this frame, the title card or the epilogue's summary: no other text.
     intro_ = shows_title_card(frame) || shows_summary(frame);
     frame_numbers_.clear();
+    notes_.clear();
     if (layout_.queue_panel >= 0 && !small_font_) {
         // Loaded with the first frame that shows a queue, so other videos are unchanged.
         load_font(small_font_, std::round(body_font_->pixel_height() * queue_text_scale));
@@ -170,7 +171,16 @@ void LessonPainter::add_marks(std::size_t index, const PanelContent& content,
 void LessonPainter::add_mark_legend(std::size_t index, const PanelContent& content) {
     const TextSlot* slot = layout_.slot(TextRole::marks, static_cast<int>(index));
     if (slot == nullptr) return;
-    float x = Painter::add_mark_legend(*slot, content.mark_words, slot->rect.x0);
+    // "and 55 more not drawn" counts this panel's failures: never under another panel's box,
+    // where it would read as that panel's (left out where it does not fit whole before it: the
+    // figures row counts every failure).
+    float own_x1 = slot->rect.x1;
+    for (std::size_t i = 0; i < layout_.panels.size(); ++i) {
+        const RectF& box = layout_.panels[i].box;
+        if (i != index && box.x0 > slot->rect.x0)
+            own_x1 = std::min(own_x1, box.x0 - layout_.margin);
+    }
+    float x = Painter::add_mark_legend(*slot, content.mark_words, slot->rect.x0, own_x1);
     // The queue's lines in the box ("Next 4 collisions, time to go": the lines in the box).
     const std::string& queue_legend = content.queue_words.legend;
     if (content.snapshot->queue && !queue_legend.empty() &&
@@ -241,6 +251,9 @@ void LessonPainter::add_panel_text(std::size_t index, const PanelContent& conten
     }
     if (const TextSlot* slot = layout_.slot(TextRole::note, p); slot && !content.note.empty()) {
         float right = slot->rect.x1;
+        // Where the note and its indicator end: a crowded box's numbers may take the rest of
+        // its row (frame_obstacles).
+        float ink_end = slot->rect.x0 + body_font_->text_width(content.note);
         if (content.step_period > 1 && content.step_period <= 16) {
             // The step indicator: one square per frame of a step, the current one filled.
             const float s = std::round(0.45F * body_font_->pixel_height());
@@ -260,7 +273,10 @@ void LessonPainter::add_panel_text(std::size_t index, const PanelContent& conten
                 }
                 x += 1.5F * s;
             }
+            ink_end = x;
         }
+        notes_.push_back(
+            {slot->rect.x0, slot->rect.y0, std::min(ink_end, slot->rect.x1), slot->rect.y1});
         TextSlot shortened = *slot;
         shortened.rect.x1 = right;
         draw_text(Font::body, shortened, content.note, palette_.text);

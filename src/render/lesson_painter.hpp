@@ -60,6 +60,11 @@ class LessonPainter : public Painter {
                           const PanelLayout& panel);
     void add_queue_strip(const Snapshot& snapshot, const QueueWords& words, RectF strip);
     void add_popped(const QueueView& queue, const QueueWords& words, double now, RectF area);
+    /// The width the latest pops' words need in a list `height` px tall (heading, pops, counts).
+    [[nodiscard]] float popped_width(const QueueView& queue, const QueueWords& words,
+                                     float height) const;
+    /// The list's heading: the whole one where it fits `room` px, else the short one.
+    [[nodiscard]] const std::string& popped_heading(const QueueWords& words, float room) const;
     void add_queue_tree(const QueueView& queue, const QueueWords& words, double now, RectF area);
     void add_queue_row(const QueueView& queue, const QueueWords& words, RectF area);
     /// The event just popped, in `node` left of the heap's root node `root`.
@@ -119,6 +124,9 @@ class LessonPainter : public Painter {
         RectF box;  // the disc's box
     };
     std::vector<FrameNumber> frame_numbers_;
+    /// The notes drawn in this frame, each from its slot's left edge to the end of its step
+    /// indicator (or its words): what a number keeps clear of in a note's row.
+    std::vector<RectF> notes_;
     bool intro_ = false;  // the title card covers this frame: no other text
 };
 

@@ -162,8 +162,8 @@ std::vector<RectF> LessonPainter::frame_obstacles(RectF own_box) const {
     // What a number outside the boxes keeps clear of: every box (the other panel's discs too),
     // the code listing, the queue strip, the caption, the column's graphics, and the text drawn
     // so far (add_frame_numbers runs after all of it): a line's slot from its left edge (a
-    // title's swatch, a legend's marks) to its last glyph, clear by half a line; a note's slot
-    // whole (its step indicator follows the words). A slot left empty (the energy line's
+    // title's swatch, a legend's marks) to its last glyph, clear by half a line; a note to the
+    // end of its step indicator, which follows the words. A slot left empty (the energy line's
     // second line when one holds it) is free.
     const float clear = std::round(0.5F * body_font_->pixel_height());
     std::vector<RectF> out;
@@ -182,11 +182,12 @@ std::vector<RectF> LessonPainter::frame_obstacles(RectF own_box) const {
         if (r.width() > 0.0F && r.height() > 0.0F) out.push_back(r);
     for (const TextSlot& slot : layout_.text) {
         const RectF r = slot.rect;
-        if (slot.role == TextRole::note || slot.role == TextRole::queue ||
-            slot.role == TextRole::caption || slot.role == TextRole::code) {
+        if (slot.role == TextRole::queue || slot.role == TextRole::caption ||
+            slot.role == TextRole::code) {
             out.push_back(r);
             continue;
         }
+        if (slot.role == TextRole::note) continue;  // notes_ below
         float ink = r.x0 - 1.0F;
         for (const TextRun& run : list_.text) {
             for (const GlyphBox& g : run.glyphs.glyphs()) {
@@ -201,6 +202,7 @@ std::vector<RectF> LessonPainter::frame_obstacles(RectF own_box) const {
         }
         if (ink >= r.x0) out.push_back({r.x0, r.y0, std::min(r.x1, ink + clear), r.y1});
     }
+    for (const RectF& note : notes_) out.push_back({note.x0, note.y0, note.x1 + clear, note.y1});
     return out;
 }
 
@@ -238,11 +240,18 @@ void LessonPainter::add_frame_label(Font font, PointF disc, float radius, std::s
         PointF elbow;  // on the box's edge
         float cost = 0.0F;
     };
-    const auto place_at = [&](float x0, float y0) {
+    // The elbow is the nearest point of the box's edge, or moved along that edge by `shift`
+    // (px): a slanting leader that passes between plates nearer the box.
+    const auto place_at = [&](float x0, float y0, float shift) {
         Place p;
         p.plate = {std::floor(x0), std::floor(y0), std::floor(x0) + w, std::floor(y0) + h};
         const PointF centre{0.5F * (p.plate.x0 + p.plate.x1), 0.5F * (p.plate.y0 + p.plate.y1)};
         p.elbow = {std::clamp(centre.x, box.x0, box.x1), std::clamp(centre.y, box.y0, box.y1)};
+        if (p.elbow.y == box.y0 || p.elbow.y == box.y1) {
+            p.elbow.x = std::clamp(p.elbow.x + shift, box.x0, box.x1);
+        } else {
+            p.elbow.y = std::clamp(p.elbow.y + shift, box.y0, box.y1);
+        }
         p.from = {std::clamp(p.elbow.x, p.plate.x0, p.plate.x1),
                   std::clamp(p.elbow.y, p.plate.y0, p.plate.y1)};
         p.cost = std::hypot(p.elbow.x - p.from.x, p.elbow.y - p.from.y) +
@@ -283,12 +292,24 @@ void LessonPainter::add_frame_label(Font font, PointF disc, float radius, std::s
         std::sort(blocked.begin(), blocked.end());
         float a = m;
         const float last = frame_w - m - w;
-        const auto consider = [&](float lo, float hi) {
-            if (hi < lo) return;
-            for (const float x : {lo, hi, std::clamp(disc.x - 0.5F * w, lo, hi)}) {
-                const Place p = place_at(x, y0);
+        const auto try_at = [&](float x) {
+            for (const float shift : {0.0F, -0.5F, 0.5F, -1.0F, 1.0F, -2.0F, 2.0F}) {
+                const Place p = place_at(x, y0, shift * w);
                 if ((!best || p.cost < best->cost) && leader_clear(p)) best = p;
             }
+        };
+        const auto consider = [&](float lo, float hi) {
+            if (hi < lo) return;
+            for (const float x : {lo, hi, std::clamp(disc.x - 0.5F * w, lo, hi)}) try_at(x);
+            // Where the leader passes beside a plate placed nearer the box (rows of numbers
+            // under or beside it), and a quarter plate apart in between.
+            for (const RectF& o : labels_) {
+                for (const float centre : {o.x0 - clear, o.x1 + clear}) {
+                    const float x = centre - 0.5F * w;
+                    if (x >= lo && x <= hi) try_at(x);
+                }
+            }
+            for (float x = lo + 0.25F * w; x < hi; x += 0.25F * w) try_at(x);
         };
         for (const auto& [b0, b1] : blocked) {
             consider(a, std::min(b0, last));
@@ -446,14 +467,30 @@ void LessonPainter::add_queue_strip(const Snapshot& snapshot, const QueueWords& 
     const float m = std::round(0.5F * small.pixel_height());
     list_.over.add_frame(strip, 1.0F, faded(palette_.muted, 0.6F));
     const RectF inner{strip.x0 + m, strip.y0 + 0.5F * m, strip.x1 - m, strip.y1 - 0.5F * m};
-    const std::string& heading = words.heading;
+    // The heading in fewer words where the whole one would be cut (a strip beside one box).
+    const std::string& heading =
+        small.text_width(words.heading) <= inner.width() || words.short_heading.empty()
+            ? words.heading
+            : words.short_heading;
     const TextSlot heading_slot{
         TextRole::queue, -1, {inner.x0, inner.y0, inner.x1, inner.y0 + line}, small.pixel_height()};
     // The legend of the box's lines is on the panel's legend line (add_panel_text): at the
     // lesson's text size the heading takes the strip's width.
     const float heading_end = draw_text(Font::small, heading_slot, heading, palette_.title);
-    const float popped_w = std::round(0.33F * inner.width());
     const RectF body{inner.x0, inner.y0 + line + 0.5F * m, inner.x1, inner.y1};
+    // The pops take a third of the width, or what their words need where the queue keeps room
+    // for a node (a narrow strip: the queue shows fewer nodes, no pop is cut).
+    // A heap keeps its root (add_queue_tree shows no children where they do not fit whole), an
+    // array a node as wide as its widest.
+    const bool one_line = one_line_nodes(body.height());
+    const float queue_min = node_width(queue.shape == QueueShape::heap
+                                           ? std::vector<std::string>{nth(words.slot_labels, 0)}
+                                           : words.slot_labels,
+                                       one_line) +
+                            m;
+    const float popped_w = std::round(
+        std::max(0.33F * inner.width(),
+                 std::min(popped_width(queue, words, body.height()), inner.width() - queue_min)));
     // An array's caption, where its row has no line for it (a short strip), after the heading
     // when it fits there.
     const bool row_caption_above = queue.shape != QueueShape::heap && body.height() < 2.0F * line;
@@ -467,6 +504,30 @@ void LessonPainter::add_queue_strip(const Snapshot& snapshot, const QueueWords& 
     } else {
         add_queue_row(queue, words, right);
     }
+}
+
+float LessonPainter::popped_width(const QueueView& queue, const QueueWords& words,
+                                  float height) const {
+    const FontAtlas& small = *small_font_;
+    const float line = std::round(small.pixel_height() * strip_line);
+    float widest = small.text_width(words.counts);
+    if (std::floor(height / line) >= 4.0F)
+        widest = std::max(widest, small.text_width(popped_heading(words, 0.0F)));
+    for (std::size_t k = 0; k < queue.popped.size(); ++k) {
+        const QueuedEvent& e = queue.popped[k];
+        const std::string& tail = e.stale                     ? words.stale_popped
+                                  : e.kind == EventKind::cell ? words.crossing_popped
+                                                              : words.resolved_popped;
+        widest = std::max(widest, small.text_width(nth(words.popped_labels, k) + tail));
+    }
+    return std::ceil(widest) + 2.0F;
+}
+
+const std::string& LessonPainter::popped_heading(const QueueWords& words, float room) const {
+    // room 0: the heading popped_width makes room for (the short one, which always fits)
+    const bool whole = room > 0.0F && small_font_->text_width(words.popped_heading) <= room;
+    return whole || words.short_popped_heading.empty() ? words.popped_heading
+                                                       : words.short_popped_heading;
 }
 
 // The latest pops, newest first: the one just popped in the highlight colour (fading), stale
@@ -483,7 +544,7 @@ void LessonPainter::add_popped(const QueueView& queue, const QueueWords& words, 
     // counts, without the heading.
     const float lines = std::floor(area.height() / line);
     if (lines >= 4.0F) {
-        draw_text(Font::small, slot(y), words.popped_heading, palette_.muted);
+        draw_text(Font::small, slot(y), popped_heading(words, area.width()), palette_.muted);
         y += line;
     }
     const float bottom = lines >= 2.0F ? area.y1 - line : area.y1;
@@ -620,7 +681,8 @@ void LessonPainter::add_queue_tree(const QueueView& queue, const QueueWords& wor
     const std::size_t d = std::max<unsigned>(queue.arity, 2);
     const bool one_line = one_line_nodes(area.height());
     const float node_h = one_line ? std::floor(area.height()) : std::round(node_lines * h);
-    const float node_w = std::min(node_width(words.slot_labels, one_line), area.width());
+    const float full_w = node_width(words.slot_labels, one_line);
+    const float node_w = std::min(full_w, area.width());
     constexpr float node_gap = 4.0F;
     // The levels that fit the strip's height (a view may hold more than the show's budget
     // allows here), and the children under the root that fit its width.
@@ -628,7 +690,10 @@ void LessonPainter::add_queue_tree(const QueueView& queue, const QueueWords& wor
         std::max(1.0F, std::floor((area.height() + node_gap) / (node_h + node_gap))));
     const std::size_t fit_across =
         static_cast<std::size_t>(std::floor((area.width() + node_gap) / (node_w + node_gap)));
-    const std::size_t children = std::min({d, queue.slots.size() - 1, fit_across});
+    // Nodes narrower than their widest label (a narrow strip's pops took the room) show the
+    // root alone, whose label add_queue_strip left room for.
+    const std::size_t children =
+        node_w < full_w ? 0 : std::min({d, queue.slots.size() - 1, fit_across});
     const bool two_levels = std::min(queue.levels, fit) >= 2 && children > 0;
     const float level_gap = two_levels ? std::max(node_gap, area.height() - 2.0F * node_h) : 0.0F;
     const auto node_at = [&](float cx, float y0) {

@@ -7,6 +7,7 @@
 // helpers they share (fonts and text, the box, disc colours, discs). No GL.
 
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -95,9 +96,11 @@ class Painter {
     // failure_marks.hpp; which failures get a mark: show::FailureMarks).
     /// How the marks look at this frame's text size, wall, margin and theme.
     [[nodiscard]] MarkStyle mark_style() const;
-    /// The legend in `slot` from `x`: each kind with its symbol, then the count of the unmarked,
-    /// then the wrap note, each entry whole or not at all. Returns the x after the last entry.
-    float add_mark_legend(const TextSlot& slot, const MarkWords& words, float x);
+    /// The legend in `slot` from `x`: each kind with its symbol, then the count of the unmarked
+    /// (ending by `unmarked_x1`, else left out: it stays under the panel it counts), then the
+    /// wrap note, each entry whole or not at all. Returns the x after the last entry.
+    float add_mark_legend(const TextSlot& slot, const MarkWords& words, float x,
+                          float unmarked_x1 = std::numeric_limits<float>::max());
     /// The body font's pixel height, 0 without text.
     [[nodiscard]] float body_pixel_height() const noexcept;
     /// The boxes of a frame's panels (only their shapes matter to a layout).

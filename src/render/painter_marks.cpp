@@ -23,7 +23,8 @@ MarkStyle Painter::mark_style() const {
     return style;
 }
 
-float Painter::add_mark_legend(const TextSlot& slot, const MarkWords& words, float x) {
+float Painter::add_mark_legend(const TextSlot& slot, const MarkWords& words, float x,
+                               float unmarked_x1) {
     const FontAtlas& font = atlas(Font::body);
     const MarkStyle style = mark_style();
     const float symbol = std::round(0.75F * font.pixel_height());
@@ -40,9 +41,10 @@ float Painter::add_mark_legend(const TextSlot& slot, const MarkWords& words, flo
     }
     if (!words.unmarked.empty()) {
         const float need = font.text_width(words.unmarked);
-        if (!fits(need)) return x;
-        draw_text(Font::body, slot, words.unmarked, palette_.failure, Align::left, x);
-        x += need + gap;
+        if (fits(need) && x + need <= unmarked_x1) {
+            draw_text(Font::body, slot, words.unmarked, palette_.failure, Align::left, x);
+            x += need + gap;
+        }
     }
     if (!words.wraps.empty()) {
         const float sample = 2.0F * symbol;

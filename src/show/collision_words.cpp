@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -323,6 +324,12 @@ QueueWords queue_words(const QueueView& queue, double now) {
     } else if (queue.stale_entries > 0) {
         out.heading += fmt::format(", {} stale", separated(queue.stale_entries));
     }
+    // Beside one box at the small presets the strip is narrow: the queue's kind and size say it.
+    out.short_heading = fmt::format("{}, {} {}", queue.name, separated(queue.size),
+                                    queue.size == 1 ? "entry" : "entries");
+    if (!out.short_heading.empty())
+        out.short_heading[0] =
+            static_cast<char>(std::toupper(static_cast<unsigned char>(out.short_heading[0])));
     // None listed (billiards before the break: the cue ball's next event is a cell crossing):
     // "Next 0 collisions" said nothing a student could use.
     out.legend = queue.next.empty() ? std::string("No collision predicted yet")
@@ -337,6 +344,7 @@ QueueWords queue_words(const QueueView& queue, double now) {
             : fmt::format("{} of {} pops stale", separated(queue.stale_pops),
                           separated(queue.pops));
     out.popped_heading = "Popped (newest first)";
+    out.short_popped_heading = "Popped";
     out.resolved_popped = "  resolved";
     out.crossing_popped = "  crossing";
     out.stale_slot = "stale";

@@ -1,7 +1,7 @@
 // The queue strip beside a single box (--mode event --queue, with and without --code) is narrow
 // at the small presets: its text (heading, pops, the heap's nodes, the event just popped,
-// "+N below") never lies on other text nor outside the strip. Read back from --layout-json's
-// "text_ink" (where each string's glyphs went).
+// "+N below") never lies on other text nor outside the strip, and none is cut. Read back from
+// --layout-json's "text_ink" (where each string's glyphs went).
 #include <doctest/doctest.h>
 
 #include <nlohmann/json.hpp>
@@ -67,6 +67,8 @@ void check_strip(const TempDir& dir, const std::string& scene, const char* prese
         const auto& [a, text] = texts[i];
         CAPTURE(text);
         CHECK(inside(a, strip));
+        // Said whole: in fewer words where the strip is narrow, never cut with an ellipsis.
+        CHECK(text.find("...") == std::string::npos);
         // At the lesson's text size (capitals 2.8 % of the frame height): never shrunk to fit.
         CHECK(a.y1 - a.y0 >= lesson_px - 0.5);
         for (std::size_t j = i + 1; j < texts.size(); ++j) {

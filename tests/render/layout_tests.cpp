@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <random>
 #include <string>
 
@@ -545,6 +546,64 @@ TEST_CASE(
                                         static_cast<float>(g.y) < panel.box.y1;
                     CHECK_FALSE(inside);
                 }
+            }
+        }
+    }
+}
+
+TEST_CASE("the count of failures not drawn stays under the panel it counts") {
+    // Three kinds in the legend of the left panel and more failures than marks (brownian, dense
+    // fluid): "and N more not drawn" follows the kinds, never under the other panel's box, at
+    // -q l and -q m; a short legend (one kind) keeps it.
+    const RenderConfig defaults;
+    if (!std::filesystem::exists(defaults.font_path)) {
+        COLLIDE_SKIP_TEST("no DejaVu Sans at " << defaults.font_path);
+    }
+    for (const auto& [width, height] : {std::pair{854, 480}, std::pair{1280, 720}}) {
+        for (const bool three_kinds : {false, true}) {
+            CAPTURE(width);
+            CAPTURE(three_kinds);
+            RenderConfig config = test::small_config(true);
+            config.width = width;
+            config.height = height;
+            config.overlays = OverlayLevel::lesson;
+            Renderer renderer(config, test::test_backend());
+            const Snapshot left = random_gas(200, 5);
+            const Snapshot right = random_gas(200, 6);
+            FrameContent frame;
+            frame.panels = {{&left, "Time-driven", {}}, {&right, "Event-driven", {}}};
+            frame.panels[0].figures = {{"6,564", "missed", true}};
+            frame.panels[1].figures = {{"0", "missed", true}};
+            frame.panels[0].mark_line = true;
+            MarkWords& words = frame.panels[0].mark_words;
+            words.items = {{FailureKind::overlapping, "overlapping"}};
+            if (three_kinds) {
+                words.items.push_back({FailureKind::missed, "missed collision"});
+                words.items.push_back({FailureKind::left_box, "left the box"});
+            }
+            words.unmarked = "and 9,480 more not drawn";
+            frame.time_text = "t = 1.00";
+            (void)renderer.render(frame);
+            const nlohmann::json layout = nlohmann::json::parse(renderer.layout_json(frame));
+            const auto right_box = layout.at("panels").at(1).at("box").get<std::vector<float>>();
+            float kinds_x1 = 0.0F;
+            std::optional<std::vector<float>> count;
+            for (const nlohmann::json& ink : layout.at("text_ink")) {
+                if (ink.at("role") != "marks") continue;
+                const auto rect = ink.at("rect").get<std::vector<float>>();
+                if (ink.at("text") == words.unmarked) {
+                    count = rect;
+                } else {
+                    kinds_x1 = std::max(kinds_x1, rect[2]);
+                }
+            }
+            if (!three_kinds) REQUIRE(count.has_value());
+            if (count) {
+                CAPTURE((*count)[0]);
+                CAPTURE((*count)[2]);
+                CHECK((*count)[0] > kinds_x1);                  // after the kinds it counts
+                CHECK((*count)[0] - kinds_x1 < 0.05F * width);  // beside them, not apart
+                CHECK((*count)[2] <= right_box[0]);             // not under the other box
             }
         }
     }

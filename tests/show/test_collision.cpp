@@ -301,6 +301,13 @@ TEST_CASE("the queue strip's fixed legends come from the words, the row caption 
     CHECK(heap.fresh_leaving == "popped");
     CHECK(heap.below == "+1,227 below");
     CHECK(heap.row_caption.empty());  // a heap is drawn as a tree, no row
+    // The same in fewer words for a narrow strip: shorter, and still naming the queue and size.
+    q.name = "indexed 4-ary heap";
+    q.one_per_disc = true;
+    const QueueWords narrow = queue_words(q, 0.0);
+    CHECK(narrow.short_heading == "Indexed 4-ary heap, 1,234 entries");
+    CHECK(narrow.short_heading.size() < narrow.heading.size());
+    CHECK(narrow.short_popped_heading == "Popped");
     q.size = 7;
     CHECK(queue_words(q, 0.0).below.empty());  // every entry shown
     q.shape = QueueShape::ordered_array;

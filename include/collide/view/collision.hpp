@@ -44,6 +44,10 @@ struct QueueWords {
     std::string fresh_leaving;    ///< on a valid event leaving the root ("popped")
     std::string below;            ///< beside a heap's top levels: "+1,178 below" (or empty)
     std::string row_caption;      ///< over an array queue's slots: where its next event is
+    /// The heading and the pops' heading in fewer words, for a strip too narrow for them (beside
+    /// one box at the small presets): "Binary heap, 1,234 entries", "Popped".
+    std::string short_heading;
+    std::string short_popped_heading;
     // Each event shown, in the order of the QueueView's lists: what it involves ("3-7",
     // "5 wall", "5 cell") and its time to go at the snapshot's time ("0.42", "3.1e-05").
     std::vector<std::string> next_times;  ///< in the box: one per QueueView::next
