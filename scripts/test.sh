@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The README's second command: install what is missing, build, run every test through ctest.
 #  1. a sim-only build (no GL, no libav: proves the simulation library stands alone), under
-#     AddressSanitizer + UBSan with the heavy invariant checks on, running the unit tests;
+#     AddressSanitizer + UBSan with the heavy invariant checks on, running the unit tests, one
+#     process per test file (COLLIDE_TESTS_BY_FILE: starting a sanitized process costs about
+#     0.2 s of CPU, more than most test cases; the full build's ctest lists them one by one);
 #  2. the full sanitizer build, running the other modules' `unit` tests and the CLI option matrix
 #     (label `cli-matrix`: the sanitized `collide` over many bad and extreme option sets, so that
 #     UBSan, which never recovers here, checks the command line's paths, not just the libraries);
@@ -33,7 +35,7 @@ jobs=$(nproc)
 
 echo "==> [1/5] sim-only build with sanitizers (build/sim-asan)"
 cmake -S . -B build/sim-asan "${common[@]}" -DCMAKE_BUILD_TYPE=Debug -DCOLLIDE_SIM_ONLY=ON \
-      -DCOLLIDE_SANITIZE=ON -DCOLLIDE_VALIDATE=ON >/dev/null
+      -DCOLLIDE_SANITIZE=ON -DCOLLIDE_VALIDATE=ON -DCOLLIDE_TESTS_BY_FILE=ON >/dev/null
 cmake --build build/sim-asan -j "$jobs"
 ctest --test-dir build/sim-asan -L unit --output-on-failure -j "$jobs"
 
