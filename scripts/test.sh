@@ -9,6 +9,7 @@
 #     UBSan, which never recovers here, checks the command line's paths, not just the libraries);
 #     not the renderer suite's second pass on EGL: under the sanitizers it repeats our code, whose
 #     EGL context the renderer's own EGL test cases already run (step 3 runs its cases on EGL);
+#     one process per test file too (COLLIDE_TESTS_BY_FILE, as in step 1);
 #  3. a renderer-only build without OSMesa (COLLIDE_WITH_OSMESA=OFF: EGL only, as on distributions
 #     whose Mesa has no OSMesa), running the renderer tests, every one on EGL;
 #  4. a lean build without libav (COLLIDE_VIDEO=OFF: the drawing program for CI thumbnails), only
@@ -40,7 +41,8 @@ cmake --build build/sim-asan -j "$jobs"
 ctest --test-dir build/sim-asan -L unit --output-on-failure -j "$jobs"
 
 echo "==> [2/5] full build with sanitizers (build/asan)"
-cmake -S . -B build/asan "${common[@]}" -DCMAKE_BUILD_TYPE=Debug -DCOLLIDE_SANITIZE=ON >/dev/null
+cmake -S . -B build/asan "${common[@]}" -DCMAKE_BUILD_TYPE=Debug -DCOLLIDE_SANITIZE=ON \
+      -DCOLLIDE_TESTS_BY_FILE=ON >/dev/null
 cmake --build build/asan -j "$jobs"
 ctest --test-dir build/asan -L 'unit|cli-matrix' \
       -E "^collide_(sim|show)_tests:|^collide_render_tests:egl: " --output-on-failure -j "$jobs"
