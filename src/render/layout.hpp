@@ -156,6 +156,10 @@ struct LayoutInput {
     /// column) and the column's width in pixels; everything else lays out in what is left.
     std::size_t code_rows = 0;
     float code_width = 0.0F;
+    /// Lesson, a queue panel too crowded to number its discs inside the box (dense-fluid): the
+    /// width (px) of a column for its numbers kept free beside it under the --code listing, when
+    /// it is the right box of two (0: none).
+    float number_column = 0.0F;
 };
 
 /// Lesson level: the event queue strip's largest share of the frame height.

@@ -484,10 +484,15 @@ FrameLayout lesson_layout(const LayoutInput& in) {
                 it->rect.x1 = width - m;
             ++it;
         }
+        // A crowded right box's numbers take a column beside it under the code: the column's
+        // text and the right panel's lines start right of it.
+        const float numbers_w = layout.queue_panel == 1 ? std::ceil(in.number_column) : 0.0F;
+        const float text_x0 = code_x0 + numbers_w;
+        const float text_w = side_w - numbers_w;
         const float side_bottom = std::max(box_bottom, bottom);
         float y = side_bottom - static_cast<float>(right_lines.size()) * line;
         for (TextSlot& slot : right_lines) {
-            slot.rect = {code_x0, y, code_x0 + side_w, y + line};
+            slot.rect = {text_x0, y, text_x0 + text_w, y + line};
             layout.text.push_back(slot);
             y += line;
         }
@@ -496,7 +501,7 @@ FrameLayout lesson_layout(const LayoutInput& in) {
         LayoutInput column_in = in;
         column_in.small_plot = false;  // the plot stops at the boxes' foot
         lay_out_column(layout, column_in,
-                       {code_x0, side_w, layout.code.y1 + gap, column_bottom, line, head_line, gap,
+                       {text_x0, text_w, layout.code.y1 + gap, column_bottom, line, head_line, gap,
                         body, head, true});
         return layout;
     }

@@ -35,6 +35,9 @@ class LessonPainter : public Painter {
     [[nodiscard]] FrameLayout layout_for(const FrameContent& frame) const override;
 
   private:
+    /// The width of the column beside a crowded queue box for its discs' numbers (0: the box
+    /// has room for them inside).
+    [[nodiscard]] float number_column_width(const Snapshot& snapshot) const;
     void begin_frame(const FrameContent& frame) override;
     void add_marks(std::size_t index, const PanelContent& content,
                    const PanelLayout& panel) override;
