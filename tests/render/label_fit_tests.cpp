@@ -251,6 +251,34 @@ bool lesson_fits(const show::HeapProgram& lesson, const Preset& p) {
     return true;
 }
 
+/// What is wrong in the frames at rest of `lesson` at preset `p`, sampled every `step` seconds:
+/// text out of its shape or under size, nodes squashed. A frame with an exchange under way is
+/// skipped (its two keys pass each other by design). Counts the frames checked and the labels.
+struct RestCheck {
+    std::string bad;
+    int labels = 0;
+    int frames = 0;
+};
+
+RestCheck check_frames_at_rest(const show::HeapProgram& lesson, const Preset& p, double step) {
+    HeapRenderer renderer(lesson_config(lesson, p), test::test_backend());
+    Image image;
+    RestCheck check;
+    for (double t = 0.0; t <= lesson.duration(); t += step) {
+        const view::HeapFrameView frame = lesson.frame_at(t);
+        if (std::any_of(frame.panels.begin(), frame.panels.end(),
+                        [](const view::HeapPanelView& v) { return v.swap; }))
+            continue;
+        renderer.render(frame, image);
+        check.bad += misfits(renderer.last_text(), p, t, check.labels);
+        check.bad += squashed(renderer.last_text(),
+                              std::string(p.name) + " at " + std::to_string(t) + " s: ");
+        ++check.frames;
+    }
+    if (check.bad.size() > 4000) check.bad = check.bad.substr(0, 4000) + "...\n";
+    return check;
+}
+
 TEST_CASE(
     "heap trees never squash: 1 to 3 heaps of 11 and 15 keys, indexed among them, -q l and -q m") {
     // Issue 44: three heaps side by side with 11 keys at -q l overlapped their nodes, with
@@ -304,25 +332,9 @@ TEST_CASE(
             CAPTURE(p.name);
             CHECK(lesson_fits(lesson, p) == c.fits);
             if (!c.fits) continue;
-            HeapRenderer renderer(lesson_config(lesson, p), test::test_backend());
-            Image image;
-            std::string bad;
-            int labels = 0;
-            int checked = 0;
-            for (double t = 0.0; t <= lesson.duration(); t += 0.2) {
-                const view::HeapFrameView frame = lesson.frame_at(t);
-                if (std::any_of(frame.panels.begin(), frame.panels.end(),
-                                [](const view::HeapPanelView& v) { return v.swap; }))
-                    continue;
-                renderer.render(frame, image);
-                bad += misfits(renderer.last_text(), p, t, labels);
-                bad += squashed(renderer.last_text(),
-                                std::string(p.name) + " at " + std::to_string(t) + " s: ");
-                ++checked;
-            }
-            CHECK(checked > 10);
-            if (bad.size() > 4000) bad = bad.substr(0, 4000) + "...\n";
-            CHECK_MESSAGE(bad.empty(), bad);
+            const RestCheck check = check_frames_at_rest(lesson, p, 0.2);
+            CHECK(check.frames > 10);
+            CHECK_MESSAGE(check.bad.empty(), check.bad);
         }
     }
 }
@@ -349,23 +361,9 @@ TEST_CASE("heap word keys in two panels: drawn inside their nodes where they fit
             CAPTURE(p.name);
             CHECK(lesson_fits(lesson, p) == c.fits);
             if (!c.fits) continue;
-            HeapRenderer renderer(lesson_config(lesson, p), test::test_backend());
-            Image image;
-            std::string bad;
-            int labels = 0;
-            for (double t = 0.0; t <= lesson.duration(); t += 0.3) {
-                const view::HeapFrameView frame = lesson.frame_at(t);
-                if (std::any_of(frame.panels.begin(), frame.panels.end(),
-                                [](const view::HeapPanelView& v) { return v.swap; }))
-                    continue;
-                renderer.render(frame, image);
-                bad += misfits(renderer.last_text(), p, t, labels);
-                bad += squashed(renderer.last_text(),
-                                std::string(p.name) + " at " + std::to_string(t) + " s: ");
-            }
-            CHECK(labels > 0);
-            if (bad.size() > 4000) bad = bad.substr(0, 4000) + "...\n";
-            CHECK_MESSAGE(bad.empty(), bad);
+            const RestCheck check = check_frames_at_rest(lesson, p, 0.3);
+            CHECK(check.labels > 0);
+            CHECK_MESSAGE(check.bad.empty(), check.bad);
         }
     }
 }
