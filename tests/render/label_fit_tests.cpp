@@ -279,6 +279,32 @@ RestCheck check_frames_at_rest(const show::HeapProgram& lesson, const Preset& p,
     return check;
 }
 
+/// A lesson of `ops` on the panels `impl`, and whether `collide heap` draws it.
+struct FitCase {
+    const char* ops;
+    std::string impl;
+    bool fits;  ///< drawn (else refused, at -q l and -q m alike)
+};
+
+/// Each case at -q l and -q m: refused or drawn as it says, and where drawn, every frame at rest
+/// (sampled every `step` seconds) without a misfit; `on_drawn` adds the case's own checks.
+template <class OnDrawn>
+void check_fit_cases(const std::vector<FitCase>& cases, double step, OnDrawn on_drawn) {
+    for (const FitCase& c : cases) {
+        CAPTURE(c.ops);
+        CAPTURE(c.impl);
+        const show::HeapProgram lesson = heap_lesson(c.ops, c.impl);
+        for (const Preset& p : {presets[0], presets[1]}) {
+            CAPTURE(p.name);
+            CHECK(lesson_fits(lesson, p) == c.fits);
+            if (!c.fits) continue;
+            const RestCheck check = check_frames_at_rest(lesson, p, step);
+            on_drawn(check);
+            CHECK_MESSAGE(check.bad.empty(), check.bad);
+        }
+    }
+}
+
 TEST_CASE(
     "heap trees never squash: 1 to 3 heaps of 11 and 15 keys, indexed among them, -q l and -q m") {
     // Issue 44: three heaps side by side with 11 keys at -q l overlapped their nodes, with
@@ -293,12 +319,7 @@ TEST_CASE(
     const char* eleven = "P Q E X A M L S O R T * *";
     const char* fourteen = "P Q E X A M L S O R T Y U I * *";
     const char* fifteen = "P Q E X A M L S O R T Y U I N * *";
-    struct Case {
-        const char* ops;
-        std::string impl;
-        bool fits;  ///< drawn (else refused, at -q l and -q m alike)
-    };
-    const std::vector<Case> cases{
+    const std::vector<FitCase> cases{
         {eleven, "binary", true},
         {eleven, "binary,dary:3", true},
         {eleven, "binary,dary:3,dary:4", true},
@@ -324,48 +345,19 @@ TEST_CASE(
         {fourteen, "indexed,binary", true},
         {fifteen, "binary,indexed:3", false},
         {fourteen, "binary,indexed:3", true}};
-    for (const Case& c : cases) {
-        CAPTURE(c.ops);
-        CAPTURE(c.impl);
-        const show::HeapProgram lesson = heap_lesson(c.ops, c.impl);
-        for (const Preset& p : {presets[0], presets[1]}) {
-            CAPTURE(p.name);
-            CHECK(lesson_fits(lesson, p) == c.fits);
-            if (!c.fits) continue;
-            const RestCheck check = check_frames_at_rest(lesson, p, 0.2);
-            CHECK(check.frames > 10);
-            CHECK_MESSAGE(check.bad.empty(), check.bad);
-        }
-    }
+    check_fit_cases(cases, 0.2, [](const RestCheck& check) { CHECK(check.frames > 10); });
 }
 
 TEST_CASE("heap word keys in two panels: drawn inside their nodes where they fit, else refused") {
     // Issue 44: words as keys in two heaps side by side spilled out of their nodes. Where the
     // trees hold every word inside its node at the lesson size the lesson is drawn (and checked
     // frame by frame); where they cannot, `collide heap` refuses it (HeapRenderer::fits).
-    struct Case {
-        const char* ops;
-        std::string impl;
-        bool fits;
-    };
-    const std::vector<Case> cases{
+    const std::vector<FitCase> cases{
         {"apple banana cherry damson elder fig * *", "binary,dary:4", true},
         {"apple banana cherry damson elder fig grape hazel iris * kiwi *", "binary,dary:4", false},
         {"apple banana cherry damson elder * *", "binary,binary", true},
         {"apple banana cherry damson elder fig grape hazel * *", "dary:3,binary", false}};
-    for (const Case& c : cases) {
-        CAPTURE(c.ops);
-        CAPTURE(c.impl);
-        const show::HeapProgram lesson = heap_lesson(c.ops, c.impl);
-        for (const Preset& p : {presets[0], presets[1]}) {
-            CAPTURE(p.name);
-            CHECK(lesson_fits(lesson, p) == c.fits);
-            if (!c.fits) continue;
-            const RestCheck check = check_frames_at_rest(lesson, p, 0.3);
-            CHECK(check.labels > 0);
-            CHECK_MESSAGE(check.bad.empty(), check.bad);
-        }
-    }
+    check_fit_cases(cases, 0.3, [](const RestCheck& check) { CHECK(check.labels > 0); });
 }
 
 TEST_CASE(
