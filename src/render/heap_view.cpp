@@ -272,12 +272,12 @@ struct HeapRenderer::Impl {
         list.background = colors.background;
         const auto w = static_cast<float>(config.width);
         const auto h = static_cast<float>(config.height);
-        const float margin = frame_margin(frame);
-        const float strip_h = build_token_strip(frame, margin);
-        const float code_w = frame.code ? code_width(*frame.code) : 0.0F;
-        const std::vector<RectF> rects = panel_areas(frame, strip_h, code_w);
+        const FrameAreas areas = frame_areas(frame);
+        const float margin = areas.margin;
+        const float strip_h = areas.strip_h;
+        const float code_w = areas.code_w;
         for (std::size_t p = 0; p < frame.panels.size(); ++p) {
-            build_panel(frame.panels[p], rects[p]);
+            build_panel(frame.panels[p], areas.panels[p]);
         }
         if (frame.code) {
             const FontAtlas& f = font(small_px());
@@ -292,40 +292,47 @@ struct HeapRenderer::Impl {
         }
     }
 
-    /// The space around the panels; sets the frame's grid (columns, beside_code).
-    float frame_margin(const view::HeapFrameView& frame) {
-        columns = panel_columns(frame.panels.size());
-        beside_code = frame.code.has_value();
-        return (columns >= 4 ? 8.0F : 14.0F) * unit;
-    }
+    /// Where a frame's parts go: the margin, the token strip's height (its tokens built into
+    /// the list), the code column's width (0: none) and the panels' rectangles.
+    struct FrameAreas {
+        float margin = 0.0F;
+        float strip_h = 0.0F;
+        float code_w = 0.0F;
+        std::vector<RectF> panels;
+    };
 
-    /// The panels' rectangles under a token strip `strip_h` tall, left of a code column
-    /// `code_w` wide (0: none): equal widths unless a panel needs more (an indexed heap's map
-    /// column beside its tree), which it takes from panels that need less. --code: the listing
-    /// takes a fixed column on the right, the same in every frame, so that the tree keeps its
-    /// place when the operation (and its listing) changes.
-    std::vector<RectF> panel_areas(const view::HeapFrameView& frame, float strip_h, float code_w) {
+    /// The frame's areas; sets its grid (columns, beside_code). The panels have equal widths
+    /// unless a panel needs more (an indexed heap's map column beside its tree), which it takes
+    /// from panels that need less. --code: the listing takes a fixed column on the right, the
+    /// same in every frame, so that the tree keeps its place when the operation (and its
+    /// listing) changes.
+    FrameAreas frame_areas(const view::HeapFrameView& frame) {
         const auto w = static_cast<float>(config.width);
         const auto h = static_cast<float>(config.height);
-        const float margin = frame_margin(frame);
-        const float panels_x1 = w - margin - (frame.code ? code_w + margin : 0.0F);
-        const RectF area{margin, strip_h, panels_x1, h - margin};
-        const std::vector<RectF> equal = panel_rects(frame.panels.size(), area, margin);
+        columns = panel_columns(frame.panels.size());
+        beside_code = frame.code.has_value();
+        FrameAreas areas;
+        areas.margin = (columns >= 4 ? 8.0F : 14.0F) * unit;
+        areas.strip_h = build_token_strip(frame, areas.margin);
+        areas.code_w = frame.code ? code_width(*frame.code) : 0.0F;
+        const float panels_x1 =
+            w - areas.margin - (frame.code ? areas.code_w + areas.margin : 0.0F);
+        const RectF area{areas.margin, areas.strip_h, panels_x1, h - areas.margin};
+        const std::vector<RectF> equal = panel_rects(frame.panels.size(), area, areas.margin);
         std::vector<float> needs;
         for (std::size_t p = 0; p < frame.panels.size(); ++p)
             needs.push_back(panel_need(frame.panels[p], equal[p]));
-        return panel_rects_by_need(needs, area, margin);
+        areas.panels = panel_rects_by_need(needs, area, areas.margin);
+        return areas;
     }
 
     /// Whether every panel of `frame` holds its parts at the lesson size (layout_panel: no two
     /// nodes touching, every key inside its node, the map and the counters in their place).
     bool fits(const view::HeapFrameView& frame) {
         list.clear();
-        const float strip_h = build_token_strip(frame, frame_margin(frame));
-        const float code_w = frame.code ? code_width(*frame.code) : 0.0F;
-        const std::vector<RectF> rects = panel_areas(frame, strip_h, code_w);
+        const FrameAreas areas = frame_areas(frame);
         for (std::size_t p = 0; p < frame.panels.size(); ++p) {
-            if (layout_panel(frame.panels[p], rects[p]).cramped) return false;
+            if (layout_panel(frame.panels[p], areas.panels[p]).cramped) return false;
         }
         return true;
     }
