@@ -6,6 +6,7 @@
 #include <cmath>
 #include <functional>
 #include <iterator>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -77,8 +78,9 @@ float LessonPainter::number_column_width(const Snapshot& snapshot) const {
     // numbers go outside the box (add_frame_label). dense-fluid packs 0.7, gas about 0.06.
     constexpr double crowded_share = 0.4;
     const double box_area = snapshot.box.width * snapshot.box.height;
-    double covered = 0.0;
-    for (const DiscState& d : snapshot.discs) covered += 3.14159265358979 * d.radius * d.radius;
+    double radii2 = 0.0;
+    for (const DiscState& d : snapshot.discs) radii2 += d.radius * d.radius;
+    const double covered = std::numbers::pi * radii2;
     if (snapshot.discs.empty() || !(box_area > 0.0) || covered < crowded_share * box_area)
         return 0.0F;
     // The widest number's plate (the next pair's, in the body font), clear of the box and the
