@@ -34,11 +34,8 @@ struct Lesson {
 /// One panel at the lesson level, 854x480, with `marks` and a legend line.
 Lesson render_marks(const Snapshot& s, const std::vector<FailureMark>& marks, MarkWords words,
                     Theme theme = Theme::dark) {
-    RenderConfig config;
-    config.width = 854;
-    config.height = 480;
+    RenderConfig config = test::lesson_config(854, 480);
     config.theme = theme;
-    config.overlays = OverlayLevel::lesson;
     Renderer renderer(config, test::test_backend());
     FrameContent frame;
     frame.panels = {{&s, "Time-driven", {}}};

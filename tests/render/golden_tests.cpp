@@ -192,10 +192,7 @@ FrameContent queue_frame(const Snapshot& left, const Snapshot& right) {
 }
 
 TEST_CASE("golden: the event queue of the classic loop under the panels, 640x360") {
-    RenderConfig config = test::small_config(true);
-    config.width = 640;
-    config.height = 360;
-    config.overlays = OverlayLevel::lesson;
+    const RenderConfig config = test::lesson_config(640, 360);
     Renderer renderer(config, test::test_backend());
     const Snapshot left = queue_snapshot();
     Snapshot right = queue_snapshot();
@@ -204,10 +201,7 @@ TEST_CASE("golden: the event queue of the classic loop under the panels, 640x360
 }
 
 TEST_CASE("golden: an ordered array's queue, and the fast engine's in a compact frame") {
-    RenderConfig config = test::small_config(true);
-    config.width = 640;
-    config.height = 360;
-    config.overlays = OverlayLevel::lesson;
+    RenderConfig config = test::lesson_config(640, 360);
     Renderer renderer(config, test::test_backend());
     const Snapshot left = queue_snapshot();
     Snapshot right = queue_snapshot();
@@ -234,10 +228,7 @@ TEST_CASE("golden: an ordered array's queue, and the fast engine's in a compact 
 }
 
 TEST_CASE("queue: drawn only when the snapshot carries one, the next event in its colour") {
-    RenderConfig config = test::small_config(true);
-    config.width = 640;
-    config.height = 360;
-    config.overlays = OverlayLevel::lesson;
+    const RenderConfig config = test::lesson_config(640, 360);
     Renderer renderer(config, test::test_backend());
     const Snapshot left = queue_snapshot();
     Snapshot right = queue_snapshot();
@@ -261,11 +252,7 @@ TEST_CASE("queue: drawn only when the snapshot carries one, the next event in it
 TEST_CASE("queue: labels clear of every disc, every listed event's discs numbered") {
     for (const std::size_t discs : {std::size_t{14}, std::size_t{25}}) {
         CAPTURE(discs);
-        RenderConfig config = test::small_config(true);
-        config.width = 1280;
-        config.height = 720;
-        config.overlays = OverlayLevel::lesson;
-        Renderer renderer(config, test::test_backend());
+        Renderer renderer(test::lesson_config(1280, 720), test::test_backend());
         Snapshot left = test::gas_snapshot(discs, 0.05, {1.0, 1.0, Boundary::walls}, 4, 0.3);
         left.time = 2.0;
         Snapshot right = left;

@@ -506,10 +506,7 @@ TEST_CASE(
     if (!std::filesystem::exists(defaults.font_path)) {
         COLLIDE_SKIP_TEST("no DejaVu Sans at " << defaults.font_path);
     }
-    RenderConfig config;
-    config.width = 1280;
-    config.height = 720;
-    config.overlays = OverlayLevel::lesson;
+    const RenderConfig config = test::lesson_config(1280, 720);
     const Rgba8 failure = palette(config.theme).failure;
     for (const std::size_t pairs : {std::size_t{10}, show::mark_budget + 25}) {
         INFO(pairs << " overlapping pairs");
@@ -563,11 +560,7 @@ TEST_CASE("the count of failures not drawn stays under the panel it counts") {
         for (const bool three_kinds : {false, true}) {
             CAPTURE(width);
             CAPTURE(three_kinds);
-            RenderConfig config = test::small_config(true);
-            config.width = width;
-            config.height = height;
-            config.overlays = OverlayLevel::lesson;
-            Renderer renderer(config, test::test_backend());
+            Renderer renderer(test::lesson_config(width, height), test::test_backend());
             const Snapshot left = random_gas(200, 5);
             const Snapshot right = random_gas(200, 6);
             FrameContent frame;

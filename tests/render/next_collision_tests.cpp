@@ -39,10 +39,7 @@ TEST_CASE("the next collision's label covers neither the pair nor the discs abov
     next.label_at = {5.0, 5.0};
     next.keep_clear = {{a.position, a.radius}, {b.position, b.radius}};
 
-    RenderConfig config;
-    config.width = 854;
-    config.height = 480;
-    config.overlays = OverlayLevel::lesson;
+    const RenderConfig config = test::lesson_config(854, 480);
     Renderer renderer(config, test::test_backend());
     FrameContent frame;
     frame.panels = {{&s, "Event-driven", {}}};

@@ -68,10 +68,7 @@ TEST_CASE("a question's heading covers no disc and no letter, for many boxes of 
     if (!std::filesystem::exists(RenderConfig{}.font_path))
         COLLIDE_SKIP_TEST("no DejaVu Sans at " << RenderConfig{}.font_path);
     for (const int height : {480, 720}) {
-        RenderConfig config;
-        config.height = height;
-        config.width = height * 16 / 9;
-        config.overlays = OverlayLevel::lesson;
+        const RenderConfig config = test::lesson_config(height * 16 / 9, height);
         Renderer renderer(config, test::test_backend());
         for (std::uint32_t seed = 1; seed <= 12; ++seed) {
             for (const std::string heading : {"Think: 3", "Answer: B"}) {
@@ -129,10 +126,7 @@ TEST_CASE("a question's heading covers no disc and no letter, for many boxes of 
 TEST_CASE("a heading without discs to keep clear of stays at the top middle of the box") {
     if (!std::filesystem::exists(RenderConfig{}.font_path))
         COLLIDE_SKIP_TEST("no DejaVu Sans at " << RenderConfig{}.font_path);
-    RenderConfig config;
-    config.height = 480;
-    config.width = 854;
-    config.overlays = OverlayLevel::lesson;
+    const RenderConfig config = test::lesson_config(854, 480);
     Renderer renderer(config, test::test_backend());
     Snapshot s;
     s.box = {1.0, 1.0, Boundary::walls};

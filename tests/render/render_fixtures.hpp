@@ -59,6 +59,16 @@ inline RenderConfig small_config(bool overlays) {
     return config;
 }
 
+/// The lesson level (the title card, the figures in words, the captions) at `width` x `height`,
+/// the rest of the configuration as the defaults.
+inline RenderConfig lesson_config(int width, int height) {
+    RenderConfig config;
+    config.width = width;
+    config.height = height;
+    config.overlays = OverlayLevel::lesson;
+    return config;
+}
+
 /// One disc at `position` (box units) with the given radius and colour.
 inline DiscState disc_at(Vec2 position, double radius, Rgb8 color) {
     DiscState d;

@@ -307,11 +307,8 @@ struct LessonFrame {
 };
 
 LessonFrame render_lesson(const Snapshot& snapshot, Theme theme = Theme::dark) {
-    RenderConfig config;
-    config.width = 854;
-    config.height = 480;
+    RenderConfig config = test::lesson_config(854, 480);
     config.theme = theme;
-    config.overlays = OverlayLevel::lesson;
     Renderer renderer(config, test::test_backend());
     FrameContent frame;
     frame.panels = {{&snapshot, "Event-driven", {}}};

@@ -78,10 +78,7 @@ TEST_CASE("a replay's labels sit beside the ghosts, not on them, wherever the sp
             below.clear = 0.5;
             replay.labels = {above, right, below};
 
-            RenderConfig config;
-            config.height = height;
-            config.width = height * 16 / 9;
-            config.overlays = OverlayLevel::lesson;
+            const RenderConfig config = test::lesson_config(height * 16 / 9, height);
             Renderer renderer(config, test::test_backend());
             FrameContent frame;
             frame.panels = {{&s, "Time-driven", {}}};

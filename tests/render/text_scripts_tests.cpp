@@ -273,8 +273,7 @@ TEST_CASE("Hebrew is drawn right to left, and a Latin word inside it left to rig
 }
 
 TEST_CASE("the title card shows Greek and mathematical text, not '?'") {
-    RenderConfig config = test::small_config(true);
-    config.overlays = OverlayLevel::lesson;  // the level that shows the title card
+    const RenderConfig config = test::lesson_config(320, 180);  // the level of the title card
     if (!std::filesystem::exists(config.font_path)) {
         COLLIDE_SKIP_TEST("no DejaVu Sans at " << config.font_path);
     }
