@@ -16,6 +16,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "algorithm_video.hpp"
@@ -127,17 +128,17 @@ void check_legible(const pq::HeapRecord& record, const HeapCli& v) {
 /// The least frame height whose heap lessons are checked to fit (check_fits): -q l's.
 constexpr int lesson_check_height = 480;
 
-/// The lesson's frames whose layouts differ (before any key is returned, and after the last
-/// operation), each panel cut to at most `keys` keys.
+/// The lesson's frames checked for fit (HeapProgram::fit_check_times), each panel cut to at
+/// most `keys` keys.
 std::vector<view::HeapFrameView> layouts_of(const show::HeapProgram& lesson, std::size_t keys) {
-    std::vector<view::HeapFrameView> frames{lesson.frame_at(0.0),
-                                            lesson.frame_at(0.5 * lesson.duration()),
-                                            lesson.frame_at(lesson.duration())};
-    for (view::HeapFrameView& frame : frames) {
+    std::vector<view::HeapFrameView> frames;
+    for (const double t : lesson.fit_check_times()) {
+        view::HeapFrameView frame = lesson.frame_at(t);
         for (view::HeapPanelView& panel : frame.panels) {
             panel.capacity = std::min(panel.capacity, keys);
             if (panel.slots.size() > keys) panel.slots.resize(keys);
         }
+        frames.push_back(std::move(frame));
     }
     return frames;
 }

@@ -661,6 +661,12 @@ view::HeapFrameView HeapProgram::frame_at(double seconds) const {
     return view;
 }
 
+std::vector<double> HeapProgram::fit_check_times() const {
+    // A frame's layout changes with what it shows (a line of returned keys once one is
+    // returned, the question's letters): one frame before, one halfway, one after all of it.
+    return {0.0, 0.5 * duration(), duration()};
+}
+
 void HeapProgram::show_code(bool on) {
     if (on && !heap_code_fits(record_))
         throw_input_error("code: shows the code of one heap; give a single heap implementation");

@@ -242,13 +242,12 @@ std::string leaders_cross(const std::vector<DrawnText>& drawn, const std::string
 }  // namespace
 
 /// Whether `collide heap` draws `lesson` at preset `p` (it refuses what HeapRenderer::fits
-/// rejects, judged on the layouts before any key is returned, halfway and at the end).
+/// rejects, judged on the frames at the lesson's fit_check_times).
 bool lesson_fits(const show::HeapProgram& lesson, const Preset& p) {
     const HeapViewConfig config = lesson_config(lesson, p);
-    for (const double at : {0.0, 0.5, 1.0}) {
-        if (!HeapRenderer::fits(config, lesson.frame_at(at * lesson.duration()))) return false;
-    }
-    return true;
+    const std::vector<double> times = lesson.fit_check_times();
+    return std::all_of(times.begin(), times.end(),
+                       [&](double t) { return HeapRenderer::fits(config, lesson.frame_at(t)); });
 }
 
 /// What is wrong in the frames at rest of `lesson` at preset `p`, sampled every `step` seconds:

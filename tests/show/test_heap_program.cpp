@@ -156,6 +156,29 @@ TEST_CASE("heap lesson: the keys removed so far, as the trace's returned column"
     CHECK(lesson("P Q E", {{pq::QueueFamily::binary, 2}}).frame_at(0.0).panels[0].returned.empty());
 }
 
+TEST_CASE("heap lesson: the moments checked for fit are the start, halfway and the end") {
+    // `collide heap` and the label tests judge a lesson's fit on these frames alone.
+    for (const char* ops : {"P Q E * X A M *", "P Q", "P Q E X A M P L E * * *"}) {
+        CAPTURE(ops);
+        const HeapProgram t = lesson(ops, {{pq::QueueFamily::binary, 2}});
+        const std::vector<double> times = t.fit_check_times();
+        REQUIRE(times.size() == 3);
+        CHECK(times[0] == 0.0);
+        CHECK(times[1] == doctest::Approx(0.5 * t.duration()));
+        CHECK(times[2] == t.duration());
+        // Before any operation, and after the last one: every token done.
+        CHECK_FALSE(t.frame_at(times[0]).current_token);
+        REQUIRE(t.frame_at(times[2]).current_token);
+        CHECK(*t.frame_at(times[2]).current_token == t.op_labels().size());
+    }
+    // Questions lengthen the lesson: the moments follow its duration.
+    HeapProgram asked = lesson("P Q E X A M", {{pq::QueueFamily::binary, 2}});
+    const double before = asked.duration();
+    asked.ask_questions(true);
+    REQUIRE(asked.duration() > before);
+    CHECK(asked.fit_check_times().back() == asked.duration());
+}
+
 TEST_CASE("heap lesson: panels move in lock-step, each operation paced by its longest panel") {
     const HeapProgram t =
         lesson("P Q E *", {{pq::QueueFamily::unordered, 0}, {pq::QueueFamily::binary, 2}});

@@ -114,6 +114,10 @@ class HeapProgram {
     [[nodiscard]] HeapMoment moment_at(double seconds) const;
     /// The frame at `seconds`.
     [[nodiscard]] view::HeapFrameView frame_at(double seconds) const;
+    /// The moments (seconds) whose frames must fit the picture for the lesson to be drawn
+    /// (`collide heap` refuses it otherwise, HeapRenderer::fits): before any key is returned,
+    /// halfway, and after the last operation, in that order.
+    [[nodiscard]] std::vector<double> fit_check_times() const;
     /// The pseudocode of `moment` (heap_code.hpp): the listing of the operation under way (the
     /// first during the intro, the last during the outro) and the line its step carries out.
     [[nodiscard]] view::CodeView code_at(const HeapMoment& moment) const;
