@@ -35,10 +35,16 @@ void LessonPainter::add_summary(const FrameContent& frame) {
 
     // Labels on the left 40 %, one value column per panel over the rest, right-aligned.
     const std::size_t columns = std::max<std::size_t>(1, card.columns.size());
-    // Beyond two columns (a --dt list) the values take more of the width: the labels need less.
-    const float label_x0 = 0.08F * w;
-    const float values_x0 = (columns > 2 ? 0.36F : 0.48F) * w;
-    const float values_x1 = 0.92F * w;
+    // Beyond two columns (a --dt list) the table spans the footer's width and the values take
+    // more of it, but never a label's room: "spheres that ever overlapped" is drawn whole.
+    const bool wide = columns > 2;
+    const float label_x0 = (wide ? 0.04F : 0.08F) * w;
+    float widest_label = 0.0F;
+    for (const SummaryRow& row : card.rows)
+        widest_label = std::max(widest_label, body.text_width(row.label));
+    const float values_x0 =
+        std::max((wide ? 0.36F : 0.48F) * w, std::ceil(label_x0 + widest_label + 0.02F * w));
+    const float values_x1 = (wide ? 0.96F : 0.92F) * w;
     const float column_width = (values_x1 - values_x0) / static_cast<float>(columns);
     const auto column_slot = [&](std::size_t c, float top) {
         const float x0 = values_x0 + column_width * static_cast<float>(c);

@@ -100,7 +100,9 @@ SummaryCard summary_card(const std::vector<SummaryPanel>& panels, bool walls,
     card.opacity = 1.0F;
     SummaryRow missed{"collisions missed", {}};
     const std::string bodies = spheres ? "spheres" : "discs";
-    SummaryRow overlapping{bodies + " that overlapped", {}};
+    // "ever": beside the panel's live "0 overlapping" at the end, "that overlapped" read as a
+    // contradiction (issue 44); the card counts every one seen overlapping in any frame.
+    SummaryRow overlapping{bodies + " that ever overlapped", {}};
     // Through a wall or through a barrier of immovable discs: the lessons' word, "tunnelled".
     SummaryRow tunnelled{bodies + " that tunnelled", {}};
     SummaryRow collisions{"collisions", {}};

@@ -259,7 +259,7 @@ TEST_CASE("the epilogue's card: the final figures side by side and the work rati
     REQUIRE(card.rows.size() == 5);  // missed, overlapped, tunnelled, collisions, work
     CHECK(card.rows[0].values == std::vector<std::string>{"48", "0"});
     // Every disc that overlapped in any frame, not the 3 pairs overlapping at the end.
-    CHECK(card.rows[1].label == "discs that overlapped");
+    CHECK(card.rows[1].label == "discs that ever overlapped");
     CHECK(card.rows[1].values == std::vector<std::string>{"11", "0"});
     CHECK(card.rows[2].label == "discs that tunnelled");
     CHECK(card.rows[2].values == std::vector<std::string>{"2", "0"});  // out through the wall
@@ -285,7 +285,7 @@ TEST_CASE("the epilogue's card: the final figures side by side and the work rati
     CHECK(summary_card({{event, false}}, false, "t").footer.empty());
     // A 3D scene's card names spheres.
     const SummaryCard spheres = summary_card({{time, true}, {event, false}}, true, "t", true);
-    CHECK(spheres.rows[1].label == "spheres that overlapped");
+    CHECK(spheres.rows[1].label == "spheres that ever overlapped");
     CHECK(spheres.rows[2].label == "spheres that tunnelled");
     CHECK(summary_opacity(0.0) == 0.0F);
     CHECK(summary_opacity(0.25) == doctest::Approx(0.5));

@@ -1,8 +1,8 @@
 #pragma once
 /// \file
 /// The collision video's epilogue: the final figures of the panels on one card (missed, discs
-/// that overlapped, left the box, collisions, the work and its ratio, why the counts differ), for
-/// a lecturer to leave on screen. Pure functions of the engines' measurements.
+/// that ever overlapped, left the box, collisions, the work and its ratio, why the counts differ),
+/// for a lecturer to leave on screen. Pure functions of the engines' measurements.
 
 #include <string>
 #include <vector>
