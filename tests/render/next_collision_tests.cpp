@@ -8,6 +8,7 @@
 #include <string>
 
 #include "../support/skip.hpp"
+#include "drawn_plates.hpp"
 #include "layout.hpp"
 #include "render_fixtures.hpp"
 #include "theme.hpp"
@@ -48,11 +49,7 @@ TEST_CASE("the next collision's label covers neither the pair nor the discs abov
     const Image image = renderer.render(frame);
     test::dump_if_requested(image, "next_collision_label");
 
-    LayoutInput in;
-    in.width = config.width;
-    in.height = config.height;
-    in.boxes = {s.box};
-    const PanelLayout panel = lesson_layout(in).panels.at(0);
+    const PanelLayout panel = test::one_panel_layout(config, s.box);
     const Rgb8 label = next_event_color(config.theme);
     const auto label_pixels_around = [&](Vec2 centre, double radius) {
         const PointF c = panel.to_pixels(centre, s.box);

@@ -8,41 +8,21 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
-#include <nlohmann/json.hpp>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "../support/skip.hpp"
+#include "drawn_plates.hpp"
 #include "layout.hpp"
 #include "render_fixtures.hpp"
 
 namespace collide::render {
 namespace {
 
-struct Plate {
-    std::string text;
-    RectF rect;
-};
-
-std::vector<Plate> plates(const Renderer& renderer, const FrameContent& frame) {
-    const nlohmann::json json = nlohmann::json::parse(renderer.layout_json(frame));
-    std::vector<Plate> out;
-    for (const auto& t : json["other_text"]) {
-        const auto& r = t["rect"];
-        out.push_back(
-            {t["text"].get<std::string>(),
-             {r[0].get<float>(), r[1].get<float>(), r[2].get<float>(), r[3].get<float>()}});
-    }
-    return out;
-}
-
-/// Whether rectangle r comes within `margin` pixels of the circle.
-bool touches(RectF r, PointF c, float radius, float margin) {
-    const float nx = std::clamp(c.x, r.x0, r.x1);
-    const float ny = std::clamp(c.y, r.y0, r.y1);
-    return std::hypot(nx - c.x, ny - c.y) < radius + margin;
-}
+using test::Plate;
+using test::plates;
+using test::touches;
 
 /// `count` discs of radius `radius` at random places that do not overlap, in a unit box; the
 /// first one at the top middle, where a heading drawn at the top would cover it.
@@ -96,11 +76,7 @@ TEST_CASE("a question's heading covers no disc and no letter, for many boxes of 
                 test::dump_if_requested(image, "question_heading_" + std::to_string(height) + "_" +
                                                    std::to_string(seed));
 
-                LayoutInput in;
-                in.width = config.width;
-                in.height = config.height;
-                in.boxes = {s.box};
-                const PanelLayout panel = lesson_layout(in).panels.at(0);
+                const PanelLayout panel = test::one_panel_layout(config, s.box);
                 const std::vector<Plate> drawn = plates(renderer, frame);
                 const auto plate = std::find_if(drawn.begin(), drawn.end(),
                                                 [&](const Plate& p) { return p.text == heading; });
@@ -135,11 +111,7 @@ TEST_CASE("a heading without discs to keep clear of stays at the top middle of t
     frame.panels = {{&s, "Event-driven", {}}};
     frame.panels[0].replay.heading = "Replay: one step, 9x enlarged";
     (void)renderer.render(frame);
-    LayoutInput in;
-    in.width = config.width;
-    in.height = config.height;
-    in.boxes = {s.box};
-    const PanelLayout panel = lesson_layout(in).panels.at(0);
+    const PanelLayout panel = test::one_panel_layout(config, s.box);
     const std::vector<Plate> drawn = plates(renderer, frame);
     const auto plate = std::find_if(drawn.begin(), drawn.end(), [&](const Plate& p) {
         return p.text == frame.panels[0].replay.heading;

@@ -6,43 +6,19 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "../support/skip.hpp"
+#include "drawn_plates.hpp"
 #include "layout.hpp"
 #include "render_fixtures.hpp"
 
 namespace collide::render {
-namespace {
 
-struct Plate {
-    std::string text;
-    RectF rect;
-};
-
-/// The plates drawn in the box: other_text entries of the frame just drawn.
-std::vector<Plate> plates(const Renderer& renderer, const FrameContent& frame) {
-    const nlohmann::json json = nlohmann::json::parse(renderer.layout_json(frame));
-    std::vector<Plate> out;
-    for (const auto& t : json["other_text"]) {
-        const auto& r = t["rect"];
-        out.push_back(
-            {t["text"].get<std::string>(),
-             {r[0].get<float>(), r[1].get<float>(), r[2].get<float>(), r[3].get<float>()}});
-    }
-    return out;
-}
-
-/// Whether rectangle r comes within `margin` pixels of the circle.
-bool touches(RectF r, PointF c, float radius, float margin) {
-    const float nx = std::clamp(c.x, r.x0, r.x1);
-    const float ny = std::clamp(c.y, r.y0, r.y1);
-    return std::hypot(nx - c.x, ny - c.y) < radius + margin;
-}
-
-}  // namespace
+using test::Plate;
+using test::plates;
+using test::touches;
 
 TEST_CASE("a replay's labels sit beside the ghosts, not on them, wherever the spot is") {
     if (!std::filesystem::exists(RenderConfig{}.font_path))
@@ -87,11 +63,7 @@ TEST_CASE("a replay's labels sit beside the ghosts, not on them, wherever the sp
             const Image image = renderer.render(frame);
             test::dump_if_requested(image, "replay_labels_" + std::to_string(height));
 
-            LayoutInput in;
-            in.width = config.width;
-            in.height = config.height;
-            in.boxes = {s.box};
-            const PanelLayout panel = lesson_layout(in).panels.at(0);
+            const PanelLayout panel = test::one_panel_layout(config, s.box);
             const std::vector<Plate> drawn = plates(renderer, frame);
             for (const BoxLabel& label : replay.labels) {
                 CAPTURE(label.text);
