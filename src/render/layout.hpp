@@ -157,8 +157,8 @@ struct LayoutInput {
     std::size_t code_rows = 0;
     float code_width = 0.0F;
     /// Lesson, a queue panel too crowded to number its discs inside the box (dense-fluid): the
-    /// width (px) of a column for its numbers kept free beside it under the --code listing, when
-    /// it is the right box of two (0: none).
+    /// width (px) of a column for its numbers kept free beside it: with one box between it and
+    /// its text, with two under the --code listing when it is the right box (0: none).
     float number_column = 0.0F;
 };
 

@@ -257,13 +257,17 @@ FrameLayout side_layout(const LayoutInput& in, float body) {
     // The text on the right needs at least this width (a title, two figures), and the code its.
     const float code_w = in.code_rows > 0 ? std::ceil(in.code_width) : 0.0F;
     const float text_w = std::max(code_w, std::max(0.3F * width, 10.0F * body));
-    const double scale = fit_scale(box, width - text_w - 3.0F * m, caption_top - gap - m);
+    // A crowded box's numbers take a column beside it, left of the text but for the queue strip
+    // (add_frame_numbers): a box as tall as the frame leaves that width spare at 16:9.
+    const float numbers_w = in.queue_panel == 0 ? std::ceil(in.number_column) : 0.0F;
+    const double scale =
+        fit_scale(box, width - text_w - 3.0F * m - numbers_w, caption_top - gap - m);
     PanelLayout panel;
     panel.scale = scale;
     panel.box = place_box(box, scale, m, m + static_cast<float>(box.width * scale), m);
     panel.area = {0.0F, 0.0F, panel.box.x1 + 0.5F * m, caption_top - gap};
     layout.panels.push_back(panel);
-    const float x0 = panel.box.x1 + m;
+    const float x0 = panel.box.x1 + m + numbers_w;
     const float x1 = width - m;
     const float bottom = panel.box.y1;
     float y = m;
@@ -293,7 +297,9 @@ FrameLayout side_layout(const LayoutInput& in, float body) {
         // The strip takes up to its share, leaving the column its clock (two lines) when it can.
         const float strip_h = std::round(std::clamp(
             rest - 2.0F * line - gap, queue_strip_min_share * height, queue_strip_share * height));
-        layout.queue_strip = {x0, y + gap, x1, y + gap + strip_h};
+        // The strip keeps the width beside the box whole (its heading and counts are said
+        // whole): a crowded box's number column stops over and under it.
+        layout.queue_strip = {x0 - numbers_w, y + gap, x1, y + gap + strip_h};
         layout.text.push_back({TextRole::queue, 0, layout.queue_strip, body});
         y = layout.queue_strip.y1;
     }

@@ -98,6 +98,15 @@ class LessonPainter : public Painter {
     /// The numbers add_queue_in_box could not place in their box, placed in the frame
     /// (add_frame_label) after every other text of the frame is drawn.
     void add_frame_numbers();
+    /// The numbers of frame_numbers_ that fit whole in the column right of `box` (beside it,
+    /// clear of `obstacles`), stacked in the order of their discs' heights so that the leaders
+    /// do not cross, each as near its disc's height as the others let it; the others (a column
+    /// too short for all) keep their place in frame_numbers_, the next pair's placed first.
+    void add_column_numbers(RectF box, const std::vector<RectF>& obstacles);
+    /// A number's plate outside its box, with its leader: from the plate (`from`) to the box's
+    /// edge (`elbow`), then inside the box to the disc's edge.
+    void draw_frame_number(Font font, std::string_view text, Rgba8 color, RectF plate, PointF from,
+                           PointF elbow, PointF disc, float radius);
     /// A disc's number in the frame outside the boxes (a box too crowded for a free place
     /// beside the disc): the place nearest the disc clear of `obstacles` and earlier labels,
     /// with a leader line to the nearest point of `box`'s edge, then inside it to the disc's

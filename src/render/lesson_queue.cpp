@@ -209,16 +209,137 @@ std::vector<RectF> LessonPainter::frame_obstacles(RectF own_box) const {
 void LessonPainter::add_frame_numbers() {
     if (frame_numbers_.empty()) return;
     // Every number of a frame comes from the queue's panel: one box, one list of obstacles.
-    std::optional<RectF> box;
-    std::vector<RectF> obstacles;
-    for (const FrameNumber& n : frame_numbers_) {
-        if (!box || !(box->x0 == n.box.x0 && box->y0 == n.box.y0)) {
-            box = n.box;
-            obstacles = frame_obstacles(n.box);
-        }
-        add_frame_label(n.font, n.disc, n.radius, n.text, n.color, n.box, obstacles);
-    }
+    const RectF box = frame_numbers_.front().box;
+    const std::vector<RectF> obstacles = frame_obstacles(box);
+    // First the column beside the box (stacked in order, no leader crosses another), then each
+    // number it could not hold at the nearest free place of the frame.
+    add_column_numbers(box, obstacles);
+    for (const FrameNumber& n : frame_numbers_)
+        add_frame_label(n.font, n.disc, n.radius, n.text, n.color, box, obstacles);
     frame_numbers_.clear();
+}
+
+void LessonPainter::add_column_numbers(RectF box, const std::vector<RectF>& obstacles) {
+    constexpr float clear = 2.0F;  // px between a plate and what it keeps clear of
+    const float m = std::max(2.0F, layout_.margin);
+    const auto frame_w = static_cast<float>(config_.width);
+    const auto frame_h = static_cast<float>(config_.height);
+    struct Plate {
+        std::size_t number;  // in frame_numbers_
+        float w;
+        float h;
+        float want;  // the top that puts the plate level with its disc
+        float y0;
+    };
+    std::vector<Plate> all;
+    float widest = 0.0F;
+    for (std::size_t i = 0; i < frame_numbers_.size(); ++i) {
+        const FrameNumber& n = frame_numbers_[i];
+        const FontAtlas& f = atlas(n.font);
+        const float pad = std::round(0.2F * f.pixel_height());
+        const float w = f.text_width(n.text) + 2.0F * pad;
+        const float h = std::round(f.pixel_height() * 1.05F);
+        all.push_back({i, w, h, std::floor(n.disc.y - 0.5F * h), 0.0F});
+        widest = std::max(widest, w);
+    }
+    const float x0 = box.x1 + clear;
+    const float x1 = x0 + widest;
+    if (x1 > frame_w - m) return;
+    // The column's free stretches, level with the box (a leader then runs straight to its edge).
+    const float top = std::ceil(std::max(box.y0, m));
+    const float bottom = std::floor(std::min(box.y1, frame_h - m));
+    std::vector<std::pair<float, float>> blocked;
+    const auto block = [&](const RectF& o) {
+        if (o.x1 + clear > x0 && o.x0 - clear < x1)
+            blocked.emplace_back(std::floor(o.y0 - clear), std::ceil(o.y1 + clear));
+    };
+    for (const RectF& o : obstacles)
+        if (!(o.x0 == box.x0 && o.y0 == box.y0 && o.x1 == box.x1 && o.y1 == box.y1)) block(o);
+    for (const RectF& o : labels_) block(o);
+    std::sort(blocked.begin(), blocked.end());
+    std::vector<std::pair<float, float>> free;
+    float a = top;
+    for (const auto& [b0, b1] : blocked) {
+        if (std::min(b0, bottom) > a) free.emplace_back(a, std::min(b0, bottom));
+        a = std::max(a, b1);
+    }
+    if (bottom > a) free.emplace_back(a, bottom);
+    if (free.empty()) return;
+    // The lowest place each plate of `order` (top down) can take: packed from the column's foot
+    // up; false when they do not all fit.
+    const auto lowest_places = [&](std::vector<Plate>& order) {
+        std::size_t j = free.size();
+        float pos = free.back().second;
+        for (auto it = order.rbegin(); it != order.rend(); ++it) {
+            float y = pos - it->h;
+            while (j > 0) {
+                y = std::min(y, free[j - 1].second - it->h);
+                if (y >= free[j - 1].first) break;
+                --j;
+            }
+            if (j == 0) return false;
+            it->y0 = y;
+            pos = y - clear;
+        }
+        return true;
+    };
+    // Top down, each plate level with its disc, or the first free place under the one above, but
+    // never lower than leaves room for the ones under it.
+    const auto pack = [&](std::vector<Plate>& order) {
+        std::vector<Plate> lowest = order;
+        if (!lowest_places(lowest)) return false;
+        float pos = free.front().first;
+        for (std::size_t i = 0; i < order.size(); ++i) {
+            Plate& p = order[i];
+            float y = std::max(p.want, pos);
+            std::size_t j = 0;
+            while (j < free.size() && std::max(y, free[j].first) + p.h > free[j].second) ++j;
+            if (j < free.size()) y = std::max(y, free[j].first);
+            p.y0 = j < free.size() ? std::min(y, lowest[i].y0) : lowest[i].y0;
+            pos = p.y0 + p.h + clear;
+        }
+        return true;
+    };
+    const auto by_height = [&](const Plate& p, const Plate& q) {
+        return frame_numbers_[p.number].disc.y < frame_numbers_[q.number].disc.y;
+    };
+    // As many as the column holds, the next pair's first (frame_numbers_'s order).
+    std::vector<Plate> chosen;
+    for (std::size_t k = all.size(); k > 0 && chosen.empty(); --k) {
+        std::vector<Plate> order(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(k));
+        std::sort(order.begin(), order.end(), by_height);
+        if (pack(order)) chosen = order;
+    }
+    for (const Plate& p : chosen) {
+        const FrameNumber& n = frame_numbers_[p.number];
+        const RectF plate{x0, p.y0, x0 + p.w, p.y0 + p.h};
+        const float mid = std::round(0.5F * (plate.y0 + plate.y1));
+        labels_.push_back(plate);
+        draw_frame_number(n.font, n.text, n.color, plate, {x0, mid}, {box.x1, mid}, n.disc,
+                          n.radius);
+    }
+    // What is left (a column too short for all) goes to the nearest free places, in order.
+    std::vector<FrameNumber> rest;
+    for (std::size_t i = chosen.size(); i < frame_numbers_.size(); ++i)
+        rest.push_back(frame_numbers_[i]);
+    frame_numbers_ = std::move(rest);
+}
+
+void LessonPainter::draw_frame_number(Font font, std::string_view text, Rgba8 color, RectF plate,
+                                      PointF from, PointF elbow, PointF disc, float radius) {
+    const FontAtlas& f = atlas(font);
+    const float h = plate.height();
+    const float line_w = std::max(1.0F, std::round(h / 16.0F));
+    if (std::hypot(elbow.x - from.x, elbow.y - from.y) > 0.5F)
+        list_.over.add_line(from, elbow, line_w, faded(color, 0.8F));
+    const float length = std::hypot(disc.x - elbow.x, disc.y - elbow.y);
+    if (length > radius) {
+        const float keep = radius / length;
+        const PointF to{disc.x + (elbow.x - disc.x) * keep, disc.y + (elbow.y - disc.y) * keep};
+        list_.over.add_line(elbow, to, line_w, faded(color, 0.8F));
+    }
+    list_.over.add_rect(plate, with_alpha(rgb(palette_.box_fill), 215));
+    draw_text(font, {TextRole::queue, -1, plate, f.pixel_height()}, text, color, Align::centre);
 }
 
 void LessonPainter::add_frame_label(Font font, PointF disc, float radius, std::string_view text,
@@ -319,19 +440,7 @@ void LessonPainter::add_frame_label(Font font, PointF disc, float radius, std::s
     }
     if (!best) return;  // no free place in the frame: the strip names the event
     labels_.push_back(best->plate);
-    const float line_w = std::max(1.0F, std::round(h / 16.0F));
-    if (std::hypot(best->elbow.x - best->from.x, best->elbow.y - best->from.y) > 0.5F)
-        list_.over.add_line(best->from, best->elbow, line_w, faded(color, 0.8F));
-    const float length = std::hypot(disc.x - best->elbow.x, disc.y - best->elbow.y);
-    if (length > radius) {
-        const float keep = radius / length;
-        const PointF to{disc.x + (best->elbow.x - disc.x) * keep,
-                        disc.y + (best->elbow.y - disc.y) * keep};
-        list_.over.add_line(best->elbow, to, line_w, faded(color, 0.8F));
-    }
-    list_.over.add_rect(best->plate, with_alpha(rgb(palette_.box_fill), 215));
-    draw_text(font, {TextRole::queue, -1, best->plate, f.pixel_height()}, text, color,
-              Align::centre);
+    draw_frame_number(font, text, color, best->plate, best->from, best->elbow, disc, radius);
 }
 
 // Lines between the discs of the next collisions, ticks on the walls, each with its time to go;

@@ -4,8 +4,10 @@
 // --layout-json's "text_ink" (where each string's glyphs went).
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "../support/temp_dir.hpp"
@@ -86,4 +88,74 @@ TEST_CASE("the queue strip beside one box: no text on other text, all inside the
         for (const char* preset : {"l", "m"})
             for (const char* options : {"--mode event --queue", "--mode event --queue --code"})
                 check_strip(dir, scene, preset, options);
+}
+
+namespace {
+
+/// The disc numbers a crowded box's queue drew outside it (queue text outside the strip, all
+/// digits), each with where its plate went.
+std::vector<std::pair<Box, std::string>> disc_numbers(const nlohmann::json& layout) {
+    Box strip{};
+    for (const nlohmann::json& slot : layout.at("text"))
+        if (slot.at("role") == "queue") strip = box_of(slot.at("rect"));
+    std::vector<std::pair<Box, std::string>> out;
+    for (const nlohmann::json& label : layout.at("other_text")) {
+        if (label.at("role") != "queue") continue;
+        const Box b = box_of(label.at("rect"));
+        const std::string text = label.at("text").get<std::string>();
+        if (overlap(b, strip) || text.empty() ||
+            text.find_first_not_of("0123456789") != std::string::npos)
+            continue;
+        out.emplace_back(b, text);
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("dense-fluid at -q l numbers every disc of the listed collisions, as at -q m") {
+    // The box is too crowded for a number beside a disc: every number goes outside it. The next
+    // five collisions of a periodic box are five pairs, ten discs; -q l has the room -q m has.
+    TempDir dir("queue_numbers");
+    for (const char* options :
+         {"--mode event --queue", "--mode event --queue --code", "--queue", "--queue --code"}) {
+        CAPTURE(options);
+        std::vector<std::string> at_m;
+        for (const char* preset : {"m", "l"}) {
+            CAPTURE(preset);
+            const nlohmann::json layout = thumbnail_layout(dir, "dense-fluid", preset, options);
+            const auto numbers = disc_numbers(layout);
+            std::vector<std::string> texts;
+            for (const auto& [plate, text] : numbers) texts.push_back(text);
+            std::sort(texts.begin(), texts.end());
+            CHECK(std::adjacent_find(texts.begin(), texts.end()) == texts.end());
+            CHECK(texts.size() == 10);
+            if (at_m.empty()) at_m = texts;
+            CHECK(texts == at_m);
+            // The strip's root ("806-849", its first pair drawn; the event just popped comes
+            // after it) names two of them.
+            bool root = false;
+            for (const nlohmann::json& ink : layout.at("text_ink")) {
+                const std::string text = ink.at("text").get<std::string>();
+                const auto dash = text.find('-');
+                if (ink.at("role") != "queue" || dash == std::string::npos ||
+                    text.find_first_not_of("0123456789-") != std::string::npos)
+                    continue;
+                CAPTURE(text);
+                CHECK(std::count(texts.begin(), texts.end(), text.substr(0, dash)) == 1);
+                CHECK(std::count(texts.begin(), texts.end(), text.substr(dash + 1)) == 1);
+                root = true;
+                break;
+            }
+            CHECK(root);
+            // Never one plate on another, never over the box.
+            const Box box = box_of(layout.at("panels").back().at("box"));
+            for (std::size_t i = 0; i < numbers.size(); ++i) {
+                CAPTURE(numbers[i].second);
+                CHECK_FALSE(overlap(numbers[i].first, box));
+                for (std::size_t j = i + 1; j < numbers.size(); ++j)
+                    CHECK_FALSE(overlap(numbers[i].first, numbers[j].first));
+            }
+        }
+    }
 }
