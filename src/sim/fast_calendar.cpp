@@ -20,28 +20,21 @@ namespace {
 constexpr double calendar_events_per_block = 8.0;
 constexpr double calendar_horizon = 8.0;
 
-/// Discs keep the calendar up to this many (records of at most 4 MiB) and a tournament tree
-/// beyond (pq::TournamentTree, one leaf per disc at its Z-order number). Measured on the 2-core
-/// machine (issue 47): the calendar ran 1.11x the heap at 10^3 discs, 1.14x at 10^4, 1.03-1.09x
-/// at 3x10^4 and 5x10^4, but 0.96x at 10^5 and level at 10^6, where its list links (two random
-/// entries per reschedule) miss the caches; the tree, with no position map and the leaves of
-/// neighbours side by side, runs fewer instructions and L1 misses than the heap there (about a
-/// fifth fewer of each) and ran 1.03x at 10^5, but lost to the calendar at 10^3 in time
-/// (docs/benchmarks-history.md).
+/// Discs keep the calendar up to this many (records of at most 4 MiB) and run it as one block, a
+/// plain heap, beyond: measured against the heap on the 2-core machine (issue 47), the calendar
+/// ran 1.11x at 10^3 discs, 1.14x at 10^4, 1.03-1.09x at 3x10^4 and 5x10^4, but 0.96x at 10^5
+/// (median of ten interleaved pairs) and level at 10^6, where its list links (two random entries
+/// per reschedule) miss the caches more often than the heap's sinks do (docs/benchmarks.md).
 constexpr std::size_t calendar_max_discs = 65536;
 
 }  // namespace
 
 template <int D>
 void BasicFastEngine<D>::tune_calendar() {
-    if (D == 2 && watch_.on()) {
-        // One heap of every pending event (a block of infinite width): the lecture's queue.
+    if (D == 2 && (watch_.on() || p_.size() > calendar_max_discs)) {
+        // One heap of every pending event (a block of infinite width): the lecture's queue, and
+        // the faster queue for many discs.
         queue_.tune(std::numeric_limits<double>::infinity(), 2, now_);
-        return;
-    }
-    if (D == 2 && p_.size() > calendar_max_discs) {
-        // Every pending event at its disc's leaf of the tournament tree.
-        queue_.use_tree();
         return;
     }
     // Each particle's next event is on average `mean` ahead, so the whole system has about

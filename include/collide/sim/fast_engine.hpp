@@ -12,8 +12,7 @@
 ///   unless it takes part in an event (no O(N) drift per event).
 /// - One pending event per disc. The disc's earliest predicted event is its key (handle = disc
 ///   index) in an event calendar (pq::CalendarQueue: an indexed 4-ary heap for the current block
-///   of time, unordered lists for later blocks; above 65,536 discs a tournament tree,
-///   pq::TournamentTree, one leaf per disc) and is replaced in place, so the queue holds at
+///   of time, unordered lists for later blocks) and is replaced in place, so the queue holds at
 ///   most N entries and nothing stale accumulates. A pair event held by i names its partner j and
 ///   j's collision count; if j has collided since, the pop re-predicts i (a "stale pop"). The
 ///   calendar pops in the order of one heap of all keys (a watched disc engine keeps it as that
@@ -62,7 +61,6 @@
 #include "collide/sim/kinematics.hpp"
 #include "collide/sim/observables.hpp"
 #include "collide/sim/pq/cache_layout.hpp"
-#include "collide/sim/pq/calendar_or_tree.hpp"
 #include "collide/sim/pq/calendar_queue.hpp"
 #include "collide/sim/pq/indexed_heap.hpp"
 #include "collide/sim/queue_view.hpp"
@@ -202,9 +200,8 @@ class BasicFastEngine final : public EngineOf<D> {
     using Heap = pq::IndexedDaryHeap<Key, pq::Orientation::min, 4, KeyLess, KeyOwner>;
     /// An event calendar (most events are rescheduled far ahead, in O(1)); for discs since issue
     /// 47 (1.1x the one heap's speed up to 5x10^4 discs), run as one block, a plain heap, when
-    /// the queue is watched; above 65,536 unwatched discs a tournament tree, one leaf per disc at
-    /// a fixed place, where the calendar and the heap lost (tune_calendar).
-    using Queue = pq::CalendarOrTree<Key, KeyLess, KeyOwner>;
+    /// there are more (it lost there) or when the queue is watched (tune_calendar).
+    using Queue = pq::CalendarQueue<Key, KeyLess, KeyOwner>;
 
     /// Times the particle wrapped across the high (+) or low (-) edge, per axis.
     using Image = std::array<std::int32_t, D>;
