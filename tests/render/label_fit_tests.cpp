@@ -1,8 +1,10 @@
 // Every label of the heap and puzzle lessons fits (#44 item 5): capitals at least 2.8 % of the
 // frame height, and a key, a tile's number or a slot's index inside the slot, node or tile it
 // labels, with a margin. Read from the painters' own record of what they drew (last_text: the
-// text, its box and the shape it labels) at -q l, m and h, over d-ary heaps of arity 2 to 8 (with
-// letters and with words as keys), three panels side by side, and 8- and 15-puzzles.
+// text, its box and the shape it labels; the heap's frames laid out without drawing them,
+// HeapRenderer::layout_only, which lays them out as a render does) at -q l, m and h, over d-ary
+// heaps of arity 2 to 8 (with letters and with words as keys), three panels side by side, and 8-
+// and 15-puzzles.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -83,11 +85,10 @@ std::string check_heap(const show::HeapProgram& lesson) {
         config.height = p.height;
         config.widest_key = lesson.widest_key();
         config.keys = lesson.keys();
-        HeapRenderer renderer(config, test::test_backend());
-        Image image;
+        HeapRenderer renderer = HeapRenderer::layout_only(config);
         int labels = 0;
         for (double t = 0.0; t <= lesson.duration(); t += p.every) {
-            renderer.render(lesson.frame_at(t), image);
+            renderer.lay_out(lesson.frame_at(t));
             out += misfits(renderer.last_text(), p, t, labels);
         }
         CHECK(labels > 0);  // keys and indices were found and checked
@@ -261,15 +262,14 @@ struct RestCheck {
 };
 
 RestCheck check_frames_at_rest(const show::HeapProgram& lesson, const Preset& p, double step) {
-    HeapRenderer renderer(lesson_config(lesson, p), test::test_backend());
-    Image image;
+    HeapRenderer renderer = HeapRenderer::layout_only(lesson_config(lesson, p));
     RestCheck check;
     for (double t = 0.0; t <= lesson.duration(); t += step) {
         const view::HeapFrameView frame = lesson.frame_at(t);
         if (std::any_of(frame.panels.begin(), frame.panels.end(),
                         [](const view::HeapPanelView& v) { return v.swap; }))
             continue;
-        renderer.render(frame, image);
+        renderer.lay_out(frame);
         check.bad += misfits(renderer.last_text(), p, t, check.labels);
         check.bad += squashed(renderer.last_text(),
                               std::string(p.name) + " at " + std::to_string(t) + " s: ");
@@ -389,8 +389,7 @@ TEST_CASE(
         lesson.ask_questions(true);
         REQUIRE_FALSE(lesson.questions().empty());
         for (const Preset& p : {presets[0], presets[1]}) {
-            HeapRenderer renderer(lesson_config(lesson, p), test::test_backend());
-            Image image;
+            HeapRenderer renderer = HeapRenderer::layout_only(lesson_config(lesson, p));
             std::string bad;
             int asked = 0;
             int labels = 0;
@@ -406,7 +405,7 @@ TEST_CASE(
                     std::any_of(frame.panels.begin(), frame.panels.end(),
                                 [](const view::HeapPanelView& v) { return v.swap; });
                 if (!question || moving) continue;
-                renderer.render(frame, image);
+                renderer.lay_out(frame);
                 const std::string where = std::string(p.name) + " at " + std::to_string(t) + " s: ";
                 bad += squashed(renderer.last_text(), where);
                 bad += plates_cover(renderer.last_text(), where);
