@@ -9,7 +9,9 @@
 #     UBSan, which never recovers here, checks the command line's paths, not just the libraries);
 #     not the renderer suite's second pass on EGL: under the sanitizers it repeats our code, whose
 #     EGL context the renderer's own EGL test cases already run (step 3 runs its cases on EGL);
-#     one process per test file too (COLLIDE_TESTS_BY_FILE, as in step 1);
+#     one process per test file too (COLLIDE_TESTS_BY_FILE, as in step 1), less the test cases
+#     in the doctest suite `sweep` (the same checks and code as other cases of their file, over
+#     many more parameters: step 5 runs them);
 #  3. a renderer-only build without OSMesa (COLLIDE_WITH_OSMESA=OFF: EGL only, as on distributions
 #     whose Mesa has no OSMesa), running the renderer tests on EGL, one process per test file
 #     (COLLIDE_TESTS_BY_FILE: a process that loads Mesa's EGL and LLVM costs about 0.5 s to

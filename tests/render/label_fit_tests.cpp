@@ -305,8 +305,12 @@ void check_fit_cases(const std::vector<FitCase>& cases, double step, OnDrawn on_
     }
 }
 
+// In the doctest suite `sweep` (tests/CMakeLists.txt): the sanitized builds run this file's other
+// cases, which go through the same checks and layouts (check_fit_cases: the word keys' case;
+// the indexed heap's map: the three heaps' case); the full build runs this one too.
 TEST_CASE(
-    "heap trees never squash: 1 to 3 heaps of 11 and 15 keys, indexed among them, -q l and -q m") {
+    "heap trees never squash: 1 to 3 heaps of 11 and 15 keys, indexed among them, -q l and -q m" *
+    doctest::test_suite("sweep")) {
     // Issue 44: three heaps side by side with 11 keys at -q l overlapped their nodes, with
     // caption lines reserved that no caption used. Every frame at rest (no exchange under way:
     // the two keys of an exchange pass each other by design) of a lesson that fills the heaps.
