@@ -9,9 +9,14 @@
 #     UBSan, which never recovers here, checks the command line's paths, not just the libraries);
 #     not the renderer suite's second pass on EGL: under the sanitizers it repeats our code, whose
 #     EGL context the renderer's own EGL test cases already run (step 3 runs its cases on EGL);
-#     one process per test file too (COLLIDE_TESTS_BY_FILE, as in step 1);
+#     one process per test file too (COLLIDE_TESTS_BY_FILE, as in step 1), less the test cases
+#     in the doctest suite `sweep` (the same checks and code as other cases of their file, over
+#     many more parameters: step 5 runs them);
 #  3. a renderer-only build without OSMesa (COLLIDE_WITH_OSMESA=OFF: EGL only, as on distributions
-#     whose Mesa has no OSMesa), running the renderer tests, every one on EGL;
+#     whose Mesa has no OSMesa), running the renderer tests on EGL, one process per test file
+#     (COLLIDE_TESTS_BY_FILE: a process that loads Mesa's EGL and LLVM costs about 0.5 s to
+#     start), but not the files labelled `layout-only` (they read what was laid out, never a
+#     pixel: the backend cannot change it; steps 2 and 5 run them);
 #  4. a lean build without libav (COLLIDE_VIDEO=OFF: the drawing program for CI thumbnails), only
 #     the programs and their own suite (label `lean`: thumbnail, compare, PNG frames, a video
 #     refused with exit 2);
@@ -49,9 +54,10 @@ ctest --test-dir build/asan -L 'unit|cli-matrix' \
 
 echo "==> [3/5] renderer without OSMesa (build/no-osmesa)"
 cmake -S . -B build/no-osmesa "${common[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-      -DCOLLIDE_WITH_OSMESA=OFF >/dev/null
+      -DCOLLIDE_WITH_OSMESA=OFF -DCOLLIDE_TESTS_BY_FILE=ON >/dev/null
 cmake --build build/no-osmesa -j "$jobs" --target collide_render_tests
-ctest --test-dir build/no-osmesa -R "^collide_render_tests:" --output-on-failure -j "$jobs"
+ctest --test-dir build/no-osmesa -R "^collide_render_tests:" -LE layout-only --output-on-failure \
+      -j "$jobs"
 
 echo "==> [4/5] lean build without libav (build/lean)"
 cmake -S . -B build/lean "${common[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOLLIDE_VIDEO=OFF \

@@ -8,9 +8,11 @@
 #include <cstddef>
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "code_panel.hpp"
 #include "collide/assert.hpp"
@@ -1261,10 +1263,15 @@ struct HeapRenderer::Impl {
 
     // ------------------------------------------------------------------ GL
 
-    void render(const view::HeapFrameView& frame, Image& out) {
+    /// The frame's draw list and its text (drawn), as render draws them.
+    void lay_out(const view::HeapFrameView& frame) {
         check(frame);
         build(frame);
+    }
+
+    void render(const view::HeapFrameView& frame, Image& out) {
         COLLIDE_ASSERT(target.has_value(), "a renderer made with a context draws");
+        lay_out(frame);
         target->draw(list);
         target->read_pixels(list, out);
     }
@@ -1279,12 +1286,23 @@ HeapRenderer::HeapRenderer(const HeapViewConfig& config, Backend backend, const 
                                         make_context(backend, config.width, config.height, notice));
       }()) {}
 
+HeapRenderer::HeapRenderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+
+HeapRenderer HeapRenderer::layout_only(const HeapViewConfig& config) {
+    config.validate();
+    return HeapRenderer(std::make_unique<Impl>(config, nullptr));
+}
+
 HeapRenderer::~HeapRenderer() = default;
 HeapRenderer::HeapRenderer(HeapRenderer&&) noexcept = default;
 HeapRenderer& HeapRenderer::operator=(HeapRenderer&&) noexcept = default;
 
 void HeapRenderer::render(const view::HeapFrameView& frame, Image& out) {
     impl_->render(frame, out);
+}
+
+void HeapRenderer::lay_out(const view::HeapFrameView& frame) {
+    impl_->lay_out(frame);
 }
 
 bool HeapRenderer::fits(const HeapViewConfig& config, const view::HeapFrameView& frame) {

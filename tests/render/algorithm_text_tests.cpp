@@ -1,6 +1,7 @@
 // Every word of the heap and puzzle lessons is legible from the back of a hall (#28 item 7):
 // capitals at least 2.8 % of the frame height, as in the collision video. Checked on the
-// painters' own record of the text they drew (last_text) over the frames of the lessons of
+// painters' own record of the text they drew (last_text; the heap's frames laid out without
+// drawing them, HeapRenderer::layout_only) over the frames of the lessons of
 // docs/heap.md and of the puzzle, at -q l (854x480) and -q m (1280x720).
 #include <doctest/doctest.h>
 
@@ -51,10 +52,9 @@ std::string check_heap(const show::HeapProgram& lesson) {
         config.height = f.height;
         config.widest_key = lesson.widest_key();
         if (lesson.shows_code()) config.code_lines = lesson.code_lines();
-        HeapRenderer renderer(config, test::test_backend());
-        Image image;
+        HeapRenderer renderer = HeapRenderer::layout_only(config);
         for (double t = 0.0; t <= lesson.duration(); t += f.every) {
-            renderer.render(lesson.frame_at(t), image);
+            renderer.lay_out(lesson.frame_at(t));
             REQUIRE_FALSE(renderer.last_text().empty());
             out += too_small(renderer.last_text(), f.height, t);
         }
@@ -135,10 +135,10 @@ TEST_CASE("lesson text: heap --code's listings are lesson text, and every line f
             config.width = f.width;
             config.height = f.height;
             config.code_lines = lesson.code_lines();
-            HeapRenderer renderer(config, test::test_backend());
+            HeapRenderer renderer = HeapRenderer::layout_only(config);
             for (double t = 0.0; t <= lesson.duration(); t += 4.0) {
                 const view::HeapFrameView frame = lesson.frame_at(t);
-                (void)renderer.render(frame);
+                renderer.lay_out(frame);
                 REQUIRE(frame.code);
                 for (const view::CodeLineView& line : frame.code->lines) {
                     bool drawn_whole = false;

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "../support/assert_death.hpp"
 #include "../support/input_error.hpp"
@@ -15,6 +16,9 @@
 #include "collide/assert.hpp"
 #include "collide/error.hpp"
 #include "collide/render/heap_view.hpp"
+#include "collide/show/heap_program.hpp"
+#include "collide/sim/pq/heap_record.hpp"
+#include "collide/sim/pq/queue_kind.hpp"
 #include "heap_view_layout.hpp"
 #include "render_fixtures.hpp"
 
@@ -318,6 +322,67 @@ TEST_CASE("heap view: a question's letters and countdown are lesson size (--ques
     const auto& none = renderer.last_text();
     CHECK(std::none_of(none.begin(), none.end(),
                        [](const DrawnText& t) { return t.text == "B" || t.text == "Think: 3"; }));
+}
+
+TEST_CASE(
+    "heap view: a layout-only renderer records the text a drawing one draws, frame by frame") {
+    // HeapRenderer::layout_only: the tests that read only last_text (label_fit_tests.cpp,
+    // algorithm_text_tests.cpp) lay thousands of frames out without drawing them. Every field
+    // of every text (place, size, the shape it labels, a plate's leader) is the drawn one's,
+    // over a lesson with questions (plates and leaders), an exchange, the indexed heap's map
+    // and words as keys.
+    const std::vector<pq::QueueKind> kinds{pq::parse_queue_kind("binary"),
+                                           pq::parse_queue_kind("indexed:2")};
+    show::HeapProgram lesson(
+        pq::HeapRecord::operations(
+            pq::parse_heap_ops("apple banana cherry * damson elder fig * grape"), kinds,
+            pq::Orientation::max),
+        show::heap_pacing(0.8), 1);
+    lesson.ask_questions(true);
+    HeapViewConfig config = config_of(854, 480);
+    config.widest_key = lesson.widest_key();
+    config.keys = lesson.keys();
+    config.captions = lesson.captions();
+    HeapRenderer drawing(config, test::test_backend());
+    HeapRenderer layout = HeapRenderer::layout_only(config);
+    const auto same_shape = [](const DrawnShape& a, const DrawnShape& b) {
+        return a.x0 == b.x0 && a.y0 == b.y0 && a.x1 == b.x1 && a.y1 == b.y1 && a.corner == b.corner;
+    };
+    std::size_t texts = 0;
+    std::size_t plates = 0;
+    for (double t = 0.0; t <= lesson.duration(); t += 0.25) {
+        CAPTURE(t);
+        const view::HeapFrameView frame = lesson.frame_at(t);
+        (void)drawing.render(frame);
+        layout.lay_out(frame);
+        const std::vector<DrawnText>& drawn = drawing.last_text();
+        const std::vector<DrawnText>& laid = layout.last_text();
+        REQUIRE(laid.size() == drawn.size());
+        for (std::size_t i = 0; i < drawn.size(); ++i) {
+            CAPTURE(drawn[i].text);
+            CHECK(laid[i].text == drawn[i].text);
+            CHECK(laid[i].cap_height == drawn[i].cap_height);
+            CHECK(same_shape(laid[i].box, drawn[i].box));
+            REQUIRE(laid[i].shape.has_value() == drawn[i].shape.has_value());
+            if (drawn[i].shape) CHECK(same_shape(*laid[i].shape, *drawn[i].shape));
+            CHECK(laid[i].over == drawn[i].over);
+            REQUIRE(laid[i].leader.size() == drawn[i].leader.size());
+            for (std::size_t k = 0; k < drawn[i].leader.size(); ++k) {
+                const DrawnSegment& a = laid[i].leader[k];
+                const DrawnSegment& b = drawn[i].leader[k];
+                CHECK((a.x0 == b.x0 && a.y0 == b.y0 && a.x1 == b.x1 && a.y1 == b.y1));
+            }
+            plates += drawn[i].over ? 1 : 0;
+        }
+        texts += drawn.size();
+    }
+    CHECK(texts > 100);
+    CHECK(plates > 0);  // question frames were among them
+    // It has no context: drawing with it is a programmer error.
+    if (!asserts_enabled) COLLIDE_SKIP_TEST("assertions are off in this build type");
+    const std::string failure =
+        collide::test::assertion_failure([&] { (void)layout.render(lesson.frame_at(0.0)); });
+    CHECK(collide::test::contains(failure, "a renderer made with a context draws"));
 }
 
 }  // namespace collide::render

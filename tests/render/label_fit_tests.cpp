@@ -1,8 +1,10 @@
 // Every label of the heap and puzzle lessons fits (#44 item 5): capitals at least 2.8 % of the
 // frame height, and a key, a tile's number or a slot's index inside the slot, node or tile it
 // labels, with a margin. Read from the painters' own record of what they drew (last_text: the
-// text, its box and the shape it labels) at -q l, m and h, over d-ary heaps of arity 2 to 8 (with
-// letters and with words as keys), three panels side by side, and 8- and 15-puzzles.
+// text, its box and the shape it labels; the heap's frames laid out without drawing them,
+// HeapRenderer::layout_only, which lays them out as a render does) at -q l, m and h, over d-ary
+// heaps of arity 2 to 8 (with letters and with words as keys), three panels side by side, and 8-
+// and 15-puzzles.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -83,11 +85,10 @@ std::string check_heap(const show::HeapProgram& lesson) {
         config.height = p.height;
         config.widest_key = lesson.widest_key();
         config.keys = lesson.keys();
-        HeapRenderer renderer(config, test::test_backend());
-        Image image;
+        HeapRenderer renderer = HeapRenderer::layout_only(config);
         int labels = 0;
         for (double t = 0.0; t <= lesson.duration(); t += p.every) {
-            renderer.render(lesson.frame_at(t), image);
+            renderer.lay_out(lesson.frame_at(t));
             out += misfits(renderer.last_text(), p, t, labels);
         }
         CHECK(labels > 0);  // keys and indices were found and checked
@@ -260,15 +261,14 @@ struct RestCheck {
 };
 
 RestCheck check_frames_at_rest(const show::HeapProgram& lesson, const Preset& p, double step) {
-    HeapRenderer renderer(lesson_config(lesson, p), test::test_backend());
-    Image image;
+    HeapRenderer renderer = HeapRenderer::layout_only(lesson_config(lesson, p));
     RestCheck check;
     for (double t = 0.0; t <= lesson.duration(); t += step) {
         const view::HeapFrameView frame = lesson.frame_at(t);
         if (std::any_of(frame.panels.begin(), frame.panels.end(),
                         [](const view::HeapPanelView& v) { return v.swap; }))
             continue;
-        renderer.render(frame, image);
+        renderer.lay_out(frame);
         check.bad += misfits(renderer.last_text(), p, t, check.labels);
         check.bad += squashed(renderer.last_text(),
                               std::string(p.name) + " at " + std::to_string(t) + " s: ");
@@ -304,8 +304,12 @@ void check_fit_cases(const std::vector<FitCase>& cases, double step, OnDrawn on_
     }
 }
 
+// In the doctest suite `sweep` (tests/CMakeLists.txt): the sanitized builds run this file's other
+// cases, which go through the same checks and layouts (check_fit_cases: the word keys' case;
+// the indexed heap's map: the three heaps' case); the full build runs this one too.
 TEST_CASE(
-    "heap trees never squash: 1 to 3 heaps of 11 and 15 keys, indexed among them, -q l and -q m") {
+    "heap trees never squash: 1 to 3 heaps of 11 and 15 keys, indexed among them, -q l and -q m" *
+    doctest::test_suite("sweep")) {
     // Issue 44: three heaps side by side with 11 keys at -q l overlapped their nodes, with
     // caption lines reserved that no caption used. Every frame at rest (no exchange under way:
     // the two keys of an exchange pass each other by design) of a lesson that fills the heaps.
@@ -388,8 +392,7 @@ TEST_CASE(
         lesson.ask_questions(true);
         REQUIRE_FALSE(lesson.questions().empty());
         for (const Preset& p : {presets[0], presets[1]}) {
-            HeapRenderer renderer(lesson_config(lesson, p), test::test_backend());
-            Image image;
+            HeapRenderer renderer = HeapRenderer::layout_only(lesson_config(lesson, p));
             std::string bad;
             int asked = 0;
             int labels = 0;
@@ -405,7 +408,7 @@ TEST_CASE(
                     std::any_of(frame.panels.begin(), frame.panels.end(),
                                 [](const view::HeapPanelView& v) { return v.swap; });
                 if (!question || moving) continue;
-                renderer.render(frame, image);
+                renderer.lay_out(frame);
                 const std::string where = std::string(p.name) + " at " + std::to_string(t) + " s: ";
                 bad += squashed(renderer.last_text(), where);
                 bad += plates_cover(renderer.last_text(), where);

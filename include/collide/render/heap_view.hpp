@@ -81,11 +81,21 @@ class HeapRenderer {
     HeapRenderer(const HeapRenderer&) = delete;
     HeapRenderer& operator=(const HeapRenderer&) = delete;
 
+    /// A renderer that lays frames out without drawing them: no context is made, so it costs
+    /// no GL start-up and no pixels (tests that read only last_text go through thousands of
+    /// frames). Only lay_out and last_text may be called; render fails an assertion. Throws as
+    /// the constructor, less the context's errors.
+    [[nodiscard]] static HeapRenderer layout_only(const HeapViewConfig& config);
+
     /// Draws one frame, width x height RGBA8, rows top-down, into `out` (resized as needed).
     /// Throws Error(input) for no panels, more than max_heap_panels, more slots than a panel's
     /// capacity or an exchange of slots that do not exist.
     void render(const view::HeapFrameView& frame, Image& out);
     [[nodiscard]] Image render(const view::HeapFrameView& frame);
+
+    /// Lays `frame` out exactly as render does before it draws (the same function), without
+    /// drawing: last_text then holds the text render would draw. Throws as render.
+    void lay_out(const view::HeapFrameView& frame);
 
     /// Whether every panel of `frame` holds its parts at `config`'s size with every text at the
     /// lesson size: no two tree nodes touching, each key inside its node, the indexed heap's map
@@ -99,6 +109,7 @@ class HeapRenderer {
 
   private:
     struct Impl;
+    explicit HeapRenderer(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> impl_;
 };
 
