@@ -656,7 +656,16 @@ void LessonPainter::add_popped(const QueueView& queue, const QueueWords& words, 
         draw_text(Font::small, slot(y), popped_heading(words, area.width()), palette_.muted);
         y += line;
     }
-    const float bottom = lines >= 2.0F ? area.y1 - line : area.y1;
+    // The counts on one line where they fit; else on two (late in a long run beside one box:
+    // "316,487 pops" over "65,796 stale"), or the pops alone where one line is all there is
+    // for them: said whole, never cut.
+    std::vector<std::string> counts{words.counts};
+    if (small.text_width(words.counts) > area.width() && !words.counts_lines.empty()) {
+        counts = words.counts_lines;
+        if (lines < 3.0F) counts.resize(1);
+    }
+    const float counts_lines = lines >= 2.0F ? static_cast<float>(counts.size()) : 0.0F;
+    const float bottom = area.y1 - counts_lines * line;
     for (std::size_t k = queue.popped.size(); k-- > 0 && y + line <= bottom;) {
         const QueuedEvent& e = queue.popped[k];
         const float glow = pop_highlight(e, now);
@@ -678,7 +687,10 @@ void LessonPainter::add_popped(const QueueView& queue, const QueueWords& words, 
         draw_text(Font::small, slot(y), text, color);
         y += line;
     }
-    if (bottom < area.y1) draw_text(Font::small, slot(bottom), words.counts, palette_.muted);
+    if (counts_lines > 0.0F)
+        for (std::size_t k = 0; k < counts.size(); ++k)
+            draw_text(Font::small, slot(bottom + static_cast<float>(k) * line), counts[k],
+                      palette_.muted);
 }
 
 float LessonPainter::node_width(const std::vector<std::string>& labels, bool one_line) const {

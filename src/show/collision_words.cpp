@@ -343,6 +343,8 @@ QueueWords queue_words(const QueueView& queue, double now) {
             ? fmt::format("{} pops, {} stale", separated(queue.pops), separated(queue.stale_pops))
             : fmt::format("{} of {} pops stale", separated(queue.stale_pops),
                           separated(queue.pops));
+    out.counts_lines = {fmt::format("{} pops", separated(queue.pops)),
+                        fmt::format("{} stale", separated(queue.stale_pops))};
     out.popped_heading = "Popped (newest first)";
     out.short_popped_heading = "Popped";
     out.resolved_popped = "  resolved";

@@ -267,6 +267,8 @@ TEST_CASE("the queue strip's words: the fast engine re-predicts, the classic one
     CHECK(fast.heading == "Event queue: binary heap, 1,234 entries (one per disc)");
     CHECK(fast.stale_popped == "  stale: re-predict");
     CHECK(fast.counts == "40 pops, 3 stale");
+    CHECK(fast.counts_lines == std::vector<std::string>{"40 pops", "3 stale"});
+    CHECK(classic.counts_lines == std::vector<std::string>{"40 pops", "3 stale"});
     // The next event's discs are named in the box as the strip names them.
     q.next[0].a = 3;
     q.next[0].b = 7;

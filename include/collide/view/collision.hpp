@@ -32,11 +32,14 @@ struct Figure {
 /// (filled by show::queue_words from the snapshot's QueueView), and the label and time to go of
 /// every event it draws.
 struct QueueWords {
-    std::string heading;          ///< "Event queue: binary heap, 1,234 entries, 56 stale"
-    std::string legend;           ///< "Next 5 collisions, time to go" (the lines in the box)
-    std::string stale_popped;     ///< after a stale event in the list of pops
-    std::string stale_leaving;    ///< on a stale event leaving the root ("skipped")
-    std::string counts;           ///< under the pops: "3 of 40 pops stale"
+    std::string heading;        ///< "Event queue: binary heap, 1,234 entries, 56 stale"
+    std::string legend;         ///< "Next 5 collisions, time to go" (the lines in the box)
+    std::string stale_popped;   ///< after a stale event in the list of pops
+    std::string stale_leaving;  ///< on a stale event leaving the root ("skipped")
+    std::string counts;         ///< under the pops: "3 of 40 pops stale"
+    /// The counts in two lines, for a list too narrow for them in one (beside one box, late in
+    /// a long run): {"316,487 pops", "65,796 stale"}; the first alone where one line is left.
+    std::vector<std::string> counts_lines;
     std::string popped_heading;   ///< over the pops: "Popped (newest first)"
     std::string resolved_popped;  ///< after a collision in the list of pops ("  resolved")
     std::string crossing_popped;  ///< after a cell crossing in the list of pops ("  crossing")
