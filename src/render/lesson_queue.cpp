@@ -5,6 +5,7 @@
 // labels and times to go too) from QueueWords (src/show); nothing here knows the engines.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <utility>
@@ -27,6 +28,20 @@ constexpr float node_lines = 2.0F;
 const std::string& nth(const std::vector<std::string>& words, std::size_t i) {
     static const std::string none;
     return i < words.size() ? words[i] : none;
+}
+
+/// Px between a disc's number plate outside its box and what the plate keeps clear of.
+constexpr float plate_clear = 2.0F;
+
+/// The size of a queue label's plate (a time to go, a disc's number, in the box or outside
+/// it): the text and a fifth of a text height each side, one text height (and a little) tall.
+struct PlateSize {
+    float w = 0.0F;
+    float h = 0.0F;
+};
+PlateSize label_plate(const FontAtlas& f, std::string_view text) {
+    const float pad = std::round(0.2F * f.pixel_height());
+    return {f.text_width(text) + 2.0F * pad, std::round(f.pixel_height() * 1.05F)};
 }
 
 Rgba8 mix(Rgba8 a, Rgba8 b, float t) {
@@ -79,9 +94,7 @@ float LessonPainter::pop_highlight(const QueuedEvent& popped, double now) const 
 void LessonPainter::add_plate_label(Font font, PointF at, std::string_view text, Rgba8 color,
                                     RectF inside) {
     const FontAtlas& f = atlas(font);
-    const float pad = std::round(0.2F * f.pixel_height());
-    const float w = f.text_width(text) + 2.0F * pad;
-    const float h = std::round(f.pixel_height() * 1.05F);
+    const auto [w, h] = label_plate(f, text);
     float x0 = std::clamp(at.x - 0.5F * w, inside.x0, std::max(inside.x0, inside.x1 - w));
     float y0 = std::clamp(at.y - 0.5F * h, inside.y0, std::max(inside.y0, inside.y1 - h));
     x0 = std::round(x0);
@@ -111,9 +124,7 @@ void LessonPainter::add_plate_label(Font font, PointF at, std::string_view text,
 void LessonPainter::add_queue_label(Font font, PointF at, PointF anchor, float anchor_radius,
                                     std::string_view text, Rgba8 color, RectF inside) {
     const FontAtlas& f = atlas(font);
-    const float pad = std::round(0.2F * f.pixel_height());
-    const float w = f.text_width(text) + 2.0F * pad;
-    const float h = std::round(f.pixel_height() * 1.05F);
+    const auto [w, h] = label_plate(f, text);
     if (w > inside.width() || h > inside.height()) return;
     // A plate never covers a disc or another label: the nearest free place on rings round `at`
     // (labels_ and disc_rects_ hold what this box has so far).
@@ -135,7 +146,7 @@ void LessonPainter::add_queue_label(Font font, PointF at, PointF anchor, float a
     for (float radius = 0.0F; !plate && radius <= reach; radius += step) {
         const int tries = radius == 0.0F ? 1 : directions;
         for (int k = 0; k < tries && !plate; ++k) {
-            const double angle = 2.0 * 3.14159265358979 * k / directions;
+            const double angle = 2.0 * std::numbers::pi * k / directions;
             const RectF r = plate_at(at.x + radius * static_cast<float>(std::cos(angle)),
                                      at.y + radius * static_cast<float>(std::sin(angle)));
             if (clear_of_all(r)) plate = r;
@@ -220,7 +231,7 @@ void LessonPainter::add_frame_numbers() {
 }
 
 void LessonPainter::add_column_numbers(RectF box, const std::vector<RectF>& obstacles) {
-    constexpr float clear = 2.0F;  // px between a plate and what it keeps clear of
+    constexpr float clear = plate_clear;
     const float m = std::max(2.0F, layout_.margin);
     const auto frame_w = static_cast<float>(config_.width);
     const auto frame_h = static_cast<float>(config_.height);
@@ -235,12 +246,9 @@ void LessonPainter::add_column_numbers(RectF box, const std::vector<RectF>& obst
     float widest = 0.0F;
     for (std::size_t i = 0; i < frame_numbers_.size(); ++i) {
         const FrameNumber& n = frame_numbers_[i];
-        const FontAtlas& f = atlas(n.font);
-        const float pad = std::round(0.2F * f.pixel_height());
-        const float w = f.text_width(n.text) + 2.0F * pad;
-        const float h = std::round(f.pixel_height() * 1.05F);
-        all.push_back({i, w, h, std::floor(n.disc.y - 0.5F * h), 0.0F});
-        widest = std::max(widest, w);
+        const PlateSize size = label_plate(atlas(n.font), n.text);
+        all.push_back({i, size.w, size.h, std::floor(n.disc.y - 0.5F * size.h), 0.0F});
+        widest = std::max(widest, size.w);
     }
     const float x0 = box.x1 + clear;
     const float x1 = x0 + widest;
@@ -253,8 +261,8 @@ void LessonPainter::add_column_numbers(RectF box, const std::vector<RectF>& obst
         if (o.x1 + clear > x0 && o.x0 - clear < x1)
             blocked.emplace_back(std::floor(o.y0 - clear), std::ceil(o.y1 + clear));
     };
-    for (const RectF& o : obstacles)
-        if (!(o.x0 == box.x0 && o.y0 == box.y0 && o.x1 == box.x1 && o.y1 == box.y1)) block(o);
+    // The own box among the obstacles never blocks: the column starts `clear` right of it.
+    for (const RectF& o : obstacles) block(o);
     for (const RectF& o : labels_) block(o);
     std::sort(blocked.begin(), blocked.end());
     std::vector<std::pair<float, float>> free;
@@ -344,15 +352,12 @@ void LessonPainter::draw_frame_number(Font font, std::string_view text, Rgba8 co
 
 void LessonPainter::add_frame_label(Font font, PointF disc, float radius, std::string_view text,
                                     Rgba8 color, RectF box, const std::vector<RectF>& obstacles) {
-    const FontAtlas& f = atlas(font);
-    const float pad = std::round(0.2F * f.pixel_height());
-    const float w = f.text_width(text) + 2.0F * pad;
-    const float h = std::round(f.pixel_height() * 1.05F);
+    const auto [w, h] = label_plate(atlas(font), text);
     const float m = std::max(2.0F, layout_.margin);
     const auto frame_w = static_cast<float>(config_.width);
     const auto frame_h = static_cast<float>(config_.height);
     if (w > frame_w - 2.0F * m || h > frame_h - 2.0F * m) return;
-    constexpr float clear = 2.0F;  // px between a plate and what it keeps clear of
+    constexpr float clear = plate_clear;
     // The leader line: from the plate to the nearest point of the box's edge, then inside the
     // box to the disc's edge, so that it crosses no text on its way (the first part is checked).
     struct Place {
@@ -664,8 +669,8 @@ void LessonPainter::add_popped(const QueueView& queue, const QueueWords& words, 
         counts = words.counts_lines;
         if (lines < 3.0F) counts.resize(1);
     }
-    const float counts_lines = lines >= 2.0F ? static_cast<float>(counts.size()) : 0.0F;
-    const float bottom = area.y1 - counts_lines * line;
+    const float count_rows = lines >= 2.0F ? static_cast<float>(counts.size()) : 0.0F;
+    const float bottom = area.y1 - count_rows * line;
     for (std::size_t k = queue.popped.size(); k-- > 0 && y + line <= bottom;) {
         const QueuedEvent& e = queue.popped[k];
         const float glow = pop_highlight(e, now);
@@ -687,7 +692,7 @@ void LessonPainter::add_popped(const QueueView& queue, const QueueWords& words, 
         draw_text(Font::small, slot(y), text, color);
         y += line;
     }
-    if (counts_lines > 0.0F)
+    if (count_rows > 0.0F)
         for (std::size_t k = 0; k < counts.size(); ++k)
             draw_text(Font::small, slot(bottom + static_cast<float>(k) * line), counts[k],
                       palette_.muted);
