@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <utility>
 
@@ -13,6 +15,22 @@
 #include "collide/video/subtitles.hpp"
 
 namespace collide::app {
+
+// Declared in video_job.hpp, defined here: `collide` checks --slides (chapter_output_of) before
+// it execs collide-draw, without linking the job and its encoder.
+bool is_slide_file_name(std::string_view name) {
+    if (name == "index.html" || name == "video.mp4" || name == "subtitles.vtt" ||
+        name == "chapters.vtt")
+        return true;
+    constexpr std::string_view prefix = "chapter-";
+    constexpr std::string_view suffix = ".png";
+    if (name.size() <= prefix.size() + suffix.size() || name.substr(0, prefix.size()) != prefix ||
+        name.substr(name.size() - suffix.size()) != suffix)
+        return false;
+    const std::string_view digits =
+        name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
+    return std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
 
 SubtitleOutput subtitle_output_of(const VideoCli& v, const OutputChoice& output) {
     SubtitleOutput out;

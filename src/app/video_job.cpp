@@ -20,20 +20,6 @@
 
 namespace collide::app {
 
-bool is_slide_file_name(std::string_view name) {
-    if (name == "index.html" || name == "video.mp4" || name == "subtitles.vtt" ||
-        name == "chapters.vtt")
-        return true;
-    constexpr std::string_view prefix = "chapter-";
-    constexpr std::string_view suffix = ".png";
-    if (name.size() <= prefix.size() + suffix.size() || name.substr(0, prefix.size()) != prefix ||
-        name.substr(name.size() - suffix.size()) != suffix)
-        return false;
-    const std::string_view digits =
-        name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
-    return std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
-}
-
 namespace {
 
 void check_interrupt(const JobHooks& hooks) {

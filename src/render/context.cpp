@@ -5,14 +5,12 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <array>
 #include <cstddef>
 #include <iostream>
 #include <string>
 
 #include "backends.hpp"
 #include "collide/error.hpp"
-#include "collide/named_values.hpp"
 #include "collide/printable.hpp"
 
 namespace collide::render {
@@ -21,12 +19,6 @@ namespace {
 // What a software GL context needs, in MiB (gl_headroom_bytes).
 constexpr std::size_t gl_headroom_base_mib = 128;
 constexpr std::size_t gl_headroom_mib_per_core = 8;
-
-constexpr std::array<NamedValue<Backend>, 5> backend_names{{{"auto", Backend::automatic},
-                                                            {"osmesa", Backend::osmesa},
-                                                            {"egl", Backend::egl},
-                                                            {"egl-device", Backend::egl_device},
-                                                            {"glfw", Backend::glfw}}};
 
 std::string names_of(const std::vector<Backend>& backends) {
     std::string out;
@@ -78,36 +70,6 @@ void require_gl_headroom() {
 }
 
 }  // namespace
-
-std::string_view backend_name(Backend backend) noexcept {
-    return name_of(backend, backend_names, "auto");
-}
-
-Backend parse_backend(std::string_view text, std::string_view option) {
-    return parse_named(text, option, backend_names, "a GL backend");
-}
-
-bool is_available(Backend backend) {
-    switch (backend) {
-        case Backend::osmesa:
-            return COLLIDE_HAVE_OSMESA != 0;
-        case Backend::egl:
-        case Backend::egl_device:
-            return COLLIDE_HAVE_EGL != 0;
-        case Backend::automatic:
-        case Backend::glfw:
-            return true;
-    }
-    return false;
-}
-
-std::vector<Backend> available_backends() {
-    std::vector<Backend> out;
-    for (const NamedValue<Backend>& entry : backend_names) {
-        if (is_available(entry.value)) out.push_back(entry.value);
-    }
-    return out;
-}
 
 void emit_notice(const NoticeSink& notice, const std::string& line) {
     if (notice) {
