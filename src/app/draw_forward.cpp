@@ -2,7 +2,9 @@
 // draw nothing start fast; a drawing command becomes `collide-draw` (execv: the same process,
 // arguments, signals and exit status), found next to this program (the build tree) or in
 // ../libexec/collide (an install). `puzzle` is parsed here whole: --solve and --json print text
-// and run here; only its video becomes collide-draw, once its command line has parsed.
+// and run here; only its video becomes collide-draw, once its command line has parsed. `render`
+// and `thumbnail` are parsed and checked here too (render_cli.hpp), so that a bad command line
+// is refused with collide-draw's own words without starting it.
 
 #include <unistd.h>
 
@@ -12,12 +14,15 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <system_error>
 #include <utility>
 
 #include "commands.hpp"
+#include "interrupt.hpp"
+#include "render_cli.hpp"
 
 namespace collide::app {
 
@@ -59,6 +64,29 @@ void add_puzzle_here(CLI::App& root, char** argv) {
     add_puzzle_command(root, std::move(video));
 }
 
+/// `collide render` (still = false) or `thumbnail`, parsed and checked here with collide-draw's
+/// own checks (CheckedRender: the scene, every option, the destinations; nothing drawn or
+/// simulated); only a line that passes becomes collide-draw, which checks it again and draws.
+void add_render_here(CLI::App& root, char** argv, bool still) {
+    auto values = std::make_shared<RenderCli>();
+    add_render_options(root, *values, still)->callback([values, argv, still] {
+        {
+            // (A scene is read from a regular file only, so collide-draw reads it again.)
+            const InterruptGuard interrupts;
+            const CheckedRender checked(*values, still, interrupts);
+        }  // the handlers go before the exec: collide-draw installs its own
+        run_drawing_program(argv, still ? "thumbnail" : "render");
+    });
+}
+
+void add_render_here(CLI::App& root, char** argv) {
+    add_render_here(root, argv, false);
+}
+
+void add_thumbnail_here(CLI::App& root, char** argv) {
+    add_render_here(root, argv, true);
+}
+
 struct DrawingCommand {
     std::string_view name;
     std::string_view description;  ///< for `collide --help`
@@ -70,9 +98,9 @@ struct DrawingCommand {
 // The descriptions are the commands' own (cmd_*.cpp), for `collide --help`.
 constexpr std::array<DrawingCommand, 4> drawing_commands{{
     {"heap", "Animate priority-queue operations: heaps as trees over their arrays, step by step"},
-    {"puzzle", {}, add_puzzle_here},  // registered with its own description (cmd_puzzle.cpp)
-    {"render", "Render a teaching video: time-driven (left) and event-driven (right) side by side"},
-    {"thumbnail", "Render one frame as a PNG (fast, no video): for READMEs and CI"},
+    {"puzzle", {}, add_puzzle_here},        // registered with its own description (cmd_puzzle.cpp)
+    {"render", {}, add_render_here},        // registered with its own (render_cli.cpp)
+    {"thumbnail", {}, add_thumbnail_here},  // registered with its own (render_cli.cpp)
 }};
 
 }  // namespace
