@@ -226,7 +226,14 @@ void BasicFastEngine<D>::predict_listed(std::uint32_t i, const Particle& pi, Vec
     // list's expiry go first: a pair that cannot beat them is skipped before its square root.
     // The earliest of all by KeyLess is the same whatever the order.
     Key best = Key::make(never, i, no_disc, EventKind::pair);
-    consider_walls_and_cells(i, pi, xi, best);
+    if (periodic_) {
+        // No walls: the expiry is the first candidate, and beats "never" (what
+        // consider_walls_and_cells would find, without its call and its compare).
+        const double dt = time_to_expiry(i, pi, xi);
+        if (dt != never) best = Key::make(now_ + dt, i, 0, EventKind::cell);
+    } else {
+        consider_walls_and_cells(i, pi, xi, best);
+    }
     scan_neighbour_list(i, pi, xi, best);
     remember_pair(
         i, best.kind() == EventKind::pair ? best : Key::make(never, i, no_disc, EventKind::pair));
