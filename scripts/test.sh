@@ -22,8 +22,8 @@
 #     refused with exit 2);
 #  5. the full RelWithDebInfo build, running the whole suite, including the long physics runs
 #     (label `slow`) and the end-to-end CLI tests (label `e2e`), but not the option matrix
-#     (label `cli-matrix`: step 2 ran it against the sanitized `collide`, which checks more; about
-#     100 s of the step's test time) nor the renderer suite's second pass on EGL (step 3 ran every
+#     (label `cli-matrix`: step 2 ran it against the sanitized `collide`, which checks more)
+#     nor the renderer suite's second pass on EGL (step 3 ran every
 #     renderer test case on EGL, in the same RelWithDebInfo build but for OSMesa, which only the
 #     choice of backend reads; this build's own EGL cases, 'EGL surfaceless gives the same pixels
 #     as OSMesa' and `thumbnail --gl`, run EGL beside OSMesa; about 45 s); ctest's summary line
