@@ -20,20 +20,16 @@ namespace {
 constexpr double calendar_events_per_block = 8.0;
 constexpr double calendar_horizon = 8.0;
 
-/// Discs keep the calendar up to this many (records of at most 4 MiB) and run it as one block, a
-/// plain heap, beyond: measured against the heap on the 2-core machine (issue 47), the calendar
-/// ran 1.11x at 10^3 discs, 1.14x at 10^4, 1.03-1.09x at 3x10^4 and 5x10^4, but 0.96x at 10^5
-/// (median of ten interleaved pairs) and level at 10^6, where its list links (two random entries
-/// per reschedule) miss the caches more often than the heap's sinks do (docs/benchmarks.md).
-constexpr std::size_t calendar_max_discs = 65536;
-
 }  // namespace
 
 template <int D>
 void BasicFastEngine<D>::tune_calendar() {
-    if (D == 2 && (watch_.on() || p_.size() > calendar_max_discs)) {
-        // One heap of every pending event (a block of infinite width): the lecture's queue, and
-        // the faster queue for many discs.
+    if (D == 2 && watch_.on()) {
+        // One heap of every pending event (a block of infinite width): the lecture's queue. Discs
+        // use the calendar at every size otherwise: on the 2-core machine of 2026-11-30 (4 MiB of
+        // L2 per core) it ran 1.01x the one-block heap at 10^5 discs and 1.06x at 10^6, with
+        // 3,368 instructions per collision against 4,533 at 10^5 (docs/benchmarks-history.md,
+        // issue 47; on the machine of 2026-11-29, 1 MiB of L2, it had lost 0.96x at 10^5).
         queue_.tune(std::numeric_limits<double>::infinity(), 2, now_);
         return;
     }

@@ -117,6 +117,18 @@ template <typename Visit>
     };
     const auto nx = static_cast<std::int64_t>(n_[0]);
     if constexpr (D == 2) {
+        if (c[0] + lo[0] >= 0 && c[0] + hi[0] < nx && c[1] + lo[1] >= 0 &&
+            c[1] + hi[1] < static_cast<std::int64_t>(n_[1])) {
+            // Inside the grid (most cells): nothing wraps, every shift is zero; the same cells in
+            // the same order as below, without the per-cell wrap tests.
+            for (std::int64_t y = c[1] + lo[1]; y <= c[1] + hi[1]; ++y) {
+                for (std::int64_t x = c[0] + lo[0]; x <= c[0] + hi[0]; ++x) {
+                    const auto cell = static_cast<std::uint32_t>(y * nx + x);
+                    if (occupied(cell)) visit(cell, Vec{0.0, 0.0});
+                }
+            }
+            return;
+        }
         for (std::int64_t oy = lo[1]; oy <= hi[1]; ++oy) {
             std::int64_t y;
             double shift_y;

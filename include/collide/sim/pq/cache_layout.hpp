@@ -33,9 +33,12 @@ inline constexpr std::size_t heap_line_bytes = 64;
 /// A transparent huge page on x86-64 and most ARM64 kernels.
 inline constexpr std::size_t huge_page_bytes = std::size_t{2} << 20;
 
-/// Arrays from this size on get huge pages: below it the rounding up to whole pages would waste
-/// more than a quarter of the memory, and the array's 4 KiB pages fit in the TLB anyway.
-inline constexpr std::size_t huge_page_min_bytes = 4 * huge_page_bytes;
+/// Arrays from this size on get huge pages (the rounding up to whole pages wastes less than half of
+/// one). Several arrays of a few megabytes together outgrow the TLB's reach in 4 KiB pages: at
+/// 10^5 discs the records (6.4 MB), the cold data and the calendar's entries (3.2 MB each) are
+/// 3,200 small pages, and with them from 2 MiB on instead of 8 MiB the engine ran 1.09x (median of
+/// nine interleaved pairs, issue 47, docs/benchmarks-history.md).
+inline constexpr std::size_t huge_page_min_bytes = huge_page_bytes;
 
 /// Storage for an array of `bytes` aligned to `alignment` (a power of two); from
 /// huge_page_min_bytes on, whole huge pages that the kernel is advised to back as such. Only a
