@@ -21,7 +21,7 @@ using namespace collide::show;
 namespace {
 
 /// 10 s at 10 fps: a 2 s card, "Always", a held caption at 4 s, another at 7 s, a 2 s epilogue.
-TimelineScript lesson_script() {
+TimelineScript chapters_script() {
     TimelineScript script;
     script.fps = 10;
     script.frames = 100;
@@ -49,7 +49,7 @@ Segment segment(SegmentKind kind, std::int64_t first, std::int64_t end, std::str
 }  // namespace
 
 TEST_CASE("chapters: the card, each caption (its hold and run together), the epilogue") {
-    const Chapters chapters = timeline_chapters(build_timeline(lesson_script()), 0.5);
+    const Chapters chapters = timeline_chapters(build_timeline(chapters_script()), 0.5);
     REQUIRE(chapters.size() == 5);
     const std::vector<std::string> titles{"Gas in a box", "Always", "Hold here", "Later",
                                           "In the end"};
@@ -64,7 +64,8 @@ TEST_CASE("chapters: the card, each caption (its hold and run together), the epi
         CHECK(chapters[i].end == doctest::Approx(ends[i]));
         CHECK(chapters[i].still == doctest::Approx(stills[i]));
     }
-    CHECK(timeline_chapters(build_timeline(lesson_script())).front().still == doctest::Approx(1.9));
+    CHECK(timeline_chapters(build_timeline(chapters_script())).front().still ==
+          doctest::Approx(1.9));
     CHECK(timeline_chapters(Timeline{}).empty());
 }
 
@@ -155,7 +156,7 @@ TEST_CASE("chapters: a replay's still is its whole picture, before the replay fa
 
 TEST_CASE(
     "chapters: a question and its answer are two chapters: the player stops on the question") {
-    TimelineScript script = lesson_script();
+    TimelineScript script = chapters_script();
     script.cues.clear();
     script.questions = {{3.0, 2.0, 1.0, "Which pair collides next?", "B: discs 3 and 7"}};
     const Chapters chapters = timeline_chapters(build_timeline(script), 0.5);

@@ -21,10 +21,10 @@ using pq::HeapStep;
 
 namespace {
 
-const show::HeapPacing pacing{1.0, 0.5, 1.0, 2.0};
+const show::HeapPacing code_pacing{1.0, 0.5, 1.0, 2.0};
 
 HeapProgram with_code(pq::HeapRecord record) {
-    HeapProgram lesson(std::move(record), pacing, 1);
+    HeapProgram lesson(std::move(record), code_pacing, 1);
     lesson.show_code(true);
     return lesson;
 }
@@ -209,8 +209,8 @@ TEST_CASE("heap code: only one heap panel can show its code") {
     const std::vector<pq::QueueKind> two{{pq::QueueFamily::unordered, 1},
                                          {pq::QueueFamily::binary, 2}};
     HeapProgram lesson(
-        pq::HeapRecord::operations(pq::parse_heap_ops("P Q *"), two, pq::Orientation::max), pacing,
-        1);
+        pq::HeapRecord::operations(pq::parse_heap_ops("P Q *"), two, pq::Orientation::max),
+        code_pacing, 1);
     CHECK_FALSE(show::heap_code_fits(lesson.record()));
     CHECK(contains(input_error_message([&] { lesson.show_code(true); }), "code:"));
     CHECK_FALSE(lesson.frame_at(1.5).code.has_value());  // without --code: no listing

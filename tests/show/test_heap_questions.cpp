@@ -24,7 +24,7 @@ using collide::show::HeapQuestion;
 
 namespace {
 
-const show::HeapPacing pacing{0.8, 0.5, 1.0, 2.5};
+const show::HeapPacing questions_pacing{0.8, 0.5, 1.0, 2.5};
 
 /// Random operations on distinct integer keys: inserts, removes ('*') and, for an indexed heap,
 /// increase-keys of keys still in the queue.
@@ -66,7 +66,7 @@ std::string random_ops(std::uint64_t seed, bool increases) {
 HeapProgram asking(const std::string& ops, std::vector<pq::QueueKind> kinds,
                    pq::Orientation orientation) {
     HeapProgram lesson(pq::HeapRecord::operations(pq::parse_heap_ops(ops), kinds, orientation),
-                       pacing, 1);
+                       questions_pacing, 1);
     lesson.ask_questions(true);
     return lesson;
 }
@@ -177,7 +177,7 @@ TEST_CASE(
     CHECK(q.question == "Where does Q end up: A or B?");
     CHECK(q.answer_words == "Answer: " + show::candidate_letter(q.answer) + ", Q ends up at a[1]");
     // Asking lengthens the video by the questions' seconds, no more.
-    HeapProgram quiet(lesson.record(), pacing, 1);
+    HeapProgram quiet(lesson.record(), questions_pacing, 1);
     double extra = 0.0;
     for (const HeapQuestion& each : lesson.questions()) extra += each.seconds();
     CHECK(lesson.duration() == doctest::Approx(quiet.duration() + extra));

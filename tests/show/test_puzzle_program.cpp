@@ -19,7 +19,7 @@ std::vector<puzzle::SearchResult> both(const Board& start) {
             puzzle::a_star(start, puzzle::Heuristic::manhattan, {pq::QueueFamily::binary, 2})};
 }
 
-std::vector<std::uint8_t> tiles_of(const Board& b) {
+std::vector<std::uint8_t> board_tiles(const Board& b) {
     std::vector<std::uint8_t> t;
     for (int i = 0; i < b.cells(); ++i) t.push_back(static_cast<std::uint8_t>(b.tile(i)));
     return t;
@@ -67,8 +67,8 @@ TEST_CASE("puzzle lesson: the start, the tree rows and the queue's front during 
         CHECK_FALSE(p.playback);
         CHECK(p.rows.empty());
         REQUIRE(p.queue.size() == 1);  // the start waits in the queue
-        CHECK(p.queue.front().tiles == tiles_of(start));
-        CHECK(p.board.tiles == tiles_of(start));  // drawn large until the first expansion
+        CHECK(p.queue.front().tiles == board_tiles(start));
+        CHECK(p.board.tiles == board_tiles(start));  // drawn large until the first expansion
         CHECK(p.caption == "start: Manhattan 10, Hamming 5");
     }
     // Mid-search: rows are consecutive depths, at most max_puzzle_rows, the newest board marked.
@@ -120,7 +120,7 @@ TEST_CASE("puzzle lesson: once solved the path is marked and the playback ends o
     const view::PuzzleFrameView first = frames.frame_at(frames.playback_start() + 0.1);
     CHECK(first.panels[0].caption == "move 1 of 2: 5 slides up");
     CHECK(first.panels[1].caption == "its 2 moves come next");
-    CHECK(first.panels[1].board.tiles == tiles_of(start));
+    CHECK(first.panels[1].board.tiles == board_tiles(start));
     CHECK(frames.playback_turn(1) >= frames.playback_start() + 2.0 * frames.seconds_per_move());
     const view::PuzzleFrameView second = frames.frame_at(frames.playback_turn(1) + 0.1);
     CHECK(second.panels[0].caption == "solved in 2 moves");
@@ -130,6 +130,6 @@ TEST_CASE("puzzle lesson: once solved the path is marked and the playback ends o
     CHECK(moving.slide.from == 7);  // 5 leaves the bottom row for the centre
     CHECK(moving.slide.to == 4);
     const view::PuzzlePanelView end = frames.frame_at(frames.duration()).panels[0];
-    CHECK(end.board.tiles == tiles_of(Board::goal(3)));
+    CHECK(end.board.tiles == board_tiles(Board::goal(3)));
     CHECK(end.caption == "solved in 2 moves");
 }

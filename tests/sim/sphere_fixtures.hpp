@@ -9,6 +9,16 @@
 
 namespace collide::test {
 
+/// A sphere at p moving at v, radius r, mass m.
+inline Sphere sphere(Vec3 p, Vec3 v, double r, double m = 1.0) {
+    Sphere s;
+    s.position = p;
+    s.velocity = v;
+    s.radius = r;
+    s.mass = m;
+    return s;
+}
+
 /// 4 * cells^3 spheres on an FCC lattice at packing fraction `eta` in a periodic unit cube, with
 /// the generator's velocities for `seed`.
 inline SphereScene fcc_fluid(std::size_t cells, double eta, std::uint64_t seed = 1) {

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 
+#include "../support/input_error.hpp"
 #include "../support/skip.hpp"
 #include "collide/error.hpp"
 #include "collide/sim/algs4.hpp"
@@ -32,9 +33,7 @@ std::string parse_error(const std::string& text) {
     return "";
 }
 
-bool contains(const std::string& haystack, const std::string& needle) {
-    return haystack.find(needle) != std::string::npos;
-}
+using collide::test::contains;
 
 }  // namespace
 

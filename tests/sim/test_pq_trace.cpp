@@ -12,7 +12,7 @@ using namespace collide::pq;
 
 namespace {
 
-std::string parse_error(std::string_view ops) {
+std::string trace_error(std::string_view ops) {
     try {
         (void)parse_trace_ops(ops);
     } catch (const collide::Error& e) {
@@ -96,17 +96,17 @@ TEST_CASE("numbers compare as numbers, words byte by byte") {
 }
 
 TEST_CASE("bad operation strings name the offending token") {
-    CHECK(parse_error("P Q ! *") ==
+    CHECK(trace_error("P Q ! *") ==
           "ops: token 3 '!': not a key (a word of letters or an integer) nor '*' (remove)");
-    CHECK(parse_error("P Q1").find("token 2 'Q1'") != std::string::npos);
-    CHECK(parse_error("P 3 Q").rfind(
+    CHECK(trace_error("P Q1").find("token 2 'Q1'") != std::string::npos);
+    CHECK(trace_error("P 3 Q").rfind(
               "ops: token 2 '3': is a number but the first key 'P' is a word", 0) == 0);
-    CHECK(parse_error("* 4 x").find("token 3 'x': is a word but the first key '4' is a number") !=
+    CHECK(trace_error("* 4 x").find("token 3 'x': is a word but the first key '4' is a number") !=
           std::string::npos);
-    CHECK(parse_error("99999999999999999999")
+    CHECK(trace_error("99999999999999999999")
               .find("token 1 '99999999999999999999': integer out of range") != std::string::npos);
-    CHECK(parse_error("   ").find("no operations") != std::string::npos);
-    CHECK(parse_error("- +").find("token 1 '-'") != std::string::npos);
+    CHECK(trace_error("   ").find("no operations") != std::string::npos);
+    CHECK(trace_error("- +").find("token 1 '-'") != std::string::npos);
 }
 
 TEST_CASE("removing from an empty queue is an input error naming the token") {
@@ -176,11 +176,11 @@ TEST_CASE("a trace is at most max_trace_operations operations with words of boun
     std::string at_limit;
     for (std::size_t i = 0; i < max_trace_operations; ++i) at_limit += "A ";
     CHECK(parse_trace_ops(at_limit).size() == max_trace_operations);
-    CHECK(parse_error(at_limit + "*") ==
+    CHECK(trace_error(at_limit + "*") ==
           "ops: 10001 operations; at most 10000 (a trace is a table to read, one row per "
           "operation)");
     const std::string longest(max_trace_key_length, 'x');
     CHECK(parse_trace_ops("A " + longest).back().key.word == longest);
-    CHECK(parse_error("A " + longest + "y") ==
+    CHECK(trace_error("A " + longest + "y") ==
           "ops: token 2 '" + longest + "...': a word of 33 letters; at most 32");
 }

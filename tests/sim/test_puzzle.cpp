@@ -21,7 +21,7 @@ using collide::test::input_error_message;
 
 namespace {
 
-std::string parse_error(const std::string& text) {
+std::string board_error(const std::string& text) {
     return input_error_message([&] { (void)Board::parse(text); });
 }
 
@@ -134,22 +134,22 @@ TEST_CASE("puzzle board: parsing, blanks, sides and printing") {
 }
 
 TEST_CASE("puzzle board: malformed boards name the token") {
-    CHECK(contains(parse_error("1 2 3 4 x 6 7 5 8"), "'x' (token 5) is not a tile"));
-    CHECK(contains(parse_error("1 2 3 4 9 6 7 5 0"), "'9' (token 5) is out of range"));
-    CHECK(contains(parse_error("1 2 3 4 0 6 7 5 123"), "'123' (token 9) is out of range"));
-    CHECK(contains(parse_error("1 2 3 4 0 6 7 5 -1"), "'-1' (token 9) is not a tile"));
-    const std::string repeated = parse_error("1 2 3 4 0 6 7 5 5");
+    CHECK(contains(board_error("1 2 3 4 x 6 7 5 8"), "'x' (token 5) is not a tile"));
+    CHECK(contains(board_error("1 2 3 4 9 6 7 5 0"), "'9' (token 5) is out of range"));
+    CHECK(contains(board_error("1 2 3 4 0 6 7 5 123"), "'123' (token 9) is out of range"));
+    CHECK(contains(board_error("1 2 3 4 0 6 7 5 -1"), "'-1' (token 9) is not a tile"));
+    const std::string repeated = board_error("1 2 3 4 0 6 7 5 5");
     CHECK(contains(repeated, "'5' (token 9) is tile 5 again (first at token 8)"));
     CHECK(contains(repeated, "tile 8 is missing"));
-    const std::string two_blanks = parse_error("1 2 3 4 0 6 7 _ 8");
+    const std::string two_blanks = board_error("1 2 3 4 0 6 7 _ 8");
     CHECK(contains(two_blanks, "a second blank (first at token 5)"));
     CHECK(contains(two_blanks, "tile 5 is missing"));
-    CHECK(contains(parse_error("1 2 3 4 0 6 7 5"), "8 tokens"));
-    CHECK(contains(parse_error(""), "0 tokens"));
-    const std::string long_board = parse_error("1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 0 16");
+    CHECK(contains(board_error("1 2 3 4 0 6 7 5"), "8 tokens"));
+    CHECK(contains(board_error(""), "0 tokens"));
+    const std::string long_board = board_error("1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 0 16");
     CHECK(contains(long_board, "17 tokens"));
     CHECK(contains(long_board, "the 17th token is '16'"));
-    CHECK(parse_error("1 2 3 4 0 6 7 5 8").empty());
+    CHECK(board_error("1 2 3 4 0 6 7 5 8").empty());
     CHECK(contains(input_error_message([] { (void)Board::parse("1 1 3 0", "--start"); }),
                    "--start: "));
 }

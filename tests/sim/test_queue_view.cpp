@@ -24,7 +24,7 @@ QueueViewLimits picture(std::size_t k) {
     return {k, 8, 3, 10};
 }
 
-EngineOptions classic_on(const std::string& pq) {
+EngineOptions classic_with(const std::string& pq) {
     EngineOptions o;
     o.engine = EngineKind::classic;
     o.pq = pq::parse_queue_kind(pq);
@@ -57,12 +57,12 @@ bool same_collision(const QueuedEvent& e, const CollisionRecord& r) {
     return kind && e.t == r.t && e.a == r.a && (e.kind != EventKind::pair || e.b == r.b);
 }
 
-const std::vector<EngineOptions> every_queue = {classic_on("binary"),
-                                                classic_on("dary:3"),
-                                                classic_on("dary:4"),
-                                                classic_on("indexed"),
-                                                classic_on("ordered"),
-                                                classic_on("unordered"),
+const std::vector<EngineOptions> every_queue = {classic_with("binary"),
+                                                classic_with("dary:3"),
+                                                classic_with("dary:4"),
+                                                classic_with("indexed"),
+                                                classic_with("ordered"),
+                                                classic_with("unordered"),
                                                 fast()};
 
 TEST_CASE("queue view: no view unless asked for, and the time-driven engine has no queue") {
@@ -81,7 +81,7 @@ TEST_CASE("queue view: no view unless asked for, and the time-driven engine has 
 }
 
 TEST_CASE("queue view: K out of range is refused naming the field queue") {
-    auto engine = make_engine(walled_gas(), classic_on("binary"));
+    auto engine = make_engine(walled_gas(), classic_with("binary"));
     for (const std::size_t k : {std::size_t{0}, sim::max_watched_events + 1}) {
         try {
             (void)engine->watch_queue(picture(k));
@@ -175,7 +175,7 @@ TEST_CASE("queue view: the shown slots are the queue's own, root first, and the 
 
 TEST_CASE("queue view: pops are recorded in order, the latest last, stale ones flagged") {
     const Scene scene = walled_gas();
-    auto engine = make_engine(scene, classic_on("binary"));
+    auto engine = make_engine(scene, classic_with("binary"));
     REQUIRE(engine->watch_queue(picture(5)));
     const auto log = events_until(*engine, 0.5);
     const QueueView q = *engine->snapshot().queue;

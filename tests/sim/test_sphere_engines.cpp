@@ -26,20 +26,12 @@ using namespace collide;
 
 namespace {
 
-Sphere sphere(Vec3 p, Vec3 v, double r, double m = 1.0) {
-    Sphere s;
-    s.position = p;
-    s.velocity = v;
-    s.radius = r;
-    s.mass = m;
-    return s;
-}
-
 using collide::test::fcc_fluid;
 using collide::test::require_same_events;
+using collide::test::sphere;
 
 /// Random spheres of two masses in a walled box that is not a cube (every wall kind occurs).
-SphereScene walled_gas(std::uint64_t seed) {
+SphereScene walled_sphere_gas(std::uint64_t seed) {
     SphereScene scene;
     scene.name = "gas";
     scene.box = Box3{1.0, 0.8, 1.2, Boundary::walls};
@@ -62,7 +54,7 @@ EngineOptions options_for(EngineKind kind, double dt = 0.01,
 }
 
 /// The first `count` collisions of an engine on the scene.
-std::vector<CollisionRecord> first_collisions(SphereEngine& engine, std::size_t count) {
+std::vector<CollisionRecord> first_sphere_collisions(SphereEngine& engine, std::size_t count) {
     std::vector<CollisionRecord> out;
     engine.set_collision_listener([&](const CollisionRecord& r) { out.push_back(r); });
     while (out.size() < count) engine.advance_to(engine.time() + 0.01);
@@ -76,7 +68,7 @@ double kinetic_energy(const SphereSnapshot& s) {
     return e;
 }
 
-Vec3 momentum(const SphereSnapshot& s) {
+Vec3 sphere_momentum(const SphereSnapshot& s) {
     Vec3 p{};
     for (const SphereState& q : s.spheres) p += q.mass * q.velocity;
     return p;
@@ -125,7 +117,7 @@ TEST_CASE("3D: the classic loop and the fast engine agree event by event") {
     // Packing 0.45 and the mixed fluid: the fast engine's neighbour lists (0.3 and the walled
     // gas: cell crossings).
     for (const SphereScene& scene :
-         {walled_gas(7), fcc_fluid(3, 0.3, 11), fcc_fluid(3, 0.45, 11), mixed_fluid()}) {
+         {walled_sphere_gas(7), fcc_fluid(3, 0.3, 11), fcc_fluid(3, 0.45, 11), mixed_fluid()}) {
         CAPTURE(scene.name);
         CAPTURE(scene.spheres.front().radius);
         REQUIRE(scene.spheres.size() > 100);
@@ -136,8 +128,8 @@ TEST_CASE("3D: the classic loop and the fast engine agree event by event") {
         // sphere gas is chaotic: the difference starts at 1e-15 and grows about tenfold every
         // 150 collisions of ~100 spheres, so past ~1500 collisions the same physics gives other
         // events. 1000 stay within 1e-9 (1e-10 measured).
-        const std::vector<CollisionRecord> a = first_collisions(*classic, 1000);
-        const std::vector<CollisionRecord> b = first_collisions(*fast, 1000);
+        const std::vector<CollisionRecord> a = first_sphere_collisions(*classic, 1000);
+        const std::vector<CollisionRecord> b = first_sphere_collisions(*fast, 1000);
         require_same_events(a, b, 1e-9);
         const auto zwalls = std::count_if(a.begin(), a.end(), [](const CollisionRecord& r) {
             return r.kind == CollisionKind::zwall;
@@ -163,7 +155,7 @@ TEST_CASE("3D: a crowd in one corner of a large box gets cells for the crowd, sa
     for (int k = 0; k < 3; ++k) CHECK(fast.cells_along(k) >= 32);
     CHECK(fast.cells_along(0) <= 100);  // no finer than the spheres' reach: 1e6 cells
     auto classic = make_engine(scene, options_for(EngineKind::classic));
-    const std::vector<CollisionRecord> a = first_collisions(*classic, 300);
+    const std::vector<CollisionRecord> a = first_sphere_collisions(*classic, 300);
     std::vector<CollisionRecord> b;
     fast.set_collision_listener([&](const CollisionRecord& r) { b.push_back(r); });
     while (b.size() < a.size()) {
@@ -176,15 +168,16 @@ TEST_CASE("3D: a crowd in one corner of a large box gets cells for the crowd, sa
 
 TEST_CASE(
     "3D: every queue of the lecture drives the classic loop to the same events, bit for bit") {
-    const SphereScene scene = walled_gas(3);
+    const SphereScene scene = walled_sphere_gas(3);
     EngineOptions binary = options_for(EngineKind::classic);
     const std::vector<CollisionRecord> reference =
-        first_collisions(*make_engine(scene, binary), 500);
+        first_sphere_collisions(*make_engine(scene, binary), 500);
     for (const char* kind : {"unordered", "ordered", "dary:4", "indexed"}) {
         CAPTURE(kind);
         EngineOptions o = binary;
         o.pq = pq::parse_queue_kind(kind);
-        const std::vector<CollisionRecord> got = first_collisions(*make_engine(scene, o), 500);
+        const std::vector<CollisionRecord> got =
+            first_sphere_collisions(*make_engine(scene, o), 500);
         for (std::size_t k = 0; k < got.size(); ++k) {
             REQUIRE(got[k].t == reference[k].t);
             REQUIRE(got[k].a == reference[k].a);
@@ -207,7 +200,7 @@ TEST_CASE("3D: energy conserved to round-off by the classic and time-driven engi
         CHECK(m.collisions_pair > 1000);  // about 2,450 for both engines
         CHECK(std::abs(kinetic_energy(after) - kinetic_energy(before)) <
               1e-12 * kinetic_energy(before));
-        CHECK(norm(momentum(after) - momentum(before)) < 1e-11);
+        CHECK(norm(sphere_momentum(after) - sphere_momentum(before)) < 1e-11);
         CHECK(m.temperature == doctest::Approx(1.0).epsilon(1e-9));  // three degrees of freedom
         if (kind == EngineKind::time) {
             CHECK(std::abs(m.energy_drift) < 1e-12);
@@ -273,7 +266,7 @@ TEST_CASE("3D time-driven: spheres passing through each other in one step are a 
 }
 
 TEST_CASE("3D time-driven: the grid and all-pairs detections give identical runs") {
-    for (const SphereScene& scene : {walled_gas(5), fcc_fluid(3, 0.3, 2)}) {
+    for (const SphereScene& scene : {walled_sphere_gas(5), fcc_fluid(3, 0.3, 2)}) {
         CAPTURE(scene.name);
         sim::TimeSphereEngine all(scene, options_for(EngineKind::time, 0.004));
         sim::TimeSphereEngine grid(scene,

@@ -19,15 +19,7 @@ using sim::FastSphereEngine;
 namespace {
 
 using collide::test::fcc_fluid;
-
-Sphere sphere(Vec3 p, Vec3 v, double r, double m = 1.0) {
-    Sphere s;
-    s.position = p;
-    s.velocity = v;
-    s.radius = r;
-    s.mass = m;
-    return s;
-}
+using collide::test::sphere;
 
 std::string error_of(const auto& f) {
     try {

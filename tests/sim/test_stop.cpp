@@ -20,13 +20,13 @@ using collide::test::lattice_fluid;
 
 namespace {
 
-struct EngineChoice {
+struct StopChoice {
     const char* engine;
     const char* pq;
 };
 
-std::unique_ptr<Engine> make(const std::string& engine, const std::string& queue,
-                             const Scene& scene) {
+std::unique_ptr<Engine> make_stopping(const std::string& engine, const std::string& queue,
+                                      const Scene& scene) {
     EngineOptions options;
     options.engine = parse_engine_kind(engine);
     options.pq = pq::parse_queue_kind(queue);
@@ -35,9 +35,9 @@ std::unique_ptr<Engine> make(const std::string& engine, const std::string& queue
 }
 
 /// An engine that polls `stop`.
-std::unique_ptr<Engine> make_flagged(const EngineChoice& kind, const Scene& scene,
+std::unique_ptr<Engine> make_flagged(const StopChoice& kind, const Scene& scene,
                                      const std::atomic<bool>& stop) {
-    auto engine = make(kind.engine, kind.pq, scene);
+    auto engine = make_stopping(kind.engine, kind.pq, scene);
     engine->set_stop_flag(&stop);
     return engine;
 }
@@ -54,13 +54,12 @@ std::string stop_message(Engine& engine, double t) {
 }
 
 /// The stop is polled in each engine's own loop, whatever the classic engine's queue.
-constexpr EngineChoice all_kinds[] = {
-    {"fast", "binary"}, {"classic", "binary"}, {"time", "binary"}};
+constexpr StopChoice all_kinds[] = {{"fast", "binary"}, {"classic", "binary"}, {"time", "binary"}};
 
 }  // namespace
 
 TEST_CASE("a set stop flag ends an endless advance_to with an error, between two events") {
-    for (const EngineChoice kind : all_kinds) {
+    for (const StopChoice kind : all_kinds) {
         CAPTURE(kind.engine);
         CAPTURE(kind.pq);
         const std::atomic<bool> stop{true};
@@ -78,13 +77,13 @@ TEST_CASE("a set stop flag ends an endless advance_to with an error, between two
 // Scenes are small: the sanitizer build validates every queue after every change, and the
 // classic engine's queue holds dozens of events per disc.
 TEST_CASE("an unset or absent stop flag changes nothing") {
-    for (const EngineChoice kind : all_kinds) {
+    for (const StopChoice kind : all_kinds) {
         CAPTURE(kind.engine);
         CAPTURE(kind.pq);
         const Scene scene = lattice_fluid(5, 0.4, Boundary::walls, 5);
         const std::atomic<bool> stop{false};
         auto flagged = make_flagged(kind, scene, stop);
-        auto plain = make(kind.engine, kind.pq, scene);
+        auto plain = make_stopping(kind.engine, kind.pq, scene);
         // The same frames for both (the time-driven engine's steps restart at each call), far
         // enough for the flag to be looked at twice (every 1024 events, or every step).
         double t = 0.0;
@@ -106,18 +105,17 @@ TEST_CASE("an unset or absent stop flag changes nothing") {
 // The stop lands between two events, so an engine stopped in the middle of a run and then run
 // on (flag cleared) produces the very same collisions as one that was never stopped.
 TEST_CASE("event-driven engines stopped mid-run and resumed give the identical event sequence") {
-    for (const EngineChoice kind :
-         {EngineChoice{"fast", "binary"}, EngineChoice{"classic", "binary"}}) {
+    for (const StopChoice kind : {StopChoice{"fast", "binary"}, StopChoice{"classic", "binary"}}) {
         CAPTURE(kind.engine);
         const Scene scene = lattice_fluid(5, 0.5, Boundary::walls, 9);
         const double end = 0.6;
-        auto reference = make(kind.engine, kind.pq, scene);
+        auto reference = make_stopping(kind.engine, kind.pq, scene);
         std::vector<CollisionRecord> expected;
         reference->set_collision_listener([&](const CollisionRecord& r) { expected.push_back(r); });
         reference->advance_to(end);
         REQUIRE(reference->measurements().events > 2 * 1024 + 200);
 
-        auto engine = make(kind.engine, kind.pq, scene);
+        auto engine = make_stopping(kind.engine, kind.pq, scene);
         std::atomic<bool> stop{false};
         std::vector<CollisionRecord> got;
         engine->set_collision_listener([&](const CollisionRecord& r) {
@@ -179,7 +177,7 @@ TEST_CASE("the classic engine's initial O(N^2) prediction stops when the flag is
 
 TEST_CASE("a stopped classic engine resumes its initial prediction and gives the same events") {
     const Scene scene = lattice_fluid(5, 0.5, Boundary::walls, 9);
-    auto reference = make("classic", "binary", scene);
+    auto reference = make_stopping("classic", "binary", scene);
     std::vector<CollisionRecord> expected;
     reference->set_collision_listener([&](const CollisionRecord& r) { expected.push_back(r); });
     reference->advance_to(0.05);
@@ -227,7 +225,7 @@ TEST_CASE("a time-driven step over many discs stops, and leaves the discs where 
 TEST_CASE("a set stop flag ends the building of every engine, and the flag stays with it") {
     const SphereScene spheres = collide::test::fcc_fluid(12, 0.45);     // 6912 spheres, with lists
     const Scene discs = lattice_fluid(90, 0.3, Boundary::periodic, 5);  // 8100 discs
-    for (const EngineChoice& kind : all_kinds) {
+    for (const StopChoice& kind : all_kinds) {
         CAPTURE(kind.engine);
         std::atomic<bool> stop{true};
         EngineOptions options;
