@@ -28,9 +28,7 @@
 #     choice of backend reads; this build's own EGL cases, 'EGL surfaceless gives the same pixels
 #     as OSMesa' and `thumbnail --gl`, run EGL beside OSMesa; about 45 s); ctest's summary line
 #     comes last.
-# With CI=true warnings are errors. Without a compiler launcher (CI: no ccache) the sim and show
-# test suites compile as unity builds (COLLIDE_TEST_UNITY, on by default there; off where
-# CMAKE_CXX_COMPILER_LAUNCHER=ccache is exported: an edit would recompile a whole batch).
+# With CI=true warnings are errors.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
