@@ -10,10 +10,12 @@
 #include <vector>
 
 #include "../cli_matrix/bad_draw_options.hpp"
+#include "../support/input_error.hpp"
 #include "../support/temp_dir.hpp"
 #include "run_collide.hpp"
 
 using collide::test::Bad;
+using collide::test::contains;
 using collide::test::run_command;
 using collide::test::TempDir;
 namespace fs = std::filesystem;
@@ -22,10 +24,6 @@ namespace {
 
 std::string quoted(const fs::path& path) {
     return "'" + path.string() + "'";
-}
-
-bool contains(const std::string& haystack, const std::string& needle) {
-    return haystack.find(needle) != std::string::npos;
 }
 
 /// A copy of `collide` with no collide-draw beside it or in ../libexec/collide, reading the
