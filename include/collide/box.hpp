@@ -9,6 +9,16 @@
 
 namespace collide {
 
+/// std::round(q), without the libm call where |q| < 1.5: two compares give -1, 0 or 1, the same
+/// doubles (signed zeros included). Minimum-image quotients are such numbers (two images are
+/// rarely more than a box apart), and the libm call was 2 % of a 2D collision's instructions at
+/// 10^5 discs. NaN gives 0, where the difference it divides carries the NaN through.
+[[nodiscard]] inline double round_near_zero(double q) noexcept {
+    if (q >= 0.5) return q < 1.5 ? 1.0 : std::round(q);
+    if (q <= -0.5) return q > -1.5 ? -1.0 : std::round(q);
+    return std::copysign(0.0, q);
+}
+
 /// What happens at the edges of the box.
 enum class Boundary {
     walls,     ///< elastic reflecting walls at x = 0, x = width, y = 0, y = height
@@ -45,8 +55,8 @@ struct Box {
     [[nodiscard]] Vec2 displacement(Vec2 a, Vec2 b) const noexcept {
         Vec2 d = b - a;
         if (boundary == Boundary::periodic) {
-            d.x -= width * std::round(d.x / width);
-            d.y -= height * std::round(d.y / height);
+            d.x -= width * round_near_zero(d.x / width);
+            d.y -= height * round_near_zero(d.y / height);
         }
         return d;
     }

@@ -45,9 +45,9 @@ struct Box3 {
     [[nodiscard]] Vec3 displacement(Vec3 a, Vec3 b) const noexcept {
         Vec3 d = b - a;
         if (boundary == Boundary::periodic) {
-            d.x -= width * std::round(d.x / width);
-            d.y -= height * std::round(d.y / height);
-            d.z -= depth * std::round(d.z / depth);
+            d.x -= width * round_near_zero(d.x / width);
+            d.y -= height * round_near_zero(d.y / height);
+            d.z -= depth * round_near_zero(d.z / depth);
         }
         return d;
     }

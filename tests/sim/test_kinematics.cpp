@@ -1,6 +1,11 @@
 #include <doctest/doctest.h>
 
+#include <cmath>
+#include <limits>
+#include <vector>
+
 #include "collide/box.hpp"
+#include "collide/box3.hpp"
 #include "collide/sim/kinematics.hpp"
 
 using namespace collide;
@@ -97,4 +102,33 @@ TEST_CASE("Box: periodic wrap and minimum image") {
     const Box walls{2.0, 1.0, Boundary::walls};
     CHECK(walls.contains({1.0, 0.5}, 0.5));
     CHECK_FALSE(walls.contains({1.0, 0.5}, 0.51));
+}
+
+TEST_CASE("round_near_zero: the same doubles as std::round, signed zeros included") {
+    // Every quotient a minimum image can meet: the shortcut's range (|q| < 1.5), its edges,
+    // and beyond it, where it hands over to std::round.
+    std::vector<double> qs{0.0,    -0.0,   0.49999999999999994,
+                           0.5,    -0.5,   1.4999999999999998,
+                           1.5,    -1.5,   2.5,
+                           -2.5,   1e300,  -1e300,
+                           1e-300, -1e-300};
+    for (int k = -4000; k <= 4000; ++k) qs.push_back(k / 1000.0);
+    for (const double q : qs) {
+        CAPTURE(q);
+        const double expected = std::round(q);
+        CHECK(round_near_zero(q) == expected);
+        CHECK(std::signbit(round_near_zero(q)) == std::signbit(expected));
+    }
+    CHECK(round_near_zero(std::numeric_limits<double>::infinity()) ==
+          std::numeric_limits<double>::infinity());
+}
+
+TEST_CASE("Box3: minimum image in every axis") {
+    const Box3 box{2.0, 1.0, 4.0, Boundary::periodic};
+    const Vec3 d = box.displacement({0.1, 0.1, 3.9}, {1.9, 0.9, 0.1});
+    CHECK(d.x == doctest::Approx(-0.2));
+    CHECK(d.y == doctest::Approx(-0.2));
+    CHECK(d.z == doctest::Approx(0.2));
+    const Box3 walls{2.0, 1.0, 4.0, Boundary::walls};
+    CHECK(walls.displacement({0.1, 0.1, 3.9}, {1.9, 0.9, 0.1}).z == doctest::Approx(-3.8));
 }
