@@ -17,14 +17,11 @@
 using collide::test::Bad;
 using collide::test::contains;
 using collide::test::run_command;
+using collide::test::shell_quoted;
 using collide::test::TempDir;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string quoted(const fs::path& path) {
-    return "'" + path.string() + "'";
-}
 
 /// A copy of `collide` with no collide-draw beside it or in ../libexec/collide, reading the
 /// source tree's scenes.
@@ -38,8 +35,8 @@ struct CollideAlone {
     }
 
     [[nodiscard]] collide::test::RunResult run(const std::string& args) const {
-        return run_command("COLLIDE_ASSETS_DIR=" + quoted(COLLIDE_ASSETS_DIR) + " " +
-                           quoted(program) + " " + args + " 2>&1");
+        return run_command("COLLIDE_ASSETS_DIR=" + shell_quoted(COLLIDE_ASSETS_DIR) + " " +
+                           shell_quoted(program) + " " + args + " 2>&1");
     }
 };
 
@@ -82,7 +79,7 @@ TEST_CASE("collide's refusals are collide-draw's, word for word, at every kind o
           "thumbnail gas --at 1e18" + never + ".png", "thumbnail gas" + never + ".png"}) {
         CAPTURE(args);
         const auto here = alone.run(args);
-        const auto drawn = run_command(quoted(COLLIDE_DRAW_EXE) + " " + args + " 2>&1");
+        const auto drawn = run_command(shell_quoted(COLLIDE_DRAW_EXE) + " " + args + " 2>&1");
         CHECK(here.exit_code == drawn.exit_code);
         CHECK(here.output == drawn.output);
     }
@@ -95,7 +92,7 @@ TEST_CASE("collide hands a good render or thumbnail line to collide-draw") {
         CAPTURE(command);
         const fs::path output = alone.dir.path / (command == "render" ? "gas.mp4" : "gas.png");
         const std::string options = command == "render" ? " -q l --duration 1" : " -q l --at 0.5";
-        const auto r = alone.run(command + " gas" + options + " -o " + quoted(output));
+        const auto r = alone.run(command + " gas" + options + " -o " + shell_quoted(output));
         CHECK(r.exit_code == 1);
         CHECK(contains(r.output, "collide-draw for `collide " + command + "`"));
         CHECK_FALSE(fs::exists(output));
