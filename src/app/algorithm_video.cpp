@@ -3,22 +3,16 @@
 #include <fmt/core.h>
 
 #include <CLI/CLI.hpp>
-#include <algorithm>
-#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <utility>
 
 #include "cli_numbers.hpp"
 #include "collide/error.hpp"
-#include "collide/show/chapters.hpp"
 #include "collide/video/output.hpp"
-#include "collide/video/video_writer.hpp"
 #include "font_search.hpp"
-#include "interrupt.hpp"
 #include "json_output.hpp"
 #include "render_plan.hpp"
-#include "video_job.hpp"
 
 namespace collide::app {
 
@@ -63,15 +57,12 @@ AlgorithmVideoDestination algorithm_video_destination_of(const AlgorithmVideoCli
     if (d.output.default_path) std::filesystem::create_directories(d.output.path.parent_path());
     video::check_output_writable(
         d.output.path, !d.output.still && d.output.format == video::VideoFormat::png_sequence);
-    video::set_libav_verbose(v.verbose);
     d.still_time = given(v.at_opt) ? v.at : duration;
     return d;
 }
 
-std::optional<io::OutputFile> open_timeline_json(const std::string& path,
-                                                 const AlgorithmVideoDestination& destination,
-                                                 const show::Timeline& timeline) {
-    if (path.empty()) return std::nullopt;
+void check_timeline_json(const std::string& path, const AlgorithmVideoDestination& destination) {
+    if (path.empty()) return;
     if (destination.output.still)
         throw_option_error("--timeline-json", "only for videos (a still has no timeline)");
     std::vector<io::NamedOutput> outputs;
@@ -87,6 +78,13 @@ std::optional<io::OutputFile> open_timeline_json(const std::string& path,
     if (!destination.chapters.handout.empty())
         outputs.push_back({"--handout", destination.chapters.handout, false});
     io::check_distinct_outputs(outputs);
+}
+
+std::optional<io::OutputFile> open_timeline_json(const std::string& path,
+                                                 const AlgorithmVideoDestination& destination,
+                                                 const show::Timeline& timeline) {
+    if (path.empty()) return std::nullopt;
+    check_timeline_json(path, destination);
     std::optional<io::OutputFile> file;
     file.emplace(path, io::OutputOptions{"--timeline-json"});
     file->write(drawn_timeline_json(timeline));
@@ -107,82 +105,6 @@ std::string drawn_timeline_json(const show::Timeline& timeline) {
                           {"frames", timeline.frame_count()},
                           {"seconds", static_cast<double>(timeline.frame_count()) / timeline.fps},
                           {"segments", std::move(segments)}});
-}
-
-namespace {
-
-/// A drawn lesson as the video job's frame program: frame k of a video shows time k / fps; a
-/// still's one frame shows `still_time`.
-class AlgorithmFrameProgram final : public FrameProgram {
-  public:
-    AlgorithmFrameProgram(const AlgorithmFrameDraw& draw, int fps, bool still, double still_time)
-        : draw_(draw), fps_(fps), still_(still), still_time_(still_time) {}
-
-    double frame(std::int64_t k, FrameUse use, Image& image) override {
-        const double t = still_ ? still_time_ : static_cast<double>(k) / fps_;
-        if (use == FrameUse::output) draw_(t, image);
-        return t;
-    }
-
-  private:
-    const AlgorithmFrameDraw& draw_;
-    int fps_;
-    bool still_;
-    double still_time_;
-};
-
-}  // namespace
-
-AlgorithmVideoSummary write_algorithm_video(
-    const OutputChoice& output, const AlgorithmVideoGeometry& geometry, ProgressMode progress_mode,
-    double duration, double still_time, const AlgorithmFrameDraw& draw,
-    const SubtitleOutput& subtitles, const Cues& cues, const ChapterOutput& chapters,
-    const std::optional<Chapters>& chapter_list, io::OutputFile* commit_with) {
-    InterruptGuard interrupts;
-    VideoJob job;
-    job.output.path = output.path;
-    job.output.format = output.format;
-    job.output.still = output.still;
-    job.width = geometry.width;
-    job.height = geometry.height;
-    job.fps = geometry.fps;
-    job.frames = output.still ? 1
-                              : std::max<std::int64_t>(
-                                    1, std::llround(duration * static_cast<double>(geometry.fps)));
-    if (!output.still) {
-        job.output.subtitles = subtitles;
-        job.output.cues = cues;
-        job.output.cues_in_picture = true;  // the heap's and the puzzle's words are drawn
-        job.output.chapter_output = chapters;
-        job.output.chapters =
-            chapter_list
-                ? *chapter_list
-                : show::chapters_from_cues(
-                      cues, static_cast<double>(job.frames) / static_cast<double>(geometry.fps),
-                      geometry.fps);
-    }
-    Progress progress(progress_mode, job.frames);
-    JobHooks hooks;
-    hooks.interrupts = &interrupts;
-    hooks.progress = &progress;
-    hooks.notice = print_notice;
-    if (commit_with != nullptr) hooks.commit_with.push_back(commit_with);
-    JobResult written;
-    try {
-        written = run_video_job(
-            job,
-            [&](render::Backend /*the lessons' renderers are made by their commands*/) {
-                return std::make_unique<AlgorithmFrameProgram>(draw, geometry.fps, output.still,
-                                                               still_time);
-            },
-            hooks);
-    } catch (...) {
-        progress.finish();
-        throw;
-    }
-    progress.finish();
-    for (const std::string& line : written.notices) print_notice(line);
-    return {written.frames, written.output_width, written.output_height, written.output_fps};
 }
 
 }  // namespace collide::app

@@ -47,11 +47,17 @@ struct AlgorithmVideoDestination {
 /// The set-up `collide heap` and `collide puzzle` share, in this order: --at refused outside
 /// 0..duration; the output (default path under out/, named after `stem`), its subtitles and
 /// chapters (`title`: the chapters' title); the default path's folder created, the destination
-/// checked writable; libav's verbosity set.
+/// checked writable. (libav's verbosity is the drawing program's to set: `collide` runs this
+/// and links no encoder.)
 [[nodiscard]] AlgorithmVideoDestination algorithm_video_destination_of(const AlgorithmVideoCli& v,
                                                                        std::string_view stem,
                                                                        double duration,
                                                                        const std::string& title);
+
+/// The checks of `--timeline-json PATH` (open_timeline_json's, without opening it): refused
+/// (Error(input) naming --timeline-json) for a still, for standard output, and for a path that
+/// is also another output of the run; nothing to check when `path` is empty.
+void check_timeline_json(const std::string& path, const AlgorithmVideoDestination& destination);
 
 /// `--timeline-json PATH` of a drawn lesson: the file opened (its temporary beside PATH) and
 /// filled with `timeline` as JSON (drawn_timeline_json), to be committed with the video

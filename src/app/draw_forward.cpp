@@ -3,8 +3,8 @@
 // arguments, signals and exit status), found next to this program (the build tree) or in
 // ../libexec/collide (an install). `puzzle` is parsed here whole: --solve and --json print text
 // and run here; only its video becomes collide-draw, once its command line has parsed. `render`
-// and `thumbnail` are parsed and checked here too (render_cli.hpp), so that a bad command line
-// is refused with collide-draw's own words without starting it.
+// and `thumbnail` are parsed and checked here too (render_cli.hpp), and `heap` (heap_cli.hpp), so
+// that a bad command line is refused with collide-draw's own words without starting it.
 
 #include <unistd.h>
 
@@ -21,6 +21,7 @@
 #include <utility>
 
 #include "commands.hpp"
+#include "heap_cli.hpp"
 #include "interrupt.hpp"
 #include "render_cli.hpp"
 
@@ -87,6 +88,17 @@ void add_thumbnail_here(CLI::App& root, char** argv) {
     add_render_here(root, argv, true);
 }
 
+/// `collide heap`, parsed and checked here with collide-draw's own checks (CheckedHeap: the
+/// lesson, its fit at the frame size, every option, the destinations; nothing drawn); only a line
+/// that passes becomes collide-draw, which checks it again and draws.
+void add_heap_here(CLI::App& root, char** argv) {
+    auto values = std::make_shared<HeapCli>();
+    add_heap_options(root, *values)->callback([values, argv] {
+        const CheckedHeap checked(*values);  // throws Error(input) for a bad line
+        run_drawing_program(argv, "heap");
+    });
+}
+
 struct DrawingCommand {
     std::string_view name;
     std::string_view description;  ///< for `collide --help`
@@ -97,7 +109,7 @@ struct DrawingCommand {
 
 // The descriptions are the commands' own (cmd_*.cpp), for `collide --help`.
 constexpr std::array<DrawingCommand, 4> drawing_commands{{
-    {"heap", "Animate priority-queue operations: heaps as trees over their arrays, step by step"},
+    {"heap", {}, add_heap_here},            // registered with its own (heap_cli.cpp)
     {"puzzle", {}, add_puzzle_here},        // registered with its own description (cmd_puzzle.cpp)
     {"render", {}, add_render_here},        // registered with its own (render_cli.cpp)
     {"thumbnail", {}, add_thumbnail_here},  // registered with its own (render_cli.cpp)

@@ -69,6 +69,7 @@ void render_puzzle_video(const puzzle::Board& start,
     frames.ask_questions(puzzle_questions_of(v));
     const AlgorithmVideoDestination destination =
         algorithm_video_destination_of(v, "puzzle", frames.duration(), frames.name());
+    video::set_libav_verbose(v.verbose);
     const OutputChoice& output = destination.output;
     std::optional<io::OutputFile> timeline_file =
         open_timeline_json(v.timeline_json, destination,

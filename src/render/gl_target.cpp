@@ -17,17 +17,6 @@ constexpr std::size_t vertices_per_disc = 6;  // a quad's two triangles (disc.ve
 static_assert(sizeof(OverlayVertex) == 12);
 }  // namespace
 
-void DrawList::clear() {
-    fill_clears.clear();
-    under.clear();
-    discs.clear();
-    disc_groups.clear();
-    spheres.clear();
-    sphere_groups.clear();
-    over.clear();
-    for (TextRun& run : text) run.glyphs.clear();
-}
-
 GlTarget::GlTarget(int width, int height, std::unique_ptr<Context> context)
     : width_(width), height_(height), context_(std::move(context)) {
     if (!context_) throw_runtime_error("renderer: no GL context");

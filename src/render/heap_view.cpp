@@ -1,6 +1,8 @@
 // Frames of a priority-queue lesson: lay out the token strip and the panels, build a DrawList
 // (edges, slots and boxes as triangles, tree nodes as discs, glyphs per font size) on the CPU, and
-// draw it through GlTarget, the collision renderer's GL half: one GL path for every picture.
+// draw it through GlTarget, the collision renderer's GL half: one GL path for every picture. The
+// GL half is heap_view_gl.cpp (heap_draw_target.hpp): this file links no GL, so that `collide`
+// runs the fit check (HeapRenderer::fits) itself.
 #include "collide/render/heap_view.hpp"
 
 #include <algorithm>
@@ -20,7 +22,7 @@
 #include "collide/render/renderer.hpp"
 #include "draw_list.hpp"
 #include "font.hpp"
-#include "gl_target.hpp"
+#include "heap_draw_target.hpp"
 #include "heap_view_layout.hpp"
 #include "layout.hpp"
 #include "overlay_geometry.hpp"
@@ -119,7 +121,7 @@ struct HeapRenderer::Impl {
 
     HeapViewConfig config;
     HeapPalette colors;
-    std::optional<GlTarget> target;  // the context and every GL object (none: layout only)
+    std::unique_ptr<HeapDrawTarget> target;  // the context and every GL object (none: layout only)
 
     std::map<int, FontAtlas> fonts;           // by pixel height (map nodes: stable addresses)
     std::map<int, std::size_t> text_run;      // pixel height -> its run in list.text
@@ -133,11 +135,8 @@ struct HeapRenderer::Impl {
     bool beside_code = false;  // the frame being built has a code column (--code)
     std::size_t columns = 1;   // of the panel grid in the frame being built
 
-    Impl(const HeapViewConfig& cfg, std::unique_ptr<Context> ctx)
-        : config(cfg),
-          colors(heap_palette(cfg.theme)),
-          target(ctx ? std::optional<GlTarget>(std::in_place, cfg.width, cfg.height, std::move(ctx))
-                     : std::nullopt) {
+    Impl(const HeapViewConfig& cfg, std::unique_ptr<HeapDrawTarget> draw_target)
+        : config(cfg), colors(heap_palette(cfg.theme)), target(std::move(draw_target)) {
         config.validate();
         unit = static_cast<float>(config.height) / 720.0F;
         (void)font(caption_px());  // a missing font fails here, before any frame
@@ -1270,21 +1269,17 @@ struct HeapRenderer::Impl {
     }
 
     void render(const view::HeapFrameView& frame, Image& out) {
-        COLLIDE_ASSERT(target.has_value(), "a renderer made with a context draws");
+        COLLIDE_ASSERT(target != nullptr, "a renderer made with a context draws");
         lay_out(frame);
-        target->draw(list);
-        target->read_pixels(list, out);
+        target->draw(list, out);
     }
 };
 
 // ---------------------------------------------------------------------------------------------
 
-HeapRenderer::HeapRenderer(const HeapViewConfig& config, Backend backend, const NoticeSink& notice)
-    : impl_([&] {
-          config.validate();  // before creating a context for a config we would reject anyway
-          return std::make_unique<Impl>(config,
-                                        make_context(backend, config.width, config.height, notice));
-      }()) {}
+// HeapRenderer(config, backend, notice), which makes a GL target: heap_view_gl.cpp.
+HeapRenderer::HeapRenderer(const HeapViewConfig& config, std::unique_ptr<HeapDrawTarget> target)
+    : impl_(std::make_unique<Impl>(config, std::move(target))) {}
 
 HeapRenderer::HeapRenderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 

@@ -240,7 +240,7 @@ PanelWords panel_words(const Measurements& m, bool time_driven, bool walls, doub
         out.counters = time_driven_counters(m, drift);
         out.figures = time_driven_figures(m, walls);
         out.compact_line = fmt::format("{} missed", count_text(m.missed_collisions));
-        out.cost_label = "pair tests";
+        out.cost_label = time_driven_cost_label;
     } else {
         out.counters = event_driven_counters(m, drift);
         out.figures = event_driven_figures(m);

@@ -33,12 +33,25 @@ inline RunResult run_command(const std::string& cmd) {
     return r;
 }
 
+/// `text` as one word for sh: in single quotes, each ' in it written '\'' (close, an escaped
+/// quote, reopen), so that a path with spaces, $, `, ", \, ' or a newline reaches the program as
+/// it is. Double quotes would not do: sh expands $ and ` inside them (a TMPDIR may hold either).
+inline std::string shell_quoted(const std::string& text) {
+    // Appended, not "'" + ...: GCC 12 -O2 warns falsely there (-Wrestrict, PR 105329).
+    std::string out(1, '\'');
+    for (const char c : text) {
+        if (c == '\'')
+            out += "'\\''";
+        else
+            out += c;
+    }
+    out += '\'';
+    return out;
+}
+
 /// Runs a shell command line (`sh -c`), capturing its exit code and its stdout and stderr.
 inline RunResult run_collide_shell(const std::string& command) {
-    std::string quoted = "'";
-    for (const char c : command) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    quoted += "'";
-    return run_command("sh -c " + quoted + " 2>&1");
+    return run_command("sh -c " + shell_quoted(command) + " 2>&1");
 }
 
 /// Runs `collide <args>` through the shell (args are pasted verbatim: quote them yourself).

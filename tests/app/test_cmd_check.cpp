@@ -11,6 +11,7 @@
 #include "run_collide.hpp"
 
 using collide::test::run_collide;
+using collide::test::shell_quoted;
 
 namespace {
 
@@ -21,11 +22,7 @@ std::string temp_scene(const std::string& name, const std::string& text) {
     const std::filesystem::path path =
         std::filesystem::temp_directory_path() / ("collide_e2e_" + name);
     std::ofstream(path) << text;
-    // Appended, not "'" + ...: GCC 12 -O2 warns falsely there (-Wrestrict, PR 105329).
-    std::string quoted(1, '\'');
-    quoted += path.string();
-    quoted += '\'';
-    return quoted;
+    return shell_quoted(path.string());
 }
 
 }  // namespace

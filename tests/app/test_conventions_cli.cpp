@@ -15,6 +15,7 @@
 
 using collide::test::run_collide;
 using collide::test::run_command;
+using collide::test::shell_quoted;
 using collide::test::TempDir;
 
 namespace {
@@ -39,13 +40,6 @@ fs::path write_two_discs(const fs::path& dir, const std::string& stem) {
     return file;
 }
 
-/// Single-quoted for sh (the name holds a newline and quotes).
-std::string quoted(const std::string& text) {
-    std::string out = "'";
-    for (const char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
-
 /// Strict JSON: parse() refuses raw control characters in strings and invalid UTF-8.
 nlohmann::json parse_json(const std::string& text) {
     INFO(text);
@@ -59,7 +53,7 @@ nlohmann::json parse_json(const std::string& text) {
 TEST_CASE("simulate --json escapes control characters and replaces invalid UTF-8 of a file name") {
     TempDir dir("conventions_simulate");
     const fs::path scene = write_two_discs(dir.path, hostile_stem);
-    const auto r = run_stdout("simulate " + quoted(scene.string()) + " --until 1 --json");
+    const auto r = run_stdout("simulate " + shell_quoted(scene.string()) + " --until 1 --json");
     REQUIRE(r.exit_code == 0);
     const nlohmann::json value = parse_json(r.output);
     CHECK(value.at("scene") == hostile_stem_decoded);
@@ -70,7 +64,7 @@ TEST_CASE("simulate --json escapes control characters and replaces invalid UTF-8
 TEST_CASE("check --json: the scene, its name, its discs and the summary, valid for any name") {
     TempDir dir("conventions_check");
     const fs::path scene = write_two_discs(dir.path, hostile_stem);
-    const auto r = run_stdout("check " + quoted(scene.string()) + " --json");
+    const auto r = run_stdout("check " + shell_quoted(scene.string()) + " --json");
     REQUIRE(r.exit_code == 0);
     const nlohmann::json value = parse_json(r.output);
     CHECK(value.at("discs") == 2);
@@ -99,7 +93,7 @@ TEST_CASE("thumbnail --json: the summary as JSON, naming an output path of any b
     TempDir dir("conventions_thumbnail");
     const fs::path png = dir.path / (hostile_stem + ".png");
     const auto r =
-        run_stdout("thumbnail gas --at 0.5 --size 160x90 --json -o " + quoted(png.string()));
+        run_stdout("thumbnail gas --at 0.5 --size 160x90 --json -o " + shell_quoted(png.string()));
     REQUIRE(r.exit_code == 0);
     CHECK(fs::is_regular_file(png));
     const nlohmann::json value = parse_json(r.output);

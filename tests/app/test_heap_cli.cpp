@@ -15,6 +15,7 @@
 
 using collide::test::run_collide;
 using collide::test::run_collide_bad_input;
+using collide::test::shell_quoted;
 using collide::test::TempDir;
 namespace fs = std::filesystem;
 
@@ -32,10 +33,6 @@ std::string bytes_of(const fs::path& path) {
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-std::string quoted(const fs::path& path) {
-    return "\"" + path.string() + "\"";
-}
-
 }  // namespace
 
 TEST_CASE("collide heap renders the lecture's trace to MP4, byte-identical from run to run") {
@@ -43,10 +40,10 @@ TEST_CASE("collide heap renders the lecture's trace to MP4, byte-identical from 
     const fs::path a = dir.path / "a.mp4";
     const fs::path b = dir.path / "b.mp4";
     const std::string ops = "heap --ops \"P Q E * X A M * P L E *\"" + quick;
-    const auto r = run_collide(ops + "-o " + quoted(a));
+    const auto r = run_collide(ops + "-o " + shell_quoted(a));
     REQUIRE_MESSAGE(r.exit_code == 0, r.output);
     CHECK(contains(r.output, "binary heap, 12 operations"));
-    REQUIRE(run_collide(ops + "-o " + quoted(b)).exit_code == 0);
+    REQUIRE(run_collide(ops + "-o " + shell_quoted(b)).exit_code == 0);
     CHECK(fs::file_size(a) > 1000);
     CHECK(bytes_of(a) == bytes_of(b));
 }
@@ -54,13 +51,13 @@ TEST_CASE("collide heap renders the lecture's trace to MP4, byte-identical from 
 TEST_CASE("collide heap: side by side as GIF, heapsort as a PNG sequence, the last frame as PNG") {
     TempDir dir("heap_formats");
     const auto three = run_collide("heap --ops \"P Q E * X\" --impl unordered,ordered,binary" +
-                                   quick + "-o " + quoted(dir.path / "three.gif"));
+                                   quick + "-o " + shell_quoted(dir.path / "three.gif"));
     REQUIRE_MESSAGE(three.exit_code == 0, three.output);
     CHECK(contains(three.output, "unordered array, ordered array, binary heap"));
     CHECK(fs::file_size(dir.path / "three.gif") > 1000);
 
     const auto sort = run_collide("heap --sort \"S O R T E X\" --format png" + quick + "-o " +
-                                  quoted(dir.path / "frames"));
+                                  shell_quoted(dir.path / "frames"));
     REQUIRE_MESSAGE(sort.exit_code == 0, sort.output);
     std::size_t frames = 0;
     for (const auto& entry : fs::directory_iterator(dir.path / "frames")) {
@@ -70,7 +67,7 @@ TEST_CASE("collide heap: side by side as GIF, heapsort as a PNG sequence, the la
 
     const fs::path last = dir.path / "last.png";
     const auto still = run_collide("heap --ops \"5 9 3 7 * 3^12\" --impl indexed:2 --last-frame" +
-                                   quick + "-o " + quoted(last));
+                                   quick + "-o " + shell_quoted(last));
     REQUIRE_MESSAGE(still.exit_code == 0, still.output);
     const collide::Image image = collide::video::read_png(last);
     CHECK(image.width == 320);
@@ -82,7 +79,7 @@ TEST_CASE("collide heap --theme light draws dark text on a light page, as collid
     const auto still = [&](const std::string& theme, const char* name) {
         const fs::path png = dir.path / name;
         const auto r = run_collide("heap --ops \"P Q E * X\" --last-frame" + quick + theme +
-                                   " -o " + quoted(png));
+                                   " -o " + shell_quoted(png));
         REQUIRE_MESSAGE(r.exit_code == 0, r.output);
         return collide::video::read_png(png);
     };
@@ -105,14 +102,14 @@ TEST_CASE("collide heap --theme light draws dark text on a light page, as collid
     CHECK(light_min < 60);      // ...with dark text on it
     CHECK(brightness(still("--theme dark", "dark2.png")).first == doctest::Approx(dark_mean));
     CHECK(contains(run_collide_bad_input("heap --ops P --theme sepia" + quick + "-o " +
-                                         quoted(dir.path / "x.mp4")),
+                                         shell_quoted(dir.path / "x.mp4")),
                    "--theme: expected a theme (dark or light), got 'sepia'"));
     CHECK(!fs::exists(dir.path / "x.mp4"));
 }
 
 TEST_CASE("collide heap: bad tokens exit 2 naming the token and its position") {
     TempDir dir("heap_bad_tokens");
-    const std::string out = " -o " + quoted(dir.path / "x.mp4");
+    const std::string out = " -o " + shell_quoted(dir.path / "x.mp4");
     CHECK(contains(run_collide_bad_input("heap --ops \"P ? *\"" + quick + out),
                    "--ops: token 2 '?'"));
     CHECK(contains(run_collide_bad_input("heap --ops \"P * *\"" + quick + out),
@@ -129,7 +126,7 @@ TEST_CASE("collide heap: bad tokens exit 2 naming the token and its position") {
 
 TEST_CASE("collide heap: bad options and inputs too big to draw legibly exit 2") {
     TempDir dir("heap_bad_options");
-    const std::string out = " -o " + quoted(dir.path / "x.mp4");
+    const std::string out = " -o " + shell_quoted(dir.path / "x.mp4");
     CHECK(contains(run_collide_bad_input("heap" + quick + out), "give either --ops"));
     CHECK(contains(run_collide_bad_input("heap --ops P --sort P" + quick + out),
                    "give either --ops"));
@@ -141,13 +138,13 @@ TEST_CASE("collide heap: bad options and inputs too big to draw legibly exit 2")
     CHECK(contains(run_collide_bad_input("heap --ops P --index-base 2" + quick + out),
                    "--index-base: expected 0 or 1, got '2'"));
     CHECK(contains(run_collide_bad_input("heap --ops P --pace 0" + quick + out), "--pace"));
-    CHECK(
-        contains(run_collide_bad_input("heap --ops P" + quick + "-o " + quoted(dir.path / "x.txt")),
-                 "-o: expected a .mp4 or .gif path"));
+    CHECK(contains(
+        run_collide_bad_input("heap --ops P" + quick + "-o " + shell_quoted(dir.path / "x.txt")),
+        "-o: expected a .mp4 or .gif path"));
     CHECK(contains(run_collide_bad_input("heap --ops P --last-frame" + quick + out),
                    "expected a .png path"));
     CHECK(contains(run_collide_bad_input("heap --ops P" + quick + "-o " +
-                                         quoted(dir.path / "missing" / "x.mp4")),
+                                         shell_quoted(dir.path / "missing" / "x.mp4")),
                    "missing"));
     // 13 keys at once in three panels: more than 36 / 3 = 12 can be drawn legibly.
     const std::string thirteen = "\"A B C D E F G H I J K L M\"";
@@ -155,7 +152,7 @@ TEST_CASE("collide heap: bad options and inputs too big to draw legibly exit 2")
                                                   " --impl unordered,ordered,binary" + quick + out);
     CHECK(contains(big, "holds up to 13 keys at once, but at most 12 can be drawn legibly"));
     CHECK(run_collide("heap --ops " + thirteen + " --last-frame" + quick + "-o " +
-                      quoted(dir.path / "one.png"))
+                      shell_quoted(dir.path / "one.png"))
               .exit_code == 0);  // one panel takes up to 36
     CHECK(!fs::exists(dir.path / "x.mp4"));
 }
@@ -192,7 +189,7 @@ TEST_CASE("collide heap --code: the pseudocode beside the heap, its line under w
     const auto still = [&](const std::string& options, const char* name) {
         const fs::path png = dir.path / name;
         const auto r =
-            run_collide("heap --ops \"P Q E *\"" + frame + options + " -o " + quoted(png));
+            run_collide("heap --ops \"P Q E *\"" + frame + options + " -o " + shell_quoted(png));
         REQUIRE_MESSAGE(r.exit_code == 0, r.output);
         return collide::video::read_png(png);
     };
@@ -219,7 +216,7 @@ TEST_CASE("collide heap --code: the pseudocode beside the heap, its line under w
 
 TEST_CASE("collide heap --code: where no code can be shown, exit 2 naming --code") {
     TempDir dir("heap_code_bad");
-    const std::string out = " -o " + quoted(dir.path / "x.mp4");
+    const std::string out = " -o " + shell_quoted(dir.path / "x.mp4");
     CHECK(contains(
         run_collide_bad_input("heap --ops \"P Q *\" --code --impl unordered" + quick + out),
         "--code: shows the code of one heap"));
@@ -239,7 +236,7 @@ TEST_CASE(
     // Issue 44: an indexed heap of 11 keys beside two other heaps, or word keys in two heaps,
     // were drawn with nodes on nodes and words out of their nodes; now refused up front.
     TempDir dir("heap_fit");
-    const std::string out = " --progress none --last-frame -o " + quoted(dir.path / "x.png");
+    const std::string out = " --progress none --last-frame -o " + shell_quoted(dir.path / "x.png");
     const std::string eleven = "\"P Q E X A M L S O R T * *\"";
     const std::string three =
         run_collide_bad_input("heap --ops " + eleven + " --impl binary,dary:3,indexed -q l" + out);

@@ -20,6 +20,7 @@
 using collide::test::parse_subtitles;
 using collide::test::run_collide;
 using collide::test::run_collide_bad_input;
+using collide::test::shell_quoted;
 using collide::test::TempDir;
 namespace fs = std::filesystem;
 
@@ -31,10 +32,6 @@ const std::string quick = " --size 320x180 --fps 5 --pace 0.1 --progress none ";
 std::string text_of(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-std::string quoted(const fs::path& path) {
-    return "\"" + path.string() + "\"";
 }
 
 /// The cues of `file` whose text starts with `head`.
@@ -82,10 +79,10 @@ TEST_CASE(
     "the chapters, and none (the default) asks nothing") {
     TempDir dir("heap_questions");
     const std::string ops = "heap --ops \"S O R T * E X\" --min" + quick;
-    const auto on = run_collide(ops + "--questions on -o " + quoted(dir.path / "on.mp4") +
-                                " --subtitles-file " + quoted(dir.path / "on.srt") +
-                                " --chapters-file " + quoted(dir.path / "on.vtt") +
-                                " --timeline-json " + quoted(dir.path / "on.json"));
+    const auto on = run_collide(ops + "--questions on -o " + shell_quoted(dir.path / "on.mp4") +
+                                " --subtitles-file " + shell_quoted(dir.path / "on.srt") +
+                                " --chapters-file " + shell_quoted(dir.path / "on.vtt") +
+                                " --timeline-json " + shell_quoted(dir.path / "on.json"));
     REQUIRE_MESSAGE(on.exit_code == 0, on.output);
     const std::vector<std::string> kinds = segment_kinds(dir.path / "on.json");
     CHECK(count_of(kinds, "question") == 6);
@@ -98,9 +95,9 @@ TEST_CASE(
 
     for (const std::string& quiet : {std::string(), std::string("--questions none ")}) {
         CAPTURE(quiet);
-        const auto off = run_collide(ops + quiet + "-o " + quoted(dir.path / "off.mp4") +
-                                     " --subtitles-file " + quoted(dir.path / "off.srt") +
-                                     " --timeline-json " + quoted(dir.path / "off.json"));
+        const auto off = run_collide(ops + quiet + "-o " + shell_quoted(dir.path / "off.mp4") +
+                                     " --subtitles-file " + shell_quoted(dir.path / "off.srt") +
+                                     " --timeline-json " + shell_quoted(dir.path / "off.json"));
         REQUIRE_MESSAGE(off.exit_code == 0, off.output);
         CHECK(segment_kinds(dir.path / "off.json") == std::vector<std::string>{"run"});
         fs::remove(dir.path / "off.json");
@@ -114,7 +111,7 @@ TEST_CASE(
 TEST_CASE("collide heap --questions refuses anything but on or none, before writing") {
     TempDir dir("heap_questions_bad");
     const std::string out = run_collide_bad_input("heap --ops \"P Q\" --questions maybe" + quick +
-                                                  "-o " + quoted(dir.path / "q.mp4"));
+                                                  "-o " + shell_quoted(dir.path / "q.mp4"));
     CHECK(out.find("--questions") != std::string::npos);
     CHECK_FALSE(fs::exists(dir.path / "q.mp4"));
 }
@@ -123,10 +120,10 @@ TEST_CASE("collide puzzle --questions on asks which board A* expands next, and n
     TempDir dir("puzzle_questions");
     const std::string board =
         "puzzle \"1 2 3 4 0 6 7 5 8\" --size 854x480 --fps 4 --progress none ";
-    const auto on = run_collide(board + "--questions on -o " + quoted(dir.path / "on.mp4") +
-                                " --subtitles-file " + quoted(dir.path / "on.vtt") +
-                                " --chapters-file " + quoted(dir.path / "chapters.vtt") +
-                                " --timeline-json " + quoted(dir.path / "on.json"));
+    const auto on = run_collide(board + "--questions on -o " + shell_quoted(dir.path / "on.mp4") +
+                                " --subtitles-file " + shell_quoted(dir.path / "on.vtt") +
+                                " --chapters-file " + shell_quoted(dir.path / "chapters.vtt") +
+                                " --timeline-json " + shell_quoted(dir.path / "on.json"));
     REQUIRE_MESSAGE(on.exit_code == 0, on.output);
     CHECK(segment_kinds(dir.path / "on.json") ==
           std::vector<std::string>{"run", "question", "reveal", "run"});
@@ -135,15 +132,15 @@ TEST_CASE("collide puzzle --questions on asks which board A* expands next, and n
     CHECK(subtitles.find("Answer: ") != std::string::npos);
     CHECK(text_of(dir.path / "chapters.vtt").find("expand next") != std::string::npos);
 
-    const auto off = run_collide(board + "-o " + quoted(dir.path / "off.mp4") +
-                                 " --subtitles-file " + quoted(dir.path / "off.vtt") +
-                                 " --timeline-json " + quoted(dir.path / "off.json"));
+    const auto off = run_collide(board + "-o " + shell_quoted(dir.path / "off.mp4") +
+                                 " --subtitles-file " + shell_quoted(dir.path / "off.vtt") +
+                                 " --timeline-json " + shell_quoted(dir.path / "off.json"));
     REQUIRE_MESSAGE(off.exit_code == 0, off.output);
     CHECK(segment_kinds(dir.path / "off.json") == std::vector<std::string>{"run"});
     CHECK(text_of(dir.path / "off.vtt").find("expand next") == std::string::npos);
 
     const std::string bad =
-        run_collide_bad_input(board + "--questions yes -o " + quoted(dir.path / "bad.mp4"));
+        run_collide_bad_input(board + "--questions yes -o " + shell_quoted(dir.path / "bad.mp4"));
     CHECK(bad.find("--questions") != std::string::npos);
     CHECK_FALSE(fs::exists(dir.path / "bad.mp4"));
 }
@@ -152,11 +149,11 @@ TEST_CASE("collide heap and puzzle --timeline-json: refused for a still, before 
     TempDir dir("lesson_timeline_still");
     const std::string heap = run_collide_bad_input(
         "heap --ops \"P Q\" --questions on --last-frame" + quick + "-o " +
-        quoted(dir.path / "h.png") + " --timeline-json " + quoted(dir.path / "h.json"));
+        shell_quoted(dir.path / "h.png") + " --timeline-json " + shell_quoted(dir.path / "h.json"));
     CHECK(heap.find("--timeline-json") != std::string::npos);
     const std::string puzzle = run_collide_bad_input(
         "puzzle \"1 2 3 4 0 6 7 5 8\" --last-frame --size 854x480 --progress none -o " +
-        quoted(dir.path / "p.png") + " --timeline-json " + quoted(dir.path / "p.json"));
+        shell_quoted(dir.path / "p.png") + " --timeline-json " + shell_quoted(dir.path / "p.json"));
     CHECK(puzzle.find("--timeline-json") != std::string::npos);
     CHECK(fs::is_empty(dir.path));
 }

@@ -29,15 +29,12 @@ using collide::test::read_all;
 using collide::test::run_collide;
 using collide::test::run_collide_shell;
 using collide::test::RunResult;
+using collide::test::shell_quoted;
 using collide::test::TempDir;
 using collide::test::write_file;
 
 bool contains(const std::string& s, const std::string& part) {
     return s.find(part) != std::string::npos;
-}
-
-std::string q(const fs::path& path) {
-    return "'" + path.string() + "'";
 }
 
 /// A short, cheap video: 5 frames at 854x480.
@@ -73,10 +70,12 @@ TEST_CASE("render --format png -o DIR never deletes what it did not create") {
     TempDir dir("outputs_png_dir");
     const fs::path out = dir.path / "out";
     fs::create_directory(out);
-    REQUIRE(run_collide("render gas" + small_video + " -o " + q(out / "gas.mp4")).exit_code == 0);
+    REQUIRE(run_collide("render gas" + small_video + " -o " + shell_quoted(out / "gas.mp4"))
+                .exit_code == 0);
     const std::string video = read_all(out / "gas.mp4");
     // The issue's report: this removed out/gas.mp4.
-    const RunResult r = run_collide("render gas" + small_video + " --format png -o " + q(out));
+    const RunResult r =
+        run_collide("render gas" + small_video + " --format png -o " + shell_quoted(out));
     CHECK(r.exit_code == 2);
     CHECK(contains(r.output, "holds other files ('gas.mp4')"));
     CHECK(read_all(out / "gas.mp4") == video);
@@ -85,10 +84,11 @@ TEST_CASE("render --format png -o DIR never deletes what it did not create") {
 
     // A new directory, then the same one again: an earlier sequence of the same name is replaced.
     const fs::path frames = dir.path / "frames";
-    REQUIRE(run_collide("render gas" + small_video + " --format png -o " + q(frames)).exit_code ==
-            0);
+    REQUIRE(run_collide("render gas" + small_video + " --format png -o " + shell_quoted(frames))
+                .exit_code == 0);
     CHECK(entries(frames).size() == 5);
-    CHECK(run_collide("render gas -q l --duration 0.2 --progress none --format png -o " + q(frames))
+    CHECK(run_collide("render gas -q l --duration 0.2 --progress none --format png -o " +
+                      shell_quoted(frames))
               .exit_code == 0);
     CHECK(entries(frames).size() == 3);  // the whole earlier sequence replaced
     CHECK(entries(dir.path) == std::vector<std::string>{"frames", "out"});
@@ -105,10 +105,10 @@ TEST_CASE("render --format png -o . and -o .. are refused before anything is ren
     // all means the refusal came up front.
     for (const char* bad : {".", "..", "./", "inner/..", "../inner", "/"}) {
         CAPTURE(bad);
-        const RunResult r =
-            run_collide_shell("cd " + q(work / "inner") + " && timeout 60 \"" + COLLIDE_EXE +
-                              "\" render gas --speed 1e300 --no-limits --format png -o '" + bad +
-                              "' --progress none");
+        const RunResult r = run_collide_shell(
+            "cd " + shell_quoted(work / "inner") + " && timeout 60 \"" + COLLIDE_EXE +
+            "\" render gas --speed 1e300 --no-limits --format png -o '" + bad +
+            "' --progress none");
         CHECK(r.exit_code == 2);
         CHECK((contains(r.output, "give it a name") || contains(r.output, "current directory")));
     }
@@ -121,7 +121,7 @@ TEST_CASE("render --format png -o . and -o .. are refused before anything is ren
 TEST_CASE("render: a legal 250-byte file name works") {
     TempDir dir("outputs_long_name");
     const fs::path out = dir.path / (std::string(246, 'v') + ".mp4");
-    const RunResult r = run_collide("render gas" + small_video + " -o " + q(out));
+    const RunResult r = run_collide("render gas" + small_video + " -o " + shell_quoted(out));
     CHECK(r.exit_code == 0);
     CHECK(fs::file_size(out) > 1000);
     CHECK(entries(dir.path).size() == 1);
@@ -132,7 +132,7 @@ TEST_CASE("render: a symlinked output is written through, the link kept") {
     write_file(dir.path / "v1.mp4", "old");
     fs::create_symlink("v1.mp4", dir.path / "latest.mp4");
     const RunResult r =
-        run_collide("render gas" + small_video + " -o " + q(dir.path / "latest.mp4"));
+        run_collide("render gas" + small_video + " -o " + shell_quoted(dir.path / "latest.mp4"));
     CHECK(r.exit_code == 0);
     CHECK(fs::is_symlink(dir.path / "latest.mp4"));
     CHECK(fs::file_size(dir.path / "v1.mp4") > 1000);
@@ -141,12 +141,12 @@ TEST_CASE("render: a symlinked output is written through, the link kept") {
 
 TEST_CASE("render: -o NAME without extension with --format writes that format") {
     TempDir dir("outputs_noext");
-    const RunResult r =
-        run_collide("render gas" + small_video + " --format mp4 -o " + q(dir.path / "noext"));
+    const RunResult r = run_collide("render gas" + small_video + " --format mp4 -o " +
+                                    shell_quoted(dir.path / "noext"));
     CHECK(r.exit_code == 0);
     CHECK(read_all(dir.path / "noext").substr(4, 4) == "ftyp");  // an MP4
-    const RunResult clash =
-        run_collide("render gas" + small_video + " --format mp4 -o " + q(dir.path / "x.gif"));
+    const RunResult clash = run_collide("render gas" + small_video + " --format mp4 -o " +
+                                        shell_quoted(dir.path / "x.gif"));
     CHECK(clash.exit_code == 2);
     CHECK(contains(clash.output, "ends in .gif, but --format is mp4"));
     CHECK_FALSE(contains(clash.output, "or --format"));
@@ -164,7 +164,8 @@ TEST_CASE("render: stale temporaries of a dead run are removed, a live run's are
     write_file(dir.path / stale, "half a video");
     write_file(dir.path / live, "a video being written");
     write_file(dir.path / ".out.mp4.XXXXXX", "not ours: another pattern");
-    const RunResult r = run_collide("render gas" + small_video + " -o " + q(dir.path / "out.mp4"));
+    const RunResult r =
+        run_collide("render gas" + small_video + " -o " + shell_quoted(dir.path / "out.mp4"));
     CHECK(r.exit_code == 0);
     std::vector<std::string> expected{live, ".out.mp4.XXXXXX", "out.mp4"};
     std::sort(expected.begin(), expected.end());
@@ -199,7 +200,7 @@ TEST_CASE("simulate --events-log to a full device is exit 1 with the reason") {
     // Through a link, so that nothing can ever replace /dev/full itself.
     fs::create_symlink("/dev/full", dir.path / "full.csv");
     const RunResult r =
-        run_collide("simulate gas --until 10 --events-log " + q(dir.path / "full.csv"));
+        run_collide("simulate gas --until 10 --events-log " + shell_quoted(dir.path / "full.csv"));
     CHECK(r.exit_code == 1);
     CHECK(contains(r.output, "No space left on device"));
     CHECK(fs::is_symlink(dir.path / "full.csv"));
@@ -208,7 +209,7 @@ TEST_CASE("simulate --events-log to a full device is exit 1 with the reason") {
 TEST_CASE("check --export: an unrelated DEST.partial is left alone") {
     TempDir dir("outputs_partial");
     write_file(dir.path / "x.toml.partial", "the user's own file");
-    const RunResult r = run_collide("check gas --export " + q(dir.path / "x.toml"));
+    const RunResult r = run_collide("check gas --export " + shell_quoted(dir.path / "x.toml"));
     CHECK(r.exit_code == 0);
     CHECK(read_all(dir.path / "x.toml.partial") == "the user's own file");
     CHECK(entries(dir.path) == std::vector<std::string>{"x.toml", "x.toml.partial"});
@@ -217,16 +218,19 @@ TEST_CASE("check --export: an unrelated DEST.partial is left alone") {
 TEST_CASE("check --export: concurrent exports to one path each leave a whole file") {
     TempDir dir("outputs_concurrent");
     const fs::path out = dir.path / "x.toml";
-    REQUIRE(run_collide("check brownian --export " + q(dir.path / "a.toml")).exit_code == 0);
-    REQUIRE(run_collide("check dense-fluid --export " + q(dir.path / "b.toml")).exit_code == 0);
+    REQUIRE(run_collide("check brownian --export " + shell_quoted(dir.path / "a.toml")).exit_code ==
+            0);
+    REQUIRE(
+        run_collide("check dense-fluid --export " + shell_quoted(dir.path / "b.toml")).exit_code ==
+        0);
     const std::string a = read_all(dir.path / "a.toml");
     const std::string b = read_all(dir.path / "b.toml");
     const std::string exe = std::string("\"") + COLLIDE_EXE + "\"";
     for (int round = 0; round < 5; ++round) {
         CAPTURE(round);
-        const std::string both = exe + " check brownian --export " + q(out) + " >/dev/null & " +
-                                 exe + " check dense-fluid --export " + q(out) +
-                                 " >/dev/null & wait";
+        const std::string both = exe + " check brownian --export " + shell_quoted(out) +
+                                 " >/dev/null & " + exe + " check dense-fluid --export " +
+                                 shell_quoted(out) + " >/dev/null & wait";
         CHECK(std::system(both.c_str()) == 0);
         const std::string result = read_all(out);
         CHECK((result == a || result == b));
@@ -238,7 +242,8 @@ TEST_CASE("check --export: a full disk is exit 1, not bad input") {
     TempDir dir("outputs_export_full");
     // A file size limit makes writes fail as a full disk does (EFBIG), on any filesystem.
     const std::string command = "trap '' XFSZ; ulimit -f 1; exec \"" + std::string(COLLIDE_EXE) +
-                                "\" check dense-fluid --export " + q(dir.path / "x.toml");
+                                "\" check dense-fluid --export " +
+                                shell_quoted(dir.path / "x.toml");
     const RunResult r = run_collide_shell(command);
     CHECK(r.exit_code == 1);
     CHECK(contains(r.output, "File too large"));
@@ -251,9 +256,9 @@ TEST_CASE("check --export: a read-only filesystem is exit 2 with the reason") {
     }
     // A private mount namespace: the read-only tmpfs exists for this one command only.
     TempDir dir("outputs_read_only");
-    const std::string command = "unshare -m sh -c \"mount -t tmpfs -o ro none " + q(dir.path) +
-                                " && exec '" + COLLIDE_EXE + "' check gas --export " +
-                                q(dir.path / "x.toml") + "\"";
+    const std::string command = "unshare -m sh -c \"mount -t tmpfs -o ro none " +
+                                shell_quoted(dir.path) + " && exec '" + COLLIDE_EXE +
+                                "' check gas --export " + shell_quoted(dir.path / "x.toml") + "\"";
     const RunResult r = run_collide_shell(command);
     CHECK(r.exit_code == 2);
     CHECK(contains(r.output, "Read-only file system"));
@@ -264,7 +269,7 @@ TEST_CASE("one output rule for render, thumbnail, heap and puzzle (-o, --format,
     // then stops at the path ("directory ... does not exist"), one it refuses names -o or
     // --format; nothing is ever rendered. The same answers for every command.
     const TempDir dir("outputs_rule");
-    const std::string m = q(dir.path / "missing") + "/";
+    const std::string m = shell_quoted(dir.path / "missing") + "/";
     const std::vector<std::string> videos = {"render gas", "heap --ops 'P Q *'",
                                              "puzzle '1 2 3 4 5 6 7 0 8'"};
     struct Case {
@@ -321,17 +326,17 @@ TEST_CASE("render: two outputs that are one file (same name, a link, a hard link
     fs::create_symlink("x.mp4", dir.path / "link.json");
     fs::create_hard_link(video, dir.path / "hard.json");
     for (const std::string layout : {"x.mp4", "link.json", "hard.json"}) {
-        const RunResult r = run_collide("render gas" + small_video + " -o " + q(video) +
-                                        " --layout-json " + q(dir.path / layout));
+        const RunResult r = run_collide("render gas" + small_video + " -o " + shell_quoted(video) +
+                                        " --layout-json " + shell_quoted(dir.path / layout));
         INFO(layout << "\n" << r.output);
         CHECK(r.exit_code == 2);
         CHECK(contains(r.output, "is the same file as -o"));
         CHECK(read_all(video) == "old");
     }
     // A layout inside the directory of frames would vanish with the directory it replaces.
-    const RunResult r =
-        run_collide("render gas" + small_video + " --format png -o " + q(dir.path / "frames") +
-                    " --layout-json " + q(dir.path / "frames" / "l.json"));
+    const RunResult r = run_collide("render gas" + small_video + " --format png -o " +
+                                    shell_quoted(dir.path / "frames") + " --layout-json " +
+                                    shell_quoted(dir.path / "frames" / "l.json"));
     CHECK(r.exit_code == 2);
     CHECK(contains(r.output, "lies inside -o"));
     CHECK(entries(dir.path).size() == 3);  // x.mp4, link.json, hard.json: nothing new
@@ -342,16 +347,16 @@ TEST_CASE("render: a layout that cannot be written leaves the video untouched") 
     TempDir dir("outputs_all_or_nothing");
     const fs::path video = dir.path / "x.mp4";
     write_file(video, "old");
-    const RunResult r =
-        run_collide("render gas" + small_video + " -o " + q(video) + " --layout-json /dev/full");
+    const RunResult r = run_collide("render gas" + small_video + " -o " + shell_quoted(video) +
+                                    " --layout-json /dev/full");
     INFO(r.output);
     CHECK(r.exit_code == 1);
     CHECK(contains(r.output, "No space left on device"));
     CHECK(read_all(video) == "old");  // before: replaced by the new video, then exit 1
     // The same for a still: neither the PNG nor the layout is put in place.
     const fs::path still = dir.path / "x.png";
-    const RunResult s = run_collide("thumbnail gas --size 320x180 --progress none -o " + q(still) +
-                                    " --layout-json /dev/full");
+    const RunResult s = run_collide("thumbnail gas --size 320x180 --progress none -o " +
+                                    shell_quoted(still) + " --layout-json /dev/full");
     CHECK(s.exit_code == 1);
     CHECK(!fs::exists(still));
 }
@@ -360,7 +365,7 @@ TEST_CASE("render --layout-json -: standard output holds the JSON and nothing el
     TempDir dir("outputs_stdout_data");
     const RunResult r =
         run_collide_shell(std::string("\"") + COLLIDE_EXE + "\" render gas" + small_video + " -o " +
-                          q(dir.path / "x.mp4") + " --layout-json - 2>/dev/null");
+                          shell_quoted(dir.path / "x.mp4") + " --layout-json - 2>/dev/null");
     INFO(r.output);
     CHECK(r.exit_code == 0);
     REQUIRE(!r.output.empty());
@@ -394,14 +399,18 @@ TEST_CASE("render: destinations that would fail only at the end are refused befo
     };
     // A name longer than the filesystem's NAME_MAX (pathconf): a file, a directory of frames.
     const std::string long_name(252, 'a');
-    refused("render gas" + small_video + " -o " + q(dir.path / (long_name + ".mp4")), "bytes long");
-    refused("thumbnail gas --size 320x180 -o " + q(dir.path / (long_name + ".png")), "bytes long");
+    refused("render gas" + small_video + " -o " + shell_quoted(dir.path / (long_name + ".mp4")),
+            "bytes long");
+    refused("thumbnail gas --size 320x180 -o " + shell_quoted(dir.path / (long_name + ".png")),
+            "bytes long");
     // A link whose target ends in '/' or '/.' names a directory, not a file.
     fs::create_directory(dir.path / "d.mp4");
     fs::create_symlink("d.mp4/", dir.path / "slash.mp4");
     fs::create_symlink("d.mp4/.", dir.path / "dot.mp4");
-    refused("render gas" + small_video + " -o " + q(dir.path / "slash.mp4"), "names no file");
-    refused("render gas" + small_video + " -o " + q(dir.path / "dot.mp4"), "names no file");
+    refused("render gas" + small_video + " -o " + shell_quoted(dir.path / "slash.mp4"),
+            "names no file");
+    refused("render gas" + small_video + " -o " + shell_quoted(dir.path / "dot.mp4"),
+            "names no file");
     // A bind mount on the same filesystem (same st_dev as its parent): a private mount namespace
     // where the system allows one (root, or unprivileged user namespaces).
     fs::create_directory(dir.path / "src");
@@ -416,14 +425,14 @@ TEST_CASE("render: destinations that would fail only at the end are refused befo
         run_collide_shell("unshare -m true").exit_code == 0 ? "unshare -m" : "unshare -r -m";
     const auto in_namespace = [&](const std::string& source, const std::string& target,
                                   const std::string& args) {
-        return run_collide_shell(unshare + " sh -c \"mount --bind " + q(dir.path / source) + " " +
-                                 q(dir.path / target) + " && exec '" + COLLIDE_EXE + "' " + args +
-                                 "\"");
+        return run_collide_shell(
+            unshare + " sh -c \"mount --bind " + shell_quoted(dir.path / source) + " " +
+            shell_quoted(dir.path / target) + " && exec '" + COLLIDE_EXE + "' " + args + "\"");
     };
     for (const auto& [source, target, args] :
          {std::tuple<std::string, std::string, std::string>{
-              "src", "frames", "--format png -o " + q(dir.path / "frames")},
-          {"file-src.mp4", "file.mp4", "-o " + q(dir.path / "file.mp4")}}) {
+              "src", "frames", "--format png -o " + shell_quoted(dir.path / "frames")},
+          {"file-src.mp4", "file.mp4", "-o " + shell_quoted(dir.path / "file.mp4")}}) {
         const RunResult r = in_namespace(source, target, "render gas" + small_video + " " + args);
         INFO(args << "\n" << r.output);
         if (contains(r.output, "mount:")) COLLIDE_SKIP_TEST("mount --bind refused here");
@@ -459,26 +468,32 @@ TEST_CASE(
     fs::create_hard_link(include, dir.path / "hard.csv");
     const std::vector<std::string> before = entries(dir.path);
 
-    const std::string render = "render " + q(scene) + small_video + " -o " + q(dir.path / "x.mp4");
-    const std::string simulate = "simulate " + q(scene) + " --until 0.1 --events-log ";
+    const std::string render =
+        "render " + shell_quoted(scene) + small_video + " -o " + shell_quoted(dir.path / "x.mp4");
+    const std::string simulate = "simulate " + shell_quoted(scene) + " --until 0.1 --events-log ";
     const std::vector<std::pair<std::string, std::string>> cases = {
-        {render + " --layout-json " + q(scene), "--layout-json"},
-        {render + " --timeline-json " + q(dir.path / "soft.json"), "--timeline-json"},
-        {render + " --layout-json " + q(dir.path / "hard.json"), "--layout-json"},
-        {render + " --subtitles-file " + q(dir.path / "hard.srt"), "--subtitles-file"},
-        {render + " --chapters-file " + q(dir.path / "hard.vtt"), "--chapters-file"},
-        {"render " + q(scene) + small_video + " -o " + q(dir.path / "hard.mp4"), "hard.mp4"},
-        {"thumbnail " + q(scene) + " --size 320x180 --progress none -o " + q(dir.path / "hard.png"),
+        {render + " --layout-json " + shell_quoted(scene), "--layout-json"},
+        {render + " --timeline-json " + shell_quoted(dir.path / "soft.json"), "--timeline-json"},
+        {render + " --layout-json " + shell_quoted(dir.path / "hard.json"), "--layout-json"},
+        {render + " --subtitles-file " + shell_quoted(dir.path / "hard.srt"), "--subtitles-file"},
+        {render + " --chapters-file " + shell_quoted(dir.path / "hard.vtt"), "--chapters-file"},
+        {"render " + shell_quoted(scene) + small_video + " -o " +
+             shell_quoted(dir.path / "hard.mp4"),
+         "hard.mp4"},
+        {"thumbnail " + shell_quoted(scene) + " --size 320x180 --progress none -o " +
+             shell_quoted(dir.path / "hard.png"),
          "hard.png"},
-        {simulate + q(include), "--events-log"},
-        {simulate + q(dir.path / "soft.csv"), "--events-log"},
-        {simulate + q(dir.path / "hard.csv"), "--events-log"},
-        {render + " --font " + q(font) + " --layout-json " + q(font), "--layout-json"},
-        {"heap --ops 'P Q E' --size 320x180 --progress none --font " + q(font) + " -o " +
-             q(dir.path / "font.mp4"),
+        {simulate + shell_quoted(include), "--events-log"},
+        {simulate + shell_quoted(dir.path / "soft.csv"), "--events-log"},
+        {simulate + shell_quoted(dir.path / "hard.csv"), "--events-log"},
+        {render + " --font " + shell_quoted(font) + " --layout-json " + shell_quoted(font),
+         "--layout-json"},
+        {"heap --ops 'P Q E' --size 320x180 --progress none --font " + shell_quoted(font) + " -o " +
+             shell_quoted(dir.path / "font.mp4"),
          "font.mp4"},
-        {"check " + q(scene) + " --export " + q(scene), "s.toml"},
-        {"check " + q(scene) + " --export " + q(dir.path / "hard.toml"), "hard.toml"},
+        {"check " + shell_quoted(scene) + " --export " + shell_quoted(scene), "s.toml"},
+        {"check " + shell_quoted(scene) + " --export " + shell_quoted(dir.path / "hard.toml"),
+         "hard.toml"},
     };
     for (const auto& [args, named] : cases) {
         const RunResult r = run_collide(args);
@@ -493,12 +508,12 @@ TEST_CASE(
     }
     // Standard output appended to the scene would write into it (stderr stays on the pipe).
     const RunResult appended = run_collide_shell("'" + std::string(COLLIDE_EXE) + "' " + simulate +
-                                                 "- 2>&1 >>" + q(scene));
+                                                 "- 2>&1 >>" + shell_quoted(scene));
     CHECK_MESSAGE(appended.exit_code == 2, appended.output);
     CHECK(contains(appended.output, "which this run reads"));
     CHECK(read_all(scene) == scene_text);
     // The same outputs elsewhere are fine.
-    const RunResult ok = run_collide(simulate + q(dir.path / "events.csv"));
+    const RunResult ok = run_collide(simulate + shell_quoted(dir.path / "events.csv"));
     CHECK_MESSAGE(ok.exit_code == 0, ok.output);
 }
 
@@ -506,11 +521,11 @@ TEST_CASE("compare never writes its difference image over an image it compares")
     TempDir dir("outputs_compare_inputs");
     const fs::path golden = dir.path / "golden.png";
     const fs::path fresh = dir.path / "new.png";
-    REQUIRE(run_collide("thumbnail gas --size 320x180 --progress none -o " + q(golden)).exit_code ==
-            0);
+    REQUIRE(run_collide("thumbnail gas --size 320x180 --progress none -o " + shell_quoted(golden))
+                .exit_code == 0);
     REQUIRE(
-        run_collide("thumbnail brownian --size 320x180 --progress none -o " + q(fresh)).exit_code ==
-        0);
+        run_collide("thumbnail brownian --size 320x180 --progress none -o " + shell_quoted(fresh))
+            .exit_code == 0);
     const std::string golden_bytes = read_all(golden);
     const std::string fresh_bytes = read_all(fresh);
     fs::create_hard_link(golden, dir.path / "hard.png");
@@ -520,12 +535,15 @@ TEST_CASE("compare never writes its difference image over an image it compares")
     fs::copy_file(fresh, dir.path / "x.png");
     const std::vector<std::string> before = entries(dir.path);
     const std::vector<std::string> cases = {
-        q(golden) + " " + q(fresh) + " --diff " + q(golden),
-        q(golden) + " " + q(fresh) + " --diff " + q(fresh),
-        q(golden) + " " + q(fresh) + " --diff " + q(dir.path / "." / "golden.png"),
-        q(golden) + " " + q(fresh) + " --diff " + q(dir.path / "hard.png"),
-        q(golden) + " " + q(fresh) + " --diff " + q(dir.path / "soft.png"),
-        q(dir.path / "x.diff.png") + " " + q(dir.path / "x.png"),
+        shell_quoted(golden) + " " + shell_quoted(fresh) + " --diff " + shell_quoted(golden),
+        shell_quoted(golden) + " " + shell_quoted(fresh) + " --diff " + shell_quoted(fresh),
+        shell_quoted(golden) + " " + shell_quoted(fresh) + " --diff " +
+            shell_quoted(dir.path / "." / "golden.png"),
+        shell_quoted(golden) + " " + shell_quoted(fresh) + " --diff " +
+            shell_quoted(dir.path / "hard.png"),
+        shell_quoted(golden) + " " + shell_quoted(fresh) + " --diff " +
+            shell_quoted(dir.path / "soft.png"),
+        shell_quoted(dir.path / "x.diff.png") + " " + shell_quoted(dir.path / "x.png"),
     };
     for (const std::string& args : cases) {
         const RunResult r = run_collide("compare " + args);
@@ -538,7 +556,7 @@ TEST_CASE("compare never writes its difference image over an image it compares")
         CHECK(read_all(dir.path / "x.diff.png") == golden_bytes);
         CHECK(entries(dir.path) == before);
     }
-    const RunResult r = run_collide("compare " + q(golden) + " " + q(fresh));
+    const RunResult r = run_collide("compare " + shell_quoted(golden) + " " + shell_quoted(fresh));
     CHECK_MESSAGE(r.exit_code == 1, r.output);  // they differ: new.diff.png is written
     CHECK(fs::exists(dir.path / "new.diff.png"));
 }
@@ -559,11 +577,12 @@ TEST_CASE("render: when the slide folder cannot go in place, no output of the ru
     // sidecars and the layout are all written. The frames go to a FIFO this script reads, so
     // the change comes at a known moment: once the first frame is drawn.
     const std::string script =
-        "mkfifo " + q(fifo) + " || exit 99; exec 3<>" + q(fifo) + "; '" + COLLIDE_EXE +
-        "' render gas -q l --duration 0.5 --progress none -o " + q(video) + " --subtitles-file " +
-        q(srt) + " --chapters-file " + q(chapters) + " --layout-json " + q(layout) + " --slides " +
-        q(slides) + " --dump-rgba " + q(fifo) +
-        " & pid=$!; head -c 1 <&3 >/dev/null; echo notes > " + q(slides / "notes.txt") +
+        "mkfifo " + shell_quoted(fifo) + " || exit 99; exec 3<>" + shell_quoted(fifo) + "; '" +
+        COLLIDE_EXE + "' render gas -q l --duration 0.5 --progress none -o " + shell_quoted(video) +
+        " --subtitles-file " + shell_quoted(srt) + " --chapters-file " + shell_quoted(chapters) +
+        " --layout-json " + shell_quoted(layout) + " --slides " + shell_quoted(slides) +
+        " --dump-rgba " + shell_quoted(fifo) +
+        " & pid=$!; head -c 1 <&3 >/dev/null; echo notes > " + shell_quoted(slides / "notes.txt") +
         "; cat <&3 >/dev/null & reader=$!; wait $pid; rc=$?; kill $reader; exit $rc";
     const RunResult r = run_collide_shell(script);
     INFO(r.output);

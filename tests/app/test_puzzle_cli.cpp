@@ -17,6 +17,7 @@
 using collide::test::run_collide;
 using collide::test::run_collide_bad_input;
 using collide::test::run_command;
+using collide::test::shell_quoted;
 using collide::test::TempDir;
 namespace fs = std::filesystem;
 
@@ -40,10 +41,6 @@ std::size_t occurrences(const std::string& haystack, const std::string& needle) 
 std::string bytes_of(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-std::string quoted(const fs::path& path) {
-    return "\"" + path.string() + "\"";
 }
 
 }  // namespace
@@ -80,7 +77,7 @@ TEST_CASE("collide puzzle --solve and --json run in `collide` alone: no collide-
     fs::create_directories(alone.parent_path());
     fs::copy_file(COLLIDE_EXE, alone);
     const auto run_alone = [&](const std::string& args) {
-        return run_command(quoted(alone) + " " + args + " 2>&1");
+        return run_command(shell_quoted(alone) + " " + args + " 2>&1");
     };
     for (const std::string args : {"puzzle \"8 1 3 4 0 2 7 6 5\" --solve",
                                    "puzzle random --moves 20 --seed 3 --json --pq dary:3"}) {
@@ -95,7 +92,8 @@ TEST_CASE("collide puzzle --solve and --json run in `collide` alone: no collide-
     CHECK(refused.exit_code == 2);
     CHECK(contains(refused.output, "--json prints text instead of a video"));
     // A video is collide-draw's: here it is missing, and the message says so.
-    const auto video = run_alone("puzzle \"1 2 3 4 0 6 7 5 8\" -o " + quoted(dir.path / "p.mp4"));
+    const auto video =
+        run_alone("puzzle \"1 2 3 4 0 6 7 5 8\" -o " + shell_quoted(dir.path / "p.mp4"));
     CHECK(video.exit_code == 1);
     CHECK(contains(video.output, "collide-draw for `collide puzzle`"));
     CHECK_FALSE(fs::exists(dir.path / "p.mp4"));
@@ -104,13 +102,13 @@ TEST_CASE("collide puzzle --solve and --json run in `collide` alone: no collide-
 TEST_CASE("collide puzzle renders byte-identical videos whose last frame is --last-frame's") {
     TempDir dir("puzzle_video");
     const std::string board = "puzzle \"1 2 3 4 0 6 7 5 8\"" + quick;
-    const auto first = run_collide(board + "-o " + quoted(dir.path / "a.mp4"));
+    const auto first = run_collide(board + "-o " + shell_quoted(dir.path / "a.mp4"));
     REQUIRE_MESSAGE(first.exit_code == 0, first.output);
-    REQUIRE(run_collide(board + "-o " + quoted(dir.path / "b.mp4")).exit_code == 0);
+    REQUIRE(run_collide(board + "-o " + shell_quoted(dir.path / "b.mp4")).exit_code == 0);
     CHECK(fs::file_size(dir.path / "a.mp4") > 1000);
     CHECK(bytes_of(dir.path / "a.mp4") == bytes_of(dir.path / "b.mp4"));
 
-    const auto frames = run_collide(board + "--format png -o " + quoted(dir.path / "frames"));
+    const auto frames = run_collide(board + "--format png -o " + shell_quoted(dir.path / "frames"));
     REQUIRE_MESSAGE(frames.exit_code == 0, frames.output);
     std::vector<fs::path> pngs;
     for (const auto& entry : fs::directory_iterator(dir.path / "frames")) {
@@ -121,7 +119,7 @@ TEST_CASE("collide puzzle renders byte-identical videos whose last frame is --la
     REQUIRE(pngs.size() > 20);
 
     const fs::path last = dir.path / "last.png";
-    const auto still = run_collide(board + "--last-frame -o " + quoted(last));
+    const auto still = run_collide(board + "--last-frame -o " + shell_quoted(last));
     REQUIRE_MESSAGE(still.exit_code == 0, still.output);
     const collide::Image image = collide::video::read_png(last);
     CHECK(image.width == 854);
@@ -133,7 +131,7 @@ TEST_CASE("collide puzzle renders byte-identical videos whose last frame is --la
 
 TEST_CASE("collide puzzle: bad boards name the token and unsolvable boards and budgets say why") {
     TempDir dir("puzzle_bad");
-    const std::string out = " -o " + quoted(dir.path / "x.mp4");
+    const std::string out = " -o " + shell_quoted(dir.path / "x.mp4");
     CHECK(contains(run_collide_bad_input("puzzle \"1 2 3 4 x 6 7 5 8\"" + out),
                    "board: 'x' (token 5) is not a tile"));
     CHECK(contains(run_collide_bad_input("puzzle \"1 2 3 4 0 6 7 5 5\"" + out),
@@ -146,7 +144,7 @@ TEST_CASE("collide puzzle: bad boards name the token and unsolvable boards and b
     CHECK(contains(budget, "--method astar"));
     CHECK(run_collide("puzzle random --side 4 --moves 60 --seed 5 --solve --method astar")
               .exit_code == 0);
-    const std::string png = " -o " + quoted(dir.path / "x.png");
+    const std::string png = " -o " + shell_quoted(dir.path / "x.png");
     for (const char* at : {"-1", "1e9", "nan"}) {
         CHECK(contains(run_collide_bad_input("puzzle random --at " + std::string(at) + png),
                        "--at: expected a time within the video"));
@@ -161,7 +159,7 @@ TEST_CASE(
     const std::string board = "puzzle \"1 2 3 4 0 6 7 5 8\"" + quick;
     const auto mean_brightness = [&](const std::string& theme, const char* name) {
         const fs::path png = dir.path / name;
-        const auto r = run_collide(board + "--last-frame " + theme + " -o " + quoted(png));
+        const auto r = run_collide(board + "--last-frame " + theme + " -o " + shell_quoted(png));
         REQUIRE_MESSAGE(r.exit_code == 0, r.output);
         const collide::Image image = collide::video::read_png(png);
         double sum = 0.0;
@@ -176,8 +174,9 @@ TEST_CASE(
     CHECK(light > 180.0);
     CHECK(light - dark > 80.0);
     CHECK(mean_brightness("--theme dark", "dark2.png") == doctest::Approx(dark));
-    CHECK(contains(run_collide_bad_input(board + "--theme sepia -o " + quoted(dir.path / "x.mp4")),
-                   "--theme: expected a theme (dark or light), got 'sepia'"));
+    CHECK(contains(
+        run_collide_bad_input(board + "--theme sepia -o " + shell_quoted(dir.path / "x.mp4")),
+        "--theme: expected a theme (dark or light), got 'sepia'"));
     CHECK(contains(run_collide_bad_input("puzzle \"1 2 3 4 0 6 7 5 8\" --solve --theme light"),
                    "--theme"));
     CHECK_FALSE(fs::exists(dir.path / "x.mp4"));
@@ -188,16 +187,16 @@ TEST_CASE("collide puzzle --code: A* beside its loop and both searches or a text
     const std::string board = "puzzle \"5 2 8 1 0 4 7 6 3\"" + quick;
     // The start's expansion, mid-walk: one search (A* by default) with the listing beside it.
     const fs::path code = dir.path / "code.png";
-    const auto r = run_collide(board + "--code --at 4 -o " + quoted(code));
+    const auto r = run_collide(board + "--code --at 4 -o " + shell_quoted(code));
     REQUIRE_MESSAGE(r.exit_code == 0, r.output);
     const fs::path plain = dir.path / "plain.png";
-    REQUIRE(run_collide(board + "--method astar --at 4 -o " + quoted(plain)).exit_code == 0);
+    REQUIRE(run_collide(board + "--method astar --at 4 -o " + shell_quoted(plain)).exit_code == 0);
     CHECK(bytes_of(code) != bytes_of(plain));
-    CHECK(run_collide(board + "--code --method bfs --at 4 -o " + quoted(dir.path / "bfs.png"))
+    CHECK(run_collide(board + "--code --method bfs --at 4 -o " + shell_quoted(dir.path / "bfs.png"))
               .exit_code == 0);
     // Refused before any search or drawing, with words that say what to do.
-    const std::string both =
-        run_collide_bad_input(board + "--code --method both -o " + quoted(dir.path / "x.mp4"));
+    const std::string both = run_collide_bad_input(board + "--code --method both -o " +
+                                                   shell_quoted(dir.path / "x.mp4"));
     CHECK(contains(both, "--code"));
     CHECK(contains(both, "--method astar"));
     for (const char* mode : {"--solve", "--json"}) {

@@ -27,6 +27,7 @@ using collide::test::check_golden;
 using collide::test::have_ffprobe;
 using collide::test::run_collide;
 using collide::test::share_of_differing_pixels;
+using collide::test::shell_quoted;
 
 namespace {
 
@@ -393,7 +394,7 @@ TEST_CASE("render --gl: an unknown backend, or one beside --preview, exits 2 nam
 }
 
 namespace {
-/// The engines' counts from a summary line ("engines: time-driven ... (N overlap checks), ...").
+/// The engines' counts from a summary line ("engines: time-driven ... (N pair tests: ...), ...").
 std::string engine_counts(const std::string& output) {
     const std::size_t at = output.find("engines:");
     if (at == std::string::npos) return {};
@@ -567,6 +568,56 @@ TEST_CASE("the cost graphic's numbers and ratio on screen are the engines' count
     const double shown = std::stod(ratio[0]);
     const double exact = time_work / event_work;
     CHECK(std::abs(shown - exact) <= 0.005 * exact + 0.5);
+}
+
+TEST_CASE("thumbnail's summary line says the time-driven panel's work in its words and digits") {
+    // The panel's cost graphic counts pair tests (overlap checks and the roll-backs'
+    // contact-time computations); the line printed once used to give the overlap checks alone,
+    // under another name (3,056,625 beside the panel's 3,056,956 for this scene at t = 3).
+    TempDir dir("cost_line");
+    const fs::path json = dir.path / "layout.json";
+    const auto r = run_collide("thumbnail tunnelling --at 3 --size 1280x720 -o " +
+                               shell_quoted((dir.path / "t.png").string()) + " --layout-json " +
+                               shell_quoted(json.string()));
+    REQUIRE_MESSAGE(r.exit_code == 0, r.output);
+    const std::string text = read_bytes(json);
+    const std::vector<std::string> labels = texts_of(text, "cost-label");
+    const std::vector<std::string> values = texts_of(text, "cost-value");
+    REQUIRE(labels.size() == 2);
+    REQUIRE(values.size() == 2);
+    CHECK(labels[0] == "pair tests");
+    // "time-driven 0.01 s (3,056,956 pair tests: 3,056,625 overlap checks + 331 contact-time
+    // computations)": the panel's figure and label, then what the figure is made of.
+    const std::string line = values[0] + " " + labels[0] + ": ";
+    const std::size_t at = r.output.find(line);
+    REQUIRE_MESSAGE(at != std::string::npos, r.output);
+    const std::size_t checks_end = r.output.find(" overlap checks + ", at);
+    const std::size_t solves_end = r.output.find(" contact-time computations)", at);
+    REQUIRE(checks_end != std::string::npos);
+    REQUIRE(solves_end != std::string::npos);
+    const std::size_t solves_at = checks_end + std::string(" overlap checks + ").size();
+    const double checks =
+        count_in(r.output.substr(at + line.size(), checks_end - at - line.size()));
+    const double solves = count_in(r.output.substr(solves_at, solves_end - solves_at));
+    CHECK(checks > 0.0);
+    CHECK(solves > 0.0);  // this scene's roll-backs solve contact times
+    CHECK(checks + solves == count_in(values[0]));
+
+    // A --dt list: a panel per step, each bar labelled with its step, the line a figure each.
+    const auto list = run_collide(
+        "thumbnail tunnelling --dt 0.01,0.02,0.04 --at 2 --size "
+        "1280x720 -o " +
+        shell_quoted((dir.path / "dt.png").string()) + " --layout-json " +
+        shell_quoted(json.string()));
+    REQUIRE_MESSAGE(list.exit_code == 0, list.output);
+    const std::vector<std::string> steps = texts_of(read_bytes(json), "cost-value");
+    REQUIRE(steps.size() == 4);  // three steps, then the event-driven panel
+    std::size_t from = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        CAPTURE(steps[i]);
+        from = list.output.find(steps[i] + " pair tests: ", from);
+        CHECK(from != std::string::npos);
+    }
 }
 
 // Failures that did not fit the figures row continued on the how line and took it: brownian's

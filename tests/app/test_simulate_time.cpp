@@ -10,6 +10,7 @@
 #include "run_collide.hpp"
 
 using collide::test::run_collide;
+using collide::test::shell_quoted;
 
 namespace {
 
@@ -33,13 +34,7 @@ class TunnelScene {
         std::error_code ignored;
         std::filesystem::remove(path_, ignored);
     }
-    [[nodiscard]] std::string path() const {
-        // Appended, not "\"" + ...: GCC 12 -O2 warns falsely there (-Wrestrict, PR 105329).
-        std::string quoted(1, '"');
-        quoted += path_.string();
-        quoted += '"';
-        return quoted;
-    }
+    [[nodiscard]] std::string path() const { return shell_quoted(path_.string()); }
 
   private:
     std::filesystem::path path_;

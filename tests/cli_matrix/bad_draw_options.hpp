@@ -1,7 +1,7 @@
 #pragma once
-// The bad option sets of `collide render` and `collide thumbnail` that the option matrix refuses
-// (test_option_matrix.cpp), shared with the test that `collide` refuses them itself, with
-// collide-draw's words, without starting it (tests/app/test_draw_checks_cli.cpp).
+// The bad option sets of `collide render`, `collide thumbnail` and `collide heap` that the option
+// matrix refuses (test_option_matrix.cpp), shared with the test that `collide` refuses them
+// itself, with collide-draw's words, without starting it (tests/app/test_draw_checks_cli.cpp).
 
 #include <string>
 #include <vector>
@@ -97,6 +97,29 @@ inline std::vector<Bad> bad_thumbnail_options() {
     cases.push_back({"gas --engine time" + never + ".png", "--engine", "fast or classic"});
     cases.push_back({"gas --at 1 --queue 0" + never + ".png", "--queue"});
     cases.push_back({"gas --at 1 --queue --mode time" + never + ".png", "--queue"});
+    return cases;
+}
+
+/// heap: its numbers and names, its frame, its destination and --code.
+inline std::vector<Bad> bad_heap_options() {
+    std::vector<Bad> cases;
+    for (const char* v : {"0", "-1", "nan", "inf", "61"})
+        cases.push_back({std::string("--ops P --pace ") + v + never + ".mp4", "--pace"});
+    cases.push_back({"--ops P --index-base 2" + never + ".mp4", "--index-base", "0 or 1"});
+    for (const char* v : {"0", "241", "abc"})
+        cases.push_back({std::string("--ops P --fps ") + v + never + ".mp4", "--fps", "",
+                         v == std::string("abc")});
+    cases.push_back({"--ops P --impl heap" + never + ".mp4", "--impl", "got 'heap'"});
+    cases.push_back({"--ops P --impl dary:65" + never + ".mp4", "--impl", "from 2 to 64"});
+    cases.push_back({"--ops P --size 10x10" + never + ".mp4", "--size"});
+    cases.push_back({"--ops P -q z" + never + ".mp4", "-q"});
+    cases.push_back({"--ops P --progress loud" + never + ".mp4", "--progress"});
+    cases.push_back({"--ops P --at -1" + never + ".png", "--at"});
+    cases.push_back({"--ops P --last-frame --format gif" + never + ".png", "--format"});
+    cases.push_back({"--ops P" + never + ".txt", "-o", "a .mp4 or .gif path"});
+    // --code: one heap's pseudocode; none for arrays or several panels.
+    cases.push_back({"--ops P --code --impl ordered" + never + ".mp4", "--code", "one heap"});
+    cases.push_back({"--ops P --code --impl binary,dary:3" + never + ".mp4", "--code", "one heap"});
     return cases;
 }
 

@@ -13,17 +13,12 @@
 
 using collide::test::run_collide;
 using collide::test::run_command;
+using collide::test::shell_quoted;
 using collide::test::TempDir;
 
 namespace fs = std::filesystem;
 
-namespace {
-
-std::string quoted(const fs::path& path) {
-    return "\"" + path.string() + "\"";
-}
-
-}  // namespace
+namespace {}  // namespace
 
 TEST_CASE("lean: no libav among the drawing program's libraries, and --version says so") {
     const auto needed = run_command(std::string("readelf -d \"") + COLLIDE_DRAW_EXE + "\" 2>&1");
@@ -44,33 +39,35 @@ TEST_CASE("lean: a thumbnail, compared with itself and with another moment") {
     const fs::path a = dir.path / "a.png";
     const fs::path b = dir.path / "b.png";
     const fs::path c = dir.path / "c.png";
-    REQUIRE(run_collide("thumbnail tunnelling -q l --at 1 -o " + quoted(a)).exit_code == 0);
-    REQUIRE(run_collide("thumbnail tunnelling -q l --at 1 -o " + quoted(b)).exit_code == 0);
-    REQUIRE(run_collide("thumbnail tunnelling -q l --at 3 -o " + quoted(c)).exit_code == 0);
+    REQUIRE(run_collide("thumbnail tunnelling -q l --at 1 -o " + shell_quoted(a)).exit_code == 0);
+    REQUIRE(run_collide("thumbnail tunnelling -q l --at 1 -o " + shell_quoted(b)).exit_code == 0);
+    REQUIRE(run_collide("thumbnail tunnelling -q l --at 3 -o " + shell_quoted(c)).exit_code == 0);
     const collide::Image image = collide::video::read_png(a);
     CHECK(image.width == 854);
     CHECK(image.height == 480);
-    CHECK(run_collide("compare " + quoted(a) + " " + quoted(b)).exit_code == 0);
-    CHECK(run_collide("compare " + quoted(a) + " " + quoted(c)).exit_code == 1);
+    CHECK(run_collide("compare " + shell_quoted(a) + " " + shell_quoted(b)).exit_code == 0);
+    CHECK(run_collide("compare " + shell_quoted(a) + " " + shell_quoted(c)).exit_code == 1);
 }
 
 TEST_CASE("lean: PNG frames and a last frame are written, an MP4 or a GIF is refused (exit 2)") {
     TempDir dir("lean_video");
     const fs::path frames = dir.path / "frames";
     const auto written =
-        run_collide("render gas -q l --duration 0.2 --format png -o " + quoted(frames));
+        run_collide("render gas -q l --duration 0.2 --format png -o " + shell_quoted(frames));
     CHECK(written.exit_code == 0);
     CHECK(fs::exists(frames / "frames_00000.png"));
     const fs::path last = dir.path / "last.png";
-    CHECK(run_collide("render gas -q l --duration 0.5 --last-frame -o " + quoted(last)).exit_code ==
-          0);
+    CHECK(run_collide("render gas -q l --duration 0.5 --last-frame -o " + shell_quoted(last))
+              .exit_code == 0);
     CHECK(fs::exists(last));
     for (const std::string& args :
-         {std::string("render gas -q l --duration 1 -o ") + quoted(dir.path / "v.mp4"),
-          std::string("render gas -q l --duration 1 -o ") + quoted(dir.path / "v.gif"),
-          std::string("render gas -q l --duration 1 --format gif -o ") + quoted(dir.path / "w"),
-          std::string("heap --ops \"P Q E *\" -q l -o ") + quoted(dir.path / "h.mp4"),
-          std::string("puzzle \"1 2 3 4 0 6 7 5 8\" -q l -o ") + quoted(dir.path / "p.gif")}) {
+         {std::string("render gas -q l --duration 1 -o ") + shell_quoted(dir.path / "v.mp4"),
+          std::string("render gas -q l --duration 1 -o ") + shell_quoted(dir.path / "v.gif"),
+          std::string("render gas -q l --duration 1 --format gif -o ") +
+              shell_quoted(dir.path / "w"),
+          std::string("heap --ops \"P Q E *\" -q l -o ") + shell_quoted(dir.path / "h.mp4"),
+          std::string("puzzle \"1 2 3 4 0 6 7 5 8\" -q l -o ") +
+              shell_quoted(dir.path / "p.gif")}) {
         CAPTURE(args);
         const auto refused = run_collide(args);
         CHECK(refused.exit_code == 2);

@@ -68,6 +68,8 @@ inline constexpr std::size_t max_heap_panels = 6;
 /// of the width) 21 / panels.
 [[nodiscard]] std::size_t max_legible_keys(std::size_t panels, bool code = false) noexcept;
 
+class HeapDrawTarget;  // internal: the GL half (src/render/heap_draw_target.hpp)
+
 /// Draws lesson frames with a GL context it owns. Not thread-safe; one per thread.
 class HeapRenderer {
   public:
@@ -110,6 +112,8 @@ class HeapRenderer {
   private:
     struct Impl;
     explicit HeapRenderer(std::unique_ptr<Impl> impl);
+    /// Draws through `target` (heap_view_gl.cpp's GL one), or none: layout only.
+    HeapRenderer(const HeapViewConfig& config, std::unique_ptr<HeapDrawTarget> target);
     std::unique_ptr<Impl> impl_;
 };
 

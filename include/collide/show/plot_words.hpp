@@ -29,4 +29,9 @@ inline constexpr double smallest_drift_scale = 1e-12;
 /// The same in words where its digits do not fit: "12.3 million", "4.56 billion".
 [[nodiscard]] std::string cost_in_words(double cost);
 
+/// The time-driven panel's cost label: its work (work_done, collide/show/collision.hpp) is pair
+/// tests, the overlap checks and the contact-time computations of its roll-backs. `render` and
+/// `thumbnail` print the same figure (cost_text) under the same words.
+inline constexpr const char* time_driven_cost_label = "pair tests";
+
 }  // namespace collide::show
