@@ -281,6 +281,7 @@ class BasicFastEngine final : public EngineOf<D> {
     void scan_list(std::uint32_t i, const Particle& pi, Vec xi, std::uint32_t first, Vec shift,
                    Key& best);
     void scan_ring(std::uint32_t i, const Particle& pi, Vec xi, Key& best);
+    /// Offers i's wall events (a walled box) and, without lists, its cell crossings.
     void consider_walls_and_cells(std::uint32_t i, const Particle& pi, Vec xi, Key& best);
     // --- neighbour lists (lists_)
     /// lists_, known false at compile time in 2D (the discs' loop keeps its code as it was).
