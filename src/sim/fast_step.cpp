@@ -122,16 +122,13 @@ void BasicFastEngine<D>::process_pair(std::uint32_t i, std::uint32_t j, double t
     Particle& pi = p_[i];
     Particle& pj = p_[j];
     // At contact the true image is the nearest one (boxes are wider than 2 sigma).
+    // box_.displacement's arithmetic, its std::round calls replaced (2 % of a collision's
+    // instructions at 10^5 discs, 1.3 % at 4000 spheres).
     Vec dr = pj.x - pi.x;
-    if constexpr (D == 2) {
-        // box_.displacement's arithmetic, its std::round calls replaced (2 % of a collision's
-        // instructions at 10^5 discs).
-        if (periodic_) {
-            dr.x -= box_.width * round_near_zero(dr.x / box_.width);
-            dr.y -= box_.height * round_near_zero(dr.y / box_.height);
-        }
-    } else {
-        dr = box_.displacement(pi.x, pj.x);
+    if (periodic_) {
+        dr.x -= box_.width * round_near_zero(dr.x / box_.width);
+        dr.y -= box_.height * round_near_zero(dr.y / box_.height);
+        if constexpr (D == 3) dr.z -= box_.depth * round_near_zero(dr.z / box_.depth);
     }
     const Vec impulse = kinematics::resolve_pair(pi.v, pj.v, cold_[i].m, cold_[j].m, dr);
     core_.counters().impulses.virial += std::abs(dot(dr, impulse));
