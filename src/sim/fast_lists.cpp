@@ -164,18 +164,29 @@ void BasicFastEngine<D>::gather_neighbours(std::uint32_t i, bool only_after) {
             const std::uint32_t count = member_count_[near[c].cell];
             // j is seen from i through the cell's image, and i from j through the opposite one.
             const auto opposite = static_cast<std::uint32_t>(image_shift_.size() - 1) - image;
-            for (std::uint32_t k = 0; k < count; ++k) {
-                const std::uint32_t j = members[k];
-                if (j == i || (after && j < i)) continue;
-                double reach2 = reach2_equal;
-                if constexpr (!equal_radii) {
-                    const double reach = ri + p_[j].r + shell;
-                    reach2 = reach * reach;
+            // Most cells are seen through no image: no shift to add (adding a zero one changes
+            // no distance), and no image code to set either list's wraps_ by.
+            const auto members_within = [&](auto shifted) {
+                for (std::uint32_t k = 0; k < count; ++k) {
+                    const std::uint32_t j = members[k];
+                    if (j == i || (after && j < i)) continue;
+                    double reach2 = reach2_equal;
+                    if constexpr (!equal_radii) {
+                        const double reach = ri + p_[j].r + shell;
+                        reach2 = reach * reach;
+                    }
+                    Vec d = centres[j];
+                    if constexpr (shifted) d += shift;
+                    if (norm2(d - ci) <= reach2) {
+                        add_neighbour(i, j, shifted ? image : no_image_shift);
+                        add_neighbour(j, i, shifted ? opposite : no_image_shift);
+                    }
                 }
-                if (norm2(centres[j] + shift - ci) <= reach2) {
-                    add_neighbour(i, j, image);
-                    add_neighbour(j, i, opposite);
-                }
+            };
+            if (image == no_image_shift) {
+                members_within(std::false_type{});
+            } else {
+                members_within(std::true_type{});
             }
         }
     };
