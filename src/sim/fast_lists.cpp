@@ -363,8 +363,8 @@ void BasicFastEngine<D>::scan_neighbour_list(std::uint32_t i, const Particle& pi
 }
 
 template <int D>
-double BasicFastEngine<D>::time_to_expiry(std::uint32_t i, const Particle& pi,
-                                          Vec xi) const noexcept {
+inline double BasicFastEngine<D>::time_to_expiry(std::uint32_t i, const Particle& pi,
+                                                 Vec xi) const noexcept {
     const Vec d = xi - centre_[i];
     const double a = dot(pi.v, pi.v);
     if (!(a > 0.0)) return never;

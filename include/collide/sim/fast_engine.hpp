@@ -307,7 +307,8 @@ class BasicFastEngine final : public EngineOf<D> {
     /// The image code of the shift from j's centre to its nearest image around i's centre.
     [[nodiscard]] std::uint32_t nearest_image_code(std::uint32_t i, std::uint32_t j) const noexcept;
     /// Time until particle i, at xi now, is shell / 2 from its list centre (never at rest).
-    [[nodiscard]] double time_to_expiry(std::uint32_t i, const Particle& pi, Vec xi) const noexcept;
+    [[nodiscard, gnu::always_inline]] double time_to_expiry(std::uint32_t i, const Particle& pi,
+                                                            Vec xi) const noexcept;
     [[nodiscard]] bool check_lists() const;
 
     // --- the queue
