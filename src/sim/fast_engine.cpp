@@ -131,7 +131,8 @@ std::uint64_t BasicFastEngine<D>::bytes() const noexcept {
     total += (big_.capacity() + head_.capacity() + scene_index_->capacity()) * u32;
     total += (members_.capacity() + member_count_.capacity()) * u32;
     total += image_.capacity() * sizeof(Image) + start_.capacity() * sizeof(Vec);
-    total += centre_.capacity() * sizeof(Vec) + (nbr_.capacity() + nbr_count_.capacity()) * u32;
+    total += centre_.capacity() * sizeof(Vec) + (nbr_.capacity() + nbr_count_.capacity()) * u32 +
+             wraps_.capacity();
     total += queue_.bytes();
     total += core_.bytes();
     return total;

@@ -86,6 +86,7 @@ void BasicFastEngine<D>::build_all_lists() {
     prefetch_records_ = p_.size() * sizeof(Particle) > records_in_cache;
     nbr_.assign(p_.size() * list_cap_, no_disc);
     nbr_count_.assign(p_.size(), 0);
+    wraps_.assign(p_.size(), 0);
     for (std::uint32_t i = 0; i < p_.size(); ++i) {
         if (i % detail::build_stop_poll_particles == 0) this->check_stop();
         gather_neighbours(i, true);
@@ -163,18 +164,29 @@ void BasicFastEngine<D>::gather_neighbours(std::uint32_t i, bool only_after) {
             const std::uint32_t count = member_count_[near[c].cell];
             // j is seen from i through the cell's image, and i from j through the opposite one.
             const auto opposite = static_cast<std::uint32_t>(image_shift_.size() - 1) - image;
-            for (std::uint32_t k = 0; k < count; ++k) {
-                const std::uint32_t j = members[k];
-                if (j == i || (after && j < i)) continue;
-                double reach2 = reach2_equal;
-                if constexpr (!equal_radii) {
-                    const double reach = ri + p_[j].r + shell;
-                    reach2 = reach * reach;
+            // Most cells are seen through no image: no shift to add (adding a zero one changes
+            // no distance), and no image code to set either list's wraps_ by.
+            const auto members_within = [&](auto shifted) {
+                for (std::uint32_t k = 0; k < count; ++k) {
+                    const std::uint32_t j = members[k];
+                    if (j == i || (after && j < i)) continue;
+                    double reach2 = reach2_equal;
+                    if constexpr (!equal_radii) {
+                        const double reach = ri + p_[j].r + shell;
+                        reach2 = reach * reach;
+                    }
+                    Vec d = centres[j];
+                    if constexpr (shifted) d += shift;
+                    if (norm2(d - ci) <= reach2) {
+                        add_neighbour(i, j, shifted ? image : no_image_shift);
+                        add_neighbour(j, i, shifted ? opposite : no_image_shift);
+                    }
                 }
-                if (norm2(centres[j] + shift - ci) <= reach2) {
-                    add_neighbour(i, j, image);
-                    add_neighbour(j, i, opposite);
-                }
+            };
+            if (image == no_image_shift) {
+                members_within(std::false_type{});
+            } else {
+                members_within(std::true_type{});
             }
         }
     };
@@ -223,6 +235,7 @@ inline void BasicFastEngine<D>::add_neighbour(std::uint32_t i, std::uint32_t j,
                                               std::uint32_t image) {
     if (nbr_count_[i] == list_cap_) widen_lists();
     nbr_[std::size_t{i} * list_cap_ + nbr_count_[i]++] = j | (image << list_image_shift);
+    if (image != no_image_shift) wraps_[i] = 1;
 }
 
 template <int D>
@@ -254,6 +267,7 @@ void BasicFastEngine<D>::process_rebuild(std::uint32_t i) {
         remove_neighbour(list[k] & list_index_mask, i);
     }
     nbr_count_[i] = 0;
+    wraps_[i] = 0;
     if (periodic_) {
         // The centre goes back into the box: the particle never strays more than shell / 2.
         for (int k = 0; k < D; ++k) {
@@ -292,7 +306,7 @@ void BasicFastEngine<D>::scan_neighbour_list(std::uint32_t i, const Particle& pi
     // recede, and most of the others cannot beat the best event so far (cannot_beat), so both
     // are one test that goes the same way for most pairs; the rare rest is exact.
     // Locals, not members or `best`: through references the compiler reloads them per pair.
-    const auto scan = [&](auto equal_radii) {
+    const auto scan = [&](auto equal_radii, auto shifted) {
         const double now = now_;
         const Vec vi = pi.v;
         const double ri = pi.r;
@@ -307,9 +321,11 @@ void BasicFastEngine<D>::scan_neighbour_list(std::uint32_t i, const Particle& pi
         for (std::uint32_t k = 0; k < count; ++k) {
             const std::uint32_t j = list[k] & list_index_mask;
             const Particle& pj = p_[j];
-            // j through the image stored with it (no shift away from the box's faces).
-            const Vec dr =
-                pj.x + pj.v * (now - pj.t) + image_shift_[list[k] >> list_image_shift] - xi;
+            // j through the image stored with it (no shift away from the box's faces: adding
+            // a zero shift changes no sum but the sign of a zero, which no test below sees).
+            Vec dr = pj.x + pj.v * (now - pj.t);
+            if constexpr (shifted) dr += image_shift_[list[k] >> list_image_shift];
+            dr = dr - xi;
             const Vec dv = pj.v - vi;
             const double sigma = equal_radii ? sigma_equal : ri + pj.r;
             const double b = dot(dv, dr);
@@ -336,15 +352,19 @@ void BasicFastEngine<D>::scan_neighbour_list(std::uint32_t i, const Particle& pi
         best = found;
     };
     if (equal_radii_) {
-        scan(std::true_type{});
+        if (wraps_[i]) {
+            scan(std::true_type{}, std::true_type{});
+        } else {
+            scan(std::true_type{}, std::false_type{});
+        }
     } else {
-        scan(std::false_type{});
+        scan(std::false_type{}, std::true_type{});
     }
 }
 
 template <int D>
-double BasicFastEngine<D>::time_to_expiry(std::uint32_t i, const Particle& pi,
-                                          Vec xi) const noexcept {
+inline double BasicFastEngine<D>::time_to_expiry(std::uint32_t i, const Particle& pi,
+                                                 Vec xi) const noexcept {
     const Vec d = xi - centre_[i];
     const double a = dot(pi.v, pi.v);
     if (!(a > 0.0)) return never;
@@ -359,7 +379,9 @@ double BasicFastEngine<D>::time_to_expiry(std::uint32_t i, const Particle& pi,
 template <int D>
 bool BasicFastEngine<D>::check_lists() const {
     const std::size_t n = p_.size();
-    if (centre_.size() != n || nbr_count_.size() != n || nbr_.size() != n * list_cap_) return false;
+    if (centre_.size() != n || nbr_count_.size() != n || wraps_.size() != n ||
+        nbr_.size() != n * list_cap_)
+        return false;
     // j is in i's list, seen through its nearest image (the centres of a listed pair are
     // within 2 r + shell, far less than half the box).
     const auto listed = [&](std::uint32_t i, std::uint32_t j) {
@@ -375,6 +397,7 @@ bool BasicFastEngine<D>::check_lists() const {
         for (std::uint32_t k = 0; k < nbr_count_[i]; ++k) {
             const std::uint32_t j = list[k] & list_index_mask;
             if (j >= n || j == i || !listed(i, j) || !listed(j, i)) return false;  // symmetric
+            if (!wraps_[i] && (list[k] >> list_image_shift) != no_image_shift) return false;
             if (std::count_if(list, list + nbr_count_[i],
                               [&](std::uint32_t e) { return (e & list_index_mask) == j; }) != 1)
                 return false;

@@ -222,18 +222,14 @@ void BasicFastEngine<D>::predict_after_crossing(std::uint32_t i, std::uint32_t a
 
 template <int D>
 void BasicFastEngine<D>::predict_listed(std::uint32_t i, const Particle& pi, Vec xi) {
-    // Nothing remembers a pair between predictions here (no crossings), so the walls and the
-    // list's expiry go first: a pair that cannot beat them is skipped before its square root.
-    // The earliest of all by KeyLess is the same whatever the order.
+    // Nothing remembers a pair between predictions here (no crossings), so the list's expiry and
+    // the walls go first: a pair that cannot beat them is skipped before its square root. The
+    // earliest of all by KeyLess is the same whatever the order: the expiry first, which beats
+    // "never" without a compare, then the walls of a walled box.
     Key best = Key::make(never, i, no_disc, EventKind::pair);
-    if (periodic_) {
-        // No walls: the expiry is the first candidate, and beats "never" (what
-        // consider_walls_and_cells would find, without its call and its compare).
-        const double dt = time_to_expiry(i, pi, xi);
-        if (dt != never) best = Key::make(now_ + dt, i, 0, EventKind::cell);
-    } else {
-        consider_walls_and_cells(i, pi, xi, best);
-    }
+    const double dt = time_to_expiry(i, pi, xi);
+    if (dt != never) best = Key::make(now_ + dt, i, 0, EventKind::cell);
+    if (!periodic_) consider_walls_and_cells(i, pi, xi, best);
     scan_neighbour_list(i, pi, xi, best);
     remember_pair(
         i, best.kind() == EventKind::pair ? best : Key::make(never, i, no_disc, EventKind::pair));
@@ -263,10 +259,7 @@ void BasicFastEngine<D>::consider_walls_and_cells(std::uint32_t i, const Particl
         }
         core_.counters().predictions += D;
     }
-    if (lists()) {
-        offer(time_to_expiry(i, pi, xi), EventKind::cell, 0);
-        return;
-    }
+    if (lists()) return;  // no crossings: predict_listed offers the list's expiry
     const Coords c = coords_of(pi.cell);
     // Walled boxes have no crossing out of the outer cells (the wall comes first).
     for (int k = 0; k < D; ++k) {

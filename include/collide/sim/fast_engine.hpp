@@ -281,6 +281,7 @@ class BasicFastEngine final : public EngineOf<D> {
     void scan_list(std::uint32_t i, const Particle& pi, Vec xi, std::uint32_t first, Vec shift,
                    Key& best);
     void scan_ring(std::uint32_t i, const Particle& pi, Vec xi, Key& best);
+    /// Offers i's wall events (a walled box) and, without lists, its cell crossings.
     void consider_walls_and_cells(std::uint32_t i, const Particle& pi, Vec xi, Key& best);
     // --- neighbour lists (lists_)
     /// lists_, known false at compile time in 2D (the discs' loop keeps its code as it was).
@@ -306,7 +307,8 @@ class BasicFastEngine final : public EngineOf<D> {
     /// The image code of the shift from j's centre to its nearest image around i's centre.
     [[nodiscard]] std::uint32_t nearest_image_code(std::uint32_t i, std::uint32_t j) const noexcept;
     /// Time until particle i, at xi now, is shell / 2 from its list centre (never at rest).
-    [[nodiscard]] double time_to_expiry(std::uint32_t i, const Particle& pi, Vec xi) const noexcept;
+    [[nodiscard, gnu::always_inline]] double time_to_expiry(std::uint32_t i, const Particle& pi,
+                                                            Vec xi) const noexcept;
     [[nodiscard]] bool check_lists() const;
 
     // --- the queue
@@ -392,6 +394,12 @@ class BasicFastEngine final : public EngineOf<D> {
     /// The shift of each image code (3^D codes; the one of no shift is (3^D - 1) / 2).
     std::array<Vec, D == 2 ? 9 : 27> image_shift_{};
     pq::BigVector<std::uint32_t> nbr_count_;  ///< used slots per particle
+    /// Per particle, 1 when its list may hold a neighbour seen through a periodic image (set
+    /// when such an entry is added, cleared when the particle rebuilds): a scan of a list
+    /// without one adds no shifts (about half of all scans at 4000 spheres).
+    pq::BigVector<std::uint8_t> wraps_;
+    /// The image code of no shift.
+    static constexpr std::uint32_t no_image_shift = D == 2 ? 4 : 13;
 
     KeyLess key_less_{scene_index_.get()};
     Queue queue_{0, key_less_};
