@@ -83,8 +83,12 @@ class CalendarQueue {
 
     /// Brings the earliest event to the heap's top; false when the calendar is empty. Call it
     /// before top() and top_key() (a const calendar may hold its earliest event in a list).
-    bool settle() {
-        if (walk_ahead_) step_ahead();
+    /// `on_ahead(handle, key)` sees, while entries are walked ahead (see step_ahead), each event
+    /// of the next block, about a block of events before its turn: a caller may ask the cache
+    /// for what that event will read.
+    template <class OnAhead>
+    bool settle(OnAhead&& on_ahead) {
+        if (walk_ahead_) step_ahead(on_ahead);
         while (heap_.empty()) {
             if (far_count_ == 0) return false;
             if (ring_count_ > 0) {
@@ -95,6 +99,9 @@ class CalendarQueue {
             validate();
         }
         return true;
+    }
+    bool settle() {
+        return settle([](handle_type, const Key&) {});
     }
     [[nodiscard]] handle_type top() const { return heap_.top(); }
     [[nodiscard]] const Key& top_key() const { return heap_.top_key(); }
@@ -300,9 +307,12 @@ class CalendarQueue {
     /// for the one it links to. Moving that list's entries into the heap is then a walk through
     /// the cache, not one miss after another (each waits for the previous one's link). A hint
     /// only: an entry moved since leads the walk astray, never the calendar.
-    void step_ahead() noexcept {
+    template <class OnAhead>
+    void step_ahead(OnAhead& on_ahead) noexcept {
         if (ahead_ >= entry_.size()) return;
-        ahead_ = entry_[ahead_].next;
+        const Entry& e = entry_[ahead_];
+        on_ahead(ahead_, e.key);
+        ahead_ = e.next;
         if (ahead_ < entry_.size()) __builtin_prefetch(&entry_[ahead_]);
     }
 
