@@ -64,6 +64,8 @@ class CalendarQueue {
         inv_width_ = std::isinf(width) ? 0.0 : 1.0 / width;
         ring_.assign(std::bit_ceil(std::max<std::size_t>(buckets, 2)), none);
         ring_mask_ = ring_.size() - 1;
+        walk_ahead_ = !std::isinf(width) && entry_.size() * sizeof(Entry) > walk_ahead_bytes;
+        ahead_ = none;
         cur_ = 0;
         cur_ = block_of(now);
         for (const auto& [h, k] : all) place(h, k);
@@ -81,7 +83,12 @@ class CalendarQueue {
 
     /// Brings the earliest event to the heap's top; false when the calendar is empty. Call it
     /// before top() and top_key() (a const calendar may hold its earliest event in a list).
-    bool settle() {
+    /// `on_ahead(handle, key)` sees, while entries are walked ahead (see step_ahead), each event
+    /// of the next block, about a block of events before its turn: a caller may ask the cache
+    /// for what that event will read.
+    template <class OnAhead>
+    bool settle(OnAhead&& on_ahead) {
+        if (walk_ahead_) step_ahead(on_ahead);
         while (heap_.empty()) {
             if (far_count_ == 0) return false;
             if (ring_count_ > 0) {
@@ -92,6 +99,9 @@ class CalendarQueue {
             validate();
         }
         return true;
+    }
+    bool settle() {
+        return settle([](handle_type, const Key&) {});
     }
     [[nodiscard]] handle_type top() const { return heap_.top(); }
     [[nodiscard]] const Key& top_key() const { return heap_.top_key(); }
@@ -192,6 +202,10 @@ class CalendarQueue {
   private:
     static constexpr handle_type none = std::numeric_limits<handle_type>::max();
     static constexpr handle_type overflow_slot = none - 1;
+    /// Entries past this many bytes (32,768 handles) are walked ahead (see step_ahead): on the
+    /// 2-core machine of 2026-11-30 that gained 1.11x at 10^5 discs (3.2 MB of entries), 1.03x
+    /// at 5 x 10^4 and 1.22x at 10^6; at 10^3 and 10^4 it was level, and is left off.
+    static constexpr std::size_t walk_ahead_bytes = std::size_t{1} << 20;
     /// Blocks beyond this are all filed as the last one (times near the double range's end).
     static constexpr double max_block = 4.0e18;
 
@@ -281,6 +295,26 @@ class CalendarQueue {
             --ring_count_;
             heap_.push(h, entry_[h].key);
         });
+        if (walk_ahead_) {
+            // The next bucket's list is walked one entry per event while this block's events
+            // run, and the bucket after it asked for (see step_ahead).
+            ahead_ = ring_[bucket_of(b + 1)];
+            if (ahead_ != none) __builtin_prefetch(&entry_[ahead_]);
+            __builtin_prefetch(&ring_[bucket_of(b + 2)]);
+        }
+    }
+
+    /// One step along the next bucket's list: reads the entry asked for one event ago and asks
+    /// for the one it links to. Moving that list's entries into the heap is then a walk through
+    /// the cache, not one miss after another (each waits for the previous one's link). A hint
+    /// only: an entry moved since leads the walk astray, never the calendar.
+    template <class OnAhead>
+    void step_ahead(OnAhead& on_ahead) noexcept {
+        if (ahead_ >= entry_.size()) return;
+        const Entry& e = entry_[ahead_];
+        on_ahead(ahead_, e.key);
+        ahead_ = e.next;
+        if (ahead_ < entry_.size()) __builtin_prefetch(&entry_[ahead_]);
     }
 
     /// Empties the list at `head`, handing each entry (out of every list) to file(handle).
@@ -317,6 +351,8 @@ class CalendarQueue {
     BigVector<handle_type> ring_ = BigVector<handle_type>(2, none);
     std::size_t ring_mask_ = 1;  ///< ring_.size() - 1 (the size is a power of two)
     handle_type overflow_ = none;
+    handle_type ahead_ = none;    ///< the next bucket's entry asked for last (see step_ahead)
+    bool walk_ahead_ = false;     ///< entries past walk_ahead_bytes: settle() steps ahead
     double inv_width_ = 0.0;      ///< 1 / block width; 0: one block (everything in the heap)
     std::int64_t cur_ = 0;        ///< the current block
     std::size_t far_count_ = 0;   ///< entries in the ring and the overflow list
