@@ -128,8 +128,14 @@ void BasicFastEngine<D>::process_pair(std::uint32_t i, std::uint32_t j, double t
     pi.last_partner = j;
     pj.last_partner = i;
     core_.collided(to_record(t, EventKind::pair, scene_index(i), scene_index(j)));
-    predict(i);
-    predict(j);
+    // i's event is filed after j's scan, not before it: the calendar's bucket of it (a miss past
+    // the caches) is asked for as soon as its time is known, and arrives while j is scanned.
+    // Same events: j's scan reads no queue, and the queue sees the same calls in the same order.
+    const Key ki = next_event(i);
+    queue_.prefetch_place(i, ki.t);
+    const Key kj = next_event(j);
+    enqueue(i, ki);
+    enqueue(j, kj);
 }
 
 template <int D>
@@ -183,13 +189,15 @@ void BasicFastEngine<D>::process_cell(std::uint32_t i, std::uint32_t axis_index)
 
 template <int D>
 void BasicFastEngine<D>::predict(std::uint32_t i) {
+    enqueue(i, next_event(i));
+}
+
+template <int D>
+typename BasicFastEngine<D>::Key BasicFastEngine<D>::next_event(std::uint32_t i) {
     const Particle& pi = p_[i];
     const double dt = now_ - pi.t;
     const Vec xi = pi.x + pi.v * dt;
-    if (lists()) {
-        predict_listed(i, pi, xi);
-        return;
-    }
+    if (lists()) return predict_listed(i, pi, xi);
     // Pairs first, bounded only by each other (not by the wall and crossing times): the earliest
     // pair is remembered for the crossings to come, so it must be exact.
     Key pair = Key::make(never, i, no_disc, EventKind::pair);
@@ -201,7 +209,7 @@ void BasicFastEngine<D>::predict(std::uint32_t i) {
     for (std::uint32_t b : big_) {
         if (b != i) consider_pair_images(i, pi, xi, b, pair);
     }
-    schedule(i, pi, xi, pair);
+    return schedule(i, pi, xi, pair);
 }
 
 template <int D>
@@ -224,11 +232,12 @@ void BasicFastEngine<D>::predict_after_crossing(std::uint32_t i, std::uint32_t a
     const auto k = static_cast<int>(axis_index);
     lo[k] = hi[k] = axis(pi.v, k) > 0.0 ? 1 : -1;
     scan_cells(i, pi, pi.x, lo, hi, pair);
-    schedule(i, pi, pi.x, pair);
+    enqueue(i, schedule(i, pi, pi.x, pair));
 }
 
 template <int D>
-void BasicFastEngine<D>::predict_listed(std::uint32_t i, const Particle& pi, Vec xi) {
+typename BasicFastEngine<D>::Key BasicFastEngine<D>::predict_listed(std::uint32_t i,
+                                                                    const Particle& pi, Vec xi) {
     // Nothing remembers a pair between predictions here (no crossings), so the list's expiry and
     // the walls go first: a pair that cannot beat them is skipped before its square root. The
     // earliest of all by KeyLess is the same whatever the order: the expiry first, which beats
@@ -240,15 +249,16 @@ void BasicFastEngine<D>::predict_listed(std::uint32_t i, const Particle& pi, Vec
     scan_neighbour_list(i, pi, xi, best);
     remember_pair(
         i, best.kind() == EventKind::pair ? best : Key::make(never, i, no_disc, EventKind::pair));
-    enqueue(i, best);
+    return best;
 }
 
 template <int D>
-void BasicFastEngine<D>::schedule(std::uint32_t i, const Particle& pi, Vec xi, const Key& pair) {
+typename BasicFastEngine<D>::Key BasicFastEngine<D>::schedule(std::uint32_t i, const Particle& pi,
+                                                              Vec xi, const Key& pair) {
     remember_pair(i, pair);
     Key best = pair;
     consider_walls_and_cells(i, pi, xi, best);
-    enqueue(i, best);
+    return best;
 }
 
 template <int D>

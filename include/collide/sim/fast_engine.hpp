@@ -238,10 +238,13 @@ class BasicFastEngine final : public EngineOf<D> {
 
     // --- prediction
     void predict(std::uint32_t i);
+    /// i's earliest event (its pair remembered), not yet queued: predict(i) without enqueue.
+    [[nodiscard]] Key next_event(std::uint32_t i);
     void predict_after_crossing(std::uint32_t i, std::uint32_t axis);
-    void schedule(std::uint32_t i, const Particle& pi, Vec xi, const Key& pair);
-    /// With lists: the earliest of i's walls, list expiry and listed pairs, into the queue.
-    void predict_listed(std::uint32_t i, const Particle& pi, Vec xi);
+    /// The earliest of pair and i's walls and crossings (the pair remembered).
+    [[nodiscard]] Key schedule(std::uint32_t i, const Particle& pi, Vec xi, const Key& pair);
+    /// With lists: the earliest of i's walls, list expiry and listed pairs.
+    [[nodiscard]] Key predict_listed(std::uint32_t i, const Particle& pi, Vec xi);
     /// Keeps i's earliest pair (never: none) in cold_ (the stale check and crossings read it).
     [[gnu::always_inline]] void remember_pair(std::uint32_t i, const Key& pair) noexcept;
     /// Makes best i's one queued event (none when best.t is never).
