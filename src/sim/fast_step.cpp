@@ -113,6 +113,7 @@ void BasicFastEngine<D>::count_collision_now(std::uint32_t i) {
 template <int D>
 void BasicFastEngine<D>::process_pair(std::uint32_t i, std::uint32_t j, double t) {
     if (prefetch_records_) prefetch_list(j);
+    queue_.prefetch_handle(j);
     count_collision_now(i);
     count_collision_now(j);
     advance_disc(i);
@@ -133,6 +134,7 @@ void BasicFastEngine<D>::process_pair(std::uint32_t i, std::uint32_t j, double t
     // Same events: j's scan reads no queue, and the queue sees the same calls in the same order.
     const Key ki = next_event(i);
     queue_.prefetch_place(i, ki.t);
+    queue_.prefetch_unlink(j);
     const Key kj = next_event(j);
     enqueue(i, ki);
     enqueue(j, kj);

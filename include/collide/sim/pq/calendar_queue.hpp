@@ -137,6 +137,22 @@ class CalendarQueue {
         __builtin_prefetch(&entry_[h], 1);
     }
 
+    /// A hint that h's key will soon change: asks the cache for h's position-map slot and
+    /// entry. Changes nothing.
+    void prefetch_handle(handle_type h) const noexcept {
+        heap_.prefetch(h);
+        if (h < entry_.size()) __builtin_prefetch(&entry_[h], 1);
+    }
+
+    /// A hint, some time after prefetch_handle(h): asks for the neighbours that unlinking h
+    /// from its list writes (each a miss of its own past the caches). Changes nothing.
+    void prefetch_unlink(handle_type h) const noexcept {
+        if (!in_lists(h)) return;
+        const Entry& e = entry_[h];
+        if (e.prev < entry_.size()) __builtin_prefetch(&entry_[e.prev], 1);
+        if (e.next < entry_.size()) __builtin_prefetch(&entry_[e.next], 1);
+    }
+
     void erase(handle_type h) {
         if (heap_.contains(h)) {
             heap_.erase(h);
