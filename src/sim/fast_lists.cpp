@@ -27,12 +27,11 @@ using kinematics::never;
 /// (docs/benchmarks-history.md, "The 3D engine's margin at N = 4000").
 constexpr double list_shell_per_diameter = 0.6;
 
-/// Lists beat cell scans from about packing 0.22 (timed 2026-11-30 with the shell of 0.6, 4000
-/// spheres, collisions per CPU s: 0.98x at 0.20, 1.18x at 0.25, 1.47x at 0.30, 1.95x at 0.36;
-/// docs/benchmarks-history.md): in a thinner gas a sphere rebuilds its list several times between
-/// collisions. Below this packing fraction spheres use cell crossings (0.24: a scene made at 0.25
-/// sums to a hair less).
-constexpr double list_min_packing = 0.24;
+/// Lists beat cell scans from about packing 0.37 (0.81x at 0.30, 1.05x at 0.38, 1.3x at 0.45,
+/// 1.6x at 0.5, N = 4000; docs/benchmarks.md): in a thinner gas a sphere rebuilds its list
+/// several times between collisions. Below this packing fraction spheres use cell crossings
+/// (0.38, not 0.4: a scene made at 0.4 sums to a hair less).
+constexpr double list_min_packing = 0.38;
 
 /// Up to this many bytes of particle records, a list scan finds them in the core's own caches
 /// (a typical L2): asking for them first would only cost instructions (docs/benchmarks.md).

@@ -218,7 +218,7 @@ TEST_CASE("3D fast engine: energy and momentum conserved to round-off, no overla
             eta = 0.4 / (1.2 * 1.2 * 1.2);
         }
         FastSphereEngine engine(scene);
-        // Lists from packing 0.24; the walled box's 0.23 uses cell crossings.
+        // Lists from packing 0.38; the walled box's 0.23 uses cell crossings.
         const bool lists = boundary == Boundary::periodic;
         CHECK(engine.uses_neighbour_lists() == lists);
         const Measurements m0 = engine.measurements();
@@ -281,7 +281,7 @@ TEST_CASE(
 }
 
 TEST_CASE("3D fast engine: a box too narrow for the lists' cells runs on cell crossings") {
-    // 4 diameters wide: three cells of one diameter fit, three of 1.6 do not.
+    // 4 diameters wide: three cells of one diameter fit, three of 1.5 do not.
     SphereScene scene;
     scene.box = Box3{0.4, 0.4, 0.4, Boundary::periodic};
     scene.spheres = {sphere({0.05, 0.2, 0.2}, {1.0, 0.1, 0.0}, 0.05),

@@ -34,7 +34,7 @@
 ///   two spheres outside each other's lists cannot touch before one of them rebuilds. Each entry
 ///   keeps the periodic image through which the pair meets, so a scan never works out the
 ///   nearest image. The grid then holds list centres, in cells at least 2 r_max + shell wide,
-///   and has no crossing events. Used in 3D at packing fractions from 0.24 (below, a sphere would
+///   and has no crossing events. Used in 3D at packing fractions from 0.38 (below, a sphere would
 ///   rebuild several times between collisions) when no sphere is big and a periodic box has three
 ///   such cells per axis; otherwise, and in 2D, the cell crossings above.
 ///
