@@ -25,12 +25,14 @@ build_anchor() {  # N: the anchor code for N spheres, built for this machine
         -e 's/^double packfrac = [0-9.]*;/double packfrac = 0.45;/' \
         -e "s/^int N = [0-9]*;/int N = $1;/" \
         -e 's/^    init();/    setvbuf(stdout, NULL, _IOLBF, 0); init();/' "$dir"/mdSingle.c
-    grep -q "int N = $1;" "$dir"/mdSingle.c && grep -q '_IOLBF' "$dir"/mdSingle.c ||
-        { echo "bench_anchor: $src/mdSingle.c is not the layout this script edits" >&2; exit 2; }
+    if ! grep -q "int N = $1;" "$dir"/mdSingle.c || ! grep -q '_IOLBF' "$dir"/mdSingle.c; then
+        echo "bench_anchor: $src/mdSingle.c is not the layout this script edits" >&2
+        exit 2
+    fi
     gcc -Ofast -funroll-loops -march=native -o "$dir"/anchor "$dir"/mdSingle.c -lm
 }
 anchor_rate() {  # N: M collisions per second, timed from the simtime-0 line to the last
-    (cd "$work"/anchor_$1 && ./anchor | python3 -u -c "
+    (cd "$work/anchor_$1" && ./anchor | python3 -u -c "
 import sys, time
 rows = [(time.perf_counter(), l.split()) for l in sys.stdin if 'Simtime:' in l]
 (t0, r0), (t1, r1) = rows[0], rows[-1]
