@@ -16,7 +16,6 @@
 #include "collide/io/file.hpp"
 #include "collide/printable.hpp"
 #include "collide/show/collision.hpp"
-#include "collide/show/plot_words.hpp"
 #include "collide/show/sphere_camera.hpp"
 #include "collide/video/output.hpp"
 #include "collide/video/video_writer.hpp"
@@ -92,30 +91,21 @@ std::uintmax_t size_on_disk(const std::filesystem::path& path) {
     return error ? 0 : size;
 }
 
-/// A time-driven engine's work as its panel's cost graphic shows it (show::work_done, in the
-/// panel's digits and words), then what it is made of: "3,056,956 pair tests: 3,056,625 overlap
-/// checks + 331 contact-time computations" (those of the roll-backs).
-std::string time_driven_work(const Measurements& m) {
-    return fmt::format("{} {}: {} overlap checks + {} contact-time computations",
-                       show::cost_text(show::work_done(m, true)), show::time_driven_cost_label,
-                       show::short_count(static_cast<double>(m.overlap_checks)),
-                       show::short_count(static_cast<double>(m.predictions)));
-}
-
 /// Wall-clock cost of each engine: printed, never drawn (it would break byte-identical output).
 std::string engine_costs(const RenderPlan& plan, const PipelineResult& result) {
     std::string out;
     std::size_t i = 0;
     if (plan.mode != RenderMode::event && i < result.engines.size() && plan.time_steps.empty()) {
         const Measurements& m = result.engines[i++];
-        out += fmt::format("time-driven {:.2f} s ({})", m.wall_seconds, time_driven_work(m));
+        out += fmt::format("time-driven {:.2f} s ({})", m.wall_seconds,
+                           show::time_driven_work_line(m));
     }
     for (const double dt : plan.time_steps) {
         if (plan.mode == RenderMode::event || i >= result.engines.size()) break;
         const Measurements& m = result.engines[i++];
         if (!out.empty()) out += ", ";
         out += fmt::format("time-driven dt = {:g} {:.2f} s ({}; {} missed)", dt, m.wall_seconds,
-                           time_driven_work(m), m.missed_collisions);
+                           show::time_driven_work_line(m), m.missed_collisions);
     }
     if (plan.mode != RenderMode::time && i < result.engines.size()) {
         const Measurements& m = result.engines[i];

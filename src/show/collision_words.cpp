@@ -210,6 +210,15 @@ double work_done(const Measurements& m, bool time_driven) noexcept {
     return n(m.predictions) + n(m.queue.pushes) + n(m.queue.pops) + n(m.queue.updates);
 }
 
+std::string time_driven_work_line(const Measurements& m) {
+    // The parts are work_done's (time_driven): the overlap checks and the roll-backs' contact
+    // times (predictions).
+    return fmt::format("{} {}: {} overlap checks + {} contact-time computations",
+                       cost_text(work_done(m, true)), time_driven_cost_label,
+                       short_count(static_cast<double>(m.overlap_checks)),
+                       short_count(static_cast<double>(m.predictions)));
+}
+
 std::string work_ratio(double time_work, double event_work) {
     if (!(time_work > 0.0) || !(event_work > 0.0)) return {};
     const bool less = time_work >= event_work;

@@ -204,6 +204,17 @@ TEST_CASE("each panel's work is pair computations: tests and predictions, plus q
           std::string::npos);
 }
 
+TEST_CASE("the time-driven summary line: the panel's figure and label, then its two parts") {
+    Measurements m;
+    m.overlap_checks = 3'056'625;
+    m.predictions = 331;
+    const PanelWords td = panel_words(m, true, true, 0.0);
+    CHECK(time_driven_work_line(m) == td.cost_text + " " + td.cost_label +
+                                          ": 3,056,625 overlap checks + 331 contact-time "
+                                          "computations");
+    CHECK(td.cost_text == "3,056,956");
+}
+
 TEST_CASE("the work ratio is the engines' counts divided, in words") {
     // brownian at t = 60 (issue #28): 2.39 G pair tests against 14 M predictions and 1.85 M
     // queue operations.

@@ -31,7 +31,8 @@ inline constexpr double smallest_drift_scale = 1e-12;
 
 /// The time-driven panel's cost label: its work (work_done, collide/show/collision.hpp) is pair
 /// tests, the overlap checks and the contact-time computations of its roll-backs. `render` and
-/// `thumbnail` print the same figure (cost_text) under the same words.
+/// `thumbnail` print the same figure under the same words (time_driven_work_line,
+/// collide/show/collision.hpp).
 inline constexpr const char* time_driven_cost_label = "pair tests";
 
 }  // namespace collide::show
